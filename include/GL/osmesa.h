@@ -1,0 +1,3 @@
+#ifndef OSMESA_H
+#define OSMESA_H
+#endif

@@ -1,0 +1,2 @@
+/* placeholder: filled in by the foundation work */
+typedef int fgl_placeholder_osmesa_osmesa_c;
