@@ -25,7 +25,7 @@
 #define W 96
 #define H 80
 #define VARIANTS 12 /* frames differ: frame f draws variant f % VARIANTS */
-#define FRAMES 500  /* frames per thread */
+#define FRAMES 1500 /* frames per thread */
 #define BUF_SIZE (W * H * 4)
 
 /* Scene 0: a smooth-shaded fan turning with the variant, no depth buffer use. */
