@@ -10,26 +10,37 @@ static void cell(int k, double *x, double *y)
     *y = 8.0 * (k / 8);
 }
 
+/* Triangle corners of the current cell (x, y) in a[3][4] of type T. */
+#define VTX_SET(T)                                                            \
+    for (int i = 0; i < 3; i++) {                                             \
+        a[i][0] = (T)(x + (i == 1 ? 7 : 1));                                  \
+        a[i][1] = (T)(y + (i == 2 ? 7 : 1));                                  \
+        a[i][2] = (T)0;                                                       \
+        a[i][3] = (T)1;                                                       \
+    }
+
+/* One flat triangle in cell k drawn with vertex call CALL, then next cell. */
+#define VTX_DRAW(T, CALL)                                                     \
+    do {                                                                      \
+        VTX_SET(T)                                                            \
+        fcu_color(k);                                                         \
+        glBegin(GL_TRIANGLES);                                                \
+        for (int i = 0; i < 3; i++)                                           \
+            CALL;                                                             \
+        glEnd();                                                              \
+        cell(++k, &x, &y);                                                    \
+    } while (0)
+
+/* All six glVertex variants of one type, each in its own cell. */
 #define VTX_CASE(suf, T)                                                      \
     do {                                                                      \
         T a[3][4];                                                            \
-        for (int i = 0; i < 3; i++) {                                         \
-            a[i][0] = (T)(x + (i == 1 ? 7 : 1)); a[i][1] = (T)(y + (i == 2 ? 7 : 1)); \
-            a[i][2] = (T)0; a[i][3] = (T)1;                                   \
-        }                                                                     \
-        fcu_color(k); glBegin(GL_TRIANGLES);                                  \
-        for (int i = 0; i < 3; i++) glVertex2##suf(a[i][0], a[i][1]);         \
-        glEnd(); cell(++k, &x, &y); fcu_color(k); glBegin(GL_TRIANGLES);      \
-        for (int i = 0; i < 3; i++) glVertex2##suf##v(a[i]);                  \
-        glEnd(); cell(++k, &x, &y); fcu_color(k); glBegin(GL_TRIANGLES);      \
-        for (int i = 0; i < 3; i++) glVertex3##suf(a[i][0], a[i][1], a[i][2]); \
-        glEnd(); cell(++k, &x, &y); fcu_color(k); glBegin(GL_TRIANGLES);      \
-        for (int i = 0; i < 3; i++) glVertex3##suf##v(a[i]);                  \
-        glEnd(); cell(++k, &x, &y); fcu_color(k); glBegin(GL_TRIANGLES);      \
-        for (int i = 0; i < 3; i++) glVertex4##suf(a[i][0], a[i][1], a[i][2], a[i][3]); \
-        glEnd(); cell(++k, &x, &y); fcu_color(k); glBegin(GL_TRIANGLES);      \
-        for (int i = 0; i < 3; i++) glVertex4##suf##v(a[i]);                  \
-        glEnd(); cell(++k, &x, &y);                                           \
+        VTX_DRAW(T, glVertex2##suf(a[i][0], a[i][1]));                        \
+        VTX_DRAW(T, glVertex2##suf##v(a[i]));                                 \
+        VTX_DRAW(T, glVertex3##suf(a[i][0], a[i][1], a[i][2]));               \
+        VTX_DRAW(T, glVertex3##suf##v(a[i]));                                 \
+        VTX_DRAW(T, glVertex4##suf(a[i][0], a[i][1], a[i][2], a[i][3]));      \
+        VTX_DRAW(T, glVertex4##suf##v(a[i]));                                 \
     } while (0)
 
 static void vertex_variants(fc_h *h)
@@ -44,15 +55,19 @@ static void vertex_variants(fc_h *h)
     VTX_CASE(i, GLint);
     VTX_CASE(f, GLfloat);
     VTX_CASE(d, GLdouble);
-    /* w != 1 and non-integral coordinates through the 4-component forms */
+    /* w != 1 in the free top rows: w = 2 (same points scaled), w = -1
+     * everywhere (outside every clip plane) and mixed signs (clipped at w = 0). */
     glColor3f(1, 1, 1);
     glBegin(GL_TRIANGLES);
-    glVertex4f(2.0f * 50.5f, 2.0f * 50.5f, 0, 2);
-    glVertex4d(-60.25 * 0.5, 50.5 * -0.5, 0, -0.5);
-    glVertex4s(-60, -63, 0, -1);
-    glVertex4i(100, 110, 0, 2);
-    glVertex4f(2.0f * 63.75f, 2.0f * 52.25f, 0, 2);
-    glVertex4d(56.0 * 4, 63.5 * 4, 0, 4);
+    glVertex4f(2.0f * 2.5f, 2.0f * 40.5f, 0, 2);
+    glVertex4d(20.25 * 2, 42.0 * 2, 0, 2);
+    glVertex4s(6, 60, 0, 1);
+    glVertex4i(-30, -41, 0, -1);
+    glVertex4f(-40.0f, -41.0f, 0, -1);
+    glVertex4d(-35.0, -60.0, 0, -1);
+    glVertex4f(40.5f, 40.5f, 0, 1);
+    glVertex4d(-62.0, -41.0, 0, -1);
+    glVertex4s(50, 62, 0, 1);
     glEnd();
     fc_capture(h);
     fc_error(h, "after vertex variants");
