@@ -1,2 +1,63 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_state_c;
+/*
+ * Derived state: one ordered validation pass before drawing.
+ *
+ * Order: matrices (analysis, then the MVP product), viewport transform,
+ * then the raster core's state, which reads the framebuffer and the
+ * per-fragment state.
+ */
+#include "context.h"
+
+void fgl_update_state(struct fgl_context *ctx)
+{
+   const unsigned dirty = ctx->NewState;
+   if (!dirty)
+      return;
+
+   if (dirty & (FGL_NEW_MODELVIEW | FGL_NEW_PROJECTION)) {
+      /* update_modelview_project: analyse both, then P * MV */
+      fgl_matrix_analyse(ctx->ModelviewStack.Top);
+      fgl_matrix_analyse(ctx->ProjectionStack.Top);
+      fgl_matrix_mul_matrix(&ctx->_ModelProjectMatrix, ctx->ProjectionStack.Top,
+                            ctx->ModelviewStack.Top);
+   }
+
+   if (dirty & (FGL_NEW_VIEWPORT | FGL_NEW_BUFFERS)) {
+      /* _mesa_get_viewport_xform, then the state tracker's flip to the
+       * y-down window buffer (llvmpipe-facts.md §0) */
+      const struct fgl_viewport_attrib *vp = &ctx->Viewport;
+      const float half_w = 0.5f * (float)vp->Width;
+      const float half_h = 0.5f * (float)vp->Height;
+      const float fb_h = ctx->DrawBuffer ? (float)ctx->DrawBuffer->Height : 0.0f;
+      ctx->_ViewportScale[0] = half_w;
+      ctx->_ViewportTranslate[0] = half_w + (float)vp->X;
+      ctx->_ViewportScale[1] = -half_h;
+      ctx->_ViewportTranslate[1] = fb_h - (half_h + (float)vp->Y);
+      const double n = vp->Near, f = vp->Far;   /* computed in double */
+      ctx->_ViewportScale[2] = (float)(0.5 * (f - n));
+      ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
+   }
+
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT)) {
+      struct r_state *rs = &ctx->_Raster;
+      const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+      if (fb) {
+         rs->color = fb->Color;
+         rs->zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
+         rs->zs_format = fb->ZSFormat;
+         rs->width = fb->Width;
+         rs->height = fb->Height;
+         rs->x0 = 0;
+         rs->y0 = 0;
+         rs->x1 = fb->Width;
+         rs->y1 = fb->Height;
+      }
+      const bool has_depth = fb && fb->DepthBits > 0;
+      rs->depth_test = ctx->Depth.Test && has_depth;
+      rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
+      rs->depth_write = ctx->Depth.Mask;
+      rs->num_attribs = 1;
+      rs->flat_mask = ctx->Light.ShadeModel == GL_FLAT ? 1u : 0u;
+   }
+
+   ctx->NewState = 0;
+}

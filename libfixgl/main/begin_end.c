@@ -1,2 +1,118 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_main_begin_end_c;
+/*
+ * glBegin/glEnd and the per-vertex attribute calls (GL_CURRENT_BIT state).
+ *
+ * Integer colours are normalized with Mesa's macros (main/macros.h,
+ * confirmed exhaustively against the oracle): signed types map (2c+1)/(2^n-1),
+ * unsigned bytes use i/255.0f, other unsigned types multiply by the
+ * reciprocal.  Double arguments are converted to float first.
+ */
+#include "main/groups.h"
+
+void fgl_init_current(struct fgl_context *ctx)
+{
+   for (int i = 0; i < 4; i++)
+      ctx->Current.Color[i] = 1.0f;
+}
+
+/* ---- glBegin / glEnd ---- */
+
+void GLAPIENTRY glBegin(GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (mode > GL_TRIANGLE_STRIP_ADJACENCY) {
+      /* adjacency modes are valid in the oracle's 4.5 compatibility context
+       * (and draw nothing here yet); patches need a tessellation shader */
+      fgl_error(ctx, mode == GL_PATCHES ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+      return;
+   }
+   fgl_update_state(ctx);
+   fgl_vbo_begin(ctx, mode);
+   ctx->BeginMode = mode;
+}
+
+void GLAPIENTRY glEnd(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (!fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   fgl_vbo_end(ctx);
+}
+
+/* ---- attributes ---- */
+
+static inline void color4(float r, float g, float b, float a, unsigned n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_vbo_attr(ctx, FGL_ATTR_COLOR0, n, r, g, b, a);
+   ctx->Current.Color[0] = r;
+   ctx->Current.Color[1] = g;
+   ctx->Current.Color[2] = b;
+   ctx->Current.Color[3] = a;
+}
+
+static inline void vertex4(float x, float y, float z, float w, unsigned n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_vbo_attr(ctx, FGL_ATTR_POS, n, x, y, z, w);
+}
+
+/* Mesa's normalization macros */
+#define BYTE_TO_FLOAT(b)   ((2.0F * (b) + 1.0F) * (1.0F / 255.0F))
+#define UBYTE_TO_FLOAT(u)  ((float)(u) / 255.0F)
+#define SHORT_TO_FLOAT(s)  ((2.0F * (s) + 1.0F) * (1.0F / 65535.0F))
+#define USHORT_TO_FLOAT(s) ((GLfloat)(s) * (1.0F / 65535.0F))
+#define INT_TO_FLOAT(i)    ((GLfloat)((2.0F * (i) + 1.0F) * (1.0F / 4294967294.0)))
+#define UINT_TO_FLOAT(u)   ((GLfloat)((u) * (1.0F / 4294967295.0)))
+#define IDENT(x)           ((GLfloat)(x))
+
+#define COLOR_FUNCS(suffix, type, CONV)                                         \
+   void GLAPIENTRY glColor3##suffix(type r, type g, type b)                     \
+   { color4(CONV(r), CONV(g), CONV(b), 1.0f, 3); }                              \
+   void GLAPIENTRY glColor4##suffix(type r, type g, type b, type a)             \
+   { color4(CONV(r), CONV(g), CONV(b), CONV(a), 4); }                           \
+   void GLAPIENTRY glColor3##suffix##v(const type *v)                           \
+   { if (v) color4(CONV(v[0]), CONV(v[1]), CONV(v[2]), 1.0f, 3); }              \
+   void GLAPIENTRY glColor4##suffix##v(const type *v)                           \
+   { if (v) color4(CONV(v[0]), CONV(v[1]), CONV(v[2]), CONV(v[3]), 4); }
+
+COLOR_FUNCS(b, GLbyte, BYTE_TO_FLOAT)
+COLOR_FUNCS(ub, GLubyte, UBYTE_TO_FLOAT)
+COLOR_FUNCS(s, GLshort, SHORT_TO_FLOAT)
+COLOR_FUNCS(us, GLushort, USHORT_TO_FLOAT)
+COLOR_FUNCS(i, GLint, INT_TO_FLOAT)
+COLOR_FUNCS(ui, GLuint, UINT_TO_FLOAT)
+COLOR_FUNCS(f, GLfloat, IDENT)
+COLOR_FUNCS(d, GLdouble, IDENT)
+
+#define VERTEX_FUNCS(suffix, type)                                              \
+   void GLAPIENTRY glVertex2##suffix(type x, type y)                            \
+   { vertex4((GLfloat)x, (GLfloat)y, 0.0f, 1.0f, 2); }                          \
+   void GLAPIENTRY glVertex3##suffix(type x, type y, type z)                    \
+   { vertex4((GLfloat)x, (GLfloat)y, (GLfloat)z, 1.0f, 3); }                    \
+   void GLAPIENTRY glVertex4##suffix(type x, type y, type z, type w)            \
+   { vertex4((GLfloat)x, (GLfloat)y, (GLfloat)z, (GLfloat)w, 4); }              \
+   void GLAPIENTRY glVertex2##suffix##v(const type *v)                          \
+   { if (v) vertex4((GLfloat)v[0], (GLfloat)v[1], 0.0f, 1.0f, 2); }             \
+   void GLAPIENTRY glVertex3##suffix##v(const type *v)                          \
+   { if (v) vertex4((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], 1.0f, 3); }    \
+   void GLAPIENTRY glVertex4##suffix##v(const type *v)                          \
+   { if (v) vertex4((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], (GLfloat)v[3], 4); }
+
+VERTEX_FUNCS(s, GLshort)
+VERTEX_FUNCS(i, GLint)
+VERTEX_FUNCS(f, GLfloat)
+VERTEX_FUNCS(d, GLdouble)

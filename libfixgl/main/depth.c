@@ -1,2 +1,51 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_main_depth_c;
+/*
+ * Depth buffer state (GL_DEPTH_BUFFER_BIT): glDepthFunc, glDepthMask,
+ * glClearDepth.  GL_DEPTH_TEST itself is in main/enable.c.
+ */
+#include "main/groups.h"
+
+void fgl_init_depth(struct fgl_context *ctx)
+{
+   ctx->Depth.Func = GL_LESS;
+   ctx->Depth.Clear = 1.0;
+   ctx->Depth.Test = false;
+   ctx->Depth.Mask = true;
+}
+
+void GLAPIENTRY glDepthFunc(GLenum func)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Depth.Func == func)
+      return;
+   if (func < GL_NEVER || func > GL_ALWAYS) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_DEPTH);
+   ctx->Depth.Func = func;
+}
+
+void GLAPIENTRY glDepthMask(GLboolean flag)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const bool mask = flag != GL_FALSE;
+   if (ctx->Depth.Mask == mask)
+      return;
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_DEPTH);
+   ctx->Depth.Mask = mask;
+}
+
+void GLAPIENTRY glClearDepth(GLclampd depth)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ctx->Depth.Clear = depth < 0.0 ? 0.0 : (depth > 1.0 ? 1.0 : depth);
+}

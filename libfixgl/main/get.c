@@ -1,2 +1,292 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_main_get_c;
+/*
+ * State queries: glGetBooleanv/Integerv/Floatv/Doublev, glGetError,
+ * glGetString.
+ *
+ * Every value is described once (fill_value) with its type; the four
+ * getters convert like Mesa's get.c:
+ *   float -> boolean   f != 0 (NaN is true)
+ *   float -> integer   IROUND, or FLOAT_TO_INT for normalized values
+ *                      (colours, depth values): (GLint)(2147483647.0 * f)
+ * Out-of-range float->int conversions give INT_MIN, as on x86 where the
+ * oracle runs.
+ */
+#include <limits.h>
+#include <string.h>
+
+#include "main/groups.h"
+
+enum value_type {
+   V_BOOL,      /* GLboolean state */
+   V_INT,       /* integers and enums */
+   V_FLOAT,     /* floats converted with IROUND */
+   V_FLOATN,    /* normalized floats converted with FLOAT_TO_INT */
+};
+
+struct value {
+   enum value_type type;
+   int n;
+   double v[16];
+};
+
+/* x86 cvttsd2si: truncation, INT_MIN when out of range or NaN */
+static GLint double_to_int_trunc(double d)
+{
+   if (!(d >= -2147483648.0 && d < 2147483648.0))
+      return INT_MIN;
+   return (GLint)d;
+}
+
+GLint fgl_float_to_int_norm(double f)
+{
+   return double_to_int_trunc(2147483647.0 * f);
+}
+
+static GLint iround(float f)
+{
+   return double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
+}
+
+/* Mesa's CLAMP: NaN passes through */
+static float clamp01_keepnan(float x)
+{
+   return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+}
+
+static void set_floats(struct value *val, enum value_type type, const float *f, int n)
+{
+   val->type = type;
+   val->n = n;
+   for (int i = 0; i < n; i++)
+      val->v[i] = f[i];
+}
+
+static void set_ints(struct value *val, enum value_type type, int n, int a, int b, int c, int d)
+{
+   const int x[4] = { a, b, c, d };
+   val->type = type;
+   val->n = n;
+   for (int i = 0; i < n; i++)
+      val->v[i] = x[i];
+}
+
+static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   float f[4];
+
+   switch (pname) {
+   /* GL_CURRENT_BIT */
+   case GL_CURRENT_COLOR:
+      set_floats(val, V_FLOATN, ctx->Current.Color, 4);
+      return true;
+   /* GL_COLOR_BUFFER_BIT */
+   case GL_COLOR_CLEAR_VALUE:
+      for (int i = 0; i < 4; i++)
+         f[i] = clamp01_keepnan(ctx->Color.ClearColor[i]);
+      set_floats(val, V_FLOATN, f, 4);
+      return true;
+   case GL_DITHER:
+      set_ints(val, V_BOOL, 1, ctx->Color.Dither, 0, 0, 0);
+      return true;
+   /* GL_DEPTH_BUFFER_BIT */
+   case GL_DEPTH_CLEAR_VALUE:
+      val->type = V_FLOATN;
+      val->n = 1;
+      val->v[0] = ctx->Depth.Clear;
+      return true;
+   case GL_DEPTH_FUNC:
+      set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);
+      return true;
+   case GL_DEPTH_TEST:
+      set_ints(val, V_BOOL, 1, ctx->Depth.Test, 0, 0, 0);
+      return true;
+   case GL_DEPTH_WRITEMASK:
+      set_ints(val, V_BOOL, 1, ctx->Depth.Mask, 0, 0, 0);
+      return true;
+   /* GL_LIGHTING_BIT */
+   case GL_SHADE_MODEL:
+      set_ints(val, V_INT, 1, (int)ctx->Light.ShadeModel, 0, 0, 0);
+      return true;
+   /* GL_TRANSFORM_BIT and matrices */
+   case GL_MATRIX_MODE:
+      set_ints(val, V_INT, 1, (int)ctx->Transform.MatrixMode, 0, 0, 0);
+      return true;
+   case GL_MODELVIEW_MATRIX:
+      set_floats(val, V_FLOAT, ctx->ModelviewStack.Top->m, 16);
+      return true;
+   case GL_PROJECTION_MATRIX:
+      set_floats(val, V_FLOAT, ctx->ProjectionStack.Top->m, 16);
+      return true;
+   case GL_TEXTURE_MATRIX:
+      set_floats(val, V_FLOAT, ctx->TextureStack[0].Top->m, 16);
+      return true;
+   case GL_MODELVIEW_STACK_DEPTH:
+      set_ints(val, V_INT, 1, (int)ctx->ModelviewStack.Depth + 1, 0, 0, 0);
+      return true;
+   case GL_PROJECTION_STACK_DEPTH:
+      set_ints(val, V_INT, 1, (int)ctx->ProjectionStack.Depth + 1, 0, 0, 0);
+      return true;
+   case GL_TEXTURE_STACK_DEPTH:
+      set_ints(val, V_INT, 1, (int)ctx->TextureStack[0].Depth + 1, 0, 0, 0);
+      return true;
+   case GL_MAX_MODELVIEW_STACK_DEPTH:
+      set_ints(val, V_INT, 1, FGL_MAX_MODELVIEW_STACK_DEPTH, 0, 0, 0);
+      return true;
+   case GL_MAX_PROJECTION_STACK_DEPTH:
+      set_ints(val, V_INT, 1, FGL_MAX_PROJECTION_STACK_DEPTH, 0, 0, 0);
+      return true;
+   case GL_MAX_TEXTURE_STACK_DEPTH:
+      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_STACK_DEPTH, 0, 0, 0);
+      return true;
+   /* GL_VIEWPORT_BIT */
+   case GL_VIEWPORT:
+      set_ints(val, V_INT, 4, ctx->Viewport.X, ctx->Viewport.Y,
+               ctx->Viewport.Width, ctx->Viewport.Height);
+      return true;
+   case GL_DEPTH_RANGE:
+      f[0] = ctx->Viewport.Near;
+      f[1] = ctx->Viewport.Far;
+      set_floats(val, V_FLOATN, f, 2);
+      return true;
+   case GL_MAX_VIEWPORT_DIMS:
+      set_ints(val, V_INT, 2, FGL_MAX_VIEWPORT_SIZE, FGL_MAX_VIEWPORT_SIZE, 0, 0);
+      return true;
+   case GL_VIEWPORT_BOUNDS_RANGE:
+      f[0] = FGL_VIEWPORT_BOUNDS_MIN;
+      f[1] = FGL_VIEWPORT_BOUNDS_MAX;
+      set_floats(val, V_FLOAT, f, 2);
+      return true;
+   /* framebuffer and implementation */
+   case GL_RED_BITS:
+   case GL_GREEN_BITS:
+   case GL_BLUE_BITS:
+      set_ints(val, V_INT, 1, 8, 0, 0, 0);
+      return true;
+   case GL_ALPHA_BITS:
+      set_ints(val, V_INT, 1, fb ? fb->AlphaBits : 8, 0, 0, 0);
+      return true;
+   case GL_DEPTH_BITS:
+      set_ints(val, V_INT, 1, fb ? fb->DepthBits : 0, 0, 0, 0);
+      return true;
+   case GL_STENCIL_BITS:
+      set_ints(val, V_INT, 1, fb ? fb->StencilBits : 0, 0, 0, 0);
+      return true;
+   case GL_SUBPIXEL_BITS:
+      set_ints(val, V_INT, 1, FGL_SUBPIXEL_BITS, 0, 0, 0);
+      return true;
+   case GL_DOUBLEBUFFER:
+   case GL_STEREO:
+   case GL_INDEX_MODE:
+      set_ints(val, V_BOOL, 1, 0, 0, 0, 0);
+      return true;
+   case GL_RGBA_MODE:
+      set_ints(val, V_BOOL, 1, 1, 0, 0, 0);
+      return true;
+   case GL_DRAW_BUFFER:
+   case GL_READ_BUFFER:
+      set_ints(val, V_INT, 1, GL_FRONT, 0, 0, 0);
+      return true;
+   default:
+      return false;
+   }
+}
+
+/* Common prologue: context, begin/end check, value lookup. */
+static bool get_value(GLenum pname, const void *params, struct value *val)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return false;
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, false);
+   if (!fill_value(ctx, pname, val)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   }
+   return params != NULL;
+}
+
+void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean *params)
+{
+   struct value val;
+   if (!get_value(pname, params, &val))
+      return;
+   for (int i = 0; i < val.n; i++) {
+      if (val.type == V_BOOL || val.type == V_INT)
+         params[i] = val.v[i] != 0.0 ? GL_TRUE : GL_FALSE;
+      else
+         params[i] = (float)val.v[i] != 0.0f ? GL_TRUE : GL_FALSE; /* NaN is true */
+   }
+}
+
+void GLAPIENTRY glGetIntegerv(GLenum pname, GLint *params)
+{
+   struct value val;
+   if (!get_value(pname, params, &val))
+      return;
+   for (int i = 0; i < val.n; i++) {
+      switch (val.type) {
+      case V_BOOL:
+      case V_INT:
+         params[i] = (GLint)val.v[i];
+         break;
+      case V_FLOAT:
+         params[i] = iround((float)val.v[i]);
+         break;
+      case V_FLOATN:
+         params[i] = fgl_float_to_int_norm(val.v[i]);
+         break;
+      }
+   }
+}
+
+void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat *params)
+{
+   struct value val;
+   if (!get_value(pname, params, &val))
+      return;
+   for (int i = 0; i < val.n; i++)
+      params[i] = (GLfloat)val.v[i];
+}
+
+void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble *params)
+{
+   struct value val;
+   if (!get_value(pname, params, &val))
+      return;
+   for (int i = 0; i < val.n; i++)
+      params[i] = val.v[i];
+}
+
+GLenum GLAPIENTRY glGetError(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return GL_NO_ERROR;
+   /* inside glBegin/glEnd the call itself is an error and reports nothing */
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_NO_ERROR);
+   const GLenum e = ctx->ErrorValue;
+   ctx->ErrorValue = GL_NO_ERROR;
+   return e;
+}
+
+const GLubyte *GLAPIENTRY glGetString(GLenum name)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return NULL;
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, NULL);
+   switch (name) {
+   case GL_VENDOR:
+      return (const GLubyte *)"fixgl";
+   case GL_RENDERER:
+      return (const GLubyte *)"fixgl CPU rasterizer (OpenGL 1.x fixed function)";
+   case GL_VERSION:
+      /* the GL 1.0 core subset implemented so far */
+      return (const GLubyte *)"1.0 fixgl " FIXGL_VERSION_STRING;
+   case GL_EXTENSIONS:
+      return (const GLubyte *)"";
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return NULL;
+   }
+}

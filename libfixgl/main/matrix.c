@@ -1,2 +1,249 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_main_matrix_c;
+/*
+ * Matrix stacks and the matrix entry points (GL 1.x §2.10.2; Mesa
+ * main/matrix.c for stack depths, errors and when vertices are flushed).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "main/groups.h"
+
+static bool init_stack(struct fgl_matrix_stack *stack, unsigned max_depth, unsigned dirty)
+{
+   stack->Stack = calloc(max_depth, sizeof(fgl_matrix));
+   if (!stack->Stack)
+      return false;
+   stack->MaxDepth = max_depth;
+   stack->Depth = 0;
+   stack->Top = &stack->Stack[0];
+   stack->DirtyFlag = dirty;
+   fgl_matrix_identity(stack->Top);
+   return true;
+}
+
+bool fgl_init_matrix(struct fgl_context *ctx)
+{
+   bool ok = init_stack(&ctx->ModelviewStack, FGL_MAX_MODELVIEW_STACK_DEPTH, FGL_NEW_MODELVIEW) &&
+             init_stack(&ctx->ProjectionStack, FGL_MAX_PROJECTION_STACK_DEPTH, FGL_NEW_PROJECTION);
+   for (int i = 0; ok && i < FGL_MAX_TEXTURE_UNITS; i++)
+      ok = init_stack(&ctx->TextureStack[i], FGL_MAX_TEXTURE_STACK_DEPTH, 0);
+   for (int i = 0; ok && i < FGL_MAX_PROGRAM_MATRICES; i++)
+      ok = init_stack(&ctx->ProgramStack[i], FGL_MAX_PROGRAM_STACK_DEPTH, 0);
+   ctx->CurrentStack = &ctx->ModelviewStack;
+   ctx->Transform.MatrixMode = GL_MODELVIEW;
+   return ok;
+}
+
+void fgl_free_matrix(struct fgl_context *ctx)
+{
+   free(ctx->ModelviewStack.Stack);
+   free(ctx->ProjectionStack.Stack);
+   for (int i = 0; i < FGL_MAX_TEXTURE_UNITS; i++)
+      free(ctx->TextureStack[i].Stack);
+   for (int i = 0; i < FGL_MAX_PROGRAM_MATRICES; i++)
+      free(ctx->ProgramStack[i].Stack);
+}
+
+/* The stack glMatrixMode(mode) selects, or NULL for an invalid mode.
+ * GL_MATRIX0_ARB..7 are accepted like the oracle (ARB_vertex_program). */
+static struct fgl_matrix_stack *named_stack(struct fgl_context *ctx, GLenum mode)
+{
+   switch (mode) {
+   case GL_MODELVIEW:
+      return &ctx->ModelviewStack;
+   case GL_PROJECTION:
+      return &ctx->ProjectionStack;
+   case GL_TEXTURE:
+      return &ctx->TextureStack[0];
+   default:
+      if (mode >= GL_MATRIX0_ARB && mode < GL_MATRIX0_ARB + FGL_MAX_PROGRAM_MATRICES)
+         return &ctx->ProgramStack[mode - GL_MATRIX0_ARB];
+      return NULL;
+   }
+}
+
+void GLAPIENTRY glMatrixMode(GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Transform.MatrixMode == mode && mode != GL_TEXTURE)
+      return;
+   struct fgl_matrix_stack *stack = named_stack(ctx, mode);
+   if (!stack) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   ctx->CurrentStack = stack;
+   ctx->Transform.MatrixMode = mode;
+}
+
+void GLAPIENTRY glPushMatrix(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   struct fgl_matrix_stack *stack = ctx->CurrentStack;
+   if (stack->Depth + 1 >= stack->MaxDepth) {
+      fgl_error(ctx, GL_STACK_OVERFLOW);
+      return;
+   }
+   stack->Stack[stack->Depth + 1] = stack->Stack[stack->Depth];
+   stack->Depth++;
+   stack->Top = &stack->Stack[stack->Depth];
+}
+
+void GLAPIENTRY glPopMatrix(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   struct fgl_matrix_stack *stack = ctx->CurrentStack;
+   if (stack->Depth == 0) {
+      fgl_error(ctx, GL_STACK_UNDERFLOW);
+      return;
+   }
+   /* popping back to an identical matrix changes nothing */
+   if (memcmp(stack->Top, &stack->Stack[stack->Depth - 1], sizeof(fgl_matrix)) != 0)
+      FGL_FLUSH_VERTICES(ctx, stack->DirtyFlag);
+   stack->Depth--;
+   stack->Top = &stack->Stack[stack->Depth];
+}
+
+/* Prologue of the matrix-changing calls. */
+#define MATRIX_OP_BEGIN(ctx)                        \
+   GET_CURRENT_CONTEXT(ctx);                        \
+   if (!ctx)                                        \
+      return;                                       \
+   ASSERT_OUTSIDE_BEGIN_END(ctx);                   \
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag)
+
+void GLAPIENTRY glLoadIdentity(void)
+{
+   MATRIX_OP_BEGIN(ctx);
+   fgl_matrix_identity(ctx->CurrentStack->Top);
+}
+
+void GLAPIENTRY glLoadMatrixf(const GLfloat *m)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !m)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* loading the matrix already on top changes nothing */
+   if (memcmp(m, ctx->CurrentStack->Top->m, 16 * sizeof(float)) == 0)
+      return;
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
+   fgl_matrix_loadf(ctx->CurrentStack->Top, m);
+}
+
+void GLAPIENTRY glLoadMatrixd(const GLdouble *m)
+{
+   if (!m)
+      return;
+   GLfloat f[16];
+   for (int i = 0; i < 16; i++)
+      f[i] = (GLfloat)m[i];
+   glLoadMatrixf(f);
+}
+
+void GLAPIENTRY glMultMatrixf(const GLfloat *m)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !m)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* multiplying by the identity changes nothing (Mesa's matrix_mult) */
+   bool is_identity = true;
+   for (int i = 0; i < 16; i++)
+      is_identity &= m[i] == ((i % 5) == 0 ? 1.0f : 0.0f);
+   if (is_identity)
+      return;
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
+   fgl_matrix_mul_floats(ctx->CurrentStack->Top, m);
+}
+
+void GLAPIENTRY glMultMatrixd(const GLdouble *m)
+{
+   if (!m)
+      return;
+   GLfloat f[16];
+   for (int i = 0; i < 16; i++)
+      f[i] = (GLfloat)m[i];
+   glMultMatrixf(f);
+}
+
+void GLAPIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top,
+                        GLdouble nearval, GLdouble farval)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const float l = (float)left, r = (float)right, b = (float)bottom, t = (float)top;
+   const float n = (float)nearval, f = (float)farval;
+   if (l == r || b == t || n == f) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
+   fgl_matrix_ortho(ctx->CurrentStack->Top, l, r, b, t, n, f);
+}
+
+void GLAPIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top,
+                          GLdouble nearval, GLdouble farval)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const float l = (float)left, r = (float)right, b = (float)bottom, t = (float)top;
+   const float n = (float)nearval, f = (float)farval;
+   if (n <= 0.0f || f <= 0.0f || n == f || l == r || t == b) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
+   fgl_matrix_frustum(ctx->CurrentStack->Top, l, r, b, t, n, f);
+}
+
+void GLAPIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z)
+{
+   MATRIX_OP_BEGIN(ctx);
+   fgl_matrix_translate(ctx->CurrentStack->Top, x, y, z);
+}
+
+void GLAPIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z)
+{
+   glTranslatef((GLfloat)x, (GLfloat)y, (GLfloat)z);
+}
+
+void GLAPIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z)
+{
+   MATRIX_OP_BEGIN(ctx);
+   fgl_matrix_scale(ctx->CurrentStack->Top, x, y, z);
+}
+
+void GLAPIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z)
+{
+   glScalef((GLfloat)x, (GLfloat)y, (GLfloat)z);
+}
+
+void GLAPIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (angle == 0.0f)
+      return; /* Mesa: a zero rotation changes nothing */
+   FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
+   fgl_matrix_rotate(ctx->CurrentStack->Top, angle, x, y, z);
+}
+
+void GLAPIENTRY glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z)
+{
+   glRotatef((GLfloat)angle, (GLfloat)x, (GLfloat)y, (GLfloat)z);
+}

@@ -1,2 +1,40 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_main_misc_c;
+/*
+ * glFlush, glFinish and fixgl's own version query.
+ *
+ * Rendering is synchronous, so both only draw what is batched and then
+ * make the image visible: like OSMesa, fixgl renders into its own buffers
+ * and copies them to the application's buffer here.
+ */
+#include <fixgl/fixgl.h>
+
+#include "main/groups.h"
+
+void fgl_flush_front(struct fgl_context *ctx)
+{
+   FGL_FLUSH_VERTICES(ctx, 0);
+   if (ctx->DrawBuffer && ctx->DrawBuffer->FlushFront)
+      ctx->DrawBuffer->FlushFront(ctx->DrawBuffer);
+}
+
+void GLAPIENTRY glFlush(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_front(ctx);
+}
+
+void GLAPIENTRY glFinish(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_front(ctx);
+}
+
+FGLAPI const char *fixglGetVersion(void)
+{
+   return FIXGL_VERSION_STRING;
+}

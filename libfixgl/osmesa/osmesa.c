@@ -1,2 +1,451 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_osmesa_osmesa_c;
+/*
+ * The OSMesa-compatible context API.
+ *
+ * Behaviour follows Mesa 22.3's gallium OSMesa frontend (osmesa.c): the
+ * context renders into its own buffers, which glFlush/glFinish copy into
+ * the application's buffer (bottom row first unless OSMESA_Y_UP is
+ * false); OSMesaGetDepthBuffer returns a bottom-row-first copy of the depth
+ * buffer taken at the first call and refreshed at every glFlush/glFinish.
+ * Buffer formats are chosen as Mesa does: depth and stencil give Z24S8,
+ * stencil alone S8, 24 or more depth bits Z24X8, 16..23 Z16.
+ *
+ * Differences from the oracle, on purpose: OSMESA_BGR works (Mesa has no
+ * gallium format for it and fails OSMesaMakeCurrent); GL_UNSIGNED_SHORT,
+ * GL_FLOAT and OSMESA_RGB_565 buffers are refused (OSMesaMakeCurrent
+ * returns GL_FALSE); NULL arguments never crash.
+ */
+#include <GL/osmesa.h>
+
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "context.h"
+#include "main/groups.h"
+
+#define OSMESA_MAX_SIZE 16384
+
+struct osmesa_context;
+
+/* The OSMesa context current on this thread (its GL context is the one
+ * fgl_get_current() returns). */
+static _Thread_local struct osmesa_context *current_os;
+
+struct osmesa_context {
+   struct fgl_context *gl;
+   GLenum format;
+   enum r_zs_format zs_format;
+   int depth_bits, stencil_bits;
+
+   /* the bound image and the internal buffers that render for it */
+   struct fgl_framebuffer fb;
+   bool has_buffer;
+   void *user_buffer;
+   GLenum type;
+   GLint row_length;
+   GLboolean y_up;
+
+   /* OSMesaGetDepthBuffer's bottom-row-first snapshot */
+   void *zs_copy;
+   int zs_bpv;
+};
+
+static int bytes_per_pixel(GLenum format)
+{
+   return (format == OSMESA_RGB || format == OSMESA_BGR) ? 3 : 4;
+}
+
+static int zs_bytes_per_value(enum r_zs_format f)
+{
+   switch (f) {
+   case R_ZS_Z16:   return 2;
+   case R_ZS_Z24X8:
+   case R_ZS_Z24S8: return 4;
+   case R_ZS_S8:    return 1;
+   default:         return 0;
+   }
+}
+
+/* Copy the internal zs buffer, flipping it to bottom-row-first. */
+static void snapshot_zs(struct osmesa_context *c)
+{
+   const size_t row = (size_t)c->fb.Width * (size_t)c->zs_bpv;
+   const uint8_t *src = c->fb.Depth ? c->fb.Depth : (void *)c->fb.Stencil;
+   for (int y = 0; y < c->fb.Height; y++)
+      memcpy((uint8_t *)c->zs_copy + (size_t)(c->fb.Height - 1 - y) * row,
+             src + (size_t)y * row, row);
+}
+
+/* glFlush/glFinish: copy the image into the application's buffer. */
+static void flush_front(struct fgl_framebuffer *fb)
+{
+   struct osmesa_context *c = (struct osmesa_context *)((char *)fb - offsetof(struct osmesa_context, fb));
+   const int bpp = bytes_per_pixel(c->format);
+   const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
+
+   for (int y = 0; y < fb->Height; y++) {
+      const uint8_t *src = fb->Color + (size_t)y * (size_t)fb->Width * 4;
+      const int dst_row = c->y_up ? fb->Height - 1 - y : y;
+      uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride;
+      for (int x = 0; x < fb->Width; x++, src += 4, dst += bpp) {
+         switch (c->format) {
+         case OSMESA_RGBA: dst[0] = src[0]; dst[1] = src[1]; dst[2] = src[2]; dst[3] = src[3]; break;
+         case OSMESA_BGRA: dst[0] = src[2]; dst[1] = src[1]; dst[2] = src[0]; dst[3] = src[3]; break;
+         case OSMESA_ARGB: dst[0] = src[3]; dst[1] = src[0]; dst[2] = src[1]; dst[3] = src[2]; break;
+         case OSMESA_RGB:  dst[0] = src[0]; dst[1] = src[1]; dst[2] = src[2]; break;
+         default:          dst[0] = src[2]; dst[1] = src[1]; dst[2] = src[0]; break; /* BGR */
+         }
+      }
+   }
+   if (c->zs_copy)
+      snapshot_zs(c);
+}
+
+GLAPI OSMesaContext GLAPIENTRY
+OSMesaCreateContext(GLenum format, OSMesaContext sharelist)
+{
+   return OSMesaCreateContextExt(format, 24, 8, 0, sharelist);
+}
+
+GLAPI OSMesaContext GLAPIENTRY
+OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits,
+                       GLint accumBits, OSMesaContext sharelist)
+{
+   const int attribs[] = {
+      OSMESA_FORMAT, (int)format,
+      OSMESA_DEPTH_BITS, depthBits,
+      OSMESA_STENCIL_BITS, stencilBits,
+      OSMESA_ACCUM_BITS, accumBits,
+      0,
+   };
+   return OSMesaCreateContextAttribs(attribs, sharelist);
+}
+
+GLAPI OSMesaContext GLAPIENTRY
+OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
+{
+   GLenum format = GL_RGBA;
+   int depth = 0, stencil = 0;
+   (void)sharelist; /* nothing is shareable yet (display lists, textures) */
+
+   for (int i = 0; attribList && attribList[i]; i += 2) {
+      const int value = attribList[i + 1];
+      switch (attribList[i]) {
+      case OSMESA_FORMAT:
+         switch (value) {
+         case OSMESA_COLOR_INDEX: case OSMESA_RGBA: case OSMESA_BGRA:
+         case OSMESA_ARGB: case OSMESA_RGB: case OSMESA_BGR: case OSMESA_RGB_565:
+            format = (GLenum)value;
+            break;
+         default:
+            return NULL;
+         }
+         break;
+      case OSMESA_DEPTH_BITS:
+         if (value < 0)
+            return NULL;
+         depth = value;
+         break;
+      case OSMESA_STENCIL_BITS:
+         if (value < 0)
+            return NULL;
+         stencil = value;
+         break;
+      case OSMESA_ACCUM_BITS:
+         if (value < 0)
+            return NULL;
+         break;
+      case OSMESA_PROFILE:
+         if (value != OSMESA_CORE_PROFILE && value != OSMESA_COMPAT_PROFILE)
+            return NULL;
+         break;
+      case OSMESA_CONTEXT_MAJOR_VERSION:
+         if (value < 1)
+            return NULL;
+         break;
+      case OSMESA_CONTEXT_MINOR_VERSION:
+         if (value < 0)
+            return NULL;
+         break;
+      default:
+         return NULL;
+      }
+   }
+
+   struct osmesa_context *c = calloc(1, sizeof(*c));
+   if (!c)
+      return NULL;
+   c->gl = fgl_context_create();
+   if (!c->gl) {
+      free(c);
+      return NULL;
+   }
+   c->format = format;
+   c->y_up = GL_TRUE;
+   if (depth > 0 && stencil > 0) {
+      c->zs_format = R_ZS_Z24S8; c->depth_bits = 24; c->stencil_bits = 8;
+   } else if (stencil > 0) {
+      c->zs_format = R_ZS_S8; c->stencil_bits = 8;
+   } else if (depth >= 24) {
+      c->zs_format = R_ZS_Z24X8; c->depth_bits = 24;
+   } else if (depth >= 16) {
+      c->zs_format = R_ZS_Z16; c->depth_bits = 16;
+   }
+   c->zs_bpv = zs_bytes_per_value(c->zs_format);
+   return c;
+}
+
+static void free_buffers(struct osmesa_context *c)
+{
+   free(c->fb.Color);
+   free(c->fb.Depth);
+   free(c->fb.Stencil);
+   free(c->zs_copy);
+   c->fb.Color = NULL;
+   c->fb.Depth = NULL;
+   c->fb.Stencil = NULL;
+   c->zs_copy = NULL;
+   c->has_buffer = false;
+}
+
+GLAPI void GLAPIENTRY
+OSMesaDestroyContext(OSMesaContext c)
+{
+   if (!c)
+      return;
+   if (fgl_get_current() == c->gl) {
+      fgl_set_current(NULL);
+      current_os = NULL;
+   }
+   fgl_context_destroy(c->gl);
+   free_buffers(c);
+   free(c);
+}
+
+/* (Re)allocate the internal buffers for a width x height image. */
+static bool alloc_buffers(struct osmesa_context *c, int width, int height)
+{
+   const size_t n = (size_t)width * (size_t)height;
+   free_buffers(c);
+   struct fgl_framebuffer *fb = &c->fb;
+   fb->Width = width;
+   fb->Height = height;
+   fb->DepthBits = c->depth_bits;
+   fb->StencilBits = c->stencil_bits;
+   fb->AlphaBits = bytes_per_pixel(c->format) == 4 ? 8 : 0;
+   fb->ZSFormat = c->zs_format;
+   fb->FlushFront = flush_front;
+   fb->Color = calloc(n, 4);
+   if (c->zs_format == R_ZS_S8)
+      fb->Stencil = calloc(n, 1);
+   else if (c->zs_format != R_ZS_NONE)
+      fb->Depth = calloc(n, (size_t)c->zs_bpv);
+   if (!fb->Color || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil)) {
+      free_buffers(c);
+      return false;
+   }
+   c->has_buffer = true;
+   return true;
+}
+
+GLAPI GLboolean GLAPIENTRY
+OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
+                  GLsizei width, GLsizei height)
+{
+   struct fgl_context *cur = fgl_get_current();
+
+   if (!c && !buffer) {
+      if (cur)
+         fgl_flush_front(cur);
+      fgl_set_current(NULL);
+      current_os = NULL;
+      return GL_TRUE;
+   }
+   if (!c || !buffer || width < 1 || height < 1 ||
+       width > OSMESA_MAX_SIZE || height > OSMESA_MAX_SIZE)
+      return GL_FALSE;
+   if (type != GL_UNSIGNED_BYTE || c->format == OSMESA_COLOR_INDEX ||
+       c->format == OSMESA_RGB_565) {
+      fprintf(stderr, "OSMesaMakeCurrent(unsupported format/type)\n");
+      return GL_FALSE;
+   }
+
+   /* like _mesa_make_current, finish the work of the previous binding */
+   if (cur && (cur != c->gl || c->user_buffer != buffer))
+      fgl_flush_front(cur);
+
+   if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height) {
+      if (!alloc_buffers(c, width, height))
+         return GL_FALSE;
+   }
+   c->user_buffer = buffer;
+   c->type = type;
+   fgl_context_bind_framebuffer(c->gl, &c->fb);
+   fgl_set_current(c->gl);
+   current_os = c;
+   return GL_TRUE;
+}
+
+static struct osmesa_context *current_osmesa(void)
+{
+   if (current_os && fgl_get_current() != current_os->gl)
+      current_os = NULL;
+   return current_os;
+}
+
+GLAPI OSMesaContext GLAPIENTRY
+OSMesaGetCurrentContext(void)
+{
+   return current_osmesa();
+}
+
+GLAPI void GLAPIENTRY
+OSMesaPixelStore(GLint pname, GLint value)
+{
+   struct osmesa_context *c = current_osmesa();
+   if (!c)
+      return;
+   switch (pname) {
+   case OSMESA_ROW_LENGTH:
+      c->row_length = value;
+      break;
+   case OSMESA_Y_UP:
+      c->y_up = value ? GL_TRUE : GL_FALSE;
+      break;
+   default:
+      fprintf(stderr, "Invalid pname in OSMesaPixelStore()\n");
+      break;
+   }
+}
+
+GLAPI void GLAPIENTRY
+OSMesaGetIntegerv(GLint pname, GLint *value)
+{
+   struct osmesa_context *c = current_osmesa();
+   if (!value)
+      return;
+   switch (pname) {
+   case OSMESA_WIDTH:
+      *value = c && c->has_buffer ? c->fb.Width : 0;
+      return;
+   case OSMESA_HEIGHT:
+      *value = c && c->has_buffer ? c->fb.Height : 0;
+      return;
+   case OSMESA_FORMAT:
+      if (c)
+         *value = (GLint)c->format;
+      return;
+   case OSMESA_TYPE:
+      if (c)
+         *value = (GLint)c->type;
+      return;
+   case OSMESA_ROW_LENGTH:
+      if (c)
+         *value = c->row_length;
+      return;
+   case OSMESA_Y_UP:
+      if (c)
+         *value = c->y_up;
+      return;
+   case OSMESA_MAX_WIDTH:
+   case OSMESA_MAX_HEIGHT:
+      *value = OSMESA_MAX_SIZE;
+      return;
+   default:
+      fprintf(stderr, "Invalid pname in OSMesaGetIntegerv()\n");
+      return;
+   }
+}
+
+GLAPI GLboolean GLAPIENTRY
+OSMesaGetDepthBuffer(OSMesaContext c, GLint *width, GLint *height,
+                     GLint *bytesPerValue, void **buffer)
+{
+   GLint w = 0, h = 0, bpv = 0;
+   void *buf = NULL;
+   GLboolean ok = GL_FALSE;
+
+   if (c && c->has_buffer && c->zs_format != R_ZS_NONE) {
+      w = c->fb.Width;
+      h = c->fb.Height;
+      bpv = c->zs_bpv;
+      if (!c->zs_copy) {
+         c->zs_copy = calloc((size_t)w * (size_t)h, (size_t)bpv);
+         if (c->zs_copy)
+            snapshot_zs(c);
+      }
+      buf = c->zs_copy;
+      ok = buf ? GL_TRUE : GL_FALSE;
+   }
+   if (width) *width = ok ? w : 0;
+   if (height) *height = ok ? h : 0;
+   if (bytesPerValue) *bytesPerValue = ok ? bpv : 0;
+   if (buffer) *buffer = buf;
+   return ok;
+}
+
+GLAPI GLboolean GLAPIENTRY
+OSMesaGetColorBuffer(OSMesaContext c, GLint *width, GLint *height,
+                     GLint *format, void **buffer)
+{
+   const bool ok = c && c->has_buffer;
+   if (width) *width = ok ? c->fb.Width : 0;
+   if (height) *height = ok ? c->fb.Height : 0;
+   if (format) *format = ok ? (GLint)c->format : 0;
+   if (buffer) *buffer = ok ? c->user_buffer : NULL;
+   return ok ? GL_TRUE : GL_FALSE;
+}
+
+GLAPI void GLAPIENTRY
+OSMesaColorClamp(GLboolean enable)
+{
+   /* Colours are always clamped for the 8-bit buffers fixgl supports. */
+   (void)enable;
+}
+
+GLAPI void GLAPIENTRY
+OSMesaPostprocess(OSMesaContext osmesa, const char *filter, unsigned enable_value)
+{
+   (void)osmesa;
+   (void)enable_value;
+   fprintf(stderr, "OSMesaPostprocess(%s): no post-processing filters in fixgl\n",
+           filter ? filter : "(null)");
+}
+
+struct proc_entry {
+   const char *name;
+   OSMESAproc proc;
+};
+
+static const struct proc_entry procs[] = {
+/* casting through void (*)(void), the generic function pointer type */
+#define PROC(f) ((OSMESAproc)(void (*)(void))(f))
+#define FGL_API(f) { #f, PROC(f) },
+#include "main/api_list.h"
+#undef FGL_API
+   { "OSMesaColorClamp", PROC(OSMesaColorClamp) },
+   { "OSMesaCreateContext", PROC(OSMesaCreateContext) },
+   { "OSMesaCreateContextAttribs", PROC(OSMesaCreateContextAttribs) },
+   { "OSMesaCreateContextExt", PROC(OSMesaCreateContextExt) },
+   { "OSMesaDestroyContext", PROC(OSMesaDestroyContext) },
+   { "OSMesaGetColorBuffer", PROC(OSMesaGetColorBuffer) },
+   { "OSMesaGetCurrentContext", PROC(OSMesaGetCurrentContext) },
+   { "OSMesaGetDepthBuffer", PROC(OSMesaGetDepthBuffer) },
+   { "OSMesaGetIntegerv", PROC(OSMesaGetIntegerv) },
+   { "OSMesaGetProcAddress", PROC(OSMesaGetProcAddress) },
+   { "OSMesaMakeCurrent", PROC(OSMesaMakeCurrent) },
+   { "OSMesaPixelStore", PROC(OSMesaPixelStore) },
+   { "OSMesaPostprocess", PROC(OSMesaPostprocess) },
+};
+
+GLAPI OSMESAproc GLAPIENTRY
+OSMesaGetProcAddress(const char *funcName)
+{
+   if (!funcName)
+      return NULL;
+   for (size_t i = 0; i < sizeof(procs) / sizeof(procs[0]); i++)
+      if (strcmp(procs[i].name, funcName) == 0)
+         return procs[i].proc;
+   return NULL;
+}

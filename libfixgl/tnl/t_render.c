@@ -1,2 +1,138 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_tnl_t_render_c;
+/*
+ * Primitive assembly: immediate-mode primitives to triangles, in the vertex
+ * orders the oracle uses (llvmpipe-facts.md §2 "Flat shading" and "quad
+ * diagonal"; Mesa lp_setup_vbuf.c and draw_decompose_tmp.h), with the
+ * provoking vertex last in every triangle:
+ *   TRIANGLES       (i, i+1, i+2)
+ *   TRIANGLE_STRIP  (i, i+1, i+2) for even i, (i+1, i, i+2) for odd i
+ *   TRIANGLE_FAN    (0, i+1, i+2)
+ *   POLYGON         (i+1, i+2, 0)      provoking vertex = first vertex
+ *   QUADS           (0,1,2)+(0,2,3) smooth on llvmpipe's direct path,
+ *                   (0,1,3)+(1,2,3) flat or through the draw pipeline
+ *   QUAD_STRIP      direct:   (k,k+1,k+3) then (k+2,k,k+3)
+ *                   pipeline: (k+2,k,k+3) then (k,k+1,k+3)
+ * A draw goes through the draw pipeline, segment by segment (4096 vertices,
+ * Mesa's vsplit), when any vertex of the segment needs clipping.
+ */
+#include "tnl/t_pipeline.h"
+
+#include <stdlib.h>
+
+#include "context.h"
+
+#define SEGMENT_SIZE 4096
+
+struct render {
+   const struct fgl_context *ctx;
+   const struct t_vertex *v;     /* transformed vertices of the draw */
+};
+
+static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c)
+{
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c]);
+}
+
+/* Vertices [start, start+count) of a segment need the draw pipeline. */
+static bool segment_clipped(const struct render *r, unsigned start, unsigned count)
+{
+   unsigned m = 0;
+   for (unsigned i = start; i < start + count; i++)
+      m |= r->v[i].mask;
+   return m != 0;
+}
+
+static void render_quads(const struct render *r, unsigned start, unsigned count, bool flat)
+{
+   count &= ~3u;
+   for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
+      const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
+      const bool split13 = flat || segment_clipped(r, start + seg, n);
+      for (unsigned i = start + seg; i < start + seg + n; i += 4) {
+         if (split13) {
+            tri(r, i, i + 1, i + 3);
+            tri(r, i + 1, i + 2, i + 3);
+         } else {
+            tri(r, i, i + 1, i + 2);
+            tri(r, i, i + 2, i + 3);
+         }
+      }
+   }
+}
+
+static void render_quad_strip(const struct render *r, unsigned start, unsigned count)
+{
+   count &= ~1u;
+   if (count < 4)
+      return;
+   /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
+   for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
+      const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
+      const bool pipeline = segment_clipped(r, start + seg, n);
+      for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
+         if (pipeline) {
+            tri(r, k + 2, k, k + 3);
+            tri(r, k, k + 1, k + 3);
+         } else {
+            tri(r, k, k + 1, k + 3);
+            tri(r, k + 2, k, k + 3);
+         }
+      }
+      if (seg + n >= count)
+         break;
+   }
+}
+
+static void render_prim(const struct render *r, const struct fgl_vbo_prim *p, bool flat)
+{
+   const unsigned s = p->start, n = p->count;
+   switch (p->mode) {
+   case GL_TRIANGLES:
+      for (unsigned i = 0; i + 2 < n; i += 3)
+         tri(r, s + i, s + i + 1, s + i + 2);
+      break;
+   case GL_TRIANGLE_STRIP:
+      for (unsigned i = 0; i + 2 < n; i++) {
+         if (i & 1)
+            tri(r, s + i + 1, s + i, s + i + 2);
+         else
+            tri(r, s + i, s + i + 1, s + i + 2);
+      }
+      break;
+   case GL_TRIANGLE_FAN:
+      for (unsigned i = 0; i + 2 < n; i++)
+         tri(r, s, s + i + 1, s + i + 2);
+      break;
+   case GL_POLYGON:
+      for (unsigned i = 0; i + 2 < n; i++)
+         tri(r, s + i + 1, s + i + 2, s);
+      break;
+   case GL_QUADS:
+      render_quads(r, s, n, flat);
+      break;
+   case GL_QUAD_STRIP:
+      render_quad_strip(r, s, n);
+      break;
+   default:
+      /* points and lines arrive with their own issue */
+      break;
+   }
+}
+
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+{
+   fgl_update_state(ctx);
+   if (!ctx->DrawBuffer)
+      return;
+
+   struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
+   if (!tv)
+      return;
+   t_transform(ctx, verts, nverts, tv);
+
+   const struct render r = { ctx, tv };
+   const bool flat = ctx->Light.ShadeModel == GL_FLAT;
+   for (unsigned i = 0; i < nprims; i++)
+      render_prim(&r, &prims[i], flat);
+   free(tv);
+}

@@ -1,2 +1,64 @@
-/* placeholder: filled in by the foundation work */
-typedef int fgl_placeholder_tnl_t_vertex_c;
+/*
+ * Vertex transform, as the oracle's fixed-function vertex shader computes it
+ * (llvmpipe-facts.md §1 "Vertex path", §2 "Vertex colours"):
+ *   clip = ((x*C0 + y*C1) + z*C2) + w*C3   (MVP columns, every op rounded)
+ *   oow  = 1/clip.w,  win = fma(clip*oow, scale, translate)
+ * and vertex colours clamped to [0,1].
+ */
+#include "tnl/t_pipeline.h"
+
+#include <math.h>
+
+#include "context.h"
+
+/* Outcodes: bit0 x>w, bit1 x+w<0, bit2 y>w, bit3 y+w<0, bit4 z+w<0, bit5 z>w.
+ * A point on a boundary is inside. */
+static inline unsigned clip_mask(const float *p)
+{
+   unsigned m = 0;
+   if (p[0] > p[3])        m |= 1u << 0;
+   if (p[0] + p[3] < 0.0f) m |= 1u << 1;
+   if (p[1] > p[3])        m |= 1u << 2;
+   if (p[1] + p[3] < 0.0f) m |= 1u << 3;
+   if (p[2] + p[3] < 0.0f) m |= 1u << 4;
+   if (p[2] > p[3])        m |= 1u << 5;
+   return m;
+}
+
+/* Vertex colour clamp; NaN becomes 0 (maxps returns its second operand). */
+static inline float clamp01(float c)
+{
+   if (!(c > 0.0f))
+      return 0.0f;
+   return c < 1.0f ? c : 1.0f;
+}
+
+void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                 unsigned n, struct t_vertex *out)
+{
+   const float *m = ctx->_ModelProjectMatrix.m;
+   const float *s = ctx->_ViewportScale, *t = ctx->_ViewportTranslate;
+
+   for (unsigned i = 0; i < n; i++) {
+      const float *p = in[i].attr[FGL_ATTR_POS];
+      struct t_vertex *v = &out[i];
+      for (int r = 0; r < 4; r++) {
+         float acc = p[0] * m[r];
+         acc = p[1] * m[4 + r] + acc;
+         acc = p[2] * m[8 + r] + acc;
+         acc = p[3] * m[12 + r] + acc;
+         v->clip[r] = acc;
+      }
+      v->mask = clip_mask(v->clip);
+
+      const float oow = 1.0f / v->clip[3];
+      v->r.pos[0] = fmaf(v->clip[0] * oow, s[0], t[0]);
+      v->r.pos[1] = fmaf(v->clip[1] * oow, s[1], t[1]);
+      v->r.pos[2] = fmaf(v->clip[2] * oow, s[2], t[2]);
+      v->r.pos[3] = oow;
+
+      const float *c = in[i].attr[FGL_ATTR_COLOR0];
+      for (int k = 0; k < 4; k++)
+         v->r.attr[0][k] = clamp01(c[k]);
+   }
+}

@@ -1,0 +1,37 @@
+/*
+ * Internal interface of the per-attribute-group files in main/: defaults
+ * (spec tables) and the trusted setters other files call.
+ */
+#ifndef FGL_MAIN_GROUPS_H
+#define FGL_MAIN_GROUPS_H
+
+#include "context.h"
+
+/* main/matrix.c */
+bool fgl_init_matrix(struct fgl_context *ctx);
+void fgl_free_matrix(struct fgl_context *ctx);
+
+/* main/begin_end.c (GL_CURRENT_BIT) */
+void fgl_init_current(struct fgl_context *ctx);
+
+/* main/clear.c (GL_COLOR_BUFFER_BIT) */
+void fgl_init_color(struct fgl_context *ctx);
+
+/* main/depth.c (GL_DEPTH_BUFFER_BIT) */
+void fgl_init_depth(struct fgl_context *ctx);
+
+/* main/light.c (GL_LIGHTING_BIT) */
+void fgl_init_light(struct fgl_context *ctx);
+
+/* main/viewport.c (GL_VIEWPORT_BIT) */
+void fgl_init_viewport(struct fgl_context *ctx);
+void fgl_set_viewport(struct fgl_context *ctx, int x, int y, int width, int height);
+
+/* main/misc.c: make the framebuffer's content visible to the application
+ * (glFlush/glFinish). */
+void fgl_flush_front(struct fgl_context *ctx);
+
+/* Conversions shared by the getters (main/get.c). */
+GLint fgl_float_to_int_norm(double f);
+
+#endif

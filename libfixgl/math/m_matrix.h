@@ -1,0 +1,69 @@
+/*
+ * Mesa-exact float matrix arithmetic.
+ *
+ * Every builder reproduces the oracle's CPU code (llvmpipe-facts.md §1,
+ * "Matrix builders, all float"): the same float operations in the same
+ * order, so that the model-view-projection product handed to the vertex
+ * stage is bit-identical.  Matrices are column-major (OpenGL layout):
+ * element (row r, column c) is m[c*4 + r].
+ *
+ * Each matrix carries Mesa's geometry flags.  They matter for the result:
+ * an affine×affine product uses the 3×4 multiply (no terms for the bottom
+ * row), anything else the full 4×4 one, which differs in the sign of zeros
+ * and in how Inf/NaN propagate.
+ */
+#ifndef FGL_M_MATRIX_H
+#define FGL_M_MATRIX_H
+
+#include <stdbool.h>
+
+enum {
+   MAT_FLAG_GENERAL       = 0x1,
+   MAT_FLAG_ROTATION      = 0x2,
+   MAT_FLAG_TRANSLATION   = 0x4,
+   MAT_FLAG_UNIFORM_SCALE = 0x8,
+   MAT_FLAG_GENERAL_SCALE = 0x10,
+   MAT_FLAG_GENERAL_3D    = 0x20,
+   MAT_FLAG_PERSPECTIVE   = 0x40,
+   MAT_FLAG_SINGULAR      = 0x80,
+   MAT_DIRTY_TYPE         = 0x100,
+   MAT_DIRTY_FLAGS        = 0x200,
+   MAT_DIRTY_INVERSE      = 0x400,
+};
+
+#define MAT_FLAGS_GEOMETRY (MAT_FLAG_GENERAL | MAT_FLAG_ROTATION | \
+   MAT_FLAG_TRANSLATION | MAT_FLAG_UNIFORM_SCALE | MAT_FLAG_GENERAL_SCALE | \
+   MAT_FLAG_GENERAL_3D | MAT_FLAG_PERSPECTIVE | MAT_FLAG_SINGULAR)
+#define MAT_FLAGS_3D (MAT_FLAG_ROTATION | MAT_FLAG_TRANSLATION | \
+   MAT_FLAG_UNIFORM_SCALE | MAT_FLAG_GENERAL_SCALE | MAT_FLAG_GENERAL_3D)
+#define MAT_DIRTY (MAT_DIRTY_TYPE | MAT_DIRTY_FLAGS | MAT_DIRTY_INVERSE)
+
+typedef struct fgl_matrix {
+   float m[16];
+   unsigned flags;   /* MAT_FLAG_* geometry flags and MAT_DIRTY_* */
+} fgl_matrix;
+
+void fgl_matrix_identity(fgl_matrix *mat);
+void fgl_matrix_loadf(fgl_matrix *mat, const float m[16]);
+void fgl_matrix_mul_floats(fgl_matrix *mat, const float m[16]);
+void fgl_matrix_mul_matrix(fgl_matrix *dest, const fgl_matrix *a, const fgl_matrix *b);
+void fgl_matrix_ortho(fgl_matrix *mat, float left, float right, float bottom,
+                      float top, float nearval, float farval);
+void fgl_matrix_frustum(fgl_matrix *mat, float left, float right, float bottom,
+                        float top, float nearval, float farval);
+void fgl_matrix_translate(fgl_matrix *mat, float x, float y, float z);
+void fgl_matrix_scale(fgl_matrix *mat, float x, float y, float z);
+void fgl_matrix_rotate(fgl_matrix *mat, float angle, float x, float y, float z);
+
+/* Recompute the geometry flags if they are dirty, as Mesa's
+ * _math_matrix_analyse does before the matrix is used; MAT_FLAG_SINGULAR
+ * records whether Mesa's inverse for the matrix's type succeeds. */
+void fgl_matrix_analyse(fgl_matrix *mat);
+
+/* True when the product with another 3D matrix may use the 3x4 multiply. */
+static inline bool fgl_matrix_is_3d(unsigned flags)
+{
+   return (MAT_FLAGS_GEOMETRY & ~MAT_FLAGS_3D & flags) == 0;
+}
+
+#endif

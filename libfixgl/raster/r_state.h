@@ -1,0 +1,73 @@
+/*
+ * The raster core's view of the world.  It knows nothing of GL: the
+ * context's validation pass (state.c) translates GL state into an r_state,
+ * and the vertex stage hands it r_vertex triangles in window coordinates.
+ *
+ * Coordinates are y-down, as in the oracle (llvmpipe-facts.md §0): row 0 of
+ * every buffer is the top row of the image.
+ */
+#ifndef FGL_R_STATE_H
+#define FGL_R_STATE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define R_MAX_ATTRIBS 4
+
+/* Depth/stencil buffer layouts, as the OSMesa oracle allocates them. */
+enum r_zs_format {
+   R_ZS_NONE,
+   R_ZS_Z16,       /* uint16_t depth */
+   R_ZS_Z24X8,     /* uint32_t, depth in bits 0..23, bits 24..31 zero */
+   R_ZS_Z24S8,     /* uint32_t, depth in bits 0..23, stencil in 24..31 */
+   R_ZS_S8,        /* uint8_t stencil only */
+};
+
+/* Comparison functions, in GL's order (GL_NEVER + n). */
+enum r_func {
+   R_NEVER, R_LESS, R_EQUAL, R_LEQUAL, R_GREATER, R_NOTEQUAL, R_GEQUAL, R_ALWAYS,
+};
+
+/* A post-transform vertex: window position (x, y y-down, z in [0,1] before
+ * clamping, w = 1/clip_w) and its varyings. */
+struct r_vertex {
+   float pos[4];
+   float attr[R_MAX_ATTRIBS][4];
+};
+
+struct r_state {
+   /* target */
+   uint8_t *color;              /* RGBA8 */
+   void *zs;
+   enum r_zs_format zs_format;
+   int width, height;
+
+   /* pixels outside [x0,x1) x [y0,y1) are never touched (framebuffer,
+    * later intersected with the scissor box) */
+   int x0, y0, x1, y1;
+
+   /* per-fragment operations */
+   bool depth_test;
+   enum r_func depth_func;
+   bool depth_write;
+
+   /* varyings: attribute 0 is the colour written to the buffer */
+   int num_attribs;
+   uint32_t flat_mask;          /* bit i: attribute i uses the provoking vertex */
+};
+
+/* Rasterize one triangle; v2 is the provoking vertex. */
+void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
+                const struct r_vertex *v1, const struct r_vertex *v2);
+
+/* Clear whole buffers (the masked/scissored clear arrives with its issue). */
+void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);
+void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
+                           bool stencil, uint8_t svalue);
+
+/* Float -> unorm conversions of the oracle (llvmpipe-facts.md §1, §2). */
+uint8_t r_float_to_unorm8(float c);
+uint32_t r_depth_to_z24(float z);
+uint16_t r_depth_to_z16(float z);
+
+#endif

@@ -1,0 +1,34 @@
+/*
+ * The vertex stage: transform to clip space, clip test, geometric clipping,
+ * primitive assembly.  Its output is r_vertex triangles for the raster core.
+ */
+#ifndef FGL_T_PIPELINE_H
+#define FGL_T_PIPELINE_H
+
+#include "raster/r_state.h"
+#include "tnl/t_vbo.h"
+
+struct fgl_context;
+
+/* A vertex after the vertex "shader": clip-space position, outcode bits
+ * (llvmpipe-facts.md §1 "Outcodes"), window position and varyings. */
+struct t_vertex {
+   float clip[4];
+   unsigned mask;
+   struct r_vertex r;
+};
+
+/* Transform n stored vertices (positions, colours) into out[]. */
+void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                 unsigned n, struct t_vertex *out);
+
+/* Clip a triangle against the view volume and rasterize the pieces; v2 is
+ * the provoking vertex. */
+void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
+                     const struct t_vertex *v1, const struct t_vertex *v2);
+
+/* Draw a batch of immediate-mode primitives. */
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);
+
+#endif

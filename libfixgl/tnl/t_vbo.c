@@ -1,0 +1,302 @@
+/*
+ * Immediate-mode vertex store, reproducing Mesa 22.3's vbo_exec batching
+ * (vbo_exec_api.c, vbo_exec_draw.c, vbo_minmax/vbo_merge_draws): see t_vbo.h
+ * for why the batch boundaries are part of the oracle's output.
+ */
+#include "t_vbo.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "context.h"
+#include "tnl/t_pipeline.h"
+
+static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+
+bool fgl_vbo_init(struct fgl_vbo *vbo)
+{
+   memset(vbo, 0, sizeof(*vbo));
+   vbo->vert_alloc = 1024;
+   vbo->verts = malloc(vbo->vert_alloc * sizeof(*vbo->verts));
+   memcpy(vbo->current[FGL_ATTR_POS], attr_default, sizeof(attr_default));
+   /* GL's initial current colour is (1,1,1,1) */
+   for (int i = 0; i < 4; i++)
+      vbo->current[FGL_ATTR_COLOR0][i] = 1.0f;
+   return vbo->verts != NULL;
+}
+
+void fgl_vbo_fini(struct fgl_vbo *vbo)
+{
+   free(vbo->verts);
+   vbo->verts = NULL;
+}
+
+/* vbo_compute_max_verts: room left in the buffer, less one vertex kept for
+ * the GL_LINE_LOOP -> GL_LINE_STRIP conversion. */
+static unsigned compute_max_verts(const struct fgl_vbo *vbo)
+{
+   if (vbo->vertex_size == 0)
+      return 0;
+   const unsigned n = (FGL_VBO_BUFFER_BYTES - vbo->buffer_used) /
+                      (vbo->vertex_size * (unsigned)sizeof(float));
+   return n ? n - 1 : 0;
+}
+
+/* vbo_copy_vertices: how many trailing vertices of the open primitive
+ * continue in the next buffer; may shorten the draw (odd strips). */
+static unsigned copy_vertices(struct fgl_vbo *vbo, struct fgl_vbo_vertex *dst)
+{
+   struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
+   const struct fgl_vbo_vertex *src = vbo->verts + last->start;
+   const unsigned count = last->count;
+   unsigned copy;
+
+   switch (last->mode) {
+   case GL_POINTS:
+      return 0;
+   case GL_LINES:
+      copy = count % 2;
+      break;
+   case GL_TRIANGLES:
+      copy = count % 3;
+      break;
+   case GL_QUADS:
+      copy = count % 4;
+      break;
+   case GL_LINE_STRIP:
+      copy = count < 1 ? count : 1;
+      break;
+   case GL_LINE_LOOP:
+   case GL_TRIANGLE_FAN:
+   case GL_POLYGON:
+      if (count == 0)
+         return 0;
+      dst[0] = src[0];
+      if (count == 1)
+         return 1;
+      dst[1] = src[count - 1];
+      return 2;
+   case GL_TRIANGLE_STRIP:
+      /* keep an even number of triangles in each draw so that windings
+       * do not flip: an odd strip leaves its last triangle for the next */
+      if (count & 1)
+         last->count--;
+      /* fallthrough */
+   case GL_QUAD_STRIP:
+      copy = count <= 1 ? count : 2 + (count & 1);
+      break;
+   default:
+      return 0;
+   }
+   memcpy(dst, src + count - copy, copy * sizeof(*dst));
+   return copy;
+}
+
+/* vbo_exec_vtx_flush: draw the stored primitives, keeping the vertices an
+ * open primitive needs (returned in copied[], count in *ncopied). */
+static void vtx_flush(struct fgl_context *ctx, struct fgl_vbo_vertex *copied,
+                      unsigned *ncopied)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   unsigned nc = 0;
+
+   if (vbo->prim_count && vbo->vert_count) {
+      if (fgl_inside_begin_end(ctx))
+         nc = copy_vertices(vbo, copied);
+      if (nc != vbo->vert_count)
+         t_render_batch(ctx, vbo->verts, vbo->vert_count, vbo->prims, vbo->prim_count);
+   }
+   /* the emulated buffer advances; with 1 KiB or less left a new one is used */
+   vbo->buffer_used += vbo->vert_count * vbo->vertex_size * (unsigned)sizeof(float);
+   if (!(FGL_VBO_BUFFER_BYTES > vbo->buffer_used + 1024))
+      vbo->buffer_used = 0;
+   vbo->prim_count = 0;
+   vbo->vert_count = 0;
+   vbo->max_vert = compute_max_verts(vbo);
+   if (ncopied)
+      *ncopied = nc;
+}
+
+/* vbo_exec_wrap_buffers: draw what is stored and restart the open
+ * primitive at the beginning of the buffer. */
+static unsigned wrap_buffers(struct fgl_context *ctx, struct fgl_vbo_vertex *copied)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   unsigned ncopied = 0;
+
+   if (vbo->prim_count == 0) {
+      vbo->vert_count = 0;
+      return 0;
+   }
+
+   struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
+   const bool last_begin = last->begin;
+   unsigned last_count = 0;
+   if (fgl_inside_begin_end(ctx)) {
+      last->count = vbo->vert_count - last->start;
+      last_count = last->count;
+      last->end = false;
+   }
+
+   if (vbo->vert_count) {
+      vtx_flush(ctx, copied, &ncopied);
+   } else {
+      vbo->prim_count = 0;
+   }
+
+   if (fgl_inside_begin_end(ctx)) {
+      vbo->prims[0] = (struct fgl_vbo_prim){
+         .mode = ctx->BeginMode, .start = 0,
+         .begin = ncopied == last_count ? last_begin : false,
+      };
+      vbo->prim_count = 1;
+   }
+   return ncopied;
+}
+
+static bool ensure_room(struct fgl_vbo *vbo, unsigned n)
+{
+   if (n <= vbo->vert_alloc)
+      return true;
+   unsigned alloc = vbo->vert_alloc;
+   while (alloc < n)
+      alloc *= 2;
+   struct fgl_vbo_vertex *v = realloc(vbo->verts, alloc * sizeof(*v));
+   if (!v)
+      return false;
+   vbo->verts = v;
+   vbo->vert_alloc = alloc;
+   return true;
+}
+
+static void put_back(struct fgl_vbo *vbo, const struct fgl_vbo_vertex *copied, unsigned n)
+{
+   if (n && ensure_room(vbo, vbo->vert_count + n)) {
+      memcpy(vbo->verts + vbo->vert_count, copied, n * sizeof(*copied));
+      vbo->vert_count += n;
+   }
+}
+
+/* vbo_exec_vtx_wrap: the buffer is full in the middle of a primitive. */
+static void vtx_wrap(struct fgl_context *ctx)
+{
+   struct fgl_vbo_vertex copied[3];
+   const unsigned n = wrap_buffers(ctx, copied);
+   put_back(&ctx->Vbo, copied, n);
+}
+
+/* vbo_exec_wrap_upgrade_vertex: a larger vertex format splits the batch. */
+static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned size)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   struct fgl_vbo_vertex copied[3];
+   const unsigned n = wrap_buffers(ctx, copied);
+
+   vbo->vertex_size += size - vbo->attr_size[attr];
+   vbo->attr_size[attr] = size;
+   vbo->max_vert = compute_max_verts(vbo);
+   vbo->vert_count = 0;
+   put_back(vbo, copied, n);
+}
+
+void fgl_vbo_flush_vertices(struct fgl_context *ctx)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   if (vbo->vert_count)
+      vtx_flush(ctx, NULL, NULL);
+   if (vbo->vertex_size) {
+      memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+      vbo->vertex_size = 0;
+   }
+}
+
+void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                  float x, float y, float z, float w)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   const float v[4] = { x, y, z, w };
+
+   if (vbo->attr_size[attr] < n)
+      upgrade_vertex(ctx, attr, n);
+
+   float *cur = vbo->current[attr];
+   for (unsigned i = 0; i < 4; i++)
+      cur[i] = i < n ? v[i] : attr_default[i];
+
+   if (attr != FGL_ATTR_POS)
+      return;
+
+   /* glVertex: store a vertex (outside glBegin/glEnd it takes buffer room
+    * but belongs to no primitive, as in Mesa) */
+   if (!ensure_room(vbo, vbo->vert_count + 1))
+      return;
+   struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
+   memcpy(dst->attr, vbo->current, sizeof(dst->attr));
+   if (++vbo->vert_count >= vbo->max_vert)
+      vtx_wrap(ctx);
+}
+
+void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+
+   /* attributes set outside glBegin/glEnd do not stay in the vertex format */
+   if (vbo->vertex_size && !vbo->attr_size[FGL_ATTR_POS])
+      fgl_vbo_flush_vertices(ctx);
+
+   vbo->prims[vbo->prim_count++] = (struct fgl_vbo_prim){
+      .mode = mode, .start = vbo->vert_count, .begin = true,
+   };
+}
+
+/* vbo_merge_draws: consecutive independent primitives of one mode become
+ * one draw; the first one's incomplete tail is dropped from its count
+ * while the start stays, exactly as Mesa does. */
+static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cur)
+{
+   if (prev->mode != cur->mode || prev->start + prev->count != cur->start)
+      return false;
+   switch (prev->mode) {
+   case GL_POINTS:
+      break;
+   case GL_LINES:
+      prev->count &= ~1u;
+      break;
+   case GL_TRIANGLES:
+      prev->count -= prev->count % 3;
+      break;
+   case GL_QUADS:
+      prev->count &= ~3u;
+      break;
+   default:
+      return false;
+   }
+   prev->count += cur->count;
+   prev->end = cur->end;
+   return true;
+}
+
+void fgl_vbo_end(struct fgl_context *ctx)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   if (vbo->prim_count == 0)
+      return;
+   struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
+
+   last->count = vbo->vert_count - last->start;
+   last->end = true;
+
+   /* vbo_try_prim_conversion */
+   if (last->mode == GL_LINE_STRIP && last->count == 2)
+      last->mode = GL_LINES;
+   else if ((last->mode == GL_TRIANGLE_STRIP || last->mode == GL_TRIANGLE_FAN) &&
+            last->count == 3)
+      last->mode = GL_TRIANGLES;
+
+   if (vbo->prim_count >= 2 && merge_draws(&vbo->prims[vbo->prim_count - 2], last))
+      vbo->prim_count--;
+
+   ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
+   if (vbo->prim_count == FGL_VBO_MAX_PRIM)
+      vtx_flush(ctx, NULL, NULL);
+}

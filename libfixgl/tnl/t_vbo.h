@@ -1,0 +1,68 @@
+/*
+ * The immediate-mode vertex store (glBegin/glVertex/glEnd).
+ *
+ * Vertices are batched and drawn when state changes, as Mesa's vbo_exec
+ * does, and the batching is reproduced exactly because it is observable:
+ * llvmpipe splits a smooth quad along 0-2 or 1-3 depending on whether any
+ * vertex in the same 4096-vertex segment of the same draw needs clipping
+ * (llvmpipe-facts.md §2 "SURPRISE - quad diagonal").  So the store tracks
+ * what decides draw boundaries in Mesa 22.3's vbo_exec:
+ *  - the vertex format (each attribute's component count) of the batch;
+ *    a larger format "upgrades" the vertex and splits the batch;
+ *  - the 512 KiB vertex buffer, whose remaining room (minus one vertex)
+ *    caps the batch; a full buffer "wraps" it mid-primitive;
+ *  - consecutive glBegin/glEnd of the same independent mode merging into
+ *    one draw (vbo_merge_draws), at most FGL_VBO_MAX_PRIM draws per batch.
+ */
+#ifndef FGL_T_VBO_H
+#define FGL_T_VBO_H
+
+#include <GL/gl.h>
+#include <stdbool.h>
+
+#define FGL_VBO_BUFFER_BYTES (512 * 1024)
+#define FGL_VBO_MAX_PRIM     64
+
+struct fgl_context;
+
+enum fgl_vbo_attr {
+   FGL_ATTR_POS,
+   FGL_ATTR_COLOR0,
+   FGL_ATTR_COUNT,
+};
+
+/* A stored vertex: every attribute as float[4]. */
+struct fgl_vbo_vertex {
+   float attr[FGL_ATTR_COUNT][4];
+};
+
+struct fgl_vbo_prim {
+   GLenum mode;
+   unsigned start, count;
+   bool begin, end;          /* the prim starts/ends a glBegin/glEnd pair */
+};
+
+struct fgl_vbo {
+   struct fgl_vbo_vertex *verts;
+   unsigned vert_count, max_vert, vert_alloc;
+   struct fgl_vbo_prim prims[FGL_VBO_MAX_PRIM];
+   unsigned prim_count;
+   unsigned attr_size[FGL_ATTR_COUNT];  /* components in the vertex format, 0 = absent */
+   unsigned vertex_size;                /* sum of attr_size, in floats */
+   unsigned buffer_used;                /* bytes of the emulated buffer consumed */
+   float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute */
+};
+
+bool fgl_vbo_init(struct fgl_vbo *vbo);
+void fgl_vbo_fini(struct fgl_vbo *vbo);
+
+/* An attribute call (glColor*, glVertex*) with n components. */
+void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                  float x, float y, float z, float w);
+void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode);
+void fgl_vbo_end(struct fgl_context *ctx);
+
+/* FLUSH_VERTICES: draw what is stored and reset the vertex format. */
+void fgl_vbo_flush_vertices(struct fgl_context *ctx);
+
+#endif
