@@ -257,7 +257,10 @@ int main(int argc, char **argv)
     fflush(stdout);
     rc = fc_run_items(&cfg, items, n, on_ready, &c, info);
     fc_report_set_renderers(c.report, info[0][0], info[0][1], info[1][0], info[1][1]);
-    fc_report_print_summary(c.report, stdout);
+    if (rc == 0)
+        fc_report_print_summary(c.report, stdout);
+    else
+        fprintf(stderr, "fixgl-conform: run aborted; the report holds the cases finished so far\n");
     bad = fc_report_finish(c.report);
     printf("report: %s/index.html\n", o.report);
     for (size_t i = 0; i < n; i++) {

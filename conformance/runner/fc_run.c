@@ -2,6 +2,7 @@
 #include "fc_run.h"
 #include "fc_record.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -204,16 +205,29 @@ static void flush_ready(struct sched *s)
     }
 }
 
+/* Creates base/tmp and base/logs, emptied of an earlier run's files. */
 static int make_dirs(const char *base)
 {
-    char p[512];
+    char p[512], f[1024];
     const char *sub[2] = { "tmp", "logs" };
     for (int i = 0; i < 2; i++) {
+        DIR *d;
+        struct dirent *de;
         snprintf(p, sizeof p, "%s/%s", base, sub[i]);
         if (mkdir(p, 0777) != 0 && errno != EEXIST) {
             fprintf(stderr, "fixgl-conform: cannot create %s: %s\n", p, strerror(errno));
             return 0;
         }
+        if ((d = opendir(p)) == NULL)
+            continue;
+        while ((de = readdir(d)) != NULL) {
+            size_t n = strlen(de->d_name);
+            if (n > 4 && (strcmp(de->d_name + n - 4, ".log") == 0 || strcmp(de->d_name + n - 4, ".rec") == 0)) {
+                snprintf(f, sizeof f, "%s/%s", p, de->d_name);
+                remove(f);
+            }
+        }
+        closedir(d);
     }
     return 1;
 }
