@@ -1,0 +1,199 @@
+/* c_shade.c - smooth vs flat shading and the provoking vertex of every
+ * primitive type, the batch-dependent GL_QUADS diagonal, perspective-correct
+ * colour and colour rounding ties. */
+#include "cases.h"
+
+/* Vertices of each primitive type in window coordinates (32x32 buffer). */
+static const float tri_v[6][2] = {
+    { 2, 2 }, { 14, 3 }, { 6, 14 }, { 17, 18 }, { 30, 20 }, { 20, 30 },
+};
+static const float strip_v[8][2] = {
+    { 2, 4 }, { 4, 26 }, { 10, 2 }, { 12, 29 }, { 19, 3 }, { 21, 28 }, { 29, 5 }, { 30, 27 },
+};
+static const float fan_v[7][2] = {
+    { 16, 16 }, { 30, 16 }, { 26, 27 }, { 14, 31 }, { 3, 24 }, { 3, 8 }, { 15, 1 },
+};
+static const float quads_v[8][2] = {
+    { 2, 2 }, { 14, 3 }, { 13, 14 }, { 3, 13 }, { 17, 16 }, { 30, 18 }, { 29, 30 }, { 18, 28 },
+};
+static const float qstrip_v[8][2] = {
+    { 2, 3 }, { 3, 28 }, { 11, 2 }, { 10, 29 }, { 20, 4 }, { 21, 27 }, { 30, 2 }, { 29, 30 },
+};
+static const float poly_v[6][2] = {
+    { 16, 2 }, { 29, 9 }, { 28, 24 }, { 16, 30 }, { 4, 23 }, { 3, 8 },
+};
+
+static void draw_prim(GLenum mode, const float (*v)[2], int n)
+{
+    glBegin(mode);
+    for (int i = 0; i < n; i++) {
+        fcu_color(i);
+        glVertex2fv(v[i]);
+    }
+    glEnd();
+}
+
+/* Frame 1 smooth, frame 2 flat (shows the provoking vertex of each triangle). */
+static void shade_prim(fc_h *h, GLenum mode, const float (*v)[2], int n)
+{
+    fc_pixel_ortho(h);
+    for (int flat = 0; flat < 2; flat++) {
+        glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+        fcu_clear(0, 0, 0, 0, 1);
+        draw_prim(mode, v, n);
+        fc_capture(h);
+    }
+    fc_get_integer(h, "GL_SHADE_MODEL", GL_SHADE_MODEL, 1);
+}
+
+static void shade_triangles(fc_h *h) { shade_prim(h, GL_TRIANGLES, tri_v, 6); }
+static void shade_strip(fc_h *h) { shade_prim(h, GL_TRIANGLE_STRIP, strip_v, 8); }
+static void shade_fan(fc_h *h) { shade_prim(h, GL_TRIANGLE_FAN, fan_v, 7); }
+static void shade_quads(fc_h *h) { shade_prim(h, GL_QUADS, quads_v, 8); }
+static void shade_quad_strip(fc_h *h) { shade_prim(h, GL_QUAD_STRIP, qstrip_v, 8); }
+static void shade_polygon(fc_h *h) { shade_prim(h, GL_POLYGON, poly_v, 6); }
+
+/* The smooth quad of probe t19 in a [0,1] ortho view. */
+static void quad_a(void)
+{
+    static const float v[4][2] = { { 0, 0 }, { 0.5f, 0 }, { 0.5f, 0.5f }, { 0, 0.5f } };
+    static const float c[4][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } };
+    for (int i = 0; i < 4; i++) {
+        glColor3fv(c[i]);
+        glVertex2fv(v[i]);
+    }
+}
+
+/* A second quad, crossing the right clip plane when off > 0. */
+static void quad_b(float off)
+{
+    glColor3f(1, 1, 1);
+    glVertex2f(0.6f, 0.6f);
+    glColor3f(0, 1, 0);
+    glVertex2f(0.9f + off, 0.6f);
+    glColor3f(1, 0, 1);
+    glVertex2f(0.9f + off, 0.9f);
+    glColor3f(0, 0, 1);
+    glVertex2f(0.6f, 0.9f);
+}
+
+static void quad_setup(void)
+{
+    glViewport(0, 0, 32, 32);
+    fcu_ortho(0, 1, 0, 1, -1, 1);
+    glShadeModel(GL_SMOOTH);
+    fcu_clear(0, 0, 0, 0, 1);
+}
+
+static void quad_alone(fc_h *h)
+{
+    quad_setup();
+    glBegin(GL_QUADS); quad_a(); glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_QUADS); quad_a(); quad_b(0); glEnd();         /* unclipped partner */
+    fc_capture(h);
+}
+
+static void quad_clipped_same_begin(fc_h *h)
+{
+    quad_setup();
+    glBegin(GL_QUADS); quad_a(); quad_b(0.5f); glEnd();
+    fc_capture(h);
+}
+
+static void quad_clipped_separate_begin(fc_h *h)
+{
+    quad_setup();
+    glBegin(GL_QUADS); quad_a(); glEnd();
+    glBegin(GL_QUADS); quad_b(0.5f); glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);                    /* a state change splits the batch */
+    glBegin(GL_QUADS); quad_a(); glEnd();
+    glShadeModel(GL_SMOOTH);
+    glDepthFunc(GL_LEQUAL);
+    glBegin(GL_QUADS); quad_b(0.5f); glEnd();
+    fc_capture(h);
+}
+
+static void quad_strip_and_polygon_clipped(fc_h *h)
+{
+    quad_setup();
+    glBegin(GL_QUAD_STRIP);
+    glColor3f(1, 0, 0); glVertex2f(0.05f, 0.05f);
+    glColor3f(0, 1, 0); glVertex2f(0.05f, 0.45f);
+    glColor3f(0, 0, 1); glVertex2f(0.45f, 0.1f);
+    glColor3f(1, 1, 1); glVertex2f(0.4f, 0.4f);
+    glColor3f(1, 1, 0); glVertex2f(1.4f, 0.2f);
+    glColor3f(0, 1, 1); glVertex2f(1.3f, 0.5f);
+    glEnd();
+    glBegin(GL_POLYGON);
+    glColor3f(1, 0, 0); glVertex2f(0.1f, 0.6f);
+    glColor3f(0, 1, 0); glVertex2f(0.5f, 0.55f);
+    glColor3f(0, 0, 1); glVertex2f(0.55f, 0.95f);
+    glColor3f(1, 1, 1); glVertex2f(0.2f, 1.3f);
+    glEnd();
+    fc_capture(h);
+}
+
+/* A large smooth triangle with very different w per vertex. */
+static void persp_colour(fc_h *h)
+{
+    glViewport(0, 0, 128, 128);
+    fcu_frustum(-1, 1, -1, 1, 1, 100);
+    glShadeModel(GL_SMOOTH);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0); glVertex3f(-1.5f, -1.2f, -1.5f);
+    glColor3f(0, 1, 0); glVertex3f(60.0f, -50.0f, -90.0f);
+    glColor3f(0, 0, 1); glVertex3f(-20.0f, 35.0f, -40.0f);
+    glColor4f(1, 1, 0, 0.5f); glVertex3f(0.9f, 0.9f, -1.0f);
+    glColor4f(0, 1, 1, 0.25f); glVertex3f(3.0f, 0.5f, -5.0f);
+    glColor4f(1, 0, 1, 1); glVertex3f(0.2f, 3.0f, -6.0f);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Gradients whose per-pixel values straddle the x.5/255 rounding ties,
+ * plus out-of-range vertex colours (clamped per vertex). */
+static void colour_ties(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glShadeModel(GL_SMOOTH);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_QUADS);
+    glColor3f(0.5f / 255.0f, 128.5f / 255.0f, 1.0f);
+    glVertex2f(0, 0);
+    glColor3f(64.5f / 255.0f, 0.5f, 254.5f / 255.0f);
+    glVertex2f(64, 0);
+    glColor3f(64.5f / 255.0f, 0.5f, 254.5f / 255.0f);
+    glVertex2f(64, 16);
+    glColor3f(0.5f / 255.0f, 128.5f / 255.0f, 1.0f);
+    glVertex2f(0, 16);
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glColor4f(2.0f, -1.0f, 0.5f, 3.0f); glVertex2f(0, 17);
+    glColor4f(-0.5f, 1.5f, 1e30f, -2.0f); glVertex2f(64, 20);
+    glColor4f(0.25f, 0.75f, -1e30f, 0.5f); glVertex2f(20, 64);
+    glEnd();
+    fc_capture(h);
+}
+
+const fc_case fc_cases_shade[] = {
+    FC_CASE_RGBA("core/shade_triangles", 32, 32, 2, "core shade", shade_triangles),
+    FC_CASE_RGBA("core/shade_triangle_strip", 32, 32, 2, "core shade", shade_strip),
+    FC_CASE_RGBA("core/shade_triangle_fan", 32, 32, 2, "core shade", shade_fan),
+    FC_CASE_RGBA("core/shade_quads", 32, 32, 2, "core shade", shade_quads),
+    FC_CASE_RGBA("core/shade_quad_strip", 32, 32, 2, "core shade", shade_quad_strip),
+    FC_CASE_RGBA("core/shade_polygon", 32, 32, 2, "core shade", shade_polygon),
+    FC_CASE_RGBA("core/quad_diagonal_alone", 32, 32, 2, "core shade quad", quad_alone),
+    FC_CASE_RGBA("core/quad_diagonal_clipped_same_begin", 32, 32, 1, "core shade quad clip",
+                 quad_clipped_same_begin),
+    FC_CASE_RGBA("core/quad_diagonal_clipped_separate_begin", 32, 32, 2, "core shade quad clip",
+                 quad_clipped_separate_begin),
+    FC_CASE_RGBA("core/quad_strip_polygon_clipped", 32, 32, 1, "core shade quad clip",
+                 quad_strip_and_polygon_clipped),
+    FC_CASE_RGBA("core/perspective_colour_large", 128, 128, 1, "core shade perspective", persp_colour),
+    FC_CASE_RGBA("core/colour_rounding_ties", 64, 64, 1, "core shade", colour_ties),
+    { 0 }
+};

@@ -1,0 +1,134 @@
+/* c_vertex.c - every glVertex{2,3,4}{s,i,f,d}[v] and glColor{3,4}{b,s,i,
+ * f,d,ub,us,ui}[v] entry point, with extreme values; the current colour is
+ * queried back after each glColor call. */
+#include "cases.h"
+
+/* Cell k of an 8x8 grid of 8-pixel cells in a 64x64 window-ortho view. */
+static void cell(int k, double *x, double *y)
+{
+    *x = 8.0 * (k % 8);
+    *y = 8.0 * (k / 8);
+}
+
+/* Triangle corners of the current cell (x, y) in a[3][4] of type T. */
+#define VTX_SET(T)                                                            \
+    for (int i = 0; i < 3; i++) {                                             \
+        a[i][0] = (T)(x + (i == 1 ? 7 : 1));                                  \
+        a[i][1] = (T)(y + (i == 2 ? 7 : 1));                                  \
+        a[i][2] = (T)0;                                                       \
+        a[i][3] = (T)1;                                                       \
+    }
+
+/* One flat triangle in cell k drawn with vertex call CALL, then next cell. */
+#define VTX_DRAW(T, CALL)                                                     \
+    do {                                                                      \
+        VTX_SET(T)                                                            \
+        fcu_color(k);                                                         \
+        glBegin(GL_TRIANGLES);                                                \
+        for (int i = 0; i < 3; i++)                                           \
+            CALL;                                                             \
+        glEnd();                                                              \
+        cell(++k, &x, &y);                                                    \
+    } while (0)
+
+/* All six glVertex variants of one type, each in its own cell. */
+#define VTX_CASE(suf, T)                                                      \
+    do {                                                                      \
+        T a[3][4];                                                            \
+        VTX_DRAW(T, glVertex2##suf(a[i][0], a[i][1]));                        \
+        VTX_DRAW(T, glVertex2##suf##v(a[i]));                                 \
+        VTX_DRAW(T, glVertex3##suf(a[i][0], a[i][1], a[i][2]));               \
+        VTX_DRAW(T, glVertex3##suf##v(a[i]));                                 \
+        VTX_DRAW(T, glVertex4##suf(a[i][0], a[i][1], a[i][2], a[i][3]));      \
+        VTX_DRAW(T, glVertex4##suf##v(a[i]));                                 \
+    } while (0)
+
+static void vertex_variants(fc_h *h)
+{
+    int k = 0;
+    double x, y;
+    fc_pixel_ortho(h);
+    glShadeModel(GL_FLAT);
+    fcu_clear(0, 0, 0, 0, 1);
+    cell(k, &x, &y);
+    VTX_CASE(s, GLshort);
+    VTX_CASE(i, GLint);
+    VTX_CASE(f, GLfloat);
+    VTX_CASE(d, GLdouble);
+    /* w != 1 in the free top rows: w = 2 (same points scaled), w = -1
+     * everywhere (outside every clip plane) and mixed signs (clipped at w = 0). */
+    glColor3f(1, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex4f(2.0f * 2.5f, 2.0f * 40.5f, 0, 2);
+    glVertex4d(20.25 * 2, 42.0 * 2, 0, 2);
+    glVertex4s(6, 60, 0, 1);
+    glVertex4i(-30, -41, 0, -1);
+    glVertex4f(-40.0f, -41.0f, 0, -1);
+    glVertex4d(-35.0, -60.0, 0, -1);
+    glVertex4f(40.5f, 40.5f, 0, 1);
+    glVertex4d(-62.0, -41.0, 0, -1);
+    glVertex4s(50, 62, 0, 1);
+    glEnd();
+    fc_capture(h);
+    fc_error(h, "after vertex variants");
+}
+
+#define COLOR_TEST(suf, T, lo, hi)                                            \
+    do {                                                                      \
+        const T v4[4] = { (T)(lo), (T)(hi), (T)0, (T)((hi) / 2) };            \
+        const T w4[4] = { (T)((hi) / 3), (T)((lo) / 2), (T)(hi), (T)(lo) };   \
+        glColor3##suf(v4[0], v4[1], v4[2]); draw_cell(h, k++);                \
+        glColor3##suf##v(w4); draw_cell(h, k++);                              \
+        glColor4##suf(v4[0], v4[1], v4[2], v4[3]); draw_cell(h, k++);         \
+        glColor4##suf##v(w4); draw_cell(h, k++);                              \
+        glColor3##suf((T)((hi) / 4), (T)((hi) / 2 + 1), (T)((hi) - 1)); draw_cell(h, k++); \
+    } while (0)
+
+/* Records the current colour and draws one flat 8x8 cell with it. */
+static void draw_cell(fc_h *h, int k)
+{
+    float x = 8.0f * (float)(k % 8), y = 8.0f * (float)(k / 8);
+    fc_get_float(h, "GL_CURRENT_COLOR", GL_CURRENT_COLOR, 4);
+    fc_get_integer(h, "GL_CURRENT_COLOR i", GL_CURRENT_COLOR, 4);
+    fcu_rect(x, y, x + 8, y + 8, 0);
+}
+
+static void color_variants(fc_h *h)
+{
+    int k = 0;
+    fc_pixel_ortho(h);
+    glShadeModel(GL_FLAT);
+    fcu_clear(0, 0, 0, 0, 1);
+    COLOR_TEST(b, GLbyte, -128, 127);
+    COLOR_TEST(s, GLshort, -32768, 32767);
+    COLOR_TEST(i, GLint, -2147483647 - 1, 2147483647);
+    COLOR_TEST(ub, GLubyte, 0, 255);
+    COLOR_TEST(us, GLushort, 0, 65535);
+    COLOR_TEST(ui, GLuint, 0, 4294967295u);
+    COLOR_TEST(f, GLfloat, -0.5f, 1.0f);
+    COLOR_TEST(d, GLdouble, -1.0, 2.0);
+    fc_capture(h);
+}
+
+/* Smooth interpolation between extreme integer colours: the conversions
+ * feed the rasterizer, not only the queries. */
+static void color_integer_smooth(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glShadeModel(GL_SMOOTH);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_QUADS);
+    glColor3b(-128, 127, 63); glVertex2f(0, 0);
+    glColor3us(65535, 1, 32768); glVertex2f(32, 0);
+    glColor3ui(4294967295u, 2147483648u, 16777216u); glVertex2f(32, 32);
+    glColor3s(-1, 16384, 32767); glVertex2f(0, 32);
+    glEnd();
+    fc_capture(h);
+}
+
+const fc_case fc_cases_vertex[] = {
+    FC_CASE_RGBA("core/vertex_entry_points", 64, 64, 1, "core vertex", vertex_variants),
+    FC_CASE_RGBA("core/color_entry_points", 64, 64, 1, "core vertex query", color_variants),
+    FC_CASE_RGBA("core/color_integer_smooth", 32, 32, 1, "core vertex shade", color_integer_smooth),
+    { 0 }
+};

@@ -1,0 +1,39 @@
+/* cases.h - the fixed case groups and small drawing helpers shared by them. */
+#ifndef FC_CASES_H
+#define FC_CASES_H
+
+#include "fc_case.h"
+
+/* Table entry with the default buffer row length. */
+#define FC_CASE(name, w, h, fmt, depth, stencil, frames, tags, fn) \
+    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0 }
+/* RGBA, depth 24, no stencil. */
+#define FC_CASE_RGBA(name, w, h, frames, tags, fn) \
+    FC_CASE(name, w, h, OSMESA_RGBA, 24, 0, frames, tags, fn)
+
+/* Each group table ends with an entry whose name is NULL. */
+extern const fc_case fc_cases_fill[];
+extern const fc_case fc_cases_shade[];
+extern const fc_case fc_cases_clip[];
+extern const fc_case fc_cases_depth[];
+extern const fc_case fc_cases_format[];
+extern const fc_case fc_cases_viewport[];
+extern const fc_case fc_cases_matrix[];
+extern const fc_case fc_cases_query[];
+extern const fc_case fc_cases_vertex[];
+extern const fc_case fc_cases_readpix[];
+extern const fc_case fc_cases_errors[];
+
+/* glClearColor + glClearDepth + clear of colour and depth. */
+void fcu_clear(float r, float g, float b, float a, double depth);
+/* glColor3ub of a distinct, saturated palette colour (index taken mod 16). */
+void fcu_color(int i);
+/* Axis-aligned GL_QUADS rectangle at depth z in the current colour. */
+void fcu_rect(float x0, float y0, float x1, float y1, float z);
+/* One GL_TRIANGLES triangle (x, y pairs) at z = 0. */
+void fcu_tri(float x0, float y0, float x1, float y1, float x2, float y2);
+/* Sets the projection matrix (and returns to GL_MODELVIEW with identity). */
+void fcu_ortho(double l, double r, double b, double t, double n, double f);
+void fcu_frustum(double l, double r, double b, double t, double n, double f);
+
+#endif

@@ -1,0 +1,27 @@
+/* fc_registry.c - the table of all fixed cases, in group order. */
+#include "cases.h"
+#include "fc_harness.h"
+
+static const fc_case *const groups[] = {
+    fc_cases_fill, fc_cases_shade, fc_cases_clip, fc_cases_depth,
+    fc_cases_format, fc_cases_viewport, fc_cases_matrix, fc_cases_query,
+    fc_cases_vertex, fc_cases_readpix, fc_cases_errors,
+};
+
+size_t fc_case_count(void)
+{
+    size_t n = 0;
+    for (size_t g = 0; g < sizeof groups / sizeof groups[0]; g++)
+        for (const fc_case *c = groups[g]; c->name; c++)
+            n++;
+    return n;
+}
+
+const fc_case *fc_case_at(size_t i)
+{
+    for (size_t g = 0; g < sizeof groups / sizeof groups[0]; g++)
+        for (const fc_case *c = groups[g]; c->name; c++)
+            if (i-- == 0)
+                return c;
+    return NULL;
+}

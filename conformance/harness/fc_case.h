@@ -1,0 +1,74 @@
+/* fc_case.h - the conformance case API.
+ *
+ * A case is a plain C function that drives GL 1.x like a legacy program.
+ * The harness creates the OSMesa context and colour buffer described by the
+ * case's table entry, makes it current, calls the function with a handle,
+ * records a final glGetError() and destroys the context.  Everything a case
+ * wants compared between the oracle (Mesa llvmpipe) and fixgl goes through
+ * the fc_* recording helpers below.
+ *
+ * The same case sources are compiled into both renderers; the GL/OSMesa
+ * headers come from Mesa for the oracle and from fixgl (plus the system
+ * <GL/gl.h>) for fixgl. */
+#ifndef FC_CASE_H
+#define FC_CASE_H
+
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <stddef.h>
+
+typedef struct fc_h fc_h;
+typedef void (*fc_case_fn)(fc_h *h);
+
+typedef struct fc_case {
+    const char *name;       /* unique, "group/name" */
+    int width, height;      /* framebuffer size */
+    GLenum format;          /* OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR */
+    int depth_bits, stencil_bits;
+    int frames;             /* number of fc_capture* calls the case makes */
+    const char *tags;       /* space separated, e.g. "core depth" */
+    fc_case_fn fn;
+    int row_length;         /* colour buffer row length in pixels; 0 = width */
+} fc_case;
+
+/* Captures a frame: glFinish(), then the whole user colour buffer exactly as
+ * laid out and the raw OSMesaGetDepthBuffer() contents. */
+void fc_capture(fc_h *h);
+/* Same for another colour buffer (e.g. one bound to a second context). */
+void fc_capture_buffer(fc_h *h, const void *buf, int width, int height,
+                       int row_length, GLenum format, int y_up);
+
+/* Records glGetError() under a label. */
+void fc_error(fc_h *h, const char *label);
+
+/* Records glGet*v(pname) (count values, the output array is pre-filled with
+ * a fixed pattern so unwritten values compare equal) and glIsEnabled(cap). */
+void fc_get_integer(fc_h *h, const char *label, GLenum pname, int count);
+void fc_get_float(fc_h *h, const char *label, GLenum pname, int count);
+void fc_get_double(fc_h *h, const char *label, GLenum pname, int count);
+void fc_get_boolean(fc_h *h, const char *label, GLenum pname, int count);
+void fc_is_enabled(fc_h *h, const char *label, GLenum cap);
+
+/* Records arbitrary bytes (glReadPixels results, ...) and integer values
+ * (OSMesa return values, pointer comparisons, ...). */
+void fc_blob(fc_h *h, const char *label, const void *data, size_t size);
+void fc_value(fc_h *h, const char *label, long long value);
+
+/* OSMesaPixelStore on the current context; the harness remembers OSMESA_Y_UP
+ * so frames are displayed the right way up in the report. */
+void fc_pixel_store(fc_h *h, GLint pname, GLint value);
+
+/* The harness-created context, its colour buffer and the case entry. */
+OSMesaContext fc_context(fc_h *h);
+void *fc_buffer(fc_h *h);
+const fc_case *fc_this_case(fc_h *h);
+
+/* Bytes per pixel of an OSMesa colour format (0 if unknown). */
+int fc_format_bpp(GLenum format);
+
+/* Convenience used by many cases: viewport = whole framebuffer, projection =
+ * glOrtho(0, w, 0, h, -1, 1) so object coordinates are window coordinates,
+ * modelview = identity. */
+void fc_pixel_ortho(fc_h *h);
+
+#endif

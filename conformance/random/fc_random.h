@@ -1,0 +1,21 @@
+/* fc_random.h - random differential scenes.  A scene is a case whose table
+ * entry and GL call sequence are a pure function of (seed, index): both
+ * renderers issue exactly the same calls and nothing depends on GL results.
+ * Scene names are "random/s<seed>-i<index>". */
+#ifndef FC_RANDOM_H
+#define FC_RANDOM_H
+
+#include "fc_case.h"
+
+#include <stdint.h>
+
+#define FC_RANDOM_NAME_MAX 64
+
+/* Parses a scene name; returns 1 on success. */
+int fc_random_parse(const char *name, uint64_t *seed, uint32_t *index);
+
+/* Fills the table entry of scene (seed, index); name must hold
+ * FC_RANDOM_NAME_MAX bytes and outlives the entry. */
+void fc_random_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
+
+#endif

@@ -1,0 +1,129 @@
+/* render_main.c - a conformance renderer.  The same source builds
+ * fixgl-render-osmesa (Mesa, FC_ORACLE defined) and fixgl-render-fixgl.
+ *
+ *   fixgl-render-X --list                       case names and tags
+ *   fixgl-render-X [--perturb] [--crash=NAME] --out FILE NAME...
+ *
+ * --out runs the named cases (fixed names or random/s<seed>-i<index>) in
+ * order and writes their records to FILE, after two FC_REC_INFO records with
+ * GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
+ * (SIGALRM ends the process).  Test-only switches for the harness
+ * self-test: --perturb alters every captured frame (see fc_harness.h),
+ * --crash=NAME dies with SIGSEGV right after starting case NAME.
+ * The oracle refuses to run unless GL_RENDERER contains "llvmpipe", and it
+ * runs llvmpipe with one rasterizer thread (LP_NUM_THREADS=1): with several
+ * threads Mesa 22.3 is not deterministic on some scenes (random/s1-i98 gave
+ * 8 different images in 30 runs, differing at a 64-pixel tile boundary),
+ * while one thread always gives the most frequent threaded result. */
+#include "fc_harness.h"
+#include "fc_random.h"
+#include "fc_record.h"
+
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define FC_CASE_TIMEOUT 60
+
+static int list_cases(void)
+{
+    for (size_t i = 0; i < fc_case_count(); i++)
+        printf("%s\t%s\n", fc_case_at(i)->name, fc_case_at(i)->tags);
+    return 0;
+}
+
+/* Writes the renderer identification; returns 0 if the oracle is wrong. */
+static int write_info(FILE *out)
+{
+    static unsigned char buf[16 * 16 * 4];
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    const char *renderer, *version;
+
+    if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, 16, 16)) {
+        fprintf(stderr, "renderer: cannot create the identification context\n");
+        return 0;
+    }
+    renderer = (const char *)glGetString(GL_RENDERER);
+    version = (const char *)glGetString(GL_VERSION);
+    renderer = renderer ? renderer : "(null)";
+    version = version ? version : "(null)";
+#ifdef FC_ORACLE
+    if (!strstr(renderer, "llvmpipe")) {
+        fprintf(stderr, "oracle: GL_RENDERER is \"%s\"; the oracle must be llvmpipe "
+                "(unset GALLIUM_DRIVER / LIBGL_ALWAYS_SOFTWARE overrides)\n", renderer);
+        OSMesaDestroyContext(ctx);
+        return 0;
+    }
+#endif
+    fc_rec_write(out, FC_REC_INFO, "renderer", renderer, strlen(renderer), NULL, 0, NULL, 0);
+    fc_rec_write(out, FC_REC_INFO, "version", version, strlen(version), NULL, 0, NULL, 0);
+    OSMesaDestroyContext(ctx);
+    return 1;
+}
+
+static const fc_case *find_case(const char *name, fc_case *scratch, char *namebuf)
+{
+    uint64_t seed;
+    uint32_t index;
+
+    if (fc_random_parse(name, &seed, &index)) {
+        fc_random_case(seed, index, scratch, namebuf);
+        return scratch;
+    }
+    for (size_t i = 0; i < fc_case_count(); i++)
+        if (strcmp(fc_case_at(i)->name, name) == 0)
+            return fc_case_at(i);
+    return NULL;
+}
+
+int main(int argc, char **argv)
+{
+    const char *out_path = NULL, *crash = NULL;
+    int perturb = 0, first = 1;
+    FILE *out;
+
+    if (argc == 2 && strcmp(argv[1], "--list") == 0)
+        return list_cases();
+    for (; first < argc && argv[first][0] == '-'; first++) {
+        if (strcmp(argv[first], "--perturb") == 0)
+            perturb = 1;
+        else if (strncmp(argv[first], "--crash=", 8) == 0)
+            crash = argv[first] + 8;
+        else if (strcmp(argv[first], "--out") == 0 && first + 1 < argc)
+            out_path = argv[++first];
+        else
+            break;
+    }
+    if (!out_path || (first < argc && argv[first][0] == '-')) {
+        fprintf(stderr, "usage: %s --list | [--perturb] [--crash=NAME] --out FILE CASE...\n", argv[0]);
+        return 2;
+    }
+#ifdef FC_ORACLE
+    setenv("LP_NUM_THREADS", "1", 1);
+#endif
+    out = fopen(out_path, "wb");
+    if (!out) {
+        perror(out_path);
+        return 2;
+    }
+    if (!write_info(out))
+        return 3;
+    for (int i = first; i < argc; i++) {
+        fc_case scratch;
+        char namebuf[FC_RANDOM_NAME_MAX];
+        const fc_case *c = find_case(argv[i], &scratch, namebuf);
+        if (!c) {
+            fprintf(stderr, "renderer: unknown case %s\n", argv[i]);
+            return 2;
+        }
+        alarm(FC_CASE_TIMEOUT);
+        if (crash && strcmp(crash, c->name) == 0) {
+            fc_rec_write(out, FC_REC_CASE, c->name, NULL, 0, NULL, 0, NULL, 0);
+            raise(SIGSEGV);
+        }
+        fc_run_case(c, out, perturb);
+    }
+    return fclose(out) == 0 ? 0 : 2;
+}

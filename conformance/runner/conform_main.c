@@ -1,0 +1,278 @@
+/* conform_main.c - fixgl-conform: runs the conformance cases on the oracle
+ * (Mesa OSMesa, llvmpipe) and on fixgl, compares every frame pixel by pixel
+ * plus the recorded error/query/blob/value sequences, prints one line per
+ * case and a per-tag summary, and writes the HTML/JSON report.
+ * Exit status: 0 all exact, 1 some case differs or failed, 2 usage/setup. */
+#include "fc_compare.h"
+#include "fc_report.h"
+#include "fc_run.h"
+
+#include <fnmatch.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define MAX_FILTERS 32
+
+struct options {
+    const char *tags[MAX_FILTERS], *globs[MAX_FILTERS];
+    int ntags, nglobs;
+    long random;                /* number of random scenes */
+    uint64_t seed;
+    long index;                 /* first scene index; >= 0 replays from there */
+    const char *report, *renderer[2], *fixgl_arg;
+    int jobs, list_only;
+};
+
+struct ctx {
+    struct fc_report *report;
+    size_t total;
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+        "usage: fixgl-conform [options]\n"
+        "  --tag T              only cases with tag T (repeatable)\n"
+        "  --case GLOB          only cases whose name matches GLOB (repeatable)\n"
+        "  --random N           add N random scenes (default 100)\n"
+        "  --seed S             random seed (default 1)\n"
+        "  --index I            replay random scene I of seed S alone (with --random N: I..I+N-1)\n"
+        "  --no-random          no random scenes\n"
+        "  --jobs N             renderer processes at once (default: online CPUs)\n"
+        "  --report DIR         report directory (default %s)\n"
+        "  --oracle-renderer P  default %s\n"
+        "  --fixgl-renderer P   default %s\n"
+        "  --fixgl-arg ARG      extra argument for the fixgl renderer (test-only, e.g. --perturb)\n"
+        "  --list               print the selected cases and exit\n",
+        FC_DEFAULT_REPORT, FC_DEFAULT_ORACLE, FC_DEFAULT_FIXGL);
+}
+
+static int parse_args(int argc, char **argv, struct options *o)
+{
+    int explicit_random = 0;
+    memset(o, 0, sizeof *o);
+    o->random = 100;
+    o->seed = 1;
+    o->index = -1;
+    o->report = FC_DEFAULT_REPORT;
+    o->renderer[FC_ORACLE] = FC_DEFAULT_ORACLE;
+    o->renderer[FC_FIXGL] = FC_DEFAULT_FIXGL;
+    o->jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = 1;
+        if (strcmp(a, "--no-random") == 0) { o->random = 0; explicit_random = 1; takes = 0; }
+        else if (strcmp(a, "--list") == 0) { o->list_only = 1; takes = 0; }
+        else if (strcmp(a, "--help") == 0) { usage(stdout); exit(0); }
+        else if (!v) { fprintf(stderr, "fixgl-conform: %s needs a value\n", a); return 0; }
+        else if (strcmp(a, "--tag") == 0 && o->ntags < MAX_FILTERS) o->tags[o->ntags++] = v;
+        else if (strcmp(a, "--case") == 0 && o->nglobs < MAX_FILTERS) o->globs[o->nglobs++] = v;
+        else if (strcmp(a, "--random") == 0) { o->random = strtol(v, NULL, 10); explicit_random = 1; }
+        else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
+        else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
+        else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
+        else if (strcmp(a, "--report") == 0) o->report = v;
+        else if (strcmp(a, "--oracle-renderer") == 0) o->renderer[FC_ORACLE] = v;
+        else if (strcmp(a, "--fixgl-renderer") == 0) o->renderer[FC_FIXGL] = v;
+        else if (strcmp(a, "--fixgl-arg") == 0) o->fixgl_arg = v;
+        else { fprintf(stderr, "fixgl-conform: unknown option %s\n", a); return 0; }
+        i += takes;
+    }
+    if (o->index >= 0 && !explicit_random)
+        o->random = 1;
+    o->jobs = o->jobs < 1 ? 1 : o->jobs;
+    return o->random >= 0;
+}
+
+static int has_tag(const char *tags, const char *tag)
+{
+    size_t n = strlen(tag);
+    for (const char *s = tags; *s;) {
+        size_t k = strcspn(s, " ");
+        if (k == n && strncmp(s, tag, n) == 0)
+            return 1;
+        s += k;
+        s += strspn(s, " ");
+    }
+    return 0;
+}
+
+static int selected(const struct options *o, const char *name, const char *tags)
+{
+    int ok = o->ntags == 0;
+    for (int i = 0; i < o->ntags && !ok; i++)
+        ok = has_tag(tags, o->tags[i]);
+    if (!ok)
+        return 0;
+    ok = o->nglobs == 0;
+    for (int i = 0; i < o->nglobs && !ok; i++)
+        ok = fnmatch(o->globs[i], name, 0) == 0;
+    return ok;
+}
+
+static char *dup_str(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    return memcpy(malloc(n), s, n);
+}
+
+static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char *name,
+                     const char *tags, const char *replay)
+{
+    if (*n == *cap) {
+        *cap = *cap ? 2 * *cap : 256;
+        *items = realloc(*items, *cap * sizeof **items);
+    }
+    memset(&(*items)[*n], 0, sizeof **items);
+    (*items)[*n].name = dup_str(name);
+    (*items)[*n].tags = dup_str(tags);
+    (*items)[*n].replay = replay ? dup_str(replay) : NULL;
+    ++*n;
+}
+
+/* Fixed cases (from the oracle's --list) then random scenes; 0 on error. */
+static int build_items(const struct options *o, struct fc_item **out, size_t *n)
+{
+    struct fc_item *items = NULL;
+    size_t cap = 0;
+    *n = 0;
+    if (o->index < 0) {
+        const char *argv[3] = { o->renderer[FC_ORACLE], "--list", NULL };
+        char *list = fc_run_capture(argv), *save = NULL;
+        if (!list) {
+            fprintf(stderr, "fixgl-conform: cannot list the cases with %s\n", argv[0]);
+            return 0;
+        }
+        for (char *line = strtok_r(list, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+            char *tab = strchr(line, '\t');
+            if (!tab)
+                continue;
+            *tab = 0;
+            if (selected(o, line, tab + 1))
+                add_item(&items, n, &cap, line, tab + 1, NULL);
+        }
+        free(list);
+    }
+    for (long i = 0; i < o->random; i++) {
+        char name[96], replay[96];
+        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
+        snprintf(name, sizeof name, "random/s%" PRIu64 "-i%" PRIu64, o->seed, index);
+        snprintf(replay, sizeof replay, "--seed %" PRIu64 " --index %" PRIu64, o->seed, index);
+        if (selected(o, name, "random"))
+            add_item(&items, n, &cap, name, "random", replay);
+    }
+    *out = items;
+    return 1;
+}
+
+static void on_ready(void *ud, struct fc_item *item, size_t index)
+{
+    struct ctx *c = ud;
+    struct fc_case_result res;
+    struct fc_report_entry *e = fc_report_begin_case(c->report, item->name, item->tags, item->replay);
+    const char *status;
+    char dots[64];
+    int pad;
+
+    memset(&res, 0, sizeof res);
+    for (int s = 0; s < 2; s++) {
+        if (item->side[s].state == FC_FAILED) {
+            res.crashed = 1;
+            fc_result_note(&res, "%s: %s", s == FC_ORACLE ? "oracle" : "fixgl", item->side[s].why);
+        }
+    }
+    fc_compare_case(item->side[0].data, item->side[0].len, item->side[1].data, item->side[1].len,
+                    &res, fc_report_frame, e);
+    status = fc_report_end_case(e, &res);
+
+    pad = 56 - (int)strlen(item->name);
+    pad = pad < 2 ? 2 : pad > 63 ? 63 : pad;
+    memset(dots, '.', (size_t)pad);
+    dots[pad] = 0;
+    printf("[%*zu/%zu] %s %s %s", c->total > 999 ? 5 : 4, index + 1, c->total, item->name, dots, status);
+    if (strcmp(status, "differs") == 0)
+        printf("  (%" PRIu64 " px, max diff %d, depth %" PRIu64 ", errors %d, queries %d, blobs %d, values %d)",
+               res.mismatched_pixels, res.max_channel_diff, res.depth_mismatches, res.error_mismatches,
+               res.query_mismatches, res.blob_mismatches, res.value_mismatches + res.structure_mismatches);
+    else if (res.crashed)
+        printf("  (%s)", res.notes[0]);
+    if (item->replay && strcmp(status, "exact") != 0)
+        printf("  replay: fixgl-conform %s", item->replay);
+    putchar('\n');
+    fflush(stdout);
+    for (int s = 0; s < 2; s++) {
+        free(item->side[s].data);
+        item->side[s].data = NULL;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    struct options o;
+    struct fc_run_cfg cfg;
+    struct fc_item *items = NULL;
+    struct ctx c;
+    char *info[2][2] = { { NULL, NULL }, { NULL, NULL } };
+    size_t n;
+    int rc, bad;
+
+    if (!parse_args(argc, argv, &o)) {
+        usage(stderr);
+        return 2;
+    }
+    for (int s = 0; s < 2; s++) {
+        if (access(o.renderer[s], X_OK) != 0) {
+            fprintf(stderr, "fixgl-conform: %s renderer %s is not executable%s\n",
+                    s == FC_ORACLE ? "oracle" : "fixgl", o.renderer[s],
+                    s == FC_FIXGL ? " (libfixgl may not link yet; see the meson output)" : "");
+            return 2;
+        }
+    }
+    if (!build_items(&o, &items, &n))
+        return 2;
+    if (n == 0) {
+        fprintf(stderr, "fixgl-conform: no case selected\n");
+        return 2;
+    }
+    if (o.list_only) {
+        for (size_t i = 0; i < n; i++)
+            printf("%s\t%s\n", items[i].name, items[i].tags);
+        return 0;
+    }
+    c.report = fc_report_open(o.report);
+    c.total = n;
+    if (!c.report)
+        return 2;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.renderer[FC_ORACLE] = o.renderer[FC_ORACLE];
+    cfg.renderer[FC_FIXGL] = o.renderer[FC_FIXGL];
+    cfg.extra_arg[FC_FIXGL] = o.fixgl_arg;
+    cfg.work_dir = o.report;
+    cfg.jobs = o.jobs;
+    printf("fixgl-conform: %zu cases, %d jobs\n  oracle %s\n  fixgl  %s\n", n, o.jobs,
+           o.renderer[FC_ORACLE], o.renderer[FC_FIXGL]);
+    fflush(stdout);
+    rc = fc_run_items(&cfg, items, n, on_ready, &c, info);
+    fc_report_set_renderers(c.report, info[0][0], info[0][1], info[1][0], info[1][1]);
+    if (rc == 0)
+        fc_report_print_summary(c.report, stdout);
+    else
+        fprintf(stderr, "fixgl-conform: run aborted; the report holds the cases finished so far\n");
+    bad = fc_report_finish(c.report);
+    printf("report: %s/index.html\n", o.report);
+    for (size_t i = 0; i < n; i++) {
+        free(items[i].name); free(items[i].tags); free(items[i].replay);
+        free(items[i].side[0].data); free(items[i].side[1].data);
+    }
+    free(items);
+    for (int s = 0; s < 2; s++) {
+        free(info[s][0]);
+        free(info[s][1]);
+    }
+    if (rc != 0 || bad < 0)
+        return 2;
+    return bad ? 1 : 0;
+}

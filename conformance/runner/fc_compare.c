@@ -1,0 +1,249 @@
+/* fc_compare.c - oracle vs fixgl comparison of one case (see fc_compare.h). */
+#include "fc_compare.h"
+
+#include <inttypes.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
+{
+    va_list ap;
+    if (res->nnotes >= FC_MAX_NOTES) {
+        res->dropped_notes++;
+        return;
+    }
+    va_start(ap, fmt);
+    vsnprintf(res->notes[res->nnotes++], FC_NOTE_LEN, fmt, ap);
+    va_end(ap);
+}
+
+const char *fc_result_status(const struct fc_case_result *res)
+{
+    if (res->crashed)
+        return "error";
+    if (res->mismatched_pixels || res->depth_mismatches || res->error_mismatches ||
+        res->query_mismatches || res->blob_mismatches || res->value_mismatches ||
+        res->structure_mismatches)
+        return "differs";
+    return "exact";
+}
+
+static uint64_t umax(uint64_t a, uint64_t b) { return a > b ? a : b; }
+
+void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
+                      struct fc_frame_stats *st)
+{
+    const struct fc_frame_hdr *ha = &a->hdr, *hb = &b->hdr;
+    uint64_t pa = (uint64_t)ha->row_length * (uint64_t)ha->height;
+    uint64_t pb = (uint64_t)hb->row_length * (uint64_t)hb->height;
+
+    memset(st, 0, sizeof *st);
+    st->pixels = umax(pa, pb);
+    st->depth_values = umax(a->depth_len / (ha->depth_bpv ? (uint64_t)ha->depth_bpv : 1),
+                            b->depth_len / (hb->depth_bpv ? (uint64_t)hb->depth_bpv : 1));
+    if (ha->width != hb->width || ha->height != hb->height || ha->row_length != hb->row_length ||
+        ha->format != hb->format || ha->bpp != hb->bpp) {
+        st->layout_differs = 1;
+        st->mismatched = st->pixels;
+        st->max_diff = 255;
+    } else {
+        for (uint64_t p = 0; p < pa; p++) {
+            const unsigned char *x = a->color + p * (uint64_t)ha->bpp, *y = b->color + p * (uint64_t)ha->bpp;
+            int d = 0;
+            for (int c = 0; c < ha->bpp; c++) {
+                int e = abs((int)x[c] - (int)y[c]);
+                d = e > d ? e : d;
+            }
+            if (d) {
+                st->mismatched++;
+                st->max_diff = d > st->max_diff ? d : st->max_diff;
+            }
+        }
+    }
+    if (ha->depth_ok != hb->depth_ok || ha->depth_w != hb->depth_w ||
+        ha->depth_h != hb->depth_h || ha->depth_bpv != hb->depth_bpv) {
+        st->layout_differs = 1;
+        st->depth_mismatches = st->depth_values;
+    } else if (ha->depth_bpv) {
+        for (uint64_t i = 0; i < st->depth_values; i++)
+            if (memcmp(a->depth + i * (uint64_t)ha->depth_bpv, b->depth + i * (uint64_t)ha->depth_bpv,
+                       (size_t)ha->depth_bpv) != 0)
+                st->depth_mismatches++;
+    }
+}
+
+static const char *kind_name(uint32_t kind)
+{
+    switch (kind) {
+    case FC_REC_VALUE: return "value";
+    case FC_REC_ERROR: return "error";
+    case FC_REC_QUERY: return "query";
+    case FC_REC_BLOB: return "blob";
+    case FC_REC_FRAME: return "frame";
+    default: return "record";
+    }
+}
+
+/* Next record that takes part in the comparison. */
+static int next_rec(const unsigned char *buf, size_t len, size_t *pos, struct fc_rec *r)
+{
+    while (fc_rec_next(buf, len, pos, r))
+        if (r->kind >= FC_REC_VALUE && r->kind <= FC_REC_FRAME)
+            return 1;
+    return 0;
+}
+
+/* Formats up to 16 query values of a payload into out. */
+static void format_query(const struct fc_rec *r, char *out, size_t size)
+{
+    uint32_t head[2] = { 0, 0 };
+    size_t n = 0;
+    const unsigned char *p = r->payload + sizeof head;
+    out[0] = 0;
+    if (r->payload_len < sizeof head)
+        return;
+    memcpy(head, r->payload, sizeof head);
+    n += (size_t)snprintf(out, size, "{");
+    for (uint32_t i = 0; i < head[1] && i < 16 && n < size; i++) {
+        const char *sep = i ? "," : "";
+        if (head[0] == FC_Q_INT) {
+            int32_t v; memcpy(&v, p + 4 * i, 4);
+            n += (size_t)snprintf(out + n, size - n, "%s%" PRId32, sep, v);
+        } else if (head[0] == FC_Q_FLOAT) {
+            float v; memcpy(&v, p + 4 * i, 4);
+            n += (size_t)snprintf(out + n, size - n, "%s%.9g", sep, (double)v);
+        } else if (head[0] == FC_Q_DOUBLE) {
+            double v; memcpy(&v, p + 8 * i, 8);
+            n += (size_t)snprintf(out + n, size - n, "%s%.17g", sep, v);
+        } else {
+            n += (size_t)snprintf(out + n, size - n, "%s%u", sep, p[i]);
+        }
+    }
+    if (n < size)
+        snprintf(out + n, size - n, "%s}", head[1] > 16 ? ",..." : "");
+}
+
+static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *frame,
+                         struct fc_case_result *res, fc_frame_cb cb, void *ud)
+{
+    int lab = (int)(ra->label_len < 60 ? ra->label_len : 60);
+    int same = ra->payload_len == rb->payload_len &&
+               memcmp(ra->payload, rb->payload, (size_t)ra->payload_len) == 0;
+
+    if (ra->kind != rb->kind || ra->label_len != rb->label_len ||
+        memcmp(ra->label, rb->label, ra->label_len) != 0) {
+        res->structure_mismatches++;
+        fc_result_note(res, "record order differs: oracle %s \"%.*s\", fixgl %s \"%.*s\"",
+                       kind_name(ra->kind), lab, ra->label, kind_name(rb->kind),
+                       (int)(rb->label_len < 60 ? rb->label_len : 60), rb->label);
+        return;
+    }
+    switch (ra->kind) {
+    case FC_REC_FRAME: {
+        struct fc_frame_view a, b;
+        struct fc_frame_stats st;
+        if (!fc_frame_parse(ra, &a.hdr, &a.color, &a.color_len, &a.depth, &a.depth_len) ||
+            !fc_frame_parse(rb, &b.hdr, &b.color, &b.color_len, &b.depth, &b.depth_len)) {
+            res->structure_mismatches++;
+            fc_result_note(res, "frame %d: malformed frame record", *frame);
+            break;
+        }
+        fc_compare_frame(&a, &b, &st);
+        res->frames++;
+        res->pixels += st.pixels;
+        res->mismatched_pixels += st.mismatched;
+        res->max_channel_diff = st.max_diff > res->max_channel_diff ? st.max_diff : res->max_channel_diff;
+        res->depth_values += st.depth_values;
+        res->depth_mismatches += st.depth_mismatches;
+        if (st.layout_differs)
+            fc_result_note(res, "frame %d layout: oracle %dx%d row %d fmt 0x%x depth %d:%dx%dx%d, "
+                           "fixgl %dx%d row %d fmt 0x%x depth %d:%dx%dx%d", *frame,
+                           a.hdr.width, a.hdr.height, a.hdr.row_length, (unsigned)a.hdr.format,
+                           a.hdr.depth_ok, a.hdr.depth_w, a.hdr.depth_h, a.hdr.depth_bpv,
+                           b.hdr.width, b.hdr.height, b.hdr.row_length, (unsigned)b.hdr.format,
+                           b.hdr.depth_ok, b.hdr.depth_w, b.hdr.depth_h, b.hdr.depth_bpv);
+        if (cb)
+            cb(ud, *frame, &a, &b, &st);
+        ++*frame;
+        break;
+    }
+    case FC_REC_ERROR: {
+        uint32_t ea = 0, eb = 0;
+        memcpy(&ea, ra->payload, ra->payload_len >= 4 ? 4 : 0);
+        memcpy(&eb, rb->payload, rb->payload_len >= 4 ? 4 : 0);
+        if (!same) {
+            res->error_mismatches++;
+            fc_result_note(res, "glGetError \"%.*s\": oracle 0x%04x, fixgl 0x%04x", lab, ra->label, ea, eb);
+        }
+        break;
+    }
+    case FC_REC_VALUE: {
+        int64_t va = 0, vb = 0;
+        memcpy(&va, ra->payload, ra->payload_len >= 8 ? 8 : 0);
+        memcpy(&vb, rb->payload, rb->payload_len >= 8 ? 8 : 0);
+        if (!same) {
+            res->value_mismatches++;
+            fc_result_note(res, "value \"%.*s\": oracle %" PRId64 ", fixgl %" PRId64, lab, ra->label, va, vb);
+        }
+        break;
+    }
+    case FC_REC_QUERY:
+        if (!same) {
+            char qa[96], qb[96];
+            format_query(ra, qa, sizeof qa);
+            format_query(rb, qb, sizeof qb);
+            res->query_mismatches++;
+            fc_result_note(res, "query \"%.*s\": oracle %s, fixgl %s", lab, ra->label, qa, qb);
+        }
+        break;
+    case FC_REC_BLOB:
+        if (!same) {
+            uint64_t n = ra->payload_len < rb->payload_len ? ra->payload_len : rb->payload_len, nd = 0, first = n;
+            for (uint64_t i = 0; i < n; i++) {
+                if (ra->payload[i] != rb->payload[i]) {
+                    if (nd == 0)
+                        first = i;
+                    nd++;
+                }
+            }
+            res->blob_mismatches++;
+            if (first < n)
+                fc_result_note(res, "blob \"%.*s\": %" PRIu64 " of %" PRIu64 " bytes differ, first at %" PRIu64
+                               " (oracle 0x%02x, fixgl 0x%02x)", lab, ra->label, nd, n, first,
+                               ra->payload[first], rb->payload[first]);
+            else
+                fc_result_note(res, "blob \"%.*s\": sizes differ (oracle %" PRIu64 ", fixgl %" PRIu64 ")",
+                               lab, ra->label, ra->payload_len, rb->payload_len);
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+void fc_compare_case(const unsigned char *a, size_t alen, const unsigned char *b, size_t blen,
+                     struct fc_case_result *res, fc_frame_cb cb, void *ud)
+{
+    size_t pa = 0, pb = 0;
+    struct fc_rec ra, rb;
+    int frame = 0;
+
+    for (;;) {
+        int ha = next_rec(a, alen, &pa, &ra), hb = next_rec(b, blen, &pb, &rb);
+        if (!ha && !hb)
+            break;
+        if (ha && hb) {
+            compare_pair(&ra, &rb, &frame, res, cb, ud);
+            continue;
+        }
+        res->structure_mismatches++;
+        if (ha)
+            fc_result_note(res, "only the oracle recorded %s \"%.*s\"", kind_name(ra.kind),
+                           (int)(ra.label_len < 60 ? ra.label_len : 60), ra.label);
+        else
+            fc_result_note(res, "only fixgl recorded %s \"%.*s\"", kind_name(rb.kind),
+                           (int)(rb.label_len < 60 ? rb.label_len : 60), rb.label);
+    }
+}

@@ -1,0 +1,65 @@
+/* fc_compare.h - comparison of the records one case produced on the oracle
+ * and on fixgl: colour bytes and raw depth values of every frame, and the
+ * error / query / blob / value sequences.  GL-free. */
+#ifndef FC_COMPARE_H
+#define FC_COMPARE_H
+
+#include "fc_record.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* One captured frame, pointing into a record buffer. */
+struct fc_frame_view {
+    struct fc_frame_hdr hdr;
+    const unsigned char *color, *depth;
+    uint64_t color_len, depth_len;
+};
+
+struct fc_frame_stats {
+    uint64_t pixels;            /* colour pixels compared (row_length x height) */
+    uint64_t mismatched;        /* pixels with any differing byte */
+    int max_diff;               /* largest per-byte difference */
+    uint64_t depth_values, depth_mismatches;
+    int layout_differs;         /* sizes / formats / depth presence differ */
+};
+
+#define FC_MAX_NOTES 24
+#define FC_NOTE_LEN 320
+
+struct fc_case_result {
+    int frames;
+    uint64_t pixels, mismatched_pixels;
+    int max_channel_diff;
+    uint64_t depth_values, depth_mismatches;
+    int error_mismatches, query_mismatches, blob_mismatches, value_mismatches;
+    int structure_mismatches;   /* records of different kind/label/count */
+    int crashed;                /* a side did not finish the case */
+    int nnotes, dropped_notes;
+    char notes[FC_MAX_NOTES][FC_NOTE_LEN];
+};
+
+/* Called for every frame pair, before the case result is final. */
+typedef void (*fc_frame_cb)(void *ud, int index, const struct fc_frame_view *oracle,
+                            const struct fc_frame_view *fixgl, const struct fc_frame_stats *st);
+
+void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
+                      struct fc_frame_stats *st);
+
+/* Compares two record sequences (the records between CASE and END; other
+ * kinds are ignored).  res must be zeroed by the caller, who may have added
+ * notes (e.g. about crashes) already. */
+void fc_compare_case(const unsigned char *a, size_t alen, const unsigned char *b, size_t blen,
+                     struct fc_case_result *res, fc_frame_cb cb, void *ud);
+
+/* Appends a printf-style note to res (bounded). */
+void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* "exact", "differs" or "error". */
+const char *fc_result_status(const struct fc_case_result *res);
+
+#endif

@@ -1,0 +1,498 @@
+/* fc_report.c - HTML/JSON report and summary table (see fc_report.h). */
+#include "fc_report.h"
+#include "fc_image.h"
+#include "fc_png.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <inttypes.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define MAX_FRAME_IMAGES 8
+
+struct frame_images {
+    int index;
+    struct fc_frame_stats st;
+    int w, h, dw, dh;
+    int has_heat, has_depth;
+};
+
+struct fc_report_entry {
+    struct fc_report *report;
+    char *name, *tags, *replay, *file_stem;
+    struct fc_case_result res;
+    const char *status;
+    int nframes;
+    struct frame_images frames[MAX_FRAME_IMAGES];
+};
+
+struct fc_report {
+    char *dir;
+    char *renderer[2], *version[2];
+    struct fc_report_entry **entries;
+    size_t n, cap;
+};
+
+static char *dup_str(const char *s)
+{
+    size_t n = strlen(s ? s : "") + 1;
+    char *d = malloc(n);
+    memcpy(d, s ? s : "", n);
+    return d;
+}
+
+static int make_dir(const char *path)
+{
+    char *p = dup_str(path);
+    for (char *s = p + 1; *s; s++) {
+        if (*s == '/') {
+            *s = 0;
+            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+                free(p);
+                return 0;
+            }
+            *s = '/';
+        }
+    }
+    int ok = mkdir(p, 0777) == 0 || errno == EEXIST;
+    free(p);
+    return ok;
+}
+
+static char *path_join(const char *a, const char *b)
+{
+    size_t n = strlen(a) + strlen(b) + 2;
+    char *p = malloc(n);
+    snprintf(p, n, "%s/%s", a, b);
+    return p;
+}
+
+struct fc_report *fc_report_open(const char *dir)
+{
+    struct fc_report *r;
+    char *img = path_join(dir, "img");
+    DIR *d;
+    struct dirent *de;
+
+    if (!make_dir(img)) {
+        fprintf(stderr, "fixgl-conform: cannot create %s: %s\n", img, strerror(errno));
+        free(img);
+        return NULL;
+    }
+    if ((d = opendir(img)) != NULL) {
+        while ((de = readdir(d)) != NULL) {
+            size_t n = strlen(de->d_name);
+            if (n > 4 && strcmp(de->d_name + n - 4, ".png") == 0) {
+                char *f = path_join(img, de->d_name);
+                remove(f);
+                free(f);
+            }
+        }
+        closedir(d);
+    }
+    free(img);
+    r = calloc(1, sizeof *r);
+    r->dir = dup_str(dir);
+    return r;
+}
+
+void fc_report_set_renderers(struct fc_report *r, const char *oracle_renderer,
+                             const char *oracle_version, const char *fixgl_renderer,
+                             const char *fixgl_version)
+{
+    const char *s[4] = { oracle_renderer, oracle_version, fixgl_renderer, fixgl_version };
+    for (int i = 0; i < 2; i++) {
+        free(r->renderer[i]);
+        free(r->version[i]);
+        r->renderer[i] = dup_str(s[2 * i]);
+        r->version[i] = dup_str(s[2 * i + 1]);
+    }
+}
+
+struct fc_report_entry *fc_report_begin_case(struct fc_report *r, const char *name,
+                                             const char *tags, const char *replay)
+{
+    struct fc_report_entry *e = calloc(1, sizeof *e);
+    e->report = r;
+    e->name = dup_str(name);
+    e->tags = dup_str(tags);
+    e->replay = replay ? dup_str(replay) : NULL;
+    e->file_stem = dup_str(name);
+    for (char *s = e->file_stem; *s; s++)
+        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9') ||
+              *s == '-' || *s == '_'))
+            *s = '_';
+    if (r->n == r->cap) {
+        r->cap = r->cap ? 2 * r->cap : 256;
+        r->entries = realloc(r->entries, r->cap * sizeof *r->entries);
+    }
+    r->entries[r->n++] = e;
+    return e;
+}
+
+/* img/<stem>-f<index>-<what>.png, relative to the report directory. */
+static void image_name(const struct fc_report_entry *e, int index, const char *what,
+                       char *out, size_t size)
+{
+    snprintf(out, size, "img/%s-f%d-%s.png", e->file_stem, index, what);
+}
+
+static void write_png(const struct fc_report_entry *e, int index, const char *what,
+                      int w, int h, const unsigned char *rgb)
+{
+    char rel[512];
+    char *path;
+    image_name(e, index, what, rel, sizeof rel);
+    path = path_join(e->report->dir, rel);
+    fc_png_write(path, w, h, 3, rgb);
+    free(path);
+}
+
+void fc_report_frame(void *entry, int index, const struct fc_frame_view *oracle,
+                     const struct fc_frame_view *fixgl, const struct fc_frame_stats *st)
+{
+    struct fc_report_entry *e = entry;
+    struct frame_images *fi;
+    unsigned char *rgb;
+    int w, h;
+
+    if ((!st->mismatched && !st->depth_mismatches) || e->nframes >= MAX_FRAME_IMAGES)
+        return;
+    fi = &e->frames[e->nframes++];
+    memset(fi, 0, sizeof *fi);
+    fi->index = index;
+    fi->st = *st;
+    w = fi->w = fc_image_width(oracle);
+    h = fi->h = fc_image_height(oracle);
+    rgb = malloc((size_t)w * (size_t)h * 3 + 1);
+    if (w > 0 && h > 0) {
+        fc_image_color(oracle, rgb);
+        write_png(e, index, "oracle", w, h, rgb);
+        if (!st->layout_differs) {
+            fc_image_heatmap(oracle, fixgl, rgb);
+            write_png(e, index, "diff", w, h, rgb);
+            fi->has_heat = 1;
+        }
+    }
+    free(rgb);
+    if (fc_image_width(fixgl) > 0 && fc_image_height(fixgl) > 0) {
+        rgb = malloc((size_t)fc_image_width(fixgl) * (size_t)fc_image_height(fixgl) * 3);
+        fc_image_color(fixgl, rgb);
+        write_png(e, index, "fixgl", fc_image_width(fixgl), fc_image_height(fixgl), rgb);
+        free(rgb);
+    }
+    if (st->depth_mismatches && !st->layout_differs && oracle->hdr.depth_w > 0 && oracle->hdr.depth_h > 0) {
+        fi->dw = oracle->hdr.depth_w;
+        fi->dh = oracle->hdr.depth_h;
+        rgb = malloc((size_t)fi->dw * (size_t)fi->dh * 3);
+        fc_image_depth_heatmap(oracle, fixgl, rgb);
+        write_png(e, index, "depthdiff", fi->dw, fi->dh, rgb);
+        free(rgb);
+        fi->has_depth = 1;
+    }
+}
+
+const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_result *res)
+{
+    e->res = *res;
+    e->status = fc_result_status(res);
+    return e->status;
+}
+
+/* ---- summary table ---------------------------------------------------- */
+
+struct tag_count { char tag[48]; int cases, exact, differs, error; };
+
+static int has_tag_word(const char *tags, const char *tag, size_t n)
+{
+    for (const char *s = tags; *s;) {
+        size_t k = strcspn(s, " ");
+        if (k == n && strncmp(s, tag, n) == 0)
+            return 1;
+        s += k;
+        s += strspn(s, " ");
+    }
+    return 0;
+}
+
+static void count_into(struct tag_count *t, const struct fc_report_entry *e)
+{
+    t->cases++;
+    if (strcmp(e->status, "exact") == 0) t->exact++;
+    else if (strcmp(e->status, "differs") == 0) t->differs++;
+    else t->error++;
+}
+
+/* Distinct tags in first-seen order (at most max). */
+static size_t collect_tags(const struct fc_report *r, struct tag_count *t, size_t max)
+{
+    size_t nt = 0;
+    memset(t, 0, max * sizeof *t);
+    for (size_t i = 0; i < r->n; i++) {
+        for (const char *s = r->entries[i]->tags; *s;) {
+            size_t k = strcspn(s, " "), j;
+            for (j = 0; j < nt; j++)
+                if (strlen(t[j].tag) == k && strncmp(t[j].tag, s, k) == 0)
+                    break;
+            if (j == nt && nt < max && k > 0 && k < sizeof t[0].tag) {
+                memcpy(t[nt].tag, s, k);
+                nt++;
+            }
+            s += k;
+            s += strspn(s, " ");
+        }
+    }
+    for (size_t j = 0; j < nt; j++)
+        for (size_t i = 0; i < r->n; i++)
+            if (has_tag_word(r->entries[i]->tags, t[j].tag, strlen(t[j].tag)))
+                count_into(&t[j], r->entries[i]);
+    return nt;
+}
+
+void fc_report_print_summary(const struct fc_report *r, FILE *out)
+{
+    struct tag_count t[64], total;
+    size_t nt = collect_tags(r, t, 64);
+    uint64_t px = 0, mism = 0, dmism = 0;
+
+    memset(&total, 0, sizeof total);
+    for (size_t i = 0; i < r->n; i++) {
+        count_into(&total, r->entries[i]);
+        px += r->entries[i]->res.pixels;
+        mism += r->entries[i]->res.mismatched_pixels;
+        dmism += r->entries[i]->res.depth_mismatches;
+    }
+    fprintf(out, "\n%-16s %7s %7s %7s %7s\n", "tag", "cases", "exact", "differs", "error");
+    for (size_t j = 0; j < nt; j++)
+        fprintf(out, "%-16s %7d %7d %7d %7d\n", t[j].tag, t[j].cases, t[j].exact, t[j].differs, t[j].error);
+    fprintf(out, "%-16s %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.differs, total.error);
+    fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
+            mism, px, dmism);
+    fprintf(out, "oracle: %s | %s\n", r->renderer[0] ? r->renderer[0] : "?", r->version[0] ? r->version[0] : "?");
+    fprintf(out, "fixgl:  %s | %s\n", r->renderer[1] ? r->renderer[1] : "?", r->version[1] ? r->version[1] : "?");
+}
+
+/* ---- files ------------------------------------------------------------ */
+
+static void json_str(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') fprintf(f, "\\%c", c);
+        else if (c < 0x20) fprintf(f, "\\u%04x", c);
+        else fputc(c, f);
+    }
+    fputc('"', f);
+}
+
+static void html_str(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        switch (*s) {
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '&': fputs("&amp;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default: fputc(*s, f);
+        }
+    }
+}
+
+static void json_tags(FILE *f, const char *tags)
+{
+    int first = 1;
+    fputc('[', f);
+    for (const char *s = tags; *s;) {
+        size_t k = strcspn(s, " ");
+        if (k) {
+            char buf[64];
+            snprintf(buf, sizeof buf, "%.*s", (int)(k < 63 ? k : 63), s);
+            fputs(first ? "" : ", ", f);
+            json_str(f, buf);
+            first = 0;
+        }
+        s += k;
+        s += strspn(s, " ");
+    }
+    fputc(']', f);
+}
+
+static int write_json(const struct fc_report *r)
+{
+    char *path = path_join(r->dir, "summary.json");
+    FILE *f = fopen(path, "w");
+    char oracle[512];
+    free(path);
+    if (!f)
+        return 0;
+    snprintf(oracle, sizeof oracle, "%s %s", r->renderer[0] ? r->renderer[0] : "",
+             r->version[0] ? r->version[0] : "");
+    fputs("{\n  \"oracle\": ", f); json_str(f, oracle);
+    fputs(",\n  \"oracle_renderer\": ", f); json_str(f, r->renderer[0] ? r->renderer[0] : "");
+    fputs(",\n  \"oracle_version\": ", f); json_str(f, r->version[0] ? r->version[0] : "");
+    fputs(",\n  \"fixgl_renderer\": ", f); json_str(f, r->renderer[1] ? r->renderer[1] : "");
+    fputs(",\n  \"fixgl_version\": ", f); json_str(f, r->version[1] ? r->version[1] : "");
+    fputs(",\n  \"cases\": [", f);
+    for (size_t i = 0; i < r->n; i++) {
+        const struct fc_report_entry *e = r->entries[i];
+        const struct fc_case_result *c = &e->res;
+        fprintf(f, "%s\n    {\"name\": ", i ? "," : "");
+        json_str(f, e->name);
+        fputs(", \"tags\": ", f);
+        json_tags(f, e->tags);
+        fprintf(f, ", \"frames\": %d, \"pixels\": %" PRIu64 ", \"mismatched_pixels\": %" PRIu64
+                ", \"max_channel_diff\": %d, \"depth_mismatches\": %" PRIu64
+                ", \"error_mismatches\": %d, \"query_mismatches\": %d, \"blob_mismatches\": %d"
+                ", \"value_mismatches\": %d, \"structure_mismatches\": %d, \"status\": \"%s\"",
+                c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
+                c->error_mismatches, c->query_mismatches, c->blob_mismatches, c->value_mismatches,
+                c->structure_mismatches, e->status);
+        if (e->replay) {
+            fputs(", \"replay\": ", f);
+            json_str(f, e->replay);
+        }
+        fputc('}', f);
+    }
+    fputs("\n  ]\n}\n", f);
+    return fclose(f) == 0;
+}
+
+static void html_image(FILE *f, const struct fc_report_entry *e, int index, const char *what,
+                       const char *caption, int w, int h)
+{
+    char rel[512];
+    int scale = w > 0 && h > 0 ? 256 / (w > h ? w : h) : 1;
+    scale = scale < 1 ? 1 : scale > 8 ? 8 : scale;
+    image_name(e, index, what, rel, sizeof rel);
+    fprintf(f, "<figure><img src=\"%s\" width=\"%d\" height=\"%d\"><figcaption>%s</figcaption></figure>\n",
+            rel, w * scale, h * scale, caption);
+}
+
+static void html_case(FILE *f, const struct fc_report_entry *e)
+{
+    const struct fc_case_result *c = &e->res;
+    fprintf(f, "<section id=\"");
+    html_str(f, e->file_stem);
+    fprintf(f, "\"><h2 class=\"%s\">", e->status);
+    html_str(f, e->name);
+    fprintf(f, " &mdash; %s</h2>\n<p>tags: ", e->status);
+    html_str(f, e->tags);
+    fprintf(f, "<br>frames %d, pixels %" PRIu64 ", <b>mismatched pixels %" PRIu64 "</b>, max channel diff %d, "
+            "depth mismatches %" PRIu64 " of %" PRIu64 ", error mismatches %d, query mismatches %d, "
+            "blob mismatches %d, value mismatches %d, record-structure mismatches %d</p>\n",
+            c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
+            c->depth_values, c->error_mismatches, c->query_mismatches, c->blob_mismatches,
+            c->value_mismatches, c->structure_mismatches);
+    fputs("<p>replay: <code>fixgl-conform ", f);
+    if (e->replay) {
+        html_str(f, e->replay);
+    } else {
+        fputs("--case ", f);
+        html_str(f, e->name);
+    }
+    fputs("</code></p>\n", f);
+    if (c->nnotes) {
+        fputs("<ul class=\"notes\">\n", f);
+        for (int i = 0; i < c->nnotes; i++) {
+            fputs("<li>", f);
+            html_str(f, c->notes[i]);
+            fputs("</li>\n", f);
+        }
+        if (c->dropped_notes)
+            fprintf(f, "<li>... %d more</li>\n", c->dropped_notes);
+        fputs("</ul>\n", f);
+    }
+    for (int i = 0; i < e->nframes; i++) {
+        const struct frame_images *fi = &e->frames[i];
+        fprintf(f, "<div class=\"frame\"><p>frame %d: %" PRIu64 " of %" PRIu64 " pixels differ, max diff %d, "
+                "depth %" PRIu64 " of %" PRIu64 "%s</p>\n", fi->index, fi->st.mismatched, fi->st.pixels,
+                fi->st.max_diff, fi->st.depth_mismatches, fi->st.depth_values,
+                fi->st.layout_differs ? " (layout differs)" : "");
+        html_image(f, e, fi->index, "oracle", "oracle", fi->w, fi->h);
+        html_image(f, e, fi->index, "fixgl", "fixgl", fi->w, fi->h);
+        if (fi->has_heat)
+            html_image(f, e, fi->index, "diff", "colour diff", fi->w, fi->h);
+        if (fi->has_depth)
+            html_image(f, e, fi->index, "depthdiff", "depth diff", fi->dw, fi->dh);
+        fputs("</div>\n", f);
+    }
+    fputs("</section>\n", f);
+}
+
+static int write_html(const struct fc_report *r)
+{
+    char *path = path_join(r->dir, "index.html");
+    FILE *f = fopen(path, "w");
+    struct tag_count t[64];
+    size_t nt = collect_tags(r, t, 64);
+    free(path);
+    if (!f)
+        return 0;
+    fputs("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>fixgl conformance</title>\n"
+          "<style>body{font-family:sans-serif;margin:1em 2em}img{image-rendering:pixelated;"
+          "border:1px solid #888;background:#222}figure{display:inline-block;margin:0 1em 1em 0}"
+          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
+          "td:first-child{text-align:left}.differs{color:#b60}.error{color:#c00}.exact{color:#080}"
+          "section{border-top:1px solid #ccc}.notes{font-family:monospace}</style></head><body>\n"
+          "<h1>fixgl conformance report</h1>\n<p>oracle: <b>", f);
+    html_str(f, r->renderer[0] ? r->renderer[0] : "?");
+    fputs(" &mdash; ", f);
+    html_str(f, r->version[0] ? r->version[0] : "?");
+    fputs("</b><br>fixgl: ", f);
+    html_str(f, r->renderer[1] ? r->renderer[1] : "?");
+    fputs(" &mdash; ", f);
+    html_str(f, r->version[1] ? r->version[1] : "?");
+    fputs("</p>\n<p>Heat maps: matching pixels are the oracle image dimmed; differing pixels go from "
+          "yellow (difference 1) through red to magenta (255), log scale. Depth heat maps use a "
+          "24-bit scale.</p>\n<table><tr><th>tag</th><th>cases</th><th>exact</th><th>differs</th>"
+          "<th>error</th></tr>\n", f);
+    for (size_t j = 0; j < nt; j++)
+        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td></tr>\n",
+                t[j].tag, t[j].cases, t[j].exact, t[j].differs, t[j].error);
+    fputs("</table>\n", f);
+    for (size_t i = 0; i < r->n; i++)
+        if (strcmp(r->entries[i]->status, "exact") != 0)
+            html_case(f, r->entries[i]);
+    fputs("<h2>All cases</h2>\n<table><tr><th>case</th><th>status</th><th>mismatched pixels</th></tr>\n", f);
+    for (size_t i = 0; i < r->n; i++) {
+        const struct fc_report_entry *e = r->entries[i];
+        fputs("<tr><td>", f);
+        if (strcmp(e->status, "exact") != 0) {
+            fputs("<a href=\"#", f);
+            html_str(f, e->file_stem);
+            fputs("\">", f);
+            html_str(f, e->name);
+            fputs("</a>", f);
+        } else {
+            html_str(f, e->name);
+        }
+        fprintf(f, "</td><td class=\"%s\">%s</td><td>%" PRIu64 "</td></tr>\n", e->status, e->status,
+                e->res.mismatched_pixels);
+    }
+    fputs("</table>\n</body></html>\n", f);
+    return fclose(f) == 0;
+}
+
+int fc_report_finish(struct fc_report *r)
+{
+    int bad = 0, ok = write_json(r) && write_html(r);
+    if (!ok)
+        fprintf(stderr, "fixgl-conform: cannot write the report in %s\n", r->dir);
+    for (size_t i = 0; i < r->n; i++) {
+        struct fc_report_entry *e = r->entries[i];
+        bad += strcmp(e->status, "exact") != 0;
+        free(e->name); free(e->tags); free(e->replay); free(e->file_stem);
+        free(e);
+    }
+    for (int i = 0; i < 2; i++) {
+        free(r->renderer[i]);
+        free(r->version[i]);
+    }
+    free(r->entries);
+    free(r->dir);
+    free(r);
+    return ok ? bad : -1;
+}

@@ -1,0 +1,43 @@
+/* fc_report.h - the conformance report: <dir>/index.html with the oracle
+ * image, the fixgl image and amplified heat maps of every differing frame,
+ * <dir>/summary.json with per-case numbers, and the per-tag summary table
+ * printed by the runner.  GL-free. */
+#ifndef FC_REPORT_H
+#define FC_REPORT_H
+
+#include "fc_compare.h"
+
+#include <stdio.h>
+
+struct fc_report;
+struct fc_report_entry;
+
+/* Creates dir and dir/img (removing PNGs of an earlier run).  NULL on error. */
+struct fc_report *fc_report_open(const char *dir);
+
+/* Renderer identification strings (GL_RENDERER, GL_VERSION) of each side. */
+void fc_report_set_renderers(struct fc_report *r, const char *oracle_renderer,
+                             const char *oracle_version, const char *fixgl_renderer,
+                             const char *fixgl_version);
+
+/* Starts a case; replay is the command-line fragment that re-runs it alone
+ * (NULL for fixed cases, which re-run with --case NAME). */
+struct fc_report_entry *fc_report_begin_case(struct fc_report *r, const char *name,
+                                             const char *tags, const char *replay);
+
+/* fc_frame_cb for fc_compare_case (ud = the entry): writes the PNGs of a
+ * differing frame. */
+void fc_report_frame(void *entry, int index, const struct fc_frame_view *oracle,
+                     const struct fc_frame_view *fixgl, const struct fc_frame_stats *st);
+
+/* Completes the case with its comparison result (copied); returns its status. */
+const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_result *res);
+
+/* Prints the per-tag table and totals. */
+void fc_report_print_summary(const struct fc_report *r, FILE *out);
+
+/* Writes index.html and summary.json; returns the number of cases that are
+ * not exact, or -1 if the files could not be written.  Frees r. */
+int fc_report_finish(struct fc_report *r);
+
+#endif

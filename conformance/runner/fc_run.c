@@ -1,0 +1,335 @@
+/* fc_run.c - renderer process scheduling (see fc_run.h). */
+#include "fc_run.h"
+#include "fc_record.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static const char *const side_name[2] = { "oracle", "fixgl" };
+
+struct task {
+    int side;
+    size_t first, last;         /* items [first, last) */
+    int id;
+    pid_t pid;
+    char out[512], log[512];
+};
+
+struct sched {
+    const struct fc_run_cfg *cfg;
+    struct fc_item *items;
+    size_t n, next_ready;
+    struct task *queue;         /* FIFO of tasks not started */
+    size_t qhead, qtail, qcap;
+    struct task *running;
+    int nrunning, next_id, fatal;
+    char *(*info)[2];
+    fc_item_ready ready;
+    void *ud;
+};
+
+static void push_task(struct sched *s, int side, size_t first, size_t last)
+{
+    if (s->qtail == s->qcap) {
+        s->qcap = s->qcap ? 2 * s->qcap : 64;
+        s->queue = realloc(s->queue, s->qcap * sizeof *s->queue);
+    }
+    memset(&s->queue[s->qtail], 0, sizeof s->queue[0]);
+    s->queue[s->qtail].side = side;
+    s->queue[s->qtail].first = first;
+    s->queue[s->qtail].last = last;
+    s->queue[s->qtail].id = s->next_id++;
+    s->qtail++;
+}
+
+static int start_task(struct sched *s, struct task *t)
+{
+    const struct fc_run_cfg *cfg = s->cfg;
+    size_t nargs = 5 + (t->last - t->first);
+    const char **argv = calloc(nargs + 1, sizeof *argv);
+    size_t a = 0;
+
+    snprintf(t->out, sizeof t->out, "%s/tmp/%s-t%d.rec", cfg->work_dir, side_name[t->side], t->id);
+    snprintf(t->log, sizeof t->log, "%s/logs/%s-t%d.log", cfg->work_dir, side_name[t->side], t->id);
+    argv[a++] = cfg->renderer[t->side];
+    if (cfg->extra_arg[t->side])
+        argv[a++] = cfg->extra_arg[t->side];
+    argv[a++] = "--out";
+    argv[a++] = t->out;
+    for (size_t i = t->first; i < t->last; i++)
+        argv[a++] = s->items[i].name;
+    t->pid = fork();
+    if (t->pid == 0) {
+        int fd = open(t->log, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        if (fd >= 0) {
+            dup2(fd, 1);
+            dup2(fd, 2);
+        }
+        execv(argv[0], (char *const *)argv);
+        fprintf(stderr, "cannot execute %s: %s\n", argv[0], strerror(errno));
+        _exit(127);
+    }
+    free(argv);
+    if (t->pid < 0) {
+        fprintf(stderr, "fixgl-conform: fork: %s\n", strerror(errno));
+        return 0;
+    }
+    return 1;
+}
+
+static void print_log(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    char line[512];
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f))
+        fprintf(stderr, "  | %s", line);
+    fclose(f);
+}
+
+static unsigned char *read_file(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf = NULL;
+    size_t cap = 0, n = 0, got;
+    *len = 0;
+    if (!f)
+        return NULL;
+    do {
+        if (n == cap) {
+            cap = cap ? 2 * cap : 1 << 20;
+            buf = realloc(buf, cap);
+        }
+        got = fread(buf + n, 1, cap - n, f);
+        n += got;
+    } while (got > 0);
+    fclose(f);
+    *len = n;
+    return buf;
+}
+
+static void describe_exit(int status, const char *log, char *out, size_t size)
+{
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+        snprintf(out, size, "timed out (log %s)", log);
+    else if (WIFSIGNALED(status))
+        snprintf(out, size, "crashed: signal %d (%s) (log %s)", WTERMSIG(status),
+                 strsignal(WTERMSIG(status)), log);
+    else if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+        snprintf(out, size, "renderer exited with status %d (log %s)", WEXITSTATUS(status), log);
+    else
+        snprintf(out, size, "renderer stopped before the end of the case (log %s)", log);
+}
+
+static void store(struct fc_side_result *r, const unsigned char *p, size_t len, enum fc_side_state st)
+{
+    r->data = malloc(len ? len : 1);
+    memcpy(r->data, p, len);
+    r->len = len;
+    r->state = st;
+}
+
+/* Parses the output of a finished task; requeues what it did not run. */
+static void finish_task(struct sched *s, struct task *t, int status)
+{
+    size_t len, pos = 0, start = 0, k = t->first;
+    unsigned char *buf = read_file(t->out, &len);
+    struct fc_rec r;
+    int in_case = 0;
+    int clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+
+    for (;;) {
+        size_t here = pos;
+        if (!buf || k >= t->last || !fc_rec_next(buf, len, &pos, &r))
+            break;
+        if (r.kind == FC_REC_INFO) {
+            int w = fc_rec_label_is(&r, "version");
+            if (!s->info[t->side][w]) {
+                s->info[t->side][w] = malloc(r.payload_len + 1);
+                memcpy(s->info[t->side][w], r.payload, r.payload_len);
+                s->info[t->side][w][r.payload_len] = 0;
+            }
+        } else if (r.kind == FC_REC_CASE) {
+            if (!fc_rec_label_is(&r, s->items[k].name)) {
+                fprintf(stderr, "fixgl-conform: %s renderer ran \"%.*s\", expected \"%s\"\n",
+                        side_name[t->side], (int)r.label_len, r.label, s->items[k].name);
+                s->fatal = 1;
+                break;
+            }
+            start = here;
+            in_case = 1;
+        } else if (r.kind == FC_REC_END && in_case) {
+            store(&s->items[k++].side[t->side], buf + start, pos - start, FC_DONE);
+            in_case = 0;
+        }
+    }
+    if (!s->fatal && k < t->last) {
+        struct fc_side_result *res = &s->items[k].side[t->side];
+        if (!in_case && k == t->first && WIFEXITED(status) && WEXITSTATUS(status) != 0) {
+            /* nothing ran: the renderer could not start or refused (wrong oracle) */
+            fprintf(stderr, "fixgl-conform: the %s renderer %s failed to start (status %d):\n",
+                    side_name[t->side], s->cfg->renderer[t->side], WEXITSTATUS(status));
+            print_log(t->log);
+            s->fatal = 1;
+        } else {
+            store(res, in_case ? buf + start : (const unsigned char *)"", in_case ? len - start : 0, FC_FAILED);
+            describe_exit(status, t->log, res->why, sizeof res->why);
+            if (++k < t->last)
+                push_task(s, t->side, k, t->last);
+        }
+    }
+    free(buf);
+    remove(t->out);
+    if (clean) {
+        struct stat st;
+        if (stat(t->log, &st) == 0 && st.st_size == 0)
+            remove(t->log);
+    }
+}
+
+static void flush_ready(struct sched *s)
+{
+    while (s->next_ready < s->n && s->items[s->next_ready].side[0].state != FC_PENDING &&
+           s->items[s->next_ready].side[1].state != FC_PENDING) {
+        s->ready(s->ud, &s->items[s->next_ready], s->next_ready);
+        s->next_ready++;
+    }
+}
+
+/* Creates base/tmp and base/logs, emptied of an earlier run's files. */
+static int make_dirs(const char *base)
+{
+    char p[512], f[1024];
+    const char *sub[2] = { "tmp", "logs" };
+    for (int i = 0; i < 2; i++) {
+        DIR *d;
+        struct dirent *de;
+        snprintf(p, sizeof p, "%s/%s", base, sub[i]);
+        if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+            fprintf(stderr, "fixgl-conform: cannot create %s: %s\n", p, strerror(errno));
+            return 0;
+        }
+        if ((d = opendir(p)) == NULL)
+            continue;
+        while ((de = readdir(d)) != NULL) {
+            size_t n = strlen(de->d_name);
+            if (n > 4 && (strcmp(de->d_name + n - 4, ".log") == 0 || strcmp(de->d_name + n - 4, ".rec") == 0)) {
+                snprintf(f, sizeof f, "%s/%s", p, de->d_name);
+                remove(f);
+            }
+        }
+        closedir(d);
+    }
+    return 1;
+}
+
+int fc_run_items(const struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
+                 fc_item_ready ready, void *ud, char *info[2][2])
+{
+    struct sched s;
+    int jobs = cfg->jobs > 0 ? cfg->jobs : 1;
+    size_t chunk = (n + (size_t)jobs * 4 - 1) / ((size_t)jobs * 4);
+
+    chunk = chunk < 1 ? 1 : chunk > 32 ? 32 : chunk;
+    memset(&s, 0, sizeof s);
+    s.cfg = cfg;
+    s.items = items;
+    s.n = n;
+    s.info = info;
+    s.ready = ready;
+    s.ud = ud;
+    s.running = calloc((size_t)jobs, sizeof *s.running);
+    if (!make_dirs(cfg->work_dir))
+        return -1;
+    for (size_t i = 0; i < n; i += chunk)
+        for (int side = 0; side < 2; side++)
+            push_task(&s, side, i, i + chunk < n ? i + chunk : n);
+
+    while (!s.fatal && (s.qhead < s.qtail || s.nrunning > 0)) {
+        int status;
+        pid_t pid;
+        while (!s.fatal && s.nrunning < jobs && s.qhead < s.qtail) {
+            struct task *t = &s.running[s.nrunning];
+            *t = s.queue[s.qhead++];
+            if (!start_task(&s, t))
+                s.fatal = 1;
+            else
+                s.nrunning++;
+        }
+        if (s.nrunning == 0)
+            break;
+        pid = waitpid(-1, &status, 0);
+        if (pid < 0) {
+            if (errno == EINTR)
+                continue;
+            fprintf(stderr, "fixgl-conform: waitpid: %s\n", strerror(errno));
+            s.fatal = 1;
+            break;
+        }
+        for (int i = 0; i < s.nrunning; i++) {
+            if (s.running[i].pid == pid) {
+                struct task t = s.running[i];
+                s.running[i] = s.running[--s.nrunning];
+                finish_task(&s, &t, status);
+                break;
+            }
+        }
+        flush_ready(&s);
+    }
+    for (int i = 0; i < s.nrunning; i++) {     /* only after a fatal error */
+        kill(s.running[i].pid, SIGKILL);
+        waitpid(s.running[i].pid, NULL, 0);
+    }
+    free(s.running);
+    free(s.queue);
+    return s.fatal ? -1 : 0;
+}
+
+char *fc_run_capture(const char *const *argv)
+{
+    int fd[2], status;
+    pid_t pid;
+    char *buf = NULL;
+    size_t n = 0, cap = 0;
+    ssize_t got;
+
+    if (pipe(fd) != 0)
+        return NULL;
+    pid = fork();
+    if (pid == 0) {
+        dup2(fd[1], 1);
+        close(fd[0]);
+        close(fd[1]);
+        execv(argv[0], (char *const *)argv);
+        _exit(127);
+    }
+    close(fd[1]);
+    if (pid < 0) {
+        close(fd[0]);
+        return NULL;
+    }
+    do {
+        if (n + 1 >= cap) {
+            cap = cap ? 2 * cap : 4096;
+            buf = realloc(buf, cap);
+        }
+        got = read(fd[0], buf + n, cap - n - 1);
+        n += got > 0 ? (size_t)got : 0;
+    } while (got > 0 || (got < 0 && errno == EINTR));
+    close(fd[0]);
+    buf[n] = 0;
+    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
+}

@@ -1,0 +1,45 @@
+/* fc_run.h - runs the two renderers over a list of cases: chunks of cases
+ * per renderer process, up to `jobs` processes at once, a crashed or timed
+ * out case is marked failed and the renderer restarts after it. */
+#ifndef FC_RUN_H
+#define FC_RUN_H
+
+#include <stddef.h>
+
+enum { FC_ORACLE = 0, FC_FIXGL = 1 };
+
+enum fc_side_state { FC_PENDING = 0, FC_DONE, FC_FAILED };
+
+struct fc_side_result {
+    unsigned char *data;        /* the case's records, CASE..END (partial if failed) */
+    size_t len;
+    enum fc_side_state state;
+    char why[1024];             /* failure description */
+};
+
+struct fc_item {
+    char *name, *tags, *replay;
+    struct fc_side_result side[2];
+};
+
+struct fc_run_cfg {
+    const char *renderer[2];    /* executable paths */
+    const char *extra_arg[2];   /* optional extra argument (test-only --perturb) */
+    const char *work_dir;       /* tmp/ and logs/ are created below it */
+    int jobs;
+};
+
+/* Called in item order once both sides of an item are finished. */
+typedef void (*fc_item_ready)(void *ud, struct fc_item *item, size_t index);
+
+/* Runs all items.  info[side][0] / [1] receive malloc'ed GL_RENDERER /
+ * GL_VERSION strings.  Returns 0, or -1 if a renderer could not start or
+ * refused to run (the reason is printed). */
+int fc_run_items(const struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
+                 fc_item_ready ready, void *ud, char *info[2][2]);
+
+/* Runs argv[0] with argv and returns its stdout (malloc'ed, NUL-terminated),
+ * or NULL if it could not run or failed. */
+char *fc_run_capture(const char *const *argv);
+
+#endif

@@ -1,0 +1,238 @@
+/* test_compare.c - unit test of the comparison, heat map and report code on
+ * synthetic frames with known differences.  argv[1]: scratch report dir. */
+#include "fc_compare.h"
+#include "fc_image.h"
+#include "fc_png.h"
+#include "fc_record.h"
+#include "fc_report.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define W 8
+#define H 4
+#define FMT_RGBA 0x1908
+#define FMT_BGRA 0x1
+
+static int failures;
+
+#define CHECK(cond) do { if (!(cond)) { fprintf(stderr, "%s:%d: CHECK failed: %s\n", \
+                                                 __FILE__, __LINE__, #cond); failures++; } } while (0)
+
+struct stream { char *buf; size_t len; FILE *f; };
+
+static void open_stream(struct stream *s)
+{
+    s->buf = NULL;
+    s->len = 0;
+    s->f = open_memstream(&s->buf, &s->len);
+}
+
+/* A W x H frame: colour from (x, y, c), depth from (x, y). */
+static void write_frame(FILE *f, int format, int width, const unsigned char *color,
+                        const unsigned int *depth)
+{
+    int32_t hdr[FC_FRAME_HDR_FIELDS] = { width, H, width, format, 4, 1, 1, width, H, 4 };
+    fc_rec_write(f, FC_REC_FRAME, "frame", hdr, sizeof hdr, color, (uint64_t)width * H * 4,
+                 depth, (uint64_t)width * H * 4);
+}
+
+static void base_images(unsigned char *color, unsigned int *depth)
+{
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            unsigned char *p = color + 4 * (y * W + x);
+            p[0] = (unsigned char)(30 * x);
+            p[1] = (unsigned char)(60 * y);
+            p[2] = 100;
+            p[3] = 255;
+            depth[y * W + x] = (unsigned int)(0x10000 * (x + 1) + y);
+        }
+}
+
+static void write_common(FILE *f, uint32_t err, int32_t q, const char *blob, int64_t value)
+{
+    uint32_t qh[2] = { FC_Q_INT, 1 };
+    fc_rec_write(f, FC_REC_CASE, "unit/case", NULL, 0, NULL, 0, NULL, 0);
+    fc_rec_write(f, FC_REC_ERROR, "err", &err, sizeof err, NULL, 0, NULL, 0);
+    fc_rec_write(f, FC_REC_QUERY, "GL_X", qh, sizeof qh, &q, sizeof q, NULL, 0);
+    fc_rec_write(f, FC_REC_BLOB, "blob", blob, strlen(blob), NULL, 0, NULL, 0);
+    fc_rec_write(f, FC_REC_VALUE, "value", &value, sizeof value, NULL, 0, NULL, 0);
+}
+
+static void end_case(FILE *f)
+{
+    int32_t st = FC_END_OK;
+    fc_rec_write(f, FC_REC_END, "unit/case", &st, sizeof st, NULL, 0, NULL, 0);
+    fclose(f);
+}
+
+/* Reads one pixel of a report PNG. */
+static int png_pixel(const char *dir, const char *name, int x, int y, unsigned char out[3])
+{
+    char path[1024];
+    int w, h, ch;
+    unsigned char *px;
+    snprintf(path, sizeof path, "%s/img/%s", dir, name);
+    if (!fc_png_read(path, &w, &h, &ch, &px))
+        return 0;
+    if (x >= w || y >= h || ch != 3) {
+        free(px);
+        return 0;
+    }
+    memcpy(out, px + 3 * (y * w + x), 3);
+    free(px);
+    return 1;
+}
+
+static char *slurp(const char *dir, const char *name)
+{
+    char path[1024];
+    FILE *f;
+    char *buf = calloc(1, 1 << 20);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    f = fopen(path, "r");
+    if (f) {
+        size_t n = fread(buf, 1, (1 << 20) - 1, f);
+        buf[n] = 0;
+        fclose(f);
+    }
+    return buf;
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "report-unit";
+    unsigned char ca[W * H * 4], cb[W * H * 4];
+    unsigned int da[W * H], db[W * H];
+    struct stream a, b;
+    struct fc_case_result res;
+    struct fc_report *rep = fc_report_open(dir);
+    struct fc_report_entry *e;
+    unsigned char px[3], heat[3];
+    char *json, *html;
+
+    CHECK(rep != NULL);
+    if (!rep)
+        return 1;
+    base_images(ca, da);
+    base_images(cb, db);
+    cb[4 * (1 * W + 2) + 1] += 5;               /* pixel (2,1): G +5 */
+    cb[4 * (3 * W + 7) + 3] -= 200;             /* pixel (7,3): A -200 */
+    db[0] += 1; db[5] ^= 0x100; db[31] = 0;     /* three depth values */
+
+    /* 1. known differences */
+    open_stream(&a);
+    open_stream(&b);
+    write_common(a.f, 0x0500, 7, "abcdef", 1);
+    write_common(b.f, 0x0000, 7, "abXdeY", 1);
+    write_frame(a.f, FMT_RGBA, W, ca, da);
+    write_frame(b.f, FMT_RGBA, W, cb, db);
+    end_case(a.f);
+    end_case(b.f);
+    memset(&res, 0, sizeof res);
+    e = fc_report_begin_case(rep, "unit/case", "unit core", NULL);
+    fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, fc_report_frame, e);
+    CHECK(strcmp(fc_report_end_case(e, &res), "differs") == 0);
+    CHECK(res.frames == 1);
+    CHECK(res.pixels == W * H);
+    CHECK(res.mismatched_pixels == 2);
+    CHECK(res.max_channel_diff == 200);
+    CHECK(res.depth_mismatches == 3);
+    CHECK(res.depth_values == W * H);
+    CHECK(res.error_mismatches == 1);
+    CHECK(res.query_mismatches == 0);
+    CHECK(res.blob_mismatches == 1);
+    CHECK(res.value_mismatches == 0);
+    CHECK(res.structure_mismatches == 0);
+    CHECK(res.nnotes == 2);
+    CHECK(strstr(res.notes[0], "oracle 0x0500, fixgl 0x0000") != NULL);
+    CHECK(strstr(res.notes[1], "2 of 6 bytes differ, first at 2") != NULL);
+
+    /* heat map: y_up, so buffer row 1 is display row H-2 */
+    fc_heat_color(5, 255, heat);
+    CHECK(png_pixel(dir, "unit_case-f0-diff.png", 2, H - 2, px) && memcmp(px, heat, 3) == 0);
+    fc_heat_color(200, 255, heat);
+    CHECK(png_pixel(dir, "unit_case-f0-diff.png", 7, 0, px) && memcmp(px, heat, 3) == 0);
+    CHECK(png_pixel(dir, "unit_case-f0-diff.png", 0, H - 1, px) && px[0] == px[1] && px[1] == px[2] &&
+          px[0] == (0 * 3 + 0 * 6 + 100) / 10 / 4);
+    /* oracle and fixgl images, the right way up */
+    CHECK(png_pixel(dir, "unit_case-f0-oracle.png", 3, H - 1, px) && px[0] == 90 && px[1] == 0 && px[2] == 100);
+    CHECK(png_pixel(dir, "unit_case-f0-fixgl.png", 2, H - 2, px) && px[1] == 65);
+    /* depth heat map: value 5 = (5,0) differs, (6,0) does not */
+    CHECK(png_pixel(dir, "unit_case-f0-depthdiff.png", 5, H - 1, px) && px[0] == 255);
+    CHECK(png_pixel(dir, "unit_case-f0-depthdiff.png", 6, H - 1, px) && px[0] == px[1]);
+
+    /* 2. identical records are exact */
+    memset(&res, 0, sizeof res);
+    e = fc_report_begin_case(rep, "unit/same", "unit", "--seed 3 --index 4");
+    fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)a.buf, a.len, &res, fc_report_frame, e);
+    CHECK(strcmp(fc_report_end_case(e, &res), "exact") == 0);
+    CHECK(res.mismatched_pixels == 0 && res.depth_mismatches == 0 && res.nnotes == 0);
+    free(a.buf);
+    free(b.buf);
+
+    /* 3. different layouts and a missing record */
+    open_stream(&a);
+    open_stream(&b);
+    write_common(a.f, 0, 1, "x", 1);
+    write_common(b.f, 0, 2, "x", 0);
+    write_frame(a.f, FMT_RGBA, W, ca, da);
+    write_frame(b.f, FMT_BGRA, W, ca, da);
+    write_frame(a.f, FMT_RGBA, W, ca, da);
+    end_case(a.f);
+    end_case(b.f);
+    memset(&res, 0, sizeof res);
+    e = fc_report_begin_case(rep, "unit/layout", "unit", NULL);
+    fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, fc_report_frame, e);
+    CHECK(strcmp(fc_report_end_case(e, &res), "differs") == 0);
+    CHECK(res.mismatched_pixels == W * H && res.max_channel_diff == 255);
+    CHECK(res.query_mismatches == 1 && res.value_mismatches == 1);
+    CHECK(res.structure_mismatches == 1);
+    free(a.buf);
+    free(b.buf);
+
+    /* 4. a crashed side is an error */
+    memset(&res, 0, sizeof res);
+    res.crashed = 1;
+    e = fc_report_begin_case(rep, "unit/crash", "unit", NULL);
+    fc_compare_case(NULL, 0, NULL, 0, &res, fc_report_frame, e);
+    CHECK(strcmp(fc_report_end_case(e, &res), "error") == 0);
+
+    /* 5. BGRA display conversion */
+    {
+        struct fc_frame_view v;
+        unsigned char rgb[W * H * 3];
+        memset(&v, 0, sizeof v);
+        v.hdr.width = v.hdr.row_length = W;
+        v.hdr.height = H;
+        v.hdr.format = FMT_BGRA;
+        v.hdr.bpp = 4;
+        v.hdr.y_up = 0;
+        v.color = ca;
+        fc_image_color(&v, rgb);
+        CHECK(rgb[3 * 3 + 0] == 100 && rgb[3 * 3 + 2] == 90);  /* (3,0): B<->R swapped */
+    }
+
+    fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", "fixgl-v");
+    CHECK(fc_report_finish(rep) == 3);
+    json = slurp(dir, "summary.json");
+    html = slurp(dir, "index.html");
+    CHECK(strstr(json, "\"oracle\": \"oracle-r oracle-v\"") != NULL);
+    CHECK(strstr(json, "{\"name\": \"unit/case\", \"tags\": [\"unit\", \"core\"], \"frames\": 1, \"pixels\": 32, "
+                       "\"mismatched_pixels\": 2, \"max_channel_diff\": 200, \"depth_mismatches\": 3, "
+                       "\"error_mismatches\": 1") != NULL);
+    CHECK(strstr(json, "\"name\": \"unit/same\"") && strstr(json, "\"status\": \"exact\", \"replay\": \"--seed 3 --index 4\""));
+    CHECK(strstr(json, "\"status\": \"error\"") != NULL);
+    CHECK(strstr(html, "img/unit_case-f0-diff.png") != NULL);
+    CHECK(strstr(html, "oracle 0x0500, fixgl 0x0000") != NULL);
+    CHECK(strstr(html, "img/unit_same") == NULL);
+    free(json);
+    free(html);
+    if (failures)
+        fprintf(stderr, "%d check(s) failed\n", failures);
+    else
+        printf("comparison/report unit test passed; report: %s/index.html\n", dir);
+    return failures != 0;
+}

@@ -1,0 +1,151 @@
+/* test_selftest.c - end-to-end self-test of the harness with the oracle
+ * renderer on both sides.
+ *   argv: fixgl-conform, fixgl-render-osmesa, scratch directory
+ * 1. all fixed cases (>= 40 core) and 50 random scenes: every case exact;
+ * 2. --perturb on the "fixgl" side: the chosen cases differ by exactly one
+ *    pixel (channel diff 64) and one depth value per frame, with heat maps;
+ * 3. --crash=NAME: that case is an error and the renderer restarts for the
+ *    cases after it. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static int failures;
+
+#define CHECK(cond) do { if (!(cond)) { fprintf(stderr, "%s:%d: CHECK failed: %s\n", \
+                                                 __FILE__, __LINE__, #cond); failures++; } } while (0)
+
+static int run(char *const *argv)
+{
+    int status;
+    pid_t pid = fork();
+    if (pid == 0) {
+        execv(argv[0], argv);
+        _exit(127);
+    }
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status))
+        return -1;
+    return WEXITSTATUS(status);
+}
+
+static char *slurp(const char *dir, const char *name)
+{
+    char path[1024];
+    FILE *f;
+    char *buf = calloc(1, 4 << 20);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    f = fopen(path, "r");
+    if (f) {
+        size_t n = fread(buf, 1, (4 << 20) - 1, f);
+        buf[n] = 0;
+        fclose(f);
+    }
+    return buf;
+}
+
+static int count(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle))
+        n++;
+    return n;
+}
+
+/* The JSON object of one case (up to its closing brace). */
+static char *case_json(const char *json, const char *name, char *out, size_t size)
+{
+    char key[256];
+    const char *p, *end;
+    snprintf(key, sizeof key, "{\"name\": \"%s\"", name);
+    p = strstr(json, key);
+    out[0] = 0;
+    if (!p)
+        return out;
+    end = strchr(p, '}');
+    snprintf(out, size, "%.*s", (int)(end ? end - p + 1 : 0), p);
+    return out;
+}
+
+static int file_nonempty(const char *dir, const char *name)
+{
+    char path[1024];
+    FILE *f;
+    long n = 0;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if ((f = fopen(path, "rb")) != NULL) {
+        fseek(f, 0, SEEK_END);
+        n = ftell(f);
+        fclose(f);
+    }
+    return n > 0;
+}
+
+int main(int argc, char **argv)
+{
+    char dir[3][1024], obj[2048], *json;
+    if (argc != 4) {
+        fprintf(stderr, "usage: %s fixgl-conform fixgl-render-osmesa scratch-dir\n", argv[0]);
+        return 2;
+    }
+    for (int i = 0; i < 3; i++)
+        snprintf(dir[i], sizeof dir[i], "%s/%s", argv[3], i == 0 ? "exact" : i == 1 ? "perturb" : "crash");
+
+    {   /* 1. oracle against itself */
+        char *a[] = { argv[1], "--random", "50", "--seed", "7", "--jobs", "2", "--oracle-renderer", argv[2],
+                      "--fixgl-renderer", argv[2], "--report", dir[0], NULL };
+        int cases, rc = run(a);
+        CHECK(rc == 0);
+        json = slurp(dir[0], "summary.json");
+        cases = count(json, "{\"name\": ");
+        CHECK(cases >= 90);
+        CHECK(count(json, "\"tags\": [\"core\"") >= 40);
+        CHECK(count(json, "\"tags\": [\"random\"]") == 50);
+        CHECK(count(json, "\"status\": \"exact\"") == cases);
+        CHECK(strstr(json, "\"oracle\": \"llvmpipe") != NULL);
+        free(json);
+    }
+    {   /* 2. perturbed: one pixel and one depth value per frame */
+        char *a[] = { argv[1], "--no-random", "--case", "core/fill_rule_square", "--case", "core/depth_range",
+                      "--case", "core/query_defaults", "--oracle-renderer", argv[2], "--fixgl-renderer", argv[2],
+                      "--fixgl-arg", "--perturb", "--report", dir[1], NULL };
+        CHECK(run(a) == 1);
+        json = slurp(dir[1], "summary.json");
+        CHECK(count(json, "{\"name\": ") == 3);
+        case_json(json, "core/fill_rule_square", obj, sizeof obj);
+        CHECK(strstr(obj, "\"frames\": 1, \"pixels\": 256, \"mismatched_pixels\": 1, \"max_channel_diff\": 64, "
+                          "\"depth_mismatches\": 1, \"error_mismatches\": 0") != NULL);
+        CHECK(strstr(obj, "\"status\": \"differs\"") != NULL);
+        case_json(json, "core/depth_range", obj, sizeof obj);
+        CHECK(strstr(obj, "\"frames\": 5, \"pixels\": 5120, \"mismatched_pixels\": 5, \"max_channel_diff\": 64, "
+                          "\"depth_mismatches\": 5") != NULL);
+        case_json(json, "core/query_defaults", obj, sizeof obj);
+        CHECK(strstr(obj, "\"status\": \"exact\"") != NULL);
+        CHECK(file_nonempty(dir[1], "img/core_fill_rule_square-f0-diff.png"));
+        CHECK(file_nonempty(dir[1], "img/core_fill_rule_square-f0-oracle.png"));
+        CHECK(file_nonempty(dir[1], "img/core_depth_range-f4-depthdiff.png"));
+        CHECK(!file_nonempty(dir[1], "img/core_query_defaults-f0-diff.png"));
+        free(json);
+    }
+    {   /* 3. a crash in one case; the cases after it still run */
+        char *a[] = { argv[1], "--no-random", "--case", "core/fill_*", "--jobs", "1",
+                      "--oracle-renderer", argv[2], "--fixgl-renderer", argv[2],
+                      "--fixgl-arg", "--crash=core/fill_shared_diagonal", "--report", dir[2], NULL };
+        CHECK(run(a) == 1);
+        json = slurp(dir[2], "summary.json");
+        case_json(json, "core/fill_shared_diagonal", obj, sizeof obj);
+        CHECK(strstr(obj, "\"status\": \"error\"") != NULL);
+        CHECK(count(json, "\"status\": \"error\"") == 1);
+        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{\"name\": ") - 1);
+        case_json(json, "core/fill_fan_pixel_centres", obj, sizeof obj);
+        CHECK(strstr(obj, "\"status\": \"exact\"") != NULL);
+        free(json);
+    }
+    if (failures) {
+        fprintf(stderr, "%d check(s) failed; reports under %s\n", failures, argv[3]);
+        return 1;
+    }
+    printf("harness self-test passed; reports: %s/{exact,perturb,crash}/index.html\n", argv[3]);
+    return 0;
+}
