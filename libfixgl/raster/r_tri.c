@@ -237,12 +237,15 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
 
    const bool color_flat = (rs->flat_mask & 1u) != 0;
    for (int64_t py = by0; py <= by1; py++) {
-      int64_t c0 = e[0].c - e[0].dcdx * bx0 + e[0].dcdy * py;
-      int64_t c1 = e[1].c - e[1].dcdx * bx0 + e[1].dcdy * py;
-      int64_t c2 = e[2].c - e[2].dcdx * bx0 + e[2].dcdy * py;
+      int64_t c0 = (int64_t)((uint64_t)e[0].c - (uint64_t)e[0].dcdx * (uint64_t)bx0 + (uint64_t)e[0].dcdy * (uint64_t)py);
+      int64_t c1 = (int64_t)((uint64_t)e[1].c - (uint64_t)e[1].dcdx * (uint64_t)bx0 + (uint64_t)e[1].dcdy * (uint64_t)py);
+      int64_t c2 = (int64_t)((uint64_t)e[2].c - (uint64_t)e[2].dcdx * (uint64_t)bx0 + (uint64_t)e[2].dcdy * (uint64_t)py);
       const float fy = (float)py;
+      /* wrapping steps: garbage (NaN-derived) edges must not be UB */
       for (int64_t px = bx0; px <= bx1; px++,
-           c0 -= e[0].dcdx, c1 -= e[1].dcdx, c2 -= e[2].dcdx) {
+           c0 = (int64_t)((uint64_t)c0 - (uint64_t)e[0].dcdx),
+           c1 = (int64_t)((uint64_t)c1 - (uint64_t)e[1].dcdx),
+           c2 = (int64_t)((uint64_t)c2 - (uint64_t)e[2].dcdx)) {
          if (c0 <= 0 || c1 <= 0 || c2 <= 0)
             continue;
          const float fx = (float)px;
