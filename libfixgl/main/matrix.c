@@ -139,14 +139,20 @@ void GLAPIENTRY glLoadMatrixf(const GLfloat *m)
    fgl_matrix_loadf(ctx->CurrentStack->Top, m);
 }
 
-void GLAPIENTRY glLoadMatrixd(const GLdouble *m)
+/* The double variants convert to float first, as Mesa does. */
+static const GLfloat *to_floats(const GLdouble *m, GLfloat f[16])
 {
    if (!m)
-      return;
-   GLfloat f[16];
+      return NULL;
    for (int i = 0; i < 16; i++)
       f[i] = (GLfloat)m[i];
-   glLoadMatrixf(f);
+   return f;
+}
+
+void GLAPIENTRY glLoadMatrixd(const GLdouble *m)
+{
+   GLfloat f[16];
+   glLoadMatrixf(to_floats(m, f));
 }
 
 void GLAPIENTRY glMultMatrixf(const GLfloat *m)
@@ -167,12 +173,8 @@ void GLAPIENTRY glMultMatrixf(const GLfloat *m)
 
 void GLAPIENTRY glMultMatrixd(const GLdouble *m)
 {
-   if (!m)
-      return;
    GLfloat f[16];
-   for (int i = 0; i < 16; i++)
-      f[i] = (GLfloat)m[i];
-   glMultMatrixf(f);
+   glMultMatrixf(to_floats(m, f));
 }
 
 void GLAPIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top,

@@ -98,8 +98,11 @@ static void vtx_flush(struct fgl_context *ctx, struct fgl_vbo_vertex *copied,
                       unsigned *ncopied)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
+   struct fgl_vbo_vertex scratch[3];
    unsigned nc = 0;
 
+   if (!copied)
+      copied = scratch;
    if (vbo->prim_count && vbo->vert_count) {
       if (fgl_inside_begin_end(ctx))
          nc = copy_vertices(vbo, copied);
