@@ -119,6 +119,10 @@ struct fgl_context {
    struct fgl_matrix_stack ProgramStack[FGL_MAX_PROGRAM_MATRICES];
    struct fgl_matrix_stack *CurrentStack;
 
+   /* enable flags of GL 1.x features still to come (main/enable.c) */
+#define FGL_PENDING_CAPS 59
+   bool PendingCaps[FGL_PENDING_CAPS];
+
    /* ---- immediate mode ---- */
    GLenum BeginMode;          /* FGL_OUTSIDE_BEGIN_END when not inside */
    struct fgl_vbo Vbo;

@@ -56,10 +56,6 @@ static inline void color4(float r, float g, float b, float a, unsigned n)
    if (!ctx)
       return;
    fgl_vbo_attr(ctx, FGL_ATTR_COLOR0, n, r, g, b, a);
-   ctx->Current.Color[0] = r;
-   ctx->Current.Color[1] = g;
-   ctx->Current.Color[2] = b;
-   ctx->Current.Color[3] = a;
 }
 
 static inline void vertex4(float x, float y, float z, float w, unsigned n)
@@ -79,24 +75,27 @@ static inline void vertex4(float x, float y, float z, float w, unsigned n)
 #define UINT_TO_FLOAT(u)   ((GLfloat)((u) * (1.0F / 4294967295.0)))
 #define IDENT(x)           ((GLfloat)(x))
 
-#define COLOR_FUNCS(suffix, type, CONV)                                         \
+/* Only glColor3f/3fv are 3-component calls in Mesa's vbo; every other
+ * variant goes through glColor4f with alpha 1 (api_loopback.c), which
+ * matters for how the attribute's size is tracked (t_vbo.c). */
+#define COLOR_FUNCS(suffix, type, CONV, N3)                                     \
    void GLAPIENTRY glColor3##suffix(type r, type g, type b)                     \
-   { color4(CONV(r), CONV(g), CONV(b), 1.0f, 3); }                              \
+   { color4(CONV(r), CONV(g), CONV(b), 1.0f, N3); }                             \
    void GLAPIENTRY glColor4##suffix(type r, type g, type b, type a)             \
    { color4(CONV(r), CONV(g), CONV(b), CONV(a), 4); }                           \
    void GLAPIENTRY glColor3##suffix##v(const type *v)                           \
-   { if (v) color4(CONV(v[0]), CONV(v[1]), CONV(v[2]), 1.0f, 3); }              \
+   { if (v) color4(CONV(v[0]), CONV(v[1]), CONV(v[2]), 1.0f, N3); }             \
    void GLAPIENTRY glColor4##suffix##v(const type *v)                           \
    { if (v) color4(CONV(v[0]), CONV(v[1]), CONV(v[2]), CONV(v[3]), 4); }
 
-COLOR_FUNCS(b, GLbyte, BYTE_TO_FLOAT)
-COLOR_FUNCS(ub, GLubyte, UBYTE_TO_FLOAT)
-COLOR_FUNCS(s, GLshort, SHORT_TO_FLOAT)
-COLOR_FUNCS(us, GLushort, USHORT_TO_FLOAT)
-COLOR_FUNCS(i, GLint, INT_TO_FLOAT)
-COLOR_FUNCS(ui, GLuint, UINT_TO_FLOAT)
-COLOR_FUNCS(f, GLfloat, IDENT)
-COLOR_FUNCS(d, GLdouble, IDENT)
+COLOR_FUNCS(b, GLbyte, BYTE_TO_FLOAT, 4)
+COLOR_FUNCS(ub, GLubyte, UBYTE_TO_FLOAT, 4)
+COLOR_FUNCS(s, GLshort, SHORT_TO_FLOAT, 4)
+COLOR_FUNCS(us, GLushort, USHORT_TO_FLOAT, 4)
+COLOR_FUNCS(i, GLint, INT_TO_FLOAT, 4)
+COLOR_FUNCS(ui, GLuint, UINT_TO_FLOAT, 4)
+COLOR_FUNCS(f, GLfloat, IDENT, 3)
+COLOR_FUNCS(d, GLdouble, IDENT, 4)
 
 #define VERTEX_FUNCS(suffix, type)                                              \
    void GLAPIENTRY glVertex2##suffix(type x, type y)                            \

@@ -1,16 +1,41 @@
 /*
  * glEnable, glDisable, glIsEnabled.  Each capability belongs to the group
- * that owns its state; this file only dispatches.  Capabilities of features
- * not implemented yet raise GL_INVALID_ENUM rather than being silently
- * accepted.
+ * that owns its state; this file only dispatches.
  */
 #include <stddef.h>
 
 #include "main/groups.h"
 
+/* GL 1.x capabilities whose feature has not landed yet: their flags are
+ * stored and reported (so programs see the oracle's errors and queries)
+ * but do not affect rendering yet; README's status table lists them. */
+static const GLenum pending_caps[FGL_PENDING_CAPS] = {
+   GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
+   GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
+   GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_FOG,
+   GL_INDEX_LOGIC_OP, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4,
+   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LIGHTING, GL_LINE_SMOOTH,
+   GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
+   GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
+   GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
+   GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
+   GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
+   GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
+   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST,
+   GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_Q,
+   GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T,
+};
+
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
 static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
+   for (int i = 0; i < FGL_PENDING_CAPS; i++) {
+      if (pending_caps[i] == cap) {
+         *dirty = 0;
+         return &ctx->PendingCaps[i];
+      }
+   }
    switch (cap) {
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;
@@ -64,4 +89,14 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
       return GL_FALSE;
    }
    return *flag ? GL_TRUE : GL_FALSE;
+}
+
+bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
+{
+   unsigned dirty;
+   const bool *flag = cap_flag(ctx, pname, &dirty);
+   if (!flag)
+      return false;
+   *value = *flag ? 1.0 : 0.0;
+   return true;
 }

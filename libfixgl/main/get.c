@@ -6,7 +6,8 @@
  * getters convert like Mesa's get.c:
  *   float -> boolean   f != 0 (NaN is true)
  *   float -> integer   IROUND, or FLOAT_TO_INT for normalized values
- *                      (colours, depth values): (GLint)(2147483647.0 * f)
+ *                      (colours, depth values, and matrices, as Mesa does):
+ *                      (GLint)(2147483647.0 * f)
  * Out-of-range float->int conversions give INT_MIN, as on x86 where the
  * oracle runs.
  */
@@ -77,16 +78,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    switch (pname) {
    /* GL_CURRENT_BIT */
    case GL_CURRENT_COLOR:
-      set_floats(val, V_FLOATN, ctx->Current.Color, 4);
+      fgl_vbo_current(ctx, FGL_ATTR_COLOR0, f);
+      set_floats(val, V_FLOATN, f, 4);
       return true;
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
          f[i] = clamp01_keepnan(ctx->Color.ClearColor[i]);
       set_floats(val, V_FLOATN, f, 4);
-      return true;
-   case GL_DITHER:
-      set_ints(val, V_BOOL, 1, ctx->Color.Dither, 0, 0, 0);
       return true;
    /* GL_DEPTH_BUFFER_BIT */
    case GL_DEPTH_CLEAR_VALUE:
@@ -96,9 +95,6 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_DEPTH_FUNC:
       set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);
-      return true;
-   case GL_DEPTH_TEST:
-      set_ints(val, V_BOOL, 1, ctx->Depth.Test, 0, 0, 0);
       return true;
    case GL_DEPTH_WRITEMASK:
       set_ints(val, V_BOOL, 1, ctx->Depth.Mask, 0, 0, 0);
@@ -112,13 +108,13 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->Transform.MatrixMode, 0, 0, 0);
       return true;
    case GL_MODELVIEW_MATRIX:
-      set_floats(val, V_FLOAT, ctx->ModelviewStack.Top->m, 16);
+      set_floats(val, V_FLOATN, ctx->ModelviewStack.Top->m, 16);
       return true;
    case GL_PROJECTION_MATRIX:
-      set_floats(val, V_FLOAT, ctx->ProjectionStack.Top->m, 16);
+      set_floats(val, V_FLOATN, ctx->ProjectionStack.Top->m, 16);
       return true;
    case GL_TEXTURE_MATRIX:
-      set_floats(val, V_FLOAT, ctx->TextureStack[0].Top->m, 16);
+      set_floats(val, V_FLOATN, ctx->TextureStack[0].Top->m, 16);
       return true;
    case GL_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->ModelviewStack.Depth + 1, 0, 0, 0);
@@ -187,6 +183,12 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, GL_FRONT, 0, 0, 0);
       return true;
    default:
+      /* every capability is also a boolean state value */
+      if (fgl_is_cap(ctx, pname, &val->v[0])) {
+         val->type = V_BOOL;
+         val->n = 1;
+         return true;
+      }
       return false;
    }
 }

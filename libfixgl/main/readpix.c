@@ -5,6 +5,7 @@
  * GL_PACK_ALIGNMENT of 4; pixels outside the framebuffer are not written.
  * Conversions follow Mesa's unpack functions (format_utils.h, format_unpack.c).
  */
+#include <math.h>
 #include <string.h>
 
 #include "main/groups.h"
@@ -12,6 +13,28 @@
 static size_t align4(size_t n)
 {
    return (n + 3) & ~(size_t)3;
+}
+
+/* The pixel types GL knows; another type is an invalid enum, while a
+ * known type with a format it does not combine with (or one fixgl does
+ * not read yet) is an invalid operation, as in the oracle. */
+static bool known_type(GLenum type)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
+   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
+   case GL_BITMAP: case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+   case GL_UNSIGNED_INT_24_8: case GL_UNSIGNED_INT_10F_11F_11F_REV:
+   case GL_UNSIGNED_INT_5_9_9_9_REV: case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+      return true;
+   default:
+      return false;
+   }
 }
 
 static bool color_type_ok(GLenum type)
@@ -48,8 +71,9 @@ static void read_depth_pixel(const struct fgl_framebuffer *fb, size_t idx, GLenu
       memcpy(dst, &u, 4);
       break;
    }
-   default: { /* GL_UNSIGNED_SHORT */
-      const uint16_t u = z16 ? (uint16_t)z : (uint16_t)(z >> 8);
+   default: { /* GL_UNSIGNED_SHORT: through float, rounded (pack.c) */
+      const float f = (float)((double)z * (1.0 / (double)0xffffff));
+      const uint16_t u = z16 ? (uint16_t)z : (uint16_t)lrintf(f * 65535.0f);
       memcpy(dst, &u, 2);
       break;
    }
@@ -70,11 +94,15 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    }
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    size_t comps, bytes;
+   if (!known_type(type)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
    switch (format) {
    case GL_RGBA:
    case GL_RGB:
       if (!color_type_ok(type)) {
-         fgl_error(ctx, GL_INVALID_ENUM);
+         fgl_error(ctx, GL_INVALID_OPERATION);
          return;
       }
       comps = format == GL_RGBA ? 4 : 3;
@@ -82,7 +110,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       break;
    case GL_DEPTH_COMPONENT:
       if (!depth_type_ok(type)) {
-         fgl_error(ctx, GL_INVALID_ENUM);
+         fgl_error(ctx, GL_INVALID_OPERATION);
          return;
       }
       if (!fb || fb->DepthBits == 0) {
@@ -93,7 +121,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       bytes = type == GL_UNSIGNED_SHORT ? 2 : 4;
       break;
    default:
-      fgl_error(ctx, GL_INVALID_ENUM);
+      fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
    if (!fb || !pixels)

@@ -366,7 +366,7 @@ OSMesaGetDepthBuffer(OSMesaContext c, GLint *width, GLint *height,
    void *buf = NULL;
    GLboolean ok = GL_FALSE;
 
-   if (c && c->has_buffer && c->zs_format != R_ZS_NONE) {
+   if (c && c->has_buffer && c->zs_format != R_ZS_NONE && c->zs_format != R_ZS_S8) {
       w = c->fb.Width;
       h = c->fb.Height;
       bpv = c->zs_bpv;
@@ -439,6 +439,12 @@ static const struct proc_entry procs[] = {
    { "OSMesaPostprocess", PROC(OSMesaPostprocess) },
 };
 
+/* Mesa's glapi hands out a no-op dispatch stub for any gl* name it does
+ * not know; so does fixgl, so programs probing for functions behave alike. */
+static void noop_stub(void)
+{
+}
+
 GLAPI OSMESAproc GLAPIENTRY
 OSMesaGetProcAddress(const char *funcName)
 {
@@ -447,5 +453,7 @@ OSMesaGetProcAddress(const char *funcName)
    for (size_t i = 0; i < sizeof(procs) / sizeof(procs[0]); i++)
       if (strcmp(procs[i].name, funcName) == 0)
          return procs[i].proc;
+   if (strncmp(funcName, "gl", 2) == 0)
+      return PROC(noop_stub);
    return NULL;
 }

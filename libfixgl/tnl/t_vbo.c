@@ -194,9 +194,25 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
 
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
+   vbo->active_size[attr] = size;
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
    put_back(vbo, copied, n);
+}
+
+/* COPY_CLEAN: the attribute's stored components, then defaults. */
+static void clean_value(const struct fgl_vbo *vbo, enum fgl_vbo_attr attr, float out[4])
+{
+   for (unsigned i = 0; i < 4; i++)
+      out[i] = i < vbo->attr_size[attr] ? vbo->current[attr][i] : attr_default[i];
+}
+
+void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, float out[4])
+{
+   if (ctx->Vbo.attr_size[attr])
+      clean_value(&ctx->Vbo, attr, out);
+   else
+      memcpy(out, ctx->Current.Color, 4 * sizeof(float));
 }
 
 void fgl_vbo_flush_vertices(struct fgl_context *ctx)
@@ -205,7 +221,11 @@ void fgl_vbo_flush_vertices(struct fgl_context *ctx)
    if (vbo->vert_count)
       vtx_flush(ctx, NULL, NULL);
    if (vbo->vertex_size) {
+      /* vbo_exec_copy_to_current, then vbo_reset_all_attr */
+      if (vbo->attr_size[FGL_ATTR_COLOR0])
+         clean_value(vbo, FGL_ATTR_COLOR0, ctx->Current.Color);
       memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+      memset(vbo->active_size, 0, sizeof(vbo->active_size));
       vbo->vertex_size = 0;
    }
 }
@@ -215,23 +235,39 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
    const float v[4] = { x, y, z, w };
+   float *cur = vbo->current[attr];
+
+   if (attr != FGL_ATTR_POS) {
+      /* vbo_exec_fixup_vertex: grow the format, or fill defaults when the
+       * call has fewer components than the last one; active_size only
+       * changes on those two paths (so glColor4f then glColor3fv after a
+       * shrink keeps the old alpha, as in the oracle). */
+      if (vbo->active_size[attr] != n) {
+         if (n > vbo->attr_size[attr]) {
+            upgrade_vertex(ctx, attr, n);
+         } else if (n < vbo->active_size[attr]) {
+            for (unsigned i = n - 1; i < vbo->attr_size[attr]; i++)
+               cur[i] = attr_default[i];
+            vbo->active_size[attr] = n;
+         }
+      }
+      for (unsigned i = 0; i < n; i++)
+         cur[i] = v[i];
+      return;
+   }
 
    if (vbo->attr_size[attr] < n)
       upgrade_vertex(ctx, attr, n);
-
-   float *cur = vbo->current[attr];
    for (unsigned i = 0; i < 4; i++)
-      cur[i] = i < n ? v[i] : attr_default[i];
-
-   if (attr != FGL_ATTR_POS)
-      return;
+      cur[i] = v[i];
 
    /* glVertex: store a vertex (outside glBegin/glEnd it takes buffer room
     * but belongs to no primitive, as in Mesa) */
    if (!ensure_room(vbo, vbo->vert_count + 1))
       return;
    struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
-   memcpy(dst->attr, vbo->current, sizeof(dst->attr));
+   memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
+   fgl_vbo_current(ctx, FGL_ATTR_COLOR0, dst->attr[FGL_ATTR_COLOR0]);
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
 }

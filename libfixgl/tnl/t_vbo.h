@@ -48,6 +48,7 @@ struct fgl_vbo {
    struct fgl_vbo_prim prims[FGL_VBO_MAX_PRIM];
    unsigned prim_count;
    unsigned attr_size[FGL_ATTR_COUNT];  /* components in the vertex format, 0 = absent */
+   unsigned active_size[FGL_ATTR_COUNT];/* components of the last call, as Mesa tracks it */
    unsigned vertex_size;                /* sum of attr_size, in floats */
    unsigned buffer_used;                /* bytes of the emulated buffer consumed */
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute */
@@ -64,5 +65,9 @@ void fgl_vbo_end(struct fgl_context *ctx);
 
 /* FLUSH_VERTICES: draw what is stored and reset the vertex format. */
 void fgl_vbo_flush_vertices(struct fgl_context *ctx);
+
+/* The current value of a non-position attribute as glGet reports it
+ * (FLUSH_CURRENT: the stored components, then defaults). */
+void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, float out[4]);
 
 #endif
