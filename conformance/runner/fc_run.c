@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -168,7 +169,14 @@ static void finish_task(struct sched *s, struct task *t, int status)
             start = here;
             in_case = 1;
         } else if (r.kind == FC_REC_END && in_case) {
-            store(&s->items[k++].side[t->side], buf + start, pos - start, FC_DONE);
+            struct fc_side_result *res = &s->items[k++].side[t->side];
+            int32_t st = FC_END_OK;
+            memcpy(&st, r.payload, r.payload_len >= sizeof st ? sizeof st : 0);
+            store(res, buf + start, pos - start, st == FC_END_OK ? FC_DONE : FC_FAILED);
+            if (st != FC_END_OK)        /* the harness rejected the case (e.g. frame count) */
+                snprintf(res->why, sizeof res->why, "harness: %.*s",
+                         (int)(r.payload_len > sizeof st ? r.payload_len - sizeof st : 0),
+                         (const char *)r.payload + sizeof st);
             in_case = 0;
         }
     }
