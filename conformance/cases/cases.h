@@ -6,7 +6,7 @@
 
 /* Table entry with the default buffer row length. */
 #define FC_CASE(name, w, h, fmt, depth, stencil, frames, tags, fn) \
-    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0 }
+    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0 }
 /* RGBA, depth 24, no stencil. */
 #define FC_CASE_RGBA(name, w, h, frames, tags, fn) \
     FC_CASE(name, w, h, OSMESA_RGBA, 24, 0, frames, tags, fn)

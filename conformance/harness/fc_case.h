@@ -29,7 +29,18 @@ typedef struct fc_case {
     const char *tags;       /* space separated, e.g. "core depth" */
     fc_case_fn fn;
     int row_length;         /* colour buffer row length in pixels; 0 = width */
+    int raw_oracle_rgb;     /* OSMESA_RGB only: 1 = let the oracle render into
+                             * its own OSMESA_RGB buffer (see below) */
 } fc_case;
+
+/* The oracle's OSMESA_RGB colour buffers are corrupt: llvmpipe stores every
+ * shaded fragment of a 3-byte-per-pixel render target with misplaced 4-byte
+ * writes (and a clear can zero whole pixels), so neighbouring pixels get
+ * bytes of each other.  Unless a case sets raw_oracle_rgb, the oracle side
+ * renders an OSMESA_RGB case into an OSMESA_RGBA context and buffer and
+ * converts that buffer to the case's RGB layout at every capture, which is
+ * what a correct OSMESA_RGB buffer holds.  Cases that query alpha bits or
+ * read alpha back must set raw_oracle_rgb. */
 
 /* Captures a frame: glFinish(), then the whole user colour buffer exactly as
  * laid out and the raw OSMesaGetDepthBuffer() contents. */

@@ -9,6 +9,7 @@
  * glColor/glVertex entry-point variant. */
 #include "fc_random.h"
 #include "fc_rng.h"
+#include "fc_trace.h"
 
 #include <inttypes.h>
 #include <math.h>

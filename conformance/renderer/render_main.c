@@ -9,6 +9,7 @@
  * GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
  * (SIGALRM ends the process).  Test-only switches for the harness
  * self-test: --perturb alters every captured frame (see fc_harness.h),
+ * FC_TRACE=FILE prints the GL calls of random scenes to FILE (fc_trace.h).
  * --crash=NAME dies with SIGSEGV right after starting case NAME.
  * The oracle refuses to run unless GL_RENDERER contains "llvmpipe", and it
  * runs llvmpipe with one rasterizer thread (LP_NUM_THREADS=1): with several
@@ -24,6 +25,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+extern FILE *fc_trace_out;   /* fc_trace.c: random scene call trace */
 
 #define FC_CASE_TIMEOUT 60
 
@@ -110,6 +113,8 @@ int main(int argc, char **argv)
     }
     if (!write_info(out))
         return 3;
+    if (getenv("FC_TRACE") && !(fc_trace_out = fopen(getenv("FC_TRACE"), "w")))
+        perror(getenv("FC_TRACE"));
     for (int i = first; i < argc; i++) {
         fc_case scratch;
         char namebuf[FC_RANDOM_NAME_MAX];

@@ -133,8 +133,10 @@ static struct edge make_edge(int32_t xi, int32_t yi, int32_t xj, int32_t yj)
    /* bottom-left fill convention (window buffers are y-down) */
    if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
       e.c++;
-   e.dcdx = (int64_t)dcdx * 256;
-   e.dcdy = (int64_t)dcdy * 256;
+   /* scaled in 32 bits as lp_setup_tri.c does (_mm_slli_epi32): only
+    * garbage (NaN-derived, INT32_MIN) positions are large enough to wrap */
+   e.dcdx = (int32_t)((uint32_t)dcdx << 8);
+   e.dcdy = (int32_t)((uint32_t)dcdy << 8);
    return e;
 }
 

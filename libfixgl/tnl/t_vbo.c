@@ -195,6 +195,15 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
    struct fgl_vbo_vertex copied[3];
    const unsigned n = wrap_buffers(ctx, copied);
 
+   /* Replayed vertices get a newly added attribute as its current value cut
+    * to the new size (COPY_SZ_4V), so the missing components read back as
+    * defaults; a grown attribute keeps its clean old value. */
+   if (!vbo->attr_size[attr] && attr != FGL_ATTR_POS) {
+      for (unsigned k = 0; k < n; k++)
+         for (unsigned i = size; i < 4; i++)
+            copied[k].attr[attr][i] = attr_default[i];
+   }
+
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
    vbo->active_size[attr] = size;
@@ -289,8 +298,7 @@ void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
 }
 
 /* vbo_merge_draws: consecutive independent primitives of one mode become
- * one draw; the first one's incomplete tail is dropped from its count
- * while the start stays, exactly as Mesa does. */
+ * one draw, unless the first one has an incomplete tail. */
 static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cur)
 {
    if (prev->mode != cur->mode || prev->start + prev->count != cur->start)
@@ -299,13 +307,16 @@ static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cu
    case GL_POINTS:
       break;
    case GL_LINES:
-      prev->count &= ~1u;
+      if (prev->count % 2)
+         return false;
       break;
    case GL_TRIANGLES:
-      prev->count -= prev->count % 3;
+      if (prev->count % 3)
+         return false;
       break;
    case GL_QUADS:
-      prev->count &= ~3u;
+      if (prev->count % 4)
+         return false;
       break;
    default:
       return false;
