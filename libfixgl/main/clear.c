@@ -61,7 +61,8 @@ void GLAPIENTRY glClear(GLbitfield mask)
          rgba[i] = r_float_to_unorm8(ctx->Color.ClearColor[i]);
       r_clear_color(rs, rgba);
    }
-   const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && fb->DepthBits > 0;
+   /* the depth write mask applies to clears too */
+   const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && fb->DepthBits > 0 && ctx->Depth.Mask;
    const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && fb->StencilBits > 0;
    if (depth || stencil)
       r_clear_depth_stencil(rs, depth, pack_z(ctx->Depth.Clear, fb->DepthBits), stencil, 0);
