@@ -142,7 +142,9 @@ static void legacy_create(fc_h *h)
 }
 
 /* Re-binding the current context to a smaller size: viewport and drawing. */
-static void rebind_size(fc_h *h)
+/* Re-binding the context to a smaller size: what the program sees through
+ * the colour buffer, glReadPixels of colour and depth, and the viewport. */
+static void rebind_draw(fc_h *h)
 {
     format_scene(32, 32);
     fc_capture(h);
@@ -150,6 +152,28 @@ static void rebind_size(fc_h *h)
     fc_get_integer(h, "GL_VIEWPORT after rebind", GL_VIEWPORT, 4);
     glColor3f(1, 1, 1);
     fcu_rect(-5, -5, 40, 4, -0.9f);
+}
+
+static void rebind_size(fc_h *h)
+{
+    GLuint depth[16 * 8];
+    GLubyte color[16 * 8 * 4];
+    rebind_draw(h);
+    fc_blob(h, "colour buffer 16x8", fc_buffer(h), sizeof color);
+    glReadPixels(0, 0, 16, 8, GL_RGBA, GL_UNSIGNED_BYTE, color);
+    fc_blob(h, "glReadPixels colour", color, sizeof color);
+    glReadPixels(0, 0, 16, 8, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth);
+    fc_blob(h, "glReadPixels depth", depth, sizeof depth);
+    fc_error(h, "after reads");
+}
+
+/* The same through OSMesaGetDepthBuffer: the oracle keeps the row stride of
+ * the size its depth snapshot was first made for (32 values), so the
+ * 16x8 image it returns interleaves real rows with stale ones; fixgl
+ * returns the current 16x8 buffer.  A known difference. */
+static void rebind_size_snapshot(fc_h *h)
+{
+    rebind_draw(h);
     fc_capture_buffer(h, fc_buffer(h), 16, 8, 16, OSMESA_RGBA, 1);
 }
 
@@ -169,6 +193,8 @@ const fc_case fc_cases_format[] = {
     FC_CASE_RGBA("core/osmesa_queries", 16, 16, 1, "core format query", osmesa_queries),
     FC_CASE_RGBA("core/osmesa_second_context", 32, 32, 2, "core format", second_context),
     FC_CASE_RGBA("core/osmesa_create_context_legacy", 16, 16, 1, "core format", legacy_create),
-    FC_CASE_RGBA("core/osmesa_rebind_smaller", 32, 32, 2, "core format viewport", rebind_size),
+    FC_CASE_RGBA("core/osmesa_rebind_smaller", 32, 32, 1, "core format viewport", rebind_size),
+    FC_CASE_RGBA("core/osmesa_rebind_smaller_depth_snapshot", 32, 32, 2, "core format viewport",
+                 rebind_size_snapshot),
     { 0 }
 };
