@@ -56,7 +56,7 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
       rs->depth_write = ctx->Depth.Mask;
       rs->num_attribs = 1;
-      rs->flat_mask = ctx->Light.ShadeModel == GL_FLAT ? 1u : 0u;
+      /* flat_mask is set per batch by t_render_batch */
    }
 
    ctx->NewState = 0;

@@ -58,12 +58,13 @@ uint8_t r_float_to_unorm8(float c)
    return (uint8_t)lrintf(c * 255.0f);
 }
 
-/* Depth is clamped to [0,1] (NaN becomes 0) before the conversion. */
+/* The fragment shader restricts depth to [0,1] with lp_build_clamp,
+ * max(min(z, 1), 0) on x86 minps/maxps, which return their second operand
+ * when one is NaN: NaN becomes 1. */
 static inline float clamp_depth(float z)
 {
-   if (!(z > 0.0f))
-      return 0.0f;
-   return z < 1.0f ? z : 1.0f;
+   const float m = z < 1.0f ? z : 1.0f;     /* minps(z, 1): NaN -> 1 */
+   return m > 0.0f ? m : 0.0f;
 }
 
 uint32_t r_depth_to_z24(float z)
@@ -90,6 +91,100 @@ static inline bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
    default:         return true;
    }
 }
+
+/* ---- coverage: llvmpipe's planes, bins and blocks ----------------------
+ *
+ * Coverage is decided exactly as llvmpipe decides it (lp_setup_tri.c,
+ * lp_rast_tri.c, lp_rast_tri_tmp.h with RASTER_64 and the SSE mask
+ * builders): edge planes with a 64-bit constant and 32-bit steps, extra
+ * planes where the bounding box leaves the draw region, 64x64 tiles tested
+ * at the corners (trivial reject / accept), then 16x16 and 4x4 blocks, then
+ * pixels.  For every triangle with finite window coordinates this equals
+ * testing each pixel centre against the three exact edge functions; it is
+ * modelled step by step because NaN and infinite positions (w = 0) snap to
+ * INT32_MIN and the 32-bit parts wrap, and then which pixels the oracle
+ * draws depends on every one of those steps.  All 32-bit arithmetic below
+ * wraps, as the SSE code does. */
+
+#define TILE_SIZE 64
+#define MAX_PLANES 7
+
+struct rplane {
+   int64_t c;
+   int32_t dcdx, dcdy;     /* scaled by 256 */
+   uint32_t eo;
+};
+
+static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
+static inline int32_t neg32(int32_t a) { return (int32_t)(0u - (uint32_t)a); }
+static inline int32_t mul32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a * (uint32_t)b); }
+static inline int32_t shl32(int32_t a, int n) { return (int32_t)((uint32_t)a << n); }
+/* IMUL64 */
+static inline int64_t imul64(int32_t a, int32_t b) { return (int64_t)a * (int64_t)b; }
+/* 64-bit wrapping add/sub (garbage planes must not be UB) */
+static inline int64_t add64(int64_t a, int64_t b) { return (int64_t)((uint64_t)a + (uint64_t)b); }
+static inline int64_t sub64(int64_t a, int64_t b) { return (int64_t)((uint64_t)a - (uint64_t)b); }
+
+/* floor_pot via bsr; 0 for 0 */
+static inline uint32_t floor_pot(uint32_t n)
+{
+   if (n == 0)
+      return 0;
+   return 1u << (31 - __builtin_clz(n));
+}
+
+/* build_mask_linear_sse: sign bits of c + i*dcdx + j*dcdy, bit 4j+i. */
+static inline unsigned mask_linear(int32_t c, int32_t dcdx, int32_t dcdy)
+{
+   unsigned mask = 0;
+   int32_t row[4] = { c, add32(c, dcdx), add32(c, mul32(dcdx, 2)), add32(c, mul32(dcdx, 3)) };
+   for (int j = 0; j < 4; j++) {
+      for (int i = 0; i < 4; i++)
+         mask |= (unsigned)(row[i] < 0) << (4 * j + i);
+      for (int i = 0; i < 4; i++)
+         row[i] = add32(row[i], dcdy);
+   }
+   return mask;
+}
+
+static inline void build_masks(int32_t c, int32_t cdiff, int32_t dcdx, int32_t dcdy,
+                               unsigned *outmask, unsigned *partmask)
+{
+   unsigned out = 0, part = 0;
+   int32_t row[4] = { c, add32(c, dcdx), add32(c, mul32(dcdx, 2)), add32(c, mul32(dcdx, 3)) };
+   for (int j = 0; j < 4; j++) {
+      for (int i = 0; i < 4; i++) {
+         out |= (unsigned)(row[i] < 0) << (4 * j + i);
+         part |= (unsigned)(add32(row[i], cdiff) < 0) << (4 * j + i);
+      }
+      for (int i = 0; i < 4; i++)
+         row[i] = add32(row[i], dcdy);
+   }
+   *outmask |= out;
+   *partmask |= part;
+}
+
+/* The per-block trivial reject/accept values of lp_rast_tri_tmp.h
+ * (RASTER_64): c and the steps reduced by FIXED_ORDER to 32 bits, for
+ * sub-blocks of size 1 << log2_sub pixels. */
+static inline void block_masks(const struct rplane *p, int64_t c, int log2_sub,
+                               unsigned *outmask, unsigned *partmask)
+{
+   int32_t dcdx = neg32(p->dcdx) >> 8;
+   int32_t dcdy = p->dcdy >> 8;
+   const int32_t cox = (int32_t)(p->eo >> 8);
+   const int32_t ei = shl32(add32(add32(dcdy, dcdx), neg32(cox)), log2_sub);
+   const int32_t cox_s = shl32(cox, log2_sub);
+   const int32_t co = add32((int32_t)(c >> 8), cox_s);
+   const int32_t cdiff = add32(add32(ei, neg32(cox_s)),
+                               (int32_t)((uint32_t)(int32_t)(sub64(c, 1) >> 8) -
+                                         (uint32_t)(int32_t)(c >> 8)));
+   dcdx = shl32(dcdx, log2_sub);
+   dcdy = shl32(dcdy, log2_sub);
+   build_masks(co, cdiff, dcdx, dcdy, outmask, partmask);
+}
+
+/* ---- attribute setup and shading ---------------------------------------- */
 
 /* Plane equation a(x, y) = fma(dady, y, fma(dadx, x, a0)). */
 struct plane {
@@ -119,25 +214,47 @@ static inline float eval_plane(const struct plane *p, float x, float y)
    return fmaf(p->dady, y, fmaf(p->dadx, x, p->a0));
 }
 
-/* An edge function in 8.8 fixed point: inside where c - dcdx*X + dcdy*Y > 0. */
-struct edge {
-   int64_t c, dcdx, dcdy;
+/* Interpolation setup of one triangle (the jit setup function's job). */
+struct tri_shade {
+   struct plane z, w;
+   /* Perspective-correct attributes are interpolated premultiplied by 1/w
+    * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
+    * provoking vertex. */
+   struct plane ap[R_MAX_ATTRIBS][4];
+   float flat[R_MAX_ATTRIBS][4];
+   bool color_flat;
 };
 
-static struct edge make_edge(int32_t xi, int32_t yi, int32_t xj, int32_t yj)
+static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
+                        struct tri_shade *ts)
 {
-   struct edge e;
-   const int32_t dcdx = sub_wrap(yi, yj);
-   const int32_t dcdy = sub_wrap(xi, xj);
-   e.c = (int64_t)((uint64_t)((int64_t)dcdx * xi) - (uint64_t)((int64_t)dcdy * yi));
-   /* bottom-left fill convention (window buffers are y-down) */
-   if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
-      e.c++;
-   /* scaled in 32 bits as lp_setup_tri.c does (_mm_slli_epi32): only
-    * garbage (NaN-derived, INT32_MIN) positions are large enough to wrap */
-   e.dcdx = (int32_t)((uint32_t)dcdx << 8);
-   e.dcdy = (int32_t)((uint32_t)dcdy << 8);
-   return e;
+   /* plain float arithmetic in llvmpipe's order */
+   const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
+   const float x1 = v[1]->pos[0], y1 = v[1]->pos[1];
+   const float x2 = v[2]->pos[0], y2 = v[2]->pos[1];
+   const float dx01 = x0 - x1, dy01 = y0 - y1;
+   const float dx20 = x2 - x0, dy20 = y2 - y0;
+   const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+   const struct setup_factors f = {
+      .x0c = x0 - 0.5f, .y0c = y0 - 0.5f,
+      .dx01o = dx01 * ooa, .dy01o = dy01 * ooa,
+      .dx20o = dx20 * ooa, .dy20o = dy20 * ooa,
+   };
+
+   ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
+   ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
+   for (int a = 0; a < rs->num_attribs; a++) {
+      for (int c = 0; c < 4; c++) {
+         if (rs->flat_mask & (1u << a)) {
+            ts->flat[a][c] = v[2]->attr[a][c];
+         } else {
+            ts->ap[a][c] = make_plane(&f, v[0]->attr[a][c] * v[0]->pos[3],
+                                          v[1]->attr[a][c] * v[1]->pos[3],
+                                          v[2]->attr[a][c] * v[2]->pos[3]);
+         }
+      }
+   }
+   ts->color_flat = (rs->flat_mask & 1u) != 0;
 }
 
 static inline void write_fragment(const struct r_state *rs, int px, int py,
@@ -180,88 +297,240 @@ static inline void write_fragment(const struct r_state *rs, int px, int py,
    dst[3] = r_float_to_unorm8(color[3]);
 }
 
-/* Rasterize a triangle whose snapped area is positive (lp_setup_tri.c:
- * do_triangle_ccw).  v[2] is the provoking vertex. */
-static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const v[3],
-                          const int32_t X[3], const int32_t Y[3])
+/* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
+ * is pixel (x+i, y+j)); pixels outside the draw region are dropped (in
+ * llvmpipe they land in the tile padding). */
+static void shade_block(const struct r_state *rs, const struct tri_shade *ts,
+                        int x, int y, unsigned mask)
 {
-   /* Bounding box in pixels: x inclusive/exclusive, y adjusted for the
-    * bottom-left convention, then trimmed to the draw region. */
-   int64_t bx0 = (int64_t)min3(X[0], X[1], X[2]) >> 8;
-   int64_t bx1 = ((int64_t)max3(X[0], X[1], X[2]) - 1) >> 8;
-   int64_t by0 = ((int64_t)min3(Y[0], Y[1], Y[2]) + 1) >> 8;
-   int64_t by1 = (int64_t)max3(Y[0], Y[1], Y[2]) >> 8;
-   if (bx0 < rs->x0) bx0 = rs->x0;
-   if (by0 < rs->y0) by0 = rs->y0;
-   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
-   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
-   if (bx0 > bx1 || by0 > by1)
-      return;
-
-   const struct edge e[3] = {
-      make_edge(X[0], Y[0], X[1], Y[1]),
-      make_edge(X[1], Y[1], X[2], Y[2]),
-      make_edge(X[2], Y[2], X[0], Y[0]),
-   };
-
-   /* Interpolation setup, plain float arithmetic in llvmpipe's order. */
-   const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
-   const float x1 = v[1]->pos[0], y1 = v[1]->pos[1];
-   const float x2 = v[2]->pos[0], y2 = v[2]->pos[1];
-   const float dx01 = x0 - x1, dy01 = y0 - y1;
-   const float dx20 = x2 - x0, dy20 = y2 - y0;
-   const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
-   const struct setup_factors f = {
-      .x0c = x0 - 0.5f, .y0c = y0 - 0.5f,
-      .dx01o = dx01 * ooa, .dy01o = dy01 * ooa,
-      .dx20o = dx20 * ooa, .dy20o = dy20 * ooa,
-   };
-
-   const struct plane zp = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
-   const struct plane wp = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
-
-   /* Perspective-correct attributes are interpolated premultiplied by 1/w
-    * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
-    * provoking vertex. */
-   struct plane ap[R_MAX_ATTRIBS][4];
-   float flat[R_MAX_ATTRIBS][4];
-   for (int a = 0; a < rs->num_attribs; a++) {
-      for (int c = 0; c < 4; c++) {
-         if (rs->flat_mask & (1u << a)) {
-            flat[a][c] = v[2]->attr[a][c];
-         } else {
-            ap[a][c] = make_plane(&f, v[0]->attr[a][c] * v[0]->pos[3],
-                                      v[1]->attr[a][c] * v[1]->pos[3],
-                                      v[2]->attr[a][c] * v[2]->pos[3]);
-         }
-      }
-   }
-
-   const bool color_flat = (rs->flat_mask & 1u) != 0;
-   for (int64_t py = by0; py <= by1; py++) {
-      int64_t c0 = (int64_t)((uint64_t)e[0].c - (uint64_t)e[0].dcdx * (uint64_t)bx0 + (uint64_t)e[0].dcdy * (uint64_t)py);
-      int64_t c1 = (int64_t)((uint64_t)e[1].c - (uint64_t)e[1].dcdx * (uint64_t)bx0 + (uint64_t)e[1].dcdy * (uint64_t)py);
-      int64_t c2 = (int64_t)((uint64_t)e[2].c - (uint64_t)e[2].dcdx * (uint64_t)bx0 + (uint64_t)e[2].dcdy * (uint64_t)py);
+   for (int j = 0; j < 4; j++) {
+      const int py = y + j;
+      if (py < rs->y0 || py >= rs->y1)
+         continue;
       const float fy = (float)py;
-      /* wrapping steps: garbage (NaN-derived) edges must not be UB */
-      for (int64_t px = bx0; px <= bx1; px++,
-           c0 = (int64_t)((uint64_t)c0 - (uint64_t)e[0].dcdx),
-           c1 = (int64_t)((uint64_t)c1 - (uint64_t)e[1].dcdx),
-           c2 = (int64_t)((uint64_t)c2 - (uint64_t)e[2].dcdx)) {
-         if (c0 <= 0 || c1 <= 0 || c2 <= 0)
+      for (int i = 0; i < 4; i++) {
+         const int px = x + i;
+         if (!(mask & (1u << (4 * j + i))) || px < rs->x0 || px >= rs->x1)
             continue;
          const float fx = (float)px;
          float color[4];
-         if (color_flat) {
+         if (ts->color_flat) {
             for (int c = 0; c < 4; c++)
-               color[c] = flat[0][c];
+               color[c] = ts->flat[0][c];
          } else {
-            const float rw = 1.0f / eval_plane(&wp, fx, fy);
+            const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
             for (int c = 0; c < 4; c++)
-               color[c] = eval_plane(&ap[0][c], fx, fy) * rw;
+               color[c] = eval_plane(&ts->ap[0][c], fx, fy) * rw;
          }
-         write_fragment(rs, (int)px, (int)py, &zp, fx, fy, color);
+         write_fragment(rs, px, py, &ts->z, fx, fy, color);
       }
+   }
+}
+
+/* ---- the rasterizer levels ---------------------------------------------- */
+
+static void do_block_4(const struct r_state *rs, const struct tri_shade *ts,
+                       const struct rplane *p, int n, int x, int y, const int64_t *c)
+{
+   unsigned mask = 0xffff;
+   for (int j = 0; j < n; j++)
+      mask &= ~mask_linear((int32_t)(sub64(c[j], 1) >> 8),
+                           neg32(p[j].dcdx) >> 8, p[j].dcdy >> 8);
+   if (mask)
+      shade_block(rs, ts, x, y, mask);
+}
+
+static void do_block_16(const struct r_state *rs, const struct tri_shade *ts,
+                        const struct rplane *p, int n, int x, int y, const int64_t *c)
+{
+   unsigned outmask = 0, partmask = 0;
+   for (int j = 0; j < n; j++)
+      block_masks(&p[j], c[j], 2, &outmask, &partmask);
+   if (outmask == 0xffff)
+      return;
+   unsigned inmask = ~partmask & 0xffff;
+   unsigned partial = partmask & ~outmask;
+   while (partial) {
+      const int i = __builtin_ctz(partial);
+      const int ix = (i & 3) * 4, iy = (i >> 2) * 4;
+      int64_t cx[MAX_PLANES];
+      partial &= ~(1u << i);
+      for (int j = 0; j < n; j++)
+         cx[j] = add64(sub64(c[j], imul64(p[j].dcdx, ix)), imul64(p[j].dcdy, iy));
+      do_block_4(rs, ts, p, n, x + ix, y + iy, cx);
+   }
+   while (inmask) {
+      const int i = __builtin_ctz(inmask);
+      inmask &= ~(1u << i);
+      shade_block(rs, ts, x + (i & 3) * 4, y + (i >> 2) * 4, 0xffff);
+   }
+}
+
+/* lp_rast_triangle_N on the tile at (x, y) with the planes in plane_mask. */
+static void rast_tile(const struct r_state *rs, const struct tri_shade *ts,
+                      const struct rplane *tri_planes, unsigned plane_mask, int x, int y)
+{
+   struct rplane p[MAX_PLANES];
+   int64_t c[MAX_PLANES];
+   unsigned outmask = 0, partmask = 0;
+   int n = 0;
+
+   while (plane_mask) {
+      const int i = __builtin_ctz(plane_mask);
+      plane_mask &= ~(1u << i);
+      p[n] = tri_planes[i];
+      c[n] = sub64(add64(p[n].c, imul64(p[n].dcdy, y)), imul64(p[n].dcdx, x));
+      block_masks(&p[n], c[n], 4, &outmask, &partmask);
+      n++;
+   }
+   if (outmask == 0xffff)
+      return;
+   unsigned inmask = ~partmask & 0xffff;
+   unsigned partial = partmask & ~outmask;
+   while (partial) {
+      const int i = __builtin_ctz(partial);
+      const int ix = (i & 3) * 16, iy = (i >> 2) * 16;
+      int64_t cx[MAX_PLANES];
+      for (int j = 0; j < n; j++)
+         cx[j] = add64(sub64(c[j], imul64(p[j].dcdx, ix)), imul64(p[j].dcdy, iy));
+      partial &= ~(1u << i);
+      do_block_16(rs, ts, p, n, x + ix, y + iy, cx);
+   }
+   while (inmask) {
+      const int i = __builtin_ctz(inmask);
+      inmask &= ~(1u << i);
+      const int bx = x + (i & 3) * 16, by = y + (i >> 2) * 16;
+      for (int iy = 0; iy < 16; iy += 4)
+         for (int ix = 0; ix < 16; ix += 4)
+            shade_block(rs, ts, bx + ix, by + iy, 0xffff);
+   }
+}
+
+/* lp_rast_shade_tile: the whole tile, cut to the framebuffer. */
+static void shade_tile(const struct r_state *rs, const struct tri_shade *ts, int x, int y)
+{
+   const int w = rs->width - x < TILE_SIZE ? rs->width - x : TILE_SIZE;
+   const int h = rs->height - y < TILE_SIZE ? rs->height - y : TILE_SIZE;
+   for (int iy = 0; iy < h; iy += 4)
+      for (int ix = 0; ix < w; ix += 4)
+         shade_block(rs, ts, x + ix, y + iy, 0xffff);
+}
+
+/* Triangle setup and binning of a triangle whose snapped area is positive
+ * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
+ * provoking vertex. */
+static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const v[3],
+                          const int32_t X[3], const int32_t Y[3])
+{
+   /* draw region, inclusive */
+   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   if (rx0 > rx1 || ry0 > ry1)
+      return;
+
+   /* bounding box in pixels: x inclusive/exclusive, y adjusted for the
+    * bottom-left convention */
+   int32_t bx0 = min3(X[0], X[1], X[2]) >> 8;
+   int32_t bx1 = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
+   int32_t by0 = add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
+   int32_t by1 = max3(Y[0], Y[1], Y[2]) >> 8;
+   if (bx0 > rx1 || bx1 < rx0 || by0 > ry1 || by1 < ry0)
+      return;
+
+   const int32_t max_szorig = sub_wrap(bx1, bx0 & ~3) | sub_wrap(by1, by0 & ~3);
+   (void)max_szorig; /* 32-bit rasterizers (<= 128): same coverage, exact */
+   if (bx0 < 0) bx0 = 0;
+   if (by0 < 0) by0 = 0;
+
+   /* the three edges (lp_setup_tri.c SSE path) */
+   struct rplane p[MAX_PLANES];
+   for (int i = 0; i < 3; i++) {
+      const int k = (i + 1) % 3;
+      const int32_t dcdx = sub_wrap(Y[i], Y[k]);
+      const int32_t dcdy = sub_wrap(X[i], X[k]);
+      int64_t c = (int64_t)((uint64_t)imul64(dcdx, X[i]) - (uint64_t)imul64(dcdy, Y[i]));
+      /* bottom-left fill convention (window buffers are y-down) */
+      if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+         c = add64(c, 1);
+      p[i].c = c;
+      p[i].dcdx = shl32(dcdx, 8);
+      p[i].dcdy = shl32(dcdy, 8);
+      /* trivial reject offset, 32 bits: the signs come from the unscaled
+       * steps, the values from the scaled ones */
+      p[i].eo = (uint32_t)(dcdy >= 0 ? p[i].dcdy : 0) -
+                (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
+   }
+   /* planes for the sides of the draw region the box leaves
+    * (scissor_planes_needed, lp_setup_add_scissor_planes) */
+   int n = 3;
+   if (bx0 < rx0)
+      p[n++] = (struct rplane){ .c = -(int64_t)(shl32(rx0 - 1, 8)), .dcdx = shl32(-1, 8),
+                                .dcdy = 0, .eo = 1u << 8 };
+   if (bx1 > rx1)
+      p[n++] = (struct rplane){ .c = (int64_t)shl32(rx1, 8) + 127, .dcdx = 1 << 8,
+                                .dcdy = 0, .eo = 0 };
+   if (by0 < ry0)
+      p[n++] = (struct rplane){ .c = -(int64_t)(shl32(ry0 - 1, 8)), .dcdx = 0,
+                                .dcdy = 1 << 8, .eo = 1u << 8 };
+   if (by1 > ry1)
+      p[n++] = (struct rplane){ .c = (int64_t)shl32(ry1, 8) + 127, .dcdx = 0,
+                                .dcdy = shl32(-1, 8), .eo = 0 };
+
+   struct tri_shade ts;
+   setup_shade(rs, v, &ts);
+
+
+   /* binning */
+   const uint32_t dx = floor_pot((uint32_t)(bx0 ^ bx1) | (uint32_t)(by0 ^ by1));
+   if (dx < TILE_SIZE) {
+      /* one tile: lp_rast_triangle_3_4/_3_16/_4_16 and the one-tile case
+       * all rasterize the tile with every plane */
+      rast_tile(rs, &ts, p, (1u << n) - 1, bx0 / TILE_SIZE * TILE_SIZE,
+                by0 / TILE_SIZE * TILE_SIZE);
+      return;
+   }
+
+   /* trimmed box: the box intersected with the draw region */
+   const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
+   const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
+   const int ix0 = tx0 / TILE_SIZE, iy0 = ty0 / TILE_SIZE;
+   const int ix1 = tx1 / TILE_SIZE, iy1 = ty1 / TILE_SIZE;
+   int64_t c[MAX_PLANES], ei[MAX_PLANES], eo[MAX_PLANES], xstep[MAX_PLANES], ystep[MAX_PLANES];
+   for (int i = 0; i < n; i++) {
+      c[i] = sub64(add64(p[i].c, imul64(p[i].dcdy, iy0) * TILE_SIZE),
+                   imul64(p[i].dcdx, ix0) * TILE_SIZE);
+      ei[i] = (int64_t)((uint64_t)((int64_t)sub_wrap(p[i].dcdy, p[i].dcdx) - (int64_t)p[i].eo) << 6);
+      eo[i] = (int64_t)p[i].eo << 6;
+      xstep[i] = -((int64_t)p[i].dcdx << 6);
+      ystep[i] = (int64_t)p[i].dcdy << 6;
+   }
+   for (int y = iy0; y <= iy1; y++) {
+      bool in = false;
+      int64_t cx[MAX_PLANES];
+      for (int i = 0; i < n; i++)
+         cx[i] = c[i];
+      for (int x = ix0; x <= ix1; x++) {
+         bool out = false;
+         unsigned partial = 0;
+         for (int i = 0; i < n; i++) {
+            out |= add64(cx[i], eo[i]) < 0;
+            if (sub64(add64(cx[i], ei[i]), 1) < 0)
+               partial |= 1u << i;
+         }
+         if (out) {
+            if (in)
+               break;   /* leaving the triangle: done with this row */
+         } else if (partial) {
+            in = true;
+            rast_tile(rs, &ts, p, partial, x * TILE_SIZE, y * TILE_SIZE);
+         } else {
+            in = true;
+            shade_tile(rs, &ts, x * TILE_SIZE, y * TILE_SIZE);
+         }
+         for (int i = 0; i < n; i++)
+            cx[i] = add64(cx[i], xstep[i]);
+      }
+      for (int i = 0; i < n; i++)
+         c[i] = add64(c[i], ystep[i]);
    }
 }
 

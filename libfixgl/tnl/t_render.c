@@ -132,6 +132,13 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
 
    const struct render r = { ctx, tv };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
+   /* A colour that is not part of the batch's vertex format is the current
+    * colour for every vertex, and Mesa's fixed-function fragment program
+    * then reads it as a constant instead of interpolating it
+    * (ff_fragment_shader.cpp: get_gl_Color without VARYING_BIT_COL0), so it
+    * is exact even where interpolation is not (w = 0, NaN positions). */
+   const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
+   ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
    for (unsigned i = 0; i < nprims; i++)
       render_prim(&r, &prims[i], flat);
    free(tv);

@@ -25,12 +25,13 @@ static inline unsigned clip_mask(const float *p)
    return m;
 }
 
-/* Vertex colour clamp; NaN becomes 0 (maxps returns its second operand). */
+/* Vertex colour clamp, draw_llvm.c do_clamp_vertex_color: lp_build_clamp
+ * is max(min(c, 1), 0) on minps/maxps, which return their second operand
+ * when one is NaN, so NaN becomes 1. */
 static inline float clamp01(float c)
 {
-   if (!(c > 0.0f))
-      return 0.0f;
-   return c < 1.0f ? c : 1.0f;
+   const float m = c < 1.0f ? c : 1.0f;
+   return m > 0.0f ? m : 0.0f;
 }
 
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
