@@ -209,6 +209,56 @@ static void non_finite(fc_h *h)
     fc_error(h, "after NaN matrix");
 }
 
+/* A vertex exactly at the clip-space origin with w = 0 passes the clip
+ * test and projects to NaN: the triangle is rasterized from INT32_MIN
+ * snapped coordinates, where the oracle's tile / block coverage decides
+ * what is drawn.  Depth test on and off, colour varying (smooth, flat) and
+ * constant (set outside glBegin/glEnd), several triangle shapes. */
+static void w_zero_vertex(fc_h *h)
+{
+    static const float tri[4][4] = {
+        { 1.5592f / 8.5f - 1.0f, 1.0f - 1.9e-6f / 27.0f, 1.0e-6f / 8.5f - 1.0f, 1.0f - 4.94f / 27.0f },
+        { -0.8f, -0.8f, 0.7f, -0.6f },
+        { 0.9f, 0.9f, -0.9f, 0.95f },
+        { -0.2f, 0.5f, 0.1f, -0.9f },
+    };
+    glViewport(0, 0, 17, 54);
+    for (int frame = 0; frame < 4; frame++) {
+        fcu_clear(0.5f, 0.5f, 0.5f, 0.5f, 1);
+        if (frame & 1) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
+        glShadeModel(frame & 2 ? GL_FLAT : GL_SMOOTH);
+        for (int t = 0; t < 4; t++) {
+            if (t == 1)
+                glColor3f(0.2f, 0.4f, 0.6f);        /* constant colour */
+            glBegin(GL_TRIANGLES);
+            if (t >= 2) glColor3f(1, 0, 0);
+            glVertex4f(tri[t][0], tri[t][1], 0.1f, 1.0f);
+            if (t >= 2) glColor3f(0, 1, 0);
+            glVertex4f(tri[t][2], tri[t][3], 0.1f, 1.0f);
+            if (t >= 2) glColor3f(0, 0, 1);
+            glVertex4f(0, 0, 0, 0);
+            glEnd();
+        }
+        fc_capture(h);
+    }
+}
+
+/* A triangle clipped at the far plane whose other vertices are the w = 0
+ * origin and a normal vertex: the clipped polygon has NaN corners. */
+static void w_zero_clipped(fc_h *h)
+{
+    glViewport(0, 0, 17, 54);
+    fcu_clear(0.8f, 0.84f, 0.87f, 0.59f, 1);
+    glEnable(GL_DEPTH_TEST);
+    glRotatef(-159.7f, -0.55f, 1.72f, -0.0002f);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(1, 1, 1.0758f);
+    glVertex4f(0, 0, 0, 0);
+    glVertex4d(-0.72, 0.955, 0.5566, 0.72);
+    glEnd();
+    fc_capture(h);
+}
+
 const fc_case fc_cases_clip[] = {
     FC_CASE_RGBA("core/clip_plane_left", 32, 32, 1, "core clip", clip_left),
     FC_CASE_RGBA("core/clip_plane_right", 32, 32, 1, "core clip", clip_right),
@@ -223,5 +273,7 @@ const fc_case fc_cases_clip[] = {
     FC_CASE_RGBA("core/clip_polygon_all_planes", 48, 48, 1, "core clip", clip_all_planes),
     FC_CASE_RGBA("core/degenerate_primitives", 32, 32, 1, "core fill", degenerate),
     FC_CASE_RGBA("core/non_finite_coordinates", 32, 32, 1, "core clip robust", non_finite),
+    FC_CASE_RGBA("core/w_zero_vertex", 17, 54, 4, "core clip robust", w_zero_vertex),
+    FC_CASE_RGBA("core/w_zero_clipped", 17, 54, 1, "core clip robust", w_zero_clipped),
     { 0 }
 };

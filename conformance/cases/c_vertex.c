@@ -126,9 +126,44 @@ static void color_integer_smooth(fc_h *h)
     fc_capture(h);
 }
 
+/* Mesa's vbo batching corner cases: an incomplete GL_TRIANGLES block is not
+ * merged with the next one (its tail vertex is dropped, not shifted into
+ * the next triangle); a colour first given in the middle of a primitive
+ * upgrades the vertex format, and the vertices replayed into the new
+ * buffer get the current colour cut to the new size (alpha 1 after
+ * glColor3f); the current colour used outside glBegin/glEnd is a constant. */
+static void batch_corners(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_TRIANGLES);                      /* 7 vertices: 2 triangles + 1 */
+    glVertex2f(1, 1); glVertex2f(10, 1); glVertex2f(1, 10);
+    glVertex2f(12, 1); glVertex2f(20, 1); glVertex2f(12, 10);
+    glVertex2f(30, 30);
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glVertex2f(1, 20); glVertex2f(10, 20); glVertex2f(1, 30);
+    glEnd();
+    fc_capture(h);
+
+    glColor4f(0.4f, 0.9f, 0.2f, 0.6f);           /* current colour, 4 components */
+    glBegin(GL_QUADS);
+    glColor4d(0.4, 0.9, 0.13, 0.63);
+    glEnd();
+    glBegin(GL_POLYGON);                        /* colour added after vertex 0 */
+    glVertex2f(2, 2);
+    glColor3f(0.3f, 0.7f, 0.3f);
+    glVertex2f(30, 4);
+    glVertex2f(16, 30);
+    glEnd();
+    fc_capture(h);
+}
+
 const fc_case fc_cases_vertex[] = {
     FC_CASE_RGBA("core/vertex_entry_points", 64, 64, 1, "core vertex", vertex_variants),
     FC_CASE_RGBA("core/color_entry_points", 64, 64, 1, "core vertex query", color_variants),
     FC_CASE_RGBA("core/color_integer_smooth", 32, 32, 1, "core vertex shade", color_integer_smooth),
+    FC_CASE_RGBA("core/vbo_batch_corners", 32, 32, 2, "core vertex", batch_corners),
     { 0 }
 };

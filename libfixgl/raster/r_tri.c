@@ -297,6 +297,23 @@ static inline void write_fragment(const struct r_state *rs, int px, int py,
    dst[3] = r_float_to_unorm8(color[3]);
 }
 
+/* Shades pixel (px, py), which is inside the draw region. */
+static inline void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
+                               int px, int py)
+{
+   const float fx = (float)px, fy = (float)py;
+   float color[4];
+   if (ts->color_flat) {
+      for (int c = 0; c < 4; c++)
+         color[c] = ts->flat[0][c];
+   } else {
+      const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
+      for (int c = 0; c < 4; c++)
+         color[c] = eval_plane(&ts->ap[0][c], fx, fy) * rw;
+   }
+   write_fragment(rs, px, py, &ts->z, fx, fy, color);
+}
+
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
  * is pixel (x+i, y+j)); pixels outside the draw region are dropped (in
  * llvmpipe they land in the tile padding). */
@@ -307,22 +324,10 @@ static void shade_block(const struct r_state *rs, const struct tri_shade *ts,
       const int py = y + j;
       if (py < rs->y0 || py >= rs->y1)
          continue;
-      const float fy = (float)py;
       for (int i = 0; i < 4; i++) {
          const int px = x + i;
-         if (!(mask & (1u << (4 * j + i))) || px < rs->x0 || px >= rs->x1)
-            continue;
-         const float fx = (float)px;
-         float color[4];
-         if (ts->color_flat) {
-            for (int c = 0; c < 4; c++)
-               color[c] = ts->flat[0][c];
-         } else {
-            const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
-            for (int c = 0; c < 4; c++)
-               color[c] = eval_plane(&ts->ap[0][c], fx, fy) * rw;
-         }
-         write_fragment(rs, px, py, &ts->z, fx, fy, color);
+         if ((mask & (1u << (4 * j + i))) && px >= rs->x0 && px < rs->x1)
+            shade_pixel(rs, ts, px, py);
       }
    }
 }
@@ -416,6 +421,27 @@ static void shade_tile(const struct r_state *rs, const struct tri_shade *ts, int
          shade_block(rs, ts, x + ix, y + iy, 0xffff);
 }
 
+/* With finite snapped positions and edge steps below 2^22 (always the case
+ * after clipping: window coordinates stay within the viewport), none of the
+ * 32-bit arithmetic of the binned path wraps, and its tile and block tests
+ * are exact, conservative versions of the per-pixel test: the covered
+ * pixels are exactly those whose three edge values are positive.  This
+ * evaluates that directly over the box cut to the draw region. */
+static void rasterize_direct(const struct r_state *rs, const struct tri_shade *ts,
+                             const struct rplane *p, int32_t x0, int32_t y0,
+                             int32_t x1, int32_t y1)
+{
+   for (int32_t py = y0; py <= y1; py++) {
+      int64_t c0 = p[0].c - (int64_t)p[0].dcdx * x0 + (int64_t)p[0].dcdy * py;
+      int64_t c1 = p[1].c - (int64_t)p[1].dcdx * x0 + (int64_t)p[1].dcdy * py;
+      int64_t c2 = p[2].c - (int64_t)p[2].dcdx * x0 + (int64_t)p[2].dcdy * py;
+      for (int32_t px = x0; px <= x1; px++, c0 -= p[0].dcdx, c1 -= p[1].dcdx, c2 -= p[2].dcdx) {
+         if (c0 > 0 && c1 > 0 && c2 > 0)
+            shade_pixel(rs, ts, px, py);
+      }
+   }
+}
+
 /* Triangle setup and binning of a triangle whose snapped area is positive
  * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
  * provoking vertex. */
@@ -443,10 +469,14 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
 
    /* the three edges (lp_setup_tri.c SSE path) */
    struct rplane p[MAX_PLANES];
+   bool exact = true;   /* nothing below wraps: see rasterize_direct */
    for (int i = 0; i < 3; i++) {
       const int k = (i + 1) % 3;
       const int32_t dcdx = sub_wrap(Y[i], Y[k]);
       const int32_t dcdy = sub_wrap(X[i], X[k]);
+      if (X[i] == INT32_MIN || Y[i] == INT32_MIN ||
+          dcdx <= -(1 << 22) || dcdx >= (1 << 22) || dcdy <= -(1 << 22) || dcdy >= (1 << 22))
+         exact = false;
       int64_t c = (int64_t)((uint64_t)imul64(dcdx, X[i]) - (uint64_t)imul64(dcdy, Y[i]));
       /* bottom-left fill convention (window buffers are y-down) */
       if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
@@ -459,6 +489,14 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       p[i].eo = (uint32_t)(dcdy >= 0 ? p[i].dcdy : 0) -
                 (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
    }
+   if (exact) {
+      struct tri_shade ts;
+      setup_shade(rs, v, &ts);
+      rasterize_direct(rs, &ts, p, bx0 > rx0 ? bx0 : rx0, by0 > ry0 ? by0 : ry0,
+                       bx1 < rx1 ? bx1 : rx1, by1 < ry1 ? by1 : ry1);
+      return;
+   }
+
    /* planes for the sides of the draw region the box leaves
     * (scissor_planes_needed, lp_setup_add_scissor_planes) */
    int n = 3;
@@ -499,9 +537,9 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       c[i] = sub64(add64(p[i].c, imul64(p[i].dcdy, iy0) * TILE_SIZE),
                    imul64(p[i].dcdx, ix0) * TILE_SIZE);
       ei[i] = (int64_t)((uint64_t)((int64_t)sub_wrap(p[i].dcdy, p[i].dcdx) - (int64_t)p[i].eo) << 6);
-      eo[i] = (int64_t)p[i].eo << 6;
-      xstep[i] = -((int64_t)p[i].dcdx << 6);
-      ystep[i] = (int64_t)p[i].dcdy << 6;
+      eo[i] = (int64_t)p[i].eo * TILE_SIZE;
+      xstep[i] = -((int64_t)p[i].dcdx * TILE_SIZE);
+      ystep[i] = (int64_t)p[i].dcdy * TILE_SIZE;
    }
    for (int y = iy0; y <= iy1; y++) {
       bool in = false;
