@@ -349,8 +349,116 @@ static enum mat_type analyse_from_flags(const fgl_matrix *mat)
    return MATRIX_GENERAL;
 }
 
-/* Whether Mesa's inverse for this matrix type succeeds. */
-static bool invertible_3d_general(const float *m)
+/* ---- inverses: Mesa's per-type inversion (m_matrix.c inv_mat_tab) -------
+ * Each returns false for a matrix it considers singular; the caller then
+ * stores the identity, as Mesa does.  The float operations and their order
+ * are the oracle's. */
+
+/* util_invert_mat4x4: Gaussian elimination with partial pivoting on the
+ * rows of [M | I]; singular when a pivot is exactly zero. */
+static bool invert_general(const float *m, float *out)
+{
+   float wtmp[4][8];
+   float *r[4] = { wtmp[0], wtmp[1], wtmp[2], wtmp[3] };
+   float *t;
+
+   for (int i = 0; i < 4; i++) {
+      for (int j = 0; j < 4; j++)
+         r[i][j] = M(i, j);
+      for (int j = 4; j < 8; j++)
+         r[i][j] = j - 4 == i ? 1.0f : 0.0f;
+   }
+
+#define SWAP(a, b) (t = r[a], r[a] = r[b], r[b] = t)
+   /* first variable */
+   if (fabsf(r[3][0]) > fabsf(r[2][0])) SWAP(3, 2);
+   if (fabsf(r[2][0]) > fabsf(r[1][0])) SWAP(2, 1);
+   if (fabsf(r[1][0]) > fabsf(r[0][0])) SWAP(1, 0);
+   if (r[0][0] == 0.0f)
+      return false;
+   float m1 = r[1][0] / r[0][0], m2 = r[2][0] / r[0][0], m3 = r[3][0] / r[0][0];
+   for (int j = 1; j < 8; j++) {
+      const float s = r[0][j];
+      if (j >= 4 && s == 0.0f)
+         continue;
+      r[1][j] -= m1 * s;
+      r[2][j] -= m2 * s;
+      r[3][j] -= m3 * s;
+   }
+
+   /* second variable */
+   if (fabsf(r[3][1]) > fabsf(r[2][1])) SWAP(3, 2);
+   if (fabsf(r[2][1]) > fabsf(r[1][1])) SWAP(2, 1);
+   if (r[1][1] == 0.0f)
+      return false;
+   m2 = r[2][1] / r[1][1];
+   m3 = r[3][1] / r[1][1];
+   for (int j = 2; j < 8; j++) {
+      const float s = r[1][j];
+      if (j >= 4 && s == 0.0f)
+         continue;
+      r[2][j] -= m2 * s;
+      r[3][j] -= m3 * s;
+   }
+
+   /* third variable */
+   if (fabsf(r[3][2]) > fabsf(r[2][2])) SWAP(3, 2);
+   if (r[2][2] == 0.0f)
+      return false;
+   m3 = r[3][2] / r[2][2];
+   for (int j = 3; j < 8; j++)
+      r[3][j] -= m3 * r[2][j];
+#undef SWAP
+
+   if (r[3][3] == 0.0f)
+      return false;
+
+   /* back substitution */
+   float s = 1.0f / r[3][3];
+   for (int j = 4; j < 8; j++)
+      r[3][j] *= s;
+
+   m2 = r[2][3];
+   s = 1.0f / r[2][2];
+   for (int j = 4; j < 8; j++)
+      r[2][j] = s * (r[2][j] - r[3][j] * m2);
+   m1 = r[1][3];
+   for (int j = 4; j < 8; j++)
+      r[1][j] -= r[3][j] * m1;
+   float m0 = r[0][3];
+   for (int j = 4; j < 8; j++)
+      r[0][j] -= r[3][j] * m0;
+
+   m1 = r[1][2];
+   s = 1.0f / r[1][1];
+   for (int j = 4; j < 8; j++)
+      r[1][j] = s * (r[1][j] - r[2][j] * m1);
+   m0 = r[0][2];
+   for (int j = 4; j < 8; j++)
+      r[0][j] -= r[2][j] * m0;
+
+   m0 = r[0][1];
+   s = 1.0f / r[0][0];
+   for (int j = 4; j < 8; j++)
+      r[0][j] = s * (r[0][j] - r[1][j] * m0);
+
+   for (int i = 0; i < 4; i++)
+      for (int j = 0; j < 4; j++)
+         out[j * 4 + i] = r[i][4 + j];
+   return true;
+}
+
+/* The translation column of a 3D inverse: -(R^-1 t). */
+static void invert_translation(const float *m, float *out)
+{
+#define O(row, col) out[(col) * 4 + (row)]
+   for (int i = 0; i < 3; i++)
+      O(i, 3) = -(M(0, 3) * O(i, 0) + M(1, 3) * O(i, 1) + M(2, 3) * O(i, 2));
+}
+
+/* invert_matrix_3d_general: adjugate / determinant of the 3x3 part, the
+ * determinant accumulated as positive and negative products. */
+static bool invert_3d_general(const float *m, float *out)
 {
    float pos = 0.0f, neg = 0.0f, t;
 #define ACC(expr) t = (expr); if (t >= 0.0f) pos += t; else neg += t
@@ -361,51 +469,91 @@ static bool invertible_3d_general(const float *m)
    ACC(-M(1, 0) * M(0, 1) * M(2, 2));
    ACC(-M(0, 0) * M(2, 1) * M(1, 2));
 #undef ACC
-   return !(fabsf(pos + neg) < 1e-25f);
+   float det = pos + neg;
+   if (fabsf(det) < 1e-25f)
+      return false;
+   det = 1.0f / det;
+   O(0, 0) = (  (M(1, 1) * M(2, 2) - M(2, 1) * M(1, 2)) * det);
+   O(0, 1) = (- (M(0, 1) * M(2, 2) - M(2, 1) * M(0, 2)) * det);
+   O(0, 2) = (  (M(0, 1) * M(1, 2) - M(1, 1) * M(0, 2)) * det);
+   O(1, 0) = (- (M(1, 0) * M(2, 2) - M(2, 0) * M(1, 2)) * det);
+   O(1, 1) = (  (M(0, 0) * M(2, 2) - M(2, 0) * M(0, 2)) * det);
+   O(1, 2) = (- (M(0, 0) * M(1, 2) - M(1, 0) * M(0, 2)) * det);
+   O(2, 0) = (  (M(1, 0) * M(2, 1) - M(2, 0) * M(1, 1)) * det);
+   O(2, 1) = (- (M(0, 0) * M(2, 1) - M(2, 0) * M(0, 1)) * det);
+   O(2, 2) = (  (M(0, 0) * M(1, 1) - M(1, 0) * M(0, 1)) * det);
+   invert_translation(m, out);
+   return true;
 }
 
-static bool invertible_general(const float *m)
-{
-   /* util_invert_mat4x4: cofactor expansion, singular iff det == 0. */
-   const float c0 = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] -
-                    m[9] * m[6] * m[15] + m[9] * m[7] * m[14] +
-                    m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
-   const float c4 = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] +
-                    m[8] * m[6] * m[15] - m[8] * m[7] * m[14] -
-                    m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
-   const float c8 = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] -
-                    m[8] * m[5] * m[15] + m[8] * m[7] * m[13] +
-                    m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
-   const float c12 = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] +
-                     m[8] * m[5] * m[14] - m[8] * m[6] * m[13] -
-                     m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
-   const float det = m[0] * c0 + m[1] * c4 + m[2] * c8 + m[3] * c12;
-   return det != 0.0f;
-}
-
-static bool invertible(const fgl_matrix *mat, enum mat_type type)
+/* invert_matrix_3d: angle-preserving matrices by (scaled) transpose. */
+static bool invert_3d(const fgl_matrix *mat, float *out)
 {
    const float *m = mat->m;
+   if (!test_flags(mat->flags, MAT_FLAG_ROTATION | MAT_FLAG_TRANSLATION | MAT_FLAG_UNIFORM_SCALE))
+      return invert_3d_general(m, out);
+
+   if (mat->flags & MAT_FLAG_UNIFORM_SCALE) {
+      float scale = M(0, 0) * M(0, 0) + M(0, 1) * M(0, 1) + M(0, 2) * M(0, 2);
+      if (scale == 0.0f)
+         return false;
+      scale = 1.0f / scale;
+      for (int i = 0; i < 3; i++)
+         for (int j = 0; j < 3; j++)
+            O(j, i) = scale * M(i, j);
+   } else if (mat->flags & MAT_FLAG_ROTATION) {
+      for (int i = 0; i < 3; i++)
+         for (int j = 0; j < 3; j++)
+            O(j, i) = M(i, j);
+   } else {
+      /* pure translation */
+      memcpy(out, identity, sizeof(identity));
+      O(0, 3) = -M(0, 3);
+      O(1, 3) = -M(1, 3);
+      O(2, 3) = -M(2, 3);
+      return true;
+   }
+   if (mat->flags & MAT_FLAG_TRANSLATION)
+      invert_translation(m, out);
+   else
+      O(0, 3) = O(1, 3) = O(2, 3) = 0.0f;
+   return true;
+}
+
+/* invert_matrix_3d_no_rot and invert_matrix_2d_no_rot */
+static bool invert_no_rot(const fgl_matrix *mat, float *out, int dims)
+{
+   const float *m = mat->m;
+   for (int i = 0; i < dims; i++)
+      if (M(i, i) == 0)
+         return false;
+   memcpy(out, identity, sizeof(identity));
+   for (int i = 0; i < dims; i++)
+      O(i, i) = 1.0f / M(i, i);
+   if (mat->flags & MAT_FLAG_TRANSLATION)
+      for (int i = 0; i < dims; i++)
+         O(i, 3) = -(M(i, 3) * O(i, i));
+   return true;
+}
+#undef O
+
+static bool invert(const fgl_matrix *mat, enum mat_type type, float *out)
+{
    switch (type) {
    case MATRIX_IDENTITY:
+      memcpy(out, identity, sizeof(identity));
       return true;
    case MATRIX_3D_NO_ROT:
-      return !(M(0, 0) == 0 || M(1, 1) == 0 || M(2, 2) == 0);
+      return invert_no_rot(mat, out, 3);
    case MATRIX_2D_NO_ROT:
-      return !(M(0, 0) == 0 || M(1, 1) == 0);
-   case MATRIX_PERSPECTIVE:
-      return M(2, 3) != 0;
+      return invert_no_rot(mat, out, 2);
    case MATRIX_2D:
    case MATRIX_3D:
-      if (!test_flags(mat->flags, MAT_FLAG_ROTATION | MAT_FLAG_TRANSLATION |
-                                  MAT_FLAG_UNIFORM_SCALE))
-         return invertible_3d_general(m);
-      if (mat->flags & MAT_FLAG_UNIFORM_SCALE)
-         return M(0, 0) * M(0, 0) + M(0, 1) * M(0, 1) + M(0, 2) * M(0, 2) != 0.0f;
-      return true;
+      return invert_3d(mat, out);
+   case MATRIX_PERSPECTIVE:   /* Mesa's perspective inverse is disabled */
    case MATRIX_GENERAL:
    default:
-      return invertible_general(m);
+      return invert_general(mat->m, out);
    }
 }
 
@@ -418,9 +566,12 @@ void fgl_matrix_analyse(fgl_matrix *mat)
       type = analyse_from_scratch(mat);
    else
       type = analyse_from_flags(mat);
-   if (invertible(mat, type))
+   /* matrix_invert: a singular matrix gets the identity as its inverse */
+   if (invert(mat, type, mat->inv)) {
       mat->flags &= ~MAT_FLAG_SINGULAR;
-   else
+   } else {
       mat->flags |= MAT_FLAG_SINGULAR;
+      memcpy(mat->inv, identity, sizeof(identity));
+   }
    mat->flags &= ~MAT_DIRTY;
 }

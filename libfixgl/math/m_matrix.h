@@ -40,6 +40,8 @@ enum {
 
 typedef struct fgl_matrix {
    float m[16];
+   float inv[16];    /* Mesa's inverse for the matrix type (valid after
+                      * fgl_matrix_analyse; identity when singular) */
    unsigned flags;   /* MAT_FLAG_* geometry flags and MAT_DIRTY_* */
 } fgl_matrix;
 
@@ -55,9 +57,9 @@ void fgl_matrix_translate(fgl_matrix *mat, float x, float y, float z);
 void fgl_matrix_scale(fgl_matrix *mat, float x, float y, float z);
 void fgl_matrix_rotate(fgl_matrix *mat, float angle, float x, float y, float z);
 
-/* Recompute the geometry flags if they are dirty, as Mesa's
+/* Recompute the geometry flags and the inverse if they are dirty, as Mesa's
  * _math_matrix_analyse does before the matrix is used; MAT_FLAG_SINGULAR
- * records whether Mesa's inverse for the matrix's type succeeds. */
+ * records whether Mesa's inverse for the matrix's type failed. */
 void fgl_matrix_analyse(fgl_matrix *mat);
 
 /* True when the product with another 3D matrix may use the 3x4 multiply. */

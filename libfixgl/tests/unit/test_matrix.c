@@ -590,6 +590,61 @@ static void test_analyse(void)
    CHECK_FLAGS("clean matrix", m.flags, (unsigned)MAT_FLAG_PERSPECTIVE);
 }
 
+static const float identity16[16] = { 1, 0, 0, 0,  0, 1, 0, 0,  0, 0, 1, 0,  0, 0, 0, 1 };
+
+/* Inverses as Mesa computes them per matrix type (values and the singular
+ * flag checked against Mesa 22.3.6's m_matrix.c built alone). */
+static void test_inverse(void)
+{
+   /* pure translation: negated translation */
+   fgl_matrix m = fresh();
+   fgl_matrix_translate(&m, 1.0f, -2.0f, 4.0f);
+   fgl_matrix_analyse(&m);
+   const float want_t[16] = { 1, 0, 0, 0,  0, 1, 0, 0,  0, 0, 1, 0,  -1, 2, -4, 1 };
+   CHECK_MATRIX("inverse of translate(1,-2,4)", m.inv, want_t);
+
+   /* rotation by 90 degrees about z: the transpose */
+   m = fresh();
+   fgl_matrix_rotate(&m, 90.0f, 0.0f, 0.0f, 1.0f);
+   fgl_matrix_analyse(&m);
+   for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+         CHECK(m.inv[j * 4 + i] == m.m[i * 4 + j], "rotate inverse (%d,%d) = %a, want %a",
+               i, j, (double)m.inv[j * 4 + i], (double)m.m[i * 4 + j]);
+
+   /* scale without rotation: reciprocal diagonal, 1/3 in float */
+   m = fresh();
+   fgl_matrix_scale(&m, 2.0f, 4.0f, 3.0f);
+   fgl_matrix_analyse(&m);
+   CHECK(m.inv[0] == 0.5f && m.inv[5] == 0.25f && m.inv[10] == 1.0f / 3.0f && m.inv[15] == 1.0f,
+         "scale inverse diagonal %a %a %a", (double)m.inv[0], (double)m.inv[5], (double)m.inv[10]);
+
+   /* Perspective-type matrices use the general (pivoting) inverse: this one
+    * has a zero pivot, so it is singular and its inverse is the identity. */
+   const float persp[16] = { 0, 0, 0, 0,  0, 1, 0, 0,  0, 0, -2, -1,  0, 0, -3, 0 };
+   m = fresh();
+   fgl_matrix_loadf(&m, persp);
+   fgl_matrix_analyse(&m);
+   CHECK_FLAGS("singular perspective (Mesa: 0x85)", m.flags, 0x85u);
+   CHECK_MATRIX("identity inverse of a singular matrix", m.inv, identity16);
+
+   /* A general matrix with determinant 0 whose elimination leaves a rounding
+    * residue instead of an exact zero pivot: Mesa calls it invertible. */
+   const float gen[16] = { 3, -1, -1, -1,  1, -1, -2, -3,  -1, -1, 0, 1,  0, 1, 1, 1 };
+   m = fresh();
+   fgl_matrix_loadf(&m, gen);
+   fgl_matrix_analyse(&m);
+   CHECK(!(m.flags & MAT_FLAG_SINGULAR), "near-singular general matrix: flags 0x%x", m.flags);
+
+   /* A tiny diagonal: the cofactor determinant underflows, the pivots do not. */
+   const float tiny[16] = { 1e-12f, 0, 0, 0,  0, 1e-12f, 0, 0,  0, 0, 1e-12f, 0,  0, 0, 0, 1e-12f };
+   m = fresh();
+   fgl_matrix_loadf(&m, tiny);
+   fgl_matrix_analyse(&m);
+   CHECK(!(m.flags & MAT_FLAG_SINGULAR), "tiny diagonal: flags 0x%x", m.flags);
+   CHECK(m.inv[0] == 1.0f / 1e-12f, "tiny diagonal inverse %a", (double)m.inv[0]);
+}
+
 int main(void)
 {
    test_identity_and_load();
@@ -599,5 +654,6 @@ int main(void)
    test_rotate();
    test_multiply();
    test_analyse();
+   test_inverse();
    return check_report("unit-matrix");
 }
