@@ -49,7 +49,9 @@ enum {
 
 /* GL_CURRENT_BIT */
 struct fgl_current_attrib {
-   float Color[4];
+   /* every vbo attribute's value outside the vertex format: normal, colour
+    * and the materials (which GL groups with the lighting state) */
+   float Attrib[FGL_ATTR_COUNT][4];
 };
 
 /* GL_COLOR_BUFFER_BIT (clear colour so far) */

@@ -6,12 +6,29 @@
  * unsigned bytes use i/255.0f, other unsigned types multiply by the
  * reciprocal.  Double arguments are converted to float first.
  */
+#include <string.h>
+
 #include "main/groups.h"
 
 void fgl_init_current(struct fgl_context *ctx)
 {
-   for (int i = 0; i < 4; i++)
-      ctx->Current.Color[i] = 1.0f;
+   static const float init[FGL_ATTR_COUNT][4] = {
+      [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
+      [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
+      [FGL_ATTR_MAT_FRONT_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
+      [FGL_ATTR_MAT_BACK_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
+      [FGL_ATTR_MAT_FRONT_DIFFUSE] = { 0.8f, 0.8f, 0.8f, 1.0f },
+      [FGL_ATTR_MAT_BACK_DIFFUSE] = { 0.8f, 0.8f, 0.8f, 1.0f },
+      [FGL_ATTR_MAT_FRONT_SPECULAR] = { 0, 0, 0, 1 },
+      [FGL_ATTR_MAT_BACK_SPECULAR] = { 0, 0, 0, 1 },
+      [FGL_ATTR_MAT_FRONT_EMISSION] = { 0, 0, 0, 1 },
+      [FGL_ATTR_MAT_BACK_EMISSION] = { 0, 0, 0, 1 },
+      [FGL_ATTR_MAT_FRONT_SHININESS] = { 0, 0, 0, 0 },
+      [FGL_ATTR_MAT_BACK_SHININESS] = { 0, 0, 0, 0 },
+      [FGL_ATTR_MAT_FRONT_INDEXES] = { 0, 1, 1, 0 },
+      [FGL_ATTR_MAT_BACK_INDEXES] = { 0, 1, 1, 0 },
+   };
+   memcpy(ctx->Current.Attrib, init, sizeof(init));
 }
 
 /* ---- glBegin / glEnd ---- */

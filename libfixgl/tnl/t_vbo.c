@@ -18,10 +18,8 @@ bool fgl_vbo_init(struct fgl_vbo *vbo)
    memset(vbo, 0, sizeof(*vbo));
    vbo->vert_alloc = 1024;
    vbo->verts = malloc(vbo->vert_alloc * sizeof(*vbo->verts));
-   memcpy(vbo->current[FGL_ATTR_POS], attr_default, sizeof(attr_default));
-   /* GL's initial current colour is (1,1,1,1) */
-   for (int i = 0; i < 4; i++)
-      vbo->current[FGL_ATTR_COLOR0][i] = 1.0f;
+   for (int a = 0; a < FGL_ATTR_COUNT; a++)
+      memcpy(vbo->current[a], attr_default, sizeof(attr_default));
    return vbo->verts != NULL;
 }
 
@@ -224,7 +222,7 @@ void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, floa
    if (ctx->Vbo.attr_size[attr])
       clean_value(&ctx->Vbo, attr, out);
    else
-      memcpy(out, ctx->Current.Color, 4 * sizeof(float));
+      memcpy(out, ctx->Current.Attrib[attr], 4 * sizeof(float));
 }
 
 void fgl_vbo_flush_vertices(struct fgl_context *ctx)
@@ -234,8 +232,9 @@ void fgl_vbo_flush_vertices(struct fgl_context *ctx)
       vtx_flush(ctx, NULL, NULL);
    if (vbo->vertex_size) {
       /* vbo_exec_copy_to_current, then vbo_reset_all_attr */
-      if (vbo->attr_size[FGL_ATTR_COLOR0])
-         clean_value(vbo, FGL_ATTR_COLOR0, ctx->Current.Color);
+      for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
+         if (vbo->attr_size[a])
+            clean_value(vbo, (enum fgl_vbo_attr)a, ctx->Current.Attrib[a]);
       memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
       memset(vbo->active_size, 0, sizeof(vbo->active_size));
       vbo->vertex_size = 0;
@@ -279,7 +278,8 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
       return;
    struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
    memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
-   fgl_vbo_current(ctx, FGL_ATTR_COLOR0, dst->attr[FGL_ATTR_COLOR0]);
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
+      fgl_vbo_current(ctx, (enum fgl_vbo_attr)a, dst->attr[a]);
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
 }

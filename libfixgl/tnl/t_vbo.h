@@ -25,11 +25,31 @@
 
 struct fgl_context;
 
+/* The attributes of Mesa's vbo that fixed-function GL 1.x programs set
+ * through immediate mode.  Materials are attributes too: glMaterial goes
+ * through the vbo inside and outside glBegin/glEnd, so it takes part in the
+ * vertex format and its batching (Mesa's VBO_ATTRIB_MAT_*, MAT_ATTRIB_*
+ * order). */
 enum fgl_vbo_attr {
    FGL_ATTR_POS,
+   FGL_ATTR_NORMAL,
    FGL_ATTR_COLOR0,
+   FGL_ATTR_MAT_FRONT_AMBIENT,
+   FGL_ATTR_MAT_BACK_AMBIENT,
+   FGL_ATTR_MAT_FRONT_DIFFUSE,
+   FGL_ATTR_MAT_BACK_DIFFUSE,
+   FGL_ATTR_MAT_FRONT_SPECULAR,
+   FGL_ATTR_MAT_BACK_SPECULAR,
+   FGL_ATTR_MAT_FRONT_EMISSION,
+   FGL_ATTR_MAT_BACK_EMISSION,
+   FGL_ATTR_MAT_FRONT_SHININESS,
+   FGL_ATTR_MAT_BACK_SHININESS,
+   FGL_ATTR_MAT_FRONT_INDEXES,
+   FGL_ATTR_MAT_BACK_INDEXES,
    FGL_ATTR_COUNT,
 };
+
+#define FGL_ATTR_MAT_FIRST FGL_ATTR_MAT_FRONT_AMBIENT
 
 /* A stored vertex: every attribute as float[4]. */
 struct fgl_vbo_vertex {
@@ -51,7 +71,9 @@ struct fgl_vbo {
    unsigned active_size[FGL_ATTR_COUNT];/* components of the last call, as Mesa tracks it */
    unsigned vertex_size;                /* sum of attr_size, in floats */
    unsigned buffer_used;                /* bytes of the emulated buffer consumed */
-   float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute */
+   float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
+                                         * the format (ctx->Current.Attrib
+                                         * holds the others) */
 };
 
 bool fgl_vbo_init(struct fgl_vbo *vbo);
@@ -63,11 +85,13 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
 void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode);
 void fgl_vbo_end(struct fgl_context *ctx);
 
-/* FLUSH_VERTICES: draw what is stored and reset the vertex format. */
+/* FLUSH_VERTICES: draw what is stored, copy the format's attributes to
+ * ctx->Current.Attrib and reset the vertex format. */
 void fgl_vbo_flush_vertices(struct fgl_context *ctx);
 
 /* The current value of a non-position attribute as glGet reports it
- * (FLUSH_CURRENT: the stored components, then defaults). */
+ * (FLUSH_CURRENT: the stored components, then defaults; attributes not in
+ * the vertex format come from ctx->Current.Attrib). */
 void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, float out[4]);
 
 #endif
