@@ -114,6 +114,28 @@ COLOR_FUNCS(ui, GLuint, UINT_TO_FLOAT, 4)
 COLOR_FUNCS(f, GLfloat, IDENT, 3)
 COLOR_FUNCS(d, GLdouble, IDENT, 4)
 
+static inline void normal3(float x, float y, float z)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_vbo_attr(ctx, FGL_ATTR_NORMAL, 3, x, y, z, 1.0f);
+}
+
+/* glNormal3*: three components, integers normalized like colours
+ * (vbo_attrib_tmp.h) */
+#define NORMAL_FUNCS(suffix, type, CONV)                                        \
+   void GLAPIENTRY glNormal3##suffix(type x, type y, type z)                    \
+   { normal3(CONV(x), CONV(y), CONV(z)); }                                      \
+   void GLAPIENTRY glNormal3##suffix##v(const type *v)                          \
+   { if (v) normal3(CONV(v[0]), CONV(v[1]), CONV(v[2])); }
+
+NORMAL_FUNCS(b, GLbyte, BYTE_TO_FLOAT)
+NORMAL_FUNCS(s, GLshort, SHORT_TO_FLOAT)
+NORMAL_FUNCS(i, GLint, INT_TO_FLOAT)
+NORMAL_FUNCS(f, GLfloat, IDENT)
+NORMAL_FUNCS(d, GLdouble, IDENT)
+
 #define VERTEX_FUNCS(suffix, type)                                              \
    void GLAPIENTRY glVertex2##suffix(type x, type y)                            \
    { vertex4((GLfloat)x, (GLfloat)y, 0.0f, 1.0f, 2); }                          \

@@ -81,6 +81,10 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       fgl_vbo_current(ctx, FGL_ATTR_COLOR0, f);
       set_floats(val, V_FLOATN, f, 4);
       return true;
+   case GL_CURRENT_NORMAL:
+      fgl_vbo_current(ctx, FGL_ATTR_NORMAL, f);
+      set_floats(val, V_FLOATN, f, 3);   /* TYPE_FLOATN_3 */
+      return true;
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
