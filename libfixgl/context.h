@@ -68,9 +68,35 @@ struct fgl_depth_attrib {
    bool Mask;
 };
 
-/* GL_LIGHTING_BIT (shade model so far) */
+#define FGL_MAX_LIGHTS 8
+
+/* One light source, as glLight stores it (position and spot direction in
+ * eye space, transformed by the modelview at call time). */
+struct fgl_light {
+   float Ambient[4], Diffuse[4], Specular[4];
+   float EyePosition[4];
+   float SpotDirection[3];
+   float SpotExponent, SpotCutoff;
+   float CosCutoff;             /* cosf(cutoff), clamped to >= 0 */
+   float ConstantAttenuation, LinearAttenuation, QuadraticAttenuation;
+   bool Enabled;
+};
+
+struct fgl_light_model {
+   float Ambient[4];
+   bool LocalViewer, TwoSide;
+   GLenum ColorControl;         /* GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR */
+};
+
+/* GL_LIGHTING_BIT.  The material values are vbo attributes and live in
+ * ctx->Current.Attrib[FGL_ATTR_MAT_*], as Mesa's vbo keeps them current. */
 struct fgl_light_attrib {
    GLenum ShadeModel;
+   bool Enabled;                /* GL_LIGHTING */
+   struct fgl_light Light[FGL_MAX_LIGHTS];
+   struct fgl_light_model Model;
+   bool ColorMaterialEnabled;
+   GLenum ColorMaterialFace, ColorMaterialMode;
 };
 
 /* GL_TRANSFORM_BIT */
@@ -122,7 +148,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 59
+#define FGL_PENDING_CAPS 50
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */

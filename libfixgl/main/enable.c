@@ -13,8 +13,7 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
    GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
    GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_FOG,
-   GL_INDEX_LOGIC_OP, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4,
-   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LIGHTING, GL_LINE_SMOOTH,
+   GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH,
    GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
    GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
@@ -36,7 +35,14 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
          return &ctx->PendingCaps[i];
       }
    }
+   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + FGL_MAX_LIGHTS) {
+      *dirty = FGL_NEW_LIGHT;
+      return &ctx->Light.Light[cap - GL_LIGHT0].Enabled;
+   }
    switch (cap) {
+   case GL_LIGHTING:
+      *dirty = FGL_NEW_LIGHT;
+      return &ctx->Light.Enabled;
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;
       return &ctx->Depth.Test;

@@ -107,6 +107,27 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_SHADE_MODEL:
       set_ints(val, V_INT, 1, (int)ctx->Light.ShadeModel, 0, 0, 0);
       return true;
+   case GL_LIGHT_MODEL_AMBIENT:
+      set_floats(val, V_FLOATN, ctx->Light.Model.Ambient, 4);
+      return true;
+   case GL_LIGHT_MODEL_LOCAL_VIEWER:
+      set_ints(val, V_BOOL, 1, ctx->Light.Model.LocalViewer, 0, 0, 0);
+      return true;
+   case GL_LIGHT_MODEL_TWO_SIDE:
+      set_ints(val, V_BOOL, 1, ctx->Light.Model.TwoSide, 0, 0, 0);
+      return true;
+   case GL_LIGHT_MODEL_COLOR_CONTROL:
+      set_ints(val, V_INT, 1, (int)ctx->Light.Model.ColorControl, 0, 0, 0);
+      return true;
+   case GL_COLOR_MATERIAL_FACE:
+      set_ints(val, V_INT, 1, (int)ctx->Light.ColorMaterialFace, 0, 0, 0);
+      return true;
+   case GL_COLOR_MATERIAL_PARAMETER:
+      set_ints(val, V_INT, 1, (int)ctx->Light.ColorMaterialMode, 0, 0, 0);
+      return true;
+   case GL_MAX_LIGHTS:
+      set_ints(val, V_INT, 1, FGL_MAX_LIGHTS, 0, 0, 0);
+      return true;
    /* GL_TRANSFORM_BIT and matrices */
    case GL_MATRIX_MODE:
       set_ints(val, V_INT, 1, (int)ctx->Transform.MatrixMode, 0, 0, 0);
