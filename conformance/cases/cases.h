@@ -23,6 +23,7 @@ extern const fc_case fc_cases_query[];
 extern const fc_case fc_cases_vertex[];
 extern const fc_case fc_cases_readpix[];
 extern const fc_case fc_cases_errors[];
+extern const fc_case fc_cases_light[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);
