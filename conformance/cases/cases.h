@@ -28,6 +28,7 @@ extern const fc_case fc_cases_light_space[];
 extern const fc_case fc_cases_light_normal[];
 extern const fc_case fc_cases_light_mat[];
 extern const fc_case fc_cases_light_prim[];
+extern const fc_case fc_cases_light_api[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);
