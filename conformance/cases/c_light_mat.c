@@ -244,9 +244,14 @@ COLORMAT(cm_both_specular, GL_FRONT_AND_BACK, GL_SPECULAR)
 COLORMAT(cm_both_emission, GL_FRONT_AND_BACK, GL_EMISSION)
 COLORMAT(cm_both_amb_diff, GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE)
 
-/* Enabling GL_COLOR_MATERIAL copies the current colour into the material
- * at once (frame 1: no glColor after the enable); after glDisable the
- * material keeps it while the current colour changes (frame 2). */
+/* Enabling GL_COLOR_MATERIAL copies the current colour into the tracked
+ * material, and after glDisable the material keeps it while the current
+ * colour changes.  Frame 1: the front/back materials were just set with
+ * glMaterialfv (ribbon_setup) and nothing was drawn since; the oracle
+ * then keeps the glMaterialfv diffuse (its pending material update lands
+ * after the enable's copy of the colour), also for drawing.  Frame 2:
+ * disabled, another current colour.  Frame 3: enabled again with a new
+ * colour (no pending glMaterial now), then disabled. */
 static void colormat_enable_disable(fc_h *h)
 {
     ribbon_setup(h);
@@ -259,6 +264,14 @@ static void colormat_enable_disable(fc_h *h)
     fc_capture(h);
     glDisable(GL_COLOR_MATERIAL);
     glColor4f(0.1f, 0.9f, 0.2f, 1);
+    rec_colormat_state(h);
+    lt_clear();
+    ribbon_draw(NULL);
+    fc_capture(h);
+    glColor4f(0.2f, 0.3f, 0.9f, 1);
+    glEnable(GL_COLOR_MATERIAL);
+    glDisable(GL_COLOR_MATERIAL);
+    glColor4f(0.9f, 0.9f, 0.1f, 1);
     rec_colormat_state(h);
     lt_clear();
     ribbon_draw(NULL);
@@ -434,7 +447,7 @@ const fc_case fc_cases_light_mat[] = {
     FC_CASE_RGBA("lighting/colormat_both_emission", 64, 48, 1, "lighting color_material", cm_both_emission),
     FC_CASE_RGBA("lighting/colormat_both_ambient_and_diffuse", 64, 48, 1, "lighting color_material",
                  cm_both_amb_diff),
-    FC_CASE_RGBA("lighting/colormat_enable_disable", 64, 48, 2, "lighting color_material", colormat_enable_disable),
+    FC_CASE_RGBA("lighting/colormat_enable_disable", 64, 48, 3, "lighting color_material", colormat_enable_disable),
     FC_CASE_RGBA("lighting/colormat_switch_mode", 64, 48, 3, "lighting color_material material",
                  colormat_switch_mode),
     FC_CASE_RGBA("lighting/colormat_flat", 64, 48, 2, "lighting color_material shade", colormat_flat),
