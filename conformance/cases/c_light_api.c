@@ -311,6 +311,7 @@ static void light_model_roundtrip(fc_h *h)
     glLightModeliv(GL_LIGHT_MODEL_COLOR_CONTROL, &sep); fc_error(h, "color control iv");
     rec_model(h);
     glLightModelf(GL_LIGHT_MODEL_AMBIENT, 0.75f); fc_error(h, "glLightModelf(GL_LIGHT_MODEL_AMBIENT)");
+    rec_model(h);
     glLightModeli(GL_LIGHT_MODEL_AMBIENT, 1); fc_error(h, "glLightModeli(GL_LIGHT_MODEL_AMBIENT)");
     rec_model(h);
 }
