@@ -23,6 +23,12 @@ extern const fc_case fc_cases_query[];
 extern const fc_case fc_cases_vertex[];
 extern const fc_case fc_cases_readpix[];
 extern const fc_case fc_cases_errors[];
+extern const fc_case fc_cases_light[];
+extern const fc_case fc_cases_light_space[];
+extern const fc_case fc_cases_light_normal[];
+extern const fc_case fc_cases_light_mat[];
+extern const fc_case fc_cases_light_prim[];
+extern const fc_case fc_cases_light_api[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);
