@@ -222,6 +222,10 @@ void fc_run_case(const fc_case *c, FILE *out, int perturb)
                      h.frames, c->frames);
         }
     }
+    /* The oracle's OSMesaDestroyContext crashes when vertices are still
+     * queued (a glBegin/glEnd with nothing flushed since): flush first. */
+    if (made && OSMesaGetCurrentContext())
+        glFinish();
     if (h.ctx)
         OSMesaDestroyContext(h.ctx);
     free(h.buf);
