@@ -8,6 +8,7 @@
  * masks, clear depths and ranges; both shade models; odd viewports; every
  * glColor/glVertex entry-point variant. */
 #include "fc_random.h"
+#include "fc_random_shared.h"
 #include "fc_rng.h"
 #include "fc_trace.h"
 
@@ -16,25 +17,10 @@
 #include <stdio.h>
 #include <string.h>
 
-enum space { SP_PIXEL, SP_BOX, SP_FRUSTUM, SP_CLIP, SP_MATRIX };
-
-#define POOL 48
-
-struct scene {
-    fc_rng r;
-    int w, h;                   /* framebuffer */
-    int vw, vh;                 /* current viewport size */
-    enum space space;
-    double box[6];              /* SP_BOX: l r b t n f */
-    double fr[6];               /* SP_FRUSTUM: l r b t n f */
-    double pool[POOL][4];       /* earlier vertices, for shared edges */
-    int npool;
-};
-
-static const GLenum depth_funcs[8] = {
+const GLenum fcr_depth_funcs[8] = {
     GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS
 };
-static const GLenum modes[6] = {
+const GLenum fcr_modes[6] = {
     GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON
 };
 
@@ -63,7 +49,7 @@ static int is_short(double v) { return v == floor(v) && fabs(v) <= 32767; }
 
 /* Issues v (dim components used) through a random glVertex variant; the
  * integer variants are only used when the values are exact integers. */
-static void emit_vertex(struct scene *s, const double v[4], int dim)
+void fcr_emit_vertex(struct scene *s, const double v[4], int dim)
 {
     int vec = fc_rng_chance(&s->r, 40);
     int ints = 1;
@@ -98,7 +84,7 @@ static double int_value(fc_rng *r, double lo, double hi)
     }
 }
 
-static void emit_color(struct scene *s)
+void fcr_emit_color(struct scene *s)
 {
     static const double lim[6][2] = {
         { -128, 127 }, { -32768, 32767 }, { -2147483648.0, 2147483647.0 },
@@ -246,7 +232,7 @@ static int pick_vertex(struct scene *s, int style, int k, const double anchor[4]
 
 /* ---- state ------------------------------------------------------------ */
 
-static void random_viewport(struct scene *s)
+void fcr_viewport(struct scene *s)
 {
     fc_rng *r = &s->r;
     int x = 0, y = 0;
@@ -261,7 +247,7 @@ static void random_viewport(struct scene *s)
     glViewport(x, y, s->vw, s->vh);
 }
 
-static void random_depth_range(fc_rng *r)
+void fcr_depth_range(fc_rng *r)
 {
     static const double v[6] = { 0.0, 1.0, 0.5, 0.25, -0.5, 1.5 };
     if (fc_rng_chance(r, 60))
@@ -270,7 +256,7 @@ static void random_depth_range(fc_rng *r)
                  fc_rng_chance(r, 50) ? v[fc_rng_below(r, 6)] : fc_rng_unit(r));
 }
 
-static void random_matrix(fc_rng *r, double m[16], int perspective)
+void fcr_matrix(fc_rng *r, double m[16], int perspective)
 {
     for (int i = 0; i < 16; i++)
         m[i] = (float)fc_rng_real(r, -2, 2);
@@ -283,7 +269,7 @@ static void random_matrix(fc_rng *r, double m[16], int perspective)
     }
 }
 
-static void load_or_mult(fc_rng *r, const double m[16])
+void fcr_load_or_mult(fc_rng *r, const double m[16])
 {
     GLfloat f[16];
     for (int i = 0; i < 16; i++)
@@ -296,7 +282,7 @@ static void load_or_mult(fc_rng *r, const double m[16])
     }
 }
 
-static void random_projection(struct scene *s)
+void fcr_projection(struct scene *s)
 {
     fc_rng *r = &s->r;
     double m[16];
@@ -325,8 +311,8 @@ static void random_projection(struct scene *s)
     case SP_CLIP:
         break;
     case SP_MATRIX:
-        random_matrix(r, m, fc_rng_chance(r, 50));
-        load_or_mult(r, m);
+        fcr_matrix(r, m, fc_rng_chance(r, 50));
+        fcr_load_or_mult(r, m);
         break;
     }
     glMatrixMode(GL_MODELVIEW);
@@ -365,7 +351,7 @@ static void random_transform(struct scene *s)
             glRotated(a[3] * 200, a[0], a[1], a[2]);
         break;
     default:
-        random_matrix(r, m, 0);
+        fcr_matrix(r, m, 0);
         if (fc_rng_chance(r, 50)) {
             GLfloat f[16];
             for (int i = 0; i < 16; i++)
@@ -384,14 +370,14 @@ static void random_state_change(struct scene *s)
     if (fc_rng_chance(r, 20))
         glShadeModel(fc_rng_chance(r, 50) ? GL_FLAT : GL_SMOOTH);
     if (fc_rng_chance(r, 20))
-        glDepthFunc(depth_funcs[fc_rng_below(r, 8)]);
+        glDepthFunc(fcr_depth_funcs[fc_rng_below(r, 8)]);
     if (fc_rng_chance(r, 10))
         glDepthMask(fc_rng_chance(r, 70) ? GL_TRUE : GL_FALSE);
     if (fc_rng_chance(r, 8)) {
         if (fc_rng_chance(r, 70)) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
     }
     if (fc_rng_chance(r, 4))
-        random_depth_range(r);
+        fcr_depth_range(r);
 }
 
 /* ---- primitives ------------------------------------------------------- */
@@ -411,7 +397,7 @@ static int vertex_count(fc_rng *r, GLenum mode)
 static void random_primitive(struct scene *s)
 {
     fc_rng *r = &s->r;
-    GLenum mode = modes[fc_rng_below(r, 6)];
+    GLenum mode = fcr_modes[fc_rng_below(r, 6)];
     int style = (int)fc_rng_below(r, 6) % 4;       /* fresh, tiny, sliver, huge */
     int n = vertex_count(r, mode);
     double v[4], anchor[4] = { 0, 0, 0, 1 }, second[4] = { 0, 0, 0, 1 };
@@ -422,18 +408,18 @@ static void random_primitive(struct scene *s)
         if (k == 0) memcpy(anchor, v, sizeof anchor);
         if (k == 1) memcpy(second, v, sizeof second);
         if (fc_rng_chance(r, 90))
-            emit_color(s);
+            fcr_emit_color(s);
         if (dim < 4 && v[3] != 1)
             dim = 4;
         if (dim == 2 && v[2] != 0)
             dim = 3;
-        emit_vertex(s, v, dim);
+        fcr_emit_vertex(s, v, dim);
         memcpy(s->pool[s->npool++ % POOL], v, sizeof v);
     }
     glEnd();
 }
 
-static void random_clear(fc_rng *r, GLbitfield bits)
+void fcr_clear(fc_rng *r, GLbitfield bits)
 {
     static const double cd[6] = { 0.0, 1.0, 0.5, 1.0 / 3.0, -1.0, 2.0 };
     glClearColor((GLfloat)fc_rng_unit(r), (GLfloat)fc_rng_unit(r),
@@ -457,16 +443,16 @@ static void random_scene(fc_h *h)
     s.h = c->height;
     s.space = (enum space)(fc_rng_below(&s.r, 100) < 45 ? SP_PIXEL : 1 + fc_rng_below(&s.r, 4));
 
-    random_clear(&s.r, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    random_viewport(&s);
-    random_depth_range(&s.r);
-    random_projection(&s);
+    fcr_clear(&s.r, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    fcr_viewport(&s);
+    fcr_depth_range(&s.r);
+    fcr_projection(&s);
     glLoadIdentity();
     for (int k = fc_rng_chance(&s.r, s.space == SP_PIXEL ? 20 : 60) ? fc_rng_range(&s.r, 1, 3) : 0; k > 0; k--)
         random_transform(&s);
     if (fc_rng_chance(&s.r, 70))
         glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth_funcs[fc_rng_below(&s.r, 8)]);
+    glDepthFunc(fcr_depth_funcs[fc_rng_below(&s.r, 8)]);
     glShadeModel(fc_rng_chance(&s.r, 50) ? GL_FLAT : GL_SMOOTH);
 
     nprim = fc_rng_range(&s.r, 1, 12);
@@ -483,7 +469,7 @@ static void random_scene(fc_h *h)
         if (c->frames == 2 && p == nprim / 2) {
             fc_capture(h);
             if (fc_rng_chance(&s.r, 30))
-                random_clear(&s.r, fc_rng_chance(&s.r, 50) ? GL_COLOR_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
+                fcr_clear(&s.r, fc_rng_chance(&s.r, 50) ? GL_COLOR_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
         }
     }
     fc_capture(h);
