@@ -1,7 +1,8 @@
 /* fc_random.h - random differential scenes.  A scene is a case whose table
  * entry and GL call sequence are a pure function of (seed, index): both
  * renderers issue exactly the same calls and nothing depends on GL results.
- * Scene names are "random/s<seed>-i<index>". */
+ * Scene names are "random/s<seed>-i<index>" (tag random); the lit family
+ * (fc_random_lit.c) is "random-lit/s<seed>-i<index>" (tag random-lit). */
 #ifndef FC_RANDOM_H
 #define FC_RANDOM_H
 
@@ -17,5 +18,9 @@ int fc_random_parse(const char *name, uint64_t *seed, uint32_t *index);
 /* Fills the table entry of scene (seed, index); name must hold
  * FC_RANDOM_NAME_MAX bytes and outlives the entry. */
 void fc_random_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
+
+/* The same for the lit scenes. */
+int fc_random_lit_parse(const char *name, uint64_t *seed, uint32_t *index);
+void fc_random_lit_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
 
 #endif

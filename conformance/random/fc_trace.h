@@ -8,11 +8,15 @@
  *   FC_TRACE=/dev/stdout fixgl-render-osmesa --out /dev/null random/s1-i5
  * prints the scene as a program body that replays it alone (to minimise a
  * mismatch or turn it into a fixed case).
- * Generated list: keep it in step with the calls fc_random.c makes. */
+ * Generated list: keep it in step with the calls fc_random.c and
+ * fc_random_lit.c make (the lighting wrappers were added by hand; they call
+ * through the fc_lit_gl table, see fc_lit_gl.h, and a traced scene replays
+ * with plain GL calls). */
 #ifndef FC_TRACE_H
 #define FC_TRACE_H
 
 #include "fc_case.h"
+#include "fc_lit_gl.h"
 
 #include <stdio.h>
 
@@ -30,6 +34,21 @@ void fc_trace_vd(const char *name, const char *type, int n, const GLdouble *p);
 void fc_trace_vub(const char *name, const char *type, int n, const GLubyte *p);
 void fc_trace_vus(const char *name, const char *type, int n, const GLushort *p);
 void fc_trace_vui(const char *name, const char *type, int n, const GLuint *p);
+void fc_trace_enums_f(const char *name, int nenum, long long e0, long long e1, double v);
+void fc_trace_enums_i(const char *name, int nenum, long long e0, long long e1, long long v);
+void fc_trace_enums_vf(const char *name, int nenum, long long e0, long long e1, int n, const GLfloat *p);
+void fc_trace_enums_vi(const char *name, int nenum, long long e0, long long e1, int n, const GLint *p);
+
+/* Values a glLight*v / glLightModel*v / glMaterial*v pname takes. */
+static inline int fc_trace_count(GLenum pname)
+{
+    switch (pname) {
+    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: return 3;
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION:
+    case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT: return 4;
+    default: return 1;
+    }
+}
 
 static inline void fct_glVertex2s(GLshort a, GLshort b) { fc_trace_call("glVertex2s", 2, (double)a, (double)b, 0.0, 0.0); glVertex2s(a, b); }
 static inline void fct_glVertex2sv(const GLshort *p) { fc_trace_vs("glVertex2sv", "GLshort", 2, p); glVertex2sv(p); }
@@ -115,6 +134,31 @@ static inline void fct_glLoadMatrixf(const GLfloat *p) { fc_trace_vf("glLoadMatr
 static inline void fct_glLoadMatrixd(const GLdouble *p) { fc_trace_vd("glLoadMatrixd", "GLdouble", 16, p); glLoadMatrixd(p); }
 static inline void fct_glMultMatrixf(const GLfloat *p) { fc_trace_vf("glMultMatrixf", "GLfloat", 16, p); glMultMatrixf(p); }
 static inline void fct_glMultMatrixd(const GLdouble *p) { fc_trace_vd("glMultMatrixd", "GLdouble", 16, p); glMultMatrixd(p); }
+/* Lighting: called through fc_lit_gl (see fc_lit_gl.h). */
+static inline void fct_glLightf(GLenum a0, GLenum a1, GLfloat v) { fc_trace_enums_f("glLightf", 2, a0, a1, (double)v); fc_lit_gl.Lightf(a0, a1, v); }
+static inline void fct_glLightfv(GLenum a0, GLenum a1, const GLfloat *p) { fc_trace_enums_vf("glLightfv", 2, a0, a1, fc_trace_count(a1), p); fc_lit_gl.Lightfv(a0, a1, p); }
+static inline void fct_glLighti(GLenum a0, GLenum a1, GLint v) { fc_trace_enums_i("glLighti", 2, a0, a1, v); fc_lit_gl.Lighti(a0, a1, v); }
+static inline void fct_glLightiv(GLenum a0, GLenum a1, const GLint *p) { fc_trace_enums_vi("glLightiv", 2, a0, a1, fc_trace_count(a1), p); fc_lit_gl.Lightiv(a0, a1, p); }
+static inline void fct_glLightModelf(GLenum a0, GLfloat v) { fc_trace_enums_f("glLightModelf", 1, a0, 0, (double)v); fc_lit_gl.LightModelf(a0, v); }
+static inline void fct_glLightModelfv(GLenum a0, const GLfloat *p) { fc_trace_enums_vf("glLightModelfv", 1, a0, 0, fc_trace_count(a0), p); fc_lit_gl.LightModelfv(a0, p); }
+static inline void fct_glLightModeli(GLenum a0, GLint v) { fc_trace_enums_i("glLightModeli", 1, a0, 0, v); fc_lit_gl.LightModeli(a0, v); }
+static inline void fct_glLightModeliv(GLenum a0, const GLint *p) { fc_trace_enums_vi("glLightModeliv", 1, a0, 0, fc_trace_count(a0), p); fc_lit_gl.LightModeliv(a0, p); }
+static inline void fct_glMaterialf(GLenum a0, GLenum a1, GLfloat v) { fc_trace_enums_f("glMaterialf", 2, a0, a1, (double)v); fc_lit_gl.Materialf(a0, a1, v); }
+static inline void fct_glMaterialfv(GLenum a0, GLenum a1, const GLfloat *p) { fc_trace_enums_vf("glMaterialfv", 2, a0, a1, fc_trace_count(a1), p); fc_lit_gl.Materialfv(a0, a1, p); }
+static inline void fct_glMateriali(GLenum a0, GLenum a1, GLint v) { fc_trace_enums_i("glMateriali", 2, a0, a1, v); fc_lit_gl.Materiali(a0, a1, v); }
+static inline void fct_glMaterialiv(GLenum a0, GLenum a1, const GLint *p) { fc_trace_enums_vi("glMaterialiv", 2, a0, a1, fc_trace_count(a1), p); fc_lit_gl.Materialiv(a0, a1, p); }
+static inline void fct_glColorMaterial(GLenum a0, GLenum a1) { fc_trace_calli("glColorMaterial", 2, a0, a1, 0, 0); fc_lit_gl.ColorMaterial(a0, a1); }
+static inline void fct_glFrontFace(GLenum a0) { fc_trace_calli("glFrontFace", 1, a0, 0, 0, 0); fc_lit_gl.FrontFace(a0); }
+static inline void fct_glNormal3b(GLbyte a, GLbyte b, GLbyte c) { fc_trace_call("glNormal3b", 3, (double)a, (double)b, (double)c, 0.0); fc_lit_gl.Normal3b(a, b, c); }
+static inline void fct_glNormal3bv(const GLbyte *p) { fc_trace_vb("glNormal3bv", "GLbyte", 3, p); fc_lit_gl.Normal3bv(p); }
+static inline void fct_glNormal3s(GLshort a, GLshort b, GLshort c) { fc_trace_call("glNormal3s", 3, (double)a, (double)b, (double)c, 0.0); fc_lit_gl.Normal3s(a, b, c); }
+static inline void fct_glNormal3sv(const GLshort *p) { fc_trace_vs("glNormal3sv", "GLshort", 3, p); fc_lit_gl.Normal3sv(p); }
+static inline void fct_glNormal3i(GLint a, GLint b, GLint c) { fc_trace_call("glNormal3i", 3, (double)a, (double)b, (double)c, 0.0); fc_lit_gl.Normal3i(a, b, c); }
+static inline void fct_glNormal3iv(const GLint *p) { fc_trace_vi("glNormal3iv", "GLint", 3, p); fc_lit_gl.Normal3iv(p); }
+static inline void fct_glNormal3f(GLfloat a, GLfloat b, GLfloat c) { fc_trace_call("glNormal3f", 3, (double)a, (double)b, (double)c, 0.0); fc_lit_gl.Normal3f(a, b, c); }
+static inline void fct_glNormal3fv(const GLfloat *p) { fc_trace_vf("glNormal3fv", "GLfloat", 3, p); fc_lit_gl.Normal3fv(p); }
+static inline void fct_glNormal3d(GLdouble a, GLdouble b, GLdouble c) { fc_trace_call("glNormal3d", 3, (double)a, (double)b, (double)c, 0.0); fc_lit_gl.Normal3d(a, b, c); }
+static inline void fct_glNormal3dv(const GLdouble *p) { fc_trace_vd("glNormal3dv", "GLdouble", 3, p); fc_lit_gl.Normal3dv(p); }
 static inline void fct_fc_capture(fc_h *h) { fc_trace_text("/* fc_capture(h); */"); fc_capture(h); }
 
 #define glVertex2s fct_glVertex2s
@@ -201,6 +245,30 @@ static inline void fct_fc_capture(fc_h *h) { fc_trace_text("/* fc_capture(h); */
 #define glLoadMatrixd fct_glLoadMatrixd
 #define glMultMatrixf fct_glMultMatrixf
 #define glMultMatrixd fct_glMultMatrixd
+#define glLightf fct_glLightf
+#define glLightfv fct_glLightfv
+#define glLighti fct_glLighti
+#define glLightiv fct_glLightiv
+#define glLightModelf fct_glLightModelf
+#define glLightModelfv fct_glLightModelfv
+#define glLightModeli fct_glLightModeli
+#define glLightModeliv fct_glLightModeliv
+#define glMaterialf fct_glMaterialf
+#define glMaterialfv fct_glMaterialfv
+#define glMateriali fct_glMateriali
+#define glMaterialiv fct_glMaterialiv
+#define glColorMaterial fct_glColorMaterial
+#define glFrontFace fct_glFrontFace
+#define glNormal3b fct_glNormal3b
+#define glNormal3bv fct_glNormal3bv
+#define glNormal3s fct_glNormal3s
+#define glNormal3sv fct_glNormal3sv
+#define glNormal3i fct_glNormal3i
+#define glNormal3iv fct_glNormal3iv
+#define glNormal3f fct_glNormal3f
+#define glNormal3fv fct_glNormal3fv
+#define glNormal3d fct_glNormal3d
+#define glNormal3dv fct_glNormal3dv
 #define fc_capture fct_fc_capture
 
 #endif

@@ -4,9 +4,9 @@
  *   fixgl-render-X --list                       case names and tags
  *   fixgl-render-X [--perturb] [--crash=NAME] --out FILE NAME...
  *
- * --out runs the named cases (fixed names or random/s<seed>-i<index>) in
- * order and writes their records to FILE, after two FC_REC_INFO records with
- * GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
+ * --out runs the named cases (fixed names, random/s<seed>-i<index> or
+ * random-lit/s<seed>-i<index>) in order and writes their records to FILE,
+ * after two FC_REC_INFO records with GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
  * (SIGALRM ends the process).  Test-only switches for the harness
  * self-test: --perturb alters every captured frame (see fc_harness.h),
  * FC_TRACE=FILE prints the GL calls of random scenes to FILE (fc_trace.h).
@@ -73,6 +73,10 @@ static const fc_case *find_case(const char *name, fc_case *scratch, char *namebu
 
     if (fc_random_parse(name, &seed, &index)) {
         fc_random_case(seed, index, scratch, namebuf);
+        return scratch;
+    }
+    if (fc_random_lit_parse(name, &seed, &index)) {
+        fc_random_lit_case(seed, index, scratch, namebuf);
         return scratch;
     }
     for (size_t i = 0; i < fc_case_count(); i++)

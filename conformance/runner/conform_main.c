@@ -20,6 +20,7 @@ struct options {
     const char *tags[MAX_FILTERS], *globs[MAX_FILTERS];
     int ntags, nglobs;
     long random;                /* number of random scenes */
+    long random_lit;            /* number of random lit scenes */
     uint64_t seed;
     long index;                 /* first scene index; >= 0 replays from there */
     const char *report, *renderer[2], *fixgl_arg;
@@ -77,10 +78,14 @@ static void usage(FILE *f)
         "usage: fixgl-conform [options]\n"
         "  --tag T              only cases with tag T (repeatable)\n"
         "  --case GLOB          only cases whose name matches GLOB (repeatable)\n"
-        "  --random N           add N random scenes (default 100)\n"
-        "  --seed S             random seed (default 1)\n"
-        "  --index I            replay random scene I of seed S alone (with --random N: I..I+N-1)\n"
-        "  --no-random          no random scenes\n"
+        "  --random N           add N random scenes, random/s<S>-i<I> (default 100, or 0\n"
+        "                       when --random-lit is given)\n"
+        "  --random-lit N       add N random lit scenes, random-lit/s<S>-i<I> (tag random-lit;\n"
+        "                       default 0): lights, materials, light models, normals\n"
+        "  --seed S             random seed of both families (default 1)\n"
+        "  --index I            replay random scene I of seed S alone (with --random N or\n"
+        "                       --random-lit N: scenes I..I+N-1 of that family)\n"
+        "  --no-random          no plain random scenes\n"
         "  --jobs N             renderer processes at once (default: online CPUs)\n"
         "  --report DIR         report directory (default %s)\n"
         "  --oracle-renderer P  default %s\n"
@@ -94,7 +99,7 @@ static void usage(FILE *f)
 
 static int parse_args(int argc, char **argv, struct options *o)
 {
-    int explicit_random = 0;
+    int explicit_random = 0, explicit_lit = 0;
     memset(o, 0, sizeof *o);
     o->random = 100;
     o->seed = 1;
@@ -113,6 +118,7 @@ static int parse_args(int argc, char **argv, struct options *o)
         else if (strcmp(a, "--tag") == 0 && o->ntags < MAX_FILTERS) o->tags[o->ntags++] = v;
         else if (strcmp(a, "--case") == 0 && o->nglobs < MAX_FILTERS) o->globs[o->nglobs++] = v;
         else if (strcmp(a, "--random") == 0) { o->random = strtol(v, NULL, 10); explicit_random = 1; }
+        else if (strcmp(a, "--random-lit") == 0) { o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
         else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
         else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
@@ -124,10 +130,12 @@ static int parse_args(int argc, char **argv, struct options *o)
         else { fprintf(stderr, "fixgl-conform: unknown option %s\n", a); return 0; }
         i += takes;
     }
-    if (o->index >= 0 && !explicit_random)
+    if (explicit_lit && !explicit_random)
+        o->random = 0;
+    else if (o->index >= 0 && !explicit_random)
         o->random = 1;
     o->jobs = o->jobs < 1 ? 1 : o->jobs;
-    return o->random >= 0;
+    return o->random >= 0 && o->random_lit >= 0;
 }
 
 static int has_tag(const char *tags, const char *tag)
@@ -176,7 +184,8 @@ static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char 
     ++*n;
 }
 
-/* Fixed cases (from the oracle's --list) then random scenes; 0 on error. */
+/* Fixed cases (from the oracle's --list), random scenes, then random lit
+ * scenes; 0 on error. */
 static int build_items(const struct options *o, struct fc_item **out, size_t *n)
 {
     struct fc_item *items = NULL;
@@ -206,6 +215,14 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
         snprintf(replay, sizeof replay, "--seed %" PRIu64 " --index %" PRIu64, o->seed, index);
         if (selected(o, name, "random"))
             add_item(&items, n, &cap, name, "random", replay);
+    }
+    for (long i = 0; i < o->random_lit; i++) {
+        char name[96], replay[128];
+        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
+        snprintf(name, sizeof name, "random-lit/s%" PRIu64 "-i%" PRIu64, o->seed, index);
+        snprintf(replay, sizeof replay, "--random-lit 1 --seed %" PRIu64 " --index %" PRIu64, o->seed, index);
+        if (selected(o, name, "random-lit"))
+            add_item(&items, n, &cap, name, "random-lit", replay);
     }
     *out = items;
     return 1;
