@@ -1,7 +1,12 @@
 /* test_selftest.c - end-to-end self-test of the harness with the oracle
  * renderer on both sides.
  *   argv: fixgl-conform, fixgl-render-osmesa, scratch directory
+ *         [, fixgl-render-fixgl]
  * 1. all fixed cases (>= 40 core) and 50 random scenes: every case exact;
+ *    50 random lit scenes (random-lit/s7-i*): every scene exact, so the lit
+ *    generator is deterministic and two renderer processes draw the same;
+ * 1b. with fixgl-render-fixgl: both renderers trace the same GL calls
+ *    (FC_TRACE) for 40 lit and 10 plain random scenes;
  * 2. --perturb on the "fixgl" side: the chosen cases differ by exactly one
  *    pixel (channel diff 64) and one depth value per frame, with heat maps;
  * 3. --crash=NAME: that case is an error and the renderer restarts for the
@@ -17,17 +22,24 @@ static int failures;
 #define CHECK(cond) do { if (!(cond)) { fprintf(stderr, "%s:%d: CHECK failed: %s\n", \
                                                  __FILE__, __LINE__, #cond); failures++; } } while (0)
 
-static int run(char *const *argv)
+static int run_env(char *const *argv, const char *trace)
 {
     int status;
     pid_t pid = fork();
     if (pid == 0) {
+        if (trace)
+            setenv("FC_TRACE", trace, 1);
         execv(argv[0], argv);
         _exit(127);
     }
     if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status))
         return -1;
     return WEXITSTATUS(status);
+}
+
+static int run(char *const *argv)
+{
+    return run_env(argv, NULL);
 }
 
 static char *slurp(const char *dir, const char *name)
@@ -84,11 +96,12 @@ static int file_nonempty(const char *dir, const char *name)
 
 int main(int argc, char **argv)
 {
-    char dir[3][1024], obj[2048], *json;
-    if (argc != 4) {
-        fprintf(stderr, "usage: %s fixgl-conform fixgl-render-osmesa scratch-dir\n", argv[0]);
+    char dir[4][1024], obj[2048], *json;
+    if (argc != 4 && argc != 5) {
+        fprintf(stderr, "usage: %s fixgl-conform fixgl-render-osmesa scratch-dir [fixgl-render-fixgl]\n", argv[0]);
         return 2;
     }
+    snprintf(dir[3], sizeof dir[3], "%s/lit", argv[3]);
     for (int i = 0; i < 3; i++)
         snprintf(dir[i], sizeof dir[i], "%s/%s", argv[3], i == 0 ? "exact" : i == 1 ? "perturb" : "crash");
 
@@ -105,6 +118,45 @@ int main(int argc, char **argv)
         CHECK(count(json, "\"status\": \"exact\"") == cases);
         CHECK(strstr(json, "\"oracle\": \"llvmpipe") != NULL);
         free(json);
+    }
+    {   /* 1. random lit scenes, oracle against itself */
+        char *a[] = { argv[1], "--random-lit", "50", "--seed", "7", "--tag", "random-lit", "--jobs", "2",
+                      "--oracle-renderer", argv[2], "--fixgl-renderer", argv[2], "--report", dir[3], NULL };
+        CHECK(run(a) == 0);
+        json = slurp(dir[3], "summary.json");
+        CHECK(count(json, "{\"name\": ") == 50);
+        CHECK(count(json, "\"tags\": [\"random-lit\"]") == 50);
+        CHECK(count(json, "\"name\": \"random-lit/s7-i49\"") == 1);
+        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{\"name\": "));
+        free(json);
+    }
+    if (argc == 5) {   /* 1b. the oracle and fixgl renderers issue the same calls */
+        char out[2][1100], trace[2][1100], *text[2];
+        char *a[2][56];
+        for (int s = 0; s < 2; s++) {
+            int k = 0;
+            snprintf(out[s], sizeof out[s], "%s/trace-%d.bin", dir[3], s);
+            snprintf(trace[s], sizeof trace[s], "%s/trace-%d.txt", dir[3], s);
+            a[s][k++] = argv[s == 0 ? 2 : 4];
+            a[s][k++] = "--out";
+            a[s][k++] = out[s];
+            for (int i = 0; i < 50; i++) {
+                static char names[50][40];
+                if (i < 40)
+                    snprintf(names[i], sizeof names[i], "random-lit/s11-i%d", 3 * i);
+                else
+                    snprintf(names[i], sizeof names[i], "random/s11-i%d", i);
+                a[s][k++] = names[i];
+            }
+            a[s][k] = NULL;
+            CHECK(run_env(a[s], trace[s]) == 0);
+            text[s] = slurp(dir[3], s == 0 ? "trace-0.txt" : "trace-1.txt");
+        }
+        CHECK(strlen(text[0]) > 100000);
+        CHECK(count(text[0], "glLightfv") > 40 && count(text[0], "glNormal3") > 1000);
+        CHECK(strcmp(text[0], text[1]) == 0);
+        free(text[0]);
+        free(text[1]);
     }
     {   /* 2. perturbed: one pixel and one depth value per frame */
         char *a[] = { argv[1], "--no-random", "--case", "core/fill_rule_square", "--case", "core/depth_range",
@@ -146,6 +198,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "%d check(s) failed; reports under %s\n", failures, argv[3]);
         return 1;
     }
-    printf("harness self-test passed; reports: %s/{exact,perturb,crash}/index.html\n", argv[3]);
+    printf("harness self-test passed; reports: %s/{exact,lit,perturb,crash}/index.html\n", argv[3]);
     return 0;
 }
