@@ -13,8 +13,22 @@
  *   soup    10,000 random flat-coloured triangles, orthographic, depth test
  *   sphere  a smooth-coloured sphere of 20,000 triangles, perspective,
  *           depth test
+ *   lit200  a smooth-shaded lit sphere of 200 triangles (glNormal3fv per
+ *           vertex), one directional light with specular, perspective,
+ *           depth test
+ *   lit20k  the same sphere with 20,000 triangles
+ *   gears   three gears as glxgears draws them (quad strips and quads, flat
+ *           and smooth shading, glNormal3f), one directional light,
+ *           GL_NORMALIZE, GL_CULL_FACE, depth test
+ *
+ * The lighting entry points (glLightfv, glMaterialfv, glNormal3f[v]) are
+ * taken from OSMesaGetProcAddress in both builds, so a library that does
+ * not implement them yet still links: fixgl hands out a no-op stub for a
+ * gl* name it lacks (as Mesa's glapi does), draws the lit scenes unlit and
+ * the "same" column says no. The program says so on stderr.
  *
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
+ * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
  * Output, one line per scene:  scene NAME fps X frames N checksum C
  * The checksum (FNV-1a of the last frame) tells whether both libraries drew
  * the same image.
@@ -26,6 +40,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #define WIDTH 1024
@@ -33,6 +48,8 @@
 #define SOUP_TRIANGLES 10000
 #define SPHERE_STACKS 100 /* 2 * STACKS * SLICES = 20,000 triangles */
 #define SPHERE_SLICES 100
+#define LIT_SMALL_STACKS 10 /* 200 triangles */
+#define LIT_SMALL_SLICES 10
 #define WARMUP_SECONDS 0.3
 
 /* Vertex with colour, as the scenes submit it. */
@@ -43,6 +60,53 @@ struct vertex {
 
 static struct vertex soup[SOUP_TRIANGLES * 3];
 static struct vertex sphere[SPHERE_STACKS * SPHERE_SLICES * 6];
+
+/* Vertex with normal, for the lit scenes. */
+struct lit_vertex {
+  float pos[3];
+  float normal[3];
+};
+
+static struct lit_vertex lit_small[LIT_SMALL_STACKS * LIT_SMALL_SLICES * 6];
+static struct lit_vertex lit_large[SPHERE_STACKS * SPHERE_SLICES * 6];
+
+/* Lighting entry points (see the top comment). */
+static struct {
+  void (GLAPIENTRY *Lightfv)(GLenum, GLenum, const GLfloat *);
+  void (GLAPIENTRY *Materialfv)(GLenum, GLenum, const GLfloat *);
+  void (GLAPIENTRY *Materialf)(GLenum, GLenum, GLfloat);
+  void (GLAPIENTRY *Normal3f)(GLfloat, GLfloat, GLfloat);
+  void (GLAPIENTRY *Normal3fv)(const GLfloat *);
+} gl;
+
+/* Fills `gl`; warns about the functions that are no-op stubs (the pointer
+ * handed out for a name no library has). */
+static int load_lighting(void)
+{
+  static const char *names[5] = { "glLightfv", "glMaterialfv", "glMaterialf", "glNormal3f",
+                                   "glNormal3fv" };
+  OSMESAproc procs[5], stub = OSMesaGetProcAddress("glFixglBenchNoSuchFunction");
+  char stubs[128] = "";
+  for (int i = 0; i < 5; i++) {
+    procs[i] = OSMesaGetProcAddress(names[i]);
+    if (!procs[i]) {
+      fprintf(stderr, "bench: OSMesaGetProcAddress(\"%s\") is NULL\n", names[i]);
+      return 0;
+    }
+    if (procs[i] == stub) {
+      strcat(stubs, " ");
+      strcat(stubs, names[i]);
+    }
+  }
+  if (stubs[0])
+    fprintf(stderr, "bench: note: no-op stubs in this library, lit scenes drawn unlit:%s\n", stubs);
+  gl.Lightfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[0];
+  gl.Materialfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[1];
+  gl.Materialf = (void (GLAPIENTRY *)(GLenum, GLenum, GLfloat))procs[2];
+  gl.Normal3f = (void (GLAPIENTRY *)(GLfloat, GLfloat, GLfloat))procs[3];
+  gl.Normal3fv = (void (GLAPIENTRY *)(const GLfloat *))procs[4];
+  return 1;
+}
 
 /* Deterministic generator (xorshift32), so both builds draw the same soup. */
 static uint32_t rng_state = 0x12345678u;
@@ -105,6 +169,171 @@ static void build_sphere(void)
   }
 }
 
+/* Unit sphere with its normals, stacks x slices cells of two triangles. */
+static void build_lit_sphere(struct lit_vertex *out, int stacks, int slices)
+{
+  const float pi = 3.14159265f;
+  struct lit_vertex *v = out;
+  for (int i = 0; i < stacks; i++) {
+    for (int j = 0; j < slices; j++) {
+      struct lit_vertex c[4];
+      static const int di[4] = { 0, 1, 1, 0 }, dj[4] = { 0, 0, 1, 1 };
+      for (int k = 0; k < 4; k++) {
+        float theta = pi * (float)(i + di[k]) / (float)stacks;
+        float phi = 2.0f * pi * (float)(j + dj[k]) / (float)slices;
+        c[k].pos[0] = c[k].normal[0] = sinf(theta) * cosf(phi);
+        c[k].pos[1] = c[k].normal[1] = cosf(theta);
+        c[k].pos[2] = c[k].normal[2] = sinf(theta) * sinf(phi);
+      }
+      *v++ = c[0], *v++ = c[1], *v++ = c[2];
+      *v++ = c[0], *v++ = c[2], *v++ = c[3];
+    }
+  }
+}
+
+/* glxgears' gear, recorded once and replayed with glBegin/glEnd every
+ * frame (glxgears compiles it into a display list). */
+enum { OP_BEGIN, OP_END, OP_NORMAL, OP_VERTEX, OP_SHADE };
+struct op {
+  int op;
+  GLenum mode;
+  float v[3];
+};
+#define GEAR_OPS 4096
+static struct op gears_ops[3][GEAR_OPS];
+static int gears_nops[3];
+static struct op *rec;
+static int *rec_n;
+
+static void rec_op(int op, GLenum mode, double x, double y, double z)
+{
+  if (*rec_n >= GEAR_OPS) {
+    fprintf(stderr, "bench: gear too large\n");
+    exit(1);
+  }
+  struct op *o = &rec[(*rec_n)++];
+  o->op = op;
+  o->mode = mode;
+  o->v[0] = (float)x, o->v[1] = (float)y, o->v[2] = (float)z;
+}
+
+#define G_BEGIN(m) rec_op(OP_BEGIN, m, 0, 0, 0)
+#define G_END() rec_op(OP_END, 0, 0, 0, 0)
+#define G_NORMAL(x, y, z) rec_op(OP_NORMAL, 0, x, y, z)
+#define G_VERTEX(x, y, z) rec_op(OP_VERTEX, 0, x, y, z)
+#define G_SHADE(m) rec_op(OP_SHADE, m, 0, 0, 0)
+
+static void build_gear(int which, double inner_radius, double outer_radius, double width,
+                       int teeth, double tooth_depth)
+{
+  const double pi = 3.14159265358979323846;
+  double r0 = inner_radius, r1 = outer_radius - tooth_depth / 2.0;
+  double r2 = outer_radius + tooth_depth / 2.0, da = 2.0 * pi / teeth / 4.0;
+  double angle, u, v, len;
+  rec = gears_ops[which];
+  rec_n = &gears_nops[which];
+
+  G_SHADE(GL_FLAT);
+  G_NORMAL(0.0, 0.0, 1.0);
+  G_BEGIN(GL_QUAD_STRIP);                        /* front face */
+  for (int i = 0; i <= teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_VERTEX(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+    if (i < teeth) {
+      G_VERTEX(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+      G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+    }
+  }
+  G_END();
+  G_BEGIN(GL_QUADS);                             /* front sides of teeth */
+  for (int i = 0; i < teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+    G_VERTEX(r2 * cos(angle + da), r2 * sin(angle + da), width * 0.5);
+    G_VERTEX(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), width * 0.5);
+    G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+  }
+  G_END();
+  G_NORMAL(0.0, 0.0, -1.0);
+  G_BEGIN(GL_QUAD_STRIP);                        /* back face */
+  for (int i = 0; i <= teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+    G_VERTEX(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+    if (i < teeth) {
+      G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+      G_VERTEX(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+    }
+  }
+  G_END();
+  G_BEGIN(GL_QUADS);                             /* back sides of teeth */
+  for (int i = 0; i < teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+    G_VERTEX(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), -width * 0.5);
+    G_VERTEX(r2 * cos(angle + da), r2 * sin(angle + da), -width * 0.5);
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+  }
+  G_END();
+  G_BEGIN(GL_QUAD_STRIP);                        /* outward faces of teeth */
+  for (int i = 0; i < teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+    G_VERTEX(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+    u = r2 * cos(angle + da) - r1 * cos(angle);
+    v = r2 * sin(angle + da) - r1 * sin(angle);
+    len = sqrt(u * u + v * v);
+    u /= len;
+    v /= len;
+    G_NORMAL(v, -u, 0.0);
+    G_VERTEX(r2 * cos(angle + da), r2 * sin(angle + da), width * 0.5);
+    G_VERTEX(r2 * cos(angle + da), r2 * sin(angle + da), -width * 0.5);
+    G_NORMAL(cos(angle), sin(angle), 0.0);
+    G_VERTEX(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), width * 0.5);
+    G_VERTEX(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), -width * 0.5);
+    u = r1 * cos(angle + 3 * da) - r2 * cos(angle + 2 * da);
+    v = r1 * sin(angle + 3 * da) - r2 * sin(angle + 2 * da);
+    G_NORMAL(v, -u, 0.0);                        /* not unit: GL_NORMALIZE */
+    G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+    G_VERTEX(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+    G_NORMAL(cos(angle), sin(angle), 0.0);
+  }
+  G_VERTEX(r1 * cos(0.0), r1 * sin(0.0), width * 0.5);
+  G_VERTEX(r1 * cos(0.0), r1 * sin(0.0), -width * 0.5);
+  G_END();
+  G_SHADE(GL_SMOOTH);
+  G_BEGIN(GL_QUAD_STRIP);                        /* inside radius cylinder */
+  for (int i = 0; i <= teeth; i++) {
+    angle = i * 2.0 * pi / teeth;
+    G_NORMAL(-cos(angle), -sin(angle), 0.0);
+    G_VERTEX(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+    G_VERTEX(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+  }
+  G_END();
+}
+
+static void replay_gear(int which)
+{
+  const struct op *o = gears_ops[which];
+  for (int i = 0; i < gears_nops[which]; i++, o++) {
+    switch (o->op) {
+    case OP_BEGIN: glBegin(o->mode); break;
+    case OP_END: glEnd(); break;
+    case OP_NORMAL: gl.Normal3f(o->v[0], o->v[1], o->v[2]); break;
+    case OP_VERTEX: glVertex3f(o->v[0], o->v[1], o->v[2]); break;
+    default: glShadeModel(o->mode); break;
+    }
+  }
+}
+
+static void build_gears(void)
+{
+  build_gear(0, 1.0, 4.0, 1.0, 20, 0.7);
+  build_gear(1, 0.5, 2.0, 2.0, 10, 0.7);
+  build_gear(2, 1.3, 2.0, 0.5, 10, 0.7);
+}
+
 static void submit(const struct vertex *v, int count)
 {
   glBegin(GL_TRIANGLES);
@@ -143,6 +372,114 @@ static void draw_sphere(void)
   glFinish();
 }
 
+static void submit_lit(const struct lit_vertex *v, int count)
+{
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < count; i++) {
+    gl.Normal3fv(v[i].normal);
+    glVertex3fv(v[i].pos);
+  }
+  glEnd();
+}
+
+/* One directional light with specular on a shiny orange material; the
+ * modelview is a translation and a rotation (llvmpipe lights such a scene
+ * in object space). Lighting is switched off again for the other scenes. */
+static void draw_lit_sphere(const struct lit_vertex *v, int count)
+{
+  static const GLfloat light_pos[4] = { 1.0f, 1.0f, 2.0f, 0.0f };
+  static const GLfloat white[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+  static const GLfloat diffuse[4] = { 0.9f, 0.5f, 0.2f, 1.0f };
+  static const GLfloat ambient[4] = { 0.3f, 0.15f, 0.05f, 1.0f };
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.48, 0.48, -0.36, 0.36, 1.0, 10.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  gl.Lightfv(GL_LIGHT0, GL_POSITION, light_pos);
+  gl.Lightfv(GL_LIGHT0, GL_DIFFUSE, white);
+  gl.Lightfv(GL_LIGHT0, GL_SPECULAR, white);
+  gl.Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
+  gl.Materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+  gl.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, white);
+  gl.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0f);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glTranslatef(0.0f, 0.0f, -3.0f);
+  glRotatef(30.0f, 1.0f, 1.0f, 0.0f);
+  glShadeModel(GL_SMOOTH);
+  submit_lit(v, count);
+  glDisable(GL_LIGHTING);
+  glFinish();
+}
+
+static void draw_lit200(void)
+{
+  draw_lit_sphere(lit_small, LIT_SMALL_STACKS * LIT_SMALL_SLICES * 6);
+}
+
+static void draw_lit20k(void)
+{
+  draw_lit_sphere(lit_large, SPHERE_STACKS * SPHERE_SLICES * 6);
+}
+
+/* glxgears' frame, at a fixed gear angle (the last frame is compared). */
+static void draw_gears(void)
+{
+  static const GLfloat pos[4] = { 5.0f, 5.0f, 10.0f, 0.0f };
+  static const GLfloat red[4] = { 0.8f, 0.1f, 0.0f, 1.0f };
+  static const GLfloat green[4] = { 0.0f, 0.8f, 0.2f, 1.0f };
+  static const GLfloat blue[4] = { 0.2f, 0.2f, 1.0f, 1.0f };
+  const GLfloat angle = 12.0f;
+  const double h = (double)HEIGHT / (double)WIDTH;
+
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-1.0, 1.0, -h, h, 5.0, 60.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  gl.Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  glEnable(GL_CULL_FACE);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_NORMALIZE);
+  glTranslatef(0.0f, 0.0f, -40.0f);
+  glPushMatrix();
+  glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+  glRotatef(30.0f, 0.0f, 1.0f, 0.0f);
+  glRotatef(0.0f, 0.0f, 0.0f, 1.0f);
+
+  glPushMatrix();
+  glTranslatef(-3.0f, -2.0f, 0.0f);
+  glRotatef(angle, 0.0f, 0.0f, 1.0f);
+  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
+  replay_gear(0);
+  glPopMatrix();
+
+  glPushMatrix();
+  glTranslatef(3.1f, -2.0f, 0.0f);
+  glRotatef(-2.0f * angle - 9.0f, 0.0f, 0.0f, 1.0f);
+  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
+  replay_gear(1);
+  glPopMatrix();
+
+  glPushMatrix();
+  glTranslatef(-3.1f, 4.2f, 0.0f);
+  glRotatef(-2.0f * angle - 25.0f, 0.0f, 0.0f, 1.0f);
+  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
+  replay_gear(2);
+  glPopMatrix();
+
+  glPopMatrix();
+  glDisable(GL_NORMALIZE);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_CULL_FACE);
+  glShadeModel(GL_SMOOTH);
+  glFinish();
+}
+
 static double now(void)
 {
   struct timespec ts;
@@ -157,6 +494,26 @@ static uint32_t checksum(const unsigned char *buf)
   for (size_t i = 0; i < (size_t)WIDTH * HEIGHT * 4; i++)
     h = (h ^ buf[i]) * 16777619u;
   return h;
+}
+
+/* FIXGL_BENCH_DUMP=DIR: the frame as DIR/NAME.ppm, top row first. */
+static void dump(const char *name, const unsigned char *buf)
+{
+  const char *dir = getenv("FIXGL_BENCH_DUMP");
+  char path[1024];
+  FILE *f;
+  if (!dir)
+    return;
+  snprintf(path, sizeof path, "%s/%s.ppm", dir, name);
+  if (!(f = fopen(path, "wb"))) {
+    perror(path);
+    return;
+  }
+  fprintf(f, "P6\n%d %d\n255\n", WIDTH, HEIGHT);
+  for (int y = HEIGHT - 1; y >= 0; y--)
+    for (int x = 0; x < WIDTH; x++)
+      fwrite(buf + 4 * ((size_t)y * WIDTH + (size_t)x), 1, 3, f);
+  fclose(f);
 }
 
 /* Warms up, then counts whole frames until `seconds` have passed. */
@@ -179,6 +536,7 @@ static void run_scene(const char *name, void (*frame)(void), double seconds,
   printf("scene %s fps %.2f frames %ld checksum %08x\n", name, (double)frames / elapsed,
          frames, (unsigned)checksum(buf));
   fflush(stdout);
+  dump(name, buf);
 }
 
 int main(int argc, char **argv)
@@ -200,10 +558,18 @@ int main(int argc, char **argv)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
 
+  if (!load_lighting())
+    return 1;
   build_soup();
   build_sphere();
+  build_lit_sphere(lit_small, LIT_SMALL_STACKS, LIT_SMALL_SLICES);
+  build_lit_sphere(lit_large, SPHERE_STACKS, SPHERE_SLICES);
+  build_gears();
   run_scene("soup", draw_soup, seconds, buf);
   run_scene("sphere", draw_sphere, seconds, buf);
+  run_scene("lit200", draw_lit200, seconds, buf);
+  run_scene("lit20k", draw_lit20k, seconds, buf);
+  run_scene("gears", draw_gears, seconds, buf);
 
   GLenum err = glGetError();
   OSMesaDestroyContext(ctx);
