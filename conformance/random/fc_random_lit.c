@@ -594,7 +594,7 @@ static int to_object(const struct lit *L, const double eye[4], double obj[4])
     return 1;
 }
 
-static void random_light(struct lit *L, GLenum light, int nlights)
+static void random_light(struct lit *L, GLenum light, int nlights, int first)
 {
     fc_rng *r = &L->s.r, *K = &L->k;
     double scale = fc_rng_real(r, 0.9, 1.5) / sqrt((double)nlights);
@@ -605,7 +605,7 @@ static void random_light(struct lit *L, GLenum light, int nlights)
     int cutoff = (int)fc_rng_below(K, 100);
     int att = fc_rng_chance(K, 45), att0 = (int)fc_rng_below(K, 10);
     int att1 = fc_rng_chance(K, 60), att2 = fc_rng_chance(K, 50), att_none = fc_rng_chance(K, 90);
-    int enable = fc_rng_chance(K, 93);
+    int enable = fc_rng_chance(K, 93) || first;   /* at least one light on */
     double v[4], eye[4], obj[4], dir[3], dist = 0;
 
     light_modelview(L);
@@ -1157,7 +1157,7 @@ static void random_patch(struct lit *L, int npatches)
             random_npolicy(L, &np);
     }
     if (place) {                    /* a place of its own in the region (scaled) */
-        double sc = npatches > 1 ? fc_rng_real(r, 0.5, 0.8) : fc_rng_real(r, 0.7, 1.0);
+        double sc = npatches > 1 ? fc_rng_real(r, 0.55, 0.85) : fc_rng_real(r, 0.75, 1.0);
         int use_d = fc_rng_chance(r, 30);
         double t[3], a;
         lt_push(L);
@@ -1279,7 +1279,7 @@ static void place_region(struct lit *L)
         L->c[0] = s->vw * fc_rng_real(r, 0.35, 0.65);
         L->c[1] = s->vh * fc_rng_real(r, 0.35, 0.65);
         L->c[2] = 0;
-        L->rxy = (s->vw < s->vh ? s->vw : s->vh) * fc_rng_real(r, 0.3, 0.5);
+        L->rxy = (s->vw < s->vh ? s->vw : s->vh) * fc_rng_real(r, 0.35, 0.55);
         L->rz = 0.9;
         break;
     case SP_BOX: {
@@ -1287,7 +1287,7 @@ static void place_region(struct lit *L)
         L->c[0] = 0.5 * (s->box[0] + s->box[1]);
         L->c[1] = 0.5 * (s->box[2] + s->box[3]);
         L->c[2] = -0.5 * (s->box[4] + s->box[5]);
-        L->rxy = 0.5 * (wx < wy ? wx : wy) * fc_rng_real(r, 0.5, 0.9);
+        L->rxy = 0.5 * (wx < wy ? wx : wy) * fc_rng_real(r, 0.65, 1.0);
         L->rz = 0.45 * fabs(s->box[5] - s->box[4]);
         break;
     }
@@ -1298,7 +1298,7 @@ static void place_region(struct lit *L)
         L->c[0] = d * (s->fr[0] + s->fr[1]) / (2 * n);
         L->c[1] = d * (s->fr[2] + s->fr[3]) / (2 * n);
         L->c[2] = -d;
-        L->rxy = (hw < hh ? hw : hh) * fc_rng_real(r, 0.5, 0.9);
+        L->rxy = (hw < hh ? hw : hh) * fc_rng_real(r, 0.65, 1.0);
         L->rz = 0.9 * ((d - n) < (f - d) ? (d - n) : (f - d));
         break;
     }
@@ -1416,7 +1416,7 @@ static void lit_scene(fc_h *h)
         order[j] = t;
     }
     for (int i = 0; i < nlights; i++)
-        random_light(&L, order[i], nlights);
+        random_light(&L, order[i], nlights, i == 0);
     if (!L.lighting) {
         glEnable(GL_LIGHTING);
         L.lighting = 1;
