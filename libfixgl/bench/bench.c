@@ -24,8 +24,8 @@
  * The lighting entry points (glLightfv, glMaterialfv, glNormal3f[v]) are
  * taken from OSMesaGetProcAddress in both builds, so a library that does
  * not implement them yet still links: fixgl hands out a no-op stub for a
- * gl* name it lacks (as Mesa's glapi does), draws the lit scenes unlit and
- * the "same" column says no. The program says so on stderr.
+ * gl* name it lacks (as Mesa's glapi does); the program lists such stubs on
+ * stderr. Until fixgl lights, the lit scenes' "same" column says no.
  *
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
@@ -99,7 +99,7 @@ static int load_lighting(void)
     }
   }
   if (stubs[0])
-    fprintf(stderr, "bench: note: no-op stubs in this library, lit scenes drawn unlit:%s\n", stubs);
+    fprintf(stderr, "bench: note: no-op stubs in this library (its lit scenes cannot match):%s\n", stubs);
   gl.Lightfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[0];
   gl.Materialfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[1];
   gl.Materialf = (void (GLAPIENTRY *)(GLenum, GLenum, GLfloat))procs[2];
