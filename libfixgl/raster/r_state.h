@@ -65,6 +65,16 @@ void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);
 void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
                            bool stencil, uint8_t svalue);
 
+/* gallivm's lp_build_clamp(x, 0, 1) = max(min(x, 1), 0) on x86 minps/maxps,
+ * which return their second operand when one is NaN, so NaN becomes 1.
+ * The oracle clamps vertex colours and fragment depth this way
+ * (ORACLE-NOTES.md "Clamps and NaN"). */
+static inline float r_clamp01(float x)
+{
+   const float m = x < 1.0f ? x : 1.0f;    /* minps(x, 1): NaN -> 1 */
+   return m > 0.0f ? m : 0.0f;
+}
+
 /* Float -> unorm conversions of the oracle (llvmpipe-facts.md §1, §2). */
 uint8_t r_float_to_unorm8(float c);
 uint32_t r_depth_to_z24(float z);

@@ -58,23 +58,16 @@ uint8_t r_float_to_unorm8(float c)
    return (uint8_t)lrintf(c * 255.0f);
 }
 
-/* The fragment shader restricts depth to [0,1] with lp_build_clamp,
- * max(min(z, 1), 0) on x86 minps/maxps, which return their second operand
- * when one is NaN: NaN becomes 1. */
-static inline float clamp_depth(float z)
-{
-   const float m = z < 1.0f ? z : 1.0f;     /* minps(z, 1): NaN -> 1 */
-   return m > 0.0f ? m : 0.0f;
-}
-
+/* The fragment shader restricts depth to [0,1] (lp_build_depth_clamp),
+ * then converts with RNE (llvmpipe-facts.md §1). */
 uint32_t r_depth_to_z24(float z)
 {
-   return (uint32_t)lrintf(clamp_depth(z) * 16777215.0f);
+   return (uint32_t)lrintf(r_clamp01(z) * 16777215.0f);
 }
 
 uint16_t r_depth_to_z16(float z)
 {
-   return (uint16_t)lrintf(clamp_depth(z) * 65535.0f);
+   return (uint16_t)lrintf(r_clamp01(z) * 65535.0f);
 }
 
 static inline bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
@@ -104,7 +97,8 @@ static inline bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
  * modelled step by step because NaN and infinite positions (w = 0) snap to
  * INT32_MIN and the 32-bit parts wrap, and then which pixels the oracle
  * draws depends on every one of those steps.  All 32-bit arithmetic below
- * wraps, as the SSE code does. */
+ * wraps, as the SSE code does.  (ORACLE-NOTES.md "Coverage of non-finite
+ * triangles"; the fact sheet, §1, covers the finite case only.) */
 
 #define TILE_SIZE 64
 #define MAX_PLANES 7
@@ -147,21 +141,13 @@ static inline unsigned mask_linear(int32_t c, int32_t dcdx, int32_t dcdy)
    return mask;
 }
 
+/* build_masks_sse: sign bits of the 16 sub-block corners (trivial
+ * reject) and of the same plus cdiff (trivial accept). */
 static inline void build_masks(int32_t c, int32_t cdiff, int32_t dcdx, int32_t dcdy,
                                unsigned *outmask, unsigned *partmask)
 {
-   unsigned out = 0, part = 0;
-   int32_t row[4] = { c, add32(c, dcdx), add32(c, mul32(dcdx, 2)), add32(c, mul32(dcdx, 3)) };
-   for (int j = 0; j < 4; j++) {
-      for (int i = 0; i < 4; i++) {
-         out |= (unsigned)(row[i] < 0) << (4 * j + i);
-         part |= (unsigned)(add32(row[i], cdiff) < 0) << (4 * j + i);
-      }
-      for (int i = 0; i < 4; i++)
-         row[i] = add32(row[i], dcdy);
-   }
-   *outmask |= out;
-   *partmask |= part;
+   *outmask |= mask_linear(c, dcdx, dcdy);
+   *partmask |= mask_linear(add32(c, cdiff), dcdx, dcdy);
 }
 
 /* The per-block trivial reject/accept values of lp_rast_tri_tmp.h
@@ -334,6 +320,16 @@ static void shade_block(const struct r_state *rs, const struct tri_shade *ts,
 
 /* ---- the rasterizer levels ---------------------------------------------- */
 
+/* Shades the whole w x h area at (x, y) (multiples of 4), block by block. */
+static void shade_area(const struct r_state *rs, const struct tri_shade *ts,
+                       int x, int y, int w, int h)
+{
+   for (int iy = 0; iy < h; iy += 4)
+      for (int ix = 0; ix < w; ix += 4)
+         shade_block(rs, ts, x + ix, y + iy, 0xffff);
+}
+
+/* do_block_4: per-pixel masks of one 4x4 block. */
 static void do_block_4(const struct r_state *rs, const struct tri_shade *ts,
                        const struct rplane *p, int n, int x, int y, const int64_t *c)
 {
@@ -345,29 +341,38 @@ static void do_block_4(const struct r_state *rs, const struct tri_shade *ts,
       shade_block(rs, ts, x, y, mask);
 }
 
-static void do_block_16(const struct r_state *rs, const struct tri_shade *ts,
-                        const struct rplane *p, int n, int x, int y, const int64_t *c)
+/* One level of lp_rast_tri_tmp.h: the block at (x, y) is split into 4x4
+ * sub-blocks of 1 << log2_sub pixels (16 in a 64x64 tile, 4 in a 16x16
+ * block); each is rejected, shaded whole, or descended into.  Partial
+ * sub-blocks come first, then the full ones, each in bit order. */
+static void do_block(const struct r_state *rs, const struct tri_shade *ts,
+                     const struct rplane *p, int n, int x, int y, const int64_t *c,
+                     int log2_sub)
 {
+   const int sub = 1 << log2_sub;
    unsigned outmask = 0, partmask = 0;
    for (int j = 0; j < n; j++)
-      block_masks(&p[j], c[j], 2, &outmask, &partmask);
+      block_masks(&p[j], c[j], log2_sub, &outmask, &partmask);
    if (outmask == 0xffff)
       return;
    unsigned inmask = ~partmask & 0xffff;
    unsigned partial = partmask & ~outmask;
    while (partial) {
       const int i = __builtin_ctz(partial);
-      const int ix = (i & 3) * 4, iy = (i >> 2) * 4;
+      const int ix = (i & 3) * sub, iy = (i >> 2) * sub;
       int64_t cx[MAX_PLANES];
       partial &= ~(1u << i);
       for (int j = 0; j < n; j++)
          cx[j] = add64(sub64(c[j], imul64(p[j].dcdx, ix)), imul64(p[j].dcdy, iy));
-      do_block_4(rs, ts, p, n, x + ix, y + iy, cx);
+      if (log2_sub == 2)
+         do_block_4(rs, ts, p, n, x + ix, y + iy, cx);
+      else
+         do_block(rs, ts, p, n, x + ix, y + iy, cx, 2);
    }
    while (inmask) {
       const int i = __builtin_ctz(inmask);
       inmask &= ~(1u << i);
-      shade_block(rs, ts, x + (i & 3) * 4, y + (i >> 2) * 4, 0xffff);
+      shade_area(rs, ts, x + (i & 3) * sub, y + (i >> 2) * sub, sub, sub);
    }
 }
 
@@ -377,48 +382,15 @@ static void rast_tile(const struct r_state *rs, const struct tri_shade *ts,
 {
    struct rplane p[MAX_PLANES];
    int64_t c[MAX_PLANES];
-   unsigned outmask = 0, partmask = 0;
    int n = 0;
-
    while (plane_mask) {
       const int i = __builtin_ctz(plane_mask);
       plane_mask &= ~(1u << i);
       p[n] = tri_planes[i];
       c[n] = sub64(add64(p[n].c, imul64(p[n].dcdy, y)), imul64(p[n].dcdx, x));
-      block_masks(&p[n], c[n], 4, &outmask, &partmask);
       n++;
    }
-   if (outmask == 0xffff)
-      return;
-   unsigned inmask = ~partmask & 0xffff;
-   unsigned partial = partmask & ~outmask;
-   while (partial) {
-      const int i = __builtin_ctz(partial);
-      const int ix = (i & 3) * 16, iy = (i >> 2) * 16;
-      int64_t cx[MAX_PLANES];
-      for (int j = 0; j < n; j++)
-         cx[j] = add64(sub64(c[j], imul64(p[j].dcdx, ix)), imul64(p[j].dcdy, iy));
-      partial &= ~(1u << i);
-      do_block_16(rs, ts, p, n, x + ix, y + iy, cx);
-   }
-   while (inmask) {
-      const int i = __builtin_ctz(inmask);
-      inmask &= ~(1u << i);
-      const int bx = x + (i & 3) * 16, by = y + (i >> 2) * 16;
-      for (int iy = 0; iy < 16; iy += 4)
-         for (int ix = 0; ix < 16; ix += 4)
-            shade_block(rs, ts, bx + ix, by + iy, 0xffff);
-   }
-}
-
-/* lp_rast_shade_tile: the whole tile, cut to the framebuffer. */
-static void shade_tile(const struct r_state *rs, const struct tri_shade *ts, int x, int y)
-{
-   const int w = rs->width - x < TILE_SIZE ? rs->width - x : TILE_SIZE;
-   const int h = rs->height - y < TILE_SIZE ? rs->height - y : TILE_SIZE;
-   for (int iy = 0; iy < h; iy += 4)
-      for (int ix = 0; ix < w; ix += 4)
-         shade_block(rs, ts, x + ix, y + iy, 0xffff);
+   do_block(rs, ts, p, n, x, y, c, 4);
 }
 
 /* With finite snapped positions and edge steps below 2^22 (always the case
@@ -462,10 +434,13 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (bx0 > rx1 || bx1 < rx0 || by0 > ry1 || by1 < ry0)
       return;
 
-   const int32_t max_szorig = sub_wrap(bx1, bx0 & ~3) | sub_wrap(by1, by0 & ~3);
-   (void)max_szorig; /* 32-bit rasterizers (<= 128): same coverage, exact */
+   /* (llvmpipe picks 32-bit rasterizers for boxes up to 128 pixels; their
+    * coverage is the same, exact, so they need no model here) */
    if (bx0 < 0) bx0 = 0;
    if (by0 < 0) by0 = 0;
+   /* trimmed box: the box intersected with the draw region */
+   const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
+   const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
 
    /* the three edges (lp_setup_tri.c SSE path) */
    struct rplane p[MAX_PLANES];
@@ -492,8 +467,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct tri_shade ts;
       setup_shade(rs, v, &ts);
-      rasterize_direct(rs, &ts, p, bx0 > rx0 ? bx0 : rx0, by0 > ry0 ? by0 : ry0,
-                       bx1 < rx1 ? bx1 : rx1, by1 < ry1 ? by1 : ry1);
+      rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
       return;
    }
 
@@ -516,7 +490,6 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    struct tri_shade ts;
    setup_shade(rs, v, &ts);
 
-
    /* binning */
    const uint32_t dx = floor_pot((uint32_t)(bx0 ^ bx1) | (uint32_t)(by0 ^ by1));
    if (dx < TILE_SIZE) {
@@ -527,9 +500,6 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       return;
    }
 
-   /* trimmed box: the box intersected with the draw region */
-   const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
-   const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
    const int ix0 = tx0 / TILE_SIZE, iy0 = ty0 / TILE_SIZE;
    const int ix1 = tx1 / TILE_SIZE, iy1 = ty1 / TILE_SIZE;
    int64_t c[MAX_PLANES], ei[MAX_PLANES], eo[MAX_PLANES], xstep[MAX_PLANES], ystep[MAX_PLANES];
@@ -562,7 +532,10 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
             rast_tile(rs, &ts, p, partial, x * TILE_SIZE, y * TILE_SIZE);
          } else {
             in = true;
-            shade_tile(rs, &ts, x * TILE_SIZE, y * TILE_SIZE);
+            /* lp_rast_shade_tile: the whole tile, cut to the framebuffer */
+            const int tx = x * TILE_SIZE, ty = y * TILE_SIZE;
+            shade_area(rs, &ts, tx, ty, rs->width - tx < TILE_SIZE ? rs->width - tx : TILE_SIZE,
+                       rs->height - ty < TILE_SIZE ? rs->height - ty : TILE_SIZE);
          }
          for (int i = 0; i < n; i++)
             cx[i] = add64(cx[i], xstep[i]);

@@ -25,15 +25,6 @@ static inline unsigned clip_mask(const float *p)
    return m;
 }
 
-/* Vertex colour clamp, draw_llvm.c do_clamp_vertex_color: lp_build_clamp
- * is max(min(c, 1), 0) on minps/maxps, which return their second operand
- * when one is NaN, so NaN becomes 1. */
-static inline float clamp01(float c)
-{
-   const float m = c < 1.0f ? c : 1.0f;
-   return m > 0.0f ? m : 0.0f;
-}
-
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out)
 {
@@ -59,7 +50,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       v->r.pos[3] = oow;
 
       const float *c = in[i].attr[FGL_ATTR_COLOR0];
+      /* draw_llvm.c do_clamp_vertex_color */
       for (int k = 0; k < 4; k++)
-         v->r.attr[0][k] = clamp01(c[k]);
+         v->r.attr[0][k] = r_clamp01(c[k]);
    }
 }
