@@ -195,11 +195,12 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
 
    /* Replayed vertices get a newly added attribute as its current value cut
     * to the new size (COPY_SZ_4V), so the missing components read back as
-    * defaults; a grown attribute keeps its clean old value. */
+    * defaults; a grown attribute keeps its clean old value
+    * (ORACLE-NOTES.md "Vertex batching"). */
    if (!vbo->attr_size[attr] && attr != FGL_ATTR_POS) {
       for (unsigned k = 0; k < n; k++)
-         for (unsigned i = size; i < 4; i++)
-            copied[k].attr[attr][i] = attr_default[i];
+         for (unsigned i = 0; i < 4; i++)
+            copied[k].attr[attr][i] = i < size ? ctx->Current.Attrib[attr][i] : attr_default[i];
    }
 
    vbo->vertex_size += size - vbo->attr_size[attr];
@@ -223,6 +224,17 @@ void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, floa
       clean_value(&ctx->Vbo, attr, out);
    else
       memcpy(out, ctx->Current.Attrib[attr], 4 * sizeof(float));
+}
+
+const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                              enum fgl_vbo_attr attr, unsigned *stride)
+{
+   if (ctx->Vbo.attr_size[attr]) {
+      *stride = sizeof(struct fgl_vbo_vertex) / sizeof(float);
+      return verts->attr[attr];
+   }
+   *stride = 0;
+   return ctx->Current.Attrib[attr];
 }
 
 void fgl_vbo_flush_vertices(struct fgl_context *ctx)
@@ -278,8 +290,11 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
       return;
    struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
    memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
+   /* only the format's attributes are stored; the others are constant for
+    * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */
    for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
-      fgl_vbo_current(ctx, (enum fgl_vbo_attr)a, dst->attr[a]);
+      if (vbo->attr_size[a])
+         clean_value(vbo, (enum fgl_vbo_attr)a, dst->attr[a]);
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
 }

@@ -51,7 +51,9 @@ enum fgl_vbo_attr {
 
 #define FGL_ATTR_MAT_FIRST FGL_ATTR_MAT_FRONT_AMBIENT
 
-/* A stored vertex: every attribute as float[4]. */
+/* A stored vertex: the position and the attributes of the batch's vertex
+ * format, each as float[4] (slots of attributes outside the format are not
+ * written: read them through fgl_vbo_attr_ptr). */
 struct fgl_vbo_vertex {
    float attr[FGL_ATTR_COUNT][4];
 };
@@ -84,6 +86,12 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
                   float x, float y, float z, float w);
 void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode);
 void fgl_vbo_end(struct fgl_context *ctx);
+
+/* While a batch is drawn: where attribute attr of vertex verts[i] is, as
+ * ptr + i * stride floats.  Attributes outside the batch's format are the
+ * same for every vertex (Mesa's stride-0 current values): stride 0. */
+const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                              enum fgl_vbo_attr attr, unsigned *stride);
 
 /* FLUSH_VERTICES: draw what is stored, copy the format's attributes to
  * ctx->Current.Attrib and reset the vertex format. */

@@ -8,6 +8,7 @@
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
+#include <stddef.h>
 
 #include "context.h"
 
@@ -30,6 +31,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 {
    const float *m = ctx->_ModelProjectMatrix.m;
    const float *s = ctx->_ViewportScale, *t = ctx->_ViewportTranslate;
+   unsigned cstride;
+   const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
@@ -49,7 +52,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       v->r.pos[2] = fmaf(v->clip[2] * oow, s[2], t[2]);
       v->r.pos[3] = oow;
 
-      const float *c = in[i].attr[FGL_ATTR_COLOR0];
+      const float *c = color + (size_t)i * cstride;
       /* draw_llvm.c do_clamp_vertex_color */
       for (int k = 0; k < 4; k++)
          v->r.attr[0][k] = r_clamp01(c[k]);
