@@ -8,6 +8,7 @@
  */
 #include <string.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 
 void fgl_init_current(struct fgl_context *ctx)
@@ -83,13 +84,6 @@ static inline void vertex4(float x, float y, float z, float w, unsigned n)
    fgl_vbo_attr(ctx, FGL_ATTR_POS, n, x, y, z, w);
 }
 
-/* Mesa's normalization macros */
-#define BYTE_TO_FLOAT(b)   ((2.0F * (b) + 1.0F) * (1.0F / 255.0F))
-#define UBYTE_TO_FLOAT(u)  ((float)(u) / 255.0F)
-#define SHORT_TO_FLOAT(s)  ((2.0F * (s) + 1.0F) * (1.0F / 65535.0F))
-#define USHORT_TO_FLOAT(s) ((GLfloat)(s) * (1.0F / 65535.0F))
-#define INT_TO_FLOAT(i)    ((GLfloat)((2.0F * (i) + 1.0F) * (1.0F / 4294967294.0)))
-#define UINT_TO_FLOAT(u)   ((GLfloat)((u) * (1.0F / 4294967295.0)))
 #define IDENT(x)           ((GLfloat)(x))
 
 /* Only glColor3f/3fv are 3-component calls in Mesa's vbo; every other

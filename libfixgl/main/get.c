@@ -14,6 +14,7 @@
 #include <limits.h>
 #include <string.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 
 enum value_type {
@@ -29,22 +30,9 @@ struct value {
    double v[16];
 };
 
-/* x86 cvttsd2si: truncation, INT_MIN when out of range or NaN */
-static GLint double_to_int_trunc(double d)
-{
-   if (!(d >= -2147483648.0 && d < 2147483648.0))
-      return INT_MIN;
-   return (GLint)d;
-}
-
-GLint fgl_float_to_int_norm(double f)
-{
-   return double_to_int_trunc(2147483647.0 * f);
-}
-
 static GLint iround(float f)
 {
-   return double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
+   return fgl_double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
 }
 
 /* Mesa's CLAMP: NaN passes through */

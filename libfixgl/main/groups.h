@@ -34,7 +34,4 @@ void fgl_flush_front(struct fgl_context *ctx);
 /* main/enable.c: whether pname is a capability; its state in *value */
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);
 
-/* Conversions shared by the getters (main/get.c). */
-GLint fgl_float_to_int_norm(double f);
-
 #endif

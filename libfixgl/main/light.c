@@ -3,11 +3,13 @@
  * Entry points validate as Mesa's main/light.c does and store what it
  * stores: positions through the modelview and spot directions through its
  * 3x3 part at call time (TRANSFORM_POINT / TRANSFORM_DIRECTION, float, left
- * to right), cos of the cutoff from a double angle.
+ * to right), cos of the cutoff from a double angle (llvmpipe-facts.md §4
+ * "State captured at glLight time").
  */
 #include <math.h>
 #include <string.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 
 static void init_light(struct fgl_light *l, int n)
@@ -35,32 +37,33 @@ void fgl_init_light(struct fgl_context *ctx)
    ctx->Light.ColorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
 }
 
-/* Mesa's INT_TO_FLOAT */
-static float int_to_float(GLint i)
-{
-   return (GLfloat)((2.0F * (float)i + 1.0F) * (1.0F / 4294967294.0));
-}
-
 /* ---- glLight ---- */
 
-/* do_light: params already transformed; no-op when unchanged. */
+/* The light's values for pname and their count; 0 for an invalid pname. */
+static int light_field(struct fgl_light *l, GLenum pname, float **v)
+{
+   switch (pname) {
+   case GL_AMBIENT: *v = l->Ambient; return 4;
+   case GL_DIFFUSE: *v = l->Diffuse; return 4;
+   case GL_SPECULAR: *v = l->Specular; return 4;
+   case GL_POSITION: *v = l->EyePosition; return 4;
+   case GL_SPOT_DIRECTION: *v = l->SpotDirection; return 3;
+   case GL_SPOT_EXPONENT: *v = &l->SpotExponent; return 1;
+   case GL_SPOT_CUTOFF: *v = &l->SpotCutoff; return 1;
+   case GL_CONSTANT_ATTENUATION: *v = &l->ConstantAttenuation; return 1;
+   case GL_LINEAR_ATTENUATION: *v = &l->LinearAttenuation; return 1;
+   case GL_QUADRATIC_ATTENUATION: *v = &l->QuadraticAttenuation; return 1;
+   default: return 0;
+   }
+}
+
+/* do_light: params already validated and transformed; no-op when unchanged
+ * (compared with ==, so NaN always stores). */
 static void set_light(struct fgl_context *ctx, struct fgl_light *l, GLenum pname,
                       const float *p)
 {
    float *dst;
-   int n = 1;
-   switch (pname) {
-   case GL_AMBIENT: dst = l->Ambient; n = 4; break;
-   case GL_DIFFUSE: dst = l->Diffuse; n = 4; break;
-   case GL_SPECULAR: dst = l->Specular; n = 4; break;
-   case GL_POSITION: dst = l->EyePosition; n = 4; break;
-   case GL_SPOT_DIRECTION: dst = l->SpotDirection; n = 3; break;
-   case GL_SPOT_EXPONENT: dst = &l->SpotExponent; break;
-   case GL_SPOT_CUTOFF: dst = &l->SpotCutoff; break;
-   case GL_CONSTANT_ATTENUATION: dst = &l->ConstantAttenuation; break;
-   case GL_LINEAR_ATTENUATION: dst = &l->LinearAttenuation; break;
-   default: dst = &l->QuadraticAttenuation; break;
-   }
+   const int n = light_field(l, pname, &dst);
    bool same = true;
    for (int i = 0; i < n; i++)
       same &= dst[i] == p[i];
@@ -69,6 +72,7 @@ static void set_light(struct fgl_context *ctx, struct fgl_light *l, GLenum pname
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
    memcpy(dst, p, (size_t)n * sizeof(float));
    if (pname == GL_SPOT_CUTOFF) {
+      /* cosf of a double angle, clamped to >= 0 (llvmpipe-facts.md §4) */
       l->CosCutoff = cosf((float)(l->SpotCutoff * M_PI / 180.0));
       if (l->CosCutoff < 0)
          l->CosCutoff = 0;
@@ -149,7 +153,7 @@ void GLAPIENTRY glLightiv(GLenum light, GLenum pname, const GLint *params)
    case GL_DIFFUSE:
    case GL_SPECULAR:
       for (int i = 0; i < 4; i++)
-         f[i] = int_to_float(params[i]);
+         f[i] = INT_TO_FLOAT(params[i]);
       break;
    case GL_POSITION:
       for (int i = 0; i < 4; i++)
@@ -178,81 +182,39 @@ void GLAPIENTRY glLighti(GLenum light, GLenum pname, GLint param)
    glLightiv(light, pname, p);
 }
 
-/* Returns the light's values for pname and their count, 0 if invalid. */
-static int light_values(const struct fgl_light *l, GLenum pname, const float **v)
+/* The common part of glGetLight{f,i}v: the values and their count, 0 after
+ * raising the error Mesa raises. */
+static int get_light_values(GLenum light, GLenum pname, float **v)
 {
-   switch (pname) {
-   case GL_AMBIENT: *v = l->Ambient; return 4;
-   case GL_DIFFUSE: *v = l->Diffuse; return 4;
-   case GL_SPECULAR: *v = l->Specular; return 4;
-   case GL_POSITION: *v = l->EyePosition; return 4;
-   case GL_SPOT_DIRECTION: *v = l->SpotDirection; return 3;
-   case GL_SPOT_EXPONENT: *v = &l->SpotExponent; return 1;
-   case GL_SPOT_CUTOFF: *v = &l->SpotCutoff; return 1;
-   case GL_CONSTANT_ATTENUATION: *v = &l->ConstantAttenuation; return 1;
-   case GL_LINEAR_ATTENUATION: *v = &l->LinearAttenuation; return 1;
-   case GL_QUADRATIC_ATTENUATION: *v = &l->QuadraticAttenuation; return 1;
-   default: return 0;
-   }
-}
-
-static const struct fgl_light *get_light(struct fgl_context *ctx, GLenum light)
-{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return 0;
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
    const GLint i = (GLint)(light - GL_LIGHT0);
-   if (i < 0 || i >= FGL_MAX_LIGHTS) {
+   const int n = i >= 0 && i < FGL_MAX_LIGHTS ? light_field(&ctx->Light.Light[i], pname, v) : 0;
+   if (!n)
       fgl_error(ctx, GL_INVALID_ENUM);
-      return NULL;
-   }
-   return &ctx->Light.Light[i];
+   return n;
 }
 
 void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat *params)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
-   const struct fgl_light *l = get_light(ctx, light);
-   const float *v;
-   if (!l)
-      return;
-   const int n = light_values(l, pname, &v);
-   if (!n) {
-      fgl_error(ctx, GL_INVALID_ENUM);
-      return;
-   }
-   if (params)
+   float *v;
+   const int n = get_light_values(light, pname, &v);
+   if (n && params)
       memcpy(params, v, (size_t)n * sizeof(float));
-}
-
-/* (GLint) of a float, with x86's INT_MIN for NaN and out of range */
-static GLint float_to_int_cast(float f)
-{
-   if (!(f >= -2147483648.0f && f < 2147483648.0f))
-      return INT32_MIN;
-   return (GLint)f;
 }
 
 void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint *params)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
+   float *v;
+   const int n = get_light_values(light, pname, &v);
+   if (!n || !params)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
-   const struct fgl_light *l = get_light(ctx, light);
-   const float *v;
-   if (!l)
-      return;
-   const int n = light_values(l, pname, &v);
-   if (!n) {
-      fgl_error(ctx, GL_INVALID_ENUM);
-      return;
-   }
-   if (!params)
-      return;
+   /* colours with FLOAT_TO_INT, the rest with a plain (GLint) cast */
    const bool color = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
    for (int i = 0; i < n; i++)
-      params[i] = color ? fgl_float_to_int_norm(v[i]) : float_to_int_cast(v[i]);
+      params[i] = color ? fgl_float_to_int_norm(v[i]) : fgl_double_to_int_trunc(v[i]);
 }
 
 /* ---- glLightModel ---- */
@@ -322,7 +284,7 @@ void GLAPIENTRY glLightModeliv(GLenum pname, const GLint *params)
    switch (pname) {
    case GL_LIGHT_MODEL_AMBIENT:
       for (int i = 0; i < 4; i++)
-         f[i] = int_to_float(params[i]);
+         f[i] = INT_TO_FLOAT(params[i]);
       break;
    case GL_LIGHT_MODEL_LOCAL_VIEWER:
    case GL_LIGHT_MODEL_TWO_SIDE:
