@@ -13,26 +13,6 @@ static const float k_warm[3] = { 0.75f, 0.65f, 0.5f };
 static const float k_cool[3] = { 0.25f, 0.35f, 0.6f };
 static const float k_white[3] = { 1, 1, 1 };
 
-/* Vertices of each primitive type in window coordinates (32x32 buffer),
- * as in c_shade.c. */
-static const float tri_v[6][2] = {
-    { 2, 2 }, { 14, 3 }, { 6, 14 }, { 17, 18 }, { 30, 20 }, { 20, 30 },
-};
-static const float strip_v[8][2] = {
-    { 2, 4 }, { 4, 26 }, { 10, 2 }, { 12, 29 }, { 19, 3 }, { 21, 28 }, { 29, 5 }, { 30, 27 },
-};
-static const float fan_v[7][2] = {
-    { 16, 16 }, { 30, 16 }, { 26, 27 }, { 14, 31 }, { 3, 24 }, { 3, 8 }, { 15, 1 },
-};
-static const float quads_v[8][2] = {
-    { 2, 2 }, { 14, 3 }, { 13, 14 }, { 3, 13 }, { 17, 16 }, { 30, 18 }, { 29, 30 }, { 18, 28 },
-};
-static const float qstrip_v[8][2] = {
-    { 2, 3 }, { 3, 28 }, { 11, 2 }, { 10, 29 }, { 20, 4 }, { 21, 27 }, { 30, 2 }, { 29, 30 },
-};
-static const float poly_v[6][2] = {
-    { 16, 2 }, { 29, 9 }, { 28, 24 }, { 16, 30 }, { 4, 23 }, { 3, 8 },
-};
 
 /* A dome-like normal field over the 32x32 window: every vertex is lit
  * differently. */
@@ -69,12 +49,12 @@ static void lit_prim(fc_h *h, GLenum mode, const float (*v)[2], int n)
     }
 }
 
-static void lit_triangles(fc_h *h) { lit_prim(h, GL_TRIANGLES, tri_v, 6); }
-static void lit_triangle_strip(fc_h *h) { lit_prim(h, GL_TRIANGLE_STRIP, strip_v, 8); }
-static void lit_triangle_fan(fc_h *h) { lit_prim(h, GL_TRIANGLE_FAN, fan_v, 7); }
-static void lit_quads(fc_h *h) { lit_prim(h, GL_QUADS, quads_v, 8); }
-static void lit_quad_strip(fc_h *h) { lit_prim(h, GL_QUAD_STRIP, qstrip_v, 8); }
-static void lit_polygon(fc_h *h) { lit_prim(h, GL_POLYGON, poly_v, 6); }
+static void lit_triangles(fc_h *h) { lit_prim(h, GL_TRIANGLES, fcu_tri_v, 6); }
+static void lit_triangle_strip(fc_h *h) { lit_prim(h, GL_TRIANGLE_STRIP, fcu_strip_v, 8); }
+static void lit_triangle_fan(fc_h *h) { lit_prim(h, GL_TRIANGLE_FAN, fcu_fan_v, 7); }
+static void lit_quads(fc_h *h) { lit_prim(h, GL_QUADS, fcu_quads_v, 8); }
+static void lit_quad_strip(fc_h *h) { lit_prim(h, GL_QUAD_STRIP, fcu_qstrip_v, 8); }
+static void lit_polygon(fc_h *h) { lit_prim(h, GL_POLYGON, fcu_poly_v, 6); }
 
 /* Lit points, lines, a line strip and a line loop; smooth then flat. */
 static void lit_lines_points(fc_h *h)
@@ -85,19 +65,19 @@ static void lit_lines_points(fc_h *h)
         fcu_clear(0.05f, 0.06f, 0.12f, 1, 1);
         glBegin(GL_POINTS);
         for (int i = 0; i < 8; i++)
-            dome_vertex(strip_v[i]);
+            dome_vertex(fcu_strip_v[i]);
         glEnd();
         glBegin(GL_LINES);
         for (int i = 0; i < 6; i++)
-            dome_vertex(tri_v[i]);
+            dome_vertex(fcu_tri_v[i]);
         glEnd();
         glBegin(GL_LINE_LOOP);
         for (int i = 0; i < 6; i++)
-            dome_vertex(poly_v[i]);
+            dome_vertex(fcu_poly_v[i]);
         glEnd();
         glBegin(GL_LINE_STRIP);
         for (int i = 0; i < 7; i++)
-            dome_vertex(fan_v[i]);
+            dome_vertex(fcu_fan_v[i]);
         glEnd();
         fc_capture(h);
     }

@@ -3,25 +3,6 @@
  * colour and colour rounding ties. */
 #include "cases.h"
 
-/* Vertices of each primitive type in window coordinates (32x32 buffer). */
-static const float tri_v[6][2] = {
-    { 2, 2 }, { 14, 3 }, { 6, 14 }, { 17, 18 }, { 30, 20 }, { 20, 30 },
-};
-static const float strip_v[8][2] = {
-    { 2, 4 }, { 4, 26 }, { 10, 2 }, { 12, 29 }, { 19, 3 }, { 21, 28 }, { 29, 5 }, { 30, 27 },
-};
-static const float fan_v[7][2] = {
-    { 16, 16 }, { 30, 16 }, { 26, 27 }, { 14, 31 }, { 3, 24 }, { 3, 8 }, { 15, 1 },
-};
-static const float quads_v[8][2] = {
-    { 2, 2 }, { 14, 3 }, { 13, 14 }, { 3, 13 }, { 17, 16 }, { 30, 18 }, { 29, 30 }, { 18, 28 },
-};
-static const float qstrip_v[8][2] = {
-    { 2, 3 }, { 3, 28 }, { 11, 2 }, { 10, 29 }, { 20, 4 }, { 21, 27 }, { 30, 2 }, { 29, 30 },
-};
-static const float poly_v[6][2] = {
-    { 16, 2 }, { 29, 9 }, { 28, 24 }, { 16, 30 }, { 4, 23 }, { 3, 8 },
-};
 
 static void draw_prim(GLenum mode, const float (*v)[2], int n)
 {
@@ -46,12 +27,12 @@ static void shade_prim(fc_h *h, GLenum mode, const float (*v)[2], int n)
     fc_get_integer(h, "GL_SHADE_MODEL", GL_SHADE_MODEL, 1);
 }
 
-static void shade_triangles(fc_h *h) { shade_prim(h, GL_TRIANGLES, tri_v, 6); }
-static void shade_strip(fc_h *h) { shade_prim(h, GL_TRIANGLE_STRIP, strip_v, 8); }
-static void shade_fan(fc_h *h) { shade_prim(h, GL_TRIANGLE_FAN, fan_v, 7); }
-static void shade_quads(fc_h *h) { shade_prim(h, GL_QUADS, quads_v, 8); }
-static void shade_quad_strip(fc_h *h) { shade_prim(h, GL_QUAD_STRIP, qstrip_v, 8); }
-static void shade_polygon(fc_h *h) { shade_prim(h, GL_POLYGON, poly_v, 6); }
+static void shade_triangles(fc_h *h) { shade_prim(h, GL_TRIANGLES, fcu_tri_v, 6); }
+static void shade_strip(fc_h *h) { shade_prim(h, GL_TRIANGLE_STRIP, fcu_strip_v, 8); }
+static void shade_fan(fc_h *h) { shade_prim(h, GL_TRIANGLE_FAN, fcu_fan_v, 7); }
+static void shade_quads(fc_h *h) { shade_prim(h, GL_QUADS, fcu_quads_v, 8); }
+static void shade_quad_strip(fc_h *h) { shade_prim(h, GL_QUAD_STRIP, fcu_qstrip_v, 8); }
+static void shade_polygon(fc_h *h) { shade_prim(h, GL_POLYGON, fcu_poly_v, 6); }
 
 /* The smooth quad of probe t19 in a [0,1] ortho view. */
 static void quad_a(void)

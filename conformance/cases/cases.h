@@ -42,4 +42,9 @@ void fcu_tri(float x0, float y0, float x1, float y1, float x2, float y2);
 void fcu_ortho(double l, double r, double b, double t, double n, double f);
 void fcu_frustum(double l, double r, double b, double t, double n, double f);
 
+/* Vertices of each primitive type in window coordinates of a 32x32 buffer
+ * (shared by the shading and lit-primitive cases). */
+extern const float fcu_tri_v[6][2], fcu_strip_v[8][2], fcu_fan_v[7][2];
+extern const float fcu_quads_v[8][2], fcu_qstrip_v[8][2], fcu_poly_v[6][2];
+
 #endif

@@ -56,3 +56,23 @@ void fcu_frustum(double l, double r, double b, double t, double n, double f)
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
 }
+
+/* Vertices of each primitive type in window coordinates (32x32 buffer). */
+const float fcu_tri_v[6][2] = {
+    { 2, 2 }, { 14, 3 }, { 6, 14 }, { 17, 18 }, { 30, 20 }, { 20, 30 },
+};
+const float fcu_strip_v[8][2] = {
+    { 2, 4 }, { 4, 26 }, { 10, 2 }, { 12, 29 }, { 19, 3 }, { 21, 28 }, { 29, 5 }, { 30, 27 },
+};
+const float fcu_fan_v[7][2] = {
+    { 16, 16 }, { 30, 16 }, { 26, 27 }, { 14, 31 }, { 3, 24 }, { 3, 8 }, { 15, 1 },
+};
+const float fcu_quads_v[8][2] = {
+    { 2, 2 }, { 14, 3 }, { 13, 14 }, { 3, 13 }, { 17, 16 }, { 30, 18 }, { 29, 30 }, { 18, 28 },
+};
+const float fcu_qstrip_v[8][2] = {
+    { 2, 3 }, { 3, 28 }, { 11, 2 }, { 10, 29 }, { 20, 4 }, { 21, 27 }, { 30, 2 }, { 29, 30 },
+};
+const float fcu_poly_v[6][2] = {
+    { 16, 2 }, { 29, 9 }, { 28, 24 }, { 16, 30 }, { 4, 23 }, { 3, 8 },
+};

@@ -136,7 +136,8 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * colour for every vertex, and Mesa's fixed-function fragment program
     * then reads it as a constant instead of interpolating it
     * (ff_fragment_shader.cpp: get_gl_Color without VARYING_BIT_COL0), so it
-    * is exact even where interpolation is not (w = 0, NaN positions). */
+    * is exact even where interpolation is not (w = 0, NaN positions;
+    * ORACLE-NOTES.md "Vertex batching"). */
    const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
    ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
    for (unsigned i = 0; i < nprims; i++)

@@ -313,7 +313,8 @@ void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
 }
 
 /* vbo_merge_draws: consecutive independent primitives of one mode become
- * one draw, unless the first one has an incomplete tail. */
+ * one draw, unless the first one has an incomplete tail
+ * (ORACLE-NOTES.md "Vertex batching"). */
 static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cur)
 {
    if (prev->mode != cur->mode || prev->start + prev->count != cur->start)
