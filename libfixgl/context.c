@@ -41,6 +41,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_color(ctx);
    fgl_init_depth(ctx);
    fgl_init_light(ctx);
+   fgl_init_polygon(ctx);
    fgl_init_viewport(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
@@ -69,5 +70,13 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
 
 void fgl_flush_vertices(struct fgl_context *ctx)
 {
-   fgl_vbo_flush_vertices(ctx);
+   /* inside glBegin/glEnd Mesa's flush returns at once */
+   if ((ctx->Vbo.need_flush & FGL_VBO_FLUSH_STORED) && !fgl_inside_begin_end(ctx))
+      fgl_vbo_flush_vertices(ctx);
+}
+
+void fgl_flush_current(struct fgl_context *ctx)
+{
+   if ((ctx->Vbo.need_flush & FGL_VBO_FLUSH_CURRENT) && !fgl_inside_begin_end(ctx))
+      fgl_vbo_flush_current(ctx);
 }

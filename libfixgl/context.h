@@ -42,8 +42,11 @@ enum {
    FGL_NEW_PROJECTION = 1u << 1,
    FGL_NEW_VIEWPORT   = 1u << 2,
    FGL_NEW_DEPTH      = 1u << 3,
-   FGL_NEW_LIGHT      = 1u << 4,   /* shade model */
+   FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
+   FGL_NEW_MATERIAL   = 1u << 6,   /* current material values */
+   FGL_NEW_TRANSFORM  = 1u << 7,   /* GL_NORMALIZE, GL_RESCALE_NORMAL */
+   FGL_NEW_POLYGON    = 1u << 8,   /* front face, culling */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -97,11 +100,46 @@ struct fgl_light_attrib {
    struct fgl_light_model Model;
    bool ColorMaterialEnabled;
    GLenum ColorMaterialFace, ColorMaterialMode;
+   unsigned _ColorMaterialBitmask;  /* FGL_MAT_BIT_* that track the colour */
+};
+
+/* Bits of the material attributes, in vbo attribute order (Mesa's
+ * MAT_BIT_*): bit i is FGL_ATTR_MAT_FIRST + i. */
+#define FGL_MAT_BIT(attr) (1u << ((attr) - FGL_ATTR_MAT_FIRST))
+#define FGL_MAT_BITS_FRONT 0x1555u    /* even bits: front */
+#define FGL_MAT_BITS_BACK  0x2aaau    /* odd bits: back */
+#define FGL_MAT_BITS_ALL   0x3fffu
+
+/* Lighting state as the oracle's fixed-function vertex program sees it at
+ * draw time (derived by fgl_update_lighting, main/light.c): the light
+ * positions and directions in the lighting space, and the values Mesa
+ * precomputes on the CPU (prog_statevars.c). */
+struct fgl_light_derived {
+   float Position[4];       /* STATE_LIGHT_POSITION, or _NORMALIZED when directional */
+   float HalfVector[3];     /* STATE_LIGHT_HALF_VECTOR (directional light) */
+   float SpotDirection[3];  /* STATE_LIGHT_SPOT_DIR_NORMALIZED */
+   bool Positional, Spot, Attenuated;
+};
+
+struct fgl_lighting_derived {
+   bool NeedEyeCoords;      /* ctx->_NeedEyeCoords: light in eye space */
+   float NormalScale;       /* STATE_NORMAL_SCALE (_ModelViewInvScale) */
+   unsigned EnabledLights;  /* bit i: GL_LIGHTi */
+   struct fgl_light_derived Light[FGL_MAX_LIGHTS];
+};
+
+/* GL_POLYGON_BIT (so far) */
+struct fgl_polygon_attrib {
+   GLenum FrontFace;        /* GL_CW or GL_CCW */
+   GLenum CullFaceMode;     /* GL_FRONT, GL_BACK or GL_FRONT_AND_BACK */
+   bool CullFlag;           /* GL_CULL_FACE */
 };
 
 /* GL_TRANSFORM_BIT */
 struct fgl_transform_attrib {
    GLenum MatrixMode;
+   bool Normalize;          /* GL_NORMALIZE */
+   bool RescaleNormals;     /* GL_RESCALE_NORMAL */
 };
 
 /* GL_VIEWPORT_BIT */
@@ -138,6 +176,7 @@ struct fgl_context {
    struct fgl_colorbuffer_attrib Color;
    struct fgl_depth_attrib Depth;
    struct fgl_light_attrib Light;
+   struct fgl_polygon_attrib Polygon;
    struct fgl_transform_attrib Transform;
    struct fgl_viewport_attrib Viewport;
 
@@ -148,7 +187,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 50
+#define FGL_PENDING_CAPS 46
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */
@@ -161,6 +200,7 @@ struct fgl_context {
    /* ---- derived state (written by fgl_update_state only) ---- */
    unsigned NewState;
    fgl_matrix _ModelProjectMatrix;
+   struct fgl_lighting_derived _Lighting;
    float _ViewportScale[3], _ViewportTranslate[3];
    struct r_state _Raster;
 
@@ -182,8 +222,14 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
 /* Record a GL error; the first one since the last glGetError wins. */
 void fgl_error(struct fgl_context *ctx, GLenum error);
 
-/* Draw whatever the immediate-mode store has batched. */
+/* Mesa's FLUSH_VERTICES: draw whatever the immediate-mode store has
+ * batched (if a primitive was stored since the last flush) and reset the
+ * vertex format. */
 void fgl_flush_vertices(struct fgl_context *ctx);
+
+/* Mesa's FLUSH_CURRENT: copy the values of the vertex format's attributes
+ * to ctx->Current (colour material included), keeping the format. */
+void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);

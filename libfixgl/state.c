@@ -1,11 +1,13 @@
 /*
  * Derived state: one ordered validation pass before drawing.
  *
- * Order: matrices (analysis, then the MVP product), viewport transform,
- * then the raster core's state, which reads the framebuffer and the
- * per-fragment state.
+ * Order: matrices (analysis, then the MVP product), the lighting space
+ * and light vectors (which need the analysed modelview), viewport
+ * transform, then the raster core's state, which reads the framebuffer and
+ * the per-fragment state.
  */
 #include "context.h"
+#include "main/groups.h"
 
 void fgl_update_state(struct fgl_context *ctx)
 {
@@ -20,6 +22,9 @@ void fgl_update_state(struct fgl_context *ctx)
       fgl_matrix_mul_matrix(&ctx->_ModelProjectMatrix, ctx->ProjectionStack.Top,
                             ctx->ModelviewStack.Top);
    }
+
+   if (dirty & (FGL_NEW_MODELVIEW | FGL_NEW_LIGHT))
+      fgl_update_lighting(ctx);
 
    if (dirty & (FGL_NEW_VIEWPORT | FGL_NEW_BUFFERS)) {
       /* _mesa_get_viewport_xform, then the state tracker's flip to the
@@ -37,7 +42,7 @@ void fgl_update_state(struct fgl_context *ctx)
       ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
    }
 
-   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT)) {
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -55,7 +60,18 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->depth_test = ctx->Depth.Test && has_depth;
       rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
       rs->depth_write = ctx->Depth.Mask;
-      rs->num_attribs = 1;
+      /* colours: the lit front (and back, and secondary) colours, or the
+       * vertex colour */
+      const bool lit = ctx->Light.Enabled;
+      rs->twoside = lit && ctx->Light.Model.TwoSide;
+      rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
+      rs->num_attribs = rs->twoside ? 4 : rs->color_sum ? 2 : 1;
+      /* GL's counter-clockwise is a positive snapped area in the y-down
+       * window buffer (the state tracker's front_ccw for OSMesa) */
+      rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;
+      const GLenum cull = ctx->Polygon.CullFlag ? ctx->Polygon.CullFaceMode : GL_NONE;
+      rs->cull_front = cull == GL_FRONT || cull == GL_FRONT_AND_BACK;
+      rs->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
       /* flat_mask is set per batch by t_render_batch */
    }
 

@@ -5,7 +5,7 @@
 #ifndef LT_UTIL_H
 #define LT_UTIL_H
 
-#include "fc_gl_pending.h"
+#include "cases.h"
 
 #define LT_PI 3.14159265358979323846
 

@@ -12,16 +12,16 @@
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
    GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
-   GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_FOG,
+   GL_COLOR_LOGIC_OP, GL_FOG,
    GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH,
    GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
    GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
    GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
    GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
-   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
+   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POINT_SMOOTH,
    GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
-   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST,
+   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST,
    GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_Q,
    GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T,
 };
@@ -43,6 +43,18 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_LIGHTING:
       *dirty = FGL_NEW_LIGHT;
       return &ctx->Light.Enabled;
+   case GL_CULL_FACE:
+      *dirty = FGL_NEW_POLYGON;
+      return &ctx->Polygon.CullFlag;
+   case GL_COLOR_MATERIAL:
+      *dirty = FGL_NEW_LIGHT;
+      return &ctx->Light.ColorMaterialEnabled;
+   case GL_NORMALIZE:
+      *dirty = FGL_NEW_TRANSFORM;
+      return &ctx->Transform.Normalize;
+   case GL_RESCALE_NORMAL:
+      *dirty = FGL_NEW_TRANSFORM;
+      return &ctx->Transform.RescaleNormals;
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;
       return &ctx->Depth.Test;
@@ -68,6 +80,11 @@ static void set_enable(GLenum cap, bool state)
    }
    if (*flag == state)
       return;
+   if (cap == GL_COLOR_MATERIAL) {
+      /* the current colour becomes the tracked materials */
+      fgl_set_color_material_enabled(ctx, state);
+      return;
+   }
    FGL_FLUSH_VERTICES(ctx, dirty);
    *flag = state;
 }

@@ -65,13 +65,15 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
 
    switch (pname) {
    /* GL_CURRENT_BIT */
+   /* extra_flush_current: the vertex format's values become current (a
+    * colour change then updates the colour-tracking materials) */
    case GL_CURRENT_COLOR:
-      fgl_vbo_current(ctx, FGL_ATTR_COLOR0, f);
-      set_floats(val, V_FLOATN, f, 4);
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_COLOR0], 4);
       return true;
    case GL_CURRENT_NORMAL:
-      fgl_vbo_current(ctx, FGL_ATTR_NORMAL, f);
-      set_floats(val, V_FLOATN, f, 3);   /* TYPE_FLOATN_3 */
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_NORMAL], 3);   /* TYPE_FLOATN_3 */
       return true;
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
@@ -84,6 +86,13 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       val->type = V_FLOATN;
       val->n = 1;
       val->v[0] = ctx->Depth.Clear;
+      return true;
+   /* GL_POLYGON_BIT */
+   case GL_FRONT_FACE:
+      set_ints(val, V_INT, 1, (int)ctx->Polygon.FrontFace, 0, 0, 0);
+      return true;
+   case GL_CULL_FACE_MODE:
+      set_ints(val, V_INT, 1, (int)ctx->Polygon.CullFaceMode, 0, 0, 0);
       return true;
    case GL_DEPTH_FUNC:
       set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);

@@ -22,6 +22,14 @@ void fgl_init_depth(struct fgl_context *ctx);
 
 /* main/light.c (GL_LIGHTING_BIT) */
 void fgl_init_light(struct fgl_context *ctx);
+/* _mesa_update_color_material: the materials that track the colour */
+void fgl_update_color_material(struct fgl_context *ctx, const float color[4]);
+void fgl_set_color_material_enabled(struct fgl_context *ctx, bool state);
+/* _mesa_update_lighting, _mesa_update_tnl_spaces, compute_light_positions */
+void fgl_update_lighting(struct fgl_context *ctx);
+
+/* main/polygon.c (GL_POLYGON_BIT) */
+void fgl_init_polygon(struct fgl_context *ctx);
 
 /* main/viewport.c (GL_VIEWPORT_BIT) */
 void fgl_init_viewport(struct fgl_context *ctx);

@@ -1,5 +1,7 @@
 /*
- * Lighting state (GL_LIGHTING_BIT): glShadeModel, glLight, glLightModel.
+ * Lighting state (GL_LIGHTING_BIT): glShadeModel, glLight, glLightModel,
+ * glMaterial, glColorMaterial, and the derived state the vertex stage
+ * lights with (fgl_update_lighting).
  * Entry points validate as Mesa's main/light.c does and store what it
  * stores: positions through the modelview and spot directions through its
  * 3x3 part at call time (TRANSFORM_POINT / TRANSFORM_DIRECTION, float, left
@@ -11,6 +13,8 @@
 
 #include "main/conv.h"
 #include "main/groups.h"
+
+static unsigned material_pname_bits(GLenum pname);
 
 static void init_light(struct fgl_light *l, int n)
 {
@@ -35,6 +39,7 @@ void fgl_init_light(struct fgl_context *ctx)
    ctx->Light.Model.ColorControl = GL_SINGLE_COLOR;
    ctx->Light.ColorMaterialFace = GL_FRONT_AND_BACK;
    ctx->Light.ColorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
+   ctx->Light._ColorMaterialBitmask = material_pname_bits(GL_AMBIENT_AND_DIFFUSE);
 }
 
 /* ---- glLight ---- */
@@ -317,4 +322,361 @@ void GLAPIENTRY glShadeModel(GLenum mode)
    }
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
    ctx->Light.ShadeModel = mode;
+}
+
+/* ---- glMaterial, glColorMaterial ---- */
+
+/* The material attributes that pname names on both faces, or 0
+ * (_mesa_material_bitmask before the face is applied). */
+static unsigned material_pname_bits(GLenum pname)
+{
+   switch (pname) {
+   case GL_EMISSION:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_EMISSION) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_EMISSION);
+   case GL_AMBIENT:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_AMBIENT) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_AMBIENT);
+   case GL_DIFFUSE:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_DIFFUSE) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_DIFFUSE);
+   case GL_SPECULAR:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_SPECULAR) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_SPECULAR);
+   case GL_SHININESS:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_SHININESS) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_SHININESS);
+   case GL_AMBIENT_AND_DIFFUSE:
+      return material_pname_bits(GL_AMBIENT) | material_pname_bits(GL_DIFFUSE);
+   case GL_COLOR_INDEXES:
+      return FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_INDEXES) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_INDEXES);
+   default:
+      return 0;
+   }
+}
+
+/* The face's share of a material bitmask; false for an invalid face. */
+static bool material_face_bits(GLenum face, unsigned *bits)
+{
+   switch (face) {
+   case GL_FRONT: *bits &= FGL_MAT_BITS_FRONT; return true;
+   case GL_BACK: *bits &= FGL_MAT_BITS_BACK; return true;
+   case GL_FRONT_AND_BACK: return true;
+   default: return false;
+   }
+}
+
+void fgl_update_color_material(struct fgl_context *ctx, const float color[4])
+{
+   unsigned bits = ctx->Light._ColorMaterialBitmask;
+   while (bits) {
+      const int i = __builtin_ctz(bits);
+      bits &= bits - 1;
+      float *mat = ctx->Current.Attrib[FGL_ATTR_MAT_FIRST + i];
+      if (memcmp(mat, color, 4 * sizeof(float))) {
+         memcpy(mat, color, 4 * sizeof(float));
+         ctx->NewState |= FGL_NEW_MATERIAL;
+      }
+   }
+}
+
+/* glMaterial is a vertex attribute call (allowed inside glBegin/glEnd);
+ * materials that track the colour through GL_COLOR_MATERIAL are skipped
+ * (vbo_exec_api.c:_mesa_Materialfv). */
+void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   unsigned update = ctx->Light.ColorMaterialEnabled ? ~ctx->Light._ColorMaterialBitmask
+                                                     : FGL_MAT_BITS_ALL;
+   if (!material_face_bits(face, &update)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   const unsigned bits = material_pname_bits(pname) & update;
+   unsigned n = 4;
+   switch (pname) {
+   case GL_SHININESS:
+      if (params && (params[0] < 0.0f || params[0] > 128.0f)) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+      n = 1;
+      break;
+   case GL_COLOR_INDEXES:
+      n = 3;
+      break;
+   case GL_EMISSION:
+   case GL_AMBIENT:
+   case GL_DIFFUSE:
+   case GL_SPECULAR:
+   case GL_AMBIENT_AND_DIFFUSE:
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (!params)
+      return;
+   /* attribute order: front before back, ambient before diffuse */
+   static const enum fgl_vbo_attr order[] = {
+      FGL_ATTR_MAT_FRONT_EMISSION, FGL_ATTR_MAT_BACK_EMISSION,
+      FGL_ATTR_MAT_FRONT_AMBIENT, FGL_ATTR_MAT_BACK_AMBIENT,
+      FGL_ATTR_MAT_FRONT_DIFFUSE, FGL_ATTR_MAT_BACK_DIFFUSE,
+      FGL_ATTR_MAT_FRONT_SPECULAR, FGL_ATTR_MAT_BACK_SPECULAR,
+      FGL_ATTR_MAT_FRONT_SHININESS, FGL_ATTR_MAT_BACK_SHININESS,
+      FGL_ATTR_MAT_FRONT_INDEXES, FGL_ATTR_MAT_BACK_INDEXES,
+   };
+   static const enum fgl_vbo_attr amb_diff_order[] = {
+      FGL_ATTR_MAT_FRONT_AMBIENT, FGL_ATTR_MAT_FRONT_DIFFUSE,
+      FGL_ATTR_MAT_BACK_AMBIENT, FGL_ATTR_MAT_BACK_DIFFUSE,
+   };
+   const enum fgl_vbo_attr *list = order;
+   unsigned count = sizeof(order) / sizeof(order[0]);
+   if (pname == GL_AMBIENT_AND_DIFFUSE) {
+      list = amb_diff_order;
+      count = 4;
+   }
+   const float v[4] = { params[0], n > 1 ? params[1] : 0.0f, n > 2 ? params[2] : 0.0f,
+                        n > 3 ? params[3] : 1.0f };
+   for (unsigned i = 0; i < count; i++)
+      if (bits & FGL_MAT_BIT(list[i]))
+         fgl_vbo_attr(ctx, list[i], n, v[0], v[1], v[2], v[3]);
+}
+
+void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param)
+{
+   const GLfloat p[4] = { param, 0, 0, 0 };
+   glMaterialfv(face, pname, p);
+}
+
+void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint param)
+{
+   const GLfloat p[4] = { (GLfloat)param, 0, 0, 0 };
+   glMaterialfv(face, pname, p);
+}
+
+void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params)
+{
+   GLfloat f[4] = { 0, 0, 0, 0 };
+   if (!params)
+      return;
+   switch (pname) {
+   case GL_AMBIENT:
+   case GL_DIFFUSE:
+   case GL_SPECULAR:
+   case GL_EMISSION:
+   case GL_AMBIENT_AND_DIFFUSE:
+      for (int i = 0; i < 4; i++)
+         f[i] = INT_TO_FLOAT(params[i]);
+      break;
+   case GL_SHININESS:
+      f[0] = (GLfloat)params[0];
+      break;
+   case GL_COLOR_INDEXES:
+      for (int i = 0; i < 3; i++)
+         f[i] = (GLfloat)params[i];
+      break;
+   default:
+      break;   /* the error comes from glMaterialfv */
+   }
+   glMaterialfv(face, pname, f);
+}
+
+/* The common part of glGetMaterial{f,i}v: flush (materials are vertex
+ * attributes), then the face's attribute for pname and its component
+ * count, 0 after raising the error Mesa raises. */
+static int get_material_values(GLenum face, GLenum pname, const float **v)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return 0;
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   fgl_flush_vertices(ctx);
+   fgl_flush_current(ctx);
+   if (face != GL_FRONT && face != GL_BACK) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return 0;
+   }
+   const int back = face == GL_BACK;
+   enum fgl_vbo_attr attr;
+   int n = 4;
+   switch (pname) {
+   case GL_AMBIENT: attr = FGL_ATTR_MAT_FRONT_AMBIENT; break;
+   case GL_DIFFUSE: attr = FGL_ATTR_MAT_FRONT_DIFFUSE; break;
+   case GL_SPECULAR: attr = FGL_ATTR_MAT_FRONT_SPECULAR; break;
+   case GL_EMISSION: attr = FGL_ATTR_MAT_FRONT_EMISSION; break;
+   case GL_SHININESS: attr = FGL_ATTR_MAT_FRONT_SHININESS; n = 1; break;
+   case GL_COLOR_INDEXES: attr = FGL_ATTR_MAT_FRONT_INDEXES; n = 3; break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return 0;
+   }
+   *v = ctx->Current.Attrib[attr + back];
+   return n;
+}
+
+void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params)
+{
+   const float *v;
+   const int n = get_material_values(face, pname, &v);
+   if (n && params)
+      memcpy(params, v, (size_t)n * sizeof(float));
+}
+
+void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params)
+{
+   const float *v;
+   const int n = get_material_values(face, pname, &v);
+   if (!n || !params)
+      return;
+   /* colours with FLOAT_TO_INT, shininess and indexes with lroundf */
+   for (int i = 0; i < n; i++)
+      params[i] = n == 4 ? fgl_float_to_int_norm(v[i]) : (GLint)lroundf(v[i]);
+}
+
+void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const unsigned legal = FGL_MAT_BITS_ALL &
+      ~(material_pname_bits(GL_SHININESS) | material_pname_bits(GL_COLOR_INDEXES));
+   unsigned bits = material_pname_bits(mode);
+   if (!bits || !material_face_bits(face, &bits) || (bits & ~legal)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   struct fgl_light_attrib *l = &ctx->Light;
+   if (l->_ColorMaterialBitmask == bits && l->ColorMaterialFace == face &&
+       l->ColorMaterialMode == mode)
+      return;
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
+   l->_ColorMaterialBitmask = bits;
+   l->ColorMaterialFace = face;
+   l->ColorMaterialMode = mode;
+   if (l->ColorMaterialEnabled) {
+      fgl_flush_current(ctx);
+      fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+   }
+}
+
+void fgl_set_color_material_enabled(struct fgl_context *ctx, bool state)
+{
+   /* enable.c: FLUSH_VERTICES, FLUSH_CURRENT, then the current colour */
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
+   fgl_flush_current(ctx);
+   ctx->Light.ColorMaterialEnabled = state;
+   if (state)
+      fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+}
+
+/* ---- derived state ---- */
+
+/* NORMALIZE_3FV: left-to-right length, no change for a zero vector. */
+static void normalize3(float v[3])
+{
+   float len = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+   if (len != 0.0f) {
+      len = 1.0f / sqrtf(len);
+      v[0] *= len;
+      v[1] *= len;
+      v[2] *= len;
+   }
+}
+
+/* TRANSFORM_NORMAL: n times the 3x3 part of m, by columns. */
+static void transform_normal(float out[3], const float n[3], const float *m)
+{
+   out[0] = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+   out[1] = n[0] * m[4] + n[1] * m[5] + n[2] * m[6];
+   out[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
+}
+
+/* The lighting space and the light vectors in it (Mesa's
+ * _mesa_update_lighting, _mesa_update_tnl_spaces, update_modelview_scale,
+ * compute_light_positions and the STATE_LIGHT_* uniforms of
+ * prog_statevars.c).  Lighting runs in object space when every enabled
+ * light is directional and not a spot, the viewer is infinite, there is no
+ * separate specular colour and the modelview preserves lengths
+ * (llvmpipe-facts.md §4 "Eye space vs OBJECT space"); the modelview must
+ * have been analysed. */
+void fgl_update_lighting(struct fgl_context *ctx)
+{
+   const struct fgl_light_attrib *la = &ctx->Light;
+   struct fgl_lighting_derived *d = &ctx->_Lighting;
+   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+
+   d->EnabledLights = 0;
+   bool need_vertices = la->Model.LocalViewer ||
+                        la->Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      const struct fgl_light *l = &la->Light[i];
+      if (!l->Enabled)
+         continue;
+      d->EnabledLights |= 1u << i;
+      d->Light[i].Positional = l->EyePosition[3] != 0.0f;
+      d->Light[i].Spot = l->SpotCutoff != 180.0f;
+      d->Light[i].Attenuated = l->ConstantAttenuation != 1.0f ||
+                               l->LinearAttenuation != 0.0f ||
+                               l->QuadraticAttenuation != 0.0f;
+      need_vertices |= d->Light[i].Positional || d->Light[i].Spot;
+   }
+   d->NeedEyeCoords = la->Enabled &&
+                      (need_vertices || !fgl_matrix_is_length_preserving(mv->flags));
+
+   /* update_modelview_scale */
+   d->NormalScale = 1.0f;
+   if (!fgl_matrix_is_length_preserving(mv->flags)) {
+      const float *inv = mv->inv;
+      float f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+      if (f < 1e-12f)
+         f = 1.0f;
+      d->NormalScale = d->NeedEyeCoords ? 1.0f / sqrtf(f) : sqrtf(f);
+   }
+
+   /* compute_light_positions and the uniforms derived from them */
+   static const float eye_z[3] = { 0, 0, 1 };
+   float eye_z_dir[3];
+   if (d->NeedEyeCoords)
+      memcpy(eye_z_dir, eye_z, sizeof(eye_z));
+   else
+      transform_normal(eye_z_dir, eye_z, mv->m);
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      if (!(d->EnabledLights & (1u << i)))
+         continue;
+      const struct fgl_light *l = &la->Light[i];
+      struct fgl_light_derived *ld = &d->Light[i];
+      float *p = ld->Position;
+      if (d->NeedEyeCoords) {
+         memcpy(p, l->EyePosition, 4 * sizeof(float));
+      } else {
+         /* TRANSFORM_POINT with the inverse, left to right */
+         const float *m = mv->inv, *e = l->EyePosition;
+         for (int r = 0; r < 4; r++)
+            p[r] = m[r] * e[0] + m[4 + r] * e[1] + m[8 + r] * e[2] + m[12 + r] * e[3];
+      }
+      if (ld->Positional) {
+         const float w_inv = 1.0f / p[3];
+         p[0] *= w_inv;
+         p[1] *= w_inv;
+         p[2] *= w_inv;
+      } else {
+         /* STATE_LIGHT_POSITION_NORMALIZED and STATE_LIGHT_HALF_VECTOR */
+         normalize3(p);
+         for (int k = 0; k < 3; k++)
+            ld->HalfVector[k] = p[k] + eye_z_dir[k];
+         normalize3(ld->HalfVector);
+      }
+      if (ld->Spot) {
+         float *s = ld->SpotDirection;
+         if (d->NeedEyeCoords) {
+            memcpy(s, l->SpotDirection, 3 * sizeof(float));
+            normalize3(s);
+         } else {
+            float dir[3];
+            memcpy(dir, l->SpotDirection, sizeof(dir));
+            normalize3(dir);
+            transform_normal(s, dir, mv->m);
+         }
+         normalize3(s);
+      }
+   }
 }

@@ -68,8 +68,10 @@ static void matrix_multf(fgl_matrix *mat, const float *m, unsigned flags)
 void fgl_matrix_identity(fgl_matrix *mat)
 {
    /* Like _math_matrix_set_identity, the geometry flags are left alone: only
-    * the dirty bits are cleared (the type becomes "identity"). */
+    * the dirty bits are cleared (the type becomes "identity"); the inverse is
+    * the identity too. */
    memcpy(mat->m, identity, sizeof(identity));
+   memcpy(mat->inv, identity, sizeof(identity));
    mat->flags &= ~(MAT_DIRTY_FLAGS | MAT_DIRTY_TYPE | MAT_DIRTY_INVERSE);
 }
 

@@ -68,4 +68,10 @@ static inline bool fgl_matrix_is_3d(unsigned flags)
    return (MAT_FLAGS_GEOMETRY & ~MAT_FLAGS_3D & flags) == 0;
 }
 
+/* _math_matrix_is_length_preserving: only rotations and translations. */
+static inline bool fgl_matrix_is_length_preserving(unsigned flags)
+{
+   return (MAT_FLAGS_GEOMETRY & ~(MAT_FLAG_ROTATION | MAT_FLAG_TRANSLATION) & flags) == 0;
+}
+
 #endif

@@ -14,6 +14,16 @@
 
 #define R_MAX_ATTRIBS 4
 
+/* Varying slots: the colour written to the buffer, the secondary colour
+ * the fragment stage adds to it (separate specular), and their back-face
+ * versions for two-sided lighting. */
+enum {
+   R_ATTR_COLOR0,
+   R_ATTR_COLOR1,
+   R_ATTR_BCOLOR0,
+   R_ATTR_BCOLOR1,
+};
+
 /* Depth/stencil buffer layouts, as the OSMesa oracle allocates them. */
 enum r_zs_format {
    R_ZS_NONE,
@@ -51,9 +61,13 @@ struct r_state {
    enum r_func depth_func;
    bool depth_write;
 
-   /* varyings: attribute 0 is the colour written to the buffer */
+   /* varyings (R_ATTR_* slots); the vertex stage fills num_attribs */
    int num_attribs;
    uint32_t flat_mask;          /* bit i: attribute i uses the provoking vertex */
+   bool color_sum;              /* colour += secondary colour (rgb) */
+   bool twoside;                /* back-facing triangles use the BCOLOR slots */
+   bool ccw_is_front;           /* a positive snapped area is front-facing */
+   bool cull_front, cull_back;  /* faces not drawn */
 };
 
 /* Rasterize one triangle; v2 is the provoking vertex. */

@@ -206,13 +206,17 @@ struct tri_shade {
    /* Perspective-correct attributes are interpolated premultiplied by 1/w
     * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
     * provoking vertex. */
-   struct plane ap[R_MAX_ATTRIBS][4];
-   float flat[R_MAX_ATTRIBS][4];
-   bool color_flat;
+   struct plane ap[2][4];
+   float flat[2][4];
+   bool flat_attr[2];
+   int num_used;            /* 1, or 2 when the secondary colour is added */
 };
 
+/* Setup of the fragment inputs: the colour (and the secondary colour), from
+ * the back-face slots for a back-facing two-sided triangle
+ * (lp_state_setup.c:lp_twoside). */
 static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
-                        struct tri_shade *ts)
+                        bool back, struct tri_shade *ts)
 {
    /* plain float arithmetic in llvmpipe's order */
    const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
@@ -229,18 +233,20 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
-   for (int a = 0; a < rs->num_attribs; a++) {
+   ts->num_used = rs->color_sum ? 2 : 1;
+   for (int a = 0; a < ts->num_used; a++) {
+      const int slot = back ? a + R_ATTR_BCOLOR0 : a;
+      ts->flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
       for (int c = 0; c < 4; c++) {
-         if (rs->flat_mask & (1u << a)) {
-            ts->flat[a][c] = v[2]->attr[a][c];
+         if (ts->flat_attr[a]) {
+            ts->flat[a][c] = v[2]->attr[slot][c];
          } else {
-            ts->ap[a][c] = make_plane(&f, v[0]->attr[a][c] * v[0]->pos[3],
-                                          v[1]->attr[a][c] * v[1]->pos[3],
-                                          v[2]->attr[a][c] * v[2]->pos[3]);
+            ts->ap[a][c] = make_plane(&f, v[0]->attr[slot][c] * v[0]->pos[3],
+                                          v[1]->attr[slot][c] * v[1]->pos[3],
+                                          v[2]->attr[slot][c] * v[2]->pos[3]);
          }
       }
    }
-   ts->color_flat = (rs->flat_mask & 1u) != 0;
 }
 
 static inline void write_fragment(const struct r_state *rs, int px, int py,
@@ -288,16 +294,20 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
                                int px, int py)
 {
    const float fx = (float)px, fy = (float)py;
-   float color[4];
-   if (ts->color_flat) {
+   float in[2][4];
+   const float rw = ts->flat_attr[0] && (ts->num_used == 1 || ts->flat_attr[1])
+                       ? 0.0f : 1.0f / eval_plane(&ts->w, fx, fy);
+   for (int a = 0; a < ts->num_used; a++) {
       for (int c = 0; c < 4; c++)
-         color[c] = ts->flat[0][c];
-   } else {
-      const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
-      for (int c = 0; c < 4; c++)
-         color[c] = eval_plane(&ts->ap[0][c], fx, fy) * rw;
+         in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
-   write_fragment(rs, px, py, &ts->z, fx, fy, color);
+   /* the fixed-function fragment program: colour, plus the secondary
+    * colour's rgb with separate specular (ff_fragment_shader.cpp) */
+   if (ts->num_used == 2) {
+      for (int c = 0; c < 3; c++)
+         in[0][c] = in[0][c] + in[1][c];
+   }
+   write_fragment(rs, px, py, &ts->z, fx, fy, in[0]);
 }
 
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
@@ -418,7 +428,7 @@ static void rasterize_direct(const struct r_state *rs, const struct tri_shade *t
  * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
  * provoking vertex. */
 static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const v[3],
-                          const int32_t X[3], const int32_t Y[3])
+                          const int32_t X[3], const int32_t Y[3], bool back)
 {
    /* draw region, inclusive */
    const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
@@ -466,7 +476,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    }
    if (exact) {
       struct tri_shade ts;
-      setup_shade(rs, v, &ts);
+      setup_shade(rs, v, back, &ts);
       rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
       return;
    }
@@ -488,7 +498,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
                                 .dcdy = shl32(-1, 8), .eo = 0 };
 
    struct tri_shade ts;
-   setup_shade(rs, v, &ts);
+   setup_shade(rs, v, back, &ts);
 
    /* binning */
    const uint32_t dx = floor_pot((uint32_t)(bx0 ^ bx1) | (uint32_t)(by0 ^ by1));
@@ -561,11 +571,17 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                                   (uint64_t)((int64_t)dx20 * dy01));
    if (area == 0)
       return;
+   /* lp_setup_tri.c triangle_both/_ccw/_cw: facing from the area sign,
+    * culling, and the facing that chooses two-sided colours */
+   const bool is_back = (area > 0) != rs->ccw_is_front;
+   if (is_back ? rs->cull_back : rs->cull_front)
+      return;
+   const bool back = rs->twoside && is_back;
    if (area < 0) {
       /* clockwise: processed as (v1, v0, v2), keeping the provoking vertex */
       const struct r_vertex *t = v[0]; v[0] = v[1]; v[1] = t;
       int32_t ti = X[0]; X[0] = X[1]; X[1] = ti;
       ti = Y[0]; Y[0] = Y[1]; Y[1] = ti;
    }
-   rasterize_ccw(rs, v, X, Y);
+   rasterize_ccw(rs, v, X, Y, back);
 }

@@ -22,6 +22,11 @@ struct t_vertex {
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out);
 
+/* Light n stored vertices (t_light.c): the R_ATTR_* colour slots of out[],
+ * before the clamp. */
+void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+             struct t_vertex *out);
+
 /* Clip a triangle against the view volume and rasterize the pieces; v2 is
  * the provoking vertex. */
 void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,

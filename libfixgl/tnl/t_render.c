@@ -139,7 +139,10 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * is exact even where interpolation is not (w = 0, NaN positions;
     * ORACLE-NOTES.md "Vertex batching"). */
    const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
-   ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
+   if (ctx->Light.Enabled)
+      ctx->_Raster.flat_mask = flat ? 0xfu : 0u;   /* lit colours always vary */
+   else
+      ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
    for (unsigned i = 0; i < nprims; i++)
       render_prim(&r, &prims[i], flat);
    free(tv);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "context.h"
+#include "main/groups.h"
 #include "tnl/t_pipeline.h"
 
 static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
@@ -218,14 +219,6 @@ static void clean_value(const struct fgl_vbo *vbo, enum fgl_vbo_attr attr, float
       out[i] = i < vbo->attr_size[attr] ? vbo->current[attr][i] : attr_default[i];
 }
 
-void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, float out[4])
-{
-   if (ctx->Vbo.attr_size[attr])
-      clean_value(&ctx->Vbo, attr, out);
-   else
-      memcpy(out, ctx->Current.Attrib[attr], 4 * sizeof(float));
-}
-
 const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                               enum fgl_vbo_attr attr, unsigned *stride)
 {
@@ -237,20 +230,50 @@ const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vb
    return ctx->Current.Attrib[attr];
 }
 
+/* vbo_exec_copy_to_current: the format's attributes become current; a
+ * changed colour then updates the materials that track it (after all
+ * attributes, so it wins over a glMaterial of the same batch). */
+static void copy_to_current(struct fgl_context *ctx)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   bool color0_changed = false;
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++) {
+      if (!vbo->attr_size[a])
+         continue;
+      float v[4];
+      clean_value(vbo, (enum fgl_vbo_attr)a, v);
+      if (memcmp(ctx->Current.Attrib[a], v, sizeof(v)) == 0)
+         continue;
+      memcpy(ctx->Current.Attrib[a], v, sizeof(v));
+      if (a == FGL_ATTR_COLOR0)
+         color0_changed = true;
+      if (a >= FGL_ATTR_MAT_FIRST)
+         ctx->NewState |= FGL_NEW_MATERIAL;
+   }
+   if (color0_changed && ctx->Light.ColorMaterialEnabled)
+      fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+}
+
 void fgl_vbo_flush_vertices(struct fgl_context *ctx)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
    if (vbo->vert_count)
       vtx_flush(ctx, NULL, NULL);
    if (vbo->vertex_size) {
-      /* vbo_exec_copy_to_current, then vbo_reset_all_attr */
-      for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
-         if (vbo->attr_size[a])
-            clean_value(vbo, (enum fgl_vbo_attr)a, ctx->Current.Attrib[a]);
+      copy_to_current(ctx);
+      /* vbo_reset_all_attr */
       memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
       memset(vbo->active_size, 0, sizeof(vbo->active_size));
       vbo->vertex_size = 0;
    }
+   vbo->need_flush = 0;
+}
+
+void fgl_vbo_flush_current(struct fgl_context *ctx)
+{
+   copy_to_current(ctx);
+   /* NeedFlush = ~FLUSH_UPDATE_CURRENT: the next FLUSH_VERTICES flushes */
+   ctx->Vbo.need_flush = FGL_VBO_FLUSH_STORED;
 }
 
 void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
@@ -276,6 +299,7 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
       }
       for (unsigned i = 0; i < n; i++)
          cur[i] = v[i];
+      vbo->need_flush |= FGL_VBO_FLUSH_CURRENT;
       return;
    }
 
@@ -351,6 +375,8 @@ void fgl_vbo_end(struct fgl_context *ctx)
 
    last->count = vbo->vert_count - last->start;
    last->end = true;
+   if (last->count)
+      vbo->need_flush |= FGL_VBO_FLUSH_STORED;
 
    /* vbo_try_prim_conversion */
    if (last->mode == GL_LINE_STRIP && last->count == 2)

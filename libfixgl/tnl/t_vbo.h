@@ -25,6 +25,10 @@
 
 struct fgl_context;
 
+/* What a flush has to do (Mesa's ctx->Driver.NeedFlush bits). */
+#define FGL_VBO_FLUSH_STORED  0x1u   /* a primitive was stored */
+#define FGL_VBO_FLUSH_CURRENT 0x2u   /* an attribute was set */
+
 /* The attributes of Mesa's vbo that fixed-function GL 1.x programs set
  * through immediate mode.  Materials are attributes too: glMaterial goes
  * through the vbo inside and outside glBegin/glEnd, so it takes part in the
@@ -73,6 +77,7 @@ struct fgl_vbo {
    unsigned active_size[FGL_ATTR_COUNT];/* components of the last call, as Mesa tracks it */
    unsigned vertex_size;                /* sum of attr_size, in floats */
    unsigned buffer_used;                /* bytes of the emulated buffer consumed */
+   unsigned need_flush;                 /* FGL_VBO_FLUSH_* (Mesa's NeedFlush) */
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
                                          * the format (ctx->Current.Attrib
                                          * holds the others) */
@@ -93,13 +98,14 @@ void fgl_vbo_end(struct fgl_context *ctx);
 const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                               enum fgl_vbo_attr attr, unsigned *stride);
 
-/* FLUSH_VERTICES: draw what is stored, copy the format's attributes to
- * ctx->Current.Attrib and reset the vertex format. */
+/* vbo_exec_FlushVertices(FLUSH_STORED_VERTICES): draw what is stored,
+ * copy the format's attributes to ctx->Current.Attrib and reset the vertex
+ * format. */
 void fgl_vbo_flush_vertices(struct fgl_context *ctx);
 
-/* The current value of a non-position attribute as glGet reports it
- * (FLUSH_CURRENT: the stored components, then defaults; attributes not in
- * the vertex format come from ctx->Current.Attrib). */
-void fgl_vbo_current(const struct fgl_context *ctx, enum fgl_vbo_attr attr, float out[4]);
+/* vbo_exec_FlushVertices(FLUSH_UPDATE_CURRENT): copy the format's
+ * attributes to ctx->Current.Attrib, keeping the format. */
+void fgl_vbo_flush_current(struct fgl_context *ctx);
+
 
 #endif

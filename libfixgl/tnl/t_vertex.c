@@ -3,7 +3,8 @@
  * (llvmpipe-facts.md §1 "Vertex path", §2 "Vertex colours"):
  *   clip = ((x*C0 + y*C1) + z*C2) + w*C3   (MVP columns, every op rounded)
  *   oow  = 1/clip.w,  win = fma(clip*oow, scale, translate)
- * and vertex colours clamped to [0,1].
+ * then the colours (the vertex colour, or the lit colours of t_light.c)
+ * clamped to [0,1].
  */
 #include "tnl/t_pipeline.h"
 
@@ -33,6 +34,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    const float *s = ctx->_ViewportScale, *t = ctx->_ViewportTranslate;
    unsigned cstride;
    const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
+   const bool lit = ctx->Light.Enabled;
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
@@ -52,9 +54,20 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       v->r.pos[2] = fmaf(v->clip[2] * oow, s[2], t[2]);
       v->r.pos[3] = oow;
 
-      const float *c = color + (size_t)i * cstride;
-      /* draw_llvm.c do_clamp_vertex_color */
-      for (int k = 0; k < 4; k++)
-         v->r.attr[0][k] = r_clamp01(c[k]);
+      if (!lit) {
+         const float *c = color + (size_t)i * cstride;
+         for (int k = 0; k < 4; k++)
+            v->r.attr[R_ATTR_COLOR0][k] = c[k];
+      }
    }
+
+   if (lit)
+      t_light(ctx, in, n, out);
+
+   /* draw_llvm.c do_clamp_vertex_color: every colour output */
+   const int nattr = ctx->_Raster.num_attribs;
+   for (unsigned i = 0; i < n; i++)
+      for (int a = 0; a < nattr; a++)
+         for (int k = 0; k < 4; k++)
+            out[i].r.attr[a][k] = r_clamp01(out[i].r.attr[a][k]);
 }

@@ -75,12 +75,15 @@ static void test_identity_and_load(void)
 {
    fgl_matrix m;
    for (int i = 0; i < 16; i++)
-      m.m[i] = (float)(i + 7);
+      m.m[i] = m.inv[i] = (float)(i + 7);
    /* like Mesa's _math_matrix_set_identity: the geometry flags stay, the
     * dirty bits go */
    m.flags = MAT_FLAG_PERSPECTIVE | MAT_FLAG_SINGULAR | MAT_DIRTY;
    fgl_matrix_identity(&m);
    CHECK_MATRIX("identity", m.m, ident);
+   /* the inverse is set too (the analysis skips a clean matrix, and the
+    * object-space lighting reads the inverse) */
+   CHECK_MATRIX("identity inverse", m.inv, ident);
    CHECK_FLAGS("identity keeps geometry flags", m.flags,
                (unsigned)(MAT_FLAG_PERSPECTIVE | MAT_FLAG_SINGULAR));
 

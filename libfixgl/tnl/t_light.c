@@ -1,0 +1,306 @@
+/*
+ * Per-vertex lighting, as the oracle's fixed-function vertex program
+ * computes it (Mesa 22.3 ffvertex_prog.c:build_lighting, compiled through
+ * prog_to_nir and gallivm; llvmpipe-facts.md §4):
+ *
+ *   colour = emission + ambient_material * global_ambient
+ *          + sum over enabled lights, in index order, of
+ *            att * spot * (ambient + max(n.l, 0) * diffuse
+ *                          + max(n.h, 0)^shininess * specular)
+ *
+ * with every product a separate float multiply and every sum a separate
+ * add (no FMA), dot products summed from the last component, 1/sqrt(|x|)
+ * for normalisation, and pow from gallivm's exp2/log2 approximations.  The
+ * light vectors and the lighting space come from fgl_update_lighting.
+ */
+#include "tnl/t_pipeline.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#include "context.h"
+#include "tnl/t_gallivm.h"
+
+/* DP3 = (z*z' + y*y') + x*x' (NIR's reduction from the last component) */
+static inline float dp3(const float *a, const float *b)
+{
+   return (a[2] * b[2] + a[1] * b[1]) + a[0] * b[0];
+}
+
+/* RSQ: 1/sqrt(|x|) */
+static inline float rsq(float x)
+{
+   return 1.0f / sqrtf(fabsf(x));
+}
+
+/* emit_normalize_vec3: v * rsq(v.v) */
+static inline void normalize3(float *v)
+{
+   const float r = rsq(dp3(v, v));
+   v[0] *= r;
+   v[1] *= r;
+   v[2] *= r;
+}
+
+/* MAD as the oracle runs it: a separate multiply and add */
+static inline void mad3(float *acc, float s, const float *v)
+{
+   for (int k = 0; k < 3; k++)
+      acc[k] = s * v[k] + acc[k];
+}
+
+/* The LIT result of one face: (att, diffuse factor, specular factor). */
+struct lit {
+   float ambient, diffuse, specular;
+};
+
+/* LIT of (nd, nh, -, shininess) (prog_to_nir.c:ptn_lit): y = max(nd, 0),
+ * z = nd <= 0 ? 0 : pow(max(nh, 0), clamp(shininess, -128, 128)). */
+static inline struct lit lit_op(float nd, float nh, float shininess)
+{
+   const float exponent = fmaxf(fminf(shininess, 128.0f), -128.0f);
+   struct lit l = { 1.0f, fmaxf(nd, 0.0f), 0.0f };
+   l.specular = 0.0f >= nd ? 0.0f : t_gallivm_pow(fmaxf(nh, 0.0f), exponent);
+   return l;
+}
+
+/* A face's material for one vertex. */
+struct material {
+   const float *ambient, *diffuse, *specular, *emission;
+   float shininess;
+};
+
+/* What the vertex program was generated for (ffvertex_prog.c state_key). */
+struct light_key {
+   bool eye;                 /* lighting in eye space */
+   bool normalize;           /* GL_NORMALIZE */
+   bool rescale;             /* normal times STATE_NORMAL_SCALE */
+   bool transform_normal;    /* normal through the inverse modelview */
+   bool local_viewer, twoside, separate;
+   bool shininess_is_zero;   /* no specular pow: the degenerate LIT */
+};
+
+/* One vertex: col[0] front colour, col[1] front secondary, col[2] back
+ * colour, col[3] back secondary (R_ATTR_* slots), before the clamp. */
+static void light_vertex(const struct fgl_context *ctx, const struct light_key *key,
+                         const float n[3], const float V[4],
+                         const struct material mat[2], float col[4][4])
+{
+   const struct fgl_light_attrib *la = &ctx->Light;
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   const int sides = key->twoside ? 2 : 1;
+
+   /* scene colour: emission + ambient * global ambient, alpha = diffuse alpha */
+   for (int s = 0; s < sides; s++) {
+      float *c = col[2 * s];
+      for (int k = 0; k < 3; k++)
+         c[k] = la->Model.Ambient[k] * mat[s].ambient[k] + mat[s].emission[k];
+      c[3] = mat[s].diffuse[3];
+      float *c1 = col[2 * s + 1];
+      c1[0] = c1[1] = c1[2] = 0.0f;
+      c1[3] = 1.0f;
+   }
+
+   float eye_hat[3];
+   if (key->local_viewer && !key->shininess_is_zero) {
+      for (int k = 0; k < 3; k++)
+         eye_hat[k] = V[k];
+      normalize3(eye_hat);
+   }
+
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      if (!(ld->EnabledLights & (1u << i)))
+         continue;
+      const struct fgl_light *l = &la->Light[i];
+      const struct fgl_light_derived *d = &ld->Light[i];
+
+      /* direction to the light, and the squared distance */
+      float VP[3], dist2 = 0.0f, inv_dist = 0.0f;
+      if (d->Positional) {
+         for (int k = 0; k < 3; k++)
+            VP[k] = d->Position[k] - V[k];
+         dist2 = dp3(VP, VP);
+         inv_dist = rsq(dist2);
+         for (int k = 0; k < 3; k++)
+            VP[k] *= inv_dist;
+      } else {
+         for (int k = 0; k < 3; k++)
+            VP[k] = d->Position[k];
+      }
+
+      /* attenuation: spot cone and exponent, then distance
+       * (calculate_light_attenuation) */
+      bool attenuated = false;
+      float att = 1.0f;
+      if (d->Spot) {
+         const float spot = (-VP[2] * d->SpotDirection[2] + -VP[1] * d->SpotDirection[1]) +
+                            -VP[0] * d->SpotDirection[0];
+         const float inside = l->CosCutoff < spot ? 1.0f : 0.0f;
+         att = inside * t_gallivm_pow(fabsf(spot), l->SpotExponent);
+         attenuated = true;
+      }
+      if (d->Attenuated && d->Positional) {
+         const float dist = sqrtf(fabsf(dist2));   /* rcp(rsq(s)) */
+         const float k = (l->QuadraticAttenuation * dist2 + l->LinearAttenuation * dist) +
+                         l->ConstantAttenuation * (inv_dist * dist);
+         att = attenuated ? (1.0f / k) * att : 1.0f / k;
+         attenuated = true;
+      }
+
+      /* half vector */
+      float H[3];
+      if (!key->shininess_is_zero) {
+         if (key->local_viewer) {
+            for (int k = 0; k < 3; k++)
+               H[k] = VP[k] - eye_hat[k];
+            normalize3(H);
+         } else if (!d->Positional) {
+            for (int k = 0; k < 3; k++)
+               H[k] = d->HalfVector[k];
+         } else {
+            H[0] = VP[0];
+            H[1] = VP[1];
+            H[2] = VP[2] + 1.0f;
+            normalize3(H);
+         }
+      }
+
+      const float nd = dp3(n, VP);
+      const float nh = key->shininess_is_zero ? nd : dp3(n, H);
+
+      for (int s = 0; s < sides; s++) {
+         /* the back face sees the negated dot products */
+         const float snd = s ? -nd : nd, snh = s ? -nh : nh;
+         struct lit lt;
+         if (attenuated) {
+            /* with shininess 0 every component of dots is n.VP */
+            lt = lit_op(snd, snh, key->shininess_is_zero ? snd : mat[s].shininess);
+            lt.ambient = att;
+            lt.diffuse *= att;
+            lt.specular *= att;
+         } else if (!key->shininess_is_zero) {
+            lt = lit_op(snd, snh, mat[s].shininess);
+         } else {
+            /* emit_degenerate_lit */
+            lt.ambient = 1.0f;
+            lt.diffuse = fmaxf(0.0f, snd);
+            lt.specular = 0.0f < snd ? 1.0f : 0.0f;
+         }
+
+         float ambient[3], diffuse[3], specular[3];
+         for (int k = 0; k < 3; k++) {
+            ambient[k] = l->Ambient[k] * mat[s].ambient[k];
+            diffuse[k] = l->Diffuse[k] * mat[s].diffuse[k];
+            specular[k] = l->Specular[k] * mat[s].specular[k];
+         }
+         float *c0 = col[2 * s];
+         float *c1 = key->separate ? col[2 * s + 1] : c0;
+         if (attenuated) {
+            mad3(c0, lt.ambient, ambient);
+         } else {
+            for (int k = 0; k < 3; k++)
+               c0[k] = ambient[k] + c0[k];
+         }
+         mad3(c0, lt.diffuse, diffuse);
+         mad3(c1, lt.specular, specular);
+      }
+   }
+}
+
+/* get_transformed_normal */
+static void transform_normal(const struct fgl_context *ctx, const struct light_key *key,
+                             const float *in, float n[3])
+{
+   if (key->transform_normal) {
+      const float *inv = ctx->ModelviewStack.Top->inv;
+      for (int r = 0; r < 3; r++)
+         n[r] = dp3(in, inv + 4 * r);
+   } else {
+      for (int k = 0; k < 3; k++)
+         n[k] = in[k];
+   }
+   if (key->normalize) {
+      normalize3(n);
+   } else if (key->rescale) {
+      for (int k = 0; k < 3; k++)
+         n[k] *= ctx->_Lighting.NormalScale;
+   }
+}
+
+/* The material source of each property of each face for this batch: the
+ * vertex colour when it tracks the colour and the colour varies
+ * (get_material's order), else the vbo attribute (per vertex when it is in
+ * the vertex format, the current value otherwise). */
+struct material_source {
+   const float *ptr;
+   unsigned stride;
+};
+
+void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+             struct t_vertex *out)
+{
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   const struct fgl_vbo *vbo = &ctx->Vbo;
+   struct light_key key = {
+      .eye = ld->NeedEyeCoords,
+      .normalize = ctx->Transform.Normalize,
+      .local_viewer = ctx->Light.Model.LocalViewer,
+      .twoside = ctx->Light.Model.TwoSide,
+      .separate = ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR,
+   };
+   const bool rescale_match = key.eye == ctx->Transform.RescaleNormals;
+   key.transform_normal = key.eye;
+   key.rescale = !key.normalize && rescale_match;
+
+   const bool color_varying = vbo->attr_size[FGL_ATTR_COLOR0] != 0;
+   const unsigned color_mats = ctx->Light.ColorMaterialEnabled && color_varying
+                                  ? ctx->Light._ColorMaterialBitmask : 0;
+
+   struct material_source src[FGL_ATTR_COUNT];
+   for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++) {
+      if (color_mats & FGL_MAT_BIT(a))
+         src[a].ptr = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &src[a].stride);
+      else
+         src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
+   }
+
+   /* check_active_shininess: a shininess that varies, or is not 0 */
+   bool shininess_active = false;
+   for (int s = 0; s < (key.twoside ? 2 : 1); s++) {
+      const int a = FGL_ATTR_MAT_FRONT_SHININESS + s;
+      shininess_active |= src[a].stride != 0 || (color_mats & FGL_MAT_BIT(a)) ||
+                          ctx->Current.Attrib[a][0] != 0.0f;
+   }
+   key.shininess_is_zero = !shininess_active;
+
+   unsigned nstride;
+   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
+   const float *mv = ctx->ModelviewStack.Top->m;
+
+   for (unsigned i = 0; i < n; i++) {
+      float nrm[3], V[4] = { 0, 0, 0, 1 };
+      transform_normal(ctx, &key, normal + (size_t)i * nstride, nrm);
+      if (key.eye) {
+         /* eye position: the modelview's column MUL/MAD chain */
+         const float *p = in[i].attr[FGL_ATTR_POS];
+         for (int r = 0; r < 4; r++) {
+            float acc = p[0] * mv[r];
+            acc = p[1] * mv[4 + r] + acc;
+            acc = p[2] * mv[8 + r] + acc;
+            acc = p[3] * mv[12 + r] + acc;
+            V[r] = acc;
+         }
+      }
+#define MAT(a) (src[a].ptr + (size_t)i * src[a].stride)
+      const struct material mat[2] = {
+         { MAT(FGL_ATTR_MAT_FRONT_AMBIENT), MAT(FGL_ATTR_MAT_FRONT_DIFFUSE),
+           MAT(FGL_ATTR_MAT_FRONT_SPECULAR), MAT(FGL_ATTR_MAT_FRONT_EMISSION),
+           MAT(FGL_ATTR_MAT_FRONT_SHININESS)[0] },
+         { MAT(FGL_ATTR_MAT_BACK_AMBIENT), MAT(FGL_ATTR_MAT_BACK_DIFFUSE),
+           MAT(FGL_ATTR_MAT_BACK_SPECULAR), MAT(FGL_ATTR_MAT_BACK_EMISSION),
+           MAT(FGL_ATTR_MAT_BACK_SHININESS)[0] },
+      };
+#undef MAT
+      light_vertex(ctx, &key, nrm, V, mat, out[i].r.attr);
+   }
+}
