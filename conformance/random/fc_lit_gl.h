@@ -1,13 +1,12 @@
 /* fc_lit_gl.h - the lighting entry points of the lit random scenes.
  *
- * libfixgl does not export them yet, and a renderer must link against it
- * before it implements them, so the generator calls them through pointers:
- * the oracle's are Mesa's own functions (taken by name, so their types are
- * checked at compile time), fixgl's come from OSMesaGetProcAddress, which
- * hands out fixgl's function or, for a gl* name it does not implement, a
- * no-op stub (as Mesa's glapi does).  Until fixgl implements lighting its
- * lit scenes are therefore drawn unlit.  fc_lit_gl_load() fills the table;
- * the generator calls it at the start of every lit scene. */
+ * The generator calls them through pointers, so that the lit scenes also
+ * exercise OSMesaGetProcAddress as legacy loaders use it: the oracle's are
+ * Mesa's own functions (taken by name, so their types are checked at
+ * compile time), fixgl's come from fixgl's OSMesaGetProcAddress (which
+ * answers from libfixgl/main/api_list.h; a gl* name it does not implement
+ * gets a no-op stub, as from Mesa's glapi).  fc_lit_gl_load() fills the
+ * table; the generator calls it at the start of every lit scene. */
 #ifndef FC_LIT_GL_H
 #define FC_LIT_GL_H
 

@@ -132,6 +132,10 @@ int main(int argc, char **argv)
             fc_rec_write(out, FC_REC_CASE, c->name, NULL, 0, NULL, 0, NULL, 0);
             raise(SIGSEGV);
         }
+        if (fc_trace_out)
+            fprintf(fc_trace_out, "/* case %s: %dx%d format 0x%x depth %d stencil %d */\n",
+                    c->name, c->width, c->height, (unsigned)c->format, c->depth_bits,
+                    c->stencil_bits);
         fc_run_case(c, out, perturb);
     }
     return fclose(out) == 0 ? 0 : 2;

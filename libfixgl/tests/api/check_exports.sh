@@ -6,7 +6,9 @@
 #  - the OSMesa entry points that programs call are all exported;
 #  - DT_NEEDED lists only libc, libm, libpthread and the dynamic loader
 #    (with --sanitized: also the sanitizer runtimes the build links in);
-#  - a soname is set.
+#  - a soname is set;
+#  - the gl* symbols are exactly the functions of main/api_list.h (the table
+#    OSMesaGetProcAddress answers from).
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 ]]; then
@@ -37,6 +39,15 @@ for sym in OSMesaCreateContext OSMesaCreateContextExt OSMesaDestroyContext \
            OSMesaGetProcAddress; do
   printf '%s\n' "$symbols" | grep -qx "$sym" || fail "$sym is not exported"
 done
+
+api_list=$(dirname "$0")/../../main/api_list.h
+listed=$(sed -n 's/^FGL_API(\(gl[A-Za-z0-9_]*\))$/\1/p' "$api_list" | sort)
+exported=$(printf '%s\n' "$symbols" | grep -E '^gl' | sort)
+if [[ "$listed" != "$exported" ]]; then
+  fail "exported gl* symbols and main/api_list.h differ (< exported only, > listed only):"
+  diff <(printf '%s\n' "$exported") <(printf '%s\n' "$listed") | grep '^[<>]' | sed 's/^/  /'
+fi
+echo "$(printf '%s\n' "$listed" | grep -c .) gl* entry points, all in main/api_list.h"
 
 # Libraries the dynamic linker must load with this one.
 allowed='^(libc\.so\.6|libm\.so\.6|libpthread\.so\.0|ld-linux-x86-64\.so\.2|ld-linux-aarch64\.so\.1)$'
