@@ -135,8 +135,11 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
       if (d->Spot) {
          const float spot = (-VP[2] * d->SpotDirection[2] + -VP[1] * d->SpotDirection[1]) +
                             -VP[0] * d->SpotDirection[0];
-         const float inside = l->CosCutoff < spot ? 1.0f : 0.0f;
-         att = inside * t_gallivm_pow(fabsf(spot), l->SpotExponent);
+         /* SLT times POW: the oracle selects, so outside the cone the
+          * factor is 0 even where pow is NaN (a light exactly at the
+          * vertex; ORACLE-NOTES.md "Lighting") */
+         const bool inside = l->CosCutoff < spot;
+         att = inside ? t_gallivm_pow(fabsf(spot), l->SpotExponent) : 0.0f;
          attenuated = true;
       }
       if (d->Attenuated && d->Positional) {
