@@ -44,9 +44,7 @@ enum {
    FGL_NEW_DEPTH      = 1u << 3,
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
-   FGL_NEW_MATERIAL   = 1u << 6,   /* current material values */
-   FGL_NEW_TRANSFORM  = 1u << 7,   /* GL_NORMALIZE, GL_RESCALE_NORMAL */
-   FGL_NEW_POLYGON    = 1u << 8,   /* front face, culling */
+   FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling */
 };
 #define FGL_NEW_ALL (~0u)
 

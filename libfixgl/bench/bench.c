@@ -21,12 +21,6 @@
  *           and smooth shading, glNormal3f), one directional light,
  *           GL_NORMALIZE, GL_CULL_FACE, depth test
  *
- * The lighting entry points (glLightfv, glMaterialfv, glNormal3f[v]) are
- * taken from OSMesaGetProcAddress in both builds, so a library that does
- * not implement them yet still links: fixgl hands out a no-op stub for a
- * gl* name it lacks (as Mesa's glapi does); the program lists such stubs on
- * stderr. Until fixgl lights, the lit scenes' "same" column says no.
- *
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
  * Output, one line per scene:  scene NAME fps X frames N checksum C
@@ -69,44 +63,6 @@ struct lit_vertex {
 
 static struct lit_vertex lit_small[LIT_SMALL_STACKS * LIT_SMALL_SLICES * 6];
 static struct lit_vertex lit_large[SPHERE_STACKS * SPHERE_SLICES * 6];
-
-/* Lighting entry points (see the top comment). */
-static struct {
-  void (GLAPIENTRY *Lightfv)(GLenum, GLenum, const GLfloat *);
-  void (GLAPIENTRY *Materialfv)(GLenum, GLenum, const GLfloat *);
-  void (GLAPIENTRY *Materialf)(GLenum, GLenum, GLfloat);
-  void (GLAPIENTRY *Normal3f)(GLfloat, GLfloat, GLfloat);
-  void (GLAPIENTRY *Normal3fv)(const GLfloat *);
-} gl;
-
-/* Fills `gl`; warns about the functions that are no-op stubs (the pointer
- * handed out for a name no library has). */
-static int load_lighting(void)
-{
-  static const char *names[5] = { "glLightfv", "glMaterialfv", "glMaterialf", "glNormal3f",
-                                   "glNormal3fv" };
-  OSMESAproc procs[5], stub = OSMesaGetProcAddress("glFixglBenchNoSuchFunction");
-  char stubs[128] = "";
-  for (int i = 0; i < 5; i++) {
-    procs[i] = OSMesaGetProcAddress(names[i]);
-    if (!procs[i]) {
-      fprintf(stderr, "bench: OSMesaGetProcAddress(\"%s\") is NULL\n", names[i]);
-      return 0;
-    }
-    if (procs[i] == stub) {
-      strcat(stubs, " ");
-      strcat(stubs, names[i]);
-    }
-  }
-  if (stubs[0])
-    fprintf(stderr, "bench: note: no-op stubs in this library (its lit scenes cannot match):%s\n", stubs);
-  gl.Lightfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[0];
-  gl.Materialfv = (void (GLAPIENTRY *)(GLenum, GLenum, const GLfloat *))procs[1];
-  gl.Materialf = (void (GLAPIENTRY *)(GLenum, GLenum, GLfloat))procs[2];
-  gl.Normal3f = (void (GLAPIENTRY *)(GLfloat, GLfloat, GLfloat))procs[3];
-  gl.Normal3fv = (void (GLAPIENTRY *)(const GLfloat *))procs[4];
-  return 1;
-}
 
 /* Deterministic generator (xorshift32), so both builds draw the same soup. */
 static uint32_t rng_state = 0x12345678u;
@@ -320,7 +276,7 @@ static void replay_gear(int which)
     switch (o->op) {
     case OP_BEGIN: glBegin(o->mode); break;
     case OP_END: glEnd(); break;
-    case OP_NORMAL: gl.Normal3f(o->v[0], o->v[1], o->v[2]); break;
+    case OP_NORMAL: glNormal3f(o->v[0], o->v[1], o->v[2]); break;
     case OP_VERTEX: glVertex3f(o->v[0], o->v[1], o->v[2]); break;
     default: glShadeModel(o->mode); break;
     }
@@ -376,7 +332,7 @@ static void submit_lit(const struct lit_vertex *v, int count)
 {
   glBegin(GL_TRIANGLES);
   for (int i = 0; i < count; i++) {
-    gl.Normal3fv(v[i].normal);
+    glNormal3fv(v[i].normal);
     glVertex3fv(v[i].pos);
   }
   glEnd();
@@ -397,13 +353,13 @@ static void draw_lit_sphere(const struct lit_vertex *v, int count)
   glFrustum(-0.48, 0.48, -0.36, 0.36, 1.0, 10.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  gl.Lightfv(GL_LIGHT0, GL_POSITION, light_pos);
-  gl.Lightfv(GL_LIGHT0, GL_DIFFUSE, white);
-  gl.Lightfv(GL_LIGHT0, GL_SPECULAR, white);
-  gl.Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
-  gl.Materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
-  gl.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, white);
-  gl.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0f);
+  glLightfv(GL_LIGHT0, GL_POSITION, light_pos);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, white);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, white);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0f);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glTranslatef(0.0f, 0.0f, -3.0f);
@@ -440,7 +396,7 @@ static void draw_gears(void)
   glFrustum(-1.0, 1.0, -h, h, 5.0, 60.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  gl.Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  glLightfv(GL_LIGHT0, GL_POSITION, pos);
   glEnable(GL_CULL_FACE);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
@@ -454,21 +410,21 @@ static void draw_gears(void)
   glPushMatrix();
   glTranslatef(-3.0f, -2.0f, 0.0f);
   glRotatef(angle, 0.0f, 0.0f, 1.0f);
-  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
+  glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
   replay_gear(0);
   glPopMatrix();
 
   glPushMatrix();
   glTranslatef(3.1f, -2.0f, 0.0f);
   glRotatef(-2.0f * angle - 9.0f, 0.0f, 0.0f, 1.0f);
-  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
+  glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
   replay_gear(1);
   glPopMatrix();
 
   glPushMatrix();
   glTranslatef(-3.1f, 4.2f, 0.0f);
   glRotatef(-2.0f * angle - 25.0f, 0.0f, 0.0f, 1.0f);
-  gl.Materialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
+  glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
   replay_gear(2);
   glPopMatrix();
 
@@ -558,8 +514,6 @@ int main(int argc, char **argv)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
 
-  if (!load_lighting())
-    return 1;
   build_soup();
   build_sphere();
   build_lit_sphere(lit_small, LIT_SMALL_STACKS, LIT_SMALL_SLICES);

@@ -55,4 +55,4 @@ awk '
 echo
 echo "OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1;"
 echo "same = last frame of fixgl identical to OSMesa's (lit200, lit20k and gears"
-echo "are lit: \"no\" while fixgl lacks lighting, see the notes above)."
+echo "are lit)."

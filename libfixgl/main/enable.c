@@ -50,10 +50,10 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
       *dirty = FGL_NEW_LIGHT;
       return &ctx->Light.ColorMaterialEnabled;
    case GL_NORMALIZE:
-      *dirty = FGL_NEW_TRANSFORM;
+      *dirty = 0;   /* read at draw time (t_light.c) */
       return &ctx->Transform.Normalize;
    case GL_RESCALE_NORMAL:
-      *dirty = FGL_NEW_TRANSFORM;
+      *dirty = 0;   /* read at draw time (t_light.c) */
       return &ctx->Transform.RescaleNormals;
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;

@@ -367,11 +367,7 @@ void fgl_update_color_material(struct fgl_context *ctx, const float color[4])
    while (bits) {
       const int i = __builtin_ctz(bits);
       bits &= bits - 1;
-      float *mat = ctx->Current.Attrib[FGL_ATTR_MAT_FIRST + i];
-      if (memcmp(mat, color, 4 * sizeof(float))) {
-         memcpy(mat, color, 4 * sizeof(float));
-         ctx->NewState |= FGL_NEW_MATERIAL;
-      }
+      memcpy(ctx->Current.Attrib[FGL_ATTR_MAT_FIRST + i], color, 4 * sizeof(float));
    }
 }
 

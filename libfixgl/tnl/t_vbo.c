@@ -247,8 +247,6 @@ static void copy_to_current(struct fgl_context *ctx)
       memcpy(ctx->Current.Attrib[a], v, sizeof(v));
       if (a == FGL_ATTR_COLOR0)
          color0_changed = true;
-      if (a >= FGL_ATTR_MAT_FIRST)
-         ctx->NewState |= FGL_NEW_MATERIAL;
    }
    if (color0_changed && ctx->Light.ColorMaterialEnabled)
       fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
