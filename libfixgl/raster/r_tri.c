@@ -209,6 +209,7 @@ struct tri_shade {
    struct plane ap[2][4];
    float flat[2][4];
    bool flat_attr[2];
+   bool need_w;             /* some input is interpolated */
    int num_used;            /* 1, or 2 when the secondary colour is added */
 };
 
@@ -234,9 +235,11 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
    ts->num_used = rs->color_sum ? 2 : 1;
+   ts->need_w = false;
    for (int a = 0; a < ts->num_used; a++) {
       const int slot = back ? a + R_ATTR_BCOLOR0 : a;
       ts->flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
+      ts->need_w |= !ts->flat_attr[a];
       for (int c = 0; c < 4; c++) {
          if (ts->flat_attr[a]) {
             ts->flat[a][c] = v[2]->attr[slot][c];
@@ -295,14 +298,14 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
 {
    const float fx = (float)px, fy = (float)py;
    float in[2][4];
-   const float rw = ts->flat_attr[0] && (ts->num_used == 1 || ts->flat_attr[1])
-                       ? 0.0f : 1.0f / eval_plane(&ts->w, fx, fy);
+   const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
    for (int a = 0; a < ts->num_used; a++) {
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
    /* the fixed-function fragment program: colour, plus the secondary
-    * colour's rgb with separate specular (ff_fragment_shader.cpp) */
+    * colour's rgb with separate specular (llvmpipe-facts.md §4 "Fog":
+    * rgb += spec.rgb in the FS; ff_fragment_shader.cpp emit_instructions) */
    if (ts->num_used == 2) {
       for (int c = 0; c < 3; c++)
          in[0][c] = in[0][c] + in[1][c];
@@ -572,7 +575,8 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
    if (area == 0)
       return;
    /* lp_setup_tri.c triangle_both/_ccw/_cw: facing from the area sign,
-    * culling, and the facing that chooses two-sided colours */
+    * culling, and the facing that chooses two-sided colours
+    * (llvmpipe-facts.md §4 "Two-sided lighting") */
    const bool is_back = (area > 0) != rs->ccw_is_front;
    if (is_back ? rs->cull_back : rs->cull_front)
       return;

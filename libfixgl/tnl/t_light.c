@@ -72,10 +72,10 @@ struct material {
 
 /* What the vertex program was generated for (ffvertex_prog.c state_key). */
 struct light_key {
-   bool eye;                 /* lighting in eye space */
+   bool eye;                 /* lighting in eye space: the normal goes
+                              * through the inverse modelview */
    bool normalize;           /* GL_NORMALIZE */
    bool rescale;             /* normal times STATE_NORMAL_SCALE */
-   bool transform_normal;    /* normal through the inverse modelview */
    bool local_viewer, twoside, separate;
    bool shininess_is_zero;   /* no specular pow: the degenerate LIT */
 };
@@ -214,7 +214,7 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
 static void transform_normal(const struct fgl_context *ctx, const struct light_key *key,
                              const float *in, float n[3])
 {
-   if (key->transform_normal) {
+   if (key->eye) {
       const float *inv = ctx->ModelviewStack.Top->inv;
       for (int r = 0; r < 3; r++)
          n[r] = dp3(in, inv + 4 * r);
@@ -252,7 +252,6 @@ void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       .separate = ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR,
    };
    const bool rescale_match = key.eye == ctx->Transform.RescaleNormals;
-   key.transform_normal = key.eye;
    key.rescale = !key.normalize && rescale_match;
 
    const bool color_varying = vbo->attr_size[FGL_ATTR_COLOR0] != 0;
@@ -267,12 +266,12 @@ void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
    }
 
-   /* check_active_shininess: a shininess that varies, or is not 0 */
+   /* check_active_shininess: a shininess that varies, or is not 0 (the
+    * colour never tracks shininess: glColorMaterial refuses it) */
    bool shininess_active = false;
    for (int s = 0; s < (key.twoside ? 2 : 1); s++) {
       const int a = FGL_ATTR_MAT_FRONT_SHININESS + s;
-      shininess_active |= src[a].stride != 0 || (color_mats & FGL_MAT_BIT(a)) ||
-                          ctx->Current.Attrib[a][0] != 0.0f;
+      shininess_active |= src[a].stride != 0 || ctx->Current.Attrib[a][0] != 0.0f;
    }
    key.shininess_is_zero = !shininess_active;
 

@@ -140,7 +140,10 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * ORACLE-NOTES.md "Vertex batching"). */
    const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
    if (ctx->Light.Enabled)
-      ctx->_Raster.flat_mask = flat ? 0xfu : 0u;   /* lit colours always vary */
+      /* lit colours are always varyings of the vertex program
+       * (ff_fragment_shader.cpp: COL0/COL1 are possible inputs whenever
+       * lighting is on), so only flat shading makes them constant */
+      ctx->_Raster.flat_mask = flat ? 0xfu : 0u;
    else
       ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
    for (unsigned i = 0; i < nprims; i++)
