@@ -70,6 +70,23 @@ struct r_state {
    bool cull_front, cull_back;  /* faces not drawn */
 };
 
+/* Inputs of the fragment shader, after the back-face colours have been
+ * chosen: the colour and the secondary colour. */
+enum {
+   R_FS_COLOR0,
+   R_FS_COLOR1,
+   R_FS_NUM_INPUTS,
+};
+
+/* The fragment stage (r_frag.c), shared by every primitive.
+ * r_fragment_shader: the fixed-function fragment program, from the
+ *   interpolated inputs (R_FS_*) to the fragment colour.
+ * r_fragment_ops: the per-fragment operations in the specification's order
+ *   on pixel (px, py) inside the draw region, with the fragment's depth
+ *   before clamping. */
+void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4]);
+void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4]);
+
 /* Rasterize one triangle; v2 is the provoking vertex. */
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2);

@@ -48,43 +48,6 @@ static inline int32_t max3(int32_t a, int32_t b, int32_t c)
    return m > c ? m : c;
 }
 
-uint8_t r_float_to_unorm8(float c)
-{
-   /* RNE(min(c, 1) * 255) with a saturating pack: negative and NaN give 0. */
-   if (!(c > 0.0f))
-      return 0;
-   if (c > 1.0f)
-      c = 1.0f;
-   return (uint8_t)lrintf(c * 255.0f);
-}
-
-/* The fragment shader restricts depth to [0,1] (lp_build_depth_clamp),
- * then converts with RNE (llvmpipe-facts.md §1). */
-uint32_t r_depth_to_z24(float z)
-{
-   return (uint32_t)lrintf(r_clamp01(z) * 16777215.0f);
-}
-
-uint16_t r_depth_to_z16(float z)
-{
-   return (uint16_t)lrintf(r_clamp01(z) * 65535.0f);
-}
-
-static inline bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
-{
-   switch (func) {
-   case R_NEVER:    return false;
-   case R_LESS:     return frag < buf;
-   case R_EQUAL:    return frag == buf;
-   case R_LEQUAL:   return frag <= buf;
-   case R_GREATER:  return frag > buf;
-   case R_NOTEQUAL: return frag != buf;
-   case R_GEQUAL:   return frag >= buf;
-   case R_ALWAYS:
-   default:         return true;
-   }
-}
-
 /* ---- coverage: llvmpipe's planes, bins and blocks ----------------------
  *
  * Coverage is decided exactly as llvmpipe decides it (lp_setup_tri.c,
@@ -206,9 +169,9 @@ struct tri_shade {
    /* Perspective-correct attributes are interpolated premultiplied by 1/w
     * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
     * provoking vertex. */
-   struct plane ap[2][4];
-   float flat[2][4];
-   bool flat_attr[2];
+   struct plane ap[R_FS_NUM_INPUTS][4];
+   float flat[R_FS_NUM_INPUTS][4];
+   bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;             /* some input is interpolated */
    int num_used;            /* 1, or 2 when the secondary colour is added */
 };
@@ -252,65 +215,20 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    }
 }
 
-static inline void write_fragment(const struct r_state *rs, int px, int py,
-                                  const struct plane *z, float fx, float fy,
-                                  const float color[4])
-{
-   const size_t idx = (size_t)py * (size_t)rs->width + (size_t)px;
-
-   if (rs->depth_test) {
-      const float zf = eval_plane(z, fx, fy);
-      switch (rs->zs_format) {
-      case R_ZS_Z16: {
-         uint16_t *zb = (uint16_t *)rs->zs + idx;
-         const uint16_t zv = r_depth_to_z16(zf);
-         if (!depth_compare(rs->depth_func, zv, *zb))
-            return;
-         if (rs->depth_write)
-            *zb = zv;
-         break;
-      }
-      case R_ZS_Z24X8:
-      case R_ZS_Z24S8: {
-         uint32_t *zb = (uint32_t *)rs->zs + idx;
-         const uint32_t zv = r_depth_to_z24(zf);
-         if (!depth_compare(rs->depth_func, zv, *zb & 0xffffffu))
-            return;
-         if (rs->depth_write)
-            *zb = (*zb & 0xff000000u) | zv;
-         break;
-      }
-      default:
-         break; /* no depth buffer: the test always passes */
-      }
-   }
-
-   uint8_t *dst = rs->color + 4 * idx;
-   dst[0] = r_float_to_unorm8(color[0]);
-   dst[1] = r_float_to_unorm8(color[1]);
-   dst[2] = r_float_to_unorm8(color[2]);
-   dst[3] = r_float_to_unorm8(color[3]);
-}
-
 /* Shades pixel (px, py), which is inside the draw region. */
 static inline void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
 {
    const float fx = (float)px, fy = (float)py;
-   float in[2][4];
+   float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
    for (int a = 0; a < ts->num_used; a++) {
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
-   /* the fixed-function fragment program: colour, plus the secondary
-    * colour's rgb with separate specular (llvmpipe-facts.md §4 "Fog":
-    * rgb += spec.rgb in the FS; ff_fragment_shader.cpp emit_instructions) */
-   if (ts->num_used == 2) {
-      for (int c = 0; c < 3; c++)
-         in[0][c] = in[0][c] + in[1][c];
-   }
-   write_fragment(rs, px, py, &ts->z, fx, fy, in[0]);
+   float color[4];
+   r_fragment_shader(rs, (const float (*)[4])in, color);
+   r_fragment_ops(rs, px, py, eval_plane(&ts->z, fx, fy), color);
 }
 
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
