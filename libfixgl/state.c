@@ -66,6 +66,7 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->twoside = lit && ctx->Light.Model.TwoSide;
       rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
       rs->num_attribs = rs->twoside ? 4 : rs->color_sum ? 2 : 1;
+      rs->fs_inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u);
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
       rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;

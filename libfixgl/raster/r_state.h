@@ -24,6 +24,26 @@ enum {
    R_ATTR_BCOLOR1,
 };
 
+/* Inputs of the fragment shader, after the back-face colours have been
+ * chosen: the colour and the secondary colour. */
+enum {
+   R_FS_COLOR0,
+   R_FS_COLOR1,
+   R_FS_NUM_INPUTS,
+};
+
+/* The vertex slot that feeds fragment-shader input `input`, for a front-
+ * or back-facing primitive (lp_state_setup.c:lp_twoside swaps the colour
+ * inputs for back faces). */
+static inline int r_fs_slot(int input, bool back)
+{
+   switch (input) {
+   case R_FS_COLOR0: return back ? R_ATTR_BCOLOR0 : R_ATTR_COLOR0;
+   case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
+   default:          return input;
+   }
+}
+
 /* Depth/stencil buffer layouts, as the OSMesa oracle allocates them. */
 enum r_zs_format {
    R_ZS_NONE,
@@ -63,19 +83,12 @@ struct r_state {
 
    /* varyings (R_ATTR_* slots); the vertex stage fills num_attribs */
    int num_attribs;
+   unsigned fs_inputs;          /* bit R_FS_*: inputs the fragment shader reads */
    uint32_t flat_mask;          /* bit i: attribute i uses the provoking vertex */
    bool color_sum;              /* colour += secondary colour (rgb) */
    bool twoside;                /* back-facing triangles use the BCOLOR slots */
    bool ccw_is_front;           /* a positive snapped area is front-facing */
    bool cull_front, cull_back;  /* faces not drawn */
-};
-
-/* Inputs of the fragment shader, after the back-face colours have been
- * chosen: the colour and the secondary colour. */
-enum {
-   R_FS_COLOR0,
-   R_FS_COLOR1,
-   R_FS_NUM_INPUTS,
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.

@@ -173,7 +173,7 @@ struct tri_shade {
    float flat[R_FS_NUM_INPUTS][4];
    bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;             /* some input is interpolated */
-   int num_used;            /* 1, or 2 when the secondary colour is added */
+   unsigned inputs;         /* R_FS_* inputs the fragment shader reads */
 };
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
@@ -197,10 +197,12 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
-   ts->num_used = rs->color_sum ? 2 : 1;
+   ts->inputs = rs->fs_inputs;
    ts->need_w = false;
-   for (int a = 0; a < ts->num_used; a++) {
-      const int slot = back ? a + R_ATTR_BCOLOR0 : a;
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(ts->inputs & (1u << a)))
+         continue;
+      const int slot = r_fs_slot(a, back);
       ts->flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
       ts->need_w |= !ts->flat_attr[a];
       for (int c = 0; c < 4; c++) {
@@ -222,7 +224,9 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
-   for (int a = 0; a < ts->num_used; a++) {
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(ts->inputs & (1u << a)))
+         continue;
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }

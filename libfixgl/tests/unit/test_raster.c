@@ -58,6 +58,7 @@ static struct r_state make_state(uint8_t *color, int w, int h)
    rs.depth_func = R_LESS;
    rs.depth_write = false;
    rs.num_attribs = 1;
+   rs.fs_inputs = 1u << R_FS_COLOR0;
    rs.flat_mask = 1u; /* colour from the provoking vertex */
    return rs;
 }
