@@ -11,6 +11,7 @@
 #include "lt_util.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 
 /* ---- scenes ---- */
@@ -629,6 +630,64 @@ static void enable_disable(fc_h *h)
     fc_capture(h);
 }
 
+/* Deterministic pseudo-random scenes (a local LCG, so the case is the same
+ * in both renderers): per frame a mode with random parameters, fog colour,
+ * shade model, modelview, lighting or not, the colour per vertex or
+ * constant, and 40 triangles spread through the view volume (some crossing
+ * the near plane). */
+static unsigned fog_rng;
+
+static float fog_rand(float lo, float hi)
+{
+    fog_rng = fog_rng * 1664525u + 1013904223u;
+    return lo + (hi - lo) * (float)(fog_rng >> 8) * (1.0f / 16777216.0f);
+}
+
+static void random_scenes(fc_h *h)
+{
+    static const GLenum modes[3] = { GL_LINEAR, GL_EXP, GL_EXP2 };
+    static const float dim[3] = { 0.1f, 0.1f, 0.1f }, warm[3] = { 0.9f, 0.7f, 0.5f };
+    static const float white[3] = { 1, 1, 1 };
+    fog_rng = 12345u;
+    fog_persp(h);
+    lt_std_material();
+    for (int f = 0; f < 16; f++) {
+        const GLenum mode = modes[f % 3];
+        const float a = fog_rand(0, 10), b = fog_rand(2, 30);
+        fog_mode(mode, mode == GL_LINEAR ? a : fog_rand(0.01f, 0.4f), b);
+        fog_color(fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1));
+        glShadeModel(f & 1 ? GL_FLAT : GL_SMOOTH);
+        const bool lit = f % 4 == 2 || f % 4 == 3;
+        if (lit) {
+            glEnable(GL_LIGHTING);
+            glLoadIdentity();
+            lt_lamp(GL_LIGHT0, dim, warm, white, fog_rand(-1, 1), fog_rand(-1, 1), 1,
+                    f & 1 ? 1.0f : 0.0f);
+        } else {
+            glDisable(GL_LIGHTING);
+        }
+        glLoadIdentity();
+        glRotatef(fog_rand(-30, 30), fog_rand(-1, 1), fog_rand(-1, 1), fog_rand(-1, 1));
+        glTranslatef(fog_rand(-1, 1), fog_rand(-1, 1), fog_rand(-2, 1));
+        fog_clear();
+        const bool constant = f % 8 == 4 || f % 8 == 7;
+        if (constant)
+            glColor4f(fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1));
+        glBegin(GL_TRIANGLES);
+        for (int t = 0; t < 40; t++) {
+            const float cx = fog_rand(-8, 8), cy = fog_rand(-8, 8), cz = fog_rand(-28, 0);
+            for (int v = 0; v < 3; v++) {
+                if (!constant)
+                    glColor4f(fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1), fog_rand(0, 1));
+                glNormal3f(fog_rand(-1, 1), fog_rand(-1, 1), 1);
+                glVertex3f(cx + fog_rand(-4, 4), cy + fog_rand(-4, 4), cz + fog_rand(-6, 6));
+            }
+        }
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 /* ---- API ---- */
 
 static void rec_fog_state(fc_h *h, const char *what)
@@ -834,6 +893,7 @@ const fc_case fc_cases_fog[] = {
     FC_CASE_RGBA("fog/distance_radial_lit", 64, 64, 1, "fragment fog lighting", distance_radial_lit),
     FC_CASE_RGBA("fog/coord_source", 64, 64, 4, "fragment fog", coord_source),
     FC_CASE_RGBA("fog/enable_disable", 64, 64, 3, "fragment fog", enable_disable),
+    FC_CASE_RGBA("fog/random_scenes", 96, 96, 16, "fragment fog lighting", random_scenes),
     FC_CASE_RGBA("fog/api_roundtrip", 8, 8, 0, "fragment fog api", api_roundtrip),
     FC_CASE_RGBA("fog/api_errors", 8, 8, 0, "fragment fog api error", api_errors),
     FC_CASE_RGBA("fog/api_hints", 8, 8, 0, "fragment fog api hint error", api_hints),
