@@ -40,6 +40,8 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_current(ctx);
    fgl_init_color(ctx);
    fgl_init_depth(ctx);
+   fgl_init_fog(ctx);
+   fgl_init_hint(ctx);
    fgl_init_light(ctx);
    fgl_init_polygon(ctx);
    fgl_init_viewport(ctx);

@@ -45,6 +45,7 @@ enum {
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
    FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling */
+   FGL_NEW_FOG        = 1u << 7,   /* fog state and GL_FOG */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -67,6 +68,26 @@ struct fgl_depth_attrib {
    double Clear;            /* clamped to [0,1] */
    bool Test;
    bool Mask;
+};
+
+/* GL_FOG_BIT, as Mesa's main/fog.c stores it */
+struct fgl_fog_attrib {
+   bool Enabled;                /* GL_FOG */
+   GLenum Mode;                 /* GL_LINEAR, GL_EXP or GL_EXP2 */
+   float Color[4];              /* clamped to [0,1] (NaN -> 0) */
+   float ColorUnclamped[4];     /* as given */
+   float Density, Start, End;
+   float Index;                 /* GL_FOG_INDEX: stored, unused in RGBA */
+   GLenum CoordinateSource;     /* GL_FRAGMENT_DEPTH or GL_FOG_COORDINATE */
+   GLenum DistanceMode;         /* GL_NV_fog_distance: GL_EYE_RADIAL_NV,
+                                 * GL_EYE_PLANE, GL_EYE_PLANE_ABSOLUTE_NV */
+};
+
+/* GL_HINT_BIT: stored and reported; none of them changes the oracle's
+ * output. */
+struct fgl_hint_attrib {
+   GLenum PerspectiveCorrection, PointSmooth, LineSmooth, PolygonSmooth, Fog;
+   GLenum TextureCompression, GenerateMipmap, FragmentShaderDerivative;
 };
 
 #define FGL_MAX_LIGHTS 8
@@ -173,6 +194,8 @@ struct fgl_context {
    struct fgl_current_attrib Current;
    struct fgl_colorbuffer_attrib Color;
    struct fgl_depth_attrib Depth;
+   struct fgl_fog_attrib Fog;
+   struct fgl_hint_attrib Hint;
    struct fgl_light_attrib Light;
    struct fgl_polygon_attrib Polygon;
    struct fgl_transform_attrib Transform;
@@ -185,7 +208,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 46
+#define FGL_PENDING_CAPS 45
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */

@@ -9,6 +9,33 @@
 #include "context.h"
 #include "main/groups.h"
 
+/* The fog blend's uniforms (prog_statevars.c: STATE_FOG_PARAMS_OPTIMIZED,
+ * computed on the CPU in this order; STATE_FOG_COLOR, clamped for a
+ * fixed-point colour buffer) and the fog coordinate as an input of the
+ * fragment program (ff_fragment_shader.cpp: key->fog_mode from
+ * _PackedEnabledMode). */
+static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
+{
+   const struct fgl_fog_attrib *fog = &ctx->Fog;
+   if (!fog->Enabled) {
+      rs->fog_mode = R_FOG_NONE;
+      return;
+   }
+   rs->fog_mode = fog->Mode == GL_LINEAR ? R_FOG_LINEAR
+                : fog->Mode == GL_EXP    ? R_FOG_EXP : R_FOG_EXP2;
+   /* start == end gives val = 1, so f = c - end */
+   const float val = fog->End == fog->Start ? 1.0f : -1.0f / (fog->End - fog->Start);
+   rs->fog_params[0] = val;
+   rs->fog_params[1] = fog->End * -val;
+   /* density times double constants (M_LOG2E, 1/sqrt(ln 2)), then float */
+   rs->fog_params[2] = (float)(fog->Density * 1.4426950408889634074);
+   rs->fog_params[3] = (float)(fog->Density * 1.201122408786449815);
+   for (int c = 0; c < 3; c++)
+      rs->fog_color[c] = fog->Color[c];
+   rs->fs_inputs |= 1u << R_FS_FOG;
+   rs->num_attribs = R_ATTR_FOG + 1;
+}
+
 void fgl_update_state(struct fgl_context *ctx)
 {
    const unsigned dirty = ctx->NewState;
@@ -42,7 +69,8 @@ void fgl_update_state(struct fgl_context *ctx)
       ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
    }
 
-   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON)) {
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
+                FGL_NEW_FOG)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -67,6 +95,9 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
       rs->num_attribs = rs->twoside ? 4 : rs->color_sum ? 2 : 1;
       rs->fs_inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u);
+      /* fog: the fragment program reads the fog coordinate, which the
+       * vertex stage writes to its own slot after the colours */
+      update_fog(ctx, rs);
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
       rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;

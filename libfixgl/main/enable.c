@@ -12,7 +12,7 @@
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
    GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
-   GL_COLOR_LOGIC_OP, GL_FOG,
+   GL_COLOR_LOGIC_OP,
    GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH,
    GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
@@ -58,6 +58,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;
       return &ctx->Depth.Test;
+   case GL_FOG:
+      *dirty = FGL_NEW_FOG;
+      return &ctx->Fog.Enabled;
    case GL_DITHER:
       *dirty = 0;
       return &ctx->Color.Dither;

@@ -87,6 +87,32 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       val->n = 1;
       val->v[0] = ctx->Depth.Clear;
       return true;
+   /* GL_FOG_BIT (Mesa reports the clamped colour: the fixed-point colour
+    * buffer makes _mesa_get_clamp_fragment_color true) */
+   case GL_FOG_COLOR:
+      set_floats(val, V_FLOATN, ctx->Fog.Color, 4);
+      return true;
+   case GL_FOG_DENSITY:
+      set_floats(val, V_FLOAT, &ctx->Fog.Density, 1);
+      return true;
+   case GL_FOG_START:
+      set_floats(val, V_FLOAT, &ctx->Fog.Start, 1);
+      return true;
+   case GL_FOG_END:
+      set_floats(val, V_FLOAT, &ctx->Fog.End, 1);
+      return true;
+   case GL_FOG_INDEX:
+      set_floats(val, V_FLOAT, &ctx->Fog.Index, 1);
+      return true;
+   case GL_FOG_MODE:
+      set_ints(val, V_INT, 1, (int)ctx->Fog.Mode, 0, 0, 0);
+      return true;
+   case GL_FOG_COORDINATE_SOURCE:
+      set_ints(val, V_INT, 1, (int)ctx->Fog.CoordinateSource, 0, 0, 0);
+      return true;
+   case GL_FOG_DISTANCE_MODE_NV:
+      set_ints(val, V_INT, 1, (int)ctx->Fog.DistanceMode, 0, 0, 0);
+      return true;
    /* GL_POLYGON_BIT */
    case GL_FRONT_FACE:
       set_ints(val, V_INT, 1, (int)ctx->Polygon.FrontFace, 0, 0, 0);
@@ -204,7 +230,13 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_READ_BUFFER:
       set_ints(val, V_INT, 1, GL_FRONT, 0, 0, 0);
       return true;
-   default:
+   default: {
+      /* GL_HINT_BIT: every glHint target */
+      GLenum hint;
+      if (fgl_get_hint(ctx, pname, &hint)) {
+         set_ints(val, V_INT, 1, (int)hint, 0, 0, 0);
+         return true;
+      }
       /* every capability is also a boolean state value */
       if (fgl_is_cap(ctx, pname, &val->v[0])) {
          val->type = V_BOOL;
@@ -212,6 +244,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
          return true;
       }
       return false;
+   }
    }
 }
 

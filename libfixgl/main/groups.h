@@ -20,6 +20,14 @@ void fgl_init_color(struct fgl_context *ctx);
 /* main/depth.c (GL_DEPTH_BUFFER_BIT) */
 void fgl_init_depth(struct fgl_context *ctx);
 
+/* main/fog.c (GL_FOG_BIT) */
+void fgl_init_fog(struct fgl_context *ctx);
+
+/* main/hint.c (GL_HINT_BIT) */
+void fgl_init_hint(struct fgl_context *ctx);
+/* the value of hint target; false for a target glHint refuses */
+bool fgl_get_hint(struct fgl_context *ctx, GLenum target, GLenum *value);
+
 /* main/light.c (GL_LIGHTING_BIT) */
 void fgl_init_light(struct fgl_context *ctx);
 /* _mesa_update_color_material: the materials that track the colour */

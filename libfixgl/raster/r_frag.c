@@ -13,6 +13,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "tnl/t_gallivm.h"
+
 uint8_t r_float_to_unorm8(float c)
 {
    /* RNE(min(c, 1) * 255) with a saturating pack: negative and NaN give 0. */
@@ -50,6 +52,39 @@ static bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
    }
 }
 
+/* The fog factor of the fixed-function fragment program from the
+ * interpolated fog coordinate fc, with the CPU-precomputed
+ * STATE_FOG_PARAMS_OPTIMIZED p (ff_fragment_shader.cpp
+ * emit_fog_instructions, as NIR hands it to gallivm: llvmpipe lowers ffma
+ * and fsat, so every op is rounded on its own):
+ *   LINEAR  fc * p[0] + p[1]             (fmul, fadd)
+ *   EXP     exp2(-(fc * p[2]))
+ *   EXP2    t = fc * p[3]; exp2(-(t * t))
+ * exp2 is gallivm's approximation (lp_build_exp2), then fsat lowered to
+ * fmin(fmax(f, 0), 1), where gallivm's fmax returns the other operand for
+ * NaN (lp_bld_nir.c: GALLIVM_NAN_RETURN_OTHER): a NaN factor is 0. */
+static float fog_factor(const struct r_state *rs, float fc)
+{
+   const float *p = rs->fog_params;
+   float f;
+   switch (rs->fog_mode) {
+   case R_FOG_LINEAR:
+      f = fc * p[0] + p[1];
+      break;
+   case R_FOG_EXP:
+      f = t_gallivm_exp2(-(fc * p[2]));
+      break;
+   case R_FOG_EXP2:
+   default: {
+      const float t = fc * p[3];
+      f = t_gallivm_exp2(-(t * t));
+      break;
+   }
+   }
+   f = f > 0.0f ? f : 0.0f;   /* fmax(f, 0): NaN -> 0 */
+   return f < 1.0f ? f : 1.0f;
+}
+
 void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4])
 {
    /* the fixed-function fragment program: the colour, plus the secondary
@@ -60,6 +95,15 @@ void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[
    if (rs->color_sum) {
       for (int c = 0; c < 3; c++)
          out[c] = out[c] + in[R_FS_COLOR1][c];
+   }
+   /* then fog on rgb (emit_fog_instructions): fogcolor * (1 - f) + rgb * f,
+    * two fmuls and an fadd (lower_flrp keeps NIR from forming a lerp);
+    * alpha passes */
+   if (rs->fog_mode != R_FOG_NONE) {
+      const float f = fog_factor(rs, in[R_FS_FOG][0]);
+      const float g = 1.0f + -f;
+      for (int c = 0; c < 3; c++)
+         out[c] = rs->fog_color[c] * g + out[c] * f;
    }
 }
 

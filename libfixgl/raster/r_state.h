@@ -12,23 +12,27 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#define R_MAX_ATTRIBS 4
+#define R_MAX_ATTRIBS 5
 
 /* Varying slots: the colour written to the buffer, the secondary colour
- * the fragment stage adds to it (separate specular), and their back-face
- * versions for two-sided lighting. */
+ * the fragment stage adds to it (separate specular), their back-face
+ * versions for two-sided lighting, and the fog coordinate (x; y, z, w are
+ * 0, 0, 1 as the oracle's vertex program writes them).  Only the colour
+ * slots are clamped to [0,1]. */
 enum {
    R_ATTR_COLOR0,
    R_ATTR_COLOR1,
    R_ATTR_BCOLOR0,
    R_ATTR_BCOLOR1,
+   R_ATTR_FOG,
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been
- * chosen: the colour and the secondary colour. */
+ * chosen: the colour, the secondary colour and the fog coordinate. */
 enum {
    R_FS_COLOR0,
    R_FS_COLOR1,
+   R_FS_FOG,
    R_FS_NUM_INPUTS,
 };
 
@@ -40,6 +44,7 @@ static inline int r_fs_slot(int input, bool back)
    switch (input) {
    case R_FS_COLOR0: return back ? R_ATTR_BCOLOR0 : R_ATTR_COLOR0;
    case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
+   case R_FS_FOG:    return R_ATTR_FOG;
    default:          return input;
    }
 }
@@ -56,6 +61,14 @@ enum r_zs_format {
 /* Comparison functions, in GL's order (GL_NEVER + n). */
 enum r_func {
    R_NEVER, R_LESS, R_EQUAL, R_LEQUAL, R_GREATER, R_NOTEQUAL, R_GEQUAL, R_ALWAYS,
+};
+
+/* The fog blend of the fixed-function fragment program (GL_FOG_MODE). */
+enum r_fog_mode {
+   R_FOG_NONE,
+   R_FOG_LINEAR,
+   R_FOG_EXP,
+   R_FOG_EXP2,
 };
 
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
@@ -89,6 +102,14 @@ struct r_state {
    bool twoside;                /* back-facing triangles use the BCOLOR slots */
    bool ccw_is_front;           /* a positive snapped area is front-facing */
    bool cull_front, cull_back;  /* faces not drawn */
+
+   /* fog, applied to the colour (after the colour sum) from the
+    * interpolated R_FS_FOG input */
+   enum r_fog_mode fog_mode;
+   float fog_params[4];         /* STATE_FOG_PARAMS_OPTIMIZED: -1/(end-start),
+                                 * end/(end-start), density/ln 2,
+                                 * density/sqrt(ln 2) */
+   float fog_color[3];          /* clamped to [0,1] */
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.

@@ -239,7 +239,7 @@ struct material_source {
    unsigned stride;
 };
 
-void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out)
 {
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
@@ -305,4 +305,15 @@ void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
 #undef MAT
       light_vertex(ctx, &key, nrm, V, mat, out[i].r.attr);
    }
+
+   /* build_lighting asks for the eye position (get_eye_position) for a
+    * positional light, or for the local viewer's eye vector when there is a
+    * specular term; both only happen in eye space */
+   bool eye_position = false;
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      if (ld->EnabledLights & (1u << i))
+         eye_position |= ld->Light[i].Positional ||
+                         (key.local_viewer && !key.shininess_is_zero);
+   }
+   return eye_position;
 }

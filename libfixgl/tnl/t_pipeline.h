@@ -23,9 +23,15 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out);
 
 /* Light n stored vertices (t_light.c): the R_ATTR_* colour slots of out[],
- * before the clamp. */
-void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+ * before the clamp.  Returns whether the oracle's lighting code computed
+ * the eye position (which the fog coordinate then reuses). */
+bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out);
+
+/* The fog coordinate of n stored vertices (t_fog.c) into the R_ATTR_FOG
+ * slot of out[]; eye_position_from_lighting is t_light's result. */
+void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+           bool eye_position_from_lighting, struct t_vertex *out);
 
 /* Clip a triangle against the view volume and rasterize the pieces; v2 is
  * the provoking vertex. */

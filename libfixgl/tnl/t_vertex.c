@@ -4,12 +4,13 @@
  *   clip = ((x*C0 + y*C1) + z*C2) + w*C3   (MVP columns, every op rounded)
  *   oow  = 1/clip.w,  win = fma(clip*oow, scale, translate)
  * then the colours (the vertex colour, or the lit colours of t_light.c)
- * clamped to [0,1].
+ * clamped to [0,1], and the fog coordinate (t_fog.c).
  */
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "context.h"
 
@@ -35,10 +36,16 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    unsigned cstride;
    const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
    const bool lit = ctx->Light.Enabled;
+   const bool fog = (ctx->_Raster.fs_inputs & (1u << R_FS_FOG)) != 0;
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
       struct t_vertex *v = &out[i];
+      if (fog) {
+         /* the colour slots below the fog slot that this draw does not
+          * use are still clipped and interpolated: give them a value */
+         memset(v->r.attr, 0, sizeof(v->r.attr));
+      }
       for (int r = 0; r < 4; r++) {
          float acc = p[0] * m[r];
          acc = p[1] * m[4 + r] + acc;
@@ -61,13 +68,19 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       }
    }
 
+   bool eye_position = false;
    if (lit)
-      t_light(ctx, in, n, out);
+      eye_position = t_light(ctx, in, n, out);
 
    /* draw_llvm.c do_clamp_vertex_color: every colour output */
    const int nattr = ctx->_Raster.num_attribs;
+   const int ncolor = nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
    for (unsigned i = 0; i < n; i++)
-      for (int a = 0; a < nattr; a++)
+      for (int a = 0; a < ncolor; a++)
          for (int k = 0; k < 4; k++)
             out[i].r.attr[a][k] = r_clamp01(out[i].r.attr[a][k]);
+
+   /* ffvertex_prog.c: build_fog after build_lighting */
+   if (fog)
+      t_fog(ctx, in, n, eye_position, out);
 }
