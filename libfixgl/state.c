@@ -45,6 +45,13 @@ static enum r_blend_factor blend_factor(GLenum f)
    case GL_ONE_MINUS_CONSTANT_COLOR: return R_BF_INV_CONST_COLOR;
    case GL_CONSTANT_ALPHA:           return R_BF_CONST_ALPHA;
    case GL_ONE_MINUS_CONSTANT_ALPHA: return R_BF_INV_CONST_ALPHA;
+   /* The fixed-function fragment program writes no second colour: the
+    * oracle blends with an unwritten output (different garbage per run and
+    * thread count, ORACLE-NOTES.md), fixgl with a second colour of 0. */
+   case GL_SRC1_COLOR:
+   case GL_SRC1_ALPHA:               return R_BF_ZERO;
+   case GL_ONE_MINUS_SRC1_COLOR:
+   case GL_ONE_MINUS_SRC1_ALPHA:     return R_BF_ONE;
    case GL_ONE:
    default:                          return R_BF_ONE;
    }

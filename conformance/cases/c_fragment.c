@@ -5,6 +5,16 @@
  * entry points.  Tag `fragment`. */
 #include "cases.h"
 
+#include <math.h>
+
+#ifndef GL_SRC1_COLOR
+#define GL_SRC1_COLOR 0x88F9
+#define GL_ONE_MINUS_SRC1_COLOR 0x88FA
+#define GL_ONE_MINUS_SRC1_ALPHA 0x88FB
+#endif
+#ifndef GL_SRC1_ALPHA
+#define GL_SRC1_ALPHA 0x8589
+#endif
 #ifndef GL_INCR_WRAP
 #define GL_INCR_WRAP 0x8507
 #define GL_DECR_WRAP 0x8508
@@ -95,6 +105,33 @@ static void scissor_triangles(fc_h *h)
     glColor3f(0, 1, 0); glVertex2f(30.3f, 10.7f);
     glColor3f(0, 0, 1); glVertex2f(12.1f, 35.9f);
     glEnd();
+    fc_capture(h);
+}
+
+/* A larger buffer: scissor boxes crossing llvmpipe's 64x64 tiles, with
+ * big triangles and a fan, and a scissored clear in between. */
+static void scissor_tiles(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnable(GL_SCISSOR_TEST);
+    glShadeModel(GL_SMOOTH);
+    static const int boxes[3][4] = { { 60, 50, 9, 30 }, { 1, 63, 158, 3 }, { 100, 0, 60, 120 } };
+    for (int i = 0; i < 3; i++) {
+        glScissor(boxes[i][0], boxes[i][1], boxes[i][2], boxes[i][3]);
+        glBegin(GL_TRIANGLE_FAN);
+        glColor3f(1, 1, 1); glVertex2f(80.3f, 50.2f);
+        for (int k = 0; k <= 12; k++) {
+            const float a = 0.5235988f * (float)k;
+            glColor3f(k & 1 ? 1.0f : 0.2f, (float)(k % 3) * 0.5f, 0.7f);
+            glVertex2f(80.3f + 90.0f * cosf(a), 50.2f + 70.0f * sinf(a));
+        }
+        glEnd();
+    }
+    glScissor(30, 20, 70, 50);
+    glClearColor(0.25f, 0.5f, 0.75f, 1);
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT);
     fc_capture(h);
 }
 
@@ -323,6 +360,27 @@ static void alpha_ref_clamp(fc_h *h)
     fcu_rect(0, 16, 16, 32, 0);
     glColor4f(1, 1, 0, -0.2f);      /* clamped alpha fails */
     fcu_rect(16, 16, 32, 32, 0);
+    fc_capture(h);
+}
+
+/* A NaN reference is clamped to 1 by the oracle's lp_build_clamp; the
+ * query keeps Mesa's CLAMP of NaN. */
+static void alpha_ref_nan(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_LESS, nanf(""));
+    fc_get_float(h, "ref NaN", GL_ALPHA_TEST_REF, 1);
+    fc_get_boolean(h, "ref NaN bool", GL_ALPHA_TEST_REF, 1);
+    glBlendColor(nanf(""), 0.5f, -nanf(""), 1);
+    fc_get_float(h, "blend colour NaN", GL_BLEND_COLOR, 4);
+    glClearColor(nanf(""), 0.25f, 1, -nanf(""));
+    fc_get_float(h, "clear colour NaN", GL_COLOR_CLEAR_VALUE, 4);
+    glColor4f(1, 0, 0, 1);
+    fcu_rect(0, 0, 16, 32, 0);
+    glColor4f(0, 1, 0, 254.0f / 255.0f);
+    fcu_rect(16, 0, 32, 32, 0);
     fc_capture(h);
 }
 
@@ -865,6 +923,13 @@ static void errors_enums(fc_h *h)
     glBlendFunc(0x1234, GL_ONE); fc_error(h, "glBlendFunc bad src");
     glBlendFunc(GL_ONE, 0x1234); fc_error(h, "glBlendFunc bad dst");
     glBlendFunc(GL_ONE, GL_ZERO); fc_error(h, "glBlendFunc no change");
+    /* the dual-source factors are legal (ARB_blend_func_extended) */
+    glBlendFunc(GL_SRC1_ALPHA, GL_ONE_MINUS_SRC1_COLOR); fc_error(h, "glBlendFunc SRC1");
+    fc_get_integer(h, "GL_BLEND_SRC SRC1", GL_BLEND_SRC, 1);
+    fc_get_integer(h, "GL_BLEND_DST SRC1", GL_BLEND_DST, 1);
+    glBlendFunc(GL_ONE_MINUS_SRC1_ALPHA, GL_SRC1_COLOR); fc_error(h, "glBlendFunc SRC1 b");
+    glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_CONSTANT_ALPHA); fc_error(h, "glBlendFunc saturate");
+    glBlendFunc(GL_ONE, GL_ZERO);
     glBlendEquation(GL_FUNC_ADD + 100); fc_error(h, "glBlendEquation bad");
     glBlendEquation(GL_LOGIC_OP); fc_error(h, "glBlendEquation GL_LOGIC_OP");
     glLogicOp(GL_CLEAR - 1); fc_error(h, "glLogicOp below");
@@ -1009,6 +1074,7 @@ static void query_set(fc_h *h)
 const fc_case fc_cases_fragment[] = {
     FC_CASE_RGBA("fragment/scissor_draw", 32, 32, 2, "fragment", scissor_draw),
     FC_CASE_RGBA("fragment/scissor_triangles", 32, 32, 1, "fragment", scissor_triangles),
+    FC_CASE_RGBA("fragment/scissor_tiles", 160, 120, 1, "fragment", scissor_tiles),
     FC_CASE_RGBA("fragment/scissor_clear_color", 32, 32, 2, "fragment", scissor_clear_color),
     FC_CASE_RGBA("fragment/scissor_clear_depth", 64, 32, 2, "fragment", scissor_clear_depth),
     FC_CASE("fragment/scissor_clear_depth_16", 64, 32, OSMESA_RGBA, 16, 0, 2, "fragment", scissor_clear_depth16),
@@ -1021,6 +1087,7 @@ const fc_case fc_cases_fragment[] = {
     FC_CASE_RGBA("fragment/alpha_funcs", 64, 32, 1, "fragment", alpha_funcs),
     FC_CASE_RGBA("fragment/alpha_ref_ties", 64, 32, 6, "fragment", alpha_ref_ties),
     FC_CASE_RGBA("fragment/alpha_ref_clamp", 32, 32, 1, "fragment", alpha_ref_clamp),
+    FC_CASE_RGBA("fragment/alpha_ref_nan", 32, 32, 1, "fragment", alpha_ref_nan),
     FC_CASE("fragment/alpha_kills_depth_stencil", 32, 32, OSMESA_RGBA, 24, 8, 1, "fragment", alpha_kills_depth_stencil),
     FC_CASE("fragment/stencil_funcs", 64, 32, OSMESA_RGBA, 24, 8, 1, "fragment", stencil_funcs),
     FC_CASE("fragment/stencil_ops", 64, 32, OSMESA_RGBA, 24, 8, 1, "fragment", stencil_ops_all),

@@ -42,9 +42,10 @@ void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref)
    ctx->Color.AlphaRef = ref;
 }
 
-/* [S: main/blend.c:legal_src_factor, legal_dst_factor].  The SRC1 factors
- * (ARB_blend_func_extended) are not GL 1.x and not accepted here. */
-static bool legal_factor(GLenum factor, bool dst)
+/* [S: main/blend.c:legal_src_factor, legal_dst_factor]: desktop GL with
+ * ARB_blend_func_extended (which llvmpipe has) accepts every factor as
+ * source and destination, including the dual-source SRC1 factors. */
+static bool legal_factor(GLenum factor)
 {
    switch (factor) {
    case GL_ZERO:
@@ -63,9 +64,10 @@ static bool legal_factor(GLenum factor, bool dst)
    case GL_ONE_MINUS_CONSTANT_ALPHA:
       return true;
    case GL_SRC_ALPHA_SATURATE:
-      /* a destination factor with ARB_blend_func_extended, which
-       * llvmpipe has */
-      (void)dst;
+   case GL_SRC1_COLOR:
+   case GL_SRC1_ALPHA:
+   case GL_ONE_MINUS_SRC1_COLOR:
+   case GL_ONE_MINUS_SRC1_ALPHA:
       return true;
    default:
       return false;
@@ -80,7 +82,7 @@ void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor)
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.BlendSrc == sfactor && ctx->Color.BlendDst == dfactor)
       return; /* skip_blend_state_update */
-   if (!legal_factor(sfactor, false) || !legal_factor(dfactor, true)) {
+   if (!legal_factor(sfactor) || !legal_factor(dfactor)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }

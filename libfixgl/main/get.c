@@ -36,10 +36,11 @@ static GLint iround(float f)
    return fgl_double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
 }
 
-/* Mesa's CLAMP: NaN passes through */
-static float clamp01_keepnan(float x)
+/* Mesa's CLAMP(x, 0, 1) (util/macros.h): x > 0 ? min(x, 1) : 0, so NaN
+ * becomes 0 */
+static float mesa_clamp01(float x)
 {
-   return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+   return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f;
 }
 
 static void set_floats(struct value *val, enum value_type type, const float *f, int n)
@@ -79,7 +80,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
-         f[i] = clamp01_keepnan(ctx->Color.ClearColor[i]);
+         f[i] = mesa_clamp01(ctx->Color.ClearColor[i]);
       set_floats(val, V_FLOATN, f, 4);
       return true;
    case GL_ALPHA_TEST_FUNC:
@@ -87,7 +88,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_ALPHA_TEST_REF:
       /* _mesa_get_clamp_fragment_color is true for fixed-point buffers */
-      f[0] = clamp01_keepnan(ctx->Color.AlphaRef);
+      f[0] = mesa_clamp01(ctx->Color.AlphaRef);
       set_floats(val, V_FLOATN, f, 1);
       return true;
    case GL_BLEND_SRC:              /* = GL_BLEND_SRC_RGB */
@@ -104,7 +105,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_BLEND_COLOR:
       for (int i = 0; i < 4; i++)
-         f[i] = clamp01_keepnan(ctx->Color.BlendColor[i]);
+         f[i] = mesa_clamp01(ctx->Color.BlendColor[i]);
       set_floats(val, V_FLOATN, f, 4);
       return true;
    case GL_LOGIC_OP_MODE:
