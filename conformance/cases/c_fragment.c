@@ -911,6 +911,141 @@ static void depth_bits_ties(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- random state mixes ---- */
+
+/* splitmix64 */
+static unsigned long long mix_next(unsigned long long *st)
+{
+    unsigned long long z = (*st += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static int mix_int(unsigned long long *st, int n)
+{
+    return (int)(mix_next(st) % (unsigned long long)n);
+}
+
+static float mix_float(unsigned long long *st, float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(mix_next(st) >> 40) / 16777216.0f;
+}
+
+/* Smooth triangles under random per-fragment state: scissor, alpha test,
+ * stencil, depth, blending, logic op, masks, and scissored/masked clears
+ * in between.  A pure function of the seed. */
+static void random_mix(fc_h *h, unsigned long long seed)
+{
+    static const GLenum eqs[5] = {
+        GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX
+    };
+    unsigned long long st = seed;
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    fcu_clear(0.3f, 0.2f, 0.1f, 0.6f, 1);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    for (int i = 0; i < 60; i++) {
+        switch (mix_int(&st, 12)) {
+        case 0:
+            if (mix_int(&st, 2)) {
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(mix_int(&st, 70) - 5, mix_int(&st, 70) - 5, mix_int(&st, 60), mix_int(&st, 60));
+            } else {
+                glDisable(GL_SCISSOR_TEST);
+            }
+            break;
+        case 1:
+            if (mix_int(&st, 3)) {
+                glEnable(GL_ALPHA_TEST);
+                glAlphaFunc(funcs[mix_int(&st, 8)], mix_float(&st, -0.1f, 1.1f));
+            } else {
+                glDisable(GL_ALPHA_TEST);
+            }
+            break;
+        case 2:
+            if (mix_int(&st, 4)) {
+                glEnable(GL_STENCIL_TEST);
+                glStencilFunc(funcs[mix_int(&st, 8)], mix_int(&st, 300) - 20, (GLuint)mix_next(&st));
+                glStencilOp(stencil_ops[mix_int(&st, 8)], stencil_ops[mix_int(&st, 8)],
+                            stencil_ops[mix_int(&st, 8)]);
+            } else {
+                glDisable(GL_STENCIL_TEST);
+            }
+            break;
+        case 3:
+            glStencilMask(mix_int(&st, 2) ? ~0u : (GLuint)mix_next(&st));
+            break;
+        case 4:
+            if (mix_int(&st, 4)) {
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(funcs[mix_int(&st, 8)]);
+            } else {
+                glDisable(GL_DEPTH_TEST);
+            }
+            glDepthMask(mix_int(&st, 4) != 0);
+            break;
+        case 5:
+        case 6:
+            if (mix_int(&st, 4)) {
+                glEnable(GL_BLEND);
+                glBlendFunc(factors[mix_int(&st, 15)], factors[mix_int(&st, 15)]);
+                glBlendEquation(eqs[mix_int(&st, 5)]);
+                glBlendColor(mix_float(&st, -0.2f, 1.2f), mix_float(&st, 0, 1),
+                             mix_float(&st, 0, 1), mix_float(&st, 0, 1));
+            } else {
+                glDisable(GL_BLEND);
+            }
+            break;
+        case 7:
+            if (mix_int(&st, 4) == 0) {
+                glEnable(GL_COLOR_LOGIC_OP);
+                glLogicOp(GL_CLEAR + mix_int(&st, 16));
+            } else {
+                glDisable(GL_COLOR_LOGIC_OP);
+            }
+            break;
+        case 8: {
+            const int m = mix_int(&st, 3) ? 15 : mix_int(&st, 16);
+            glColorMask(m & 1, (m >> 1) & 1, (m >> 2) & 1, (m >> 3) & 1);
+            break;
+        }
+        case 9: {
+            static const GLbitfield bits[4] = {
+                GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT,
+                GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+            };
+            glClearColor(mix_float(&st, 0, 1), mix_float(&st, 0, 1), mix_float(&st, 0, 1), mix_float(&st, 0, 1));
+            glClearDepth(mix_float(&st, 0, 1));
+            glClearStencil(mix_int(&st, 256));
+            glClear(bits[mix_int(&st, 4)]);
+            break;
+        }
+        default:
+            break;
+        }
+        glBegin(GL_TRIANGLES);
+        for (int v = 0; v < 3; v++) {
+            glColor4f(mix_float(&st, -0.1f, 1.1f), mix_float(&st, 0, 1), mix_float(&st, 0, 1),
+                      mix_float(&st, -0.1f, 1.1f));
+            glVertex3f(mix_float(&st, -8, 72), mix_float(&st, -8, 72), mix_float(&st, -1.2f, 1.2f));
+        }
+        glEnd();
+        if (i == 29)
+            fc_capture(h);
+    }
+    fc_capture(h);
+}
+
+static void random_mix_1(fc_h *h) { random_mix(h, 1); }
+static void random_mix_2(fc_h *h) { random_mix(h, 2); }
+static void random_mix_3(fc_h *h) { random_mix(h, 3); }
+static void random_mix_4(fc_h *h) { random_mix(h, 4); }
+static void random_mix_5(fc_h *h) { random_mix(h, 5); }
+static void random_mix_6(fc_h *h) { random_mix(h, 6); }
+static void random_mix_7(fc_h *h) { random_mix(h, 7); }
+static void random_mix_8(fc_h *h) { random_mix(h, 8); }
+
 /* ---- errors and queries ---- */
 
 static void errors_enums(fc_h *h)
@@ -1115,6 +1250,14 @@ const fc_case fc_cases_fragment[] = {
     FC_CASE("fragment/depth_bits_24_ties", 32, 32, OSMESA_RGBA, 24, 0, 2, "fragment", depth_bits_ties),
     FC_CASE("fragment/depth_bits_32_ties", 32, 32, OSMESA_RGBA, 32, 0, 2, "fragment", depth_bits_ties),
     FC_CASE("fragment/depth_bits_24s8_ties", 32, 32, OSMESA_RGBA, 24, 8, 2, "fragment", depth_bits_ties),
+    FC_CASE("fragment/random_mix_1", 64, 64, OSMESA_RGBA, 24, 8, 2, "fragment", random_mix_1),
+    FC_CASE("fragment/random_mix_2", 64, 64, OSMESA_RGBA, 24, 8, 2, "fragment", random_mix_2),
+    FC_CASE("fragment/random_mix_3", 64, 64, OSMESA_BGRA, 24, 8, 2, "fragment", random_mix_3),
+    FC_CASE("fragment/random_mix_4", 64, 64, OSMESA_ARGB, 24, 8, 2, "fragment", random_mix_4),
+    FC_CASE("fragment/random_mix_5", 64, 64, OSMESA_RGBA, 16, 0, 2, "fragment", random_mix_5),
+    FC_CASE("fragment/random_mix_6", 64, 64, OSMESA_RGBA, 0, 8, 2, "fragment", random_mix_6),
+    FC_CASE("fragment/random_mix_7", 64, 64, OSMESA_RGBA, 32, 0, 2, "fragment", random_mix_7),
+    FC_CASE("fragment/random_mix_8", 64, 64, OSMESA_RGBA, 24, 8, 2, "fragment", random_mix_8),
     FC_CASE_RGBA("fragment/errors_enums", 32, 32, 0, "fragment error", errors_enums),
     FC_CASE("fragment/errors_begin_end", 32, 32, OSMESA_RGBA, 24, 8, 1, "fragment error", errors_begin_end),
     FC_CASE("fragment/query_defaults", 16, 16, OSMESA_RGBA, 24, 8, 0, "fragment query", query_defaults),
