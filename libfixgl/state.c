@@ -75,15 +75,14 @@ static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
 {
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
 
-   /* scissor [S: st_atom_scissor.c:st_update_scissor; lp_setup.c
-    * draw_regions]: the scissored bounds flipped to y-down */
-   int bbox[4];
-   fgl_scissor_bounds(ctx, bbox);
-   const int fb_h = fb ? fb->Height : 0;
-   rs->x0 = bbox[0];
-   rs->x1 = bbox[1];
-   rs->y0 = fb_h - bbox[3];
-   rs->y1 = fb_h - bbox[2];
+   /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;
+    * lp_setup.c try_update_scene_state draw_regions] */
+   int region[4];
+   fgl_scissor_draw_region(ctx, region);
+   rs->x0 = region[0];
+   rs->y0 = region[1];
+   rs->x1 = region[2];
+   rs->y1 = region[3];
 
    /* depth and stencil only with their buffers [S: st_atom_depth.c] */
    const bool has_depth = fb && fb->DepthBits > 0;

@@ -92,6 +92,36 @@ static void scissor_draw(fc_h *h)
     fc_capture(h);
 }
 
+/* Boxes with origins past 16 bits and sizes that overflow int: the oracle
+ * keeps the box in 16-bit fields for drawing (65536 + x starts at x) but
+ * in ints for clears; x + width wraps. */
+static void scissor_huge(fc_h *h)
+{
+    static const int boxes[][4] = {
+        { 65536 + 10, 4, 8, 8 }, { 4, 65536 + 20, 8, 8 }, { 131072 + 3, 131072 + 5, 100, 100 },
+        { 65530, 0, 20, 12 }, { 2147483640, 0, 100, 32 }, { 5, 5, 2147483647, 3 },
+        { -2147483647, 12, 2147483647, 3 }, { 20, 20, 65536 + 4, 65536 + 4 },
+    };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_SCISSOR_TEST);
+    for (int i = 0; i < 8; i++) {
+        glScissor(boxes[i][0], boxes[i][1], boxes[i][2], boxes[i][3]);
+        fcu_color(i);
+        fcu_rect(0, 0, 32, 32, 0);
+        fc_get_integer(h, "GL_SCISSOR_BOX", GL_SCISSOR_BOX, 4);
+    }
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int i = 0; i < 8; i++) {
+        glScissor(boxes[i][0], boxes[i][1], boxes[i][2], boxes[i][3]);
+        glClearColor(0.1f * (float)i, 1.0f - 0.1f * (float)i, 0.5f, 1);
+        glClearDepth(0.1 * i);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    fc_capture(h);
+}
+
 /* Scissor with sloped triangles whose edges cross the box. */
 static void scissor_triangles(fc_h *h)
 {
@@ -1208,6 +1238,7 @@ static void query_set(fc_h *h)
 
 const fc_case fc_cases_fragment[] = {
     FC_CASE_RGBA("fragment/scissor_draw", 32, 32, 2, "fragment", scissor_draw),
+    FC_CASE_RGBA("fragment/scissor_huge", 32, 32, 2, "fragment", scissor_huge),
     FC_CASE_RGBA("fragment/scissor_triangles", 32, 32, 1, "fragment", scissor_triangles),
     FC_CASE_RGBA("fragment/scissor_tiles", 160, 120, 1, "fragment", scissor_tiles),
     FC_CASE_RGBA("fragment/scissor_clear_color", 32, 32, 2, "fragment", scissor_clear_color),

@@ -41,8 +41,9 @@ static uint32_t pack_z(double z, int bits)
 static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebuffer *fb)
 {
    const struct fgl_scissor_attrib *s = &ctx->Scissor;
-   return s->Enabled && (s->X > 0 || s->Y > 0 || s->X + s->Width < fb->Width ||
-                         s->Y + s->Height < fb->Height);
+   return s->Enabled && (s->X > 0 || s->Y > 0 ||
+                         (int)((unsigned)s->X + (unsigned)s->Width) < fb->Width ||
+                         (int)((unsigned)s->Y + (unsigned)s->Height) < fb->Height);
 }
 
 /* clear_with_quad [S: state_tracker/st_cb_clear.c:clear_with_quad]: a quad
@@ -69,6 +70,15 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
    rs.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
    rs.stencil_fail = rs.stencil_zfail = rs.stencil_zpass = R_STENCIL_REPLACE;
    rs.full_ops = true;
+   /* the quad spans Mesa's scissored bounds (_Xmin.._Ymax, int arithmetic);
+    * the clear's rasterizer state has no scissor */
+   int bbox[4];
+   fgl_scissor_bounds(ctx, bbox);
+   const int h = ctx->DrawBuffer->Height;
+   rs.x0 = bbox[0];
+   rs.x1 = bbox[1];
+   rs.y0 = h - bbox[3];
+   rs.y1 = h - bbox[2];
 
    const float zclip = (float)(ctx->Depth.Clear * 2.0f - 1.0f);
    const float z = fmaf(zclip, 0.5f, 0.5f);

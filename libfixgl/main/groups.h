@@ -26,6 +26,8 @@ void fgl_init_scissor(struct fgl_context *ctx);
 void fgl_set_scissor(struct fgl_context *ctx, int x, int y, int width, int height);
 /* the scissored draw bounds (Mesa's _Xmin, _Xmax, _Ymin, _Ymax), y-up */
 void fgl_scissor_bounds(const struct fgl_context *ctx, int bbox[4]);
+/* the draw region of primitives: x0, y0, x1, y1, y-down, exclusive */
+void fgl_scissor_draw_region(const struct fgl_context *ctx, int region[4]);
 
 /* main/stencil.c (GL_STENCIL_BUFFER_BIT) */
 void fgl_init_stencil(struct fgl_context *ctx);
