@@ -750,6 +750,53 @@ static void blend_sweep_b(fc_h *h)
     blend_sweep(h, bg, fg);
 }
 
+/* Every (value, factor) pair of the unorm8 multiply: pixel (x, y) blends
+ * value x with alpha y.  gallivm's (t + (t >> 8) + 128) >> 8 differs from
+ * round(x * y / 255) for 24 of the 65536 pairs (e.g. 152 * 229). First the
+ * source term (SRC_ALPHA, ZERO), then the destination term (ZERO,
+ * SRC_ALPHA) over a background of the values. */
+static void blend_mul_exhaustive(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ZERO);
+    glBegin(GL_QUADS);
+    for (int y = 0; y < 256; y++) {
+        for (int x = 0; x < 256; x++) {
+            glColor4ub((GLubyte)x, (GLubyte)(255 - x), (GLubyte)(x ^ y), (GLubyte)y);
+            glVertex2f((float)x, (float)y);
+            glVertex2f((float)x + 1, (float)y);
+            glVertex2f((float)x + 1, (float)y + 1);
+            glVertex2f((float)x, (float)y + 1);
+        }
+    }
+    glEnd();
+    fc_capture(h);
+    glDisable(GL_BLEND);
+    glBegin(GL_QUADS);
+    for (int x = 0; x < 256; x++) {
+        glColor4ub((GLubyte)x, (GLubyte)(255 - x), (GLubyte)(x * 7), (GLubyte)(x * 3));
+        glVertex2f((float)x, 0);
+        glVertex2f((float)x + 1, 0);
+        glVertex2f((float)x + 1, 256);
+        glVertex2f((float)x, 256);
+    }
+    glEnd();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_SRC_ALPHA);
+    glBegin(GL_QUADS);
+    for (int y = 0; y < 256; y++) {
+        glColor4ub(0, 0, 0, (GLubyte)y);
+        glVertex2f(0, (float)y);
+        glVertex2f(256, (float)y);
+        glVertex2f(256, (float)y + 1);
+        glVertex2f(0, (float)y + 1);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
 /* Each equation with a few factor pairs (MIN/MAX ignore the factors). */
 static void blend_equations(fc_h *h)
 {
@@ -1268,6 +1315,7 @@ const fc_case fc_cases_fragment[] = {
     FC_CASE_RGBA("fragment/blend_common_pairs", 64, 32, 1, "fragment", blend_common_pairs),
     FC_CASE_RGBA("fragment/blend_sweep_all_pairs_a", 64, 64, 1, "fragment", blend_sweep_a),
     FC_CASE_RGBA("fragment/blend_sweep_all_pairs_b", 64, 64, 1, "fragment", blend_sweep_b),
+    FC_CASE_RGBA("fragment/blend_mul_exhaustive", 256, 256, 2, "fragment", blend_mul_exhaustive),
     FC_CASE_RGBA("fragment/blend_equations", 64, 32, 1, "fragment", blend_equations),
     FC_CASE_RGBA("fragment/blend_color", 64, 32, 1, "fragment", blend_color),
     FC_CASE("fragment/blend_bgra", 64, 32, OSMESA_BGRA, 24, 0, 1, "fragment", blend_format),

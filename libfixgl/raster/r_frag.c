@@ -70,7 +70,9 @@ static uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op, uint8_
 }
 
 /* gallivm's lp_build_mul for unorm8 [S: gallivm/lp_bld_arit.c:lp_build_mul_norm]:
- * t = a*b, (t + (t >> 8) + 128) >> 8, which is round(a*b/255). */
+ * t = a*b, (t + (t >> 8) + 128) >> 8.  This is round(a*b/255) except for
+ * 24 of the 65536 pairs, where it is one less (152 * 229 gives 136, not
+ * 137; fragment/blend_mul_exhaustive). */
 static inline unsigned mul_u8(unsigned a, unsigned b)
 {
    const unsigned t = a * b;
