@@ -107,6 +107,9 @@ static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
    rs->alpha_test = c->AlphaEnabled;
    rs->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
    rs->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
+   /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare */
+   rs->alpha_test_float = fb && fb->AlphaBits == 0;
+   rs->alpha_ref_float = c->AlphaRef;
 
    /* blending [S: st_atom_blend.c:st_update_blend]: the logic op wins;
     * MIN and MAX use factors ONE; blend colour by float_to_ubyte

@@ -51,6 +51,21 @@ static bool compare(enum r_func func, uint32_t a, uint32_t b)
    }
 }
 
+static bool compare_float(enum r_func func, float a, float b)
+{
+   switch (func) {
+   case R_NEVER:    return false;
+   case R_LESS:     return a < b;
+   case R_EQUAL:    return a == b;
+   case R_LEQUAL:   return a <= b;
+   case R_GREATER:  return a > b;
+   case R_NOTEQUAL: return a != b;
+   case R_GEQUAL:   return a >= b;
+   case R_ALWAYS:
+   default:         return true;
+   }
+}
+
 /* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR
  * saturate at 0xff/0, the WRAP variants and INVERT keep the low 8 bits;
  * REPLACE writes the (clamped, unmasked) reference. */
@@ -255,13 +270,24 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
       return;
    }
 
-   /* alpha test [S: llvmpipe/lp_bld_alpha.c:lp_build_alpha_test]: in the
-    * colour buffer's precision, alpha clamped (lp_build_clamp: NaN -> 1)
-    * and converted like the colour, the reference likewise (state.c) */
+   /* alpha test [S: llvmpipe/lp_bld_alpha.c:lp_build_alpha_test]: for
+    * rgba8 buffers in their precision, alpha clamped (lp_build_clamp:
+    * NaN -> 1) and converted like the colour, the reference likewise
+    * (state.c); otherwise on floats, the alpha clamped by the shader's
+    * colour clamp (st_program.c nir_lower_clamp_color_outputs) and the
+    * reference as given, with lp_build_cmp's unordered compares (NaN
+    * passes every function but NEVER) */
    if (rs->alpha_test) {
-      const uint8_t a = (uint8_t)lrintf(r_clamp01(color[3]) * 255.0f);
-      if (!compare(rs->alpha_func, a, rs->alpha_ref))
-         return;
+      if (rs->alpha_test_float) {
+         const float a = r_clamp01(color[3]), ref = rs->alpha_ref_float;
+         if (rs->alpha_func == R_NEVER ||
+             (!isnan(ref) && !compare_float(rs->alpha_func, a, ref)))
+            return;
+      } else {
+         const uint8_t a = (uint8_t)lrintf(r_clamp01(color[3]) * 255.0f);
+         if (!compare(rs->alpha_func, a, rs->alpha_ref))
+            return;
+      }
    }
 
    if (rs->stencil_test) {

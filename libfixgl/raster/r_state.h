@@ -101,6 +101,9 @@ struct r_state {
    bool alpha_test;
    enum r_func alpha_func;
    uint8_t alpha_ref;           /* clamped, RNE(ref * 255) */
+   bool alpha_test_float;       /* buffer not an rgba8 variant (OSMESA_RGB):
+                                 * float compare with the unclamped ref */
+   float alpha_ref_float;
 
    bool stencil_test;           /* only with a stencil buffer */
    enum r_func stencil_func;

@@ -13,6 +13,7 @@
  *   colour mask     per channel
  *   zeroed r_state  a plain store (the path other primitives rely on)
  */
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -168,6 +169,27 @@ static void test_alpha(void)
    memset(pixel, 0, sizeof pixel);
    r_fragment_ops(&rs, 0, 0, 0, hi);
    CHECK(pixel[1] == 255, "alpha 7 does not equal 255");
+
+   /* buffers without alpha (OSMESA_RGB): float compare with the unclamped
+    * reference, unordered (NaN passes) */
+   static const struct { enum r_func f; float alpha, ref; bool pass; } fl[] = {
+      { R_EQUAL, 0.5f, 0.501f, false },       /* both 128 in u8 */
+      { R_EQUAL, 0.5f, 0.5f, true },
+      { R_LESS, 1.0f, 2.0f, true },           /* the reference is not clamped */
+      { R_GEQUAL, 0.0f, -1.0f, true },
+      { R_GREATER, 0.25f, NAN, true },
+      { R_NEVER, 0.25f, NAN, false },
+      { R_LEQUAL, 3.0f, 1.0f, true },         /* alpha clamped to 1 */
+   };
+   rs.alpha_test_float = true;
+   for (unsigned i = 0; i < sizeof fl / sizeof fl[0]; i++) {
+      rs.alpha_func = fl[i].f;
+      rs.alpha_ref_float = fl[i].ref;
+      memset(pixel, 0, sizeof pixel);
+      const float c[4] = { 1, 0, 0, fl[i].alpha };
+      r_fragment_ops(&rs, 0, 0, 0, c);
+      CHECK((pixel[0] == 255) == fl[i].pass, "float alpha test %u: drawn %d", i, pixel[0] == 255);
+   }
 }
 
 static uint8_t stencil_model(enum r_stencil_op op, uint8_t s, uint8_t ref)
