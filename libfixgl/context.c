@@ -44,6 +44,9 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_hint(ctx);
    fgl_init_light(ctx);
    fgl_init_polygon(ctx);
+   fgl_init_scissor(ctx);
+   fgl_init_stencil(ctx);
+   fgl_init_blend(ctx);
    fgl_init_viewport(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
@@ -62,11 +65,12 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
 {
    ctx->DrawBuffer = fb;
    ctx->NewState |= FGL_NEW_BUFFERS;
-   /* Like _mesa_make_current: the first binding sizes viewport (and, later,
-    * scissor) to the buffer. */
+   /* Like _mesa_make_current (_mesa_check_init_viewport): the first
+    * binding sizes viewport and scissor box to the buffer. */
    if (fb && !ctx->ViewportInitialized) {
       ctx->ViewportInitialized = true;
       fgl_set_viewport(ctx, 0, 0, fb->Width, fb->Height);
+      fgl_set_scissor(ctx, 0, 0, fb->Width, fb->Height);
    }
 }
 

@@ -45,7 +45,10 @@ enum {
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
    FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling */
-   FGL_NEW_FOG        = 1u << 7,   /* fog state and GL_FOG */
+   FGL_NEW_SCISSOR    = 1u << 7,   /* scissor box and test */
+   FGL_NEW_COLOR      = 1u << 8,   /* alpha test, blending, logic op, colour mask */
+   FGL_NEW_STENCIL    = 1u << 9,   /* stencil test */
+   FGL_NEW_FOG        = 1u << 10,  /* fog state and GL_FOG */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -56,10 +59,40 @@ struct fgl_current_attrib {
    float Attrib[FGL_ATTR_COUNT][4];
 };
 
-/* GL_COLOR_BUFFER_BIT (clear colour so far) */
+/* GL_COLOR_BUFFER_BIT */
 struct fgl_colorbuffer_attrib {
    float ClearColor[4];     /* as given; clamped when used or queried */
    bool Dither;             /* accepted and ignored, as llvmpipe does */
+   /* alpha test (main/blend.c) */
+   bool AlphaEnabled;
+   GLenum AlphaFunc;
+   float AlphaRef;          /* as given (Mesa's AlphaRefUnclamped) */
+   /* blending: one factor pair and equation for rgb and alpha */
+   bool BlendEnabled;
+   GLenum BlendSrc, BlendDst;
+   GLenum BlendEquation;
+   float BlendColor[4];     /* as given (Mesa's BlendColorUnclamped) */
+   /* logic op */
+   bool LogicOpEnabled;     /* GL_COLOR_LOGIC_OP */
+   GLenum LogicOp;
+   unsigned ColorMask;      /* bit 0 red .. bit 3 alpha */
+};
+
+/* GL_SCISSOR_BIT */
+struct fgl_scissor_attrib {
+   bool Enabled;
+   int X, Y, Width, Height;
+};
+
+/* GL_STENCIL_BUFFER_BIT (one state for both faces: GL 1.x) */
+struct fgl_stencil_attrib {
+   bool Enabled;
+   GLenum Func;
+   int Ref;                 /* as given; clamped to the buffer's range when used */
+   GLuint ValueMask;
+   GLuint WriteMask;
+   GLenum FailFunc, ZFailFunc, ZPassFunc;
+   GLuint Clear;
 };
 
 /* GL_DEPTH_BUFFER_BIT */
@@ -198,6 +231,8 @@ struct fgl_context {
    struct fgl_hint_attrib Hint;
    struct fgl_light_attrib Light;
    struct fgl_polygon_attrib Polygon;
+   struct fgl_scissor_attrib Scissor;
+   struct fgl_stencil_attrib Stencil;
    struct fgl_transform_attrib Transform;
    struct fgl_viewport_attrib Viewport;
 
@@ -208,7 +243,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 45
+#define FGL_PENDING_CAPS 40
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */

@@ -6,6 +6,8 @@
  * transform, then the raster core's state, which reads the framebuffer and
  * the per-fragment state.
  */
+#include <math.h>
+
 #include "context.h"
 #include "main/groups.h"
 
@@ -34,6 +36,125 @@ static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
       rs->fog_color[c] = fog->Color[c];
    rs->fs_inputs |= 1u << R_FS_FOG;
    rs->num_attribs = R_ATTR_FOG + 1;
+}
+
+/* GL comparison, stencil op, blend factor and equation enums to the raster
+ * core's (st_atom_depth.c, st_atom_blend.c translate them the same way). */
+static enum r_stencil_op stencil_op(GLenum op)
+{
+   switch (op) {
+   case GL_ZERO:      return R_STENCIL_ZERO;
+   case GL_REPLACE:   return R_STENCIL_REPLACE;
+   case GL_INCR:      return R_STENCIL_INCR;
+   case GL_DECR:      return R_STENCIL_DECR;
+   case GL_INCR_WRAP: return R_STENCIL_INCR_WRAP;
+   case GL_DECR_WRAP: return R_STENCIL_DECR_WRAP;
+   case GL_INVERT:    return R_STENCIL_INVERT;
+   case GL_KEEP:
+   default:           return R_STENCIL_KEEP;
+   }
+}
+
+static enum r_blend_factor blend_factor(GLenum f)
+{
+   switch (f) {
+   case GL_ZERO:                     return R_BF_ZERO;
+   case GL_SRC_COLOR:                return R_BF_SRC_COLOR;
+   case GL_ONE_MINUS_SRC_COLOR:      return R_BF_INV_SRC_COLOR;
+   case GL_SRC_ALPHA:                return R_BF_SRC_ALPHA;
+   case GL_ONE_MINUS_SRC_ALPHA:      return R_BF_INV_SRC_ALPHA;
+   case GL_DST_COLOR:                return R_BF_DST_COLOR;
+   case GL_ONE_MINUS_DST_COLOR:      return R_BF_INV_DST_COLOR;
+   case GL_DST_ALPHA:                return R_BF_DST_ALPHA;
+   case GL_ONE_MINUS_DST_ALPHA:      return R_BF_INV_DST_ALPHA;
+   case GL_SRC_ALPHA_SATURATE:       return R_BF_SRC_ALPHA_SATURATE;
+   case GL_CONSTANT_COLOR:           return R_BF_CONST_COLOR;
+   case GL_ONE_MINUS_CONSTANT_COLOR: return R_BF_INV_CONST_COLOR;
+   case GL_CONSTANT_ALPHA:           return R_BF_CONST_ALPHA;
+   case GL_ONE_MINUS_CONSTANT_ALPHA: return R_BF_INV_CONST_ALPHA;
+   /* The fixed-function fragment program writes no second colour: the
+    * oracle blends with an unwritten output (different garbage per run and
+    * thread count, ORACLE-NOTES.md), fixgl with a second colour of 0. */
+   case GL_SRC1_COLOR:
+   case GL_SRC1_ALPHA:               return R_BF_ZERO;
+   case GL_ONE_MINUS_SRC1_COLOR:
+   case GL_ONE_MINUS_SRC1_ALPHA:     return R_BF_ONE;
+   case GL_ONE:
+   default:                          return R_BF_ONE;
+   }
+}
+
+static enum r_blend_eq blend_eq(GLenum mode)
+{
+   switch (mode) {
+   case GL_FUNC_SUBTRACT:         return R_BLEND_SUBTRACT;
+   case GL_FUNC_REVERSE_SUBTRACT: return R_BLEND_REVERSE_SUBTRACT;
+   case GL_MIN:                   return R_BLEND_MIN;
+   case GL_MAX:                   return R_BLEND_MAX;
+   case GL_FUNC_ADD:
+   default:                       return R_BLEND_ADD;
+   }
+}
+
+/* The per-fragment operations of the raster state: scissor (the draw
+ * region), alpha test, stencil, depth, blending, logic op, colour mask. */
+static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+
+   /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;
+    * lp_setup.c try_update_scene_state draw_regions] */
+   int region[4];
+   fgl_scissor_draw_region(ctx, region);
+   rs->x0 = region[0];
+   rs->y0 = region[1];
+   rs->x1 = region[2];
+   rs->y1 = region[3];
+
+   /* depth and stencil only with their buffers [S: st_atom_depth.c] */
+   const bool has_depth = fb && fb->DepthBits > 0;
+   const bool has_stencil = fb && fb->StencilBits > 0;
+   rs->depth_test = ctx->Depth.Test && has_depth;
+   rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
+   rs->depth_write = ctx->Depth.Mask;
+
+   const struct fgl_stencil_attrib *st = &ctx->Stencil;
+   rs->stencil_test = st->Enabled && has_stencil;
+   rs->stencil_func = (enum r_func)(st->Func - GL_NEVER);
+   rs->stencil_ref = (uint8_t)fgl_stencil_ref(ctx);
+   rs->stencil_valuemask = (uint8_t)(st->ValueMask & 0xffu);
+   rs->stencil_writemask = (uint8_t)(st->WriteMask & 0xffu);
+   rs->stencil_fail = stencil_op(st->FailFunc);
+   rs->stencil_zfail = stencil_op(st->ZFailFunc);
+   rs->stencil_zpass = stencil_op(st->ZPassFunc);
+
+   /* alpha test: the reference clamped (lp_build_clamp: NaN -> 1) and
+    * converted to unorm8 [S: lp_bld_alpha.c:lp_build_alpha_test] */
+   const struct fgl_colorbuffer_attrib *c = &ctx->Color;
+   rs->alpha_test = c->AlphaEnabled;
+   rs->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
+   rs->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
+   /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare */
+   rs->alpha_test_float = fb && fb->AlphaBits == 0;
+   rs->alpha_ref_float = c->AlphaRef;
+
+   /* blending [S: st_atom_blend.c:st_update_blend]: the logic op wins;
+    * MIN and MAX use factors ONE; blend colour by float_to_ubyte
+    * (lp_setup.c:try_update_scene_state) */
+   rs->logic_op = c->LogicOpEnabled;
+   rs->logic_op_mode = c->LogicOp - GL_CLEAR;
+   rs->color_mask = c->ColorMask & 0xfu;
+   rs->blend = !c->LogicOpEnabled && c->BlendEnabled && rs->color_mask != 0;
+   rs->blend_eq = blend_eq(c->BlendEquation);
+   const bool minmax = rs->blend_eq == R_BLEND_MIN || rs->blend_eq == R_BLEND_MAX;
+   rs->blend_src = minmax ? R_BF_ONE : blend_factor(c->BlendSrc);
+   rs->blend_dst = minmax ? R_BF_ONE : blend_factor(c->BlendDst);
+   for (int i = 0; i < 4; i++)
+      rs->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
+   rs->dst_alpha_one = fb && fb->AlphaBits == 0;
+
+   rs->full_ops = rs->alpha_test || rs->stencil_test || rs->blend ||
+                  rs->logic_op || rs->color_mask != 0xfu;
 }
 
 void fgl_update_state(struct fgl_context *ctx)
@@ -70,7 +191,8 @@ void fgl_update_state(struct fgl_context *ctx)
    }
 
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
-                FGL_NEW_FOG)) {
+                FGL_NEW_FOG |
+                FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -79,15 +201,8 @@ void fgl_update_state(struct fgl_context *ctx)
          rs->zs_format = fb->ZSFormat;
          rs->width = fb->Width;
          rs->height = fb->Height;
-         rs->x0 = 0;
-         rs->y0 = 0;
-         rs->x1 = fb->Width;
-         rs->y1 = fb->Height;
       }
-      const bool has_depth = fb && fb->DepthBits > 0;
-      rs->depth_test = ctx->Depth.Test && has_depth;
-      rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
-      rs->depth_write = ctx->Depth.Mask;
+      update_fragment_ops(ctx, rs);
       /* colours: the lit front (and back, and secondary) colours, or the
        * vertex colour */
       const bool lit = ctx->Light.Enabled;

@@ -9,6 +9,7 @@ static const fc_case *const groups[] = {
     fc_cases_light, fc_cases_light_space, fc_cases_light_normal,
     fc_cases_light_mat, fc_cases_light_prim, fc_cases_light_api,
     fc_cases_fog,
+    fc_cases_fragment,
 };
 
 size_t fc_case_count(void)

@@ -37,6 +37,54 @@ static uint32_t pack_z(double z, int bits)
    return (uint32_t)lrint(z * max);
 }
 
+/* Mesa's is_scissor_enabled: a scissor that leaves part of the buffer out */
+static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebuffer *fb)
+{
+   const struct fgl_scissor_attrib *s = &ctx->Scissor;
+   return s->Enabled && (s->X > 0 || s->Y > 0 ||
+                         (int)((unsigned)s->X + (unsigned)s->Width) < fb->Width ||
+                         (int)((unsigned)s->Y + (unsigned)s->Height) < fb->Height);
+}
+
+/* clear_with_quad [S: state_tracker/st_cb_clear.c:clear_with_quad]: a quad
+ * over the scissored bounds through the fragment stage, with blending,
+ * logic op and alpha test off; colour under the colour mask; depth test
+ * ALWAYS with writes; stencil test ALWAYS with every op REPLACE by the
+ * clear value under the stencil write mask.  The quad's depth is
+ * (float)(Clear * 2 - 1) in clip space, through the viewport transform of
+ * the whole buffer (scale = translate = 0.5, fused: llvmpipe-facts.md §1). */
+static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil)
+{
+   struct r_state rs = ctx->_Raster;
+   rs.alpha_test = false;
+   rs.blend = false;
+   rs.logic_op = false;
+   rs.color_mask = color ? ctx->Color.ColorMask & 0xfu : 0u;
+   rs.depth_test = depth;
+   rs.depth_func = R_ALWAYS;
+   rs.depth_write = true;
+   rs.stencil_test = stencil;
+   rs.stencil_func = R_ALWAYS;
+   rs.stencil_ref = (uint8_t)ctx->Stencil.Clear;   /* pipe_stencil_ref is a ubyte */
+   rs.stencil_valuemask = 0xff;
+   rs.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
+   rs.stencil_fail = rs.stencil_zfail = rs.stencil_zpass = R_STENCIL_REPLACE;
+   rs.full_ops = true;
+   /* the quad spans Mesa's scissored bounds (_Xmin.._Ymax, int arithmetic);
+    * the clear's rasterizer state has no scissor */
+   int bbox[4];
+   fgl_scissor_bounds(ctx, bbox);
+   const int h = ctx->DrawBuffer->Height;
+   rs.x0 = bbox[0];
+   rs.x1 = bbox[1];
+   rs.y0 = h - bbox[3];
+   rs.y1 = h - bbox[2];
+
+   const float zclip = (float)(ctx->Depth.Clear * 2.0f - 1.0f);
+   const float z = fmaf(zclip, 0.5f, 0.5f);
+   r_clear_quad(&rs, z, ctx->Color.ClearColor);
+}
+
 void GLAPIENTRY glClear(GLbitfield mask)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -55,15 +103,53 @@ void GLAPIENTRY glClear(GLbitfield mask)
    fgl_update_state(ctx);
    const struct r_state *rs = &ctx->_Raster;
 
-   if (mask & GL_COLOR_BUFFER_BIT) {
+   /* Which buffers take a plain clear and which a quad
+    * [S: main/clear.c:clear; state_tracker/st_cb_clear.c:st_Clear].
+    * llvmpipe has no PIPE_CAP_CLEAR_SCISSORED, so a scissor that cuts the
+    * buffer makes a quad; so do a partial colour mask (over the buffer's
+    * channels) and a partial stencil write mask.  A fully masked buffer and
+    * depth with writes off are not cleared. */
+   const bool scissor = scissor_cuts(ctx, fb);
+   const unsigned surf_mask = fb->AlphaBits > 0 ? 0xfu : 0x7u;
+   const unsigned cmask = ctx->Color.ColorMask & surf_mask;
+   bool color_quad = false, color_clear = false;
+   if ((mask & GL_COLOR_BUFFER_BIT) && cmask != 0) {
+      if (scissor || cmask != surf_mask)
+         color_quad = true;
+      else
+         color_clear = true;
+   }
+   bool depth_quad = false, depth_clear = false;
+   if ((mask & GL_DEPTH_BUFFER_BIT) && fb->DepthBits > 0 && ctx->Depth.Mask) {
+      if (scissor)
+         depth_quad = true;
+      else
+         depth_clear = true;
+   }
+   bool stencil_quad = false, stencil_clear = false;
+   const unsigned swmask = ctx->Stencil.WriteMask & 0xffu;
+   if ((mask & GL_STENCIL_BUFFER_BIT) && fb->StencilBits > 0 && swmask != 0) {
+      if (scissor || swmask != 0xffu)
+         stencil_quad = true;
+      else
+         stencil_clear = true;
+   }
+   /* depth and stencil are always cleared together */
+   if ((depth_quad || stencil_quad) && (depth_clear || stencil_clear)) {
+      depth_quad |= depth_clear;
+      stencil_quad |= stencil_clear;
+      depth_clear = stencil_clear = false;
+   }
+
+   if (color_clear) {
       uint8_t rgba[4];
       for (int i = 0; i < 4; i++)
          rgba[i] = r_float_to_unorm8(ctx->Color.ClearColor[i]);
       r_clear_color(rs, rgba);
    }
-   /* the depth write mask applies to clears too */
-   const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && fb->DepthBits > 0 && ctx->Depth.Mask;
-   const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && fb->StencilBits > 0;
-   if (depth || stencil)
-      r_clear_depth_stencil(rs, depth, pack_z(ctx->Depth.Clear, fb->DepthBits), stencil, 0);
+   if (depth_clear || stencil_clear)
+      r_clear_depth_stencil(rs, depth_clear, pack_z(ctx->Depth.Clear, fb->DepthBits),
+                            stencil_clear, (uint8_t)ctx->Stencil.Clear);
+   if (color_quad || depth_quad || stencil_quad)
+      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad);
 }

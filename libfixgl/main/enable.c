@@ -10,9 +10,8 @@
  * stored and reported (so programs see the oracle's errors and queries)
  * but do not affect rendering yet; README's status table lists them. */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
+   GL_AUTO_NORMAL, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
    GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
-   GL_COLOR_LOGIC_OP,
    GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH,
    GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
@@ -21,8 +20,7 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POINT_SMOOTH,
    GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
-   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST,
-   GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_Q,
+   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_Q,
    GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T,
 };
 
@@ -64,6 +62,21 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_DITHER:
       *dirty = 0;
       return &ctx->Color.Dither;
+   case GL_ALPHA_TEST:
+      *dirty = FGL_NEW_COLOR;
+      return &ctx->Color.AlphaEnabled;
+   case GL_BLEND:
+      *dirty = FGL_NEW_COLOR;
+      return &ctx->Color.BlendEnabled;
+   case GL_COLOR_LOGIC_OP:
+      *dirty = FGL_NEW_COLOR;
+      return &ctx->Color.LogicOpEnabled;
+   case GL_SCISSOR_TEST:
+      *dirty = FGL_NEW_SCISSOR;
+      return &ctx->Scissor.Enabled;
+   case GL_STENCIL_TEST:
+      *dirty = FGL_NEW_STENCIL;
+      return &ctx->Stencil.Enabled;
    default:
       return NULL;
    }

@@ -20,6 +20,7 @@
 enum value_type {
    V_BOOL,      /* GLboolean state */
    V_INT,       /* integers and enums */
+   V_UINT,      /* unsigned integers: int queries saturate at INT_MAX */
    V_FLOAT,     /* floats converted with IROUND */
    V_FLOATN,    /* normalized floats converted with FLOAT_TO_INT */
 };
@@ -35,10 +36,11 @@ static GLint iround(float f)
    return fgl_double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
 }
 
-/* Mesa's CLAMP: NaN passes through */
-static float clamp01_keepnan(float x)
+/* Mesa's CLAMP(x, 0, 1) (util/macros.h): x > 0 ? min(x, 1) : 0, so NaN
+ * becomes 0 */
+static float mesa_clamp01(float x)
 {
-   return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+   return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f;
 }
 
 static void set_floats(struct value *val, enum value_type type, const float *f, int n)
@@ -78,8 +80,76 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
-         f[i] = clamp01_keepnan(ctx->Color.ClearColor[i]);
+         f[i] = mesa_clamp01(ctx->Color.ClearColor[i]);
       set_floats(val, V_FLOATN, f, 4);
+      return true;
+   case GL_ALPHA_TEST_FUNC:
+      set_ints(val, V_INT, 1, (int)ctx->Color.AlphaFunc, 0, 0, 0);
+      return true;
+   case GL_ALPHA_TEST_REF:
+      /* _mesa_get_clamp_fragment_color is true for fixed-point buffers */
+      f[0] = mesa_clamp01(ctx->Color.AlphaRef);
+      set_floats(val, V_FLOATN, f, 1);
+      return true;
+   case GL_BLEND_SRC:              /* = GL_BLEND_SRC_RGB */
+   case GL_BLEND_SRC_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendSrc, 0, 0, 0);
+      return true;
+   case GL_BLEND_DST:              /* = GL_BLEND_DST_RGB */
+   case GL_BLEND_DST_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendDst, 0, 0, 0);
+      return true;
+   case GL_BLEND_EQUATION:         /* = GL_BLEND_EQUATION_RGB */
+   case GL_BLEND_EQUATION_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendEquation, 0, 0, 0);
+      return true;
+   case GL_BLEND_COLOR:
+      for (int i = 0; i < 4; i++)
+         f[i] = mesa_clamp01(ctx->Color.BlendColor[i]);
+      set_floats(val, V_FLOATN, f, 4);
+      return true;
+   case GL_LOGIC_OP_MODE:
+      set_ints(val, V_INT, 1, (int)ctx->Color.LogicOp, 0, 0, 0);
+      return true;
+   case GL_COLOR_WRITEMASK: {
+      const unsigned m = ctx->Color.ColorMask;
+      set_ints(val, V_INT, 4, (m & 1u) != 0, (m & 2u) != 0, (m & 4u) != 0, (m & 8u) != 0);
+      return true;
+   }
+   /* GL_SCISSOR_BIT */
+   case GL_SCISSOR_BOX:
+      set_ints(val, V_INT, 4, ctx->Scissor.X, ctx->Scissor.Y,
+               ctx->Scissor.Width, ctx->Scissor.Height);
+      return true;
+   /* GL_STENCIL_BUFFER_BIT */
+   case GL_STENCIL_FUNC:
+      set_ints(val, V_INT, 1, (int)ctx->Stencil.Func, 0, 0, 0);
+      return true;
+   case GL_STENCIL_FAIL:
+      set_ints(val, V_INT, 1, (int)ctx->Stencil.FailFunc, 0, 0, 0);
+      return true;
+   case GL_STENCIL_PASS_DEPTH_FAIL:
+      set_ints(val, V_INT, 1, (int)ctx->Stencil.ZFailFunc, 0, 0, 0);
+      return true;
+   case GL_STENCIL_PASS_DEPTH_PASS:
+      set_ints(val, V_INT, 1, (int)ctx->Stencil.ZPassFunc, 0, 0, 0);
+      return true;
+   case GL_STENCIL_REF:
+      set_ints(val, V_UINT, 1, fgl_stencil_ref(ctx), 0, 0, 0);
+      return true;
+   case GL_STENCIL_VALUE_MASK:
+      val->type = V_UINT;
+      val->n = 1;
+      val->v[0] = ctx->Stencil.ValueMask;
+      return true;
+   case GL_STENCIL_WRITEMASK:
+      val->type = V_UINT;
+      val->n = 1;
+      val->v[0] = ctx->Stencil.WriteMask;
+      return true;
+   case GL_STENCIL_CLEAR_VALUE:
+      /* CONTEXT_INT of the GLuint */
+      set_ints(val, V_INT, 1, (int)ctx->Stencil.Clear, 0, 0, 0);
       return true;
    /* GL_DEPTH_BUFFER_BIT */
    case GL_DEPTH_CLEAR_VALUE:
@@ -268,7 +338,7 @@ void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean *params)
    if (!get_value(pname, params, &val))
       return;
    for (int i = 0; i < val.n; i++) {
-      if (val.type == V_BOOL || val.type == V_INT)
+      if (val.type == V_BOOL || val.type == V_INT || val.type == V_UINT)
          params[i] = val.v[i] != 0.0 ? GL_TRUE : GL_FALSE;
       else
          params[i] = (float)val.v[i] != 0.0f ? GL_TRUE : GL_FALSE; /* NaN is true */
@@ -285,6 +355,9 @@ void GLAPIENTRY glGetIntegerv(GLenum pname, GLint *params)
       case V_BOOL:
       case V_INT:
          params[i] = (GLint)val.v[i];
+         break;
+      case V_UINT:
+         params[i] = val.v[i] > (double)INT_MAX ? INT_MAX : (GLint)val.v[i];
          break;
       case V_FLOAT:
          params[i] = iround((float)val.v[i]);

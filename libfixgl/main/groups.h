@@ -17,6 +17,23 @@ void fgl_init_current(struct fgl_context *ctx);
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
 
+/* main/blend.c (GL_COLOR_BUFFER_BIT: alpha test, blending, logic op,
+ * colour mask) */
+void fgl_init_blend(struct fgl_context *ctx);
+
+/* main/scissor.c (GL_SCISSOR_BIT) */
+void fgl_init_scissor(struct fgl_context *ctx);
+void fgl_set_scissor(struct fgl_context *ctx, int x, int y, int width, int height);
+/* the scissored draw bounds (Mesa's _Xmin, _Xmax, _Ymin, _Ymax), y-up */
+void fgl_scissor_bounds(const struct fgl_context *ctx, int bbox[4]);
+/* the draw region of primitives: x0, y0, x1, y1, y-down, exclusive */
+void fgl_scissor_draw_region(const struct fgl_context *ctx, int region[4]);
+
+/* main/stencil.c (GL_STENCIL_BUFFER_BIT) */
+void fgl_init_stencil(struct fgl_context *ctx);
+/* _mesa_get_stencil_ref: the reference clamped to the buffer's range */
+int fgl_stencil_ref(const struct fgl_context *ctx);
+
 /* main/depth.c (GL_DEPTH_BUFFER_BIT) */
 void fgl_init_depth(struct fgl_context *ctx);
 

@@ -56,3 +56,13 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
       break;
    }
 }
+
+void r_clear_quad(const struct r_state *rs, float z, const float color[4])
+{
+   /* the quad's edges lie on pixel boundaries (the draw region), so it
+    * covers exactly the region's pixels, each with the quad's constant
+    * depth and colour */
+   for (int y = rs->y0; y < rs->y1; y++)
+      for (int x = rs->x0; x < rs->x1; x++)
+         r_fragment_ops(rs, x, y, z, color);
+}

@@ -37,16 +37,17 @@ uint16_t r_depth_to_z16(float z)
    return (uint16_t)lrintf(r_clamp01(z) * 65535.0f);
 }
 
-static bool depth_compare(enum r_func func, uint32_t frag, uint32_t buf)
+/* lp_build_cmp(func, a, b) on unsigned integers */
+static bool compare(enum r_func func, uint32_t a, uint32_t b)
 {
    switch (func) {
    case R_NEVER:    return false;
-   case R_LESS:     return frag < buf;
-   case R_EQUAL:    return frag == buf;
-   case R_LEQUAL:   return frag <= buf;
-   case R_GREATER:  return frag > buf;
-   case R_NOTEQUAL: return frag != buf;
-   case R_GEQUAL:   return frag >= buf;
+   case R_LESS:     return a < b;
+   case R_EQUAL:    return a == b;
+   case R_LEQUAL:   return a <= b;
+   case R_GREATER:  return a > b;
+   case R_NOTEQUAL: return a != b;
+   case R_GEQUAL:   return a >= b;
    case R_ALWAYS:
    default:         return true;
    }
@@ -85,6 +86,127 @@ static float fog_factor(const struct r_state *rs, float fc)
    return f < 1.0f ? f : 1.0f;
 }
 
+static bool compare_float(enum r_func func, float a, float b)
+{
+   switch (func) {
+   case R_NEVER:    return false;
+   case R_LESS:     return a < b;
+   case R_EQUAL:    return a == b;
+   case R_LEQUAL:   return a <= b;
+   case R_GREATER:  return a > b;
+   case R_NOTEQUAL: return a != b;
+   case R_GEQUAL:   return a >= b;
+   case R_ALWAYS:
+   default:         return true;
+   }
+}
+
+/* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR
+ * saturate at 0xff/0, the WRAP variants and INVERT keep the low 8 bits;
+ * REPLACE writes the (clamped, unmasked) reference. */
+static uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op, uint8_t s)
+{
+   switch (op) {
+   case R_STENCIL_ZERO:      return 0;
+   case R_STENCIL_REPLACE:   return rs->stencil_ref;
+   case R_STENCIL_INCR:      return s == 0xff ? 0xff : (uint8_t)(s + 1);
+   case R_STENCIL_DECR:      return s == 0 ? 0 : (uint8_t)(s - 1);
+   case R_STENCIL_INCR_WRAP: return (uint8_t)(s + 1);
+   case R_STENCIL_DECR_WRAP: return (uint8_t)(s - 1);
+   case R_STENCIL_INVERT:    return (uint8_t)~s;
+   case R_STENCIL_KEEP:
+   default:                  return s;
+   }
+}
+
+/* gallivm's lp_build_mul for unorm8 [S: gallivm/lp_bld_arit.c:lp_build_mul_norm]:
+ * t = a*b, (t + (t >> 8) + 128) >> 8.  This is round(a*b/255) except for
+ * 24 of the 65536 pairs, where it is one less (152 * 229 gives 136, not
+ * 137; fragment/blend_mul_exhaustive). */
+static inline unsigned mul_u8(unsigned a, unsigned b)
+{
+   const unsigned t = a * b;
+   return (t + (t >> 8) + 0x80u) >> 8;
+}
+
+/* The blend factor for channel c [S: llvmpipe/lp_bld_blend_aos.c:
+ * lp_build_blend_factor_unswizzled, lp_build_blend_factor_swizzle]: the
+ * *_ALPHA factors broadcast alpha; for the alpha channel, SRC_ALPHA_SATURATE
+ * is ONE; for rgb it is min(src.a, 1 - dst.a). */
+static unsigned blend_factor(const struct r_state *rs, enum r_blend_factor f, int c,
+                             const uint8_t src[4], const uint8_t dst[4])
+{
+   switch (f) {
+   case R_BF_ZERO:            return 0;
+   case R_BF_ONE:             return 255;
+   case R_BF_SRC_COLOR:       return src[c];
+   case R_BF_INV_SRC_COLOR:   return 255u - src[c];
+   case R_BF_SRC_ALPHA:       return src[3];
+   case R_BF_INV_SRC_ALPHA:   return 255u - src[3];
+   case R_BF_DST_COLOR:       return dst[c];
+   case R_BF_INV_DST_COLOR:   return 255u - dst[c];
+   case R_BF_DST_ALPHA:       return dst[3];
+   case R_BF_INV_DST_ALPHA:   return 255u - dst[3];
+   case R_BF_SRC_ALPHA_SATURATE: {
+      if (c == 3)
+         return 255;
+      const unsigned inv_da = 255u - dst[3];
+      return src[3] < inv_da ? src[3] : inv_da;
+   }
+   case R_BF_CONST_COLOR:     return rs->blend_color[c];
+   case R_BF_INV_CONST_COLOR: return 255u - rs->blend_color[c];
+   case R_BF_CONST_ALPHA:     return rs->blend_color[3];
+   case R_BF_INV_CONST_ALPHA: return 255u - rs->blend_color[3];
+   default:                   return 0;
+   }
+}
+
+/* [S: llvmpipe/lp_bld_blend.c:lp_build_blend, lp_build_blend_func] on
+ * unorm8: each term is a normalized multiply, then a saturating add or
+ * subtract, or an unsigned min/max (whose factors the state tracker sets
+ * to ONE, st_atom_blend.c).  The lerp shortcut needs equal rgb and alpha
+ * factor pairs with complementary src/dst factors, which GL 1.x cannot
+ * produce (src == dst then). */
+static uint8_t blend_channel(const struct r_state *rs, int c,
+                             const uint8_t src[4], const uint8_t dst[4])
+{
+   const unsigned s = mul_u8(src[c], blend_factor(rs, rs->blend_src, c, src, dst));
+   const unsigned d = mul_u8(dst[c], blend_factor(rs, rs->blend_dst, c, src, dst));
+   switch (rs->blend_eq) {
+   case R_BLEND_SUBTRACT:         return (uint8_t)(s > d ? s - d : 0);
+   case R_BLEND_REVERSE_SUBTRACT: return (uint8_t)(d > s ? d - s : 0);
+   case R_BLEND_MIN:              return (uint8_t)(s < d ? s : d);
+   case R_BLEND_MAX:              return (uint8_t)(s > d ? s : d);
+   case R_BLEND_ADD:
+   default:                       return (uint8_t)(s + d > 255u ? 255u : s + d);
+   }
+}
+
+/* [S: gallivm/lp_bld_logicop.c:lp_build_logicop], indexed by the GL op
+ * minus GL_CLEAR. */
+static uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
+{
+   switch (mode) {
+   case 0x0: return 0;                        /* CLEAR */
+   case 0x1: return s & d;                    /* AND */
+   case 0x2: return s & (uint8_t)~d;          /* AND_REVERSE */
+   case 0x3: return s;                        /* COPY */
+   case 0x4: return (uint8_t)~s & d;          /* AND_INVERTED */
+   case 0x5: return d;                        /* NOOP */
+   case 0x6: return s ^ d;                    /* XOR */
+   case 0x7: return s | d;                    /* OR */
+   case 0x8: return (uint8_t)~(s | d);        /* NOR */
+   case 0x9: return (uint8_t)~(s ^ d);        /* EQUIV */
+   case 0xa: return (uint8_t)~d;              /* INVERT */
+   case 0xb: return s | (uint8_t)~d;          /* OR_REVERSE */
+   case 0xc: return (uint8_t)~s;              /* COPY_INVERTED */
+   case 0xd: return (uint8_t)~s | d;          /* OR_INVERTED */
+   case 0xe: return (uint8_t)~(s & d);        /* NAND */
+   case 0xf:
+   default:  return 0xff;                     /* SET */
+   }
+}
+
 void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4])
 {
    /* the fixed-function fragment program: the colour, plus the secondary
@@ -107,39 +229,143 @@ void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[
    }
 }
 
+/* The depth test alone, with its write: the common path. */
+static bool depth_test_write(const struct r_state *rs, size_t idx, float z)
+{
+   switch (rs->zs_format) {
+   case R_ZS_Z16: {
+      uint16_t *zb = (uint16_t *)rs->zs + idx;
+      const uint16_t zv = r_depth_to_z16(z);
+      if (!compare(rs->depth_func, zv, *zb))
+         return false;
+      if (rs->depth_write)
+         *zb = zv;
+      return true;
+   }
+   case R_ZS_Z24X8:
+   case R_ZS_Z24S8: {
+      uint32_t *zb = (uint32_t *)rs->zs + idx;
+      const uint32_t zv = r_depth_to_z24(z);
+      if (!compare(rs->depth_func, zv, *zb & 0xffffffu))
+         return false;
+      if (rs->depth_write)
+         *zb = (*zb & 0xff000000u) | zv;
+      return true;
+   }
+   default:
+      return true; /* no depth buffer: the test always passes */
+   }
+}
+
+/* Stencil test, depth test and their writes
+ * [S: llvmpipe/lp_bld_depth.c:lp_build_depth_stencil_test]: the stencil
+ * test compares (ref & valuemask) with (stencil & valuemask); a failing
+ * fragment gets the fail op, a passing one zfail or zpass after the depth
+ * test (zpass when the depth test is off); the new stencil value is merged
+ * under the write mask. */
+static bool stencil_depth_test(const struct r_state *rs, size_t idx, float z)
+{
+   uint8_t s;
+   uint32_t *zs32 = NULL;
+   if (rs->zs_format == R_ZS_S8) {
+      s = ((uint8_t *)rs->zs)[idx];
+   } else {
+      zs32 = (uint32_t *)rs->zs + idx;
+      s = (uint8_t)(*zs32 >> 24);
+   }
+
+   const uint8_t vm = rs->stencil_valuemask;
+   enum r_stencil_op op;
+   bool pass = compare(rs->stencil_func, rs->stencil_ref & vm, s & vm);
+   if (!pass) {
+      op = rs->stencil_fail;
+   } else if (rs->depth_test) {
+      /* the depth buffer is this Z24S8 word */
+      const uint32_t zv = r_depth_to_z24(z);
+      pass = compare(rs->depth_func, zv, *zs32 & 0xffffffu);
+      op = pass ? rs->stencil_zpass : rs->stencil_zfail;
+      if (pass && rs->depth_write)
+         *zs32 = (*zs32 & 0xff000000u) | zv;
+   } else {
+      op = rs->stencil_zpass;
+   }
+
+   const uint8_t wm = rs->stencil_writemask;
+   const uint8_t ns = (uint8_t)((stencil_op(rs, op, s) & wm) | (s & (uint8_t)~wm));
+   if (zs32)
+      *zs32 = (*zs32 & 0xffffffu) | (uint32_t)ns << 24;
+   else
+      ((uint8_t *)rs->zs)[idx] = ns;
+   return pass;
+}
+
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4])
 {
    const size_t idx = (size_t)py * (size_t)rs->width + (size_t)px;
+   uint8_t *dst = rs->color + 4 * idx;
 
-   if (rs->depth_test) {
-      switch (rs->zs_format) {
-      case R_ZS_Z16: {
-         uint16_t *zb = (uint16_t *)rs->zs + idx;
-         const uint16_t zv = r_depth_to_z16(z);
-         if (!depth_compare(rs->depth_func, zv, *zb))
+   if (!rs->full_ops) {
+      if (rs->depth_test && !depth_test_write(rs, idx, z))
+         return;
+      dst[0] = r_float_to_unorm8(color[0]);
+      dst[1] = r_float_to_unorm8(color[1]);
+      dst[2] = r_float_to_unorm8(color[2]);
+      dst[3] = r_float_to_unorm8(color[3]);
+      return;
+   }
+
+   /* alpha test [S: llvmpipe/lp_bld_alpha.c:lp_build_alpha_test]: for
+    * rgba8 buffers in their precision, alpha clamped (lp_build_clamp:
+    * NaN -> 1) and converted like the colour, the reference likewise
+    * (state.c); otherwise on floats, the alpha clamped by the shader's
+    * colour clamp (st_program.c nir_lower_clamp_color_outputs) and the
+    * reference as given, with lp_build_cmp's unordered compares (NaN
+    * passes every function but NEVER) */
+   if (rs->alpha_test) {
+      if (rs->alpha_test_float) {
+         const float a = r_clamp01(color[3]), ref = rs->alpha_ref_float;
+         if (rs->alpha_func == R_NEVER ||
+             (!isnan(ref) && !compare_float(rs->alpha_func, a, ref)))
             return;
-         if (rs->depth_write)
-            *zb = zv;
-         break;
-      }
-      case R_ZS_Z24X8:
-      case R_ZS_Z24S8: {
-         uint32_t *zb = (uint32_t *)rs->zs + idx;
-         const uint32_t zv = r_depth_to_z24(z);
-         if (!depth_compare(rs->depth_func, zv, *zb & 0xffffffu))
+      } else {
+         const uint8_t a = (uint8_t)lrintf(r_clamp01(color[3]) * 255.0f);
+         if (!compare(rs->alpha_func, a, rs->alpha_ref))
             return;
-         if (rs->depth_write)
-            *zb = (*zb & 0xff000000u) | zv;
-         break;
-      }
-      default:
-         break; /* no depth buffer: the test always passes */
       }
    }
 
-   uint8_t *dst = rs->color + 4 * idx;
-   dst[0] = r_float_to_unorm8(color[0]);
-   dst[1] = r_float_to_unorm8(color[1]);
-   dst[2] = r_float_to_unorm8(color[2]);
-   dst[3] = r_float_to_unorm8(color[3]);
+   if (rs->stencil_test) {
+      if (!stencil_depth_test(rs, idx, z))
+         return;
+   } else if (rs->depth_test && !depth_test_write(rs, idx, z)) {
+      return;
+   }
+
+   /* blending or logic op on the colour converted to unorm8
+    * [S: llvmpipe/lp_state_fs.c:generate_unswizzled_blend,
+    * lp_bld_blend_aos.c:lp_build_blend_aos] */
+   uint8_t src[4], out[4], d[4];
+   for (int c = 0; c < 4; c++)
+      src[c] = r_float_to_unorm8(color[c]);
+   d[0] = dst[0];
+   d[1] = dst[1];
+   d[2] = dst[2];
+   /* without alpha bits the destination alpha reads as one
+    * (lp_state_fs.c make_variant_key: force_dst_alpha_one) */
+   d[3] = rs->dst_alpha_one ? 255 : dst[3];
+   if (rs->logic_op) {
+      for (int c = 0; c < 4; c++)
+         out[c] = logic_op(rs->logic_op_mode, src[c], d[c]);
+   } else if (rs->blend) {
+      for (int c = 0; c < 4; c++)
+         out[c] = blend_channel(rs, c, src, d);
+   } else {
+      for (int c = 0; c < 4; c++)
+         out[c] = src[c];
+   }
+   /* colour mask: a select between the result and the buffer */
+   for (int c = 0; c < 4; c++) {
+      if (rs->color_mask & (1u << c))
+         dst[c] = out[c];
+   }
 }

@@ -71,6 +71,26 @@ enum r_fog_mode {
    R_FOG_EXP2,
 };
 
+/* Stencil operations (lp_bld_depth.c lp_build_stencil_op_single). */
+enum r_stencil_op {
+   R_STENCIL_KEEP, R_STENCIL_ZERO, R_STENCIL_REPLACE, R_STENCIL_INCR,
+   R_STENCIL_DECR, R_STENCIL_INCR_WRAP, R_STENCIL_DECR_WRAP, R_STENCIL_INVERT,
+};
+
+/* Blend equations and factors of GL 1.x (gallium's PIPE_BLEND_* and
+ * PIPE_BLENDFACTOR_* subsets). */
+enum r_blend_eq {
+   R_BLEND_ADD, R_BLEND_SUBTRACT, R_BLEND_REVERSE_SUBTRACT, R_BLEND_MIN, R_BLEND_MAX,
+};
+
+enum r_blend_factor {
+   R_BF_ZERO, R_BF_ONE,
+   R_BF_SRC_COLOR, R_BF_INV_SRC_COLOR, R_BF_SRC_ALPHA, R_BF_INV_SRC_ALPHA,
+   R_BF_DST_COLOR, R_BF_INV_DST_COLOR, R_BF_DST_ALPHA, R_BF_INV_DST_ALPHA,
+   R_BF_SRC_ALPHA_SATURATE,
+   R_BF_CONST_COLOR, R_BF_INV_CONST_COLOR, R_BF_CONST_ALPHA, R_BF_INV_CONST_ALPHA,
+};
+
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
  * clamping, w = 1/clip_w) and its varyings. */
 struct r_vertex {
@@ -89,10 +109,38 @@ struct r_state {
     * later intersected with the scissor box) */
    int x0, y0, x1, y1;
 
-   /* per-fragment operations */
-   bool depth_test;
+   /* per-fragment operations, in the order r_fragment_ops applies them
+    * (scissor is the draw region above) */
+   bool alpha_test;
+   enum r_func alpha_func;
+   uint8_t alpha_ref;           /* clamped, RNE(ref * 255) */
+   bool alpha_test_float;       /* buffer not an rgba8 variant (OSMESA_RGB):
+                                 * float compare with the unclamped ref */
+   float alpha_ref_float;
+
+   bool stencil_test;           /* only with a stencil buffer */
+   enum r_func stencil_func;
+   uint8_t stencil_ref;         /* clamped to [0, 255] */
+   uint8_t stencil_valuemask, stencil_writemask;
+   enum r_stencil_op stencil_fail, stencil_zfail, stencil_zpass;
+
+   bool depth_test;             /* only with a depth buffer */
    enum r_func depth_func;
    bool depth_write;
+
+   bool blend;                  /* off when the logic op is on */
+   enum r_blend_eq blend_eq;
+   enum r_blend_factor blend_src, blend_dst;  /* ONE for MIN/MAX */
+   uint8_t blend_color[4];
+   bool logic_op;               /* GL_COLOR_LOGIC_OP */
+   unsigned logic_op_mode;      /* GL op - GL_CLEAR (0..15) */
+   unsigned color_mask;         /* bit 0 red .. bit 3 alpha */
+   bool dst_alpha_one;          /* colour buffer without alpha bits */
+
+   /* an alpha test, stencil test, blending, logic op or colour mask is
+    * active; when false (also in a zeroed r_state) fragments take the
+    * depth test and a plain store only (state.c decides once per draw) */
+   bool full_ops;
 
    /* varyings (R_ATTR_* slots); the vertex stage fills num_attribs */
    int num_attribs;
@@ -125,10 +173,14 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2);
 
-/* Clear whole buffers (the masked/scissored clear arrives with its issue). */
+/* Clear whole buffers. */
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);
 void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
                            bool stencil, uint8_t svalue);
+/* A clear drawn as a quad covering the draw region, every pixel a fragment
+ * at depth z with colour `color` through r_fragment_ops (the state tracker's
+ * clear_with_quad). */
+void r_clear_quad(const struct r_state *rs, float z, const float color[4]);
 
 /* gallivm's lp_build_clamp(x, 0, 1) = max(min(x, 1), 0) on x86 minps/maxps,
  * which return their second operand when one is NaN, so NaN becomes 1.

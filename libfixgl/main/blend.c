@@ -1,0 +1,160 @@
+/*
+ * The fragment parts of GL_COLOR_BUFFER_BIT: glAlphaFunc, glBlendFunc,
+ * glBlendEquation, glBlendColor, glLogicOp, glColorMask.  The enables
+ * (GL_ALPHA_TEST, GL_BLEND, GL_COLOR_LOGIC_OP) are in main/enable.c; the
+ * clear colour and dither in main/clear.c.  Validation follows Mesa's
+ * main/blend.c.
+ */
+#include "main/groups.h"
+
+void fgl_init_blend(struct fgl_context *ctx)
+{
+   /* [S: main/blend.c:_mesa_init_color] */
+   struct fgl_colorbuffer_attrib *c = &ctx->Color;
+   c->AlphaEnabled = false;
+   c->AlphaFunc = GL_ALWAYS;
+   c->AlphaRef = 0.0f;
+   c->BlendEnabled = false;
+   c->BlendSrc = GL_ONE;
+   c->BlendDst = GL_ZERO;
+   c->BlendEquation = GL_FUNC_ADD;
+   for (int i = 0; i < 4; i++)
+      c->BlendColor[i] = 0.0f;
+   c->LogicOpEnabled = false;
+   c->LogicOp = GL_COPY;
+   c->ColorMask = 0xfu;
+}
+
+void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Color.AlphaFunc == func && ctx->Color.AlphaRef == ref)
+      return; /* no change */
+   if (func < GL_NEVER || func > GL_ALWAYS) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.AlphaFunc = func;
+   ctx->Color.AlphaRef = ref;
+}
+
+/* [S: main/blend.c:legal_src_factor, legal_dst_factor]: desktop GL with
+ * ARB_blend_func_extended (which llvmpipe has) accepts every factor as
+ * source and destination, including the dual-source SRC1 factors. */
+static bool legal_factor(GLenum factor)
+{
+   switch (factor) {
+   case GL_ZERO:
+   case GL_ONE:
+   case GL_SRC_COLOR:
+   case GL_ONE_MINUS_SRC_COLOR:
+   case GL_DST_COLOR:
+   case GL_ONE_MINUS_DST_COLOR:
+   case GL_SRC_ALPHA:
+   case GL_ONE_MINUS_SRC_ALPHA:
+   case GL_DST_ALPHA:
+   case GL_ONE_MINUS_DST_ALPHA:
+   case GL_CONSTANT_COLOR:
+   case GL_ONE_MINUS_CONSTANT_COLOR:
+   case GL_CONSTANT_ALPHA:
+   case GL_ONE_MINUS_CONSTANT_ALPHA:
+      return true;
+   case GL_SRC_ALPHA_SATURATE:
+   case GL_SRC1_COLOR:
+   case GL_SRC1_ALPHA:
+   case GL_ONE_MINUS_SRC1_COLOR:
+   case GL_ONE_MINUS_SRC1_ALPHA:
+      return true;
+   default:
+      return false;
+   }
+}
+
+void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Color.BlendSrc == sfactor && ctx->Color.BlendDst == dfactor)
+      return; /* skip_blend_state_update */
+   if (!legal_factor(sfactor) || !legal_factor(dfactor)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.BlendSrc = sfactor;
+   ctx->Color.BlendDst = dfactor;
+}
+
+void GLAPIENTRY glBlendEquation(GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Color.BlendEquation == mode)
+      return;
+   switch (mode) {
+   case GL_FUNC_ADD:
+   case GL_FUNC_SUBTRACT:
+   case GL_FUNC_REVERSE_SUBTRACT:
+   case GL_MIN:
+   case GL_MAX:
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.BlendEquation = mode;
+}
+
+void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const float c[4] = { red, green, blue, alpha };
+   float *bc = ctx->Color.BlendColor;
+   if (bc[0] == c[0] && bc[1] == c[1] && bc[2] == c[2] && bc[3] == c[3])
+      return; /* TEST_EQ_4V */
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   for (int i = 0; i < 4; i++)
+      bc[i] = c[i];
+}
+
+void GLAPIENTRY glLogicOp(GLenum opcode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Color.LogicOp == opcode)
+      return;
+   if (opcode < GL_CLEAR || opcode > GL_SET) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.LogicOp = opcode;
+}
+
+void GLAPIENTRY glColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const unsigned mask = (red ? 1u : 0u) | (green ? 2u : 0u) | (blue ? 4u : 0u) |
+                         (alpha ? 8u : 0u);
+   if (ctx->Color.ColorMask == mask)
+      return;
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.ColorMask = mask;
+}
