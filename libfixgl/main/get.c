@@ -5,13 +5,15 @@
  * Every value is described once (fill_value) with its type; the four
  * getters convert like Mesa's get.c:
  *   float -> boolean   f != 0 (NaN is true)
- *   float -> integer   IROUND, or FLOAT_TO_INT for normalized values
+ *   float -> integer   lroundf, or FLOAT_TO_INT for normalized values
  *                      (colours, depth values, and matrices, as Mesa does):
  *                      (GLint)(2147483647.0 * f)
  * Out-of-range float->int conversions give INT_MIN, as on x86 where the
  * oracle runs.
  */
 #include <limits.h>
+#include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "main/conv.h"
@@ -20,7 +22,7 @@
 enum value_type {
    V_BOOL,      /* GLboolean state */
    V_INT,       /* integers and enums */
-   V_FLOAT,     /* floats converted with IROUND */
+   V_FLOAT,     /* floats converted with lroundf */
    V_FLOATN,    /* normalized floats converted with FLOAT_TO_INT */
 };
 
@@ -30,9 +32,16 @@ struct value {
    double v[16];
 };
 
+/* _mesa_GetIntegerv, TYPE_FLOAT: params[i] = lroundf(f), a long (64 bits)
+ * stored into a GLint: rounded half away from zero, then the low 32 bits;
+ * out of the long range or NaN, glibc's x86-64 lroundf gives LONG_MIN,
+ * whose low 32 bits are 0 (1e30 reads back as 0). */
 static GLint iround(float f)
 {
-   return fgl_double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
+   int64_t l = INT64_MIN;
+   if (f >= -9223372036854775808.0f && f < 9223372036854775808.0f)
+      l = (int64_t)lroundf(f);
+   return (GLint)(uint32_t)(uint64_t)l;
 }
 
 /* Mesa's CLAMP: NaN passes through */
@@ -75,6 +84,11 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       fgl_flush_current(ctx);
       set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_NORMAL], 3);   /* TYPE_FLOATN_3 */
       return true;
+   case GL_EDGE_FLAG:
+      /* get.c: LOC_CUSTOM, Current.Attrib[VERT_ATTRIB_EDGEFLAG][0] == 1.0F */
+      fgl_flush_current(ctx);
+      set_ints(val, V_BOOL, 1, ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 1.0f, 0, 0, 0);
+      return true;
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
@@ -93,6 +107,15 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_CULL_FACE_MODE:
       set_ints(val, V_INT, 1, (int)ctx->Polygon.CullFaceMode, 0, 0, 0);
+      return true;
+   case GL_POLYGON_MODE:
+      set_ints(val, V_INT, 2, (int)ctx->Polygon.FrontMode, (int)ctx->Polygon.BackMode, 0, 0);
+      return true;
+   case GL_POLYGON_OFFSET_FACTOR:
+      set_floats(val, V_FLOAT, &ctx->Polygon.OffsetFactor, 1);
+      return true;
+   case GL_POLYGON_OFFSET_UNITS:
+      set_floats(val, V_FLOAT, &ctx->Polygon.OffsetUnits, 1);
       return true;
    case GL_DEPTH_FUNC:
       set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);
@@ -146,6 +169,9 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_TEXTURE_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->TextureStack[0].Depth + 1, 0, 0, 0);
+      return true;
+   case GL_MAX_CLIP_PLANES:
+      set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
       return true;
    case GL_MAX_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, FGL_MAX_MODELVIEW_STACK_DEPTH, 0, 0, 0);

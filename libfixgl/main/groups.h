@@ -31,6 +31,10 @@ void fgl_update_lighting(struct fgl_context *ctx);
 /* main/polygon.c (GL_POLYGON_BIT) */
 void fgl_init_polygon(struct fgl_context *ctx);
 
+/* main/clip.c (user clip planes, GL_TRANSFORM_BIT): the clip-space planes
+ * of the enabled GL_CLIP_PLANEi from the eye planes and the projection */
+void fgl_update_clip_planes(struct fgl_context *ctx);
+
 /* main/viewport.c (GL_VIEWPORT_BIT) */
 void fgl_init_viewport(struct fgl_context *ctx);
 void fgl_set_viewport(struct fgl_context *ctx, int x, int y, int width, int height);
