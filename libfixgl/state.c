@@ -42,6 +42,9 @@ void fgl_update_state(struct fgl_context *ctx)
       ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
    }
 
+   if (dirty & (FGL_NEW_CLIP | FGL_NEW_PROJECTION))
+      fgl_update_clip_planes(ctx);
+
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
@@ -63,9 +66,10 @@ void fgl_update_state(struct fgl_context *ctx)
       /* colours: the lit front (and back, and secondary) colours, or the
        * vertex colour */
       const bool lit = ctx->Light.Enabled;
-      rs->twoside = lit && ctx->Light.Model.TwoSide;
+      const bool twoside = lit && ctx->Light.Model.TwoSide;
+      rs->twoside = twoside;
       rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
-      rs->num_attribs = rs->twoside ? 4 : rs->color_sum ? 2 : 1;
+      rs->num_attribs = twoside ? 4 : rs->color_sum ? 2 : 1;
       rs->fs_inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u);
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
@@ -74,6 +78,50 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->cull_front = cull == GL_FRONT || cull == GL_FRONT_AND_BACK;
       rs->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
       /* flat_mask is set per batch by t_render_batch */
+
+      /* llvmpipe_create_rasterizer_state: with unfilled polygons or the
+       * polygon stipple (or smooth or stippled lines and points: not yet
+       * modelled) the draw module does two-sided colours and polygon
+       * offset, else llvmpipe's setup does them; facing and culling are
+       * decided by both (draw's cull stage, then the setup's area sign). */
+      const struct fgl_polygon_attrib *pg = &ctx->Polygon;
+      const bool unfilled = pg->FrontMode != GL_FILL || pg->BackMode != GL_FILL;
+      const bool need_pipeline = unfilled || pg->StippleFlag;
+      /* st_atom_rasterizer.c: the offset values reach the driver when any
+       * of the three enables is on; llvmpipe's setup then offsets every
+       * filled triangle, whichever enable it was
+       * (lp_state_setup.c:lp_make_setup_variant_key) */
+      const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
+      /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
+       * depth buffer; units scaled in double, then stored as float */
+      const double mrd = fb && fb->DepthBits == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
+      const float units = (float)((double)pg->OffsetUnits * mrd * 2.0);
+      const bool lp_offset = any_offset && !need_pipeline;
+      rs->offset_units = lp_offset ? units : 0.0f;
+      rs->offset_scale = lp_offset ? pg->OffsetFactor : 0.0f;
+      rs->twoside = twoside && !need_pipeline;
+
+      /* st_atom_stipple.c:invert_stipple for the y-down window buffer */
+      rs->stipple = pg->StippleFlag;
+      const unsigned h = fb ? (unsigned)fb->Height : 0u;
+      for (unsigned i = 0; i < 32; i++)
+         rs->stipple_rows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
+
+      struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
+      dp->always = need_pipeline;
+      dp->twoside = twoside && need_pipeline;
+      /* draw_pipe_offset.c:offset_first_tri: filled triangles are offset
+       * only with GL_POLYGON_OFFSET_FILL */
+      dp->offset = need_pipeline && pg->OffsetFill;
+      dp->offset_units = units;
+      dp->offset_scale = pg->OffsetFactor;
+      dp->front_ccw = rs->ccw_is_front;
+      dp->cull_front = rs->cull_front;
+      dp->cull_back = rs->cull_back;
+      /* draw_pipe_validate.c: the cull stage runs when a stage needs the
+       * determinant or culling is on */
+      dp->cull = dp->cull_front || dp->cull_back || unfilled ||
+                 (need_pipeline && (any_offset || twoside));
    }
 
    ctx->NewState = 0;

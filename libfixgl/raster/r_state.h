@@ -89,6 +89,18 @@ struct r_state {
    bool twoside;                /* back-facing triangles use the BCOLOR slots */
    bool ccw_is_front;           /* a positive snapped area is front-facing */
    bool cull_front, cull_back;  /* faces not drawn */
+
+   /* polygon offset of llvmpipe's triangle setup (lp_do_offset_tri): added
+    * to every fragment's depth; both 0 when the draw pipeline applies the
+    * offset instead, or no GL_POLYGON_OFFSET_* is enabled */
+   float offset_units;          /* GL units * mrd * 2 */
+   float offset_scale;          /* GL factor */
+
+   /* polygon stipple (draw's pstipple stage: a fragment kill before any
+    * per-fragment operation); row i applies to y-down pixel rows i mod 32,
+    * bit 31 - (x mod 32) to columns x mod 32 */
+   bool stipple;
+   uint32_t stipple_rows[32];
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.
