@@ -138,6 +138,12 @@ struct fgl_polygon_attrib {
    bool StippleFlag;        /* GL_POLYGON_STIPPLE */
 };
 
+/* glPixelStore state of one direction (Mesa's gl_pixelstore_attrib) */
+struct fgl_pixelstore {
+   int Alignment, RowLength, SkipPixels, SkipRows, ImageHeight, SkipImages;
+   bool SwapBytes, LsbFirst;
+};
+
 #define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
 /* GL_TRANSFORM_BIT */
@@ -203,6 +209,7 @@ struct fgl_context {
    struct fgl_viewport_attrib Viewport;
    uint32_t PolygonStipple[32];     /* GL_POLYGON_STIPPLE_BIT: row 0 = bottom,
                                      * bit 31 = leftmost column */
+   struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;

@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <string.h>
 
 /* ---- helpers ------------------------------------------------------------ */
@@ -496,6 +497,143 @@ static void stipple_twoside_cull(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- pixel storage modes ------------------------------------------------- */
+
+static const GLenum store_pnames[16] = {
+    GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST, GL_PACK_ROW_LENGTH, GL_PACK_IMAGE_HEIGHT,
+    GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_IMAGES, GL_PACK_ALIGNMENT,
+    GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT,
+    GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT,
+};
+
+static void pixelstore_state(fc_h *h)
+{
+    for (int i = 0; i < 16; i++)
+        fc_get_integer(h, "default", store_pnames[i], 1);
+    for (int i = 0; i < 16; i++)
+        glPixelStorei(store_pnames[i], i == 7 || i == 15 ? 8 : 3 + i);
+    for (int i = 0; i < 16; i++) {
+        fc_get_integer(h, "set", store_pnames[i], 1);
+        fc_get_boolean(h, "set (bool)", store_pnames[i], 1);
+        fc_get_float(h, "set (float)", store_pnames[i], 1);
+    }
+    fc_error(h, "valid calls");
+    static const GLint bad_align[4] = { 0, 3, 16, -4 };
+    for (int i = 0; i < 4; i++) {
+        glPixelStorei(GL_PACK_ALIGNMENT, bad_align[i]); fc_error(h, "bad pack alignment");
+        glPixelStorei(GL_UNPACK_ALIGNMENT, bad_align[i]); fc_error(h, "bad unpack alignment");
+    }
+    for (int i = 0; i < 16; i++) {
+        glPixelStorei(store_pnames[i], -1);
+        fc_error(h, "negative value");
+        fc_get_integer(h, "after -1", store_pnames[i], 1);
+    }
+    glPixelStorei(GL_PIXEL_MAP_I_TO_I, 1); fc_error(h, "bad pname");
+    glPixelStorei(0, 0); fc_error(h, "pname 0");
+    static const float fv[8] = { 2.5f, 2.49999f, 0.5f, -0.4f, 1.0f, 1e20f, 3e9f, 7.5f };
+    for (int i = 0; i < 8; i++) {
+        glPixelStoref(GL_UNPACK_ROW_LENGTH, fv[i]);
+        fc_error(h, "glPixelStoref row length");
+        fc_get_integer(h, "row length via glPixelStoref", GL_UNPACK_ROW_LENGTH, 1);
+        glPixelStoref(GL_PACK_ALIGNMENT, fv[i]);
+        fc_error(h, "glPixelStoref alignment");
+        fc_get_integer(h, "alignment via glPixelStoref", GL_PACK_ALIGNMENT, 1);
+        glPixelStoref(GL_PACK_LSB_FIRST, fv[i] - 1.0f);
+        fc_get_integer(h, "lsb first via glPixelStoref", GL_PACK_LSB_FIRST, 1);
+    }
+    glBegin(GL_TRIANGLES);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glEnd();
+    fc_error(h, "glPixelStorei inside glBegin/glEnd");
+    fc_get_integer(h, "unchanged", GL_UNPACK_ALIGNMENT, 1);
+}
+
+/* Stipple patterns read with unpack modes: LSB first, alignment 8, row
+ * length, skipped rows and pixels (bit-shifting path, both bit orders). */
+static void stipple_unpack_modes(fc_h *h)
+{
+    GLubyte data[1024], out[128];
+    for (int i = 0; i < 1024; i++)
+        data[i] = (GLubyte)((i * 2654435761u) >> 13);
+    fc_pixel_ortho(h);
+    glEnable(GL_POLYGON_STIPPLE);
+    for (int k = 0; k < 6; k++) {
+        glPixelStorei(GL_UNPACK_LSB_FIRST, k & 1);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, k == 2 ? 8 : k == 3 ? 1 : 4);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, k == 3 ? 45 : k == 5 ? 77 : 0);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, k >= 4 ? 3 : 0);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, k == 4 ? 5 : k == 5 ? 19 : k == 3 ? 8 : 0);
+        glPixelStorei(GL_UNPACK_SWAP_BYTES, k == 2);   /* no effect on bitmaps */
+        glPolygonStipple(data);
+        memset(out, 0x5a, sizeof out);
+        glGetPolygonStipple(out);
+        fc_blob(h, "stipple as stored", out, sizeof out);
+        fcu_clear(0, 0, 0, 0, 1);
+        draw_prim(GL_QUADS);
+        fc_capture(h);
+    }
+}
+
+/* glGetPolygonStipple with pack modes, into a larger prefilled buffer (the
+ * skip-pixels path clears the bits before the first pixel). */
+static void stipple_pack_modes(fc_h *h)
+{
+    GLubyte pat[128], out[1024];
+    make_pattern(pat, 3);
+    glPolygonStipple(pat);
+    for (int k = 0; k < 6; k++) {
+        glPixelStorei(GL_PACK_LSB_FIRST, k & 1);
+        glPixelStorei(GL_PACK_ALIGNMENT, k == 2 ? 8 : k == 3 ? 2 : 4);
+        glPixelStorei(GL_PACK_ROW_LENGTH, k == 3 ? 45 : k == 5 ? 70 : 0);
+        glPixelStorei(GL_PACK_SKIP_ROWS, k >= 4 ? 2 : 0);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, k == 4 ? 3 : k == 5 ? 13 : k == 3 ? 16 : 0);
+        memset(out, 0xa5, sizeof out);
+        glGetPolygonStipple(out);
+        fc_blob(h, "packed stipple", out, sizeof out);
+    }
+    fc_error(h, "final");
+}
+
+/* glReadPixels with pack modes: alignment, row length, skips, byte swaps. */
+static void pixelstore_readpixels(fc_h *h)
+{
+    static uint8_t buf[16384];
+    fc_pixel_ortho(h);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    fcu_clear(0.1f, 0.2f, 0.3f, 0.4f, 0.25);
+    draw_prim(GL_TRIANGLE_FAN);
+    static const struct { GLint align, row, skip_px, skip_rows, swap; GLenum format, type; } m[] = {
+        { 1, 0, 0, 0, 0, GL_RGB, GL_UNSIGNED_BYTE },
+        { 2, 0, 0, 0, 0, GL_RGB, GL_UNSIGNED_BYTE },
+        { 8, 0, 0, 0, 0, GL_RGB, GL_UNSIGNED_BYTE },
+        { 4, 13, 2, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE },
+        { 8, 11, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE },
+        { 1, 0, 0, 0, 1, GL_RGB, GL_FLOAT },
+        { 2, 9, 3, 0, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT },
+        { 1, 7, 0, 2, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT },
+        { 8, 0, 5, 0, 1, GL_DEPTH_COMPONENT, GL_FLOAT },
+        { 2, 0, 0, 0, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT },
+    };
+    for (size_t k = 0; k < sizeof m / sizeof m[0]; k++) {
+        glPixelStorei(GL_PACK_ALIGNMENT, m[k].align);
+        glPixelStorei(GL_PACK_ROW_LENGTH, m[k].row);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, m[k].skip_px);
+        glPixelStorei(GL_PACK_SKIP_ROWS, m[k].skip_rows);
+        glPixelStorei(GL_PACK_SWAP_BYTES, m[k].swap);
+        char label[64];
+        memset(buf, 0x77, sizeof buf);
+        glReadPixels(3, 5, 7, 6, m[k].format, m[k].type, buf);
+        snprintf(label, sizeof label, "glReadPixels mode %d", (int)k);
+        fc_blob(h, label, buf, 2048);
+        memset(buf, 0x77, sizeof buf);
+        glReadPixels(-2, 28, 5, 7, m[k].format, m[k].type, buf);   /* partly outside */
+        snprintf(label, sizeof label, "glReadPixels partly outside, mode %d", (int)k);
+        fc_blob(h, label, buf, 2048);
+    }
+    fc_error(h, "final");
+}
+
 /* ---- user clip planes ----------------------------------------------------- */
 
 static void clip_scene_strip(void)
@@ -837,6 +975,11 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/stipple_random_odd_size", 37, 29, 4, "raster polygon stipple", stipple_random),
     FC_CASE_RGBA("polygon/stipple_odd_window", 45, 43, 2, "raster polygon stipple", stipple_odd_window),
     FC_CASE_RGBA("polygon/stipple_get", 8, 8, 0, "raster polygon stipple", stipple_get),
+    FC_CASE_RGBA("polygon/pixelstore_state", 8, 8, 0, "raster polygon pixelstore", pixelstore_state),
+    FC_CASE_RGBA("polygon/stipple_unpack_modes", 32, 32, 6, "raster polygon stipple pixelstore", stipple_unpack_modes),
+    FC_CASE_RGBA("polygon/stipple_pack_modes", 8, 8, 0, "raster polygon stipple pixelstore", stipple_pack_modes),
+    FC_CASE_RGBA("polygon/pixelstore_readpixels", 32, 32, 0, "raster polygon pixelstore", pixelstore_readpixels),
+    FC_CASE("polygon/pixelstore_readpixels_z16", 32, 32, OSMESA_RGBA, 16, 0, 0, "raster polygon pixelstore", pixelstore_readpixels),
     FC_CASE_RGBA("polygon/stipple_offset", 32, 32, 3, "raster polygon stipple offset", stipple_offset),
     FC_CASE_RGBA("polygon/stipple_twoside_cull", 32, 32, 2, "raster polygon stipple lighting", stipple_twoside_cull),
     FC_CASE_RGBA("polygon/clipplane_strip", 32, 32, 3, "raster polygon clip", clipplane_strip),

@@ -200,6 +200,23 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       f[1] = FGL_VIEWPORT_BOUNDS_MAX;
       set_floats(val, V_FLOAT, f, 2);
       return true;
+   /* GL_CLIENT_PIXEL_STORE_BIT */
+   case GL_PACK_SWAP_BYTES: set_ints(val, V_BOOL, 1, ctx->Pack.SwapBytes, 0, 0, 0); return true;
+   case GL_PACK_LSB_FIRST: set_ints(val, V_BOOL, 1, ctx->Pack.LsbFirst, 0, 0, 0); return true;
+   case GL_PACK_ROW_LENGTH: set_ints(val, V_INT, 1, ctx->Pack.RowLength, 0, 0, 0); return true;
+   case GL_PACK_IMAGE_HEIGHT: set_ints(val, V_INT, 1, ctx->Pack.ImageHeight, 0, 0, 0); return true;
+   case GL_PACK_SKIP_PIXELS: set_ints(val, V_INT, 1, ctx->Pack.SkipPixels, 0, 0, 0); return true;
+   case GL_PACK_SKIP_ROWS: set_ints(val, V_INT, 1, ctx->Pack.SkipRows, 0, 0, 0); return true;
+   case GL_PACK_SKIP_IMAGES: set_ints(val, V_INT, 1, ctx->Pack.SkipImages, 0, 0, 0); return true;
+   case GL_PACK_ALIGNMENT: set_ints(val, V_INT, 1, ctx->Pack.Alignment, 0, 0, 0); return true;
+   case GL_UNPACK_SWAP_BYTES: set_ints(val, V_BOOL, 1, ctx->Unpack.SwapBytes, 0, 0, 0); return true;
+   case GL_UNPACK_LSB_FIRST: set_ints(val, V_BOOL, 1, ctx->Unpack.LsbFirst, 0, 0, 0); return true;
+   case GL_UNPACK_ROW_LENGTH: set_ints(val, V_INT, 1, ctx->Unpack.RowLength, 0, 0, 0); return true;
+   case GL_UNPACK_IMAGE_HEIGHT: set_ints(val, V_INT, 1, ctx->Unpack.ImageHeight, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_PIXELS: set_ints(val, V_INT, 1, ctx->Unpack.SkipPixels, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_ROWS: set_ints(val, V_INT, 1, ctx->Unpack.SkipRows, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_IMAGES: set_ints(val, V_INT, 1, ctx->Unpack.SkipImages, 0, 0, 0); return true;
+   case GL_UNPACK_ALIGNMENT: set_ints(val, V_INT, 1, ctx->Unpack.Alignment, 0, 0, 0); return true;
    /* framebuffer and implementation */
    case GL_RED_BITS:
    case GL_GREEN_BITS:

@@ -118,11 +118,11 @@ void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units)
 }
 
 /* [S: main/polygon.c:_mesa_PolygonStipple, pack.c:_mesa_unpack_polygon_stipple]
- * The pattern is a 32x32 GL_BITMAP read with the unpack state (the
- * defaults: rows of 4 bytes, bottom row first, most significant bit =
- * leftmost pixel); each row becomes a word with byte 0 in bits 24..31.
- * The flush comes first, also for a NULL pattern, which is then ignored
- * without an error. */
+ * The pattern is a 32x32 GL_BITMAP read with the unpack state (by default
+ * rows of 4 bytes, bottom row first, most significant bit = leftmost
+ * pixel); each row becomes a word with byte 0 in bits 24..31.  The flush
+ * comes first, also for a NULL pattern, which is then ignored without an
+ * error. */
 void GLAPIENTRY glPolygonStipple(const GLubyte *mask)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -132,15 +132,11 @@ void GLAPIENTRY glPolygonStipple(const GLubyte *mask)
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
    if (!mask)
       return;
-   for (int i = 0; i < 32; i++) {
-      const GLubyte *p = mask + 4 * i;
-      ctx->PolygonStipple[i] = (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 |
-                               (uint32_t)p[2] << 8 | (uint32_t)p[3];
-   }
+   fgl_unpack_stipple(&ctx->Unpack, mask, ctx->PolygonStipple);
 }
 
 /* [S: main/polygon.c:_mesa_GetnPolygonStippleARB, pack.c:_mesa_pack_polygon_stipple]
- * with the default pack state; a NULL destination is ignored. */
+ * with the pack state; a NULL destination is ignored. */
 void GLAPIENTRY glGetPolygonStipple(GLubyte *mask)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -149,11 +145,5 @@ void GLAPIENTRY glGetPolygonStipple(GLubyte *mask)
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (!mask)
       return;
-   for (int i = 0; i < 32; i++) {
-      const uint32_t w = ctx->PolygonStipple[i];
-      mask[4 * i + 0] = (GLubyte)(w >> 24);
-      mask[4 * i + 1] = (GLubyte)(w >> 16);
-      mask[4 * i + 2] = (GLubyte)(w >> 8);
-      mask[4 * i + 3] = (GLubyte)w;
-   }
+   fgl_pack_stipple(&ctx->Pack, ctx->PolygonStipple, mask);
 }
