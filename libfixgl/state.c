@@ -79,18 +79,20 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
       /* flat_mask is set per batch by t_render_batch */
 
-      /* llvmpipe_create_rasterizer_state: with unfilled polygons or the
-       * polygon stipple (or smooth or stippled lines and points: not yet
-       * modelled) the draw module does two-sided colours and polygon
-       * offset, else llvmpipe's setup does them; facing and culling are
-       * decided by both (draw's cull stage, then the setup's area sign). */
+      /* llvmpipe_create_rasterizer_state: with unfilled polygons, the
+       * polygon stipple, smooth points or smooth lines (or stippled lines:
+       * not yet modelled) the draw module does two-sided colours and
+       * polygon offset, else llvmpipe's setup does them; facing and
+       * culling are decided by both (draw's cull stage, then the setup's
+       * area sign).  Smooth points and lines are read through their
+       * capability flags. */
       const struct fgl_polygon_attrib *pg = &ctx->Polygon;
       const bool unfilled = pg->FrontMode != GL_FILL || pg->BackMode != GL_FILL;
-      const bool need_pipeline = unfilled || pg->StippleFlag;
-      /* st_atom_rasterizer.c: the offset values reach the driver when any
-       * of the three enables is on; llvmpipe's setup then offsets every
-       * filled triangle, whichever enable it was
-       * (lp_state_setup.c:lp_make_setup_variant_key) */
+      double point_smooth = 0.0, line_smooth = 0.0;
+      fgl_is_cap(ctx, GL_POINT_SMOOTH, &point_smooth);
+      fgl_is_cap(ctx, GL_LINE_SMOOTH, &line_smooth);
+      const bool need_pipeline = unfilled || pg->StippleFlag || point_smooth != 0.0 ||
+                                 line_smooth != 0.0;
       const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
       /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
        * depth buffer; units scaled in double, then stored as float */
@@ -108,7 +110,9 @@ void fgl_update_state(struct fgl_context *ctx)
          rs->stipple_rows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
 
       struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
-      dp->always = need_pipeline;
+      /* draw_pipe_validate.c:draw_need_pipeline for triangles: stipple,
+       * unfilled, or an offset enable or two-sided lighting left to draw */
+      dp->always = unfilled || pg->StippleFlag || (need_pipeline && (any_offset || twoside));
       dp->twoside = twoside && need_pipeline;
       /* draw_pipe_offset.c:offset_first_tri: filled triangles are offset
        * only with GL_POLYGON_OFFSET_FILL */

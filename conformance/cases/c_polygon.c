@@ -634,6 +634,45 @@ static void pixelstore_readpixels(fc_h *h)
     fc_error(h, "final");
 }
 
+/* GL_LINE_SMOOTH / GL_POINT_SMOOTH hand offset and two-sided colours to
+ * draw, which then takes every triangle through its pipeline (quad split,
+ * per-vertex offset, determinant facing); alone they change nothing for
+ * triangles. */
+static void smooth_caps_route_triangles(fc_h *h)
+{
+    static const GLenum caps[2] = { GL_LINE_SMOOTH, GL_POINT_SMOOTH };
+    for (int i = 0; i < 2; i++) {
+        glEnable(caps[i]);
+        offset_scene(1.5f, 20.0f, true);
+        glBegin(GL_QUADS);
+        for (int k = 0; k < 8; k++) {
+            fcu_color(k);
+            glVertex3f(fcu_quads_v[k][0], fcu_quads_v[k][1], 0.1f * (float)(k & 3) - 0.2f);
+        }
+        glEnd();
+        fc_capture(h);
+        offset_scene(1.5f, 20.0f, false);       /* no offset: direct path */
+        draw_prim(GL_QUADS);
+        fc_capture(h);
+        glDisable(caps[i]);
+    }
+    glEnable(GL_LINE_SMOOTH);
+    lt_ortho(h, 1.0f);
+    glEnable(GL_LIGHTING);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    lt_lamp(GL_LIGHT0, (const float[3]){ 0.1f, 0.1f, 0.1f }, (const float[3]){ 0.9f, 0.8f, 0.2f },
+            (const float[3]){ 0, 0, 0 }, 0.3f, 0.4f, 1.0f, 0.0f);
+    lt_mat(GL_FRONT, GL_DIFFUSE, 1, 0.2f, 0.2f, 1);
+    lt_mat(GL_BACK, GL_DIFFUSE, 0.2f, 0.3f, 1, 1);
+    glNormal3f(0, 0, 1);
+    lt_clear();
+    glBegin(GL_QUADS);
+    glVertex2f(-0.9f, -0.9f); glVertex2f(-0.1f, -0.9f); glVertex2f(-0.1f, 0.9f); glVertex2f(-0.9f, 0.9f);
+    glVertex2f(0.1f, -0.9f); glVertex2f(0.1f, 0.9f); glVertex2f(0.9f, 0.9f); glVertex2f(0.9f, -0.9f);
+    glEnd();
+    fc_capture(h);
+}
+
 /* ---- user clip planes ----------------------------------------------------- */
 
 static void clip_scene_strip(void)
@@ -980,6 +1019,7 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/stipple_pack_modes", 8, 8, 0, "raster polygon stipple pixelstore", stipple_pack_modes),
     FC_CASE_RGBA("polygon/pixelstore_readpixels", 32, 32, 0, "raster polygon pixelstore", pixelstore_readpixels),
     FC_CASE("polygon/pixelstore_readpixels_z16", 32, 32, OSMESA_RGBA, 16, 0, 0, "raster polygon pixelstore", pixelstore_readpixels),
+    FC_CASE_RGBA("polygon/smooth_caps_route_triangles", 32, 32, 5, "raster polygon offset", smooth_caps_route_triangles),
     FC_CASE_RGBA("polygon/stipple_offset", 32, 32, 3, "raster polygon stipple offset", stipple_offset),
     FC_CASE_RGBA("polygon/stipple_twoside_cull", 32, 32, 2, "raster polygon stipple lighting", stipple_twoside_cull),
     FC_CASE_RGBA("polygon/clipplane_strip", 32, 32, 3, "raster polygon clip", clipplane_strip),

@@ -29,7 +29,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
    for (int i = 0; i < FGL_PENDING_CAPS; i++) {
       if (pending_caps[i] == cap) {
-         *dirty = 0;
+         /* smooth points and lines already change how triangles are drawn
+          * (state.c: draw's pipeline) */
+         *dirty = cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH ? FGL_NEW_POLYGON : 0;
          return &ctx->PendingCaps[i];
       }
    }
