@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -995,6 +996,87 @@ static void cull_clipped(fc_h *h)
     }
 }
 
+/* ---- mixed -------------------------------------------------------------- */
+
+static uint32_t lcg(uint32_t *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return *s >> 8;
+}
+
+static float frand(uint32_t *s, float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(lcg(s) & 0xffff) / 65535.0f;
+}
+
+/* Random frames mixing everything: offsets (llvmpipe's or draw's), stipple,
+ * user planes, culling, front face, shade model, perspective and ortho,
+ * every filled primitive type, vertices outside the view volume. */
+static void polygon_mix(fc_h *h)
+{
+    static const GLenum modes[6] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                     GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    uint32_t seed = 12345u;
+    glViewport(0, 0, 64, 64);
+    glEnable(GL_DEPTH_TEST);
+    for (int frame = 0; frame < 6; frame++) {
+        if (frame & 1)
+            fcu_frustum(-1, 1, -1, 1, 1, 6);
+        else
+            fcu_ortho(-1, 1, -1, 1, -1, 1);
+        if (frame & 1)
+            glTranslatef(0, 0, -3);
+        glRotatef(frand(&seed, -40, 40), frand(&seed, -1, 1), frand(&seed, -1, 1), 1);
+        fcu_clear(0, 0, 0, 0, 1);
+        glShadeModel(lcg(&seed) & 1 ? GL_FLAT : GL_SMOOTH);
+        glFrontFace(lcg(&seed) & 1 ? GL_CW : GL_CCW);
+        if (lcg(&seed) % 3 == 0) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(lcg(&seed) & 1 ? GL_FRONT : GL_BACK);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
+        GLubyte pat[128];
+        for (int i = 0; i < 128; i++)
+            pat[i] = (GLubyte)lcg(&seed);
+        glPolygonStipple(pat);
+        if (frame >= 2 && (lcg(&seed) & 1))
+            glEnable(GL_POLYGON_STIPPLE);
+        else
+            glDisable(GL_POLYGON_STIPPLE);
+        const int nplanes = (int)(lcg(&seed) % 4);
+        for (int i = 0; i < 8; i++) {
+            if (i < nplanes) {
+                const GLdouble eq[4] = { frand(&seed, -1, 1), frand(&seed, -1, 1),
+                                         frand(&seed, -1, 1), frand(&seed, 0, 0.8f) };
+                glClipPlane(GL_CLIP_PLANE0 + i, eq);
+                glEnable(GL_CLIP_PLANE0 + i);
+            } else {
+                glDisable(GL_CLIP_PLANE0 + i);
+            }
+        }
+        for (int p = 0; p < 24; p++) {
+            if (lcg(&seed) & 1) {
+                glEnable(GL_POLYGON_OFFSET_FILL);
+                glPolygonOffset(frand(&seed, -4, 4), frand(&seed, -50, 50));
+            } else {
+                glDisable(GL_POLYGON_OFFSET_FILL);
+            }
+            const GLenum mode = modes[lcg(&seed) % 6];
+            const int n = 3 + (int)(lcg(&seed) % 6);
+            const float cx = frand(&seed, -0.8f, 0.8f), cy = frand(&seed, -0.8f, 0.8f);
+            glBegin(mode);
+            for (int v = 0; v < n; v++) {
+                glColor3f(frand(&seed, 0, 1), frand(&seed, 0, 1), frand(&seed, 0, 1));
+                glVertex3f(cx + frand(&seed, -0.7f, 0.7f), cy + frand(&seed, -0.7f, 0.7f),
+                           frand(&seed, -1.2f, 1.2f));
+            }
+            glEnd();
+        }
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/rect_variants", 32, 32, 2, "raster polygon", rect_variants),
     FC_CASE_RGBA("polygon/rect_cull_errors", 32, 32, 2, "raster polygon", rect_cull_errors),
@@ -1037,5 +1119,7 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/cull_quad_strip", 32, 32, 6, "raster polygon cull", cull_quad_strip),
     FC_CASE_RGBA("polygon/cull_polygon", 32, 32, 6, "raster polygon cull", cull_polygon),
     FC_CASE_RGBA("polygon/cull_clipped", 32, 32, 2, "raster polygon cull clip", cull_clipped),
+    FC_CASE_RGBA("polygon/mix_random", 64, 64, 6, "raster polygon offset stipple clip cull", polygon_mix),
+    FC_CASE("polygon/mix_random_z16", 64, 64, OSMESA_RGBA, 16, 0, 6, "raster polygon offset stipple clip cull", polygon_mix),
     { 0 }
 };
