@@ -235,6 +235,9 @@ struct fgl_context {
    float _ViewportScale[3], _ViewportTranslate[3];
    float _ClipUserPlane[FGL_MAX_CLIP_PLANES][4];  /* clip-space planes */
    struct fgl_draw_pipeline _DrawPipeline;
+   uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
+                                    * made from (all zero at first, as the
+                                    * state tracker's copy) */
    struct r_state _Raster;
 
    /* ---- framebuffer ---- */
@@ -266,6 +269,8 @@ void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
+/* At each draw: the polygon stipple rows, when the pattern changed. */
+void fgl_update_stipple(struct fgl_context *ctx);
 
 static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 {

@@ -6,6 +6,8 @@
  * transform, then the raster core's state, which reads the framebuffer and
  * the per-fragment state.
  */
+#include <string.h>
+
 #include "context.h"
 #include "main/groups.h"
 
@@ -103,11 +105,8 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->offset_scale = lp_offset ? pg->OffsetFactor : 0.0f;
       rs->twoside = twoside && !need_pipeline;
 
-      /* st_atom_stipple.c:invert_stipple for the y-down window buffer */
+      /* the rows themselves: fgl_update_stipple, at draw time */
       rs->stipple = pg->StippleFlag;
-      const unsigned h = fb ? (unsigned)fb->Height : 0u;
-      for (unsigned i = 0; i < 32; i++)
-         rs->stipple_rows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
 
       struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
       /* draw_pipe_validate.c:draw_need_pipeline for triangles: stipple,
@@ -129,4 +128,20 @@ void fgl_update_state(struct fgl_context *ctx)
    }
 
    ctx->NewState = 0;
+}
+
+/* [S: st_atom_stipple.c:st_update_polygon_stipple] At each draw, when the
+ * pattern differs from the one last handed to the driver, it is inverted
+ * for the y-down window buffer with the current window height:
+ * dest[i] = src[(height - 1 - i) & 31].  A later change of the window
+ * height alone (re-binding the context to a buffer of another height)
+ * keeps the old inversion, despite the function's comment. */
+void fgl_update_stipple(struct fgl_context *ctx)
+{
+   if (memcmp(ctx->_StipplePattern, ctx->PolygonStipple, sizeof(ctx->_StipplePattern)) == 0)
+      return;
+   memcpy(ctx->_StipplePattern, ctx->PolygonStipple, sizeof(ctx->_StipplePattern));
+   const unsigned h = ctx->DrawBuffer ? (unsigned)ctx->DrawBuffer->Height : 0u;
+   for (unsigned i = 0; i < 32; i++)
+      ctx->_Raster.stipple_rows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
 }

@@ -443,6 +443,48 @@ static void stipple_get(fc_h *h)
     fc_error(h, "final");
 }
 
+/* The stipple rows follow the window height: re-binding the context to a
+ * buffer of another height moves the pattern. */
+static void stipple_rebind(fc_h *h)
+{
+    GLubyte pat[128], color[32 * 21 * 4];
+    make_pattern(pat, 3);
+    glPolygonStipple(pat);
+    glEnable(GL_POLYGON_STIPPLE);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(1, 0.5f, 0.25f);
+    glRectf(0, 0, 32, 32);
+    fc_capture(h);
+    fc_value(h, "rebind 32x21", OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 32, 21));
+    glViewport(0, 0, 32, 21);
+    fcu_clear(0, 0, 0, 0, 1);
+    glRectf(0, 0, 32, 32);
+    memset(color, 0x33, sizeof color);
+    glReadPixels(0, 0, 32, 21, GL_RGBA, GL_UNSIGNED_BYTE, color);
+    fc_blob(h, "glReadPixels 32x21", color, sizeof color);
+    /* a new pattern is inverted with the new height ... */
+    make_pattern(pat, 1);
+    pat[5] = 0x0f;
+    glPolygonStipple(pat);
+    fcu_clear(0, 0, 0, 0, 1);
+    glRectf(0, 0, 32, 32);
+    glReadPixels(0, 0, 32, 21, GL_RGBA, GL_UNSIGNED_BYTE, color);
+    fc_blob(h, "new pattern at 32x21", color, sizeof color);
+    /* ... which stays when going back to 32x32 */
+    fc_value(h, "rebind 32x32", OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 32, 32));
+    glViewport(0, 0, 32, 32);
+    fcu_clear(0, 0, 0, 0, 1);
+    glRectf(0, 0, 32, 32);
+    fc_capture(h);
+    /* setting the same pattern again changes nothing either */
+    glPolygonStipple(pat);
+    fcu_clear(0, 0, 0, 0, 1);
+    glRectf(0, 0, 32, 32);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
 /* Stipple puts every triangle through draw's pipeline: offset per vertex
  * (clamped there), with depth. */
 static void stipple_offset(fc_h *h)
@@ -1095,6 +1137,7 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/stipple_stripes", 32, 32, 8, "raster polygon stipple", stipple_stripes),
     FC_CASE_RGBA("polygon/stipple_random_odd_size", 37, 29, 4, "raster polygon stipple", stipple_random),
     FC_CASE_RGBA("polygon/stipple_odd_window", 45, 43, 2, "raster polygon stipple", stipple_odd_window),
+    FC_CASE_RGBA("polygon/stipple_rebind", 32, 32, 3, "raster polygon stipple", stipple_rebind),
     FC_CASE_RGBA("polygon/stipple_get", 8, 8, 0, "raster polygon stipple", stipple_get),
     FC_CASE_RGBA("polygon/pixelstore_state", 8, 8, 0, "raster polygon pixelstore", pixelstore_state),
     FC_CASE_RGBA("polygon/stipple_unpack_modes", 32, 32, 6, "raster polygon stipple pixelstore", stipple_unpack_modes),

@@ -132,6 +132,7 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
+   fgl_update_stipple(ctx);
 
    struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
    if (!tv)
