@@ -48,6 +48,8 @@ static void draw_prim(GLenum mode)
     glEnd();
 }
 
+static void make_pattern(GLubyte p[128], int kind);
+
 /* ---- glRect --------------------------------------------------------------- */
 
 /* Every glRect variant, corners in both orders, fractional corners. */
@@ -300,6 +302,44 @@ static void offset_clipped(fc_h *h)
     fcu_color(9); glVertex3f(-0.95f, -0.2f, 0.1f);
     glEnd();
     fc_capture(h);
+}
+
+/* Perspective triangles crossing the near plane with offset, under a
+ * reversed and a narrow depth range, with and without stipple (setup's
+ * offset vs draw's per-vertex one). */
+static void offset_perspective(fc_h *h)
+{
+    GLubyte pat[128];
+    make_pattern(pat, 0);
+    glPolygonStipple(pat);
+    for (int k = 0; k < 4; k++) {
+        glViewport(0, 0, 32, 32);
+        fcu_frustum(-0.5, 0.5, -0.5, 0.5, 1, 20);
+        glDepthRange(k & 1 ? 0.9 : 0.3, k & 1 ? 0.1 : 0.35);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        fcu_clear(0, 0, 0, 0, 1);
+        if (k >= 2)
+            glEnable(GL_POLYGON_STIPPLE);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(k & 1 ? -2.0f : 3.0f, k & 1 ? 7.0f : -11.0f);
+        glBegin(GL_TRIANGLES);
+        fcu_color(0); glVertex3f(-2.0f, -1.5f, -4.0f);
+        fcu_color(1); glVertex3f(2.0f, -1.0f, -5.0f);
+        fcu_color(2); glVertex3f(0.3f, 0.5f, 2.0f);
+        fcu_color(3); glVertex3f(-1.0f, 0.2f, -1.5f);
+        fcu_color(4); glVertex3f(1.0f, 0.4f, -3.0f);
+        fcu_color(5); glVertex3f(-0.5f, 1.5f, -1.0f);
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i < 8; i++) {
+            fcu_color(i + 6);
+            glVertex3f(-1.5f + 0.4f * (float)(i / 2), (i & 1) ? 0.8f : -0.8f, -1.2f - 1.5f * (float)i);
+        }
+        glEnd();
+        glDisable(GL_POLYGON_STIPPLE);
+        fc_capture(h);
+    }
 }
 
 static void offset_state(fc_h *h)
@@ -1132,6 +1172,8 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/offset_decal", 64, 64, 3, "raster polygon offset", offset_decal),
     FC_CASE_RGBA("polygon/offset_line_point_enable", 32, 32, 2, "raster polygon offset", offset_line_point_enable),
     FC_CASE_RGBA("polygon/offset_clipped", 32, 32, 1, "raster polygon offset clip", offset_clipped),
+    FC_CASE_RGBA("polygon/offset_perspective", 32, 32, 4, "raster polygon offset clip stipple", offset_perspective),
+    FC_CASE("polygon/offset_perspective_z16", 32, 32, OSMESA_RGBA, 16, 0, 4, "raster polygon offset clip stipple", offset_perspective),
     FC_CASE_RGBA("polygon/offset_state", 8, 8, 0, "raster polygon offset", offset_state),
     FC_CASE_RGBA("polygon/stipple_checker", 32, 32, 4, "raster polygon stipple", stipple_checker),
     FC_CASE_RGBA("polygon/stipple_stripes", 32, 32, 8, "raster polygon stipple", stipple_stripes),
