@@ -430,6 +430,27 @@ static void stipple_stripes(fc_h *h)
 }
 static void stipple_random(fc_h *h) { stipple_prims(h, 3); }
 
+/* Every filled primitive type through draw's pipeline (stipple), smooth
+ * and flat: the pipeline's decomposition and provoking vertices. */
+static void stipple_all_prims(fc_h *h)
+{
+    static const GLenum modes[6] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                     GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    GLubyte pat[128];
+    make_pattern(pat, 3);
+    fc_pixel_ortho(h);
+    glPolygonStipple(pat);
+    glEnable(GL_POLYGON_STIPPLE);
+    for (int flat = 0; flat < 2; flat++) {
+        glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+        for (int m = 0; m < 6; m++) {
+            fcu_clear(0, 0, 0, 0, 1);
+            draw_prim(modes[m]);
+            fc_capture(h);
+        }
+    }
+}
+
 /* Window heights that are not multiples of 32, and a viewport moved by odd
  * amounts: the pattern stays fixed to window coordinates. */
 static void stipple_odd_window(fc_h *h)
@@ -1178,6 +1199,7 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE_RGBA("polygon/stipple_checker", 32, 32, 4, "raster polygon stipple", stipple_checker),
     FC_CASE_RGBA("polygon/stipple_stripes", 32, 32, 8, "raster polygon stipple", stipple_stripes),
     FC_CASE_RGBA("polygon/stipple_random_odd_size", 37, 29, 4, "raster polygon stipple", stipple_random),
+    FC_CASE_RGBA("polygon/stipple_all_prims", 32, 32, 12, "raster polygon stipple", stipple_all_prims),
     FC_CASE_RGBA("polygon/stipple_odd_window", 45, 43, 2, "raster polygon stipple", stipple_odd_window),
     FC_CASE_RGBA("polygon/stipple_rebind", 32, 32, 3, "raster polygon stipple", stipple_rebind),
     FC_CASE_RGBA("polygon/stipple_get", 8, 8, 0, "raster polygon stipple", stipple_get),
