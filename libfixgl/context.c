@@ -47,6 +47,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_scissor(ctx);
    fgl_init_stencil(ctx);
    fgl_init_blend(ctx);
+   fgl_init_pixelstore(ctx);
    fgl_init_viewport(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;

@@ -44,11 +44,12 @@ enum {
    FGL_NEW_DEPTH      = 1u << 3,
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
-   FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling */
+   FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling, offset, stipple */
    FGL_NEW_SCISSOR    = 1u << 7,   /* scissor box and test */
    FGL_NEW_COLOR      = 1u << 8,   /* alpha test, blending, logic op, colour mask */
    FGL_NEW_STENCIL    = 1u << 9,   /* stencil test */
    FGL_NEW_FOG        = 1u << 10,  /* fog state and GL_FOG */
+   FGL_NEW_CLIP       = 1u << 11,  /* user clip planes */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -180,16 +181,30 @@ struct fgl_lighting_derived {
    struct fgl_light_derived Light[FGL_MAX_LIGHTS];
 };
 
-/* GL_POLYGON_BIT (so far) */
+/* GL_POLYGON_BIT */
 struct fgl_polygon_attrib {
    GLenum FrontFace;        /* GL_CW or GL_CCW */
    GLenum CullFaceMode;     /* GL_FRONT, GL_BACK or GL_FRONT_AND_BACK */
    bool CullFlag;           /* GL_CULL_FACE */
+   GLenum FrontMode, BackMode;  /* glPolygonMode: GL_POINT, GL_LINE, GL_FILL */
+   float OffsetFactor, OffsetUnits;
+   bool OffsetFill, OffsetLine, OffsetPoint;  /* GL_POLYGON_OFFSET_* */
+   bool StippleFlag;        /* GL_POLYGON_STIPPLE */
 };
+
+/* glPixelStore state of one direction (Mesa's gl_pixelstore_attrib) */
+struct fgl_pixelstore {
+   int Alignment, RowLength, SkipPixels, SkipRows, ImageHeight, SkipImages;
+   bool SwapBytes, LsbFirst;
+};
+
+#define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
 /* GL_TRANSFORM_BIT */
 struct fgl_transform_attrib {
    GLenum MatrixMode;
+   float EyeUserPlane[FGL_MAX_CLIP_PLANES][4];  /* glClipPlane, in eye space */
+   unsigned ClipPlanesEnabled;                  /* bit i: GL_CLIP_PLANEi */
    bool Normalize;          /* GL_NORMALIZE */
    bool RescaleNormals;     /* GL_RESCALE_NORMAL */
 };
@@ -222,6 +237,21 @@ struct fgl_framebuffer {
    void (*FlushFront)(struct fgl_framebuffer *fb);
 };
 
+/* The stages of the oracle's draw pipeline that triangles pass through
+ * after clipping (draw_pipe_validate.c:validate_pipeline), as llvmpipe
+ * splits the rasterizer state between draw and its own setup
+ * (lp_state_rasterizer.c:llvmpipe_create_rasterizer_state). */
+struct fgl_draw_pipeline {
+   bool always;             /* every triangle takes the pipeline (stipple,
+                             * unfilled), not only segments that need clipping */
+   bool cull;               /* cull stage: float determinant, culling */
+   bool cull_front, cull_back;
+   bool front_ccw;
+   bool twoside;            /* twoside stage: back colours by determinant */
+   bool offset;             /* offset stage, per vertex */
+   float offset_units, offset_scale;
+};
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -235,6 +265,9 @@ struct fgl_context {
    struct fgl_stencil_attrib Stencil;
    struct fgl_transform_attrib Transform;
    struct fgl_viewport_attrib Viewport;
+   uint32_t PolygonStipple[32];     /* GL_POLYGON_STIPPLE_BIT: row 0 = bottom,
+                                     * bit 31 = leftmost column */
+   struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;
@@ -243,7 +276,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 40
+#define FGL_PENDING_CAPS 30
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */
@@ -258,6 +291,11 @@ struct fgl_context {
    fgl_matrix _ModelProjectMatrix;
    struct fgl_lighting_derived _Lighting;
    float _ViewportScale[3], _ViewportTranslate[3];
+   float _ClipUserPlane[FGL_MAX_CLIP_PLANES][4];  /* clip-space planes */
+   struct fgl_draw_pipeline _DrawPipeline;
+   uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
+                                    * made from (all zero at first, as the
+                                    * state tracker's copy) */
    struct r_state _Raster;
 
    /* ---- framebuffer ---- */
@@ -289,6 +327,8 @@ void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
+/* At each draw: the polygon stipple rows, when the pattern changed. */
+void fgl_update_stipple(struct fgl_context *ctx);
 
 static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 {

@@ -31,6 +31,7 @@ extern const fc_case fc_cases_light_prim[];
 extern const fc_case fc_cases_light_api[];
 extern const fc_case fc_cases_fog[];
 extern const fc_case fc_cases_fragment[];
+extern const fc_case fc_cases_polygon[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

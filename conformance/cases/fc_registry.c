@@ -10,6 +10,7 @@ static const fc_case *const groups[] = {
     fc_cases_light_mat, fc_cases_light_prim, fc_cases_light_api,
     fc_cases_fog,
     fc_cases_fragment,
+    fc_cases_polygon,
 };
 
 size_t fc_case_count(void)

@@ -16,6 +16,7 @@ void fgl_init_current(struct fgl_context *ctx)
    static const float init[FGL_ATTR_COUNT][4] = {
       [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
       [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
+      [FGL_ATTR_EDGEFLAG] = { 1, 0, 0, 1 },
       [FGL_ATTR_MAT_FRONT_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
       [FGL_ATTR_MAT_BACK_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
       [FGL_ATTR_MAT_FRONT_DIFFUSE] = { 0.8f, 0.8f, 0.8f, 1.0f },
@@ -148,3 +149,54 @@ VERTEX_FUNCS(s, GLshort)
 VERTEX_FUNCS(i, GLint)
 VERTEX_FUNCS(f, GLfloat)
 VERTEX_FUNCS(d, GLdouble)
+
+/* glEdgeFlag: a one-component vbo attribute, 1.0 or 0.0 (any non-zero
+ * GLboolean converts as its value) [S: vbo/vbo_attrib_tmp.h:EdgeFlag].  It
+ * only matters to unfilled polygons; GL_EDGE_FLAG reads it back. */
+static inline void edge_flag(GLboolean flag)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_vbo_attr(ctx, FGL_ATTR_EDGEFLAG, 1, (GLfloat)flag, 0.0f, 0.0f, 1.0f);
+}
+
+void GLAPIENTRY glEdgeFlag(GLboolean flag)
+{
+   edge_flag(flag);
+}
+
+void GLAPIENTRY glEdgeFlagv(const GLboolean *flag)
+{
+   if (flag)
+      edge_flag(*flag);
+}
+
+/* glRect: one GL_QUADS primitive (x1,y1) (x2,y1) (x2,y2) (x1,y2) through
+ * the immediate-mode path, other types converted to float first
+ * [S: main/draw.c:_mesa_Rectf, _mesa_Rectd...]; inside glBegin/glEnd it is
+ * an INVALID_OPERATION. */
+static void rectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   glBegin(GL_QUADS);
+   glVertex2f(x1, y1);
+   glVertex2f(x2, y1);
+   glVertex2f(x2, y2);
+   glVertex2f(x1, y2);
+   glEnd();
+}
+
+#define RECT_FUNCS(suffix, type)                                                \
+   void GLAPIENTRY glRect##suffix(type x1, type y1, type x2, type y2)           \
+   { rectf((GLfloat)x1, (GLfloat)y1, (GLfloat)x2, (GLfloat)y2); }               \
+   void GLAPIENTRY glRect##suffix##v(const type *v1, const type *v2)            \
+   { if (v1 && v2) rectf((GLfloat)v1[0], (GLfloat)v1[1], (GLfloat)v2[0], (GLfloat)v2[1]); }
+
+RECT_FUNCS(s, GLshort)
+RECT_FUNCS(i, GLint)
+RECT_FUNCS(f, GLfloat)
+RECT_FUNCS(d, GLdouble)

@@ -10,18 +10,15 @@
  * stored and reported (so programs see the oracle's errors and queries)
  * but do not affect rendering yet; README's status table lists them. */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_AUTO_NORMAL, GL_CLIP_PLANE0, GL_CLIP_PLANE1,
-   GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
-   GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH,
-   GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
-   GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
-   GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
-   GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
-   GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
-   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_POINT_SMOOTH,
-   GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
-   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_Q,
-   GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T,
+   GL_AUTO_NORMAL, GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
+   GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
+   GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
+   GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+   GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2,
+   GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
+   GL_MAP2_VERTEX_4, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_TEXTURE_1D,
+   GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
+   GL_TEXTURE_GEN_T,
 };
 
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
@@ -29,7 +26,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
    for (int i = 0; i < FGL_PENDING_CAPS; i++) {
       if (pending_caps[i] == cap) {
-         *dirty = 0;
+         /* smooth points and lines already change how triangles are drawn
+          * (state.c: draw's pipeline) */
+         *dirty = cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH ? FGL_NEW_POLYGON : 0;
          return &ctx->PendingCaps[i];
       }
    }
@@ -44,6 +43,18 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_CULL_FACE:
       *dirty = FGL_NEW_POLYGON;
       return &ctx->Polygon.CullFlag;
+   case GL_POLYGON_OFFSET_FILL:
+      *dirty = FGL_NEW_POLYGON;
+      return &ctx->Polygon.OffsetFill;
+   case GL_POLYGON_OFFSET_LINE:
+      *dirty = FGL_NEW_POLYGON;
+      return &ctx->Polygon.OffsetLine;
+   case GL_POLYGON_OFFSET_POINT:
+      *dirty = FGL_NEW_POLYGON;
+      return &ctx->Polygon.OffsetPoint;
+   case GL_POLYGON_STIPPLE:
+      *dirty = FGL_NEW_POLYGON;
+      return &ctx->Polygon.StippleFlag;
    case GL_COLOR_MATERIAL:
       *dirty = FGL_NEW_LIGHT;
       return &ctx->Light.ColorMaterialEnabled;
@@ -82,12 +93,35 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    }
 }
 
+/* GL_CLIP_PLANEi (= GL_CLIP_DISTANCEi), i < Const.MaxClipPlanes: a bit of
+ * Transform.ClipPlanesEnabled [S: main/enable.c:_mesa_set_enable].  The
+ * clip-space plane Mesa computes at enable time is derived at draw time
+ * (state.c), from the same eye plane and projection. */
+static bool clip_plane_cap(GLenum cap, unsigned *bit)
+{
+   if (cap < GL_CLIP_PLANE0 || cap >= GL_CLIP_PLANE0 + FGL_MAX_CLIP_PLANES)
+      return false;
+   *bit = 1u << (cap - GL_CLIP_PLANE0);
+   return true;
+}
+
 static void set_enable(GLenum cap, bool state)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   unsigned bit;
+   if (clip_plane_cap(cap, &bit)) {
+      if (((ctx->Transform.ClipPlanesEnabled & bit) != 0) == state)
+         return;
+      FGL_FLUSH_VERTICES(ctx, FGL_NEW_CLIP);
+      if (state)
+         ctx->Transform.ClipPlanesEnabled |= bit;
+      else
+         ctx->Transform.ClipPlanesEnabled &= ~bit;
+      return;
+   }
    unsigned dirty = 0;
    bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
@@ -121,7 +155,9 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    if (!ctx)
       return GL_FALSE;
    ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
-   unsigned dirty;
+   unsigned dirty, bit;
+   if (clip_plane_cap(cap, &bit))
+      return (ctx->Transform.ClipPlanesEnabled & bit) ? GL_TRUE : GL_FALSE;
    const bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -132,7 +168,11 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
 
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
 {
-   unsigned dirty;
+   unsigned dirty, bit;
+   if (clip_plane_cap(pname, &bit)) {
+      *value = (ctx->Transform.ClipPlanesEnabled & bit) ? 1.0 : 0.0;
+      return true;
+   }
    const bool *flag = cap_flag(ctx, pname, &dirty);
    if (!flag)
       return false;

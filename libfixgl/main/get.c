@@ -5,13 +5,15 @@
  * Every value is described once (fill_value) with its type; the four
  * getters convert like Mesa's get.c:
  *   float -> boolean   f != 0 (NaN is true)
- *   float -> integer   IROUND, or FLOAT_TO_INT for normalized values
+ *   float -> integer   lroundf, or FLOAT_TO_INT for normalized values
  *                      (colours, depth values, and matrices, as Mesa does):
  *                      (GLint)(2147483647.0 * f)
  * Out-of-range float->int conversions give INT_MIN, as on x86 where the
  * oracle runs.
  */
 #include <limits.h>
+#include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "main/conv.h"
@@ -21,7 +23,7 @@ enum value_type {
    V_BOOL,      /* GLboolean state */
    V_INT,       /* integers and enums */
    V_UINT,      /* unsigned integers: int queries saturate at INT_MAX */
-   V_FLOAT,     /* floats converted with IROUND */
+   V_FLOAT,     /* floats converted with lroundf (low 32 bits kept) */
    V_FLOATN,    /* normalized floats converted with FLOAT_TO_INT */
 };
 
@@ -31,9 +33,16 @@ struct value {
    double v[16];
 };
 
+/* _mesa_GetIntegerv, TYPE_FLOAT: params[i] = lroundf(f), a long (64 bits)
+ * stored into a GLint: rounded half away from zero, then the low 32 bits;
+ * out of the long range or NaN, glibc's x86-64 lroundf gives LONG_MIN,
+ * whose low 32 bits are 0 (1e30 reads back as 0). */
 static GLint iround(float f)
 {
-   return fgl_double_to_int_trunc((f >= 0.0f) ? (f + 0.5f) : (f - 0.5f));
+   int64_t l = INT64_MIN;
+   if (f >= -9223372036854775808.0f && f < 9223372036854775808.0f)
+      l = (int64_t)lroundf(f);
+   return (GLint)(uint32_t)(uint64_t)l;
 }
 
 /* Mesa's CLAMP(x, 0, 1) (util/macros.h): x > 0 ? min(x, 1) : 0, so NaN
@@ -76,6 +85,11 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_CURRENT_NORMAL:
       fgl_flush_current(ctx);
       set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_NORMAL], 3);   /* TYPE_FLOATN_3 */
+      return true;
+   case GL_EDGE_FLAG:
+      /* get.c: LOC_CUSTOM, Current.Attrib[VERT_ATTRIB_EDGEFLAG][0] == 1.0F */
+      fgl_flush_current(ctx);
+      set_ints(val, V_BOOL, 1, ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 1.0f, 0, 0, 0);
       return true;
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
@@ -190,6 +204,15 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_CULL_FACE_MODE:
       set_ints(val, V_INT, 1, (int)ctx->Polygon.CullFaceMode, 0, 0, 0);
       return true;
+   case GL_POLYGON_MODE:
+      set_ints(val, V_INT, 2, (int)ctx->Polygon.FrontMode, (int)ctx->Polygon.BackMode, 0, 0);
+      return true;
+   case GL_POLYGON_OFFSET_FACTOR:
+      set_floats(val, V_FLOAT, &ctx->Polygon.OffsetFactor, 1);
+      return true;
+   case GL_POLYGON_OFFSET_UNITS:
+      set_floats(val, V_FLOAT, &ctx->Polygon.OffsetUnits, 1);
+      return true;
    case GL_DEPTH_FUNC:
       set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);
       return true;
@@ -243,6 +266,9 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_TEXTURE_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->TextureStack[0].Depth + 1, 0, 0, 0);
       return true;
+   case GL_MAX_CLIP_PLANES:
+      set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
+      return true;
    case GL_MAX_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, FGL_MAX_MODELVIEW_STACK_DEPTH, 0, 0, 0);
       return true;
@@ -270,6 +296,23 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       f[1] = FGL_VIEWPORT_BOUNDS_MAX;
       set_floats(val, V_FLOAT, f, 2);
       return true;
+   /* GL_CLIENT_PIXEL_STORE_BIT */
+   case GL_PACK_SWAP_BYTES: set_ints(val, V_BOOL, 1, ctx->Pack.SwapBytes, 0, 0, 0); return true;
+   case GL_PACK_LSB_FIRST: set_ints(val, V_BOOL, 1, ctx->Pack.LsbFirst, 0, 0, 0); return true;
+   case GL_PACK_ROW_LENGTH: set_ints(val, V_INT, 1, ctx->Pack.RowLength, 0, 0, 0); return true;
+   case GL_PACK_IMAGE_HEIGHT: set_ints(val, V_INT, 1, ctx->Pack.ImageHeight, 0, 0, 0); return true;
+   case GL_PACK_SKIP_PIXELS: set_ints(val, V_INT, 1, ctx->Pack.SkipPixels, 0, 0, 0); return true;
+   case GL_PACK_SKIP_ROWS: set_ints(val, V_INT, 1, ctx->Pack.SkipRows, 0, 0, 0); return true;
+   case GL_PACK_SKIP_IMAGES: set_ints(val, V_INT, 1, ctx->Pack.SkipImages, 0, 0, 0); return true;
+   case GL_PACK_ALIGNMENT: set_ints(val, V_INT, 1, ctx->Pack.Alignment, 0, 0, 0); return true;
+   case GL_UNPACK_SWAP_BYTES: set_ints(val, V_BOOL, 1, ctx->Unpack.SwapBytes, 0, 0, 0); return true;
+   case GL_UNPACK_LSB_FIRST: set_ints(val, V_BOOL, 1, ctx->Unpack.LsbFirst, 0, 0, 0); return true;
+   case GL_UNPACK_ROW_LENGTH: set_ints(val, V_INT, 1, ctx->Unpack.RowLength, 0, 0, 0); return true;
+   case GL_UNPACK_IMAGE_HEIGHT: set_ints(val, V_INT, 1, ctx->Unpack.ImageHeight, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_PIXELS: set_ints(val, V_INT, 1, ctx->Unpack.SkipPixels, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_ROWS: set_ints(val, V_INT, 1, ctx->Unpack.SkipRows, 0, 0, 0); return true;
+   case GL_UNPACK_SKIP_IMAGES: set_ints(val, V_INT, 1, ctx->Unpack.SkipImages, 0, 0, 0); return true;
+   case GL_UNPACK_ALIGNMENT: set_ints(val, V_INT, 1, ctx->Unpack.Alignment, 0, 0, 0); return true;
    /* framebuffer and implementation */
    case GL_RED_BITS:
    case GL_GREEN_BITS:

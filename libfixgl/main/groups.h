@@ -56,6 +56,18 @@ void fgl_update_lighting(struct fgl_context *ctx);
 /* main/polygon.c (GL_POLYGON_BIT) */
 void fgl_init_polygon(struct fgl_context *ctx);
 
+/* main/clip.c (user clip planes, GL_TRANSFORM_BIT): the clip-space planes
+ * of the enabled GL_CLIP_PLANEi from the eye planes and the projection */
+void fgl_update_clip_planes(struct fgl_context *ctx);
+
+/* main/pixelstore.c (GL_CLIENT_PIXEL_STORE_BIT): defaults, and the
+ * GL_BITMAP packing of the polygon stipple with a pixel-store state */
+void fgl_init_pixelstore(struct fgl_context *ctx);
+void fgl_unpack_stipple(const struct fgl_pixelstore *p, const uint8_t *pattern,
+                        uint32_t dest[32]);
+void fgl_pack_stipple(const struct fgl_pixelstore *p, const uint32_t pattern[32],
+                      uint8_t *dest);
+
 /* main/viewport.c (GL_VIEWPORT_BIT) */
 void fgl_init_viewport(struct fgl_context *ctx);
 void fgl_set_viewport(struct fgl_context *ctx, int x, int y, int width, int height);

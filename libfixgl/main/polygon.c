@@ -1,9 +1,17 @@
 /*
- * Polygon state (GL_POLYGON_BIT) so far: glFrontFace, glCullFace and
- * GL_CULL_FACE (main/enable.c).  Facing is decided where llvmpipe decides
- * it, from the sign of the snapped triangle area in the raster core (also
- * for two-sided lighting).
+ * Polygon state (GL_POLYGON_BIT, GL_POLYGON_STIPPLE_BIT): glFrontFace,
+ * glCullFace, glPolygonMode, glPolygonOffset, glPolygonStipple and the
+ * GL_CULL_FACE, GL_POLYGON_OFFSET_* and GL_POLYGON_STIPPLE enables
+ * (main/enable.c).  Facing is decided where llvmpipe decides it, from the
+ * sign of the snapped triangle area in the raster core (also for two-sided
+ * lighting), or from draw's float determinant when the triangle goes
+ * through the draw pipeline (tnl/t_clip.c).
+ *
+ * glPolygonMode stores its state; unfilled rendering waits for lines and
+ * points, so every mode still fills.
  */
+#include <string.h>
+
 #include "main/groups.h"
 
 void fgl_init_polygon(struct fgl_context *ctx)
@@ -11,6 +19,16 @@ void fgl_init_polygon(struct fgl_context *ctx)
    ctx->Polygon.FrontFace = GL_CCW;
    ctx->Polygon.CullFaceMode = GL_BACK;
    ctx->Polygon.CullFlag = false;
+   ctx->Polygon.FrontMode = GL_FILL;
+   ctx->Polygon.BackMode = GL_FILL;
+   ctx->Polygon.OffsetFactor = 0.0f;
+   ctx->Polygon.OffsetUnits = 0.0f;
+   ctx->Polygon.OffsetFill = false;
+   ctx->Polygon.OffsetLine = false;
+   ctx->Polygon.OffsetPoint = false;
+   ctx->Polygon.StippleFlag = false;
+   /* _mesa_init_polygon: the stipple starts all ones */
+   memset(ctx->PolygonStipple, 0xff, sizeof(ctx->PolygonStipple));
 }
 
 void GLAPIENTRY glFrontFace(GLenum mode)
@@ -43,4 +61,89 @@ void GLAPIENTRY glCullFace(GLenum mode)
    }
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
    ctx->Polygon.CullFaceMode = mode;
+}
+
+/* [S: main/polygon.c:polygon_mode] the mode is checked first (llvmpipe has
+ * no GL_FILL_RECTANGLE_NV), then the face; an unchanged value does not
+ * flush. */
+void GLAPIENTRY glPolygonMode(GLenum face, GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   switch (face) {
+   case GL_FRONT:
+      if (ctx->Polygon.FrontMode == mode)
+         return;
+      FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
+      ctx->Polygon.FrontMode = mode;
+      break;
+   case GL_FRONT_AND_BACK:
+      if (ctx->Polygon.FrontMode == mode && ctx->Polygon.BackMode == mode)
+         return;
+      FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
+      ctx->Polygon.FrontMode = mode;
+      ctx->Polygon.BackMode = mode;
+      break;
+   case GL_BACK:
+      if (ctx->Polygon.BackMode == mode)
+         return;
+      FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
+      ctx->Polygon.BackMode = mode;
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+}
+
+/* [S: main/polygon.c:_mesa_polygon_offset_clamp] no error case; equal
+ * values (compared as floats: NaN never equal) do not flush. */
+void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Polygon.OffsetFactor == factor && ctx->Polygon.OffsetUnits == units)
+      return;
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
+   ctx->Polygon.OffsetFactor = factor;
+   ctx->Polygon.OffsetUnits = units;
+}
+
+/* [S: main/polygon.c:_mesa_PolygonStipple, pack.c:_mesa_unpack_polygon_stipple]
+ * The pattern is a 32x32 GL_BITMAP read with the unpack state (by default
+ * rows of 4 bytes, bottom row first, most significant bit = leftmost
+ * pixel); each row becomes a word with byte 0 in bits 24..31.  The flush
+ * comes first, also for a NULL pattern, which is then ignored without an
+ * error. */
+void GLAPIENTRY glPolygonStipple(const GLubyte *mask)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
+   if (!mask)
+      return;
+   fgl_unpack_stipple(&ctx->Unpack, mask, ctx->PolygonStipple);
+}
+
+/* [S: main/polygon.c:_mesa_GetnPolygonStippleARB, pack.c:_mesa_pack_polygon_stipple]
+ * with the pack state; a NULL destination is ignored. */
+void GLAPIENTRY glGetPolygonStipple(GLubyte *mask)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (!mask)
+      return;
+   fgl_pack_stipple(&ctx->Pack, ctx->PolygonStipple, mask);
 }

@@ -1,8 +1,10 @@
 /*
  * glReadPixels for the formats of the first slice: GL_RGBA and GL_RGB as
  * GL_UNSIGNED_BYTE or GL_FLOAT, and GL_DEPTH_COMPONENT as GL_FLOAT,
- * GL_UNSIGNED_INT or GL_UNSIGNED_SHORT.  Rows are packed with the default
- * GL_PACK_ALIGNMENT of 4; pixels outside the framebuffer are not written.
+ * GL_UNSIGNED_INT or GL_UNSIGNED_SHORT.  Pixels are placed with the pack
+ * state (main/image.c:_mesa_image_offset: GL_PACK_ALIGNMENT, ROW_LENGTH,
+ * SKIP_PIXELS, SKIP_ROWS; GL_PACK_SWAP_BYTES swaps 2- and 4-byte
+ * components); pixels outside the framebuffer are not written.
  * Conversions follow Mesa's unpack functions (format_utils.h, format_unpack.c).
  */
 #include <math.h>
@@ -10,9 +12,14 @@
 
 #include "main/groups.h"
 
-static size_t align4(size_t n)
+/* _mesa_swap2 / _mesa_swap4 of one component */
+static void swap_component(uint8_t *p, size_t bytes)
 {
-   return (n + 3) & ~(size_t)3;
+   for (size_t i = 0; i < bytes / 2; i++) {
+      const uint8_t t = p[i];
+      p[i] = p[bytes - 1 - i];
+      p[bytes - 1 - i] = t;
+   }
 }
 
 /* The pixel types GL knows; another type is an invalid enum, while a
@@ -55,24 +62,27 @@ static uint32_t depth_at(const struct fgl_framebuffer *fb, size_t idx)
    return ((const uint32_t *)fb->Depth)[idx] & 0xffffffu;
 }
 
-static void read_depth_pixel(const struct fgl_framebuffer *fb, size_t idx, GLenum type, void *dst)
+/* swap: GL_PACK_SWAP_BYTES, which makes GL_UNSIGNED_INT leave the integer
+ * fast path (readpix.c:read_uint_depth_pixels) for the float one:
+ * _mesa_pack_depth_span's FLOAT_TO_UINT, (GLuint)(z * 4294967295.0). */
+static void read_depth_pixel(const struct fgl_framebuffer *fb, size_t idx, GLenum type,
+                             bool swap, void *dst)
 {
    const uint32_t z = depth_at(fb, idx);
    const bool z16 = fb->ZSFormat == R_ZS_Z16;
+   const float f = z16 ? (float)z * (1.0f / 65535.0f)
+                       : (float)((double)z * (1.0 / (double)0xffffff));
    switch (type) {
-   case GL_FLOAT: {
-      const float f = z16 ? (float)z * (1.0f / 65535.0f)
-                          : (float)((double)z * (1.0 / (double)0xffffff));
+   case GL_FLOAT:
       memcpy(dst, &f, 4);
       break;
-   }
    case GL_UNSIGNED_INT: {
-      const uint32_t u = z16 ? (z << 16) | z : (z << 8) | (z >> 16);
+      const uint32_t u = swap ? (uint32_t)((double)f * 4294967295.0)
+                              : z16 ? (z << 16) | z : (z << 8) | (z >> 16);
       memcpy(dst, &u, 4);
       break;
    }
    default: { /* GL_UNSIGNED_SHORT: through float, rounded (pack.c) */
-      const float f = (float)((double)z * (1.0 / (double)0xffffff));
       const uint16_t u = z16 ? (uint16_t)z : (uint16_t)lrintf(f * 65535.0f);
       memcpy(dst, &u, 2);
       break;
@@ -127,7 +137,15 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    if (!fb || !pixels)
       return;
 
-   const size_t row_stride = align4((size_t)width * comps * bytes);
+   const struct fgl_pixelstore *pack = &ctx->Pack;
+   const size_t pixel_bytes = comps * bytes;
+   const size_t ppr = (size_t)(pack->RowLength > 0 ? pack->RowLength : width);
+   size_t row_stride = ppr * pixel_bytes;
+   if (row_stride % (size_t)pack->Alignment)
+      row_stride += (size_t)pack->Alignment - row_stride % (size_t)pack->Alignment;
+   pixels = (uint8_t *)pixels + (size_t)pack->SkipRows * row_stride +
+            (size_t)pack->SkipPixels * pixel_bytes;
+   const bool swap = pack->SwapBytes && bytes > 1;
    for (GLint j = 0; j < height; j++) {
       const int64_t gy = (int64_t)y + j;          /* GL row, y-up */
       if (gy < 0 || gy >= fb->Height)
@@ -141,7 +159,9 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
          const size_t idx = row * (size_t)fb->Width + (size_t)gx;
          uint8_t *dst = dst_row + (size_t)i * comps * bytes;
          if (format == GL_DEPTH_COMPONENT) {
-            read_depth_pixel(fb, idx, type, dst);
+            read_depth_pixel(fb, idx, type, swap, dst);
+            if (swap)
+               swap_component(dst, bytes);
             continue;
          }
          uint8_t src[4];
@@ -152,6 +172,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
             if (type == GL_FLOAT) {
                const float f = (float)src[c] * (1.0f / 255.0f);
                memcpy(dst + 4 * c, &f, 4);
+               if (swap)
+                  swap_component(dst + 4 * c, 4);
             } else {
                dst[c] = src[c];
             }

@@ -158,6 +158,17 @@ struct r_state {
                                  * end/(end-start), density/ln 2,
                                  * density/sqrt(ln 2) */
    float fog_color[3];          /* clamped to [0,1] */
+   /* polygon offset of llvmpipe's triangle setup (lp_do_offset_tri): added
+    * to every fragment's depth; both 0 when the draw pipeline applies the
+    * offset instead, or no GL_POLYGON_OFFSET_* is enabled */
+   float offset_units;          /* GL units * mrd * 2 */
+   float offset_scale;          /* GL factor */
+
+   /* polygon stipple (draw's pstipple stage: a fragment kill before any
+    * per-fragment operation); row i applies to y-down pixel rows i mod 32,
+    * bit 31 - (x mod 32) to columns x mod 32 */
+   bool stipple;
+   uint32_t stipple_rows[32];
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.

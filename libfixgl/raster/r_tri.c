@@ -166,6 +166,7 @@ static inline float eval_plane(const struct plane *p, float x, float y)
 /* Interpolation setup of one triangle (the jit setup function's job). */
 struct tri_shade {
    struct plane z, w;
+   float zoffset;           /* polygon offset, added to every fragment's z */
    /* Perspective-correct attributes are interpolated premultiplied by 1/w
     * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
     * provoking vertex. */
@@ -196,6 +197,19 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    };
 
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
+   /* [S: lp_state_setup.c:lp_do_offset_tri] (res1, res2) = cross(e, f).xy
+    * of the setup-order edges; the larger slope is picked with an
+    * unordered compare (NaN picks dzdx); offset = units + max * factor */
+   ts->zoffset = 0.0f;
+   if (rs->offset_scale != 0.0f || rs->offset_units != 0.0f) {
+      const float dz01 = v[0]->pos[2] - v[1]->pos[2];
+      const float dz20 = v[2]->pos[2] - v[0]->pos[2];
+      const float res1 = dz20 * dy01 - dy20 * dz01;
+      const float res2 = dx20 * dz01 - dz20 * dx01;
+      const float dzdx = fabsf(res1 * ooa), dzdy = fabsf(res2 * ooa);
+      const float max = !(dzdx <= dzdy) ? dzdx : dzdy;
+      ts->zoffset = rs->offset_units + max * rs->offset_scale;
+   }
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
    ts->inputs = rs->fs_inputs;
    ts->need_w = false;
@@ -221,6 +235,11 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 static inline void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
 {
+   /* polygon stipple: draw's pstipple stage samples a 32x32 texture of the
+    * pattern at the window position and kills the fragment first
+    * [S: draw/draw_pipe_pstipple.c, util/u_pstipple.c] */
+   if (rs->stipple && !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+      return;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
@@ -232,7 +251,8 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
    }
    float color[4];
    r_fragment_shader(rs, (const float (*)[4])in, color);
-   r_fragment_ops(rs, px, py, eval_plane(&ts->z, fx, fy), color);
+   /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
+   r_fragment_ops(rs, px, py, eval_plane(&ts->z, fx, fy) + ts->zoffset, color);
 }
 
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i

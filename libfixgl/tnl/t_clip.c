@@ -10,23 +10,43 @@
  *  - a NaN or infinite plane distance discards the triangle;
  *  - the result is fanned as (P[i-1], P[i], P[0]) with the provoking
  *    vertex's flat attributes on P[0].
+ * User clip planes (GL_CLIP_PLANEi) are planes 6 + i, clipped after the
+ * frustum planes in index order, with the clip-space plane
+ * (ctx->_ClipUserPlane) and the same C dot product (draw_pipe_clip.c
+ * getclipdist: legacy user planes dot the clip position).
+ *
+ * Then every triangle of a draw that takes the draw pipeline passes the
+ * stages after clipping (draw_pipe_validate.c:validate_pipeline): cull
+ * (float determinant), twoside, offset, before llvmpipe's setup.
  */
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "context.h"
 
 #define MAX_CLIPPED_VERTICES (2 * (6 + 8) + 1)   /* as Mesa, with 8 user planes */
 
+/* draw_context.c:draw_create: the view-volume planes */
 static const float clip_planes[6][4] = {
    { -1, 0, 0, 1 }, { 1, 0, 0, 1 }, { 0, -1, 0, 1 },
    { 0, 1, 0, 1 },  { 0, 0, 1, 1 }, { 0, 0, -1, 1 },
 };
 
+const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx)
+{
+   return plane_idx < 6 ? clip_planes[plane_idx] : ctx->_ClipUserPlane[plane_idx - 6];
+}
+
 static inline float dot4(const float *a, const float *b)
 {
    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
+
+float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx)
+{
+   return dot4(clip, t_clip_plane(ctx, plane_idx));
 }
 
 static inline float lerp(float t, float out, float in)
@@ -52,14 +72,82 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
          dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
 }
 
+/* The draw stages after clipping, for one triangle in window coordinates
+ * (v2 provoking), then llvmpipe's setup. */
+static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v0,
+                         const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   const struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
+   const struct r_vertex *v[3] = { v0, v1, v2 };
+   struct r_vertex tmp[3];
+   float det = 0.0f;
+
+   if (dp->cull) {
+      /* [S: draw_pipe_cull.c:cull_tri] e = v0 - v2, f = v1 - v2,
+       * det = cross(e, f).z; det < 0 is counter-clockwise (y-down); a zero
+       * determinant counts as a back face */
+      const float ex = v0->pos[0] - v2->pos[0], ey = v0->pos[1] - v2->pos[1];
+      const float fx = v1->pos[0] - v2->pos[0], fy = v1->pos[1] - v2->pos[1];
+      det = ex * fy - ey * fx;
+      bool back = true;
+      if (det != 0.0f)
+         back = (det < 0.0f) != dp->front_ccw;
+      if (back ? dp->cull_back : dp->cull_front)
+         return;
+   }
+   if (dp->twoside && det * (dp->front_ccw ? -1.0f : 1.0f) < 0.0f) {
+      /* [S: draw_pipe_twoside.c:twoside_tri, copy_bfc] back colours into
+       * the front slots */
+      for (int i = 0; i < 3; i++) {
+         tmp[i] = *v[i];
+         memcpy(tmp[i].attr[R_ATTR_COLOR0], v[i]->attr[R_ATTR_BCOLOR0], sizeof(tmp[i].attr[0]));
+         memcpy(tmp[i].attr[R_ATTR_COLOR1], v[i]->attr[R_ATTR_BCOLOR1], sizeof(tmp[i].attr[0]));
+         v[i] = &tmp[i];
+      }
+   }
+   if (dp->offset) {
+      /* [S: draw_pipe_offset.c:do_offset_tri] per vertex, then saturated */
+      const float inv_det = 1.0f / det;
+      const float ex = v[0]->pos[0] - v[2]->pos[0], ey = v[0]->pos[1] - v[2]->pos[1];
+      const float ez = v[0]->pos[2] - v[2]->pos[2];
+      const float fx = v[1]->pos[0] - v[2]->pos[0], fy = v[1]->pos[1] - v[2]->pos[1];
+      const float fz = v[1]->pos[2] - v[2]->pos[2];
+      const float a = ey * fz - ez * fy;
+      const float b = ez * fx - ex * fz;
+      const float dzdx = fabsf(a * inv_det), dzdy = fabsf(b * inv_det);
+      const float mult = (dzdx > dzdy ? dzdx : dzdy) * dp->offset_scale;
+      const float zoffset = dp->offset_units + mult;
+      for (int i = 0; i < 3; i++) {
+         if (v[i] != &tmp[i]) {
+            tmp[i] = *v[i];
+            v[i] = &tmp[i];
+         }
+         const float z = tmp[i].pos[2] + zoffset;
+         tmp[i].pos[2] = z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z);   /* SATURATE */
+      }
+   }
+   r_triangle(rs, v[0], v[1], v[2]);
+}
+
+static inline void emit_tri(const struct fgl_context *ctx, bool pipeline,
+                            const struct r_vertex *v0, const struct r_vertex *v1,
+                            const struct r_vertex *v2)
+{
+   if (pipeline)
+      pipeline_tri(ctx, v0, v1, v2);
+   else
+      r_triangle(&ctx->_Raster, v0, v1, v2);
+}
+
 void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2)
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline)
 {
    const struct r_state *rs = &ctx->_Raster;
    unsigned clipmask = v0->mask | v1->mask | v2->mask;
 
    if (clipmask == 0) {
-      r_triangle(rs, &v0->r, &v1->r, &v2->r);
+      emit_tri(ctx, pipeline, &v0->r, &v1->r, &v2->r);
       return;
    }
    if (v0->mask & v1->mask & v2->mask)
@@ -76,7 +164,7 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
 
    while (clipmask && n >= 3) {
       const int plane_idx = __builtin_ctz(clipmask);
-      const float *plane = clip_planes[plane_idx];
+      const float *plane = t_clip_plane(ctx, plane_idx);
       const struct t_vertex *vert_prev = inlist[0];
       float dp_prev = dot4(vert_prev->clip, plane);
       unsigned outcount = 0;
@@ -147,5 +235,5 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
    }
 
    for (unsigned i = 2; i < n; i++)
-      r_triangle(rs, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+      emit_tri(ctx, true, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
 }

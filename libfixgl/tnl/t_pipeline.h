@@ -5,6 +5,8 @@
 #ifndef FGL_T_PIPELINE_H
 #define FGL_T_PIPELINE_H
 
+#include <stdbool.h>
+
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
 
@@ -33,10 +35,20 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
 void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out);
 
-/* Clip a triangle against the view volume and rasterize the pieces; v2 is
- * the provoking vertex. */
+/* Clip planes in the oracle's order (outcode bit order): 0-5 the view
+ * volume (x > w, x < -w, y > w, y < -w, z < -w, z > w), 6 + i the enabled
+ * user plane i in clip space.  t_clip_dist is the clip stage's distance
+ * (a C dot product, left to right; inside iff >= 0). */
+const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx);
+float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx);
+
+/* Clip a triangle against the view volume and the user planes and
+ * rasterize the pieces; v2 is the provoking vertex.  pipeline: the draw
+ * this triangle belongs to takes the draw pipeline (some vertex of its
+ * segment needs clipping, or the state requires it), so every triangle
+ * passes its cull/twoside/offset stages. */
 void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2);
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline);
 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,

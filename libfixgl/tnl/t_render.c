@@ -12,7 +12,10 @@
  *   QUAD_STRIP      direct:   (k,k+1,k+3) then (k+2,k,k+3)
  *                   pipeline: (k+2,k,k+3) then (k,k+1,k+3)
  * A draw goes through the draw pipeline, segment by segment (4096 vertices,
- * Mesa's vsplit), when any vertex of the segment needs clipping.
+ * Mesa's vsplit), when any vertex of the segment needs clipping, and
+ * always when the state needs the pipeline's stages (polygon stipple,
+ * unfilled polygons: ctx->_DrawPipeline.always).  The pipeline decision of
+ * non-quad primitives is made for the whole primitive.
  */
 #include "tnl/t_pipeline.h"
 
@@ -25,28 +28,32 @@
 struct render {
    const struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
+   bool pipeline;                /* the current segment takes the draw pipeline */
 };
 
 static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c)
 {
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c]);
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], r->pipeline);
 }
 
 /* Vertices [start, start+count) of a segment need the draw pipeline. */
 static bool segment_clipped(const struct render *r, unsigned start, unsigned count)
 {
+   if (r->ctx->_DrawPipeline.always)
+      return true;
    unsigned m = 0;
    for (unsigned i = start; i < start + count; i++)
       m |= r->v[i].mask;
    return m != 0;
 }
 
-static void render_quads(const struct render *r, unsigned start, unsigned count, bool flat)
+static void render_quads(struct render *r, unsigned start, unsigned count, bool flat)
 {
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool split13 = flat || segment_clipped(r, start + seg, n);
+      r->pipeline = segment_clipped(r, start + seg, n);
+      const bool split13 = flat || r->pipeline;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
          if (split13) {
             tri(r, i, i + 1, i + 3);
@@ -59,7 +66,7 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
    }
 }
 
-static void render_quad_strip(const struct render *r, unsigned start, unsigned count)
+static void render_quad_strip(struct render *r, unsigned start, unsigned count)
 {
    count &= ~1u;
    if (count < 4)
@@ -67,9 +74,9 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
    /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
    for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool pipeline = segment_clipped(r, start + seg, n);
+      r->pipeline = segment_clipped(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
-         if (pipeline) {
+         if (r->pipeline) {
             tri(r, k + 2, k, k + 3);
             tri(r, k, k + 1, k + 3);
          } else {
@@ -82,9 +89,10 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
    }
 }
 
-static void render_prim(const struct render *r, const struct fgl_vbo_prim *p, bool flat)
+static void render_prim(struct render *r, const struct fgl_vbo_prim *p, bool flat)
 {
    const unsigned s = p->start, n = p->count;
+   r->pipeline = segment_clipped(r, s, n);
    switch (p->mode) {
    case GL_TRIANGLES:
       for (unsigned i = 0; i + 2 < n; i += 3)
@@ -124,13 +132,14 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
+   fgl_update_stipple(ctx);
 
    struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
    if (!tv)
       return;
    t_transform(ctx, verts, nverts, tv);
 
-   const struct render r = { ctx, tv };
+   struct render r = { ctx, tv, false };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program

@@ -28,6 +28,27 @@ static inline unsigned clip_mask(const float *p)
    return m;
 }
 
+/* User planes: bit 6 + i when the plane distance is negative, the distance
+ * computed as a chain of fused multiply-adds in component order
+ * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; a NaN
+ * distance is inside here (the clip stage then discards the triangle). */
+static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float *p)
+{
+   unsigned m = 0, planes = ctx->Transform.ClipPlanesEnabled;
+   while (planes) {
+      const int i = __builtin_ctz(planes);
+      const float *pl = ctx->_ClipUserPlane[i];
+      planes &= planes - 1;
+      float sum = pl[0] * p[0];
+      sum = fmaf(pl[1], p[1], sum);
+      sum = fmaf(pl[2], p[2], sum);
+      sum = fmaf(pl[3], p[3], sum);
+      if (0.0f > sum)
+         m |= 1u << (6 + i);
+   }
+   return m;
+}
+
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out)
 {
@@ -54,6 +75,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
          v->clip[r] = acc;
       }
       v->mask = clip_mask(v->clip);
+      if (ctx->Transform.ClipPlanesEnabled)
+         v->mask |= user_clip_mask(ctx, v->clip);
 
       const float oow = 1.0f / v->clip[3];
       v->r.pos[0] = fmaf(v->clip[0] * oow, s[0], t[0]);
