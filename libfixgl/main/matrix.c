@@ -89,6 +89,9 @@ void GLAPIENTRY glPushMatrix(void)
       fgl_error(ctx, GL_STACK_OVERFLOW);
       return;
    }
+   /* _math_matrix_push_copy: a dirty matrix is analysed first, so both
+    * copies carry its analysed flags (ORACLE-NOTES.md "Matrices") */
+   fgl_matrix_analyse(stack->Top);
    stack->Stack[stack->Depth + 1] = stack->Stack[stack->Depth];
    stack->Depth++;
    stack->Top = &stack->Stack[stack->Depth];
