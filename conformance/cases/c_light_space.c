@@ -216,7 +216,11 @@ static void space_far_translation(fc_h *h)
  * material puts each channel of the flat result right at a rounding tie, so
  * the whole quad shows which inverse was used.  Frames: analysed by the
  * spot direction of a light whose cutoff stays 180, by glPushMatrix, by a
- * draw; not analysed, with a light position set in between. */
+ * draw; not analysed, with a light position set in between.  Then the
+ * analysed case again, followed by a glMultMatrixf of the identity (skipped)
+ * and of an identity with a -0.0 entry: Mesa compares with memcmp, so that
+ * one is multiplied, makes the matrix "general" and dirty, and the next
+ * analysis from scratch finds a translation and scale (reciprocal inverse). */
 static void space_matrix_analysed(fc_h *h)
 {
     static const GLfloat rot[16] = {
@@ -227,17 +231,21 @@ static void space_matrix_analysed(fc_h *h)
     };
     static const GLfloat dir[3] = { -0.5f, 0.4f, -0.75f };
     static const GLfloat pos[4] = { 0.3f, 0.2f, 1, 0 };
+    static const GLfloat ident[2][16] = {
+        { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 },
+        { 1, -0.0f, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 },
+    };
     glViewport(0, 0, 32, 32);
     fcu_ortho(-1, 1, -1, 1, -10, 10);
     glEnable(GL_LIGHTING);
     glEnable(GL_LIGHT0);
     lt_model(GL_LIGHT_MODEL_AMBIENT, 0, 0, 0, 1);
     lt_mat(GL_FRONT_AND_BACK, GL_DIFFUSE, 0x1.81500ep-3f, 0x1.851be2p-3f, 0x1.7d843cp-3f, 1);
-    for (int f = 0; f < 4; f++) {
+    for (int f = 0; f < 6; f++) {
         fcu_clear(0, 0, 0, 1, 1);
         glLoadIdentity();
         glMultMatrixf(rot);
-        if (f == 0)
+        if (f == 0 || f >= 4)
             glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, dir);
         if (f == 1) {
             glPushMatrix();
@@ -255,6 +263,8 @@ static void space_matrix_analysed(fc_h *h)
         glLoadIdentity();
         glTranslatef(0.05f, -0.1f, -4);
         glScalef(0x1.ab07f8p-1f, 0x1.af766cp-1f, 0x1.e40376p-2f);
+        if (f >= 4)
+            glMultMatrixf(ident[f - 4]);
         glBegin(GL_QUADS);
         glNormal3f(0, 0, 1);
         glVertex2f(-1, -1);
@@ -277,7 +287,7 @@ const fc_case fc_cases_light_space[] = {
     FC_CASE_RGBA("lighting/space_forced_separate_specular", 48, 48, 2, "lighting space specular",
                  space_forced_separate_specular),
     FC_CASE_RGBA("lighting/space_forced_local_viewer", 48, 48, 2, "lighting space viewer", space_forced_local_viewer),
-    FC_CASE_RGBA("lighting/space_matrix_analysed", 32, 32, 4, "lighting space normals",
+    FC_CASE_RGBA("lighting/space_matrix_analysed", 32, 32, 6, "lighting space normals",
                  space_matrix_analysed),
     FC_CASE_RGBA("lighting/space_far_translation", 48, 48, 2, "lighting space", space_far_translation),
     { 0 }
