@@ -206,6 +206,76 @@ static void space_far_translation(fc_h *h)
     fc_get_float(h, "GL_MODELVIEW_MATRIX", GL_MODELVIEW_MATRIX, 16);
 }
 
+/* Mesa analyses a dirty modelview at glLight(GL_SPOT_DIRECTION), at
+ * glPushMatrix and at a draw, not at glLight(GL_POSITION).  An analysis
+ * replaces the geometry flags that glMultMatrixf left ("general") with what
+ * the values show ("rotation"), and glLoadIdentity keeps them: after
+ * glLoadIdentity, glTranslatef and a non-uniform glScalef the modelview is
+ * then a "3D" matrix (adjugate inverse), else a "general" one (pivoting
+ * inverse), and the eye-space normal's z differs by one ulp.  The diffuse
+ * material puts each channel of the flat result right at a rounding tie, so
+ * the whole quad shows which inverse was used.  Frames: analysed by the
+ * spot direction of a light whose cutoff stays 180, by glPushMatrix, by a
+ * draw; not analysed, with a light position set in between.  Then the
+ * analysed case again, followed by a glMultMatrixf of the identity (skipped)
+ * and of an identity with a -0.0 entry: Mesa compares with memcmp, so that
+ * one is multiplied, makes the matrix "general" and dirty, and the next
+ * analysis from scratch finds a translation and scale (reciprocal inverse). */
+static void space_matrix_analysed(fc_h *h)
+{
+    static const GLfloat rot[16] = {
+        -0x1.892bf4p-1f, 0x1.15721p-1f, 0x1.5dc3f4p-2f, 0,
+        -0x1.f00c44p-2f, -0x1.ae2ac4p-1f, 0x1.f359b2p-3f, 0,
+        0x1.ad286cp-2f, 0x1.64b812p-6f, 0x1.d0bb54p-1f, 0,
+        0, 0, 0, 1,
+    };
+    static const GLfloat dir[3] = { -0.5f, 0.4f, -0.75f };
+    static const GLfloat pos[4] = { 0.3f, 0.2f, 1, 0 };
+    static const GLfloat ident[2][16] = {
+        { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 },
+        { 1, -0.0f, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 },
+    };
+    glViewport(0, 0, 32, 32);
+    fcu_ortho(-1, 1, -1, 1, -10, 10);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    lt_model(GL_LIGHT_MODEL_AMBIENT, 0, 0, 0, 1);
+    lt_mat(GL_FRONT_AND_BACK, GL_DIFFUSE, 0x1.81500ep-3f, 0x1.851be2p-3f, 0x1.7d843cp-3f, 1);
+    for (int f = 0; f < 6; f++) {
+        fcu_clear(0, 0, 0, 1, 1);
+        glLoadIdentity();
+        glMultMatrixf(rot);
+        if (f == 0 || f >= 4)
+            glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, dir);
+        if (f == 1) {
+            glPushMatrix();
+            glPopMatrix();
+        }
+        if (f == 2) {
+            glBegin(GL_TRIANGLES);
+            glVertex2f(5, 5);
+            glVertex2f(6, 5);
+            glVertex2f(5, 6);
+            glEnd();
+        }
+        if (f == 3)
+            glLightfv(GL_LIGHT1, GL_POSITION, pos);
+        glLoadIdentity();
+        glTranslatef(0.05f, -0.1f, -4);
+        glScalef(0x1.ab07f8p-1f, 0x1.af766cp-1f, 0x1.e40376p-2f);
+        if (f >= 4)
+            glMultMatrixf(ident[f - 4]);
+        glBegin(GL_QUADS);
+        glNormal3f(0, 0, 1);
+        glVertex2f(-1, -1);
+        glVertex2f(1, -1);
+        glVertex2f(1, 1);
+        glVertex2f(-1, 1);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_light_space[] = {
     FC_CASE_RGBA("lighting/space_object_rotate", 48, 48, 3, "lighting space", space_object_rotate),
     FC_CASE_RGBA("lighting/space_eye_unit_scale", 48, 48, 2, "lighting space", space_eye_unit_scale),
@@ -217,6 +287,8 @@ const fc_case fc_cases_light_space[] = {
     FC_CASE_RGBA("lighting/space_forced_separate_specular", 48, 48, 2, "lighting space specular",
                  space_forced_separate_specular),
     FC_CASE_RGBA("lighting/space_forced_local_viewer", 48, 48, 2, "lighting space viewer", space_forced_local_viewer),
+    FC_CASE_RGBA("lighting/space_matrix_analysed", 32, 32, 6, "lighting space normals",
+                 space_matrix_analysed),
     FC_CASE_RGBA("lighting/space_far_translation", 48, 48, 2, "lighting space", space_far_translation),
     { 0 }
 };

@@ -117,6 +117,51 @@ static void quad_strip_and_polygon_clipped(fc_h *h)
     fc_capture(h);
 }
 
+/* Three flat-shaded quads whose diagonal shows: a non-planar one (depth
+ * along the diagonal), a concave dart (coverage) and one whose 2nd and 4th
+ * vertices coincide (only the (0,2) diagonal draws anything). */
+static void flat_quads(int colour_per_vertex)
+{
+    static const float v[12][3] = {
+        { 0.05f, 0.05f, 0.9f }, { 0.45f, 0.05f, -0.9f }, { 0.45f, 0.45f, 0.9f }, { 0.05f, 0.45f, -0.9f },
+        { 0.55f, 0.55f, 0.0f }, { 0.95f, 0.55f, 0.5f }, { 0.65f, 0.65f, -0.5f }, { 0.55f, 0.95f, 0.2f },
+        { 0.55f, 0.05f, 0.3f }, { 0.75f, 0.25f, -0.6f }, { 0.95f, 0.45f, 0.3f }, { 0.75f, 0.25f, -0.6f },
+    };
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 12; i++) {
+        if (colour_per_vertex)
+            glColor3f(i & 1 ? 1.0f : 0.25f, i & 2 ? 1.0f : 0.5f, 0.75f);
+        glVertex3fv(v[i]);
+    }
+    glEnd();
+}
+
+/* The direct path's quad diagonal follows the setup's constant-interpolated
+ * inputs, not the shade model: a flat batch whose colour is not a
+ * fragment-shader input (unlit, colour outside the vertex format) is split
+ * (0,1,2)+(0,2,3) like a smooth one (lp_setup_vbuf.c rect() when
+ * !uses_constant_interp). */
+static void quad_flat_constant_colour(fc_h *h)
+{
+    glViewport(0, 0, 32, 32);
+    fcu_ortho(0, 1, 0, 1, -1, 1);
+    glEnable(GL_DEPTH_TEST);
+    glShadeModel(GL_FLAT);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(0.25f, 0.5f, 0.75f);
+    flat_quads(0);                               /* colour constant: (0,2) */
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    flat_quads(1);                               /* flat colour input: (1,3) */
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LIGHTING);                       /* lit: always an input */
+    glEnable(GL_LIGHT0);
+    glNormal3f(0, 0, 1);
+    flat_quads(0);
+    fc_capture(h);
+}
+
 /* A large smooth triangle with very different w per vertex. */
 static void persp_colour(fc_h *h)
 {
@@ -174,6 +219,8 @@ const fc_case fc_cases_shade[] = {
                  quad_clipped_separate_begin),
     FC_CASE_RGBA("core/quad_strip_polygon_clipped", 32, 32, 1, "core shade quad clip",
                  quad_strip_and_polygon_clipped),
+    FC_CASE_RGBA("core/quad_diagonal_flat_constant_colour", 32, 32, 3, "core shade quad",
+                 quad_flat_constant_colour),
     FC_CASE_RGBA("core/perspective_colour_large", 128, 128, 1, "core shade perspective", persp_colour),
     FC_CASE_RGBA("core/colour_rounding_ties", 64, 64, 1, "core shade", colour_ties),
     { 0 }

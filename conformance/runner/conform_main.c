@@ -356,12 +356,7 @@ int main(int argc, char **argv)
     free(known.names);
     if (rc != 0 || bad < 0)
         return 2;
-    /* FIXGL_CONFORM_STALE_OK=1 (the sanitized CI pass only, see .ci/run):
-     * a listed case that matches is reported but does not fail. */
-    if (o.known) {
-        const char *stale_ok = getenv("FIXGL_CONFORM_STALE_OK");
-        const int stale_fails = !(stale_ok && strcmp(stale_ok, "1") == 0);
-        return (c.unexpected || (stale_fails && c.stale)) ? 1 : 0;
-    }
+    if (o.known)
+        return (c.unexpected || c.stale) ? 1 : 0;
     return bad ? 1 : 0;
 }

@@ -111,6 +111,11 @@ void GLAPIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat *params)
       params = temp;
       break;
    case GL_SPOT_DIRECTION:
+      /* Mesa analyses a dirty modelview here (light.c:_mesa_Lightfv), which
+       * resets its geometry flags to what its values show; they outlive a
+       * glLoadIdentity and choose the kind of inverse of later matrices
+       * (ORACLE-NOTES.md "Matrices") */
+      fgl_matrix_analyse(ctx->ModelviewStack.Top);
       for (int r = 0; r < 3; r++)
          temp[r] = params[0] * m[r] + params[1] * m[4 + r] + params[2] * m[8 + r];
       params = temp;

@@ -89,6 +89,9 @@ void GLAPIENTRY glPushMatrix(void)
       fgl_error(ctx, GL_STACK_OVERFLOW);
       return;
    }
+   /* _math_matrix_push_copy: a dirty matrix is analysed first, so both
+    * copies carry its analysed flags (ORACLE-NOTES.md "Matrices") */
+   fgl_matrix_analyse(stack->Top);
    stack->Stack[stack->Depth + 1] = stack->Stack[stack->Depth];
    stack->Depth++;
    stack->Top = &stack->Stack[stack->Depth];
@@ -161,11 +164,12 @@ void GLAPIENTRY glMultMatrixf(const GLfloat *m)
    if (!ctx || !m)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   /* multiplying by the identity changes nothing (Mesa's matrix_mult) */
-   bool is_identity = true;
-   for (int i = 0; i < 16; i++)
-      is_identity &= m[i] == ((i % 5) == 0 ? 1.0f : 0.0f);
-   if (is_identity)
+   /* Mesa's matrix_mult skips the identity, compared with memcmp: a -0.0
+    * entry makes it a real multiplication, which leaves the flags "general"
+    * and dirty, so the next analysis starts from scratch (ORACLE-NOTES.md
+    * "Matrices") */
+   static const float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+   if (memcmp(m, identity, sizeof(identity)) == 0)
       return;
    FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag);
    fgl_matrix_mul_floats(ctx->CurrentStack->Top, m);

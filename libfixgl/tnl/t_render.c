@@ -7,8 +7,9 @@
  *   TRIANGLE_STRIP  (i, i+1, i+2) for even i, (i+1, i, i+2) for odd i
  *   TRIANGLE_FAN    (0, i+1, i+2)
  *   POLYGON         (i+1, i+2, 0)      provoking vertex = first vertex
- *   QUADS           (0,1,2)+(0,2,3) smooth on llvmpipe's direct path,
- *                   (0,1,3)+(1,2,3) flat or through the draw pipeline
+ *   QUADS           (0,1,2)+(0,2,3) on llvmpipe's direct path,
+ *                   (0,1,3)+(1,2,3) with a flat colour input or through
+ *                   the draw pipeline
  *   QUAD_STRIP      direct:   (k,k+1,k+3) then (k+2,k,k+3)
  *                   pipeline: (k+2,k,k+3) then (k,k+1,k+3)
  * A draw goes through the draw pipeline, segment by segment (4096 vertices,
@@ -47,13 +48,14 @@ static bool segment_clipped(const struct render *r, unsigned start, unsigned cou
    return m != 0;
 }
 
-static void render_quads(struct render *r, unsigned start, unsigned count, bool flat)
+static void render_quads(struct render *r, unsigned start, unsigned count,
+                         bool constant_interp)
 {
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
       r->pipeline = segment_clipped(r, start + seg, n);
-      const bool split13 = flat || r->pipeline;
+      const bool split13 = constant_interp || r->pipeline;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
          if (split13) {
             tri(r, i, i + 1, i + 3);
@@ -89,7 +91,8 @@ static void render_quad_strip(struct render *r, unsigned start, unsigned count)
    }
 }
 
-static void render_prim(struct render *r, const struct fgl_vbo_prim *p, bool flat)
+static void render_prim(struct render *r, const struct fgl_vbo_prim *p,
+                        bool constant_interp)
 {
    const unsigned s = p->start, n = p->count;
    r->pipeline = segment_clipped(r, s, n);
@@ -115,7 +118,7 @@ static void render_prim(struct render *r, const struct fgl_vbo_prim *p, bool fla
          tri(r, s + i + 1, s + i + 2, s);
       break;
    case GL_QUADS:
-      render_quads(r, s, n, flat);
+      render_quads(r, s, n, constant_interp);
       break;
    case GL_QUAD_STRIP:
       render_quad_strip(r, s, n);
@@ -155,7 +158,17 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
       ctx->_Raster.flat_mask = flat ? 0xfu : 0u;
    else
       ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
+   /* llvmpipe's direct path draws a quad as (0,1,2)+(0,2,3) unless its
+    * setup variant has a constant-interpolated input
+    * (lp_setup_vbuf.c:lp_setup_draw_arrays, rect() when
+    * !uses_constant_interp).  Only a colour input can be one, and only with
+    * flat shading (lp_state_setup.c:lp_make_setup_variant_key,
+    * LP_INTERP_COLOR becomes LP_INTERP_CONSTANT): a flat-shaded batch whose
+    * colour is not a fragment-shader input (unlit, colour outside the
+    * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
+    * "Vertex batching"). */
+   const bool constant_interp = flat && (ctx->Light.Enabled || color_varying);
    for (unsigned i = 0; i < nprims; i++)
-      render_prim(&r, &prims[i], flat);
+      render_prim(&r, &prims[i], constant_interp);
    free(tv);
 }
