@@ -42,6 +42,8 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_depth(ctx);
    fgl_init_light(ctx);
    fgl_init_polygon(ctx);
+   fgl_init_point(ctx);
+   fgl_init_line(ctx);
    fgl_init_viewport(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;

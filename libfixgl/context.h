@@ -35,6 +35,13 @@
 #define FGL_VIEWPORT_BOUNDS_MIN        (-32768)
 #define FGL_VIEWPORT_BOUNDS_MAX        32767
 #define FGL_SUBPIXEL_BITS              8
+/* llvmpipe's point size and line width limits (lp_screen.c
+ * llvmpipe_get_paramf: 1..255 for aliased and smooth, granularity 0.1) */
+#define FGL_MIN_POINT_SIZE             1.0f
+#define FGL_MAX_POINT_SIZE             255.0f
+#define FGL_MIN_LINE_WIDTH             1.0f
+#define FGL_MAX_LINE_WIDTH             255.0f
+#define FGL_POINT_LINE_GRANULARITY     0.1f
 
 /* Dirty bits, one per group of derived state. */
 enum {
@@ -45,6 +52,8 @@ enum {
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
    FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling */
+   FGL_NEW_POINT      = 1u << 7,   /* point size, smoothing */
+   FGL_NEW_LINE       = 1u << 8,   /* line width, smoothing, stipple */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -133,6 +142,21 @@ struct fgl_polygon_attrib {
    bool CullFlag;           /* GL_CULL_FACE */
 };
 
+/* GL_POINT_BIT (main/points.c) */
+struct fgl_point_attrib {
+   float Size;              /* as given (> 0); clamped when drawn */
+   bool SmoothFlag;         /* GL_POINT_SMOOTH */
+};
+
+/* GL_LINE_BIT (main/lines.c) */
+struct fgl_line_attrib {
+   float Width;             /* as given (> 0); clamped when drawn */
+   bool SmoothFlag;         /* GL_LINE_SMOOTH */
+   bool StippleFlag;        /* GL_LINE_STIPPLE */
+   GLushort StipplePattern;
+   GLint StippleFactor;     /* clamped to [1, 256] */
+};
+
 /* GL_TRANSFORM_BIT */
 struct fgl_transform_attrib {
    GLenum MatrixMode;
@@ -175,6 +199,8 @@ struct fgl_context {
    struct fgl_depth_attrib Depth;
    struct fgl_light_attrib Light;
    struct fgl_polygon_attrib Polygon;
+   struct fgl_point_attrib Point;
+   struct fgl_line_attrib Line;
    struct fgl_transform_attrib Transform;
    struct fgl_viewport_attrib Viewport;
 
@@ -185,12 +211,15 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 46
+#define FGL_PENDING_CAPS 43
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */
    GLenum BeginMode;          /* FGL_OUTSIDE_BEGIN_END when not inside */
    struct fgl_vbo Vbo;
+   /* the draw module's line stipple counter (draw_pipe_stipple.c): reset
+    * by the first line of a primitive, kept across draws otherwise */
+   unsigned StippleCounter;
 
    /* ---- errors ---- */
    GLenum ErrorValue;

@@ -76,5 +76,16 @@ void fgl_update_state(struct fgl_context *ctx)
       /* flat_mask is set per batch by t_render_batch */
    }
 
+   if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {
+      /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
+       * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),
+       * MaxLineWidth(AA)] = [1, 255] (NaN stays NaN, as in CLAMP) */
+      struct r_state *rs = &ctx->_Raster;
+      const float size = ctx->Point.Size, width = ctx->Line.Width;
+      rs->point_size = size < 0.0f ? 0.0f : size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size;
+      rs->line_width = width < FGL_MIN_LINE_WIDTH ? FGL_MIN_LINE_WIDTH
+                     : width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width;
+   }
+
    ctx->NewState = 0;
 }

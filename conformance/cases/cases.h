@@ -29,6 +29,7 @@ extern const fc_case fc_cases_light_normal[];
 extern const fc_case fc_cases_light_mat[];
 extern const fc_case fc_cases_light_prim[];
 extern const fc_case fc_cases_light_api[];
+extern const fc_case fc_cases_points_lines[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

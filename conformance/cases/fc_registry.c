@@ -8,6 +8,7 @@ static const fc_case *const groups[] = {
     fc_cases_vertex, fc_cases_readpix, fc_cases_errors,
     fc_cases_light, fc_cases_light_space, fc_cases_light_normal,
     fc_cases_light_mat, fc_cases_light_prim, fc_cases_light_api,
+    fc_cases_points_lines,
 };
 
 size_t fc_case_count(void)

@@ -31,6 +31,10 @@ void fgl_update_lighting(struct fgl_context *ctx);
 /* main/polygon.c (GL_POLYGON_BIT) */
 void fgl_init_polygon(struct fgl_context *ctx);
 
+/* main/points.c (GL_POINT_BIT), main/lines.c (GL_LINE_BIT) */
+void fgl_init_point(struct fgl_context *ctx);
+void fgl_init_line(struct fgl_context *ctx);
+
 /* main/viewport.c (GL_VIEWPORT_BIT) */
 void fgl_init_viewport(struct fgl_context *ctx);
 void fgl_set_viewport(struct fgl_context *ctx, int x, int y, int width, int height);

@@ -89,6 +89,11 @@ struct r_state {
    bool twoside;                /* back-facing triangles use the BCOLOR slots */
    bool ccw_is_front;           /* a positive snapped area is front-facing */
    bool cull_front, cull_back;  /* faces not drawn */
+
+   /* points and lines, as the state tracker clamps them
+    * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
+   float point_size;
+   float line_width;
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.
@@ -103,6 +108,22 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
 /* Rasterize one triangle; v2 is the provoking vertex. */
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2);
+
+/* Rasterize one non-antialiased point (r_point.c; llvmpipe's legacy
+ * points, lp_setup_point.c). */
+void r_point(const struct r_state *rs, const struct r_vertex *v);
+
+/* Rasterize one non-antialiased line (r_line.c; lp_setup_line.c with the
+ * diamond-exit emulation); v1 is the provoking vertex. */
+void r_line(const struct r_state *rs, const struct r_vertex *v0, const struct r_vertex *v1);
+
+/* llvmpipe's util_iround(256 * a) (subpixel_snap of lp_setup_line.c and
+ * lp_setup_point.c): round half away from zero, then truncate. */
+static inline int32_t r_subpixel_snap(float a)
+{
+   const float f = 256.0f * a;
+   return f >= 0.0f ? (int32_t)(f + 0.5f) : (int32_t)(f - 0.5f);
+}
 
 /* Clear whole buffers (the masked/scissored clear arrives with its issue). */
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);

@@ -10,6 +10,10 @@
  *  - a NaN or infinite plane distance discards the triangle;
  *  - the result is fanned as (P[i-1], P[i], P[0]) with the provoking
  *    vertex's flat attributes on P[0].
+ * Lines are clipped parametrically (do_clip_line): each end that is outside
+ * moves to the largest exit parameter over the planes, its attributes lerped
+ * the same way; points are dropped unless the centre is inside every plane
+ * (clip_point: llvmpipe has no guard band here).
  */
 #include "tnl/t_pipeline.h"
 
@@ -148,4 +152,61 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
 
    for (unsigned i = 2; i < n; i++)
       r_triangle(rs, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+}
+
+/* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */
+static void copy_flat(const struct r_state *rs, struct t_vertex *dst, const struct t_vertex *pv)
+{
+   for (int a = 0; a < rs->num_attribs; a++)
+      if (rs->flat_mask & (1u << a))
+         for (int c = 0; c < 4; c++)
+            dst->r.attr[a][c] = pv->r.attr[a][c];
+}
+
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2])
+{
+   const struct r_state *rs = &ctx->_Raster;
+   unsigned clipmask = v0->mask | v1->mask;
+
+   out[0] = *v0;
+   out[1] = *v1;
+   if (clipmask == 0)
+      return true;
+   if (v0->mask & v1->mask)
+      return false;   /* entirely outside one plane */
+
+   /* do_clip_line: the parameters at which each end leaves the volume,
+    * plane by plane in outcode-bit order */
+   float t0 = 0.0f, t1 = 0.0f;
+   while (clipmask) {
+      const int plane_idx = __builtin_ctz(clipmask);
+      const float dp0 = dot4(v0->clip, clip_planes[plane_idx]);
+      const float dp1 = dot4(v1->clip, clip_planes[plane_idx]);
+      if (!isfinite(dp0) || !isfinite(dp1))
+         return false;   /* discard NaN */
+      if (dp1 < 0.0f) {
+         const float t = dp1 / (dp1 - dp0);
+         t1 = t1 > t ? t1 : t;   /* MAX2 */
+      }
+      if (dp0 < 0.0f) {
+         const float t = dp0 / (dp0 - dp1);
+         t0 = t0 > t ? t0 : t;
+      }
+      if (t0 + t1 >= 1.0f)
+         return false;
+      clipmask &= ~(1u << plane_idx);
+   }
+
+   /* new ends interpolated from the end they replace towards the other,
+    * with the provoking (second) vertex's flat attributes */
+   if (v0->mask) {
+      interp(ctx, &out[0], t0, v0, v1, rs->num_attribs);
+      copy_flat(rs, &out[0], v1);
+   }
+   if (v1->mask) {
+      interp(ctx, &out[1], t1, v1, v0, rs->num_attribs);
+      copy_flat(rs, &out[1], v1);
+   }
+   return true;
 }

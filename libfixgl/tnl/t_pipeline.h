@@ -32,6 +32,19 @@ void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
 void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
                      const struct t_vertex *v1, const struct t_vertex *v2);
 
+/* Clip a line (draw_pipe_clip.c:clip_line, do_clip_line); v1 is the
+ * provoking vertex.  Returns false if nothing is left, else the clipped
+ * ends in out[]. */
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2]);
+
+/* Points and lines after assembly (t_linepoint.c): clipping, then the draw
+ * module's stipple stage, then the raster core.  `first` marks the first
+ * line of a primitive (DRAW_PIPE_RESET_STIPPLE). */
+void t_point(struct fgl_context *ctx, const struct t_vertex *v);
+void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
+            bool first);
+
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);

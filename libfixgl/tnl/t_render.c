@@ -11,6 +11,8 @@
  *                   (0,1,3)+(1,2,3) flat or through the draw pipeline
  *   QUAD_STRIP      direct:   (k,k+1,k+3) then (k+2,k,k+3)
  *                   pipeline: (k+2,k,k+3) then (k,k+1,k+3)
+ *   POINTS, LINES   each vertex, each pair (i, i+1)
+ *   LINE_STRIP/LOOP (i-1, i), closed by (n-1, 0)   provoking vertex = 2nd
  * A draw goes through the draw pipeline, segment by segment (4096 vertices,
  * Mesa's vsplit), when any vertex of the segment needs clipping.
  */
@@ -23,7 +25,7 @@
 #define SEGMENT_SIZE 4096
 
 struct render {
-   const struct fgl_context *ctx;
+   struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
 };
 
@@ -112,8 +114,29 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p, bo
    case GL_QUAD_STRIP:
       render_quad_strip(r, s, n);
       break;
+   case GL_POINTS:
+      for (unsigned i = 0; i < n; i++)
+         t_point(r->ctx, &r->v[s + i]);
+      break;
+   case GL_LINES:
+      /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
+      for (unsigned i = 0; i + 1 < n; i += 2)
+         t_line(r->ctx, &r->v[s + i], &r->v[s + i + 1], true);
+      break;
+   case GL_LINE_STRIP:
+   case GL_LINE_LOOP:
+      /* draw_decompose_tmp.h: (i-1, i), the stipple counter reset by the
+       * first line only; a loop is closed by (n-1, 0).  vsplit's segments
+       * (DRAW_SPLIT_BEFORE/AFTER) and Mesa's vbo wrapping of a loop into
+       * strips keep this order and the counter, so they need no model. */
+      if (n < 2)
+         break;
+      for (unsigned i = 1; i < n; i++)
+         t_line(r->ctx, &r->v[s + i - 1], &r->v[s + i], i == 1);
+      if (p->mode == GL_LINE_LOOP)
+         t_line(r->ctx, &r->v[s + n - 1], &r->v[s], false);
+      break;
    default:
-      /* points and lines arrive with their own issue */
       break;
    }
 }

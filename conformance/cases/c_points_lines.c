@@ -1,0 +1,600 @@
+/* c_points_lines.c - points and lines (llvmpipe-facts.md §3): point sizes at
+ * subpixel positions, every line primitive flat and smooth, wide lines in
+ * every octant, the diamond-exit rule at pixel centres and edges, clipping
+ * at the frame edges, the near/far planes and w near 0, line stipple across
+ * strip segments and loops, lit points and lines, and the errors and queries
+ * of glPointSize, glLineWidth and glLineStipple. */
+#include <math.h>
+
+#include "cases.h"
+
+/* Subpixel offsets of the point and line positions: pixel centre, the
+ * pixel edges, 1/256 either side of them and a few odd fractions. */
+static const float offs[] = {
+    0.5f, 0.0f, 0.25f, 0.75f, 0.5f - 1.0f / 256, 0.5f + 1.0f / 256,
+    1.0f / 256, 1.0f - 1.0f / 256, 0.125f, 0.875f, 0.5f - 1.0f / 512, 0.3f,
+};
+#define NOFFS (int)(sizeof offs / sizeof offs[0])
+
+/* ---- points --------------------------------------------------------------- */
+
+/* A grid of points of one size: x and y take every subpixel offset, colours
+ * distinct per point, on a 12 x 12 raster of cells. */
+static void points_grid(fc_h *h, float size)
+{
+    const float cell = size < 3.0f ? 5.0f : (float)(int)(size + 3.0f);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(size);
+    glBegin(GL_POINTS);
+    for (int j = 0; j < NOFFS; j++) {
+        for (int i = 0; i < NOFFS; i++) {
+            fcu_color(i + 3 * j);
+            glVertex2f(2.0f + cell * (float)i + offs[i], 2.0f + cell * (float)j + offs[j]);
+        }
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void points_size_1(fc_h *h) { points_grid(h, 1.0f); }
+static void points_size_1_5(fc_h *h) { points_grid(h, 1.5f); }
+static void points_size_2(fc_h *h) { points_grid(h, 2.0f); }
+static void points_size_2_5(fc_h *h) { points_grid(h, 2.5f); }
+static void points_size_3(fc_h *h) { points_grid(h, 3.0f); }
+static void points_size_4(fc_h *h) { points_grid(h, 4.0f); }
+static void points_size_7_5(fc_h *h) { points_grid(h, 7.5f); }
+
+/* Sizes between the whole numbers (the .5 rounding of llvmpipe's legacy
+ * points goes down), tiny and huge sizes (clamped to 255). */
+static void points_odd_sizes(fc_h *h)
+{
+    static const float sizes[] = { 0.1f, 0.5f, 1.49f, 1.51f, 2.49f, 2.51f, 3.5f,
+                                   4.5f, 5.5f, 6.01f, 1e-6f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int i = 0; i < 11; i++) {
+        glPointSize(sizes[i]);
+        fcu_color(i);
+        glBegin(GL_POINTS);
+        glVertex2f(5.0f + 11.0f * (float)(i % 5) + 0.3f, 6.0f + 11.0f * (float)(i / 5) + 0.6f);
+        glEnd();
+    }
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(300.0f);
+    fcu_color(3);
+    glBegin(GL_POINTS);
+    glVertex2f(20.25f, 30.75f);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Smooth-shaded points with depth: colours and z from each vertex, the
+ * depth test between overlapping wide points. */
+static void points_depth(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glPointSize(9.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 24; i++) {
+        glColor4f((float)i / 23.0f, 1.0f - (float)i / 29.0f, 0.3f + (float)(i % 5) / 7.0f, 0.5f);
+        glVertex3f(4.0f + 2.3f * (float)i, 10.0f + 1.7f * (float)(i % 7), 0.9f - 0.07f * (float)(i % 11));
+    }
+    glEnd();
+    glPointSize(3.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 40; i++) {
+        glColor3f((float)(i % 3) / 2.0f, (float)(i % 5) / 4.0f, (float)(i % 7) / 6.0f);
+        glVertex3f(1.5f + 1.55f * (float)i, 40.0f + 10.0f * sinf((float)i * 0.4f), -0.9f + 0.045f * (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Perspective: points in a frustum (1/w != 1: the colour is premultiplied
+ * by 1/w and divided again), some outside the near/far planes or the
+ * sides (dropped by the centre test). */
+static void points_perspective_clip(fc_h *h)
+{
+    glViewport(0, 0, 64, 64);
+    fcu_frustum(-1, 1, -1, 1, 1, 10);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glPointSize(4.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 64; i++) {
+        const float z = -0.8f - 0.17f * (float)i;
+        const float x = -1.3f + 0.043f * (float)i * (-z);
+        const float y = 0.9f * sinf((float)i * 0.7f) * (-z);
+        glColor3f((float)(i % 4) / 3.0f, (float)(i % 6) / 5.0f, 0.77f - (float)(i % 3) / 5.0f);
+        glVertex3f(x, y, z);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Wide points whose centre is inside the frame but whose square is not,
+ * and points just outside (dropped): a smaller viewport does not cut a
+ * wide point either. */
+static void points_frame_edges(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(7.0f);
+    glBegin(GL_POINTS);
+    fcu_color(0); glVertex2f(0.5f, 0.5f);
+    fcu_color(1); glVertex2f(31.5f, 0.25f);
+    fcu_color(2); glVertex2f(0.0f, 16.0f);
+    fcu_color(3); glVertex2f(32.0f, 16.0f);           /* on the right plane: inside */
+    fcu_color(4); glVertex2f(32.01f, 20.0f);          /* outside: dropped */
+    fcu_color(5); glVertex2f(16.0f, -0.01f);          /* outside: dropped */
+    fcu_color(6); glVertex2f(16.0f, 32.0f);
+    fcu_color(7); glVertex2f(31.9f, 31.9f);
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glViewport(8, 8, 16, 16);
+    glPointSize(6.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 9; i++) {
+        fcu_color(i);
+        glVertex2f(3.5f * (float)i, 32.0f - 3.5f * (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Flat-shaded points, and the current colour (no colour in the batch). */
+static void points_flat(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_FLAT);
+    glPointSize(2.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 16; i++) {
+        glColor3f((float)i / 15.0f, 0.5f, 1.0f - (float)i / 15.0f);
+        glVertex2f(2.25f + 1.9f * (float)i, 2.75f + 1.7f * (float)i);
+    }
+    glEnd();
+    glShadeModel(GL_SMOOTH);
+    glColor3f(0.2f, 0.9f, 0.4f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 16; i++)
+        glVertex2f(29.75f - 1.9f * (float)i, 2.75f + 1.7f * (float)i);
+    glEnd();
+    fc_capture(h);
+}
+
+/* ---- lines ---------------------------------------------------------------- */
+
+static const float line_v[8][2] = {
+    { 3.5f, 4.25f }, { 27.0f, 9.5f }, { 22.3f, 28.0f }, { 5.0f, 20.5f },
+    { 14.5f, 14.5f }, { 29.75f, 30.25f }, { 2.0f, 29.0f }, { 16.0f, 2.0f },
+};
+
+static void line_prim(fc_h *h, GLenum mode, GLenum shade)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(shade);
+    glBegin(mode);
+    for (int i = 0; i < 8; i++) {
+        glColor4f((float)(i % 3) / 2.0f, (float)(i % 4) / 3.0f, (float)(7 - i) / 7.0f, (float)i / 7.0f);
+        glVertex2fv(line_v[i]);
+    }
+    glEnd();
+    fc_capture(h);
+    /* the same, 3 pixels wide */
+    fcu_clear(0, 0, 0, 0, 1);
+    glLineWidth(3.0f);
+    glBegin(mode);
+    for (int i = 0; i < 8; i++) {
+        glColor4f((float)(i % 3) / 2.0f, (float)(i % 4) / 3.0f, (float)(7 - i) / 7.0f, (float)i / 7.0f);
+        glVertex2fv(line_v[i]);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void lines_smooth(fc_h *h) { line_prim(h, GL_LINES, GL_SMOOTH); }
+static void lines_flat(fc_h *h) { line_prim(h, GL_LINES, GL_FLAT); }
+static void line_strip_smooth(fc_h *h) { line_prim(h, GL_LINE_STRIP, GL_SMOOTH); }
+static void line_strip_flat(fc_h *h) { line_prim(h, GL_LINE_STRIP, GL_FLAT); }
+static void line_loop_smooth(fc_h *h) { line_prim(h, GL_LINE_LOOP, GL_SMOOTH); }
+static void line_loop_flat(fc_h *h) { line_prim(h, GL_LINE_LOOP, GL_FLAT); }
+
+/* A star of lines from the centre in 24 directions (every octant, the
+ * axes and the diagonals), both directions of travel, at one width. */
+static void line_star(fc_h *h, float width)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glLineWidth(width);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 24; i++) {
+        const float a = (float)i * (6.2831853f / 24.0f);
+        const float r0 = 4.0f, r1 = 28.0f;
+        const float cx = 32.3f, cy = 31.6f;
+        fcu_color(i);
+        if (i & 1) {
+            glVertex2f(cx + r1 * cosf(a), cy + r1 * sinf(a));
+            glColor3f(0.1f, 0.2f, 0.3f);
+            glVertex2f(cx + r0 * cosf(a), cy + r0 * sinf(a));
+        } else {
+            glVertex2f(cx + r0 * cosf(a), cy + r0 * sinf(a));
+            glColor3f(1.0f, 0.9f, 0.8f);
+            glVertex2f(cx + r1 * cosf(a), cy + r1 * sinf(a));
+        }
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void lines_width_1(fc_h *h) { line_star(h, 1.0f); }
+static void lines_width_2(fc_h *h) { line_star(h, 2.0f); }
+static void lines_width_3(fc_h *h) { line_star(h, 3.0f); }
+static void lines_width_4(fc_h *h) { line_star(h, 4.0f); }
+static void lines_width_5(fc_h *h) { line_star(h, 5.0f); }
+static void lines_width_7(fc_h *h) { line_star(h, 7.0f); }
+static void lines_width_10(fc_h *h) { line_star(h, 10.0f); }
+static void lines_width_0_4(fc_h *h) { line_star(h, 0.4f); }
+static void lines_width_1_5(fc_h *h) { line_star(h, 1.5f); }
+static void lines_width_2_5(fc_h *h) { line_star(h, 2.5f); }
+static void lines_width_3_7(fc_h *h) { line_star(h, 3.7f); }
+
+/* Short lines whose ends sit on pixel centres, pixel edges and 1/256
+ * either side (the diamond-exit tests), in all four directions of each
+ * axis and along the diagonals. */
+static void lines_diamond(fc_h *h)
+{
+    static const float d[][2] = {
+        { 3, 0 }, { -3, 0 }, { 0, 3 }, { 0, -3 }, { 3, 1 }, { -3, -1 }, { 1, 3 }, { -1, -3 },
+        { 2, 2 }, { -2, 2 }, { 2, -2 }, { -2, -2 }, { 0.5f, 0 }, { 0, 0.5f }, { 3, -1 }, { -1, 3 },
+    };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int j = 0; j < NOFFS; j++) {
+        glBegin(GL_LINES);
+        for (int i = 0; i < 16; i++) {
+            const float x = 4.0f + 7.5f * (float)(i % 8) + offs[j];
+            const float y = 4.0f + 8.0f * (float)(i / 8) + 16.0f * (float)(j % 4) + offs[(j + i) % NOFFS];
+            fcu_color(i + j);
+            glVertex2f(x, y);
+            glVertex2f(x + d[i][0], y + d[i][1]);
+        }
+        glEnd();
+        if (j % 4 == 3) {
+            fc_capture(h);
+            fcu_clear(0, 0, 0, 0, 1);
+        }
+    }
+}
+
+/* Lines across the frame edges (cut by the draw region only when wide),
+ * and through the viewport edges of a smaller viewport (clipped there). */
+static void lines_frame_edges(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glLineWidth(5.0f);
+    glBegin(GL_LINES);
+    fcu_color(0); glVertex2f(-10.0f, 3.3f); glColor3f(0.2f, 0.7f, 1.0f); glVertex2f(40.0f, 5.1f);
+    fcu_color(1); glVertex2f(0.0f, 0.0f); glColor3f(0.9f, 0.1f, 0.4f); glVertex2f(32.0f, 32.0f);
+    fcu_color(2); glVertex2f(31.0f, -20.0f); glColor3f(0.5f, 0.5f, 0.0f); glVertex2f(29.5f, 50.0f);
+    fcu_color(3); glVertex2f(1.0f, 15.0f); glColor3f(0.0f, 0.5f, 0.5f); glVertex2f(1.0f, 40.0f);
+    fcu_color(4); glVertex2f(-5.0f, 30.5f); glColor3f(1.0f, 1.0f, 1.0f); glVertex2f(37.0f, 31.5f);
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glViewport(6, 6, 20, 20);
+    glLineWidth(3.0f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 10; i++) {
+        fcu_color(i);
+        glVertex2f(-8.0f + 5.3f * (float)i, (i & 1) ? 40.0f : -6.5f + (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Lines cut by the near and far planes in a frustum (clipped ends get
+ * window coordinates without FMA), and lines through w near 0. */
+static void lines_clip_near_far(fc_h *h)
+{
+    glViewport(0, 0, 64, 64);
+    fcu_frustum(-1, 1, -1, 1, 1, 8);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 16; i++) {
+        const float x = -0.9f + 0.12f * (float)i;
+        glColor3f(1.0f, (float)i / 15.0f, 0.0f);
+        glVertex3f(x * 0.5f, -0.4f + 0.05f * (float)i, -0.3f);                /* before near */
+        glColor3f(0.0f, 0.3f, 1.0f - (float)i / 15.0f);
+        glVertex3f(x * 9.0f, 0.3f * (float)(i % 5) - 0.2f, -12.0f);           /* beyond far */
+    }
+    glEnd();
+    glLineWidth(2.0f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 12; i++) {
+        glColor3f((float)(i % 2), (float)(i % 3) / 2.0f, 0.5f);
+        glVertex3f(-1.5f + 0.3f * (float)i, 0.4f * cosf((float)i), -0.2f - 1.2f * (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void lines_w_near_zero(fc_h *h)
+{
+    glViewport(0, 0, 64, 64);
+    fcu_ortho(-1, 1, -1, 1, -1, 1);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 12; i++) {
+        const float w = (i % 3 == 0) ? 1e-6f : (i % 3 == 1) ? -0.05f : 0.02f;
+        glColor3f(1.0f, 0.2f, (float)i / 11.0f);
+        glVertex4f(-0.8f + 0.1f * (float)i, -0.7f, 0.0f, 1.0f);
+        glColor3f(0.0f, 1.0f, 0.5f);
+        glVertex4f(0.01f * (float)(i - 6), 0.02f * (float)i, 0.0f, w);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Lines with depth: interpolated z against a depth-tested quad. */
+static void lines_depth(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glColor3f(0.3f, 0.3f, 0.3f);
+    fcu_rect(8.0f, 8.0f, 56.0f, 56.0f, 0.0f);
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 16; i++) {
+        glColor3f(1.0f, 0.0f, (float)i / 15.0f);
+        glVertex3f(2.0f + 3.7f * (float)i, 2.5f, -0.9f + 0.03f * (float)i);
+        glColor3f(0.0f, 1.0f, 0.0f);
+        glVertex3f(62.0f - 2.9f * (float)i, 61.5f, 0.95f - 0.11f * (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* A long strip and loop: past the 4096-vertex segments of Mesa's vsplit. */
+static void lines_long_loop(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_LINE_LOOP);
+    for (int i = 0; i < 5000; i++) {
+        const float a = (float)i * 0.0123f;
+        glColor3f(0.5f + 0.5f * sinf(a * 3.0f), (float)(i % 256) / 255.0f, (float)(i % 7) / 6.0f);
+        glVertex2f(32.0f + (4.0f + (float)i / 200.0f) * cosf(a), 32.0f + (4.0f + (float)i / 200.0f) * sinf(a));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* ---- stipple -------------------------------------------------------------- */
+
+static void stipple_strip(fc_h *h, int factor, GLushort pattern, GLenum mode)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(factor, pattern);
+    for (int k = 0; k < 3; k++) {
+        glBegin(mode);
+        for (int i = 0; i < 7; i++) {
+            glColor3f((float)(i % 2), (float)k / 2.0f, (float)i / 6.0f);
+            glVertex2f(3.3f + 9.1f * (float)i, 6.0f + 20.0f * (float)k + ((i & 1) ? 9.7f : 0.4f));
+        }
+        glEnd();
+    }
+    fc_capture(h);
+}
+
+static void stipple_strip_f1(fc_h *h) { stipple_strip(h, 1, 0x0f0f, GL_LINE_STRIP); }
+static void stipple_strip_f2(fc_h *h) { stipple_strip(h, 2, 0x3c5b, GL_LINE_STRIP); }
+static void stipple_strip_f3(fc_h *h) { stipple_strip(h, 3, 0xaaaa, GL_LINE_STRIP); }
+static void stipple_loop_f2(fc_h *h) { stipple_strip(h, 2, 0x1337, GL_LINE_LOOP); }
+static void stipple_lines_f1(fc_h *h) { stipple_strip(h, 1, 0x00ff, GL_LINES); }
+
+/* Stipple with wide and flat-shaded lines, a pattern of all ones (no
+ * stippling), and a clipped strip (clipping comes first). */
+static void stipple_mixed(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x7777);
+    glLineWidth(3.0f);
+    glShadeModel(GL_FLAT);
+    glBegin(GL_LINE_LOOP);
+    for (int i = 0; i < 6; i++) {
+        fcu_color(i);
+        glVertex2f(32.0f + 24.0f * cosf((float)i * 1.047f), 32.0f + 24.0f * sinf((float)i * 1.047f));
+    }
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glLineWidth(1.0f);
+    glLineStipple(4, 0xffff);
+    glBegin(GL_LINES);
+    glColor3f(1, 0, 0); glVertex2f(2.0f, 2.0f);
+    glColor3f(0, 1, 0); glVertex2f(60.0f, 30.0f);
+    glEnd();
+    glLineStipple(2, 0x5f5f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 8; i++) {
+        glColor3f((float)(i % 2), 0.5f, (float)i / 7.0f);
+        glVertex2f(-20.0f + 14.0f * (float)i, 40.0f + ((i & 1) ? 20.0f : -5.0f));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* ---- lit points and lines -------------------------------------------------- */
+
+static void lit_points_lines(fc_h *h)
+{
+    static const float pos[4] = { 0.3f, 0.5f, 1.0f, 0.0f };
+    static const float diff[4] = { 0.9f, 0.7f, 0.2f, 1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightfv(GL_LIGHT0, GL_POSITION, pos);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, diff);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    glPointSize(3.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 16; i++) {
+        glNormal3f(cosf((float)i * 0.4f), sinf((float)i * 0.4f), (float)(i % 3) - 1.0f);
+        glVertex2f(3.5f + 3.7f * (float)i, 5.5f);
+    }
+    glEnd();
+    glLineWidth(2.0f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 12; i++) {
+        glNormal3f(sinf((float)i * 0.5f), 0.3f, cosf((float)i * 0.5f));
+        glVertex2f(3.0f + 5.0f * (float)i, 20.0f + ((i & 1) ? 12.0f : 0.0f));
+    }
+    glEnd();
+    glShadeModel(GL_FLAT);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 8; i++) {
+        glNormal3f(0.0f, (float)i / 7.0f, 1.0f - (float)i / 7.0f);
+        glVertex2f(3.0f + 7.0f * (float)i, 40.0f);
+        glNormal3f(1.0f, 0.0f, (float)i / 7.0f);
+        glVertex2f(7.0f + 7.0f * (float)i, 60.0f);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* ---- errors and queries ----------------------------------------------------- */
+
+static void point_line_state(fc_h *h)
+{
+    fc_get_float(h, "GL_POINT_SIZE", GL_POINT_SIZE, 1);
+    fc_get_float(h, "GL_POINT_SIZE_RANGE", GL_POINT_SIZE_RANGE, 2);
+    fc_get_float(h, "GL_POINT_SIZE_GRANULARITY", GL_POINT_SIZE_GRANULARITY, 1);
+    fc_get_double(h, "GL_POINT_SIZE_GRANULARITY (double)", GL_POINT_SIZE_GRANULARITY, 1);
+    fc_get_float(h, "GL_ALIASED_POINT_SIZE_RANGE", GL_ALIASED_POINT_SIZE_RANGE, 2);
+    fc_get_float(h, "GL_SMOOTH_POINT_SIZE_RANGE", GL_SMOOTH_POINT_SIZE_RANGE, 2);
+    fc_get_float(h, "GL_LINE_WIDTH", GL_LINE_WIDTH, 1);
+    fc_get_float(h, "GL_LINE_WIDTH_RANGE", GL_LINE_WIDTH_RANGE, 2);
+    fc_get_float(h, "GL_LINE_WIDTH_GRANULARITY", GL_LINE_WIDTH_GRANULARITY, 1);
+    fc_get_float(h, "GL_ALIASED_LINE_WIDTH_RANGE", GL_ALIASED_LINE_WIDTH_RANGE, 2);
+    fc_get_float(h, "GL_SMOOTH_LINE_WIDTH_RANGE", GL_SMOOTH_LINE_WIDTH_RANGE, 2);
+    fc_get_float(h, "GL_SMOOTH_LINE_WIDTH_GRANULARITY", GL_SMOOTH_LINE_WIDTH_GRANULARITY, 1);
+    fc_get_integer(h, "GL_LINE_STIPPLE_PATTERN", GL_LINE_STIPPLE_PATTERN, 1);
+    fc_get_integer(h, "GL_LINE_STIPPLE_REPEAT", GL_LINE_STIPPLE_REPEAT, 1);
+    fc_is_enabled(h, "GL_POINT_SMOOTH", GL_POINT_SMOOTH);
+    fc_is_enabled(h, "GL_LINE_SMOOTH", GL_LINE_SMOOTH);
+    fc_is_enabled(h, "GL_LINE_STIPPLE", GL_LINE_STIPPLE);
+    fc_get_boolean(h, "GL_LINE_STIPPLE (boolean)", GL_LINE_STIPPLE, 1);
+
+    glPointSize(0.0f); fc_error(h, "glPointSize(0)");
+    glPointSize(-2.0f); fc_error(h, "glPointSize(-2)");
+    glPointSize(NAN); fc_error(h, "glPointSize(NaN)");
+    glPointSize(1000.0f); fc_error(h, "glPointSize(1000)");
+    fc_get_float(h, "GL_POINT_SIZE 1000", GL_POINT_SIZE, 1);
+    fc_get_integer(h, "GL_POINT_SIZE int", GL_POINT_SIZE, 1);
+    glPointSize(2.6f); fc_error(h, "glPointSize(2.6)");
+    fc_get_integer(h, "GL_POINT_SIZE 2.6 int", GL_POINT_SIZE, 1);
+    fc_get_double(h, "GL_POINT_SIZE 2.6 double", GL_POINT_SIZE, 1);
+
+    glLineWidth(0.0f); fc_error(h, "glLineWidth(0)");
+    glLineWidth(-1.0f); fc_error(h, "glLineWidth(-1)");
+    glLineWidth(0.25f); fc_error(h, "glLineWidth(0.25)");
+    fc_get_float(h, "GL_LINE_WIDTH 0.25", GL_LINE_WIDTH, 1);
+    glLineWidth(999.0f); fc_error(h, "glLineWidth(999)");
+    fc_get_float(h, "GL_LINE_WIDTH 999", GL_LINE_WIDTH, 1);
+    fc_get_boolean(h, "GL_LINE_WIDTH bool", GL_LINE_WIDTH, 1);
+
+    glLineStipple(0, 0x1234); fc_error(h, "glLineStipple(0, ...)");
+    fc_get_integer(h, "GL_LINE_STIPPLE_REPEAT 0", GL_LINE_STIPPLE_REPEAT, 1);
+    fc_get_integer(h, "GL_LINE_STIPPLE_PATTERN 0x1234", GL_LINE_STIPPLE_PATTERN, 1);
+    glLineStipple(-5, 0xfedc); fc_error(h, "glLineStipple(-5, ...)");
+    fc_get_integer(h, "GL_LINE_STIPPLE_REPEAT -5", GL_LINE_STIPPLE_REPEAT, 1);
+    fc_get_float(h, "GL_LINE_STIPPLE_PATTERN float", GL_LINE_STIPPLE_PATTERN, 1);
+    glLineStipple(1000, 0x8001); fc_error(h, "glLineStipple(1000, ...)");
+    fc_get_integer(h, "GL_LINE_STIPPLE_REPEAT 1000", GL_LINE_STIPPLE_REPEAT, 1);
+    fc_get_boolean(h, "GL_LINE_STIPPLE_PATTERN bool", GL_LINE_STIPPLE_PATTERN, 1);
+
+    glEnable(GL_POINT_SMOOTH); fc_error(h, "glEnable(GL_POINT_SMOOTH)");
+    glEnable(GL_LINE_SMOOTH); fc_error(h, "glEnable(GL_LINE_SMOOTH)");
+    glEnable(GL_LINE_STIPPLE); fc_error(h, "glEnable(GL_LINE_STIPPLE)");
+    fc_is_enabled(h, "GL_POINT_SMOOTH on", GL_POINT_SMOOTH);
+    fc_is_enabled(h, "GL_LINE_SMOOTH on", GL_LINE_SMOOTH);
+    fc_is_enabled(h, "GL_LINE_STIPPLE on", GL_LINE_STIPPLE);
+    glDisable(GL_LINE_SMOOTH);
+    fc_is_enabled(h, "GL_LINE_SMOOTH off", GL_LINE_SMOOTH);
+
+    /* not allowed between glBegin and glEnd: state unchanged */
+    glBegin(GL_POINTS); glPointSize(5.0f); glEnd(); fc_error(h, "glPointSize in begin/end");
+    glBegin(GL_LINES); glLineWidth(5.0f); glEnd(); fc_error(h, "glLineWidth in begin/end");
+    glBegin(GL_LINES); glLineStipple(3, 0x0f0f); glEnd(); fc_error(h, "glLineStipple in begin/end");
+    fc_get_float(h, "GL_POINT_SIZE after", GL_POINT_SIZE, 1);
+    fc_get_float(h, "GL_LINE_WIDTH after", GL_LINE_WIDTH, 1);
+    fc_get_integer(h, "GL_LINE_STIPPLE_REPEAT after", GL_LINE_STIPPLE_REPEAT, 1);
+    fc_get_integer(h, "GL_LINE_STIPPLE_PATTERN after", GL_LINE_STIPPLE_PATTERN, 1);
+    /* an unchanged size is not checked */
+    glLineWidth(999.0f); fc_error(h, "glLineWidth unchanged");
+}
+
+const fc_case fc_cases_points_lines[] = {
+    FC_CASE_RGBA("raster/points_size_1", 64, 64, 1, "raster points", points_size_1),
+    FC_CASE_RGBA("raster/points_size_1_5", 64, 64, 1, "raster points", points_size_1_5),
+    FC_CASE_RGBA("raster/points_size_2", 64, 64, 1, "raster points", points_size_2),
+    FC_CASE_RGBA("raster/points_size_2_5", 64, 64, 1, "raster points", points_size_2_5),
+    FC_CASE_RGBA("raster/points_size_3", 64, 64, 1, "raster points", points_size_3),
+    FC_CASE_RGBA("raster/points_size_4", 96, 96, 1, "raster points", points_size_4),
+    FC_CASE_RGBA("raster/points_size_7_5", 128, 128, 1, "raster points", points_size_7_5),
+    FC_CASE_RGBA("raster/points_odd_sizes", 64, 64, 2, "raster points", points_odd_sizes),
+    FC_CASE_RGBA("raster/points_depth", 64, 64, 1, "raster points depth", points_depth),
+    FC_CASE_RGBA("raster/points_perspective_clip", 64, 64, 1, "raster points clip", points_perspective_clip),
+    FC_CASE_RGBA("raster/points_frame_edges", 32, 32, 2, "raster points clip", points_frame_edges),
+    FC_CASE_RGBA("raster/points_flat", 32, 32, 1, "raster points", points_flat),
+    FC_CASE_RGBA("raster/lines_smooth", 32, 32, 2, "raster lines", lines_smooth),
+    FC_CASE_RGBA("raster/lines_flat", 32, 32, 2, "raster lines", lines_flat),
+    FC_CASE_RGBA("raster/line_strip_smooth", 32, 32, 2, "raster lines", line_strip_smooth),
+    FC_CASE_RGBA("raster/line_strip_flat", 32, 32, 2, "raster lines", line_strip_flat),
+    FC_CASE_RGBA("raster/line_loop_smooth", 32, 32, 2, "raster lines", line_loop_smooth),
+    FC_CASE_RGBA("raster/line_loop_flat", 32, 32, 2, "raster lines", line_loop_flat),
+    FC_CASE_RGBA("raster/lines_width_1", 64, 64, 1, "raster lines", lines_width_1),
+    FC_CASE_RGBA("raster/lines_width_2", 64, 64, 1, "raster lines", lines_width_2),
+    FC_CASE_RGBA("raster/lines_width_3", 64, 64, 1, "raster lines", lines_width_3),
+    FC_CASE_RGBA("raster/lines_width_4", 64, 64, 1, "raster lines", lines_width_4),
+    FC_CASE_RGBA("raster/lines_width_5", 64, 64, 1, "raster lines", lines_width_5),
+    FC_CASE_RGBA("raster/lines_width_7", 64, 64, 1, "raster lines", lines_width_7),
+    FC_CASE_RGBA("raster/lines_width_10", 64, 64, 1, "raster lines", lines_width_10),
+    FC_CASE_RGBA("raster/lines_width_0_4", 64, 64, 1, "raster lines", lines_width_0_4),
+    FC_CASE_RGBA("raster/lines_width_1_5", 64, 64, 1, "raster lines", lines_width_1_5),
+    FC_CASE_RGBA("raster/lines_width_2_5", 64, 64, 1, "raster lines", lines_width_2_5),
+    FC_CASE_RGBA("raster/lines_width_3_7", 64, 64, 1, "raster lines", lines_width_3_7),
+    FC_CASE_RGBA("raster/lines_diamond_exit", 64, 64, 3, "raster lines", lines_diamond),
+    FC_CASE_RGBA("raster/lines_frame_edges", 32, 32, 2, "raster lines clip", lines_frame_edges),
+    FC_CASE_RGBA("raster/lines_clip_near_far", 64, 64, 1, "raster lines clip", lines_clip_near_far),
+    FC_CASE_RGBA("raster/lines_w_near_zero", 64, 64, 1, "raster lines clip", lines_w_near_zero),
+    FC_CASE_RGBA("raster/lines_depth", 64, 64, 1, "raster lines depth", lines_depth),
+    FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
+    FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
+    FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
+    FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),
+    FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
+    FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
+    FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
+    FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 1, "raster lighting", lit_points_lines),
+    FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
+    { 0 }
+};
