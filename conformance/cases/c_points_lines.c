@@ -480,6 +480,138 @@ static void lit_points_lines(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- smooth points and lines (no blending yet: the coverage shows in the
+ * alpha channel) ------------------------------------------------------------ */
+
+static void points_smooth(fc_h *h)
+{
+    static const float sizes[] = { 1.0f, 2.0f, 2.5f, 3.0f, 4.0f, 5.5f, 7.5f, 9.0f, 12.0f, 15.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_POINT_SMOOTH);
+    for (int i = 0; i < 10; i++) {
+        glPointSize(sizes[i]);
+        glBegin(GL_POINTS);
+        for (int j = 0; j < 4; j++) {
+            glColor4f((float)i / 9.0f, (float)j / 3.0f, 0.6f, j & 1 ? 1.0f : 0.5f);
+            glVertex2f(8.0f + 16.0f * (float)j + offs[(i + j) % NOFFS],
+                       6.0f + 12.5f * (float)i + offs[(3 * i + j) % NOFFS]);
+        }
+        glEnd();
+    }
+    fc_capture(h);
+}
+
+static void points_smooth_perspective(fc_h *h)
+{
+    glViewport(0, 0, 64, 64);
+    fcu_frustum(-1, 1, -1, 1, 1, 10);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_POINT_SMOOTH);
+    glShadeModel(GL_FLAT);
+    glPointSize(6.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 40; i++) {
+        const float z = -1.2f - 0.2f * (float)i;
+        glColor4f((float)(i % 4) / 3.0f, (float)(i % 6) / 5.0f, 0.7f, 0.3f + (float)(i % 3) * 0.3f);
+        glVertex3f((-0.9f + 0.045f * (float)i) * (-z), 0.7f * sinf((float)i) * (-z), z);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void lines_smooth_aa(fc_h *h, float width)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_SMOOTH);
+    glLineWidth(width);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 16; i++) {
+        const float a = (float)i * (6.2831853f / 16.0f) + 0.1f;
+        glColor4f(1.0f, (float)i / 15.0f, 0.2f, 1.0f);
+        glVertex2f(32.0f + 5.0f * cosf(a), 32.0f + 5.0f * sinf(a));
+        glColor4f(0.2f, 0.4f, 1.0f, 0.6f);
+        glVertex2f(32.0f + 28.0f * cosf(a), 32.0f + 28.0f * sinf(a));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void lines_smooth_w1(fc_h *h) { lines_smooth_aa(h, 1.0f); }
+static void lines_smooth_w1_5(fc_h *h) { lines_smooth_aa(h, 1.5f); }
+static void lines_smooth_w3(fc_h *h) { lines_smooth_aa(h, 3.0f); }
+static void lines_smooth_w6(fc_h *h) { lines_smooth_aa(h, 6.0f); }
+
+/* Smooth strips and loops: flat shading, very short segments (half length
+ * doubled instead of extended), stipple with rectangular lengths, and
+ * clipped ends. */
+static void lines_smooth_mixed(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_SMOOTH);
+    glShadeModel(GL_FLAT);
+    glBegin(GL_LINE_LOOP);
+    for (int i = 0; i < 7; i++) {
+        fcu_color(i);
+        glVertex2f(32.0f + 20.0f * cosf((float)i * 0.9f), 32.0f + 20.0f * sinf((float)i * 0.9f));
+    }
+    glEnd();
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 8; i++) {
+        glColor4f(1.0f, 1.0f, (float)i / 7.0f, 1.0f);
+        glVertex2f(4.0f + 7.0f * (float)i, 4.0f);
+        glVertex2f(4.0f + 7.0f * (float)i + 0.1f * (float)i, 4.0f + 0.05f * (float)i);
+    }
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x33ff);
+    glLineWidth(2.0f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 9; i++) {
+        glColor4f((float)(i % 2), 0.5f, (float)i / 8.0f, 0.8f);
+        glVertex2f(-10.0f + 10.0f * (float)i, 32.0f + ((i & 1) ? 25.0f : -20.0f));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Smooth points and lines with two-sided lighting: the draw module's quads
+ * use its no-cull rasterizer, so the front colour on every quad. */
+static void smooth_lit_twoside(fc_h *h)
+{
+    static const float pos[4] = { -0.3f, 0.5f, 1.0f, 0.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightfv(GL_LIGHT0, GL_POSITION, pos);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_LINE_SMOOTH);
+    glPointSize(5.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 8; i++) {
+        glNormal3f(cosf((float)i), sinf((float)i), 0.5f);
+        glVertex2f(5.0f + 7.5f * (float)i, 8.0f);
+    }
+    glEnd();
+    glLineWidth(2.0f);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 8; i++) {
+        glNormal3f(sinf((float)i), 0.2f, cosf((float)i));
+        glVertex2f(5.0f + 7.5f * (float)i, 30.0f + ((i & 1) ? 20.0f : 0.0f));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
 /* ---- errors and queries ----------------------------------------------------- */
 
 static void point_line_state(fc_h *h)
@@ -595,6 +727,14 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
     FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 1, "raster lighting", lit_points_lines),
+    FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
+    FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),
+    FC_CASE_RGBA("raster/lines_smooth_w1", 64, 64, 1, "raster lines smooth", lines_smooth_w1),
+    FC_CASE_RGBA("raster/lines_smooth_w1_5", 64, 64, 1, "raster lines smooth", lines_smooth_w1_5),
+    FC_CASE_RGBA("raster/lines_smooth_w3", 64, 64, 1, "raster lines smooth", lines_smooth_w3),
+    FC_CASE_RGBA("raster/lines_smooth_w6", 64, 64, 1, "raster lines smooth", lines_smooth_w6),
+    FC_CASE_RGBA("raster/lines_smooth_mixed", 64, 64, 2, "raster lines smooth stipple clip", lines_smooth_mixed),
+    FC_CASE_RGBA("raster/smooth_lit_twoside", 64, 64, 1, "raster smooth lighting", smooth_lit_twoside),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
     { 0 }
 };

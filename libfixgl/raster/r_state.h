@@ -12,16 +12,18 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#define R_MAX_ATTRIBS 4
+#define R_MAX_ATTRIBS 5
 
 /* Varying slots: the colour written to the buffer, the secondary colour
  * the fragment stage adds to it (separate specular), and their back-face
- * versions for two-sided lighting. */
+ * versions for two-sided lighting; the coverage coordinates of the draw
+ * module's smooth point and line quads (tnl/t_linepoint.c). */
 enum {
    R_ATTR_COLOR0,
    R_ATTR_COLOR1,
    R_ATTR_BCOLOR0,
    R_ATTR_BCOLOR1,
+   R_ATTR_AA,
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been
@@ -29,6 +31,7 @@ enum {
 enum {
    R_FS_COLOR0,
    R_FS_COLOR1,
+   R_FS_AA,          /* the aapoint/aaline generic input */
    R_FS_NUM_INPUTS,
 };
 
@@ -40,6 +43,7 @@ static inline int r_fs_slot(int input, bool back)
    switch (input) {
    case R_FS_COLOR0: return back ? R_ATTR_BCOLOR0 : R_ATTR_COLOR0;
    case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
+   case R_FS_AA:     return R_ATTR_AA;
    default:          return input;
    }
 }
@@ -56,6 +60,14 @@ enum r_zs_format {
 /* Comparison functions, in GL's order (GL_NEVER + n). */
 enum r_func {
    R_NEVER, R_LESS, R_EQUAL, R_LEQUAL, R_GREATER, R_NOTEQUAL, R_GEQUAL, R_ALWAYS,
+};
+
+/* Coverage lowering of the fragment shader for the draw module's smooth
+ * point and line quads (r_aa.c). */
+enum r_aa_mode {
+   R_AA_NONE,
+   R_AA_POINT,       /* nir_lower_aapoint_fs */
+   R_AA_LINE,        /* nir_lower_aaline_fs */
 };
 
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
@@ -94,6 +106,10 @@ struct r_state {
     * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
    float point_size;
    float line_width;
+
+   /* smooth point/line quads: the fragment shader's coverage lowering
+    * (R_FS_AA is then one of fs_inputs) */
+   enum r_aa_mode aa;
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.
@@ -104,6 +120,11 @@ struct r_state {
  *   before clamping. */
 void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4]);
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4]);
+
+/* The smooth point/line lowering appended to the fragment shader
+ * (r_aa.c): false if the fragment is discarded, else color's alpha is
+ * scaled by the coverage computed from the R_FS_AA input. */
+bool r_fragment_aa(const struct r_state *rs, const float in[][4], float color[4]);
 
 /* Rasterize one triangle; v2 is the provoking vertex. */
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
