@@ -381,6 +381,39 @@ static void lines_long_loop(fc_h *h)
     fc_capture(h);
 }
 
+/* Loops and strips longer than Mesa's 512 KiB vertex buffer: the vbo draws
+ * a wrapped loop as strips (later sections from their second vertex, the
+ * loop's first vertex appended at glEnd) and every section is a new draw
+ * (the stipple counter restarts).  Jumping vertices make every segment
+ * visible. */
+static void lines_wrapped(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_LINE_LOOP);
+    for (int i = 0; i < 60000; i++) {
+        const float a = (float)i * 2.39996f;
+        const float r = 4.0f + (float)(i % 97) * 0.28f;
+        glColor3f((float)(i % 5) / 4.0f, (float)(i % 256) / 255.0f, (float)(i % 3) / 2.0f);
+        glVertex2f(32.0f + r * cosf(a), 32.0f + r * sinf(a));
+    }
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0f0f);
+    for (int k = 0; k < 2; k++) {
+        glBegin(k ? GL_LINE_LOOP : GL_LINE_STRIP);
+        for (int i = 0; i < 40000; i++) {
+            const float t = (float)i / 40000.0f;
+            glColor3f(t, 1.0f - t, (float)k);
+            glVertex2f(2.0f + 60.0f * t + (float)(i % 2) * 0.01f, k ? 40.0f + 20.0f * t : 6.0f + 20.0f * t);
+        }
+        glEnd();
+    }
+    fc_capture(h);
+}
+
 /* ---- stipple -------------------------------------------------------------- */
 
 static void stipple_strip(fc_h *h, int factor, GLushort pattern, GLenum mode)
@@ -720,6 +753,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_w_near_zero", 64, 64, 1, "raster lines clip", lines_w_near_zero),
     FC_CASE_RGBA("raster/lines_depth", 64, 64, 1, "raster lines depth", lines_depth),
     FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
+    FC_CASE_RGBA("raster/lines_wrapped_vertex_buffer", 64, 64, 2, "raster lines stipple vbo", lines_wrapped),
     FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
     FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
     FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),
