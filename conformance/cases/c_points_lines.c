@@ -148,6 +148,29 @@ static void points_frame_edges(fc_h *h)
     fc_capture(h);
 }
 
+/* Points with w near 0 and negative w (outside: dropped), and exactly on
+ * the clip boundaries. */
+static void points_w_near_zero(fc_h *h)
+{
+    glViewport(0, 0, 64, 64);
+    fcu_ortho(-1, 1, -1, 1, -1, 1);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(3.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 24; i++) {
+        const float w = (i % 4 == 0) ? 1e-6f : (i % 4 == 1) ? -0.05f : (i % 4 == 2) ? 0.02f : 1.0f;
+        glColor3f(1.0f, (float)i / 23.0f, 0.3f);
+        glVertex4f(0.0008f * (float)(i - 12) * w * 40.0f, 0.001f * (float)i * w * 30.0f, 0.0f, w);
+    }
+    glColor3f(0.0f, 1.0f, 1.0f);
+    glVertex4f(1.0f, 0.5f, 0.0f, 1.0f);
+    glVertex4f(-0.5f, -1.0f, 1.0f, 1.0f);
+    glVertex4f(0.5f, 0.5f, -1.0f, 1.0f);
+    glVertex4f(0.25f, 0.5f, 1.0001f, 1.0f);
+    glEnd();
+    fc_capture(h);
+}
+
 /* Flat-shaded points, and the current colour (no colour in the batch). */
 static void points_flat(fc_h *h)
 {
@@ -240,7 +263,10 @@ static void lines_width_2(fc_h *h) { line_star(h, 2.0f); }
 static void lines_width_3(fc_h *h) { line_star(h, 3.0f); }
 static void lines_width_4(fc_h *h) { line_star(h, 4.0f); }
 static void lines_width_5(fc_h *h) { line_star(h, 5.0f); }
+static void lines_width_6(fc_h *h) { line_star(h, 6.0f); }
 static void lines_width_7(fc_h *h) { line_star(h, 7.0f); }
+static void lines_width_8(fc_h *h) { line_star(h, 8.0f); }
+static void lines_width_9(fc_h *h) { line_star(h, 9.0f); }
 static void lines_width_10(fc_h *h) { line_star(h, 10.0f); }
 static void lines_width_0_4(fc_h *h) { line_star(h, 0.4f); }
 static void lines_width_1_5(fc_h *h) { line_star(h, 1.5f); }
@@ -645,6 +671,65 @@ static void smooth_lit_twoside(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- many pseudo-random points and lines (a fixed LCG, so the same
+ * calls reach both renderers) ---------------------------------------------- */
+
+static unsigned lcg_next(unsigned *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return *s >> 8;
+}
+
+static float lcg_float(unsigned *s, float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(lcg_next(s) & 0xffff) / 65536.0f;
+}
+
+/* mode 0: lines, 1: points, 2: stippled strips, 3: smooth lines and points */
+static void random_prims(fc_h *h, int mode)
+{
+    unsigned seed = 12345u + (unsigned)mode * 777u;
+    fc_pixel_ortho(h);
+    for (int frame = 0; frame < 4; frame++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (mode == 2)
+            glEnable(GL_LINE_STIPPLE);
+        if (mode == 3) {
+            glEnable(GL_LINE_SMOOTH);
+            glEnable(GL_POINT_SMOOTH);
+        }
+        for (int n = 0; n < 60; n++) {
+            const float width = (lcg_next(&seed) & 3) == 0 ? lcg_float(&seed, 0.5f, 8.0f)
+                                                            : (float)(1 + lcg_next(&seed) % 6);
+            glLineWidth(width);
+            glPointSize(width);
+            glShadeModel(lcg_next(&seed) & 1 ? GL_FLAT : GL_SMOOTH);
+            if (mode == 2)
+                glLineStipple((int)(1 + lcg_next(&seed) % 3), (GLushort)lcg_next(&seed));
+            const GLenum prim = mode == 1 ? GL_POINTS
+                              : mode == 2 ? (lcg_next(&seed) & 1 ? GL_LINE_STRIP : GL_LINE_LOOP)
+                              : mode == 3 ? (lcg_next(&seed) & 1 ? GL_POINTS : GL_LINES)
+                              : GL_LINES;
+            const int nv = mode == 2 ? 3 + (int)(lcg_next(&seed) % 4) : 2;
+            glBegin(prim);
+            for (int i = 0; i < nv; i++) {
+                glColor4f(lcg_float(&seed, 0, 1), lcg_float(&seed, 0, 1), lcg_float(&seed, 0, 1),
+                          lcg_float(&seed, 0.2f, 1));
+                const float x = (float)(lcg_next(&seed) % (72 * 16)) / 16.0f - 4.0f;
+                const float y = (float)(lcg_next(&seed) % (72 * 16)) / 16.0f - 4.0f;
+                glVertex3f(x, y, lcg_float(&seed, -1, 1));
+            }
+            glEnd();
+        }
+        fc_capture(h);
+    }
+}
+
+static void random_lines(fc_h *h) { random_prims(h, 0); }
+static void random_points(fc_h *h) { random_prims(h, 1); }
+static void random_stipple(fc_h *h) { random_prims(h, 2); }
+static void random_smooth(fc_h *h) { random_prims(h, 3); }
+
 /* ---- errors and queries ----------------------------------------------------- */
 
 static void point_line_state(fc_h *h)
@@ -729,6 +814,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/points_depth", 64, 64, 1, "raster points depth", points_depth),
     FC_CASE_RGBA("raster/points_perspective_clip", 64, 64, 1, "raster points clip", points_perspective_clip),
     FC_CASE_RGBA("raster/points_frame_edges", 32, 32, 2, "raster points clip", points_frame_edges),
+    FC_CASE_RGBA("raster/points_w_near_zero", 64, 64, 1, "raster points clip", points_w_near_zero),
     FC_CASE_RGBA("raster/points_flat", 32, 32, 1, "raster points", points_flat),
     FC_CASE_RGBA("raster/lines_smooth", 32, 32, 2, "raster lines", lines_smooth),
     FC_CASE_RGBA("raster/lines_flat", 32, 32, 2, "raster lines", lines_flat),
@@ -741,7 +827,10 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_width_3", 64, 64, 1, "raster lines", lines_width_3),
     FC_CASE_RGBA("raster/lines_width_4", 64, 64, 1, "raster lines", lines_width_4),
     FC_CASE_RGBA("raster/lines_width_5", 64, 64, 1, "raster lines", lines_width_5),
+    FC_CASE_RGBA("raster/lines_width_6", 64, 64, 1, "raster lines", lines_width_6),
     FC_CASE_RGBA("raster/lines_width_7", 64, 64, 1, "raster lines", lines_width_7),
+    FC_CASE_RGBA("raster/lines_width_8", 64, 64, 1, "raster lines", lines_width_8),
+    FC_CASE_RGBA("raster/lines_width_9", 64, 64, 1, "raster lines", lines_width_9),
     FC_CASE_RGBA("raster/lines_width_10", 64, 64, 1, "raster lines", lines_width_10),
     FC_CASE_RGBA("raster/lines_width_0_4", 64, 64, 1, "raster lines", lines_width_0_4),
     FC_CASE_RGBA("raster/lines_width_1_5", 64, 64, 1, "raster lines", lines_width_1_5),
@@ -769,6 +858,10 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_smooth_w6", 64, 64, 1, "raster lines smooth", lines_smooth_w6),
     FC_CASE_RGBA("raster/lines_smooth_mixed", 64, 64, 2, "raster lines smooth stipple clip", lines_smooth_mixed),
     FC_CASE_RGBA("raster/smooth_lit_twoside", 64, 64, 1, "raster smooth lighting", smooth_lit_twoside),
+    FC_CASE_RGBA("raster/random_lines", 64, 64, 4, "raster lines", random_lines),
+    FC_CASE_RGBA("raster/random_points", 64, 64, 4, "raster points", random_points),
+    FC_CASE_RGBA("raster/random_stipple", 64, 64, 4, "raster lines stipple", random_stipple),
+    FC_CASE_RGBA("raster/random_smooth", 64, 64, 4, "raster lines points smooth", random_smooth),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
     { 0 }
 };

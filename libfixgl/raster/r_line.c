@@ -56,6 +56,12 @@ static inline float eval_plane(const struct plane *p, float x, float y)
    return fmaf(p->dady, y, fmaf(p->dadx, x, p->a0));
 }
 
+/* floor(a / b) for b > 0 */
+static inline int64_t floor_div(int64_t a, int64_t b)
+{
+   return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
 static inline int32_t min4(int32_t a, int32_t b, int32_t c, int32_t d)
 {
    const int32_t m = a < b ? a : b, n = c < d ? c : d;
@@ -289,12 +295,25 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    }
 
    for (int32_t py = by0; py <= by1; py++) {
-      for (int32_t px = bx0; px <= bx1; px++) {
-         bool inside = true;
-         for (int i = 0; i < 4; i++)
-            inside &= c[i] - dcdx[i] * px + dcdy[i] * py > 0;
-         if (!inside)
-            continue;
+      /* the pixels of the row where all four edge functions
+       * e(px) = c - dcdx*px + dcdy*py are positive, solved per edge in
+       * integers (the same set as testing every pixel) */
+      int64_t x0 = bx0, x1 = bx1;
+      for (int i = 0; i < 4; i++) {
+         const int64_t v = c[i] + dcdy[i] * py;
+         if (dcdx[i] > 0) {
+            /* px < v / dcdx */
+            const int64_t m = floor_div(v - 1, dcdx[i]);
+            x1 = m < x1 ? m : x1;
+         } else if (dcdx[i] < 0) {
+            /* px > -v / -dcdx */
+            const int64_t m = floor_div(-v, -dcdx[i]) + 1;
+            x0 = m > x0 ? m : x0;
+         } else if (v <= 0) {
+            x1 = x0 - 1;
+         }
+      }
+      for (int32_t px = (int32_t)x0; px <= x1; px++) {
          const float fx = (float)px, fy = (float)py;
          float in[R_FS_NUM_INPUTS][4];
          const float rw = need_w ? 1.0f / eval_plane(&wp, fx, fy) : 0.0f;
