@@ -537,6 +537,49 @@ static void lit_points_lines(fc_h *h)
     }
     glEnd();
     fc_capture(h);
+
+    /* perspective, separate specular, a positional light; lines through
+     * the near plane (lit colours lerped by the clipper), stippled strips
+     * and points */
+    {
+        static const float lpos[4] = { 0.5f, 1.0f, 0.5f, 1.0f };
+        static const float spec[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+        glViewport(0, 0, 64, 64);
+        fcu_frustum(-1, 1, -1, 1, 1, 20);
+        fcu_clear(0, 0, 0, 0, 1);
+        glShadeModel(GL_SMOOTH);
+        glEnable(GL_DEPTH_TEST);
+        glLightfv(GL_LIGHT0, GL_POSITION, lpos);
+        glLightfv(GL_LIGHT0, GL_SPECULAR, spec);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 12.0f);
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+        glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+        glBegin(GL_LINES);
+        for (int i = 0; i < 12; i++) {
+            glNormal3f(0.1f * (float)i, 1.0f, 0.3f);
+            glVertex3f(-1.0f + 0.18f * (float)i, -0.6f, 0.5f);
+            glNormal3f(0.0f, 0.5f, 1.0f);
+            glVertex3f(-3.0f + 0.5f * (float)i, 0.4f, -8.0f);
+        }
+        glEnd();
+        glEnable(GL_LINE_STIPPLE);
+        glLineStipple(2, 0x6db6);
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i < 10; i++) {
+            glNormal3f(sinf((float)i), cosf((float)i), 0.5f);
+            glVertex3f(-2.0f + 0.45f * (float)i, 0.8f - 0.1f * (float)i, -2.0f - 0.9f * (float)i);
+        }
+        glEnd();
+        glPointSize(2.0f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 20; i++) {
+            glNormal3f(cosf((float)i * 0.3f), 0.4f, sinf((float)i * 0.3f));
+            glVertex3f(-1.5f + 0.15f * (float)i, -0.2f, -1.5f - 0.4f * (float)i);
+        }
+        glEnd();
+        fc_capture(h);
+    }
 }
 
 /* ---- smooth points and lines (no blending yet: the coverage shows in the
@@ -849,7 +892,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
-    FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 1, "raster lighting", lit_points_lines),
+    FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 2, "raster lighting", lit_points_lines),
     FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
     FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),
     FC_CASE_RGBA("raster/lines_smooth_w1", 64, 64, 1, "raster lines smooth", lines_smooth_w1),
