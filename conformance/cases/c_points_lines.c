@@ -440,6 +440,45 @@ static void lines_wrapped(fc_h *h)
     fc_capture(h);
 }
 
+/* Robustness: w = 0 exactly (no outcode, non-finite window coordinates),
+ * NaN and huge coordinates, the largest width and size. */
+static void robust_points_lines(fc_h *h)
+{
+    glViewport(0, 0, 128, 128);
+    fcu_ortho(-1, 1, -1, 1, -1, 1);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(4.0f);
+    glBegin(GL_POINTS);
+    glColor3f(1, 0, 0);
+    glVertex4f(0.0f, 0.0f, 0.0f, 0.0f);
+    glVertex4f(NAN, 0.5f, 0.0f, 1.0f);
+    glVertex4f(0.5f, 0.5f, 0.0f, 1.0f);
+    glEnd();
+    glBegin(GL_LINES);
+    glColor3f(0, 1, 0);
+    glVertex4f(0.0f, 0.0f, 0.0f, 0.0f);
+    glVertex4f(0.5f, -0.5f, 0.0f, 1.0f);
+    glVertex4f(NAN, 0.2f, 0.0f, 1.0f);
+    glVertex4f(0.5f, -0.7f, 0.0f, 1.0f);
+    glVertex4f(-1e30f, -0.3f, 0.0f, 1.0f);
+    glVertex4f(1e30f, -0.2f, 0.0f, 1.0f);
+    glVertex4f(-0.9f, 0.9f, 0.0f, 1.0f);
+    glVertex4f(-0.9f, 0.9f, 0.0f, 1.0f);     /* zero length */
+    glEnd();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glLineWidth(255.0f);
+    glBegin(GL_LINES);
+    glColor3f(0, 0, 1); glVertex2f(-0.9f, -0.95f);
+    glColor3f(1, 1, 0); glVertex2f(0.9f, 0.95f);
+    glEnd();
+    glPointSize(255.0f);
+    glBegin(GL_POINTS);
+    glColor3f(1, 0, 1); glVertex2f(0.7f, -0.7f);
+    glEnd();
+    fc_capture(h);
+}
+
 /* ---- stipple -------------------------------------------------------------- */
 
 static void stipple_strip(fc_h *h, int factor, GLushort pattern, GLenum mode)
@@ -886,6 +925,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_depth", 64, 64, 1, "raster lines depth", lines_depth),
     FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
     FC_CASE_RGBA("raster/lines_wrapped_vertex_buffer", 64, 64, 2, "raster lines stipple vbo", lines_wrapped),
+    FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 2, "raster lines points robust", robust_points_lines),
     FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
     FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
     FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),
