@@ -230,6 +230,12 @@ struct fgl_context {
    struct fgl_lighting_derived _Lighting;
    float _ViewportScale[3], _ViewportTranslate[3];
    struct r_state _Raster;
+   /* llvmpipe leaves two-sided lighting to the draw module while line
+    * stipple or smooth points/lines are on (lp_state_rasterizer.c
+    * need_pipeline, clear_flags), and draw then runs every triangle through
+    * its pipeline (draw_need_pipeline: light_twoside): float-determinant
+    * culling and colour choice, the pipeline's quad split */
+   bool _DrawTwosideTris;
 
    /* ---- framebuffer ---- */
    struct fgl_framebuffer *DrawBuffer;

@@ -76,6 +76,12 @@ void fgl_update_state(struct fgl_context *ctx)
       /* flat_mask is set per batch by t_render_batch */
    }
 
+   if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_LIGHT)) {
+      const bool stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
+      ctx->_DrawTwosideTris = (stipple || ctx->Point.SmoothFlag || ctx->Line.SmoothFlag) &&
+                              ctx->Light.Enabled && ctx->Light.Model.TwoSide;
+   }
+
    if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {
       /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
        * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),

@@ -539,6 +539,50 @@ static void stipple_mixed(fc_h *h)
     fc_capture(h);
 }
 
+/* What restarts the stipple counter between primitives: a strip whose
+ * first segment is clipped away continues the count, unless a smooth point
+ * or a triangle taking draw's pipeline (two-sided lighting with stipple on)
+ * passed the stipple stage in between; plain points do not. */
+static void stipple_counter_resets(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 3; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glEnable(GL_LINE_STIPPLE);
+        glLineStipple(1, 0x1f3f);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 1, 0);
+        glVertex2f(2.0f, 4.0f); glVertex2f(61.0f, 4.0f); glVertex2f(61.0f, 9.3f);
+        glEnd();
+        if (f == 0) {
+            glEnable(GL_POINT_SMOOTH);
+            glPointSize(3.0f);
+        }
+        if (f == 1) {
+            static const float pos[4] = { 0.0f, 0.0f, 1.0f, 0.0f };
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            glLightfv(GL_LIGHT0, GL_POSITION, pos);
+            glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+            fcu_tri(10.0f, 20.0f, 20.0f, 30.0f, 30.0f, 20.0f);   /* clockwise */
+            glDisable(GL_LIGHTING);
+        } else {
+            glBegin(GL_POINTS);
+            glColor3f(0, 1, 1);
+            glVertex2f(32.0f, 32.0f);
+            glEnd();
+        }
+        glDisable(GL_POINT_SMOOTH);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 0, 1);
+        glVertex2f(-30.0f, 50.0f); glVertex2f(-2.0f, 50.0f); glVertex2f(61.5f, 50.0f);
+        glVertex2f(3.5f, 58.0f);
+        glEnd();
+        fc_capture(h);
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0);
+    }
+}
+
 /* ---- lit points and lines -------------------------------------------------- */
 
 static void lit_points_lines(fc_h *h)
@@ -812,6 +856,59 @@ static void random_points(fc_h *h) { random_prims(h, 1); }
 static void random_stipple(fc_h *h) { random_prims(h, 2); }
 static void random_smooth(fc_h *h) { random_prims(h, 3); }
 
+/* Triangles while line stipple or smooth points/lines are on: llvmpipe
+ * then lets the draw module do two-sided lighting (lp_state_rasterizer.c
+ * need_pipeline, clear_flags), so lit two-sided triangles take the draw
+ * pipeline; unlit ones still go straight to llvmpipe. */
+static void quads_with_line_state(fc_h *h)
+{
+    static const float q[4][2] = { { 4.5f, 3.25f }, { 58.0f, 9.5f }, { 50.75f, 60.0f }, { 7.0f, 44.5f } };
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 5; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (f == 4) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            glLineStipple(1, 0x0ff0);
+            glEnable(GL_LINE_STIPPLE);
+        }
+        if (f == 0 || f == 3) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(1, 0x00ff);
+        }
+        if (f == 1)
+            glEnable(GL_POINT_SMOOTH);
+        if (f == 2)
+            glEnable(GL_LINE_SMOOTH);
+        if (f == 3) {
+            static const float pos[4] = { 0.2f, 0.3f, 1.0f, 0.0f };
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            glLightfv(GL_LIGHT0, GL_POSITION, pos);
+            glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+            glEnable(GL_COLOR_MATERIAL);
+        }
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 4; i++) {
+            glColor3f(i == 0 || i == 3 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.2f, i == 2 ? 1.0f : 0.1f);
+            glNormal3f(0.3f * (float)i, 0.5f, 1.0f);
+            glVertex2fv(q[i]);
+        }
+        glEnd();
+        glBegin(GL_QUADS);   /* clockwise: back-facing */
+        for (int i = 3; i >= 0; i--) {
+            glColor3f(0.5f, (float)i / 3.0f, 1.0f - (float)i / 3.0f);
+            glNormal3f(0.0f, 0.2f * (float)i, -1.0f);
+            glVertex2f(q[i][0] * 0.5f + 16.0f, q[i][1] * 0.5f + 16.0f);
+        }
+        glEnd();
+        fc_capture(h);
+        glDisable(GL_LINE_STIPPLE);
+        glDisable(GL_POINT_SMOOTH);
+        glDisable(GL_LINE_SMOOTH);
+    }
+}
+
 /* ---- errors and queries ----------------------------------------------------- */
 
 static void point_line_state(fc_h *h)
@@ -932,6 +1029,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
+    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 3, "raster lines stipple", stipple_counter_resets),
     FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 2, "raster lighting", lit_points_lines),
     FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
     FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),
@@ -945,6 +1043,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/random_points", 64, 64, 4, "raster points", random_points),
     FC_CASE_RGBA("raster/random_stipple", 64, 64, 4, "raster lines stipple", random_stipple),
     FC_CASE_RGBA("raster/random_smooth", 64, 64, 4, "raster lines points smooth", random_smooth),
+    FC_CASE_RGBA("raster/quads_with_line_state", 64, 64, 5, "raster quad lighting", quads_with_line_state),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
     { 0 }
 };

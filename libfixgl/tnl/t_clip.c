@@ -56,14 +56,68 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
          dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
 }
 
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
+/* The stages after clipping when draw does two-sided lighting
+ * (ctx->_DrawTwosideTris): cull and twoside on the float determinant of the
+ * window positions, then llvmpipe's setup without two-sided colours (it
+ * still culls on the snapped area).  The triangle also passes the stipple
+ * stage, which restarts the line stipple counter.
+ * [S: draw_pipe_cull.c:cull_tri, draw_pipe_twoside.c:twoside_tri,
+ * draw_pipe_stipple.c:stipple_reset_tri] */
+static void draw_twoside_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                             const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   const float ex = v0->pos[0] - v2->pos[0];
+   const float ey = v0->pos[1] - v2->pos[1];
+   const float fx = v1->pos[0] - v2->pos[0];
+   const float fy = v1->pos[1] - v2->pos[1];
+   const float det = ex * fy - ey * fx;
+
+   /* cull: det < 0 is counter-clockwise; zero area counts as back */
+   if (det != 0) {
+      const bool front = (det < 0) == rs->ccw_is_front;
+      if (front ? rs->cull_front : rs->cull_back)
+         return;
+   } else if (rs->cull_back) {
+      return;
+   }
+
+   struct r_state nots = *rs;
+   nots.twoside = false;
+   if (ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff)
+      ctx->StippleCounter = 0;
+
+   /* twoside: back-facing if det * sign < 0, sign = front_ccw ? -1 : 1 */
+   if (det * (rs->ccw_is_front ? -1.0f : 1.0f) < 0.0f) {
+      struct r_vertex b[3] = { *v0, *v1, *v2 };
+      for (int i = 0; i < 3; i++)
+         for (int c = 0; c < 4; c++) {
+            b[i].attr[R_ATTR_COLOR0][c] = b[i].attr[R_ATTR_BCOLOR0][c];
+            b[i].attr[R_ATTR_COLOR1][c] = b[i].attr[R_ATTR_BCOLOR1][c];
+         }
+      r_triangle(&nots, &b[0], &b[1], &b[2]);
+   } else {
+      r_triangle(&nots, v0, v1, v2);
+   }
+}
+
+static inline void emit_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                            const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   if (ctx->_DrawTwosideTris)
+      draw_twoside_tri(ctx, v0, v1, v2);
+   else
+      r_triangle(&ctx->_Raster, v0, v1, v2);
+}
+
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                      const struct t_vertex *v1, const struct t_vertex *v2)
 {
    const struct r_state *rs = &ctx->_Raster;
    unsigned clipmask = v0->mask | v1->mask | v2->mask;
 
    if (clipmask == 0) {
-      r_triangle(rs, &v0->r, &v1->r, &v2->r);
+      emit_tri(ctx, &v0->r, &v1->r, &v2->r);
       return;
    }
    if (v0->mask & v1->mask & v2->mask)
@@ -151,7 +205,7 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
    }
 
    for (unsigned i = 2; i < n; i++)
-      r_triangle(rs, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+      emit_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
 }
 
 /* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */

@@ -72,8 +72,13 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v)
    /* draw_pipe_clip.c:clip_point */
    if (v->mask)
       return;
-   if (ctx->Point.SmoothFlag)
+   if (ctx->Point.SmoothFlag) {
+      /* a smooth point takes draw's pipeline, whose stipple stage
+       * restarts the line stipple counter (stipple_reset_point) */
+      if (ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff)
+         ctx->StippleCounter = 0;
       aapoint_point(&ctx->_Raster, &v->r);
+   }
    else
       r_point(&ctx->_Raster, &v->r);
 }

@@ -29,7 +29,7 @@ void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
 
 /* Clip a triangle against the view volume and rasterize the pieces; v2 is
  * the provoking vertex. */
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                      const struct t_vertex *v1, const struct t_vertex *v2);
 
 /* Clip a line (draw_pipe_clip.c:clip_line, do_clip_line); v1 is the

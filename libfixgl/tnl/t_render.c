@@ -14,7 +14,8 @@
  *   POINTS, LINES   each vertex, each pair (i, i+1)
  *   LINE_STRIP/LOOP (i-1, i), closed by (n-1, 0)   provoking vertex = 2nd
  * A draw goes through the draw pipeline, segment by segment (4096 vertices,
- * Mesa's vsplit), when any vertex of the segment needs clipping.
+ * Mesa's vsplit), when any vertex of the segment needs clipping, and as a
+ * whole when draw does two-sided lighting (ctx->_DrawTwosideTris).
  */
 #include "tnl/t_pipeline.h"
 
@@ -48,7 +49,8 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool split13 = flat || segment_clipped(r, start + seg, n);
+      const bool split13 = flat || r->ctx->_DrawTwosideTris ||
+                           segment_clipped(r, start + seg, n);
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
          if (split13) {
             tri(r, i, i + 1, i + 3);
@@ -69,7 +71,7 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
    /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
    for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool pipeline = segment_clipped(r, start + seg, n);
+      const bool pipeline = r->ctx->_DrawTwosideTris || segment_clipped(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
          if (pipeline) {
             tri(r, k + 2, k, k + 3);
