@@ -540,9 +540,10 @@ static void stipple_mixed(fc_h *h)
 }
 
 /* What restarts the stipple counter between primitives: a strip whose
- * first segment is clipped away continues the count, unless a smooth point
- * or a triangle taking draw's pipeline (two-sided lighting with stipple on)
- * passed the stipple stage in between; plain points do not. */
+ * first segment is clipped away continues the count, unless a smooth point,
+ * a point of a draw that needs clipping or a triangle taking draw's
+ * pipeline (two-sided lighting with stipple on) passed the stipple stage in
+ * between; plain points of an unclipped draw do not. */
 static void stipple_counter_resets(fc_h *h)
 {
     fc_pixel_ortho(h);
@@ -570,6 +571,25 @@ static void stipple_counter_resets(fc_h *h)
             glBegin(GL_POINTS);
             glColor3f(0, 1, 1);
             glVertex2f(32.0f, 32.0f);
+            glEnd();
+        }
+        if (f == 2) {
+            /* plain points, one of them outside: the draw takes the
+             * pipeline, and the visible point restarts the counter */
+            glLineStipple(1, 0x3f1f);
+            glBegin(GL_LINE_STRIP);
+            glColor3f(1, 1, 0);
+            glVertex2f(2.0f, 14.0f); glVertex2f(61.0f, 14.0f); glVertex2f(61.0f, 19.3f);
+            glEnd();
+            glBegin(GL_POINTS);
+            glColor3f(0, 1, 1);
+            glVertex2f(40.0f, 32.0f);
+            glVertex2f(-40.0f, 32.0f);
+            glEnd();
+            glBegin(GL_LINE_STRIP);
+            glColor3f(1, 0, 1);
+            glVertex2f(-30.0f, 40.0f); glVertex2f(-2.0f, 40.0f); glVertex2f(61.5f, 40.0f);
+            glVertex2f(3.5f, 45.0f);
             glEnd();
         }
         glDisable(GL_POINT_SMOOTH);

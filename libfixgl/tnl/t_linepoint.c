@@ -67,18 +67,19 @@ static void aapoint_point(const struct r_state *rs, const struct r_vertex *v)
    r_triangle(&aa, &q[0], &q[2], &q[3]);
 }
 
-void t_point(struct fgl_context *ctx, const struct t_vertex *v)
+void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
 {
    /* draw_pipe_clip.c:clip_point */
    if (v->mask)
       return;
-   if (ctx->Point.SmoothFlag) {
-      /* a smooth point takes draw's pipeline, whose stipple stage
-       * restarts the line stipple counter (stipple_reset_point) */
-      if (ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff)
-         ctx->StippleCounter = 0;
+   /* a point in draw's pipeline (smooth, or in a segment that needs
+    * clipping) passes the stipple stage, which restarts the line stipple
+    * counter (stipple_reset_point) */
+   if ((pipeline || ctx->Point.SmoothFlag) &&
+       ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff)
+      ctx->StippleCounter = 0;
+   if (ctx->Point.SmoothFlag)
       aapoint_point(&ctx->_Raster, &v->r);
-   }
    else
       r_point(&ctx->_Raster, &v->r);
 }

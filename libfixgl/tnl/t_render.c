@@ -117,8 +117,14 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p, bo
       render_quad_strip(r, s, n);
       break;
    case GL_POINTS:
-      for (unsigned i = 0; i < n; i++)
-         t_point(r->ctx, &r->v[s + i]);
+      /* vsplit segments: a segment with a clipped vertex takes draw's
+       * pipeline (which matters to the line stipple counter only) */
+      for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE) {
+         const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+         const bool pipeline = segment_clipped(r, s + seg, cnt);
+         for (unsigned i = seg; i < seg + cnt; i++)
+            t_point(r->ctx, &r->v[s + i], pipeline);
+      }
       break;
    case GL_LINES:
       /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
