@@ -477,6 +477,23 @@ static void robust_points_lines(fc_h *h)
     glColor3f(1, 0, 1); glVertex2f(0.7f, -0.7f);
     glEnd();
     fc_capture(h);
+    /* smooth: zero-length and tiny lines, the largest point, w = 0 */
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_POINT_SMOOTH);
+    glLineWidth(4.0f);
+    glBegin(GL_LINES);
+    glColor4f(1, 1, 0, 0.9f);
+    glVertex2f(-0.5f, 0.5f); glVertex2f(-0.5f, 0.5f);
+    glVertex2f(0.5f, 0.5f); glVertex2f(0.501f, 0.502f);
+    glVertex4f(0.0f, 0.0f, 0.0f, 0.0f); glVertex2f(0.2f, 0.2f);
+    glEnd();
+    glBegin(GL_POINTS);
+    glColor4f(0, 1, 1, 0.7f);
+    glVertex2f(0.1f, -0.3f);
+    glVertex4f(0.0f, 0.0f, 0.0f, 0.0f);
+    glEnd();
+    fc_capture(h);
 }
 
 /* ---- stipple -------------------------------------------------------------- */
@@ -1042,7 +1059,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_depth", 64, 64, 1, "raster lines depth", lines_depth),
     FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
     FC_CASE_RGBA("raster/lines_wrapped_vertex_buffer", 64, 64, 2, "raster lines stipple vbo", lines_wrapped),
-    FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 2, "raster lines points robust", robust_points_lines),
+    FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 3, "raster lines points robust", robust_points_lines),
     FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
     FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
     FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),
