@@ -4,10 +4,12 @@
  * draw_pipe_validate.c:validate_pipeline]): clip, then (when line stipple
  * or smoothing is on) the flatshade and stipple stages, then the aapoint /
  * aaline stages (smooth points and lines become triangle quads with a
- * coverage input) or llvmpipe's point and line setup.  Lines and points that need no stage go straight to llvmpipe;
- * for them that is the same as this pipeline with nothing to do, since
- * each point and line is set up on its own (unlike the quad split of
- * triangles, nothing depends on which path a batch takes).
+ * coverage input) or llvmpipe's point and line setup.  Lines and points
+ * that need no stage go straight to llvmpipe; for them that is the same as
+ * this pipeline with nothing to do, since each point and line is set up on
+ * its own (unlike the quad split of triangles, only the line stipple
+ * counter, which points in the pipeline restart, sees which path a batch
+ * takes).
  *
  * Wide points and lines are never split by draw (llvmpipe sets the wide
  * thresholds to 10000, above the 255 limit), so they are only cut by the
