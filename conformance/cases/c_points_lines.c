@@ -618,6 +618,40 @@ static void stipple_counter_resets(fc_h *h)
         fc_capture(h);
         glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0);
     }
+    /* triangles: a draw with a clipped triangle takes the pipeline and its
+     * visible triangle restarts the counter (frame 4); an unclipped draw
+     * goes straight to llvmpipe and does not (frame 5); with culling, a
+     * culled triangle does not (frame 6) */
+    for (int f = 0; f < 3; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glLineStipple(1, 0x1f3f);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 1, 0);
+        glVertex2f(2.0f, 4.0f); glVertex2f(61.0f, 4.0f); glVertex2f(61.0f, 9.3f);
+        glEnd();
+        if (f == 2) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+        }
+        glColor3f(0.3f, 0.6f, 0.9f);
+        glBegin(GL_TRIANGLES);
+        if (f == 2) {     /* clockwise: culled */
+            glVertex2f(10.0f, 20.0f); glVertex2f(20.0f, 30.0f); glVertex2f(30.0f, 20.0f);
+        } else {
+            glVertex2f(10.0f, 20.0f); glVertex2f(30.0f, 20.0f); glVertex2f(20.0f, 30.0f);
+        }
+        if (f != 1) {
+            glVertex2f(-10.0f, 20.0f); glVertex2f(-30.0f, 20.0f); glVertex2f(-20.0f, 30.0f);
+        }
+        glEnd();
+        glDisable(GL_CULL_FACE);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 0, 1);
+        glVertex2f(-30.0f, 50.0f); glVertex2f(-2.0f, 50.0f); glVertex2f(61.5f, 50.0f);
+        glVertex2f(3.5f, 58.0f);
+        glEnd();
+        fc_capture(h);
+    }
 }
 
 /* ---- lit points and lines -------------------------------------------------- */
@@ -946,6 +980,46 @@ static void quads_with_line_state(fc_h *h)
     }
 }
 
+/* Slivers whose snapped orientation differs from the float determinant's
+ * (found by search, each covering one pixel): in a draw that needs
+ * clipping, draw's cull stage culls on the determinant before llvmpipe
+ * culls on the snapped area; unclipped, only the area counts. */
+static void cull_slivers(fc_h *h)
+{
+    static const float sl[8][6] = {
+        { 2.03125f, 34.984375f, 6.818359375f, 35.9853515625f, 11.60546875f, 36.984375f },
+        { 8.0625f, 28.55859375f, 10.3359375f, 28.95166015625f, 17.15625f, 30.1328125f },
+        { 35.27734375f, 37.46484375f, 39.7412109375f, 38.20849609375f, 53.1328125f, 40.4375f },
+        { 30.89453125f, 34.40625f, 41.3564453125f, 34.52099609375f, 44.84375f, 34.55859375f },
+        { 15.31640625f, 57.31640625f, 20.9970703125f, 56.56689453125f, 22.890625f, 56.31640625f },
+        { 14.7890625f, 41.23828125f, 18.8232421875f, 41.337890625f, 30.92578125f, 41.6328125f },
+        { 31.05859375f, 47.16796875f, 32.1435546875f, 47.41943359375f, 35.3984375f, 48.16796875f },
+        { 18.80078125f, 21.6953125f, 23.5361328125f, 21.447265625f, 37.7421875f, 20.6953125f },
+    };
+    fc_pixel_ortho(h);
+    glEnable(GL_CULL_FACE);
+    for (int f = 0; f < 6; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glCullFace(f % 3 == 0 ? GL_BACK : f % 3 == 1 ? GL_FRONT : GL_FRONT_AND_BACK);
+        if (f == 2)
+            glDisable(GL_CULL_FACE);
+        glBegin(GL_TRIANGLES);
+        for (int i = 0; i < 8; i++) {
+            fcu_color(i);
+            glVertex2f(sl[i][0], sl[i][1]);
+            glVertex2f(sl[i][2], sl[i][3]);
+            glVertex2f(sl[i][4], sl[i][5]);
+        }
+        if (f < 3) {   /* one triangle needing clipping: the draw takes the pipeline */
+            glColor3f(1, 1, 1);
+            glVertex2f(50.0f, 2.0f); glVertex2f(80.0f, 2.0f); glVertex2f(60.0f, 10.0f);
+        }
+        glEnd();
+        glEnable(GL_CULL_FACE);
+        fc_capture(h);
+    }
+}
+
 /* ---- errors and queries ----------------------------------------------------- */
 
 static void point_line_state(fc_h *h)
@@ -1066,7 +1140,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
-    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 3, "raster lines stipple", stipple_counter_resets),
+    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 6, "raster lines stipple", stipple_counter_resets),
     FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 2, "raster lighting", lit_points_lines),
     FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
     FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),
@@ -1081,6 +1155,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/random_stipple", 64, 64, 4, "raster lines stipple", random_stipple),
     FC_CASE_RGBA("raster/random_smooth", 64, 64, 4, "raster lines points smooth", random_smooth),
     FC_CASE_RGBA("raster/quads_with_line_state", 64, 64, 5, "raster quad lighting", quads_with_line_state),
+    FC_CASE_RGBA("raster/cull_slivers_pipeline", 64, 64, 6, "raster cull clip", cull_slivers),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
     { 0 }
 };

@@ -56,15 +56,17 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
          dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
 }
 
-/* The stages after clipping when draw does two-sided lighting
- * (ctx->_DrawTwosideTris): cull and twoside on the float determinant of the
- * window positions, then llvmpipe's setup without two-sided colours (it
- * still culls on the snapped area).  The triangle also passes the stipple
- * stage, which restarts the line stipple counter.
+/* A triangle through the stages after clipping (draw_pipe_validate.c
+ * order): cull, when culling is on or draw does two-sided lighting, on the
+ * float determinant of the window positions (zero area counts as back);
+ * two-sided colours on its sign when draw does them (ctx->_DrawTwosideTris;
+ * zero is front); the stipple stage, which restarts the line stipple
+ * counter; then llvmpipe's setup, which culls again on the snapped area and
+ * does two-sided colours itself only when draw does not.
  * [S: draw_pipe_cull.c:cull_tri, draw_pipe_twoside.c:twoside_tri,
  * draw_pipe_stipple.c:stipple_reset_tri] */
-static void draw_twoside_tri(struct fgl_context *ctx, const struct r_vertex *v0,
-                             const struct r_vertex *v1, const struct r_vertex *v2)
+static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                         const struct r_vertex *v1, const struct r_vertex *v2)
 {
    const struct r_state *rs = &ctx->_Raster;
    const float ex = v0->pos[0] - v2->pos[0];
@@ -73,21 +75,27 @@ static void draw_twoside_tri(struct fgl_context *ctx, const struct r_vertex *v0,
    const float fy = v1->pos[1] - v2->pos[1];
    const float det = ex * fy - ey * fx;
 
-   /* cull: det < 0 is counter-clockwise; zero area counts as back */
-   if (det != 0) {
-      const bool front = (det < 0) == rs->ccw_is_front;
-      if (front ? rs->cull_front : rs->cull_back)
+   if (rs->cull_front || rs->cull_back || ctx->_DrawTwosideTris) {
+      /* det < 0 is counter-clockwise */
+      if (det != 0) {
+         const bool front = (det < 0) == rs->ccw_is_front;
+         if (front ? rs->cull_front : rs->cull_back)
+            return;
+      } else if (rs->cull_back) {
          return;
-   } else if (rs->cull_back) {
-      return;
+      }
    }
 
-   struct r_state nots = *rs;
-   nots.twoside = false;
    if (ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff)
       ctx->StippleCounter = 0;
 
-   /* twoside: back-facing if det * sign < 0, sign = front_ccw ? -1 : 1 */
+   if (!ctx->_DrawTwosideTris) {
+      r_triangle(rs, v0, v1, v2);
+      return;
+   }
+   struct r_state nots = *rs;
+   nots.twoside = false;
+   /* back-facing if det * sign < 0, sign = front_ccw ? -1 : 1 */
    if (det * (rs->ccw_is_front ? -1.0f : 1.0f) < 0.0f) {
       struct r_vertex b[3] = { *v0, *v1, *v2 };
       for (int i = 0; i < 3; i++)
@@ -101,23 +109,19 @@ static void draw_twoside_tri(struct fgl_context *ctx, const struct r_vertex *v0,
    }
 }
 
-static inline void emit_tri(struct fgl_context *ctx, const struct r_vertex *v0,
-                            const struct r_vertex *v1, const struct r_vertex *v2)
-{
-   if (ctx->_DrawTwosideTris)
-      draw_twoside_tri(ctx, v0, v1, v2);
-   else
-      r_triangle(&ctx->_Raster, v0, v1, v2);
-}
-
 void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2)
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline)
 {
    const struct r_state *rs = &ctx->_Raster;
    unsigned clipmask = v0->mask | v1->mask | v2->mask;
 
+   if (!pipeline) {
+      /* straight to llvmpipe (nothing in the segment needs clipping) */
+      r_triangle(rs, &v0->r, &v1->r, &v2->r);
+      return;
+   }
    if (clipmask == 0) {
-      emit_tri(ctx, &v0->r, &v1->r, &v2->r);
+      pipeline_tri(ctx, &v0->r, &v1->r, &v2->r);
       return;
    }
    if (v0->mask & v1->mask & v2->mask)
@@ -205,7 +209,7 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
    }
 
    for (unsigned i = 2; i < n; i++)
-      emit_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+      pipeline_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
 }
 
 /* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */

@@ -27,10 +27,12 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 void t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out);
 
-/* Clip a triangle against the view volume and rasterize the pieces; v2 is
- * the provoking vertex. */
+/* A triangle of a vsplit segment that takes draw's pipeline (`pipeline`)
+ * or goes straight to llvmpipe: clipped against the view volume, culled and
+ * coloured as draw's stages do, then rasterized; v2 is the provoking
+ * vertex. */
 void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2);
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline);
 
 /* Clip a line (draw_pipe_clip.c:clip_line, do_clip_line); v1 is the
  * provoking vertex.  Returns false if nothing is left, else the clipped

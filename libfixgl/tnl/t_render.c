@@ -30,9 +30,11 @@ struct render {
    const struct t_vertex *v;     /* transformed vertices of the draw */
 };
 
-static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c)
+/* A triangle; `pipeline`: its vsplit segment takes draw's pipeline. */
+static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c,
+                       bool pipeline)
 {
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c]);
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline);
 }
 
 /* Vertices [start, start+count) of a segment need the draw pipeline. */
@@ -44,20 +46,82 @@ static bool segment_clipped(const struct render *r, unsigned start, unsigned cou
    return m != 0;
 }
 
+/* Whether a segment takes draw's pipeline: some vertex needs clipping, or
+ * draw does two-sided lighting. */
+static bool segment_pipeline(const struct render *r, unsigned start, unsigned count)
+{
+   return r->ctx->_DrawTwosideTris || segment_clipped(r, start, count);
+}
+
+/* GL_TRIANGLES: vsplit segments of 4095 vertices (the 4096 trimmed to
+ * whole triangles). */
+static void render_triangles(const struct render *r, unsigned s, unsigned n)
+{
+   n -= n % 3;
+   for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE - 1) {
+      const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
+      const bool pipeline = segment_pipeline(r, s + seg, cnt);
+      for (unsigned i = seg; i < seg + cnt; i += 3)
+         tri(r, s + i, s + i + 1, s + i + 2, pipeline);
+   }
+}
+
+/* GL_TRIANGLE_STRIP: segments of 4096 vertices overlapping by two (an even
+ * step, so the winding parity is kept). */
+static void render_triangle_strip(const struct render *r, unsigned s, unsigned n)
+{
+   for (unsigned seg = 0; seg + 2 < n; seg += SEGMENT_SIZE - 2) {
+      const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+      const bool pipeline = segment_pipeline(r, s + seg, cnt);
+      for (unsigned i = seg; i + 2 < seg + cnt; i++) {
+         if (i & 1)
+            tri(r, s + i + 1, s + i, s + i + 2, pipeline);
+         else
+            tri(r, s + i, s + i + 1, s + i + 2, pipeline);
+      }
+      if (seg + cnt >= n)
+         break;
+   }
+}
+
+/* GL_TRIANGLE_FAN and GL_POLYGON: vsplit's fan segments of
+ * FAN_SEGMENT_SIZE vertices (its 1024-entry segment_size), each after the
+ * first made of vertex 0 and the next vertices from the previous segment's
+ * last pair on. */
+#define FAN_SEGMENT_SIZE 1024
+
+static void render_fan(const struct render *r, unsigned s, unsigned n, bool polygon)
+{
+   for (unsigned seg = 0; seg + 2 < n; seg += FAN_SEGMENT_SIZE - 2) {
+      const unsigned cnt = n - seg < FAN_SEGMENT_SIZE ? n - seg : FAN_SEGMENT_SIZE;
+      const bool pipeline = seg == 0 ? segment_pipeline(r, s, cnt)
+                                     : segment_pipeline(r, s, 1) ||
+                                       segment_clipped(r, s + seg + 1, cnt - 1);
+      for (unsigned i = seg; i + 2 < seg + cnt; i++) {
+         if (polygon)
+            tri(r, s + i + 1, s + i + 2, s, pipeline);
+         else
+            tri(r, s, s + i + 1, s + i + 2, pipeline);
+      }
+      if (seg + cnt >= n)
+         break;
+   }
+}
+
 static void render_quads(const struct render *r, unsigned start, unsigned count, bool flat)
 {
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool split13 = flat || r->ctx->_DrawTwosideTris ||
-                           segment_clipped(r, start + seg, n);
+      const bool pipeline = segment_pipeline(r, start + seg, n);
+      const bool split13 = flat || pipeline;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
          if (split13) {
-            tri(r, i, i + 1, i + 3);
-            tri(r, i + 1, i + 2, i + 3);
+            tri(r, i, i + 1, i + 3, pipeline);
+            tri(r, i + 1, i + 2, i + 3, pipeline);
          } else {
-            tri(r, i, i + 1, i + 2);
-            tri(r, i, i + 2, i + 3);
+            tri(r, i, i + 1, i + 2, pipeline);
+            tri(r, i, i + 2, i + 3, pipeline);
          }
       }
    }
@@ -71,14 +135,14 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
    /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
    for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      const bool pipeline = r->ctx->_DrawTwosideTris || segment_clipped(r, start + seg, n);
+      const bool pipeline = segment_pipeline(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
          if (pipeline) {
-            tri(r, k + 2, k, k + 3);
-            tri(r, k, k + 1, k + 3);
+            tri(r, k + 2, k, k + 3, pipeline);
+            tri(r, k, k + 1, k + 3, pipeline);
          } else {
-            tri(r, k, k + 1, k + 3);
-            tri(r, k + 2, k, k + 3);
+            tri(r, k, k + 1, k + 3, pipeline);
+            tri(r, k + 2, k, k + 3, pipeline);
          }
       }
       if (seg + n >= count)
@@ -91,24 +155,14 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p, bo
    const unsigned s = p->start, n = p->count;
    switch (p->mode) {
    case GL_TRIANGLES:
-      for (unsigned i = 0; i + 2 < n; i += 3)
-         tri(r, s + i, s + i + 1, s + i + 2);
+      render_triangles(r, s, n);
       break;
    case GL_TRIANGLE_STRIP:
-      for (unsigned i = 0; i + 2 < n; i++) {
-         if (i & 1)
-            tri(r, s + i + 1, s + i, s + i + 2);
-         else
-            tri(r, s + i, s + i + 1, s + i + 2);
-      }
+      render_triangle_strip(r, s, n);
       break;
    case GL_TRIANGLE_FAN:
-      for (unsigned i = 0; i + 2 < n; i++)
-         tri(r, s, s + i + 1, s + i + 2);
-      break;
    case GL_POLYGON:
-      for (unsigned i = 0; i + 2 < n; i++)
-         tri(r, s + i + 1, s + i + 2, s);
+      render_fan(r, s, n, p->mode == GL_POLYGON);
       break;
    case GL_QUADS:
       render_quads(r, s, n, flat);
