@@ -652,6 +652,31 @@ static void stipple_counter_resets(fc_h *h)
         glEnd();
         fc_capture(h);
     }
+    /* vsplit segments (frame 7): 1365 triangles outside the view fill the
+     * first 4095-vertex segment of a GL_TRIANGLES draw; the visible one
+     * after them is in an unclipped segment, straight to llvmpipe: no
+     * restart.  The same with 1364 outside triangles puts it in the
+     * clipped segment (frame 8): restart. */
+    for (int f = 0; f < 2; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 1, 0);
+        glVertex2f(2.0f, 4.0f); glVertex2f(61.0f, 4.0f); glVertex2f(61.0f, 9.3f);
+        glEnd();
+        glColor3f(0.3f, 0.6f, 0.9f);
+        glBegin(GL_TRIANGLES);
+        for (int i = 0; i < 1365 - f; i++) {
+            glVertex2f(-10.0f, 20.0f); glVertex2f(-30.0f, 20.0f); glVertex2f(-20.0f, 30.0f);
+        }
+        glVertex2f(10.0f, 20.0f); glVertex2f(30.0f, 20.0f); glVertex2f(20.0f, 30.0f);
+        glEnd();
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 0, 1);
+        glVertex2f(-30.0f, 50.0f); glVertex2f(-2.0f, 50.0f); glVertex2f(61.5f, 50.0f);
+        glVertex2f(3.5f, 58.0f);
+        glEnd();
+        fc_capture(h);
+    }
 }
 
 /* ---- lit points and lines -------------------------------------------------- */
@@ -1140,7 +1165,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
-    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 6, "raster lines stipple", stipple_counter_resets),
+    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 8, "raster lines stipple", stipple_counter_resets),
     FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 2, "raster lighting", lit_points_lines),
     FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
     FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),
