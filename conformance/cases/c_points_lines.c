@@ -677,6 +677,42 @@ static void stipple_counter_resets(fc_h *h)
         glEnd();
         fc_capture(h);
     }
+    /* fans: up to 4096 vertices one segment (frame 9: the back faces
+     * around an outside vertex put the whole fan in the pipeline, its front
+     * faces restart the counter); longer ones in segments of 1024 (frame
+     * 10: the first segment holds the outside vertex and only back faces,
+     * culled; the others, vertex 0 and vertices 1023 on, are inside and
+     * front-facing, straight to llvmpipe: no restart; frame 11: the rim
+     * turns at vertex 900, front faces in the clipped segment: restart). */
+    for (int f = 0; f < 3; f++) {
+        const int turn = f == 2 ? 900 : 1023;
+        const int nv = f == 0 ? 1400 : 5000;
+        fcu_clear(0, 0, 0, 0, 1);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 1, 0);
+        glVertex2f(2.0f, 4.0f); glVertex2f(61.0f, 4.0f); glVertex2f(61.0f, 9.3f);
+        glEnd();
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glColor3f(0.3f, 0.6f, 0.9f);
+        glBegin(GL_TRIANGLE_FAN);
+        glVertex2f(32.0f, 28.0f);
+        for (int i = 1; i < nv; i++) {
+            /* clockwise (back) up to `turn`, then counter-clockwise */
+            const float a = i <= turn ? 3.0f - 0.002f * (float)i
+                                      : 3.0f - 0.002f * (float)turn + 0.001f * (float)(i - turn);
+            const float r = i == 5 ? 200.0f : 14.0f;
+            glVertex2f(32.0f + r * cosf(a), 28.0f + r * sinf(a));
+        }
+        glEnd();
+        glDisable(GL_CULL_FACE);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 0, 1);
+        glVertex2f(-30.0f, 50.0f); glVertex2f(-2.0f, 50.0f); glVertex2f(61.5f, 50.0f);
+        glVertex2f(3.5f, 58.0f);
+        glEnd();
+        fc_capture(h);
+    }
 }
 
 /* ---- lit points and lines -------------------------------------------------- */
@@ -1165,7 +1201,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/stipple_loop_f2", 64, 64, 1, "raster lines stipple", stipple_loop_f2),
     FC_CASE_RGBA("raster/stipple_lines_f1", 64, 64, 1, "raster lines stipple", stipple_lines_f1),
     FC_CASE_RGBA("raster/stipple_mixed", 64, 64, 2, "raster lines stipple clip", stipple_mixed),
-    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 8, "raster lines stipple", stipple_counter_resets),
+    FC_CASE_RGBA("raster/stipple_counter_resets", 64, 64, 11, "raster lines stipple", stipple_counter_resets),
     FC_CASE_RGBA("raster/lit_points_lines", 64, 64, 2, "raster lighting", lit_points_lines),
     FC_CASE_RGBA("raster/points_smooth", 64, 128, 1, "raster points smooth", points_smooth),
     FC_CASE_RGBA("raster/points_smooth_perspective", 64, 64, 1, "raster points smooth depth", points_smooth_perspective),

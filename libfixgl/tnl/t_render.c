@@ -84,16 +84,18 @@ static void render_triangle_strip(const struct render *r, unsigned s, unsigned n
    }
 }
 
-/* GL_TRIANGLE_FAN and GL_POLYGON: vsplit's fan segments of
- * FAN_SEGMENT_SIZE vertices (its 1024-entry segment_size), each after the
- * first made of vertex 0 and the next vertices from the previous segment's
- * last pair on. */
+/* GL_TRIANGLE_FAN and GL_POLYGON: one segment up to SEGMENT_SIZE vertices;
+ * longer ones are cut into vsplit's fan segments of FAN_SEGMENT_SIZE
+ * vertices (its 1024-entry segment_size), each after the first made of
+ * vertex 0 and the next vertices from the previous segment's last pair
+ * on (draw_split_tmp.h). */
 #define FAN_SEGMENT_SIZE 1024
 
 static void render_fan(const struct render *r, unsigned s, unsigned n, bool polygon)
 {
-   for (unsigned seg = 0; seg + 2 < n; seg += FAN_SEGMENT_SIZE - 2) {
-      const unsigned cnt = n - seg < FAN_SEGMENT_SIZE ? n - seg : FAN_SEGMENT_SIZE;
+   const unsigned seg_max = n <= SEGMENT_SIZE ? SEGMENT_SIZE : FAN_SEGMENT_SIZE;
+   for (unsigned seg = 0; seg + 2 < n; seg += seg_max - 2) {
+      const unsigned cnt = n - seg < seg_max ? n - seg : seg_max;
       const bool pipeline = seg == 0 ? segment_pipeline(r, s, cnt)
                                      : segment_pipeline(r, s, 1) ||
                                        segment_clipped(r, s + seg + 1, cnt - 1);
