@@ -77,6 +77,8 @@ void fgl_update_state(struct fgl_context *ctx)
    }
 
    if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_LIGHT)) {
+      /* lp_state_rasterizer.c: line stipple or smooth points/lines put
+       * llvmpipe's two-sided lighting into draw (context.h) */
       const bool stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
       ctx->_DrawTwosideTris = (stipple || ctx->Point.SmoothFlag || ctx->Line.SmoothFlag) &&
                               ctx->Light.Enabled && ctx->Light.Model.TwoSide;
@@ -85,12 +87,14 @@ void fgl_update_state(struct fgl_context *ctx)
    if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {
       /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
        * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),
-       * MaxLineWidth(AA)] = [1, 255] (NaN stays NaN, as in CLAMP) */
+       * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
+       * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
       struct r_state *rs = &ctx->_Raster;
       const float size = ctx->Point.Size, width = ctx->Line.Width;
-      rs->point_size = size < 0.0f ? 0.0f : size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size;
-      rs->line_width = width < FGL_MIN_LINE_WIDTH ? FGL_MIN_LINE_WIDTH
-                     : width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width;
+      rs->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
+      rs->line_width = width > FGL_MIN_LINE_WIDTH
+                     ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
+                     : FGL_MIN_LINE_WIDTH;
    }
 
    ctx->NewState = 0;

@@ -477,6 +477,29 @@ static void robust_points_lines(fc_h *h)
     glColor3f(1, 0, 1); glVertex2f(0.7f, -0.7f);
     glEnd();
     fc_capture(h);
+    /* NaN size and width are accepted (Mesa only rejects <= 0) */
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(NAN); fc_error(h, "glPointSize(NaN)");
+    glLineWidth(NAN); fc_error(h, "glLineWidth(NaN)");
+    glBegin(GL_POINTS);
+    glColor3f(1, 0.5f, 0); glVertex2f(0.3f, 0.3f);
+    glEnd();
+    glBegin(GL_LINES);
+    glColor3f(0, 0.5f, 1); glVertex2f(-0.8f, 0.1f); glVertex2f(0.8f, 0.4f);
+    glEnd();
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_LINE_SMOOTH);
+    glBegin(GL_POINTS);
+    glColor3f(1, 0.5f, 0); glVertex2f(-0.3f, -0.3f);
+    glEnd();
+    glBegin(GL_LINES);
+    glColor3f(0, 0.5f, 1); glVertex2f(-0.8f, -0.1f); glVertex2f(0.8f, -0.4f);
+    glEnd();
+    glDisable(GL_POINT_SMOOTH);
+    glDisable(GL_LINE_SMOOTH);
+    fc_capture(h);
+    glPointSize(255.0f);
+    glLineWidth(255.0f);
     /* smooth: zero-length and tiny lines, the largest point, w = 0 */
     fcu_clear(0, 0, 0, 0, 1);
     glEnable(GL_LINE_SMOOTH);
@@ -1194,7 +1217,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_depth", 64, 64, 1, "raster lines depth", lines_depth),
     FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
     FC_CASE_RGBA("raster/lines_wrapped_vertex_buffer", 64, 64, 2, "raster lines stipple vbo", lines_wrapped),
-    FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 3, "raster lines points robust", robust_points_lines),
+    FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 4, "raster lines points robust", robust_points_lines),
     FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
     FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
     FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),

@@ -78,7 +78,8 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
 {
    /* v2 (the second vertex) is the provoking vertex */
    const struct r_vertex *const pv = v2;
-   const float width = rs->line_width > 1.0f ? rs->line_width : 1.0f;
+   /* MAX2(1.0, line_width) */
+   const float width = 1.0f > rs->line_width ? 1.0f : rs->line_width;
 
    for (int i = 0; i < 2; i++)
       if (!isfinite(v1->pos[i]) || !isfinite(v2->pos[i]))
@@ -100,9 +101,9 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    float y1diff = v1->pos[1] - floorf(v1->pos[1]) - 0.5f;
    float x2diff = v2->pos[0] - floorf(v2->pos[0]) - 0.5f;
    float y2diff = v2->pos[1] - floorf(v2->pos[1]) - 0.5f;
-   /* the width as a whole number of pixels */
-   const int32_t fixed_width = (width >= 0.0f ? (int32_t)(width + 0.5f)
-                                              : (int32_t)(width - 0.5f)) * 256;
+   /* the width as a whole number of pixels (width is finite here: the
+    * state tracker's CLAMP turns NaN into 1) */
+   const int32_t fixed_width = r_iround(width) * 256;
    bool draw_start, draw_end;
    int32_t x[4], y[4];
 

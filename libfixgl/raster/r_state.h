@@ -138,12 +138,20 @@ void r_point(const struct r_state *rs, const struct r_vertex *v);
  * diamond-exit emulation); v1 is the provoking vertex. */
 void r_line(const struct r_state *rs, const struct r_vertex *v0, const struct r_vertex *v1);
 
-/* llvmpipe's util_iround(256 * a) (subpixel_snap of lp_setup_line.c and
- * lp_setup_point.c): round half away from zero, then truncate. */
+/* llvmpipe's util_iround (u_math.h, the C version on x86-64): +-0.5, then
+ * truncate; NaN and out-of-range values give INT32_MIN, as cvttss2si. */
+static inline int32_t r_iround(float f)
+{
+   const float r = f >= 0.0f ? f + 0.5f : f - 0.5f;
+   if (!(r >= -2147483648.0f && r < 2147483648.0f))
+      return INT32_MIN;
+   return (int32_t)r;
+}
+
+/* subpixel_snap of lp_setup_line.c and lp_setup_point.c */
 static inline int32_t r_subpixel_snap(float a)
 {
-   const float f = 256.0f * a;
-   return f >= 0.0f ? (int32_t)(f + 0.5f) : (int32_t)(f - 0.5f);
+   return r_iround(256.0f * a);
 }
 
 /* Clear whole buffers (the masked/scissored clear arrives with its issue). */
