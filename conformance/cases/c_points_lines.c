@@ -1062,6 +1062,33 @@ static void quads_with_line_state(fc_h *h)
         glDisable(GL_POINT_SMOOTH);
         glDisable(GL_LINE_SMOOTH);
     }
+    /* the other primitives in draw's pipeline: a quad strip, a polygon and
+     * a triangle strip, lit two-sided with smooth lines on */
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_LINE_SMOOTH);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i < 8; i++) {
+        glColor3f((float)(i % 3) / 2.0f, (float)i / 7.0f, 1.0f - (float)(i % 2));
+        glNormal3f(0.1f * (float)i, 0.5f, (i & 2) ? 1.0f : -1.0f);
+        glVertex2f(3.0f + 8.0f * (float)(i / 2) + (float)(i % 2) * 2.5f, (i & 1) ? 30.0f : 3.5f);
+    }
+    glEnd();
+    glBegin(GL_POLYGON);
+    for (int i = 0; i < 6; i++) {
+        glColor3f((float)i / 5.0f, 1.0f - (float)i / 5.0f, 0.5f);
+        glNormal3f(0.0f, 0.3f, 1.0f - 0.3f * (float)i);
+        glVertex2f(48.0f + 12.0f * cosf((float)i * 1.047f), 20.0f + 12.0f * sinf((float)i * 1.047f));
+    }
+    glEnd();
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 10; i++) {
+        glColor3f(1.0f - (float)i / 9.0f, 0.4f, (float)i / 9.0f);
+        glNormal3f(0.2f, (float)(i % 3) - 1.0f, 0.7f);
+        glVertex2f(4.0f + 6.5f * (float)i, (i & 1) ? 60.0f : 40.0f + (float)(i % 3));
+    }
+    glEnd();
+    fc_capture(h);
 }
 
 /* Slivers whose snapped orientation differs from the float determinant's
@@ -1238,7 +1265,7 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/random_points", 64, 64, 4, "raster points", random_points),
     FC_CASE_RGBA("raster/random_stipple", 64, 64, 4, "raster lines stipple", random_stipple),
     FC_CASE_RGBA("raster/random_smooth", 64, 64, 4, "raster lines points smooth", random_smooth),
-    FC_CASE_RGBA("raster/quads_with_line_state", 64, 64, 5, "raster quad lighting", quads_with_line_state),
+    FC_CASE_RGBA("raster/quads_with_line_state", 64, 64, 6, "raster quad lighting", quads_with_line_state),
     FC_CASE_RGBA("raster/cull_slivers_pipeline", 64, 64, 6, "raster cull clip", cull_slivers),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
     { 0 }
