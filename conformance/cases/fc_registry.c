@@ -11,6 +11,7 @@ static const fc_case *const groups[] = {
     fc_cases_fog,
     fc_cases_fragment,
     fc_cases_polygon,
+    fc_cases_points_lines,
 };
 
 size_t fc_case_count(void)

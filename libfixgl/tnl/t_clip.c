@@ -17,7 +17,14 @@
  *
  * Then every triangle of a draw that takes the draw pipeline passes the
  * stages after clipping (draw_pipe_validate.c:validate_pipeline): cull
- * (float determinant), twoside, offset, before llvmpipe's setup.
+ * (float determinant), twoside, offset, the line stipple stage's counter
+ * restart, before llvmpipe's setup.
+ *
+ * Lines are clipped parametrically (do_clip_line): each end that is outside
+ * moves to the largest exit parameter over the planes (user planes
+ * included, through the same distance), its attributes lerped the
+ * same way; points are dropped unless the centre is inside every plane
+ * (clip_point: llvmpipe has no guard band here).
  */
 #include "tnl/t_pipeline.h"
 
@@ -74,7 +81,7 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
 
 /* The draw stages after clipping, for one triangle in window coordinates
  * (v2 provoking), then llvmpipe's setup. */
-static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v0,
+static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
                          const struct r_vertex *v1, const struct r_vertex *v2)
 {
    const struct r_state *rs = &ctx->_Raster;
@@ -127,10 +134,14 @@ static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v
          tmp[i].pos[2] = z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z);   /* SATURATE */
       }
    }
+   /* [S: draw_pipe_stipple.c:stipple_reset_tri] the line stipple stage
+    * restarts its counter on every triangle that reaches it */
+   if (dp->line_stipple)
+      ctx->StippleCounter = 0;
    r_triangle(rs, v[0], v[1], v[2]);
 }
 
-static inline void emit_tri(const struct fgl_context *ctx, bool pipeline,
+static inline void emit_tri(struct fgl_context *ctx, bool pipeline,
                             const struct r_vertex *v0, const struct r_vertex *v1,
                             const struct r_vertex *v2)
 {
@@ -140,7 +151,7 @@ static inline void emit_tri(const struct fgl_context *ctx, bool pipeline,
       r_triangle(&ctx->_Raster, v0, v1, v2);
 }
 
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                      const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline)
 {
    const struct r_state *rs = &ctx->_Raster;
@@ -236,4 +247,61 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
 
    for (unsigned i = 2; i < n; i++)
       emit_tri(ctx, true, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+}
+
+/* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */
+static void copy_flat(const struct r_state *rs, struct t_vertex *dst, const struct t_vertex *pv)
+{
+   for (int a = 0; a < rs->num_attribs; a++)
+      if (rs->flat_mask & (1u << a))
+         for (int c = 0; c < 4; c++)
+            dst->r.attr[a][c] = pv->r.attr[a][c];
+}
+
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2])
+{
+   const struct r_state *rs = &ctx->_Raster;
+   unsigned clipmask = v0->mask | v1->mask;
+
+   out[0] = *v0;
+   out[1] = *v1;
+   if (clipmask == 0)
+      return true;
+   if (v0->mask & v1->mask)
+      return false;   /* entirely outside one plane */
+
+   /* do_clip_line: the parameters at which each end leaves the volume,
+    * plane by plane in outcode-bit order */
+   float t0 = 0.0f, t1 = 0.0f;
+   while (clipmask) {
+      const int plane_idx = __builtin_ctz(clipmask);
+      const float dp0 = t_clip_dist(ctx, v0->clip, plane_idx);
+      const float dp1 = t_clip_dist(ctx, v1->clip, plane_idx);
+      if (!isfinite(dp0) || !isfinite(dp1))
+         return false;   /* discard NaN */
+      if (dp1 < 0.0f) {
+         const float t = dp1 / (dp1 - dp0);
+         t1 = t1 > t ? t1 : t;   /* MAX2 */
+      }
+      if (dp0 < 0.0f) {
+         const float t = dp0 / (dp0 - dp1);
+         t0 = t0 > t ? t0 : t;
+      }
+      if (t0 + t1 >= 1.0f)
+         return false;
+      clipmask &= ~(1u << plane_idx);
+   }
+
+   /* new ends interpolated from the end they replace towards the other,
+    * with the provoking (second) vertex's flat attributes */
+   if (v0->mask) {
+      interp(ctx, &out[0], t0, v0, v1, rs->num_attribs);
+      copy_flat(rs, &out[0], v1);
+   }
+   if (v1->mask) {
+      interp(ctx, &out[1], t1, v1, v0, rs->num_attribs);
+      copy_flat(rs, &out[1], v1);
+   }
+   return true;
 }

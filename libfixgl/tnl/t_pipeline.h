@@ -42,13 +42,27 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsig
 const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx);
 float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx);
 
-/* Clip a triangle against the view volume and the user planes and
- * rasterize the pieces; v2 is the provoking vertex.  pipeline: the draw
- * this triangle belongs to takes the draw pipeline (some vertex of its
- * segment needs clipping, or the state requires it), so every triangle
- * passes its cull/twoside/offset stages. */
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
+/* A triangle of a vsplit segment that takes draw's pipeline (`pipeline`:
+ * some vertex of its segment needs clipping, or the state requires it,
+ * ctx->_DrawPipeline.always) or goes straight to llvmpipe: clipped against
+ * the view volume and the user planes, passed through draw's cull, twoside,
+ * offset and stipple stages, then rasterized; v2 is the provoking vertex. */
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                      const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline);
+
+/* Clip a line against the view volume and the user planes
+ * (draw_pipe_clip.c:clip_line, do_clip_line); v1 is the provoking vertex.
+ * Returns false if nothing is left, else the clipped ends in out[]. */
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2]);
+
+/* Points and lines after assembly (t_linepoint.c): clipping, then the draw
+ * module's stipple stage, then the raster core.  `first` marks the first
+ * line of a primitive (DRAW_PIPE_RESET_STIPPLE); `pipeline` that the point's
+ * vsplit segment takes draw's pipeline because some vertex needs clipping. */
+void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline);
+void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
+            bool first);
 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
