@@ -1203,6 +1203,444 @@ static void point_line_state(fc_h *h)
     glLineWidth(999.0f); fc_error(h, "glLineWidth unchanged");
 }
 
+/* ---- points and lines with the other stages --------------------------------- */
+
+/* Legacy antialiasing as demos use it: smooth points and lines blended with
+ * SRC_ALPHA / ONE_MINUS_SRC_ALPHA over a background (the coverage alpha of
+ * the aapoint/aaline lowering goes through the unorm8 blend). */
+static void smooth_blend_points(fc_h *h)
+{
+    static const float sizes[] = { 1.0f, 1.5f, 2.0f, 2.5f, 3.0f, 4.0f, 5.5f, 8.0f, 11.0f, 16.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.2f, 0.4f, 1.0f, 1);
+    glEnable(GL_POINT_SMOOTH);
+    glHint(GL_POINT_SMOOTH_HINT, GL_NICEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (int i = 0; i < 10; i++) {
+        glPointSize(sizes[i]);
+        glBegin(GL_POINTS);
+        for (int j = 0; j < 4; j++) {
+            glColor4f(1.0f, (float)j / 3.0f, 0.2f + 0.08f * (float)i, 1.0f - 0.15f * (float)j);
+            glVertex2f(6.0f + 13.0f * (float)j + offs[(i + j) % NOFFS],
+                       4.0f + 12.0f * (float)i + offs[(3 * i + j) % NOFFS]);
+        }
+        glEnd();
+    }
+    fc_capture(h);
+    /* overlapping points with depth: the blend of one smooth point over
+     * another, the depth test on the quad's z */
+    fcu_clear(1.0f, 1.0f, 1.0f, 1.0f, 1);
+    glEnable(GL_DEPTH_TEST);
+    glPointSize(9.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 30; i++) {
+        glColor4f((float)(i % 3) / 2.0f, (float)(i % 5) / 4.0f, (float)(i % 7) / 6.0f, 0.6f);
+        glVertex3f(5.0f + 1.9f * (float)i, 20.0f + 15.0f * sinf((float)i * 0.5f) + 0.37f * (float)i,
+                   0.5f - 0.03f * (float)(i % 9));
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+static void smooth_blend_lines(fc_h *h)
+{
+    static const float widths[] = { 1.0f, 1.5f, 2.0f, 3.5f };
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 4; f++) {
+        fcu_clear(0.0f, 0.0f, 0.0f, 1.0f, 1);
+        glEnable(GL_LINE_SMOOTH);
+        glHint(GL_LINE_SMOOTH_HINT, GL_NICEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glLineWidth(widths[f]);
+        /* a star of lines at every angle */
+        glBegin(GL_LINES);
+        for (int i = 0; i < 24; i++) {
+            const float a = (float)i * 0.2618f + 0.05f;
+            glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+            glVertex2f(32.0f + 3.0f * cosf(a), 32.0f + 3.0f * sinf(a));
+            glColor4f((float)(i % 2), 0.5f, (float)(i % 3) / 2.0f, 0.7f);
+            glVertex2f(32.0f + 29.0f * cosf(a), 32.0f + 29.0f * sinf(a));
+        }
+        glEnd();
+        /* an antialiased wireframe loop with depth, overlapping the star */
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glBegin(GL_LINE_LOOP);
+        for (int i = 0; i < 9; i++) {
+            fcu_color(i);
+            glVertex3f(32.0f + 22.0f * cosf((float)i * 0.7f), 32.0f + 18.0f * sinf((float)i * 0.7f),
+                       0.3f * sinf((float)i));
+        }
+        glEnd();
+        glDisable(GL_DEPTH_TEST);
+        fc_capture(h);
+    }
+}
+
+/* Fog on points and lines: legacy, wide, stippled and smooth, in
+ * perspective, with every fog mode; lines cut by the near plane (the fog
+ * coordinate of the new end is interpolated by the clipper). */
+static void points_lines_fog(fc_h *h)
+{
+    static const GLenum modes[3] = { GL_LINEAR, GL_EXP, GL_EXP2 };
+    static const float fogc[4] = { 0.6f, 0.7f, 0.9f, 1.0f };
+    for (int f = 0; f < 4; f++) {
+        glViewport(0, 0, 64, 64);
+        fcu_frustum(-1, 1, -1, 1, 1, 12);
+        fcu_clear(0, 0, 0, 0, 1);
+        glEnable(GL_FOG);
+        glFogfv(GL_FOG_COLOR, fogc);
+        glFogi(GL_FOG_MODE, (GLint)modes[f % 3]);
+        glFogf(GL_FOG_START, 1.5f);
+        glFogf(GL_FOG_END, 9.0f);
+        glFogf(GL_FOG_DENSITY, 0.21f);
+        glEnable(GL_DEPTH_TEST);
+        glShadeModel(f == 1 ? GL_FLAT : GL_SMOOTH);
+        if (f == 2)
+            glEnable(GL_POINT_SMOOTH);
+        if (f == 3) {
+            glEnable(GL_LINE_SMOOTH);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        }
+        glPointSize(f == 0 ? 1.0f : 4.0f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 40; i++) {
+            const float z = -1.2f - 0.25f * (float)i;
+            glColor3f(1.0f, (float)(i % 4) / 3.0f, 0.2f);
+            glVertex3f((-0.9f + 0.045f * (float)i) * -z, (0.6f + 0.2f * sinf((float)i)) * -z, z);
+        }
+        glEnd();
+        glLineWidth(f == 0 ? 1.0f : 2.5f);
+        if (f == 1) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0x5f5f);
+        }
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i < 12; i++) {
+            const float z = 0.5f - 1.0f * (float)i;   /* the first ends are behind the near plane */
+            glColor3f((float)(i % 2), 0.3f, (float)i / 11.0f);
+            glVertex3f((-0.8f + 0.14f * (float)i) * 3.0f, ((i & 1) ? -0.3f : -0.9f) * 3.0f, z);
+        }
+        glEnd();
+        glBegin(GL_LINES);
+        for (int i = 0; i < 6; i++) {
+            glColor3f(0.2f, 1.0f, (float)i / 5.0f);
+            glVertex3f(-2.5f + 0.9f * (float)i, 0.0f, -1.1f);
+            glVertex3f(-6.0f + 2.1f * (float)i, 2.0f, -11.5f);
+        }
+        glEnd();
+        fc_capture(h);
+        glDisable(GL_POINT_SMOOTH);
+        glDisable(GL_LINE_SMOOTH);
+        glDisable(GL_LINE_STIPPLE);
+        glDisable(GL_BLEND);
+        glShadeModel(GL_SMOOTH);
+    }
+}
+
+/* Points and lines through the per-fragment operations: a scissor box that
+ * cuts wide points and lines, a stencil mask written by points and tested
+ * by lines, the alpha test against the smooth coverage alpha. */
+static void points_lines_fragment_ops(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    /* scissor */
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(9, 13, 37, 29);
+    glPointSize(7.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 36; i++) {
+        fcu_color(i);
+        glVertex2f(3.0f + 10.0f * (float)(i % 6) + offs[i % NOFFS], 5.0f + 10.0f * (float)(i / 6) + offs[(i + 5) % NOFFS]);
+    }
+    glEnd();
+    glLineWidth(3.0f);
+    glEnable(GL_LINE_SMOOTH);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 8; i++) {
+        fcu_color(i + 7);
+        glVertex2f(1.0f + 3.0f * (float)i, 60.0f);
+        glVertex2f(40.0f + 2.5f * (float)i, 2.0f + 0.5f * (float)i);
+    }
+    glEnd();
+    glDisable(GL_LINE_SMOOTH);
+    glDisable(GL_SCISSOR_TEST);
+    fc_capture(h);
+
+    /* stencil: points (legacy and smooth) write 1, then lines draw where
+     * the stencil is not 1 */
+    fcu_clear(0, 0, 0, 0, 1);
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glPointSize(6.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 25; i++) {
+        fcu_color(i);
+        glVertex2f(6.0f + 12.0f * (float)(i % 5) + 0.3f, 6.0f + 12.0f * (float)(i / 5) + 0.6f);
+    }
+    glEnd();
+    glEnable(GL_POINT_SMOOTH);
+    glPointSize(5.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 16; i++) {
+        fcu_color(i + 3);
+        glVertex2f(12.0f + 12.0f * (float)(i % 4), 12.0f + 12.0f * (float)(i / 4));
+    }
+    glEnd();
+    glDisable(GL_POINT_SMOOTH);
+    glStencilFunc(GL_NOTEQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_INCR, GL_INCR);
+    glLineWidth(2.0f);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x7777);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i < 14; i++) {
+        glColor3f(1.0f, (float)i / 13.0f, 0.5f);
+        glVertex2f(2.0f + 4.5f * (float)i, (i & 1) ? 60.0f : 3.0f);
+    }
+    glEnd();
+    glDisable(GL_LINE_STIPPLE);
+    glStencilFunc(GL_EQUAL, 2, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glColor3f(0.0f, 1.0f, 1.0f);
+    fcu_rect(0, 0, 64, 64, 0);   /* shows the pixels the strip hit twice */
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+
+    /* alpha test on the coverage alpha of smooth points and lines */
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_GREATER, 0.4f);
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_LINE_SMOOTH);
+    glPointSize(10.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 9; i++) {
+        glColor4f(1.0f, 0.5f, (float)i / 8.0f, 0.5f + 0.06f * (float)i);
+        glVertex2f(8.0f + 12.0f * (float)(i % 5) + offs[i], 8.0f + 12.0f * (float)(i / 5));
+    }
+    glEnd();
+    glLineWidth(4.0f);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 5; i++) {
+        glColor4f(0.3f, 1.0f, 0.6f, 0.45f + 0.13f * (float)i);
+        glVertex2f(3.0f, 36.0f + 5.0f * (float)i);
+        glVertex2f(61.0f, 38.0f + 6.3f * (float)i);
+    }
+    glEnd();
+    glAlphaFunc(GL_LESS, 0.6f);
+    glBegin(GL_LINES);
+    glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+    glVertex2f(30.0f, 2.0f);
+    glVertex2f(36.0f, 62.0f);
+    glEnd();
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_POINT_SMOOTH);
+    glDisable(GL_LINE_SMOOTH);
+    fc_capture(h);
+}
+
+/* Polygon offset together with line state: line stipple or smooth lines
+ * (or smooth points) make llvmpipe hand the offset to draw, so every
+ * triangle takes draw's pipeline (quad diagonal 0-1-3/1-2-3, per-vertex
+ * saturated offset from the float determinant) instead of the setup's
+ * per-fragment offset.  A hidden-line pass: filled quads with offset, then
+ * lines at the same depth that pass GL_LESS only where the offset pushed
+ * the fill back. */
+static void offset_with_line_state(fc_h *h)
+{
+    static const float q[4][3] = { { 4.5f, 3.25f, -0.8f }, { 58.0f, 9.5f, 0.3f },
+                                   { 50.75f, 60.0f, 0.7f }, { 7.0f, 44.5f, -0.1f } };
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 5; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(f == 4 ? -1.5f : 1.0f, f == 4 ? -3.0f : 2.0f);
+        if (f == 1 || f == 4) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(1, 0xf0f0);
+        }
+        if (f == 2)
+            glEnable(GL_LINE_SMOOTH);
+        if (f == 3)
+            glEnable(GL_POINT_SMOOTH);
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 4; i++) {
+            glColor3f(i == 0 || i == 3 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.2f, i == 2 ? 1.0f : 0.1f);
+            glVertex3fv(q[i]);
+        }
+        glEnd();
+        glBegin(GL_TRIANGLE_FAN);
+        glColor3f(0.5f, 0.5f, 0.5f);
+        glVertex3f(32.0f, 32.0f, 0.0f);
+        for (int i = 0; i < 7; i++) {
+            glColor3f((float)(i % 2), 0.4f, (float)i / 6.0f);
+            glVertex3f(32.0f + 20.0f * cosf((float)i), 32.0f + 20.0f * sinf((float)i), 0.2f * sinf(3.0f * (float)i));
+        }
+        glEnd();
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        /* the outlines at the same depth */
+        glColor3f(1.0f, 1.0f, 1.0f);
+        glBegin(GL_LINE_LOOP);
+        for (int i = 0; i < 4; i++)
+            glVertex3fv(q[i]);
+        glEnd();
+        glBegin(GL_LINE_LOOP);
+        for (int i = 0; i < 7; i++)
+            glVertex3f(32.0f + 20.0f * cosf((float)i), 32.0f + 20.0f * sinf((float)i), 0.2f * sinf(3.0f * (float)i));
+        glEnd();
+        fc_capture(h);
+        glDisable(GL_LINE_STIPPLE);
+        glDisable(GL_LINE_SMOOTH);
+        glDisable(GL_POINT_SMOOTH);
+    }
+}
+
+/* User clip planes cutting points and lines: lines are cut at the plane
+ * (do_clip_line's parameter from the C dot product), points are dropped
+ * when the vertex mask has the plane's bit (the fused distance), so a plane
+ * through a point's centre decides by the sign of the fused distance; wide,
+ * stippled and smooth lines, smooth points, flat colours of clipped ends. */
+static void clipplane_points_lines(fc_h *h)
+{
+    static const double p0[4] = { 1.0, 0.35, 0.0, -30.0 };
+    static const double p1[4] = { -0.2, -1.0, 0.0, 50.0 };
+    static const double p2[4] = { 0.0, 1.0, 0.0, -16.0 };   /* y = 16 exactly */
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 4; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glClipPlane(GL_CLIP_PLANE0, p0);
+        glClipPlane(GL_CLIP_PLANE3, p1);
+        glClipPlane(GL_CLIP_PLANE5, p2);
+        glEnable(GL_CLIP_PLANE0);
+        glEnable(GL_CLIP_PLANE3);
+        if (f >= 2)
+            glEnable(GL_CLIP_PLANE5);
+        glShadeModel(f == 1 ? GL_FLAT : GL_SMOOTH);
+        if (f == 2) {
+            glEnable(GL_LINE_SMOOTH);
+            glEnable(GL_POINT_SMOOTH);
+        }
+        if (f == 3) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0x3f3f);
+        }
+        glPointSize(f == 0 ? 1.0f : 3.0f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 64; i++) {
+            fcu_color(i);
+            /* some points exactly on the planes */
+            glVertex2f(2.0f + (float)(i % 8) * 8.0f, (i & 8) ? 16.0f : 2.0f + (float)(i / 8) * 8.0f);
+        }
+        glEnd();
+        glLineWidth(f == 0 ? 1.0f : 2.0f + (float)f * 0.5f);
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i < 10; i++) {
+            glColor3f((float)(i % 2), (float)i / 9.0f, 1.0f - (float)i / 9.0f);
+            glVertex2f(1.0f + 6.8f * (float)i, (i & 1) ? 62.0f : 4.0f);
+        }
+        glEnd();
+        glBegin(GL_LINE_LOOP);
+        for (int i = 0; i < 6; i++) {
+            fcu_color(i + 2);
+            glVertex2f(32.0f + 27.0f * cosf((float)i * 1.047f + 0.2f), 32.0f + 27.0f * sinf((float)i * 1.047f + 0.2f));
+        }
+        glEnd();
+        glBegin(GL_LINES);   /* lines from and to points on the y = 16 plane */
+        for (int i = 0; i < 6; i++) {
+            fcu_color(i + 9);
+            glVertex2f(5.0f + 9.0f * (float)i, 16.0f);
+            glVertex2f(9.0f + 9.0f * (float)i, 16.0f - 10.0f + 4.0f * (float)i);
+        }
+        glEnd();
+        fc_capture(h);
+        glDisable(GL_CLIP_PLANE0);
+        glDisable(GL_CLIP_PLANE3);
+        glDisable(GL_CLIP_PLANE5);
+        glDisable(GL_LINE_SMOOTH);
+        glDisable(GL_POINT_SMOOTH);
+        glDisable(GL_LINE_STIPPLE);
+    }
+    /* in perspective, under a rotated modelview, with the near plane too */
+    glViewport(0, 0, 64, 64);
+    fcu_frustum(-1, 1, -1, 1, 1, 10);
+    fcu_clear(0, 0, 0, 0, 1);
+    glRotatef(25.0f, 0.3f, 0.2f, 1.0f);
+    static const double pe[4] = { 0.4, 1.0, 0.2, 0.3 };
+    glClipPlane(GL_CLIP_PLANE1, pe);
+    glEnable(GL_CLIP_PLANE1);
+    glLoadIdentity();
+    glPointSize(2.0f);
+    glLineWidth(1.5f);
+    glBegin(GL_LINES);
+    for (int i = 0; i < 16; i++) {
+        glColor3f(1.0f, (float)(i % 4) / 3.0f, (float)i / 15.0f);
+        glVertex3f(-1.5f + 0.2f * (float)i, -1.2f, 0.5f);
+        glVertex3f(-2.5f + 0.33f * (float)i, 1.8f, -6.0f);
+    }
+    glEnd();
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 48; i++) {
+        glColor3f(0.3f, 1.0f, (float)(i % 3) / 2.0f);
+        glVertex3f(-2.0f + 0.09f * (float)i * 2.0f, 1.5f * sinf((float)i), -1.5f - 0.1f * (float)i);
+    }
+    glEnd();
+    glDisable(GL_CLIP_PLANE1);
+    fc_capture(h);
+}
+
+/* The polygon stipple is draw's pstipple stage, which passes points and
+ * lines through: smooth points and lines (quads of triangles in draw's
+ * no-cull state) and legacy ones are not stippled, the triangles drawn
+ * with them are. */
+static void polygon_stipple_points_lines(fc_h *h)
+{
+    GLubyte pat[128];
+    for (int i = 0; i < 128; i++)
+        pat[i] = (GLubyte)((i & 4) ? 0xcc : 0x33);
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 2; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glPolygonStipple(pat);
+        glEnable(GL_POLYGON_STIPPLE);
+        if (f == 1) {
+            glEnable(GL_POINT_SMOOTH);
+            glEnable(GL_LINE_SMOOTH);
+        }
+        glColor3f(0.2f, 0.4f, 1.0f);
+        fcu_rect(2, 2, 30, 30, 0);
+        glPointSize(6.0f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 16; i++) {
+            fcu_color(i);
+            glVertex2f(6.0f + 7.0f * (float)(i % 4), 36.0f + 7.0f * (float)(i / 4));
+        }
+        glEnd();
+        glLineWidth(3.0f);
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i < 7; i++) {
+            fcu_color(i + 4);
+            glVertex2f(34.0f + 4.5f * (float)i, (i & 1) ? 60.0f : 4.0f);
+        }
+        glEnd();
+        glColor3f(1.0f, 0.4f, 0.2f);
+        fcu_rect(20, 20, 44, 44, 0);
+        fc_capture(h);
+        glDisable(GL_POINT_SMOOTH);
+        glDisable(GL_LINE_SMOOTH);
+        glDisable(GL_POLYGON_STIPPLE);
+    }
+}
+
 const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/points_size_1", 64, 64, 1, "raster points", points_size_1),
     FC_CASE_RGBA("raster/points_size_1_5", 64, 64, 1, "raster points", points_size_1_5),
@@ -1268,5 +1706,13 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/quads_with_line_state", 64, 64, 6, "raster quad lighting", quads_with_line_state),
     FC_CASE_RGBA("raster/cull_slivers_pipeline", 64, 64, 6, "raster cull clip", cull_slivers),
     FC_CASE_RGBA("raster/point_line_state", 16, 16, 0, "raster api errors query", point_line_state),
+    FC_CASE_RGBA("raster/smooth_blend_points", 64, 128, 2, "raster points smooth fragment", smooth_blend_points),
+    FC_CASE_RGBA("raster/smooth_blend_lines", 64, 64, 4, "raster lines smooth fragment", smooth_blend_lines),
+    FC_CASE_RGBA("raster/points_lines_fog", 64, 64, 4, "raster lines points fog", points_lines_fog),
+    FC_CASE("raster/points_lines_fragment_ops", 64, 64, OSMESA_RGBA, 24, 8, 3, "raster lines points fragment", points_lines_fragment_ops),
+    FC_CASE_RGBA("raster/offset_with_line_state", 64, 64, 5, "raster offset lines stipple smooth", offset_with_line_state),
+    FC_CASE("raster/offset_with_line_state_z16", 64, 64, OSMESA_RGBA, 16, 0, 5, "raster offset lines stipple smooth", offset_with_line_state),
+    FC_CASE_RGBA("raster/clipplane_points_lines", 64, 64, 5, "raster lines points clip", clipplane_points_lines),
+    FC_CASE_RGBA("raster/polygon_stipple_points_lines", 64, 64, 2, "raster lines points stipple smooth", polygon_stipple_points_lines),
     { 0 }
 };
