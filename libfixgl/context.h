@@ -278,11 +278,30 @@ struct fgl_draw_pipeline {
    bool cull_front, cull_back;
    bool front_ccw;
    bool twoside;            /* twoside stage: back colours by determinant */
-   bool offset;             /* offset stage, per vertex */
+   bool offset;             /* offset stage, per vertex (any GL_POLYGON_OFFSET_*
+                             * left to draw) */
+   bool offset_fill, offset_line, offset_point;  /* which fill modes it offsets */
    float offset_units, offset_scale;
+   bool flatshade;          /* flatshade stage (precalc_flat: unfilled, line
+                             * stipple, smooth lines) */
+   bool unfilled;           /* unfilled stage: a fill mode is not GL_FILL */
+   GLenum fill_front, fill_back;  /* after the state tracker's culling
+                                   * simplification */
+   bool edge_cull_front, edge_cull_back;  /* per batch: st->edgeflag_culls_prims
+                                           * (unfilled faces culled when the
+                                           * current edge flag is false) */
    bool line_stipple;       /* the line stipple stage (pattern != 0xffff):
                              * triangles and points that reach it restart
                              * the counter */
+};
+
+/* The offset stage's latch (draw_pipe_offset.c:offset_first_tri): the
+ * first triangle after a flush (each llvmpipe draw) picks the enable of its
+ * face's fill mode, and every later triangle of the draw gets that units and
+ * factor (or zeros). */
+struct fgl_draw_offset_latch {
+   bool latched;
+   float units, scale;
 };
 
 struct fgl_context {
@@ -331,6 +350,7 @@ struct fgl_context {
    float _ViewportScale[3], _ViewportTranslate[3];
    float _ClipUserPlane[FGL_MAX_CLIP_PLANES][4];  /* clip-space planes */
    struct fgl_draw_pipeline _DrawPipeline;
+   struct fgl_draw_offset_latch _DrawOffset;
    uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
                                     * made from (all zero at first, as the
                                     * state tracker's copy) */

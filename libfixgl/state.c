@@ -235,7 +235,15 @@ void fgl_update_state(struct fgl_context *ctx)
        * tracker turns an all-ones line stipple pattern off
        * (st_atom_rasterizer.c). */
       const struct fgl_polygon_attrib *pg = &ctx->Polygon;
-      const bool unfilled = pg->FrontMode != GL_FILL || pg->BackMode != GL_FILL;
+      /* [S: st_atom_rasterizer.c] the fill modes, simplified when culling
+       * is on: a culled front face takes the back mode and a culled back
+       * face the front mode (both the back mode with GL_FRONT_AND_BACK) */
+      GLenum fill_front = pg->FrontMode, fill_back = pg->BackMode;
+      if (rs->cull_front)
+         fill_front = fill_back;
+      if (rs->cull_back)
+         fill_back = fill_front;
+      const bool unfilled = fill_front != GL_FILL || fill_back != GL_FILL;
       const bool line_stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
       const bool need_pipeline = unfilled || pg->StippleFlag || ctx->Point.SmoothFlag ||
                                  ctx->Line.SmoothFlag || line_stipple;
@@ -257,11 +265,20 @@ void fgl_update_state(struct fgl_context *ctx)
        * unfilled, or an offset enable or two-sided lighting left to draw */
       dp->always = unfilled || pg->StippleFlag || (need_pipeline && (any_offset || twoside));
       dp->twoside = twoside && need_pipeline;
-      /* draw_pipe_offset.c:offset_first_tri: filled triangles are offset
-       * only with GL_POLYGON_OFFSET_FILL */
-      dp->offset = need_pipeline && pg->OffsetFill;
+      /* draw_pipe_offset.c:offset_first_tri: the enable of the fill mode
+       * of the first triangle's face (t_clip.c) */
+      dp->offset = need_pipeline && any_offset;
+      dp->offset_fill = pg->OffsetFill;
+      dp->offset_line = pg->OffsetLine;
+      dp->offset_point = pg->OffsetPoint;
       dp->offset_units = units;
       dp->offset_scale = pg->OffsetFactor;
+      /* draw_pipe_validate.c: precalc_flat (wide lines never: llvmpipe's
+       * threshold is 10000) */
+      dp->flatshade = unfilled || line_stipple || ctx->Line.SmoothFlag;
+      dp->unfilled = unfilled;
+      dp->fill_front = fill_front;
+      dp->fill_back = fill_back;
       dp->front_ccw = rs->ccw_is_front;
       dp->cull_front = rs->cull_front;
       dp->cull_back = rs->cull_back;

@@ -90,6 +90,17 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
       r_point(&ctx->_Raster, &v->r);
 }
 
+void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
+{
+   /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
+   if (ctx->_DrawPipeline.line_stipple)
+      ctx->StippleCounter = 0;
+   if (ctx->Point.SmoothFlag)
+      aapoint_point(&ctx->_Raster, v);
+   else
+      r_point(&ctx->_Raster, v);
+}
+
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
  * pixel at each end and widened to the half width, with coordinates
  * (u, half width, v, half length), drawn as two triangles. */
@@ -250,4 +261,15 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
       stipple_line(ctx, &c[0].r, &c[1].r, first);
    else
       line_raster(ctx, &c[0].r, &c[1].r);
+}
+
+void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1)
+{
+   /* unfilled's lines carry no DRAW_PIPE_RESET_STIPPLE (the triangle's
+    * reset went through reset_stipple_counter) */
+   if (ctx->_DrawPipeline.line_stipple)
+      stipple_line(ctx, v0, v1, false);
+   else
+      line_raster(ctx, v0, v1);
 }

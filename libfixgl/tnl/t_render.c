@@ -18,7 +18,10 @@
  * 4096 vertices, 4095 for GL_TRIANGLES, 1024-vertex fan segments for fans
  * and polygons longer than 4096), when any vertex of the segment needs
  * clipping; triangles also as a whole when the state needs the pipeline's
- * stages (draw_need_pipeline: ctx->_DrawPipeline.always).
+ * stages (draw_need_pipeline: ctx->_DrawPipeline.always).  Each triangle
+ * carries the flags of draw's decomposition (draw_decompose_tmp.h): which of
+ * its edges are polygon edges (for unfilled modes, with the per-vertex edge
+ * flags) and whether it starts a primitive (line stipple restart).
  */
 #include "tnl/t_pipeline.h"
 
@@ -33,12 +36,18 @@ struct render {
    const struct t_vertex *v;     /* transformed vertices of the draw */
 };
 
-/* A triangle; `pipeline`: its vsplit segment takes draw's pipeline. */
+/* A triangle; `pipeline`: its vsplit segment takes draw's pipeline;
+ * flags: draw's decomposition flags (T_EDGE_*, T_RESET_STIPPLE). */
 static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c,
-                       bool pipeline)
+                       bool pipeline, unsigned flags)
 {
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline);
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
 }
+
+/* [S: draw_decompose_tmp.h] with the last vertex provoking: every
+ * triangle of GL_TRIANGLES, strips and fans is a primitive of its own with
+ * all three edges */
+#define TRI_FLAGS (T_RESET_STIPPLE | T_EDGE_ALL)
 
 /* Vertices [start, start+count) of a segment need the draw pipeline. */
 static bool segment_clipped(const struct render *r, unsigned start, unsigned count)
@@ -66,7 +75,7 @@ static void render_triangles(const struct render *r, unsigned s, unsigned n)
       const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
       for (unsigned i = seg; i < seg + cnt; i += 3)
-         tri(r, s + i, s + i + 1, s + i + 2, pipeline);
+         tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
    }
 }
 
@@ -79,9 +88,9 @@ static void render_triangle_strip(const struct render *r, unsigned s, unsigned n
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
       for (unsigned i = seg; i + 2 < seg + cnt; i++) {
          if (i & 1)
-            tri(r, s + i + 1, s + i, s + i + 2, pipeline);
+            tri(r, s + i + 1, s + i, s + i + 2, pipeline, TRI_FLAGS);
          else
-            tri(r, s + i, s + i + 1, s + i + 2, pipeline);
+            tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
       }
       if (seg + cnt >= n)
          break;
@@ -103,11 +112,22 @@ static void render_fan(const struct render *r, unsigned s, unsigned n, bool poly
       const bool pipeline = seg == 0 ? segment_pipeline(r, s, cnt)
                                      : segment_pipeline(r, s, 1) ||
                                        segment_clipped(r, s + seg + 1, cnt - 1);
-      for (unsigned i = seg; i + 2 < seg + cnt; i++) {
-         if (polygon)
-            tri(r, s + i + 1, s + i + 2, s, pipeline);
-         else
-            tri(r, s, s + i + 1, s + i + 2, pipeline);
+      /* a polygon's edges [S: draw_decompose_tmp.h PIPE_PRIM_POLYGON with
+       * vsplit's DRAW_SPLIT_BEFORE/AFTER]: the first triangle of each
+       * segment restarts the stipple, with the edge 0->1 only in the first
+       * segment; each triangle (i+1, i+2, 0) has its outer edge i+1 -> i+2
+       * (edge 0); the last triangle of the last segment also n-1 -> 0
+       * (edge 1) */
+      const bool split_before = seg != 0, split_after = seg + cnt < n;
+      unsigned pflags = T_RESET_STIPPLE | T_EDGE_0 | (split_before ? 0u : T_EDGE_2);
+      for (unsigned i = seg; i + 2 < seg + cnt; i++, pflags = T_EDGE_0) {
+         if (polygon) {
+            if (i + 3 == seg + cnt && !split_after)
+               pflags |= T_EDGE_1;
+            tri(r, s + i + 1, s + i + 2, s, pipeline, pflags);
+         } else {
+            tri(r, s, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
+         }
       }
       if (seg + cnt >= n)
          break;
@@ -123,12 +143,14 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
       const bool pipeline = segment_pipeline(r, start + seg, n);
       const bool split13 = constant_interp || pipeline;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
+         /* [S: draw_decompose_tmp.h PIPE_PRIM_QUADS, last vertex
+          * provoking] edges 0->1, 3->0, then 1->2, 2->3 */
          if (split13) {
-            tri(r, i, i + 1, i + 3, pipeline);
-            tri(r, i + 1, i + 2, i + 3, pipeline);
+            tri(r, i, i + 1, i + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
+            tri(r, i + 1, i + 2, i + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri(r, i, i + 1, i + 2, pipeline);
-            tri(r, i, i + 2, i + 3, pipeline);
+            tri(r, i, i + 1, i + 2, pipeline, 0);
+            tri(r, i, i + 2, i + 3, pipeline, 0);
          }
       }
    }
@@ -144,12 +166,14 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
       const bool pipeline = segment_pipeline(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
+         /* [S: draw_decompose_tmp.h PIPE_PRIM_QUAD_STRIP, last vertex
+          * provoking] edges k+2->k, k+3->k+2, then k->k+1, k+1->k+3 */
          if (pipeline) {
-            tri(r, k + 2, k, k + 3, pipeline);
-            tri(r, k, k + 1, k + 3, pipeline);
+            tri(r, k + 2, k, k + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
+            tri(r, k, k + 1, k + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri(r, k, k + 1, k + 3, pipeline);
-            tri(r, k + 2, k, k + 3, pipeline);
+            tri(r, k, k + 1, k + 3, pipeline, 0);
+            tri(r, k + 2, k, k + 3, pipeline, 0);
          }
       }
       if (seg + n >= count)
@@ -224,6 +248,23 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
       return;
    t_transform(ctx, verts, nverts, tv);
 
+   /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
+    * GL_FILL, glEdgeFlag values in the batch's vertex format are per-vertex
+    * edge flags (draw_llvm.c: edgeflag = (value == 1.0)); without them
+    * every vertex has one, and a false current edge flag culls the faces
+    * that are not filled (st_atom_rasterizer.c: edgeflag_culls_prims) */
+   struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
+   const bool edgeflags_enabled = ctx->Polygon.FrontMode != GL_FILL ||
+                                  ctx->Polygon.BackMode != GL_FILL;
+   const bool vertdata_edgeflags = edgeflags_enabled &&
+                                   ctx->Vbo.attr_size[FGL_ATTR_EDGEFLAG] != 0;
+   for (unsigned i = 0; i < nverts; i++)
+      tv[i].edge = !vertdata_edgeflags || verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f;
+   const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
+                               ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
+   dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
+   dp->edge_cull_back = edgeflag_culls && dp->fill_back != GL_FILL;
+
    const struct render r = { ctx, tv };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
@@ -250,7 +291,13 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
     * "Vertex batching"). */
    const bool constant_interp = flat && (ctx->Light.Enabled || color_varying);
-   for (unsigned i = 0; i < nprims; i++)
+   for (unsigned i = 0; i < nprims; i++) {
+      /* consecutive primitives of one mode are one llvmpipe draw
+       * (st_draw.c:st_draw_gallium_multimode), and draw is flushed after
+       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch */
+      if (i == 0 || prims[i].mode != prims[i - 1].mode)
+         ctx->_DrawOffset.latched = false;
       render_prim(&r, &prims[i], constant_interp);
+   }
    free(tv);
 }
