@@ -457,6 +457,154 @@ static void polygon_mode_api(fc_h *h)
     fc_error(h, "final");
 }
 
+/* Mixed fill modes in one draw with the polygon stipple or smooth lines on:
+ * front faces filled, back faces outlined. */
+static void mixed_modes_stages(fc_h *h)
+{
+    GLubyte pat[128];
+    for (int i = 0; i < 128; i++)
+        pat[i] = (GLubyte)((i & 4) ? 0xcc : 0x33);
+    fc_pixel_ortho(h);
+    glPolygonStipple(pat);
+    for (int f = 0; f < 4; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glPolygonMode(GL_FRONT, f < 2 ? GL_FILL : GL_LINE);
+        glPolygonMode(GL_BACK, f < 2 ? GL_LINE : GL_FILL);
+        if (f % 2 == 0)
+            glEnable(GL_POLYGON_STIPPLE);
+        else
+            glEnable(GL_LINE_SMOOTH);
+        all_prims();
+        glDisable(GL_POLYGON_STIPPLE);
+        glDisable(GL_LINE_SMOOTH);
+        fc_capture(h);
+    }
+}
+
+/* ---- pseudo-random scenes (a fixed LCG: the same calls on both sides) ---- */
+
+static unsigned lcg_next(unsigned *s)
+{
+    *s = *s * 1103515245u + 12345u;
+    return *s >> 8;
+}
+
+static float lcg_float(unsigned *s, float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(lcg_next(s) & 0xffff) / 65536.0f;
+}
+
+/* Random primitives under random unfilled state: modes per face, front
+ * face, culling, shading, edge flags, line width and stipple, point size,
+ * offset enables, two-sided lighting, depth test, perspective with
+ * near-plane crossings. */
+static void random_scenes(fc_h *h)
+{
+    static const GLenum prims[6] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                     GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    static const GLenum fills[3] = { GL_POINT, GL_LINE, GL_FILL };
+    static const GLenum culls[3] = { GL_FRONT, GL_BACK, GL_FRONT_AND_BACK };
+    unsigned seed = 4242u;
+    glViewport(0, 0, 64, 64);
+    static const float pos[4] = { 0.3f, -0.4f, 1.0f, 0.0f };
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHT0);
+    glLightfv(GL_LIGHT0, GL_POSITION, pos);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    glEnable(GL_COLOR_MATERIAL);
+    for (int f = 0; f < 8; f++) {
+        if (f & 1)
+            fcu_frustum(-1, 1, -1, 1, 1, 8);
+        else
+            fcu_ortho(-1, 1, -1, 1, -1, 1);
+        fcu_clear(0, 0, 0, 0, 1);
+        for (int d = 0; d < 6; d++) {
+            glPolygonMode(GL_FRONT, fills[lcg_next(&seed) % 3]);
+            glPolygonMode(GL_BACK, fills[lcg_next(&seed) % 3]);
+            glFrontFace(lcg_next(&seed) & 1 ? GL_CW : GL_CCW);
+            if (lcg_next(&seed) % 3 == 0) {
+                glEnable(GL_CULL_FACE);
+                glCullFace(culls[lcg_next(&seed) % 3]);
+            } else {
+                glDisable(GL_CULL_FACE);
+            }
+            glShadeModel(lcg_next(&seed) & 1 ? GL_FLAT : GL_SMOOTH);
+            glLineWidth((float)(1 + lcg_next(&seed) % 3));
+            glPointSize((float)(1 + lcg_next(&seed) % 4));
+            if (lcg_next(&seed) % 3 == 0) {
+                glEnable(GL_LINE_STIPPLE);
+                const GLint repeat = (GLint)(1 + lcg_next(&seed) % 3);
+                glLineStipple(repeat, (GLushort)(lcg_next(&seed) | 1u));
+            } else {
+                glDisable(GL_LINE_STIPPLE);
+            }
+            const unsigned off = lcg_next(&seed) % 8;
+            if (off & 1) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+            if (off & 2) glEnable(GL_POLYGON_OFFSET_LINE); else glDisable(GL_POLYGON_OFFSET_LINE);
+            if (off & 4) glEnable(GL_POLYGON_OFFSET_POINT); else glDisable(GL_POLYGON_OFFSET_POINT);
+            const float factor = lcg_float(&seed, -2.0f, 2.0f);
+            glPolygonOffset(factor, lcg_float(&seed, -4.0f, 4.0f));
+            /* no smooth points or lines here: a rasterizer change after a
+             * draw that ran draw's aapoint/aaline stage leaves llvmpipe on
+             * the previous state (raster/oracle_stale_rasterizer_after_aa) */
+            if (lcg_next(&seed) & 1) glEnable(GL_LIGHTING); else glDisable(GL_LIGHTING);
+            const bool edges = lcg_next(&seed) % 3 == 0;
+            const GLenum prim = prims[lcg_next(&seed) % 6];
+            const int n = 3 + (int)(lcg_next(&seed) % 10);
+            glBegin(prim);
+            for (int i = 0; i < n; i++) {
+                if (edges)
+                    glEdgeFlag((GLboolean)(lcg_next(&seed) % 3 != 0));
+                /* one call per statement: a defined order of the draws */
+                const float r = lcg_float(&seed, 0, 1), g = lcg_float(&seed, 0, 1);
+                glColor3f(r, g, lcg_float(&seed, 0, 1));
+                glNormal3f(r - 0.5f, g - 0.5f, 1.0f);
+                const float z = (f & 1) ? lcg_float(&seed, -6.0f, 0.5f) : lcg_float(&seed, -0.9f, 0.9f);
+                const float s = (f & 1) ? (-z > 0.3f ? -z : 0.3f) : 1.0f;
+                const float x = lcg_float(&seed, -1.1f, 1.1f) * s;
+                glVertex3f(x, lcg_float(&seed, -1.1f, 1.1f) * s, z);
+            }
+            glEnd();
+            glEdgeFlag(GL_TRUE);
+        }
+        fc_capture(h);
+    }
+}
+
+/* An oracle defect (known-differences.txt): when a rasterizer state change
+ * follows a draw that ran draw's pipeline with the aapoint (or aaline) stage
+ * in it, the stage's flush inside draw_set_rasterizer_state rebinds the
+ * previous rasterizer (draw->rast_handle is updated only after the flush),
+ * so llvmpipe->rasterizer keeps the old state (flat shading, two-sided
+ * lighting, offset of its setup) until the next rasterizer change, while
+ * its setup and draw get the new one.  Frame 0: a flat triangle, clipped
+ * (the pipeline runs) with GL_POINT_SMOOTH on; frame 1: smooth shading and
+ * GL_POINT_SMOOTH off, drawn flat by the oracle; frame 2: after a further
+ * rasterizer change (culling on), smooth again. */
+static void stale_rasterizer(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 3; f++) {
+        if (f == 0) {
+            glShadeModel(GL_FLAT);
+            glEnable(GL_POINT_SMOOTH);
+        } else if (f == 1) {
+            glShadeModel(GL_SMOOTH);
+            glDisable(GL_POINT_SMOOTH);
+        } else {
+            glEnable(GL_CULL_FACE);
+        }
+        const float dx = f == 0 ? -10.0f : 0.0f;
+        fcu_clear(0, 0, 0, 0, 1);
+        glBegin(GL_TRIANGLES);
+        glColor3f(1, 0, 0); glVertex2f(2 + dx, 2);
+        glColor3f(0, 1, 0); glVertex2f(60 + dx, 4);
+        glColor3f(0, 0, 1); glVertex2f(20 + dx, 60);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_polygon_mode[] = {
     FC_CASE_RGBA("raster/polygon_mode_line_smooth", 96, 64, 2, "raster polygon_mode", prims_line_smooth),
     FC_CASE_RGBA("raster/polygon_mode_line_flat", 96, 64, 2, "raster polygon_mode", prims_line_flat),
@@ -471,5 +619,8 @@ const fc_case fc_cases_polygon_mode[] = {
     FC_CASE_RGBA("raster/polygon_mode_clipped", 64, 64, 4, "raster polygon_mode clip", clipped_outlines),
     FC_CASE_RGBA("raster/polygon_mode_long_polygon", 64, 64, 2, "raster polygon_mode stipple", long_polygon),
     FC_CASE_RGBA("raster/polygon_mode_api", 64, 32, 1, "raster polygon_mode api errors query", polygon_mode_api),
+    FC_CASE_RGBA("raster/polygon_mode_mixed_stages", 96, 64, 4, "raster polygon_mode stipple smooth", mixed_modes_stages),
+    FC_CASE_RGBA("raster/polygon_mode_random", 64, 64, 8, "raster polygon_mode offset stipple clip", random_scenes),
+    FC_CASE_RGBA("raster/oracle_stale_rasterizer_after_aa", 64, 64, 3, "raster smooth", stale_rasterizer),
     { 0 }
 };
