@@ -496,8 +496,8 @@ static float lcg_float(unsigned *s, float lo, float hi)
 
 /* Random primitives under random unfilled state: modes per face, front
  * face, culling, shading, edge flags, line width and stipple, point size,
- * offset enables, two-sided lighting, depth test, perspective with
- * near-plane crossings. */
+ * offset enables, two-sided lighting, a user clip plane, depth test,
+ * perspective with near-plane crossings. */
 static void random_scenes(fc_h *h)
 {
     static const GLenum prims[6] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
@@ -548,6 +548,14 @@ static void random_scenes(fc_h *h)
              * draw that ran draw's aapoint/aaline stage leaves llvmpipe on
              * the previous state (raster/oracle_stale_rasterizer_after_aa) */
             if (lcg_next(&seed) & 1) glEnable(GL_LIGHTING); else glDisable(GL_LIGHTING);
+            if (lcg_next(&seed) % 3 == 0) {
+                const double px = lcg_float(&seed, -1, 1);
+                const double plane[4] = { px, 1.0, 0.3, lcg_float(&seed, -0.5f, 0.5f) };
+                glClipPlane(GL_CLIP_PLANE1, plane);
+                glEnable(GL_CLIP_PLANE1);
+            } else {
+                glDisable(GL_CLIP_PLANE1);
+            }
             const bool edges = lcg_next(&seed) % 3 == 0;
             const GLenum prim = prims[lcg_next(&seed) % 6];
             const int n = 3 + (int)(lcg_next(&seed) % 10);
@@ -569,6 +577,7 @@ static void random_scenes(fc_h *h)
         }
         fc_capture(h);
     }
+    glDisable(GL_CLIP_PLANE1);
 }
 
 /* An oracle defect (known-differences.txt): when a rasterizer state change
