@@ -48,6 +48,8 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_stencil(ctx);
    fgl_init_blend(ctx);
    fgl_init_pixelstore(ctx);
+   fgl_init_point(ctx);
+   fgl_init_line(ctx);
    fgl_init_viewport(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;

@@ -35,6 +35,13 @@
 #define FGL_VIEWPORT_BOUNDS_MIN        (-32768)
 #define FGL_VIEWPORT_BOUNDS_MAX        32767
 #define FGL_SUBPIXEL_BITS              8
+/* llvmpipe's point size and line width limits (lp_screen.c
+ * llvmpipe_get_paramf: 1..255 for aliased and smooth, granularity 0.1) */
+#define FGL_MIN_POINT_SIZE             1.0f
+#define FGL_MAX_POINT_SIZE             255.0f
+#define FGL_MIN_LINE_WIDTH             1.0f
+#define FGL_MAX_LINE_WIDTH             255.0f
+#define FGL_POINT_LINE_GRANULARITY     0.1f
 
 /* Dirty bits, one per group of derived state. */
 enum {
@@ -44,12 +51,14 @@ enum {
    FGL_NEW_DEPTH      = 1u << 3,
    FGL_NEW_LIGHT      = 1u << 4,   /* lighting state and shade model */
    FGL_NEW_BUFFERS    = 1u << 5,   /* framebuffer bound or resized */
-   FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling, offset, stipple */
+   FGL_NEW_POLYGON    = 1u << 6,   /* front face, culling, offset, stipple, fill modes */
    FGL_NEW_SCISSOR    = 1u << 7,   /* scissor box and test */
    FGL_NEW_COLOR      = 1u << 8,   /* alpha test, blending, logic op, colour mask */
    FGL_NEW_STENCIL    = 1u << 9,   /* stencil test */
    FGL_NEW_FOG        = 1u << 10,  /* fog state and GL_FOG */
    FGL_NEW_CLIP       = 1u << 11,  /* user clip planes */
+   FGL_NEW_POINT      = 1u << 12,  /* point size, smoothing */
+   FGL_NEW_LINE       = 1u << 13,  /* line width, smoothing, stipple */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -200,6 +209,21 @@ struct fgl_pixelstore {
 
 #define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
+/* GL_POINT_BIT (main/points.c) */
+struct fgl_point_attrib {
+   float Size;              /* as given (> 0); clamped when drawn */
+   bool SmoothFlag;         /* GL_POINT_SMOOTH */
+};
+
+/* GL_LINE_BIT (main/lines.c) */
+struct fgl_line_attrib {
+   float Width;             /* as given (> 0); clamped when drawn */
+   bool SmoothFlag;         /* GL_LINE_SMOOTH */
+   bool StippleFlag;        /* GL_LINE_STIPPLE */
+   GLushort StipplePattern;
+   GLint StippleFactor;     /* clamped to [1, 256] */
+};
+
 /* GL_TRANSFORM_BIT */
 struct fgl_transform_attrib {
    GLenum MatrixMode;
@@ -237,19 +261,47 @@ struct fgl_framebuffer {
    void (*FlushFront)(struct fgl_framebuffer *fb);
 };
 
-/* The stages of the oracle's draw pipeline that triangles pass through
- * after clipping (draw_pipe_validate.c:validate_pipeline), as llvmpipe
- * splits the rasterizer state between draw and its own setup
- * (lp_state_rasterizer.c:llvmpipe_create_rasterizer_state). */
+/* The oracle's draw pipeline (draw_pipe_validate.c:validate_pipeline), as
+ * llvmpipe splits the rasterizer state between draw and its own setup
+ * (lp_state_rasterizer.c:llvmpipe_create_rasterizer_state): while unfilled
+ * polygons, polygon stipple, smooth points or lines, or line stipple are on
+ * ("need_pipeline"), draw gets two-sided lighting and polygon offset and
+ * llvmpipe's setup does neither.  Triangles take the pipeline
+ * (draw_need_pipeline) when `always`, or when some vertex of their vsplit
+ * segment needs clipping; points and lines when their own stage (aapoint,
+ * aaline, line stipple) is on, or when clipped. */
 struct fgl_draw_pipeline {
-   bool always;             /* every triangle takes the pipeline (stipple,
-                             * unfilled), not only segments that need clipping */
+   bool always;             /* every triangle takes the pipeline (polygon
+                             * stipple, unfilled, or an offset enable or
+                             * two-sided lighting left to draw) */
    bool cull;               /* cull stage: float determinant, culling */
    bool cull_front, cull_back;
    bool front_ccw;
    bool twoside;            /* twoside stage: back colours by determinant */
-   bool offset;             /* offset stage, per vertex */
+   bool offset;             /* offset stage, per vertex (any GL_POLYGON_OFFSET_*
+                             * left to draw) */
+   bool offset_fill, offset_line, offset_point;  /* which fill modes it offsets */
    float offset_units, offset_scale;
+   bool flatshade;          /* flatshade stage (precalc_flat: unfilled, line
+                             * stipple, smooth lines) */
+   bool unfilled;           /* unfilled stage: a fill mode is not GL_FILL */
+   GLenum fill_front, fill_back;  /* after the state tracker's culling
+                                   * simplification */
+   bool edge_cull_front, edge_cull_back;  /* per batch: st->edgeflag_culls_prims
+                                           * (unfilled faces culled when the
+                                           * current edge flag is false) */
+   bool line_stipple;       /* the line stipple stage (pattern != 0xffff):
+                             * triangles and points that reach it restart
+                             * the counter */
+};
+
+/* The offset stage's latch (draw_pipe_offset.c:offset_first_tri): the
+ * first triangle after a flush (each llvmpipe draw) picks the enable of its
+ * face's fill mode, and every later triangle of the draw gets that units and
+ * factor (or zeros). */
+struct fgl_draw_offset_latch {
+   bool latched;
+   float units, scale;
 };
 
 struct fgl_context {
@@ -263,6 +315,8 @@ struct fgl_context {
    struct fgl_polygon_attrib Polygon;
    struct fgl_scissor_attrib Scissor;
    struct fgl_stencil_attrib Stencil;
+   struct fgl_point_attrib Point;
+   struct fgl_line_attrib Line;
    struct fgl_transform_attrib Transform;
    struct fgl_viewport_attrib Viewport;
    uint32_t PolygonStipple[32];     /* GL_POLYGON_STIPPLE_BIT: row 0 = bottom,
@@ -276,12 +330,15 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 30
+#define FGL_PENDING_CAPS 27
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */
    GLenum BeginMode;          /* FGL_OUTSIDE_BEGIN_END when not inside */
    struct fgl_vbo Vbo;
+   /* the draw module's line stipple counter (draw_pipe_stipple.c): reset
+    * by the first line of a primitive, kept across draws otherwise */
+   unsigned StippleCounter;
 
    /* ---- errors ---- */
    GLenum ErrorValue;
@@ -293,6 +350,7 @@ struct fgl_context {
    float _ViewportScale[3], _ViewportTranslate[3];
    float _ClipUserPlane[FGL_MAX_CLIP_PLANES][4];  /* clip-space planes */
    struct fgl_draw_pipeline _DrawPipeline;
+   struct fgl_draw_offset_latch _DrawOffset;
    uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
                                     * made from (all zero at first, as the
                                     * state tracker's copy) */

@@ -195,7 +195,8 @@ void fgl_update_state(struct fgl_context *ctx)
       fgl_update_clip_planes(ctx);
 
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
-                FGL_NEW_FOG | FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR)) {
+                FGL_NEW_FOG | FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR |
+                FGL_NEW_POINT | FGL_NEW_LINE)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -225,20 +226,27 @@ void fgl_update_state(struct fgl_context *ctx)
       rs->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
       /* flat_mask is set per batch by t_render_batch */
 
-      /* llvmpipe_create_rasterizer_state: with unfilled polygons, the
-       * polygon stipple, smooth points or smooth lines (or stippled lines:
-       * not yet modelled) the draw module does two-sided colours and
-       * polygon offset, else llvmpipe's setup does them; facing and
-       * culling are decided by both (draw's cull stage, then the setup's
-       * area sign).  Smooth points and lines are read through their
-       * capability flags. */
+      /* [S: lp_state_rasterizer.c:llvmpipe_create_rasterizer_state] with
+       * unfilled polygons, smooth points or lines, line stipple or the
+       * polygon stipple (need_pipeline) the draw module does two-sided
+       * colours and polygon offset (clear_flags on llvmpipe's copy), else
+       * llvmpipe's setup does them; facing and culling are decided by both
+       * (draw's cull stage, then the setup's area sign).  The state
+       * tracker turns an all-ones line stipple pattern off
+       * (st_atom_rasterizer.c). */
       const struct fgl_polygon_attrib *pg = &ctx->Polygon;
-      const bool unfilled = pg->FrontMode != GL_FILL || pg->BackMode != GL_FILL;
-      double point_smooth = 0.0, line_smooth = 0.0;
-      fgl_is_cap(ctx, GL_POINT_SMOOTH, &point_smooth);
-      fgl_is_cap(ctx, GL_LINE_SMOOTH, &line_smooth);
-      const bool need_pipeline = unfilled || pg->StippleFlag || point_smooth != 0.0 ||
-                                 line_smooth != 0.0;
+      /* [S: st_atom_rasterizer.c] the fill modes, simplified when culling
+       * is on: a culled front face takes the back mode and a culled back
+       * face the front mode (both the back mode with GL_FRONT_AND_BACK) */
+      GLenum fill_front = pg->FrontMode, fill_back = pg->BackMode;
+      if (rs->cull_front)
+         fill_front = fill_back;
+      if (rs->cull_back)
+         fill_back = fill_front;
+      const bool unfilled = fill_front != GL_FILL || fill_back != GL_FILL;
+      const bool line_stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
+      const bool need_pipeline = unfilled || pg->StippleFlag || ctx->Point.SmoothFlag ||
+                                 ctx->Line.SmoothFlag || line_stipple;
       const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
       /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
        * depth buffer; units scaled in double, then stored as float */
@@ -257,11 +265,20 @@ void fgl_update_state(struct fgl_context *ctx)
        * unfilled, or an offset enable or two-sided lighting left to draw */
       dp->always = unfilled || pg->StippleFlag || (need_pipeline && (any_offset || twoside));
       dp->twoside = twoside && need_pipeline;
-      /* draw_pipe_offset.c:offset_first_tri: filled triangles are offset
-       * only with GL_POLYGON_OFFSET_FILL */
-      dp->offset = need_pipeline && pg->OffsetFill;
+      /* draw_pipe_offset.c:offset_first_tri: the enable of the fill mode
+       * of the first triangle's face (t_clip.c) */
+      dp->offset = need_pipeline && any_offset;
+      dp->offset_fill = pg->OffsetFill;
+      dp->offset_line = pg->OffsetLine;
+      dp->offset_point = pg->OffsetPoint;
       dp->offset_units = units;
       dp->offset_scale = pg->OffsetFactor;
+      /* draw_pipe_validate.c: precalc_flat (wide lines never: llvmpipe's
+       * threshold is 10000) */
+      dp->flatshade = unfilled || line_stipple || ctx->Line.SmoothFlag;
+      dp->unfilled = unfilled;
+      dp->fill_front = fill_front;
+      dp->fill_back = fill_back;
       dp->front_ccw = rs->ccw_is_front;
       dp->cull_front = rs->cull_front;
       dp->cull_back = rs->cull_back;
@@ -269,6 +286,22 @@ void fgl_update_state(struct fgl_context *ctx)
        * determinant or culling is on */
       dp->cull = dp->cull_front || dp->cull_back || unfilled ||
                  (need_pipeline && (any_offset || twoside));
+      /* the line stipple stage: triangles and points that reach it restart
+       * the counter (draw_pipe_stipple.c) */
+      dp->line_stipple = line_stipple;
+   }
+
+   if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {
+      /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
+       * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),
+       * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
+       * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
+      struct r_state *rs = &ctx->_Raster;
+      const float size = ctx->Point.Size, width = ctx->Line.Width;
+      rs->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
+      rs->line_width = width > FGL_MIN_LINE_WIDTH
+                     ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
+                     : FGL_MIN_LINE_WIDTH;
    }
 
    ctx->NewState = 0;

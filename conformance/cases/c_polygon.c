@@ -2,8 +2,7 @@
  * polygon offset (llvmpipe's setup and draw's offset stage, 16/24-bit
  * depth), polygon stipple, user clip planes and culling of every filled
  * primitive type, with the errors and queries of each entry point.
- * (glPolygonMode GL_LINE/GL_POINT rendering waits for lines and points: no
- * case draws unfilled polygons yet.) */
+ * (glPolygonMode GL_LINE/GL_POINT rendering: c_polygon_mode.c.) */
 #include "cases.h"
 #include "lt_util.h"
 

@@ -32,6 +32,8 @@ extern const fc_case fc_cases_light_api[];
 extern const fc_case fc_cases_fog[];
 extern const fc_case fc_cases_fragment[];
 extern const fc_case fc_cases_polygon[];
+extern const fc_case fc_cases_points_lines[];
+extern const fc_case fc_cases_polygon_mode[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -11,6 +11,8 @@ static const fc_case *const groups[] = {
     fc_cases_fog,
     fc_cases_fragment,
     fc_cases_polygon,
+    fc_cases_points_lines,
+    fc_cases_polygon_mode,
 };
 
 size_t fc_case_count(void)

@@ -10,13 +10,13 @@
  * stored and reported (so programs see the oracle's errors and queries)
  * but do not affect rendering yet; README's status table lists them. */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_AUTO_NORMAL, GL_INDEX_LOGIC_OP, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
+   GL_AUTO_NORMAL, GL_INDEX_LOGIC_OP,
    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
    GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
    GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2,
    GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
-   GL_MAP2_VERTEX_4, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_TEXTURE_1D,
+   GL_MAP2_VERTEX_4, GL_POLYGON_SMOOTH, GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
    GL_TEXTURE_GEN_T,
 };
@@ -26,9 +26,7 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
    for (int i = 0; i < FGL_PENDING_CAPS; i++) {
       if (pending_caps[i] == cap) {
-         /* smooth points and lines already change how triangles are drawn
-          * (state.c: draw's pipeline) */
-         *dirty = cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH ? FGL_NEW_POLYGON : 0;
+         *dirty = 0;
          return &ctx->PendingCaps[i];
       }
    }
@@ -64,6 +62,15 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_RESCALE_NORMAL:
       *dirty = 0;   /* read at draw time (t_light.c) */
       return &ctx->Transform.RescaleNormals;
+   case GL_POINT_SMOOTH:
+      *dirty = FGL_NEW_POINT;
+      return &ctx->Point.SmoothFlag;
+   case GL_LINE_SMOOTH:
+      *dirty = FGL_NEW_LINE;
+      return &ctx->Line.SmoothFlag;
+   case GL_LINE_STIPPLE:
+      *dirty = FGL_NEW_LINE;
+      return &ctx->Line.StippleFlag;
    case GL_DEPTH_TEST:
       *dirty = FGL_NEW_DEPTH;
       return &ctx->Depth.Test;

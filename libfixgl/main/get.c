@@ -328,6 +328,37 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_STENCIL_BITS:
       set_ints(val, V_INT, 1, fb ? fb->StencilBits : 0, 0, 0, 0);
       return true;
+   /* GL_POINT_BIT, GL_LINE_BIT and their limits (Mesa's Const values from
+    * llvmpipe's caps: st_extensions.c, lp_screen.c) */
+   case GL_POINT_SIZE:
+      set_floats(val, V_FLOAT, &ctx->Point.Size, 1);
+      return true;
+   case GL_POINT_SIZE_RANGE:        /* = GL_SMOOTH_POINT_SIZE_RANGE */
+   case GL_ALIASED_POINT_SIZE_RANGE:
+      f[0] = FGL_MIN_POINT_SIZE;
+      f[1] = FGL_MAX_POINT_SIZE;
+      set_floats(val, V_FLOAT, f, 2);
+      return true;
+   case GL_POINT_SIZE_GRANULARITY:  /* = GL_SMOOTH_POINT_SIZE_GRANULARITY */
+   case GL_LINE_WIDTH_GRANULARITY:  /* = GL_SMOOTH_LINE_WIDTH_GRANULARITY */
+      f[0] = FGL_POINT_LINE_GRANULARITY;
+      set_floats(val, V_FLOAT, f, 1);
+      return true;
+   case GL_LINE_WIDTH:
+      set_floats(val, V_FLOAT, &ctx->Line.Width, 1);
+      return true;
+   case GL_LINE_WIDTH_RANGE:        /* = GL_SMOOTH_LINE_WIDTH_RANGE */
+   case GL_ALIASED_LINE_WIDTH_RANGE:
+      f[0] = FGL_MIN_LINE_WIDTH;
+      f[1] = FGL_MAX_LINE_WIDTH;
+      set_floats(val, V_FLOAT, f, 2);
+      return true;
+   case GL_LINE_STIPPLE_PATTERN:
+      set_ints(val, V_INT, 1, ctx->Line.StipplePattern, 0, 0, 0);
+      return true;
+   case GL_LINE_STIPPLE_REPEAT:
+      set_ints(val, V_INT, 1, ctx->Line.StippleFactor, 0, 0, 0);
+      return true;
    case GL_SUBPIXEL_BITS:
       set_ints(val, V_INT, 1, FGL_SUBPIXEL_BITS, 0, 0, 0);
       return true;

@@ -67,6 +67,9 @@ void fgl_unpack_stipple(const struct fgl_pixelstore *p, const uint8_t *pattern,
                         uint32_t dest[32]);
 void fgl_pack_stipple(const struct fgl_pixelstore *p, const uint32_t pattern[32],
                       uint8_t *dest);
+/* main/points.c (GL_POINT_BIT), main/lines.c (GL_LINE_BIT) */
+void fgl_init_point(struct fgl_context *ctx);
+void fgl_init_line(struct fgl_context *ctx);
 
 /* main/viewport.c (GL_VIEWPORT_BIT) */
 void fgl_init_viewport(struct fgl_context *ctx);

@@ -7,8 +7,9 @@
  * lighting), or from draw's float determinant when the triangle goes
  * through the draw pipeline (tnl/t_clip.c).
  *
- * glPolygonMode stores its state; unfilled rendering waits for lines and
- * points, so every mode still fills.
+ * glPolygonMode's GL_LINE and GL_POINT are draw's unfilled stage
+ * (tnl/t_clip.c pipeline_tri; state.c derives the modes the state tracker
+ * hands to llvmpipe).
  */
 #include <string.h>
 

@@ -12,27 +12,32 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#define R_MAX_ATTRIBS 5
+#define R_MAX_ATTRIBS 6
 
 /* Varying slots: the colour written to the buffer, the secondary colour
  * the fragment stage adds to it (separate specular), their back-face
- * versions for two-sided lighting, and the fog coordinate (x; y, z, w are
- * 0, 0, 1 as the oracle's vertex program writes them).  Only the colour
- * slots are clamped to [0,1]. */
+ * versions for two-sided lighting, the fog coordinate (x; y, z, w are
+ * 0, 0, 1 as the oracle's vertex program writes them), and the coverage
+ * coordinates of the draw module's smooth point and line quads
+ * (tnl/t_linepoint.c; written after clipping, so never part of
+ * num_attribs).  Only the colour slots are clamped to [0,1]. */
 enum {
    R_ATTR_COLOR0,
    R_ATTR_COLOR1,
    R_ATTR_BCOLOR0,
    R_ATTR_BCOLOR1,
    R_ATTR_FOG,
+   R_ATTR_AA,
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been
- * chosen: the colour, the secondary colour and the fog coordinate. */
+ * chosen: the colour, the secondary colour, the fog coordinate and the
+ * smooth point/line coverage coordinates. */
 enum {
    R_FS_COLOR0,
    R_FS_COLOR1,
    R_FS_FOG,
+   R_FS_AA,          /* the aapoint/aaline generic input */
    R_FS_NUM_INPUTS,
 };
 
@@ -45,6 +50,7 @@ static inline int r_fs_slot(int input, bool back)
    case R_FS_COLOR0: return back ? R_ATTR_BCOLOR0 : R_ATTR_COLOR0;
    case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
    case R_FS_FOG:    return R_ATTR_FOG;
+   case R_FS_AA:     return R_ATTR_AA;
    default:          return input;
    }
 }
@@ -89,6 +95,14 @@ enum r_blend_factor {
    R_BF_DST_COLOR, R_BF_INV_DST_COLOR, R_BF_DST_ALPHA, R_BF_INV_DST_ALPHA,
    R_BF_SRC_ALPHA_SATURATE,
    R_BF_CONST_COLOR, R_BF_INV_CONST_COLOR, R_BF_CONST_ALPHA, R_BF_INV_CONST_ALPHA,
+};
+
+/* Coverage lowering of the fragment shader for the draw module's smooth
+ * point and line quads (r_aa.c). */
+enum r_aa_mode {
+   R_AA_NONE,
+   R_AA_POINT,       /* nir_lower_aapoint_fs */
+   R_AA_LINE,        /* nir_lower_aaline_fs */
 };
 
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
@@ -169,6 +183,15 @@ struct r_state {
     * bit 31 - (x mod 32) to columns x mod 32 */
    bool stipple;
    uint32_t stipple_rows[32];
+
+   /* points and lines, as the state tracker clamps them
+    * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
+   float point_size;
+   float line_width;
+
+   /* smooth point/line quads: the fragment shader's coverage lowering
+    * (R_FS_AA is then one of fs_inputs) */
+   enum r_aa_mode aa;
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.
@@ -180,9 +203,38 @@ struct r_state {
 void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4]);
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4]);
 
+/* The smooth point/line lowering appended to the fragment shader
+ * (r_aa.c): false if the fragment is discarded, else color's alpha is
+ * scaled by the coverage computed from the R_FS_AA input. */
+bool r_fragment_aa(const struct r_state *rs, const float in[][4], float color[4]);
+
 /* Rasterize one triangle; v2 is the provoking vertex. */
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2);
+
+/* Rasterize one non-antialiased point (r_point.c; llvmpipe's legacy
+ * points, lp_setup_point.c). */
+void r_point(const struct r_state *rs, const struct r_vertex *v);
+
+/* Rasterize one non-antialiased line (r_line.c; lp_setup_line.c with the
+ * diamond-exit emulation); v1 is the provoking vertex. */
+void r_line(const struct r_state *rs, const struct r_vertex *v0, const struct r_vertex *v1);
+
+/* llvmpipe's util_iround (u_math.h, the C version on x86-64): +-0.5, then
+ * truncate; NaN and out-of-range values give INT32_MIN, as cvttss2si. */
+static inline int32_t r_iround(float f)
+{
+   const float r = f >= 0.0f ? f + 0.5f : f - 0.5f;
+   if (!(r >= -2147483648.0f && r < 2147483648.0f))
+      return INT32_MIN;
+   return (int32_t)r;
+}
+
+/* subpixel_snap of lp_setup_line.c and lp_setup_point.c */
+static inline int32_t r_subpixel_snap(float a)
+{
+   return r_iround(256.0f * a);
+}
 
 /* Clear whole buffers. */
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);

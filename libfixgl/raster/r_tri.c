@@ -251,6 +251,8 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
    }
    float color[4];
    r_fragment_shader(rs, (const float (*)[4])in, color);
+   if (rs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
+      return;
    /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
    r_fragment_ops(rs, px, py, eval_plane(&ts->z, fx, fy) + ts->zoffset, color);
 }

@@ -15,9 +15,23 @@
  * (ctx->_ClipUserPlane) and the same C dot product (draw_pipe_clip.c
  * getclipdist: legacy user planes dot the clip position).
  *
+ * The clipper also carries the triangle's edge flags (do_clip_tri,
+ * emit_poly): new edges along a frustum plane are hidden, along a user
+ * plane drawn.
+ *
  * Then every triangle of a draw that takes the draw pipeline passes the
  * stages after clipping (draw_pipe_validate.c:validate_pipeline): cull
- * (float determinant), twoside, offset, before llvmpipe's setup.
+ * (float determinant), twoside, offset (latched per draw), flatshade,
+ * unfilled (GL_LINE: edges v2->v0, v0->v1, v1->v2; GL_POINT: v0, v1, v2,
+ * each where the edge is flagged; they continue as points and lines,
+ * t_linepoint.c), the line stipple stage's counter restart, before
+ * llvmpipe's setup.
+ *
+ * Lines are clipped parametrically (do_clip_line): each end that is outside
+ * moves to the largest exit parameter over the planes (user planes
+ * included, through the same distance), its attributes lerped the
+ * same way; points are dropped unless the centre is inside every plane
+ * (clip_point: llvmpipe has no guard band here).
  */
 #include "tnl/t_pipeline.h"
 
@@ -73,9 +87,13 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
 }
 
 /* The draw stages after clipping, for one triangle in window coordinates
- * (v2 provoking), then llvmpipe's setup. */
-static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v0,
-                         const struct r_vertex *v1, const struct r_vertex *v2)
+ * (v2 provoking; flags: its T_EDGE_* bits already cleared where the edge's
+ * first vertex has no edge flag, and T_RESET_STIPPLE), in
+ * draw_pipe_validate.c:validate_pipeline's order: cull, twoside, offset,
+ * flatshade, unfilled, then the line stipple stage and llvmpipe's setup. */
+static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                         const struct r_vertex *v1, const struct r_vertex *v2,
+                         unsigned flags)
 {
    const struct r_state *rs = &ctx->_Raster;
    const struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
@@ -86,14 +104,15 @@ static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v
    if (dp->cull) {
       /* [S: draw_pipe_cull.c:cull_tri] e = v0 - v2, f = v1 - v2,
        * det = cross(e, f).z; det < 0 is counter-clockwise (y-down); a zero
-       * determinant counts as a back face */
+       * determinant counts as a back face.  The culled faces include those
+       * the state tracker culls for a false current edge flag. */
       const float ex = v0->pos[0] - v2->pos[0], ey = v0->pos[1] - v2->pos[1];
       const float fx = v1->pos[0] - v2->pos[0], fy = v1->pos[1] - v2->pos[1];
       det = ex * fy - ey * fx;
       bool back = true;
       if (det != 0.0f)
          back = (det < 0.0f) != dp->front_ccw;
-      if (back ? dp->cull_back : dp->cull_front)
+      if (back ? dp->cull_back || dp->edge_cull_back : dp->cull_front || dp->edge_cull_front)
          return;
    }
    if (dp->twoside && det * (dp->front_ccw ? -1.0f : 1.0f) < 0.0f) {
@@ -106,8 +125,30 @@ static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v
          v[i] = &tmp[i];
       }
    }
+
+   /* the fill mode of this face [S: draw_pipe_unfilled.c:unfilled_first_tri,
+    * unfilled_tri: mode[det >= 0], mode[0] = front_ccw ? front : back] */
+   const bool cw = det >= 0.0f;
+   const GLenum mode = cw == dp->front_ccw ? dp->fill_back : dp->fill_front;
+
    if (dp->offset) {
-      /* [S: draw_pipe_offset.c:do_offset_tri] per vertex, then saturated */
+      struct fgl_draw_offset_latch *ol = &ctx->_DrawOffset;
+      if (!ol->latched) {
+         /* [S: draw_pipe_offset.c:offset_first_tri] the first triangle
+          * after a flush decides for the whole draw, by its face's fill
+          * mode (the back mode when the modes differ and it is back-facing:
+          * the same face rule as unfilled's) */
+         GLenum fill_mode = dp->fill_front;
+         if (dp->fill_back != dp->fill_front && (det < 0.0f) != dp->front_ccw)
+            fill_mode = dp->fill_back;
+         const bool on = fill_mode == GL_FILL ? dp->offset_fill
+                       : fill_mode == GL_LINE ? dp->offset_line : dp->offset_point;
+         ol->latched = true;
+         ol->units = on ? dp->offset_units : 0.0f;
+         ol->scale = on ? dp->offset_scale : 0.0f;
+      }
+      /* [S: draw_pipe_offset.c:do_offset_tri] per vertex, then saturated
+       * (even with a zero offset) */
       const float inv_det = 1.0f / det;
       const float ex = v[0]->pos[0] - v[2]->pos[0], ey = v[0]->pos[1] - v[2]->pos[1];
       const float ez = v[0]->pos[2] - v[2]->pos[2];
@@ -116,8 +157,8 @@ static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v
       const float a = ey * fz - ez * fy;
       const float b = ez * fx - ex * fz;
       const float dzdx = fabsf(a * inv_det), dzdy = fabsf(b * inv_det);
-      const float mult = (dzdx > dzdy ? dzdx : dzdy) * dp->offset_scale;
-      const float zoffset = dp->offset_units + mult;
+      const float mult = (dzdx > dzdy ? dzdx : dzdy) * ol->scale;   /* MAX2 */
+      const float zoffset = ol->units + mult;
       for (int i = 0; i < 3; i++) {
          if (v[i] != &tmp[i]) {
             tmp[i] = *v[i];
@@ -127,27 +168,72 @@ static void pipeline_tri(const struct fgl_context *ctx, const struct r_vertex *v
          tmp[i].pos[2] = z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z);   /* SATURATE */
       }
    }
+
+   if (dp->flatshade && rs->flat_mask) {
+      /* [S: draw_pipe_flatshade.c:flatshade_tri_2] the provoking vertex's
+       * flat attributes on v0 and v1 */
+      for (int i = 0; i < 2; i++) {
+         if (v[i] != &tmp[i]) {
+            tmp[i] = *v[i];
+            v[i] = &tmp[i];
+         }
+         for (int at = 0; at < rs->num_attribs; at++)
+            if (rs->flat_mask & (1u << at))
+               memcpy(tmp[i].attr[at], v[2]->attr[at], sizeof(tmp[i].attr[0]));
+      }
+   }
+
+   if (dp->unfilled && mode == GL_LINE) {
+      /* [S: draw_pipe_unfilled.c:lines] the stipple counter restarts at a
+       * primitive's first triangle; edges v2->v0, v0->v1, v1->v2 */
+      if ((flags & T_RESET_STIPPLE) && dp->line_stipple)
+         ctx->StippleCounter = 0;
+      if (flags & T_EDGE_2)
+         t_unfilled_line(ctx, v[2], v[0]);
+      if (flags & T_EDGE_0)
+         t_unfilled_line(ctx, v[0], v[1]);
+      if (flags & T_EDGE_1)
+         t_unfilled_line(ctx, v[1], v[2]);
+      return;
+   }
+   if (dp->unfilled && mode == GL_POINT) {
+      /* [S: draw_pipe_unfilled.c:points] v0, v1, v2 */
+      for (int i = 0; i < 3; i++)
+         if (flags & (T_EDGE_0 << i))
+            t_unfilled_point(ctx, v[i]);
+      return;
+   }
+
+   /* [S: draw_pipe_stipple.c:stipple_reset_tri] the line stipple stage
+    * restarts its counter on every triangle that reaches it */
+   if (dp->line_stipple)
+      ctx->StippleCounter = 0;
    r_triangle(rs, v[0], v[1], v[2]);
 }
 
-static inline void emit_tri(const struct fgl_context *ctx, bool pipeline,
-                            const struct r_vertex *v0, const struct r_vertex *v1,
-                            const struct r_vertex *v2)
+/* The unclipped triangle's flags with the edges of vertices whose edge
+ * flag is off removed (unfilled draws an edge when both are set). */
+static inline unsigned edge_flags(unsigned flags, const struct t_vertex *v0,
+                                  const struct t_vertex *v1, const struct t_vertex *v2)
 {
-   if (pipeline)
-      pipeline_tri(ctx, v0, v1, v2);
-   else
-      r_triangle(&ctx->_Raster, v0, v1, v2);
+   return (flags & T_RESET_STIPPLE) | (v0->edge ? flags & T_EDGE_0 : 0u) |
+          (v1->edge ? flags & T_EDGE_1 : 0u) | (v2->edge ? flags & T_EDGE_2 : 0u);
 }
 
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline)
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline,
+                     unsigned flags)
 {
    const struct r_state *rs = &ctx->_Raster;
    unsigned clipmask = v0->mask | v1->mask | v2->mask;
 
+   if (!pipeline) {
+      /* straight to llvmpipe (nothing in the segment needs clipping) */
+      r_triangle(rs, &v0->r, &v1->r, &v2->r);
+      return;
+   }
    if (clipmask == 0) {
-      emit_tri(ctx, pipeline, &v0->r, &v1->r, &v2->r);
+      pipeline_tri(ctx, &v0->r, &v1->r, &v2->r, edge_flags(flags, v0, v1, v2));
       return;
    }
    if (v0->mask & v1->mask & v2->mask)
@@ -157,15 +243,24 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
    unsigned tmpnr = 0;
    const struct t_vertex *a[MAX_CLIPPED_VERTICES + 1], *b[MAX_CLIPPED_VERTICES + 1];
    const struct t_vertex **inlist = a, **outlist = b;
+   /* [S: draw_pipe_clip.c:do_clip_tri] the header's edge bits follow the
+    * polygon as it is clipped: edge k starts at vertex k */
+   bool ea[MAX_CLIPPED_VERTICES + 1], eb[MAX_CLIPPED_VERTICES + 1];
+   bool *in_edges = ea, *out_edges = eb;
    unsigned n = 3;
    inlist[0] = v0;
    inlist[1] = v1;
    inlist[2] = v2;
+   in_edges[0] = (flags & T_EDGE_0) != 0;
+   in_edges[1] = (flags & T_EDGE_1) != 0;
+   in_edges[2] = (flags & T_EDGE_2) != 0;
 
    while (clipmask && n >= 3) {
       const int plane_idx = __builtin_ctz(clipmask);
+      const bool user_plane = plane_idx >= 6;
       const float *plane = t_clip_plane(ctx, plane_idx);
       const struct t_vertex *vert_prev = inlist[0];
+      bool edge_prev = in_edges[0];
       float dp_prev = dot4(vert_prev->clip, plane);
       unsigned outcount = 0;
 
@@ -173,9 +268,11 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
       if (!isfinite(dp_prev) || n >= MAX_CLIPPED_VERTICES)
          return;
       inlist[n] = inlist[0];
+      in_edges[n] = in_edges[0];
 
       for (unsigned i = 1; i <= n; i++) {
          const struct t_vertex *vert = inlist[i];
+         const bool edge = in_edges[i];
          const float dp = dot4(vert->clip, plane);
          bool different_sign;
 
@@ -184,6 +281,7 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
          if (dp_prev >= 0.0f) {
             if (outcount >= MAX_CLIPPED_VERTICES)
                return;
+            out_edges[outcount] = edge_prev;
             outlist[outcount++] = vert_prev;
             different_sign = dp < 0.0f;
          } else {
@@ -194,6 +292,7 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
             if (tmpnr >= MAX_CLIPPED_VERTICES + 1 || outcount >= MAX_CLIPPED_VERTICES)
                return;
             struct t_vertex *nv = &tmp[tmpnr++];
+            bool *new_edge = &out_edges[outcount];
             outlist[outcount++] = nv;
             const float denom = dp - dp_prev;
             if (dp < 0.0f) {
@@ -202,21 +301,36 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
                   interp(ctx, nv, dp / denom, vert, vert_prev, rs->num_attribs);
                else
                   interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->num_attribs);
+               /* an edge along a user plane is drawn, one along a frustum
+                * plane is not (NVIDIA's behaviour, says Mesa) */
+               if (user_plane) {
+                  *new_edge = true;
+                  nv->edge = true;
+               } else {
+                  *new_edge = edge_prev;
+                  nv->edge = false;
+               }
             } else {
-               /* coming back in */
+               /* coming back in: the starting vertex's edge flag */
                if (-dp_prev < dp)
                   interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->num_attribs);
                else
                   interp(ctx, nv, dp / denom, vert, vert_prev, rs->num_attribs);
+               nv->edge = vert_prev->edge;
+               *new_edge = edge_prev;
             }
          }
          vert_prev = vert;
+         edge_prev = edge;
          dp_prev = dp;
       }
 
       const struct t_vertex **t = inlist;
       inlist = outlist;
       outlist = t;
+      bool *te = in_edges;
+      in_edges = out_edges;
+      out_edges = te;
       n = outcount;
    }
 
@@ -234,6 +348,75 @@ void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
       inlist[0] = p0;
    }
 
-   for (unsigned i = 2; i < n; i++)
-      emit_tri(ctx, true, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r);
+   /* [S: draw_pipe_clip.c:emit_poly] the fan (P[i-1], P[i], P[0]): the
+    * first triangle restarts the stipple and carries the edge P[0]->P[1]
+    * (its edge 2), each the edge P[i-1]->P[i] (edge 0), the last also
+    * P[n-1]->P[0] (edge 1) */
+   const unsigned edge_first = in_edges[0] ? T_EDGE_2 : 0u;
+   unsigned tri_flags = T_RESET_STIPPLE | edge_first | T_EDGE_0;
+   for (unsigned i = 2; i < n; i++, tri_flags = T_EDGE_0) {
+      if (!in_edges[i - 1])
+         tri_flags &= ~T_EDGE_0;
+      if (i == n - 1 && in_edges[i])
+         tri_flags |= T_EDGE_1;
+      pipeline_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r,
+                   edge_flags(tri_flags, inlist[i - 1], inlist[i], inlist[0]));
+   }
+}
+
+/* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */
+static void copy_flat(const struct r_state *rs, struct t_vertex *dst, const struct t_vertex *pv)
+{
+   for (int a = 0; a < rs->num_attribs; a++)
+      if (rs->flat_mask & (1u << a))
+         for (int c = 0; c < 4; c++)
+            dst->r.attr[a][c] = pv->r.attr[a][c];
+}
+
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2])
+{
+   const struct r_state *rs = &ctx->_Raster;
+   unsigned clipmask = v0->mask | v1->mask;
+
+   out[0] = *v0;
+   out[1] = *v1;
+   if (clipmask == 0)
+      return true;
+   if (v0->mask & v1->mask)
+      return false;   /* entirely outside one plane */
+
+   /* do_clip_line: the parameters at which each end leaves the volume,
+    * plane by plane in outcode-bit order */
+   float t0 = 0.0f, t1 = 0.0f;
+   while (clipmask) {
+      const int plane_idx = __builtin_ctz(clipmask);
+      const float dp0 = t_clip_dist(ctx, v0->clip, plane_idx);
+      const float dp1 = t_clip_dist(ctx, v1->clip, plane_idx);
+      if (!isfinite(dp0) || !isfinite(dp1))
+         return false;   /* discard NaN */
+      if (dp1 < 0.0f) {
+         const float t = dp1 / (dp1 - dp0);
+         t1 = t1 > t ? t1 : t;   /* MAX2 */
+      }
+      if (dp0 < 0.0f) {
+         const float t = dp0 / (dp0 - dp1);
+         t0 = t0 > t ? t0 : t;
+      }
+      if (t0 + t1 >= 1.0f)
+         return false;
+      clipmask &= ~(1u << plane_idx);
+   }
+
+   /* new ends interpolated from the end they replace towards the other,
+    * with the provoking (second) vertex's flat attributes */
+   if (v0->mask) {
+      interp(ctx, &out[0], t0, v0, v1, rs->num_attribs);
+      copy_flat(rs, &out[0], v1);
+   }
+   if (v1->mask) {
+      interp(ctx, &out[1], t1, v1, v0, rs->num_attribs);
+      copy_flat(rs, &out[1], v1);
+   }
+   return true;
 }

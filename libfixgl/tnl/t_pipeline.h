@@ -13,12 +13,25 @@
 struct fgl_context;
 
 /* A vertex after the vertex "shader": clip-space position, outcode bits
- * (llvmpipe-facts.md §1 "Outcodes"), window position and varyings. */
+ * (llvmpipe-facts.md §1 "Outcodes"), its edge flag (vertex_header.edgeflag:
+ * the glEdgeFlag value == 1.0, or 1 without per-vertex edge flags), window
+ * position and varyings. */
 struct t_vertex {
    float clip[4];
    unsigned mask;
+   bool edge;
    struct r_vertex r;
 };
+
+/* The prim_header flags of draw's primitive decomposition (draw_pipe.h,
+ * draw_decompose_tmp.h): T_EDGE_i marks the edge from v[i] to v[(i+1)%3]
+ * as a polygon edge (drawn by unfilled modes when that vertex's edge flag
+ * is set too), T_RESET_STIPPLE the first triangle of a primitive. */
+#define T_EDGE_0        0x1u
+#define T_EDGE_1        0x2u
+#define T_EDGE_2        0x4u
+#define T_EDGE_ALL      0x7u
+#define T_RESET_STIPPLE 0x8u
 
 /* Transform n stored vertices (positions, colours) into out[]. */
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
@@ -42,13 +55,36 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsig
 const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx);
 float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx);
 
-/* Clip a triangle against the view volume and the user planes and
- * rasterize the pieces; v2 is the provoking vertex.  pipeline: the draw
- * this triangle belongs to takes the draw pipeline (some vertex of its
- * segment needs clipping, or the state requires it), so every triangle
- * passes its cull/twoside/offset stages. */
-void t_clip_triangle(const struct fgl_context *ctx, const struct t_vertex *v0,
-                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline);
+/* A triangle of a vsplit segment that takes draw's pipeline (`pipeline`:
+ * some vertex of its segment needs clipping, or the state requires it,
+ * ctx->_DrawPipeline.always) or goes straight to llvmpipe: clipped against
+ * the view volume and the user planes, passed through draw's cull, twoside,
+ * offset, flatshade, unfilled and stipple stages, then rasterized; v2 is
+ * the provoking vertex; flags are its T_EDGE_* / T_RESET_STIPPLE bits. */
+void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
+                     const struct t_vertex *v1, const struct t_vertex *v2, bool pipeline,
+                     unsigned flags);
+
+/* Clip a line against the view volume and the user planes
+ * (draw_pipe_clip.c:clip_line, do_clip_line); v1 is the provoking vertex.
+ * Returns false if nothing is left, else the clipped ends in out[]. */
+bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
+                 const struct t_vertex *v1, struct t_vertex out[2]);
+
+/* Points and lines after assembly (t_linepoint.c): clipping, then the draw
+ * module's stipple stage, then the raster core.  `first` marks the first
+ * line of a primitive (DRAW_PIPE_RESET_STIPPLE); `pipeline` that the point's
+ * vsplit segment takes draw's pipeline because some vertex needs clipping. */
+void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline);
+void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
+            bool first);
+
+/* The points and lines the unfilled stage makes of a triangle, through the
+ * stages after it (stipple, aapoint/aaline) to llvmpipe; they are already
+ * clipped and flat-shaded. */
+void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v);
+void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1);
 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,

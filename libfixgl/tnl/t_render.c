@@ -12,11 +12,16 @@
  *                   the draw pipeline
  *   QUAD_STRIP      direct:   (k,k+1,k+3) then (k+2,k,k+3)
  *                   pipeline: (k+2,k,k+3) then (k,k+1,k+3)
- * A draw goes through the draw pipeline, segment by segment (4096 vertices,
- * Mesa's vsplit), when any vertex of the segment needs clipping, and
- * always when the state needs the pipeline's stages (polygon stipple,
- * unfilled polygons: ctx->_DrawPipeline.always).  The pipeline decision of
- * non-quad primitives is made for the whole primitive.
+ *   POINTS, LINES   each vertex, each pair (i, i+1)
+ *   LINE_STRIP/LOOP (i-1, i), closed by (n-1, 0)   provoking vertex = 2nd
+ * A draw goes through the draw pipeline, segment by segment (Mesa's vsplit:
+ * 4096 vertices, 4095 for GL_TRIANGLES, 1024-vertex fan segments for fans
+ * and polygons longer than 4096), when any vertex of the segment needs
+ * clipping; triangles also as a whole when the state needs the pipeline's
+ * stages (draw_need_pipeline: ctx->_DrawPipeline.always).  Each triangle
+ * carries the flags of draw's decomposition (draw_decompose_tmp.h): which of
+ * its edges are polygon edges (for unfilled modes, with the per-vertex edge
+ * flags) and whether it starts a primitive (line stipple restart).
  */
 #include "tnl/t_pipeline.h"
 
@@ -30,48 +35,131 @@
 #define SEGMENT_SIZE 4096
 
 struct render {
-   const struct fgl_context *ctx;
+   struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
-   bool pipeline;                /* the current segment takes the draw pipeline */
 };
 
-static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c)
+/* A triangle; `pipeline`: its vsplit segment takes draw's pipeline;
+ * flags: draw's decomposition flags (T_EDGE_*, T_RESET_STIPPLE). */
+static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c,
+                       bool pipeline, unsigned flags)
 {
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], r->pipeline);
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
 }
+
+/* [S: draw_decompose_tmp.h] with the last vertex provoking: every
+ * triangle of GL_TRIANGLES, strips and fans is a primitive of its own with
+ * all three edges */
+#define TRI_FLAGS (T_RESET_STIPPLE | T_EDGE_ALL)
 
 /* Vertices [start, start+count) of a segment need the draw pipeline. */
 static bool segment_clipped(const struct render *r, unsigned start, unsigned count)
 {
-   if (r->ctx->_DrawPipeline.always)
-      return true;
    unsigned m = 0;
    for (unsigned i = start; i < start + count; i++)
       m |= r->v[i].mask;
    return m != 0;
 }
 
-static void render_quads(struct render *r, unsigned start, unsigned count,
+/* Whether a segment of triangles takes draw's pipeline: the state needs it
+ * (polygon stipple, unfilled, offset or two-sided lighting left to draw),
+ * or some vertex needs clipping. */
+static bool segment_pipeline(const struct render *r, unsigned start, unsigned count)
+{
+   return r->ctx->_DrawPipeline.always || segment_clipped(r, start, count);
+}
+
+/* GL_TRIANGLES: vsplit segments of 4095 vertices (the 4096 trimmed to
+ * whole triangles). */
+static void render_triangles(const struct render *r, unsigned s, unsigned n)
+{
+   n -= n % 3;
+   for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE - 1) {
+      const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
+      const bool pipeline = segment_pipeline(r, s + seg, cnt);
+      for (unsigned i = seg; i < seg + cnt; i += 3)
+         tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
+   }
+}
+
+/* GL_TRIANGLE_STRIP: segments of 4096 vertices overlapping by two (an even
+ * step, so the winding parity is kept). */
+static void render_triangle_strip(const struct render *r, unsigned s, unsigned n)
+{
+   for (unsigned seg = 0; seg + 2 < n; seg += SEGMENT_SIZE - 2) {
+      const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+      const bool pipeline = segment_pipeline(r, s + seg, cnt);
+      for (unsigned i = seg; i + 2 < seg + cnt; i++) {
+         if (i & 1)
+            tri(r, s + i + 1, s + i, s + i + 2, pipeline, TRI_FLAGS);
+         else
+            tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
+      }
+      if (seg + cnt >= n)
+         break;
+   }
+}
+
+/* GL_TRIANGLE_FAN and GL_POLYGON: one segment up to SEGMENT_SIZE vertices;
+ * longer ones are cut into vsplit's fan segments of FAN_SEGMENT_SIZE
+ * vertices (its 1024-entry segment_size), each after the first made of
+ * vertex 0 and the next vertices from the previous segment's last pair
+ * on (draw_split_tmp.h). */
+#define FAN_SEGMENT_SIZE 1024
+
+static void render_fan(const struct render *r, unsigned s, unsigned n, bool polygon)
+{
+   const unsigned seg_max = n <= SEGMENT_SIZE ? SEGMENT_SIZE : FAN_SEGMENT_SIZE;
+   for (unsigned seg = 0; seg + 2 < n; seg += seg_max - 2) {
+      const unsigned cnt = n - seg < seg_max ? n - seg : seg_max;
+      const bool pipeline = seg == 0 ? segment_pipeline(r, s, cnt)
+                                     : segment_pipeline(r, s, 1) ||
+                                       segment_clipped(r, s + seg + 1, cnt - 1);
+      /* a polygon's edges [S: draw_decompose_tmp.h PIPE_PRIM_POLYGON with
+       * vsplit's DRAW_SPLIT_BEFORE/AFTER]: the first triangle of each
+       * segment restarts the stipple, with the edge 0->1 only in the first
+       * segment; each triangle (i+1, i+2, 0) has its outer edge i+1 -> i+2
+       * (edge 0); the last triangle of the last segment also n-1 -> 0
+       * (edge 1) */
+      const bool split_before = seg != 0, split_after = seg + cnt < n;
+      unsigned pflags = T_RESET_STIPPLE | T_EDGE_0 | (split_before ? 0u : T_EDGE_2);
+      for (unsigned i = seg; i + 2 < seg + cnt; i++, pflags = T_EDGE_0) {
+         if (polygon) {
+            if (i + 3 == seg + cnt && !split_after)
+               pflags |= T_EDGE_1;
+            tri(r, s + i + 1, s + i + 2, s, pipeline, pflags);
+         } else {
+            tri(r, s, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
+         }
+      }
+      if (seg + cnt >= n)
+         break;
+   }
+}
+
+static void render_quads(const struct render *r, unsigned start, unsigned count,
                          bool constant_interp)
 {
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      r->pipeline = segment_clipped(r, start + seg, n);
-      const bool split13 = constant_interp || r->pipeline;
+      const bool pipeline = segment_pipeline(r, start + seg, n);
+      const bool split13 = constant_interp || pipeline;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
+         /* [S: draw_decompose_tmp.h PIPE_PRIM_QUADS, last vertex
+          * provoking] edges 0->1, 3->0, then 1->2, 2->3 */
          if (split13) {
-            tri(r, i, i + 1, i + 3);
-            tri(r, i + 1, i + 2, i + 3);
+            tri(r, i, i + 1, i + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
+            tri(r, i + 1, i + 2, i + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri(r, i, i + 1, i + 2);
-            tri(r, i, i + 2, i + 3);
+            tri(r, i, i + 1, i + 2, pipeline, 0);
+            tri(r, i, i + 2, i + 3, pipeline, 0);
          }
       }
    }
 }
 
-static void render_quad_strip(struct render *r, unsigned start, unsigned count)
+static void render_quad_strip(const struct render *r, unsigned start, unsigned count)
 {
    count &= ~1u;
    if (count < 4)
@@ -79,14 +167,16 @@ static void render_quad_strip(struct render *r, unsigned start, unsigned count)
    /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
    for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
-      r->pipeline = segment_clipped(r, start + seg, n);
+      const bool pipeline = segment_pipeline(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
-         if (r->pipeline) {
-            tri(r, k + 2, k, k + 3);
-            tri(r, k, k + 1, k + 3);
+         /* [S: draw_decompose_tmp.h PIPE_PRIM_QUAD_STRIP, last vertex
+          * provoking] edges k+2->k, k+3->k+2, then k->k+1, k+1->k+3 */
+         if (pipeline) {
+            tri(r, k + 2, k, k + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
+            tri(r, k, k + 1, k + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri(r, k, k + 1, k + 3);
-            tri(r, k + 2, k, k + 3);
+            tri(r, k, k + 1, k + 3, pipeline, 0);
+            tri(r, k + 2, k, k + 3, pipeline, 0);
          }
       }
       if (seg + n >= count)
@@ -94,31 +184,20 @@ static void render_quad_strip(struct render *r, unsigned start, unsigned count)
    }
 }
 
-static void render_prim(struct render *r, const struct fgl_vbo_prim *p,
+static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
                         bool constant_interp)
 {
    const unsigned s = p->start, n = p->count;
-   r->pipeline = segment_clipped(r, s, n);
    switch (p->mode) {
    case GL_TRIANGLES:
-      for (unsigned i = 0; i + 2 < n; i += 3)
-         tri(r, s + i, s + i + 1, s + i + 2);
+      render_triangles(r, s, n);
       break;
    case GL_TRIANGLE_STRIP:
-      for (unsigned i = 0; i + 2 < n; i++) {
-         if (i & 1)
-            tri(r, s + i + 1, s + i, s + i + 2);
-         else
-            tri(r, s + i, s + i + 1, s + i + 2);
-      }
+      render_triangle_strip(r, s, n);
       break;
    case GL_TRIANGLE_FAN:
-      for (unsigned i = 0; i + 2 < n; i++)
-         tri(r, s, s + i + 1, s + i + 2);
-      break;
    case GL_POLYGON:
-      for (unsigned i = 0; i + 2 < n; i++)
-         tri(r, s + i + 1, s + i + 2, s);
+      render_fan(r, s, n, p->mode == GL_POLYGON);
       break;
    case GL_QUADS:
       render_quads(r, s, n, constant_interp);
@@ -126,8 +205,35 @@ static void render_prim(struct render *r, const struct fgl_vbo_prim *p,
    case GL_QUAD_STRIP:
       render_quad_strip(r, s, n);
       break;
+   case GL_POINTS:
+      /* vsplit segments: a segment with a clipped vertex takes draw's
+       * pipeline (which matters to the line stipple counter only) */
+      for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE) {
+         const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+         const bool pipeline = segment_clipped(r, s + seg, cnt);
+         for (unsigned i = seg; i < seg + cnt; i++)
+            t_point(r->ctx, &r->v[s + i], pipeline);
+      }
+      break;
+   case GL_LINES:
+      /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
+      for (unsigned i = 0; i + 1 < n; i += 2)
+         t_line(r->ctx, &r->v[s + i], &r->v[s + i + 1], true);
+      break;
+   case GL_LINE_STRIP:
+   case GL_LINE_LOOP:
+      /* draw_decompose_tmp.h: (i-1, i), the stipple counter reset by the
+       * first line only; a loop is closed by (n-1, 0).  vsplit's segments
+       * (DRAW_SPLIT_BEFORE/AFTER) and Mesa's vbo wrapping of a loop into
+       * strips keep this order and the counter, so they need no model. */
+      if (n < 2)
+         break;
+      for (unsigned i = 1; i < n; i++)
+         t_line(r->ctx, &r->v[s + i - 1], &r->v[s + i], i == 1);
+      if (p->mode == GL_LINE_LOOP)
+         t_line(r->ctx, &r->v[s + n - 1], &r->v[s], false);
+      break;
    default:
-      /* points and lines arrive with their own issue */
       break;
    }
 }
@@ -157,7 +263,24 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
 #endif
    t_transform(ctx, verts, nverts, tv);
 
-   struct render r = { ctx, tv, false };
+   /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
+    * GL_FILL, glEdgeFlag values in the batch's vertex format are per-vertex
+    * edge flags (draw_llvm.c: edgeflag = (value == 1.0)); without them
+    * every vertex has one, and a false current edge flag culls the faces
+    * that are not filled (st_atom_rasterizer.c: edgeflag_culls_prims) */
+   struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
+   const bool edgeflags_enabled = ctx->Polygon.FrontMode != GL_FILL ||
+                                  ctx->Polygon.BackMode != GL_FILL;
+   const bool vertdata_edgeflags = edgeflags_enabled &&
+                                   ctx->Vbo.attr_size[FGL_ATTR_EDGEFLAG] != 0;
+   for (unsigned i = 0; i < nverts; i++)
+      tv[i].edge = !vertdata_edgeflags || verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f;
+   const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
+                               ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
+   dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
+   dp->edge_cull_back = edgeflag_culls && dp->fill_back != GL_FILL;
+
+   const struct render r = { ctx, tv };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program
@@ -183,8 +306,14 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
     * "Vertex batching"). */
    const bool constant_interp = flat && (ctx->Light.Enabled || color_varying);
-   for (unsigned i = 0; i < nprims; i++)
+   for (unsigned i = 0; i < nprims; i++) {
+      /* consecutive primitives of one mode are one llvmpipe draw
+       * (st_draw.c:st_draw_gallium_multimode), and draw is flushed after
+       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch */
+      if (i == 0 || prims[i].mode != prims[i - 1].mode)
+         ctx->_DrawOffset.latched = false;
       render_prim(&r, &prims[i], constant_interp);
+   }
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif

@@ -42,15 +42,16 @@ static unsigned compute_max_verts(const struct fgl_vbo *vbo)
 }
 
 /* vbo_copy_vertices: how many trailing vertices of the open primitive
- * continue in the next buffer; may shorten the draw (odd strips). */
-static unsigned copy_vertices(struct fgl_vbo *vbo, struct fgl_vbo_vertex *dst)
+ * (of GL mode `mode`, ctx->Driver.CurrentExecPrimitive) continue in the next
+ * buffer; may shorten the draw (odd strips). */
+static unsigned copy_vertices(struct fgl_vbo *vbo, GLenum mode, struct fgl_vbo_vertex *dst)
 {
    struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
    const struct fgl_vbo_vertex *src = vbo->verts + last->start;
    const unsigned count = last->count;
    unsigned copy;
 
-   switch (last->mode) {
+   switch (mode) {
    case GL_POINTS:
       return 0;
    case GL_LINES:
@@ -66,6 +67,14 @@ static unsigned copy_vertices(struct fgl_vbo *vbo, struct fgl_vbo_vertex *dst)
       copy = count < 1 ? count : 1;
       break;
    case GL_LINE_LOOP:
+      /* a later section of a wrapped loop was drawn from start + 1
+       * (wrap_buffers); step back to its copied vertex 0.  The count stays
+       * the shortened one, so the second copy is the section's
+       * second-to-last vertex, not its last: the oracle's next section
+       * starts there and the loop skips one vertex per such wrap. */
+      if (!last->begin)
+         src--;
+      /* fallthrough */
    case GL_TRIANGLE_FAN:
    case GL_POLYGON:
       if (count == 0)
@@ -104,7 +113,7 @@ static void vtx_flush(struct fgl_context *ctx, struct fgl_vbo_vertex *copied,
       copied = scratch;
    if (vbo->prim_count && vbo->vert_count) {
       if (fgl_inside_begin_end(ctx))
-         nc = copy_vertices(vbo, copied);
+         nc = copy_vertices(vbo, ctx->BeginMode, copied);
       if (nc != vbo->vert_count)
          t_render_batch(ctx, vbo->verts, vbo->vert_count, vbo->prims, vbo->prim_count);
    }
@@ -138,6 +147,17 @@ static unsigned wrap_buffers(struct fgl_context *ctx, struct fgl_vbo_vertex *cop
       last->count = vbo->vert_count - last->start;
       last_count = last->count;
       last->end = false;
+   }
+
+   /* a wrapped GL_LINE_LOOP is drawn section by section as line strips;
+    * later sections skip their vertex 0 (the loop's first vertex, kept for
+    * closing the loop at glEnd) */
+   if (last->mode == GL_LINE_LOOP && last_count > 0 && !last->end) {
+      last->mode = GL_LINE_STRIP;
+      if (!last_begin) {
+         last->start++;
+         last->count--;
+      }
    }
 
    if (vbo->vert_count) {
@@ -375,6 +395,17 @@ void fgl_vbo_end(struct fgl_context *ctx)
    last->end = true;
    if (last->count)
       vbo->need_flush |= FGL_VBO_FLUSH_STORED;
+
+   /* the last section of a wrapped GL_LINE_LOOP: its vertex 0 (the loop's
+    * first vertex) is appended and the section drawn as a strip from its
+    * second vertex, which closes the loop (the count stays the same) */
+   if (last->mode == GL_LINE_LOOP && !last->begin &&
+       ensure_room(vbo, vbo->vert_count + 1)) {
+      vbo->verts[vbo->vert_count] = vbo->verts[last->start];
+      last->start++;
+      last->mode = GL_LINE_STRIP;
+      vbo->vert_count++;
+   }
 
    /* vbo_try_prim_conversion */
    if (last->mode == GL_LINE_STRIP && last->count == 2)

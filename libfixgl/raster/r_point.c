@@ -1,0 +1,77 @@
+/*
+ * Non-antialiased points, bit-exact with llvmpipe's legacy (non-sprite)
+ * point rasterization (llvmpipe-facts.md §3 "Points"; [S: llvmpipe/
+ * lp_setup_point.c:try_setup_point, legacy_points path]):
+ *  - the window position is snapped with util_iround(x*256), y with one
+ *    subtracted (bottom_edge_rule);
+ *  - the size becomes a whole number of pixels, n = max(1, ((iround(size*256)
+ *    + 127) & ~255) >> 8), so .5 rounds down;
+ *  - the point is the n x n square starting at (x0>>8, y0>>8) - (n-1)/2 for
+ *    odd n, ((x0+128)>>8, (y0+128)>>8) - n/2 for even n, cut to the draw
+ *    region (lp_setup_bin_rectangle shades the whole box);
+ *  - depth and every input come from the vertex: constant coefficients, or,
+ *    for perspective-interpolated inputs, the vertex value premultiplied by
+ *    its 1/w and divided by the (constant) interpolated 1/w again in the
+ *    fragment shader ([S: lp_setup_point.c:point_persp_coeff]).
+ */
+#include "r_state.h"
+
+#include <math.h>
+
+void r_point(const struct r_state *rs, const struct r_vertex *v)
+{
+   /* LP_MAX_POINT_WIDTH */
+   float size = rs->point_size;
+   if (size > 255.0f)
+      size = 255.0f;
+   if (!isfinite(v->pos[0]) || !isfinite(v->pos[1]))
+      return;   /* cannot pass the clip test (NaN positions: outside) */
+
+   const int adj = 1;   /* bottom_edge_rule of the y-down window buffer */
+   const int32_t x0 = r_subpixel_snap(v->pos[0]);
+   const int32_t y0 = r_subpixel_snap(v->pos[1]) - adj;
+   int32_t fixed_width = (r_subpixel_snap(size) + 256 / 2 - 1) & ~(256 - 1);
+   if (fixed_width < 256)
+      fixed_width = 256;
+   const int32_t n = fixed_width >> 8;
+
+   int32_t bx0, by0;
+   if (n == 1) {
+      bx0 = x0 >> 8;
+      by0 = y0 >> 8;
+   } else if (n & 1) {
+      bx0 = (x0 >> 8) - (n - 1) / 2;
+      by0 = (y0 >> 8) - (n - 1) / 2;
+   } else {
+      bx0 = ((x0 + 256 / 2) >> 8) - n / 2;
+      by0 = ((y0 + 256 / 2) >> 8) - n / 2;
+   }
+   int32_t bx1 = bx0 + n - 1, by1 = by0 + n - 1;
+
+   /* u_rect_find_intersection with the draw region */
+   if (bx0 < rs->x0) bx0 = rs->x0;
+   if (by0 < rs->y0) by0 = rs->y0;
+   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
+   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   if (bx0 > bx1 || by0 > by1)
+      return;
+
+   /* the inputs are the same at every pixel */
+   float in[R_FS_NUM_INPUTS][4];
+   const float w = v->pos[3];
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(rs->fs_inputs & (1u << a)))
+         continue;
+      const int slot = r_fs_slot(a, false);
+      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
+      for (int c = 0; c < 4; c++)
+         in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
+   }
+   for (int32_t py = by0; py <= by1; py++) {
+      for (int32_t px = bx0; px <= bx1; px++) {
+         float color[4];
+         r_fragment_shader(rs, (const float (*)[4])in, color);
+         r_fragment_ops(rs, px, py, v->pos[2], color);
+      }
+   }
+}

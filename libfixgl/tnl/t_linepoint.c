@@ -1,0 +1,275 @@
+/*
+ * Points and lines between primitive assembly and the raster core, as the
+ * oracle's draw module runs them (llvmpipe-facts.md §3; [S: draw/
+ * draw_pipe_validate.c:validate_pipeline]): clip, then (when line stipple
+ * or smoothing is on) the flatshade and stipple stages, then the aapoint /
+ * aaline stages (smooth points and lines become triangle quads with a
+ * coverage input) or llvmpipe's point and line setup.  Lines and points
+ * that need no stage go straight to llvmpipe; for them that is the same as
+ * this pipeline with nothing to do, since each point and line is set up on
+ * its own (unlike the quad split of triangles, only the line stipple
+ * counter, which points in the pipeline restart, sees which path a batch
+ * takes).
+ *
+ * Wide points and lines are never split by draw (llvmpipe sets the wide
+ * thresholds to 10000, above the 255 limit), so they are only cut by the
+ * draw region (framebuffer, later the scissor).
+ */
+#include "tnl/t_pipeline.h"
+
+#include <math.h>
+
+#include "context.h"
+
+/* The raster state of the smooth point and line quads: the draw module
+ * binds its rasterizer "no cull" state for them (draw_context.c:
+ * draw_get_rasterizer_no_cull: no culling, no two-sided colours, no offset,
+ * front_ccw) and a fragment shader that also reads the aa coordinates; the
+ * polygon stipple shader is not bound for them (the pstipple stage passes
+ * points and lines through). */
+static void aa_state(const struct r_state *rs, struct r_state *aa, enum r_aa_mode mode)
+{
+   *aa = *rs;
+   aa->cull_front = false;
+   aa->cull_back = false;
+   aa->twoside = false;
+   aa->offset_units = 0.0f;
+   aa->offset_scale = 0.0f;
+   aa->stipple = false;
+   aa->ccw_is_front = true;
+   aa->fs_inputs |= 1u << R_FS_AA;
+   aa->aa = mode;
+}
+
+/* draw_pipe_aapoint.c:aapoint_point: a square of half size `radius` with
+ * coordinates (+-1, +-1, k, 1), drawn as two triangles. */
+static void aapoint_point(const struct r_state *rs, const struct r_vertex *v)
+{
+   struct r_state aa;
+   aa_state(rs, &aa, R_AA_POINT);
+
+   /* aapoint_first_point */
+   const float radius = rs->point_size <= 2.0f ? 1.0f : 0.5f * rs->point_size;
+   float k = 1.0f / radius;
+   k = 1.0f - 2.0f * k + k * k;
+
+   static const float sx[4] = { -1, 1, 1, -1 }, sy[4] = { -1, -1, 1, 1 };
+   struct r_vertex q[4];
+   for (int i = 0; i < 4; i++) {
+      q[i] = *v;
+      if (sx[i] < 0)
+         q[i].pos[0] -= radius;
+      else
+         q[i].pos[0] += radius;
+      if (sy[i] < 0)
+         q[i].pos[1] -= radius;
+      else
+         q[i].pos[1] += radius;
+      q[i].attr[R_ATTR_AA][0] = sx[i];
+      q[i].attr[R_ATTR_AA][1] = sy[i];
+      q[i].attr[R_ATTR_AA][2] = k;
+      q[i].attr[R_ATTR_AA][3] = 1.0f;
+   }
+   r_triangle(&aa, &q[0], &q[1], &q[2]);
+   r_triangle(&aa, &q[0], &q[2], &q[3]);
+}
+
+void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
+{
+   /* draw_pipe_clip.c:clip_point */
+   if (v->mask)
+      return;
+   /* a point in draw's pipeline (smooth, or in a segment that needs
+    * clipping) passes the stipple stage, which restarts the line stipple
+    * counter (stipple_reset_point) */
+   if ((pipeline || ctx->Point.SmoothFlag) && ctx->_DrawPipeline.line_stipple)
+      ctx->StippleCounter = 0;
+   if (ctx->Point.SmoothFlag)
+      aapoint_point(&ctx->_Raster, &v->r);
+   else
+      r_point(&ctx->_Raster, &v->r);
+}
+
+void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
+{
+   /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
+   if (ctx->_DrawPipeline.line_stipple)
+      ctx->StippleCounter = 0;
+   if (ctx->Point.SmoothFlag)
+      aapoint_point(&ctx->_Raster, v);
+   else
+      r_point(&ctx->_Raster, v);
+}
+
+/* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
+ * pixel at each end and widened to the half width, with coordinates
+ * (u, half width, v, half length), drawn as two triangles. */
+static void aaline_line(const struct r_state *rs, const struct r_vertex *v0,
+                        const struct r_vertex *v1)
+{
+   struct r_state aa;
+   aa_state(rs, &aa, R_AA_LINE);
+
+   /* aaline_first_line */
+   const float half_width = rs->line_width <= 1.0f ? 1.0f : 0.5f * rs->line_width + 0.5f;
+
+   const float dx = v1->pos[0] - v0->pos[0];
+   const float dy = v1->pos[1] - v0->pos[1];
+   const float a = atan2f(dy, dx);
+   const float c_a = cosf(a), s_a = sinf(a);
+   float half_length = 0.5f * sqrtf(dx * dx + dy * dy);
+   if (half_length < 0.5f)
+      half_length = 2.0f * half_length;   /* very short segments fade out */
+   else
+      half_length = half_length + 0.5f;
+   const float t_w = half_width, t_l = 0.5f;
+
+   /*  1 +---------------+ 3
+    *    | *v0       v1* |
+    *  0 +---------------+ 2   */
+   struct r_vertex q[4] = { *v0, *v0, *v1, *v1 };
+   q[0].pos[0] += (-t_l * c_a - t_w * s_a);
+   q[0].pos[1] += (-t_l * s_a + t_w * c_a);
+   q[1].pos[0] += (-t_l * c_a - -t_w * s_a);
+   q[1].pos[1] += (-t_l * s_a + -t_w * c_a);
+   q[2].pos[0] += (t_l * c_a - t_w * s_a);
+   q[2].pos[1] += (t_l * s_a + t_w * c_a);
+   q[3].pos[0] += (t_l * c_a - -t_w * s_a);
+   q[3].pos[1] += (t_l * s_a + -t_w * c_a);
+   static const float su[4] = { -1, 1, -1, 1 }, sv[4] = { -1, -1, 1, 1 };
+   for (int i = 0; i < 4; i++) {
+      q[i].attr[R_ATTR_AA][0] = su[i] < 0 ? -half_width : half_width;
+      q[i].attr[R_ATTR_AA][1] = half_width;
+      q[i].attr[R_ATTR_AA][2] = sv[i] < 0 ? -half_length : half_length;
+      q[i].attr[R_ATTR_AA][3] = half_length;
+   }
+   r_triangle(&aa, &q[2], &q[1], &q[0]);
+   r_triangle(&aa, &q[3], &q[1], &q[2]);
+}
+
+/* The stage after stipple: the aaline quad or llvmpipe's line. */
+static void line_raster(const struct fgl_context *ctx, const struct r_vertex *v0,
+                        const struct r_vertex *v1)
+{
+   if (ctx->Line.SmoothFlag)
+      aaline_line(&ctx->_Raster, v0, v1);
+   else
+      r_line(&ctx->_Raster, v0, v1);
+}
+
+/* draw_pipe_stipple.c:screen_interp: every output, position (window
+ * coordinates and 1/w) included, lerped linearly */
+static void screen_interp(const struct r_state *rs, struct r_vertex *dst, float t,
+                          const struct r_vertex *v0, const struct r_vertex *v1)
+{
+   for (int i = 0; i < 4; i++)
+      dst->pos[i] = v0->pos[i] + t * (v1->pos[i] - v0->pos[i]);
+   for (int a = 0; a < rs->num_attribs; a++)
+      for (int c = 0; c < 4; c++)
+         dst->attr[a][c] = v0->attr[a][c] + t * (v1->attr[a][c] - v0->attr[a][c]);
+}
+
+/* draw_pipe_stipple.c:emit_segment */
+static void emit_segment(const struct fgl_context *ctx, const struct r_vertex *v0,
+                         const struct r_vertex *v1, float t0, float t1)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   struct r_vertex n0, n1;
+   const struct r_vertex *a = v0, *b = v1;
+   if (t0 > 0.0f) {
+      screen_interp(rs, &n0, t0, v0, v1);
+      a = &n0;
+   }
+   if (t1 < 1.0f) {
+      screen_interp(rs, &n1, t1, v0, v1);
+      b = &n1;
+   }
+   line_raster(ctx, a, b);
+}
+
+/* draw_pipe_stipple.c:stipple_test */
+static inline bool stipple_test(unsigned counter, unsigned pattern, unsigned factor)
+{
+   const unsigned b = (counter / factor) & 0xf;
+   return ((1u << b) & pattern) != 0;
+}
+
+/* draw_pipe_stipple.c:stipple_line: the line is walked one pixel of its
+ * major axis at a time and each run of "on" bits becomes a sub-line. */
+static void stipple_line(struct fgl_context *ctx, const struct r_vertex *v0,
+                         const struct r_vertex *v1, bool first)
+{
+   const unsigned pattern = ctx->Line.StipplePattern;
+   const unsigned factor = (unsigned)ctx->Line.StippleFactor;
+   const float x0 = v0->pos[0], x1 = v1->pos[0];
+   const float y0 = v0->pos[1], y1 = v1->pos[1];
+   float length;
+   int intlength;
+
+   if (first)
+      ctx->StippleCounter = 0;
+
+   if (ctx->Line.SmoothFlag) {
+      /* rectangular (smooth) lines: the Euclidean length */
+      const float dx = x1 - x0, dy = y1 - y0;
+      length = sqrtf(dx * dx + dy * dy);
+   } else {
+      const float dx = x0 > x1 ? x0 - x1 : x1 - x0;
+      const float dy = y0 > y1 ? y0 - y1 : y1 - y0;
+      length = dx > dy ? dx : dy;   /* MAX2 */
+   }
+   intlength = isfinite(length) ? (int)ceilf(length) : 0;
+
+   float start = 0;
+   bool state = false;
+   for (int i = 0; i < intlength; i++) {
+      const bool result = stipple_test(ctx->StippleCounter + (unsigned)i, pattern, factor);
+      if (result != state) {
+         if (state)
+            emit_segment(ctx, v0, v1, start / length, (float)i / length);
+         else
+            start = (float)i;
+         state = result;
+      }
+   }
+   if (state && start < length)
+      emit_segment(ctx, v0, v1, start / length, 1.0f);
+
+   ctx->StippleCounter += (unsigned)intlength;
+}
+
+void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
+            bool first)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   struct t_vertex c[2];
+   if (!t_clip_line(ctx, v0, v1, c))
+      return;   /* the stipple stage does not see it: no counter reset */
+
+   /* st_atom_rasterizer.c: an all-ones pattern disables stippling */
+   const bool stipple = ctx->_DrawPipeline.line_stipple;
+   if (stipple || ctx->Line.SmoothFlag) {
+      /* the flatshade stage runs first (precalc_flat): both ends get the
+       * provoking vertex's flat attributes, so the stipple lerp keeps them
+       * and the aaline quad's provoking vertices have them */
+      for (int a = 0; a < rs->num_attribs; a++)
+         if (rs->flat_mask & (1u << a))
+            for (int k = 0; k < 4; k++)
+               c[0].r.attr[a][k] = c[1].r.attr[a][k];
+   }
+   if (stipple)
+      stipple_line(ctx, &c[0].r, &c[1].r, first);
+   else
+      line_raster(ctx, &c[0].r, &c[1].r);
+}
+
+void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1)
+{
+   /* unfilled's lines carry no DRAW_PIPE_RESET_STIPPLE (the triangle's
+    * reset went through reset_stipple_counter) */
+   if (ctx->_DrawPipeline.line_stipple)
+      stipple_line(ctx, v0, v1, false);
+   else
+      line_raster(ctx, v0, v1);
+}
