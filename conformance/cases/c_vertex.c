@@ -160,10 +160,56 @@ static void batch_corners(fc_h *h)
     fc_capture(h);
 }
 
+/* The oracle draws with denormals flushed to zero (DAZ and FTZ in
+ * draw_vbo and the rasterizer), but computes uniforms on the CPU without.
+ * Frame 1: x coordinates that are denormal floats (1e-38) under a 4e37 x
+ * scale count as 0, so that triangle is degenerate; the one with normal
+ * floats (2e-38) is drawn.  Frame 2: a light diffuse of 1e38 times a
+ * denormal material diffuse: a constant material makes the product a
+ * uniform, computed before the draw (the left quad is lit); a per-vertex
+ * material is multiplied in the vertex program, where it counts as 0. */
+static void denormals_flushed(fc_h *h)
+{
+    static const GLfloat zero[4] = { 0, 0, 0, 1 };
+    static const GLfloat big[4] = { 1e38f, 1e38f, 1e38f, 1 };
+    static const GLfloat tiny[4] = { 5e-39f, 3e-39f, 1e-39f, 1 };
+    glViewport(0, 0, 32, 32);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glScalef(4e37f, 1, 1);
+    glColor3f(1, 0.5f, 0);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(-1e-38f, 0.1f); glVertex2f(1e-38f, 0.1f); glVertex2f(1e-38f, 0.9f);
+    glVertex2f(-2e-38f, -0.9f); glVertex2f(2e-38f, -0.9f); glVertex2f(2e-38f, -0.1f);
+    glEnd();
+    fc_capture(h);
+
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glLoadIdentity();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, zero);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, big);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, tiny);
+    glNormal3f(0, 0, 1);
+    glBegin(GL_QUADS);
+    glVertex2f(-1, -1); glVertex2f(0, -1); glVertex2f(0, 1); glVertex2f(-1, 1);
+    glEnd();
+    glBegin(GL_QUADS);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, tiny);
+    glVertex2f(0, -1); glVertex2f(1, -1); glVertex2f(1, 1); glVertex2f(0, 1);
+    glEnd();
+    fc_capture(h);
+}
+
 const fc_case fc_cases_vertex[] = {
     FC_CASE_RGBA("core/vertex_entry_points", 64, 64, 1, "core vertex", vertex_variants),
     FC_CASE_RGBA("core/color_entry_points", 64, 64, 1, "core vertex query", color_variants),
     FC_CASE_RGBA("core/color_integer_smooth", 32, 32, 1, "core vertex shade", color_integer_smooth),
     FC_CASE_RGBA("core/vbo_batch_corners", 32, 32, 2, "core vertex", batch_corners),
+    FC_CASE_RGBA("core/denormals_flushed", 32, 32, 2, "core vertex", denormals_flushed),
     { 0 }
 };

@@ -17,6 +17,9 @@
 
 #include <math.h>
 #include <stddef.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "context.h"
 #include "tnl/t_gallivm.h"
@@ -80,10 +83,37 @@ struct light_key {
    bool shininess_is_zero;   /* no specular pow: the degenerate LIT */
 };
 
+/* The scene colour and the light*material products of a face.  Where the
+ * material does not vary per vertex they are uniforms of the oracle's
+ * vertex program (STATE_LIGHTMODEL_SCENECOLOR, STATE_LIGHTPROD), which Mesa
+ * computes on the CPU before the draw, so without the draw's flush of
+ * denormals (t_render.c); t_light computes them once per batch with the
+ * flush off.  A varying material's products are computed per vertex, in
+ * the vertex program (build_lighting: get_scenecolor, get_lightprod). */
+struct products {
+   bool vary_scene[2], vary_ambient[2], vary_diffuse[2], vary_specular[2];
+   float scene[2][3];
+   float ambient[FGL_MAX_LIGHTS][2][3];
+   float diffuse[FGL_MAX_LIGHTS][2][3];
+   float specular[FGL_MAX_LIGHTS][2][3];
+};
+
+static void scene_colour(const struct fgl_context *ctx, const struct material *m, float c[3])
+{
+   for (int k = 0; k < 3; k++)
+      c[k] = ctx->Light.Model.Ambient[k] * m->ambient[k] + m->emission[k];
+}
+
+static void light_product(const float *light, const float *material, float p[3])
+{
+   for (int k = 0; k < 3; k++)
+      p[k] = light[k] * material[k];
+}
+
 /* One vertex: col[0] front colour, col[1] front secondary, col[2] back
  * colour, col[3] back secondary (R_ATTR_* slots), before the clamp. */
 static void light_vertex(const struct fgl_context *ctx, const struct light_key *key,
-                         const float n[3], const float V[4],
+                         const struct products *P, const float n[3], const float V[4],
                          const struct material mat[2], float col[4][4])
 {
    const struct fgl_light_attrib *la = &ctx->Light;
@@ -93,8 +123,11 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
    /* scene colour: emission + ambient * global ambient, alpha = diffuse alpha */
    for (int s = 0; s < sides; s++) {
       float *c = col[2 * s];
-      for (int k = 0; k < 3; k++)
-         c[k] = la->Model.Ambient[k] * mat[s].ambient[k] + mat[s].emission[k];
+      if (P->vary_scene[s])
+         scene_colour(ctx, &mat[s], c);
+      else
+         for (int k = 0; k < 3; k++)
+            c[k] = P->scene[s][k];
       c[3] = mat[s].diffuse[3];
       float *c1 = col[2 * s + 1];
       c1[0] = c1[1] = c1[2] = 0.0f;
@@ -190,11 +223,20 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
             lt.specular = 0.0f < snd ? 1.0f : 0.0f;
          }
 
-         float ambient[3], diffuse[3], specular[3];
-         for (int k = 0; k < 3; k++) {
-            ambient[k] = l->Ambient[k] * mat[s].ambient[k];
-            diffuse[k] = l->Diffuse[k] * mat[s].diffuse[k];
-            specular[k] = l->Specular[k] * mat[s].specular[k];
+         float varying[3][3];
+         const float *ambient = P->ambient[i][s], *diffuse = P->diffuse[i][s],
+                     *specular = P->specular[i][s];
+         if (P->vary_ambient[s]) {
+            light_product(l->Ambient, mat[s].ambient, varying[0]);
+            ambient = varying[0];
+         }
+         if (P->vary_diffuse[s]) {
+            light_product(l->Diffuse, mat[s].diffuse, varying[1]);
+            diffuse = varying[1];
+         }
+         if (P->vary_specular[s]) {
+            light_product(l->Specular, mat[s].specular, varying[2]);
+            specular = varying[2];
          }
          float *c0 = col[2 * s];
          float *c1 = key->separate ? col[2 * s + 1] : c0;
@@ -275,6 +317,39 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
    }
    key.shininess_is_zero = !shininess_active;
 
+   /* the uniform scene colours and products, with the caller's
+    * floating-point environment (no flush of denormals) */
+   struct products P;
+#if defined(__SSE__) || defined(__x86_64__)
+   const unsigned mxcsr = _mm_getcsr();
+   _mm_setcsr(mxcsr & ~0x8040u);
+#endif
+   for (int s = 0; s < (key.twoside ? 2 : 1); s++) {
+      const int amb = FGL_ATTR_MAT_FRONT_AMBIENT + s, dif = FGL_ATTR_MAT_FRONT_DIFFUSE + s,
+                spe = FGL_ATTR_MAT_FRONT_SPECULAR + s, emi = FGL_ATTR_MAT_FRONT_EMISSION + s;
+      P.vary_ambient[s] = src[amb].stride != 0;
+      P.vary_diffuse[s] = src[dif].stride != 0;
+      P.vary_specular[s] = src[spe].stride != 0;
+      P.vary_scene[s] = P.vary_ambient[s] || src[emi].stride != 0;
+      const struct material m = { src[amb].ptr, src[dif].ptr, src[spe].ptr, src[emi].ptr, 0 };
+      if (!P.vary_scene[s])
+         scene_colour(ctx, &m, P.scene[s]);
+      for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+         if (!(ld->EnabledLights & (1u << i)))
+            continue;
+         const struct fgl_light *l = &ctx->Light.Light[i];
+         if (!P.vary_ambient[s])
+            light_product(l->Ambient, m.ambient, P.ambient[i][s]);
+         if (!P.vary_diffuse[s])
+            light_product(l->Diffuse, m.diffuse, P.diffuse[i][s]);
+         if (!P.vary_specular[s])
+            light_product(l->Specular, m.specular, P.specular[i][s]);
+      }
+   }
+#if defined(__SSE__) || defined(__x86_64__)
+   _mm_setcsr(mxcsr);
+#endif
+
    unsigned nstride;
    const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
    const float *mv = ctx->ModelviewStack.Top->m;
@@ -303,7 +378,7 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
            MAT(FGL_ATTR_MAT_BACK_SHININESS)[0] },
       };
 #undef MAT
-      light_vertex(ctx, &key, nrm, V, mat, out[i].r.attr);
+      light_vertex(ctx, &key, &P, nrm, V, mat, out[i].r.attr);
    }
 
    /* build_lighting asks for the eye position (get_eye_position) for a

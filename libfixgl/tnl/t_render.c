@@ -26,6 +26,9 @@
 #include "tnl/t_pipeline.h"
 
 #include <stdlib.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "context.h"
 
@@ -246,6 +249,18 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
    if (!tv)
       return;
+
+   /* The oracle draws with denormals flushed: draw_vbo sets DAZ and FTZ
+    * around the vertex shader, clipping and triangle setup, and the
+    * rasterizer runs with them too (draw_pt.c:draw_vbo and
+    * lp_rast.c:lp_rast_queue_scene, util_fpstate_set_denorms_to_zero), while
+    * the state (matrix products, light vectors) was derived before, without
+    * them.  So from here on a denormal operand counts as zero and a
+    * denormal result becomes zero (ORACLE-NOTES.md "Clamps and NaN"). */
+#if defined(__SSE__) || defined(__x86_64__)
+   const unsigned mxcsr = _mm_getcsr();
+   _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
+#endif
    t_transform(ctx, verts, nverts, tv);
 
    /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
@@ -299,5 +314,8 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
          ctx->_DrawOffset.latched = false;
       render_prim(&r, &prims[i], constant_interp);
    }
+#if defined(__SSE__) || defined(__x86_64__)
+   _mm_setcsr(mxcsr);
+#endif
    free(tv);
 }
