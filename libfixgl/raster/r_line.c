@@ -327,9 +327,10 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
          exact = false;
    }
    if (!exact) {
-      /* the four edges of try_setup_line: int32 steps (wrapping), a 64-bit
-       * constant from the unscaled ones, the fill convention, steps scaled
-       * by FIXED_ONE, and the trivial reject offset from the scaled steps */
+      /* [S: lp_setup_line.c:try_setup_line] the four edges: int32 steps
+       * (wrapping), a 64-bit constant from the unscaled ones, the fill
+       * convention, steps scaled by FIXED_ONE, and the trivial reject
+       * offset from the scaled steps */
       struct r_plane p[R_MAX_PLANES];
       for (int i = 0; i < 4; i++) {
          const int j = (i + 1) & 3;

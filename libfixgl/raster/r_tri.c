@@ -256,7 +256,7 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
  * tiles binned): where a non-finite primitive's edges reach beyond its
  * bounding box, a side of the box inside the draw region adds no plane
  * and the oracle writes the pixels outside the scissor box too, up to the
- * framebuffer (lp_rast.c:lp_rast_shade_quads_mask drops only blocks past
+ * framebuffer ([S: lp_rast.c:lp_rast_shade_quads_mask] drops only blocks past
  * the framebuffer's edge; pixels past it in a block land in the texture
  * padding).  Finite primitives never cover pixels outside their box. */
 static void shade_block(const struct r_state *rs, const struct r_shader *sh,
@@ -440,6 +440,7 @@ static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, i
    shade_pixel(rs, ctx, px, py);
 }
 
+/* [S: lp_setup_tri.c:lp_setup_bin_triangle] */
 void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
                   int32_t bx0, int32_t by0, int32_t bx1, int32_t by1,
                   const struct r_shader *sh)
@@ -451,7 +452,8 @@ void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
 
    /* planes for the sides of the draw region the box leaves
-    * (scissor_planes_needed, lp_setup_add_scissor_planes) */
+    * [S: lp_setup_context.h:scissor_planes_needed,
+    * lp_setup.c:lp_setup_add_scissor_planes] */
    if (bx0 < rx0)
       p[n++] = (struct r_plane){ .c = -(int64_t)(shl32(rx0 - 1, 8)), .dcdx = shl32(-1, 8),
                                  .dcdy = 0, .eo = 1u << 8 };
