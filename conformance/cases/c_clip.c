@@ -259,6 +259,45 @@ static void w_zero_clipped(fc_h *h)
     fc_capture(h);
 }
 
+/* A w = 0 origin vertex under a scissor box: the triangle's bounding box
+ * comes from its finite vertices, so a side of the scissor box beyond it
+ * adds no plane, and the NaN edges reach past it; the oracle then writes
+ * colour and depth outside the scissor box, up to the framebuffer edge of
+ * the 64x64 tiles it bins (found with random-raster/s1-i467, i1873).
+ * Scissor boxes around, left of and inside the finite part, a quad strip
+ * (flat, quads split 0-1-3) and triangles, depth test on (LESS, ALWAYS)
+ * and off. */
+static void w_zero_scissor(fc_h *h)
+{
+    static const int box[4][4] = {
+        { -19, 8, 43, 50 }, { 27, 25, 35, 109 }, { 5, 70, 20, 30 }, { 0, 0, 90, 40 },
+    };
+    for (int frame = 0; frame < 8; frame++) {
+        glDisable(GL_SCISSOR_TEST);
+        fcu_clear(0.1f, 0.2f, 0.3f, 0.4f, frame & 4 ? 0.5 : 1.0);
+        if (frame & 4) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
+        glDepthFunc(frame & 1 ? GL_ALWAYS : GL_LESS);     /* NaN depth is 1 */
+        const int *b = box[frame & 3];
+        glScissor(b[0], b[1], b[2], b[3]);
+        glEnable(GL_SCISSOR_TEST);
+        glShadeModel(GL_FLAT);
+        glColor3f(1, 1, 1);
+        glBegin(GL_QUAD_STRIP);
+        glVertex4i(0, 0, 0, 0);
+        glVertex3d(-0.72, -0.333, -1.0);
+        glVertex4d(-0.62, -0.733, -0.587, 0.62);
+        glVertex4d(-0.62, -0.733, -0.587, 0.62);
+        glEnd();
+        glShadeModel(GL_SMOOTH);
+        glBegin(GL_TRIANGLES);
+        glColor3f(1, 0, 0); glVertex3f(0.56f, 0.67f, -0.9f);
+        glColor3f(0, 1, 0); glVertex4f(0.83f, 0.27f, -0.9f, 0.99f);
+        glColor3f(0, 0, 1); glVertex4f(0, 0, 0, 0);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_clip[] = {
     FC_CASE_RGBA("core/clip_plane_left", 32, 32, 1, "core clip", clip_left),
     FC_CASE_RGBA("core/clip_plane_right", 32, 32, 1, "core clip", clip_right),
@@ -275,5 +314,7 @@ const fc_case fc_cases_clip[] = {
     FC_CASE_RGBA("core/non_finite_coordinates", 32, 32, 1, "core clip robust", non_finite),
     FC_CASE_RGBA("core/w_zero_vertex", 17, 54, 4, "core clip robust", w_zero_vertex),
     FC_CASE_RGBA("core/w_zero_clipped", 17, 54, 1, "core clip robust", w_zero_clipped),
+    FC_CASE("core/w_zero_scissor", 90, 115, OSMESA_RGBA, 24, 0, 8, "core clip robust scissor", w_zero_scissor),
+    FC_CASE("core/w_zero_scissor_bgra", 65, 119, OSMESA_BGRA, 16, 8, 8, "core clip robust scissor", w_zero_scissor),
     { 0 }
 };

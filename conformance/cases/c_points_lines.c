@@ -440,6 +440,60 @@ static void lines_wrapped(fc_h *h)
     fc_capture(h);
 }
 
+/* A line with one end at the clip-space origin with w = 0 (inside every
+ * clip plane, window position NaN) is still set up by llvmpipe: its
+ * corners snap to INT32_MIN, the corner, box and step arithmetic wraps in
+ * 32 bits, and the binned tile / block coverage decides what is drawn,
+ * often the whole draw region (found with random-raster/s1-i1249).
+ * Widths 1, 3 and 10, either end NaN, x- and y-major other ends, the
+ * viewport inside, below and left of the buffer, with and without a
+ * scissor box, smooth and flat colours, depth test on. */
+static void lines_w_zero_end(fc_h *h)
+{
+    static const float other[6][4] = {
+        { -1.0f, -0.054f, -1.0f, 1.0f },
+        { 0.6f, -0.9f, 0.2f, 1.0f },
+        { -0.3f, 0.95f, 0.4f, 1.0f },
+        { 0.25f, 0.1f, -0.5f, 0.5f },
+        { 2.0f, -0.4f, 0.0f, 2.5f },
+        { -0.01f, 0.7f, 0.9f, 1.0f },
+    };
+    static const int vp[3][4] = { { 0, 0, 48, 40 }, { 38, -10, 48, 10 }, { -20, 12, 30, 36 } };
+    static const float widths[3] = { 1.0f, 3.0f, 10.0f };
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    for (int frame = 0; frame < 12; frame++) {
+        glDisable(GL_SCISSOR_TEST);
+        glViewport(0, 0, 63, 42);
+        fcu_clear(0.86f, 0.34f, 0.4f, 0.57f, 1);
+        const int *v = vp[frame % 3];
+        glViewport(v[0], v[1], v[2], v[3]);
+        if (frame & 4) {
+            glScissor(44, -7, 61, 13);
+            glEnable(GL_SCISSOR_TEST);
+        }
+        glShadeModel(frame & 8 ? GL_FLAT : GL_SMOOTH);
+        glLineWidth(widths[(frame / 3) % 3]);
+        for (int k = 0; k < 2; k++) {
+            const float *o = other[(frame + 3 * k) % 6];
+            glBegin(GL_LINES);
+            if ((frame + k) & 1) {
+                glColor3f(1, 0.9f, 0.3f * k);
+                glVertex4f(0, 0, 0, 0);
+                glColor3f(0.2f, 0.5f * k, 1);
+                glVertex4fv(o);
+            } else {
+                glColor3f(0.2f, 0.5f * k, 1);
+                glVertex4fv(o);
+                glColor3f(1, 0.9f, 0.3f * k);
+                glVertex4f(0, 0, 0, 0);
+            }
+            glEnd();
+        }
+        fc_capture(h);
+    }
+}
+
 /* Robustness: w = 0 exactly (no outcode, non-finite window coordinates),
  * NaN and huge coordinates, the largest width and size. */
 static void robust_points_lines(fc_h *h)
@@ -1683,6 +1737,8 @@ const fc_case fc_cases_points_lines[] = {
     FC_CASE_RGBA("raster/lines_long_loop", 64, 64, 1, "raster lines", lines_long_loop),
     FC_CASE_RGBA("raster/lines_wrapped_vertex_buffer", 64, 64, 2, "raster lines stipple vbo", lines_wrapped),
     FC_CASE_RGBA("raster/points_lines_robust", 128, 128, 4, "raster lines points robust", robust_points_lines),
+    FC_CASE_RGBA("raster/lines_w_zero_end", 63, 42, 12, "raster lines clip robust", lines_w_zero_end),
+    FC_CASE("raster/lines_w_zero_end_bgra", 63, 42, OSMESA_BGRA, 0, 0, 12, "raster lines clip robust", lines_w_zero_end),
     FC_CASE_RGBA("raster/stipple_strip_f1", 64, 64, 1, "raster lines stipple", stipple_strip_f1),
     FC_CASE_RGBA("raster/stipple_strip_f2", 64, 64, 1, "raster lines stipple", stipple_strip_f2),
     FC_CASE_RGBA("raster/stipple_strip_f3", 64, 64, 1, "raster lines stipple", stipple_strip_f3),

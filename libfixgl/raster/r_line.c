@@ -13,8 +13,15 @@
  * dadx = (a1 - a2) * (dx * (1 + (dy/dx)^2)) * (1 / (dx^2 + dy^2)) for an
  * x-major line (dady = 0), from the vertices in their original order, and
  * the same fma plane evaluation as triangles.
+ *
+ * A line with a non-finite end (a vertex at w = 0 on the clip volume
+ * projects to NaN or infinity) is still set up: its corners snap to
+ * INT32_MIN, the 32-bit corner, bounding box and step arithmetic wraps,
+ * and its coverage then follows llvmpipe's binning and block code, shared
+ * with the triangles (r_bin_planes; ORACLE-NOTES.md "Coverage of
+ * non-finite triangles" and "Lines with a non-finite end").
  */
-#include "r_state.h"
+#include "r_bin.h"
 
 #include <math.h>
 
@@ -74,16 +81,41 @@ static inline int32_t max4(int32_t a, int32_t b, int32_t c, int32_t d)
    return m > n ? m : n;
 }
 
+static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
+static inline int32_t sub32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a - (uint32_t)b); }
+
+/* The interpolation setup of one line (setup_line_coefficients). */
+struct line_shade {
+   struct plane z, w;
+   struct plane ap[R_FS_NUM_INPUTS][4];
+   float flat[R_FS_NUM_INPUTS][4];
+   bool flat_attr[R_FS_NUM_INPUTS];
+   bool need_w;
+};
+
+static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
+{
+   const struct line_shade *ls = ctx;
+   const float fx = (float)px, fy = (float)py;
+   float in[R_FS_NUM_INPUTS][4];
+   const float rw = ls->need_w ? 1.0f / eval_plane(&ls->w, fx, fy) : 0.0f;
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(rs->fs_inputs & (1u << a)))
+         continue;
+      for (int k = 0; k < 4; k++)
+         in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], fx, fy) * rw;
+   }
+   float color[4];
+   r_fragment_shader(rs, (const float (*)[4])in, color);
+   r_fragment_ops(rs, px, py, eval_plane(&ls->z, fx, fy), color);
+}
+
 void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
 {
    /* v2 (the second vertex) is the provoking vertex */
    const struct r_vertex *const pv = v2;
    /* MAX2(1.0, line_width) */
    const float width = 1.0f > rs->line_width ? 1.0f : rs->line_width;
-
-   for (int i = 0; i < 2; i++)
-      if (!isfinite(v1->pos[i]) || !isfinite(v2->pos[i]))
-         return;   /* only reachable with w = 0 exactly on the clip volume */
 
    float dx = v1->pos[0] - v2->pos[0];
    float dy = v1->pos[1] - v2->pos[1];
@@ -172,10 +204,10 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
       x[1] = r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f);
       x[2] = r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f);
       x[3] = r_subpixel_snap(a->pos[0] + x_offset - 0.5f);
-      y[0] = r_subpixel_snap(a->pos[1] + y_offset - 0.5f) - fixed_width / 2;
-      y[1] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f) - fixed_width / 2;
-      y[2] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f) + fixed_width / 2;
-      y[3] = r_subpixel_snap(a->pos[1] + y_offset - 0.5f) + fixed_width / 2;
+      y[0] = sub32(r_subpixel_snap(a->pos[1] + y_offset - 0.5f), fixed_width / 2);
+      y[1] = sub32(r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f), fixed_width / 2);
+      y[2] = add32(r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f), fixed_width / 2);
+      y[3] = add32(r_subpixel_snap(a->pos[1] + y_offset - 0.5f), fixed_width / 2);
    } else {
       /* y-major */
       const float dxdy = dx / dy;
@@ -234,10 +266,10 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
             x_offset_end = y_offset_end * dxdy;
          }
       }
-      x[0] = r_subpixel_snap(a->pos[0] + x_offset - 0.5f) - fixed_width / 2;
-      x[1] = r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f) - fixed_width / 2;
-      x[2] = r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f) + fixed_width / 2;
-      x[3] = r_subpixel_snap(a->pos[0] + x_offset - 0.5f) + fixed_width / 2;
+      x[0] = sub32(r_subpixel_snap(a->pos[0] + x_offset - 0.5f), fixed_width / 2);
+      x[1] = sub32(r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f), fixed_width / 2);
+      x[2] = add32(r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f), fixed_width / 2);
+      x[3] = add32(r_subpixel_snap(a->pos[0] + x_offset - 0.5f), fixed_width / 2);
       y[0] = r_subpixel_snap(a->pos[1] + y_offset - 0.5f);
       y[1] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f);
       y[2] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f);
@@ -245,18 +277,88 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    }
 
    /* bounding box in pixels (inclusive), adjusted for the bottom-left
-    * convention, cut to the draw region */
+    * convention (32-bit int arithmetic, wrapping for non-finite ends) */
    const int adj = 1;
-   int32_t bx0 = (min4(x[0], x[1], x[2], x[3]) + 255) >> 8;
-   int32_t bx1 = ((max4(x[0], x[1], x[2], x[3]) + 255) >> 8) - 1;
-   int32_t by0 = (min4(y[0], y[1], y[2], y[3]) + 255 + adj) >> 8;
-   int32_t by1 = ((max4(y[0], y[1], y[2], y[3]) + 255 + adj) >> 8) - 1;
+   const int32_t xmin = min4(x[0], x[1], x[2], x[3]), xmax = max4(x[0], x[1], x[2], x[3]);
+   const int32_t ymin = min4(y[0], y[1], y[2], y[3]), ymax = max4(y[0], y[1], y[2], y[3]);
+   int32_t bx0 = add32(xmin, 255) >> 8;
+   int32_t bx1 = (add32(xmax, 255) >> 8) - 1;
+   int32_t by0 = add32(ymin, 255 + adj) >> 8;
+   int32_t by1 = (add32(ymax, 255 + adj) >> 8) - 1;
+   /* u_rect_test_intersection with the draw region */
+   if (rs->x0 >= rs->x1 || rs->y0 >= rs->y1 ||
+       bx1 < rs->x0 || bx0 > rs->x1 - 1 || by1 < rs->y0 || by0 > rs->y1 - 1)
+      return;
+
+   /* setup_line_coefficients: depth and 1/w are linear, the inputs
+    * perspective (premultiplied by 1/w) or constant from the provoking
+    * vertex */
+   struct line_shade ls;
+   ls.z = line_coef(&info, v1->pos[2], v2->pos[2]);
+   ls.w = line_coef(&info, v1->pos[3], v2->pos[3]);
+   ls.need_w = false;
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(rs->fs_inputs & (1u << a)))
+         continue;
+      const int slot = r_fs_slot(a, false);
+      ls.flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
+      ls.need_w |= !ls.flat_attr[a];
+      for (int k = 0; k < 4; k++) {
+         if (ls.flat_attr[a])
+            ls.flat[a][k] = pv->attr[slot][k];
+         else
+            ls.ap[a][k] = line_coef(&info, v1->attr[slot][k] * v1->pos[3],
+                                    v2->attr[slot][k] * v2->pos[3]);
+      }
+   }
+
+   /* With finite corners whose differences stay below 2^22 nothing wraps,
+    * and the binned coverage is exactly the pixels whose four edge
+    * functions are positive (as for triangles: r_tri.c rasterize_direct);
+    * that is solved per row below.  Otherwise llvmpipe's arithmetic is
+    * followed step by step. */
+   bool exact = true;
+   for (int i = 0; i < 4; i++) {
+      const int j = (i + 1) & 3;
+      const int64_t ddx = (int64_t)x[i] - x[j], ddy = (int64_t)y[i] - y[j];
+      if (x[i] <= INT32_MIN + (1 << 16) || x[i] >= INT32_MAX - (1 << 16) ||
+          y[i] <= INT32_MIN + (1 << 16) || y[i] >= INT32_MAX - (1 << 16) ||
+          ddx <= -(1 << 22) || ddx >= (1 << 22) || ddy <= -(1 << 22) || ddy >= (1 << 22))
+         exact = false;
+   }
+   if (!exact) {
+      /* [S: lp_setup_line.c:try_setup_line] the four edges: int32 steps
+       * (wrapping), a 64-bit constant from the unscaled ones, the fill
+       * convention, steps scaled by FIXED_ONE, and the trivial reject
+       * offset from the scaled steps */
+      struct r_plane p[R_MAX_PLANES];
+      for (int i = 0; i < 4; i++) {
+         const int j = (i + 1) & 3;
+         const int32_t dcdy = sub32(x[i], x[j]);
+         const int32_t dcdx = sub32(y[i], y[j]);
+         int64_t c = (int64_t)((uint64_t)((int64_t)dcdx * x[i]) -
+                               (uint64_t)((int64_t)dcdy * y[i]));
+         if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+            c = (int64_t)((uint64_t)c + 1);
+         p[i].c = c;
+         p[i].dcdx = (int32_t)((uint32_t)dcdx * 256u);
+         p[i].dcdy = (int32_t)((uint32_t)dcdy * 256u);
+         p[i].eo = 0;
+         if (p[i].dcdx < 0)
+            p[i].eo -= (uint32_t)p[i].dcdx;
+         if (p[i].dcdy > 0)
+            p[i].eo += (uint32_t)p[i].dcdy;
+      }
+      /* bboxpos: negative regions discarded */
+      const struct r_shader sh = { line_shade_pixel, &ls };
+      r_bin_planes(rs, p, 4, bx0 > 0 ? bx0 : 0, by0 > 0 ? by0 : 0, bx1, by1, &sh);
+      return;
+   }
+
    if (bx0 < rs->x0) bx0 = rs->x0;
    if (by0 < rs->y0) by0 = rs->y0;
    if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
    if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
-   if (bx0 > bx1 || by0 > by1)
-      return;
 
    /* the four edges, as the triangles' (lp_setup_tri.c conventions) */
    int64_t c[4], dcdx[4], dcdy[4];
@@ -269,30 +371,6 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
          c[i]++;
       dcdx[i] *= 256;
       dcdy[i] *= 256;
-   }
-
-   /* setup_line_coefficients: depth and 1/w are linear, the inputs
-    * perspective (premultiplied by 1/w) or constant from the provoking
-    * vertex */
-   const struct plane zp = line_coef(&info, v1->pos[2], v2->pos[2]);
-   const struct plane wp = line_coef(&info, v1->pos[3], v2->pos[3]);
-   struct plane ap[R_FS_NUM_INPUTS][4];
-   float flat[R_FS_NUM_INPUTS][4];
-   bool flat_attr[R_FS_NUM_INPUTS];
-   bool need_w = false;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs_inputs & (1u << a)))
-         continue;
-      const int slot = r_fs_slot(a, false);
-      flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
-      need_w |= !flat_attr[a];
-      for (int k = 0; k < 4; k++) {
-         if (flat_attr[a])
-            flat[a][k] = pv->attr[slot][k];
-         else
-            ap[a][k] = line_coef(&info, v1->attr[slot][k] * v1->pos[3],
-                                 v2->attr[slot][k] * v2->pos[3]);
-      }
    }
 
    for (int32_t py = by0; py <= by1; py++) {
@@ -314,19 +392,7 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
             x1 = x0 - 1;
          }
       }
-      for (int32_t px = (int32_t)x0; px <= x1; px++) {
-         const float fx = (float)px, fy = (float)py;
-         float in[R_FS_NUM_INPUTS][4];
-         const float rw = need_w ? 1.0f / eval_plane(&wp, fx, fy) : 0.0f;
-         for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-            if (!(rs->fs_inputs & (1u << a)))
-               continue;
-            for (int k = 0; k < 4; k++)
-               in[a][k] = flat_attr[a] ? flat[a][k] : eval_plane(&ap[a][k], fx, fy) * rw;
-         }
-         float color[4];
-         r_fragment_shader(rs, (const float (*)[4])in, color);
-         r_fragment_ops(rs, px, py, eval_plane(&zp, fx, fy), color);
-      }
+      for (int32_t px = (int32_t)x0; px <= x1; px++)
+         line_shade_pixel(rs, &ls, px, py);
    }
 }

@@ -16,7 +16,7 @@
  * pixel centres exactly on a left edge or a horizontal bottom edge are
  * inside; on a right or top edge they are outside.
  */
-#include "r_state.h"
+#include "r_bin.h"
 
 #include <limits.h>
 #include <math.h>
@@ -64,13 +64,7 @@ static inline int32_t max3(int32_t a, int32_t b, int32_t c)
  * triangles"; the fact sheet, §1, covers the finite case only.) */
 
 #define TILE_SIZE 64
-#define MAX_PLANES 7
-
-struct rplane {
-   int64_t c;
-   int32_t dcdx, dcdy;     /* scaled by 256 */
-   uint32_t eo;
-};
+#define MAX_PLANES R_MAX_PLANES
 
 static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
 static inline int32_t neg32(int32_t a) { return (int32_t)(0u - (uint32_t)a); }
@@ -116,7 +110,7 @@ static inline void build_masks(int32_t c, int32_t cdiff, int32_t dcdx, int32_t d
 /* The per-block trivial reject/accept values of lp_rast_tri_tmp.h
  * (RASTER_64): c and the steps reduced by FIXED_ORDER to 32 bits, for
  * sub-blocks of size 1 << log2_sub pixels. */
-static inline void block_masks(const struct rplane *p, int64_t c, int log2_sub,
+static inline void block_masks(const struct r_plane *p, int64_t c, int log2_sub,
                                unsigned *outmask, unsigned *partmask)
 {
    int32_t dcdx = neg32(p->dcdx) >> 8;
@@ -258,19 +252,24 @@ static inline void shade_pixel(const struct r_state *rs, const struct tri_shade 
 }
 
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
- * is pixel (x+i, y+j)); pixels outside the draw region are dropped (in
- * llvmpipe they land in the tile padding). */
-static void shade_block(const struct r_state *rs, const struct tri_shade *ts,
+ * is pixel (x+i, y+j)).  The scissor box is only the extra planes (and the
+ * tiles binned): where a non-finite primitive's edges reach beyond its
+ * bounding box, a side of the box inside the draw region adds no plane
+ * and the oracle writes the pixels outside the scissor box too, up to the
+ * framebuffer ([S: lp_rast.c:lp_rast_shade_quads_mask] drops only blocks past
+ * the framebuffer's edge; pixels past it in a block land in the texture
+ * padding).  Finite primitives never cover pixels outside their box. */
+static void shade_block(const struct r_state *rs, const struct r_shader *sh,
                         int x, int y, unsigned mask)
 {
    for (int j = 0; j < 4; j++) {
       const int py = y + j;
-      if (py < rs->y0 || py >= rs->y1)
+      if (py < 0 || py >= rs->height)
          continue;
       for (int i = 0; i < 4; i++) {
          const int px = x + i;
-         if ((mask & (1u << (4 * j + i))) && px >= rs->x0 && px < rs->x1)
-            shade_pixel(rs, ts, px, py);
+         if ((mask & (1u << (4 * j + i))) && px >= 0 && px < rs->width)
+            sh->pixel(rs, sh->ctx, px, py);
       }
    }
 }
@@ -278,32 +277,32 @@ static void shade_block(const struct r_state *rs, const struct tri_shade *ts,
 /* ---- the rasterizer levels ---------------------------------------------- */
 
 /* Shades the whole w x h area at (x, y) (multiples of 4), block by block. */
-static void shade_area(const struct r_state *rs, const struct tri_shade *ts,
+static void shade_area(const struct r_state *rs, const struct r_shader *sh,
                        int x, int y, int w, int h)
 {
    for (int iy = 0; iy < h; iy += 4)
       for (int ix = 0; ix < w; ix += 4)
-         shade_block(rs, ts, x + ix, y + iy, 0xffff);
+         shade_block(rs, sh, x + ix, y + iy, 0xffff);
 }
 
 /* do_block_4: per-pixel masks of one 4x4 block. */
-static void do_block_4(const struct r_state *rs, const struct tri_shade *ts,
-                       const struct rplane *p, int n, int x, int y, const int64_t *c)
+static void do_block_4(const struct r_state *rs, const struct r_shader *sh,
+                       const struct r_plane *p, int n, int x, int y, const int64_t *c)
 {
    unsigned mask = 0xffff;
    for (int j = 0; j < n; j++)
       mask &= ~mask_linear((int32_t)(sub64(c[j], 1) >> 8),
                            neg32(p[j].dcdx) >> 8, p[j].dcdy >> 8);
    if (mask)
-      shade_block(rs, ts, x, y, mask);
+      shade_block(rs, sh, x, y, mask);
 }
 
 /* One level of lp_rast_tri_tmp.h: the block at (x, y) is split into 4x4
  * sub-blocks of 1 << log2_sub pixels (16 in a 64x64 tile, 4 in a 16x16
  * block); each is rejected, shaded whole, or descended into.  Partial
  * sub-blocks come first, then the full ones, each in bit order. */
-static void do_block(const struct r_state *rs, const struct tri_shade *ts,
-                     const struct rplane *p, int n, int x, int y, const int64_t *c,
+static void do_block(const struct r_state *rs, const struct r_shader *sh,
+                     const struct r_plane *p, int n, int x, int y, const int64_t *c,
                      int log2_sub)
 {
    const int sub = 1 << log2_sub;
@@ -322,22 +321,22 @@ static void do_block(const struct r_state *rs, const struct tri_shade *ts,
       for (int j = 0; j < n; j++)
          cx[j] = add64(sub64(c[j], imul64(p[j].dcdx, ix)), imul64(p[j].dcdy, iy));
       if (log2_sub == 2)
-         do_block_4(rs, ts, p, n, x + ix, y + iy, cx);
+         do_block_4(rs, sh, p, n, x + ix, y + iy, cx);
       else
-         do_block(rs, ts, p, n, x + ix, y + iy, cx, 2);
+         do_block(rs, sh, p, n, x + ix, y + iy, cx, 2);
    }
    while (inmask) {
       const int i = __builtin_ctz(inmask);
       inmask &= ~(1u << i);
-      shade_area(rs, ts, x + (i & 3) * sub, y + (i >> 2) * sub, sub, sub);
+      shade_area(rs, sh, x + (i & 3) * sub, y + (i >> 2) * sub, sub, sub);
    }
 }
 
 /* lp_rast_triangle_N on the tile at (x, y) with the planes in plane_mask. */
-static void rast_tile(const struct r_state *rs, const struct tri_shade *ts,
-                      const struct rplane *tri_planes, unsigned plane_mask, int x, int y)
+static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
+                      const struct r_plane *tri_planes, unsigned plane_mask, int x, int y)
 {
-   struct rplane p[MAX_PLANES];
+   struct r_plane p[MAX_PLANES];
    int64_t c[MAX_PLANES];
    int n = 0;
    while (plane_mask) {
@@ -347,7 +346,7 @@ static void rast_tile(const struct r_state *rs, const struct tri_shade *ts,
       c[n] = sub64(add64(p[n].c, imul64(p[n].dcdy, y)), imul64(p[n].dcdx, x));
       n++;
    }
-   do_block(rs, ts, p, n, x, y, c, 4);
+   do_block(rs, sh, p, n, x, y, c, 4);
 }
 
 /* With finite snapped positions and edge steps below 2^22 (always the case
@@ -357,7 +356,7 @@ static void rast_tile(const struct r_state *rs, const struct tri_shade *ts,
  * pixels are exactly those whose three edge values are positive.  This
  * evaluates that directly over the box cut to the draw region. */
 static void rasterize_direct(const struct r_state *rs, const struct tri_shade *ts,
-                             const struct rplane *p, int32_t x0, int32_t y0,
+                             const struct r_plane *p, int32_t x0, int32_t y0,
                              int32_t x1, int32_t y1)
 {
    for (int32_t py = y0; py <= y1; py++) {
@@ -370,6 +369,8 @@ static void rasterize_direct(const struct r_state *rs, const struct tri_shade *t
       }
    }
 }
+
+static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
 /* Triangle setup and binning of a triangle whose snapped area is positive
  * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
@@ -400,7 +401,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
 
    /* the three edges (lp_setup_tri.c SSE path) */
-   struct rplane p[MAX_PLANES];
+   struct r_plane p[MAX_PLANES];
    bool exact = true;   /* nothing below wraps: see rasterize_direct */
    for (int i = 0; i < 3; i++) {
       const int k = (i + 1) % 3;
@@ -428,35 +429,53 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       return;
    }
 
-   /* planes for the sides of the draw region the box leaves
-    * (scissor_planes_needed, lp_setup_add_scissor_planes) */
-   int n = 3;
-   if (bx0 < rx0)
-      p[n++] = (struct rplane){ .c = -(int64_t)(shl32(rx0 - 1, 8)), .dcdx = shl32(-1, 8),
-                                .dcdy = 0, .eo = 1u << 8 };
-   if (bx1 > rx1)
-      p[n++] = (struct rplane){ .c = (int64_t)shl32(rx1, 8) + 127, .dcdx = 1 << 8,
-                                .dcdy = 0, .eo = 0 };
-   if (by0 < ry0)
-      p[n++] = (struct rplane){ .c = -(int64_t)(shl32(ry0 - 1, 8)), .dcdx = 0,
-                                .dcdy = 1 << 8, .eo = 1u << 8 };
-   if (by1 > ry1)
-      p[n++] = (struct rplane){ .c = (int64_t)shl32(ry1, 8) + 127, .dcdx = 0,
-                                .dcdy = shl32(-1, 8), .eo = 0 };
-
    struct tri_shade ts;
    setup_shade(rs, v, back, &ts);
+   const struct r_shader sh = { tri_shade_pixel, &ts };
+   r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, &sh);
+}
+
+static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
+{
+   shade_pixel(rs, ctx, px, py);
+}
+
+/* [S: lp_setup_tri.c:lp_setup_bin_triangle] */
+void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
+                  int32_t bx0, int32_t by0, int32_t bx1, int32_t by1,
+                  const struct r_shader *sh)
+{
+   /* draw region, inclusive */
+   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   /* trimmed box: the box intersected with the draw region */
+   const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
+   const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
+
+   /* planes for the sides of the draw region the box leaves
+    * [S: lp_setup_context.h:scissor_planes_needed,
+    * lp_setup.c:lp_setup_add_scissor_planes] */
+   if (bx0 < rx0)
+      p[n++] = (struct r_plane){ .c = -(int64_t)(shl32(rx0 - 1, 8)), .dcdx = shl32(-1, 8),
+                                 .dcdy = 0, .eo = 1u << 8 };
+   if (bx1 > rx1)
+      p[n++] = (struct r_plane){ .c = (int64_t)shl32(rx1, 8) + 127, .dcdx = 1 << 8,
+                                 .dcdy = 0, .eo = 0 };
+   if (by0 < ry0)
+      p[n++] = (struct r_plane){ .c = -(int64_t)(shl32(ry0 - 1, 8)), .dcdx = 0,
+                                 .dcdy = 1 << 8, .eo = 1u << 8 };
+   if (by1 > ry1)
+      p[n++] = (struct r_plane){ .c = (int64_t)shl32(ry1, 8) + 127, .dcdx = 0,
+                                 .dcdy = shl32(-1, 8), .eo = 0 };
 
    /* binning */
    const uint32_t dx = floor_pot((uint32_t)(bx0 ^ bx1) | (uint32_t)(by0 ^ by1));
    if (dx < TILE_SIZE) {
       /* one tile: lp_rast_triangle_3_4/_3_16/_4_16 and the one-tile case
        * all rasterize the tile with every plane */
-      rast_tile(rs, &ts, p, (1u << n) - 1, bx0 / TILE_SIZE * TILE_SIZE,
+      rast_tile(rs, sh, p, (1u << n) - 1, bx0 / TILE_SIZE * TILE_SIZE,
                 by0 / TILE_SIZE * TILE_SIZE);
       return;
    }
-
    const int ix0 = tx0 / TILE_SIZE, iy0 = ty0 / TILE_SIZE;
    const int ix1 = tx1 / TILE_SIZE, iy1 = ty1 / TILE_SIZE;
    int64_t c[MAX_PLANES], ei[MAX_PLANES], eo[MAX_PLANES], xstep[MAX_PLANES], ystep[MAX_PLANES];
@@ -486,12 +505,12 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
                break;   /* leaving the triangle: done with this row */
          } else if (partial) {
             in = true;
-            rast_tile(rs, &ts, p, partial, x * TILE_SIZE, y * TILE_SIZE);
+            rast_tile(rs, sh, p, partial, x * TILE_SIZE, y * TILE_SIZE);
          } else {
             in = true;
             /* lp_rast_shade_tile: the whole tile, cut to the framebuffer */
             const int tx = x * TILE_SIZE, ty = y * TILE_SIZE;
-            shade_area(rs, &ts, tx, ty, rs->width - tx < TILE_SIZE ? rs->width - tx : TILE_SIZE,
+            shade_area(rs, sh, tx, ty, rs->width - tx < TILE_SIZE ? rs->width - tx : TILE_SIZE,
                        rs->height - ty < TILE_SIZE ? rs->height - ty : TILE_SIZE);
          }
          for (int i = 0; i < n; i++)
