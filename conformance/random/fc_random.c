@@ -146,7 +146,7 @@ static double near_bound(fc_rng *r, double lo, double hi)
 }
 
 /* A fresh vertex of the scene's space; returns the glVertex dimension. */
-static int fresh_vertex(struct scene *s, double v[4])
+int fcr_fresh_vertex(struct scene *s, double v[4])
 {
     fc_rng *r = &s->r;
     v[2] = 0;
@@ -206,7 +206,7 @@ static int pick_vertex(struct scene *s, int style, int k, const double anchor[4]
                        const double second[4], double v[4])
 {
     fc_rng *r = &s->r;
-    int dim = fresh_vertex(s, v);
+    int dim = fcr_fresh_vertex(s, v);
     if (s->npool && fc_rng_chance(r, 25)) {
         memcpy(v, s->pool[fc_rng_below(r, (uint32_t)(s->npool < POOL ? s->npool : POOL))],
                4 * sizeof v[0]);

@@ -23,4 +23,8 @@ void fc_random_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
 int fc_random_lit_parse(const char *name, uint64_t *seed, uint32_t *index);
 void fc_random_lit_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
 
+/* The same for the raster scenes (points, lines, fragment operations). */
+int fc_random_raster_parse(const char *name, uint64_t *seed, uint32_t *index);
+void fc_random_raster_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
+
 #endif

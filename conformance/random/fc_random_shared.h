@@ -28,6 +28,9 @@ extern const GLenum fcr_modes[6];       /* the six polygon primitive types */
 
 /* v (dim components) through a random glVertex variant. */
 void fcr_emit_vertex(struct scene *s, const double v[4], int dim);
+/* A fresh vertex of the scene's space (pixel centres, snap-grid ties,
+ * bounds of the view volume, w near 0...); returns the glVertex dimension. */
+int fcr_fresh_vertex(struct scene *s, double v[4]);
 /* A random colour through a random glColor variant (any type, extremes). */
 void fcr_emit_color(struct scene *s);
 /* glViewport: the whole framebuffer, or (40%) a random offset and size;

@@ -21,6 +21,7 @@ struct options {
     int ntags, nglobs;
     long random;                /* number of random scenes */
     long random_lit;            /* number of random lit scenes */
+    long random_raster;         /* number of random raster scenes */
     uint64_t seed;
     long index;                 /* first scene index; >= 0 replays from there */
     const char *report, *renderer[2], *fixgl_arg;
@@ -79,12 +80,16 @@ static void usage(FILE *f)
         "  --tag T              only cases with tag T (repeatable)\n"
         "  --case GLOB          only cases whose name matches GLOB (repeatable)\n"
         "  --random N           add N random scenes, random/s<S>-i<I> (default 100, or 0\n"
-        "                       when --random-lit is given)\n"
+        "                       when --random-lit or --random-raster is given)\n"
         "  --random-lit N       add N random lit scenes, random-lit/s<S>-i<I> (tag random-lit;\n"
         "                       default 0): lights, materials, light models, normals\n"
-        "  --seed S             random seed of both families (default 1)\n"
-        "  --index I            replay random scene I of seed S alone (with --random N or\n"
-        "                       --random-lit N: scenes I..I+N-1 of that family)\n"
+        "  --random-raster N    add N random raster scenes, random-raster/s<S>-i<I> (tag\n"
+        "                       random-raster; default 0): points, lines, polygon state,\n"
+        "                       clip planes, fog, per-fragment operations\n"
+        "  --seed S             random seed of every family (default 1)\n"
+        "  --index I            replay random scene I of seed S alone (with --random N,\n"
+        "                       --random-lit N or --random-raster N: scenes I..I+N-1 of\n"
+        "                       that family)\n"
         "  --no-random          no plain random scenes\n"
         "  --jobs N             renderer processes at once (default: online CPUs)\n"
         "  --report DIR         report directory (default %s)\n"
@@ -99,7 +104,7 @@ static void usage(FILE *f)
 
 static int parse_args(int argc, char **argv, struct options *o)
 {
-    int explicit_random = 0, explicit_lit = 0;
+    int explicit_random = 0, explicit_lit = 0;   /* explicit_lit: any other family */
     memset(o, 0, sizeof *o);
     o->random = 100;
     o->seed = 1;
@@ -119,6 +124,7 @@ static int parse_args(int argc, char **argv, struct options *o)
         else if (strcmp(a, "--case") == 0 && o->nglobs < MAX_FILTERS) o->globs[o->nglobs++] = v;
         else if (strcmp(a, "--random") == 0) { o->random = strtol(v, NULL, 10); explicit_random = 1; }
         else if (strcmp(a, "--random-lit") == 0) { o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; }
+        else if (strcmp(a, "--random-raster") == 0) { o->random_raster = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
         else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
         else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
@@ -135,7 +141,7 @@ static int parse_args(int argc, char **argv, struct options *o)
     else if (o->index >= 0 && !explicit_random)
         o->random = 1;
     o->jobs = o->jobs < 1 ? 1 : o->jobs;
-    return o->random >= 0 && o->random_lit >= 0;
+    return o->random >= 0 && o->random_lit >= 0 && o->random_raster >= 0;
 }
 
 static int has_tag(const char *tags, const char *tag)
@@ -223,6 +229,14 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
         snprintf(replay, sizeof replay, "--random-lit 1 --seed %" PRIu64 " --index %" PRIu64, o->seed, index);
         if (selected(o, name, "random-lit"))
             add_item(&items, n, &cap, name, "random-lit", replay);
+    }
+    for (long i = 0; i < o->random_raster; i++) {
+        char name[96], replay[128];
+        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
+        snprintf(name, sizeof name, "random-raster/s%" PRIu64 "-i%" PRIu64, o->seed, index);
+        snprintf(replay, sizeof replay, "--random-raster 1 --seed %" PRIu64 " --index %" PRIu64, o->seed, index);
+        if (selected(o, name, "random-raster"))
+            add_item(&items, n, &cap, name, "random-raster", replay);
     }
     *out = items;
     return 1;
