@@ -11,9 +11,10 @@
  *     GL_POINT_SMOOTH;
  *   - lines: glLineWidth, glLineStipple with GL_LINE_STIPPLE,
  *     GL_LINE_SMOOTH;
- *   - polygons: glCullFace / glFrontFace / GL_CULL_FACE, glPolygonOffset
- *     with GL_POLYGON_OFFSET_FILL, glPolygonStipple with
- *     GL_POLYGON_STIPPLE;
+ *   - polygons: glCullFace / glFrontFace / GL_CULL_FACE, glPolygonMode
+ *     (front and back apart) with glEdgeFlag between vertices,
+ *     glPolygonOffset with GL_POLYGON_OFFSET_FILL/LINE/POINT,
+ *     glPolygonStipple with GL_POLYGON_STIPPLE;
  *   - 1-3 user clip planes given under the current modelview;
  *   - fog (linear, exp, exp2; start/end/density/colour);
  *   - scissor (boxes inside, across and outside the framebuffer), alpha
@@ -68,6 +69,8 @@ struct profile {
     int nprim;
     int smooth_points, smooth_lines, stipple_lines;
     int cull, offset, pstipple, planes;
+    int unfilled, edge_flags;   /* glPolygonMode; glEdgeFlag between vertices */
+    GLenum mode_front, mode_back;
     int fog;                    /* 0 = off, else 1 + index into fog_modes */
     int scissor, alpha, stencil, blend, logic, cmask, dmask;
     GLenum alpha_func, stencil_func, sfail, zfail, zpass;
@@ -91,6 +94,13 @@ static void make_profile(fc_rng *k, struct profile *p)
     p->offset = fc_rng_chance(k, 20);
     p->pstipple = fc_rng_chance(k, 15);
     p->planes = fc_rng_chance(k, 15) ? fc_rng_range(k, 1, 3) : 0;
+    {
+        static const GLenum fill_modes[3] = { GL_POINT, GL_LINE, GL_FILL };
+        p->unfilled = fc_rng_chance(k, 20);
+        p->mode_front = fill_modes[fc_rng_below(k, 3)];
+        p->mode_back = fill_modes[fc_rng_below(k, 3)];
+        p->edge_flags = fc_rng_chance(k, 40);
+    }
     p->fog = fc_rng_chance(k, 25) ? 1 + (int)fc_rng_below(k, 3) : 0;
     p->scissor = fc_rng_chance(k, 25);
     p->alpha = fc_rng_chance(k, 20);
@@ -163,8 +173,18 @@ static void random_polygon_state(struct scene *s, const struct profile *p)
         glCullFace(faces[fc_rng_below(r, 3)]);
         glFrontFace(fc_rng_chance(r, 50) ? GL_CCW : GL_CW);
     }
+    if (p->unfilled) {
+        if (p->mode_front == p->mode_back) {
+            glPolygonMode(GL_FRONT_AND_BACK, p->mode_front);
+        } else {
+            glPolygonMode(GL_FRONT, p->mode_front);
+            glPolygonMode(GL_BACK, p->mode_back);
+        }
+    }
     if (p->offset) {
         static const double f[6] = { 0, 1, -1, 2.5, 0.5, -4 };
+        if (fc_rng_chance(r, 50)) glEnable(GL_POLYGON_OFFSET_LINE);
+        if (fc_rng_chance(r, 30)) glEnable(GL_POLYGON_OFFSET_POINT);
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset((GLfloat)(fc_rng_chance(r, 60) ? f[fc_rng_below(r, 6)] : fc_rng_real(r, -8, 8)),
                         (GLfloat)(fc_rng_chance(r, 60) ? f[fc_rng_below(r, 6)] : fc_rng_real(r, -50, 50)));
@@ -302,7 +322,7 @@ static void random_rect(struct scene *s)
     }
 }
 
-static void random_raster_primitive(struct scene *s, GLenum mode)
+static void random_raster_primitive(struct scene *s, const struct profile *p, GLenum mode)
 {
     fc_rng *r = &s->r;
     double v[4];
@@ -316,6 +336,14 @@ static void random_raster_primitive(struct scene *s, GLenum mode)
         random_vertex(s, v);
         if (fc_rng_chance(r, 90))
             fcr_emit_color(s);
+        if (p->edge_flags && fc_rng_chance(r, 40)) {
+            if (fc_rng_chance(r, 50)) {
+                glEdgeFlag((GLboolean)fc_rng_chance(r, 50));
+            } else {
+                const GLboolean f = (GLboolean)fc_rng_chance(r, 50);
+                glEdgeFlagv(&f);
+            }
+        }
         emit(s, v);
     }
     glEnd();
@@ -360,7 +388,7 @@ static void raster_scene(fc_h *h)
 
     for (int i = 0; i < p.nprim; i++) {
         random_points_lines(&s, &p);
-        random_raster_primitive(&s, p.modes[i]);
+        random_raster_primitive(&s, &p, p.modes[i]);
         if (c->frames == 2 && i == p.nprim / 2)
             fc_capture(h);
     }

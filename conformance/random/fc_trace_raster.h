@@ -12,6 +12,14 @@ static inline void fct_glPointSize(GLfloat a) { fc_trace_call("glPointSize", 1, 
 static inline void fct_glLineWidth(GLfloat a) { fc_trace_call("glLineWidth", 1, a, 0, 0, 0); glLineWidth(a); }
 static inline void fct_glLineStipple(GLint f, GLushort p) { fc_trace_calli("glLineStipple", 2, f, p, 0, 0); glLineStipple(f, p); }
 static inline void fct_glCullFace(GLenum a) { fc_trace_calli("glCullFace", 1, a, 0, 0, 0); glCullFace(a); }
+static inline void fct_glPolygonMode(GLenum f, GLenum m) { fc_trace_calli("glPolygonMode", 2, f, m, 0, 0); glPolygonMode(f, m); }
+static inline void fct_glEdgeFlag(GLboolean f) { fc_trace_calli("glEdgeFlag", 1, f, 0, 0, 0); glEdgeFlag(f); }
+static inline void fct_glEdgeFlagv(const GLboolean *f)
+{
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "{ static const GLboolean t[] = { %u }; glEdgeFlagv(t); }\n", (unsigned)*f);
+    glEdgeFlagv(f);
+}
 static inline void fct_glPolygonOffset(GLfloat f, GLfloat u) { fc_trace_call("glPolygonOffset", 2, f, u, 0, 0); glPolygonOffset(f, u); }
 static inline void fct_glPolygonStipple(const GLubyte *m) { fc_trace_vub("glPolygonStipple", "GLubyte", 128, m); glPolygonStipple(m); }
 static inline void fct_glClipPlane(GLenum p, const GLdouble *eq)
@@ -50,6 +58,9 @@ static inline void fct_glRectfv(const GLfloat *a, const GLfloat *b)
 #define glLineWidth fct_glLineWidth
 #define glLineStipple fct_glLineStipple
 #define glCullFace fct_glCullFace
+#define glPolygonMode fct_glPolygonMode
+#define glEdgeFlag fct_glEdgeFlag
+#define glEdgeFlagv fct_glEdgeFlagv
 #define glPolygonOffset fct_glPolygonOffset
 #define glPolygonStipple fct_glPolygonStipple
 #define glClipPlane fct_glClipPlane
