@@ -13,7 +13,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "tnl/t_gallivm.h"
+#include "math/m_gallivm.h"
 
 uint8_t r_float_to_unorm8(float c)
 {
@@ -73,12 +73,12 @@ static float fog_factor(const struct r_state *rs, float fc)
       f = fc * p[0] + p[1];
       break;
    case R_FOG_EXP:
-      f = t_gallivm_exp2(-(fc * p[2]));
+      f = m_gallivm_exp2(-(fc * p[2]));
       break;
    case R_FOG_EXP2:
    default: {
       const float t = fc * p[3];
-      f = t_gallivm_exp2(-(t * t));
+      f = m_gallivm_exp2(-(t * t));
       break;
    }
    }

@@ -22,7 +22,7 @@
 #endif
 
 #include "context.h"
-#include "tnl/t_gallivm.h"
+#include "math/m_gallivm.h"
 
 /* DP3 = (z*z' + y*y') + x*x' (NIR's reduction from the last component) */
 static inline float dp3(const float *a, const float *b)
@@ -63,7 +63,7 @@ static inline struct lit lit_op(float nd, float nh, float shininess)
 {
    const float exponent = fmaxf(fminf(shininess, 128.0f), -128.0f);
    struct lit l = { 1.0f, fmaxf(nd, 0.0f), 0.0f };
-   l.specular = 0.0f >= nd ? 0.0f : t_gallivm_pow(fmaxf(nh, 0.0f), exponent);
+   l.specular = 0.0f >= nd ? 0.0f : m_gallivm_pow(fmaxf(nh, 0.0f), exponent);
    return l;
 }
 
@@ -172,7 +172,7 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
           * factor is 0 even where pow is NaN (a light exactly at the
           * vertex; ORACLE-NOTES.md "Lighting") */
          const bool inside = l->CosCutoff < spot;
-         att = inside ? t_gallivm_pow(fabsf(spot), l->SpotExponent) : 0.0f;
+         att = inside ? m_gallivm_pow(fabsf(spot), l->SpotExponent) : 0.0f;
          attenuated = true;
       }
       if (d->Attenuated && d->Positional) {
