@@ -37,20 +37,31 @@ uint16_t r_depth_to_z16(float z)
    return (uint16_t)lrintf(r_clamp01(z) * 65535.0f);
 }
 
-/* lp_build_cmp(func, a, b) on unsigned integers */
+/* lp_build_cmp(func, a, b): on unsigned integers (depth, stencil, the
+ * unorm8 alpha test) and on floats (the alpha test of formats that are not
+ * rgba8 variants; C's ordered comparisons, the caller adds lp_build_cmp's
+ * unordered treatment of a NaN reference). */
+#define R_COMPARE(func, a, b)                      \
+   switch (func) {                                 \
+   case R_NEVER:    return false;                  \
+   case R_LESS:     return (a) < (b);              \
+   case R_EQUAL:    return (a) == (b);             \
+   case R_LEQUAL:   return (a) <= (b);             \
+   case R_GREATER:  return (a) > (b);              \
+   case R_NOTEQUAL: return (a) != (b);             \
+   case R_GEQUAL:   return (a) >= (b);             \
+   case R_ALWAYS:                                  \
+   default:         return true;                   \
+   }
+
 static bool compare(enum r_func func, uint32_t a, uint32_t b)
 {
-   switch (func) {
-   case R_NEVER:    return false;
-   case R_LESS:     return a < b;
-   case R_EQUAL:    return a == b;
-   case R_LEQUAL:   return a <= b;
-   case R_GREATER:  return a > b;
-   case R_NOTEQUAL: return a != b;
-   case R_GEQUAL:   return a >= b;
-   case R_ALWAYS:
-   default:         return true;
-   }
+   R_COMPARE(func, a, b)
+}
+
+static bool compare_float(enum r_func func, float a, float b)
+{
+   R_COMPARE(func, a, b)
 }
 
 /* The fog factor of the fixed-function fragment program from the
@@ -84,21 +95,6 @@ static float fog_factor(const struct r_state *rs, float fc)
    }
    f = f > 0.0f ? f : 0.0f;   /* fmax(f, 0): NaN -> 0 */
    return f < 1.0f ? f : 1.0f;
-}
-
-static bool compare_float(enum r_func func, float a, float b)
-{
-   switch (func) {
-   case R_NEVER:    return false;
-   case R_LESS:     return a < b;
-   case R_EQUAL:    return a == b;
-   case R_LEQUAL:   return a <= b;
-   case R_GREATER:  return a > b;
-   case R_NOTEQUAL: return a != b;
-   case R_GEQUAL:   return a >= b;
-   case R_ALWAYS:
-   default:         return true;
-   }
 }
 
 /* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR
