@@ -208,6 +208,8 @@ static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
     * restarts its counter on every triangle that reaches it */
    if (dp->line_stipple)
       ctx->StippleCounter = 0;
+   /* the pstipple stage's first filled triangle of the draw */
+   t_vbuf_filled_tri(ctx);
    r_triangle(rs, v[0], v[1], v[2]);
 }
 
