@@ -61,6 +61,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
       return;
    fgl_free_matrix(ctx);
    fgl_vbo_fini(&ctx->Vbo);
+   free(ctx->_DrawVbuf.queue);
    free(ctx);
 }
 

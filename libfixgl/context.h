@@ -299,6 +299,22 @@ struct fgl_draw_pipeline {
  * first triangle after a flush (each llvmpipe draw) picks the enable of its
  * face's fill mode, and every later triangle of the draw gets that units and
  * factor (or zeros). */
+/* Draw's vbuf stage as far as the polygon stipple sees it
+ * (draw_pipe_vbuf.c, draw_pipe_pstipple.c): points and lines are queued
+ * into a batch that llvmpipe rasterizes when the vbuf flushes (another
+ * primitive type, the end of the draw), with the fragment shader bound at
+ * that time; the pstipple stage binds its stipple shader at the first
+ * filled triangle of a draw and unbinds it when the draw is flushed.  Only
+ * used while the polygon stipple is on (t_linepoint.c). */
+enum t_vbuf_prim { T_VBUF_NONE, T_VBUF_POINTS, T_VBUF_LINES };
+
+struct fgl_draw_vbuf {
+   bool pstipple_bound;     /* pstip_first_tri ran since the last flush */
+   enum t_vbuf_prim prim;   /* the queued batch's primitive type */
+   unsigned count, cap;
+   struct r_vertex (*queue)[2];   /* a point uses [0] */
+};
+
 struct fgl_draw_offset_latch {
    bool latched;
    float units, scale;
@@ -351,6 +367,7 @@ struct fgl_context {
    float _ClipUserPlane[FGL_MAX_CLIP_PLANES][4];  /* clip-space planes */
    struct fgl_draw_pipeline _DrawPipeline;
    struct fgl_draw_offset_latch _DrawOffset;
+   struct fgl_draw_vbuf _DrawVbuf;
    uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
                                     * made from (all zero at first, as the
                                     * state tracker's copy) */

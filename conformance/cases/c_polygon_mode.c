@@ -481,6 +481,142 @@ static void mixed_modes_stages(fc_h *h)
     }
 }
 
+/* The polygon stipple and the points and lines of unfilled faces in one
+ * draw (draw_pipe_pstipple.c: the stipple shader is bound at the first
+ * filled triangle of a draw and kept until the draw ends; draw_pipe_vbuf.c
+ * hands llvmpipe each run of points or lines when the primitive type
+ * changes): outlines and vertex points after the first filled face, and
+ * the run just before it, are stippled; earlier runs and other draws are
+ * not.  Frame 0: points, fill, points; 1: wide lines, fill, lines; 2:
+ * points, lines (flushing the points unstippled), fill, points; 3: a fill
+ * draw, then the points in a GL_QUADS draw (not stippled) and in a second
+ * GL_TRIANGLES primitive of the fill's draw (stippled). */
+static void stipple_after_fill(fc_h *h)
+{
+    GLubyte pat[128];
+    for (int i = 0; i < 128; i++)
+        pat[i] = (GLubyte)((i & 8) ? 0xe3 : 0x5a);
+    fc_pixel_ortho(h);
+    glPolygonStipple(pat);
+    glEnable(GL_POLYGON_STIPPLE);
+    glPointSize(7.0f);
+    glLineWidth(3.0f);
+    /* cell k of a 4 x 2 grid: counter-clockwise (front) or clockwise */
+    #define CELL_TRI(k, ccw)                                                        \
+        do {                                                                        \
+            const float ox = 24.0f * (float)((k) % 4), oy = 32.0f * (float)((k) / 4); \
+            vcolor(k); glVertex3f(ox + 2.5f, oy + 3.5f, -0.2f);                     \
+            vcolor((k) + 1);                                                        \
+            if (ccw) glVertex3f(ox + 21.5f, oy + 5.5f, 0.1f);                       \
+            else glVertex3f(ox + 6.5f, oy + 29.5f, 0.1f);                           \
+            vcolor((k) + 2);                                                        \
+            if (ccw) glVertex3f(ox + 6.5f, oy + 29.5f, 0.3f);                       \
+            else glVertex3f(ox + 21.5f, oy + 5.5f, 0.3f);                           \
+        } while (0)
+    for (int f = 0; f < 4; f++) {
+        fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+        glPolygonMode(GL_FRONT, GL_FILL);
+        glPolygonMode(GL_BACK, f == 1 ? GL_LINE : GL_POINT);
+        if (f < 2) {
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(0, false);
+            CELL_TRI(1, false);
+            CELL_TRI(2, true);
+            CELL_TRI(3, false);
+            CELL_TRI(4, false);
+            glEnd();
+        } else if (f == 2) {
+            glPolygonMode(GL_FRONT, GL_LINE);
+            glPolygonMode(GL_BACK, GL_POINT);
+            glFrontFace(GL_CW);
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(0, false);   /* points (back with GL_CW) */
+            CELL_TRI(1, true);    /* lines: flush the points */
+            glEnd();
+            glPolygonMode(GL_FRONT, GL_FILL);
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(2, true);    /* fill */
+            CELL_TRI(3, false);
+            CELL_TRI(5, true);
+            CELL_TRI(6, false);
+            glEnd();
+            glPolygonMode(GL_FRONT, GL_LINE);
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(4, false);
+            CELL_TRI(7, true);    /* lines, then a filled face */
+            glEnd();
+            glFrontFace(GL_CCW);
+        } else {
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(0, true);
+            glEnd();
+            glBegin(GL_QUADS);
+            glVertex2f(26.5f, 3.5f); glVertex2f(26.5f, 28.5f);
+            glVertex2f(44.5f, 28.5f); glVertex2f(44.5f, 3.5f);
+            glEnd();
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(2, false);
+            CELL_TRI(3, true);
+            glEnd();
+            glBegin(GL_TRIANGLES);
+            CELL_TRI(4, false);
+            CELL_TRI(5, false);
+            glEnd();
+        }
+        fc_capture(h);
+    }
+    #undef CELL_TRI
+}
+
+/* Zero-area faces through draw's offset stage (draw_pipe_offset.c:
+ * do_offset_tri): det = 0 makes inv_det infinite and the depth slopes NaN,
+ * so the offset is NaN even when the face's mode has its offset off
+ * (NaN * 0), and SATURATE = CLAMP(z, 0, 1) turns the NaN z into 0: the
+ * outlines and points are drawn at depth 0 and pass GL_LESS against 0.5
+ * (llvmpipe would clamp a NaN fragment depth to 1).  Frames: lines with
+ * GL_POLYGON_OFFSET_FILL on, points with GL_POLYGON_OFFSET_POINT on, a
+ * degenerate glRect outlined with both on under GL_EQUAL against 0, and a
+ * non-degenerate face in the same draw first (its latch picks the offset). */
+static void offset_zero_area(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glEnable(GL_DEPTH_TEST);
+    glLineWidth(3.0f);
+    glPointSize(5.0f);
+    glPolygonOffset(2.0f, 3.0f);
+    for (int f = 0; f < 4; f++) {
+        glClearDepth(f == 2 ? 0.0 : 0.5);
+        fcu_clear(0, 0, 0, 0, 1);
+        glDepthFunc(f == 2 ? GL_EQUAL : GL_LESS);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDisable(GL_POLYGON_OFFSET_LINE);
+        glDisable(GL_POLYGON_OFFSET_POINT);
+        glPolygonMode(GL_FRONT_AND_BACK, f == 1 ? GL_POINT : GL_LINE);
+        if (f == 0 || f == 3)
+            glEnable(GL_POLYGON_OFFSET_FILL);
+        if (f == 1)
+            glEnable(GL_POLYGON_OFFSET_POINT);
+        if (f == 2) {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glEnable(GL_POLYGON_OFFSET_LINE);
+            glRectf(20.5f, 4.5f, 20.5f, 40.5f);
+            glRectf(30.5f, 50.5f, 60.5f, 50.5f);
+        } else {
+            glBegin(GL_TRIANGLES);
+            if (f == 3) {
+                glColor3f(0, 0, 1);
+                glVertex3f(40.5f, 4.5f, 0.6f); glVertex3f(60.5f, 8.5f, 0.2f); glVertex3f(45.5f, 30.5f, 0.4f);
+            }
+            glColor3f(1, 0, 0);
+            glVertex3f(4.5f, 4.5f, 0.8f); glVertex3f(20.5f, 20.5f, 0.2f); glVertex3f(36.5f, 36.5f, 0.9f);
+            glColor3f(0, 1, 0);
+            glVertex3f(10.5f, 50.5f, 0.7f); glVertex3f(10.5f, 50.5f, 0.7f); glVertex3f(50.5f, 56.5f, 0.7f);
+            glEnd();
+        }
+        fc_capture(h);
+    }
+}
+
 /* ---- pseudo-random scenes (a fixed LCG: the same calls on both sides) ---- */
 
 static unsigned lcg_next(unsigned *s)
@@ -629,6 +765,8 @@ const fc_case fc_cases_polygon_mode[] = {
     FC_CASE_RGBA("raster/polygon_mode_long_polygon", 64, 64, 2, "raster polygon_mode stipple", long_polygon),
     FC_CASE_RGBA("raster/polygon_mode_api", 64, 32, 1, "raster polygon_mode api errors query", polygon_mode_api),
     FC_CASE_RGBA("raster/polygon_mode_mixed_stages", 96, 64, 4, "raster polygon_mode stipple smooth", mixed_modes_stages),
+    FC_CASE_RGBA("raster/polygon_mode_stipple_after_fill", 96, 64, 4, "raster polygon_mode stipple", stipple_after_fill),
+    FC_CASE_RGBA("raster/polygon_mode_offset_zero_area", 64, 64, 4, "raster polygon_mode offset", offset_zero_area),
     FC_CASE_RGBA("raster/polygon_mode_random", 64, 64, 8, "raster polygon_mode offset stipple clip", random_scenes),
     FC_CASE_RGBA("raster/oracle_stale_rasterizer_after_aa", 64, 64, 3, "raster smooth", stale_rasterizer),
     { 0 }

@@ -127,6 +127,14 @@ static void make_profile(fc_rng *k, struct profile *p)
     p->depth_test = fc_rng_chance(k, 60);
     p->depth_func = fcr_depth_funcs[fc_rng_below(k, 8)];
     p->masked_clear = fc_rng_chance(k, 20);
+    /* Smooth points and lines are drawn as triangles in the same draw as
+     * the filled faces or outlines of a face with another polygon mode,
+     * and the oracle then switches shaders and vertex layouts inside one
+     * batch: it reads uninitialised vertex data (ORACLE-NOTES.md "Polygon
+     * modes"), so such scenes have no defined reference.  Decided after
+     * every draw from the stream, so other scenes keep their values. */
+    if (p->unfilled && p->mode_front != p->mode_back)
+        p->smooth_points = p->smooth_lines = 0;
 }
 
 /* ---- values ------------------------------------------------------------ */

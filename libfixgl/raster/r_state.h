@@ -183,6 +183,11 @@ struct r_state {
     * bit 31 - (x mod 32) to columns x mod 32 */
    bool stipple;
    uint32_t stipple_rows[32];
+   /* the pstipple fragment shader is bound for points and lines too: tnl
+    * sets it while it hands llvmpipe a vbuf batch of points or lines that
+    * is flushed after the first filled triangle of a draw (t_linepoint.c
+    * t_vbuf_flush); the same kill as triangles' */
+   bool stipple_points_lines;
 
    /* points and lines, as the state tracker clamps them
     * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */

@@ -148,7 +148,10 @@ static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
          ol->scale = on ? dp->offset_scale : 0.0f;
       }
       /* [S: draw_pipe_offset.c:do_offset_tri] per vertex, then saturated
-       * (even with a zero offset) */
+       * (even with a zero offset) with Mesa's SATURATE = CLAMP(x, 0, 1) =
+       * x > 0 ? (x > 1 ? 1 : x) : 0 (util/macros.h), so a NaN z becomes 0:
+       * a zero-area face (det 0, inv_det infinite) has a NaN slope, and
+       * NaN * 0 keeps the offset NaN even when the offset is off */
       const float inv_det = 1.0f / det;
       const float ex = v[0]->pos[0] - v[2]->pos[0], ey = v[0]->pos[1] - v[2]->pos[1];
       const float ez = v[0]->pos[2] - v[2]->pos[2];
@@ -165,7 +168,7 @@ static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
             v[i] = &tmp[i];
          }
          const float z = tmp[i].pos[2] + zoffset;
-         tmp[i].pos[2] = z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z);   /* SATURATE */
+         tmp[i].pos[2] = z > 0.0f ? (z > 1.0f ? 1.0f : z) : 0.0f;   /* SATURATE */
       }
    }
 
@@ -208,6 +211,8 @@ static void pipeline_tri(struct fgl_context *ctx, const struct r_vertex *v0,
     * restarts its counter on every triangle that reaches it */
    if (dp->line_stipple)
       ctx->StippleCounter = 0;
+   /* the pstipple stage's first filled triangle of the draw */
+   t_vbuf_filled_tri(ctx);
    r_triangle(rs, v[0], v[1], v[2]);
 }
 

@@ -18,6 +18,7 @@
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "context.h"
 
@@ -74,6 +75,94 @@ static void aapoint_point(const struct r_state *rs, const struct r_vertex *v)
    r_triangle(&aa, &q[0], &q[2], &q[3]);
 }
 
+/* ---- the vbuf batch under the polygon stipple ----
+ * [S: draw_pipe_pstipple.c:pstip_first_tri, pstip_flush] the pstipple
+ * stage binds its stipple fragment shader when the first filled triangle
+ * of a draw reaches it (with flushing suspended) and restores the user's
+ * shader only when the pipeline is flushed (llvmpipe_draw_vbo's draw_flush,
+ * at the end of every llvmpipe draw); points and lines pass it untouched.
+ * [S: draw_pipe_vbuf.c:vbuf_first_tri/line/point, vbuf_flush_vertices] the
+ * vbuf stage hands llvmpipe its queued primitives only when the primitive
+ * type changes or the pipeline is flushed, and llvmpipe sets them up with
+ * the fragment shader bound then (lp_setup_vbuf.c:lp_setup_draw_elements,
+ * lp_setup_update_state).  So within one draw the points and lines the
+ * unfilled stage makes after the first filled triangle are polygon
+ * stippled, and so is the batch of points or lines queued just before it
+ * (flushed by that triangle after the bind); earlier batches are not.
+ * (Not modelled: vbuf also flushes when its 4096-byte vertex buffer or
+ * 1020 indices are full.) */
+static void vbuf_flush(struct fgl_context *ctx)
+{
+   struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
+   struct r_state *rs = &ctx->_Raster;
+   rs->stipple_points_lines = vb->pstipple_bound;
+   for (unsigned i = 0; i < vb->count; i++) {
+      if (vb->prim == T_VBUF_POINTS)
+         r_point(rs, &vb->queue[i][0]);
+      else
+         r_line(rs, &vb->queue[i][0], &vb->queue[i][1]);
+   }
+   rs->stipple_points_lines = false;
+   vb->count = 0;
+   vb->prim = T_VBUF_NONE;
+}
+
+/* llvmpipe's point or line setup, through the vbuf batch when the polygon
+ * stipple is on */
+static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struct r_vertex *v0,
+                     const struct r_vertex *v1)
+{
+   struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
+   if (!ctx->_Raster.stipple) {
+      if (prim == T_VBUF_POINTS)
+         r_point(&ctx->_Raster, v0);
+      else
+         r_line(&ctx->_Raster, v0, v1);
+      return;
+   }
+   if (vb->prim != prim)
+      vbuf_flush(ctx);   /* vbuf_first_point / vbuf_first_line */
+   if (vb->count == vb->cap) {
+      const unsigned cap = vb->cap ? 2 * vb->cap : 64;
+      struct r_vertex (*q)[2] = realloc(vb->queue, cap * sizeof(*q));
+      if (!q) {
+         vbuf_flush(ctx);   /* out of memory: draw what is queued now */
+         vb->prim = prim;
+         ctx->_Raster.stipple_points_lines = vb->pstipple_bound;
+         if (prim == T_VBUF_POINTS)
+            r_point(&ctx->_Raster, v0);
+         else
+            r_line(&ctx->_Raster, v0, v1);
+         ctx->_Raster.stipple_points_lines = false;
+         return;
+      }
+      vb->queue = q;
+      vb->cap = cap;
+   }
+   vb->prim = prim;
+   vb->queue[vb->count][0] = *v0;
+   if (v1)
+      vb->queue[vb->count][1] = *v1;
+   vb->count++;
+}
+
+void t_vbuf_filled_tri(struct fgl_context *ctx)
+{
+   if (!ctx->_Raster.stipple)
+      return;
+   /* pstip_first_tri binds the stipple shader, then vbuf_first_tri flushes
+    * the queued points or lines */
+   ctx->_DrawVbuf.pstipple_bound = true;
+   vbuf_flush(ctx);
+}
+
+void t_vbuf_end_draw(struct fgl_context *ctx)
+{
+   /* pstip_flush: the vbuf is flushed first, then the shader restored */
+   vbuf_flush(ctx);
+   ctx->_DrawVbuf.pstipple_bound = false;
+}
+
 void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
 {
    /* draw_pipe_clip.c:clip_point */
@@ -84,10 +173,12 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
     * counter (stipple_reset_point) */
    if ((pipeline || ctx->Point.SmoothFlag) && ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
-   if (ctx->Point.SmoothFlag)
+   if (ctx->Point.SmoothFlag) {
+      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
       aapoint_point(&ctx->_Raster, &v->r);
+   }
    else
-      r_point(&ctx->_Raster, &v->r);
+      vbuf_add(ctx, T_VBUF_POINTS, &v->r, NULL);
 }
 
 void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
@@ -95,10 +186,12 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
    /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
    if (ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
-   if (ctx->Point.SmoothFlag)
+   if (ctx->Point.SmoothFlag) {
+      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
       aapoint_point(&ctx->_Raster, v);
+   }
    else
-      r_point(&ctx->_Raster, v);
+      vbuf_add(ctx, T_VBUF_POINTS, v, NULL);
 }
 
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
@@ -148,13 +241,14 @@ static void aaline_line(const struct r_state *rs, const struct r_vertex *v0,
 }
 
 /* The stage after stipple: the aaline quad or llvmpipe's line. */
-static void line_raster(const struct fgl_context *ctx, const struct r_vertex *v0,
+static void line_raster(struct fgl_context *ctx, const struct r_vertex *v0,
                         const struct r_vertex *v1)
 {
-   if (ctx->Line.SmoothFlag)
+   if (ctx->Line.SmoothFlag) {
+      vbuf_flush(ctx);   /* vbuf_first_tri: the aaline quad is triangles */
       aaline_line(&ctx->_Raster, v0, v1);
-   else
-      r_line(&ctx->_Raster, v0, v1);
+   } else
+      vbuf_add(ctx, T_VBUF_LINES, v0, v1);
 }
 
 /* draw_pipe_stipple.c:screen_interp: every output, position (window
@@ -170,7 +264,7 @@ static void screen_interp(const struct r_state *rs, struct r_vertex *dst, float 
 }
 
 /* draw_pipe_stipple.c:emit_segment */
-static void emit_segment(const struct fgl_context *ctx, const struct r_vertex *v0,
+static void emit_segment(struct fgl_context *ctx, const struct r_vertex *v0,
                          const struct r_vertex *v1, float t0, float t1)
 {
    const struct r_state *rs = &ctx->_Raster;

@@ -79,6 +79,12 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline);
 void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
             bool first);
 
+/* The vbuf batch of points and lines under the polygon stipple
+ * (t_linepoint.c): a filled triangle reaching the pstipple stage, and the
+ * end of an llvmpipe draw. */
+void t_vbuf_filled_tri(struct fgl_context *ctx);
+void t_vbuf_end_draw(struct fgl_context *ctx);
+
 /* The points and lines the unfilled stage makes of a triangle, through the
  * stages after it (stipple, aapoint/aaline) to llvmpipe; they are already
  * clipped and flat-shaded. */

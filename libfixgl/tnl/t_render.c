@@ -310,10 +310,13 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
       /* consecutive primitives of one mode are one llvmpipe draw
        * (st_draw.c:st_draw_gallium_multimode), and draw is flushed after
        * each (lp_draw_arrays.c: draw_flush): the offset stage's latch */
-      if (i == 0 || prims[i].mode != prims[i - 1].mode)
+      if (i == 0 || prims[i].mode != prims[i - 1].mode) {
+         t_vbuf_end_draw(ctx);
          ctx->_DrawOffset.latched = false;
+      }
       render_prim(&r, &prims[i], constant_interp);
    }
+   t_vbuf_end_draw(ctx);
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
