@@ -190,8 +190,25 @@ static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char 
     ++*n;
 }
 
-/* Fixed cases (from the oracle's --list), random scenes, then random lit
- * scenes; 0 on error. */
+/* count scenes of a random family ("random", "random-lit", ...) from
+ * o->index on; replay_prefix selects the family on a replay command line
+ * (the plain family is the default). */
+static void add_random(const struct options *o, struct fc_item **items, size_t *n,
+                       size_t *cap, const char *family, long count, const char *replay_prefix)
+{
+    for (long i = 0; i < count; i++) {
+        char name[96], replay[128];
+        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
+        snprintf(name, sizeof name, "%s/s%" PRIu64 "-i%" PRIu64, family, o->seed, index);
+        snprintf(replay, sizeof replay, "%s--seed %" PRIu64 " --index %" PRIu64, replay_prefix,
+                 o->seed, index);
+        if (selected(o, name, family))
+            add_item(items, n, cap, name, family, replay);
+    }
+}
+
+/* Fixed cases (from the oracle's --list), then the scenes of each random
+ * family; 0 on error. */
 static int build_items(const struct options *o, struct fc_item **out, size_t *n)
 {
     struct fc_item *items = NULL;
@@ -214,30 +231,9 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
         }
         free(list);
     }
-    for (long i = 0; i < o->random; i++) {
-        char name[96], replay[96];
-        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
-        snprintf(name, sizeof name, "random/s%" PRIu64 "-i%" PRIu64, o->seed, index);
-        snprintf(replay, sizeof replay, "--seed %" PRIu64 " --index %" PRIu64, o->seed, index);
-        if (selected(o, name, "random"))
-            add_item(&items, n, &cap, name, "random", replay);
-    }
-    for (long i = 0; i < o->random_lit; i++) {
-        char name[96], replay[128];
-        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
-        snprintf(name, sizeof name, "random-lit/s%" PRIu64 "-i%" PRIu64, o->seed, index);
-        snprintf(replay, sizeof replay, "--random-lit 1 --seed %" PRIu64 " --index %" PRIu64, o->seed, index);
-        if (selected(o, name, "random-lit"))
-            add_item(&items, n, &cap, name, "random-lit", replay);
-    }
-    for (long i = 0; i < o->random_raster; i++) {
-        char name[96], replay[128];
-        uint64_t index = (uint64_t)(o->index >= 0 ? o->index : 0) + (uint64_t)i;
-        snprintf(name, sizeof name, "random-raster/s%" PRIu64 "-i%" PRIu64, o->seed, index);
-        snprintf(replay, sizeof replay, "--random-raster 1 --seed %" PRIu64 " --index %" PRIu64, o->seed, index);
-        if (selected(o, name, "random-raster"))
-            add_item(&items, n, &cap, name, "random-raster", replay);
-    }
+    add_random(o, &items, n, &cap, "random", o->random, "");
+    add_random(o, &items, n, &cap, "random-lit", o->random_lit, "--random-lit 1 ");
+    add_random(o, &items, n, &cap, "random-raster", o->random_raster, "--random-raster 1 ");
     *out = items;
     return 1;
 }
