@@ -381,6 +381,11 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
          set_ints(val, V_INT, 1, (int)hint, 0, 0, 0);
          return true;
       }
+      int array_value;
+      if (fgl_get_array_value(ctx, pname, &array_value)) {
+         set_ints(val, V_INT, 1, array_value, 0, 0, 0);
+         return true;
+      }
       /* every capability is also a boolean state value */
       if (fgl_is_cap(ctx, pname, &val->v[0])) {
          val->type = V_BOOL;
