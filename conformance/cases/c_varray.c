@@ -682,6 +682,170 @@ static void clipped(fc_h *h)
     fc_error(h, "final");
 }
 
+/* ---- half floats and packed 2_10_10_10 types ---- */
+
+/* binary16 of a float that a half holds exactly (or nearly) */
+static GLushort to_half(float f)
+{
+    union { float f; uint32_t u; } x = { f };
+    const uint32_t sign = (x.u >> 16) & 0x8000u;
+    const int e = (int)((x.u >> 23) & 0xff) - 127 + 15;
+    if (f == 0.0f)
+        return (GLushort)sign;
+    if (e <= 0)
+        return (GLushort)(sign | ((x.u & 0x7fffffu) | 0x800000u) >> (14 - e));
+    return (GLushort)(sign | (uint32_t)e << 10 | ((x.u >> 13) & 0x3ffu));
+}
+
+static GLuint pack2101010(int r, int g, int b, int a)
+{
+    return ((GLuint)r & 0x3ffu) | ((GLuint)g & 0x3ffu) << 10 | ((GLuint)b & 0x3ffu) << 20 |
+           ((GLuint)a & 3u) << 30;
+}
+
+static void half_packed(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static GLushort hv[64][4], hc[64][4];
+    static GLuint uc[64], ic[64], in[64], iv[64];
+    static GLfloat pos[64][2];
+    for (int i = 0; i < 64; i++) {
+        pos[i][0] = 4.0f + 8.0f * (float)(i % 8);
+        pos[i][1] = 4.0f + 8.0f * (float)(i / 8);
+        hv[i][0] = to_half(pos[i][0] + 0.375f);
+        hv[i][1] = to_half(pos[i][1] - 0.125f);
+        hv[i][2] = to_half(0.5f - (float)i / 64.0f);
+        hv[i][3] = to_half(1.0f);
+        for (int k = 0; k < 4; k++)
+            hc[i][k] = to_half((float)sweep(i, k, -0.5, 1.5));
+        uc[i] = pack2101010((int)sweep(i, 0, 0, 1023), (int)sweep(i, 1, 0, 1023),
+                            (int)sweep(i, 2, 0, 1023), i & 3);
+        ic[i] = pack2101010((int)sweep(i, 0, -512, 511), (int)sweep(i, 1, -512, 511),
+                            (int)sweep(i, 2, -512, 511), (i & 3) - 2);
+        in[i] = pack2101010((int)sweep(i, 0, -512, 511), (int)sweep(i, 1, -512, 511),
+                            200 + i * 4, 1);
+        iv[i] = pack2101010((int)pos[i][0], (int)pos[i][1], i - 32, 1);
+    }
+    glPointSize(5.0f);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    /* half positions and colours */
+    glVertexPointer(4, GL_HALF_FLOAT, 0, hv);
+    glColorPointer(4, GL_HALF_FLOAT, 0, hc);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_POINTS, 0, 64);
+    fc_capture(h);
+    /* packed colours, RGBA and BGRA order */
+    glVertexPointer(2, GL_FLOAT, 0, pos);
+    const struct { GLint size; GLenum type; const GLuint *p; } t[4] = {
+        { 4, GL_UNSIGNED_INT_2_10_10_10_REV, uc }, { 4, GL_INT_2_10_10_10_REV, ic },
+        { GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, uc }, { GL_BGRA, GL_INT_2_10_10_10_REV, ic },
+    };
+    for (int k = 0; k < 4; k++) {
+        glColorPointer(t[k].size, t[k].type, 0, t[k].p);
+        fcu_clear(0, 0, 0, 0, 1);
+        glDrawArrays(GL_POINTS, 0, 64);
+        fc_capture(h);
+    }
+    /* packed positions (not normalized), lit; glNormalPointer refuses the
+     * packed types (its size 3 is not 4) and keeps the float array */
+    static GLfloat nf[64][3];
+    for (int i = 0; i < 64; i++) {
+        nf[i][0] = (float)sweep(i, 0, -1, 1);
+        nf[i][1] = (float)sweep(i, 1, -1, 1);
+        nf[i][2] = 1.0f;
+    }
+    glDisableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    lit_setup();
+    glVertexPointer(4, GL_INT_2_10_10_10_REV, 0, iv);
+    glNormalPointer(GL_FLOAT, 0, nf);
+    glNormalPointer(GL_INT_2_10_10_10_REV, 0, in);
+    fc_error(h, "packed normals");
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_POINTS, 0, 64);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
+/* glArrayElement of the types the immediate path reads its own way:
+ * half floats (TYPE_IDX), GL_BGRA colours. */
+static void array_element_quirks(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static GLfloat pos[64][2];
+    static GLushort hc[64][4];
+    static GLubyte bc[64][4];
+    for (int i = 0; i < 64; i++) {
+        pos[i][0] = 4.0f + 8.0f * (float)(i % 8);
+        pos[i][1] = 4.0f + 8.0f * (float)(i / 8);
+        for (int k = 0; k < 4; k++) {
+            hc[i][k] = to_half((float)sweep(i, k, 0.0, 1.0));
+            bc[i][k] = (GLubyte)sweep(i, k, 0, 255);
+        }
+    }
+    glPointSize(6.0f);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, pos);
+    glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bc);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 64; i++)
+        glArrayElement(i);
+    glEnd();
+    fc_capture(h);
+    glColorPointer(4, GL_HALF_FLOAT, 0, hc);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 64; i++)
+        glArrayElement(i);
+    glEnd();
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
+/* Long draws: vsplit's segments of glDrawArrays and glDrawElements, with
+ * one vertex in the middle that needs clipping (smooth quads change their
+ * diagonal in the segment that takes draw's pipeline). */
+static void long_draws(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    enum { N = 9000 };
+    static GLfloat v[N][2];
+    static GLubyte c[N][4];
+    static GLuint idx[N];
+    for (int i = 0; i < N; i++) {
+        const int q = i / 4, k = i % 4;
+        const float x = (float)(q % 30) * 2.0f + 2.0f, y = (float)((q / 30) % 30) * 2.0f + 2.0f;
+        v[i][0] = x + (k == 1 || k == 2 ? 1.8f : 0.1f);
+        v[i][1] = y + (k >= 2 ? 1.7f : 0.2f);
+        c[i][0] = (GLubyte)(i * 7);
+        c[i][1] = (GLubyte)(i * 13 + 50);
+        c[i][2] = (GLubyte)(k * 80);
+        c[i][3] = 255;
+        idx[i] = (GLuint)i;
+    }
+    v[5001][0] = -30.0f;   /* clipped: the segment 4096..8191 takes the pipeline */
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_QUADS, 0, N);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawElements(GL_QUADS, N, GL_UNSIGNED_INT, idx);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_TRIANGLE_STRIP, 2, N - 2);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawElements(GL_TRIANGLES, N, GL_UNSIGNED_INT, idx);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
 /* ---- errors and queries ---- */
 
 static void pointer_errors(fc_h *h)
@@ -866,6 +1030,9 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/current_values", 64, 64, 3, "api varray", current_values),
     FC_CASE_RGBA("varray/edge_flags", 64, 64, 1, "api varray polygon_mode", edge_flags),
     FC_CASE_RGBA("varray/clipped", 64, 64, 2, "api varray clip", clipped),
+    FC_CASE_RGBA("varray/half_packed", 64, 64, 6, "api varray lighting", half_packed),
+    FC_CASE_RGBA("varray/array_element_quirks", 64, 64, 2, "api varray", array_element_quirks),
+    FC_CASE_RGBA("varray/long_draws", 64, 64, 4, "api varray clip", long_draws),
     FC_CASE_RGBA("varray/pointer_errors", 32, 32, 0, "api varray errors query", pointer_errors),
     FC_CASE_RGBA("varray/draw_errors", 64, 64, 1, "api varray errors", draw_errors),
     FC_CASE_RGBA("varray/queries", 32, 32, 0, "api varray query", queries),
