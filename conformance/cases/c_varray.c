@@ -846,6 +846,91 @@ static void long_draws(fc_h *h)
     fc_error(h, "final");
 }
 
+/* glInterleavedArrays: every format drawn (texture coordinates are
+ * fetched by nobody yet: untextured), the arrays it enables and the
+ * strides it stores; errors. */
+static void interleaved(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    lit_setup();
+    glDisable(GL_LIGHTING);
+    static const GLenum formats[14] = {
+        GL_V2F, GL_V3F, GL_C4UB_V2F, GL_C4UB_V3F, GL_C3F_V3F, GL_N3F_V3F, GL_C4F_N3F_V3F,
+        GL_T2F_V3F, GL_T4F_V4F, GL_T2F_C4UB_V3F, GL_T2F_C3F_V3F, GL_T2F_N3F_V3F,
+        GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F,
+    };
+    /* per format: t, c (ubyte?), n, v components, as the layouts */
+    static const struct { int t, c, cub, n, v; } lay[14] = {
+        { 0, 0, 0, 0, 2 }, { 0, 0, 0, 0, 3 }, { 0, 4, 1, 0, 2 }, { 0, 4, 1, 0, 3 },
+        { 0, 3, 0, 0, 3 }, { 0, 0, 0, 3, 3 }, { 0, 4, 0, 3, 3 }, { 2, 0, 0, 0, 3 },
+        { 4, 0, 0, 0, 4 }, { 2, 4, 1, 0, 3 }, { 2, 3, 0, 0, 3 }, { 2, 0, 0, 3, 3 },
+        { 2, 4, 0, 3, 3 }, { 4, 4, 0, 3, 4 },
+    };
+    static GLfloat buf[14][4 * 20];
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(0.6f, 0.6f, 0.6f);
+    for (int k = 0; k < 14; k++) {
+        /* 4 vertices of a quad in cell k, with a padded stride of 20 floats
+         * for odd k and the default one for even k */
+        const int words = lay[k].t + (lay[k].cub ? 1 : lay[k].c) + lay[k].n + lay[k].v;
+        const int stride = k & 1 ? 20 : words;
+        static const float q[4][2] = { { 1, 1 }, { 14, 2 }, { 15, 14 }, { 2, 15 } };
+        for (int i = 0; i < 4; i++) {
+            GLfloat *w = &buf[k][i * stride];
+            int o = 0;
+            for (int j = 0; j < lay[k].t; j++)
+                w[o++] = 0.5f;
+            if (lay[k].cub) {
+                const GLubyte cb[4] = { (GLubyte)(60 * i), (GLubyte)(255 - 60 * i), (GLubyte)(k * 18), 255 };
+                memcpy(&w[o++], cb, 4);
+            } else {
+                for (int j = 0; j < lay[k].c; j++)
+                    w[o++] = (float)((i + j + k) % 4) / 3.0f;
+            }
+            for (int j = 0; j < lay[k].n; j++)
+                w[o++] = j == 2 ? 1.0f : 0.1f * (float)i;
+            w[o++] = cell_x(k % 16) + q[i][0] + 0.25f;
+            w[o++] = cell_y(k % 16) + q[i][1] + 0.5f;
+            if (lay[k].v > 2) w[o++] = 0.1f * (float)i;
+            if (lay[k].v > 3) w[o++] = 1.0f;
+        }
+        if (lay[k].n)
+            glEnable(GL_LIGHTING);
+        glInterleavedArrays(formats[k], k & 1 ? 20 * (GLsizei)sizeof(GLfloat) : 0, buf[k]);
+        glDrawArrays(GL_QUADS, 0, 4);
+        glDisable(GL_LIGHTING);
+        if (k == 13 || k == 4 || k == 9) {
+            char label[48];
+            static const GLenum caps[6] = { GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY,
+                                            GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY,
+                                            GL_EDGE_FLAG_ARRAY };
+            for (int i = 0; i < 6; i++) {
+                snprintf(label, sizeof(label), "format %d enabled %d", k, i);
+                fc_is_enabled(h, label, caps[i]);
+            }
+            snprintf(label, sizeof(label), "format %d strides", k);
+            fc_get_integer(h, label, GL_VERTEX_ARRAY_STRIDE, 1);
+            fc_get_integer(h, label, GL_COLOR_ARRAY_STRIDE, 1);
+            fc_get_integer(h, label, GL_TEXTURE_COORD_ARRAY_STRIDE, 1);
+            fc_get_integer(h, label, GL_TEXTURE_COORD_ARRAY_SIZE, 1);
+            fc_get_integer(h, label, GL_COLOR_ARRAY_TYPE, 1);
+            void *p = NULL;
+            glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+            fc_value(h, label, (long long)((const char *)p - (const char *)buf[k]));
+        }
+    }
+    fc_capture(h);
+    glInterleavedArrays(GL_V2F, -1, buf); fc_error(h, "negative stride");
+    glInterleavedArrays(GL_RGBA, 0, buf); fc_error(h, "bad format");
+    glInterleavedArrays(GL_RGBA, -1, buf); fc_error(h, "bad format and stride");
+    glBegin(GL_POINTS);
+    glInterleavedArrays(GL_V2F, 0, buf);
+    glEnd();
+    fc_error(h, "inside glBegin/glEnd");
+    fc_get_integer(h, "vertex size unchanged", GL_VERTEX_ARRAY_SIZE, 1);
+    fc_error(h, "final");
+}
+
 /* ---- errors and queries ---- */
 
 static void pointer_errors(fc_h *h)
@@ -1033,6 +1118,7 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/half_packed", 64, 64, 6, "api varray lighting", half_packed),
     FC_CASE_RGBA("varray/array_element_quirks", 64, 64, 2, "api varray", array_element_quirks),
     FC_CASE_RGBA("varray/long_draws", 64, 64, 4, "api varray clip", long_draws),
+    FC_CASE_RGBA("varray/interleaved", 64, 64, 1, "api varray errors query", interleaved),
     FC_CASE_RGBA("varray/pointer_errors", 32, 32, 0, "api varray errors query", pointer_errors),
     FC_CASE_RGBA("varray/draw_errors", 64, 64, 1, "api varray errors", draw_errors),
     FC_CASE_RGBA("varray/queries", 32, 32, 0, "api varray query", queries),

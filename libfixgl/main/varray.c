@@ -1,6 +1,7 @@
 /*
  * Client-side vertex arrays (GL_CLIENT_VERTEX_ARRAY_BIT): gl*Pointer,
- * glEnable/DisableClientState, glGetPointerv, glArrayElement, glDrawArrays,
+ * glInterleavedArrays, glEnable/DisableClientState, glGetPointerv,
+ * glArrayElement, glDrawArrays,
  * glDrawElements, glDrawRangeElements, with Mesa 22.3's validation
  * [S: main/varray.c, main/enable.c:client_state, main/getstring.c,
  * main/draw.c].  Fetching and drawing live in tnl/t_array.c.
@@ -82,6 +83,20 @@ void fgl_init_array(struct fgl_context *ctx)
    }
 }
 
+/* update_array: the arrays are read at draw time, nothing stored needs a
+ * flush */
+static void update_array(struct fgl_context *ctx, enum fgl_array_index a, GLint size,
+                         GLenum format, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   struct fgl_client_array *arr = &ctx->Array.Array[a];
+   arr->Size = size;
+   arr->Format = format;
+   arr->Type = type;
+   arr->Stride = stride;
+   arr->EffStride = stride ? stride : element_size(type, size);
+   arr->Ptr = ptr;
+}
+
 /* validate_array_and_format then update_array [S: main/varray.c].  Note
  * that validate_array's errors (a negative stride) do not stop the update:
  * only validate_array_format's do. */
@@ -119,14 +134,7 @@ static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   /* the arrays are read at draw time: nothing stored needs a flush */
-   struct fgl_client_array *arr = &ctx->Array.Array[a];
-   arr->Size = size;
-   arr->Format = format;
-   arr->Type = type;
-   arr->Stride = stride;
-   arr->EffStride = stride ? stride : element_size(type, size);
-   arr->Ptr = ptr;
+   update_array(ctx, a, size, format, type, stride, ptr);
 }
 
 void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
@@ -165,6 +173,77 @@ void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const
 void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
 {
    pointer(FGL_ARRAY_EDGEFLAG, B_UBYTE, 1, 1, false, 1, GL_UNSIGNED_BYTE, stride, ptr);
+}
+
+/* glInterleavedArrays [S: main/varray.c:_mesa_InterleavedArrays,
+ * _mesa_get_interleaved_layout]: the arrays of the format enabled with
+ * their pointers (a stride of 0 becomes the format's stride, which the
+ * stride queries then return), the others disabled. */
+void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (stride < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const int f = (int)sizeof(GLfloat), c = 4;
+   /* t, c, v components; colour type; colour, normal, vertex offsets;
+    * default stride */
+   int tc = 0, cc = 0, vc = 0, coff = 0, noff = 0, voff = 0, def = 0;
+   bool nflag = false;
+   GLenum ctype = GL_FLOAT;
+   switch (format) {
+   case GL_V2F: vc = 2; def = 2 * f; break;
+   case GL_V3F: vc = 3; def = 3 * f; break;
+   case GL_C4UB_V2F: cc = 4; vc = 2; ctype = GL_UNSIGNED_BYTE; voff = c; def = c + 2 * f; break;
+   case GL_C4UB_V3F: cc = 4; vc = 3; ctype = GL_UNSIGNED_BYTE; voff = c; def = c + 3 * f; break;
+   case GL_C3F_V3F: cc = 3; vc = 3; voff = 3 * f; def = 6 * f; break;
+   case GL_N3F_V3F: nflag = true; vc = 3; voff = 3 * f; def = 6 * f; break;
+   case GL_C4F_N3F_V3F:
+      cc = 4; nflag = true; vc = 3; noff = 4 * f; voff = 7 * f; def = 10 * f;
+      break;
+   case GL_T2F_V3F: tc = 2; vc = 3; voff = 2 * f; def = 5 * f; break;
+   case GL_T4F_V4F: tc = 4; vc = 4; voff = 4 * f; def = 8 * f; break;
+   case GL_T2F_C4UB_V3F:
+      tc = 2; cc = 4; vc = 3; ctype = GL_UNSIGNED_BYTE; coff = 2 * f; voff = c + 2 * f;
+      def = c + 5 * f;
+      break;
+   case GL_T2F_C3F_V3F: tc = 2; cc = 3; vc = 3; coff = 2 * f; voff = 5 * f; def = 8 * f; break;
+   case GL_T2F_N3F_V3F:
+      tc = 2; nflag = true; vc = 3; noff = 2 * f; voff = 5 * f; def = 8 * f;
+      break;
+   case GL_T2F_C4F_N3F_V3F:
+      tc = 2; cc = 4; nflag = true; vc = 3; coff = 2 * f; noff = 6 * f; voff = 9 * f;
+      def = 12 * f;
+      break;
+   case GL_T4F_C4F_N3F_V4F:
+      tc = 4; cc = 4; nflag = true; vc = 4; coff = 4 * f; noff = 8 * f; voff = 11 * f;
+      def = 15 * f;
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (stride == 0)
+      stride = def;
+   const GLubyte *p = pointer;
+   struct fgl_client_array *A = ctx->Array.Array;
+   A[FGL_ARRAY_EDGEFLAG].Enabled = false;
+   A[FGL_ARRAY_INDEX].Enabled = false;
+   A[FGL_ARRAY_TEXCOORD].Enabled = tc != 0;
+   if (tc)
+      update_array(ctx, FGL_ARRAY_TEXCOORD, tc, GL_RGBA, GL_FLOAT, stride, p);
+   A[FGL_ARRAY_COLOR].Enabled = cc != 0;
+   if (cc)
+      update_array(ctx, FGL_ARRAY_COLOR, cc, GL_RGBA, ctype, stride, p + coff);
+   A[FGL_ARRAY_NORMAL].Enabled = nflag;
+   if (nflag)
+      update_array(ctx, FGL_ARRAY_NORMAL, 3, GL_RGBA, GL_FLOAT, stride, p + noff);
+   A[FGL_ARRAY_VERTEX].Enabled = true;
+   update_array(ctx, FGL_ARRAY_VERTEX, vc, GL_RGBA, GL_FLOAT, stride, p + voff);
 }
 
 struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
