@@ -330,6 +330,14 @@ struct fgl_array_attrib {
    struct fgl_client_array Array[FGL_ARRAY_COUNT];
 };
 
+/* glPushClientAttrib (main/attrib.c) [S: main/attrib.c, gl_client_attrib_node] */
+#define FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH 16
+struct fgl_client_attrib_node {
+   GLbitfield Mask;
+   struct fgl_pixelstore Pack, Unpack;
+   struct fgl_array_attrib Array;
+};
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -349,6 +357,8 @@ struct fgl_context {
                                      * bit 31 = leftmost column */
    struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
    struct fgl_array_attrib Array;       /* GL_CLIENT_VERTEX_ARRAY_BIT */
+   struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
+   unsigned ClientAttribStackDepth;
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;

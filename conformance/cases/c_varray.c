@@ -931,6 +931,75 @@ static void interleaved(fc_h *h)
     fc_error(h, "final");
 }
 
+/* glPushClientAttrib/glPopClientAttrib of the vertex arrays and the pixel
+ * store: restored arrays draw, masks apart, overflow and underflow. */
+static void client_attrib(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static const GLfloat v[4][2] = { { 2, 2 }, { 60, 4 }, { 62, 60 }, { 3, 58 } };
+    static const GLubyte c[4][4] = { { 255, 0, 0, 255 }, { 0, 255, 0, 255 },
+                                     { 0, 0, 255, 255 }, { 255, 255, 0, 255 } };
+    static const GLshort sv[4][3] = { { 10, 10, 0 }, { 50, 12, 0 }, { 30, 50, 0 }, { 0, 0, 0 } };
+    fc_get_integer(h, "max depth", GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 7);
+    glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
+    fc_get_integer(h, "depth 1", GL_CLIENT_ATTRIB_STACK_DEPTH, 1);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_SHORT, 0, sv);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glEnableClientState(GL_EDGE_FLAG_ARRAY);
+    glPopClientAttrib();
+    fc_get_integer(h, "unpack alignment 8", GL_UNPACK_ALIGNMENT, 1);
+    fc_is_enabled(h, "edge flag array kept", GL_EDGE_FLAG_ARRAY);
+    glDisableClientState(GL_EDGE_FLAG_ARRAY);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(0.5f, 0.5f, 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_capture(h);
+    glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+    glPopClientAttrib();
+    glPopClientAttrib();
+    fc_get_integer(h, "depth 0", GL_CLIENT_ATTRIB_STACK_DEPTH, 1);
+    fc_get_integer(h, "unpack alignment 2", GL_UNPACK_ALIGNMENT, 1);
+    fc_get_integer(h, "pack row length 7", GL_PACK_ROW_LENGTH, 1);
+    fc_is_enabled(h, "colour array back", GL_COLOR_ARRAY);
+    fc_get_integer(h, "vertex size 2", GL_VERTEX_ARRAY_SIZE, 1);
+    void *p = NULL;
+    glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+    fc_value(h, "vertex pointer back", p == (const void *)v);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_QUADS, 0, 4);
+    fc_capture(h);
+    glPopClientAttrib();
+    fc_error(h, "underflow");
+    for (int i = 0; i < 17; i++)
+        glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+    fc_error(h, "overflow");
+    fc_get_integer(h, "depth 16", GL_CLIENT_ATTRIB_STACK_DEPTH, 1);
+    glBegin(GL_POINTS);
+    glPopClientAttrib();
+    glEnd();
+    fc_error(h, "pop inside glBegin/glEnd");
+    glBegin(GL_POINTS);
+    glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+    glEnd();
+    fc_error(h, "push inside glBegin/glEnd");
+    fc_get_integer(h, "still 16", GL_CLIENT_ATTRIB_STACK_DEPTH, 1);
+    for (int i = 0; i < 16; i++)
+        glPopClientAttrib();
+    glPushClientAttrib(0x10);   /* no client bit */
+    glPopClientAttrib();
+    fc_error(h, "final");
+}
+
 /* ---- errors and queries ---- */
 
 static void pointer_errors(fc_h *h)
@@ -1119,6 +1188,7 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/array_element_quirks", 64, 64, 2, "api varray", array_element_quirks),
     FC_CASE_RGBA("varray/long_draws", 64, 64, 4, "api varray clip", long_draws),
     FC_CASE_RGBA("varray/interleaved", 64, 64, 1, "api varray errors query", interleaved),
+    FC_CASE_RGBA("varray/client_attrib", 64, 64, 2, "api varray errors query", client_attrib),
     FC_CASE_RGBA("varray/pointer_errors", 32, 32, 0, "api varray errors query", pointer_errors),
     FC_CASE_RGBA("varray/draw_errors", 64, 64, 1, "api varray errors", draw_errors),
     FC_CASE_RGBA("varray/queries", 32, 32, 0, "api varray query", queries),
