@@ -1000,6 +1000,28 @@ static void client_attrib(fc_h *h)
     fc_error(h, "final");
 }
 
+/* An enabled colour or normal array whose pointer was never set (NULL):
+ * the oracle reads no buffer (zeros), fixgl must not crash. */
+static void null_pointer(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static const GLfloat v[3][2] = { { 2, 2 }, { 60, 10 }, { 20, 60 } };
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColor3f(0.5f, 0.75f, 1.0f);
+    glEnableClientState(GL_COLOR_ARRAY);
+    fcu_clear(0.2f, 0.2f, 0.2f, 0.2f, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_capture(h);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    lit_setup();
+    fcu_clear(0.2f, 0.2f, 0.2f, 0.2f, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
 /* ---- errors and queries ---- */
 
 static void pointer_errors(fc_h *h)
@@ -1189,6 +1211,7 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/long_draws", 64, 64, 4, "api varray clip", long_draws),
     FC_CASE_RGBA("varray/interleaved", 64, 64, 1, "api varray errors query", interleaved),
     FC_CASE_RGBA("varray/client_attrib", 64, 64, 2, "api varray errors query", client_attrib),
+    FC_CASE_RGBA("varray/null_pointer", 64, 64, 2, "api varray", null_pointer),
     FC_CASE_RGBA("varray/pointer_errors", 32, 32, 0, "api varray errors query", pointer_errors),
     FC_CASE_RGBA("varray/draw_errors", 64, 64, 1, "api varray errors", draw_errors),
     FC_CASE_RGBA("varray/queries", 32, 32, 0, "api varray query", queries),

@@ -117,8 +117,18 @@ static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
 
 static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt, float out[4])
 {
-   const GLubyte *p = (const GLubyte *)a->Ptr + (size_t)elt * (size_t)a->EffStride;
    out[0] = 0.0f, out[1] = 0.0f, out[2] = 0.0f, out[3] = 1.0f;
+   /* an enabled array without a pointer: llvmpipe maps no buffer for it
+    * (lp_draw_arrays.c: a NULL user buffer is skipped) and draw's fetch
+    * of an empty buffer gives zeros in the format's channels
+    * (draw_llvm.c:fetch_vector, out-of-bound elements): a default 4-component
+    * colour array is (0, 0, 0, 0) */
+   if (!a->Ptr) {
+      if (a->Size == 4)
+         out[3] = 0.0f;
+      return;
+   }
+   const GLubyte *p = (const GLubyte *)a->Ptr + (size_t)elt * (size_t)a->EffStride;
    for (int c = 0; c < a->Size; c++)
       out[c] = fetch_comp(p, a->Type, normalized, c);
    if (a->Format == GL_BGRA) {
