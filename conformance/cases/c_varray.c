@@ -290,11 +290,28 @@ static void lit_color_material(fc_h *h)
     fc_capture(h);
     fc_get_float(h, "current colour after", GL_CURRENT_COLOR, 4);
     fc_get_float(h, "current normal after", GL_CURRENT_NORMAL, 3);
+    /* the tracked materials follow the current colour, not the array */
+    GLfloat mat[2][4];
+    glGetMaterialfv(GL_FRONT, GL_DIFFUSE, mat[0]);
+    glGetMaterialfv(GL_BACK, GL_AMBIENT, mat[1]);
+    fc_blob(h, "materials after", mat, sizeof mat);
     /* without the colour array: the current colour as the material */
     glDisableClientState(GL_COLOR_ARRAY);
     fcu_clear(0, 0, 0, 0, 1);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 16);
     fc_capture(h);
+    /* a pending glColor (not yet flushed) becomes current and tracked by
+     * the draw's flush; the array's colours do not */
+    glBegin(GL_POINTS);
+    glColor3f(0.9f, 0.1f, 0.4f);
+    glEnd();
+    glColor3f(0.3f, 0.3f, 0.8f);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glDrawArrays(GL_POINTS, 0, 1);
+    glGetMaterialfv(GL_FRONT, GL_DIFFUSE, mat[0]);
+    glGetMaterialfv(GL_BACK, GL_AMBIENT, mat[1]);
+    fc_blob(h, "materials after a pending colour", mat, sizeof mat);
+    fc_get_float(h, "current colour", GL_CURRENT_COLOR, 4);
     /* flat */
     glShadeModel(GL_FLAT);
     glEnableClientState(GL_COLOR_ARRAY);
