@@ -38,6 +38,7 @@ struct fgl_context *fgl_context_create(void)
    ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
    ctx->ErrorValue = GL_NO_ERROR;
    fgl_init_current(ctx);
+   fgl_init_array(ctx);
    fgl_init_color(ctx);
    fgl_init_depth(ctx);
    fgl_init_fog(ctx);

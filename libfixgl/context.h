@@ -320,6 +320,40 @@ struct fgl_draw_offset_latch {
    float units, scale;
 };
 
+/* One client-side vertex array (GL_CLIENT_VERTEX_ARRAY_BIT, main/varray.c):
+ * Mesa's gl_array_attributes with its buffer binding. */
+struct fgl_client_array {
+   bool Enabled;
+   GLint Size;             /* components (4 for GL_BGRA) */
+   GLenum Format;          /* GL_RGBA, or GL_BGRA for a colour array */
+   GLenum Type;
+   GLsizei Stride;         /* as given: the GL_*_ARRAY_STRIDE query */
+   GLsizei EffStride;      /* stride, or the element size for 0 */
+   const GLvoid *Ptr;
+};
+
+enum fgl_array_index {
+   FGL_ARRAY_VERTEX,
+   FGL_ARRAY_NORMAL,
+   FGL_ARRAY_COLOR,
+   FGL_ARRAY_INDEX,        /* state only: colour index mode does not draw */
+   FGL_ARRAY_TEXCOORD,     /* state only until textures land */
+   FGL_ARRAY_EDGEFLAG,
+   FGL_ARRAY_COUNT,
+};
+
+struct fgl_array_attrib {
+   struct fgl_client_array Array[FGL_ARRAY_COUNT];
+};
+
+/* glPushClientAttrib (main/attrib.c) [S: main/attrib.c, gl_client_attrib_node] */
+#define FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH 16
+struct fgl_client_attrib_node {
+   GLbitfield Mask;
+   struct fgl_pixelstore Pack, Unpack;
+   struct fgl_array_attrib Array;
+};
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -338,6 +372,9 @@ struct fgl_context {
    uint32_t PolygonStipple[32];     /* GL_POLYGON_STIPPLE_BIT: row 0 = bottom,
                                      * bit 31 = leftmost column */
    struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
+   struct fgl_array_attrib Array;       /* GL_CLIENT_VERTEX_ARRAY_BIT */
+   struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
+   unsigned ClientAttribStackDepth;
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;

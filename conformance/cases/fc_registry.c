@@ -13,6 +13,7 @@ static const fc_case *const groups[] = {
     fc_cases_polygon,
     fc_cases_points_lines,
     fc_cases_polygon_mode,
+    fc_cases_varray,
 };
 
 size_t fc_case_count(void)

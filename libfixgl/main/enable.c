@@ -129,6 +129,13 @@ static void set_enable(GLenum cap, bool state)
          ctx->Transform.ClipPlanesEnabled &= ~bit;
       return;
    }
+   /* client-side arrays [S: main/enable.c:_mesa_set_enable -> client_state]:
+    * read at draw time, no flush */
+   struct fgl_client_array *arr = fgl_client_array(ctx, cap);
+   if (arr) {
+      arr->Enabled = state;
+      return;
+   }
    unsigned dirty = 0;
    bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
@@ -165,6 +172,9 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    unsigned dirty, bit;
    if (clip_plane_cap(cap, &bit))
       return (ctx->Transform.ClipPlanesEnabled & bit) ? GL_TRUE : GL_FALSE;
+   const struct fgl_client_array *arr = fgl_client_array(ctx, cap);
+   if (arr)
+      return arr->Enabled ? GL_TRUE : GL_FALSE;
    const bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -178,6 +188,11 @@ bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
    unsigned dirty, bit;
    if (clip_plane_cap(pname, &bit)) {
       *value = (ctx->Transform.ClipPlanesEnabled & bit) ? 1.0 : 0.0;
+      return true;
+   }
+   const struct fgl_client_array *arr = fgl_client_array(ctx, pname);
+   if (arr) {
+      *value = arr->Enabled ? 1.0 : 0.0;
       return true;
    }
    const bool *flag = cap_flag(ctx, pname, &dirty);

@@ -269,6 +269,12 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_MAX_CLIP_PLANES:
       set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
       return true;
+   case GL_CLIENT_ATTRIB_STACK_DEPTH:
+      set_ints(val, V_INT, 1, (int)ctx->ClientAttribStackDepth, 0, 0, 0);
+      return true;
+   case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
+      set_ints(val, V_INT, 1, FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH, 0, 0, 0);
+      return true;
    case GL_MAX_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, FGL_MAX_MODELVIEW_STACK_DEPTH, 0, 0, 0);
       return true;
@@ -379,6 +385,11 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       GLenum hint;
       if (fgl_get_hint(ctx, pname, &hint)) {
          set_ints(val, V_INT, 1, (int)hint, 0, 0, 0);
+         return true;
+      }
+      int array_value;
+      if (fgl_get_array_value(ctx, pname, &array_value)) {
+         set_ints(val, V_INT, 1, array_value, 0, 0, 0);
          return true;
       }
       /* every capability is also a boolean state value */

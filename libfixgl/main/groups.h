@@ -11,6 +11,13 @@
 bool fgl_init_matrix(struct fgl_context *ctx);
 void fgl_free_matrix(struct fgl_context *ctx);
 
+/* main/varray.c (GL_CLIENT_VERTEX_ARRAY_BIT) */
+void fgl_init_array(struct fgl_context *ctx);
+/* the array behind a GL_*_ARRAY client-state enum, or NULL */
+struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap);
+/* glGet of the GL_*_ARRAY_{SIZE,TYPE,STRIDE} and GL_*_ARRAY values */
+bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value);
+
 /* main/begin_end.c (GL_CURRENT_BIT) */
 void fgl_init_current(struct fgl_context *ctx);
 

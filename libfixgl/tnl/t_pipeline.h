@@ -96,4 +96,13 @@ void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);
 
+/* t_array.c: glDrawArrays (indices == NULL: vertices first..first+count-1)
+ * and glDrawElements (count indices of index_type) of the enabled client
+ * arrays, validated by the caller. */
+void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
+                   GLenum index_type, const GLvoid *indices);
+/* glArrayElement: the enabled arrays' element elt through the immediate-mode
+ * attribute calls. */
+void t_array_element(struct fgl_context *ctx, GLint elt);
+
 #endif

@@ -138,13 +138,16 @@ static void render_fan(const struct render *r, unsigned s, unsigned n, bool poly
 }
 
 static void render_quads(const struct render *r, unsigned start, unsigned count,
-                         bool constant_interp)
+                         bool constant_interp, bool indexed)
 {
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
       const bool pipeline = segment_pipeline(r, start + seg, n);
-      const bool split13 = constant_interp || pipeline;
+      /* llvmpipe's lp_setup_draw_elements always emits (i-3,i-2,i) +
+       * (i-2,i-1,i) (lp_setup_vbuf.c), and draw emits an indexed draw's
+       * vertices through it (draw_pt_emit.c) */
+      const bool split13 = constant_interp || pipeline || indexed;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
          /* [S: draw_decompose_tmp.h PIPE_PRIM_QUADS, last vertex
           * provoking] edges 0->1, 3->0, then 1->2, 2->3 */
@@ -200,7 +203,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       render_fan(r, s, n, p->mode == GL_POLYGON);
       break;
    case GL_QUADS:
-      render_quads(r, s, n, constant_interp);
+      render_quads(r, s, n, constant_interp, p->indexed);
       break;
    case GL_QUAD_STRIP:
       render_quad_strip(r, s, n);

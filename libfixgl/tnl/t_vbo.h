@@ -67,6 +67,7 @@ struct fgl_vbo_prim {
    GLenum mode;
    unsigned start, count;
    bool begin, end;          /* the prim starts/ends a glBegin/glEnd pair */
+   bool indexed;             /* a glDrawElements draw (t_array.c) */
 };
 
 struct fgl_vbo {

@@ -1,0 +1,432 @@
+/*
+ * Client-side vertex arrays (GL_CLIENT_VERTEX_ARRAY_BIT): gl*Pointer,
+ * glInterleavedArrays, glEnable/DisableClientState, glGetPointerv,
+ * glArrayElement, glDrawArrays,
+ * glDrawElements, glDrawRangeElements, with Mesa 22.3's validation
+ * [S: main/varray.c, main/enable.c:client_state, main/getstring.c,
+ * main/draw.c].  Fetching and drawing live in tnl/t_array.c.
+ *
+ * Between glBegin and glEnd only glArrayElement is allowed: the oracle
+ * dispatches every other entry point here through the BeginEnd table's
+ * generic_nop, GL_INVALID_OPERATION without any effect
+ * [S: main/context.c:generic_nop, vbo/vbo_exec_api.c:vbo_exec_Begin].
+ *
+ * glTexCoordPointer and glIndexPointer keep their state, errors and queries
+ * only: texturing comes later and colour index mode does not draw.
+ */
+#include <stddef.h>
+
+#include "main/groups.h"
+#include "tnl/t_pipeline.h"
+
+/* Mesa's type bits [S: main/varray.c:type_to_bit] for the legal types of
+ * each array on the desktop compatibility profile */
+#define B_BYTE    (1u << 0)
+#define B_UBYTE   (1u << 1)
+#define B_SHORT   (1u << 2)
+#define B_USHORT  (1u << 3)
+#define B_INT     (1u << 4)
+#define B_UINT    (1u << 5)
+#define B_HALF    (1u << 6)
+#define B_FLOAT   (1u << 7)
+#define B_DOUBLE  (1u << 8)
+#define B_I2101010  (1u << 9)
+#define B_UI2101010 (1u << 10)
+
+static unsigned type_bit(GLenum type)
+{
+   switch (type) {
+   case GL_BYTE: return B_BYTE;
+   case GL_UNSIGNED_BYTE: return B_UBYTE;
+   case GL_SHORT: return B_SHORT;
+   case GL_UNSIGNED_SHORT: return B_USHORT;
+   case GL_INT: return B_INT;
+   case GL_UNSIGNED_INT: return B_UINT;
+   case GL_HALF_FLOAT: return B_HALF;
+   case GL_FLOAT: return B_FLOAT;
+   case GL_DOUBLE: return B_DOUBLE;
+   case GL_INT_2_10_10_10_REV: return B_I2101010;
+   case GL_UNSIGNED_INT_2_10_10_10_REV: return B_UI2101010;
+   default: return 0;
+   }
+}
+
+/* _mesa_bytes_per_vertex_attrib */
+static GLsizei element_size(GLenum type, GLint size)
+{
+   switch (type) {
+   case GL_BYTE: case GL_UNSIGNED_BYTE: return size;
+   case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_HALF_FLOAT: return 2 * size;
+   case GL_DOUBLE: return 8 * size;
+   case GL_INT_2_10_10_10_REV: case GL_UNSIGNED_INT_2_10_10_10_REV: return 4;
+   default: return 4 * size;
+   }
+}
+
+void fgl_init_array(struct fgl_context *ctx)
+{
+   /* [S: main/arrayobj.c:init_array] */
+   static const struct { GLint size; GLenum type; } init[FGL_ARRAY_COUNT] = {
+      [FGL_ARRAY_VERTEX] = { 4, GL_FLOAT },
+      [FGL_ARRAY_NORMAL] = { 3, GL_FLOAT },
+      [FGL_ARRAY_COLOR] = { 4, GL_FLOAT },
+      [FGL_ARRAY_INDEX] = { 1, GL_FLOAT },
+      [FGL_ARRAY_TEXCOORD] = { 4, GL_FLOAT },
+      [FGL_ARRAY_EDGEFLAG] = { 1, GL_UNSIGNED_BYTE },
+   };
+   for (int i = 0; i < FGL_ARRAY_COUNT; i++) {
+      ctx->Array.Array[i] = (struct fgl_client_array){
+         .Enabled = false, .Size = init[i].size, .Format = GL_RGBA,
+         .Type = init[i].type, .Stride = 0,
+         .EffStride = element_size(init[i].type, init[i].size), .Ptr = NULL,
+      };
+   }
+}
+
+/* update_array: the arrays are read at draw time, nothing stored needs a
+ * flush */
+static void update_array(struct fgl_context *ctx, enum fgl_array_index a, GLint size,
+                         GLenum format, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   struct fgl_client_array *arr = &ctx->Array.Array[a];
+   arr->Size = size;
+   arr->Format = format;
+   arr->Type = type;
+   arr->Stride = stride;
+   arr->EffStride = stride ? stride : element_size(type, size);
+   arr->Ptr = ptr;
+}
+
+/* validate_array_and_format then update_array [S: main/varray.c].  Note
+ * that validate_array's errors (a negative stride) do not stop the update:
+ * only validate_array_format's do. */
+static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
+                    GLint size_max, bool bgra_ok, GLint size, GLenum type,
+                    GLsizei stride, const GLvoid *ptr)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   GLenum format = GL_RGBA;
+   if (bgra_ok && size == GL_BGRA) {   /* get_array_format */
+      format = GL_BGRA;
+      size = 4;
+   }
+   if (stride < 0)
+      fgl_error(ctx, GL_INVALID_VALUE);
+   if (!(type_bit(type) & legal)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (format == GL_BGRA) {
+      if (type != GL_UNSIGNED_INT_2_10_10_10_REV && type != GL_INT_2_10_10_10_REV &&
+          type != GL_UNSIGNED_BYTE) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+   } else if (size < size_min || size > size_max) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if ((type == GL_UNSIGNED_INT_2_10_10_10_REV || type == GL_INT_2_10_10_10_REV) &&
+       size != 4) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   update_array(ctx, a, size, format, type, stride, ptr);
+}
+
+void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_VERTEX, B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
+           B_UI2101010 | B_I2101010, 2, 4, false, size, type, stride, ptr);
+}
+
+void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_NORMAL, B_BYTE | B_SHORT | B_INT | B_HALF | B_FLOAT | B_DOUBLE |
+           B_UI2101010 | B_I2101010, 3, 3, false, 3, type, stride, ptr);
+}
+
+void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_COLOR, B_BYTE | B_UBYTE | B_SHORT | B_USHORT | B_INT | B_UINT |
+           B_HALF | B_FLOAT | B_DOUBLE | B_UI2101010 | B_I2101010, 3, 4, true,
+           size, type, stride, ptr);
+}
+
+/* state only: colour index arrays never draw in RGBA mode */
+void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_INDEX, B_UBYTE | B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 1, 1, false,
+           1, type, stride, ptr);
+}
+
+/* state only until textures land */
+void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_TEXCOORD, B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
+           B_UI2101010 | B_I2101010, 1, 4, false, size, type, stride, ptr);
+}
+
+void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_EDGEFLAG, B_UBYTE, 1, 1, false, 1, GL_UNSIGNED_BYTE, stride, ptr);
+}
+
+/* glInterleavedArrays [S: main/varray.c:_mesa_InterleavedArrays,
+ * _mesa_get_interleaved_layout]: the arrays of the format enabled with
+ * their pointers (a stride of 0 becomes the format's stride, which the
+ * stride queries then return), the others disabled. */
+void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (stride < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const int f = (int)sizeof(GLfloat), c = 4;
+   /* t, c, v components; colour type; colour, normal, vertex offsets;
+    * default stride */
+   int tc = 0, cc = 0, vc = 0, coff = 0, noff = 0, voff = 0, def = 0;
+   bool nflag = false;
+   GLenum ctype = GL_FLOAT;
+   switch (format) {
+   case GL_V2F: vc = 2; def = 2 * f; break;
+   case GL_V3F: vc = 3; def = 3 * f; break;
+   case GL_C4UB_V2F: cc = 4; vc = 2; ctype = GL_UNSIGNED_BYTE; voff = c; def = c + 2 * f; break;
+   case GL_C4UB_V3F: cc = 4; vc = 3; ctype = GL_UNSIGNED_BYTE; voff = c; def = c + 3 * f; break;
+   case GL_C3F_V3F: cc = 3; vc = 3; voff = 3 * f; def = 6 * f; break;
+   case GL_N3F_V3F: nflag = true; vc = 3; voff = 3 * f; def = 6 * f; break;
+   case GL_C4F_N3F_V3F:
+      cc = 4; nflag = true; vc = 3; noff = 4 * f; voff = 7 * f; def = 10 * f;
+      break;
+   case GL_T2F_V3F: tc = 2; vc = 3; voff = 2 * f; def = 5 * f; break;
+   case GL_T4F_V4F: tc = 4; vc = 4; voff = 4 * f; def = 8 * f; break;
+   case GL_T2F_C4UB_V3F:
+      tc = 2; cc = 4; vc = 3; ctype = GL_UNSIGNED_BYTE; coff = 2 * f; voff = c + 2 * f;
+      def = c + 5 * f;
+      break;
+   case GL_T2F_C3F_V3F: tc = 2; cc = 3; vc = 3; coff = 2 * f; voff = 5 * f; def = 8 * f; break;
+   case GL_T2F_N3F_V3F:
+      tc = 2; nflag = true; vc = 3; noff = 2 * f; voff = 5 * f; def = 8 * f;
+      break;
+   case GL_T2F_C4F_N3F_V3F:
+      tc = 2; cc = 4; nflag = true; vc = 3; coff = 2 * f; noff = 6 * f; voff = 9 * f;
+      def = 12 * f;
+      break;
+   case GL_T4F_C4F_N3F_V4F:
+      tc = 4; cc = 4; nflag = true; vc = 4; coff = 4 * f; noff = 8 * f; voff = 11 * f;
+      def = 15 * f;
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (stride == 0)
+      stride = def;
+   const GLubyte *p = pointer;
+   struct fgl_client_array *A = ctx->Array.Array;
+   A[FGL_ARRAY_EDGEFLAG].Enabled = false;
+   A[FGL_ARRAY_INDEX].Enabled = false;
+   A[FGL_ARRAY_TEXCOORD].Enabled = tc != 0;
+   if (tc)
+      update_array(ctx, FGL_ARRAY_TEXCOORD, tc, GL_RGBA, GL_FLOAT, stride, p);
+   A[FGL_ARRAY_COLOR].Enabled = cc != 0;
+   if (cc)
+      update_array(ctx, FGL_ARRAY_COLOR, cc, GL_RGBA, ctype, stride, p + coff);
+   A[FGL_ARRAY_NORMAL].Enabled = nflag;
+   if (nflag)
+      update_array(ctx, FGL_ARRAY_NORMAL, 3, GL_RGBA, GL_FLOAT, stride, p + noff);
+   A[FGL_ARRAY_VERTEX].Enabled = true;
+   update_array(ctx, FGL_ARRAY_VERTEX, vc, GL_RGBA, GL_FLOAT, stride, p + voff);
+}
+
+struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
+{
+   switch (cap) {
+   case GL_VERTEX_ARRAY: return &ctx->Array.Array[FGL_ARRAY_VERTEX];
+   case GL_NORMAL_ARRAY: return &ctx->Array.Array[FGL_ARRAY_NORMAL];
+   case GL_COLOR_ARRAY: return &ctx->Array.Array[FGL_ARRAY_COLOR];
+   case GL_INDEX_ARRAY: return &ctx->Array.Array[FGL_ARRAY_INDEX];
+   case GL_TEXTURE_COORD_ARRAY: return &ctx->Array.Array[FGL_ARRAY_TEXCOORD];
+   case GL_EDGE_FLAG_ARRAY: return &ctx->Array.Array[FGL_ARRAY_EDGEFLAG];
+   default: return NULL;
+   }
+}
+
+/* client_state [S: main/enable.c] */
+static void client_state(GLenum cap, bool state)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   struct fgl_client_array *arr = fgl_client_array(ctx, cap);
+   if (!arr) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   arr->Enabled = state;
+}
+
+void GLAPIENTRY glEnableClientState(GLenum cap)
+{
+   client_state(cap, true);
+}
+
+void GLAPIENTRY glDisableClientState(GLenum cap)
+{
+   client_state(cap, false);
+}
+
+bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
+{
+   const struct fgl_client_array *A = ctx->Array.Array;
+   switch (pname) {
+   case GL_VERTEX_ARRAY_SIZE: *value = A[FGL_ARRAY_VERTEX].Size; return true;
+   case GL_VERTEX_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_VERTEX].Type; return true;
+   case GL_VERTEX_ARRAY_STRIDE: *value = A[FGL_ARRAY_VERTEX].Stride; return true;
+   case GL_NORMAL_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_NORMAL].Type; return true;
+   case GL_NORMAL_ARRAY_STRIDE: *value = A[FGL_ARRAY_NORMAL].Stride; return true;
+   case GL_COLOR_ARRAY_SIZE:
+      /* [S: main/get.c:find_custom_value] GL_BGRA reads back as such */
+      *value = A[FGL_ARRAY_COLOR].Format == GL_BGRA ? GL_BGRA : A[FGL_ARRAY_COLOR].Size;
+      return true;
+   case GL_COLOR_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_COLOR].Type; return true;
+   case GL_COLOR_ARRAY_STRIDE: *value = A[FGL_ARRAY_COLOR].Stride; return true;
+   case GL_INDEX_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_INDEX].Type; return true;
+   case GL_INDEX_ARRAY_STRIDE: *value = A[FGL_ARRAY_INDEX].Stride; return true;
+   case GL_TEXTURE_COORD_ARRAY_SIZE: *value = A[FGL_ARRAY_TEXCOORD].Size; return true;
+   case GL_TEXTURE_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_TEXCOORD].Type; return true;
+   case GL_TEXTURE_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_TEXCOORD].Stride; return true;
+   case GL_EDGE_FLAG_ARRAY_STRIDE: *value = A[FGL_ARRAY_EDGEFLAG].Stride; return true;
+   default: return false;
+   }
+}
+
+void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (!params)
+      return;
+   const struct fgl_client_array *A = ctx->Array.Array;
+   switch (pname) {
+   case GL_VERTEX_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_VERTEX].Ptr; break;
+   case GL_NORMAL_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_NORMAL].Ptr; break;
+   case GL_COLOR_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_COLOR].Ptr; break;
+   case GL_INDEX_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_INDEX].Ptr; break;
+   case GL_TEXTURE_COORD_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_TEXCOORD].Ptr; break;
+   case GL_EDGE_FLAG_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_EDGEFLAG].Ptr; break;
+   /* feedback and selection are not implemented: their buffers stay NULL */
+   case GL_FEEDBACK_BUFFER_POINTER:
+   case GL_SELECTION_BUFFER_POINTER:
+      *params = NULL;
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      break;
+   }
+}
+
+/* ---- drawing ---- */
+
+/* FLUSH_FOR_DRAW [S: main/context.h]: any pending vbo work is flushed with
+ * FLUSH_STORED_VERTICES, before validation. */
+static void flush_for_draw(struct fgl_context *ctx)
+{
+   if (ctx->Vbo.need_flush)
+      fgl_vbo_flush_vertices(ctx);
+}
+
+/* valid_prim_mode_custom [S: main/draw.c]: the oracle's compatibility
+ * context supports the adjacency modes and patches too
+ * (SupportedPrimMask); patches are not in ValidPrimMask without a
+ * tessellation shader, and DrawGLError is GL_INVALID_OPERATION
+ * (_mesa_update_valid_to_render_state). */
+static GLenum valid_prim_mode(GLenum mode)
+{
+   if (mode > GL_PATCHES)
+      return GL_INVALID_ENUM;
+   return mode == GL_PATCHES ? GL_INVALID_OPERATION : GL_NO_ERROR;
+}
+
+static GLenum valid_elements_type(GLenum type)
+{
+   return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT ||
+          type == GL_UNSIGNED_INT ? GL_NO_ERROR : GL_INVALID_ENUM;
+}
+
+void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   flush_for_draw(ctx);
+   GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+   if (err) {
+      fgl_error(ctx, err);
+      return;
+   }
+   t_draw_arrays(ctx, mode, first, count, 0, NULL);
+}
+
+void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   flush_for_draw(ctx);
+   /* validate_DrawElements_common */
+   GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+   if (!err)
+      err = valid_elements_type(type);
+   if (err) {
+      fgl_error(ctx, err);
+      return;
+   }
+   t_draw_arrays(ctx, mode, 0, count, type, indices);
+}
+
+void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                    GLenum type, const GLvoid *indices)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   flush_for_draw(ctx);
+   /* _mesa_validate_DrawRangeElements: end < start first */
+   GLenum err;
+   if (end < start) {
+      err = GL_INVALID_VALUE;
+   } else {
+      err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+      if (!err)
+         err = valid_elements_type(type);
+   }
+   if (err) {
+      fgl_error(ctx, err);
+      return;
+   }
+   /* the range only bounds what the driver uploads; callers must keep
+    * their indices inside it (out-of-range fetches are undefined) */
+   t_draw_arrays(ctx, mode, 0, count, type, indices);
+}
+
+void GLAPIENTRY glArrayElement(GLint i)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   t_array_element(ctx, i);
+}

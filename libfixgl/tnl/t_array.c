@@ -1,0 +1,278 @@
+/*
+ * Array draws (glDrawArrays, glDrawElements) and glArrayElement.
+ *
+ * The oracle fetches client arrays in draw's LLVM vertex shader
+ * [S: gallium/auxiliary/draw/draw_llvm.c:fetch_vector ->
+ * gallivm/lp_bld_format_soa.c:lp_build_fetch_rgba_soa,
+ * lp_build_extract_soa_chan], with the pipe format the state tracker picks
+ * for each GL type [S: state_tracker/st_atom_array.c, main/glformats.c:
+ * _mesa_get_vertex_format]: normalized integers (colours, normals) as
+ *   unsigned n-bit:  (float)c * (float)(1.0 / (2^n - 1))       n <= 24
+ *                    32 bits: ((bits(c >> 9 | 0x3f800000) - 1.0f)
+ *                             * (float)(2^23 / (2^23 - 1)))
+ *                    [S: gallivm/lp_bld_conv.c:lp_build_unsigned_norm_to_float]
+ *   signed n-bit:    max((float)c * (float)(1.0 / (2^(n-1) - 1)), -1.0f)
+ * which is not the immediate-mode conversion of main/conv.h (c / 255.0f,
+ * (2c + 1) / 255): an array draw and glArrayElement of the same data can
+ * differ.  Other integers convert with (float)c, doubles round to float.
+ * Components the array does not have are (0, 0, 0, 1).
+ *
+ * The fetched vertices become one batch for t_render_batch, with the
+ * enabled arrays as its vertex format: attributes without an enabled array
+ * are the current values (stride 0, and a colour that is not a varying
+ * of the fragment program), and the draw leaves the current values alone.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "context.h"
+#include "main/conv.h"
+#include "tnl/t_pipeline.h"
+
+/* util_format half -> float, exact */
+static float half_to_float(uint16_t h)
+{
+   const unsigned e = (h >> 10) & 0x1f, m = h & 0x3ff;
+   float f;
+   if (e == 0)
+      f = ldexpf((float)m, -24);
+   else if (e == 31)
+      f = m ? NAN : INFINITY;
+   else
+      f = ldexpf((float)(m | 0x400), (int)e - 25);
+   return (h & 0x8000) ? -f : f;
+}
+
+/* One component c of an array element, as gallivm fetches it. */
+static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
+{
+   switch (type) {
+   case GL_BYTE: {
+      const GLbyte v = ((const GLbyte *)p)[c];
+      return normalized ? fmaxf((float)v * (float)(1.0 / 127), -1.0f) : (float)v;
+   }
+   case GL_UNSIGNED_BYTE: {
+      const GLubyte v = p[c];
+      return normalized ? (float)v * (float)(1.0 / 255) : (float)v;
+   }
+   case GL_SHORT: {
+      GLshort v;
+      memcpy(&v, p + 2 * c, 2);
+      return normalized ? fmaxf((float)v * (float)(1.0 / 32767), -1.0f) : (float)v;
+   }
+   case GL_UNSIGNED_SHORT: {
+      GLushort v;
+      memcpy(&v, p + 2 * c, 2);
+      return normalized ? (float)v * (float)(1.0 / 65535) : (float)v;
+   }
+   case GL_INT: {
+      GLint v;
+      memcpy(&v, p + 4 * c, 4);
+      return normalized ? fmaxf((float)v * (float)(1.0 / 2147483647.0), -1.0f) : (float)v;
+   }
+   case GL_UNSIGNED_INT: {
+      GLuint v;
+      memcpy(&v, p + 4 * c, 4);
+      if (!normalized)
+         return (float)v;
+      /* more bits than a float's mantissa: the top 23 as a float in [1,2) */
+      const uint32_t bits = (v >> 9) | 0x3f800000u;
+      float f;
+      memcpy(&f, &bits, 4);
+      return (f - 1.0f) * (float)(8388608.0 / 8388607.0);
+   }
+   case GL_HALF_FLOAT: {
+      uint16_t v;
+      memcpy(&v, p + 2 * c, 2);
+      return half_to_float(v);
+   }
+   case GL_FLOAT: {
+      float v;
+      memcpy(&v, p + 4 * c, 4);
+      return v;
+   }
+   case GL_DOUBLE: {
+      double v;
+      memcpy(&v, p + 8 * c, 8);
+      return (float)v;
+   }
+   case GL_INT_2_10_10_10_REV:
+   case GL_UNSIGNED_INT_2_10_10_10_REV: {
+      uint32_t v;
+      memcpy(&v, p, 4);
+      const int width = c == 3 ? 2 : 10;
+      const uint32_t raw = (v >> (10 * c)) & ((1u << width) - 1);
+      if (type == GL_UNSIGNED_INT_2_10_10_10_REV)
+         return normalized ? (float)raw * (float)(1.0 / ((1u << width) - 1)) : (float)raw;
+      const int s = (int)(raw << (32 - width)) >> (32 - width);
+      return normalized ? fmaxf((float)s * (float)(1.0 / ((1 << (width - 1)) - 1)), -1.0f)
+                        : (float)s;
+   }
+   default:
+      return 0.0f;
+   }
+}
+
+static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt, float out[4])
+{
+   out[0] = 0.0f, out[1] = 0.0f, out[2] = 0.0f, out[3] = 1.0f;
+   /* an enabled array without a pointer: llvmpipe maps no buffer for it
+    * (lp_draw_arrays.c: a NULL user buffer is skipped) and draw's fetch
+    * of an empty buffer gives zeros in the format's channels
+    * (draw_llvm.c:fetch_vector, out-of-bound elements): a default 4-component
+    * colour array is (0, 0, 0, 0) */
+   if (!a->Ptr) {
+      if (a->Size == 4)
+         out[3] = 0.0f;
+      return;
+   }
+   const GLubyte *p = (const GLubyte *)a->Ptr + (size_t)elt * (size_t)a->EffStride;
+   for (int c = 0; c < a->Size; c++)
+      out[c] = fetch_comp(p, a->Type, normalized, c);
+   if (a->Format == GL_BGRA) {
+      const float t = out[0];
+      out[0] = out[2];
+      out[2] = t;
+   }
+}
+
+static GLuint index_at(GLenum type, const GLvoid *indices, GLsizei i)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE:
+      return ((const GLubyte *)indices)[i];
+   case GL_UNSIGNED_SHORT:
+      return ((const GLushort *)indices)[i];
+   default:
+      return ((const GLuint *)indices)[i];
+   }
+}
+
+void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
+                   GLenum index_type, const GLvoid *indices)
+{
+   const struct fgl_client_array *A = ctx->Array.Array;
+   /* skip_validated_draw [S: main/draw.c]: nothing to draw without
+    * vertices or a position array */
+   if (count == 0 || !A[FGL_ARRAY_VERTEX].Enabled)
+      return;
+   if (mode > GL_POLYGON)
+      return;   /* adjacency modes: not drawn yet (as glBegin) */
+   if (index_type && !indices)
+      return;
+
+   struct fgl_vbo_vertex *verts = malloc((size_t)count * sizeof(*verts));
+   if (!verts)
+      return;
+   /* the batch's vertex format: the enabled arrays (the state tracker's
+    * vertex elements; _mesa_set_varying_vp_inputs) */
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   static const struct { enum fgl_array_index array; enum fgl_vbo_attr attr; bool norm; }
+   map[] = {
+      { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
+      { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
+      { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
+      { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
+   };
+   for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
+      const struct fgl_client_array *a = &A[map[m].array];
+      if (!a->Enabled)
+         continue;
+      vbo->attr_size[map[m].attr] = (unsigned)a->Size;
+      for (GLsizei i = 0; i < count; i++) {
+         const GLuint elt = index_type ? index_at(index_type, indices, i)
+                                       : (GLuint)(first + i);
+         fetch(a, map[m].norm, elt, verts[i].attr[map[m].attr]);
+      }
+   }
+   const struct fgl_vbo_prim prim = {
+      .mode = mode, .start = 0, .count = (unsigned)count,
+      .begin = true, .end = true, .indexed = index_type != 0,
+   };
+   t_render_batch(ctx, verts, (unsigned)count, &prim, 1);
+   /* flush_for_draw left the format empty */
+   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   free(verts);
+}
+
+/* Immediate-mode conversions of the NV attribute functions
+ * [S: main/api_arrayelt.c:AttribFuncsNV]: normalized integers with Mesa's
+ * macros (main/conv.h), others cast.  TYPE_IDX(t) = t & 7 (GL_DOUBLE
+ * apart) reads GL_HALF_FLOAT (0x140B) as GL_UNSIGNED_SHORT (0x1403), and
+ * the packed types are not looked at either; func_nv ignores a GL_BGRA
+ * format. */
+static float immediate_comp(const GLubyte *p, GLenum type, bool normalized, int c)
+{
+   if (type != GL_DOUBLE)
+      type = 0x1400 | (type & 7);
+   switch (type) {
+   case GL_BYTE: {
+      const GLbyte v = ((const GLbyte *)p)[c];
+      return normalized ? BYTE_TO_FLOAT(v) : (float)v;
+   }
+   case GL_UNSIGNED_BYTE: {
+      const GLubyte v = p[c];
+      return normalized ? UBYTE_TO_FLOAT(v) : (float)v;
+   }
+   case GL_SHORT: {
+      GLshort v;
+      memcpy(&v, p + 2 * c, 2);
+      return normalized ? SHORT_TO_FLOAT(v) : (float)v;
+   }
+   case GL_UNSIGNED_SHORT: {
+      GLushort v;
+      memcpy(&v, p + 2 * c, 2);
+      return normalized ? USHORT_TO_FLOAT(v) : (float)v;
+   }
+   case GL_INT: {
+      GLint v;
+      memcpy(&v, p + 4 * c, 4);
+      return normalized ? INT_TO_FLOAT(v) : (float)v;
+   }
+   case GL_UNSIGNED_INT: {
+      GLuint v;
+      memcpy(&v, p + 4 * c, 4);
+      return normalized ? UINT_TO_FLOAT(v) : (float)v;
+   }
+   case GL_FLOAT: {
+      float v;
+      memcpy(&v, p + 4 * c, 4);
+      return v;
+   }
+   case GL_DOUBLE: {
+      double v;
+      memcpy(&v, p + 8 * c, 8);
+      return (float)v;
+   }
+   default:
+      return 0.0f;
+   }
+}
+
+static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
+                 enum fgl_vbo_attr attr, bool normalized, GLint elt)
+{
+   const GLubyte *p = (const GLubyte *)a->Ptr + (ptrdiff_t)elt * a->EffStride;
+   float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+   for (int c = 0; c < a->Size; c++)
+      v[c] = immediate_comp(p, a->Type, normalized, c);
+   fgl_vbo_attr(ctx, attr, (unsigned)a->Size, v[0], v[1], v[2], v[3]);
+}
+
+void t_array_element(struct fgl_context *ctx, GLint elt)
+{
+   /* _mesa_array_element: the enabled non-position arrays in attribute
+    * order (normal, colour, edge flag; texture coordinates and colour
+    * indices do not reach fixgl's vertex yet), then the position */
+   const struct fgl_client_array *A = ctx->Array.Array;
+   if (A[FGL_ARRAY_NORMAL].Enabled)
+      emit(ctx, &A[FGL_ARRAY_NORMAL], FGL_ATTR_NORMAL, true, elt);
+   if (A[FGL_ARRAY_COLOR].Enabled)
+      emit(ctx, &A[FGL_ARRAY_COLOR], FGL_ATTR_COLOR0, true, elt);
+   if (A[FGL_ARRAY_EDGEFLAG].Enabled)
+      emit(ctx, &A[FGL_ARRAY_EDGEFLAG], FGL_ATTR_EDGEFLAG, false, elt);
+   if (A[FGL_ARRAY_VERTEX].Enabled)
+      emit(ctx, &A[FGL_ARRAY_VERTEX], FGL_ATTR_POS, false, elt);
+}
