@@ -195,6 +195,7 @@ struct fgl_polygon_attrib {
    GLenum FrontFace;        /* GL_CW or GL_CCW */
    GLenum CullFaceMode;     /* GL_FRONT, GL_BACK or GL_FRONT_AND_BACK */
    bool CullFlag;           /* GL_CULL_FACE */
+   bool SmoothFlag;         /* GL_POLYGON_SMOOTH: no effect in the oracle */
    GLenum FrontMode, BackMode;  /* glPolygonMode: GL_POINT, GL_LINE, GL_FILL */
    float OffsetFactor, OffsetUnits;
    bool OffsetFill, OffsetLine, OffsetPoint;  /* GL_POLYGON_OFFSET_* */
@@ -383,7 +384,7 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 27
+#define FGL_PENDING_CAPS 26
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */

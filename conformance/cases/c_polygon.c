@@ -49,6 +49,39 @@ static void draw_prim(GLenum mode)
 
 static void make_pattern(GLubyte p[128], int kind);
 
+/* ---- GL_POLYGON_SMOOTH ---------------------------------------------------- */
+
+/* GL_POLYGON_SMOOTH, as legacy antialiasing demos use it (with
+ * SRC_ALPHA_SATURATE/ONE blending, front to back): the state tracker passes
+ * it on as pipe_rasterizer_state.poly_smooth, which neither llvmpipe nor the
+ * draw module reads, so polygons stay aliased; the enable and its query
+ * still work. */
+static void polygon_smooth(fc_h *h)
+{
+    static const GLenum modes[6] = {
+        GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON,
+    };
+    fc_pixel_ortho(h);
+    fc_is_enabled(h, "GL_POLYGON_SMOOTH default", GL_POLYGON_SMOOTH);
+    glEnable(GL_POLYGON_SMOOTH);
+    fc_is_enabled(h, "GL_POLYGON_SMOOTH on", GL_POLYGON_SMOOTH);
+    glHint(GL_POLYGON_SMOOTH_HINT, GL_NICEST);
+    for (int m = 0; m < 6; m++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glDisable(GL_BLEND);
+        draw_prim(modes[m]);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE);
+        glTranslatef(0.37f, 0.21f, 0.0f);
+        draw_prim(modes[m]);
+        glLoadIdentity();
+        fc_capture(h);
+    }
+    glDisable(GL_POLYGON_SMOOTH);
+    fc_is_enabled(h, "GL_POLYGON_SMOOTH off", GL_POLYGON_SMOOTH);
+    fc_error(h, "final");
+}
+
 /* ---- glRect --------------------------------------------------------------- */
 
 /* Every glRect variant, corners in both orders, fractional corners. */
@@ -1180,6 +1213,7 @@ static void polygon_mix(fc_h *h)
 }
 
 const fc_case fc_cases_polygon[] = {
+    FC_CASE_RGBA("polygon/polygon_smooth", 32, 32, 6, "raster polygon", polygon_smooth),
     FC_CASE_RGBA("polygon/rect_variants", 32, 32, 2, "raster polygon", rect_variants),
     FC_CASE_RGBA("polygon/rect_cull_errors", 32, 32, 2, "raster polygon", rect_cull_errors),
     FC_CASE_RGBA("polygon/edge_flag_state", 32, 32, 1, "raster polygon", edge_flag_state),

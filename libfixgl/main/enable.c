@@ -16,7 +16,7 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2,
    GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
-   GL_MAP2_VERTEX_4, GL_POLYGON_SMOOTH, GL_TEXTURE_1D,
+   GL_MAP2_VERTEX_4, GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
    GL_TEXTURE_GEN_T,
 };
@@ -53,6 +53,11 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_POLYGON_STIPPLE:
       *dirty = FGL_NEW_POLYGON;
       return &ctx->Polygon.StippleFlag;
+   case GL_POLYGON_SMOOTH:
+      /* stored and queried only: llvmpipe and draw never read
+       * pipe_rasterizer_state.poly_smooth (polygon/polygon_smooth) */
+      *dirty = 0;
+      return &ctx->Polygon.SmoothFlag;
    case GL_COLOR_MATERIAL:
       *dirty = FGL_NEW_LIGHT;
       return &ctx->Light.ColorMaterialEnabled;

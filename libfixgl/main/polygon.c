@@ -20,6 +20,7 @@ void fgl_init_polygon(struct fgl_context *ctx)
    ctx->Polygon.FrontFace = GL_CCW;
    ctx->Polygon.CullFaceMode = GL_BACK;
    ctx->Polygon.CullFlag = false;
+   ctx->Polygon.SmoothFlag = false;
    ctx->Polygon.FrontMode = GL_FILL;
    ctx->Polygon.BackMode = GL_FILL;
    ctx->Polygon.OffsetFactor = 0.0f;
