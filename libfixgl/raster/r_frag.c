@@ -22,19 +22,19 @@ uint8_t r_float_to_unorm8(float c)
       return 0;
    if (c > 1.0f)
       c = 1.0f;
-   return (uint8_t)lrintf(c * 255.0f);
+   return (uint8_t)r_round_even(c * 255.0f);
 }
 
 /* The fragment shader restricts depth to [0,1] (lp_build_depth_clamp),
  * then converts with RNE (llvmpipe-facts.md §1). */
 uint32_t r_depth_to_z24(float z)
 {
-   return (uint32_t)lrintf(r_clamp01(z) * 16777215.0f);
+   return (uint32_t)r_round_even(r_clamp01(z) * 16777215.0f);
 }
 
 uint16_t r_depth_to_z16(float z)
 {
-   return (uint16_t)lrintf(r_clamp01(z) * 65535.0f);
+   return (uint16_t)r_round_even(r_clamp01(z) * 65535.0f);
 }
 
 /* lp_build_cmp(func, a, b): on unsigned integers (depth, stencil, the
@@ -324,7 +324,7 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
              (!isnan(ref) && !compare_float(rs->alpha_func, a, ref)))
             return;
       } else {
-         const uint8_t a = (uint8_t)lrintf(r_clamp01(color[3]) * 255.0f);
+         const uint8_t a = (uint8_t)r_round_even(r_clamp01(color[3]) * 255.0f);
          if (!compare(rs->alpha_func, a, rs->alpha_ref))
             return;
       }

@@ -9,8 +9,12 @@
 #ifndef FGL_R_STATE_H
 #define FGL_R_STATE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #define R_MAX_ATTRIBS 6
 
@@ -249,6 +253,29 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
  * at depth z with colour `color` through r_fragment_ops (the state tracker's
  * clear_with_quad). */
 void r_clear_quad(const struct r_state *rs, float z, const float color[4]);
+
+/* Per-pixel loops are compiled twice, with and without the FMA
+ * instruction set, and the loader picks the clone the CPU runs (GCC's
+ * target_clones, an ifunc): with FMA, fmaf() becomes one vfmadd
+ * instruction instead of a libm call.  The result is the same either way
+ * (fmaf is always the fused operation); only the speed differs. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define R_FMA_CLONES __attribute__((target_clones("fma", "default")))
+#else
+#define R_FMA_CLONES
+#endif
+
+/* Round to nearest, ties to even, of a value known to fit in an int32 (the
+ * oracle's cvtps2dq): one cvtss2si under the default rounding mode instead
+ * of a libm call. */
+static inline int32_t r_round_even(float f)
+{
+#if defined(__SSE__) || defined(__x86_64__)
+   return _mm_cvt_ss2si(_mm_set_ss(f));
+#else
+   return (int32_t)lrintf(f);
+#endif
+}
 
 /* gallivm's lp_build_clamp(x, 0, 1) = max(min(x, 1), 0) on x86 minps/maxps,
  * which return their second operand when one is NaN, so NaN becomes 1.

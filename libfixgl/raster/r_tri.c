@@ -226,7 +226,7 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
-static inline void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
+static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
 {
    /* polygon stipple: draw's pstipple stage samples a 32x32 texture of the
@@ -355,6 +355,7 @@ static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
  * are exact, conservative versions of the per-pixel test: the covered
  * pixels are exactly those whose three edge values are positive.  This
  * evaluates that directly over the box cut to the draw region. */
+R_FMA_CLONES
 static void rasterize_direct(const struct r_state *rs, const struct tri_shade *ts,
                              const struct r_plane *p, int32_t x0, int32_t y0,
                              int32_t x1, int32_t y1)
