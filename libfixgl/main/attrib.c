@@ -178,7 +178,10 @@ struct attrib_group {
  * GL_LIST_BIT, GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
  * accepted and save nothing yet: their state gets a line here when it
  * lands (accum before colour, eval after enable, list after line, pixel
- * mode after list, texture after transform, as Mesa pops them). */
+ * mode after list, texture after transform, as Mesa pops them).  The
+ * raster position joins GL_CURRENT_BIT with glRasterPos; texture
+ * coordinates, as vbo attributes before the materials, are in the
+ * Current copy already. */
 static const struct attrib_group groups[] = {
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
