@@ -355,6 +355,38 @@ struct fgl_client_attrib_node {
    struct fgl_array_attrib Array;
 };
 
+/* enable flags of GL 1.x features still to come (main/enable.c) */
+#define FGL_PENDING_CAPS 26
+
+/* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
+ * copy of each server group; the table in attrib.c says which mask bit
+ * saves which member.  Texture (GL_TEXTURE_BIT), evaluator (GL_EVAL_BIT),
+ * pixel transfer (GL_PIXEL_MODE_BIT), accumulation (GL_ACCUM_BUFFER_BIT)
+ * and display list (GL_LIST_BIT) state get their member here, and their
+ * line in the table, when the feature lands. */
+#define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
+#define FGL_ENABLE_ATTRIB_CAPS 55          /* caps restored by GL_ENABLE_BIT */
+struct fgl_attrib_node {
+   GLbitfield Mask;
+   GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
+   struct fgl_colorbuffer_attrib Color;
+   float Current[FGL_ATTR_MAT_FIRST][4];   /* ctx->Current, materials excluded */
+   struct fgl_depth_attrib Depth;
+   bool Enable[FGL_ENABLE_ATTRIB_CAPS];    /* GL_ENABLE_BIT, attrib.c's cap list */
+   struct fgl_fog_attrib Fog;
+   struct fgl_hint_attrib Hint;
+   struct fgl_light_attrib Light;
+   float Material[FGL_ATTR_COUNT - FGL_ATTR_MAT_FIRST][4];  /* GL_LIGHTING_BIT */
+   struct fgl_line_attrib Line;
+   struct fgl_point_attrib Point;
+   struct fgl_polygon_attrib Polygon;
+   uint32_t PolygonStipple[32];
+   struct fgl_scissor_attrib Scissor;
+   struct fgl_stencil_attrib Stencil;
+   struct fgl_transform_attrib Transform;
+   struct fgl_viewport_attrib Viewport;
+};
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -376,6 +408,11 @@ struct fgl_context {
    struct fgl_array_attrib Array;       /* GL_CLIENT_VERTEX_ARRAY_BIT */
    struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
    unsigned ClientAttribStackDepth;
+   struct fgl_attrib_node AttribStack[FGL_MAX_ATTRIB_STACK_DEPTH];
+   unsigned AttribStackDepth;
+   /* Mesa's ctx->PopAttribState: groups changed since the last push.  Only
+    * GL_LIGHTING_BIT and GL_CURRENT_BIT are tracked (attrib.c). */
+   GLbitfield PopAttribState;
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;
@@ -384,7 +421,6 @@ struct fgl_context {
    struct fgl_matrix_stack *CurrentStack;
 
    /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 26
    bool PendingCaps[FGL_PENDING_CAPS];
 
    /* ---- immediate mode ---- */
@@ -461,11 +497,15 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
    } while (0)
 #define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
 
-/* Flush batched vertices before a state change and mark it dirty. */
+/* Flush batched vertices before a state change and mark it dirty.  The
+ * lighting group's setters also mark it changed for glPopAttrib (Mesa
+ * passes GL_LIGHTING_BIT to FLUSH_VERTICES in each of them). */
 #define FGL_FLUSH_VERTICES(ctx, newstate)                  \
    do {                                                    \
       fgl_flush_vertices(ctx);                             \
       (ctx)->NewState |= (newstate);                       \
+      if ((newstate) & FGL_NEW_LIGHT)                      \
+         (ctx)->PopAttribState |= GL_LIGHTING_BIT;         \
    } while (0)
 
 /* Public API symbols; everything else is hidden by default. */

@@ -1,12 +1,267 @@
 /*
- * The client attribute stack: glPushClientAttrib, glPopClientAttrib
+ * The attribute stacks.
+ *
+ * Server: glPushAttrib, glPopAttrib [S: main/attrib.c:_mesa_PushAttrib,
+ * _mesa_PopAttrib].  Push copies each group the mask names into the node;
+ * pop puts it back in Mesa's order.  Mesa restores most groups through
+ * its setters, each of which returns early when the value is unchanged,
+ * and only the groups changed since the push (ctx->PopAttribState): here a
+ * group whose stored copy differs from the current state is copied back
+ * and its dirty bit set, which is the same state, except for the lighting
+ * group, whose materials can change without marking it (restore_light).
+ * Stored values come back
+ * as they were stored: light positions, spot directions and clip planes
+ * stay in the eye space of their glLight/glClipPlane call (Mesa copies
+ * them), whatever the modelview is at pop time.
+ *
+ * Client: glPushClientAttrib, glPopClientAttrib
  * [S: main/attrib.c:_mesa_PushClientAttrib, _mesa_PopClientAttrib] for
  * GL_CLIENT_PIXEL_STORE_BIT (ctx->Pack, ctx->Unpack) and
  * GL_CLIENT_VERTEX_ARRAY_BIT (ctx->Array).  Other mask bits are kept in
- * the node and ignored, as Mesa does.  The server attribute stack
- * (glPushAttrib) comes later.
+ * the node and ignored, as Mesa does.
  */
+#include <stddef.h>
+#include <string.h>
+
 #include "main/groups.h"
+
+/* GL_ENABLE_BIT: the capabilities pop_enable_group restores, in its
+ * order [S: main/attrib.c:pop_enable_group].  _mesa_PushAttrib also saves
+ * GL_LIGHT0..7 but pop_enable_group never restores them (Mesa 22.3): a
+ * light enable comes back only with GL_LIGHTING_BIT.  The texture enables
+ * are the pending ones of unit 0 until texturing lands. */
+static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
+   GL_ALPHA_TEST, GL_BLEND,
+   GL_CLIP_PLANE0, GL_CLIP_PLANE0 + 1, GL_CLIP_PLANE0 + 2, GL_CLIP_PLANE0 + 3,
+   GL_CLIP_PLANE0 + 4, GL_CLIP_PLANE0 + 5, GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
+   GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG,
+   GL_LIGHTING, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_INDEX_LOGIC_OP,
+   GL_COLOR_LOGIC_OP,
+   GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
+   GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
+   GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
+   GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
+   GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4,
+   GL_AUTO_NORMAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_POINT_SMOOTH,
+   GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL,
+   GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
+   GL_TEXTURE_1D, GL_TEXTURE_2D,
+   GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+};
+
+static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_ENABLE_ATTRIB_CAPS; i++) {
+      double v = 0.0;
+      fgl_is_cap(ctx, enable_caps[i], &v);
+      node->Enable[i] = v != 0.0;
+   }
+}
+
+/* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that
+ * re-enabling GL_COLOR_MATERIAL loads the current colour into the
+ * tracked materials, as glEnable does. */
+static void restore_enable(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_ENABLE_ATTRIB_CAPS; i++)
+      fgl_set_enable(ctx, enable_caps[i], node->Enable[i]);
+}
+
+/* GL_CURRENT_BIT and GL_LIGHTING_BIT take the vertex format's values
+ * first (FLUSH_CURRENT). */
+static void save_flush_current(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   (void)node;
+   fgl_flush_current(ctx);
+}
+
+/* GL_CURRENT_BIT: memcpy to ctx->Current.  The vertex format is not reset
+ * (the flush at the top of glPopAttrib draws only when vertices are
+ * stored), so an attribute in the format keeps its value for the next
+ * vertices while queries see the restored one. */
+static void restore_current(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   memcpy(ctx->Current.Attrib, node->Current, sizeof(node->Current));
+}
+
+/* GL_LIGHTING_BIT.  Mesa skips the group unless it was marked changed
+ * since the push (PopAttribState): a glLight*, glLightModel*,
+ * glColorMaterial, glShadeModel, lighting enable or material attribute
+ * marks it, but the materials that GL_COLOR_MATERIAL makes follow the
+ * colour do not, so those keep the tracked colour when nothing else of the
+ * group changed.  A restore copies the lights (eye-space positions as
+ * stored), the model, the colour material state and the materials; on
+ * its way glColorMaterial and glEnable(GL_COLOR_MATERIAL) flush the
+ * current values (FLUSH_CURRENT), so a colour still in the vertex format
+ * goes into the tracked materials before the copy overwrites them and not
+ * at a later flush. */
+static void restore_light(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   const struct fgl_light_attrib *l = &node->Light;
+   if (!(ctx->PopAttribState & GL_LIGHTING_BIT) &&
+       memcmp(&ctx->Light, l, sizeof(*l)) == 0)
+      return;
+   const bool cm_call = (ctx->Light.ColorMaterialFace != l->ColorMaterialFace ||
+                         ctx->Light.ColorMaterialMode != l->ColorMaterialMode) &&
+                        ctx->Light.ColorMaterialEnabled;
+   if (cm_call || ctx->Light.ColorMaterialEnabled != l->ColorMaterialEnabled)
+      fgl_flush_current(ctx);
+   ctx->Light = *l;
+   memcpy(ctx->Current.Attrib[FGL_ATTR_MAT_FIRST], node->Material, sizeof(node->Material));
+   ctx->NewState |= FGL_NEW_LIGHT;
+}
+
+/* GL_FOG_BIT: the setters, _mesa_Fogfv(GL_FOG_COLOR) with the clamped
+ * colour: the unclamped colour becomes the clamped one. */
+static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   if (memcmp(&ctx->Fog, &node->Fog, sizeof(node->Fog)) == 0)
+      return;
+   ctx->Fog = node->Fog;
+   memcpy(ctx->Fog.ColorUnclamped, node->Fog.Color, sizeof(node->Fog.Color));
+   ctx->NewState |= FGL_NEW_FOG;
+}
+
+/* GL_HINT_BIT: _mesa_PopAttrib calls glHint for six targets only;
+ * GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT keep their
+ * current value. */
+static void restore_hint(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   struct fgl_hint_attrib *h = &ctx->Hint;
+   h->PerspectiveCorrection = node->Hint.PerspectiveCorrection;
+   h->PointSmooth = node->Hint.PointSmooth;
+   h->LineSmooth = node->Hint.LineSmooth;
+   h->PolygonSmooth = node->Hint.PolygonSmooth;
+   h->Fog = node->Hint.Fog;
+   h->TextureCompression = node->Hint.TextureCompression;
+}
+
+/* GL_TRANSFORM_BIT: glMatrixMode selects the stack; planes and enables are
+ * copied (no re-transformation by the current modelview). */
+static void restore_transform(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   if (memcmp(&ctx->Transform, &node->Transform, sizeof(node->Transform)) == 0)
+      return;
+   ctx->Transform = node->Transform;
+   ctx->CurrentStack = fgl_matrix_stack_for_mode(ctx, ctx->Transform.MatrixMode);
+   ctx->NewState |= FGL_NEW_CLIP;
+}
+
+/* A part that an earlier entry's hook restores */
+static void restore_nothing(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   (void)ctx;
+   (void)node;
+}
+
+/* One group (or part of one) that a mask bit saves: ctx_offset/size bytes
+ * of the context copied to node_offset of the node, or the hooks. */
+struct attrib_group {
+   GLbitfield bit;
+   size_t ctx_offset, node_offset, size;
+   unsigned dirty;          /* FGL_NEW_* set when the group changes on pop */
+   void (*save)(struct fgl_context *ctx, struct fgl_attrib_node *node);     /* before the copy */
+   void (*restore)(struct fgl_context *ctx, const struct fgl_attrib_node *node); /* instead of the copy */
+};
+
+#define GROUP(bit, ctxmember, nodemember, dirty, save, restore)                 \
+   { bit, offsetof(struct fgl_context, ctxmember),                              \
+     offsetof(struct fgl_attrib_node, nodemember),                              \
+     sizeof(((struct fgl_attrib_node *)0)->nodemember), dirty, save, restore }
+
+/* A group kept by its hooks alone (size 0: nothing copied) */
+#define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
+
+/* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
+ * the lighting group's materials).  GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
+ * GL_LIST_BIT, GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
+ * accepted and save nothing yet: their state gets a line here when it
+ * lands (accum before colour, eval after enable, list after line, pixel
+ * mode after list, texture after transform, as Mesa pops them).  The
+ * raster position joins GL_CURRENT_BIT with glRasterPos; texture
+ * coordinates, as vbo attributes before the materials, are in the
+ * Current copy already. */
+static const struct attrib_group groups[] = {
+   GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
+   GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
+   GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
+   HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
+   GROUP(GL_FOG_BIT, Fog, Fog, FGL_NEW_FOG, NULL, restore_fog),
+   GROUP(GL_HINT_BIT, Hint, Hint, 0, NULL, restore_hint),
+   GROUP(GL_LIGHTING_BIT, Light, Light, FGL_NEW_LIGHT, save_flush_current, restore_light),
+   GROUP(GL_LIGHTING_BIT, Current.Attrib[FGL_ATTR_MAT_FIRST], Material, 0, NULL, restore_nothing),
+   GROUP(GL_LINE_BIT, Line, Line, FGL_NEW_LINE, NULL, NULL),
+   GROUP(GL_POINT_BIT, Point, Point, FGL_NEW_POINT, NULL, NULL),
+   GROUP(GL_POLYGON_BIT, Polygon, Polygon, FGL_NEW_POLYGON, NULL, NULL),
+   GROUP(GL_POLYGON_STIPPLE_BIT, PolygonStipple, PolygonStipple, FGL_NEW_POLYGON, NULL, NULL),
+   GROUP(GL_SCISSOR_BIT, Scissor, Scissor, FGL_NEW_SCISSOR, NULL, NULL),
+   GROUP(GL_STENCIL_BUFFER_BIT, Stencil, Stencil, FGL_NEW_STENCIL, NULL, NULL),
+   GROUP(GL_TRANSFORM_BIT, Transform, Transform, FGL_NEW_CLIP, NULL, restore_transform),
+   GROUP(GL_VIEWPORT_BIT, Viewport, Viewport, FGL_NEW_VIEWPORT, NULL, NULL),
+};
+
+void GLAPIENTRY glPushAttrib(GLbitfield mask)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   /* not in the oracle's glBegin/glEnd dispatch table (generic_nop) */
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->AttribStackDepth >= FGL_MAX_ATTRIB_STACK_DEPTH) {
+      fgl_error(ctx, GL_STACK_OVERFLOW);
+      return;
+   }
+   struct fgl_attrib_node *node = &ctx->AttribStack[ctx->AttribStackDepth];
+   node->Mask = mask;
+   node->OldPopAttribState = ctx->PopAttribState;
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(mask & g->bit))
+         continue;
+      if (g->save)
+         g->save(ctx, node);
+      if (g->size)
+         memcpy((char *)node + g->node_offset, (const char *)ctx + g->ctx_offset, g->size);
+   }
+   ctx->AttribStackDepth++;
+   ctx->PopAttribState = 0;
+}
+
+void GLAPIENTRY glPopAttrib(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* FLUSH_VERTICES comes before the underflow check */
+   fgl_flush_vertices(ctx);
+   if (ctx->AttribStackDepth == 0) {
+      fgl_error(ctx, GL_STACK_UNDERFLOW);
+      return;
+   }
+   ctx->AttribStackDepth--;
+   const struct fgl_attrib_node *node = &ctx->AttribStack[ctx->AttribStackDepth];
+   /* FLUSH_CURRENT before anything is restored */
+   if (node->Mask & GL_CURRENT_BIT)
+      fgl_flush_current(ctx);
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(node->Mask & g->bit))
+         continue;
+      if (g->restore) {
+         g->restore(ctx, node);
+         continue;
+      }
+      char *dst = (char *)ctx + g->ctx_offset;
+      const char *src = (const char *)node + g->node_offset;
+      if (memcmp(dst, src, g->size) != 0) {
+         memcpy(dst, src, g->size);
+         ctx->NewState |= g->dirty;
+      }
+   }
+   ctx->PopAttribState = node->OldPopAttribState;
+}
 
 void GLAPIENTRY glPushClientAttrib(GLbitfield mask)
 {

@@ -117,45 +117,53 @@ static bool clip_plane_cap(GLenum cap, unsigned *bit)
    return true;
 }
 
-static void set_enable(GLenum cap, bool state)
+/* The internal setter (Mesa's _mesa_set_enable): cap is valid or the call
+ * returns false with nothing changed.  glPopAttrib restores the enable
+ * group through it. */
+bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
    unsigned bit;
    if (clip_plane_cap(cap, &bit)) {
       if (((ctx->Transform.ClipPlanesEnabled & bit) != 0) == state)
-         return;
+         return true;
       FGL_FLUSH_VERTICES(ctx, FGL_NEW_CLIP);
       if (state)
          ctx->Transform.ClipPlanesEnabled |= bit;
       else
          ctx->Transform.ClipPlanesEnabled &= ~bit;
-      return;
+      return true;
    }
    /* client-side arrays [S: main/enable.c:_mesa_set_enable -> client_state]:
     * read at draw time, no flush */
    struct fgl_client_array *arr = fgl_client_array(ctx, cap);
    if (arr) {
       arr->Enabled = state;
-      return;
+      return true;
    }
    unsigned dirty = 0;
    bool *flag = cap_flag(ctx, cap, &dirty);
-   if (!flag) {
-      fgl_error(ctx, GL_INVALID_ENUM);
-      return;
-   }
+   if (!flag)
+      return false;
    if (*flag == state)
-      return;
+      return true;
    if (cap == GL_COLOR_MATERIAL) {
       /* the current colour becomes the tracked materials */
       fgl_set_color_material_enabled(ctx, state);
-      return;
+      return true;
    }
    FGL_FLUSH_VERTICES(ctx, dirty);
    *flag = state;
+   return true;
+}
+
+static void set_enable(GLenum cap, bool state)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (!fgl_set_enable(ctx, cap, state))
+      fgl_error(ctx, GL_INVALID_ENUM);
 }
 
 void GLAPIENTRY glEnable(GLenum cap)

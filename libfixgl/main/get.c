@@ -269,6 +269,12 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_MAX_CLIP_PLANES:
       set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
       return true;
+   case GL_ATTRIB_STACK_DEPTH:
+      set_ints(val, V_INT, 1, (int)ctx->AttribStackDepth, 0, 0, 0);
+      return true;
+   case GL_MAX_ATTRIB_STACK_DEPTH:
+      set_ints(val, V_INT, 1, FGL_MAX_ATTRIB_STACK_DEPTH, 0, 0, 0);
+      return true;
    case GL_CLIENT_ATTRIB_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->ClientAttribStackDepth, 0, 0, 0);
       return true;

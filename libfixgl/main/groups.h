@@ -9,6 +9,7 @@
 
 /* main/matrix.c */
 bool fgl_init_matrix(struct fgl_context *ctx);
+struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLenum mode);
 void fgl_free_matrix(struct fgl_context *ctx);
 
 /* main/varray.c (GL_CLIENT_VERTEX_ARRAY_BIT) */
@@ -88,5 +89,6 @@ void fgl_flush_front(struct fgl_context *ctx);
 
 /* main/enable.c: whether pname is a capability; its state in *value */
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);
+bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state);
 
 #endif

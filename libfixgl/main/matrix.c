@@ -45,7 +45,7 @@ void fgl_free_matrix(struct fgl_context *ctx)
 
 /* The stack glMatrixMode(mode) selects, or NULL for an invalid mode.
  * GL_MATRIX0_ARB..7 are accepted like the oracle (ARB_vertex_program). */
-static struct fgl_matrix_stack *named_stack(struct fgl_context *ctx, GLenum mode)
+struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLenum mode)
 {
    switch (mode) {
    case GL_MODELVIEW:
@@ -69,7 +69,7 @@ void GLAPIENTRY glMatrixMode(GLenum mode)
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Transform.MatrixMode == mode && mode != GL_TEXTURE)
       return;
-   struct fgl_matrix_stack *stack = named_stack(ctx, mode);
+   struct fgl_matrix_stack *stack = fgl_matrix_stack_for_mode(ctx, mode);
    if (!stack) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;

@@ -267,6 +267,9 @@ static void copy_to_current(struct fgl_context *ctx)
       memcpy(ctx->Current.Attrib[a], v, sizeof(v));
       if (a == FGL_ATTR_COLOR0)
          color0_changed = true;
+      /* changed groups for glPopAttrib; the materials that the colour
+       * material sets below are not marked */
+      ctx->PopAttribState |= a >= FGL_ATTR_MAT_FIRST ? GL_LIGHTING_BIT : GL_CURRENT_BIT;
    }
    if (color0_changed && ctx->Light.ColorMaterialEnabled)
       fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
