@@ -55,6 +55,14 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsig
 const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx);
 float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx);
 
+/* The draw stages after clipping for one triangle in window coordinates
+ * (t_draw_pipe.c): cull, twoside, offset, flatshade, unfilled, the line
+ * stipple restart, then llvmpipe's setup; v2 is the provoking vertex,
+ * flags its T_EDGE_* (already cleared where the edge's first vertex has no
+ * edge flag) and T_RESET_STIPPLE bits. */
+void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1, const struct r_vertex *v2, unsigned flags);
+
 /* A triangle of a vsplit segment that takes draw's pipeline (`pipeline`:
  * some vertex of its segment needs clipping, or the state requires it,
  * ctx->_DrawPipeline.always) or goes straight to llvmpipe: clipped against
