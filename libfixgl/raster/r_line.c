@@ -96,7 +96,7 @@ struct line_shade {
 static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
 {
    const struct line_shade *ls = ctx;
-   if (rs->stipple_points_lines && !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+   if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];

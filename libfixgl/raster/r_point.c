@@ -71,8 +71,7 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
    r_fragment_shader(rs, (const float (*)[4])in, color);
    for (int32_t py = by0; py <= by1; py++) {
       for (int32_t px = bx0; px <= bx1; px++) {
-         if (rs->stipple_points_lines &&
-             !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+         if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
             continue;   /* the pstipple shader's kill (t_vbuf_flush) */
          r_fragment_ops(rs, px, py, v->pos[2], color);
       }

@@ -229,10 +229,8 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
 {
-   /* polygon stipple: draw's pstipple stage samples a 32x32 texture of the
-    * pattern at the window position and kills the fragment first
-    * [S: draw/draw_pipe_pstipple.c, util/u_pstipple.c] */
-   if (rs->stipple && !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+   /* polygon stipple: the pstipple stage's kill, first */
+   if (rs->stipple && !r_stipple_pass(rs, px, py))
       return;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
