@@ -37,10 +37,6 @@ static inline float fracf(float f)
    return f - floorf(f);
 }
 
-struct plane {
-   float a0, dadx, dady;
-};
-
 struct line_info {
    float dx, dy, oneoverarea;
    const struct r_vertex *v1;   /* the original first vertex */
@@ -56,11 +52,6 @@ static inline struct plane line_coef(const struct line_info *info, float a1, flo
    p.dady = da21 * info->dy * info->oneoverarea;
    p.a0 = a1 - (p.dadx * (info->v1->pos[0] - 0.5f) + p.dady * (info->v1->pos[1] - 0.5f));
    return p;
-}
-
-static inline float eval_plane(const struct plane *p, float x, float y)
-{
-   return fmaf(p->dady, y, fmaf(p->dadx, x, p->a0));
 }
 
 /* floor(a / b) for b > 0 */
@@ -81,7 +72,6 @@ static inline int32_t max4(int32_t a, int32_t b, int32_t c, int32_t d)
    return m > n ? m : n;
 }
 
-static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
 static inline int32_t sub32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a - (uint32_t)b); }
 
 /* The interpolation setup of one line (setup_line_coefficients). */
@@ -96,7 +86,7 @@ struct line_shade {
 static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
 {
    const struct line_shade *ls = ctx;
-   if (rs->stipple_points_lines && !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+   if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];

@@ -56,7 +56,7 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
    if (bx0 > bx1 || by0 > by1)
       return;
 
-   /* the inputs are the same at every pixel */
+   /* the inputs, and so the shaded colour, are the same at every pixel */
    float in[R_FS_NUM_INPUTS][4];
    const float w = v->pos[3];
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
@@ -67,13 +67,12 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
       for (int c = 0; c < 4; c++)
          in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
    }
+   float color[4];
+   r_fragment_shader(rs, (const float (*)[4])in, color);
    for (int32_t py = by0; py <= by1; py++) {
       for (int32_t px = bx0; px <= bx1; px++) {
-         if (rs->stipple_points_lines &&
-             !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+         if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
             continue;   /* the pstipple shader's kill (t_vbuf_flush) */
-         float color[4];
-         r_fragment_shader(rs, (const float (*)[4])in, color);
          r_fragment_ops(rs, px, py, v->pos[2], color);
       }
    }

@@ -245,6 +245,16 @@ static inline int32_t r_subpixel_snap(float a)
    return r_iround(256.0f * a);
 }
 
+/* Whether the polygon stipple keeps pixel (px, py): row py mod 32 of
+ * stipple_rows, bit 31 - (px mod 32) (draw's pstipple stage samples a
+ * 32x32 texture of the pattern at the window position and kills the
+ * fragment before anything else [S: draw/draw_pipe_pstipple.c,
+ * util/u_pstipple.c]). */
+static inline bool r_stipple_pass(const struct r_state *rs, int px, int py)
+{
+   return (rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u;
+}
+
 /* Clear whole buffers. */
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4]);
 void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,

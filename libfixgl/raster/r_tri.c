@@ -66,7 +66,6 @@ static inline int32_t max3(int32_t a, int32_t b, int32_t c)
 #define TILE_SIZE 64
 #define MAX_PLANES R_MAX_PLANES
 
-static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
 static inline int32_t neg32(int32_t a) { return (int32_t)(0u - (uint32_t)a); }
 static inline int32_t mul32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a * (uint32_t)b); }
 static inline int32_t shl32(int32_t a, int n) { return (int32_t)((uint32_t)a << n); }
@@ -129,11 +128,6 @@ static inline void block_masks(const struct r_plane *p, int64_t c, int log2_sub,
 
 /* ---- attribute setup and shading ---------------------------------------- */
 
-/* Plane equation a(x, y) = fma(dady, y, fma(dadx, x, a0)). */
-struct plane {
-   float a0, dadx, dady;
-};
-
 /* lp_state_setup.c:calc_coef with the triangle's shared factors. */
 struct setup_factors {
    float x0c, y0c;
@@ -150,11 +144,6 @@ static inline struct plane make_plane(const struct setup_factors *f,
    p.dady = da20 * f->dx01o - da01 * f->dx20o;
    p.a0 = a0 - (p.dadx * f->x0c + p.dady * f->y0c);
    return p;
-}
-
-static inline float eval_plane(const struct plane *p, float x, float y)
-{
-   return fmaf(p->dady, y, fmaf(p->dadx, x, p->a0));
 }
 
 /* Interpolation setup of one triangle (the jit setup function's job). */
@@ -229,10 +218,8 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
 {
-   /* polygon stipple: draw's pstipple stage samples a 32x32 texture of the
-    * pattern at the window position and kills the fragment first
-    * [S: draw/draw_pipe_pstipple.c, util/u_pstipple.c] */
-   if (rs->stipple && !((rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u))
+   /* polygon stipple: the pstipple stage's kill, first */
+   if (rs->stipple && !r_stipple_pass(rs, px, py))
       return;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
