@@ -346,10 +346,7 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
       /* the flatshade stage runs first (precalc_flat): both ends get the
        * provoking vertex's flat attributes, so the stipple lerp keeps them
        * and the aaline quad's provoking vertices have them */
-      for (int a = 0; a < rs->num_attribs; a++)
-         if (rs->flat_mask & (1u << a))
-            for (int k = 0; k < 4; k++)
-               c[0].r.attr[a][k] = c[1].r.attr[a][k];
+      t_copy_flat(rs, &c[0].r, &c[1].r);
    }
    if (stipple)
       stipple_line(ctx, &c[0].r, &c[1].r, first);

@@ -33,6 +33,18 @@ struct t_vertex {
 #define T_EDGE_ALL      0x7u
 #define T_RESET_STIPPLE 0x8u
 
+/* The provoking vertex pv's flat attributes (rs->flat_mask) onto dst, as
+ * draw's clip (copy_flat), flatshade (flatshade_tri_2, flatshade_line_1)
+ * stages copy them. */
+static inline void t_copy_flat(const struct r_state *rs, struct r_vertex *dst,
+                               const struct r_vertex *pv)
+{
+   for (int a = 0; a < rs->num_attribs; a++)
+      if (rs->flat_mask & (1u << a))
+         for (int c = 0; c < 4; c++)
+            dst->attr[a][c] = pv->attr[a][c];
+}
+
 /* Transform n stored vertices (positions, colours) into out[]. */
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out);
