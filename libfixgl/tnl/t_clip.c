@@ -211,10 +211,7 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
    if (rs->flat_mask && inlist[0] != v2) {
       struct t_vertex *p0 = &tmp[tmpnr++];
       *p0 = *inlist[0];
-      for (int a = 0; a < rs->num_attribs; a++)
-         if (rs->flat_mask & (1u << a))
-            for (int c = 0; c < 4; c++)
-               p0->r.attr[a][c] = v2->r.attr[a][c];
+      t_copy_flat(rs, &p0->r, &v2->r);
       inlist[0] = p0;
    }
 
@@ -232,15 +229,6 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
       t_draw_pipe_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r,
                    edge_flags(tri_flags, inlist[i - 1], inlist[i], inlist[0]));
    }
-}
-
-/* draw_pipe_clip.c copy_flat: the provoking vertex's flat attributes */
-static void copy_flat(const struct r_state *rs, struct t_vertex *dst, const struct t_vertex *pv)
-{
-   for (int a = 0; a < rs->num_attribs; a++)
-      if (rs->flat_mask & (1u << a))
-         for (int c = 0; c < 4; c++)
-            dst->r.attr[a][c] = pv->r.attr[a][c];
 }
 
 bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
@@ -282,11 +270,11 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
     * with the provoking (second) vertex's flat attributes */
    if (v0->mask) {
       interp(ctx, &out[0], t0, v0, v1, rs->num_attribs);
-      copy_flat(rs, &out[0], v1);
+      t_copy_flat(rs, &out[0].r, &v1->r);
    }
    if (v1->mask) {
       interp(ctx, &out[1], t1, v1, v0, rs->num_attribs);
-      copy_flat(rs, &out[1], v1);
+      t_copy_flat(rs, &out[1].r, &v1->r);
    }
    return true;
 }

@@ -109,9 +109,7 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
             tmp[i] = *v[i];
             v[i] = &tmp[i];
          }
-         for (int at = 0; at < rs->num_attribs; at++)
-            if (rs->flat_mask & (1u << at))
-               memcpy(tmp[i].attr[at], v[2]->attr[at], sizeof(tmp[i].attr[0]));
+         t_copy_flat(rs, &tmp[i], v[2]);
       }
    }
 

@@ -47,13 +47,7 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsig
          float eye[4];
          if (chain) {
             /* get_eye_position: the column MUL/MAD chain */
-            for (int r = 0; r < 4; r++) {
-               float acc = p[0] * mv[r];
-               acc = p[1] * mv[4 + r] + acc;
-               acc = p[2] * mv[8 + r] + acc;
-               acc = p[3] * mv[12 + r] + acc;
-               eye[r] = acc;
-            }
+            t_mul_mad_chain(eye, mv, p);
          } else {
             /* get_eye_position_z: DP4 with row 2, from the last component */
             eye[2] = ((p[3] * mv[14] + p[2] * mv[10]) + p[1] * mv[6]) + p[0] * mv[2];

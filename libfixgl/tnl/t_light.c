@@ -359,14 +359,7 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       transform_normal(ctx, &key, normal + (size_t)i * nstride, nrm);
       if (key.eye) {
          /* eye position: the modelview's column MUL/MAD chain */
-         const float *p = in[i].attr[FGL_ATTR_POS];
-         for (int r = 0; r < 4; r++) {
-            float acc = p[0] * mv[r];
-            acc = p[1] * mv[4 + r] + acc;
-            acc = p[2] * mv[8 + r] + acc;
-            acc = p[3] * mv[12 + r] + acc;
-            V[r] = acc;
-         }
+         t_mul_mad_chain(V, mv, in[i].attr[FGL_ATTR_POS]);
       }
 #define MAT(a) (src[a].ptr + (size_t)i * src[a].stride)
       const struct material mat[2] = {

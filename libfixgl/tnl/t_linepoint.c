@@ -163,6 +163,16 @@ void t_vbuf_end_draw(struct fgl_context *ctx)
    ctx->_DrawVbuf.pstipple_bound = false;
 }
 
+/* The stage after stipple: the aapoint quad or llvmpipe's point. */
+static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
+{
+   if (ctx->Point.SmoothFlag) {
+      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
+      aapoint_point(&ctx->_Raster, v);
+   } else
+      vbuf_add(ctx, T_VBUF_POINTS, v, NULL);
+}
+
 void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
 {
    /* draw_pipe_clip.c:clip_point */
@@ -173,12 +183,7 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
     * counter (stipple_reset_point) */
    if ((pipeline || ctx->Point.SmoothFlag) && ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
-   if (ctx->Point.SmoothFlag) {
-      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
-      aapoint_point(&ctx->_Raster, &v->r);
-   }
-   else
-      vbuf_add(ctx, T_VBUF_POINTS, &v->r, NULL);
+   point_raster(ctx, &v->r);
 }
 
 void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
@@ -186,12 +191,7 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
    /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
    if (ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
-   if (ctx->Point.SmoothFlag) {
-      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
-      aapoint_point(&ctx->_Raster, v);
-   }
-   else
-      vbuf_add(ctx, T_VBUF_POINTS, v, NULL);
+   point_raster(ctx, v);
 }
 
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
@@ -346,10 +346,7 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
       /* the flatshade stage runs first (precalc_flat): both ends get the
        * provoking vertex's flat attributes, so the stipple lerp keeps them
        * and the aaline quad's provoking vertices have them */
-      for (int a = 0; a < rs->num_attribs; a++)
-         if (rs->flat_mask & (1u << a))
-            for (int k = 0; k < 4; k++)
-               c[0].r.attr[a][k] = c[1].r.attr[a][k];
+      t_copy_flat(rs, &c[0].r, &c[1].r);
    }
    if (stipple)
       stipple_line(ctx, &c[0].r, &c[1].r, first);

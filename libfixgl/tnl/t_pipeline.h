@@ -33,6 +33,33 @@ struct t_vertex {
 #define T_EDGE_ALL      0x7u
 #define T_RESET_STIPPLE 0x8u
 
+/* A column-major matrix m times a position p as the oracle's vertex
+ * program does it (llvmpipe-facts.md §1 "Vertex path"; ffvertex_prog.c
+ * MUL then MADs, the MADs unfused):
+ * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded. */
+static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
+{
+   for (int r = 0; r < 4; r++) {
+      float acc = p[0] * m[r];
+      acc = p[1] * m[4 + r] + acc;
+      acc = p[2] * m[8 + r] + acc;
+      acc = p[3] * m[12 + r] + acc;
+      out[r] = acc;
+   }
+}
+
+/* The provoking vertex pv's flat attributes (rs->flat_mask) onto dst, as
+ * draw's clip (copy_flat), flatshade (flatshade_tri_2, flatshade_line_1)
+ * stages copy them. */
+static inline void t_copy_flat(const struct r_state *rs, struct r_vertex *dst,
+                               const struct r_vertex *pv)
+{
+   for (int a = 0; a < rs->num_attribs; a++)
+      if (rs->flat_mask & (1u << a))
+         for (int c = 0; c < 4; c++)
+            dst->attr[a][c] = pv->attr[a][c];
+}
+
 /* Transform n stored vertices (positions, colours) into out[]. */
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out);

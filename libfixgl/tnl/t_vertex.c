@@ -67,13 +67,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
           * use are still clipped and interpolated: give them a value */
          memset(v->r.attr, 0, sizeof(v->r.attr));
       }
-      for (int r = 0; r < 4; r++) {
-         float acc = p[0] * m[r];
-         acc = p[1] * m[4 + r] + acc;
-         acc = p[2] * m[8 + r] + acc;
-         acc = p[3] * m[12 + r] + acc;
-         v->clip[r] = acc;
-      }
+      t_mul_mad_chain(v->clip, m, p);
       v->mask = clip_mask(v->clip);
       if (ctx->Transform.ClipPlanesEnabled)
          v->mask |= user_clip_mask(ctx, v->clip);
