@@ -26,13 +26,6 @@ void fgl_init_fog(struct fgl_context *ctx)
    fog->DistanceMode = GL_EYE_PLANE_ABSOLUTE_NV;
 }
 
-/* Mesa's CLAMP(x, 0, 1) (util/macros.h: x > min ? (x > max ? max : x) : min):
- * NaN becomes 0 */
-static float clamp01(float x)
-{
-   return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f;
-}
-
 /* A scalar float parameter: flush and store unless it is unchanged
  * (compared with ==, so NaN always stores). */
 static void set_float(struct fgl_context *ctx, float *dst, float v)
@@ -95,7 +88,7 @@ void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params)
       FGL_FLUSH_VERTICES(ctx, FGL_NEW_FOG);
       for (int i = 0; i < 4; i++) {
          fog->ColorUnclamped[i] = params[i];
-         fog->Color[i] = clamp01(params[i]);
+         fog->Color[i] = fgl_clamp01(params[i]);
       }
       break;
    case GL_FOG_COORDINATE_SOURCE:

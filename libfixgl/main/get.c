@@ -33,25 +33,6 @@ struct value {
    double v[16];
 };
 
-/* _mesa_GetIntegerv, TYPE_FLOAT: params[i] = lroundf(f), a long (64 bits)
- * stored into a GLint: rounded half away from zero, then the low 32 bits;
- * out of the long range or NaN, glibc's x86-64 lroundf gives LONG_MIN,
- * whose low 32 bits are 0 (1e30 reads back as 0). */
-static GLint iround(float f)
-{
-   int64_t l = INT64_MIN;
-   if (f >= -9223372036854775808.0f && f < 9223372036854775808.0f)
-      l = (int64_t)lroundf(f);
-   return (GLint)(uint32_t)(uint64_t)l;
-}
-
-/* Mesa's CLAMP(x, 0, 1) (util/macros.h): x > 0 ? min(x, 1) : 0, so NaN
- * becomes 0 */
-static float mesa_clamp01(float x)
-{
-   return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f;
-}
-
 static void set_floats(struct value *val, enum value_type type, const float *f, int n)
 {
    val->type = type;
@@ -94,7 +75,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    /* GL_COLOR_BUFFER_BIT */
    case GL_COLOR_CLEAR_VALUE:
       for (int i = 0; i < 4; i++)
-         f[i] = mesa_clamp01(ctx->Color.ClearColor[i]);
+         f[i] = fgl_clamp01(ctx->Color.ClearColor[i]);
       set_floats(val, V_FLOATN, f, 4);
       return true;
    case GL_ALPHA_TEST_FUNC:
@@ -102,7 +83,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_ALPHA_TEST_REF:
       /* _mesa_get_clamp_fragment_color is true for fixed-point buffers */
-      f[0] = mesa_clamp01(ctx->Color.AlphaRef);
+      f[0] = fgl_clamp01(ctx->Color.AlphaRef);
       set_floats(val, V_FLOATN, f, 1);
       return true;
    case GL_BLEND_SRC:              /* = GL_BLEND_SRC_RGB */
@@ -119,7 +100,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_BLEND_COLOR:
       for (int i = 0; i < 4; i++)
-         f[i] = mesa_clamp01(ctx->Color.BlendColor[i]);
+         f[i] = fgl_clamp01(ctx->Color.BlendColor[i]);
       set_floats(val, V_FLOATN, f, 4);
       return true;
    case GL_LOGIC_OP_MODE:
@@ -451,7 +432,7 @@ void GLAPIENTRY glGetIntegerv(GLenum pname, GLint *params)
          params[i] = val.v[i] > (double)INT_MAX ? INT_MAX : (GLint)val.v[i];
          break;
       case V_FLOAT:
-         params[i] = iround((float)val.v[i]);
+         params[i] = fgl_lround_to_int((float)val.v[i]);
          break;
       case V_FLOATN:
          params[i] = fgl_float_to_int_norm(val.v[i]);

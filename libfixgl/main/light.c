@@ -529,7 +529,7 @@ void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params)
       return;
    /* colours with FLOAT_TO_INT, shininess and indexes with lroundf */
    for (int i = 0; i < n; i++)
-      params[i] = n == 4 ? fgl_float_to_int_norm(v[i]) : (GLint)lroundf(v[i]);
+      params[i] = n == 4 ? fgl_float_to_int_norm(v[i]) : fgl_lround_to_int(v[i]);
 }
 
 void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode)

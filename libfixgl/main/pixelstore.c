@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 
 static void init_store(struct fgl_pixelstore *p)
@@ -89,12 +90,8 @@ void GLAPIENTRY glPixelStorei(GLenum pname, GLint param)
 
 void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param)
 {
-   /* _mesa_PixelStoref: lroundf (a long; glibc's LONG_MIN when out of
-    * range or NaN), kept to 32 bits */
-   int64_t l = INT64_MIN;
-   if (param >= -9223372036854775808.0f && param < 9223372036854775808.0f)
-      l = (int64_t)lroundf(param);
-   pixel_storei(pname, (GLint)(uint32_t)(uint64_t)l);
+   /* _mesa_PixelStoref: lroundf, kept to 32 bits */
+   pixel_storei(pname, fgl_lround_to_int(param));
 }
 
 /* _mesa_image_offset for GL_BITMAP data (2D): rows of

@@ -358,8 +358,13 @@ static GLenum valid_prim_mode(GLenum mode)
    return mode == GL_PATCHES ? GL_INVALID_OPERATION : GL_NO_ERROR;
 }
 
-static GLenum valid_elements_type(GLenum type)
+/* validate_DrawElements_common [S: main/draw.c]: count, mode, then the
+ * index type. */
+static GLenum validate_draw_elements(GLenum mode, GLsizei count, GLenum type)
 {
+   const GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+   if (err)
+      return err;
    return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT ||
           type == GL_UNSIGNED_INT ? GL_NO_ERROR : GL_INVALID_ENUM;
 }
@@ -386,10 +391,7 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
-   /* validate_DrawElements_common */
-   GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
-   if (!err)
-      err = valid_elements_type(type);
+   const GLenum err = validate_draw_elements(mode, count, type);
    if (err) {
       fgl_error(ctx, err);
       return;
@@ -406,14 +408,8 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    /* _mesa_validate_DrawRangeElements: end < start first */
-   GLenum err;
-   if (end < start) {
-      err = GL_INVALID_VALUE;
-   } else {
-      err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
-      if (!err)
-         err = valid_elements_type(type);
-   }
+   const GLenum err = end < start ? GL_INVALID_VALUE
+                                  : validate_draw_elements(mode, count, type);
    if (err) {
       fgl_error(ctx, err);
       return;
