@@ -560,6 +560,481 @@ static void errors_execute(fc_h *h)
     fc_error(h, "final");
 }
 
+
+/* ---- arrays in lists ---- */
+
+static void arrays(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static GLfloat v[8][2] = { { 2, 2 }, { 14, 3 }, { 13, 14 }, { 3, 13 },
+                               { 18, 2 }, { 30, 4 }, { 29, 15 }, { 17, 12 } };
+    static GLubyte c[8][4] = { { 255, 0, 0, 255 }, { 0, 255, 0, 255 }, { 0, 0, 255, 255 },
+                               { 255, 255, 0, 255 }, { 0, 255, 255, 255 }, { 255, 0, 255, 255 },
+                               { 128, 64, 32, 255 }, { 32, 64, 128, 255 } };
+    static const GLushort idx[6] = { 4, 5, 6, 4, 6, 7 };
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    glNewList(1, GL_COMPILE);
+    glDrawArrays(GL_QUADS, 0, 4);
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT, idx);
+    glTranslatef(0, 16, 0);
+    glBegin(GL_TRIANGLE_FAN);
+    for (int i = 0; i < 4; i++)
+        glArrayElement(i);
+    glEnd();
+    glDrawRangeElements(GL_LINE_LOOP, 4, 7, 4, GL_UNSIGNED_SHORT, idx);
+    glEndList();
+    /* the arrays change after compilation: the list keeps what it read */
+    for (int i = 0; i < 8; i++) {
+        v[i][0] += 32;
+        c[i][0] = (GLubyte)(255 - c[i][0]);
+    }
+    glDisableClientState(GL_COLOR_ARRAY);
+    glColor3f(0.5f, 0.5f, 0.5f);
+    glCallList(1);
+    fc_get_float(h, "current color after list", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+    /* compile and execute: drawn through immediate mode */
+    fcu_clear(0, 0, 0, 0, 1);
+    glLoadIdentity();
+    glEnableClientState(GL_COLOR_ARRAY);
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glDrawArrays(GL_QUADS, 0, 8);
+    glEndList();
+    fc_get_float(h, "current color c&e", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+}
+
+/* ---- commands executed at once while compiling ---- */
+
+static void immediate_commands(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat v[3][2] = { { 2, 2 }, { 30, 2 }, { 2, 30 } };
+    glNewList(1, GL_COMPILE);
+    glEnableClientState(GL_VERTEX_ARRAY);    /* executed, not compiled */
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    fc_is_enabled(h, "vertex array in list", GL_VERTEX_ARRAY);
+    GLuint gen = glGenLists(2);
+    fc_value(h, "genlists in list", gen);
+    fc_value(h, "islist in list", glIsList(1));
+    glDeleteLists(gen, 1);
+    fc_value(h, "deleted in list", glIsList(gen));
+    glColor3f(0, 1, 0);
+    glRectf(4, 4, 28, 28);
+    fc_get_float(h, "current color in list", GL_CURRENT_COLOR, 4);
+    glFlush();
+    glFinish();
+    GLubyte px[4] = { 1, 2, 3, 4 };
+    glReadPixels(10, 10, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "readpixels in list", px, sizeof(px));
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glEndList();
+    fc_error(h, "compile");
+    fc_get_integer(h, "pack alignment", GL_PACK_ALIGNMENT, 1);
+    fc_capture(h);
+    glCallList(1);
+    fc_is_enabled(h, "vertex array after call", GL_VERTEX_ARRAY);
+    fc_capture(h);
+    /* compile and execute: vertex data is executed when the vertex list
+     * is compiled, so a glReadPixels right after it does not see it */
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glColor3f(1, 0, 0);
+    glRectf(4, 4, 28, 28);
+    glReadPixels(10, 10, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "readpixels c&e before flush", px, sizeof(px));
+    glColor3f(0, 0, 1);           /* flushes the vertex list */
+    glReadPixels(10, 10, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "readpixels c&e after flush", px, sizeof(px));
+    glEndList();
+    fc_capture(h);
+}
+
+/* glShadeModel and glMaterial execute before the pending vertex list is
+ * flushed under GL_COMPILE_AND_EXECUTE; repeated values are not compiled */
+static void execute_order(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    smooth_quad(2, 2, 30, 30);
+    glShadeModel(GL_FLAT);
+    smooth_quad(34, 2, 62, 30);
+    glShadeModel(GL_FLAT);
+    glShadeModel(GL_SMOOTH);
+    glEndList();
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glCallList(1);
+    fc_capture(h);
+    /* lit: a material after a primitive */
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat red[4] = { 1, 0, 0, 1 }, blue[4] = { 0, 0, 1, 1 };
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, red);
+    glNormal3f(0, 0, 1);
+    glRectf(2, 34, 30, 62);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue);
+    glRectf(34, 34, 62, 62);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue);   /* left out */
+    glEndList();
+    fc_capture(h);
+    glDisable(GL_LIGHTING);
+}
+
+/* ---- primitives across lists ---- */
+
+/* a glBegin in one list and its glEnd in another: the lists are replayed
+ * through immediate mode (loopback) */
+static void dangling(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_QUADS);
+    glColor3f(1, 0, 0);
+    glVertex2f(2, 2);
+    glColor3f(0, 1, 0);
+    glVertex2f(30, 2);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glColor3f(0, 0, 1);
+    glVertex2f(30, 30);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 30);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile");
+    glCallList(1);
+    glCallList(2);
+    fc_error(h, "call");
+    /* a list of vertices only, called inside glBegin/glEnd */
+    glNewList(3, GL_COMPILE);
+    glColor3f(1, 0, 1);
+    glVertex2f(34, 2);
+    glVertex2f(62, 2);
+    glColor3f(0, 1, 1);
+    glVertex2f(62, 30);
+    glVertex2f(34, 30);
+    glEndList();
+    glBegin(GL_QUADS);
+    glCallList(3);
+    glEnd();
+    fc_error(h, "inside");
+    /* glCallList inside glBegin/glEnd while compiling */
+    glNewList(4, GL_COMPILE);
+    glTranslatef(0, 32, 0);
+    glBegin(GL_QUADS);
+    glCallList(3);
+    glEnd();
+    glEndList();
+    glCallList(4);
+    /* a list with a complete primitive called inside glBegin/glEnd */
+    glBegin(GL_TRIANGLES);
+    glCallList(1);
+    glCallList(2);
+    fc_error(h, "complete primitive inside begin");
+    glEnd();
+    fc_error(h, "final");
+    fc_capture(h);
+}
+
+/* a new attribute after the first vertex wraps the vertex list; without a
+ * value known at compile time the list is replayed by loopback */
+static void upgrade_wrap(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    /* colour unknown at compile time: loopback (immediate mode's 0-2
+     * quad diagonal) */
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_QUADS);
+    glVertex2f(2, 2);
+    glColor3f(0, 1, 0);
+    glVertex2f(30, 2);
+    glColor3f(0, 0, 1);
+    glVertex2f(30, 30);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 30);
+    glEnd();
+    glEndList();
+    /* colour set before in the list: known, drawn indexed */
+    glNewList(2, GL_COMPILE);
+    glColor3f(1, 0, 0);
+    glBegin(GL_QUADS);
+    glVertex2f(34, 2);
+    glColor3f(0, 1, 0);
+    glVertex2f(62, 2);
+    glColor3f(0, 0, 1);
+    glVertex2f(62, 30);
+    glColor3f(1, 1, 1);
+    glVertex2f(34, 30);
+    glEnd();
+    glEndList();
+    glColor3f(1, 0, 0);
+    glCallList(1);
+    glCallList(2);
+    fc_capture(h);
+    /* a strip and a line loop wrapped by a new attribute */
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(3, GL_COMPILE);
+    glColor3f(1, 1, 0);
+    glBegin(GL_TRIANGLE_STRIP);
+    glVertex2f(2, 34);
+    glVertex2f(10, 36);
+    glVertex2f(3, 50);
+    glNormal3f(0, 0, 1);
+    glVertex2f(14, 52);
+    glVertex2f(6, 62);
+    glColor3f(0, 1, 1);
+    glVertex2f(18, 60);
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    glVertex2f(34, 34);
+    glVertex2f(60, 36);
+    glColor4f(1, 0, 1, 1);
+    glVertex2f(58, 60);
+    glVertex2f(36, 58);
+    glEnd();
+    glEndList();
+    glCallList(3);
+    fc_get_float(h, "current color", GL_CURRENT_COLOR, 4);
+    fc_get_float(h, "current normal", GL_CURRENT_NORMAL, 3);
+    fc_capture(h);
+}
+
+/* the current values a list leaves: its last vertex's attributes; an
+ * attribute after the last vertex inside glBegin/glEnd is lost */
+static void current_values(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0);
+    glNormal3f(0, 1, 0);
+    glVertex2f(2, 2);
+    glVertex2f(30, 2);
+    glColor3f(0, 0, 1);
+    glVertex2f(2, 30);
+    glColor3f(0, 1, 0);
+    glNormal3f(1, 0, 0);
+    glEnd();
+    glEndList();
+    glCallList(1);
+    fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+    fc_get_float(h, "normal", GL_CURRENT_NORMAL, 3);
+    glRectf(34, 2, 62, 30);
+    /* a colour outside glBegin/glEnd */
+    glNewList(2, GL_COMPILE);
+    glColor4f(0.25f, 0.5f, 0.75f, 1.0f);
+    glEndList();
+    glCallList(2);
+    fc_get_float(h, "color 2", GL_CURRENT_COLOR, 4);
+    glRectf(2, 34, 30, 62);
+    /* colour material follows a list's last colour */
+    glColorMaterial(GL_FRONT, GL_DIFFUSE);
+    glEnable(GL_COLOR_MATERIAL);
+    glCallList(1);
+    GLfloat d[4];
+    glGetMaterialfv(GL_FRONT, GL_DIFFUSE, d);
+    fc_blob(h, "diffuse", d, sizeof(d));
+    glDisable(GL_COLOR_MATERIAL);
+    /* glPushAttrib(GL_CURRENT_BIT) around a list */
+    glPushAttrib(GL_CURRENT_BIT);
+    glCallList(1);
+    glPopAttrib();
+    fc_get_float(h, "color after pop", GL_CURRENT_COLOR, 4);
+    /* edge flag inside glBegin/glEnd */
+    glNewList(3, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glEdgeFlag(GL_FALSE);
+    glVertex2f(34, 34);
+    glEdgeFlag(GL_TRUE);
+    glVertex2f(62, 34);
+    glVertex2f(34, 62);
+    glEnd();
+    glEndList();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glColor3f(1, 1, 1);
+    glCallList(3);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    fc_get_boolean(h, "edge flag", GL_EDGE_FLAG, 1);
+    fc_capture(h);
+}
+
+/* ---- more state in lists ---- */
+
+static void more_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glEnable(GL_DEPTH_TEST);
+    static const GLubyte stipple_src[128 + 8] = { 0 };
+    GLubyte stipple[136];
+    for (int i = 0; i < 136; i++)
+        stipple[i] = (GLubyte)(stipple_src[i] + (i * 37 + 11));
+    glNewList(1, GL_COMPILE);
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glClearDepth(0.3);
+    glClearStencil(3);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDepthFunc(GL_LEQUAL);
+    glDepthRange(0.1, 0.9);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_POLYGON_STIPPLE);
+    glPolygonStipple(stipple);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, 1);   /* executed now */
+    glPolygonStipple(stipple + 8);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    glColor4f(1, 0.5f, 0, 0.6f);
+    glRectf(4, 4, 60, 60);
+    glDisable(GL_POLYGON_STIPPLE);
+    glLineWidth(3);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x33f1);
+    glBegin(GL_LINES);
+    glVertex3f(4, 40, 0.5f);
+    glVertex3f(60, 50, 0.5f);
+    glEnd();
+    glPointSize(4);
+    glBegin(GL_POINTS);
+    glVertex2f(50, 10);
+    glEnd();
+    glScissor(8, 8, 40, 40);
+    glEnable(GL_SCISSOR_TEST);
+    glColorMask(1, 0, 1, 1);
+    glHint(GL_FOG_HINT, GL_NICEST);
+    glEndList();
+    fcu_clear(0, 0, 0, 0, 1);
+    glCallList(1);
+    fc_get_float(h, "depth clear", GL_DEPTH_CLEAR_VALUE, 1);
+    fc_get_float(h, "depth range", GL_DEPTH_RANGE, 2);
+    fc_get_integer(h, "scissor", GL_SCISSOR_BOX, 4);
+    fc_get_integer(h, "hint", GL_FOG_HINT, 1);
+    fc_get_integer(h, "line stipple", GL_LINE_STIPPLE_PATTERN, 1);
+    GLubyte got[128];
+    glGetPolygonStipple(got);
+    fc_blob(h, "stipple", got, sizeof(got));
+    fc_capture(h);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(1, 1, 1, 1);
+    glDisable(GL_LINE_STIPPLE);
+    glDisable(GL_BLEND);
+    /* fog and a clip plane, doubles stored as floats */
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLdouble plane[4] = { 1.0000001, 0.3333333333, 0, -20.123456789 };
+    static const GLfloat fogc[4] = { 0.2f, 0.9f, 0.4f, 1 };
+    glNewList(2, GL_COMPILE);
+    glClipPlane(GL_CLIP_PLANE0, plane);
+    glEnable(GL_CLIP_PLANE0);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, -0.5f);
+    glFogf(GL_FOG_END, 1.25f);
+    glFogfv(GL_FOG_COLOR, fogc);
+    glEnable(GL_FOG);
+    glDepthRange(0.0, 1.0);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0);
+    glVertex3f(2, 2, 0.9f);
+    glColor3f(0, 1, 0);
+    glVertex3f(62, 2, -0.9f);
+    glColor3f(0, 0, 1);
+    glVertex3f(2, 62, 0.1f);
+    glEnd();
+    glDisable(GL_FOG);
+    glDisable(GL_CLIP_PLANE0);
+    glEndList();
+    glCallList(2);
+    GLdouble eq[4];
+    glGetClipPlane(GL_CLIP_PLANE0, eq);
+    fc_blob(h, "clip plane", eq, sizeof(eq));
+    fc_capture(h);
+}
+
+/* glPushAttrib/glPopAttrib compiled, and GL_LIST_BIT */
+static void attrib_lists(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glPushAttrib(GL_ENABLE_BIT | GL_LIST_BIT | GL_CURRENT_BIT);
+    glEnable(GL_BLEND);
+    glListBase(40);
+    glColor3f(1, 0, 0);
+    glRectf(2, 2, 30, 30);
+    glPopAttrib();
+    glEndList();
+    glListBase(7);
+    glCallList(1);
+    fc_get_integer(h, "list base", GL_LIST_BASE, 1);
+    fc_is_enabled(h, "blend", GL_BLEND);
+    fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+}
+
+/* glRect variants, and glRectd (no save function in Mesa 22.3) */
+static void rects(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLshort sv[4] = { 2, 2, 14, 14 };
+    static const GLdouble dv[4] = { 18.5, 2.25, 30.75, 14.5 };
+    glNewList(1, GL_COMPILE);
+    glColor3f(1, 0, 0);
+    glRectsv(sv, sv + 2);
+    glColor3f(0, 1, 0);
+    glRectdv(dv, dv + 2);
+    glColor3f(0, 0, 1);
+    glRectd(34.5, 2.5, 46.25, 14.75);
+    glColor3f(1, 1, 0);
+    glRecti(50, 2, 62, 14);
+    glBegin(GL_TRIANGLES);
+    glRectf(2, 18, 14, 30);    /* inside glBegin/glEnd: another quad */
+    glEnd();
+    glEndList();
+    fc_error(h, "compile");
+    glCallList(1);
+    fc_error(h, "call");
+    fc_capture(h);
+}
+
+/* a long primitive fills the compiler's 1 MiB vertex store and wraps */
+static void long_strip(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 50000; i++) {
+        const float t = (float)i / 50000.0f;
+        glColor3f(t, 1.0f - t, (float)(i & 1));
+        glVertex2f(2.0f + 60.0f * t, (i & 1) ? 40.0f : 4.0f + 20.0f * t);
+    }
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    for (int i = 0; i < 40000; i++) {
+        const float a = 6.2831853f * (float)i / 40000.0f;
+        glColor3f(1, 1, (float)(i & 1));
+        glVertex2f(32 + 26 * cosf(a), 32 + 26 * sinf(a));
+    }
+    glEnd();
+    glEndList();
+    glCallList(1);
+    fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -573,5 +1048,15 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/call_lists_types", 64, 64, 3, "api dlist", call_lists_types),
     FC_CASE_RGBA("dlist/errors", 32, 32, 0, "api dlist errors query", errors),
     FC_CASE_RGBA("dlist/errors_execute", 32, 32, 0, "api dlist errors", errors_execute),
+    FC_CASE_RGBA("dlist/arrays", 64, 64, 2, "api dlist varray", arrays),
+    FC_CASE_RGBA("dlist/immediate_commands", 32, 32, 3, "api dlist readpix", immediate_commands),
+    FC_CASE_RGBA("dlist/execute_order", 64, 64, 3, "api dlist lighting", execute_order),
+    FC_CASE_RGBA("dlist/dangling", 64, 64, 1, "api dlist errors", dangling),
+    FC_CASE_RGBA("dlist/upgrade_wrap", 64, 64, 2, "api dlist", upgrade_wrap),
+    FC_CASE_RGBA("dlist/current_values", 64, 64, 1, "api dlist query polygon_mode", current_values),
+    FC_CASE_RGBA("dlist/more_state", 64, 64, 2, "api dlist fog clip", more_state),
+    FC_CASE_RGBA("dlist/attrib_lists", 32, 32, 1, "api dlist attrib", attrib_lists),
+    FC_CASE_RGBA("dlist/rects", 64, 32, 1, "api dlist", rects),
+    FC_CASE_RGBA("dlist/long_strip", 64, 64, 1, "api dlist", long_strip),
     { 0 }
 };

@@ -155,12 +155,57 @@ struct vertex_list {
    float *current_data;       /* the last vertex's attributes but the
                                * position, or NULL */
    bool draw_begins;
+   /* where the vertices were uploaded: loopback after compilation reads
+    * vertex (start + start_offset + j) at bo + vao_offset */
+   struct bo_image *bo;
+   unsigned vao_offset, start_offset;
    /* the indexed draws, indices resolved to vertices */
    struct fgl_vbo_vertex *verts;
    unsigned nverts;
    struct fgl_vbo_prim *draws;
    unsigned ndraws;
 };
+
+/* The buffer object the compiler uploads each vertex list to, vertices
+ * then indices, shared by the lists compiled after it until it is full
+ * [S: vbo_save_api.c:compile_vertex_list, save->current_bo].  The draws
+ * need none of it (they have their vertices), but a list replayed by
+ * loopback after compilation reads its vertices back from here, at the
+ * offsets Mesa computed for the indexed draw: where those are not the
+ * compiled vertices (vertices merged as duplicates, a wrapped line loop's
+ * closing vertex past the uploaded ones), Mesa reads other data, and so
+ * does this. */
+struct bo_image {
+   unsigned refs;
+   unsigned size;
+   uint8_t *data;             /* zeroed when created, as llvmpipe's */
+};
+
+#define SAVE_BO_MIN_SIZE (1024 * 1024)   /* VBO_SAVE_BUFFER_SIZE */
+
+static struct bo_image *bo_ref(struct bo_image *bo)
+{
+   if (bo)
+      bo->refs++;
+   return bo;
+}
+
+static void bo_unref(struct bo_image *bo)
+{
+   if (bo && --bo->refs == 0) {
+      free(bo->data);
+      free(bo);
+   }
+}
+
+static void bo_write(struct bo_image *bo, unsigned offset, const void *src, size_t bytes)
+{
+   if (!bo || offset >= bo->size)
+      return;
+   if (bytes > bo->size - offset)
+      bytes = bo->size - offset;
+   memcpy(bo->data + offset, src, bytes);
+}
 
 /* vbo_save_context: the vertex list being compiled */
 struct save_context {
@@ -180,6 +225,9 @@ struct save_context {
    unsigned copied_nr;
    bool dangling_attr_ref;
    bool no_current_update;
+   struct bo_image *bo;       /* current_bo */
+   unsigned bo_used;          /* current_bo_bytes_used */
+   unsigned vao_offset;       /* offset of save->VAO[0] (old_offset) */
 };
 
 struct fgl_dlist_state {
@@ -228,6 +276,7 @@ static struct display_list *make_list(GLuint name)
 
 static void free_vertex_list(struct vertex_list *vl)
 {
+   bo_unref(vl->bo);
    free(vl->buffer);
    free(vl->prims);
    free(vl->current_data);
@@ -371,6 +420,7 @@ void fgl_free_dlist(struct fgl_context *ctx)
    free(ls->save.buffer);
    free(ls->save.prims);
    free(ls->save.copied);
+   bo_unref(ls->save.bo);
    free(ls);
    ctx->ListState = NULL;
 }
@@ -879,7 +929,7 @@ static void fetch_vertex(const struct vertex_list *vl, const float *src,
 
 /* The index buffer of compile_vertex_list (all primitive types are
  * supported by llvmpipe, so none is converted), resolved to vertices. */
-static void build_draws(struct vertex_list *vl, const float *buffer)
+static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsigned *nidx)
 {
    const struct save_prim *prims = vl->prims;
    const unsigned prim_count = vl->prim_count;
@@ -894,7 +944,7 @@ static void build_draws(struct vertex_list *vl, const float *buffer)
    if (!indices || !merged) {
       free(indices);
       free(merged);
-      return;
+      return NULL;
    }
    unsigned idx = 0;
    int last = -1;
@@ -958,17 +1008,106 @@ static void build_draws(struct vertex_list *vl, const float *buffer)
    if (!vl->verts) {
       free(indices);
       free(merged);
-      return;
+      return NULL;
    }
    for (unsigned k = 0; k < idx; k++)
       fetch_vertex(vl, buffer + indices[k] * vl->vertex_size, &vl->verts[k]);
    vl->nverts = idx;
    vl->draws = merged;
    vl->ndraws = (unsigned)(last + 1);
-   free(indices);
+   *nidx = idx;
+   return indices;
 }
 
-static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl);
+static struct bo_image *bo_new(unsigned size)
+{
+   struct bo_image *bo = calloc(1, sizeof(*bo));
+   if (!bo)
+      return NULL;
+   bo->data = calloc(size, 1);
+   if (!bo->data) {
+      free(bo);
+      return NULL;
+   }
+   bo->size = size;
+   bo->refs = 1;
+   return bo;
+}
+
+/* compile_vertex_list's upload: the vertices (duplicates merged, unless
+ * the list is replayed by loopback), then the indices, placed where Mesa
+ * places them so that a later loopback reads what Mesa reads. */
+static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
+                               unsigned *indices, unsigned idx, unsigned *buffer_offset_out)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   const unsigned vsize = save->vertex_size;
+   const unsigned stride = vsize * (unsigned)sizeof(float);
+   const bool dedup = !ls->use_loopback;
+
+   /* add_vertex: vertices by first use, equal ones (bitwise) merged */
+   float *temp = NULL;
+   unsigned unique = 0;
+   if (dedup) {
+      temp = malloc((size_t)(idx ? idx : 1) * vsize * sizeof(float));
+      if (!temp)
+         return;
+      for (unsigned k = 0; k < idx; k++) {
+         const float *v = save->buffer + (size_t)indices[k] * vsize;
+         unsigned u;
+         for (u = 0; u < unique; u++)
+            if (memcmp(temp + (size_t)u * vsize, v, vsize * sizeof(float)) == 0)
+               break;
+         if (u == unique)
+            memcpy(temp + (size_t)unique++ * vsize, v, vsize * sizeof(float));
+         indices[k] = u;
+      }
+   }
+   const unsigned total_vert_count = dedup ? unique : idx;
+   const unsigned total_bytes = idx * 4u + total_vert_count * stride;
+
+   /* the start is padded to a multiple of the stride from the previous
+    * list's offset, so that both can share one vertex array */
+   const unsigned old_offset = save->vao_offset;
+   if (old_offset != save->bo_used && stride > 0 && save->bo) {
+      while (save->bo_used > old_offset && save->bo_used < save->bo->size &&
+             (save->bo_used - old_offset) % stride != 0)
+         save->bo_used++;
+   }
+   unsigned buffer_offset = save->bo_used;
+   unsigned start_offset = 0;
+   const unsigned available = save->bo ? save->bo->size - save->bo_used : 0;
+   if (total_bytes > available) {
+      bo_unref(save->bo);
+      save->bo = bo_new(total_bytes > SAVE_BO_MIN_SIZE ? total_bytes : SAVE_BO_MIN_SIZE);
+      save->bo_used = 0;
+      buffer_offset = 0;
+   } else {
+      if (buffer_offset > old_offset && stride > 0 && (buffer_offset - old_offset) % stride == 0) {
+         start_offset = (buffer_offset - old_offset) / stride;
+         buffer_offset = old_offset;
+      }
+      for (unsigned k = 0; k < idx; k++)
+         indices[k] += start_offset;
+   }
+   /* the vertices: the merged ones, or the first idx of the store */
+   if (!dedup)
+      ensure_alloc(save, idx * vsize);
+   const float *src = dedup ? temp : save->buffer;
+   bo_write(save->bo, save->bo_used, src, (size_t)total_vert_count * stride);
+   save->bo_used += total_vert_count * stride;
+   if (dedup)
+      save->bo_used = (save->bo_used + 3u) & ~3u;
+   bo_write(save->bo, save->bo_used, indices, (size_t)idx * 4u);
+   save->bo_used += idx * 4u;
+   free(temp);
+   vl->start_offset = start_offset;
+   *buffer_offset_out = buffer_offset;
+}
+
+static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl,
+                                 const uint8_t *base, size_t size);
 
 /* compile_vertex_list: the stored primitives become a vertex list node. */
 static void compile_vertex_list(struct fgl_context *ctx)
@@ -1027,13 +1166,27 @@ static void compile_vertex_list(struct fgl_context *ctx)
    if (vl->buffer && bytes)
       memcpy(vl->buffer, save->buffer, bytes);
 
-   if (vl->vertex_count && vl->prim_count && vl->buffer)
-      build_draws(vl, vl->buffer);
+   unsigned buffer_offset = 0;
+   if (vl->vertex_count && vl->prim_count && vl->buffer) {
+      unsigned nidx = 0;
+      unsigned *indices = build_draws(vl, vl->buffer, &nidx);
+      if (indices) {
+         upload_vertex_list(ctx, vl, indices, nidx, &buffer_offset);
+         free(indices);
+      }
+   }
    vl->draw_begins = vl->prim_count ? vl->prims[0].begin : save->prim_used && save->prims[0].begin;
+   if (!save->bo)
+      save->bo = bo_new(SAVE_BO_MIN_SIZE);
+   /* update_vao: the next list's old_offset */
+   save->vao_offset = buffer_offset;
+   vl->bo = bo_ref(save->bo);
+   vl->vao_offset = buffer_offset;
 
    /* GL_COMPILE_AND_EXECUTE: through the immediate-mode calls */
    if (ctx->ExecuteFlag)
-      loopback_vertex_list(ctx, vl);
+      loopback_vertex_list(ctx, vl, (const uint8_t *)vl->buffer,
+                           (size_t)vl->vertex_count * vl->vertex_size * sizeof(float));
 
    reset_counters(ctx);
 }
@@ -1645,8 +1798,11 @@ static void flush_for_draw(struct fgl_context *ctx)
 
 /* _vbo_loopback_vertex_list: the primitives as immediate-mode calls, the
  * materials first, then the other attributes, the position last; a
- * continued primitive skips its copied vertices. */
-static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl)
+ * continued primitive skips its copied vertices.  base: vertex 0 of the
+ * primitives' starts (size bytes readable; Mesa reads past it, the
+ * vertices past it are zeros here). */
+static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl,
+                                 const uint8_t *base, size_t size)
 {
    unsigned order[FGL_ATTR_COUNT], offset[FGL_ATTR_COUNT], nr = 0;
    unsigned off[FGL_ATTR_COUNT], o = 0;
@@ -1663,6 +1819,10 @@ static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_li
    if (vl->attrsz[FGL_ATTR_POS])
       order[nr] = FGL_ATTR_POS, offset[nr++] = off[FGL_ATTR_POS];
 
+   const size_t stride = (size_t)vl->vertex_size * sizeof(float);
+   float *data = malloc(stride ? stride : 1);
+   if (!data)
+      return;
    for (unsigned p = 0; p < vl->prim_count; p++) {
       const struct save_prim *prim = &vl->prims[p];
       unsigned start = prim->start;
@@ -1671,8 +1831,11 @@ static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_li
          fgl_exec_begin(ctx, prim->mode);
       else
          start += vl->wrap_count;
-      for (unsigned j = start; j < end && j < vl->vertex_count; j++) {
-         const float *data = vl->buffer + j * vl->vertex_size;
+      for (unsigned j = start; j < end; j++) {
+         const size_t at = (size_t)j * stride;
+         memset(data, 0, stride);
+         if (at < size)
+            memcpy(data, base + at, size - at < stride ? size - at : stride);
          for (unsigned k = 0; k < nr; k++) {
             const enum fgl_vbo_attr a = (enum fgl_vbo_attr)order[k];
             const unsigned sz = vl->attrsz[a];
@@ -1684,6 +1847,7 @@ static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_li
       if (prim->end)
          fgl_exec_end(ctx);
    }
+   free(data);
 }
 
 /* playback_copy_to_current */
@@ -1722,7 +1886,12 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
       return;
    }
    if (vl->kind == VL_LOOPBACK) {
-      loopback_vertex_list(ctx, vl);
+      /* from the buffer object, where the draw would read */
+      const size_t at = vl->vao_offset + (size_t)vl->start_offset * vl->vertex_size * sizeof(float);
+      if (vl->bo && at < vl->bo->size)
+         loopback_vertex_list(ctx, vl, vl->bo->data + at, vl->bo->size - at);
+      else
+         loopback_vertex_list(ctx, vl, NULL, 0);
       return;
    }
    if (vl->ndraws) {
