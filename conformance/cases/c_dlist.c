@@ -1035,6 +1035,225 @@ static void long_strip(fc_h *h)
     fc_capture(h);
 }
 
+
+/* line strips next to lines or strips are drawn as lines: the stipple
+ * restarts at every segment; a line loop compiled last becomes a strip */
+static void line_stipple(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0f0f);
+    glNewList(1, GL_COMPILE);
+    for (int k = 0; k < 2; k++) {
+        glBegin(GL_LINE_STRIP);
+        glColor3f(1, 0.5f * (float)k, 0);
+        glVertex2f(2, 4 + 10.0f * (float)k);
+        glVertex2f(19, 7 + 10.0f * (float)k);
+        glVertex2f(40, 3 + 10.0f * (float)k);
+        glVertex2f(62, 9 + 10.0f * (float)k);
+        glEnd();
+    }
+    glBegin(GL_LINE_STRIP);   /* alone: stays a strip */
+    glVertex2f(2, 30);
+    glVertex2f(21, 33);
+    glVertex2f(62, 28);
+    glEnd();
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glBegin(GL_LINE_LOOP);
+    glColor3f(0, 1, 1);
+    glVertex2f(4, 40);
+    glVertex2f(60, 42);
+    glVertex2f(50, 60);
+    glVertex2f(8, 58);
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    glVertex2f(20, 46);
+    glVertex2f(40, 47);
+    glVertex2f(30, 54);
+    glEnd();
+    glEndList();
+    glCallList(1);
+    glCallList(2);
+    fc_capture(h);
+    glDisable(GL_LINE_STIPPLE);
+}
+
+/* polygon offset, clipping and two-sided lighting over merged draws */
+static void offset_clip(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_DEPTH_TEST);
+    glNewList(1, GL_COMPILE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 3);
+    for (int k = 0; k < 3; k++) {
+        glBegin(GL_QUADS);
+        glColor3f(1, 0.3f * (float)k, 0.2f);
+        glVertex3f(-6 + 24.0f * (float)k, -5, 0.3f);
+        glColor3f(0.2f, 1, 0.3f * (float)k);
+        glVertex3f(20 + 24.0f * (float)k, -3, -0.2f);
+        glColor3f(0, 0.2f, 1);
+        glVertex3f(22 + 24.0f * (float)k, 26, 0.5f);
+        glColor3f(1, 1, 1);
+        glVertex3f(-4 + 24.0f * (float)k, 24, -0.7f);
+        glEnd();
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glEndList();
+    glCallList(1);
+    fc_capture(h);
+    /* two-sided lighting, back faces */
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat back[4] = { 0.9f, 0.2f, 0.1f, 1 }, front[4] = { 0.1f, 0.3f, 0.9f, 1 };
+    glNewList(2, GL_COMPILE);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glMaterialfv(GL_BACK, GL_DIFFUSE, back);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, front);
+    glBegin(GL_TRIANGLE_FAN);
+    glNormal3f(0, 0.3f, 0.95f);
+    glVertex2f(32, 32);
+    glVertex2f(60, 30);
+    glNormal3f(0.2f, 0, 0.97f);
+    glVertex2f(50, 55);
+    glVertex2f(20, 70);
+    glVertex2f(-5, 40);
+    glVertex2f(10, 5);
+    glEnd();
+    glDisable(GL_LIGHTING);
+    glEndList();
+    glCallList(2);
+    glFrontFace(GL_CW);
+    glTranslatef(0, 0, 0.1f);
+    glCallList(2);
+    glFrontFace(GL_CCW);
+    fc_capture(h);
+}
+
+/* glCallList while compiling forgets what the compiler knew: the repeated
+ * glShadeModel and glMaterial after it are compiled */
+static void redundant_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat red[4] = { 1, 0, 0, 1 }, blue[4] = { 0, 0, 1, 1 };
+    glNewList(1, GL_COMPILE);
+    glShadeModel(GL_SMOOTH);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glShadeModel(GL_FLAT);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+    glCallList(1);
+    glShadeModel(GL_FLAT);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glBegin(GL_TRIANGLES);
+    glNormal3f(0, 0, 1);
+    glColor3f(1, 1, 0);
+    glVertex2f(2, 2);
+    glColor3f(0, 1, 1);
+    glVertex2f(30, 2);
+    glVertex2f(2, 30);
+    glEnd();
+    glDisable(GL_LIGHTING);
+    smooth_quad(34, 2, 62, 30);
+    /* without a call in between, the repeats are left out */
+    glShadeModel(GL_SMOOTH);
+    glShadeModel(GL_SMOOTH);
+    smooth_quad(2, 34, 30, 62);
+    glEndList();
+    glShadeModel(GL_SMOOTH);
+    glCallList(2);
+    fc_get_integer(h, "shade model", GL_SHADE_MODEL, 1);
+    fc_capture(h);
+}
+
+/* list names: glGenLists after the highest name used, the search for a
+ * free block near the top of the name space, glDeleteLists ranges */
+static void names(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glNewList(1000, GL_COMPILE);
+    glEndList();
+    fc_value(h, "gen after 1000", glGenLists(2));
+    glDeleteLists(1000, 3);
+    fc_value(h, "gen after delete", glGenLists(1));
+    fc_value(h, "islist 1000", glIsList(1000));
+    fc_value(h, "islist 1003", glIsList(1003));
+    glNewList(0xfffffff0u, GL_COMPILE);
+    glEndList();
+    fc_value(h, "islist high", glIsList(0xfffffff0u));
+    fc_value(h, "gen near top", glGenLists(20));
+    fc_value(h, "gen near top small", glGenLists(5));
+    glDeleteLists(0xffffffe0u, 0x40);   /* wraps: deletes nothing */
+    fc_value(h, "islist high after wrap", glIsList(0xfffffff0u));
+    glDeleteLists(0xffffffe0u, 0x1f);
+    fc_value(h, "islist high after delete", glIsList(0xfffffff0u));
+    glDeleteLists(0, 2000);
+    fc_value(h, "islist 1 after delete", glIsList(1));
+    fc_value(h, "gen after all", glGenLists(1));
+    fc_error(h, "final");
+}
+
+/* a list that calls lists while COMPILE_AND_EXECUTE, and glEndList inside
+ * glBegin/glEnd */
+static void nested_execute(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    smooth_quad(2, 2, 14, 14);
+    glTranslatef(16, 0, 0);
+    glEndList();
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glColor3f(1, 1, 0);
+    glCallList(1);
+    fc_get_integer(h, "list index while calling", GL_LIST_INDEX, 1);
+    GLubyte ids[2] = { 1, 1 };
+    glCallLists(2, GL_UNSIGNED_BYTE, ids);
+    glEndList();
+    fc_get_float(h, "modelview", GL_MODELVIEW_MATRIX, 16);
+    fc_capture(h);
+    glLoadIdentity();
+    glTranslatef(0, 16, 0);
+    glCallList(2);
+    fc_capture(h);
+    /* glEndList with a primitive open */
+    glLoadIdentity();
+    glNewList(3, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glColor3f(0, 1, 0);
+    glVertex2f(2, 40);
+    glVertex2f(30, 40);
+    glEndList();
+    fc_error(h, "endlist inside begin c&e");
+    glVertex2f(2, 62);
+    glEnd();
+    fc_error(h, "end after list");
+    glNewList(4, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(34, 40);
+    glEndList();
+    fc_error(h, "endlist inside begin compile");
+    glBegin(GL_TRIANGLES);
+    glCallList(4);
+    glVertex2f(62, 40);
+    glVertex2f(34, 62);
+    glEnd();
+    fc_error(h, "call list 4 inside begin");
+    glCallList(3);
+    glVertex2f(2, 62);
+    glEnd();
+    fc_error(h, "final");
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1058,5 +1277,10 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/attrib_lists", 32, 32, 1, "api dlist attrib", attrib_lists),
     FC_CASE_RGBA("dlist/rects", 64, 32, 1, "api dlist", rects),
     FC_CASE_RGBA("dlist/long_strip", 64, 64, 1, "api dlist", long_strip),
+    FC_CASE_RGBA("dlist/line_stipple", 64, 64, 1, "api dlist lines", line_stipple),
+    FC_CASE_RGBA("dlist/offset_clip", 64, 64, 2, "api dlist clip lighting", offset_clip),
+    FC_CASE_RGBA("dlist/redundant_state", 64, 64, 1, "api dlist lighting", redundant_state),
+    FC_CASE_RGBA("dlist/names", 32, 32, 0, "api dlist", names),
+    FC_CASE_RGBA("dlist/nested_execute", 64, 64, 3, "api dlist errors", nested_execute),
     { 0 }
 };
