@@ -1050,19 +1050,33 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
    float *temp = NULL;
    unsigned unique = 0;
    if (dedup) {
+      unsigned hsize = 16;
+      while (hsize < 2 * idx)
+         hsize *= 2;
       temp = malloc((size_t)(idx ? idx : 1) * vsize * sizeof(float));
-      if (!temp)
+      unsigned *hash = calloc(hsize, sizeof(*hash));   /* unique index + 1 */
+      if (!temp || !hash) {
+         free(temp);
+         free(hash);
          return;
+      }
       for (unsigned k = 0; k < idx; k++) {
          const float *v = save->buffer + (size_t)indices[k] * vsize;
-         unsigned u;
-         for (u = 0; u < unique; u++)
-            if (memcmp(temp + (size_t)u * vsize, v, vsize * sizeof(float)) == 0)
-               break;
-         if (u == unique)
-            memcpy(temp + (size_t)unique++ * vsize, v, vsize * sizeof(float));
-         indices[k] = u;
+         uint32_t hv = 2166136261u;   /* FNV-1a of the vertex's bytes */
+         const uint8_t *b = (const uint8_t *)v;
+         for (size_t i = 0; i < vsize * sizeof(float); i++)
+            hv = (hv ^ b[i]) * 16777619u;
+         unsigned slot = hv & (hsize - 1);
+         while (hash[slot] &&
+                memcmp(temp + (size_t)(hash[slot] - 1) * vsize, v, vsize * sizeof(float)) != 0)
+            slot = (slot + 1) & (hsize - 1);
+         if (!hash[slot]) {
+            memcpy(temp + (size_t)unique * vsize, v, vsize * sizeof(float));
+            hash[slot] = ++unique;
+         }
+         indices[k] = hash[slot] - 1;
       }
+      free(hash);
    }
    const unsigned total_vert_count = dedup ? unique : idx;
    const unsigned total_bytes = idx * 4u + total_vert_count * stride;
