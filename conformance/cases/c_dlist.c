@@ -1254,6 +1254,51 @@ static void nested_execute(fc_h *h)
     fc_capture(h);
 }
 
+/* a second context sharing the first one's lists (OSMesaCreateContext's
+ * sharelist); one that does not share has its own names */
+static void shared_contexts(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(7, GL_COMPILE);
+    smooth_quad(2, 2, 14, 14);
+    glEndList();
+    static GLubyte buf2[16 * 16 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, fc_context(h));
+    OSMesaContext alone = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    fc_value(h, "contexts", shared != NULL && alone != NULL);
+    if (!shared || !alone)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 16, 16);
+    glViewport(0, 0, 16, 16);
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0, 16, 0, 16, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    fc_value(h, "shared islist 7", glIsList(7));
+    glCallList(7);
+    fc_value(h, "shared gen", glGenLists(1));
+    glNewList(9, GL_COMPILE);   /* defined here, called in the first */
+    glColor3f(1, 1, 0);
+    glRectf(18, 2, 30, 14);
+    glEndList();
+    glFinish();
+    fc_capture_buffer(h, buf2, 16, 16, 16, OSMESA_RGBA, 1);
+    OSMesaMakeCurrent(alone, buf2, GL_UNSIGNED_BYTE, 16, 16);
+    fc_value(h, "alone islist 7", glIsList(7));
+    fc_value(h, "alone gen", glGenLists(1));
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 32, 32);
+    fc_value(h, "first islist 9", glIsList(9));
+    glCallList(9);
+    OSMesaDestroyContext(shared);
+    OSMesaDestroyContext(alone);
+    fc_value(h, "islist 7 after destroy", glIsList(7));
+    glTranslatef(0, 16, 0);
+    glCallList(7);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1282,5 +1327,6 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/redundant_state", 64, 64, 1, "api dlist lighting", redundant_state),
     FC_CASE_RGBA("dlist/names", 32, 32, 0, "api dlist", names),
     FC_CASE_RGBA("dlist/nested_execute", 64, 64, 3, "api dlist errors", nested_execute),
+    FC_CASE_RGBA("dlist/shared_contexts", 32, 32, 2, "api dlist osmesa", shared_contexts),
     { 0 }
 };
