@@ -1299,6 +1299,37 @@ static void shared_contexts(fc_h *h)
     fc_capture(h);
 }
 
+/* the list queries through every glGet, outside and inside lists */
+static void queries(fc_h *h)
+{
+    static const GLenum pnames[] = { GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE, GL_MAX_LIST_NESTING };
+    static const char *labels[] = { "list base", "list index", "list mode", "max nesting" };
+    for (int round = 0; round < 3; round++) {
+        if (round == 1) {
+            glListBase(12345);
+            glNewList(77, GL_COMPILE);
+        } else if (round == 2) {
+            glNewList(0x80000001u, GL_COMPILE_AND_EXECUTE);
+            glListBase(0x80000000u);
+        }
+        for (int i = 0; i < 4; i++) {
+            char label[64];
+            snprintf(label, sizeof(label), "%s %d i", labels[i], round);
+            fc_get_integer(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d f", labels[i], round);
+            fc_get_float(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d b", labels[i], round);
+            fc_get_boolean(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d d", labels[i], round);
+            fc_get_double(h, label, pnames[i], 1);
+        }
+        if (round)
+            glEndList();
+    }
+    fc_get_integer(h, "list base after", GL_LIST_BASE, 1);
+    fc_error(h, "final");
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1328,5 +1359,6 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/names", 32, 32, 0, "api dlist", names),
     FC_CASE_RGBA("dlist/nested_execute", 64, 64, 3, "api dlist errors", nested_execute),
     FC_CASE_RGBA("dlist/shared_contexts", 32, 32, 2, "api dlist osmesa", shared_contexts),
+    FC_CASE_RGBA("dlist/queries", 32, 32, 0, "api dlist query", queries),
     { 0 }
 };
