@@ -1330,6 +1330,143 @@ static void queries(fc_h *h)
     fc_error(h, "final");
 }
 
+/* pseudo-random primitive sequences compiled into lists: every mode, short
+ * and incomplete primitives, attributes before, between and after
+ * vertices (new attributes mid-primitive wrap the vertex list), state
+ * changes between primitives, GL_COMPILE and GL_COMPILE_AND_EXECUTE */
+static unsigned fuzz_seed;
+static unsigned fuzz_next(unsigned n)
+{
+    fuzz_seed = fuzz_seed * 1103515245u + 12345u;
+    return (fuzz_seed >> 16) % n;
+}
+
+static float fuzz_coord(void)
+{
+    return (float)fuzz_next(2400) / 32.0f - 5.0f;
+}
+
+static void fuzz_list(int variant)
+{
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    const int nprims = 6 + (int)fuzz_next(10);
+    for (int p = 0; p < nprims; p++) {
+        const GLenum mode = modes[fuzz_next(10)];
+        const int n = (int)fuzz_next(9);
+        switch (fuzz_next(8)) {
+        case 0:
+            glColor3f((float)fuzz_next(4) / 3.0f, (float)fuzz_next(4) / 3.0f, 0.5f);
+            break;
+        case 1:
+            glShadeModel(fuzz_next(2) ? GL_FLAT : GL_SMOOTH);
+            break;
+        case 2:
+            glNormal3f(0, (float)fuzz_next(3) / 4.0f, 1);
+            break;
+        default:
+            break;
+        }
+        glBegin(mode);
+        for (int v = 0; v < n; v++) {
+            switch (fuzz_next(variant ? 6 : 4)) {
+            case 0:
+                glColor4f((float)fuzz_next(5) / 4.0f, (float)fuzz_next(5) / 4.0f,
+                          (float)fuzz_next(5) / 4.0f, 1);
+                break;
+            case 1:
+                glColor3ub((GLubyte)fuzz_next(256), (GLubyte)fuzz_next(256), 200);
+                break;
+            case 4:
+                glNormal3f((float)fuzz_next(3) / 3.0f, 0.5f, 0.8f);
+                break;
+            case 5:
+                glEdgeFlag(fuzz_next(2) ? GL_TRUE : GL_FALSE);
+                break;
+            default:
+                break;
+            }
+            glVertex3f(fuzz_coord(), fuzz_coord(), (float)fuzz_next(100) / 100.0f - 0.5f);
+        }
+        if (fuzz_next(4) == 0)
+            glColor3f(1, 1, 1);    /* after the last vertex */
+        glEnd();
+    }
+}
+
+static void fuzz(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glPointSize(2);
+    fuzz_seed = 20261121u;
+    for (int frame = 0; frame < 8; frame++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glPolygonMode(GL_FRONT_AND_BACK, frame == 3 || frame == 7 ? GL_LINE : GL_FILL);
+        if (frame >= 4) {
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            glEnable(GL_COLOR_MATERIAL);
+        }
+        glNewList(1, frame & 1 ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+        fuzz_list(frame & 2);
+        glEndList();
+        glNewList(2, GL_COMPILE);
+        if (frame & 2)
+            glColor3f(0.2f, 0.4f, 0.6f);
+        fuzz_list(frame & 2);
+        glEndList();
+        glTranslatef(2, 1, 0);
+        glCallList(1);
+        glCallList(2);
+        glLoadIdentity();
+        fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+        fc_get_float(h, "normal", GL_CURRENT_NORMAL, 3);
+        fc_error(h, "frame");
+        fc_capture(h);
+    }
+    glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+/* an empty glBegin/glEnd: llvmpipe skips a multi-draw whose first draw is
+ * empty, so in immediate mode the primitives of the same mode batched
+ * after it are not drawn; a compiled list drops empty primitives */
+static void empty_primitive(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass)
+            glNewList(1, GL_COMPILE);
+        glBegin(GL_TRIANGLES);
+        glVertex2f(1, 1);
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        glColor3f(1, 0, 0);
+        glVertex2f(2 + 32.0f * (float)pass, 2);
+        glVertex2f(30 + 32.0f * (float)pass, 3);
+        glColor3f(0, 1, 0);
+        glVertex2f(3 + 32.0f * (float)pass, 28);
+        glVertex2f(29 + 32.0f * (float)pass, 30);
+        glEnd();
+        glBegin(GL_TRIANGLES);   /* a second run, drawn */
+        glColor3f(0, 0, 1);
+        glVertex2f(2 + 32.0f * (float)pass, 40);
+        glVertex2f(30 + 32.0f * (float)pass, 40);
+        glVertex2f(16 + 32.0f * (float)pass, 60);
+        glEnd();
+        if (pass) {
+            glEndList();
+            glCallList(1);
+        }
+    }
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1360,5 +1497,7 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/nested_execute", 64, 64, 3, "api dlist errors", nested_execute),
     FC_CASE_RGBA("dlist/shared_contexts", 32, 32, 2, "api dlist osmesa", shared_contexts),
     FC_CASE_RGBA("dlist/queries", 32, 32, 0, "api dlist query", queries),
+    FC_CASE_RGBA("dlist/fuzz", 64, 64, 8, "api dlist polygon_mode lighting", fuzz),
+    FC_CASE_RGBA("dlist/empty_primitive", 64, 64, 1, "api dlist vertex", empty_primitive),
     { 0 }
 };

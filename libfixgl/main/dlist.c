@@ -1955,9 +1955,11 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
    if (vl->ndraws) {
       /* one indexed draw per run of a mode, the list's vertex format as
        * the draw's arrays (attributes outside it are the current values) */
+      unsigned exec_attr_size[FGL_ATTR_COUNT];
+      memcpy(exec_attr_size, ctx->Vbo.attr_size, sizeof(exec_attr_size));
       memcpy(ctx->Vbo.attr_size, vl->attrsz, sizeof(vl->attrsz));
       t_render_batch(ctx, vl->verts, vl->nverts, vl->draws, vl->ndraws);
-      memset(ctx->Vbo.attr_size, 0, sizeof(ctx->Vbo.attr_size));
+      memcpy(ctx->Vbo.attr_size, exec_attr_size, sizeof(exec_attr_size));
    }
    if (vl->kind == VL_COPY_CURRENT)
       playback_copy_to_current(ctx, vl);
