@@ -1356,9 +1356,11 @@ static void fuzz_list(int variant)
         const GLenum mode = modes[fuzz_next(10)];
         const int n = (int)fuzz_next(9);
         switch (fuzz_next(8)) {
-        case 0:
-            glColor3f((float)fuzz_next(4) / 3.0f, (float)fuzz_next(4) / 3.0f, 0.5f);
+        case 0: {
+            const float r = (float)fuzz_next(4) / 3.0f, g = (float)fuzz_next(4) / 3.0f;
+            glColor3f(r, g, 0.5f);
             break;
+        }
         case 1:
             glShadeModel(fuzz_next(2) ? GL_FLAT : GL_SMOOTH);
             break;
@@ -1371,13 +1373,17 @@ static void fuzz_list(int variant)
         glBegin(mode);
         for (int v = 0; v < n; v++) {
             switch (fuzz_next(variant ? 6 : 4)) {
-            case 0:
-                glColor4f((float)fuzz_next(5) / 4.0f, (float)fuzz_next(5) / 4.0f,
-                          (float)fuzz_next(5) / 4.0f, 1);
+            case 0: {
+                const float r = (float)fuzz_next(5) / 4.0f, g = (float)fuzz_next(5) / 4.0f;
+                const float b = (float)fuzz_next(5) / 4.0f;
+                glColor4f(r, g, b, 1);
                 break;
-            case 1:
-                glColor3ub((GLubyte)fuzz_next(256), (GLubyte)fuzz_next(256), 200);
+            }
+            case 1: {
+                const GLubyte r = (GLubyte)fuzz_next(256), g = (GLubyte)fuzz_next(256);
+                glColor3ub(r, g, 200);
                 break;
+            }
             case 4:
                 glNormal3f((float)fuzz_next(3) / 3.0f, 0.5f, 0.8f);
                 break;
@@ -1387,7 +1393,8 @@ static void fuzz_list(int variant)
             default:
                 break;
             }
-            glVertex3f(fuzz_coord(), fuzz_coord(), (float)fuzz_next(100) / 100.0f - 0.5f);
+            const float x = fuzz_coord(), y = fuzz_coord();
+            glVertex3f(x, y, (float)fuzz_next(100) / 100.0f - 0.5f);
         }
         if (fuzz_next(4) == 0)
             glColor3f(1, 1, 1);    /* after the last vertex */
@@ -1467,6 +1474,179 @@ static void empty_primitive(fc_h *h)
     fc_capture(h);
 }
 
+/* more pseudo-random lists: materials inside glBegin/glEnd, glRect,
+ * compiled array draws, state changes and nested calls between
+ * primitives, lists ending inside glBegin/glEnd */
+static void fuzz_list2(int depth)
+{
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    static GLfloat arr[12][2];
+    for (int k = 0; k < 12; k++) {
+        arr[k][0] = fuzz_coord();
+        arr[k][1] = fuzz_coord();   /* separate statements: a defined order */
+    }
+    const int nprims = 4 + (int)fuzz_next(8);
+    for (int p = 0; p < nprims; p++) {
+        switch (fuzz_next(10)) {
+        case 0: {
+            GLfloat m[4] = { 0, 0.5f, 0, 1 };
+            m[0] = (float)fuzz_next(4) / 3.0f;
+            m[2] = (float)fuzz_next(4) / 3.0f;
+            glMaterialfv(fuzz_next(2) ? GL_FRONT : GL_FRONT_AND_BACK, GL_DIFFUSE, m);
+            break;
+        }
+        case 1: {
+            const float x0 = fuzz_coord(), y0 = fuzz_coord();
+            const float x1 = fuzz_coord(), y1 = fuzz_coord();
+            glRectf(x0, y0, x1, y1);
+            break;
+        }
+        case 2: {
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glVertexPointer(2, GL_FLOAT, 0, arr);
+            const GLenum mode = modes[fuzz_next(10)];
+            const GLint first = (GLint)fuzz_next(4);
+            glDrawArrays(mode, first, (GLsizei)fuzz_next(9));
+            glDisableClientState(GL_VERTEX_ARRAY);
+            break;
+        }
+        case 3:
+            if (fuzz_next(2))
+                glEnable(GL_LINE_STIPPLE);
+            else
+                glDisable(GL_LINE_STIPPLE);
+            break;
+        case 4:
+            if (depth == 0)
+                glCallList(10 + fuzz_next(3));
+            break;
+        case 5:
+            glShadeModel(fuzz_next(2) ? GL_FLAT : GL_SMOOTH);
+            break;
+        default:
+            break;
+        }
+        glBegin(modes[fuzz_next(10)]);
+        const int n = (int)fuzz_next(10);
+        for (int v = 0; v < n; v++) {
+            switch (fuzz_next(7)) {
+            case 0: {
+                const float r = (float)fuzz_next(5) / 4.0f, g = (float)fuzz_next(5) / 4.0f;
+                glColor3f(r, g, 0.3f);
+                break;
+            }
+            case 1: {
+                const GLfloat m[4] = { 0.2f, (float)fuzz_next(5) / 4.0f, 0.9f, 1 };
+                glMaterialfv(GL_FRONT_AND_BACK, fuzz_next(2) ? GL_AMBIENT_AND_DIFFUSE : GL_EMISSION, m);
+                break;
+            }
+            case 2:
+                glNormal3f(0.1f * (float)fuzz_next(5), 0.2f, 0.9f);
+                break;
+            default:
+                break;
+            }
+            const float x = fuzz_coord(), y = fuzz_coord();
+            glVertex2f(x, y);
+        }
+        glEnd();
+    }
+}
+
+static void fuzz_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fuzz_seed = 77031u;
+    glLineStipple(2, 0x3c6f);
+    glEnable(GL_LIGHT0);
+    for (int frame = 0; frame < 6; frame++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (frame & 2)
+            glEnable(GL_LIGHTING);
+        else
+            glDisable(GL_LIGHTING);
+        for (int l = 10; l < 13; l++) {
+            glNewList((GLuint)l, GL_COMPILE);
+            fuzz_list2(1);
+            glEndList();
+        }
+        glNewList(1, frame & 1 ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+        fuzz_list2(0);
+        if (frame == 4) {
+            glBegin(GL_TRIANGLE_FAN);     /* ended outside the list */
+            glVertex2f(32, 32);
+            glVertex2f(60, 40);
+        }
+        glEndList();
+        if (frame == 4) {
+            glGetError();
+            glBegin(GL_TRIANGLE_FAN);
+            glVertex2f(32, 32);
+            glVertex2f(60, 40);
+        }
+        glVertex2f(40, 60);
+        if (frame == 4)
+            glEnd();
+        glCallList(1);
+        if (frame == 4) {
+            glVertex2f(20, 62);
+            glEnd();
+        }
+        fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+        fc_error(h, "frame");
+        fc_capture(h);
+    }
+    glDisable(GL_LIGHTING);
+    glDisable(GL_LINE_STIPPLE);
+}
+
+/* GL_COMPILE_AND_EXECUTE executes the part of a primitive stored before a
+ * new attribute wraps the vertex list: glBegin is executed and glEnd not
+ * yet.  Commands executed at once then run through the save table, without
+ * the glBegin/glEnd check of the dispatch (only their own, if any). */
+static void immediate_inside_begin(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat v[4][2] = { { 2, 2 }, { 30, 2 }, { 30, 30 }, { 2, 30 } };
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(2, 2);
+    glVertex2f(30, 4);
+    glColor3f(1, 0, 0);          /* wraps: glBegin + 2 vertices executed */
+    glVertex2f(16, 30);
+    glGetError();
+    fc_get_integer(h, "get inside", GL_LIST_INDEX, 1);
+    fc_error(h, "get");
+    glEnableClientState(GL_VERTEX_ARRAY);
+    fc_error(h, "enable client state");
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    fc_error(h, "vertex pointer");
+    glPixelStorei(GL_PACK_ALIGNMENT, 2);
+    fc_error(h, "pixel store");
+    fc_is_enabled(h, "isenabled", GL_VERTEX_ARRAY);
+    fc_error(h, "isenabled error");
+    GLfloat lv[4] = { 0 };
+    glGetLightfv(GL_LIGHT0, GL_DIFFUSE, lv);
+    fc_blob(h, "light", lv, sizeof(lv));
+    fc_error(h, "getlight");
+    GLubyte px[4] = { 9, 9, 9, 9 };
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "readpixels", px, sizeof(px));
+    fc_error(h, "readpixels error");
+    fc_value(h, "genlists", glGenLists(1));
+    fc_error(h, "genlists error");
+    glEnd();
+    glDrawArrays(GL_QUADS, 0, 4);
+    glEndList();
+    fc_error(h, "endlist");
+    fc_get_integer(h, "pack alignment", GL_PACK_ALIGNMENT, 1);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1499,5 +1679,7 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/queries", 32, 32, 0, "api dlist query", queries),
     FC_CASE_RGBA("dlist/fuzz", 64, 64, 8, "api dlist polygon_mode lighting", fuzz),
     FC_CASE_RGBA("dlist/empty_primitive", 64, 64, 1, "api dlist vertex", empty_primitive),
+    FC_CASE_RGBA("dlist/fuzz_state", 64, 64, 6, "api dlist lighting lines varray", fuzz_state),
+    FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
     { 0 }
 };

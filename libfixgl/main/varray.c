@@ -108,7 +108,7 @@ static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    GLenum format = GL_RGBA;
    if (bgra_ok && size == GL_BGRA) {   /* get_array_format */
       format = GL_BGRA;
@@ -185,7 +185,7 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid 
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (stride < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -266,7 +266,7 @@ static void client_state(GLenum cap, bool state)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    struct fgl_client_array *arr = fgl_client_array(ctx, cap);
    if (!arr) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -315,7 +315,7 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (!params)
       return;
    const struct fgl_client_array *A = ctx->Array.Array;
