@@ -7,6 +7,7 @@
  * and far planes, every feedback type for every primitive, lit, two-sided
  * and flat colours, polygon modes with edge flags, culling, clipping,
  * polygon offset, and the state that survives mode switches. */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -1041,6 +1042,149 @@ static void feedback_arrays(fc_h *h)
     glDisableClientState(GL_COLOR_ARRAY);
 }
 
+/* Long primitives: a polygon and a triangle fan of 5000 vertices are cut
+ * into the draw module's fan segments, whose first triangles restart the
+ * stipple (reset tokens in GL_LINE mode); a 5000-vertex line strip. */
+static GLfloat bigbuf[60000];
+
+static void feedback_long(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    const int n = 5000;
+    for (int pass = 0; pass < 3; pass++) {
+        char l[32];
+        for (size_t i = 0; i < sizeof bigbuf / sizeof bigbuf[0]; i++)
+            bigbuf[i] = FB_MARK;
+        glFeedbackBuffer((GLsizei)(sizeof bigbuf / sizeof bigbuf[0]), GL_2D, bigbuf);
+        glRenderMode(GL_FEEDBACK);
+        glPolygonMode(GL_FRONT_AND_BACK, pass == 2 ? GL_FILL : GL_LINE);
+        glBegin(pass == 0 ? GL_POLYGON : pass == 1 ? GL_TRIANGLE_FAN : GL_LINE_STRIP);
+        for (int i = 0; i < n; i++) {
+            const float a = 6.2831853f * (float)i / (float)n;
+            glVertex2f(16.0f + 14.0f * cosf(a), 16.0f + 14.0f * sinf(a));
+        }
+        glEnd();
+        const GLint cnt = glRenderMode(GL_RENDER);
+        snprintf(l, sizeof l, "long %d count", pass);
+        fc_value(h, l, cnt);
+        snprintf(l, sizeof l, "long %d buffer", pass);
+        fc_blob(h, l, bigbuf, sizeof bigbuf);
+    }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    sel_begin(64);
+    glPushName(1);
+    glBegin(GL_POLYGON);
+    for (int i = 0; i < n; i++) {
+        const float a = 6.2831853f * (float)i / (float)n;
+        glVertex3f(16.0f + 14.0f * cosf(a), 16.0f + 14.0f * sinf(a), 0.9f * sinf(3.0f * a));
+    }
+    glEnd();
+    sel_end(h, "long select", 16);
+}
+
+/* Vertices at infinity and NaN: no crash, the oracle's values. */
+static void feedback_nonfinite(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    const float inf = 1.0f / 0.0f, nan = 0.0f / 0.0f;
+    fb_begin(512, GL_4D_COLOR_TEXTURE);
+    glBegin(GL_POINTS);
+    glVertex3f(5.0f, 5.0f, nan);
+    glVertex3f(inf, 5.0f, 0.0f);
+    glVertex4f(5.0f, 5.0f, 0.0f, 0.0f);
+    glEnd();
+    glBegin(GL_LINES);
+    glVertex3f(2.0f, 2.0f, 0.0f);
+    glVertex3f(nan, 20.0f, 0.0f);
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glVertex3f(2.0f, 2.0f, 0.0f);
+    glVertex3f(20.0f, 2.0f, inf);
+    glVertex3f(12.0f, 25.0f, 0.0f);
+    glVertex3f(2.0f, 2.0f, 0.0f);
+    glVertex3f(20.0f, 2.0f, nan);
+    glVertex3f(12.0f, 25.0f, 0.0f);
+    glEnd();
+    fb_end(h, "nonfinite", 512);
+    sel_begin(64);
+    glPushName(1);
+    glBegin(GL_POINTS);
+    glVertex3f(5.0f, 5.0f, nan);
+    glEnd();
+    glLoadName(2);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(2.0f, 2.0f, 0.0f);
+    glVertex3f(20.0f, 2.0f, nan);
+    glVertex3f(12.0f, 25.0f, 0.5f);
+    glEnd();
+    sel_end(h, "nonfinite select", 16);
+
+    /* the same in GL_RENDER: a NaN clip coordinate is outside (unordered
+     * clip test), so the point is dropped and the triangle discarded */
+    fcu_clear(0.0f, 0.0f, 0.0f, 1.0f, 1.0);
+    glPointSize(5.0f);
+    glBegin(GL_POINTS);
+    glColor3f(1.0f, 1.0f, 0.0f);
+    glVertex3f(5.0f, 5.0f, nan);
+    glVertex3f(nan, 25.0f, 0.0f);
+    glVertex3f(25.0f, 25.0f, 0.0f);
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glColor3f(0.0f, 1.0f, 1.0f);
+    glVertex3f(2.0f, 2.0f, 0.0f);
+    glVertex3f(20.0f, 2.0f, nan);
+    glVertex3f(12.0f, 25.0f, 0.0f);
+    glEnd();
+    glBegin(GL_LINES);
+    glVertex3f(2.0f, 30.0f, 0.0f);
+    glVertex3f(30.0f, nan, 0.0f);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Rasterization-only state in feedback: polygon stipple, smooth polygons,
+ * depth test, scissor, blending do not change what is fed back; two-sided
+ * lighting with unfilled faces gives the back colours to the edges. */
+static void feedback_raster_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static GLubyte stip[128];
+    for (int i = 0; i < 128; i++)
+        stip[i] = (GLubyte)(i * 37 + 5);
+    glPolygonStipple(stip);
+    glEnable(GL_POLYGON_STIPPLE);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(4, 4, 3, 3);
+    glEnable(GL_BLEND);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_NEVER, 0.0f);
+    fb_begin(2048, GL_3D_COLOR);
+    prim(GL_TRIANGLES, fcu_tri_v, 6, 0, 0);
+    prim(GL_QUADS, fcu_quads_v, 4, 0, 0);
+    glDisable(GL_POLYGON_STIPPLE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_ALPHA_TEST);
+    light_setup();
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glPolygonMode(GL_FRONT, GL_LINE);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glBegin(GL_QUADS);
+    glNormal3f(0.1f, 0.2f, 1.0f);
+    glVertex2f(2, 2);
+    glVertex2f(14, 3);
+    glVertex2f(13, 15);
+    glVertex2f(3, 12);
+    glNormal3f(-0.3f, 0.2f, 0.9f);
+    glVertex2f(16, 16);
+    glVertex2f(17, 29);
+    glVertex2f(29, 28);
+    glVertex2f(28, 17);
+    glEnd();
+    fb_end(h, "raster state", 2048);
+}
+
 const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("select/picking", 64, 48, 0, "api select", picking),
     FC_CASE_RGBA("select/hit_depths", 32, 32, 0, "api select clip", hit_depths),
@@ -1062,5 +1206,8 @@ const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("feedback/offset", 32, 32, 0, "api feedback polygon", feedback_offset),
     FC_CASE_RGBA("select/mode_switch", 32, 32, 1, "api select feedback", mode_switch),
     FC_CASE_RGBA("feedback/arrays", 32, 32, 0, "api feedback varray", feedback_arrays),
+    FC_CASE_RGBA("feedback/long_primitives", 32, 32, 0, "api feedback select", feedback_long),
+    FC_CASE_RGBA("feedback/nonfinite", 32, 32, 1, "api feedback select", feedback_nonfinite),
+    FC_CASE_RGBA("feedback/raster_state", 32, 32, 0, "api feedback lighting", feedback_raster_state),
     { 0 }
 };
