@@ -86,12 +86,17 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
  * (draw_pipe_clip.c:interp), so its flat ones (the colours with GL_FLAT)
  * keep what temporary vertex `slot` last held (stale_flat); whatever the
  * slot now holds is what a later vertex in it starts from.  Not visible in
- * GL_RENDER, where llvmpipe takes flat colours from the provoking vertex. */
+ * GL_RENDER, where llvmpipe takes flat colours from the provoking vertex.
+ * Modelled per colour attribute: the oracle's slots hold vertex program
+ * outputs by position, which move when the outputs change (lighting,
+ * two-sided lighting, separate specular toggled between clips), and start
+ * as uninitialised memory (zero here). */
 void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned slot,
                           bool stale_flat)
 {
    float (*held)[4] = ctx->Feedback.ClipTmp[slot];
-   for (int a = 0; a < R_ATTR_FOG; a++) {
+   const int nattr = ctx->_Raster.num_attribs;
+   for (int a = 0; a < R_ATTR_FOG && a < nattr; a++) {
       if (stale_flat && (ctx->_Raster.flat_mask & (1u << a)))
          memcpy(v->r.attr[a], held[a], sizeof(held[a]));
       memcpy(held[a], v->r.attr[a], sizeof(held[a]));

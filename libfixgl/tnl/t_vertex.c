@@ -33,8 +33,9 @@ static inline unsigned clip_mask(const float *p)
 
 /* User planes: bit 6 + i when the plane distance is negative, the distance
  * computed as a chain of fused multiply-adds in component order
- * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; a NaN
- * distance is inside here (the clip stage then discards the triangle). */
+ * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; unordered
+ * like the view-volume tests, so a NaN distance is outside too (the clip
+ * stage then discards the primitive). */
 static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float *p)
 {
    unsigned m = 0, planes = ctx->Transform.ClipPlanesEnabled;
@@ -46,7 +47,7 @@ static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float
       sum = fmaf(pl[1], p[1], sum);
       sum = fmaf(pl[2], p[2], sum);
       sum = fmaf(pl[3], p[3], sum);
-      if (0.0f > sum)
+      if (!(0.0f <= sum))
          m |= 1u << (6 + i);
    }
    return m;
