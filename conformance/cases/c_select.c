@@ -160,7 +160,8 @@ static void picking(fc_h *h)
 /* Depths of hits: objects crossing the near and far planes (the clipped
  * vertices count), partly outside the view, a point exactly on the far
  * plane (1.0 -> 0 by the oracle's conversion), a slightly negative depth
- * (z = -w with w = 3), depth ranges, reversed depth range. */
+ * (a new vertex on the near plane: 0xffffff00), depth ranges, reversed
+ * depth range. */
 static void hit_depths(fc_h *h)
 {
     sel_begin(256);
@@ -195,6 +196,13 @@ static void hit_depths(fc_h *h)
     glVertex3f(-3.0f, 0.1f, -0.3f);
     glVertex3f(2.0f, -0.1f, -7.0f);
     glEnd();
+    glLoadName(7);
+    glBegin(GL_TRIANGLES);                  /* a new vertex on the near plane
+                                             * gets a window z below 0 */
+    glVertex3f(-0x1.2e147ap-2f, 0x1.083126p-3f, -0x1.db22dp-3f);
+    glVertex3f(0x1.70a3d8p-1f, 0x1.b126eap-2f, -0x1.1f5c28p+1f);
+    glVertex3f(-0x1.fef9dcp-2f, -0x1.0d4fep-1f, -0x1.208312p+1f);
+    glEnd();
     glLoadName(6);
     glBegin(GL_TRIANGLES);                  /* entirely outside */
     glVertex3f(3.0f, 3.0f, -2.0f);
@@ -219,7 +227,7 @@ static void hit_depths(fc_h *h)
     glEnd();
     glLoadName(9);
     glBegin(GL_POINTS);
-    glVertex4f(0.3f, 0.0f, -3.0f, 3.0f);    /* z/w rounds below -1 */
+    glVertex4f(0.3f, 0.0f, -3.0f, 3.0f);    /* z = -w: depth 0 */
     glEnd();
     glLoadName(10);                         /* the same after a hit reset */
     glBegin(GL_POINTS);
@@ -1006,6 +1014,27 @@ static void mode_switch(fc_h *h)
     fcu_rect(5, 5, 25, 25, -0.2f);
     fc_value(h, "feedback->feedback", glRenderMode(GL_FEEDBACK));
     fc_value(h, "feedback->render", glRenderMode(GL_RENDER));
+    /* the other mode's buffer may change while in a mode; select->select
+     * finishes the old selection */
+    fc_value(h, "render->select 2", glRenderMode(GL_SELECT));
+    glFeedbackBuffer(128, GL_2D, fbbuf + 128);
+    fc_error(h, "feedback buffer in select");
+    glPushName(5);
+    fcu_rect(4, 4, 8, 8, -0.25f);
+    fc_value(h, "select->select", glRenderMode(GL_SELECT));
+    fc_get_integer(h, "depth after select->select", GL_NAME_STACK_DEPTH, 1);
+    glPushName(6);
+    fcu_rect(4, 4, 8, 8, 0.75f);
+    fc_value(h, "select->feedback 2", glRenderMode(GL_FEEDBACK));
+    glSelectBuffer(32, selbuf + 32);
+    fc_error(h, "select buffer in feedback");
+    fcu_rect(4, 4, 8, 8, 0.75f);
+    fc_value(h, "feedback->select 2", glRenderMode(GL_SELECT));
+    glPushName(7);
+    fcu_rect(4, 4, 8, 8, 0.5f);
+    fc_value(h, "select->render 2", glRenderMode(GL_RENDER));
+    fc_blob(h, "select buffer 2", selbuf + 32, 16 * sizeof(GLuint));
+    fc_blob(h, "feedback buffer 2", fbbuf + 128, 32 * sizeof(GLfloat));
     fcu_color(5);
     fcu_tri(2, 2, 30, 2, 16, 30);
     fc_blob(h, "select buffer", selbuf, 16 * sizeof(GLuint));
@@ -1159,6 +1188,10 @@ static void feedback_raster_state(fc_h *h)
     glEnable(GL_BLEND);
     glEnable(GL_ALPHA_TEST);
     glAlphaFunc(GL_NEVER, 0.0f);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, -1.0f);
+    glFogf(GL_FOG_END, 0.5f);
     fb_begin(2048, GL_3D_COLOR);
     prim(GL_TRIANGLES, fcu_tri_v, 6, 0, 0);
     prim(GL_QUADS, fcu_quads_v, 4, 0, 0);
