@@ -8,6 +8,7 @@
  * and flat colours, polygon modes with edge flags, culling, clipping,
  * polygon offset, and the state that survives mode switches. */
 #include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -1218,6 +1219,117 @@ static void feedback_raster_state(fc_h *h)
     fb_end(h, "raster state", 2048);
 }
 
+/* A deterministic mix of states and primitives (splitmix-style generator
+ * local to the case), fed back and selected scene by scene: shade model,
+ * polygon modes, culling, front face, offset, user planes, a perspective
+ * view that the primitives cross at the near and far planes.  Lighting
+ * (lit) stays fixed within a case: the clipper's stale flat slots follow
+ * the vertex program's output layout (ORACLE-NOTES.md). */
+static uint64_t rng_state;
+
+static uint32_t rnd(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return (uint32_t)((z ^ (z >> 31)) >> 32);
+}
+
+static float rndf(float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(rnd() & 0xffffff) / 16777216.0f;
+}
+
+/* Fill the clipper's temporary slots (uninitialised at first) with a big
+ * smooth polygon clipped by every plane. */
+static void prime_clip_slots(void)
+{
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_POLYGON);
+    for (int i = 0; i < 12; i++) {
+        const float a = 6.2831853f * (float)i / 12.0f;
+        color_i(i);
+        glNormal3f(cosf(a), sinf(a), 1.0f);
+        glVertex3f(9.0f * cosf(a), 9.0f * sinf(a), -3.0f + 8.0f * sinf(2.0f * a));
+    }
+    glEnd();
+}
+
+static void stress(fc_h *h, bool lit)
+{
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    static const GLenum fills[] = { GL_FILL, GL_LINE, GL_POINT };
+    rng_state = lit ? 77 : 11;
+    glViewport(0, 0, 48, 40);
+    fcu_frustum(-1, 1, -0.8, 0.8, 1, 6);
+    if (lit) {
+        light_setup();
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+        glEnable(GL_COLOR_MATERIAL);
+    }
+    for (int scene = 0; scene < 24; scene++) {
+        char l[32];
+        const bool select = scene & 1;
+        if (select)
+            sel_begin(512);
+        else
+            fb_begin(2048, GL_4D_COLOR_TEXTURE);
+        prime_clip_slots();
+        glShadeModel(rnd() % 2 ? GL_FLAT : GL_SMOOTH);
+        glPolygonMode(GL_FRONT, fills[rnd() % 3]);
+        glPolygonMode(GL_BACK, fills[rnd() % 3]);
+        glFrontFace(rnd() % 2 ? GL_CW : GL_CCW);
+        if (rnd() % 3 == 0) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(rnd() % 2 ? GL_FRONT : GL_BACK);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
+        if (rnd() % 3 == 0) {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glEnable(GL_POLYGON_OFFSET_LINE);
+            glPolygonOffset(rndf(-3.0f, 3.0f), rndf(-50.0f, 50.0f));
+        } else {
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glDisable(GL_POLYGON_OFFSET_LINE);
+        }
+        if (rnd() % 3 == 0) {
+            const GLdouble plane[4] = { rndf(-1, 1), rndf(-1, 1), rndf(-0.3f, 0.3f), rndf(0, 2) };
+            glClipPlane(GL_CLIP_PLANE0, plane);
+            glEnable(GL_CLIP_PLANE0);
+        } else {
+            glDisable(GL_CLIP_PLANE0);
+        }
+        glPushMatrix();
+        glTranslatef(rndf(-0.5f, 0.5f), rndf(-0.5f, 0.5f), rndf(-4.0f, -1.5f));
+        glRotatef(rndf(0.0f, 360.0f), rndf(-1, 1), rndf(-1, 1), 1.0f);
+        glPushName(100);
+        for (int p = 0; p < 4; p++) {
+            const GLenum mode = modes[rnd() % 10];
+            const int n = 1 + (int)(rnd() % 9);
+            glLoadName((GLuint)(scene * 10 + p));
+            glBegin(mode);
+            for (int i = 0; i < n; i++) {
+                glColor4f(rndf(0, 1), rndf(0, 1), rndf(0, 1), rndf(0, 1));
+                glNormal3f(rndf(-1, 1), rndf(-1, 1), rndf(-1, 1));
+                glVertex3f(rndf(-2.0f, 2.0f), rndf(-2.0f, 2.0f), rndf(-3.5f, 3.0f));
+            }
+            glEnd();
+        }
+        glPopMatrix();
+        snprintf(l, sizeof l, "scene %d", scene);
+        if (select)
+            sel_end(h, l, 512);
+        else
+            fb_end(h, l, 2048);
+    }
+}
+
+static void stress_unlit(fc_h *h) { stress(h, false); }
+static void stress_lit(fc_h *h) { stress(h, true); }
+
 const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("select/picking", 64, 48, 0, "api select", picking),
     FC_CASE_RGBA("select/hit_depths", 32, 32, 0, "api select clip", hit_depths),
@@ -1242,5 +1354,7 @@ const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("feedback/long_primitives", 32, 32, 0, "api feedback select", feedback_long),
     FC_CASE_RGBA("feedback/nonfinite", 32, 32, 1, "api feedback select", feedback_nonfinite),
     FC_CASE_RGBA("feedback/raster_state", 32, 32, 0, "api feedback lighting", feedback_raster_state),
+    FC_CASE_RGBA("feedback/stress_unlit", 48, 40, 0, "api feedback select clip polygon", stress_unlit),
+    FC_CASE_RGBA("feedback/stress_lit", 48, 40, 0, "api feedback select clip polygon lighting", stress_lit),
     { 0 }
 };
