@@ -1327,6 +1327,44 @@ static void stress(fc_h *h, bool lit)
     }
 }
 
+/* The clipper's stale flat slots across a change of the vertex program's
+ * outputs: lit two-sided and then unlit smooth clips fill them (the unlit
+ * vertex, position, colour and texture coordinate, leaves the back colour
+ * behind it as it was), then lit two-sided flat clips of back faces read
+ * them (the back colour becomes the fed-back colour), then unlit ones. */
+static void stale_layout(fc_h *h)
+{
+    glViewport(0, 0, 32, 32);
+    fcu_frustum(-1, 1, -1, 1, 1, 6);
+    glTranslatef(0.0f, 0.0f, -2.0f);
+    fb_begin(2048, GL_3D_COLOR);
+    light_setup();
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glFrontFace(GL_CW);
+    static const GLfloat behind[4] = { 0.3f, 0.5f, -1.0f, 0.0f };
+    glLightfv(GL_LIGHT0, GL_POSITION, behind);   /* varied back colours */
+    prime_clip_slots();                   /* back colours into the slots */
+    glFrontFace(GL_CCW);
+    glDisable(GL_LIGHTING);
+    prime_clip_slots();                   /* the unlit outputs over them */
+    glEnable(GL_LIGHTING);
+    glShadeModel(GL_FLAT);
+    glBegin(GL_TRIANGLES);
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glVertex3f(-3.0f, -0.5f, 0.0f);
+    glVertex3f(0.0f, 2.5f, 0.0f);
+    glVertex3f(3.0f, -0.5f, 0.0f);
+    glEnd();
+    glDisable(GL_LIGHTING);
+    glBegin(GL_TRIANGLES);
+    glColor3f(0.2f, 0.4f, 0.6f);
+    glVertex3f(-3.0f, -0.5f, 0.0f);
+    glVertex3f(3.0f, -0.5f, 0.0f);
+    glVertex3f(0.0f, 2.5f, 0.0f);
+    glEnd();
+    fb_end(h, "stale", 2048);
+}
+
 static void stress_unlit(fc_h *h) { stress(h, false); }
 static void stress_lit(fc_h *h) { stress(h, true); }
 
@@ -1354,6 +1392,7 @@ const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("feedback/long_primitives", 32, 32, 0, "api feedback select", feedback_long),
     FC_CASE_RGBA("feedback/nonfinite", 32, 32, 1, "api feedback select", feedback_nonfinite),
     FC_CASE_RGBA("feedback/raster_state", 32, 32, 0, "api feedback lighting", feedback_raster_state),
+    FC_CASE_RGBA("feedback/stale_layout", 32, 32, 0, "api feedback clip lighting", stale_layout),
     FC_CASE_RGBA("feedback/stress_unlit", 48, 40, 0, "api feedback select clip polygon", stress_unlit),
     FC_CASE_RGBA("feedback/stress_lit", 48, 40, 0, "api feedback select clip polygon lighting", stress_lit),
     { 0 }

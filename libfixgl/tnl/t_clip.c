@@ -88,9 +88,10 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
  * slot now holds is what a later vertex in it starts from.  Not visible in
  * GL_RENDER, where llvmpipe takes flat colours from the provoking vertex.
  * Modelled per colour attribute: the oracle's slots hold vertex program
- * outputs by position, which move when the outputs change (lighting,
- * two-sided lighting, separate specular toggled between clips), and start
- * as uninitialised memory (zero here). */
+ * outputs by position (the primary colour always first after the position,
+ * the back colours after the unlit outputs); a change that moves them
+ * between clips (separate specular toggled) is not modelled, and the
+ * slots start as uninitialised memory (zero here; ORACLE-NOTES.md). */
 void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned slot,
                           bool stale_flat)
 {
