@@ -1334,6 +1334,7 @@ static void stress(fc_h *h, bool lit)
  * them (the back colour becomes the fed-back colour), then unlit ones. */
 static void stale_layout(fc_h *h)
 {
+    static const GLfloat behind[4] = { 0.3f, 0.5f, -1.0f, 0.0f };
     glViewport(0, 0, 32, 32);
     fcu_frustum(-1, 1, -1, 1, 1, 6);
     glTranslatef(0.0f, 0.0f, -2.0f);
@@ -1341,7 +1342,6 @@ static void stale_layout(fc_h *h)
     light_setup();
     glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
     glFrontFace(GL_CW);
-    static const GLfloat behind[4] = { 0.3f, 0.5f, -1.0f, 0.0f };
     glLightfv(GL_LIGHT0, GL_POSITION, behind);   /* varied back colours */
     prime_clip_slots();                   /* back colours into the slots */
     glFrontFace(GL_CCW);
@@ -1363,6 +1363,39 @@ static void stale_layout(fc_h *h)
     glVertex3f(0.0f, 2.5f, 0.0f);
     glEnd();
     fb_end(h, "stale", 2048);
+
+    /* lit two-sided clips in GL_SELECT (whose vertex has no texture
+     * coordinate, so its back colour sits where feedback's texture
+     * coordinate does) leave feedback's back colours in place */
+    glEnable(GL_LIGHTING);
+    fb_begin(2048, GL_3D_COLOR);
+    glFrontFace(GL_CW);
+    prime_clip_slots();
+    fb_end(h, "lit prime", 4);
+    sel_begin(64);
+    glFrontFace(GL_CCW);
+    glLightfv(GL_LIGHT0, GL_POSITION, behind);
+    glPushName(1);
+    glRotatef(30.0f, 0.0f, 0.0f, 1.0f);
+    prime_clip_slots();
+    glShadeModel(GL_FLAT);
+    glBegin(GL_TRIANGLES);
+    glNormal3f(0.0f, 0.3f, 1.0f);
+    glVertex3f(-3.0f, -0.5f, 0.0f);
+    glVertex3f(0.0f, 2.5f, 0.0f);
+    glVertex3f(3.0f, -0.5f, 0.0f);
+    glEnd();
+    sel_end(h, "lit select", 8);
+    glLoadIdentity();
+    glTranslatef(0.0f, 0.0f, -2.0f);
+    fb_begin(2048, GL_3D_COLOR);
+    glBegin(GL_TRIANGLES);
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glVertex3f(-3.0f, -0.5f, 0.0f);
+    glVertex3f(0.0f, 2.5f, 0.0f);
+    glVertex3f(3.0f, -0.5f, 0.0f);
+    glEnd();
+    fb_end(h, "after select", 2048);
 }
 
 static void stress_unlit(fc_h *h) { stress(h, false); }

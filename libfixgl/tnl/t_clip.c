@@ -100,6 +100,11 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
    for (int a = 0; a < R_ATTR_FOG && a < nattr; a++) {
       if (stale_flat && (ctx->_Raster.flat_mask & (1u << a)))
          memcpy(v->r.attr[a], held[a], sizeof(held[a]));
+      /* GL_SELECT's vertex has no texture coordinate, so its back colours
+       * land where GL_FEEDBACK's texture coordinate and back colours are:
+       * they do not become feedback's back colours */
+      if (ctx->RenderMode == GL_SELECT && (a == R_ATTR_BCOLOR0 || a == R_ATTR_BCOLOR1))
+         continue;
       memcpy(held[a], v->r.attr[a], sizeof(held[a]));
    }
 }
