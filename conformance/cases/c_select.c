@@ -447,6 +447,10 @@ static void select_errors(fc_h *h)
 
     glSelectBuffer(40, selbuf);
     fc_get_integer(h, "sel size 40", GL_SELECTION_BUFFER_SIZE, 1);
+    fc_get_float(h, "sel size float", GL_SELECTION_BUFFER_SIZE, 1);
+    fc_get_boolean(h, "render mode bool", GL_RENDER_MODE, 1);
+    fc_get_double(h, "max depth double", GL_MAX_NAME_STACK_DEPTH, 1);
+    fc_get_float(h, "feedback type float", GL_FEEDBACK_BUFFER_TYPE, 1);
     glGetPointerv(GL_SELECTION_BUFFER_POINTER, &p);
     fc_value(h, "pointer", p == (GLvoid *)selbuf);
     fc_value(h, "bad mode", glRenderMode(GL_POINT));
@@ -1221,8 +1225,10 @@ static void feedback_raster_state(fc_h *h)
 
 /* A deterministic mix of states and primitives (splitmix-style generator
  * local to the case), fed back and selected scene by scene: shade model,
- * polygon modes, culling, front face, offset, user planes, a perspective
- * view that the primitives cross at the near and far planes.  Lighting
+ * polygon modes, culling, front face, offset, user planes, per-vertex edge
+ * flags, depth range, line/point/stipple state that only rasterization
+ * uses, a perspective view that the primitives cross at the near and far
+ * planes.  Lighting
  * (lit) stays fixed within a case: the clipper's stale flat slots follow
  * the vertex program's output layout (ORACLE-NOTES.md). */
 static uint64_t rng_state;
@@ -1269,7 +1275,7 @@ static void stress(fc_h *h, bool lit)
         glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
         glEnable(GL_COLOR_MATERIAL);
     }
-    for (int scene = 0; scene < 24; scene++) {
+    for (int scene = 0; scene < 40; scene++) {
         char l[32];
         const bool select = scene & 1;
         if (select)
@@ -1302,6 +1308,27 @@ static void stress(fc_h *h, bool lit)
         } else {
             glDisable(GL_CLIP_PLANE0);
         }
+        /* rasterization-only state, and the depth range */
+        if (rnd() % 2)
+            glEnable(GL_LINE_STIPPLE);
+        else
+            glDisable(GL_LINE_STIPPLE);
+        glLineStipple((GLint)(1 + rnd() % 3), (GLushort)rnd());
+        glDepthRange(rndf(0, 1), rndf(0, 1));
+        glLineWidth(rndf(0.5f, 4.0f));
+        glPointSize(rndf(0.5f, 4.0f));
+        if (rnd() % 2)
+            glEnable(GL_LINE_SMOOTH);
+        else
+            glDisable(GL_LINE_SMOOTH);
+        if (rnd() % 3 == 0)
+            glEnable(GL_POLYGON_STIPPLE);
+        else
+            glDisable(GL_POLYGON_STIPPLE);
+        if (rnd() % 3 == 0)
+            glEnable(GL_POLYGON_OFFSET_POINT);
+        else
+            glDisable(GL_POLYGON_OFFSET_POINT);
         glPushMatrix();
         glTranslatef(rndf(-0.5f, 0.5f), rndf(-0.5f, 0.5f), rndf(-4.0f, -1.5f));
         glRotatef(rndf(0.0f, 360.0f), rndf(-1, 1), rndf(-1, 1), 1.0f);
@@ -1313,6 +1340,8 @@ static void stress(fc_h *h, bool lit)
             glBegin(mode);
             for (int i = 0; i < n; i++) {
                 glColor4f(rndf(0, 1), rndf(0, 1), rndf(0, 1), rndf(0, 1));
+                if (scene % 4 == 2)
+                    glEdgeFlag(rnd() % 2 ? GL_TRUE : GL_FALSE);
                 glNormal3f(rndf(-1, 1), rndf(-1, 1), rndf(-1, 1));
                 glVertex3f(rndf(-2.0f, 2.0f), rndf(-2.0f, 2.0f), rndf(-3.5f, 3.0f));
             }
