@@ -1689,6 +1689,50 @@ static void exec_format_current(fc_h *h)
     fc_capture(h);
 }
 
+/* selection and feedback through lists: the name-stack commands and
+ * glPassThrough are compiled, glRenderMode, glSelectBuffer and
+ * glFeedbackBuffer execute at once; a list's primitives are indexed draws
+ * in feedback too */
+static void select_feedback(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static GLuint sel[64];
+    static GLfloat fb[256];
+    glNewList(1, GL_COMPILE);
+    glInitNames();
+    glPushName(7);
+    glRectf(2, 2, 10, 10);
+    glLoadName(8);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(20, 2);
+    glVertex2f(30, 2);
+    glVertex2f(25, 12);
+    glEnd();
+    glPushName(9);
+    glPassThrough(5.5f);
+    smooth_quad(12, 14, 28, 30);
+    glPopName();
+    glPopName();
+    glPopName();                 /* underflow in GL_SELECT */
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glSelectBuffer(64, sel);     /* executed now */
+    glRenderMode(GL_SELECT);     /* executed now */
+    glEndList();
+    fc_get_integer(h, "render mode after compile", GL_RENDER_MODE, 1);
+    glCallList(2);
+    glCallList(1);
+    fc_error(h, "select");
+    fc_value(h, "hits", glRenderMode(GL_RENDER));
+    fc_blob(h, "select buffer", sel, sizeof(sel));
+    glFeedbackBuffer(256, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glCallList(1);
+    fc_value(h, "feedback count", glRenderMode(GL_RENDER));
+    fc_blob(h, "feedback buffer", fb, sizeof(fb));
+    fc_error(h, "final");
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1724,5 +1768,6 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/fuzz_state", 64, 64, 6, "api dlist lighting lines varray", fuzz_state),
     FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
     FC_CASE_RGBA("dlist/exec_format_current", 64, 64, 1, "api dlist query", exec_format_current),
+    FC_CASE_RGBA("dlist/select_feedback", 32, 32, 0, "api dlist select feedback", select_feedback),
     { 0 }
 };
