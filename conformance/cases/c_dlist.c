@@ -1733,6 +1733,38 @@ static void select_feedback(fc_h *h)
     fc_error(h, "final");
 }
 
+/* an attribute outside glBegin/glEnd after more than 8 stored vertices
+ * empties the immediate-mode vertex format, so the next glBegin starts a
+ * new batch: an empty glBegin/glEnd then hides nothing after it (with 8
+ * vertices or fewer it does); the same calls through a
+ * GL_COMPILE_AND_EXECUTE list */
+static void empty_after_points(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    for (int pass = 0; pass < 3; pass++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (pass == 2)
+            glNewList(1, GL_COMPILE_AND_EXECUTE);
+        glColor3f(1, 1, 0);
+        glBegin(GL_POINTS);
+        for (int k = 0; k < (pass == 1 ? 8 : 9); k++)
+            glVertex3f(3.0f + 6.0f * (float)k, 60, 0);
+        glEnd();
+        glNormal3f(0, 0, 1);
+        glBegin(GL_TRIANGLE_STRIP);
+        glEnd();
+        glBegin(GL_TRIANGLE_STRIP);
+        glVertex3f(4, 4, 0);
+        glVertex3f(40, 6, 0);
+        glVertex3f(6, 40, 0);
+        glVertex3f(42, 44, 0);
+        glEnd();
+        if (pass == 2)
+            glEndList();
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1769,5 +1801,6 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
     FC_CASE_RGBA("dlist/exec_format_current", 64, 64, 1, "api dlist query", exec_format_current),
     FC_CASE_RGBA("dlist/select_feedback", 32, 32, 0, "api dlist select feedback", select_feedback),
+    FC_CASE_RGBA("dlist/empty_after_points", 64, 64, 3, "api dlist vertex vbo", empty_after_points),
     { 0 }
 };
