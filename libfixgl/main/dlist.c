@@ -1120,7 +1120,12 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       }
       free(hash);
    }
-   const unsigned total_vert_count = dedup ? unique : idx;
+   /* max_index starts at 0: with no index at all (primitives without
+    * vertices) Mesa still uploads one vertex of its (uninitialized) merge
+    * buffer; zeros here */
+   if (dedup && unique == 0)
+      memset(temp, 0, vsize * sizeof(float));
+   const unsigned total_vert_count = dedup ? (unique ? unique : 1) : idx;
    const unsigned total_bytes = idx * 4u + total_vert_count * stride;
 
    /* the start is padded to a multiple of the stride from the previous
