@@ -235,6 +235,15 @@ struct fgl_transform_attrib {
    bool RescaleNormals;     /* GL_RESCALE_NORMAL */
 };
 
+/* GL_LIST_BIT (main/dlist.c) */
+struct fgl_list_attrib {
+   GLuint ListBase;         /* glListBase */
+};
+
+/* The display lists and the list compiler (main/dlist.c) */
+struct fgl_dlist_state;
+#define FGL_MAX_LIST_NESTING 64   /* MAX_LIST_NESTING [S: main/config.h] */
+
 /* GL_VIEWPORT_BIT */
 struct fgl_viewport_attrib {
    int X, Y, Width, Height;   /* after Mesa's clamping */
@@ -416,6 +425,7 @@ struct fgl_attrib_node {
    struct fgl_light_attrib Light;
    float Material[FGL_ATTR_COUNT - FGL_ATTR_MAT_FIRST][4];  /* GL_LIGHTING_BIT */
    struct fgl_line_attrib Line;
+   struct fgl_list_attrib List;
    struct fgl_point_attrib Point;
    struct fgl_polygon_attrib Polygon;
    uint32_t PolygonStipple[32];
@@ -467,6 +477,13 @@ struct fgl_context {
    /* the draw module's line stipple counter (draw_pipe_stipple.c): reset
     * by the first line of a primitive, kept across draws otherwise */
    unsigned StippleCounter;
+
+   /* ---- display lists (main/dlist.c) ---- */
+   struct fgl_list_attrib List;       /* GL_LIST_BIT */
+   bool CompileFlag;          /* compiling a list: entry points store calls
+                               * (off while a list executes) */
+   bool ExecuteFlag;          /* true, except while compiling GL_COMPILE */
+   struct fgl_dlist_state *ListState;
 
    /* ---- selection and feedback (main/feedback.c) ---- */
    GLenum RenderMode;
@@ -539,6 +556,18 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
       }                                                    \
    } while (0)
 #define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
+
+/* The same for the commands whose only check is the BeginEnd dispatch
+ * table's generic_nop: while a list is compiled the dispatch is the save
+ * table, whose entries for commands executed at once are the plain
+ * _mesa_ functions (main/dlist.c:_mesa_init_dispatch_save), so they run
+ * even when a GL_COMPILE_AND_EXECUTE list has left a glBegin open. */
+#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, ret)    \
+   do {                                                    \
+      if (!(ctx)->CompileFlag)                             \
+         ASSERT_OUTSIDE_BEGIN_END_RET(ctx, ret);           \
+   } while (0)
+#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx) ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, )
 
 /* Flush batched vertices before a state change and mark it dirty.  The
  * lighting group's setters also mark it changed for glPopAttrib (Mesa

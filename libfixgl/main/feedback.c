@@ -28,6 +28,7 @@
 #include <stdint.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_feedback(struct fgl_context *ctx)
 {
@@ -72,7 +73,7 @@ void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    /* [S: feedback.c:_mesa_FeedbackBuffer] */
    if (ctx->RenderMode == GL_FEEDBACK) {
       fgl_error(ctx, GL_INVALID_OPERATION);
@@ -111,6 +112,7 @@ void GLAPIENTRY glPassThrough(GLfloat token)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PassThrough, token);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: feedback.c:_mesa_PassThrough] ignored outside GL_FEEDBACK */
    if (ctx->RenderMode == GL_FEEDBACK) {
@@ -127,7 +129,7 @@ void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    /* [S: feedback.c:_mesa_SelectBuffer] the size is checked first */
    if (size < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
@@ -204,6 +206,7 @@ void GLAPIENTRY glInitNames(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE0(ctx, InitNames);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: feedback.c:_mesa_InitNames] ignored outside GL_SELECT */
    if (ctx->RenderMode != GL_SELECT)
@@ -218,6 +221,7 @@ void GLAPIENTRY glLoadName(GLuint name)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, LoadName, name);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: feedback.c:_mesa_LoadName] */
    if (ctx->RenderMode != GL_SELECT)
@@ -236,6 +240,7 @@ void GLAPIENTRY glPushName(GLuint name)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PushName, name);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: feedback.c:_mesa_PushName] */
    if (ctx->RenderMode != GL_SELECT)
@@ -254,6 +259,7 @@ void GLAPIENTRY glPopName(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE0(ctx, PopName);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: feedback.c:_mesa_PopName] */
    if (ctx->RenderMode != GL_SELECT)

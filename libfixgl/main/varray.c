@@ -16,6 +16,7 @@
  */
 #include <stddef.h>
 
+#include "main/dlist.h"
 #include "main/groups.h"
 #include "tnl/t_pipeline.h"
 
@@ -107,7 +108,7 @@ static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    GLenum format = GL_RGBA;
    if (bgra_ok && size == GL_BGRA) {   /* get_array_format */
       format = GL_BGRA;
@@ -184,7 +185,7 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid 
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (stride < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -265,7 +266,7 @@ static void client_state(GLenum cap, bool state)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    struct fgl_client_array *arr = fgl_client_array(ctx, cap);
    if (!arr) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -314,7 +315,7 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (!params)
       return;
    const struct fgl_client_array *A = ctx->Array.Array;
@@ -372,6 +373,10 @@ void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_arrays(ctx, mode, first, count);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
@@ -387,6 +392,10 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_elements(ctx, mode, count, type, indices);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    const GLenum err = validate_draw_elements(mode, count, type);
@@ -403,6 +412,10 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_range_elements(ctx, mode, start, end, count, type, indices);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    /* _mesa_validate_DrawRangeElements: end < start first */
