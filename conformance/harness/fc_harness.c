@@ -162,6 +162,11 @@ void fc_value(fc_h *h, const char *label, long long value)
     fc_rec_write(h->out, FC_REC_VALUE, label, &v, sizeof v, NULL, 0, NULL, 0);
 }
 
+void fc_documented_difference(fc_h *h, const char *label, const char *reason)
+{
+    fc_rec_write(h->out, FC_REC_DOCUMENTED, label, reason, strlen(reason), NULL, 0, NULL, 0);
+}
+
 void fc_pixel_store(fc_h *h, GLint pname, GLint value)
 {
     OSMesaPixelStore(pname, value);
