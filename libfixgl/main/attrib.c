@@ -48,6 +48,9 @@ static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
    GL_TEXTURE_1D, GL_TEXTURE_2D,
    GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+   GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+   GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
+   GL_SAMPLE_COVERAGE,
 };
 
 static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
@@ -118,7 +121,13 @@ static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *n
 {
    if (memcmp(&ctx->Fog, &node->Fog, sizeof(node->Fog)) == 0)
       return;
+   /* _mesa_PopAttrib sets the enable, colour, density, start, end, index
+    * and mode only: GL_FOG_COORDINATE_SOURCE and GL_FOG_DISTANCE_MODE_NV
+    * keep their current values (api/query_walk_popped) */
+   const GLenum source = ctx->Fog.CoordinateSource, distance = ctx->Fog.DistanceMode;
    ctx->Fog = node->Fog;
+   ctx->Fog.CoordinateSource = source;
+   ctx->Fog.DistanceMode = distance;
    memcpy(ctx->Fog.ColorUnclamped, node->Fog.Color, sizeof(node->Fog.Color));
    ctx->NewState |= FGL_NEW_FOG;
 }
@@ -174,31 +183,40 @@ struct attrib_group {
 #define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
- * the lighting group's materials).  GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
- * GL_LIST_BIT, GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
- * accepted and save nothing yet: their state gets a line here when it
- * lands (accum before colour, eval after enable, list after line, pixel
- * mode after list, texture after transform, as Mesa pops them).  The
- * raster position joins GL_CURRENT_BIT with glRasterPos; texture
- * coordinates, as vbo attributes before the materials, are in the
- * Current copy already. */
+ * the lighting group's materials).  GL_LIST_BIT is accepted and saves
+ * nothing yet: its state gets a line here when it lands (after line, as
+ * Mesa pops it).  The accumulation, evaluator, pixel-mode, texture and
+ * multisample groups save the state context.h holds for them so far
+ * (their setters come with their features); the raster position,
+ * texture coordinates and colour index are in Current.Index.. */
 static const struct attrib_group groups[] = {
+   /* state of features still to come (context.h), copied back as Mesa
+    * does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
+    * then _mesa_ReadBuffer, the texture bindings and active unit) */
+   GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
+   /* the current values outside the vbo (colour index, raster position...) */
+   GROUP(GL_CURRENT_BIT, Current.Index, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
+   GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),
    GROUP(GL_FOG_BIT, Fog, Fog, FGL_NEW_FOG, NULL, restore_fog),
    GROUP(GL_HINT_BIT, Hint, Hint, 0, NULL, restore_hint),
    GROUP(GL_LIGHTING_BIT, Light, Light, FGL_NEW_LIGHT, save_flush_current, restore_light),
    GROUP(GL_LIGHTING_BIT, Current.Attrib[FGL_ATTR_MAT_FIRST], Material, 0, NULL, restore_nothing),
    GROUP(GL_LINE_BIT, Line, Line, FGL_NEW_LINE, NULL, NULL),
+   GROUP(GL_PIXEL_MODE_BIT, Pixel, Pixel, 0, NULL, NULL),
    GROUP(GL_POINT_BIT, Point, Point, FGL_NEW_POINT, NULL, NULL),
    GROUP(GL_POLYGON_BIT, Polygon, Polygon, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_POLYGON_STIPPLE_BIT, PolygonStipple, PolygonStipple, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_SCISSOR_BIT, Scissor, Scissor, FGL_NEW_SCISSOR, NULL, NULL),
    GROUP(GL_STENCIL_BUFFER_BIT, Stencil, Stencil, FGL_NEW_STENCIL, NULL, NULL),
    GROUP(GL_TRANSFORM_BIT, Transform, Transform, FGL_NEW_CLIP, NULL, restore_transform),
+   GROUP(GL_TEXTURE_BIT, Texture, Texture, 0, NULL, NULL),
    GROUP(GL_VIEWPORT_BIT, Viewport, Viewport, FGL_NEW_VIEWPORT, NULL, NULL),
+   /* stored and queried only (no multisample buffer) */
+   GROUP(GL_MULTISAMPLE_BIT, Multisample, Multisample, 0, NULL, NULL),
 };
 
 void GLAPIENTRY glPushAttrib(GLbitfield mask)

@@ -102,6 +102,8 @@ void GLAPIENTRY glClear(GLbitfield mask)
       return;
    fgl_update_state(ctx);
    const struct r_state *rs = &ctx->_Raster;
+   if (ctx->Color.DrawBuffer != GL_NONE)
+      ctx->DrawBuffer->ColorDefined = true;
 
    /* Which buffers take a plain clear and which a quad
     * [S: main/clear.c:clear; state_tracker/st_cb_clear.c:st_Clear].
@@ -111,7 +113,9 @@ void GLAPIENTRY glClear(GLbitfield mask)
     * depth with writes off are not cleared. */
    const bool scissor = scissor_cuts(ctx, fb);
    const unsigned surf_mask = fb->AlphaBits > 0 ? 0xfu : 0x7u;
-   const unsigned cmask = ctx->Color.ColorMask & surf_mask;
+   /* no colour buffer is cleared under glDrawBuffer(GL_NONE) */
+   const unsigned cmask = ctx->Color.DrawBuffer == GL_NONE ? 0u
+                                                         : ctx->Color.ColorMask & surf_mask;
    bool color_quad = false, color_clear = false;
    if ((mask & GL_COLOR_BUFFER_BIT) && cmask != 0) {
       if (scissor || cmask != surf_mask)

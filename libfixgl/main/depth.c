@@ -47,5 +47,6 @@ void GLAPIENTRY glClearDepth(GLclampd depth)
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   ctx->Depth.Clear = depth < 0.0 ? 0.0 : (depth > 1.0 ? 1.0 : depth);
+   /* CLAMP(depth, 0.0, 1.0) [S: main/depth.c:_mesa_ClearDepth]: NaN -> 0 */
+   ctx->Depth.Clear = depth > 0.0 ? (depth > 1.0 ? 1.0 : depth) : 0.0;
 }

@@ -18,7 +18,7 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
    GL_MAP2_VERTEX_4, GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
-   GL_TEXTURE_GEN_T,
+   GL_TEXTURE_GEN_T, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
 };
 
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
@@ -100,6 +100,24 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_STENCIL_TEST:
       *dirty = FGL_NEW_STENCIL;
       return &ctx->Stencil.Enabled;
+   /* GL_MULTISAMPLE_BIT: stored and queried only, the framebuffer has no
+    * multisample buffer (nor has the oracle's) */
+   case GL_MULTISAMPLE:
+      *dirty = 0;
+      return &ctx->Multisample.Enabled;
+   case GL_SAMPLE_ALPHA_TO_COVERAGE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleAlphaToCoverage;
+   case GL_SAMPLE_ALPHA_TO_ONE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleAlphaToOne;
+   case GL_SAMPLE_COVERAGE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleCoverage;
+   case GL_SAMPLE_COVERAGE_INVERT:
+      /* a capability too in Mesa's compatibility context (enable.c) */
+      *dirty = 0;
+      return &ctx->Multisample.SampleCoverageInvert;
    default:
       return NULL;
    }

@@ -49,9 +49,10 @@ void GLAPIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height)
    fgl_set_viewport(ctx, x, y, width, height);
 }
 
+/* SATURATE = Mesa's CLAMP(x, 0, 1) (util/macros.h): NaN becomes 0 */
 static double clampd(double v)
 {
-   return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+   return v > 0.0 ? (v > 1.0 ? 1.0 : v) : 0.0;
 }
 
 void GLAPIENTRY glDepthRange(GLclampd nearval, GLclampd farval)
