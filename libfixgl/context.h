@@ -541,9 +541,13 @@ struct fgl_context {
    unsigned ClientAttribStackDepth;
    struct fgl_attrib_node AttribStack[FGL_MAX_ATTRIB_STACK_DEPTH];
    unsigned AttribStackDepth;
-   /* Mesa's ctx->PopAttribState: groups changed since the last push.  Only
-    * GL_LIGHTING_BIT and GL_CURRENT_BIT are tracked (attrib.c). */
+   /* Mesa's ctx->PopAttribState: groups changed since the last push.
+    * GL_LIGHTING_BIT and GL_CURRENT_BIT are marked by their setters; the
+    * other groups are compared with PopAttribBaseline (attrib.c). */
    GLbitfield PopAttribState;
+   /* the other groups as they were at the last push or pop, to tell which
+    * changed since (main/attrib.c changed_groups) */
+   struct fgl_attrib_node PopAttribBaseline;
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;

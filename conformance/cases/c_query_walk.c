@@ -339,7 +339,8 @@ static void query_walk_popped(fc_h *h)
 
 /* The same with a second, inner push of GL_CURRENT_BIT | GL_FOG_BIT:
  * Mesa's outer pop restores only the groups changed before the inner push
- * (known-differences.txt). */
+ * or after the inner pop, so everything set after the inner push stays
+ * (ORACLE-NOTES.md "glPopAttrib"). */
 static void query_walk_popped_nested(fc_h *h)
 {
     declare_walk_differences(h);

@@ -5,10 +5,12 @@
  * _mesa_PopAttrib].  Push copies each group the mask names into the node;
  * pop puts it back in Mesa's order.  Mesa restores most groups through
  * its setters, each of which returns early when the value is unchanged,
- * and only the groups changed since the push (ctx->PopAttribState): here a
- * group whose stored copy differs from the current state is copied back
- * and its dirty bit set, which is the same state, except for the lighting
- * group, whose materials can change without marking it (restore_light).
+ * and only the groups changed since the push (ctx->PopAttribState, see
+ * changed_groups, which also loses the changes made under an inner push as
+ * Mesa does): here a group whose stored copy differs from the current
+ * state is copied back and its dirty bit set, which is the same state,
+ * except for the lighting group, whose materials can change without
+ * marking it (restore_light).
  * Stored values come back
  * as they were stored: light positions, spot directions and clip planes
  * stay in the eye space of their glLight/glClipPlane call (Mesa copies
@@ -102,8 +104,10 @@ static void restore_current(struct fgl_context *ctx, const struct fgl_attrib_nod
 static void restore_light(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
    const struct fgl_light_attrib *l = &node->Light;
-   if (!(ctx->PopAttribState & GL_LIGHTING_BIT) &&
-       memcmp(&ctx->Light, l, sizeof(*l)) == 0)
+   /* every setter of the group marks it (FGL_FLUSH_VERTICES with
+    * FGL_NEW_LIGHT, t_vbo.c for the materials); a change made under an
+    * inner push no longer counts after its pop */
+   if (!(ctx->PopAttribState & GL_LIGHTING_BIT))
       return;
    const bool cm_call = (ctx->Light.ColorMaterialFace != l->ColorMaterialFace ||
                          ctx->Light.ColorMaterialMode != l->ColorMaterialMode) &&
@@ -219,6 +223,58 @@ static const struct attrib_group groups[] = {
    GROUP(GL_MULTISAMPLE_BIT, Multisample, Multisample, 0, NULL, NULL),
 };
 
+/* Copies the groups of mask into node (the save hooks first). */
+static void save_groups(struct fgl_context *ctx, struct fgl_attrib_node *node, GLbitfield mask)
+{
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(mask & g->bit))
+         continue;
+      if (g->save)
+         g->save(ctx, node);
+      if (g->size)
+         memcpy((char *)node + g->node_offset, (const char *)ctx + g->ctx_offset, g->size);
+   }
+}
+
+/* Mesa's ctx->PopAttribState: the groups changed since the last push,
+ * reset to the outer level's value by each pop, so that an outer pop skips
+ * the groups changed only while an inner push was active
+ * [S: main/attrib.c:_mesa_PushAttrib, _mesa_PopAttrib; every setter's
+ * FLUSH_VERTICES(ctx, new_state, pop_attrib_mask)].  GL_CURRENT_BIT and
+ * GL_LIGHTING_BIT are marked where Mesa marks them (t_vbo.c,
+ * FGL_FLUSH_VERTICES) and restored by their hooks; the other groups count
+ * as changed when they differ from ctx->PopAttribBaseline, their copy at
+ * the last push or pop.  (A value changed and set back is not counted:
+ * restoring it would change nothing.) */
+#define DIFF_TRACKED (~(GLbitfield)(GL_CURRENT_BIT | GL_LIGHTING_BIT))
+
+static GLbitfield changed_groups(struct fgl_context *ctx)
+{
+   const struct fgl_attrib_node *base = &ctx->PopAttribBaseline;
+   GLbitfield changed = 0;
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(g->bit & DIFF_TRACKED) || (changed & g->bit))
+         continue;
+      if (g->size) {
+         if (memcmp((const char *)ctx + g->ctx_offset, (const char *)base + g->node_offset,
+                    g->size) != 0)
+            changed |= g->bit;
+      } else if (g->bit == GL_ENABLE_BIT) {
+         for (int k = 0; k < FGL_ENABLE_ATTRIB_CAPS; k++) {
+            double v = 0.0;
+            fgl_is_cap(ctx, enable_caps[k], &v);
+            if ((v != 0.0) != base->Enable[k]) {
+               changed |= g->bit;
+               break;
+            }
+         }
+      }
+   }
+   return changed;
+}
+
 void GLAPIENTRY glPushAttrib(GLbitfield mask)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -232,18 +288,11 @@ void GLAPIENTRY glPushAttrib(GLbitfield mask)
    }
    struct fgl_attrib_node *node = &ctx->AttribStack[ctx->AttribStackDepth];
    node->Mask = mask;
-   node->OldPopAttribState = ctx->PopAttribState;
-   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
-      const struct attrib_group *g = &groups[i];
-      if (!(mask & g->bit))
-         continue;
-      if (g->save)
-         g->save(ctx, node);
-      if (g->size)
-         memcpy((char *)node + g->node_offset, (const char *)ctx + g->ctx_offset, g->size);
-   }
+   node->OldPopAttribState = ctx->PopAttribState | changed_groups(ctx);
+   save_groups(ctx, node, mask);
    ctx->AttribStackDepth++;
    ctx->PopAttribState = 0;
+   save_groups(ctx, &ctx->PopAttribBaseline, DIFF_TRACKED);
 }
 
 void GLAPIENTRY glPopAttrib(void)
@@ -263,9 +312,11 @@ void GLAPIENTRY glPopAttrib(void)
    /* FLUSH_CURRENT before anything is restored */
    if (node->Mask & GL_CURRENT_BIT)
       fgl_flush_current(ctx);
+   /* _mesa_PopAttrib: mask &= ctx->PopAttribState */
+   const GLbitfield changed = ctx->PopAttribState | changed_groups(ctx) | ~DIFF_TRACKED;
    for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
       const struct attrib_group *g = &groups[i];
-      if (!(node->Mask & g->bit))
+      if (!(node->Mask & g->bit & changed))
          continue;
       if (g->restore) {
          g->restore(ctx, node);
@@ -279,6 +330,7 @@ void GLAPIENTRY glPopAttrib(void)
       }
    }
    ctx->PopAttribState = node->OldPopAttribState;
+   save_groups(ctx, &ctx->PopAttribBaseline, DIFF_TRACKED);
 }
 
 void GLAPIENTRY glPushClientAttrib(GLbitfield mask)

@@ -24,16 +24,18 @@ static void set_index(float c)
    ctx->Current.Index = c;
 }
 
+/* (the vector forms ignore NULL, like fixgl's other vertex attributes;
+ * Mesa would crash) */
 void GLAPIENTRY glIndexd(GLdouble c) { set_index((GLfloat)c); }
-void GLAPIENTRY glIndexdv(const GLdouble *c) { set_index((GLfloat)c[0]); }
+void GLAPIENTRY glIndexdv(const GLdouble *c) { if (c) set_index((GLfloat)c[0]); }
 void GLAPIENTRY glIndexf(GLfloat c) { set_index(c); }
-void GLAPIENTRY glIndexfv(const GLfloat *c) { set_index(c[0]); }
+void GLAPIENTRY glIndexfv(const GLfloat *c) { if (c) set_index(c[0]); }
 void GLAPIENTRY glIndexi(GLint c) { set_index((GLfloat)c); }
-void GLAPIENTRY glIndexiv(const GLint *c) { set_index((GLfloat)c[0]); }
+void GLAPIENTRY glIndexiv(const GLint *c) { if (c) set_index((GLfloat)c[0]); }
 void GLAPIENTRY glIndexs(GLshort c) { set_index((GLfloat)c); }
-void GLAPIENTRY glIndexsv(const GLshort *c) { set_index((GLfloat)c[0]); }
+void GLAPIENTRY glIndexsv(const GLshort *c) { if (c) set_index((GLfloat)c[0]); }
 void GLAPIENTRY glIndexub(GLubyte c) { set_index((GLfloat)c); }
-void GLAPIENTRY glIndexubv(const GLubyte *c) { set_index((GLfloat)c[0]); }
+void GLAPIENTRY glIndexubv(const GLubyte *c) { if (c) set_index((GLfloat)c[0]); }
 
 /* [S: main/clear.c:_mesa_ClearIndex]: ctx->Color.ClearIndex = (GLuint) c,
  * without a flush.  The cast is done as the oracle's x86-64 build does it

@@ -236,7 +236,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOATN, ctx->ProjectionStack.Top->m, 16);
       return true;
    case GL_TEXTURE_MATRIX:
-      set_floats(val, V_FLOATN, ctx->TextureStack[0].Top->m, 16);
+      set_floats(val, V_FLOATN, ctx->TextureStack[ctx->Texture.CurrentUnit].Top->m, 16);
       return true;
    case GL_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->ModelviewStack.Depth + 1, 0, 0, 0);
@@ -245,7 +245,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->ProjectionStack.Depth + 1, 0, 0, 0);
       return true;
    case GL_TEXTURE_STACK_DEPTH:
-      set_ints(val, V_INT, 1, (int)ctx->TextureStack[0].Depth + 1, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->TextureStack[ctx->Texture.CurrentUnit].Depth + 1, 0, 0, 0);
       return true;
    case GL_MAX_CLIP_PLANES:
       set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
