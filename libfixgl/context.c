@@ -33,7 +33,6 @@ void fgl_error(struct fgl_context *ctx, GLenum error)
 static void init_pending_state(struct fgl_context *ctx)
 {
    struct fgl_current_attrib *cur = &ctx->Current;
-   cur->Index = 1.0f;
    for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
       cur->TexCoord[u][3] = 1.0f;
       cur->RasterTexCoords[u][3] = 1.0f;

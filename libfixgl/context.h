@@ -81,12 +81,8 @@ struct fgl_current_attrib {
     * and the materials (which GL groups with the lighting state) */
    float Attrib[FGL_ATTR_COUNT][4];
    /* Current values that do not take part in drawing yet, kept outside the
-    * vbo (Mesa keeps them as vbo attributes, VERT_ATTRIB_COLOR_INDEX,
-    * _TEX0.., _COLOR1, _FOG): the colour index (glIndex: stored and
-    * queried, no effect on an RGBA context), and the texture coordinates,
-    * secondary colour and fog coordinate, whose setters come with their
-    * features. */
-   float Index;                                  /* 1 */
+    * vbo until their setters come with their features (Mesa keeps them as
+    * vbo attributes, VERT_ATTRIB_TEX0.., _COLOR1, _FOG). */
    float TexCoord[FGL_MAX_TEXTURE_UNITS][4];     /* (0, 0, 0, 1) */
    float SecondaryColor[4];                      /* (0, 0, 0, 1) */
    float FogCoord;                               /* 0 */
@@ -486,9 +482,9 @@ struct fgl_attrib_node {
    GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
    struct fgl_colorbuffer_attrib Color;
    float Current[FGL_ATTR_MAT_FIRST][4];   /* ctx->Current, materials excluded */
-   /* the rest of ctx->Current: Index .. RasterPosValid */
+   /* the rest of ctx->Current: TexCoord .. RasterPosValid */
    unsigned char CurrentExtra[sizeof(struct fgl_current_attrib) -
-                              offsetof(struct fgl_current_attrib, Index)];
+                              offsetof(struct fgl_current_attrib, TexCoord)];
    struct fgl_multisample_attrib Multisample;
    struct fgl_accum_attrib Accum;
    struct fgl_pixel_attrib Pixel;

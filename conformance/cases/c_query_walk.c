@@ -958,7 +958,7 @@ static void getprocaddress(fc_h *h)
         "OSMesaGetProcAddress", "OSMesaMakeCurrent",
     };
     static const char *const absent[] = { "", "foo", "OSMesaFoo", "GLBegin", "g" };
-    static const char *const stubbed[] = { "glFooBar", "glTexImage2D", "gl", "glx" };
+    static const char *const stubbed[] = { "glFooBar", "glCreateShader", "gl", "glx" };
     for (size_t i = 0; i < sizeof present / sizeof present[0]; i++)
         fc_value(h, present[i], OSMesaGetProcAddress(present[i]) != NULL);
     for (size_t i = 0; i < sizeof absent / sizeof absent[0]; i++)
@@ -976,6 +976,182 @@ static void getprocaddress(fc_h *h)
         im(0x77);
     fc_get_integer(h, "GL_INDEX_WRITEMASK via pointer", GL_INDEX_WRITEMASK, 1);
     fc_error(h, "getprocaddress");
+}
+
+/* glArrayElement with an index array: the index goes into the vertex
+ * format like glIndex (and becomes GL_CURRENT_INDEX), drawing as without
+ * it; glDrawArrays ignores it. */
+static void index_array_element(fc_h *h)
+{
+    static const GLfloat v[8] = { 2, 2, 14, 3, 13, 14, 3, 12 };
+    static const GLubyte c[16] = { 255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255 };
+    static const GLshort idx[4] = { 7, -3, 300, 42 };
+    fc_pixel_ortho(h);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    glIndexPointer(GL_SHORT, 0, idx);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_INDEX_ARRAY);
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; i++)
+        glArrayElement(i);
+    glEnd();
+    fc_get_float(h, "GL_CURRENT_INDEX after glArrayElement", GL_CURRENT_INDEX, 1);
+    fc_capture(h);
+    glIndexi(5);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_get_float(h, "GL_CURRENT_INDEX after glDrawArrays", GL_CURRENT_INDEX, 1);
+    fc_capture(h);
+    fc_error(h, "index arrays");
+}
+
+/* ---- nested glPushAttrib: what an outer glPopAttrib restores ---- */
+
+static void query_attrib_state(fc_h *h, const char *when)
+{
+    static const struct qenum pn[] = {
+        Q(GL_VIEWPORT), Q(GL_DEPTH_RANGE), Q(GL_CULL_FACE), Q(GL_LIGHTING), Q(GL_LIGHT0),
+        Q(GL_SHADE_MODEL), Q(GL_FOG), Q(GL_FOG_START), Q(GL_COLOR_CLEAR_VALUE),
+        Q(GL_SCISSOR_BOX), Q(GL_SCISSOR_TEST), Q(GL_LINE_WIDTH), Q(GL_POINT_SIZE),
+        Q(GL_CURRENT_COLOR), Q(GL_CURRENT_INDEX), Q(GL_LIGHT_MODEL_AMBIENT),
+        Q(GL_ATTRIB_STACK_DEPTH), Q(GL_DRAW_BUFFER), Q(GL_INDEX_WRITEMASK),
+    };
+    char label[96];
+    for (size_t i = 0; i < sizeof pn / sizeof pn[0]; i++) {
+        snprintf(label, sizeof label, "%s %s", when, pn[i].name);
+        fc_get_float(h, label, pn[i].e, 4);
+    }
+    fc_error(h, when);
+}
+
+static void lit_quad(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glBegin(GL_QUADS);
+    glNormal3f(0, 0, 1);
+    glVertex2f(2, 2);
+    glNormal3f(0.6f, 0, 0.8f);
+    glVertex2f(14, 2);
+    glNormal3f(0, 0.6f, 0.8f);
+    glVertex2f(14, 14);
+    glNormal3f(-0.6f, 0, 0.8f);
+    glVertex2f(2, 14);
+    glEnd();
+}
+
+/* Changes made only under an inner push (whatever its mask) are kept by
+ * the outer pop; changes made before the inner push or after the inner
+ * pop are restored. */
+static void attrib_nested(fc_h *h)
+{
+    static const GLfloat amb[4] = { 0.5f, 0.25f, 0.125f, 1 };
+    glClearColor(0.1f, 0.2f, 0.3f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    query_attrib_state(h, "initial");
+
+    /* 1. everything changed under the inner push of another group */
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glPushAttrib(GL_POINT_BIT);
+    glViewport(4, 4, 8, 8);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, amb);
+    glShadeModel(GL_FLAT);
+    glEnable(GL_FOG);
+    glFogf(GL_FOG_START, -3);
+    glClearColor(0.9f, 0.1f, 0.1f, 1);
+    glLineWidth(3);
+    glIndexMask(0x0f);
+    glDrawBuffer(GL_BACK);
+    glPopAttrib();
+    glPopAttrib();
+    query_attrib_state(h, "inner only");
+    lit_quad(h);
+    fc_capture(h);
+
+    /* 2. changes before the inner push and after the inner pop */
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glScissor(1, 2, 3, 4);
+    glEnable(GL_SCISSOR_TEST);
+    glPushAttrib(GL_VIEWPORT_BIT | GL_ENABLE_BIT);
+    glScissor(5, 6, 7, 8);
+    glViewport(0, 0, 16, 16);
+    glDisable(GL_LIGHTING);
+    glPopAttrib();
+    glPointSize(4);
+    glPopAttrib();
+    query_attrib_state(h, "before and after");
+
+    /* 3. three levels, one group changed at each */
+    glPushAttrib(GL_VIEWPORT_BIT);
+    glViewport(1, 1, 10, 10);
+    glPushAttrib(GL_ENABLE_BIT);
+    glDepthRange(0.25, 0.5);
+    glEnable(GL_CULL_FACE);
+    glPushAttrib(GL_FOG_BIT);
+    glFogf(GL_FOG_START, 5);
+    glViewport(2, 2, 9, 9);
+    glPopAttrib();
+    query_attrib_state(h, "three levels, 1 pop");
+    glPopAttrib();
+    query_attrib_state(h, "three levels, 2 pops");
+    glPopAttrib();
+    query_attrib_state(h, "three levels, 3 pops");
+
+    /* 4. the current colour under an inner push of the lighting group */
+    glColor3f(1, 0, 0);
+    glPushAttrib(GL_CURRENT_BIT);
+    glPushAttrib(GL_LIGHTING_BIT);
+    glColor3f(0, 1, 0);
+    glIndexi(9);
+    glPopAttrib();
+    glPopAttrib();
+    query_attrib_state(h, "current under lighting push");
+    glClear(GL_COLOR_BUFFER_BIT);
+    lit_quad(h);
+    fc_capture(h);
+}
+
+/* The current values under nested pushes: a colour or index set under an
+ * inner push of another group becomes current (and marks GL_CURRENT_BIT)
+ * at the inner pop's flush, so the outer pop keeps it. */
+static void attrib_nested_current(fc_h *h)
+{
+    static const struct { GLbitfield inner; int color, index; } seq[] = {
+        { 0, 1, 0 }, { 0, 1, 1 }, { 0, 0, 1 }, { GL_LIGHTING_BIT, 1, 0 },
+        { GL_LIGHTING_BIT, 0, 1 }, { GL_LIGHTING_BIT, 1, 1 }, { GL_FOG_BIT, 1, 1 },
+        { GL_CURRENT_BIT, 1, 1 },
+    };
+    for (size_t i = 0; i < sizeof seq / sizeof seq[0]; i++) {
+        glColor3f(1, 0, 0);
+        glIndexf(1);
+        fc_get_float(h, "GL_CURRENT_COLOR reset", GL_CURRENT_COLOR, 4);
+        glPushAttrib(GL_CURRENT_BIT);
+        if (seq[i].inner)
+            glPushAttrib(seq[i].inner);
+        if (seq[i].color)
+            glColor3f(0, 1, 0);
+        if (seq[i].index)
+            glIndexi(9);
+        if (seq[i].inner)
+            glPopAttrib();
+        glPopAttrib();
+        fc_get_float(h, "GL_CURRENT_COLOR", GL_CURRENT_COLOR, 4);
+        fc_get_float(h, "GL_CURRENT_INDEX", GL_CURRENT_INDEX, 1);
+    }
+    /* the index set before the inner push, flushed only at the inner pop */
+    glIndexf(1);
+    fc_get_float(h, "GL_CURRENT_INDEX reset", GL_CURRENT_INDEX, 1);
+    glPushAttrib(GL_CURRENT_BIT);
+    glIndexi(9);
+    glPushAttrib(GL_FOG_BIT);
+    glPopAttrib();
+    glPopAttrib();
+    fc_get_float(h, "GL_CURRENT_INDEX before inner push", GL_CURRENT_INDEX, 1);
+    fc_error(h, "nested current");
 }
 
 const fc_case fc_cases_query_walk[] = {
@@ -1002,5 +1178,10 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE("api/draw_buffer_render", 16, 16, OSMESA_RGBA, 24, 8, 13, "api query",
             draw_buffer_render),
     FC_CASE_RGBA("api/read_buffer_render", 8, 8, 1, "api query", read_buffer_render),
+    FC_CASE_RGBA("api/attrib_nested", 16, 16, 2, "api query attrib", attrib_nested),
+    FC_CASE_RGBA("api/attrib_nested_current", 8, 8, 0, "api query attrib", attrib_nested_current),
+    FC_CASE_RGBA("api/index_array_element", 16, 16, 2, "api query varray", index_array_element),
+    FC_CASE("api/query_walk_bgra_z16", 16, 16, OSMESA_BGRA, 16, 0, 0, "api query", query_walk),
+    FC_CASE("api/query_walk_stencil_only", 16, 16, OSMESA_ARGB, 0, 8, 0, "api query", query_walk),
     { 0 }
 };

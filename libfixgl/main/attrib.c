@@ -192,7 +192,7 @@ struct attrib_group {
  * Mesa pops it).  The accumulation, evaluator, pixel-mode, texture and
  * multisample groups save the state context.h holds for them so far
  * (their setters come with their features); the raster position,
- * texture coordinates and colour index are in Current.Index.. */
+ * texture coordinates are in Current.TexCoord.. */
 static const struct attrib_group groups[] = {
    /* state of features still to come (context.h), copied back as Mesa
     * does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
@@ -200,8 +200,8 @@ static const struct attrib_group groups[] = {
    GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
-   /* the current values outside the vbo (colour index, raster position...) */
-   GROUP(GL_CURRENT_BIT, Current.Index, CurrentExtra, 0, NULL, NULL),
+   /* the current values outside the vbo (raster position...) */
+   GROUP(GL_CURRENT_BIT, Current.TexCoord, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
    GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),
@@ -312,8 +312,9 @@ void GLAPIENTRY glPopAttrib(void)
    /* FLUSH_CURRENT before anything is restored */
    if (node->Mask & GL_CURRENT_BIT)
       fgl_flush_current(ctx);
-   /* _mesa_PopAttrib: mask &= ctx->PopAttribState */
-   const GLbitfield changed = ctx->PopAttribState | changed_groups(ctx) | ~DIFF_TRACKED;
+   /* _mesa_PopAttrib: mask &= ctx->PopAttribState, after the FLUSH_CURRENT
+    * above (restore_light tests its bit itself) */
+   const GLbitfield changed = ctx->PopAttribState | changed_groups(ctx) | GL_LIGHTING_BIT;
    for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
       const struct attrib_group *g = &groups[i];
       if (!(node->Mask & g->bit & changed))

@@ -9,19 +9,17 @@
 
 #include "main/groups.h"
 
-/* [S: vbo/vbo_attrib_tmp.h, _mesa_Index*]: the index is a float vertex
- * attribute (VERT_ATTRIB_COLOR_INDEX), settable between glBegin and glEnd;
- * the integer variants convert with a plain (GLfloat) cast. */
+/* [S: vbo/vbo_attrib_tmp.h, _mesa_Index*]: the index is a one-component
+ * float vbo attribute (VBO_ATTRIB_COLOR_INDEX), settable between glBegin
+ * and glEnd, in the vertex format like any other (so it takes part in the
+ * batching, and becomes current at a flush, marking GL_CURRENT_BIT for
+ * glPopAttrib); the integer variants convert with a plain (GLfloat) cast. */
 static void set_index(float c)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   /* a changed current value marks GL_CURRENT_BIT for glPopAttrib
-    * (vbo_exec_copy_to_current) */
-   if (ctx->Current.Index != c)
-      ctx->PopAttribState |= GL_CURRENT_BIT;
-   ctx->Current.Index = c;
+   fgl_vbo_attr(ctx, FGL_ATTR_COLOR_INDEX, 1, c, 0.0f, 0.0f, 1.0f);
 }
 
 /* (the vector forms ignore NULL, like fixgl's other vertex attributes;

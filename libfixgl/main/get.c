@@ -374,7 +374,9 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
     * the types of get_hash_params.py ---- */
    /* colour index (CONST / CONTEXT_INT / CONTEXT_FLOAT) */
    case GL_CURRENT_INDEX:
-      set_floats(val, V_FLOAT, &ctx->Current.Index, 1);
+      /* extra_flush_current */
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_COLOR_INDEX], 1);
       return true;
    case GL_INDEX_CLEAR_VALUE:
       /* CONTEXT_INT(Color.ClearIndex): Mesa stores the GLuint */
