@@ -1008,6 +1008,50 @@ static void index_array_element(fc_h *h)
     fc_error(h, "index arrays");
 }
 
+/* A long GL_QUADS primitive with and without glIndex between its
+ * vertices: the index is one more float in the vertex format, so Mesa's
+ * vbo wraps the primitive into draws at other vertices (21845 instead of
+ * 26214 here).  (This scene does not make the wrap point visible: the
+ * oracle draws both passes alike; it checks the index path of a long
+ * primitive.) */
+static void index_batching(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glShadeModel(GL_SMOOTH);
+    for (int pass = 0; pass < 2; pass++) {
+        glBegin(GL_QUADS);
+        for (int q = 0; q < 7500; q++) {
+            if (pass)
+                glIndexi(q);
+            if (q >= 5120 && q < 5461) {
+                glColor3ub(255, 0, 0);
+                glVertex2f(-0.5f + (float)(q % 3), 1);
+                glColor3ub(0, 255, 0);
+                glVertex2f(31, 0.5f);
+                glColor3ub(0, 0, 255);
+                glVertex2f(31.5f, 31);
+                glColor3ub(255, 255, 255);
+                glVertex2f(1, 31.5f);
+            } else if (q == 5750) {
+                glColor3ub(255, 255, 0);
+                glVertex2f(-2, 2);
+                glVertex2f(1, 2);
+                glVertex2f(1, 3);
+                glVertex2f(-2, 3);
+            } else {
+                glColor3ub(0, 0, 0);
+                for (int k = 0; k < 4; k++)
+                    glVertex2f(16, 16);
+            }
+        }
+        glEnd();
+        fc_capture(h);
+    }
+    fc_get_float(h, "GL_CURRENT_INDEX", GL_CURRENT_INDEX, 1);
+}
+
 /* ---- nested glPushAttrib: what an outer glPopAttrib restores ---- */
 
 static void query_attrib_state(fc_h *h, const char *when)
@@ -1180,6 +1224,7 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE_RGBA("api/read_buffer_render", 8, 8, 1, "api query", read_buffer_render),
     FC_CASE_RGBA("api/attrib_nested", 16, 16, 2, "api query attrib", attrib_nested),
     FC_CASE_RGBA("api/attrib_nested_current", 8, 8, 0, "api query attrib", attrib_nested_current),
+    FC_CASE_RGBA("api/index_batching", 32, 32, 2, "api query", index_batching),
     FC_CASE_RGBA("api/index_array_element", 16, 16, 2, "api query varray", index_array_element),
     FC_CASE("api/query_walk_bgra_z16", 16, 16, OSMESA_BGRA, 16, 0, 0, "api query", query_walk),
     FC_CASE("api/query_walk_stencil_only", 16, 16, OSMESA_ARGB, 0, 8, 0, "api query", query_walk),
