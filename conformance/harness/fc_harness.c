@@ -23,7 +23,7 @@ struct fc_h {
 };
 
 /* Fill pattern of fresh colour buffers and of glGet output arrays. */
-#define FC_FILL 0xCD
+#define FC_FILL FC_FILL_BYTE
 #define FC_MAX_QUERY 32
 
 int fc_format_bpp(GLenum format)

@@ -27,6 +27,10 @@ enum fc_rec_kind {
                        * (fc_documented_difference) */
 };
 
+/* Fill byte of fresh colour buffers and of glGet output arrays (values a
+ * query did not write keep it). */
+#define FC_FILL_BYTE 0xCD
+
 /* FC_REC_QUERY value types (element sizes 4, 4, 8, 1). */
 enum fc_query_type { FC_Q_INT = 1, FC_Q_FLOAT, FC_Q_DOUBLE, FC_Q_BOOL };
 

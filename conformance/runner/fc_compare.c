@@ -103,18 +103,34 @@ static int next_rec(const unsigned char *buf, size_t len, size_t *pos, struct fc
     return 0;
 }
 
-/* Formats up to 16 query values of a payload into out. */
+/* Formats up to 16 query values of a payload into out; trailing values
+ * the query did not write (all bytes FC_FILL_BYTE) are counted, not shown. */
 static void format_query(const struct fc_rec *r, char *out, size_t size)
 {
     uint32_t head[2] = { 0, 0 };
-    size_t n = 0;
+    size_t n = 0, esize;
+    uint32_t count, unwritten = 0;
     const unsigned char *p = r->payload + sizeof head;
     out[0] = 0;
     if (r->payload_len < sizeof head)
         return;
     memcpy(head, r->payload, sizeof head);
+    esize = head[0] == FC_Q_DOUBLE ? 8 : head[0] == FC_Q_BOOL ? 1 : 4;
+    count = head[1];
+    if (r->payload_len < sizeof head + (uint64_t)count * esize)
+        count = (uint32_t)((r->payload_len - sizeof head) / esize);
+    while (count > 0) {
+        const unsigned char *e = p + (size_t)(count - 1) * esize;
+        size_t k = 0;
+        while (k < esize && e[k] == FC_FILL_BYTE)
+            k++;
+        if (k < esize)
+            break;
+        count--;
+        unwritten++;
+    }
     n += (size_t)snprintf(out, size, "{");
-    for (uint32_t i = 0; i < head[1] && i < 16 && n < size; i++) {
+    for (uint32_t i = 0; i < count && i < 16 && n < size; i++) {
         const char *sep = i ? "," : "";
         if (head[0] == FC_Q_INT) {
             int32_t v; memcpy(&v, p + 4 * i, 4);
@@ -130,7 +146,9 @@ static void format_query(const struct fc_rec *r, char *out, size_t size)
         }
     }
     if (n < size)
-        snprintf(out + n, size - n, "%s}", head[1] > 16 ? ",..." : "");
+        n += (size_t)snprintf(out + n, size - n, "%s}", count > 16 ? ",..." : "");
+    if (unwritten && n < size)
+        snprintf(out + n, size - n, " +%" PRIu32 " unwritten", unwritten);
 }
 
 /* The documented differences a case declared so far (fc_documented_difference). */
@@ -188,6 +206,12 @@ static int documented(struct declared *d, const struct fc_rec *ra, const struct 
              (const char *)d->store[i].payload);
     snprintf(doc->kind, sizeof doc->kind, "%s", kind_name(ra->kind));
     if (ra->kind == FC_REC_QUERY) {
+        static const char *const qtype[] = { "query", "query int", "query float",
+                                             "query double", "query boolean" };
+        uint32_t t = 0;
+        if (ra->payload_len >= 4)
+            memcpy(&t, ra->payload, 4);
+        snprintf(doc->kind, sizeof doc->kind, "%s", qtype[t <= FC_Q_BOOL ? t : 0]);
         format_query(ra, doc->oracle, sizeof doc->oracle);
         format_query(rb, doc->fixgl, sizeof doc->fixgl);
     } else if (ra->kind == FC_REC_VALUE) {

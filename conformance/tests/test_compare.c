@@ -336,7 +336,7 @@ int main(int argc, char **argv)
     CHECK(strstr(html, "oracle 0x0500, fixgl 0x0000") != NULL);
     CHECK(strstr(html, "img/unit_same") == NULL);
     CHECK(strstr(json, "\"name\": \"unit/doc_ok\"") != NULL &&
-          strstr(json, "\"documented_differences\": [{\"label\": \"limit\", \"kind\": \"query\", "
+          strstr(json, "\"documented_differences\": [{\"label\": \"limit\", \"kind\": \"query int\", "
                        "\"reason\": \"implementation string\", \"oracle\": \"{1}\", \"fixgl\": \"{2}\"}]") != NULL);
     CHECK(strstr(html, "Documented differences (4)") != NULL);
     free(json);
