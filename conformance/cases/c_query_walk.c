@@ -1052,6 +1052,33 @@ static void index_batching(fc_h *h)
     fc_get_float(h, "GL_CURRENT_INDEX", GL_CURRENT_INDEX, 1);
 }
 
+/* The draw buffer is context state and survives a rebind to another
+ * buffer; the read buffer lives in the OSMesa framebuffer, which a rebind
+ * to another size makes anew: back to GL_FRONT. */
+static void buffer_rebind(fc_h *h)
+{
+    static unsigned char same[8 * 8 * 4], bigger[12 * 10 * 4];
+    OSMesaContext ctx = fc_context(h);
+    void *own = fc_buffer(h);
+    struct { void *buf; int w, h; const char *label; } seq[] = {
+        { own, 8, 8, "same buffer" }, { same, 8, 8, "other buffer, same size" },
+        { bigger, 12, 10, "bigger buffer" }, { own, 8, 8, "back to 8x8" },
+    };
+    for (size_t i = 0; i < sizeof seq / sizeof seq[0]; i++) {
+        glDrawBuffer(i % 2 ? GL_NONE : GL_LEFT);
+        glReadBuffer(i % 2 ? GL_BACK : GL_FRONT_AND_BACK);
+        fc_error(h, "set");
+        fc_value(h, seq[i].label, OSMesaMakeCurrent(ctx, seq[i].buf, GL_UNSIGNED_BYTE,
+                                                   seq[i].w, seq[i].h));
+        fc_get_integer(h, "GL_DRAW_BUFFER", GL_DRAW_BUFFER, 1);
+        fc_get_integer(h, "GL_READ_BUFFER", GL_READ_BUFFER, 1);
+    }
+    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+    fc_value(h, "rebind after release", OSMesaMakeCurrent(ctx, own, GL_UNSIGNED_BYTE, 8, 8));
+    fc_get_integer(h, "GL_DRAW_BUFFER", GL_DRAW_BUFFER, 1);
+    fc_get_integer(h, "GL_READ_BUFFER", GL_READ_BUFFER, 1);
+}
+
 /* ---- nested glPushAttrib: what an outer glPopAttrib restores ---- */
 
 static void query_attrib_state(fc_h *h, const char *when)
@@ -1219,6 +1246,7 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE_RGBA("api/getprocaddress", 8, 8, 0, "api query", getprocaddress),
     FC_CASE_RGBA("api/index_calls", 16, 16, 2, "api query", index_calls),
     FC_CASE_RGBA("api/buffer_values", 8, 8, 0, "api query", buffer_values),
+    FC_CASE_RGBA("api/buffer_rebind", 8, 8, 0, "api query", buffer_rebind),
     FC_CASE("api/draw_buffer_render", 16, 16, OSMESA_RGBA, 24, 8, 13, "api query",
             draw_buffer_render),
     FC_CASE_RGBA("api/read_buffer_render", 8, 8, 1, "api query", read_buffer_render),

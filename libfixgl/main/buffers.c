@@ -85,3 +85,9 @@ void GLAPIENTRY glReadBuffer(GLenum buffer)
       return;
    ctx->Pixel.ReadBuffer = buffer;
 }
+
+/* A new window framebuffer's ColorReadBuffer: GL_FRONT (single-buffered) */
+void fgl_new_window_framebuffer(struct fgl_context *ctx)
+{
+   ctx->Pixel.ReadBuffer = GL_FRONT;
+}

@@ -285,6 +285,13 @@ OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
    if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height) {
       if (!alloc_buffers(c, width, height))
          return GL_FALSE;
+      /* Mesa destroys the osmesa_buffer of another size and makes a new
+       * window framebuffer: the read buffer, which lives there, is GL_FRONT
+       * again; the draw buffer is context state and carries over
+       * [S: gallium/frontends/osmesa/osmesa.c:OSMesaMakeCurrent;
+       * main/framebuffer.c:_mesa_initialize_window_framebuffer;
+       * main/context.c:_mesa_make_current, _mesa_update_draw_buffers] */
+      fgl_new_window_framebuffer(c->gl);
    }
    c->user_buffer = buffer;
    c->type = type;
