@@ -256,10 +256,13 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     struct tag_count t[64], total;
     size_t nt = collect_tags(r, t, 64);
     uint64_t px = 0, mism = 0, dmism = 0;
+    int ndoc = 0, ndoc_cases = 0;
 
     memset(&total, 0, sizeof total);
     for (size_t i = 0; i < r->n; i++) {
         count_into(&total, r->entries[i]);
+        ndoc += r->entries[i]->res.ndocumented;
+        ndoc_cases += r->entries[i]->res.ndocumented > 0;
         px += r->entries[i]->res.pixels;
         mism += r->entries[i]->res.mismatched_pixels;
         dmism += r->entries[i]->res.depth_mismatches;
@@ -270,6 +273,9 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     fprintf(out, "%-16s %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.differs, total.error);
     fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
             mism, px, dmism);
+    if (ndoc)
+        fprintf(out, "documented differences: %d records in %d cases (listed in the report)\n",
+                ndoc, ndoc_cases);
     fprintf(out, "oracle: %s | %s\n", r->renderer[0] ? r->renderer[0] : "?", r->version[0] ? r->version[0] : "?");
     fprintf(out, "fixgl:  %s | %s\n", r->renderer[1] ? r->renderer[1] : "?", r->version[1] ? r->version[1] : "?");
 }
