@@ -11,6 +11,7 @@
  * compressed texture format list, and OSMesaGetProcAddress answering NULL
  * for functions fixgl lacks. */
 #include "cases.h"
+#include "fc_rng.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -1079,6 +1080,158 @@ static void buffer_rebind(fc_h *h)
     fc_get_integer(h, "GL_READ_BUFFER", GL_READ_BUFFER, 1);
 }
 
+/* ---- query fuzz: random setter calls (valid and not), then the walk ---- */
+
+static float fuzz_float(fc_rng *r)
+{
+    static const float special[] = {
+        0.0f, -0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 1.5f, 2.5f, -2.5f, 3.5f, 1e-40f, 1e-10f,
+        0.99999994f, 1.0000001f, 255.5f, 65535.5f, 3e9f, -3e9f, 2147483520.0f, 1e10f,
+        -1e10f, 1e30f, INFINITY, -INFINITY, NAN, 1.0f / 3.0f, 0.1f,
+    };
+    if (fc_rng_below(r, 3) == 0)
+        return special[fc_rng_below(r, sizeof special / sizeof special[0])];
+    return (float)((double)fc_rng_range(r, -3000, 3000) / 1000.0);
+}
+
+static int fuzz_int(fc_rng *r)
+{
+    static const int special[] = { 0, 1, -1, 2, 7, 8, 255, 256, -256, 65535, 16384, 16385,
+                                   32767, -32768, 2147483647, -2147483647 - 1 };
+    if (fc_rng_below(r, 2) == 0)
+        return special[fc_rng_below(r, sizeof special / sizeof special[0])];
+    return fc_rng_range(r, -40, 40);
+}
+
+static GLenum fuzz_enum(fc_rng *r, const GLenum *valid, size_t n)
+{
+    static const GLenum junk[] = { 0, 1, 0x1234, GL_FLOAT, GL_RGBA, GL_TEXTURE_2D, GL_LIGHT0,
+                                   GL_NONE, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK };
+    if (fc_rng_below(r, 5) == 0)
+        return junk[fc_rng_below(r, sizeof junk / sizeof junk[0])];
+    return valid[fc_rng_below(r, (uint32_t)n)];
+}
+
+#define FUZZ_ENUM(r, ...) \
+    fuzz_enum(r, (const GLenum[]){ __VA_ARGS__ }, sizeof((const GLenum[]){ __VA_ARGS__ }) / sizeof(GLenum))
+#define FUNCS GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS
+#define FACTORS GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR, \
+    GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA, \
+    GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE, GL_CONSTANT_COLOR, GL_CONSTANT_ALPHA
+#define STENCIL_OPS GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, \
+    GL_DECR_WRAP
+#define HINT_TARGETS GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT, \
+    GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_TEXTURE_COMPRESSION_HINT, GL_GENERATE_MIPMAP_HINT, \
+    GL_FRAGMENT_SHADER_DERIVATIVE_HINT
+#define PIXEL_STORES GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST, GL_PACK_ROW_LENGTH, \
+    GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_IMAGES, \
+    GL_PACK_ALIGNMENT, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH, \
+    GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_IMAGES, \
+    GL_UNPACK_ALIGNMENT
+
+/* One random state call, recorded with its error. */
+static void fuzz_call(fc_h *h, fc_rng *r)
+{
+    float f[16];
+    for (int i = 0; i < 16; i++)
+        f[i] = fuzz_float(r);
+    const int i0 = fuzz_int(r), i1 = fuzz_int(r), i2 = fuzz_int(r), i3 = fuzz_int(r);
+    const unsigned op = fc_rng_below(r, 46);
+    switch (op) {
+    case 0: glColor4f(f[0], f[1], f[2], f[3]); break;
+    case 1: glNormal3f(f[0], f[1], f[2]); break;
+    case 2: glIndexf(f[0]); break;
+    case 3: glClearColor(f[0], f[1], f[2], f[3]); break;
+    case 4: glClearDepth(f[0]); break;
+    case 5: glClearIndex(f[0]); break;
+    case 6: glClearStencil(i0); break;
+    case 7: glAlphaFunc(FUZZ_ENUM(r, FUNCS), f[0]); break;
+    case 8: glBlendFunc(FUZZ_ENUM(r, FACTORS), FUZZ_ENUM(r, FACTORS)); break;
+    case 9: glBlendEquation(FUZZ_ENUM(r, GL_FUNC_ADD, GL_FUNC_SUBTRACT,
+                                      GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX)); break;
+    case 10: glBlendColor(f[0], f[1], f[2], f[3]); break;
+    case 11: glLogicOp(FUZZ_ENUM(r, GL_CLEAR, GL_AND, GL_COPY, GL_XOR, GL_NOR, GL_SET,
+                                 GL_INVERT, GL_NAND)); break;
+    case 12: glColorMask(i0 & 1, i1 & 1, i2 & 1, i3 & 1); break;
+    case 13: glScissor(i0, i1, i2, i3); break;
+    case 14: glStencilFunc(FUZZ_ENUM(r, FUNCS), i0, (GLuint)i1); break;
+    case 15: glStencilOp(FUZZ_ENUM(r, STENCIL_OPS), FUZZ_ENUM(r, STENCIL_OPS),
+                         FUZZ_ENUM(r, STENCIL_OPS)); break;
+    case 16: glStencilMask((GLuint)i0); break;
+    case 17: glDepthFunc(FUZZ_ENUM(r, FUNCS)); break;
+    case 18: glDepthMask(i0 & 1); break;
+    case 19: glDepthRange(f[0], f[1]); break;
+    case 20: glFogf(FUZZ_ENUM(r, GL_FOG_DENSITY, GL_FOG_START, GL_FOG_END, GL_FOG_INDEX), f[0]);
+        break;
+    case 21: glFogi(FUZZ_ENUM(r, GL_FOG_MODE, GL_FOG_COORDINATE_SOURCE, GL_FOG_DISTANCE_MODE_NV),
+                    (GLint)FUZZ_ENUM(r, GL_LINEAR, GL_EXP, GL_EXP2, GL_FOG_COORDINATE,
+                                     GL_FRAGMENT_DEPTH, GL_EYE_RADIAL_NV, GL_EYE_PLANE,
+                                     GL_EYE_PLANE_ABSOLUTE_NV)); break;
+    case 22: glFogfv(GL_FOG_COLOR, f); break;
+    case 23: glFrontFace(FUZZ_ENUM(r, GL_CW, GL_CCW)); break;
+    case 24: glCullFace(FUZZ_ENUM(r, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK)); break;
+    case 25: glPolygonMode(FUZZ_ENUM(r, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK),
+                           FUZZ_ENUM(r, GL_POINT, GL_LINE, GL_FILL)); break;
+    case 26: glPolygonOffset(f[0], f[1]); break;
+    case 27: glShadeModel(FUZZ_ENUM(r, GL_FLAT, GL_SMOOTH)); break;
+    case 28: glLightModelf(FUZZ_ENUM(r, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE),
+                           f[0]); break;
+    case 29: glLightModelfv(GL_LIGHT_MODEL_AMBIENT, f); break;
+    case 30: glColorMaterial(FUZZ_ENUM(r, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK),
+                             FUZZ_ENUM(r, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION,
+                                       GL_AMBIENT_AND_DIFFUSE)); break;
+    case 31: glViewport(i0, i1, i2, i3); break;
+    case 32: glPixelStoref(FUZZ_ENUM(r, PIXEL_STORES), f[0]); break;
+    case 33: glPixelStorei(FUZZ_ENUM(r, PIXEL_STORES), i0); break;
+    case 34: glPointSize(f[0]); break;
+    case 35: glLineWidth(f[0]); break;
+    case 36: glLineStipple(i0, (GLushort)i1); break;
+    case 37: glHint(FUZZ_ENUM(r, HINT_TARGETS), FUZZ_ENUM(r, GL_FASTEST, GL_NICEST, GL_DONT_CARE));
+        break;
+    case 38:
+    case 39: {
+        const struct qenum *q = &walk[fc_rng_below(r, (uint32_t)NWALK)];
+        if (op == 38)
+            glEnable(q->e);
+        else
+            glDisable(q->e);
+        break;
+    }
+    case 40: glIndexMask((GLuint)i0); break;
+    case 41: glDrawBuffer(buffer_enums[fc_rng_below(r, sizeof buffer_enums / sizeof buffer_enums[0])]);
+        break;
+    case 42: glReadBuffer(buffer_enums[fc_rng_below(r, sizeof buffer_enums / sizeof buffer_enums[0])]);
+        break;
+    case 43:
+        glMatrixMode(FUZZ_ENUM(r, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE));
+        glLoadMatrixf(f);
+        break;
+    case 44:
+        if (i0 & 1)
+            glPushAttrib((GLbitfield)fc_rng_next(r));
+        else
+            glPopAttrib();
+        break;
+    default: glEdgeFlag(i0 & 1); break;
+    }
+    char label[32];
+    snprintf(label, sizeof label, "fuzz op %u", op);
+    fc_error(h, label);
+}
+
+/* 400 random state calls (query_fuzz_<seed>: valid and invalid enums,
+ * special floats, nested glPushAttrib/glPopAttrib with random masks), each
+ * with its error, then the whole walk. */
+static void query_fuzz(fc_h *h)
+{
+    const int seed = fc_this_case(h)->name[sizeof "api/query_fuzz_" - 1] - '0';
+    fc_rng r = fc_rng_make(0x5eed, (uint32_t)seed, 7);
+    declare_walk_differences(h);
+    for (int i = 0; i < 400; i++)
+        fuzz_call(h, &r);
+    walk_all(h);
+}
+
 /* ---- nested glPushAttrib: what an outer glPopAttrib restores ---- */
 
 static void query_attrib_state(fc_h *h, const char *when)
@@ -1252,6 +1405,14 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE_RGBA("api/read_buffer_render", 8, 8, 1, "api query", read_buffer_render),
     FC_CASE_RGBA("api/attrib_nested", 16, 16, 2, "api query attrib", attrib_nested),
     FC_CASE_RGBA("api/attrib_nested_current", 8, 8, 0, "api query attrib", attrib_nested_current),
+    FC_CASE_RGBA("api/query_fuzz_0", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_1", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_2", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_3", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_4", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_5", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_6", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_7", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/index_batching", 32, 32, 2, "api query", index_batching),
     FC_CASE_RGBA("api/index_array_element", 16, 16, 2, "api query varray", index_array_element),
     FC_CASE("api/query_walk_bgra_z16", 16, 16, OSMESA_BGRA, 16, 0, 0, "api query", query_walk),

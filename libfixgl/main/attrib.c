@@ -223,6 +223,12 @@ static const struct attrib_group groups[] = {
    GROUP(GL_MULTISAMPLE_BIT, Multisample, Multisample, 0, NULL, NULL),
 };
 
+#define POP_FLUSH_ON_CHANGE (GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_HINT_BIT |   \
+                             GL_LIGHTING_BIT | GL_POINT_BIT | GL_LINE_BIT | GL_POLYGON_BIT | \
+                             GL_SCISSOR_BIT | GL_STENCIL_BUFFER_BIT | GL_FOG_BIT |      \
+                             GL_MULTISAMPLE_BIT)
+#define POP_FLUSH_ALWAYS GL_PIXEL_MODE_BIT
+
 /* Copies the groups of mask into node (the save hooks first). */
 static void save_groups(struct fgl_context *ctx, struct fgl_attrib_node *node, GLbitfield mask)
 {
@@ -319,6 +325,17 @@ void GLAPIENTRY glPopAttrib(void)
       const struct attrib_group *g = &groups[i];
       if (!(node->Mask & g->bit & changed))
          continue;
+      /* Mesa restores these groups through setters whose FLUSH_VERTICES
+       * (when the value changes; glReadBuffer's always) draws what is
+       * batched and copies a vertex format left by an earlier
+       * glPopAttrib(GL_CURRENT_BIT) into the current values, after this
+       * pop restored them (probed group by group; GL_ENABLE_BIT flushes
+       * through fgl_set_enable) */
+      if ((g->bit & POP_FLUSH_ALWAYS) ||
+          ((g->bit & POP_FLUSH_ON_CHANGE) && g->size &&
+           memcmp((const char *)ctx + g->ctx_offset, (const char *)node + g->node_offset,
+                  g->size) != 0))
+         fgl_flush_vertices(ctx);
       if (g->restore) {
          g->restore(ctx, node);
          continue;

@@ -66,8 +66,10 @@ void GLAPIENTRY glDrawBuffer(GLenum buffer)
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   /* FLUSH_VERTICES before validation, as draw_buffer does */
+   /* FLUSH_VERTICES(ctx, 0, GL_COLOR_BUFFER_BIT) before validation, as
+    * draw_buffer does: even a refused call marks the group for glPopAttrib */
    FGL_FLUSH_VERTICES(ctx, 0);
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    if (!check_buffer(ctx, buffer))
       return;
    ctx->NewState |= FGL_NEW_COLOR;
@@ -80,7 +82,9 @@ void GLAPIENTRY glReadBuffer(GLenum buffer)
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* FLUSH_VERTICES(ctx, 0, GL_PIXEL_MODE_BIT) before validation */
    FGL_FLUSH_VERTICES(ctx, 0);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;
    if (!check_buffer(ctx, buffer))
       return;
    ctx->Pixel.ReadBuffer = buffer;

@@ -49,6 +49,7 @@ void GLAPIENTRY glClearIndex(GLfloat c)
    GLuint v = 0;
    if (c > -9223372036854775808.0f && c < 9223372036854775808.0f)
       v = (GLuint)(uint64_t)(int64_t)c;
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    ctx->Color.ClearIndex = v;
 }
 
@@ -62,5 +63,6 @@ void GLAPIENTRY glIndexMask(GLuint mask)
    if (ctx->Color.IndexMask == mask)
       return;
    FGL_FLUSH_VERTICES(ctx, 0);
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    ctx->Color.IndexMask = mask;
 }

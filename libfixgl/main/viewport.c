@@ -61,9 +61,13 @@ void GLAPIENTRY glDepthRange(GLclampd nearval, GLclampd farval)
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   const float n = (float)clampd(nearval), f = (float)clampd(farval);
-   if (ctx->Viewport.Near == n && ctx->Viewport.Far == f)
+   /* set_depth_range_no_notify [S: main/viewport.c] compares the stored
+    * floats with the unclamped double arguments: only values a float
+    * holds exactly and inside [0,1] count as unchanged (0.2 flushes every
+    * time) */
+   if (ctx->Viewport.Near == nearval && ctx->Viewport.Far == farval)
       return;
+   const float n = (float)clampd(nearval), f = (float)clampd(farval);
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_VIEWPORT);
    ctx->Viewport.Near = n;
    ctx->Viewport.Far = f;
