@@ -477,6 +477,8 @@ struct fgl_client_attrib_node {
  * line in the table, when the feature lands. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
 #define FGL_ENABLE_ATTRIB_CAPS 61          /* caps restored by GL_ENABLE_BIT */
+#define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
+#define FGL_TEXTURE_ATTRIB_CAPS 8          /* ... by GL_TEXTURE_BIT */
 struct fgl_attrib_node {
    GLbitfield Mask;
    GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
@@ -492,6 +494,8 @@ struct fgl_attrib_node {
    struct fgl_texture_attrib Texture;
    struct fgl_depth_attrib Depth;
    bool Enable[FGL_ENABLE_ATTRIB_CAPS];    /* GL_ENABLE_BIT, attrib.c's cap list */
+   bool EvalEnable[FGL_EVAL_ATTRIB_CAPS];  /* GL_EVAL_BIT: map enables, auto normal */
+   bool TextureEnable[FGL_TEXTURE_ATTRIB_CAPS]; /* GL_TEXTURE_BIT: unit 0's enables */
    struct fgl_fog_attrib Fog;
    struct fgl_hint_attrib Hint;
    struct fgl_light_attrib Light;

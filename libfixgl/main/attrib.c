@@ -64,6 +64,61 @@ static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
    }
 }
 
+/* The enables GL_EVAL_BIT (memcpy of Mesa's gl_eval_attrib, which holds
+ * them) and GL_TEXTURE_BIT (pop_texture_group: the unit's enables and
+ * texgen enables) restore besides GL_ENABLE_BIT; fixgl keeps them with the
+ * pending capabilities (enable.c). */
+static const GLenum eval_caps[FGL_EVAL_ATTRIB_CAPS] = {
+   GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
+   GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
+   GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
+   GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
+   GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
+};
+static const GLenum texture_caps[FGL_TEXTURE_ATTRIB_CAPS] = {
+   GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+   GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+};
+
+static void save_caps(struct fgl_context *ctx, const GLenum *caps, int n, bool *out)
+{
+   for (int i = 0; i < n; i++) {
+      double v = 0.0;
+      fgl_is_cap(ctx, caps[i], &v);
+      out[i] = v != 0.0;
+   }
+}
+
+static bool caps_differ(struct fgl_context *ctx, const GLenum *caps, int n, const bool *saved)
+{
+   bool now[FGL_ENABLE_ATTRIB_CAPS];
+   save_caps(ctx, caps, n, now);
+   return memcmp(now, saved, (size_t)n * sizeof(bool)) != 0;
+}
+
+static void save_eval(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   save_caps(ctx, eval_caps, FGL_EVAL_ATTRIB_CAPS, node->EvalEnable);
+}
+
+static void restore_eval(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_EVAL_ATTRIB_CAPS; i++)
+      fgl_set_enable(ctx, eval_caps[i], node->EvalEnable[i]);
+}
+
+static void save_texture(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   save_caps(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, node->TextureEnable);
+}
+
+static void restore_texture(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_TEXTURE_ATTRIB_CAPS; i++)
+      fgl_set_enable(ctx, texture_caps[i], node->TextureEnable[i]);
+}
+
 /* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that
  * re-enabling GL_COLOR_MATERIAL loads the current colour into the
  * tracked materials, as glEnable does. */
@@ -117,6 +172,20 @@ static void restore_light(struct fgl_context *ctx, const struct fgl_attrib_node 
    ctx->Light = *l;
    memcpy(ctx->Current.Attrib[FGL_ATTR_MAT_FIRST], node->Material, sizeof(node->Material));
    ctx->NewState |= FGL_NEW_LIGHT;
+}
+
+/* GL_COLOR_BUFFER_BIT: a copy, except the index clear value, which
+ * _mesa_PopAttrib restores through glClearIndex((GLfloat)saved) when it
+ * differs: a large GLuint comes back through a float (0xfffffffe -> 0) */
+static void restore_color(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   if (memcmp(&ctx->Color, &node->Color, sizeof(node->Color)) == 0)
+      return;
+   const bool clear_index = ctx->Color.ClearIndex != node->Color.ClearIndex;
+   ctx->Color = node->Color;
+   if (clear_index)
+      ctx->Color.ClearIndex = fgl_clear_index_cast((float)node->Color.ClearIndex);
+   ctx->NewState |= FGL_NEW_COLOR;
 }
 
 /* GL_FOG_BIT: the setters, _mesa_Fogfv(GL_FOG_COLOR) with the clamped
@@ -198,13 +267,14 @@ static const struct attrib_group groups[] = {
     * does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
     * then _mesa_ReadBuffer, the texture bindings and active unit) */
    GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
-   GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
+   GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
    /* the current values outside the vbo (raster position...) */
    GROUP(GL_CURRENT_BIT, Current.TexCoord, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
    GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),
+   HOOKS(GL_EVAL_BIT, save_eval, restore_eval),
    GROUP(GL_FOG_BIT, Fog, Fog, FGL_NEW_FOG, NULL, restore_fog),
    GROUP(GL_HINT_BIT, Hint, Hint, 0, NULL, restore_hint),
    GROUP(GL_LIGHTING_BIT, Light, Light, FGL_NEW_LIGHT, save_flush_current, restore_light),
@@ -218,6 +288,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_STENCIL_BUFFER_BIT, Stencil, Stencil, FGL_NEW_STENCIL, NULL, NULL),
    GROUP(GL_TRANSFORM_BIT, Transform, Transform, FGL_NEW_CLIP, NULL, restore_transform),
    GROUP(GL_TEXTURE_BIT, Texture, Texture, 0, NULL, NULL),
+   HOOKS(GL_TEXTURE_BIT, save_texture, restore_texture),
    GROUP(GL_VIEWPORT_BIT, Viewport, Viewport, FGL_NEW_VIEWPORT, NULL, NULL),
    /* stored and queried only (no multisample buffer) */
    GROUP(GL_MULTISAMPLE_BIT, Multisample, Multisample, 0, NULL, NULL),
@@ -268,14 +339,14 @@ static GLbitfield changed_groups(struct fgl_context *ctx)
                     g->size) != 0)
             changed |= g->bit;
       } else if (g->bit == GL_ENABLE_BIT) {
-         for (int k = 0; k < FGL_ENABLE_ATTRIB_CAPS; k++) {
-            double v = 0.0;
-            fgl_is_cap(ctx, enable_caps[k], &v);
-            if ((v != 0.0) != base->Enable[k]) {
-               changed |= g->bit;
-               break;
-            }
-         }
+         if (caps_differ(ctx, enable_caps, FGL_ENABLE_ATTRIB_CAPS, base->Enable))
+            changed |= g->bit;
+      } else if (g->bit == GL_EVAL_BIT) {
+         if (caps_differ(ctx, eval_caps, FGL_EVAL_ATTRIB_CAPS, base->EvalEnable))
+            changed |= g->bit;
+      } else if (g->bit == GL_TEXTURE_BIT) {
+         if (caps_differ(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, base->TextureEnable))
+            changed |= g->bit;
       }
    }
    return changed;

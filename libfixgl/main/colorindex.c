@@ -40,17 +40,22 @@ void GLAPIENTRY glIndexubv(const GLubyte *c) { if (c) set_index((GLfloat)c[0]); 
  * (cvttss2si into a 64-bit register, low 32 bits kept): negative values
  * wrap, NaN and values beyond 2^63 give 0.  Between glBegin and glEnd the
  * call is not in Mesa's begin/end dispatch: INVALID_OPERATION. */
+GLuint fgl_clear_index_cast(float c)
+{
+   GLuint v = 0;
+   if (c > -9223372036854775808.0f && c < 9223372036854775808.0f)
+      v = (GLuint)(uint64_t)(int64_t)c;
+   return v;
+}
+
 void GLAPIENTRY glClearIndex(GLfloat c)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   GLuint v = 0;
-   if (c > -9223372036854775808.0f && c < 9223372036854775808.0f)
-      v = (GLuint)(uint64_t)(int64_t)c;
    ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
-   ctx->Color.ClearIndex = v;
+   ctx->Color.ClearIndex = fgl_clear_index_cast(c);
 }
 
 /* [S: main/masks.c:_mesa_IndexMask] */
