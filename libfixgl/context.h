@@ -112,6 +112,7 @@ struct fgl_colorbuffer_attrib {
    float BlendColor[4];     /* as given (Mesa's BlendColorUnclamped) */
    /* logic op */
    bool LogicOpEnabled;     /* GL_COLOR_LOGIC_OP */
+   bool IndexLogicOpEnabled;   /* GL_INDEX_LOGIC_OP: no effect on RGBA */
    GLenum LogicOp;
    unsigned ColorMask;      /* bit 0 red .. bit 3 alpha */
    /* colour index state: stored and queried, no effect on the RGBA
@@ -467,7 +468,7 @@ struct fgl_client_attrib_node {
 };
 
 /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 28
+#define FGL_PENDING_CAPS 27
 
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit

@@ -1130,9 +1130,12 @@ static GLenum fuzz_enum(fc_rng *r, const GLenum *valid, size_t n)
     GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_IMAGES, \
     GL_UNPACK_ALIGNMENT
 
-/* One random state call, recorded with its error. */
-static void fuzz_call(fc_h *h, fc_rng *r)
+/* One random state call, recorded with its error.  Each call draws from
+ * its own stream (one value of the case's), so that a call can be left
+ * out when reducing a failing sequence without changing the others. */
+static void fuzz_call(fc_h *h, fc_rng *outer)
 {
+    fc_rng stream = { fc_rng_next(outer) }, *r = &stream;
     float f[16];
     for (int i = 0; i < 16; i++)
         f[i] = fuzz_float(r);
@@ -1222,9 +1225,9 @@ static void fuzz_call(fc_h *h, fc_rng *r)
 
 /* 400 random state calls (query_fuzz_<seed>: valid and invalid enums,
  * special floats, nested glPushAttrib/glPopAttrib with random masks), each
- * with its error, then the whole walk.  Seeds 0-31, and 45, 49, 54, which
- * found the pop of large index clear values and of the evaluator and
- * texture enables. */
+ * with its error, then the whole walk.  Seeds 0-63, and 174 and 193, which
+ * found glMatrixMode(GL_TEXTURE)'s mark and GL_INDEX_LOGIC_OP in the
+ * colour group (seeds up to 499 were exact when this was written). */
 static void query_fuzz(fc_h *h)
 {
     const int seed = atoi(fc_this_case(h)->name + sizeof "api/query_fuzz_" - 1);
@@ -1440,9 +1443,40 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE_RGBA("api/query_fuzz_29", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_30", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_31", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_32", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_33", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_34", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_35", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_36", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_37", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_38", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_39", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_40", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_41", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_42", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_43", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_44", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_45", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_46", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_47", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_48", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_49", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_50", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_51", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_52", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_53", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_54", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_55", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_56", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_57", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_58", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_59", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_60", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_61", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_62", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_63", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_174", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_193", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/index_batching", 32, 32, 2, "api query", index_batching),
     FC_CASE_RGBA("api/index_array_element", 16, 16, 2, "api query varray", index_array_element),
     FC_CASE("api/query_walk_bgra_z16", 16, 16, OSMESA_BGRA, 16, 0, 0, "api query", query_walk),

@@ -20,6 +20,8 @@ void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclam
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* marked for glPopAttrib even when unchanged [S: main/clear.c] */
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    ctx->Color.ClearColor[0] = red;
    ctx->Color.ClearColor[1] = green;
    ctx->Color.ClearColor[2] = blue;

@@ -10,7 +10,7 @@
  * stored and reported (so programs see the oracle's errors and queries)
  * but do not affect rendering yet; README's status table lists them. */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_AUTO_NORMAL, GL_INDEX_LOGIC_OP,
+   GL_AUTO_NORMAL,
    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
    GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
    GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -94,6 +94,10 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_COLOR_LOGIC_OP:
       *dirty = FGL_NEW_COLOR;
       return &ctx->Color.LogicOpEnabled;
+   case GL_INDEX_LOGIC_OP:
+      /* stored and queried only: no index buffer */
+      *dirty = 0;
+      return &ctx->Color.IndexLogicOpEnabled;
    case GL_SCISSOR_TEST:
       *dirty = FGL_NEW_SCISSOR;
       return &ctx->Scissor.Enabled;

@@ -36,6 +36,8 @@ void GLAPIENTRY glClearStencil(GLint s)
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* marked for glPopAttrib even when unchanged [S: main/stencil.c] */
+   ctx->PopAttribState |= GL_STENCIL_BUFFER_BIT;
    ctx->Stencil.Clear = (GLuint)s;
 }
 
