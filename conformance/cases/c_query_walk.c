@@ -1225,9 +1225,10 @@ static void fuzz_call(fc_h *h, fc_rng *outer)
 
 /* 400 random state calls (query_fuzz_<seed>: valid and invalid enums,
  * special floats, nested glPushAttrib/glPopAttrib with random masks), each
- * with its error, then the whole walk.  Seeds 0-63, and 174 and 193, which
- * found glMatrixMode(GL_TEXTURE)'s mark and GL_INDEX_LOGIC_OP in the
- * colour group (seeds up to 499 were exact when this was written). */
+ * with its error, then the whole walk.  Seeds 0-63, and 174, 193 and 645,
+ * which found glMatrixMode(GL_TEXTURE)'s mark, GL_INDEX_LOGIC_OP in the
+ * colour group and the clear values a pop sets without flushing (seeds
+ * up to 1499 were exact when this was written). */
 static void query_fuzz(fc_h *h)
 {
     const int seed = atoi(fc_this_case(h)->name + sizeof "api/query_fuzz_" - 1);
@@ -1477,6 +1478,7 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE_RGBA("api/query_fuzz_63", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_174", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/query_fuzz_193", 8, 8, 0, "api query", query_fuzz),
+    FC_CASE_RGBA("api/query_fuzz_645", 8, 8, 0, "api query", query_fuzz),
     FC_CASE_RGBA("api/index_batching", 32, 32, 2, "api query", index_batching),
     FC_CASE_RGBA("api/index_array_element", 16, 16, 2, "api query varray", index_array_element),
     FC_CASE("api/query_walk_bgra_z16", 16, 16, OSMESA_BGRA, 16, 0, 0, "api query", query_walk),

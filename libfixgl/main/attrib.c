@@ -169,7 +169,7 @@ static void restore_light(struct fgl_context *ctx, const struct fgl_attrib_node 
                         ctx->Light.ColorMaterialEnabled;
    if (cm_call || ctx->Light.ColorMaterialEnabled != l->ColorMaterialEnabled)
       fgl_flush_current(ctx);
-   ctx->Light = *l;
+   memcpy(&ctx->Light, l, sizeof(ctx->Light));   /* padding too: changed_groups */
    memcpy(ctx->Current.Attrib[FGL_ATTR_MAT_FIRST], node->Material, sizeof(node->Material));
    ctx->NewState |= FGL_NEW_LIGHT;
 }
@@ -182,7 +182,7 @@ static void restore_color(struct fgl_context *ctx, const struct fgl_attrib_node 
    if (memcmp(&ctx->Color, &node->Color, sizeof(node->Color)) == 0)
       return;
    const bool clear_index = ctx->Color.ClearIndex != node->Color.ClearIndex;
-   ctx->Color = node->Color;
+   memcpy(&ctx->Color, &node->Color, sizeof(ctx->Color));   /* padding too: changed_groups */
    if (clear_index)
       ctx->Color.ClearIndex = fgl_clear_index_cast((float)node->Color.ClearIndex);
    ctx->NewState |= FGL_NEW_COLOR;
@@ -198,7 +198,7 @@ static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *n
     * and mode only: GL_FOG_COORDINATE_SOURCE and GL_FOG_DISTANCE_MODE_NV
     * keep their current values (api/query_walk_popped) */
    const GLenum source = ctx->Fog.CoordinateSource, distance = ctx->Fog.DistanceMode;
-   ctx->Fog = node->Fog;
+   memcpy(&ctx->Fog, &node->Fog, sizeof(ctx->Fog));   /* padding too: changed_groups */
    ctx->Fog.CoordinateSource = source;
    ctx->Fog.DistanceMode = distance;
    memcpy(ctx->Fog.ColorUnclamped, node->Fog.Color, sizeof(node->Fog.Color));
@@ -225,7 +225,7 @@ static void restore_transform(struct fgl_context *ctx, const struct fgl_attrib_n
 {
    if (memcmp(&ctx->Transform, &node->Transform, sizeof(node->Transform)) == 0)
       return;
-   ctx->Transform = node->Transform;
+   memcpy(&ctx->Transform, &node->Transform, sizeof(ctx->Transform));   /* padding too */
    ctx->CurrentStack = fgl_matrix_stack_for_mode(ctx, ctx->Transform.MatrixMode);
    ctx->NewState |= FGL_NEW_CLIP;
 }
@@ -299,6 +299,41 @@ static const struct attrib_group groups[] = {
                              GL_SCISSOR_BIT | GL_STENCIL_BUFFER_BIT | GL_FOG_BIT |      \
                              GL_MULTISAMPLE_BIT)
 #define POP_FLUSH_ALWAYS GL_PIXEL_MODE_BIT
+
+/* Whether Mesa restores group g through a setter that flushes: some value
+ * other than those its pop sets without FLUSH_VERTICES (glClearColor,
+ * glClearIndex, glClearDepth, glClearStencil, and the draw buffer, which
+ * _mesa_drawbuffers sets directly) differs. */
+static bool restore_flushes(const struct fgl_context *ctx, const struct fgl_attrib_node *node,
+                            const struct attrib_group *g)
+{
+   if (g->bit == GL_COLOR_BUFFER_BIT) {
+      /* (memcpy, not assignment: the padding bytes take part in memcmp) */
+      struct fgl_colorbuffer_attrib a, b;
+      memcpy(&a, &ctx->Color, sizeof(a));
+      memcpy(&b, &node->Color, sizeof(b));
+      memcpy(a.ClearColor, b.ClearColor, sizeof(a.ClearColor));
+      a.ClearIndex = b.ClearIndex;
+      a.DrawBuffer = b.DrawBuffer;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   if (g->bit == GL_DEPTH_BUFFER_BIT) {
+      struct fgl_depth_attrib a, b;
+      memcpy(&a, &ctx->Depth, sizeof(a));
+      memcpy(&b, &node->Depth, sizeof(b));
+      a.Clear = b.Clear;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   if (g->bit == GL_STENCIL_BUFFER_BIT) {
+      struct fgl_stencil_attrib a, b;
+      memcpy(&a, &ctx->Stencil, sizeof(a));
+      memcpy(&b, &node->Stencil, sizeof(b));
+      a.Clear = b.Clear;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   return memcmp((const char *)ctx + g->ctx_offset, (const char *)node + g->node_offset,
+                 g->size) != 0;
+}
 
 /* Copies the groups of mask into node (the save hooks first). */
 static void save_groups(struct fgl_context *ctx, struct fgl_attrib_node *node, GLbitfield mask)
@@ -403,9 +438,7 @@ void GLAPIENTRY glPopAttrib(void)
        * pop restored them (probed group by group; GL_ENABLE_BIT flushes
        * through fgl_set_enable) */
       if ((g->bit & POP_FLUSH_ALWAYS) ||
-          ((g->bit & POP_FLUSH_ON_CHANGE) && g->size &&
-           memcmp((const char *)ctx + g->ctx_offset, (const char *)node + g->node_offset,
-                  g->size) != 0))
+          ((g->bit & POP_FLUSH_ON_CHANGE) && g->size && restore_flushes(ctx, node, g)))
          fgl_flush_vertices(ctx);
       if (g->restore) {
          g->restore(ctx, node);
