@@ -28,10 +28,7 @@ struct qenum { GLenum e; const char *name; };
  * belong to extensions and later versions fixgl does not implement (the
  * oracle answers hundreds; fixgl raises INVALID_ENUM): GL_COLOR_SUM, point
  * parameters and sprites, GL_MAX_TEXTURE_COORDS/IMAGE_UNITS, rectangle
- * textures, anisotropy, vertex attributes...  The display-list and
- * selection/feedback values (GL_LIST_*, GL_MAX_LIST_NESTING,
- * GL_RENDER_MODE, GL_*NAME_STACK_DEPTH, GL_SELECTION_BUFFER_SIZE,
- * GL_FEEDBACK_BUFFER_*) join the walk with their features. */
+ * textures, anisotropy, vertex attributes... */
 static const struct qenum walk[] = {
     /* 6.5 current values */
     Q(GL_CURRENT_COLOR), Q(GL_CURRENT_INDEX), Q(GL_CURRENT_TEXTURE_COORDS),
@@ -147,9 +144,12 @@ static const struct qenum walk[] = {
     Q(GL_NUM_COMPRESSED_TEXTURE_FORMATS), Q(GL_COMPRESSED_TEXTURE_FORMATS),
     Q(GL_RED_BITS), Q(GL_GREEN_BITS), Q(GL_BLUE_BITS), Q(GL_ALPHA_BITS), Q(GL_INDEX_BITS),
     Q(GL_DEPTH_BITS), Q(GL_STENCIL_BITS), Q(GL_ACCUM_RED_BITS), Q(GL_ACCUM_GREEN_BITS),
-    Q(GL_ACCUM_BLUE_BITS), Q(GL_ACCUM_ALPHA_BITS),
+    Q(GL_ACCUM_BLUE_BITS), Q(GL_ACCUM_ALPHA_BITS), Q(GL_MAX_LIST_NESTING),
+    Q(GL_MAX_NAME_STACK_DEPTH),
     /* 6.31 miscellaneous */
-    Q(GL_ATTRIB_STACK_DEPTH), Q(GL_CLIENT_ATTRIB_STACK_DEPTH),
+    Q(GL_LIST_BASE), Q(GL_LIST_INDEX), Q(GL_LIST_MODE), Q(GL_ATTRIB_STACK_DEPTH),
+    Q(GL_CLIENT_ATTRIB_STACK_DEPTH), Q(GL_NAME_STACK_DEPTH), Q(GL_RENDER_MODE),
+    Q(GL_SELECTION_BUFFER_SIZE), Q(GL_FEEDBACK_BUFFER_SIZE), Q(GL_FEEDBACK_BUFFER_TYPE),
     /* not state values at all */
     { 0, "0" }, { 0x1234, "0x1234" }, Q(GL_POSITION), Q(GL_TEXTURE_ENV_MODE),
     Q(GL_RGBA), Q(GL_FLOAT),
@@ -290,6 +290,7 @@ static void set_everything(fc_h *h, int nested)
     glPointSize(2.5f);
     glLineWidth(3.5f);
     glLineStipple(3, 0xf0f0);
+    glListBase(7);
     for (size_t i = 0; i < sizeof hints / sizeof hints[0]; i++)
         glHint(hints[i], i % 2 ? GL_FASTEST : GL_NICEST);
     fc_error(h, "set state");
@@ -325,6 +326,37 @@ static void query_walk_modified(fc_h *h)
     declare_walk_differences(h);
     set_everything(h, 0);
     walk_all(h);
+}
+
+/* The modified state walked in GL_SELECT with two names pushed, and in
+ * GL_FEEDBACK, each time while a list is being compiled (queries run at
+ * once: GL_LIST_INDEX, GL_LIST_MODE, GL_RENDER_MODE, the buffer sizes and
+ * the name-stack depth are the values under test). */
+static void query_walk_select_list(fc_h *h)
+{
+    static GLuint selbuf[64];
+    static GLfloat fbbuf[64];
+    declare_walk_differences(h);
+    set_everything(h, 0);
+    GLuint l = glGenLists(2);
+    glSelectBuffer(64, selbuf);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(1);
+    glPushName(2);
+    glNewList(l, GL_COMPILE);
+    fc_error(h, "select and compile");
+    walk_all(h);
+    glEndList();
+    fc_value(h, "leave select", glRenderMode(GL_RENDER));
+    glFeedbackBuffer(64, GL_3D_COLOR, fbbuf);
+    glRenderMode(GL_FEEDBACK);
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    fc_error(h, "feedback and compile");
+    walk_all(h);
+    glEndList();
+    fc_value(h, "leave feedback", glRenderMode(GL_RENDER));
+    fc_error(h, "end");
 }
 
 /* The modified state, then glPopAttrib / glPopClientAttrib of everything
@@ -1389,6 +1421,8 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE("api/query_walk", 16, 16, OSMESA_RGBA, 24, 8, 0, "api query", query_walk),
     FC_CASE("api/query_walk_modified", 16, 16, OSMESA_RGBA, 24, 8, 0, "api query",
             query_walk_modified),
+    FC_CASE("api/query_walk_select_list", 16, 16, OSMESA_RGBA, 24, 8, 0,
+            "api query select feedback dlist", query_walk_select_list),
     FC_CASE("api/query_walk_popped", 16, 16, OSMESA_RGBA, 24, 8, 0, "api query",
             query_walk_popped),
     FC_CASE("api/query_walk_popped_nested", 16, 16, OSMESA_RGBA, 24, 8, 0, "api query",

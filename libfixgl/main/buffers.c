@@ -13,6 +13,7 @@
  * INVALID_OPERATION (readpix.c).
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 enum buffer_class { BUF_BAD_ENUM, BUF_MISSING, BUF_OK };
 
@@ -65,6 +66,7 @@ void GLAPIENTRY glDrawBuffer(GLenum buffer)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, DrawBuffer, buffer);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* FLUSH_VERTICES(ctx, 0, GL_COLOR_BUFFER_BIT) before validation, as
     * draw_buffer does: even a refused call marks the group for glPopAttrib */
@@ -81,6 +83,7 @@ void GLAPIENTRY glReadBuffer(GLenum buffer)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ReadBuffer, buffer);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* FLUSH_VERTICES(ctx, 0, GL_PIXEL_MODE_BIT) before validation */
    FGL_FLUSH_VERTICES(ctx, 0);

@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 /* [S: vbo/vbo_attrib_tmp.h, _mesa_Index*]: the index is a one-component
  * float vbo attribute (VBO_ATTRIB_COLOR_INDEX), settable between glBegin
@@ -19,7 +20,7 @@ static void set_index(float c)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   fgl_vbo_attr(ctx, FGL_ATTR_COLOR_INDEX, 1, c, 0.0f, 0.0f, 1.0f);
+   fgl_attr(ctx, FGL_ATTR_COLOR_INDEX, 1, c, 0.0f, 0.0f, 1.0f);
 }
 
 /* (the vector forms ignore NULL, like fixgl's other vertex attributes;
@@ -53,6 +54,7 @@ void GLAPIENTRY glClearIndex(GLfloat c)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ClearIndex, c);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    ctx->Color.ClearIndex = fgl_clear_index_cast(c);
@@ -64,6 +66,7 @@ void GLAPIENTRY glIndexMask(GLuint mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, IndexMask, mask);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.IndexMask == mask)
       return;
