@@ -493,6 +493,658 @@ static void incomplete_blend(fc_h *h)
     incomplete_scene(h, false, false);
 }
 
+
+/* ---- texture objects and parameters ---- */
+
+static void tex_params(fc_h *h, const char *label, GLenum target)
+{
+    static const GLenum pnames[] = {
+        GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S,
+        GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R, GL_TEXTURE_BORDER_COLOR,
+        GL_TEXTURE_PRIORITY, GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD,
+        GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL, GL_GENERATE_MIPMAP,
+        GL_TEXTURE_RESIDENT, GL_TEXTURE_LOD_BIAS,
+    };
+    char l[96];
+    for (size_t i = 0; i < sizeof pnames / sizeof pnames[0]; i++) {
+        GLfloat f[4] = { -7, -7, -7, -7 };
+        GLint iv[4] = { -7, -7, -7, -7 };
+        glGetTexParameterfv(target, pnames[i], f);
+        glGetTexParameteriv(target, pnames[i], iv);
+        snprintf(l, sizeof l, "%s %x fv", label, pnames[i]);
+        fc_blob(h, l, f, sizeof f);
+        snprintf(l, sizeof l, "%s %x iv", label, pnames[i]);
+        fc_blob(h, l, iv, sizeof iv);
+    }
+    snprintf(l, sizeof l, "%s errors", label);
+    fc_error(h, l);
+}
+
+static void bindings(fc_h *h, const char *label)
+{
+    char l[96];
+    snprintf(l, sizeof l, "%s 1d", label);
+    fc_get_integer(h, l, GL_TEXTURE_BINDING_1D, 1);
+    snprintf(l, sizeof l, "%s 2d", label);
+    fc_get_integer(h, l, GL_TEXTURE_BINDING_2D, 1);
+    snprintf(l, sizeof l, "%s 3d", label);
+    fc_get_integer(h, l, GL_TEXTURE_BINDING_3D, 1);
+}
+
+/* glGenTextures, glBindTexture, glDeleteTextures, glIsTexture,
+ * glAreTexturesResident, glPrioritizeTextures: names, targets, errors. */
+static void objects(fc_h *h)
+{
+    GLuint t[6] = { 0 };
+    glGenTextures(3, t);
+    fc_blob(h, "gen 3", t, sizeof t);
+    fc_value(h, "is before bind", glIsTexture(t[0]));
+    fc_value(h, "is 0", glIsTexture(0));
+    fc_value(h, "is unknown", glIsTexture(999));
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    fc_value(h, "is after bind", glIsTexture(t[0]));
+    bindings(h, "bound t0");
+    glBindTexture(GL_TEXTURE_1D, t[0]);
+    fc_error(h, "t0 to 1d");
+    bindings(h, "after mismatch");
+    glBindTexture(GL_TEXTURE_1D, t[1]);
+    glBindTexture(GL_TEXTURE_3D, t[2]);
+    glBindTexture(GL_PROXY_TEXTURE_2D, t[2]);
+    fc_error(h, "proxy target");
+    glBindTexture(GL_TEXTURE_2D + 1, 0);
+    fc_error(h, "bad target");
+    glBindTexture(GL_TEXTURE_RECTANGLE, 77);
+    fc_error(h, "rectangle, new name");
+    fc_value(h, "is 77", glIsTexture(77));
+    glBindTexture(GL_TEXTURE_2D, 50);  /* not generated: created */
+    fc_value(h, "is 50", glIsTexture(50));
+    bindings(h, "bound 50");
+    glGenTextures(2, t + 3);
+    fc_blob(h, "gen after 77", t, sizeof t);
+    glGenTextures(0, t);
+    glGenTextures(-1, t);
+    fc_error(h, "gen -1");
+    glGenTextures(1, NULL);
+    fc_error(h, "gen null");
+    /* residency */
+    GLboolean res[4] = { 9, 9, 9, 9 };
+    GLuint names[3] = { t[0], t[1], 50 };
+    fc_value(h, "resident", glAreTexturesResident(3, names, res));
+    fc_blob(h, "residences", res, sizeof res);
+    names[1] = 0;
+    fc_value(h, "resident 0", glAreTexturesResident(3, names, res));
+    fc_error(h, "resident 0");
+    names[1] = 12345;
+    fc_value(h, "resident unknown", glAreTexturesResident(3, names, res));
+    fc_error(h, "resident unknown");
+    names[1] = t[4];   /* generated, never bound */
+    fc_value(h, "resident unbound", glAreTexturesResident(3, names, res));
+    fc_error(h, "resident unbound");
+    fc_value(h, "resident -1", glAreTexturesResident(-1, names, res));
+    fc_error(h, "resident -1");
+    fc_blob(h, "residences after", res, sizeof res);
+    /* priorities, clamped; names without objects skipped */
+    const GLuint pn[4] = { t[0], 0, 4321, t[1] };
+    const GLclampf pr[4] = { 0.25f, 0.5f, 0.75f, 7.0f };
+    glPrioritizeTextures(4, pn, pr);
+    fc_error(h, "prioritize");
+    tex_params(h, "2d t0", GL_TEXTURE_2D);
+    tex_params(h, "1d t1", GL_TEXTURE_1D);
+    glPrioritizeTextures(-2, pn, pr);
+    fc_error(h, "prioritize -2");
+    const GLclampf neg = -3.0f;
+    glPrioritizeTextures(1, pn, &neg);
+    tex_params(h, "2d negative priority", GL_TEXTURE_2D);
+    /* deleting unbinds; names are not reused */
+    GLuint del[4] = { t[0], 0, 9999, t[1] };
+    glDeleteTextures(4, del);
+    fc_error(h, "delete");
+    bindings(h, "after delete");
+    fc_value(h, "is deleted", glIsTexture(t[0]));
+    glGenTextures(2, t);
+    fc_blob(h, "gen after delete", t, sizeof t);
+    glDeleteTextures(-1, del);
+    fc_error(h, "delete -1");
+    glBindTexture(GL_TEXTURE_1D, del[0]);   /* a deleted name: created again */
+    fc_value(h, "rebound deleted", glIsTexture(del[0]));
+    bindings(h, "rebound");
+    /* inside glBegin/glEnd */
+    glBegin(GL_POINTS);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glEnd();
+    fc_error(h, "bind in begin");
+    glBegin(GL_POINTS);
+    fc_value(h, "is in begin", glIsTexture(50));
+    glEnd();
+    fc_error(h, "is in begin");
+    glBegin(GL_POINTS);
+    glDeleteTextures(1, t);
+    glEnd();
+    fc_error(h, "delete in begin");
+}
+
+static void set_and_check(fc_h *h, const char *label, GLenum target, GLenum pname, GLint v)
+{
+    glTexParameteri(target, pname, v);
+    char l[96];
+    snprintf(l, sizeof l, "%s error", label);
+    fc_error(h, l);
+    GLint got = -7;
+    glGetTexParameteriv(target, pname, &got);
+    snprintf(l, sizeof l, "%s value", label);
+    fc_value(h, l, got);
+}
+
+/* Every GL 1.3 parameter with each setter and its errors, on the default
+ * 2D object and a named 1D object. */
+static void parameters(fc_h *h)
+{
+    tex_params(h, "default 2d", GL_TEXTURE_2D);
+    tex_params(h, "default 1d", GL_TEXTURE_1D);
+    tex_params(h, "default 3d", GL_TEXTURE_3D);
+    tex_params(h, "default rect", GL_TEXTURE_RECTANGLE);
+    GLuint t;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_1D, t);
+    static const GLenum targets[2] = { GL_TEXTURE_2D, GL_TEXTURE_1D };
+    static const GLint minf[] = { GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST,
+                                  GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST_MIPMAP_LINEAR,
+                                  GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, 0 };
+    static const GLint wraps[] = { GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER,
+                                   GL_MIRRORED_REPEAT, GL_REPEAT, GL_LINEAR, GL_MIRROR_CLAMP_EXT };
+    char l[96];
+    for (int ti = 0; ti < 2; ti++) {
+        const GLenum tg = targets[ti];
+        for (size_t i = 0; i < sizeof minf / sizeof minf[0]; i++) {
+            snprintf(l, sizeof l, "%x min %x", tg, minf[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_MIN_FILTER, minf[i]);
+            snprintf(l, sizeof l, "%x mag %x", tg, minf[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_MAG_FILTER, minf[i]);
+        }
+        for (size_t i = 0; i < sizeof wraps / sizeof wraps[0]; i++) {
+            snprintf(l, sizeof l, "%x wrap s %x", tg, wraps[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_WRAP_S, wraps[i]);
+            snprintf(l, sizeof l, "%x wrap t %x", tg, wraps[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_WRAP_T, wraps[i]);
+            snprintf(l, sizeof l, "%x wrap r %x", tg, wraps[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_WRAP_R, wraps[i]);
+        }
+        static const GLint levels[] = { 3, 0, -1, 1000, 2000000000 };
+        for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++) {
+            snprintf(l, sizeof l, "%x base %d", tg, levels[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_BASE_LEVEL, levels[i]);
+            snprintf(l, sizeof l, "%x max %d", tg, levels[i]);
+            set_and_check(h, l, tg, GL_TEXTURE_MAX_LEVEL, levels[i]);
+        }
+        set_and_check(h, "genmip 5", tg, GL_GENERATE_MIPMAP, 5);
+        set_and_check(h, "genmip 0", tg, GL_GENERATE_MIPMAP, 0);
+        set_and_check(h, "resident", tg, GL_TEXTURE_RESIDENT, 1);
+        set_and_check(h, "bad pname", tg, GL_TEXTURE_WIDTH, 1);
+        /* floats, scalar and vector; the integer getters round them */
+        static const GLfloat lods[] = { -1.5f, 2.5f, 0.5f, -0.5f, 1e10f, -1e10f, 3.49f };
+        for (size_t i = 0; i < sizeof lods / sizeof lods[0]; i++) {
+            glTexParameterf(tg, GL_TEXTURE_MIN_LOD, lods[i]);
+            glTexParameterfv(tg, GL_TEXTURE_MAX_LOD, &lods[i]);
+            glTexParameterf(tg, GL_TEXTURE_LOD_BIAS, lods[i]);
+            glTexParameterf(tg, GL_TEXTURE_PRIORITY, lods[i] * 0.25f);
+            snprintf(l, sizeof l, "%x lod %g", tg, lods[i]);
+            tex_params(h, l, tg);
+        }
+        glTexParameteri(tg, GL_TEXTURE_MIN_LOD, -3);
+        glTexParameteri(tg, GL_TEXTURE_PRIORITY, 1);
+        tex_params(h, "int lod", tg);
+        /* float calls on integer pnames: rounded (scalar) or cast (vector) */
+        glTexParameterf(tg, GL_TEXTURE_BASE_LEVEL, 2.5f);
+        glTexParameterf(tg, GL_TEXTURE_MAX_LEVEL, -0.4f);
+        tex_params(h, "float levels", tg);
+        const GLfloat fl[4] = { 4.9f, 0, 0, 0 };
+        glTexParameterfv(tg, GL_TEXTURE_BASE_LEVEL, fl);
+        glTexParameterf(tg, GL_TEXTURE_MIN_FILTER, (GLfloat)GL_LINEAR);
+        tex_params(h, "float levels v", tg);
+        /* border colours: floats unclamped when set, ints normalized */
+        const GLfloat bc[4] = { -0.5f, 0.25f, 2.0f, 1.0f };
+        glTexParameterfv(tg, GL_TEXTURE_BORDER_COLOR, bc);
+        tex_params(h, "border f", tg);
+        const GLint bi[4] = { 2147483647, -2147483647 - 1, 1073741824, 0 };
+        glTexParameteriv(tg, GL_TEXTURE_BORDER_COLOR, bi);
+        tex_params(h, "border i", tg);
+        glTexParameterf(tg, GL_TEXTURE_BORDER_COLOR, 0.5f);
+        fc_error(h, "border scalar f");
+        glTexParameteri(tg, GL_TEXTURE_BORDER_COLOR, 1);
+        fc_error(h, "border scalar i");
+        glTexParameterf(tg, GL_TEXTURE_WIDTH, 1.0f);
+        fc_error(h, "bad pname f");
+    }
+    /* rectangle rules */
+    set_and_check(h, "rect min mipmap", GL_TEXTURE_RECTANGLE, GL_TEXTURE_MIN_FILTER,
+                  GL_LINEAR_MIPMAP_LINEAR);
+    set_and_check(h, "rect wrap repeat", GL_TEXTURE_RECTANGLE, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    set_and_check(h, "rect base 1", GL_TEXTURE_RECTANGLE, GL_TEXTURE_BASE_LEVEL, 1);
+    set_and_check(h, "rect max 1", GL_TEXTURE_RECTANGLE, GL_TEXTURE_MAX_LEVEL, 1);
+    /* targets */
+    glTexParameteri(GL_PROXY_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    fc_error(h, "proxy");
+    glTexParameteri(0, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    fc_error(h, "target 0");
+    GLfloat f = -7;
+    glGetTexParameterfv(GL_PROXY_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, &f);
+    fc_error(h, "get proxy");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, &f);
+    fc_error(h, "get bad pname");
+    glBegin(GL_POINTS);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glEnd();
+    fc_error(h, "in begin");
+    tex_params(h, "final 2d", GL_TEXTURE_2D);
+    tex_params(h, "final 1d", GL_TEXTURE_1D);
+}
+
+/* glPushAttrib(GL_TEXTURE_BIT): bindings and the bound named objects'
+ * parameters come back; the default objects keep theirs. */
+static void texture_pushpop(fc_h *h)
+{
+    GLuint t[2];
+    glGenTextures(2, t);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, 0.5f);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
+    glBindTexture(GL_TEXTURE_1D, t[1]);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    bindings(h, "changed");
+    glPopAttrib();
+    bindings(h, "popped");
+    tex_params(h, "popped 2d", GL_TEXTURE_2D);
+    tex_params(h, "popped 1d", GL_TEXTURE_1D);
+    glBindTexture(GL_TEXTURE_1D, t[1]);
+    tex_params(h, "t1 after pop", GL_TEXTURE_1D);
+    /* only GL_GENERATE_MIPMAP changed: the group is not marked */
+    glBindTexture(GL_TEXTURE_1D, 0);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    glPopAttrib();
+    tex_params(h, "genmip only", GL_TEXTURE_2D);
+    /* the bound object deleted between push and pop */
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glDeleteTextures(1, t);
+    bindings(h, "deleted");
+    glPopAttrib();
+    bindings(h, "popped after delete");
+    fc_value(h, "is deleted after pop", glIsTexture(t[0]));
+    tex_params(h, "recreated", GL_TEXTURE_2D);
+    /* GL_ALL_ATTRIB_BITS */
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
+    glPopAttrib();
+    bindings(h, "all bits");
+    tex_params(h, "all bits 2d", GL_TEXTURE_2D);
+}
+
+/* Display lists: glBindTexture and glTexParameter are compiled (every
+ * variant as glTexParameterfv of params[0]), glGenTextures, glIsTexture,
+ * glDeleteTextures, glAreTexturesResident and the getters run at once. */
+static void texture_dlist(fc_h *h)
+{
+    GLuint t[2];
+    const GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glGenTextures(2, t);
+    fc_blob(h, "gen in list", t, sizeof t);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    fc_value(h, "is in list", glIsTexture(t[0]));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 2.5f);
+    const GLint bi[4] = { 2147483647, 1073741824, 0, 2147483647 };
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, bi);
+    const GLfloat bf[4] = { 0.5f, 0.25f, 0.125f, 2.0f };
+    glTexParameterfv(GL_TEXTURE_1D, GL_TEXTURE_BORDER_COLOR, bf);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_LINEAR);  /* error at replay */
+    glBindTexture(GL_TEXTURE_1D, t[0]);                             /* error at replay */
+    glEndList();
+    fc_error(h, "compile");
+    bindings(h, "after compile");
+    tex_params(h, "after compile 2d", GL_TEXTURE_2D);
+    glCallList(list);
+    fc_error(h, "replay");
+    bindings(h, "after replay");
+    tex_params(h, "after replay 2d", GL_TEXTURE_2D);
+    tex_params(h, "after replay 1d", GL_TEXTURE_1D);
+    /* compile and execute */
+    glNewList(list, GL_COMPILE_AND_EXECUTE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glEndList();
+    bindings(h, "compile and execute");
+    tex_params(h, "compile and execute 2d", GL_TEXTURE_2D);
+    glDeleteLists(list, 1);
+}
+
+
+/* ---- texture environment ---- */
+
+static void env_state(fc_h *h, const char *label)
+{
+    static const GLenum pnames[] = {
+        GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB, GL_COMBINE_ALPHA,
+        GL_SOURCE0_RGB, GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_SOURCE3_RGB_NV,
+        GL_SOURCE0_ALPHA, GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA, GL_SOURCE3_ALPHA_NV,
+        GL_OPERAND0_RGB, GL_OPERAND1_RGB, GL_OPERAND2_RGB, GL_OPERAND3_RGB_NV,
+        GL_OPERAND0_ALPHA, GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA, GL_OPERAND3_ALPHA_NV,
+        GL_RGB_SCALE, GL_ALPHA_SCALE,
+    };
+    char l[96];
+    for (size_t i = 0; i < sizeof pnames / sizeof pnames[0]; i++) {
+        GLfloat f[4] = { -7, -7, -7, -7 };
+        GLint iv[4] = { -7, -7, -7, -7 };
+        glGetTexEnvfv(GL_TEXTURE_ENV, pnames[i], f);
+        glGetTexEnviv(GL_TEXTURE_ENV, pnames[i], iv);
+        snprintf(l, sizeof l, "%s %x fv", label, pnames[i]);
+        fc_blob(h, l, f, sizeof f);
+        snprintf(l, sizeof l, "%s %x iv", label, pnames[i]);
+        fc_blob(h, l, iv, sizeof iv);
+    }
+    GLfloat b = -7;
+    GLint bi = -7;
+    glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, &b);
+    glGetTexEnviv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, &bi);
+    snprintf(l, sizeof l, "%s lod bias", label);
+    fc_blob(h, l, &b, sizeof b);
+    fc_value(h, l, bi);
+    snprintf(l, sizeof l, "%s errors", label);
+    fc_error(h, l);
+}
+
+static void env_set(fc_h *h, const char *label, GLenum pname, GLint v)
+{
+    glTexEnvi(GL_TEXTURE_ENV, pname, v);
+    fc_error(h, label);
+}
+
+/* glTexEnv: every mode, the colour, every combiner parameter and value,
+ * their errors, the LOD bias, push/pop and lists. */
+static void environment(fc_h *h)
+{
+    env_state(h, "initial");
+    static const GLint modes[] = { GL_BLEND, GL_DECAL, GL_REPLACE, GL_ADD, GL_COMBINE,
+                                   GL_COMBINE4_NV, GL_MODULATE, GL_LINEAR, 0 };
+    char l[96];
+    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++) {
+        snprintf(l, sizeof l, "mode %x", modes[i]);
+        env_set(h, l, GL_TEXTURE_ENV_MODE, modes[i]);
+        GLint m = -7;
+        glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &m);
+        fc_value(h, l, m);
+    }
+    glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLfloat)GL_DECAL + 0.7f);
+    fc_error(h, "mode float");
+    const GLfloat col[4] = { -0.5f, 0.25f, 1.5f, 0.75f };
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, col);
+    env_state(h, "colour f");
+    const GLint coli[4] = { 2147483647, -2147483647 - 1, 1073741824, 0 };
+    glTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, coli);
+    env_state(h, "colour i");
+    glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, 0.5f);
+    env_state(h, "colour scalar");
+    static const GLint cmodes[] = { GL_REPLACE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE,
+                                    GL_SUBTRACT, GL_DOT3_RGB, GL_DOT3_RGBA, GL_DOT3_RGB_EXT,
+                                    GL_MODULATE_ADD_ATI, GL_MODULATE_SIGNED_ADD_ATI,
+                                    GL_MODULATE_SUBTRACT_ATI, GL_BLEND, GL_MODULATE };
+    for (size_t i = 0; i < sizeof cmodes / sizeof cmodes[0]; i++) {
+        snprintf(l, sizeof l, "combine rgb %x", cmodes[i]);
+        env_set(h, l, GL_COMBINE_RGB, cmodes[i]);
+        snprintf(l, sizeof l, "combine alpha %x", cmodes[i]);
+        env_set(h, l, GL_COMBINE_ALPHA, cmodes[i]);
+        env_state(h, l);
+    }
+    static const GLint sources[] = { GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS,
+                                     GL_TEXTURE0, GL_TEXTURE7, GL_TEXTURE8, GL_TEXTURE31,
+                                     GL_ZERO, GL_ONE, GL_SRC_COLOR };
+    static const GLenum spn[] = { GL_SOURCE0_RGB, GL_SOURCE1_RGB, GL_SOURCE2_RGB, GL_SOURCE3_RGB_NV,
+                                  GL_SOURCE0_ALPHA, GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA,
+                                  GL_SOURCE3_ALPHA_NV };
+    for (size_t p = 0; p < sizeof spn / sizeof spn[0]; p++)
+        for (size_t i = 0; i < sizeof sources / sizeof sources[0]; i++) {
+            snprintf(l, sizeof l, "source %x %x", spn[p], sources[i]);
+            env_set(h, l, spn[p], sources[i]);
+        }
+    env_state(h, "sources");
+    static const GLint operands[] = { GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
+                                      GL_ONE_MINUS_SRC_ALPHA, GL_ZERO };
+    static const GLenum opn[] = { GL_OPERAND0_RGB, GL_OPERAND1_RGB, GL_OPERAND2_RGB,
+                                  GL_OPERAND3_RGB_NV, GL_OPERAND0_ALPHA, GL_OPERAND1_ALPHA,
+                                  GL_OPERAND2_ALPHA, GL_OPERAND3_ALPHA_NV };
+    for (size_t p = 0; p < sizeof opn / sizeof opn[0]; p++)
+        for (size_t i = 0; i < sizeof operands / sizeof operands[0]; i++) {
+            snprintf(l, sizeof l, "operand %x %x", opn[p], operands[i]);
+            env_set(h, l, opn[p], operands[i]);
+        }
+    env_state(h, "operands");
+    static const GLfloat scales[] = { 2.0f, 4.0f, 3.0f, 0.0f, 1.0f, 4.0f };
+    for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+        glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, scales[i]);
+        glTexEnvfv(GL_TEXTURE_ENV, GL_ALPHA_SCALE, &scales[i]);
+        snprintf(l, sizeof l, "scale %g", scales[i]);
+        env_state(h, l);
+    }
+    glTexEnvi(GL_TEXTURE_ENV, GL_RGB_SCALE, 2);
+    env_state(h, "scale int");
+    /* LOD bias, bad targets and pnames */
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 2.75f);
+    env_state(h, "lod bias");
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_ENV_MODE, 1.0f);
+    fc_error(h, "filter control bad pname");
+    glTexEnvi(GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    fc_error(h, "bad target");
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    fc_error(h, "bad pname");
+    GLfloat f = -7;
+    glGetTexEnvfv(GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, &f);
+    fc_error(h, "get bad target");
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_MIN_FILTER, &f);
+    fc_error(h, "get bad pname");
+    glBegin(GL_POINTS);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glEnd();
+    fc_error(h, "in begin");
+    /* push/pop */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, col);
+    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_PRIMARY_COLOR);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, -1.0f);
+    glPopAttrib();
+    env_state(h, "popped");
+    /* lists */
+    const GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, coli);
+    glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 4.0f);
+    glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, 3.0f);   /* error at replay */
+    glEndList();
+    env_state(h, "after compile");
+    glCallList(list);
+    env_state(h, "after replay");
+    glDeleteLists(list, 1);
+}
+
+
+/* Every environment mode with an incomplete texture enabled, lit with fog
+ * and unlit: the unit is left out, so the mode changes nothing. */
+static void incomplete_env_modes(fc_h *h)
+{
+    static const GLenum modes[6] = { GL_MODULATE, GL_DECAL, GL_REPLACE, GL_BLEND, GL_ADD,
+                                     GL_COMBINE };
+    static const GLfloat envcol[4] = { 0.9f, 0.1f, 0.5f, 0.3f };
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envcol);
+    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED);
+    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_CONSTANT);
+    for (int m = 0; m < 6; m++) {
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)modes[m]);
+        glPushAttrib(GL_ALL_ATTRIB_BITS);
+        incomplete_scene(h, (m & 1) != 0, m >= 2);
+        glPopAttrib();
+    }
+}
+
+
+/* GL_TEXTURE_BIT before any glBindTexture: the oracle saves the objects
+ * and LOD bias only of units that have had a texture bound, so the default
+ * objects' parameters are not restored; a unit first bound after the push
+ * goes back to the default objects, the node's stale LOD bias comes back. */
+static void texture_pushpop_unused(fc_h *h)
+{
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 1.5f);
+    glBindTexture(GL_TEXTURE_2D, 0);   /* already bound: does not count */
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_T, GL_CLAMP);
+    glPopAttrib();
+    tex_params(h, "unused 2d", GL_TEXTURE_2D);
+    tex_params(h, "unused 1d", GL_TEXTURE_1D);
+    env_state(h, "unused env");
+    /* bound after the push */
+    glPushAttrib(GL_TEXTURE_BIT);
+    glBindTexture(GL_TEXTURE_2D, 5);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, -2.0f);
+    glPopAttrib();
+    bindings(h, "bound after push");
+    tex_params(h, "bound after push 2d", GL_TEXTURE_2D);
+    env_state(h, "bound after push env");
+    /* now saved: a second level of nesting */
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 3.0f);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 4.0f);
+    glPopAttrib();
+    env_state(h, "inner pop");
+    tex_params(h, "inner pop 2d", GL_TEXTURE_2D);
+    glPopAttrib();
+    env_state(h, "outer pop");
+}
+
+
+/* ---- coordinate generation state ---- */
+
+static void gen_state(fc_h *h, const char *label)
+{
+    static const GLenum coords[4] = { GL_S, GL_T, GL_R, GL_Q };
+    static const GLenum pn[3] = { GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE };
+    char l[96];
+    for (int c = 0; c < 4; c++)
+        for (int p = 0; p < 3; p++) {
+            GLfloat f[4] = { -7, -7, -7, -7 };
+            GLint iv[4] = { -7, -7, -7, -7 };
+            GLdouble d[4] = { -7, -7, -7, -7 };
+            glGetTexGenfv(coords[c], pn[p], f);
+            glGetTexGeniv(coords[c], pn[p], iv);
+            glGetTexGendv(coords[c], pn[p], d);
+            snprintf(l, sizeof l, "%s %x %x", label, coords[c], pn[p]);
+            fc_blob(h, l, f, sizeof f);
+            fc_blob(h, l, iv, sizeof iv);
+            fc_blob(h, l, d, sizeof d);
+        }
+    snprintf(l, sizeof l, "%s errors", label);
+    fc_error(h, l);
+}
+
+/* glTexGen: modes per coordinate and their errors, object planes, eye
+ * planes through several modelviews (inverse applied at specification),
+ * every variant, push/pop and lists. */
+static void texgen(fc_h *h)
+{
+    gen_state(h, "initial");
+    static const GLenum coords[4] = { GL_S, GL_T, GL_R, GL_Q };
+    static const GLint modes[] = { GL_OBJECT_LINEAR, GL_SPHERE_MAP, GL_REFLECTION_MAP,
+                                   GL_NORMAL_MAP, GL_EYE_LINEAR, GL_LINEAR };
+    char l[96];
+    for (int c = 0; c < 4; c++)
+        for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+            glTexGeni(coords[c], GL_TEXTURE_GEN_MODE, modes[m]);
+            snprintf(l, sizeof l, "mode %x %x", coords[c], modes[m]);
+            fc_error(h, l);
+            GLint got = -7;
+            glGetTexGeniv(coords[c], GL_TEXTURE_GEN_MODE, &got);
+            fc_value(h, l, got);
+        }
+    const GLfloat op[4] = { 0.5f, -1.25f, 3.0f, 7.9f };
+    glTexGenfv(GL_S, GL_OBJECT_PLANE, op);
+    const GLdouble opd[4] = { 1.0 / 3.0, 2.0, -3.5, 1e-3 };
+    glTexGendv(GL_T, GL_OBJECT_PLANE, opd);
+    const GLint opi[4] = { 1, -2, 3, 100000 };
+    glTexGeniv(GL_R, GL_OBJECT_PLANE, opi);
+    glTexGenf(GL_Q, GL_OBJECT_PLANE, 2.0f);
+    gen_state(h, "object planes");
+    glTexGend(GL_S, GL_TEXTURE_GEN_MODE, (GLdouble)GL_SPHERE_MAP);
+    glTexGenf(GL_R, GL_TEXTURE_GEN_MODE, (GLfloat)GL_SPHERE_MAP);
+    fc_error(h, "sphere on r");
+    gen_state(h, "modes");
+    /* eye planes under moving modelviews */
+    const GLfloat ep[4] = { 1.0f, 0.5f, -0.25f, 2.0f };
+    glTexGenfv(GL_S, GL_EYE_PLANE, ep);
+    glTranslatef(1.0f, -2.0f, 3.0f);
+    glTexGenfv(GL_T, GL_EYE_PLANE, ep);
+    glRotatef(33.0f, 0.3f, 0.4f, 0.5f);
+    glScalef(2.0f, 0.5f, 3.0f);
+    glTexGenfv(GL_R, GL_EYE_PLANE, ep);
+    const GLfloat m[16] = { 1, 2, 0, 0.5f, 0, 1, 3, 0, 0.25f, 0, 1, 0, 4, 5, 6, 1 };
+    glLoadMatrixf(m);
+    const GLdouble epd[4] = { 0.1, 0.2, 0.3, 0.4 };
+    glTexGendv(GL_Q, GL_EYE_PLANE, epd);
+    gen_state(h, "eye planes");
+    glScalef(0.0f, 1.0f, 1.0f);   /* singular */
+    glTexGenfv(GL_S, GL_EYE_PLANE, ep);
+    gen_state(h, "singular");
+    glLoadIdentity();
+    /* errors */
+    glTexGeni(GL_S + 4, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    fc_error(h, "bad coord");
+    glTexGeni(GL_S, GL_TEXTURE_ENV_MODE, GL_EYE_LINEAR);
+    fc_error(h, "bad pname");
+    GLfloat f[4];
+    glGetTexGenfv(GL_S + 4, GL_TEXTURE_GEN_MODE, f);
+    fc_error(h, "get bad coord");
+    glGetTexGenfv(GL_S, GL_TEXTURE_ENV_MODE, f);
+    fc_error(h, "get bad pname");
+    glBegin(GL_POINTS);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glEnd();
+    fc_error(h, "in begin");
+    /* push/pop, with the enables */
+    glEnable(GL_TEXTURE_GEN_S);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glTexGenfv(GL_T, GL_OBJECT_PLANE, ep);
+    glTexGenfv(GL_R, GL_EYE_PLANE, op);
+    glDisable(GL_TEXTURE_GEN_S);
+    glEnable(GL_TEXTURE_GEN_Q);
+    glPopAttrib();
+    gen_state(h, "popped");
+    fc_is_enabled(h, "gen s", GL_TEXTURE_GEN_S);
+    fc_is_enabled(h, "gen q", GL_TEXTURE_GEN_Q);
+    /* lists: compiled, the eye plane transformed at replay */
+    const GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
+    glTexGeniv(GL_S, GL_EYE_PLANE, opi);
+    glTexGend(GL_Q, GL_TEXTURE_GEN_MODE, (GLdouble)GL_REFLECTION_MAP);   /* error */
+    glEndList();
+    gen_state(h, "after compile");
+    glTranslatef(0.5f, 0.25f, -1.0f);
+    glCallList(list);
+    gen_state(h, "after replay");
+    glDeleteLists(list, 1);
+}
+
 const fc_case fc_cases_texstate[] = {
     FC_CASE_RGBA("texstate/coord_variants", 16, 16, 0, "texture api", coord_variants),
     FC_CASE_RGBA("texstate/coord_feedback", 32, 32, 0, "texture api feedback", coord_feedback),
@@ -508,5 +1160,15 @@ const fc_case fc_cases_texstate[] = {
     FC_CASE_RGBA("texstate/incomplete_lit_fog", 48, 48, 3, "texture api lighting fog",
                  incomplete_lit_fog),
     FC_CASE_RGBA("texstate/incomplete_blend", 48, 48, 3, "texture api fragment", incomplete_blend),
+    FC_CASE_RGBA("texstate/objects", 16, 16, 0, "texture api", objects),
+    FC_CASE_RGBA("texstate/parameters", 16, 16, 0, "texture api", parameters),
+    FC_CASE_RGBA("texstate/texture_pushpop", 16, 16, 0, "texture api attrib", texture_pushpop),
+    FC_CASE_RGBA("texstate/texture_dlist", 16, 16, 0, "texture api dlist", texture_dlist),
+    FC_CASE_RGBA("texstate/incomplete_env_modes", 48, 48, 18, "texture api lighting fog",
+                 incomplete_env_modes),
+    FC_CASE_RGBA("texstate/texture_pushpop_unused", 16, 16, 0, "texture api attrib",
+                 texture_pushpop_unused),
+    FC_CASE_RGBA("texstate/environment", 16, 16, 0, "texture api", environment),
+    FC_CASE_RGBA("texstate/texgen", 16, 16, 0, "texture api", texgen),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

@@ -490,16 +490,16 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, GL_TEXTURE0 + (int)ctx->Texture.CurrentUnit, 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_1D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound1D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_1D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_2D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound2D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_2D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_3D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound3D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_3D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_CUBE_MAP:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].BoundCubeMap, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_CUBE], 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_UNITS:
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
