@@ -561,6 +561,13 @@ static void objects(fc_h *h)
     bindings(h, "bound 50");
     glGenTextures(2, t + 3);
     fc_blob(h, "gen after 77", t, sizeof t);
+    /* a generated name's parameters before its first bind: a priority
+     * stays, a rectangle gets its own wraps and filters */
+    const GLclampf half = 0.5f;
+    glPrioritizeTextures(1, &t[4], &half);
+    glBindTexture(GL_TEXTURE_RECTANGLE, t[4]);
+    tex_params(h, "rect first bound", GL_TEXTURE_RECTANGLE);
+    glBindTexture(GL_TEXTURE_RECTANGLE, 0);
     glGenTextures(0, t);
     glGenTextures(-1, t);
     fc_error(h, "gen -1");
@@ -577,7 +584,7 @@ static void objects(fc_h *h)
     names[1] = 12345;
     fc_value(h, "resident unknown", glAreTexturesResident(3, names, res));
     fc_error(h, "resident unknown");
-    names[1] = t[4];   /* generated, never bound */
+    names[1] = t[3];   /* generated, never bound */
     fc_value(h, "resident unbound", glAreTexturesResident(3, names, res));
     fc_error(h, "resident unbound");
     fc_value(h, "resident -1", glAreTexturesResident(-1, names, res));
@@ -803,8 +810,13 @@ static void texture_dlist(fc_h *h)
     glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, bi);
     const GLfloat bf[4] = { 0.5f, 0.25f, 0.125f, 2.0f };
     glTexParameterfv(GL_TEXTURE_1D, GL_TEXTURE_BORDER_COLOR, bf);
+    const GLuint pn[3] = { t[0], 0, t[1] };
+    const GLclampf pr[3] = { 0.125f, 0.5f, -1.0f };
+    glPrioritizeTextures(3, pn, pr);
+    glPrioritizeTextures(-1, pn, pr);   /* nothing compiled, no error */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_LINEAR);  /* error at replay */
     glBindTexture(GL_TEXTURE_1D, t[0]);                             /* error at replay */
+    glBindTexture(GL_TEXTURE_1D, t[1]);
     glEndList();
     fc_error(h, "compile");
     bindings(h, "after compile");

@@ -34,7 +34,6 @@
  * draws, and every command Mesa executes at once during compilation
  * (queries, client state, pixel store, glReadPixels, glFlush, glFinish,
  * glGenTextures, glDeleteTextures, glIsTexture, glAreTexturesResident,
- * glPrioritizeTextures (not compiled yet: Mesa stores one node per name),
  * glGenLists, glDeleteLists, glIsList, glEndList, glRenderMode,
  * glFeedbackBuffer, glSelectBuffer).
  */
@@ -107,6 +106,9 @@ DL_OPV2(TexParameterfv, E, E, F, 4) /* glTexParameter{f,i,iv}: params[0] as
                                      * float, the rest 0 (hooks) */
 DL_OPV2(TexEnvfv, E, E, F, 4)       /* glTexEnv{f,i,iv}: converted (hooks) */
 DL_OPV2(TexGenfv, E, E, F, 4)       /* glTexGen{i,f,d}[v]: converted (hooks) */
+DL_OP2(PrioritizeTexture1, U, F)    /* glPrioritizeTextures: one node per
+                                     * name, replayed as a call with n = 1
+                                     * (main/dlist.h) */
 
 /* ---- attribute stack, lists ---- */
 DL_OP1(PushAttrib, BF)

@@ -173,8 +173,14 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
             return;
          }
          if (t->Target == 0) {
-            /* finish_texture_init: a rectangle's defaults differ */
-            init_object(t, texture, target);
+            /* [S: texobj.c:finish_texture_init] the target; a rectangle
+             * gets its clamped wraps and linear filters, other parameters
+             * (a priority set before the first bind) stay */
+            t->Target = target;
+            if (target == GL_TEXTURE_RECTANGLE) {
+               t->WrapS = t->WrapT = t->WrapR = GL_CLAMP_TO_EDGE;
+               t->MinFilter = t->MagFilter = GL_LINEAR;
+            }
          }
       } else if (!insert(ctx, texture, target)) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
@@ -280,6 +286,15 @@ void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      /* [S: dlist.c:save_PrioritizeTextures] a node per name (none for
+       * n <= 0), then the call itself under GL_COMPILE_AND_EXECUTE */
+      bool execute = ctx->ExecuteFlag;
+      for (GLsizei i = 0; i < n && textures && priorities; i++)
+         execute = fgl_save_PrioritizeTexture1(ctx, textures[i], priorities[i]);
+      if (!execute)
+         return;
+   }
    if (fgl_inside_begin_end(ctx)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
