@@ -15,6 +15,7 @@ static const fc_case *const groups[] = {
     fc_cases_polygon_mode,
     fc_cases_varray,
     fc_cases_attrib,
+    fc_cases_demo,
 };
 
 size_t fc_case_count(void)
