@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "main/dlist.h"
 #include "main/groups.h"
 
 static _Thread_local struct fgl_context *current_context;
@@ -31,7 +32,7 @@ struct fgl_context *fgl_context_create(void)
    struct fgl_context *ctx = calloc(1, sizeof(*ctx));
    if (!ctx)
       return NULL;
-   if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx)) {
+   if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx) || !fgl_init_dlist(ctx)) {
       fgl_context_destroy(ctx);
       return NULL;
    }
@@ -61,6 +62,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
    if (!ctx)
       return;
    fgl_free_matrix(ctx);
+   fgl_free_dlist(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    free(ctx->_DrawVbuf.queue);
    free(ctx);

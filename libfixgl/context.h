@@ -234,6 +234,15 @@ struct fgl_transform_attrib {
    bool RescaleNormals;     /* GL_RESCALE_NORMAL */
 };
 
+/* GL_LIST_BIT (main/dlist.c) */
+struct fgl_list_attrib {
+   GLuint ListBase;         /* glListBase */
+};
+
+/* The display lists and the list compiler (main/dlist.c) */
+struct fgl_dlist_state;
+#define FGL_MAX_LIST_NESTING 64   /* MAX_LIST_NESTING [S: main/config.h] */
+
 /* GL_VIEWPORT_BIT */
 struct fgl_viewport_attrib {
    int X, Y, Width, Height;   /* after Mesa's clamping */
@@ -378,6 +387,7 @@ struct fgl_attrib_node {
    struct fgl_light_attrib Light;
    float Material[FGL_ATTR_COUNT - FGL_ATTR_MAT_FIRST][4];  /* GL_LIGHTING_BIT */
    struct fgl_line_attrib Line;
+   struct fgl_list_attrib List;
    struct fgl_point_attrib Point;
    struct fgl_polygon_attrib Polygon;
    uint32_t PolygonStipple[32];
@@ -429,6 +439,13 @@ struct fgl_context {
    /* the draw module's line stipple counter (draw_pipe_stipple.c): reset
     * by the first line of a primitive, kept across draws otherwise */
    unsigned StippleCounter;
+
+   /* ---- display lists (main/dlist.c) ---- */
+   struct fgl_list_attrib List;       /* GL_LIST_BIT */
+   bool CompileFlag;          /* compiling a list: entry points store calls
+                               * (off while a list executes) */
+   bool ExecuteFlag;          /* true, except while compiling GL_COMPILE */
+   struct fgl_dlist_state *ListState;
 
    /* ---- errors ---- */
    GLenum ErrorValue;

@@ -14,6 +14,7 @@ static const fc_case *const groups[] = {
     fc_cases_points_lines,
     fc_cases_polygon_mode,
     fc_cases_varray,
+    fc_cases_dlist,
     fc_cases_attrib,
     fc_cases_demo,
 };

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 /* GL_ENABLE_BIT: the capabilities pop_enable_group restores, in its
  * order [S: main/attrib.c:pop_enable_group].  _mesa_PushAttrib also saves
@@ -175,7 +176,7 @@ struct attrib_group {
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
  * the lighting group's materials).  GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
- * GL_LIST_BIT, GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
+ * GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
  * accepted and save nothing yet: their state gets a line here when it
  * lands (accum before colour, eval after enable, list after line, pixel
  * mode after list, texture after transform, as Mesa pops them).  The
@@ -192,6 +193,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_LIGHTING_BIT, Light, Light, FGL_NEW_LIGHT, save_flush_current, restore_light),
    GROUP(GL_LIGHTING_BIT, Current.Attrib[FGL_ATTR_MAT_FIRST], Material, 0, NULL, restore_nothing),
    GROUP(GL_LINE_BIT, Line, Line, FGL_NEW_LINE, NULL, NULL),
+   GROUP(GL_LIST_BIT, List, List, 0, NULL, NULL),
    GROUP(GL_POINT_BIT, Point, Point, FGL_NEW_POINT, NULL, NULL),
    GROUP(GL_POLYGON_BIT, Polygon, Polygon, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_POLYGON_STIPPLE_BIT, PolygonStipple, PolygonStipple, FGL_NEW_POLYGON, NULL, NULL),
@@ -206,6 +208,7 @@ void GLAPIENTRY glPushAttrib(GLbitfield mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PushAttrib, mask);
    /* not in the oracle's glBegin/glEnd dispatch table (generic_nop) */
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->AttribStackDepth >= FGL_MAX_ATTRIB_STACK_DEPTH) {
@@ -233,6 +236,7 @@ void GLAPIENTRY glPopAttrib(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE0(ctx, PopAttrib);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* FLUSH_VERTICES comes before the underflow check */
    fgl_flush_vertices(ctx);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "main/conv.h"
+#include "main/dlist.h"
 #include "main/groups.h"
 
 void fgl_init_current(struct fgl_context *ctx)
@@ -35,11 +36,8 @@ void fgl_init_current(struct fgl_context *ctx)
 
 /* ---- glBegin / glEnd ---- */
 
-void GLAPIENTRY glBegin(GLenum mode)
+void fgl_exec_begin(struct fgl_context *ctx, GLenum mode)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
    if (fgl_inside_begin_end(ctx)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
@@ -55,16 +53,37 @@ void GLAPIENTRY glBegin(GLenum mode)
    ctx->BeginMode = mode;
 }
 
-void GLAPIENTRY glEnd(void)
+void fgl_exec_end(struct fgl_context *ctx)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
    if (!fgl_inside_begin_end(ctx)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
    fgl_vbo_end(ctx);
+}
+
+void GLAPIENTRY glBegin(GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_begin(ctx, mode);
+      return;
+   }
+   fgl_exec_begin(ctx, mode);
+}
+
+void GLAPIENTRY glEnd(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_end(ctx);
+      return;
+   }
+   fgl_exec_end(ctx);
 }
 
 /* ---- attributes ---- */
@@ -74,7 +93,7 @@ static inline void color4(float r, float g, float b, float a, unsigned n)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   fgl_vbo_attr(ctx, FGL_ATTR_COLOR0, n, r, g, b, a);
+   fgl_attr(ctx, FGL_ATTR_COLOR0, n, r, g, b, a);
 }
 
 static inline void vertex4(float x, float y, float z, float w, unsigned n)
@@ -82,7 +101,7 @@ static inline void vertex4(float x, float y, float z, float w, unsigned n)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   fgl_vbo_attr(ctx, FGL_ATTR_POS, n, x, y, z, w);
+   fgl_attr(ctx, FGL_ATTR_POS, n, x, y, z, w);
 }
 
 #define IDENT(x)           ((GLfloat)(x))
@@ -114,7 +133,7 @@ static inline void normal3(float x, float y, float z)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   fgl_vbo_attr(ctx, FGL_ATTR_NORMAL, 3, x, y, z, 1.0f);
+   fgl_attr(ctx, FGL_ATTR_NORMAL, 3, x, y, z, 1.0f);
 }
 
 /* glNormal3*: three components, integers normalized like colours
@@ -158,7 +177,7 @@ static inline void edge_flag(GLboolean flag)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   fgl_vbo_attr(ctx, FGL_ATTR_EDGEFLAG, 1, (GLfloat)flag, 0.0f, 0.0f, 1.0f);
+   fgl_attr(ctx, FGL_ATTR_EDGEFLAG, 1, (GLfloat)flag, 0.0f, 0.0f, 1.0f);
 }
 
 void GLAPIENTRY glEdgeFlag(GLboolean flag)
@@ -175,7 +194,10 @@ void GLAPIENTRY glEdgeFlagv(const GLboolean *flag)
 /* glRect: one GL_QUADS primitive (x1,y1) (x2,y1) (x2,y2) (x1,y2) through
  * the immediate-mode path, other types converted to float first
  * [S: main/draw.c:_mesa_Rectf, _mesa_Rectd...]; inside glBegin/glEnd it is
- * an INVALID_OPERATION. */
+ * an INVALID_OPERATION.  While compiling, every variant but glRectd is
+ * save_Rectf [S: vbo/vbo_save_api.c], a quad of the vertex list whatever
+ * the compiler's state; Mesa has no save_Rectd, so glRectd runs
+ * _mesa_Rectf, whose glBegin/glVertex/glEnd are compiled. */
 static void rectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -190,13 +212,24 @@ static void rectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
    glEnd();
 }
 
-#define RECT_FUNCS(suffix, type)                                                \
-   void GLAPIENTRY glRect##suffix(type x1, type y1, type x2, type y2)           \
-   { rectf((GLfloat)x1, (GLfloat)y1, (GLfloat)x2, (GLfloat)y2); }               \
-   void GLAPIENTRY glRect##suffix##v(const type *v1, const type *v2)            \
-   { if (v1 && v2) rectf((GLfloat)v1[0], (GLfloat)v1[1], (GLfloat)v2[0], (GLfloat)v2[1]); }
+static void rect_save(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag)
+      fgl_save_rect(ctx, x1, y1, x2, y2);
+   else
+      rectf(x1, y1, x2, y2);
+}
 
-RECT_FUNCS(s, GLshort)
-RECT_FUNCS(i, GLint)
-RECT_FUNCS(f, GLfloat)
-RECT_FUNCS(d, GLdouble)
+#define RECT_FUNCS(suffix, type, RECT)                                          \
+   void GLAPIENTRY glRect##suffix(type x1, type y1, type x2, type y2)           \
+   { RECT((GLfloat)x1, (GLfloat)y1, (GLfloat)x2, (GLfloat)y2); }                \
+   void GLAPIENTRY glRect##suffix##v(const type *v1, const type *v2)            \
+   { if (v1 && v2) rect_save((GLfloat)v1[0], (GLfloat)v1[1], (GLfloat)v2[0], (GLfloat)v2[1]); }
+
+RECT_FUNCS(s, GLshort, rect_save)
+RECT_FUNCS(i, GLint, rect_save)
+RECT_FUNCS(f, GLfloat, rect_save)
+RECT_FUNCS(d, GLdouble, rectf)

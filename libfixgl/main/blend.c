@@ -6,6 +6,7 @@
  * main/blend.c.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_blend(struct fgl_context *ctx)
 {
@@ -30,6 +31,7 @@ void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, AlphaFunc, func, ref);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.AlphaFunc == func && ctx->Color.AlphaRef == ref)
       return; /* no change */
@@ -79,6 +81,7 @@ void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, BlendFunc, sfactor, dfactor);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.BlendSrc == sfactor && ctx->Color.BlendDst == dfactor)
       return; /* skip_blend_state_update */
@@ -96,6 +99,7 @@ void GLAPIENTRY glBlendEquation(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, BlendEquation, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.BlendEquation == mode)
       return;
@@ -119,6 +123,7 @@ void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclam
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, BlendColor, red, green, blue, alpha);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const float c[4] = { red, green, blue, alpha };
    float *bc = ctx->Color.BlendColor;
@@ -134,6 +139,7 @@ void GLAPIENTRY glLogicOp(GLenum opcode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, LogicOp, opcode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Color.LogicOp == opcode)
       return;
@@ -150,6 +156,7 @@ void GLAPIENTRY glColorMask(GLboolean red, GLboolean green, GLboolean blue, GLbo
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ColorMask, red, green, blue, alpha);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const unsigned mask = (red ? 1u : 0u) | (green ? 2u : 0u) | (blue ? 4u : 0u) |
                          (alpha ? 8u : 0u);

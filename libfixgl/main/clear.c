@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_color(struct fgl_context *ctx)
 {
@@ -19,6 +20,7 @@ void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclam
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ClearColor, red, green, blue, alpha);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    ctx->Color.ClearColor[0] = red;
    ctx->Color.ClearColor[1] = green;
@@ -90,6 +92,7 @@ void GLAPIENTRY glClear(GLbitfield mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Clear, mask);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    if (mask & ~(GLbitfield)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |

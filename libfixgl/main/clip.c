@@ -12,6 +12,7 @@
  * projection: fgl_update_clip_planes derives it in state.c.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 /* _mesa_transform_vector: u = v * m (row vector times matrix), each sum
  * left to right. */
@@ -27,6 +28,7 @@ void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ClipPlane, plane, equation, equation ? 4 : 0);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const int p = (int)plane - (int)GL_CLIP_PLANE0;
    if (p < 0 || p >= FGL_MAX_CLIP_PLANES) {

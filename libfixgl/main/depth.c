@@ -3,6 +3,7 @@
  * glClearDepth.  GL_DEPTH_TEST itself is in main/enable.c.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_depth(struct fgl_context *ctx)
 {
@@ -17,6 +18,7 @@ void GLAPIENTRY glDepthFunc(GLenum func)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, DepthFunc, func);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Depth.Func == func)
       return;
@@ -33,6 +35,7 @@ void GLAPIENTRY glDepthMask(GLboolean flag)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, DepthMask, flag);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const bool mask = flag != GL_FALSE;
    if (ctx->Depth.Mask == mask)
@@ -46,6 +49,7 @@ void GLAPIENTRY glClearDepth(GLclampd depth)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ClearDepth, depth);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    ctx->Depth.Clear = depth < 0.0 ? 0.0 : (depth > 1.0 ? 1.0 : depth);
 }

@@ -5,6 +5,7 @@
 #include <stddef.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 /* GL 1.x capabilities whose feature has not landed yet: their flags are
  * stored and reported (so programs see the oracle's errors and queries)
@@ -160,6 +161,9 @@ static void set_enable(GLenum cap, bool state)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
+      return;
+   if (ctx->CompileFlag &&
+       !(state ? fgl_save_Enable(ctx, cap) : fgl_save_Disable(ctx, cap)))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (!fgl_set_enable(ctx, cap, state))

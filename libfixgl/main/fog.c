@@ -10,6 +10,7 @@
 
 #include "main/conv.h"
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_fog(struct fgl_context *ctx)
 {
@@ -49,6 +50,7 @@ void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Fogfv, pname, params, !params ? 0 : pname == GL_FOG_COLOR ? 4 : 1);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (!params)
       return;
@@ -119,9 +121,19 @@ void GLAPIENTRY glFogf(GLenum pname, GLfloat param)
    glFogfv(pname, p);
 }
 
+/* While compiling, save_Fogiv (which glFogi goes through) converts only
+ * the pnames it knows: GL_FOG_DISTANCE_MODE_NV is compiled as 0, an error
+ * when the list executes [S: main/dlist.c:save_Fogiv]. */
+static bool fogiv_compiled_as_zero(GLenum pname)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   return ctx && ctx->CompileFlag && pname == GL_FOG_DISTANCE_MODE_NV;
+}
+
 void GLAPIENTRY glFogi(GLenum pname, GLint param)
 {
-   const GLfloat p[4] = { (GLfloat)param, 0.0f, 0.0f, 0.0f };
+   const GLfloat p[4] = { fogiv_compiled_as_zero(pname) ? 0.0f : (GLfloat)param,
+                          0.0f, 0.0f, 0.0f };
    glFogfv(pname, p);
 }
 
@@ -140,7 +152,8 @@ void GLAPIENTRY glFogiv(GLenum pname, const GLint *params)
    case GL_FOG_INDEX:
    case GL_FOG_COORDINATE_SOURCE:
    case GL_FOG_DISTANCE_MODE_NV:
-      p[0] = (GLfloat)params[0];
+      if (!fogiv_compiled_as_zero(pname))
+         p[0] = (GLfloat)params[0];
       break;
    case GL_FOG_COLOR:
       for (int i = 0; i < 4; i++)

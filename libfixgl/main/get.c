@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "main/conv.h"
+#include "main/dlist.h"
 #include "main/groups.h"
 
 enum value_type {
@@ -379,6 +380,13 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
          set_ints(val, V_INT, 1, array_value, 0, 0, 0);
          return true;
       }
+      /* display lists: GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE,
+       * GL_MAX_LIST_NESTING (main/dlist.c) */
+      int list_value;
+      if (fgl_get_list_value(ctx, pname, &list_value)) {
+         set_ints(val, V_INT, 1, list_value, 0, 0, 0);
+         return true;
+      }
       /* every capability is also a boolean state value */
       if (fgl_is_cap(ctx, pname, &val->v[0])) {
          val->type = V_BOOL;
@@ -396,7 +404,11 @@ static bool get_value(GLenum pname, const void *params, struct value *val)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return false;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, false);
+   /* the BeginEnd dispatch's generic_nop; while a list is compiled the
+    * dispatch is the save table, which calls _mesa_Get*v (no check) even
+    * when a GL_COMPILE_AND_EXECUTE list has left a glBegin open */
+   if (!ctx->CompileFlag)
+      ASSERT_OUTSIDE_BEGIN_END_RET(ctx, false);
    if (!fill_value(ctx, pname, val)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return false;

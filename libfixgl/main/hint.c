@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_hint(struct fgl_context *ctx)
 {
@@ -45,6 +46,7 @@ void GLAPIENTRY glHint(GLenum target, GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Hint, target, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (mode != GL_NICEST && mode != GL_FASTEST && mode != GL_DONT_CARE) {
       fgl_error(ctx, GL_INVALID_ENUM);

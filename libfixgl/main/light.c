@@ -13,6 +13,7 @@
 
 #include "main/conv.h"
 #include "main/groups.h"
+#include "main/dlist.h"
 
 static unsigned material_pname_bits(GLenum pname);
 
@@ -84,11 +85,35 @@ static void set_light(struct fgl_context *ctx, struct fgl_light *l, GLenum pname
    }
 }
 
+/* The values of glLightfv's pname that save_Lightfv stores (0 for an
+ * unknown pname: the error comes when the list executes). */
+static unsigned light_param_count(GLenum pname)
+{
+   switch (pname) {
+   case GL_AMBIENT:
+   case GL_DIFFUSE:
+   case GL_SPECULAR:
+   case GL_POSITION:
+      return 4;
+   case GL_SPOT_DIRECTION:
+      return 3;
+   case GL_SPOT_EXPONENT:
+   case GL_SPOT_CUTOFF:
+   case GL_CONSTANT_ATTENUATION:
+   case GL_LINEAR_ATTENUATION:
+   case GL_QUADRATIC_ATTENUATION:
+      return 1;
+   default:
+      return 0;
+   }
+}
+
 void GLAPIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat *params)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Lightfv, light, pname, params, params ? light_param_count(pname) : 0);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const GLint i = (GLint)(light - GL_LIGHT0);
    float temp[4];
@@ -234,6 +259,8 @@ void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat *params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, LightModelfv, pname, params,
+            !params ? 0 : pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (!params)
       return;
@@ -318,6 +345,10 @@ void GLAPIENTRY glShadeModel(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_shade_model(ctx, mode);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Light.ShadeModel == mode)
       return;
@@ -384,6 +415,11 @@ void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat *params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      if (params)
+         fgl_save_material(ctx, face, pname, params);
+      return;
+   }
    unsigned update = ctx->Light.ColorMaterialEnabled ? ~ctx->Light._ColorMaterialBitmask
                                                      : FGL_MAT_BITS_ALL;
    if (!material_face_bits(face, &update)) {
@@ -537,6 +573,7 @@ void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ColorMaterial, face, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const unsigned legal = FGL_MAT_BITS_ALL &
       ~(material_pname_bits(GL_SHININESS) | material_pname_bits(GL_COLOR_INDEXES));

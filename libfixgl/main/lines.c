@@ -8,6 +8,7 @@
  * r_state.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_line(struct fgl_context *ctx)
 {
@@ -23,6 +24,7 @@ void GLAPIENTRY glLineWidth(GLfloat width)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, LineWidth, width);
    /* not in Mesa's begin/end dispatch table: INVALID_OPERATION there */
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* an unchanged width cannot be an error */
@@ -41,6 +43,7 @@ void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, LineStipple, factor, pattern);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    factor = factor < 1 ? 1 : factor > 256 ? 256 : factor;
    if (ctx->Line.StippleFactor == factor && ctx->Line.StipplePattern == pattern)

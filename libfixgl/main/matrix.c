@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 static bool init_stack(struct fgl_matrix_stack *stack, unsigned max_depth, unsigned dirty)
 {
@@ -66,6 +67,7 @@ void GLAPIENTRY glMatrixMode(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, MatrixMode, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Transform.MatrixMode == mode && mode != GL_TEXTURE)
       return;
@@ -83,6 +85,7 @@ void GLAPIENTRY glPushMatrix(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE0(ctx, PushMatrix);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    struct fgl_matrix_stack *stack = ctx->CurrentStack;
    if (stack->Depth + 1 >= stack->MaxDepth) {
@@ -102,6 +105,7 @@ void GLAPIENTRY glPopMatrix(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE0(ctx, PopMatrix);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    struct fgl_matrix_stack *stack = ctx->CurrentStack;
    if (stack->Depth == 0) {
@@ -116,16 +120,17 @@ void GLAPIENTRY glPopMatrix(void)
 }
 
 /* Prologue of the matrix-changing calls. */
-#define MATRIX_OP_BEGIN(ctx)                        \
+#define MATRIX_OP_BEGIN(ctx, save_hook)             \
    GET_CURRENT_CONTEXT(ctx);                        \
    if (!ctx)                                        \
       return;                                       \
+   save_hook;                                       \
    ASSERT_OUTSIDE_BEGIN_END(ctx);                   \
    FGL_FLUSH_VERTICES(ctx, ctx->CurrentStack->DirtyFlag)
 
 void GLAPIENTRY glLoadIdentity(void)
 {
-   MATRIX_OP_BEGIN(ctx);
+   MATRIX_OP_BEGIN(ctx, FGL_SAVE0(ctx, LoadIdentity));
    fgl_matrix_identity(ctx->CurrentStack->Top);
 }
 
@@ -134,6 +139,7 @@ void GLAPIENTRY glLoadMatrixf(const GLfloat *m)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx || !m)
       return;
+   FGL_SAVE(ctx, LoadMatrixf, m, 16);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* loading the matrix already on top changes nothing */
    if (memcmp(m, ctx->CurrentStack->Top->m, 16 * sizeof(float)) == 0)
@@ -163,6 +169,7 @@ void GLAPIENTRY glMultMatrixf(const GLfloat *m)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx || !m)
       return;
+   FGL_SAVE(ctx, MultMatrixf, m, 16);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* Mesa's matrix_mult skips the identity, compared with memcmp: a -0.0
     * entry makes it a real multiplication, which leaves the flags "general"
@@ -187,6 +194,7 @@ void GLAPIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Ortho, left, right, bottom, top, nearval, farval);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const float l = (float)left, r = (float)right, b = (float)bottom, t = (float)top;
    const float n = (float)nearval, f = (float)farval;
@@ -204,6 +212,7 @@ void GLAPIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdoub
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Frustum, left, right, bottom, top, nearval, farval);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const float l = (float)left, r = (float)right, b = (float)bottom, t = (float)top;
    const float n = (float)nearval, f = (float)farval;
@@ -217,7 +226,7 @@ void GLAPIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdoub
 
 void GLAPIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z)
 {
-   MATRIX_OP_BEGIN(ctx);
+   MATRIX_OP_BEGIN(ctx, FGL_SAVE(ctx, Translatef, x, y, z));
    fgl_matrix_translate(ctx->CurrentStack->Top, x, y, z);
 }
 
@@ -228,7 +237,7 @@ void GLAPIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z)
 
 void GLAPIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z)
 {
-   MATRIX_OP_BEGIN(ctx);
+   MATRIX_OP_BEGIN(ctx, FGL_SAVE(ctx, Scalef, x, y, z));
    fgl_matrix_scale(ctx->CurrentStack->Top, x, y, z);
 }
 
@@ -242,6 +251,7 @@ void GLAPIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Rotatef, angle, x, y, z);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (angle == 0.0f)
       return; /* Mesa: a zero rotation changes nothing */

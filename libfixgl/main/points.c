@@ -7,6 +7,7 @@
  * (st_atom_rasterizer.c), which state.c derives into r_state.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_point(struct fgl_context *ctx)
 {
@@ -19,6 +20,7 @@ void GLAPIENTRY glPointSize(GLfloat size)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PointSize, size);
    /* not in Mesa's begin/end dispatch table: INVALID_OPERATION there */
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* an unchanged size cannot be an error */

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_polygon(struct fgl_context *ctx)
 {
@@ -38,6 +39,7 @@ void GLAPIENTRY glFrontFace(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, FrontFace, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Polygon.FrontFace == mode)
       return;
@@ -54,6 +56,7 @@ void GLAPIENTRY glCullFace(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, CullFace, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Polygon.CullFaceMode == mode)
       return;
@@ -73,6 +76,7 @@ void GLAPIENTRY glPolygonMode(GLenum face, GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PolygonMode, face, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -111,6 +115,7 @@ void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, PolygonOffset, factor, units);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Polygon.OffsetFactor == factor && ctx->Polygon.OffsetUnits == units)
       return;
@@ -130,6 +135,18 @@ void GLAPIENTRY glPolygonStipple(const GLubyte *mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && mask) {
+      /* save_PolygonStipple unpacks the pattern with the pixel-store state
+       * of compile time; the replay unpacks the result again with the
+       * state of its own time, as Mesa's does */
+      static const struct fgl_pixelstore packed = { .Alignment = 1 };
+      uint32_t rows[32];
+      GLubyte bytes[128];
+      fgl_unpack_stipple(&ctx->Unpack, mask, rows);
+      fgl_pack_stipple(&packed, rows, bytes);
+      if (!fgl_save_PolygonStipple(ctx, bytes, 128))
+         return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_POLYGON);
    if (!mask)

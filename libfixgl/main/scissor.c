@@ -4,6 +4,7 @@
  * (state.c) and of quad clears (main/clear.c).
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_scissor(struct fgl_context *ctx)
 {
@@ -34,6 +35,7 @@ void GLAPIENTRY glScissor(GLint x, GLint y, GLsizei width, GLsizei height)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Scissor, x, y, width, height);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (width < 0 || height < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);

@@ -5,6 +5,7 @@
  * back copies are always equal here, so it draws single-sided).
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_stencil(struct fgl_context *ctx)
 {
@@ -35,6 +36,7 @@ void GLAPIENTRY glClearStencil(GLint s)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, ClearStencil, s);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    ctx->Stencil.Clear = (GLuint)s;
 }
@@ -68,6 +70,7 @@ void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, StencilFunc, func, ref, mask);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (!valid_func(func)) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -87,6 +90,7 @@ void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, StencilOp, fail, zfail, zpass);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* checked in this order: sfail, zfail, zpass */
    if (!valid_op(fail) || !valid_op(zfail) || !valid_op(zpass)) {
@@ -107,6 +111,7 @@ void GLAPIENTRY glStencilMask(GLuint mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, StencilMask, mask);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Stencil.WriteMask == mask)
       return;

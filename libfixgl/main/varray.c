@@ -16,6 +16,7 @@
  */
 #include <stddef.h>
 
+#include "main/dlist.h"
 #include "main/groups.h"
 #include "tnl/t_pipeline.h"
 
@@ -374,6 +375,10 @@ void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_arrays(ctx, mode, first, count);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
@@ -389,6 +394,10 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_elements(ctx, mode, count, type, indices);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    const GLenum err = validate_draw_elements(mode, count, type);
@@ -405,6 +414,10 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag) {
+      fgl_save_draw_range_elements(ctx, mode, start, end, count, type, indices);
+      return;
+   }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    flush_for_draw(ctx);
    /* _mesa_validate_DrawRangeElements: end < start first */

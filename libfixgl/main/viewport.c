@@ -4,6 +4,7 @@
  * depth range to [0,1].
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 void fgl_init_viewport(struct fgl_context *ctx)
 {
@@ -41,6 +42,7 @@ void GLAPIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, Viewport, x, y, width, height);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (width < 0 || height < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
@@ -59,6 +61,7 @@ void GLAPIENTRY glDepthRange(GLclampd nearval, GLclampd farval)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   FGL_SAVE(ctx, DepthRange, nearval, farval);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    const float n = (float)clampd(nearval), f = (float)clampd(farval);
    if (ctx->Viewport.Near == n && ctx->Viewport.Far == f)

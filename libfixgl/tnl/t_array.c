@@ -29,6 +29,7 @@
 
 #include "context.h"
 #include "main/conv.h"
+#include "main/dlist.h"
 #include "tnl/t_pipeline.h"
 
 /* util_format half -> float, exact */
@@ -258,7 +259,9 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
    float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
    for (int c = 0; c < a->Size; c++)
       v[c] = immediate_comp(p, a->Type, normalized, c);
-   fgl_vbo_attr(ctx, attr, (unsigned)a->Size, v[0], v[1], v[2], v[3]);
+   /* through the compiler while a list is compiled (_mesa_ArrayElement
+    * calls the current dispatch) */
+   fgl_attr(ctx, attr, (unsigned)a->Size, v[0], v[1], v[2], v[3]);
 }
 
 void t_array_element(struct fgl_context *ctx, GLint elt)

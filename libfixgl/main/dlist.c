@@ -1,0 +1,2363 @@
+/*
+ * Display lists, after Mesa 22.3 [S: main/dlist.c, vbo/vbo_save_api.c,
+ * vbo/vbo_save_draw.c, vbo/vbo_save_loopback.c].
+ *
+ * A list is an array of nodes: a header (opcode, size) and its arguments.
+ * The plain commands come from one table (main/dlist_ops.h), which
+ * generates their opcodes, save functions and replay cases here.  The
+ * hand-written parts are the ones Mesa writes by hand:
+ *
+ *  - The vertex-list compiler (vbo_save_api.c).  glBegin/glEnd vertices
+ *    are stored in a vertex format of their own, and consecutive
+ *    primitives accumulate until a compiled state change, an attribute
+ *    call outside glBegin/glEnd or glEndList flushes them into one
+ *    "vertex list" node (compile_vertex_list): independent primitives of
+ *    one mode merge, the last line loop becomes a strip, and the
+ *    primitives become indexed draws (consecutive ones of one mode merged
+ *    into one, strips joined by degenerate triangles, line strips next to
+ *    lines turned into lines, short primitives padded by repeating their
+ *    last vertex).  Replaying the node is one indexed llvmpipe draw per
+ *    mode run, so quads take the 1-3 diagonal, and the list's last
+ *    vertex's attributes become current (playback_copy_to_current).
+ *  - GL_COMPILE_AND_EXECUTE executes a vertex list when it is compiled,
+ *    by "loopback" through the immediate-mode calls, and lists whose
+ *    vertex data depends on state outside them (a glBegin/glEnd open at
+ *    glEndList or around a glCallList) are replayed that way too.
+ *  - Attribute calls outside glBegin/glEnd are nodes of their own (and
+ *    flush the vertex list); glShadeModel and glMaterial skip repeated
+ *    values and execute before flushing; glCallList(s) nest up to
+ *    MAX_LIST_NESTING (64) calls deep.
+ *  - Errors the save functions find are compiled as ERROR nodes, raised
+ *    when the list executes (and at once under GL_COMPILE_AND_EXECUTE);
+ *    everything else is validated by the command when it executes.
+ */
+#include "main/dlist.h"
+
+#include <assert.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "main/groups.h"
+#include "tnl/t_pipeline.h"
+
+/* ------------------------------------------------------------------ */
+/* Nodes and opcodes                                                   */
+/* ------------------------------------------------------------------ */
+
+union dl_node {
+   struct {
+      uint16_t op, size;    /* size: nodes, header included */
+   } h;
+   GLenum e;
+   GLint i;
+   GLsizei sz;
+   GLuint u;
+   GLfloat f;
+   GLboolean b;
+   GLbitfield bf;
+   GLushort us;
+};
+_Static_assert(sizeof(union dl_node) == 4, "nodes are 4 bytes, as Mesa's");
+
+enum dl_opcode {
+#define DL_OP0(Name) DL_OP_##Name,
+#define DL_OP1(Name, A) DL_OP_##Name,
+#define DL_OP2(Name, A, B) DL_OP_##Name,
+#define DL_OP3(Name, A, B, C) DL_OP_##Name,
+#define DL_OP4(Name, A, B, C, D_) DL_OP_##Name,
+#define DL_OP6(Name, A, B, C, D_, E_, F_) DL_OP_##Name,
+#define DL_OPV0(Name, VT, N) DL_OP_##Name,
+#define DL_OPV1(Name, A, VT, N) DL_OP_##Name,
+#define DL_OPV2(Name, A, B, VT, N) DL_OP_##Name,
+#define DL_CUSTOM0 DL_OP0
+#define DL_CUSTOM1 DL_OP1
+#define DL_CUSTOMV2 DL_OPV2
+#include "main/dlist_ops.h"
+#undef DL_OP0
+#undef DL_OP1
+#undef DL_OP2
+#undef DL_OP3
+#undef DL_OP4
+#undef DL_OP6
+#undef DL_OPV0
+#undef DL_OPV1
+#undef DL_OPV2
+#undef DL_CUSTOM0
+#undef DL_CUSTOM1
+#undef DL_CUSTOMV2
+   DL_OP_ATTR,             /* OPCODE_ATTR_{1,2,3,4}F_NV: attr, size, 4 values */
+   DL_OP_CALL_LIST,        /* list */
+   DL_OP_CALL_LISTS,       /* n, type, pointer to a copy of the names */
+   DL_OP_ERROR,            /* a compiled error */
+   DL_OP_VERTEX_LIST,      /* pointer to a struct vertex_list */
+   DL_OP_END_OF_LIST,
+};
+
+#define PTR_NODES (sizeof(void *) / sizeof(union dl_node))
+
+static void put_pointer(union dl_node *n, const void *p)
+{
+   memcpy(n, &p, sizeof(p));
+}
+
+static void *get_pointer(const union dl_node *n)
+{
+   void *p;
+   memcpy(&p, n, sizeof(p));
+   return p;
+}
+
+/* ------------------------------------------------------------------ */
+/* Lists and the name table                                            */
+/* ------------------------------------------------------------------ */
+
+struct display_list {
+   GLuint name;
+   union dl_node *nodes;
+   unsigned count, cap;
+   unsigned walk;           /* replace_op_vertex_list_recursively's mark */
+};
+
+/* Mesa's current vertex primitive while compiling
+ * (ctx->Driver.CurrentSavePrimitive): a GL mode inside glBegin/glEnd. */
+#define PRIM_MAX              GL_PATCHES
+#define PRIM_OUTSIDE_BEGIN_END (PRIM_MAX + 1)
+#define PRIM_UNKNOWN          (PRIM_MAX + 2)
+
+/* VBO_SAVE_BUFFER_SIZE: the compiler's vertex store wraps into a new
+ * vertex list when it would grow beyond this */
+#define SAVE_BUFFER_SIZE (1024 * 1024)
+
+struct save_prim {
+   GLenum mode;
+   bool begin, end;
+   unsigned start, count;
+};
+
+/* A vertex list node (vbo_save_vertex_list). */
+enum vertex_list_kind {
+   VL_DRAW,            /* OPCODE_VERTEX_LIST */
+   VL_COPY_CURRENT,    /* OPCODE_VERTEX_LIST_COPY_CURRENT */
+   VL_LOOPBACK,        /* OPCODE_VERTEX_LIST_LOOPBACK */
+};
+
+struct vertex_list {
+   enum vertex_list_kind kind;
+   unsigned attrsz[FGL_ATTR_COUNT];
+   unsigned vertex_size;
+   /* the vertices as compiled, for loopback */
+   float *buffer;
+   unsigned vertex_count;
+   struct save_prim *prims;   /* after merge_prims */
+   unsigned prim_count;
+   unsigned wrap_count;       /* copied vertices at the start */
+   float *current_data;       /* the last vertex's attributes but the
+                               * position, or NULL */
+   bool draw_begins;
+   /* where the vertices were uploaded: loopback after compilation reads
+    * vertex (start + start_offset + j) at bo + vao_offset */
+   struct bo_image *bo;
+   unsigned vao_offset, start_offset;
+   /* the indexed draws, indices resolved to vertices */
+   struct fgl_vbo_vertex *verts;
+   unsigned nverts;
+   struct fgl_vbo_prim *draws;
+   unsigned ndraws;
+};
+
+/* The buffer object the compiler uploads each vertex list to, vertices
+ * then indices, shared by the lists compiled after it until it is full
+ * [S: vbo_save_api.c:compile_vertex_list, save->current_bo].  The draws
+ * need none of it (they have their vertices), but a list replayed by
+ * loopback after compilation reads its vertices back from here, at the
+ * offsets Mesa computed for the indexed draw: where those are not the
+ * compiled vertices (vertices merged as duplicates, a wrapped line loop's
+ * closing vertex past the uploaded ones), Mesa reads other data, and so
+ * does this. */
+struct bo_image {
+   unsigned refs;
+   unsigned size;
+   uint8_t *data;             /* zeroed when created, as llvmpipe's */
+};
+
+#define SAVE_BO_MIN_SIZE (1024 * 1024)   /* VBO_SAVE_BUFFER_SIZE */
+
+static struct bo_image *bo_ref(struct bo_image *bo)
+{
+   if (bo)
+      bo->refs++;
+   return bo;
+}
+
+static void bo_unref(struct bo_image *bo)
+{
+   if (bo && --bo->refs == 0) {
+      free(bo->data);
+      free(bo);
+   }
+}
+
+static void bo_write(struct bo_image *bo, unsigned offset, const void *src, size_t bytes)
+{
+   if (!bo || offset >= bo->size)
+      return;
+   if (bytes > bo->size - offset)
+      bytes = bo->size - offset;
+   memcpy(bo->data + offset, src, bytes);
+}
+
+/* vbo_save_context: the vertex list being compiled */
+struct save_context {
+   float *buffer;             /* vertex_store->buffer_in_ram */
+   unsigned used;             /* floats */
+   unsigned buffer_size;      /* bytes: buffer_in_ram_size, kept from
+                               * list to list as Mesa keeps its store */
+   unsigned alloc;            /* floats actually allocated */
+   struct save_prim *prims;
+   unsigned prim_used, prim_size;
+   unsigned attrsz[FGL_ATTR_COUNT];
+   unsigned active_sz[FGL_ATTR_COUNT];
+   unsigned vertex_size;
+   unsigned attroff[FGL_ATTR_COUNT];
+   float vertex[FGL_ATTR_COUNT * 4];
+   float *copied;             /* copied.buffer */
+   unsigned copied_nr;
+   bool dangling_attr_ref;
+   bool no_current_update;
+   struct bo_image *bo;       /* current_bo */
+   unsigned bo_used;          /* current_bo_bytes_used */
+   unsigned vao_offset;       /* offset of save->VAO[0] (old_offset) */
+};
+
+struct fgl_dlist_state {
+   /* name -> list, sorted by name (Mesa's hash of shared lists) */
+   struct {
+      GLuint name;
+      struct display_list *dl;
+   } *table;
+   unsigned table_count, table_cap;
+   GLuint max_key;            /* highest name ever inserted (MaxKey) */
+   unsigned walk;
+
+   struct display_list *current_list;   /* ListState.CurrentList */
+   unsigned call_depth;            /* ListState.CallDepth */
+   bool use_loopback;              /* ListState.Current.UseLoopback */
+   GLenum shade_model;             /* ListState.Current.ShadeModel */
+   /* ListState.ActiveAttribSize/ActiveMaterialSize and
+    * CurrentAttrib/CurrentMaterial: what the compiler knows of the
+    * current values (save->currentsz, save->current) */
+   unsigned active_size[FGL_ATTR_COUNT];
+   float current[FGL_ATTR_COUNT][4];
+   GLenum save_prim;               /* Driver.CurrentSavePrimitive */
+   bool save_need_flush;           /* Driver.SaveNeedFlush */
+   struct save_context save;
+};
+
+static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+
+static struct display_list *make_list(GLuint name)
+{
+   struct display_list *dl = calloc(1, sizeof(*dl));
+   if (!dl)
+      return NULL;
+   dl->name = name;
+   dl->cap = 8;
+   dl->nodes = malloc(dl->cap * sizeof(*dl->nodes));
+   if (!dl->nodes) {
+      free(dl);
+      return NULL;
+   }
+   dl->nodes[0].h.op = DL_OP_END_OF_LIST;
+   dl->nodes[0].h.size = 1;
+   dl->count = 1;
+   return dl;
+}
+
+static void free_vertex_list(struct vertex_list *vl)
+{
+   bo_unref(vl->bo);
+   free(vl->buffer);
+   free(vl->prims);
+   free(vl->current_data);
+   free(vl->verts);
+   free(vl->draws);
+   free(vl);
+}
+
+static void delete_list(struct display_list *dl)
+{
+   if (!dl)
+      return;
+   for (unsigned i = 0; i < dl->count; i += dl->nodes[i].h.size) {
+      const union dl_node *n = &dl->nodes[i];
+      if (n->h.op == DL_OP_VERTEX_LIST)
+         free_vertex_list(get_pointer(&n[1]));
+      else if (n->h.op == DL_OP_CALL_LISTS)
+         free(get_pointer(&n[3]));
+   }
+   free(dl->nodes);
+   free(dl);
+}
+
+/* index of the first entry with a name >= name */
+static unsigned table_find(const struct fgl_dlist_state *ls, GLuint name)
+{
+   unsigned lo = 0, hi = ls->table_count;
+   while (lo < hi) {
+      const unsigned mid = lo + (hi - lo) / 2;
+      if (ls->table[mid].name < name)
+         lo = mid + 1;
+      else
+         hi = mid;
+   }
+   return lo;
+}
+
+static struct display_list *lookup_list(const struct fgl_context *ctx, GLuint name)
+{
+   const struct fgl_dlist_state *ls = ctx->ListState;
+   if (name == 0)
+      return NULL;
+   const unsigned i = table_find(ls, name);
+   return i < ls->table_count && ls->table[i].name == name ? ls->table[i].dl : NULL;
+}
+
+/* _mesa_HashInsertLocked: replace or add; MaxKey follows. */
+static bool insert_list(struct fgl_context *ctx, struct display_list *dl)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   const unsigned i = table_find(ls, dl->name);
+   if (i < ls->table_count && ls->table[i].name == dl->name) {
+      delete_list(ls->table[i].dl);
+      ls->table[i].dl = dl;
+      return true;
+   }
+   if (ls->table_count == ls->table_cap) {
+      const unsigned cap = ls->table_cap ? ls->table_cap * 2 : 64;
+      void *t = realloc(ls->table, cap * sizeof(*ls->table));
+      if (!t)
+         return false;
+      ls->table = t;
+      ls->table_cap = cap;
+   }
+   memmove(&ls->table[i + 1], &ls->table[i], (ls->table_count - i) * sizeof(*ls->table));
+   ls->table[i].name = dl->name;
+   ls->table[i].dl = dl;
+   ls->table_count++;
+   if (dl->name > ls->max_key)
+      ls->max_key = dl->name;
+   return true;
+}
+
+/* destroy_list */
+static void remove_list(struct fgl_context *ctx, GLuint name)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   const unsigned i = table_find(ls, name);
+   if (name == 0 || i >= ls->table_count || ls->table[i].name != name)
+      return;
+   delete_list(ls->table[i].dl);
+   memmove(&ls->table[i], &ls->table[i + 1], (ls->table_count - i - 1) * sizeof(*ls->table));
+   ls->table_count--;
+}
+
+/* alloc_instruction: a node of `args` argument cells at the end of the
+ * list being compiled (before its END_OF_LIST, which moves). */
+static union dl_node *alloc_node(struct fgl_context *ctx, enum dl_opcode op, unsigned args)
+{
+   struct display_list *dl = ctx->ListState->current_list;
+   if (!dl)
+      return NULL;
+   const unsigned size = 1 + args;
+   if (dl->count + size > dl->cap) {
+      unsigned cap = dl->cap;
+      while (cap < dl->count + size)
+         cap *= 2;
+      union dl_node *nodes = realloc(dl->nodes, cap * sizeof(*nodes));
+      if (!nodes) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return NULL;
+      }
+      dl->nodes = nodes;
+      dl->cap = cap;
+   }
+   /* the END_OF_LIST node is the last one; the new node takes its place */
+   union dl_node *n = &dl->nodes[dl->count - 1];
+   memset(n, 0, size * sizeof(*n));
+   n->h.op = (uint16_t)op;
+   n->h.size = (uint16_t)size;
+   n[size].h.op = DL_OP_END_OF_LIST;
+   n[size].h.size = 1;
+   dl->count += size;
+   return n;
+}
+
+bool fgl_init_dlist(struct fgl_context *ctx)
+{
+   ctx->ListState = calloc(1, sizeof(*ctx->ListState));
+   if (!ctx->ListState)
+      return false;
+   ctx->ExecuteFlag = true;
+   ctx->CompileFlag = false;
+   ctx->List.ListBase = 0;
+   ctx->ListState->save_prim = PRIM_UNKNOWN;
+   /* _mesa_init_display_list starts the depth at 1: a glCallList runs
+    * MAX_LIST_NESTING lists deep, its own included */
+   ctx->ListState->call_depth = 1;
+   return true;
+}
+
+void fgl_free_dlist(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (!ls)
+      return;
+   for (unsigned i = 0; i < ls->table_count; i++)
+      delete_list(ls->table[i].dl);
+   delete_list(ls->current_list);
+   free(ls->table);
+   free(ls->save.buffer);
+   free(ls->save.prims);
+   free(ls->save.copied);
+   bo_unref(ls->save.bo);
+   free(ls);
+   ctx->ListState = NULL;
+}
+
+/* ------------------------------------------------------------------ */
+/* Compile-time helpers                                                */
+/* ------------------------------------------------------------------ */
+
+static inline bool inside_save_begin_end(const struct fgl_dlist_state *ls)
+{
+   return ls->save_prim <= PRIM_MAX;
+}
+
+/* _mesa_compile_error: an ERROR node, and the error at once under
+ * GL_COMPILE_AND_EXECUTE. */
+static void compile_error(struct fgl_context *ctx, GLenum error)
+{
+   if (ctx->CompileFlag) {
+      union dl_node *n = alloc_node(ctx, DL_OP_ERROR, 1);
+      if (n)
+         n[1].e = error;
+   }
+   if (ctx->ExecuteFlag)
+      fgl_error(ctx, error);
+}
+
+static void save_flush_vertices(struct fgl_context *ctx);
+
+/* SAVE_FLUSH_VERTICES */
+static inline void save_flush(struct fgl_context *ctx)
+{
+   if (ctx->ListState->save_need_flush)
+      save_flush_vertices(ctx);
+}
+
+/* ASSERT_OUTSIDE_SAVE_BEGIN_END_AND_FLUSH: false after compiling the
+ * error of a command inside glBegin/glEnd. */
+static bool save_prologue(struct fgl_context *ctx)
+{
+   if (inside_save_begin_end(ctx->ListState)) {
+      compile_error(ctx, GL_INVALID_OPERATION);
+      return false;
+   }
+   save_flush(ctx);
+   return true;
+}
+
+/* invalidate_saved_current_state: after glCallList(s) while compiling,
+ * and at glNewList. */
+static void invalidate_saved_current_state(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   memset(ls->active_size, 0, sizeof(ls->active_size));
+   ls->shade_model = 0;
+   ls->save_prim = PRIM_UNKNOWN;
+}
+
+/* ------------------------------------------------------------------ */
+/* The table's save functions and node layouts                         */
+/* ------------------------------------------------------------------ */
+
+#define DL_PUT_E(c, v)  ((c).e = (v))
+#define DL_PUT_I(c, v)  ((c).i = (v))
+#define DL_PUT_SZ(c, v) ((c).sz = (v))
+#define DL_PUT_U(c, v)  ((c).u = (v))
+#define DL_PUT_F(c, v)  ((c).f = (v))
+#define DL_PUT_B(c, v)  ((c).b = (v))
+#define DL_PUT_BF(c, v) ((c).bf = (v))
+#define DL_PUT_US(c, v) ((c).us = (v))
+#define DL_PUT_D(c, v)  ((c).f = (GLfloat)(v))
+#define DL_GET_E(c)  ((c).e)
+#define DL_GET_I(c)  ((c).i)
+#define DL_GET_SZ(c) ((c).sz)
+#define DL_GET_U(c)  ((c).u)
+#define DL_GET_F(c)  ((c).f)
+#define DL_GET_B(c)  ((c).b)
+#define DL_GET_BF(c) ((c).bf)
+#define DL_GET_US(c) ((c).us)
+#define DL_GET_D(c)  ((GLdouble)(c).f)
+
+/* vectors: cells used, store (the first cnt values, zeros after), read */
+#define DL_VEC_NODES_F(N)  (N)
+#define DL_VEC_NODES_D(N)  (N)
+#define DL_VEC_NODES_UB(N) (((N) + 3) / 4)
+
+static void put_vec_F(union dl_node *dst, const GLfloat *v, unsigned cnt, unsigned n)
+{
+   for (unsigned i = 0; i < n; i++)
+      dst[i].f = i < cnt ? v[i] : 0.0f;
+}
+
+static void put_vec_D(union dl_node *dst, const GLdouble *v, unsigned cnt, unsigned n)
+{
+   for (unsigned i = 0; i < n; i++)
+      dst[i].f = i < cnt ? (GLfloat)v[i] : 0.0f;
+}
+
+static void put_vec_UB(union dl_node *dst, const GLubyte *v, unsigned cnt, unsigned n)
+{
+   GLubyte *b = (GLubyte *)dst;
+   for (unsigned i = 0; i < n; i++)
+      b[i] = i < cnt ? v[i] : 0;
+}
+
+static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsigned n)
+{
+   for (unsigned i = 0; i < n; i++)
+      tmp[i] = (GLdouble)src[i].f;
+   return tmp;
+}
+
+#define DL_GET_VEC_F(p, N)  (&(p)->f)
+#define DL_GET_VEC_D(p, N)  get_vec_D((p), (GLdouble[N]){ 0 }, (N))
+#define DL_GET_VEC_UB(p, N) ((const GLubyte *)(p))
+
+#define DL_SAVE_BODY(Name, ...)                                                 \
+   {                                                                            \
+      if (!save_prologue(ctx))                                                  \
+         return false;                                                          \
+      fgl_dl_put_##Name(ctx, __VA_ARGS__);                                      \
+      return ctx->ExecuteFlag;                                                  \
+   }
+
+#define DL_OP0(Name)                                                            \
+   void fgl_dl_put_##Name(struct fgl_context *ctx)                              \
+   {                                                                            \
+      (void)alloc_node(ctx, DL_OP_##Name, 0);                                   \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx)                                \
+   {                                                                            \
+      if (!save_prologue(ctx))                                                  \
+         return false;                                                          \
+      fgl_dl_put_##Name(ctx);                                                   \
+      return ctx->ExecuteFlag;                                                  \
+   }
+#define DL_OP1(Name, A)                                                         \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0)                \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 1);                      \
+      if (n)                                                                    \
+         DL_PUT_##A(n[1], a0);                                                  \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0)                  \
+   DL_SAVE_BODY(Name, a0)
+#define DL_OP2(Name, A, B)                                                      \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1)  \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 2);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1)    \
+   DL_SAVE_BODY(Name, a0, a1)
+#define DL_OP3(Name, A, B, C)                                                   \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          DL_CT_##C a2)                                         \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 3);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         DL_PUT_##C(n[3], a2);                                                  \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        DL_CT_##C a2)                                           \
+   DL_SAVE_BODY(Name, a0, a1, a2)
+#define DL_OP4(Name, A, B, C, D_)                                               \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          DL_CT_##C a2, DL_CT_##D_ a3)                          \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 4);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         DL_PUT_##C(n[3], a2);                                                  \
+         DL_PUT_##D_(n[4], a3);                                                 \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        DL_CT_##C a2, DL_CT_##D_ a3)                            \
+   DL_SAVE_BODY(Name, a0, a1, a2, a3)
+#define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4,           \
+                          DL_CT_##F_ a5)                                        \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 6);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         DL_PUT_##C(n[3], a2);                                                  \
+         DL_PUT_##D_(n[4], a3);                                                 \
+         DL_PUT_##E_(n[5], a4);                                                 \
+         DL_PUT_##F_(n[6], a5);                                                 \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4,             \
+                        DL_CT_##F_ a5)                                          \
+   DL_SAVE_BODY(Name, a0, a1, a2, a3, a4, a5)
+#define DL_OPV0(Name, VT, N)                                                    \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, const DL_CT_##VT *v,         \
+                          unsigned cnt)                                         \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, DL_VEC_NODES_##VT(N));   \
+      if (n)                                                                    \
+         put_vec_##VT(&n[1], v, cnt, N);                                        \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, const DL_CT_##VT *v,           \
+                        unsigned cnt)                                           \
+   DL_SAVE_BODY(Name, v, cnt)
+#define DL_OPV1(Name, A, VT, N)                                                 \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0,                \
+                          const DL_CT_##VT *v, unsigned cnt)                    \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 1 + DL_VEC_NODES_##VT(N)); \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         put_vec_##VT(&n[2], v, cnt, N);                                        \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0,                  \
+                        const DL_CT_##VT *v, unsigned cnt)                      \
+   DL_SAVE_BODY(Name, a0, v, cnt)
+#define DL_OPV2(Name, A, B, VT, N)                                              \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          const DL_CT_##VT *v, unsigned cnt)                    \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 2 + DL_VEC_NODES_##VT(N)); \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         put_vec_##VT(&n[3], v, cnt, N);                                        \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        const DL_CT_##VT *v, unsigned cnt)                      \
+   DL_SAVE_BODY(Name, a0, a1, v, cnt)
+/* the DL_CUSTOM commands: only the node; their save function is below */
+#define DL_CUSTOM0(Name)                                                        \
+   void fgl_dl_put_##Name(struct fgl_context *ctx)                              \
+   {                                                                            \
+      (void)alloc_node(ctx, DL_OP_##Name, 0);                                   \
+   }
+#define DL_CUSTOM1(Name, A)                                                     \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0)                \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 1);                      \
+      if (n)                                                                    \
+         DL_PUT_##A(n[1], a0);                                                  \
+   }
+#define DL_CUSTOMV2(Name, A, B, VT, N)                                          \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          const DL_CT_##VT *v, unsigned cnt)                    \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 2 + DL_VEC_NODES_##VT(N)); \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         put_vec_##VT(&n[3], v, cnt, N);                                        \
+      }                                                                         \
+   }
+#include "main/dlist_ops.h"
+#undef DL_OP0
+#undef DL_OP1
+#undef DL_OP2
+#undef DL_OP3
+#undef DL_OP4
+#undef DL_OP6
+#undef DL_OPV0
+#undef DL_OPV1
+#undef DL_OPV2
+#undef DL_CUSTOM0
+#undef DL_CUSTOM1
+#undef DL_CUSTOMV2
+
+/* ------------------------------------------------------------------ */
+/* The vertex-list compiler [S: vbo/vbo_save_api.c]                    */
+/* ------------------------------------------------------------------ */
+
+static unsigned get_vertex_count(const struct save_context *save)
+{
+   return save->vertex_size ? save->used / save->vertex_size : 0;
+}
+
+/* reset_counters */
+static void reset_counters(struct fgl_context *ctx)
+{
+   struct save_context *save = &ctx->ListState->save;
+   save->used = 0;
+   save->prim_used = 0;
+   save->dangling_attr_ref = false;
+}
+
+static bool ensure_alloc(struct save_context *save, unsigned floats)
+{
+   if (floats <= save->alloc)
+      return true;
+   unsigned alloc = save->alloc ? save->alloc : 1024;
+   while (alloc < floats)
+      alloc *= 2;
+   float *b = realloc(save->buffer, alloc * sizeof(float));
+   if (!b)
+      return false;
+   memset(b + save->alloc, 0, (alloc - save->alloc) * sizeof(float));
+   save->buffer = b;
+   save->alloc = alloc;
+   return true;
+}
+
+/* vbo_copy_vertices (in_dlist): the tail of an open primitive that the
+ * next vertex list repeats; a triangle strip keeps an even count. */
+static unsigned copy_vertices_mode(GLenum mode, unsigned *pcount, unsigned vertex_size,
+                                   float *dst, const float *src)
+{
+   const unsigned count = *pcount;
+   unsigned copy;
+   switch (mode) {
+   case GL_POINTS:
+      return 0;
+   case GL_LINES:
+      copy = count % 2;
+      break;
+   case GL_TRIANGLES:
+      copy = count % 3;
+      break;
+   case GL_QUADS:
+   case GL_LINES_ADJACENCY:
+      copy = count % 4;
+      break;
+   case GL_TRIANGLES_ADJACENCY:
+      copy = count % 6;
+      break;
+   case GL_LINE_STRIP:
+      copy = count < 1 ? count : 1;
+      break;
+   case GL_LINE_STRIP_ADJACENCY:
+      copy = count < 3 ? count : 3;
+      break;
+   case GL_PATCHES:
+      copy = count % 3;
+      break;
+   case GL_LINE_LOOP:
+   case GL_TRIANGLE_FAN:
+   case GL_POLYGON:
+      if (count == 0)
+         return 0;
+      memcpy(dst, src, vertex_size * sizeof(float));
+      if (count == 1)
+         return 1;
+      memcpy(dst + vertex_size, src + (count - 1) * vertex_size, vertex_size * sizeof(float));
+      return 2;
+   case GL_TRIANGLE_STRIP:
+      *pcount -= count % 2;
+      /* fallthrough */
+   case GL_QUAD_STRIP:
+      copy = count <= 1 ? count : 2 + (count % 2);
+      break;
+   default:
+      return 0;
+   }
+   memcpy(dst, src + (count - copy) * vertex_size, copy * vertex_size * sizeof(float));
+   return copy;
+}
+
+/* copy_vertices: for a primitive still open when its list is compiled */
+static unsigned save_copy_vertices(struct save_context *save, struct save_prim *prims,
+                                   unsigned prim_count)
+{
+   struct save_prim *prim = &prims[prim_count - 1];
+   const unsigned sz = save->vertex_size;
+   if (prim->end || !prim->count || !sz)
+      return 0;
+   /* a copy no later list consumed (glEndList or glCallList inside
+    * glBegin/glEnd) is dropped */
+   free(save->copied);
+   save->copied = malloc(sizeof(float) * sz * prim->count);
+   if (!save->copied)
+      return 0;
+   const unsigned r = copy_vertices_mode(prim->mode, &prim->count, sz, save->copied,
+                                         save->buffer + prim->start * sz);
+   if (!r) {
+      free(save->copied);
+      save->copied = NULL;
+   }
+   return r;
+}
+
+/* vbo_try_prim_conversion */
+static void try_prim_conversion(GLenum *mode, unsigned count)
+{
+   if (*mode == GL_LINE_STRIP && count == 2)
+      *mode = GL_LINES;
+   else if ((*mode == GL_TRIANGLE_STRIP || *mode == GL_TRIANGLE_FAN) && count == 3)
+      *mode = GL_TRIANGLES;
+}
+
+/* vbo_merge_draws (in_dlist) */
+static bool merge_draws(struct save_prim *p0, const struct save_prim *p1)
+{
+   if (p0->mode != p1->mode || p0->start + p0->count != p1->start)
+      return false;
+   switch (p0->mode) {
+   case GL_POINTS:
+      break;
+   case GL_LINES:
+      if (p0->count % 2)
+         return false;
+      break;
+   case GL_TRIANGLES:
+      if (p0->count % 3)
+         return false;
+      break;
+   case GL_QUADS:
+   case GL_LINES_ADJACENCY:
+      if (p0->count % 4)
+         return false;
+      break;
+   case GL_TRIANGLES_ADJACENCY:
+      if (p0->count % 6)
+         return false;
+      break;
+   default:
+      /* strips, loops, fans, polygons; lines strips and loops also
+       * because a begin restarts their stipple */
+      return false;
+   }
+   p0->count += p1->count;
+   p0->end = p1->end;
+   return true;
+}
+
+/* merge_prims: the first primitive keeps its mode (the conversion loop
+ * starts at the second one). */
+static void merge_prims(struct save_prim *prims, unsigned *prim_count)
+{
+   struct save_prim *prev = prims;
+   for (unsigned i = 1; i < *prim_count; i++) {
+      struct save_prim *cur = &prims[i];
+      try_prim_conversion(&cur->mode, cur->count);
+      if (merge_draws(prev, cur))
+         continue;
+      prev++;
+      if (prev != cur)
+         *prev = *cur;
+   }
+   *prim_count = (unsigned)(prev - prims) + 1;
+}
+
+/* convert_line_loop_to_strip: the last primitive, when a line loop */
+static void convert_line_loop_to_strip(struct save_context *save, struct vertex_list *vl,
+                                       struct save_prim *prim)
+{
+   if (prim->end) {
+      /* the loop's first vertex appended after its last one (the end of
+       * the buffer) closes it */
+      const unsigned sz = save->vertex_size;
+      if (ensure_alloc(save, (prim->start + prim->count + 1) * sz)) {
+         memcpy(save->buffer + (prim->start + prim->count) * sz,
+                save->buffer + prim->start * sz, sz * sizeof(float));
+         prim->count++;
+         vl->vertex_count++;
+         save->used += sz;
+      }
+   }
+   if (!prim->begin) {
+      /* a later section of a wrapped loop: its first vertex is the loop's
+       * first, copied for the end */
+      prim->start++;
+      prim->count--;
+   }
+   prim->mode = GL_LINE_STRIP;
+}
+
+/* u_prim_vertex_count(mode)->min */
+static unsigned prim_min_vertices(GLenum mode)
+{
+   switch (mode) {
+   case GL_POINTS: return 1;
+   case GL_LINES: case GL_LINE_LOOP: case GL_LINE_STRIP: return 2;
+   case GL_TRIANGLES: case GL_TRIANGLE_STRIP: case GL_TRIANGLE_FAN: case GL_POLYGON: return 3;
+   case GL_QUADS: case GL_QUAD_STRIP: return 4;
+   case GL_LINES_ADJACENCY: case GL_LINE_STRIP_ADJACENCY: return 4;
+   case GL_TRIANGLES_ADJACENCY: case GL_TRIANGLE_STRIP_ADJACENCY: return 6;
+   default: return 1;
+   }
+}
+
+/* A vertex of the compiled buffer as the draw fetches it: each attribute
+ * of the format, missing components (0, 0, 0, 1). */
+static void fetch_vertex(const struct vertex_list *vl, const float *src,
+                         struct fgl_vbo_vertex *dst)
+{
+   for (int a = 0; a < FGL_ATTR_COUNT; a++) {
+      const unsigned sz = vl->attrsz[a];
+      if (!sz)
+         continue;
+      for (unsigned c = 0; c < 4; c++)
+         dst->attr[a][c] = c < sz ? src[c] : attr_default[c];
+      src += sz;
+   }
+}
+
+/* The index buffer of compile_vertex_list (all primitive types are
+ * supported by llvmpipe, so none is converted), resolved to vertices. */
+static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsigned *nidx)
+{
+   const struct save_prim *prims = vl->prims;
+   const unsigned prim_count = vl->prim_count;
+   unsigned total = 0;
+   for (unsigned i = 0; i < prim_count; i++)
+      total += prims[i].count;
+   /* at most 2 indices per vertex for strips turned into lines, plus the
+    * padding and the strip joins */
+   unsigned max_idx = 2 * total + 8 * prim_count + 8;
+   unsigned *indices = malloc(max_idx * sizeof(*indices));
+   struct fgl_vbo_prim *merged = calloc(prim_count ? prim_count : 1, sizeof(*merged));
+   if (!indices || !merged) {
+      free(indices);
+      free(merged);
+      return NULL;
+   }
+   unsigned idx = 0;
+   int last = -1;
+   for (unsigned i = 0; i < prim_count; i++) {
+      GLenum mode = prims[i].mode;
+      const unsigned vertex_count = prims[i].count;
+      if (!vertex_count)
+         continue;
+      /* line strips may become lines */
+      if (mode == GL_LINE_STRIP)
+         mode = GL_LINES;
+      const bool merge = last >= 0 && mode == merged[last].mode &&
+                         mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN &&
+                         mode != GL_QUAD_STRIP && mode != GL_POLYGON && mode != GL_PATCHES;
+      /* consecutive triangle strips are joined by degenerate triangles,
+       * with one more index when the first has an odd triangle count */
+      if (merge && mode == GL_TRIANGLE_STRIP) {
+         const unsigned tri_count = merged[last].count - 2;
+         indices[idx] = indices[idx - 1];
+         indices[idx + 1] = prims[i].start;
+         idx += 2;
+         merged[last].count += 2;
+         if (tri_count % 2) {
+            indices[idx++] = prims[i].start;
+            merged[last].count++;
+         }
+      }
+      const unsigned start = idx;
+      /* a line strip merged into lines, or followed by a strip or lines,
+       * is drawn as lines: inner vertices repeated */
+      if (prims[i].mode == GL_LINE_STRIP &&
+          (merge || (i < prim_count - 1 && (prims[i + 1].mode == GL_LINE_STRIP ||
+                                            prims[i + 1].mode == GL_LINES)))) {
+         for (unsigned j = 0; j < vertex_count; j++) {
+            indices[idx++] = prims[i].start + j;
+            if (j && j != vertex_count - 1)
+               indices[idx++] = prims[i].start + j;
+         }
+      } else {
+         mode = prims[i].mode;
+         for (unsigned j = 0; j < vertex_count; j++)
+            indices[idx++] = prims[i].start + j;
+      }
+      /* an incomplete primitive repeats its last vertex up to the mode's
+       * minimum */
+      for (unsigned j = vertex_count; j < prim_min_vertices(mode); j++)
+         indices[idx++] = prims[i].start + vertex_count - 1;
+      if (merge) {
+         merged[last].count += idx - start;
+      } else {
+         last++;
+         merged[last] = (struct fgl_vbo_prim){
+            .mode = mode, .start = start, .count = idx - start,
+            .begin = prims[i].begin, .end = prims[i].end, .indexed = true,
+         };
+      }
+      merged[last].mode = mode;
+   }
+
+   vl->verts = malloc((idx ? idx : 1) * sizeof(*vl->verts));
+   if (!vl->verts) {
+      free(indices);
+      free(merged);
+      return NULL;
+   }
+   for (unsigned k = 0; k < idx; k++)
+      fetch_vertex(vl, buffer + indices[k] * vl->vertex_size, &vl->verts[k]);
+   vl->nverts = idx;
+   vl->draws = merged;
+   vl->ndraws = (unsigned)(last + 1);
+   *nidx = idx;
+   return indices;
+}
+
+static struct bo_image *bo_new(unsigned size)
+{
+   struct bo_image *bo = calloc(1, sizeof(*bo));
+   if (!bo)
+      return NULL;
+   bo->data = calloc(size, 1);
+   if (!bo->data) {
+      free(bo);
+      return NULL;
+   }
+   bo->size = size;
+   bo->refs = 1;
+   return bo;
+}
+
+/* compile_vertex_list's upload: the vertices (duplicates merged, unless
+ * the list is replayed by loopback), then the indices, placed where Mesa
+ * places them so that a later loopback reads what Mesa reads. */
+static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
+                               unsigned *indices, unsigned idx, unsigned *buffer_offset_out)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   const unsigned vsize = save->vertex_size;
+   const unsigned stride = vsize * (unsigned)sizeof(float);
+   const bool dedup = !ls->use_loopback;
+
+   /* add_vertex: vertices by first use, equal ones (bitwise) merged */
+   float *temp = NULL;
+   unsigned unique = 0;
+   if (dedup) {
+      unsigned hsize = 16;
+      while (hsize < 2 * idx)
+         hsize *= 2;
+      temp = malloc((size_t)(idx ? idx : 1) * vsize * sizeof(float));
+      unsigned *hash = calloc(hsize, sizeof(*hash));   /* unique index + 1 */
+      if (!temp || !hash) {
+         free(temp);
+         free(hash);
+         return;
+      }
+      for (unsigned k = 0; k < idx; k++) {
+         const float *v = save->buffer + (size_t)indices[k] * vsize;
+         uint32_t hv = 2166136261u;   /* FNV-1a of the vertex's bytes */
+         const uint8_t *b = (const uint8_t *)v;
+         for (size_t i = 0; i < vsize * sizeof(float); i++)
+            hv = (hv ^ b[i]) * 16777619u;
+         unsigned slot = hv & (hsize - 1);
+         while (hash[slot] &&
+                memcmp(temp + (size_t)(hash[slot] - 1) * vsize, v, vsize * sizeof(float)) != 0)
+            slot = (slot + 1) & (hsize - 1);
+         if (!hash[slot]) {
+            memcpy(temp + (size_t)unique * vsize, v, vsize * sizeof(float));
+            hash[slot] = ++unique;
+         }
+         indices[k] = hash[slot] - 1;
+      }
+      free(hash);
+   }
+   const unsigned total_vert_count = dedup ? unique : idx;
+   const unsigned total_bytes = idx * 4u + total_vert_count * stride;
+
+   /* the start is padded to a multiple of the stride from the previous
+    * list's offset, so that both can share one vertex array */
+   const unsigned old_offset = save->vao_offset;
+   if (old_offset != save->bo_used && stride > 0 && save->bo) {
+      while (save->bo_used > old_offset && save->bo_used < save->bo->size &&
+             (save->bo_used - old_offset) % stride != 0)
+         save->bo_used++;
+   }
+   unsigned buffer_offset = save->bo_used;
+   unsigned start_offset = 0;
+   const unsigned available = save->bo ? save->bo->size - save->bo_used : 0;
+   if (total_bytes > available) {
+      bo_unref(save->bo);
+      save->bo = bo_new(total_bytes > SAVE_BO_MIN_SIZE ? total_bytes : SAVE_BO_MIN_SIZE);
+      save->bo_used = 0;
+      buffer_offset = 0;
+   } else {
+      if (buffer_offset > old_offset && stride > 0 && (buffer_offset - old_offset) % stride == 0) {
+         start_offset = (buffer_offset - old_offset) / stride;
+         buffer_offset = old_offset;
+      }
+      for (unsigned k = 0; k < idx; k++)
+         indices[k] += start_offset;
+   }
+   /* the vertices: the merged ones, or the first idx of the store */
+   if (!dedup)
+      ensure_alloc(save, idx * vsize);
+   const float *src = dedup ? temp : save->buffer;
+   bo_write(save->bo, save->bo_used, src, (size_t)total_vert_count * stride);
+   save->bo_used += total_vert_count * stride;
+   if (dedup)
+      save->bo_used = (save->bo_used + 3u) & ~3u;
+   bo_write(save->bo, save->bo_used, indices, (size_t)idx * 4u);
+   save->bo_used += idx * 4u;
+   free(temp);
+   vl->start_offset = start_offset;
+   *buffer_offset_out = buffer_offset;
+}
+
+static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl,
+                                 const uint8_t *base, size_t size);
+
+/* compile_vertex_list: the stored primitives become a vertex list node. */
+static void compile_vertex_list(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+
+   struct vertex_list *vl = calloc(1, sizeof(*vl));
+   union dl_node *n = vl ? alloc_node(ctx, DL_OP_VERTEX_LIST, PTR_NODES) : NULL;
+   if (!n) {
+      free(vl);
+      reset_counters(ctx);
+      return;
+   }
+   put_pointer(&n[1], vl);
+   vl->kind = !save->dangling_attr_ref && !save->no_current_update ? VL_COPY_CURRENT : VL_DRAW;
+   memcpy(vl->attrsz, save->attrsz, sizeof(vl->attrsz));
+   vl->vertex_size = save->vertex_size;
+   vl->vertex_count = get_vertex_count(save);
+   vl->wrap_count = save->copied_nr;
+   vl->prim_count = save->prim_used;
+   vl->prims = malloc((save->prim_used ? save->prim_used : 1) * sizeof(*vl->prims));
+   if (vl->prims)
+      memcpy(vl->prims, save->prims, save->prim_used * sizeof(*vl->prims));
+   else
+      vl->prim_count = 0;
+
+   /* the current values after the list: the attributes (but the position)
+    * of the last vertex stored */
+   if (!save->no_current_update) {
+      const unsigned current_size = save->vertex_size - save->attrsz[FGL_ATTR_POS];
+      if (current_size) {
+         vl->current_data = malloc(current_size * sizeof(float));
+         const unsigned vertex_offset =
+            vl->vertex_count ? (vl->vertex_count - 1) * save->vertex_size : 0;
+         if (vl->current_data && ensure_alloc(save, vertex_offset + save->vertex_size))
+            memcpy(vl->current_data, save->buffer + vertex_offset + save->attrsz[FGL_ATTR_POS],
+                   current_size * sizeof(float));
+      }
+   }
+
+   if (save->dangling_attr_ref)
+      ls->use_loopback = true;
+
+   if (vl->prim_count) {
+      save->copied_nr = save_copy_vertices(save, vl->prims, vl->prim_count);
+      if (vl->prims[vl->prim_count - 1].mode == GL_LINE_LOOP)
+         convert_line_loop_to_strip(save, vl, &vl->prims[vl->prim_count - 1]);
+      merge_prims(vl->prims, &vl->prim_count);
+   } else {
+      save->copied_nr = 0;
+   }
+
+   const size_t bytes = (size_t)vl->vertex_count * vl->vertex_size * sizeof(float);
+   vl->buffer = malloc(bytes ? bytes : 1);
+   if (vl->buffer && bytes)
+      memcpy(vl->buffer, save->buffer, bytes);
+
+   unsigned buffer_offset = 0;
+   if (vl->vertex_count && vl->prim_count && vl->buffer) {
+      unsigned nidx = 0;
+      unsigned *indices = build_draws(vl, vl->buffer, &nidx);
+      if (indices) {
+         upload_vertex_list(ctx, vl, indices, nidx, &buffer_offset);
+         free(indices);
+      }
+   }
+   vl->draw_begins = vl->prim_count ? vl->prims[0].begin : save->prim_used && save->prims[0].begin;
+   if (!save->bo)
+      save->bo = bo_new(SAVE_BO_MIN_SIZE);
+   /* update_vao: the next list's old_offset */
+   save->vao_offset = buffer_offset;
+   vl->bo = bo_ref(save->bo);
+   vl->vao_offset = buffer_offset;
+
+   /* GL_COMPILE_AND_EXECUTE: through the immediate-mode calls */
+   if (ctx->ExecuteFlag)
+      loopback_vertex_list(ctx, vl, (const uint8_t *)vl->buffer,
+                           (size_t)vl->vertex_count * vl->vertex_size * sizeof(float));
+
+   reset_counters(ctx);
+}
+
+/* wrap_buffers: the open primitive continues in a new vertex list */
+static void wrap_buffers(struct fgl_context *ctx)
+{
+   struct save_context *save = &ctx->ListState->save;
+   const unsigned i = save->prim_used - 1;
+   save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
+   const GLenum mode = save->prims[i].mode;
+   compile_vertex_list(ctx);
+   save->prims[0] = (struct save_prim){ .mode = mode };
+   save->prim_used = 1;
+}
+
+/* wrap_filled_vertex */
+static void wrap_filled_vertex(struct fgl_context *ctx)
+{
+   struct save_context *save = &ctx->ListState->save;
+   wrap_buffers(ctx);
+   const unsigned num = save->copied_nr * save->vertex_size;
+   if (num && save->copied && ensure_alloc(save, num))
+      memcpy(save->buffer, save->copied, num * sizeof(float));
+   free(save->copied);
+   save->copied = NULL;
+   save->used = num;
+}
+
+/* grow_vertex_storage: room for vertex_count more vertices; beyond
+ * VBO_SAVE_BUFFER_SIZE the list wraps */
+static void grow_vertex_storage(struct fgl_context *ctx, unsigned vertex_count)
+{
+   struct save_context *save = &ctx->ListState->save;
+   unsigned new_size = (save->used + vertex_count * save->vertex_size) * (unsigned)sizeof(float);
+   if (save->prim_used > 0 && vertex_count > 0 && new_size > SAVE_BUFFER_SIZE) {
+      wrap_filled_vertex(ctx);
+      new_size = SAVE_BUFFER_SIZE;
+   }
+   if (new_size > save->buffer_size)
+      save->buffer_size = new_size;
+   ensure_alloc(save, save->buffer_size / (unsigned)sizeof(float) + 1);
+}
+
+/* copy_to_current: the compiler's vertex values become what it knows as
+ * current (COPY_CLEAN_4V) */
+static void save_copy_to_current(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++) {
+      const unsigned sz = save->attrsz[a];
+      if (!sz)
+         continue;
+      for (unsigned c = 0; c < 4; c++)
+         ls->current[a][c] = c < sz ? save->vertex[save->attroff[a] + c] : attr_default[c];
+   }
+}
+
+static void save_copy_from_current(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
+      for (unsigned c = 0; c < save->attrsz[a]; c++)
+         save->vertex[save->attroff[a] + c] = ls->current[a][c];
+}
+
+/* upgrade_vertex: a new or larger attribute */
+static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned newsz)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+
+   if (save->used)
+      wrap_buffers(ctx);
+   save_copy_to_current(ctx);
+
+   const unsigned oldsz = save->attrsz[attr];
+   save->attrsz[attr] = newsz;
+   save->vertex_size += newsz - oldsz;
+   unsigned off = 0;
+   for (int a = 0; a < FGL_ATTR_COUNT; a++) {
+      save->attroff[a] = off;
+      off += save->attrsz[a];
+   }
+   save_copy_from_current(ctx);
+
+   /* the copied vertices in the new format; a new attribute takes the
+    * value the compiler knows, and without one the list depends on the
+    * state it is called in (loopback) */
+   if (save->copied_nr && save->copied) {
+      const float *data = save->copied;
+      grow_vertex_storage(ctx, save->copied_nr);
+      if (!ensure_alloc(save, save->used + save->copied_nr * save->vertex_size))
+         return;
+      float *dest = save->buffer + save->used;
+      if (attr != FGL_ATTR_POS && ls->active_size[attr] == 0)
+         save->dangling_attr_ref = true;
+      for (unsigned i = 0; i < save->copied_nr; i++) {
+         for (int j = 0; j < FGL_ATTR_COUNT; j++) {
+            if (!save->attrsz[j])
+               continue;
+            if (j == (int)attr) {
+               const float *src = oldsz ? data : ls->current[attr];
+               const unsigned copy = oldsz ? oldsz : newsz;
+               unsigned k;
+               for (k = 0; k < copy; k++)
+                  dest[k] = src[k];
+               for (; k < newsz; k++)
+                  dest[k] = k == 3 ? 1.0f : 0.0f;
+               dest += newsz;
+               data += oldsz;
+            } else {
+               const unsigned sz = save->attrsz[j];
+               memcpy(dest, data, sz * sizeof(float));
+               data += sz;
+               dest += sz;
+            }
+         }
+      }
+      save->used += save->vertex_size * save->copied_nr;
+      free(save->copied);
+      save->copied = NULL;
+   }
+}
+
+/* fixup_vertex */
+static void fixup_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned sz)
+{
+   struct save_context *save = &ctx->ListState->save;
+   if (sz > save->attrsz[attr]) {
+      upgrade_vertex(ctx, attr, sz);
+   } else if (sz < save->active_sz[attr]) {
+      for (unsigned i = sz; i <= save->attrsz[attr]; i++)
+         save->vertex[save->attroff[attr] + i - 1] = attr_default[i - 1];
+   }
+   save->active_sz[attr] = sz;
+   grow_vertex_storage(ctx, 1);
+}
+
+/* reset_vertex */
+static void reset_vertex(struct fgl_context *ctx)
+{
+   struct save_context *save = &ctx->ListState->save;
+   memset(save->attrsz, 0, sizeof(save->attrsz));
+   memset(save->active_sz, 0, sizeof(save->active_sz));
+   save->vertex_size = 0;
+}
+
+/* ATTR_UNION of vbo_save_api.c: an attribute inside glBegin/glEnd; the
+ * position stores the vertex. */
+static void save_attr_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                             const float v[4])
+{
+   struct save_context *save = &ctx->ListState->save;
+   if (save->active_sz[attr] != n)
+      fixup_vertex(ctx, attr, n);
+   float *dest = save->vertex + save->attroff[attr];
+   for (unsigned i = 0; i < n; i++)
+      dest[i] = v[i];
+   if (attr == FGL_ATTR_POS) {
+      if (!ensure_alloc(save, save->used + save->vertex_size))
+         return;
+      memcpy(save->buffer + save->used, save->vertex, save->vertex_size * sizeof(float));
+      save->used += save->vertex_size;
+      const unsigned used_next = (save->used + save->vertex_size) * (unsigned)sizeof(float);
+      if (used_next > save->buffer_size)
+         grow_vertex_storage(ctx, get_vertex_count(save));
+   }
+}
+
+/* vbo_save_NotifyBegin */
+static void notify_begin(struct fgl_context *ctx, GLenum mode, bool no_current_update)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   if (save->prim_used >= save->prim_size) {
+      const unsigned size = save->prim_size ? save->prim_size * 2 : 8;
+      struct save_prim *p = realloc(save->prims, size * sizeof(*p));
+      if (!p)
+         return;
+      save->prims = p;
+      save->prim_size = size;
+   }
+   const unsigned i = save->prim_used++;
+   ls->save_prim = mode;
+   save->prims[i] = (struct save_prim){
+      .mode = mode, .begin = true, .start = get_vertex_count(save),
+   };
+   save->no_current_update = no_current_update;
+   ls->save_need_flush = true;
+}
+
+/* _save_End */
+static void save_end_vertex(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   const unsigned i = save->prim_used - 1;
+   ls->save_prim = PRIM_OUTSIDE_BEGIN_END;
+   save->prims[i].end = true;
+   save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
+}
+
+/* vbo_save_SaveFlushVertices */
+static void save_flush_vertices(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls))
+      return;
+   if (ls->save.used || ls->save.prim_used)
+      compile_vertex_list(ctx);
+   save_copy_to_current(ctx);
+   reset_vertex(ctx);
+   ls->save_need_flush = false;
+}
+
+/* dlist_fallback: glCallList(s) inside glBegin/glEnd while compiling */
+static void dlist_fallback(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   struct save_context *save = &ls->save;
+   if (save->used || save->prim_used) {
+      if (save->prim_used > 0 && save->used > 0) {
+         const unsigned i = save->prim_used - 1;
+         save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
+      }
+      save->dangling_attr_ref = true;
+      compile_vertex_list(ctx);
+   }
+   save_copy_to_current(ctx);
+   reset_vertex(ctx);
+   ls->save_need_flush = false;
+}
+
+/* ------------------------------------------------------------------ */
+/* Save functions of the entry points                                  */
+/* ------------------------------------------------------------------ */
+
+void fgl_save_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                   float x, float y, float z, float w)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   const float v[4] = { x, y, z, w };
+   if (inside_save_begin_end(ls)) {
+      save_attr_vertex(ctx, attr, n, v);
+      return;
+   }
+   /* save_Attr32bit: a node of its own, which flushes the vertex list */
+   save_flush(ctx);
+   union dl_node *node = alloc_node(ctx, DL_OP_ATTR, 6);
+   if (node) {
+      node[1].u = attr;
+      node[2].u = n;
+      for (int i = 0; i < 4; i++)
+         node[3 + i].f = v[i];
+   }
+   ls->active_size[attr] = n;
+   memcpy(ls->current[attr], v, sizeof(v));
+   if (ctx->ExecuteFlag)
+      fgl_vbo_attr(ctx, attr, n, x, y, z, w);
+}
+
+/* save_Begin (outside glBegin/glEnd) and _save_Begin (inside) */
+void fgl_save_begin(struct fgl_context *ctx, GLenum mode)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls)) {
+      compile_error(ctx, GL_INVALID_OPERATION);   /* "Recursive glBegin" */
+      return;
+   }
+   /* _mesa_is_valid_prim_mode: everything up to GL_PATCHES in the
+    * oracle's compatibility context */
+   if (mode > GL_PATCHES) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   notify_begin(ctx, mode, false);
+}
+
+/* _save_End inside glBegin/glEnd; save_End for a glEnd whose glBegin is
+ * not in the list: a node that ends the caller's primitive */
+void fgl_save_end(struct fgl_context *ctx)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls)) {
+      save_end_vertex(ctx);
+      return;
+   }
+   save_flush(ctx);
+   fgl_dl_put_End(ctx);
+   ls->save_prim = PRIM_OUTSIDE_BEGIN_END;
+   if (ctx->ExecuteFlag)
+      fgl_exec_end(ctx);
+}
+
+/* save_Rectf [S: vbo_save_api.c]: a GL_QUADS primitive, whatever the
+ * state of the compiler */
+void fgl_save_rect(struct fgl_context *ctx, float x1, float y1, float x2, float y2)
+{
+   notify_begin(ctx, GL_QUADS, false);
+   fgl_save_attr(ctx, FGL_ATTR_POS, 2, x1, y1, 0.0f, 1.0f);
+   fgl_save_attr(ctx, FGL_ATTR_POS, 2, x2, y1, 0.0f, 1.0f);
+   fgl_save_attr(ctx, FGL_ATTR_POS, 2, x2, y2, 0.0f, 1.0f);
+   fgl_save_attr(ctx, FGL_ATTR_POS, 2, x1, y2, 0.0f, 1.0f);
+   fgl_save_end(ctx);
+}
+
+/* _mesa_material_bitmask for a valid face and pname: bit i is
+ * FGL_ATTR_MAT_FIRST + i */
+static unsigned material_bitmask(GLenum face, GLenum pname)
+{
+   unsigned bits = 0;
+   switch (pname) {
+   case GL_EMISSION:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_EMISSION) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_EMISSION);
+      break;
+   case GL_AMBIENT:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_AMBIENT) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_AMBIENT);
+      break;
+   case GL_DIFFUSE:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_DIFFUSE) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_DIFFUSE);
+      break;
+   case GL_SPECULAR:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_SPECULAR) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_SPECULAR);
+      break;
+   case GL_SHININESS:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_SHININESS) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_SHININESS);
+      break;
+   case GL_AMBIENT_AND_DIFFUSE:
+      bits = material_bitmask(GL_FRONT_AND_BACK, GL_AMBIENT) |
+             material_bitmask(GL_FRONT_AND_BACK, GL_DIFFUSE);
+      break;
+   case GL_COLOR_INDEXES:
+      bits = FGL_MAT_BIT(FGL_ATTR_MAT_FRONT_INDEXES) | FGL_MAT_BIT(FGL_ATTR_MAT_BACK_INDEXES);
+      break;
+   default:
+      return 0;
+   }
+   if (face == GL_FRONT)
+      bits &= FGL_MAT_BITS_FRONT;
+   else if (face == GL_BACK)
+      bits &= FGL_MAT_BITS_BACK;
+   return bits;
+}
+
+/* glMaterialfv while compiling: inside glBegin/glEnd the material
+ * attributes of the vertex [S: vbo_save_api.c:_save_Materialfv], outside
+ * a MATERIAL node [S: dlist.c:save_Materialfv], which executes first and
+ * is left out when it sets what the compiler knows to be set. */
+void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
+                       const GLfloat *params)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (inside_save_begin_end(ls)) {
+      /* MAT(): front, then back, each with its size */
+      static const struct { GLenum pname; enum fgl_vbo_attr front; unsigned n; } mats[] = {
+         { GL_EMISSION, FGL_ATTR_MAT_FRONT_EMISSION, 4 },
+         { GL_AMBIENT, FGL_ATTR_MAT_FRONT_AMBIENT, 4 },
+         { GL_DIFFUSE, FGL_ATTR_MAT_FRONT_DIFFUSE, 4 },
+         { GL_SPECULAR, FGL_ATTR_MAT_FRONT_SPECULAR, 4 },
+         { GL_SHININESS, FGL_ATTR_MAT_FRONT_SHININESS, 1 },
+         { GL_COLOR_INDEXES, FGL_ATTR_MAT_FRONT_INDEXES, 3 },
+         { GL_AMBIENT_AND_DIFFUSE, FGL_ATTR_MAT_FRONT_AMBIENT, 4 },
+         { GL_AMBIENT_AND_DIFFUSE, FGL_ATTR_MAT_FRONT_DIFFUSE, 4 },
+      };
+      bool known = false;
+      if (pname == GL_SHININESS && (params[0] < 0.0f || params[0] > 128.0f)) {
+         compile_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+      for (unsigned i = 0; i < sizeof(mats) / sizeof(mats[0]); i++) {
+         if (mats[i].pname != pname)
+            continue;
+         known = true;
+         float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+         for (unsigned c = 0; c < mats[i].n; c++)
+            v[c] = params[c];
+         if (face != GL_BACK)
+            save_attr_vertex(ctx, mats[i].front, mats[i].n, v);
+         if (face != GL_FRONT)
+            save_attr_vertex(ctx, (enum fgl_vbo_attr)(mats[i].front + 1), mats[i].n, v);
+      }
+      if (!known)
+         compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+
+   unsigned args;
+   switch (pname) {
+   case GL_EMISSION:
+   case GL_AMBIENT:
+   case GL_DIFFUSE:
+   case GL_SPECULAR:
+   case GL_AMBIENT_AND_DIFFUSE:
+      args = 4;
+      break;
+   case GL_SHININESS:
+      args = 1;
+      break;
+   case GL_COLOR_INDEXES:
+      args = 3;
+      break;
+   default:
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   /* CALL_Materialfv(ctx->Exec): the entry point without its hook */
+   if (ctx->ExecuteFlag) {
+      ctx->CompileFlag = false;
+      glMaterialfv(face, pname, params);
+      ctx->CompileFlag = true;
+   }
+   unsigned bitmask = material_bitmask(face, pname);
+   for (int i = 0; i < FGL_ATTR_COUNT - FGL_ATTR_MAT_FIRST; i++) {
+      if (!(bitmask & (1u << i)))
+         continue;
+      const int a = FGL_ATTR_MAT_FIRST + i;
+      if (ls->active_size[a] == args &&
+          memcmp(ls->current[a], params, args * sizeof(float)) == 0) {
+         bitmask &= ~(1u << i);
+      } else {
+         ls->active_size[a] = args;
+         memcpy(ls->current[a], params, args * sizeof(float));   /* COPY_SZ_4V */
+      }
+   }
+   if (bitmask == 0)
+      return;
+   save_flush(ctx);
+   fgl_dl_put_Materialfv(ctx, face, pname, params, args);
+}
+
+/* save_ShadeModel: executes first; a repeated mode is not compiled */
+void fgl_save_shade_model(struct fgl_context *ctx, GLenum mode)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls)) {
+      compile_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (ctx->ExecuteFlag) {
+      ctx->CompileFlag = false;
+      glShadeModel(mode);
+      ctx->CompileFlag = true;
+   }
+   if (ls->shade_model == mode)
+      return;
+   save_flush(ctx);
+   ls->shade_model = mode;
+   fgl_dl_put_ShadeModel(ctx, mode);
+}
+
+/* save_DrawArrays: the arrays are read now, through glArrayElement, into
+ * a primitive of the vertex list that does not update the current values */
+void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count)
+{
+   if (mode > GL_PATCHES) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (count < 0) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   grow_vertex_storage(ctx, (unsigned)count);
+   notify_begin(ctx, mode, true);
+   for (GLsizei i = 0; i < count; i++)
+      t_array_element(ctx, first + i);
+   fgl_save_end(ctx);
+}
+
+void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
+                            GLenum type, const GLvoid *indices)
+{
+   if (mode > GL_PATCHES) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (count < 0) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   /* save_DrawElementsBaseVertex raises GL_INVALID_VALUE for a bad type
+    * (its message says count < 0) */
+   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   grow_vertex_storage(ctx, (unsigned)count);
+   notify_begin(ctx, mode, true);
+   for (GLsizei i = 0; i < count && indices; i++) {
+      GLuint elt;
+      if (type == GL_UNSIGNED_BYTE)
+         elt = ((const GLubyte *)indices)[i];
+      else if (type == GL_UNSIGNED_SHORT)
+         elt = ((const GLushort *)indices)[i];
+      else
+         elt = ((const GLuint *)indices)[i];
+      t_array_element(ctx, (GLint)elt);
+   }
+   fgl_save_end(ctx);
+}
+
+void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint start,
+                                  GLuint end, GLsizei count, GLenum type,
+                                  const GLvoid *indices)
+{
+   if (mode > GL_PATCHES) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (count < 0) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (end < start) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   fgl_save_draw_elements(ctx, mode, count, type, indices);
+}
+
+static void exec_call_list(struct fgl_context *ctx, GLuint list);
+static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+
+/* save_CallList (after _save_CallList's fallback inside glBegin/glEnd) */
+void fgl_save_call_list(struct fgl_context *ctx, GLuint list)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls))
+      dlist_fallback(ctx);
+   save_flush(ctx);
+   union dl_node *n = alloc_node(ctx, DL_OP_CALL_LIST, 1);
+   if (n)
+      n[1].u = list;
+   invalidate_saved_current_state(ctx);
+   if (ctx->ExecuteFlag)
+      exec_call_list(ctx, list);
+}
+
+static unsigned call_lists_type_size(GLenum type)
+{
+   switch (type) {
+   case GL_BYTE:
+   case GL_UNSIGNED_BYTE:
+      return 1;
+   case GL_SHORT:
+   case GL_UNSIGNED_SHORT:
+   case GL_2_BYTES:
+      return 2;
+   case GL_3_BYTES:
+      return 3;
+   case GL_INT:
+   case GL_UNSIGNED_INT:
+   case GL_FLOAT:
+   case GL_4_BYTES:
+      return 4;
+   default:
+      return 0;
+   }
+}
+
+/* save_CallLists: the names are copied, validated when executed */
+void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, const GLvoid *lists)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls))
+      dlist_fallback(ctx);
+   save_flush(ctx);
+   const unsigned type_size = call_lists_type_size(type);
+   void *copy = NULL;
+   if (num > 0 && type_size > 0 && lists) {
+      copy = malloc((size_t)num * type_size);
+      if (copy)
+         memcpy(copy, lists, (size_t)num * type_size);
+   }
+   union dl_node *n = alloc_node(ctx, DL_OP_CALL_LISTS, 2 + PTR_NODES);
+   if (n) {
+      n[1].i = num;
+      n[2].e = type;
+      put_pointer(&n[3], copy);
+   } else {
+      free(copy);
+   }
+   invalidate_saved_current_state(ctx);
+   if (ctx->ExecuteFlag)
+      exec_call_lists(ctx, num, type, lists);
+}
+
+/* ------------------------------------------------------------------ */
+/* Execution                                                           */
+/* ------------------------------------------------------------------ */
+
+/* FLUSH_FOR_DRAW */
+static void flush_for_draw(struct fgl_context *ctx)
+{
+   if (ctx->Vbo.need_flush && !fgl_inside_begin_end(ctx))
+      fgl_vbo_flush_vertices(ctx);
+}
+
+/* _vbo_loopback_vertex_list: the primitives as immediate-mode calls, the
+ * materials first, then the other attributes, the position last; a
+ * continued primitive skips its copied vertices.  base: vertex 0 of the
+ * primitives' starts (size bytes readable; Mesa reads past it, the
+ * vertices past it are zeros here). */
+static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl,
+                                 const uint8_t *base, size_t size)
+{
+   unsigned order[FGL_ATTR_COUNT], offset[FGL_ATTR_COUNT], nr = 0;
+   unsigned off[FGL_ATTR_COUNT], o = 0;
+   for (int a = 0; a < FGL_ATTR_COUNT; a++) {
+      off[a] = o;
+      o += vl->attrsz[a];
+   }
+   for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++)
+      if (vl->attrsz[a])
+         order[nr] = (unsigned)a, offset[nr++] = off[a];
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_MAT_FIRST; a++)
+      if (vl->attrsz[a])
+         order[nr] = (unsigned)a, offset[nr++] = off[a];
+   if (vl->attrsz[FGL_ATTR_POS])
+      order[nr] = FGL_ATTR_POS, offset[nr++] = off[FGL_ATTR_POS];
+
+   const size_t stride = (size_t)vl->vertex_size * sizeof(float);
+   float *data = malloc(stride ? stride : 1);
+   if (!data)
+      return;
+   for (unsigned p = 0; p < vl->prim_count; p++) {
+      const struct save_prim *prim = &vl->prims[p];
+      unsigned start = prim->start;
+      const unsigned end = start + prim->count;
+      if (prim->begin)
+         fgl_exec_begin(ctx, prim->mode);
+      else
+         start += vl->wrap_count;
+      for (unsigned j = start; j < end; j++) {
+         const size_t at = (size_t)j * stride;
+         memset(data, 0, stride);
+         if (at < size)
+            memcpy(data, base + at, size - at < stride ? size - at : stride);
+         for (unsigned k = 0; k < nr; k++) {
+            const enum fgl_vbo_attr a = (enum fgl_vbo_attr)order[k];
+            const unsigned sz = vl->attrsz[a];
+            const float *v = data + offset[k];
+            fgl_vbo_attr(ctx, a, sz, v[0], sz > 1 ? v[1] : 0.0f, sz > 2 ? v[2] : 0.0f,
+                         sz > 3 ? v[3] : 1.0f);
+         }
+      }
+      if (prim->end)
+         fgl_exec_end(ctx);
+   }
+   free(data);
+}
+
+/* playback_copy_to_current */
+static void playback_copy_to_current(struct fgl_context *ctx, const struct vertex_list *vl)
+{
+   if (!vl->current_data)
+      return;
+   const float *data = vl->current_data;
+   bool color0_changed = false;
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++) {
+      const unsigned sz = vl->attrsz[a];
+      if (!sz)
+         continue;
+      float tmp[4];
+      for (unsigned c = 0; c < 4; c++)
+         tmp[c] = c < sz ? data[c] : attr_default[c];
+      if (memcmp(ctx->Current.Attrib[a], tmp, sizeof(tmp)) != 0) {
+         memcpy(ctx->Current.Attrib[a], tmp, sizeof(tmp));
+         if (a == FGL_ATTR_COLOR0)
+            color0_changed = true;
+         ctx->PopAttribState |= a >= FGL_ATTR_MAT_FIRST ? GL_LIGHTING_BIT : GL_CURRENT_BIT;
+      }
+      data += sz;
+   }
+   if (color0_changed && ctx->Light.ColorMaterialEnabled)
+      fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+}
+
+/* vbo_save_playback_vertex_list(_loopback) */
+static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl)
+{
+   flush_for_draw(ctx);
+   if (fgl_inside_begin_end(ctx) && vl->draw_begins) {
+      /* "draw operation inside glBegin/End" */
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (vl->kind == VL_LOOPBACK) {
+      /* from the buffer object, where the draw would read */
+      const size_t at = vl->vao_offset + (size_t)vl->start_offset * vl->vertex_size * sizeof(float);
+      if (vl->bo && at < vl->bo->size)
+         loopback_vertex_list(ctx, vl, vl->bo->data + at, vl->bo->size - at);
+      else
+         loopback_vertex_list(ctx, vl, NULL, 0);
+      return;
+   }
+   if (vl->ndraws) {
+      /* one indexed draw per run of a mode, the list's vertex format as
+       * the draw's arrays (attributes outside it are the current values) */
+      memcpy(ctx->Vbo.attr_size, vl->attrsz, sizeof(vl->attrsz));
+      t_render_batch(ctx, vl->verts, vl->nverts, vl->draws, vl->ndraws);
+      memset(ctx->Vbo.attr_size, 0, sizeof(ctx->Vbo.attr_size));
+   }
+   if (vl->kind == VL_COPY_CURRENT)
+      playback_copy_to_current(ctx, vl);
+}
+
+static void execute_list(struct fgl_context *ctx, GLuint list);
+
+static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl)
+{
+   for (unsigned pos = 0; pos < dl->count;) {
+      const union dl_node *n = &dl->nodes[pos];
+      switch (n->h.op) {
+#define DL_OP0(Name)                                                            \
+      case DL_OP_##Name:                                                        \
+         gl##Name();                                                            \
+         break;
+#define DL_OP1(Name, A)                                                         \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]));                                            \
+         break;
+#define DL_OP2(Name, A, B)                                                      \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]));                          \
+         break;
+#define DL_OP3(Name, A, B, C)                                                   \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]));        \
+         break;
+#define DL_OP4(Name, A, B, C, D_)                                               \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
+                  DL_GET_##D_(n[4]));                                           \
+         break;
+#define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
+                  DL_GET_##D_(n[4]), DL_GET_##E_(n[5]), DL_GET_##F_(n[6]));     \
+         break;
+#define DL_OPV0(Name, VT, N)                                                    \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_VEC_##VT(&n[1], N));                                   \
+         break;
+#define DL_OPV1(Name, A, VT, N)                                                 \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_VEC_##VT(&n[2], N));                 \
+         break;
+#define DL_OPV2(Name, A, B, VT, N)                                              \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_VEC_##VT(&n[3], N)); \
+         break;
+#define DL_CUSTOM0 DL_OP0
+#define DL_CUSTOM1 DL_OP1
+#define DL_CUSTOMV2 DL_OPV2
+#include "main/dlist_ops.h"
+#undef DL_OP0
+#undef DL_OP1
+#undef DL_OP2
+#undef DL_OP3
+#undef DL_OP4
+#undef DL_OP6
+#undef DL_OPV0
+#undef DL_OPV1
+#undef DL_OPV2
+#undef DL_CUSTOM0
+#undef DL_CUSTOM1
+#undef DL_CUSTOMV2
+      case DL_OP_ATTR: {
+         /* glVertexAttrib{1,2,3,4}fvNV of the stored values */
+         const unsigned sz = n[2].u;
+         fgl_vbo_attr(ctx, (enum fgl_vbo_attr)n[1].u, sz, n[3].f, sz > 1 ? n[4].f : 0.0f,
+                      sz > 2 ? n[5].f : 0.0f, sz > 3 ? n[6].f : 1.0f);
+         break;
+      }
+      case DL_OP_CALL_LIST:
+         /* the nested call is skipped beyond MAX_LIST_NESTING */
+         if (ctx->ListState->call_depth < FGL_MAX_LIST_NESTING) {
+            ctx->ListState->call_depth++;
+            execute_list(ctx, n[1].u);
+            ctx->ListState->call_depth--;
+         }
+         break;
+      case DL_OP_CALL_LISTS:
+         if (ctx->ListState->call_depth < FGL_MAX_LIST_NESTING) {
+            ctx->ListState->call_depth++;
+            exec_call_lists(ctx, n[1].i, n[2].e, get_pointer(&n[3]));
+            ctx->ListState->call_depth--;
+         }
+         break;
+      case DL_OP_ERROR:
+         fgl_error(ctx, n[1].e);
+         break;
+      case DL_OP_VERTEX_LIST:
+         playback_vertex_list(ctx, get_pointer(&n[1]));
+         break;
+      case DL_OP_END_OF_LIST:
+         return;
+      default:
+         break;
+      }
+      pos += n->h.size;
+   }
+}
+
+/* execute_list: list 0 and unknown names do nothing */
+static void execute_list(struct fgl_context *ctx, GLuint list)
+{
+   const struct display_list *dl = lookup_list(ctx, list);
+   if (dl)
+      execute_nodes(ctx, dl);
+}
+
+/* _mesa_CallList */
+static void exec_call_list(struct fgl_context *ctx, GLuint list)
+{
+   fgl_flush_current(ctx);
+   if (list == 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const bool save_compile_flag = ctx->CompileFlag;
+   ctx->CompileFlag = false;
+   execute_list(ctx, list);
+   ctx->CompileFlag = save_compile_flag;
+}
+
+/* _mesa_CallLists: each name plus the list base (integer arithmetic, a
+ * float name truncated) */
+static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists)
+{
+   if (type < GL_BYTE || type > GL_4_BYTES) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (n < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (n == 0 || !lists)
+      return;
+   const bool save_compile_flag = ctx->CompileFlag;
+   ctx->CompileFlag = false;
+   const GLuint base = ctx->List.ListBase;
+   const GLubyte *ub = lists;
+   for (GLsizei i = 0; i < n; i++) {
+      int id;
+      switch (type) {
+      case GL_BYTE:
+         id = ((const GLbyte *)lists)[i];
+         break;
+      case GL_UNSIGNED_BYTE:
+         id = ub[i];
+         break;
+      case GL_SHORT:
+         id = ((const GLshort *)lists)[i];
+         break;
+      case GL_UNSIGNED_SHORT:
+         id = ((const GLushort *)lists)[i];
+         break;
+      case GL_INT:
+         id = ((const GLint *)lists)[i];
+         break;
+      case GL_UNSIGNED_INT:
+         id = (int)((const GLuint *)lists)[i];
+         break;
+      case GL_FLOAT:
+         id = (int)((const GLfloat *)lists)[i];
+         break;
+      case GL_2_BYTES:
+         id = ub[2 * i] * 256 + ub[2 * i + 1];
+         break;
+      case GL_3_BYTES:
+         id = ub[3 * i] * 65536 + ub[3 * i + 1] * 256 + ub[3 * i + 2];
+         break;
+      default: /* GL_4_BYTES */
+         id = (int)((GLuint)ub[4 * i] * 16777216u + ub[4 * i + 1] * 65536u +
+                    ub[4 * i + 2] * 256u + ub[4 * i + 3]);
+         break;
+      }
+      execute_list(ctx, base + (GLuint)id);
+   }
+   ctx->CompileFlag = save_compile_flag;
+}
+
+/* ------------------------------------------------------------------ */
+/* Entry points                                                        */
+/* ------------------------------------------------------------------ */
+
+void GLAPIENTRY glNewList(GLuint name, GLenum mode)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (ctx->CompileFlag) {
+      /* save_NewList */
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   fgl_flush_current(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (name == 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (ls->current_list) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   struct display_list *dl = make_list(name);
+   if (!dl) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   ctx->CompileFlag = true;
+   ctx->ExecuteFlag = mode == GL_COMPILE_AND_EXECUTE;
+   invalidate_saved_current_state(ctx);
+   ls->current_list = dl;
+   ls->use_loopback = false;
+   /* vbo_save_NewList */
+   reset_vertex(ctx);
+   ls->save_need_flush = false;
+}
+
+/* replace_op_vertex_list_recursively: the vertex lists of a list that
+ * depends on the state it is called in, and of the lists it calls, are
+ * replayed by loopback (the lists it calls by name, without the list
+ * base) */
+static void replace_vertex_lists(struct fgl_context *ctx, struct display_list *dl)
+{
+   if (!dl || dl->walk == ctx->ListState->walk)
+      return;
+   dl->walk = ctx->ListState->walk;
+   for (unsigned pos = 0; pos < dl->count; pos += dl->nodes[pos].h.size) {
+      union dl_node *n = &dl->nodes[pos];
+      if (n->h.op == DL_OP_VERTEX_LIST) {
+         struct vertex_list *vl = get_pointer(&n[1]);
+         vl->kind = VL_LOOPBACK;
+      } else if (n->h.op == DL_OP_CALL_LIST) {
+         replace_vertex_lists(ctx, lookup_list(ctx, n[1].u));
+      } else if (n->h.op == DL_OP_CALL_LISTS) {
+         const GLubyte *ub = get_pointer(&n[3]);
+         const GLenum type = n[2].e;
+         if (!ub)
+            continue;
+         for (GLint i = 0; i < n[1].i; i++) {
+            GLuint id;
+            switch (type) {
+            case GL_BYTE: id = (GLuint)(int)((const GLbyte *)ub)[i]; break;
+            case GL_UNSIGNED_BYTE: id = ub[i]; break;
+            case GL_SHORT: id = (GLuint)(int)((const GLshort *)ub)[i]; break;
+            case GL_UNSIGNED_SHORT: id = ((const GLushort *)ub)[i]; break;
+            case GL_INT: id = (GLuint)((const GLint *)ub)[i]; break;
+            case GL_UNSIGNED_INT: id = ((const GLuint *)ub)[i]; break;
+            case GL_FLOAT: id = (GLuint)(int)((const GLfloat *)ub)[i]; break;
+            case GL_2_BYTES: id = ub[2 * i] * 256u + ub[2 * i + 1]; break;
+            case GL_3_BYTES: id = ub[3 * i] * 65536u + ub[3 * i + 1] * 256u + ub[3 * i + 2]; break;
+            case GL_4_BYTES:
+               id = ub[4 * i] * 16777216u + ub[4 * i + 1] * 65536u + ub[4 * i + 2] * 256u +
+                    ub[4 * i + 3];
+               break;
+            default: id = 0; break;
+            }
+            replace_vertex_lists(ctx, lookup_list(ctx, id));
+         }
+      }
+   }
+}
+
+void GLAPIENTRY glEndList(void)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   struct fgl_dlist_state *ls = ctx->ListState;
+   save_flush(ctx);
+   fgl_flush_vertices(ctx);
+   if (ctx->ExecuteFlag && inside_save_begin_end(ls))
+      fgl_error(ctx, GL_INVALID_OPERATION);
+   if (!ls->current_list) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   /* vbo_save_EndList: a primitive still open is ended here, and the list
+    * is replayed by loopback */
+   if (inside_save_begin_end(ls)) {
+      struct save_context *save = &ls->save;
+      if (save->prim_used > 0) {
+         const unsigned i = save->prim_used - 1;
+         ls->save_prim = PRIM_OUTSIDE_BEGIN_END;
+         save->prims[i].end = false;
+         save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
+      }
+      save->dangling_attr_ref = true;
+      save_flush_vertices(ctx);
+   }
+   if (ls->use_loopback) {
+      ls->walk++;
+      replace_vertex_lists(ctx, ls->current_list);
+   }
+   struct display_list *dl = ls->current_list;
+   ls->current_list = NULL;
+   remove_list(ctx, dl->name);
+   if (!insert_list(ctx, dl)) {
+      delete_list(dl);
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+   }
+   ctx->ExecuteFlag = true;
+   ctx->CompileFlag = false;
+}
+
+void GLAPIENTRY glCallList(GLuint list)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_call_list(ctx, list);
+      return;
+   }
+   exec_call_list(ctx, list);
+}
+
+void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_call_lists(ctx, n, type, lists);
+      return;
+   }
+   exec_call_lists(ctx, n, type, lists);
+}
+
+void GLAPIENTRY glListBase(GLuint base)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, ListBase, base);
+   fgl_flush_vertices(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ctx->List.ListBase = base;
+}
+
+/* _mesa_HashFindFreeKeyBlock: after the highest name ever used, or else
+ * the first gap of range free names from 1 */
+static GLuint find_free_block(const struct fgl_dlist_state *ls, GLuint range)
+{
+   const GLuint max_key = ~(GLuint)0 - 1;
+   if (max_key - range > ls->max_key)
+      return ls->max_key + 1;
+   GLuint free_start = 1;
+   for (unsigned i = 0; i < ls->table_count; i++) {
+      const GLuint name = ls->table[i].name;
+      if (name >= free_start && name - free_start >= range)
+         return free_start;
+      if (name >= free_start)
+         free_start = name + 1;
+   }
+   return max_key - free_start >= range ? free_start : 0;
+}
+
+GLuint GLAPIENTRY glGenLists(GLsizei range)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return 0;
+   fgl_flush_vertices(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   if (range < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return 0;
+   }
+   if (range == 0)
+      return 0;
+   const GLuint base = find_free_block(ctx->ListState, (GLuint)range);
+   if (base) {
+      /* the names are reserved by empty lists */
+      for (GLuint i = 0; i < (GLuint)range; i++) {
+         struct display_list *dl = make_list(base + i);
+         if (!dl || !insert_list(ctx, dl)) {
+            delete_list(dl);
+            fgl_error(ctx, GL_OUT_OF_MEMORY);
+            break;
+         }
+      }
+   }
+   return base;
+}
+
+void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_flush_vertices(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (range < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   /* for (i = list; i < list + range; i++) destroy_list(i), with the
+    * unsigned wrap of list + range */
+   const GLuint end = list + (GLuint)range;
+   struct fgl_dlist_state *ls = ctx->ListState;
+   for (unsigned i = table_find(ls, list); i < ls->table_count && ls->table[i].name < end;)
+      remove_list(ctx, ls->table[i].name);
+}
+
+GLboolean GLAPIENTRY glIsList(GLuint list)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return GL_FALSE;
+   fgl_flush_vertices(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   return lookup_list(ctx, list) ? GL_TRUE : GL_FALSE;
+}
+
+bool fgl_get_list_value(const struct fgl_context *ctx, GLenum pname, int *value)
+{
+   switch (pname) {
+   case GL_LIST_BASE:
+      *value = (int)ctx->List.ListBase;
+      return true;
+   case GL_LIST_INDEX:
+      *value = ctx->ListState->current_list ? (int)ctx->ListState->current_list->name : 0;
+      return true;
+   case GL_LIST_MODE:
+      /* [S: main/get.c:find_custom_value] */
+      if (!ctx->CompileFlag)
+         *value = 0;
+      else
+         *value = ctx->ExecuteFlag ? GL_COMPILE_AND_EXECUTE : GL_COMPILE;
+      return true;
+   case GL_MAX_LIST_NESTING:
+      *value = FGL_MAX_LIST_NESTING;
+      return true;
+   default:
+      return false;
+   }
+}

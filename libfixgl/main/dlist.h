@@ -1,0 +1,129 @@
+/*
+ * Display lists (main/dlist.c): the hooks that GL entry points use while
+ * a list is being compiled.
+ *
+ * Mesa switches the dispatch table to its "save" functions between
+ * glNewList and glEndList [S: main/dlist.c:_mesa_NewList].  fixgl keeps
+ * one entry point per command, and a compiled command starts with one
+ * hook: while ctx->CompileFlag is set, FGL_SAVE stores the call (through
+ * the save function generated from main/dlist_ops.h, or a hand-written
+ * one for the commands that need more) and returns, unless the list is
+ * GL_COMPILE_AND_EXECUTE, where the entry point goes on to execute it.
+ * While a list executes (glCallList), CompileFlag is off, as in Mesa, so
+ * the replayed calls execute.
+ */
+#ifndef FGL_MAIN_DLIST_H
+#define FGL_MAIN_DLIST_H
+
+#include "context.h"
+
+/* argument kinds of dlist_ops.h: the C type of the parameter */
+#define DL_CT_E  GLenum
+#define DL_CT_I  GLint
+#define DL_CT_SZ GLsizei
+#define DL_CT_U  GLuint
+#define DL_CT_F  GLfloat
+#define DL_CT_B  GLboolean
+#define DL_CT_BF GLbitfield
+#define DL_CT_US GLushort
+#define DL_CT_D  GLdouble
+#define DL_CT_UB GLubyte
+
+/* Prototypes: fgl_save_Name(ctx, args) stores the call and returns whether
+ * the entry point goes on to execute it; fgl_dl_put_Name only stores (the
+ * hand-written save functions of the DL_CUSTOM commands call it). */
+#define DL_PUT_PROTO(Name, ...) void fgl_dl_put_##Name(struct fgl_context *ctx, __VA_ARGS__);
+#define DL_SAVE_PROTO(Name, ...) bool fgl_save_##Name(struct fgl_context *ctx, __VA_ARGS__);
+#define DL_PROTO(Name, ...) DL_PUT_PROTO(Name, __VA_ARGS__) DL_SAVE_PROTO(Name, __VA_ARGS__)
+#define DL_OP0(Name)                                                            \
+   void fgl_dl_put_##Name(struct fgl_context *ctx);                             \
+   bool fgl_save_##Name(struct fgl_context *ctx);
+#define DL_OP1(Name, A) DL_PROTO(Name, DL_CT_##A)
+#define DL_OP2(Name, A, B) DL_PROTO(Name, DL_CT_##A, DL_CT_##B)
+#define DL_OP3(Name, A, B, C) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C)
+#define DL_OP4(Name, A, B, C, D_) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_)
+#define DL_OP6(Name, A, B, C, D_, E_, F_)                                        \
+   DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_, DL_CT_##E_, DL_CT_##F_)
+#define DL_OPV0(Name, VT, N) DL_PROTO(Name, const DL_CT_##VT *, unsigned)
+#define DL_OPV1(Name, A, VT, N) DL_PROTO(Name, DL_CT_##A, const DL_CT_##VT *, unsigned)
+#define DL_OPV2(Name, A, B, VT, N)                                              \
+   DL_PROTO(Name, DL_CT_##A, DL_CT_##B, const DL_CT_##VT *, unsigned)
+#define DL_CUSTOM0(Name) void fgl_dl_put_##Name(struct fgl_context *ctx);
+#define DL_CUSTOM1(Name, A) DL_PUT_PROTO(Name, DL_CT_##A)
+#define DL_CUSTOMV2(Name, A, B, VT, N)                                          \
+   DL_PUT_PROTO(Name, DL_CT_##A, DL_CT_##B, const DL_CT_##VT *, unsigned)
+#include "main/dlist_ops.h"
+#undef DL_OP0
+#undef DL_OP1
+#undef DL_OP2
+#undef DL_OP3
+#undef DL_OP4
+#undef DL_OP6
+#undef DL_OPV0
+#undef DL_OPV1
+#undef DL_OPV2
+#undef DL_CUSTOM0
+#undef DL_CUSTOM1
+#undef DL_CUSTOMV2
+#undef DL_PROTO
+#undef DL_PUT_PROTO
+#undef DL_SAVE_PROTO
+
+/* The hook at the top of a compiled entry point (after its context
+ * fetch): store the call while compiling, and return unless the list is
+ * GL_COMPILE_AND_EXECUTE. */
+#define FGL_SAVE(ctx, Name, ...)                                                \
+   do {                                                                         \
+      if ((ctx)->CompileFlag && !fgl_save_##Name((ctx), __VA_ARGS__))           \
+         return;                                                                \
+   } while (0)
+#define FGL_SAVE0(ctx, Name)                                                    \
+   do {                                                                         \
+      if ((ctx)->CompileFlag && !fgl_save_##Name(ctx))                          \
+         return;                                                                \
+   } while (0)
+
+/* Hand-written save functions (Mesa's vbo_save_api.c and the dlist.c
+ * functions that do more than store).  Each one does everything Mesa's
+ * save function does, including executing under
+ * GL_COMPILE_AND_EXECUTE: the entry point returns after it. */
+void fgl_save_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                   float x, float y, float z, float w);
+void fgl_save_begin(struct fgl_context *ctx, GLenum mode);
+void fgl_save_end(struct fgl_context *ctx);
+void fgl_save_rect(struct fgl_context *ctx, float x1, float y1, float x2, float y2);
+void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
+                       const GLfloat *params);
+void fgl_save_shade_model(struct fgl_context *ctx, GLenum mode);
+void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count);
+void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
+                            GLenum type, const GLvoid *indices);
+void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint start,
+                                  GLuint end, GLsizei count, GLenum type,
+                                  const GLvoid *indices);
+void fgl_save_call_list(struct fgl_context *ctx, GLuint list);
+void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+
+/* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,
+ * glArrayElement's attributes): compiled while compiling, else executed. */
+static inline void fgl_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
+                            float x, float y, float z, float w)
+{
+   if (ctx->CompileFlag)
+      fgl_save_attr(ctx, attr, n, x, y, z, w);
+   else
+      fgl_vbo_attr(ctx, attr, n, x, y, z, w);
+}
+
+/* Executing glBegin/glEnd without the hooks (main/begin_end.c), for the
+ * vertex-list replay. */
+void fgl_exec_begin(struct fgl_context *ctx, GLenum mode);
+void fgl_exec_end(struct fgl_context *ctx);
+
+/* Context lifetime and queries */
+bool fgl_init_dlist(struct fgl_context *ctx);
+void fgl_free_dlist(struct fgl_context *ctx);
+/* glGet of GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE, GL_MAX_LIST_NESTING */
+bool fgl_get_list_value(const struct fgl_context *ctx, GLenum pname, int *value);
+
+#endif

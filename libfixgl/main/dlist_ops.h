@@ -1,0 +1,97 @@
+/*
+ * The display-list command table: one line per GL command that Mesa 22.3
+ * compiles into a list with a plain node (its dlist.c save_* function
+ * checks for glBegin/glEnd, flushes the vertex list being compiled, stores
+ * the arguments and executes the command under GL_COMPILE_AND_EXECUTE;
+ * execute_list calls the command with the stored arguments).
+ *
+ * This header is an X-macro: the includer defines the DL_OP* macros and
+ * gets one expansion per line.  main/dlist.h makes the prototypes of the
+ * save functions the entry points call, main/dlist.c the opcodes, the
+ * save functions (fgl_save_Name: prologue + store) and the replay cases.
+ * Adding a command is one line here and one FGL_SAVE hook at the top of
+ * its entry point.
+ *
+ *   DL_OPn(Name, T1, ..., Tn)        glName with n scalar arguments
+ *   DL_OPVk(Name, T1..Tk, VT, N)     glName with k scalars and a pointer to
+ *                                    up to N values (the entry point's hook
+ *                                    passes how many to read; the others
+ *                                    are stored as 0)
+ *   DL_CUSTOMn / DL_CUSTOMVk          same node and replay, but the entry
+ *                                    point has a hand-written save function
+ *                                    (in dlist.c) that calls fgl_dl_put_Name
+ *
+ * Argument kinds (node member, C type): E GLenum, I GLint, SZ GLsizei,
+ * U GLuint, F GLfloat, B GLboolean, BF GLbitfield, US GLushort, D GLdouble
+ * stored as a float, as Mesa stores every double argument (glFrustum,
+ * glOrtho, glClearDepth, glDepthRange, glClipPlane), so the replay sees the
+ * rounded value; vectors: F floats, D doubles stored as floats, UB bytes.
+ *
+ * Not here: glBegin/glEnd and the vertex attributes (the vertex-list
+ * compiler, vbo_save_api.c), glCallList(s), glNewList, glRect, the array
+ * draws, and every command Mesa executes at once during compilation
+ * (queries, client state, pixel store, glReadPixels, glFlush, glFinish,
+ * glGenLists, glDeleteLists, glIsList, glEndList, glRenderMode,
+ * glFeedbackBuffer, glSelectBuffer).  Selection and feedback (branch
+ * `select`): glInitNames, glLoadName(U), glPushName(U), glPopName and
+ * glPassThrough(F) are compiled in Mesa and take one DL_OP line each here
+ * when they land.
+ */
+
+/* ---- GL_COLOR_BUFFER_BIT ---- */
+DL_OP2(AlphaFunc, E, F)
+DL_OP2(BlendFunc, E, E)      /* Mesa: BLEND_FUNC_SEPARATE(s, d, s, d) */
+DL_OP1(BlendEquation, E)
+DL_OP4(BlendColor, F, F, F, F)
+DL_OP1(LogicOp, E)
+DL_OP4(ColorMask, B, B, B, B)
+DL_OP4(ClearColor, F, F, F, F)
+DL_OP1(Clear, BF)
+/* ---- depth, stencil, scissor, viewport ---- */
+DL_OP1(DepthFunc, E)
+DL_OP1(DepthMask, B)
+DL_OP1(ClearDepth, D)
+DL_OP1(ClearStencil, I)
+DL_OP3(StencilFunc, E, I, U)
+DL_OP3(StencilOp, E, E, E)
+DL_OP1(StencilMask, U)
+DL_OP4(Scissor, I, I, SZ, SZ)
+DL_OP4(Viewport, I, I, SZ, SZ)
+DL_OP2(DepthRange, D, D)
+/* ---- polygons, points, lines, hints ---- */
+DL_OP1(FrontFace, E)
+DL_OP1(CullFace, E)
+DL_OP2(PolygonMode, E, E)
+DL_OP2(PolygonOffset, F, F)
+DL_OPV0(PolygonStipple, UB, 128)   /* unpacked at compile time (hook) */
+DL_OP1(PointSize, F)
+DL_OP1(LineWidth, F)
+DL_OP2(LineStipple, I, US)
+DL_OP2(Hint, E, E)
+/* ---- transform ---- */
+DL_OPV1(ClipPlane, E, D, 4)
+DL_OP1(MatrixMode, E)
+DL_OP0(PushMatrix)
+DL_OP0(PopMatrix)
+DL_OP0(LoadIdentity)
+DL_OPV0(LoadMatrixf, F, 16)        /* glLoadMatrixd: converted, then this */
+DL_OPV0(MultMatrixf, F, 16)
+DL_OP6(Ortho, D, D, D, D, D, D)
+DL_OP6(Frustum, D, D, D, D, D, D)
+DL_OP3(Translatef, F, F, F)        /* the d variants convert, then these */
+DL_OP3(Scalef, F, F, F)
+DL_OP4(Rotatef, F, F, F, F)
+/* ---- enables, fog, lighting ---- */
+DL_OP1(Enable, E)
+DL_OP1(Disable, E)
+DL_OPV1(Fogfv, E, F, 4)            /* glFog{f,i,iv}: converted, then this */
+DL_OPV2(Lightfv, E, E, F, 4)       /* glLight{f,i,iv}: likewise */
+DL_OPV1(LightModelfv, E, F, 4)
+DL_OP2(ColorMaterial, E, E)
+DL_CUSTOM1(ShadeModel, E)          /* executes first, skips a repeat */
+DL_CUSTOMV2(Materialfv, E, E, F, 4)/* outside glBegin/glEnd: likewise */
+/* ---- attribute stack, lists ---- */
+DL_OP1(PushAttrib, BF)
+DL_OP0(PopAttrib)
+DL_OP1(ListBase, U)
+DL_CUSTOM0(End)                    /* a glEnd without its glBegin */
