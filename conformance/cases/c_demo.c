@@ -389,7 +389,252 @@ static void arrays_scene(fc_h *h)
     fc_error(h, "final");
 }
 
+/* ---- demo/gears: three gears in display lists ----
+ *
+ * A clone, written for the suite, of the classic gears demo: each gear is
+ * one display list (GL_COMPILE) holding its material and its geometry:
+ * flat-shaded faces and teeth (GL_QUAD_STRIP, GL_QUADS, glShadeModel
+ * GL_FLAT), the inner cylinder smooth (glShadeModel GL_SMOOTH inside the
+ * list); a positional light, lighting, depth test, culling and
+ * GL_NORMALIZE; the gears turn over eight frames.  Odd frames draw through
+ * a frame list compiled with GL_COMPILE_AND_EXECUTE that calls the gear
+ * lists (nesting) under its own transforms; even frames call the gear
+ * lists directly. */
+
+#define GEAR_FRAMES 8
+
+/* One gear: inner radius r0, outer radius r1 (at the teeth's middle),
+ * width w, n teeth of depth d; front face at z = w/2. */
+static void gear(float r0, float r1, float w, int n, float d)
+{
+    const float ra = r1 - d / 2.0f, rb = r1 + d / 2.0f;   /* teeth root, tip */
+    const float da = 2.0f * (float)LT_PI / (float)n / 4.0f;  /* quarter tooth */
+    const float hz = 0.5f * w;
+
+    glShadeModel(GL_FLAT);
+    glNormal3f(0, 0, 1);
+    /* front face: ring from r0 to the teeth root */
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i <= n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        glVertex3f(r0 * cosf(a), r0 * sinf(a), hz);
+        glVertex3f(ra * cosf(a), ra * sinf(a), hz);
+        if (i < n) {
+            glVertex3f(r0 * cosf(a), r0 * sinf(a), hz);
+            glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), hz);
+        }
+    }
+    glEnd();
+    /* front sides of the teeth */
+    glBegin(GL_QUADS);
+    for (int i = 0; i < n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        glVertex3f(ra * cosf(a), ra * sinf(a), hz);
+        glVertex3f(rb * cosf(a + da), rb * sinf(a + da), hz);
+        glVertex3f(rb * cosf(a + 2 * da), rb * sinf(a + 2 * da), hz);
+        glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), hz);
+    }
+    glEnd();
+
+    glNormal3f(0, 0, -1);
+    /* back face */
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i <= n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        glVertex3f(ra * cosf(a), ra * sinf(a), -hz);
+        glVertex3f(r0 * cosf(a), r0 * sinf(a), -hz);
+        if (i < n) {
+            glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), -hz);
+            glVertex3f(r0 * cosf(a), r0 * sinf(a), -hz);
+        }
+    }
+    glEnd();
+    /* back sides of the teeth */
+    glBegin(GL_QUADS);
+    for (int i = 0; i < n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), -hz);
+        glVertex3f(rb * cosf(a + 2 * da), rb * sinf(a + 2 * da), -hz);
+        glVertex3f(rb * cosf(a + da), rb * sinf(a + da), -hz);
+        glVertex3f(ra * cosf(a), ra * sinf(a), -hz);
+    }
+    glEnd();
+
+    /* outward faces of the teeth, one normal per face */
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i < n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        float ux = rb * cosf(a + da) - ra * cosf(a), uy = rb * sinf(a + da) - ra * sinf(a);
+        const float len = sqrtf(ux * ux + uy * uy);
+        ux /= len, uy /= len;
+        glVertex3f(ra * cosf(a), ra * sinf(a), hz);
+        glVertex3f(ra * cosf(a), ra * sinf(a), -hz);
+        glNormal3f(uy, -ux, 0);                       /* rising flank */
+        glVertex3f(rb * cosf(a + da), rb * sinf(a + da), hz);
+        glVertex3f(rb * cosf(a + da), rb * sinf(a + da), -hz);
+        glNormal3f(cosf(a), sinf(a), 0);               /* tip */
+        glVertex3f(rb * cosf(a + 2 * da), rb * sinf(a + 2 * da), hz);
+        glVertex3f(rb * cosf(a + 2 * da), rb * sinf(a + 2 * da), -hz);
+        ux = ra * cosf(a + 3 * da) - rb * cosf(a + 2 * da);
+        uy = ra * sinf(a + 3 * da) - rb * sinf(a + 2 * da);
+        glNormal3f(uy, -ux, 0);                       /* falling flank */
+        glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), hz);
+        glVertex3f(ra * cosf(a + 3 * da), ra * sinf(a + 3 * da), -hz);
+        glNormal3f(cosf(a), sinf(a), 0);               /* root */
+    }
+    glVertex3f(ra, 0, hz);
+    glVertex3f(ra, 0, -hz);
+    glEnd();
+
+    /* the bore: smooth */
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i <= n; i++) {
+        const float a = (float)i * 2.0f * (float)LT_PI / (float)n;
+        glNormal3f(-cosf(a), -sinf(a), 0);
+        glVertex3f(r0 * cosf(a), r0 * sinf(a), -hz);
+        glVertex3f(r0 * cosf(a), r0 * sinf(a), hz);
+    }
+    glEnd();
+}
+
+static void gear_place(GLuint list, float x, float y, float angle)
+{
+    glPushMatrix();
+    glTranslatef(x, y, 0);
+    glRotatef(angle, 0, 0, 1);
+    glCallList(list);
+    glPopMatrix();
+}
+
+static void gears(fc_h *h)
+{
+    static const GLfloat light_pos[4] = { 5, 5, 10, 0 };
+    static const GLfloat red[4] = { 0.8f, 0.1f, 0, 1 }, green[4] = { 0, 0.8f, 0.2f, 1 };
+    static const GLfloat blue[4] = { 0.2f, 0.2f, 1, 1 };
+    const fc_case *c = fc_this_case(h);
+    const float aspect = (float)c->height / (float)c->width;
+
+    glViewport(0, 0, c->width, c->height);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-1, 1, -aspect, aspect, 5, 60);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glTranslatef(0, 0, -40);
+
+    glLightfv(GL_LIGHT0, GL_POSITION, light_pos);
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_NORMALIZE);
+
+    glNewList(1, GL_COMPILE);
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
+    gear(1.0f, 4.0f, 1.0f, 20, 0.7f);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
+    gear(0.5f, 2.0f, 2.0f, 10, 0.7f);
+    glEndList();
+    glNewList(3, GL_COMPILE);
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
+    gear(1.3f, 2.0f, 0.5f, 10, 0.7f);
+    glEndList();
+    fc_error(h, "lists compiled");
+
+    glClearColor(0, 0, 0, 1);
+    for (int f = 0; f < GEAR_FRAMES; f++) {
+        const float angle = 7.0f * (float)f + 3.0f;
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glPushMatrix();
+        glRotatef(20.0f + 4.0f * (float)f, 1, 0, 0);
+        glRotatef(30.0f - 6.0f * (float)f, 0, 1, 0);
+        glRotatef(0.0f, 0, 0, 1);
+        if (f & 1) {
+            /* a frame list calling the gear lists */
+            glNewList(10, GL_COMPILE_AND_EXECUTE);
+            gear_place(1, -3.0f, -2.0f, angle);
+            gear_place(2, 3.1f, -2.0f, -2.0f * angle - 9.0f);
+            gear_place(3, -3.1f, 4.2f, -2.0f * angle - 25.0f);
+            glEndList();
+        } else {
+            gear_place(1, -3.0f, -2.0f, angle);
+            gear_place(2, 3.1f, -2.0f, -2.0f * angle - 9.0f);
+            gear_place(3, -3.1f, 4.2f, -2.0f * angle - 25.0f);
+        }
+        glPopMatrix();
+        fc_capture(h);
+    }
+    fc_is_enabled(h, "GL_NORMALIZE", GL_NORMALIZE);
+    fc_error(h, "final");
+}
+
+/* ---- display lists and client state ----
+ *
+ * A glColor after the first vertex of a glBegin compiled with
+ * GL_COMPILE_AND_EXECUTE makes the list compiler wrap the primitive: what
+ * precedes runs at once by loopback (an executed glBegin), the rest (and
+ * the executed glEnd) when the list is flushed.  Client-state calls made
+ * in between are executed, not compiled, and only the BeginEnd dispatch
+ * table would refuse them: during compilation the oracle runs them, with
+ * no error.  glGetError has its own check and raises GL_INVALID_OPERATION
+ * there.  (Found by the random scenes' display-list path.) */
+static void dlist_client_state_after_wrap(fc_h *h)
+{
+    static const GLfloat v[4][3] = { { 4, 4, 0 }, { 40, 6, 0 }, { 36, 40, 0 }, { 6, 30, 0 } };
+    static const GLfloat v2[4][2] = { { 30, 30 }, { 60, 34 }, { 58, 60 }, { 32, 58 } };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glVertexPointer(3, GL_FLOAT, 0, v);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glBegin(GL_QUADS);
+    glArrayElement(0);
+    glColor3f(1, 0.5f, 0);          /* a new attribute: the compiler wraps */
+    glArrayElement(1);
+    glArrayElement(2);
+    glArrayElement(3);
+    glEnd();
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_is_enabled(h, "vertex array after disable", GL_VERTEX_ARRAY);
+    glInterleavedArrays(GL_V2F, 0, v2);
+    fc_get_integer(h, "vertex array size", GL_VERTEX_ARRAY_SIZE, 1);
+    GLvoid *p = NULL;
+    glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+    fc_value(h, "pointer is v2", p == (const GLvoid *)v2);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glEndList();
+    fc_error(h, "after the list");
+    glColor3f(0, 0.5f, 1);
+    glDrawArrays(GL_QUADS, 0, 4);
+    fc_capture(h);
+
+    /* the same list body, with glGetError between the wrapped glEnd and
+     * glEndList */
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_QUADS);
+    glVertex3fv(v[0]);
+    glColor3f(0.2f, 1, 0.2f);
+    glVertex3fv(v[1]);
+    glVertex3fv(v[2]);
+    glVertex3fv(v[3]);
+    glEnd();
+    fc_error(h, "inside the list, after the wrapped glEnd");
+    glEndList();
+    fc_error(h, "after the second list");
+    glCallList(1);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
 const fc_case fc_cases_demo[] = {
     FC_CASE_RGBA("demo/arrays_scene", 160, 120, DEMO_FRAMES, "api demo", arrays_scene),
+    FC_CASE_RGBA("demo/gears", 160, 128, GEAR_FRAMES, "api demo dlist", gears),
+    FC_CASE_RGBA("dlist/client_state_after_wrap", 64, 64, 2, "api varray dlist errors query",
+                 dlist_client_state_after_wrap),
     { 0 }
 };

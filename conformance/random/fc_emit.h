@@ -18,6 +18,11 @@
  *     (fc_emit.c explains each rule); after an array draw the last value of
  *     each attribute is issued again so the current values are those of
  *     immediate mode.
+ *   - FCE_DLIST: everything is compiled into display lists (GL_COMPILE or
+ *     GL_COMPILE_AND_EXECUTE, run in order through glCallList, glCallLists
+ *     or nested lists; fc_emit.c "display lists"), the blocks inside them
+ *     immediate or (per profile) through arrays.  Not for the lit family
+ *     yet (README "Emission paths").
  * The scene's content (what the generator draws) never depends on the
  * path: the layer draws from its own random streams, never from the
  * generator's.  The path and the array layouts are structure: in the lit
@@ -52,6 +57,7 @@ enum fce_kind { FCE_VERTEX, FCE_COLOR, FCE_NORMAL, FCE_EDGE, FCE_MATERIAL };
 enum fce_type { FCE_B, FCE_UB, FCE_S, FCE_US, FCE_I, FCE_UI, FCE_F, FCE_D };
 
 extern int fce_recording;          /* inside a recorded glBegin / glEnd */
+extern int fce_record_blocks;      /* blocks go through arrays */
 extern enum fce_path fce_path_now;
 
 void fce_rec_attr(int kind, int type, int size, int vec,
@@ -59,6 +65,10 @@ void fce_rec_attr(int kind, int type, int size, int vec,
 void fce_rec_material(int variant, GLenum face, GLenum pname, const double *v, int n);
 void fce_block_begin(GLenum mode);
 void fce_block_end(void);
+void fce_dl_open(void);
+void fce_dl_block_end(void);
+void fce_dl_sync(void);
+void fce_dl_resume(void);
 
 /* ---- wrappers of the calls the layer intercepts ---- */
 
@@ -150,13 +160,29 @@ static inline void fce_glEdgeFlagv(const GLboolean *b)
 }
 static inline void fce_glBegin(GLenum mode)
 {
-    if (fce_path_now == FCE_ARRAYS) { fce_block_begin(mode); return; }
+    if (fce_record_blocks) { fce_block_begin(mode); return; }
     fct_glBegin(mode);
 }
 static inline void fce_glEnd(void)
 {
-    if (fce_recording) { fce_block_end(); return; }
-    fct_glEnd();
+    if (fce_recording)
+        fce_block_end();
+    else
+        fct_glEnd();
+    if (fce_path_now == FCE_DLIST)
+        fce_dl_block_end();
+}
+/* results are read outside display lists */
+static inline void fce_fc_capture(fc_h *h)
+{
+    fce_dl_sync();
+    fct_fc_capture(h);
+    fce_dl_resume();
+}
+static inline void fce_fc_error(fc_h *h, const char *label)
+{
+    fce_dl_sync();
+    fc_error(h, label);
 }
 
 #ifndef FC_EMIT_NO_MACROS
@@ -234,6 +260,7 @@ static inline void fce_glEnd(void)
 #undef glEdgeFlagv
 #undef glBegin
 #undef glEnd
+#undef fc_capture
 #define glVertex2s fce_glVertex2s
 #define glVertex2sv fce_glVertex2sv
 #define glVertex2i fce_glVertex2i
@@ -308,6 +335,8 @@ static inline void fce_glEnd(void)
 #define glEdgeFlagv fce_glEdgeFlagv
 #define glBegin fce_glBegin
 #define glEnd fce_glEnd
+#define fc_capture fce_fc_capture
+#define fc_error fce_fc_error
 #endif
 
 #endif

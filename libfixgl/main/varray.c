@@ -20,6 +20,22 @@
 #include "main/groups.h"
 #include "tnl/t_pipeline.h"
 
+/* Only the BeginEnd dispatch table's generic_nop refuses the client-state
+ * entry points (pointers, glInterleavedArrays, glEnable/DisableClientState,
+ * glGetPointerv) inside glBegin/glEnd: Mesa's functions have no check of
+ * their own.  While a list is compiled the dispatch stays dlist.c's save
+ * table, which calls them directly, also when a GL_COMPILE_AND_EXECUTE
+ * list has left the executed glBegin open (a primitive wrapped by the
+ * compiler runs by loopback up to the wrap; its glEnd runs when the rest
+ * is compiled) [S: vbo/vbo_exec_api.c:vbo_exec_Begin keeps the save table,
+ * main/enable.c:_mesa_EnableClientState, main/varray.c:_mesa_VertexPointer,
+ * main/getstring.c:_mesa_GetPointerv]. */
+#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx)             \
+   do {                                                    \
+      if (!(ctx)->CompileFlag)                             \
+         ASSERT_OUTSIDE_BEGIN_END(ctx);                    \
+   } while (0)
+
 /* Mesa's type bits [S: main/varray.c:type_to_bit] for the legal types of
  * each array on the desktop compatibility profile */
 #define B_BYTE    (1u << 0)
@@ -108,7 +124,7 @@ static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    GLenum format = GL_RGBA;
    if (bgra_ok && size == GL_BGRA) {   /* get_array_format */
       format = GL_BGRA;
@@ -185,7 +201,7 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid 
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (stride < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -266,7 +282,7 @@ static void client_state(GLenum cap, bool state)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    struct fgl_client_array *arr = fgl_client_array(ctx, cap);
    if (!arr) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -315,7 +331,7 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (!params)
       return;
    const struct fgl_client_array *A = ctx->Array.Array;
