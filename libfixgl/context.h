@@ -514,6 +514,18 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
    } while (0)
 #define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
 
+/* The same for the commands whose only check is the BeginEnd dispatch
+ * table's generic_nop: while a list is compiled the dispatch is the save
+ * table, whose entries for commands executed at once are the plain
+ * _mesa_ functions (main/dlist.c:_mesa_init_dispatch_save), so they run
+ * even when a GL_COMPILE_AND_EXECUTE list has left a glBegin open. */
+#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, ret)    \
+   do {                                                    \
+      if (!(ctx)->CompileFlag)                             \
+         ASSERT_OUTSIDE_BEGIN_END_RET(ctx, ret);           \
+   } while (0)
+#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx) ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, )
+
 /* Flush batched vertices before a state change and mark it dirty.  The
  * lighting group's setters also mark it changed for glPopAttrib (Mesa
  * passes GL_LIGHTING_BIT to FLUSH_VERTICES in each of them). */

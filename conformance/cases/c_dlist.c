@@ -1254,6 +1254,399 @@ static void nested_execute(fc_h *h)
     fc_capture(h);
 }
 
+/* a second context sharing the first one's lists (OSMesaCreateContext's
+ * sharelist); one that does not share has its own names */
+static void shared_contexts(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(7, GL_COMPILE);
+    smooth_quad(2, 2, 14, 14);
+    glEndList();
+    static GLubyte buf2[16 * 16 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, fc_context(h));
+    OSMesaContext alone = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    fc_value(h, "contexts", shared != NULL && alone != NULL);
+    if (!shared || !alone)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 16, 16);
+    glViewport(0, 0, 16, 16);
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0, 16, 0, 16, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    fc_value(h, "shared islist 7", glIsList(7));
+    glCallList(7);
+    fc_value(h, "shared gen", glGenLists(1));
+    glNewList(9, GL_COMPILE);   /* defined here, called in the first */
+    glColor3f(1, 1, 0);
+    glRectf(18, 2, 30, 14);
+    glEndList();
+    glFinish();
+    fc_capture_buffer(h, buf2, 16, 16, 16, OSMESA_RGBA, 1);
+    OSMesaMakeCurrent(alone, buf2, GL_UNSIGNED_BYTE, 16, 16);
+    fc_value(h, "alone islist 7", glIsList(7));
+    fc_value(h, "alone gen", glGenLists(1));
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 32, 32);
+    fc_value(h, "first islist 9", glIsList(9));
+    glCallList(9);
+    OSMesaDestroyContext(shared);
+    OSMesaDestroyContext(alone);
+    fc_value(h, "islist 7 after destroy", glIsList(7));
+    glTranslatef(0, 16, 0);
+    glCallList(7);
+    fc_capture(h);
+}
+
+/* the list queries through every glGet, outside and inside lists */
+static void queries(fc_h *h)
+{
+    static const GLenum pnames[] = { GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE, GL_MAX_LIST_NESTING };
+    static const char *labels[] = { "list base", "list index", "list mode", "max nesting" };
+    for (int round = 0; round < 3; round++) {
+        if (round == 1) {
+            glListBase(12345);
+            glNewList(77, GL_COMPILE);
+        } else if (round == 2) {
+            glNewList(0x80000001u, GL_COMPILE_AND_EXECUTE);
+            glListBase(0x80000000u);
+        }
+        for (int i = 0; i < 4; i++) {
+            char label[64];
+            snprintf(label, sizeof(label), "%s %d i", labels[i], round);
+            fc_get_integer(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d f", labels[i], round);
+            fc_get_float(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d b", labels[i], round);
+            fc_get_boolean(h, label, pnames[i], 1);
+            snprintf(label, sizeof(label), "%s %d d", labels[i], round);
+            fc_get_double(h, label, pnames[i], 1);
+        }
+        if (round)
+            glEndList();
+    }
+    fc_get_integer(h, "list base after", GL_LIST_BASE, 1);
+    fc_error(h, "final");
+}
+
+/* pseudo-random primitive sequences compiled into lists: every mode, short
+ * and incomplete primitives, attributes before, between and after
+ * vertices (new attributes mid-primitive wrap the vertex list), state
+ * changes between primitives, GL_COMPILE and GL_COMPILE_AND_EXECUTE */
+static unsigned fuzz_seed;
+static unsigned fuzz_next(unsigned n)
+{
+    fuzz_seed = fuzz_seed * 1103515245u + 12345u;
+    return (fuzz_seed >> 16) % n;
+}
+
+static float fuzz_coord(void)
+{
+    return (float)fuzz_next(2400) / 32.0f - 5.0f;
+}
+
+static void fuzz_list(int variant)
+{
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    const int nprims = 6 + (int)fuzz_next(10);
+    for (int p = 0; p < nprims; p++) {
+        const GLenum mode = modes[fuzz_next(10)];
+        const int n = (int)fuzz_next(9);
+        switch (fuzz_next(8)) {
+        case 0: {
+            const float r = (float)fuzz_next(4) / 3.0f, g = (float)fuzz_next(4) / 3.0f;
+            glColor3f(r, g, 0.5f);
+            break;
+        }
+        case 1:
+            glShadeModel(fuzz_next(2) ? GL_FLAT : GL_SMOOTH);
+            break;
+        case 2:
+            glNormal3f(0, (float)fuzz_next(3) / 4.0f, 1);
+            break;
+        default:
+            break;
+        }
+        glBegin(mode);
+        for (int v = 0; v < n; v++) {
+            switch (fuzz_next(variant ? 6 : 4)) {
+            case 0: {
+                const float r = (float)fuzz_next(5) / 4.0f, g = (float)fuzz_next(5) / 4.0f;
+                const float b = (float)fuzz_next(5) / 4.0f;
+                glColor4f(r, g, b, 1);
+                break;
+            }
+            case 1: {
+                const GLubyte r = (GLubyte)fuzz_next(256), g = (GLubyte)fuzz_next(256);
+                glColor3ub(r, g, 200);
+                break;
+            }
+            case 4:
+                glNormal3f((float)fuzz_next(3) / 3.0f, 0.5f, 0.8f);
+                break;
+            case 5:
+                glEdgeFlag(fuzz_next(2) ? GL_TRUE : GL_FALSE);
+                break;
+            default:
+                break;
+            }
+            const float x = fuzz_coord(), y = fuzz_coord();
+            glVertex3f(x, y, (float)fuzz_next(100) / 100.0f - 0.5f);
+        }
+        if (fuzz_next(4) == 0)
+            glColor3f(1, 1, 1);    /* after the last vertex */
+        glEnd();
+    }
+}
+
+static void fuzz(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glPointSize(2);
+    fuzz_seed = 20261121u;
+    for (int frame = 0; frame < 8; frame++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glPolygonMode(GL_FRONT_AND_BACK, frame == 3 || frame == 7 ? GL_LINE : GL_FILL);
+        if (frame >= 4) {
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            glEnable(GL_COLOR_MATERIAL);
+        }
+        glNewList(1, frame & 1 ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+        fuzz_list(frame & 2);
+        glEndList();
+        glNewList(2, GL_COMPILE);
+        if (frame & 2)
+            glColor3f(0.2f, 0.4f, 0.6f);
+        fuzz_list(frame & 2);
+        glEndList();
+        glTranslatef(2, 1, 0);
+        glCallList(1);
+        glCallList(2);
+        glLoadIdentity();
+        fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+        fc_get_float(h, "normal", GL_CURRENT_NORMAL, 3);
+        fc_error(h, "frame");
+        fc_capture(h);
+    }
+    glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+/* an empty glBegin/glEnd: llvmpipe skips a multi-draw whose first draw is
+ * empty, so in immediate mode the primitives of the same mode batched
+ * after it are not drawn; a compiled list drops empty primitives */
+static void empty_primitive(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass)
+            glNewList(1, GL_COMPILE);
+        glBegin(GL_TRIANGLES);
+        glVertex2f(1, 1);
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        glColor3f(1, 0, 0);
+        glVertex2f(2 + 32.0f * (float)pass, 2);
+        glVertex2f(30 + 32.0f * (float)pass, 3);
+        glColor3f(0, 1, 0);
+        glVertex2f(3 + 32.0f * (float)pass, 28);
+        glVertex2f(29 + 32.0f * (float)pass, 30);
+        glEnd();
+        glBegin(GL_TRIANGLES);   /* a second run, drawn */
+        glColor3f(0, 0, 1);
+        glVertex2f(2 + 32.0f * (float)pass, 40);
+        glVertex2f(30 + 32.0f * (float)pass, 40);
+        glVertex2f(16 + 32.0f * (float)pass, 60);
+        glEnd();
+        if (pass) {
+            glEndList();
+            glCallList(1);
+        }
+    }
+    fc_capture(h);
+}
+
+/* more pseudo-random lists: materials inside glBegin/glEnd, glRect,
+ * compiled array draws, state changes and nested calls between
+ * primitives, lists ending inside glBegin/glEnd */
+static void fuzz_list2(int depth)
+{
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    static GLfloat arr[12][2];
+    for (int k = 0; k < 12; k++) {
+        arr[k][0] = fuzz_coord();
+        arr[k][1] = fuzz_coord();   /* separate statements: a defined order */
+    }
+    const int nprims = 4 + (int)fuzz_next(8);
+    for (int p = 0; p < nprims; p++) {
+        switch (fuzz_next(10)) {
+        case 0: {
+            GLfloat m[4] = { 0, 0.5f, 0, 1 };
+            m[0] = (float)fuzz_next(4) / 3.0f;
+            m[2] = (float)fuzz_next(4) / 3.0f;
+            glMaterialfv(fuzz_next(2) ? GL_FRONT : GL_FRONT_AND_BACK, GL_DIFFUSE, m);
+            break;
+        }
+        case 1: {
+            const float x0 = fuzz_coord(), y0 = fuzz_coord();
+            const float x1 = fuzz_coord(), y1 = fuzz_coord();
+            glRectf(x0, y0, x1, y1);
+            break;
+        }
+        case 2: {
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glVertexPointer(2, GL_FLOAT, 0, arr);
+            const GLenum mode = modes[fuzz_next(10)];
+            const GLint first = (GLint)fuzz_next(4);
+            glDrawArrays(mode, first, (GLsizei)fuzz_next(9));
+            glDisableClientState(GL_VERTEX_ARRAY);
+            break;
+        }
+        case 3:
+            if (fuzz_next(2))
+                glEnable(GL_LINE_STIPPLE);
+            else
+                glDisable(GL_LINE_STIPPLE);
+            break;
+        case 4:
+            if (depth == 0)
+                glCallList(10 + fuzz_next(3));
+            break;
+        case 5:
+            glShadeModel(fuzz_next(2) ? GL_FLAT : GL_SMOOTH);
+            break;
+        default:
+            break;
+        }
+        glBegin(modes[fuzz_next(10)]);
+        const int n = (int)fuzz_next(10);
+        for (int v = 0; v < n; v++) {
+            switch (fuzz_next(7)) {
+            case 0: {
+                const float r = (float)fuzz_next(5) / 4.0f, g = (float)fuzz_next(5) / 4.0f;
+                glColor3f(r, g, 0.3f);
+                break;
+            }
+            case 1: {
+                const GLfloat m[4] = { 0.2f, (float)fuzz_next(5) / 4.0f, 0.9f, 1 };
+                glMaterialfv(GL_FRONT_AND_BACK, fuzz_next(2) ? GL_AMBIENT_AND_DIFFUSE : GL_EMISSION, m);
+                break;
+            }
+            case 2:
+                glNormal3f(0.1f * (float)fuzz_next(5), 0.2f, 0.9f);
+                break;
+            default:
+                break;
+            }
+            const float x = fuzz_coord(), y = fuzz_coord();
+            glVertex2f(x, y);
+        }
+        glEnd();
+    }
+}
+
+static void fuzz_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fuzz_seed = 77031u;
+    glLineStipple(2, 0x3c6f);
+    glEnable(GL_LIGHT0);
+    for (int frame = 0; frame < 6; frame++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (frame & 2)
+            glEnable(GL_LIGHTING);
+        else
+            glDisable(GL_LIGHTING);
+        for (int l = 10; l < 13; l++) {
+            glNewList((GLuint)l, GL_COMPILE);
+            fuzz_list2(1);
+            glEndList();
+        }
+        glNewList(1, frame & 1 ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+        fuzz_list2(0);
+        if (frame == 4) {
+            glBegin(GL_TRIANGLE_FAN);     /* ended outside the list */
+            glVertex2f(32, 32);
+            glVertex2f(60, 40);
+        }
+        glEndList();
+        if (frame == 4) {
+            glGetError();
+            glBegin(GL_TRIANGLE_FAN);
+            glVertex2f(32, 32);
+            glVertex2f(60, 40);
+        }
+        glVertex2f(40, 60);
+        if (frame == 4)
+            glEnd();
+        glCallList(1);
+        if (frame == 4) {
+            glVertex2f(20, 62);
+            glEnd();
+        }
+        fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+        fc_error(h, "frame");
+        fc_capture(h);
+    }
+    glDisable(GL_LIGHTING);
+    glDisable(GL_LINE_STIPPLE);
+}
+
+/* GL_COMPILE_AND_EXECUTE executes the part of a primitive stored before a
+ * new attribute wraps the vertex list: glBegin is executed and glEnd not
+ * yet.  Commands executed at once then run through the save table, without
+ * the glBegin/glEnd check of the dispatch (only their own, if any). */
+static void immediate_inside_begin(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    static const GLfloat v[4][2] = { { 2, 2 }, { 30, 2 }, { 30, 30 }, { 2, 30 } };
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(2, 2);
+    glVertex2f(30, 4);
+    glColor3f(1, 0, 0);          /* wraps: glBegin + 2 vertices executed */
+    glVertex2f(16, 30);
+    glGetError();
+    fc_get_integer(h, "get inside", GL_LIST_INDEX, 1);
+    fc_error(h, "get");
+    glEnableClientState(GL_VERTEX_ARRAY);
+    fc_error(h, "enable client state");
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    fc_error(h, "vertex pointer");
+    glPixelStorei(GL_PACK_ALIGNMENT, 2);
+    fc_error(h, "pixel store");
+    fc_is_enabled(h, "isenabled", GL_VERTEX_ARRAY);
+    fc_error(h, "isenabled error");
+    GLfloat lv[4] = { 0 };
+    glGetLightfv(GL_LIGHT0, GL_DIFFUSE, lv);
+    fc_blob(h, "light", lv, sizeof(lv));
+    fc_error(h, "getlight");
+    GLubyte px[4] = { 9, 9, 9, 9 };
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "readpixels", px, sizeof(px));
+    fc_error(h, "readpixels error");
+    fc_value(h, "genlists", glGenLists(1));
+    fc_error(h, "genlists error");
+    glEnd();
+    glDrawArrays(GL_QUADS, 0, 4);
+    glEndList();
+    fc_error(h, "endlist");
+    fc_get_integer(h, "pack alignment", GL_PACK_ALIGNMENT, 1);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1282,5 +1675,11 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/redundant_state", 64, 64, 1, "api dlist lighting", redundant_state),
     FC_CASE_RGBA("dlist/names", 32, 32, 0, "api dlist", names),
     FC_CASE_RGBA("dlist/nested_execute", 64, 64, 3, "api dlist errors", nested_execute),
+    FC_CASE_RGBA("dlist/shared_contexts", 32, 32, 2, "api dlist osmesa", shared_contexts),
+    FC_CASE_RGBA("dlist/queries", 32, 32, 0, "api dlist query", queries),
+    FC_CASE_RGBA("dlist/fuzz", 64, 64, 8, "api dlist polygon_mode lighting", fuzz),
+    FC_CASE_RGBA("dlist/empty_primitive", 64, 64, 1, "api dlist vertex", empty_primitive),
+    FC_CASE_RGBA("dlist/fuzz_state", 64, 64, 6, "api dlist lighting lines varray", fuzz_state),
+    FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
     { 0 }
 };

@@ -273,7 +273,7 @@ void GLAPIENTRY glPushClientAttrib(GLbitfield mask)
    if (!ctx)
       return;
    /* not in the oracle's glBegin/glEnd dispatch table (generic_nop) */
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (ctx->ClientAttribStackDepth >= FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH) {
       fgl_error(ctx, GL_STACK_OVERFLOW);
       return;
@@ -294,7 +294,7 @@ void GLAPIENTRY glPopClientAttrib(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (ctx->ClientAttribStackDepth == 0) {
       fgl_error(ctx, GL_STACK_UNDERFLOW);
       return;

@@ -54,7 +54,7 @@ void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    const int p = (int)plane - (int)GL_CLIP_PLANE0;
    if (p < 0 || p >= FGL_MAX_CLIP_PLANES) {
       fgl_error(ctx, GL_INVALID_ENUM);

@@ -34,6 +34,7 @@
 #include "main/dlist.h"
 
 #include <assert.h>
+#include <pthread.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
@@ -230,15 +231,23 @@ struct save_context {
    unsigned vao_offset;       /* offset of save->VAO[0] (old_offset) */
 };
 
-struct fgl_dlist_state {
-   /* name -> list, sorted by name (Mesa's hash of shared lists) */
+/* The lists of the contexts that share them (OSMesaCreateContext's
+ * sharelist; Mesa's ctx->Shared->DisplayList): name -> list, sorted by
+ * name, under a lock as Mesa's hash table. */
+struct dlist_shared {
+   unsigned refs;
+   pthread_mutex_t lock;
    struct {
       GLuint name;
       struct display_list *dl;
    } *table;
    unsigned table_count, table_cap;
    GLuint max_key;            /* highest name ever inserted (MaxKey) */
-   unsigned walk;
+   unsigned walk;             /* replace_vertex_lists' mark */
+};
+
+struct fgl_dlist_state {
+   struct dlist_shared *shared;
 
    struct display_list *current_list;   /* ListState.CurrentList */
    unsigned call_depth;            /* ListState.CallDepth */
@@ -301,7 +310,7 @@ static void delete_list(struct display_list *dl)
 }
 
 /* index of the first entry with a name >= name */
-static unsigned table_find(const struct fgl_dlist_state *ls, GLuint name)
+static unsigned table_find(const struct dlist_shared *ls, GLuint name)
 {
    unsigned lo = 0, hi = ls->table_count;
    while (lo < hi) {
@@ -316,7 +325,7 @@ static unsigned table_find(const struct fgl_dlist_state *ls, GLuint name)
 
 static struct display_list *lookup_list(const struct fgl_context *ctx, GLuint name)
 {
-   const struct fgl_dlist_state *ls = ctx->ListState;
+   const struct dlist_shared *ls = ctx->ListState->shared;
    if (name == 0)
       return NULL;
    const unsigned i = table_find(ls, name);
@@ -326,7 +335,7 @@ static struct display_list *lookup_list(const struct fgl_context *ctx, GLuint na
 /* _mesa_HashInsertLocked: replace or add; MaxKey follows. */
 static bool insert_list(struct fgl_context *ctx, struct display_list *dl)
 {
-   struct fgl_dlist_state *ls = ctx->ListState;
+   struct dlist_shared *ls = ctx->ListState->shared;
    const unsigned i = table_find(ls, dl->name);
    if (i < ls->table_count && ls->table[i].name == dl->name) {
       delete_list(ls->table[i].dl);
@@ -353,7 +362,7 @@ static bool insert_list(struct fgl_context *ctx, struct display_list *dl)
 /* destroy_list */
 static void remove_list(struct fgl_context *ctx, GLuint name)
 {
-   struct fgl_dlist_state *ls = ctx->ListState;
+   struct dlist_shared *ls = ctx->ListState->shared;
    const unsigned i = table_find(ls, name);
    if (name == 0 || i >= ls->table_count || ls->table[i].name != name)
       return;
@@ -398,6 +407,14 @@ bool fgl_init_dlist(struct fgl_context *ctx)
    ctx->ListState = calloc(1, sizeof(*ctx->ListState));
    if (!ctx->ListState)
       return false;
+   ctx->ListState->shared = calloc(1, sizeof(*ctx->ListState->shared));
+   if (!ctx->ListState->shared) {
+      free(ctx->ListState);
+      ctx->ListState = NULL;
+      return false;
+   }
+   ctx->ListState->shared->refs = 1;
+   pthread_mutex_init(&ctx->ListState->shared->lock, NULL);
    ctx->ExecuteFlag = true;
    ctx->CompileFlag = false;
    ctx->List.ListBase = 0;
@@ -408,15 +425,40 @@ bool fgl_init_dlist(struct fgl_context *ctx)
    return true;
 }
 
+static void unref_shared(struct dlist_shared *sh)
+{
+   if (!sh || --sh->refs > 0)
+      return;
+   for (unsigned i = 0; i < sh->table_count; i++)
+      delete_list(sh->table[i].dl);
+   free(sh->table);
+   pthread_mutex_destroy(&sh->lock);
+   free(sh);
+}
+
+void fgl_share_dlists(struct fgl_context *ctx, struct fgl_context *share)
+{
+   struct dlist_shared *sh = share->ListState->shared;
+   pthread_mutex_lock(&sh->lock);
+   sh->refs++;
+   pthread_mutex_unlock(&sh->lock);
+   unref_shared(ctx->ListState->shared);
+   ctx->ListState->shared = sh;
+}
+
 void fgl_free_dlist(struct fgl_context *ctx)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
    if (!ls)
       return;
-   for (unsigned i = 0; i < ls->table_count; i++)
-      delete_list(ls->table[i].dl);
+   pthread_mutex_lock(&ls->shared->lock);
+   const bool last = ls->shared->refs == 1;
+   if (!last)
+      ls->shared->refs--;
+   pthread_mutex_unlock(&ls->shared->lock);
+   if (last)
+      unref_shared(ls->shared);
    delete_list(ls->current_list);
-   free(ls->table);
    free(ls->save.buffer);
    free(ls->save.prims);
    free(ls->save.copied);
@@ -1732,8 +1774,10 @@ void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint s
    fgl_save_draw_elements(ctx, mode, count, type, indices);
 }
 
-static void exec_call_list(struct fgl_context *ctx, GLuint list);
 static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+static void locked_call_list(struct fgl_context *ctx, GLuint list);
+static void locked_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type,
+                              const GLvoid *lists);
 
 /* save_CallList (after _save_CallList's fallback inside glBegin/glEnd) */
 void fgl_save_call_list(struct fgl_context *ctx, GLuint list)
@@ -1747,7 +1791,7 @@ void fgl_save_call_list(struct fgl_context *ctx, GLuint list)
       n[1].u = list;
    invalidate_saved_current_state(ctx);
    if (ctx->ExecuteFlag)
-      exec_call_list(ctx, list);
+      locked_call_list(ctx, list);
 }
 
 static unsigned call_lists_type_size(GLenum type)
@@ -1796,7 +1840,7 @@ void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, cons
    }
    invalidate_saved_current_state(ctx);
    if (ctx->ExecuteFlag)
-      exec_call_lists(ctx, num, type, lists);
+      locked_call_lists(ctx, num, type, lists);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1911,9 +1955,11 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
    if (vl->ndraws) {
       /* one indexed draw per run of a mode, the list's vertex format as
        * the draw's arrays (attributes outside it are the current values) */
+      unsigned exec_attr_size[FGL_ATTR_COUNT];
+      memcpy(exec_attr_size, ctx->Vbo.attr_size, sizeof(exec_attr_size));
       memcpy(ctx->Vbo.attr_size, vl->attrsz, sizeof(vl->attrsz));
       t_render_batch(ctx, vl->verts, vl->nverts, vl->draws, vl->ndraws);
-      memset(ctx->Vbo.attr_size, 0, sizeof(ctx->Vbo.attr_size));
+      memcpy(ctx->Vbo.attr_size, exec_attr_size, sizeof(exec_attr_size));
    }
    if (vl->kind == VL_COPY_CURRENT)
       playback_copy_to_current(ctx, vl);
@@ -2097,6 +2143,23 @@ static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, con
    ctx->CompileFlag = save_compile_flag;
 }
 
+/* A call from the application: the shared lists are locked while they
+ * execute (the lists they call run under the same lock). */
+static void locked_call_list(struct fgl_context *ctx, GLuint list)
+{
+   pthread_mutex_lock(&ctx->ListState->shared->lock);
+   exec_call_list(ctx, list);
+   pthread_mutex_unlock(&ctx->ListState->shared->lock);
+}
+
+static void locked_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type,
+                              const GLvoid *lists)
+{
+   pthread_mutex_lock(&ctx->ListState->shared->lock);
+   exec_call_lists(ctx, n, type, lists);
+   pthread_mutex_unlock(&ctx->ListState->shared->lock);
+}
+
 /* ------------------------------------------------------------------ */
 /* Entry points                                                        */
 /* ------------------------------------------------------------------ */
@@ -2147,9 +2210,9 @@ void GLAPIENTRY glNewList(GLuint name, GLenum mode)
  * base) */
 static void replace_vertex_lists(struct fgl_context *ctx, struct display_list *dl)
 {
-   if (!dl || dl->walk == ctx->ListState->walk)
+   if (!dl || dl->walk == ctx->ListState->shared->walk)
       return;
-   dl->walk = ctx->ListState->walk;
+   dl->walk = ctx->ListState->shared->walk;
    for (unsigned pos = 0; pos < dl->count; pos += dl->nodes[pos].h.size) {
       union dl_node *n = &dl->nodes[pos];
       if (n->h.op == DL_OP_VERTEX_LIST) {
@@ -2213,8 +2276,9 @@ void GLAPIENTRY glEndList(void)
       save->dangling_attr_ref = true;
       save_flush_vertices(ctx);
    }
+   pthread_mutex_lock(&ls->shared->lock);
    if (ls->use_loopback) {
-      ls->walk++;
+      ls->shared->walk++;
       replace_vertex_lists(ctx, ls->current_list);
    }
    struct display_list *dl = ls->current_list;
@@ -2224,6 +2288,7 @@ void GLAPIENTRY glEndList(void)
       delete_list(dl);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
    }
+   pthread_mutex_unlock(&ls->shared->lock);
    ctx->ExecuteFlag = true;
    ctx->CompileFlag = false;
 }
@@ -2237,7 +2302,7 @@ void GLAPIENTRY glCallList(GLuint list)
       fgl_save_call_list(ctx, list);
       return;
    }
-   exec_call_list(ctx, list);
+   locked_call_list(ctx, list);
 }
 
 void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
@@ -2249,7 +2314,7 @@ void GLAPIENTRY glCallLists(GLsizei n, GLenum type, const GLvoid *lists)
       fgl_save_call_lists(ctx, n, type, lists);
       return;
    }
-   exec_call_lists(ctx, n, type, lists);
+   locked_call_lists(ctx, n, type, lists);
 }
 
 void GLAPIENTRY glListBase(GLuint base)
@@ -2265,7 +2330,7 @@ void GLAPIENTRY glListBase(GLuint base)
 
 /* _mesa_HashFindFreeKeyBlock: after the highest name ever used, or else
  * the first gap of range free names from 1 */
-static GLuint find_free_block(const struct fgl_dlist_state *ls, GLuint range)
+static GLuint find_free_block(const struct dlist_shared *ls, GLuint range)
 {
    const GLuint max_key = ~(GLuint)0 - 1;
    if (max_key - range > ls->max_key)
@@ -2294,7 +2359,9 @@ GLuint GLAPIENTRY glGenLists(GLsizei range)
    }
    if (range == 0)
       return 0;
-   const GLuint base = find_free_block(ctx->ListState, (GLuint)range);
+   struct dlist_shared *sh = ctx->ListState->shared;
+   pthread_mutex_lock(&sh->lock);
+   const GLuint base = find_free_block(sh, (GLuint)range);
    if (base) {
       /* the names are reserved by empty lists */
       for (GLuint i = 0; i < (GLuint)range; i++) {
@@ -2306,6 +2373,7 @@ GLuint GLAPIENTRY glGenLists(GLsizei range)
          }
       }
    }
+   pthread_mutex_unlock(&sh->lock);
    return base;
 }
 
@@ -2323,9 +2391,11 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    /* for (i = list; i < list + range; i++) destroy_list(i), with the
     * unsigned wrap of list + range */
    const GLuint end = list + (GLuint)range;
-   struct fgl_dlist_state *ls = ctx->ListState;
-   for (unsigned i = table_find(ls, list); i < ls->table_count && ls->table[i].name < end;)
-      remove_list(ctx, ls->table[i].name);
+   struct dlist_shared *sh = ctx->ListState->shared;
+   pthread_mutex_lock(&sh->lock);
+   for (unsigned i = table_find(sh, list); i < sh->table_count && sh->table[i].name < end;)
+      remove_list(ctx, sh->table[i].name);
+   pthread_mutex_unlock(&sh->lock);
 }
 
 GLboolean GLAPIENTRY glIsList(GLuint list)
@@ -2335,7 +2405,10 @@ GLboolean GLAPIENTRY glIsList(GLuint list)
       return GL_FALSE;
    fgl_flush_vertices(ctx);
    ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
-   return lookup_list(ctx, list) ? GL_TRUE : GL_FALSE;
+   pthread_mutex_lock(&ctx->ListState->shared->lock);
+   const bool found = lookup_list(ctx, list) != NULL;
+   pthread_mutex_unlock(&ctx->ListState->shared->lock);
+   return found ? GL_TRUE : GL_FALSE;
 }
 
 bool fgl_get_list_value(const struct fgl_context *ctx, GLenum pname, int *value)

@@ -123,6 +123,8 @@ void fgl_exec_end(struct fgl_context *ctx);
 /* Context lifetime and queries */
 bool fgl_init_dlist(struct fgl_context *ctx);
 void fgl_free_dlist(struct fgl_context *ctx);
+/* OSMesaCreateContext's sharelist: ctx uses share's lists from now on */
+void fgl_share_dlists(struct fgl_context *ctx, struct fgl_context *share);
 /* glGet of GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE, GL_MAX_LIST_NESTING */
 bool fgl_get_list_value(const struct fgl_context *ctx, GLenum pname, int *value);
 

@@ -404,11 +404,7 @@ static bool get_value(GLenum pname, const void *params, struct value *val)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return false;
-   /* the BeginEnd dispatch's generic_nop; while a list is compiled the
-    * dispatch is the save table, which calls _mesa_Get*v (no check) even
-    * when a GL_COMPILE_AND_EXECUTE list has left a glBegin open */
-   if (!ctx->CompileFlag)
-      ASSERT_OUTSIDE_BEGIN_END_RET(ctx, false);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, false);
    if (!fill_value(ctx, pname, val)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return false;

@@ -224,7 +224,7 @@ static int get_light_values(GLenum light, GLenum pname, float **v)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return 0;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, 0);
    const GLint i = (GLint)(light - GL_LIGHT0);
    const int n = i >= 0 && i < FGL_MAX_LIGHTS ? light_field(&ctx->Light.Light[i], pname, v) : 0;
    if (!n)
@@ -524,7 +524,7 @@ static int get_material_values(GLenum face, GLenum pname, const float **v)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return 0;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, 0);
    fgl_flush_vertices(ctx);
    fgl_flush_current(ctx);
    if (face != GL_FRONT && face != GL_BACK) {

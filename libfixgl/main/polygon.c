@@ -161,7 +161,7 @@ void GLAPIENTRY glGetPolygonStipple(GLubyte *mask)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (!mask)
       return;
    fgl_pack_stipple(&ctx->Pack, ctx->PolygonStipple, mask);

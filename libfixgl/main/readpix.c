@@ -96,7 +96,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    if (width < 0 || height < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);

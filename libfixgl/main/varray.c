@@ -23,18 +23,13 @@
 /* Only the BeginEnd dispatch table's generic_nop refuses the client-state
  * entry points (pointers, glInterleavedArrays, glEnable/DisableClientState,
  * glGetPointerv) inside glBegin/glEnd: Mesa's functions have no check of
- * their own.  While a list is compiled the dispatch stays dlist.c's save
- * table, which calls them directly, also when a GL_COMPILE_AND_EXECUTE
+ * their own, so they use ASSERT_OUTSIDE_BEGIN_END_DISPATCH (context.h):
+ * while a list is compiled they run, also when a GL_COMPILE_AND_EXECUTE
  * list has left the executed glBegin open (a primitive wrapped by the
  * compiler runs by loopback up to the wrap; its glEnd runs when the rest
  * is compiled) [S: vbo/vbo_exec_api.c:vbo_exec_Begin keeps the save table,
  * main/enable.c:_mesa_EnableClientState, main/varray.c:_mesa_VertexPointer,
  * main/getstring.c:_mesa_GetPointerv]. */
-#define ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx)             \
-   do {                                                    \
-      if (!(ctx)->CompileFlag)                             \
-         ASSERT_OUTSIDE_BEGIN_END(ctx);                    \
-   } while (0)
 
 /* Mesa's type bits [S: main/varray.c:type_to_bit] for the legal types of
  * each array on the desktop compatibility profile */

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "context.h"
+#include "main/dlist.h"
 #include "main/groups.h"
 
 #define OSMESA_MAX_SIZE 16384
@@ -127,7 +128,6 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 {
    GLenum format = GL_RGBA;
    int depth = 0, stencil = 0;
-   (void)sharelist; /* nothing is shareable yet (display lists, textures) */
 
    for (int i = 0; attribList && attribList[i]; i += 2) {
       const int value = attribList[i + 1];
@@ -181,6 +181,10 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       free(c);
       return NULL;
    }
+   /* display lists are shared with sharelist's context (textures, when
+    * they land, too) */
+   if (sharelist)
+      fgl_share_dlists(c->gl, sharelist->gl);
    c->format = format;
    c->y_up = GL_TRUE;
    if (depth > 0 && stencil > 0) {

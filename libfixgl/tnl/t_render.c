@@ -309,15 +309,22 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
     * "Vertex batching"). */
    const bool constant_interp = flat && (ctx->Light.Enabled || color_varying);
+   bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {
       /* consecutive primitives of one mode are one llvmpipe draw
        * (st_draw.c:st_draw_gallium_multimode), and draw is flushed after
-       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch */
+       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch.
+       * llvmpipe_draw_vbo returns at once when the first of its draws is
+       * empty (`!draws[0].count`), skipping the others: an empty
+       * glBegin/glEnd hides the primitives of its mode batched after it
+       * (ORACLE-NOTES.md "Vertex batching", dlist/fuzz). */
       if (i == 0 || prims[i].mode != prims[i - 1].mode) {
          t_vbuf_end_draw(ctx);
          ctx->_DrawOffset.latched = false;
+         skip_draw = prims[i].count == 0;
       }
-      render_prim(&r, &prims[i], constant_interp);
+      if (!skip_draw)
+         render_prim(&r, &prims[i], constant_interp);
    }
    t_vbuf_end_draw(ctx);
 #if defined(__SSE__) || defined(__x86_64__)
