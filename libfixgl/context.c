@@ -53,6 +53,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_point(ctx);
    fgl_init_line(ctx);
    fgl_init_viewport(ctx);
+   fgl_init_feedback(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }

@@ -59,6 +59,7 @@ enum {
    FGL_NEW_CLIP       = 1u << 11,  /* user clip planes */
    FGL_NEW_POINT      = 1u << 12,  /* point size, smoothing */
    FGL_NEW_LINE       = 1u << 13,  /* line width, smoothing, stipple */
+   FGL_NEW_RENDERMODE = 1u << 14,  /* glRenderMode: the draw pipeline's stages */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -305,6 +306,43 @@ struct fgl_draw_pipeline {
                              * the counter */
 };
 
+/* Selection and feedback (Mesa's gl_selection and gl_feedback,
+ * main/feedback.c; the draw stages that fill them, tnl/t_feedback.c). */
+#define FGL_MAX_NAME_STACK_DEPTH 64   /* config.h MAX_NAME_STACK_DEPTH */
+/* the values of a feedback vertex (feedback.c FB_*) */
+#define FGL_FB_3D      0x1u
+#define FGL_FB_4D      0x2u
+#define FGL_FB_COLOR   0x4u
+#define FGL_FB_TEXTURE 0x8u
+
+struct fgl_feedback {
+   GLenum Type;             /* GL_2D ... GL_4D_COLOR_TEXTURE */
+   unsigned Mask;           /* FGL_FB_* of Type */
+   GLfloat *Buffer;
+   GLuint BufferSize;
+   GLuint Count;            /* values emitted, also past BufferSize */
+   /* the state tracker's feedback stage's reset_stipple_counter flag
+    * (st_cb_feedback.c): its next line is a GL_LINE_RESET_TOKEN; kept
+    * across draws and render modes, as the stage is created once */
+   bool ResetStipple;
+   /* the colour slots (R_ATTR_COLOR0..BCOLOR1) of that draw context's clip
+    * stage's temporary vertices (draw_pipe_clip.c stage.tmp[], malloc'ed
+    * once, observed zero): the clipper leaves flat attributes of a new
+    * vertex as the slot last held them (t_clip.c) */
+   float ClipTmp[32][4][4];
+};
+
+struct fgl_selection {
+   GLuint *Buffer;
+   GLuint BufferSize;
+   GLuint BufferCount;      /* values written, also past BufferSize */
+   GLuint Hits;
+   GLuint NameStackDepth;
+   GLuint NameStack[FGL_MAX_NAME_STACK_DEPTH];
+   bool HitFlag;
+   float HitMinZ, HitMaxZ;
+};
+
 /* The offset stage's latch (draw_pipe_offset.c:offset_first_tri): the
  * first triangle after a flush (each llvmpipe draw) picks the enable of its
  * face's fill mode, and every later triangle of the draw gets that units and
@@ -447,6 +485,11 @@ struct fgl_context {
    bool ExecuteFlag;          /* true, except while compiling GL_COMPILE */
    struct fgl_dlist_state *ListState;
 
+   /* ---- selection and feedback (main/feedback.c) ---- */
+   GLenum RenderMode;
+   struct fgl_feedback Feedback;
+   struct fgl_selection Select;
+
    /* ---- errors ---- */
    GLenum ErrorValue;
 
@@ -536,6 +579,16 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
       if ((newstate) & FGL_NEW_LIGHT)                      \
          (ctx)->PopAttribState |= GL_LIGHTING_BIT;         \
    } while (0)
+
+/* [S: feedback.h:_mesa_feedback_token] one value into the feedback
+ * buffer; values past its end are counted only (the overflow glRenderMode
+ * reports as -1). */
+static inline void fgl_feedback_token(struct fgl_context *ctx, GLfloat token)
+{
+   if (ctx->Feedback.Count < ctx->Feedback.BufferSize)
+      ctx->Feedback.Buffer[ctx->Feedback.Count] = token;
+   ctx->Feedback.Count++;
+}
 
 /* Public API symbols; everything else is hidden by default. */
 #define FGLAPI __attribute__((visibility("default")))

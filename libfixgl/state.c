@@ -196,7 +196,7 @@ void fgl_update_state(struct fgl_context *ctx)
 
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
                 FGL_NEW_FOG | FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR |
-                FGL_NEW_POINT | FGL_NEW_LINE)) {
+                FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_RENDERMODE)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -289,6 +289,27 @@ void fgl_update_state(struct fgl_context *ctx)
       /* the line stipple stage: triangles and points that reach it restart
        * the counter (draw_pipe_stipple.c) */
       dp->line_stipple = line_stipple;
+
+      if (ctx->RenderMode != GL_RENDER) {
+         /* GL_SELECT and GL_FEEDBACK draw with the state tracker's own
+          * draw context (st_draw_feedback.c, st_draw.c:st_get_draw_context),
+          * given the full rasterizer state: it has no vbuf backend, so
+          * every primitive takes the pipeline (draw_pt.c: PT_PIPELINE when
+          * !draw->render); draw_pipe_validate.c:validate_pipeline then
+          * inserts twoside and offset whenever enabled, flatshade only for
+          * unfilled polygons (line stipple, aaline and wide lines are
+          * disabled or not installed there), the cull stage for unfilled,
+          * offset, two-sided or culling.  Its mrd is never set
+          * (draw_set_zs_format is llvmpipe's), so the offset units are 0:
+          * units * 0.0 * 2 in double (draw_pipe_offset.c:offset_first_tri) */
+         dp->always = true;
+         dp->twoside = twoside;
+         dp->offset = any_offset;
+         dp->offset_units = (float)((double)pg->OffsetUnits * 0.0 * 2.0);
+         dp->flatshade = unfilled;
+         dp->cull = dp->cull_front || dp->cull_back || unfilled || any_offset || twoside;
+         dp->line_stipple = false;
+      }
    }
 
    if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {

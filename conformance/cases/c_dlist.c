@@ -1647,6 +1647,92 @@ static void immediate_inside_begin(fc_h *h)
     fc_capture(h);
 }
 
+/* the immediate-mode vertex format keeps an attribute a list set outside
+ * glBegin/glEnd: the draw of the list's vertices only copies it to the
+ * current values (FLUSH_FOR_DRAW with FLUSH_UPDATE_CURRENT), and the next
+ * full flush copies it again, over what the list's last vertex made
+ * current; a vertex list wrapped mid-primitive leaves Mesa inside
+ * glBegin/glEnd until the next node, which then does not flush */
+static void exec_format_current(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glColor3f(0, 1, 0.5f);
+    glBegin(GL_QUAD_STRIP);
+    glColor3f(1, 1, 1);
+    glVertex3f(1, 1, 0);
+    glEnd();
+    glEndList();
+    glCallList(1);
+    fc_get_float(h, "color right after", GL_CURRENT_COLOR, 4);
+    glCallList(1);
+    glFinish();
+    fc_get_float(h, "color after a flush", GL_CURRENT_COLOR, 4);
+    glNewList(2, GL_COMPILE);
+    glNormal3f(0, 0, 1);
+    glBegin(GL_LINE_LOOP);
+    glColor3ub(215, 95, 200);
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    glVertex3f(40.4f, 9.4f, -0.04f);
+    glNormal3f(0, 0.5f, 0.8f);   /* wraps the vertex list */
+    glVertex3f(9.7f, 13.4f, -0.08f);
+    glEnd();
+    glEndList();
+    glCallList(2);
+    fc_get_float(h, "normal right after", GL_CURRENT_NORMAL, 3);
+    glCallList(2);
+    glLoadIdentity();
+    fc_get_float(h, "normal after a flush", GL_CURRENT_NORMAL, 3);
+    fc_get_float(h, "color", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+}
+
+/* selection and feedback through lists: the name-stack commands and
+ * glPassThrough are compiled, glRenderMode, glSelectBuffer and
+ * glFeedbackBuffer execute at once; a list's primitives are indexed draws
+ * in feedback too */
+static void select_feedback(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    static GLuint sel[64];
+    static GLfloat fb[256];
+    glNewList(1, GL_COMPILE);
+    glInitNames();
+    glPushName(7);
+    glRectf(2, 2, 10, 10);
+    glLoadName(8);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(20, 2);
+    glVertex2f(30, 2);
+    glVertex2f(25, 12);
+    glEnd();
+    glPushName(9);
+    glPassThrough(5.5f);
+    smooth_quad(12, 14, 28, 30);
+    glPopName();
+    glPopName();
+    glPopName();                 /* underflow in GL_SELECT */
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glSelectBuffer(64, sel);     /* executed now */
+    glRenderMode(GL_SELECT);     /* executed now */
+    glEndList();
+    fc_get_integer(h, "render mode after compile", GL_RENDER_MODE, 1);
+    glCallList(2);
+    glCallList(1);
+    fc_error(h, "select");
+    fc_value(h, "hits", glRenderMode(GL_RENDER));
+    fc_blob(h, "select buffer", sel, sizeof(sel));
+    glFeedbackBuffer(256, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glCallList(1);
+    fc_value(h, "feedback count", glRenderMode(GL_RENDER));
+    fc_blob(h, "feedback buffer", fb, sizeof(fb));
+    fc_error(h, "final");
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1681,5 +1767,7 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/empty_primitive", 64, 64, 1, "api dlist vertex", empty_primitive),
     FC_CASE_RGBA("dlist/fuzz_state", 64, 64, 6, "api dlist lighting lines varray", fuzz_state),
     FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
+    FC_CASE_RGBA("dlist/exec_format_current", 64, 64, 1, "api dlist query", exec_format_current),
+    FC_CASE_RGBA("dlist/select_feedback", 32, 32, 0, "api dlist select feedback", select_feedback),
     { 0 }
 };

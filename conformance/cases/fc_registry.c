@@ -17,6 +17,7 @@ static const fc_case *const groups[] = {
     fc_cases_dlist,
     fc_cases_attrib,
     fc_cases_demo,
+    fc_cases_select,
 };
 
 size_t fc_case_count(void)

@@ -1847,11 +1847,19 @@ void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, cons
 /* Execution                                                           */
 /* ------------------------------------------------------------------ */
 
-/* FLUSH_FOR_DRAW */
+/* FLUSH_FOR_DRAW: vbo_exec_FlushVertices(ctx, NeedFlush).  With only
+ * attributes set since the last flush (FLUSH_UPDATE_CURRENT), their values
+ * are copied to the current ones and stay in the immediate-mode vertex
+ * format: the next full flush copies them again, over what the list's
+ * vertices made current (`dlist/current_values`). */
 static void flush_for_draw(struct fgl_context *ctx)
 {
-   if (ctx->Vbo.need_flush && !fgl_inside_begin_end(ctx))
+   if (!ctx->Vbo.need_flush || fgl_inside_begin_end(ctx))
+      return;
+   if (ctx->Vbo.need_flush & FGL_VBO_FLUSH_STORED)
       fgl_vbo_flush_vertices(ctx);
+   else
+      fgl_vbo_flush_current(ctx);
 }
 
 /* _vbo_loopback_vertex_list: the primitives as immediate-mode calls, the
@@ -1932,6 +1940,14 @@ static void playback_copy_to_current(struct fgl_context *ctx, const struct verte
    }
    if (color0_changed && ctx->Light.ColorMaterialEnabled)
       fgl_update_color_material(ctx, ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+   /* CurrentExecPrimitive: a node whose last primitive continues in the
+    * next node (a vertex list wrapped mid-primitive) leaves Mesa "inside
+    * glBegin/glEnd" until that node is drawn, so the next node's
+    * FLUSH_FOR_DRAW does nothing (`dlist/fuzz`) */
+   if (vl->prim_count) {
+      const struct save_prim *last = &vl->prims[vl->prim_count - 1];
+      ctx->BeginMode = last->end ? FGL_OUTSIDE_BEGIN_END : last->mode;
+   }
 }
 
 /* vbo_save_playback_vertex_list(_loopback) */

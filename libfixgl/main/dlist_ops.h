@@ -32,10 +32,7 @@
  * draws, and every command Mesa executes at once during compilation
  * (queries, client state, pixel store, glReadPixels, glFlush, glFinish,
  * glGenLists, glDeleteLists, glIsList, glEndList, glRenderMode,
- * glFeedbackBuffer, glSelectBuffer).  Selection and feedback (branch
- * `select`): glInitNames, glLoadName(U), glPushName(U), glPopName and
- * glPassThrough(F) are compiled in Mesa and take one DL_OP line each here
- * when they land.
+ * glFeedbackBuffer, glSelectBuffer).
  */
 
 /* ---- GL_COLOR_BUFFER_BIT ---- */
@@ -90,6 +87,12 @@ DL_OPV1(LightModelfv, E, F, 4)
 DL_OP2(ColorMaterial, E, E)
 DL_CUSTOM1(ShadeModel, E)          /* executes first, skips a repeat */
 DL_CUSTOMV2(Materialfv, E, E, F, 4)/* outside glBegin/glEnd: likewise */
+/* ---- selection and feedback ---- */
+DL_OP0(InitNames)
+DL_OP1(LoadName, U)
+DL_OP1(PushName, U)
+DL_OP0(PopName)
+DL_OP1(PassThrough, F)
 /* ---- attribute stack, lists ---- */
 DL_OP1(PushAttrib, BF)
 DL_OP0(PopAttrib)

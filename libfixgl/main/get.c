@@ -387,6 +387,13 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
          set_ints(val, V_INT, 1, list_value, 0, 0, 0);
          return true;
       }
+      /* selection and feedback (main/feedback.c): GL_RENDER_MODE, the
+       * name stack depths, the buffer sizes and GL_FEEDBACK_BUFFER_TYPE */
+      int feedback_value;
+      if (fgl_get_feedback_value(ctx, pname, &feedback_value)) {
+         set_ints(val, V_INT, 1, feedback_value, 0, 0, 0);
+         return true;
+      }
       /* every capability is also a boolean state value */
       if (fgl_is_cap(ctx, pname, &val->v[0])) {
          val->type = V_BOOL;

@@ -91,4 +91,9 @@ void fgl_flush_front(struct fgl_context *ctx);
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);
 bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state);
 
+/* main/feedback.c (selection and feedback) */
+void fgl_init_feedback(struct fgl_context *ctx);
+/* glGet of GL_RENDER_MODE, the name stack and the buffer sizes and type */
+bool fgl_get_feedback_value(struct fgl_context *ctx, GLenum pname, int *value);
+
 #endif

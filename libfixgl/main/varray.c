@@ -337,11 +337,9 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    case GL_INDEX_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_INDEX].Ptr; break;
    case GL_TEXTURE_COORD_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_TEXCOORD].Ptr; break;
    case GL_EDGE_FLAG_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_EDGEFLAG].Ptr; break;
-   /* feedback and selection are not implemented: their buffers stay NULL */
-   case GL_FEEDBACK_BUFFER_POINTER:
-   case GL_SELECTION_BUFFER_POINTER:
-      *params = NULL;
-      break;
+   /* main/feedback.c */
+   case GL_FEEDBACK_BUFFER_POINTER: *params = (GLvoid *)ctx->Feedback.Buffer; break;
+   case GL_SELECTION_BUFFER_POINTER: *params = (GLvoid *)ctx->Select.Buffer; break;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       break;

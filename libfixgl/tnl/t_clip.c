@@ -81,6 +81,34 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
          dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
 }
 
+/* GL_SELECT, GL_FEEDBACK: the feedback draw context's clip stage
+ * interpolates only the perspective and linear attributes of a new vertex
+ * (draw_pipe_clip.c:interp), so its flat ones (the colours with GL_FLAT)
+ * keep what temporary vertex `slot` last held (stale_flat); whatever the
+ * slot now holds is what a later vertex in it starts from.  Not visible in
+ * GL_RENDER, where llvmpipe takes flat colours from the provoking vertex.
+ * Modelled per colour attribute: the oracle's slots hold vertex program
+ * outputs by position (the primary colour always first after the position,
+ * the back colours after the unlit outputs); a change that moves them
+ * between clips (separate specular toggled) is not modelled, and the
+ * slots start as uninitialised memory (zero here; ORACLE-NOTES.md). */
+void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned slot,
+                          bool stale_flat)
+{
+   float (*held)[4] = ctx->Feedback.ClipTmp[slot];
+   const int nattr = ctx->_Raster.num_attribs;
+   for (int a = 0; a < R_ATTR_FOG && a < nattr; a++) {
+      if (stale_flat && (ctx->_Raster.flat_mask & (1u << a)))
+         memcpy(v->r.attr[a], held[a], sizeof(held[a]));
+      /* GL_SELECT's vertex has no texture coordinate, so its back colours
+       * land where GL_FEEDBACK's texture coordinate and back colours are:
+       * they do not become feedback's back colours */
+      if (ctx->RenderMode == GL_SELECT && (a == R_ATTR_BCOLOR0 || a == R_ATTR_BCOLOR1))
+         continue;
+      memcpy(held[a], v->r.attr[a], sizeof(held[a]));
+   }
+}
+
 /* The unclipped triangle's flags with the edges of vertices whose edge
  * flag is off removed (unfilled draws an edge when both are set). */
 static inline unsigned edge_flags(unsigned flags, const struct t_vertex *v0,
@@ -189,6 +217,8 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                nv->edge = vert_prev->edge;
                *new_edge = edge_prev;
             }
+            if (ctx->RenderMode != GL_RENDER)
+               t_feedback_clip_slot(ctx, nv, tmpnr - 1, true);
          }
          vert_prev = vert;
          edge_prev = edge;
@@ -213,6 +243,8 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
       *p0 = *inlist[0];
       t_copy_flat(rs, &p0->r, &v2->r);
       inlist[0] = p0;
+      if (ctx->RenderMode != GL_RENDER)
+         t_feedback_clip_slot(ctx, p0, tmpnr - 1, false);   /* dup_vert */
    }
 
    /* [S: draw_pipe_clip.c:emit_poly] the fan (P[i-1], P[i], P[0]): the

@@ -116,8 +116,12 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
    if (dp->unfilled && mode == GL_LINE) {
       /* [S: draw_pipe_unfilled.c:lines] the stipple counter restarts at a
        * primitive's first triangle; edges v2->v0, v0->v1, v1->v2 */
-      if ((flags & T_RESET_STIPPLE) && dp->line_stipple)
-         ctx->StippleCounter = 0;
+      if (flags & T_RESET_STIPPLE) {
+         if (ctx->RenderMode != GL_RENDER)
+            t_feedback_reset_stipple(ctx);
+         else if (dp->line_stipple)
+            ctx->StippleCounter = 0;
+      }
       if (flags & T_EDGE_2)
          t_unfilled_line(ctx, v[2], v[0]);
       if (flags & T_EDGE_0)
@@ -131,6 +135,13 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
       for (int i = 0; i < 3; i++)
          if (flags & (T_EDGE_0 << i))
             t_unfilled_point(ctx, v[i]);
+      return;
+   }
+
+   /* GL_SELECT, GL_FEEDBACK: the selection or feedback stage instead of
+    * rasterization (which has no stipple stages before it) */
+   if (ctx->RenderMode != GL_RENDER) {
+      t_feedback_tri(ctx, v[0], v[1], v[2]);
       return;
    }
 

@@ -178,6 +178,10 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
    /* draw_pipe_clip.c:clip_point */
    if (v->mask)
       return;
+   if (ctx->RenderMode != GL_RENDER) {
+      t_feedback_point(ctx, &v->r);
+      return;
+   }
    /* a point in draw's pipeline (smooth, or in a segment that needs
     * clipping) passes the stipple stage, which restarts the line stipple
     * counter (stipple_reset_point) */
@@ -188,6 +192,10 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
 
 void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
 {
+   if (ctx->RenderMode != GL_RENDER) {
+      t_feedback_point(ctx, v);
+      return;
+   }
    /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
    if (ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
@@ -339,6 +347,20 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
    struct t_vertex c[2];
    if (!t_clip_line(ctx, v0, v1, c))
       return;   /* the stipple stage does not see it: no counter reset */
+   if (ctx->RenderMode != GL_RENDER) {
+      /* the feedback draw context's flatshade stage runs only with
+       * unfilled polygons (dp->flatshade there) */
+      /* [S: draw_pipe_clip.c:do_clip_line] a new end is the clip stage's
+       * temporary vertex 0 or 1, with the provoking vertex's flat values */
+      if (v0->mask)
+         t_feedback_clip_slot(ctx, &c[0], 0, false);
+      if (v1->mask)
+         t_feedback_clip_slot(ctx, &c[1], 1, false);
+      if (ctx->_DrawPipeline.flatshade)
+         t_copy_flat(rs, &c[0].r, &c[1].r);
+      t_feedback_line(ctx, &c[0].r, &c[1].r);
+      return;
+   }
 
    /* st_atom_rasterizer.c: an all-ones pattern disables stippling */
    const bool stipple = ctx->_DrawPipeline.line_stipple;
@@ -359,6 +381,10 @@ void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
 {
    /* unfilled's lines carry no DRAW_PIPE_RESET_STIPPLE (the triangle's
     * reset went through reset_stipple_counter) */
+   if (ctx->RenderMode != GL_RENDER) {
+      t_feedback_line(ctx, v0, v1);
+      return;
+   }
    if (ctx->_DrawPipeline.line_stipple)
       stipple_line(ctx, v0, v1, false);
    else

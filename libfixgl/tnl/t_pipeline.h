@@ -127,6 +127,22 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v);
 void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
                      const struct r_vertex *v1);
 
+/* The selection and feedback stages (t_feedback.c), the last stage of the
+ * draw pipeline while the render mode is GL_SELECT or GL_FEEDBACK: they
+ * take the primitives rasterization would get, in window coordinates;
+ * t_feedback_reset_stipple is the stage's reset_stipple_counter. */
+void t_feedback_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                    const struct r_vertex *v1, const struct r_vertex *v2);
+void t_feedback_line(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1);
+void t_feedback_point(struct fgl_context *ctx, const struct r_vertex *v);
+void t_feedback_reset_stipple(struct fgl_context *ctx);
+/* t_clip.c: in GL_SELECT and GL_FEEDBACK, the clip stage's temporary
+ * vertex `slot` now holds v (its flat colours first taken from what the
+ * slot held, when stale_flat: a vertex made by interpolation). */
+void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned slot,
+                          bool stale_flat);
+
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);

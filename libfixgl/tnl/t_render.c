@@ -276,8 +276,16 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                                   ctx->Polygon.BackMode != GL_FILL;
    const bool vertdata_edgeflags = edgeflags_enabled &&
                                    ctx->Vbo.attr_size[FGL_ATTR_EDGEFLAG] != 0;
+   /* In GL_SELECT and GL_FEEDBACK the per-vertex edge flags all read as
+    * false (observed, ORACLE-NOTES.md "Selection and feedback": the draw
+    * shader variant's passthrough edge-flag input, added by
+    * nir_lower_passthrough_edgeflags, is not among the vp->num_inputs
+    * vertex elements st_draw_feedback.c gives the draw module), so unfilled
+    * polygons of such a batch give no lines or points. */
+   const bool feedback = ctx->RenderMode != GL_RENDER;
    for (unsigned i = 0; i < nverts; i++)
-      tv[i].edge = !vertdata_edgeflags || verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f;
+      tv[i].edge = !vertdata_edgeflags ||
+                   (!feedback && verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f);
    const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
                                ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
    dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
@@ -292,7 +300,12 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
     * is exact even where interpolation is not (w = 0, NaN positions;
     * ORACLE-NOTES.md "Vertex batching"). */
    const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
-   if (ctx->Light.Enabled)
+   if (feedback)
+      /* [S: draw_pipe_clip.c:clip_init_state] the feedback draw context
+       * has no fragment shader bound: the colours are flat exactly with
+       * GL_FLAT */
+      ctx->_Raster.flat_mask = flat ? (ctx->Light.Enabled ? 0xfu : 1u) : 0u;
+   else if (ctx->Light.Enabled)
       /* lit colours are always varyings of the vertex program
        * (ff_fragment_shader.cpp: COL0/COL1 are possible inputs whenever
        * lighting is on), so only flat shading makes them constant */
@@ -313,12 +326,15 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    for (unsigned i = 0; i < nprims; i++) {
       /* consecutive primitives of one mode are one llvmpipe draw
        * (st_draw.c:st_draw_gallium_multimode), and draw is flushed after
-       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch.
+       * each (lp_draw_arrays.c: draw_flush): the offset stage's latch.  In
+       * GL_SELECT and GL_FEEDBACK every primitive is a draw of its own,
+       * ending with a flush (st_draw_feedback.c:
+       * st_feedback_draw_vbo_multi_mode, draw_bind_vertex_shader(NULL)).
        * llvmpipe_draw_vbo returns at once when the first of its draws is
        * empty (`!draws[0].count`), skipping the others: an empty
        * glBegin/glEnd hides the primitives of its mode batched after it
        * (ORACLE-NOTES.md "Vertex batching", dlist/fuzz). */
-      if (i == 0 || prims[i].mode != prims[i - 1].mode) {
+      if (i == 0 || prims[i].mode != prims[i - 1].mode || ctx->RenderMode != GL_RENDER) {
          t_vbuf_end_draw(ctx);
          ctx->_DrawOffset.latched = false;
          skip_draw = prims[i].count == 0;

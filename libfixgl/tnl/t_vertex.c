@@ -15,23 +15,27 @@
 #include "context.h"
 
 /* Outcodes: bit0 x>w, bit1 x+w<0, bit2 y>w, bit3 y+w<0, bit4 z+w<0, bit5 z>w.
- * A point on a boundary is inside. */
+ * A point on a boundary is inside.  The comparisons are unordered
+ * [S: draw_llvm.c:generate_clipmask, lp_build_compare: LLVMRealUGT], so a
+ * NaN coordinate sets the bits of the planes it enters (a point there is
+ * dropped, a line or triangle discarded by the clip stage's NaN test). */
 static inline unsigned clip_mask(const float *p)
 {
    unsigned m = 0;
-   if (p[0] > p[3])        m |= 1u << 0;
-   if (p[0] + p[3] < 0.0f) m |= 1u << 1;
-   if (p[1] > p[3])        m |= 1u << 2;
-   if (p[1] + p[3] < 0.0f) m |= 1u << 3;
-   if (p[2] + p[3] < 0.0f) m |= 1u << 4;
-   if (p[2] > p[3])        m |= 1u << 5;
+   if (!(p[0] <= p[3]))        m |= 1u << 0;
+   if (!(0.0f <= p[0] + p[3])) m |= 1u << 1;
+   if (!(p[1] <= p[3]))        m |= 1u << 2;
+   if (!(0.0f <= p[1] + p[3])) m |= 1u << 3;
+   if (!(0.0f <= p[2] + p[3])) m |= 1u << 4;
+   if (!(p[2] <= p[3]))        m |= 1u << 5;
    return m;
 }
 
 /* User planes: bit 6 + i when the plane distance is negative, the distance
  * computed as a chain of fused multiply-adds in component order
- * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; a NaN
- * distance is inside here (the clip stage then discards the triangle). */
+ * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; unordered
+ * like the view-volume tests, so a NaN distance is outside too (the clip
+ * stage then discards the primitive). */
 static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float *p)
 {
    unsigned m = 0, planes = ctx->Transform.ClipPlanesEnabled;
@@ -43,7 +47,7 @@ static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float
       sum = fmaf(pl[1], p[1], sum);
       sum = fmaf(pl[2], p[2], sum);
       sum = fmaf(pl[3], p[3], sum);
-      if (0.0f > sum)
+      if (!(0.0f <= sum))
          m |= 1u << (6 + i);
    }
    return m;
