@@ -86,11 +86,6 @@ enum fce_path fce_scene_begin(enum fce_family family, uint64_t seed, uint32_t in
     fc_rng k = fc_rng_make(seed, profile, 40 + (uint32_t)family);
     int p = (int)fc_rng_below(&k, 100);
     enum fce_path path = p < 45 ? FCE_ARRAYS : p < 75 ? FCE_DLIST : FCE_IMMEDIATE;
-    /* the lit scenes keep their display-list share in immediate mode for
-     * now: through lists, 4 of seed 1's first 2000 differ, not all of them
-     * explained yet (README "Emission paths"); FC_EMIT=dlist runs them */
-    if (family == FCE_LIT && path == FCE_DLIST)
-        path = FCE_IMMEDIATE;
     /* FC_EMIT=immediate|arrays|dlist forces one path on every scene (both
      * renderers inherit the runner's environment) */
     const char *force = getenv("FC_EMIT");

@@ -21,8 +21,7 @@
  *   - FCE_DLIST: everything is compiled into display lists (GL_COMPILE or
  *     GL_COMPILE_AND_EXECUTE, run in order through glCallList, glCallLists
  *     or nested lists; fc_emit.c "display lists"), the blocks inside them
- *     immediate or (per profile) through arrays.  Not for the lit family
- *     yet (README "Emission paths").
+ *     immediate or (per profile) through arrays.
  * The scene's content (what the generator draws) never depends on the
  * path: the layer draws from its own random streams, never from the
  * generator's.  The path and the array layouts are structure: in the lit
