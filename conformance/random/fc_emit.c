@@ -86,6 +86,12 @@ enum fce_path fce_scene_begin(enum fce_family family, uint64_t seed, uint32_t in
     fc_rng k = fc_rng_make(seed, profile, 40 + (uint32_t)family);
     int p = (int)fc_rng_below(&k, 100);
     enum fce_path path = p < 45 ? FCE_ARRAYS : p < 75 ? FCE_DLIST : FCE_IMMEDIATE;
+    /* the lit scenes take lists in a third of that share: the oracle
+     * compiles new vertex-fetch and shader variants for the lists' merged
+     * vertex formats (all of it: +34% CPU on 2000 scenes with a cold
+     * shader cache; this: README "Emission paths") */
+    if (family == FCE_LIT && path == FCE_DLIST && p >= 55)
+        path = FCE_IMMEDIATE;
     /* FC_EMIT=immediate|arrays|dlist forces one path on every scene (both
      * renderers inherit the runner's environment) */
     const char *force = getenv("FC_EMIT");
