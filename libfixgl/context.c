@@ -27,6 +27,54 @@ void fgl_error(struct fgl_context *ctx, GLenum error)
       ctx->ErrorValue = error;
 }
 
+/* Initial values of the state of features still to come (GL 1.3 state
+ * tables 6.5-6.31), so that queries report them [S: main/context.c,
+ * main/pixel.c:init_pixelmap, main/eval.c:_mesa_init_eval,
+ * main/accum.c:_mesa_init_accum, main/multisample.c:_mesa_init_multisample] */
+static void init_pending_state(struct fgl_context *ctx)
+{
+   struct fgl_current_attrib *cur = &ctx->Current;
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      cur->TexCoord[u][3] = 1.0f;
+      cur->RasterTexCoords[u][3] = 1.0f;
+   }
+   cur->SecondaryColor[3] = 1.0f;
+   cur->RasterPos[3] = 1.0f;
+   for (int i = 0; i < 4; i++)
+      cur->RasterColor[i] = 1.0f;
+   cur->RasterSecondaryColor[3] = 1.0f;
+   cur->RasterIndex = 1.0f;
+   cur->RasterPosValid = true;
+
+   struct fgl_pixel_attrib *px = &ctx->Pixel;
+   px->ReadBuffer = GL_FRONT;     /* single-buffered OSMesa framebuffer */
+   px->RedScale = px->GreenScale = px->BlueScale = px->AlphaScale = 1.0f;
+   px->DepthScale = 1.0f;
+   px->ZoomX = px->ZoomY = 1.0f;
+   struct fgl_pixelmap *maps[] = {
+      &ctx->PixelMaps.RtoR, &ctx->PixelMaps.GtoG, &ctx->PixelMaps.BtoB,
+      &ctx->PixelMaps.AtoA, &ctx->PixelMaps.ItoR, &ctx->PixelMaps.ItoG,
+      &ctx->PixelMaps.ItoB, &ctx->PixelMaps.ItoA, &ctx->PixelMaps.ItoI,
+      &ctx->PixelMaps.StoS,
+   };
+   for (size_t i = 0; i < sizeof(maps) / sizeof(maps[0]); i++)
+      maps[i]->Size = 1;          /* one entry, 0 */
+
+   struct fgl_eval_attrib *ev = &ctx->Eval;
+   ev->MapGrid1un = 1;
+   ev->MapGrid1u1 = 0.0f;
+   ev->MapGrid1u2 = 1.0f;
+   ev->MapGrid2un = ev->MapGrid2vn = 1;
+   ev->MapGrid2u1 = ev->MapGrid2v1 = 0.0f;
+   ev->MapGrid2u2 = ev->MapGrid2v2 = 1.0f;
+
+   ctx->Multisample.Enabled = true;
+   ctx->Multisample.SampleCoverageValue = 1.0f;
+
+   ctx->Color.IndexMask = ~0u;
+   ctx->Color.DrawBuffer = GL_FRONT;
+}
+
 struct fgl_context *fgl_context_create(void)
 {
    struct fgl_context *ctx = calloc(1, sizeof(*ctx));
@@ -54,6 +102,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_line(ctx);
    fgl_init_viewport(ctx);
    fgl_init_feedback(ctx);
+   init_pending_state(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }

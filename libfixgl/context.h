@@ -17,6 +17,7 @@
 
 #include <GL/gl.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "math/m_matrix.h"
@@ -42,6 +43,18 @@
 #define FGL_MIN_LINE_WIDTH             1.0f
 #define FGL_MAX_LINE_WIDTH             255.0f
 #define FGL_POINT_LINE_GRANULARITY     0.1f
+/* Limits of features still to come, reported as the oracle reports them
+ * (its Const values for llvmpipe); the texture and evaluator paths are to
+ * support exactly these [S: main/config.h, gallium/drivers/llvmpipe/
+ * lp_screen.c, lp_limits.h] */
+#define FGL_MAX_TEXTURE_SIZE           16384   /* LP_MAX_TEXTURE_2D_LEVELS 15 */
+#define FGL_MAX_3D_TEXTURE_SIZE        2048    /* LP_MAX_TEXTURE_3D_LEVELS 12 */
+#define FGL_MAX_CUBE_MAP_TEXTURE_SIZE  16384   /* LP_MAX_TEXTURE_CUBE_LEVELS 15 */
+#define FGL_MAX_TEXTURE_LOD_BIAS       16.0f
+#define FGL_MAX_EVAL_ORDER             30      /* MAX_EVAL_ORDER */
+/* GL_MAX_ELEMENTS_VERTICES/INDICES: a recommendation only (fixgl draws any
+ * count); Mesa reports Const.MaxArrayLockSize */
+#define FGL_MAX_ELEMENTS               3000
 
 /* Dirty bits, one per group of derived state. */
 enum {
@@ -68,6 +81,21 @@ struct fgl_current_attrib {
    /* every vbo attribute's value outside the vertex format: normal, colour
     * and the materials (which GL groups with the lighting state) */
    float Attrib[FGL_ATTR_COUNT][4];
+   /* Current values that do not take part in drawing yet, kept outside the
+    * vbo until their setters come with their features (Mesa keeps them as
+    * vbo attributes, VERT_ATTRIB_TEX0.., _COLOR1, _FOG). */
+   float TexCoord[FGL_MAX_TEXTURE_UNITS][4];     /* (0, 0, 0, 1) */
+   float SecondaryColor[4];                      /* (0, 0, 0, 1) */
+   float FogCoord;                               /* 0 */
+   /* the current raster position (glRasterPos and glWindowPos come with
+    * the pixel path) [S: main/context.h, gl_current_attrib] */
+   float RasterPos[4];                           /* (0, 0, 0, 1) */
+   float RasterDistance;                         /* 0 */
+   float RasterColor[4];                         /* (1, 1, 1, 1) */
+   float RasterSecondaryColor[4];                /* (0, 0, 0, 1) */
+   float RasterIndex;                            /* 1 */
+   float RasterTexCoords[FGL_MAX_TEXTURE_UNITS][4]; /* (0, 0, 0, 1) */
+   bool RasterPosValid;                          /* true */
 };
 
 /* GL_COLOR_BUFFER_BIT */
@@ -85,8 +113,15 @@ struct fgl_colorbuffer_attrib {
    float BlendColor[4];     /* as given (Mesa's BlendColorUnclamped) */
    /* logic op */
    bool LogicOpEnabled;     /* GL_COLOR_LOGIC_OP */
+   bool IndexLogicOpEnabled;   /* GL_INDEX_LOGIC_OP: no effect on RGBA */
    GLenum LogicOp;
    unsigned ColorMask;      /* bit 0 red .. bit 3 alpha */
+   /* colour index state: stored and queried, no effect on the RGBA
+    * buffer (main/clear.c) */
+   GLuint IndexMask;        /* ~0 */
+   GLuint ClearIndex;       /* 0; glClearIndex's (GLuint) cast of the float */
+   /* glDrawBuffer (main/buffers.c): as given; GL_NONE draws no colour */
+   GLenum DrawBuffer;
 };
 
 /* GL_SCISSOR_BIT */
@@ -211,6 +246,74 @@ struct fgl_pixelstore {
 
 #define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
+/* GL_ACCUM_BUFFER_BIT: the accumulation buffer is not implemented (OSMesa
+ * gives the oracle none either); only its clear value exists */
+struct fgl_accum_attrib {
+   float ClearColor[4];     /* glClearAccum, clamped to [-1, 1] */
+};
+
+/* The pixel maps (glPixelMap comes with the pixel path) [S: main/mtypes.h,
+ * gl_pixelmaps]: each has one entry, 0, at first. */
+#define FGL_MAX_PIXEL_MAP_TABLE 256
+struct fgl_pixelmap {
+   GLint Size;
+   float Map[FGL_MAX_PIXEL_MAP_TABLE];
+};
+
+struct fgl_pixelmaps {
+   struct fgl_pixelmap RtoR, GtoG, BtoB, AtoA;
+   struct fgl_pixelmap ItoR, ItoG, ItoB, ItoA;
+   struct fgl_pixelmap ItoI, StoS;
+};
+
+/* GL_PIXEL_MODE_BIT [S: main/mtypes.h, gl_pixel_attrib]: pixel transfer
+ * and zoom, whose setters come with the pixel path, and the read buffer */
+struct fgl_pixel_attrib {
+   GLenum ReadBuffer;       /* glReadBuffer (main/buffers.c): as given */
+   float RedBias, RedScale;
+   float GreenBias, GreenScale;
+   float BlueBias, BlueScale;
+   float AlphaBias, AlphaScale;
+   float DepthBias, DepthScale;
+   GLint IndexShift, IndexOffset;
+   bool MapColorFlag;       /* GL_MAP_COLOR */
+   bool MapStencilFlag;     /* GL_MAP_STENCIL */
+   float ZoomX, ZoomY;
+};
+
+/* GL_EVAL_BIT [S: main/mtypes.h, gl_eval_attrib]: the map grids (glMapGrid
+ * comes with the evaluators; the GL_MAPn_* and GL_AUTO_NORMAL enables are
+ * stored with the pending capabilities, main/enable.c) */
+struct fgl_eval_attrib {
+   GLint MapGrid1un;
+   float MapGrid1u1, MapGrid1u2;
+   GLint MapGrid2un, MapGrid2vn;
+   float MapGrid2u1, MapGrid2u2, MapGrid2v1, MapGrid2v2;
+};
+
+/* GL_TEXTURE_BIT, as far as glGet reports it: the active unit and the
+ * texture object names bound to each unit (0, the default textures); the
+ * texture path adds the objects, environment and coordinate generation
+ * [S: main/mtypes.h, gl_texture_attrib] */
+struct fgl_texture_unit {
+   GLuint Bound1D, Bound2D, Bound3D, BoundCubeMap;
+};
+
+struct fgl_texture_attrib {
+   GLuint CurrentUnit;      /* glActiveTexture - GL_TEXTURE0 */
+   struct fgl_texture_unit Unit[FGL_MAX_TEXTURE_UNITS];
+};
+
+/* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample
+ * buffer, so none of it changes rendering [S: main/mtypes.h,
+ * gl_multisample_attrib] */
+struct fgl_multisample_attrib {
+   bool Enabled;            /* GL_MULTISAMPLE: true */
+   bool SampleAlphaToCoverage, SampleAlphaToOne, SampleCoverage;
+   float SampleCoverageValue;   /* 1 */
+   bool SampleCoverageInvert;
+};
+
 /* GL_POINT_BIT (main/points.c) */
 struct fgl_point_attrib {
    float Size;              /* as given (> 0); clamped when drawn */
@@ -270,6 +373,12 @@ struct fgl_framebuffer {
    uint8_t *Stencil;          /* stencil-only buffer (S8) when no depth */
    /* called by glFlush/glFinish to make the image visible to the owner */
    void (*FlushFront)(struct fgl_framebuffer *fb);
+   /* Mesa's rb->defined of the front colour buffer: set when a draw or a
+    * clear is validated with the colour buffer bound (not under
+    * glDrawBuffer(GL_NONE)) [S: state_tracker/st_atom_framebuffer.c];
+    * FlushFront does its work only when set, and clears it
+    * [S: state_tracker/st_manager.c:st_manager_flush_frontbuffer] */
+   bool ColorDefined;
 };
 
 /* The oracle's draw pipeline (draw_pipe_validate.c:validate_pipeline), as
@@ -387,11 +496,14 @@ enum fgl_array_index {
    FGL_ARRAY_INDEX,        /* state only: colour index mode does not draw */
    FGL_ARRAY_TEXCOORD,     /* state only until textures land */
    FGL_ARRAY_EDGEFLAG,
+   FGL_ARRAY_FOGCOORD,     /* GL 1.4 arrays: enabled, pointed at and */
+   FGL_ARRAY_COLOR1,       /* queried as Mesa does; not drawn */
    FGL_ARRAY_COUNT,
 };
 
 struct fgl_array_attrib {
    struct fgl_client_array Array[FGL_ARRAY_COUNT];
+   GLuint ActiveTexture;    /* glClientActiveTexture - GL_TEXTURE0 */
 };
 
 /* glPushClientAttrib (main/attrib.c) [S: main/attrib.c, gl_client_attrib_node] */
@@ -403,7 +515,7 @@ struct fgl_client_attrib_node {
 };
 
 /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 26
+#define FGL_PENDING_CAPS 27
 
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit
@@ -412,14 +524,26 @@ struct fgl_client_attrib_node {
  * and display list (GL_LIST_BIT) state get their member here, and their
  * line in the table, when the feature lands. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
-#define FGL_ENABLE_ATTRIB_CAPS 55          /* caps restored by GL_ENABLE_BIT */
+#define FGL_ENABLE_ATTRIB_CAPS 61          /* caps restored by GL_ENABLE_BIT */
+#define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
+#define FGL_TEXTURE_ATTRIB_CAPS 8          /* ... by GL_TEXTURE_BIT */
 struct fgl_attrib_node {
    GLbitfield Mask;
    GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
    struct fgl_colorbuffer_attrib Color;
    float Current[FGL_ATTR_MAT_FIRST][4];   /* ctx->Current, materials excluded */
+   /* the rest of ctx->Current: TexCoord .. RasterPosValid */
+   unsigned char CurrentExtra[sizeof(struct fgl_current_attrib) -
+                              offsetof(struct fgl_current_attrib, TexCoord)];
+   struct fgl_multisample_attrib Multisample;
+   struct fgl_accum_attrib Accum;
+   struct fgl_pixel_attrib Pixel;
+   struct fgl_eval_attrib Eval;
+   struct fgl_texture_attrib Texture;
    struct fgl_depth_attrib Depth;
    bool Enable[FGL_ENABLE_ATTRIB_CAPS];    /* GL_ENABLE_BIT, attrib.c's cap list */
+   bool EvalEnable[FGL_EVAL_ATTRIB_CAPS];  /* GL_EVAL_BIT: map enables, auto normal */
+   bool TextureEnable[FGL_TEXTURE_ATTRIB_CAPS]; /* GL_TEXTURE_BIT: unit 0's enables */
    struct fgl_fog_attrib Fog;
    struct fgl_hint_attrib Hint;
    struct fgl_light_attrib Light;
@@ -454,13 +578,25 @@ struct fgl_context {
                                      * bit 31 = leftmost column */
    struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
    struct fgl_array_attrib Array;       /* GL_CLIENT_VERTEX_ARRAY_BIT */
+   /* state of features still to come, with its initial values, so that
+    * glGet answers as the oracle does (main/get.c) */
+   struct fgl_accum_attrib Accum;
+   struct fgl_pixel_attrib Pixel;
+   struct fgl_pixelmaps PixelMaps;
+   struct fgl_eval_attrib Eval;
+   struct fgl_texture_attrib Texture;
+   struct fgl_multisample_attrib Multisample;
    struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
    unsigned ClientAttribStackDepth;
    struct fgl_attrib_node AttribStack[FGL_MAX_ATTRIB_STACK_DEPTH];
    unsigned AttribStackDepth;
-   /* Mesa's ctx->PopAttribState: groups changed since the last push.  Only
-    * GL_LIGHTING_BIT and GL_CURRENT_BIT are tracked (attrib.c). */
+   /* Mesa's ctx->PopAttribState: groups changed since the last push.
+    * GL_LIGHTING_BIT and GL_CURRENT_BIT are marked by their setters; the
+    * other groups are compared with PopAttribBaseline (attrib.c). */
    GLbitfield PopAttribState;
+   /* the other groups as they were at the last push or pop, to tell which
+    * changed since (main/attrib.c changed_groups) */
+   struct fgl_attrib_node PopAttribBaseline;
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;

@@ -144,7 +144,9 @@ static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
     * (lp_setup.c:try_update_scene_state) */
    rs->logic_op = c->LogicOpEnabled;
    rs->logic_op_mode = c->LogicOp - GL_CLEAR;
-   rs->color_mask = c->ColorMask & 0xfu;
+   /* glDrawBuffer(GL_NONE): no colour buffer is bound (Mesa's
+    * _NumColorDrawBuffers 0), the fragments still reach depth and stencil */
+   rs->color_mask = c->DrawBuffer == GL_NONE ? 0u : c->ColorMask & 0xfu;
    rs->blend = !c->LogicOpEnabled && c->BlendEnabled && rs->color_mask != 0;
    rs->blend_eq = blend_eq(c->BlendEquation);
    const bool minmax = rs->blend_eq == R_BLEND_MIN || rs->blend_eq == R_BLEND_MAX;

@@ -1733,6 +1733,103 @@ static void select_feedback(fc_h *h)
     fc_error(h, "final");
 }
 
+/* an attribute outside glBegin/glEnd after more than 8 stored vertices
+ * empties the immediate-mode vertex format, so the next glBegin starts a
+ * new batch: an empty glBegin/glEnd then hides nothing after it (with 8
+ * vertices or fewer it does); the same calls through a
+ * GL_COMPILE_AND_EXECUTE list */
+static void empty_after_points(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    for (int pass = 0; pass < 3; pass++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        if (pass == 2)
+            glNewList(1, GL_COMPILE_AND_EXECUTE);
+        glColor3f(1, 1, 0);
+        glBegin(GL_POINTS);
+        for (int k = 0; k < (pass == 1 ? 8 : 9); k++)
+            glVertex3f(3.0f + 6.0f * (float)k, 60, 0);
+        glEnd();
+        glNormal3f(0, 0, 1);
+        glBegin(GL_TRIANGLE_STRIP);
+        glEnd();
+        glBegin(GL_TRIANGLE_STRIP);
+        glVertex3f(4, 4, 0);
+        glVertex3f(40, 6, 0);
+        glVertex3f(6, 40, 0);
+        glVertex3f(42, 44, 0);
+        glEnd();
+        if (pass == 2)
+            glEndList();
+        fc_capture(h);
+    }
+}
+
+/* ---- colour index and buffer selection compiled ---- */
+
+/* glIndex* are vertex attributes of the vertex-list compiler (also between
+ * glBegin/glEnd), glClearIndex, glIndexMask, glDrawBuffer and glReadBuffer
+ * are plain compiled commands (save_ClearIndex, save_IndexMask,
+ * save_DrawBuffer, save_ReadBuffer); a refused glDrawBuffer is raised at
+ * every call, not at compile time */
+static void index_buffers(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    GLuint l = glGenLists(3);
+    glNewList(l, GL_COMPILE);
+    glIndexf(3.5f);
+    glClearIndex(7.0f);
+    glIndexMask(0x0f);
+    glBegin(GL_TRIANGLES);
+    glIndexi(9);
+    glColor3f(1, 0, 0);
+    glVertex2f(2, 2);
+    glIndexs(10);
+    glVertex2f(30, 4);
+    glIndexub(11);
+    glVertex2f(10, 29);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile index list");
+    fc_get_float(h, "index not executed", GL_CURRENT_INDEX, 1);
+    fc_get_integer(h, "clear index not executed", GL_INDEX_CLEAR_VALUE, 1);
+    glCallList(l);
+    fc_error(h, "call index list");
+    fc_get_float(h, "index after list", GL_CURRENT_INDEX, 1);
+    fc_get_integer(h, "clear index after list", GL_INDEX_CLEAR_VALUE, 1);
+    fc_get_integer(h, "index mask after list", GL_INDEX_WRITEMASK, 1);
+    fc_capture(h);
+
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_FRONT_LEFT);
+    glDrawBuffer(GL_AUX0);        /* refused when executed */
+    glEndList();
+    fc_error(h, "compile and execute buffers");
+    fc_get_integer(h, "draw buffer", GL_DRAW_BUFFER, 1);
+    fc_get_integer(h, "read buffer", GL_READ_BUFFER, 1);
+    glDrawBuffer(GL_FRONT);
+    glReadBuffer(GL_FRONT);
+    glCallList(l + 1);
+    fc_error(h, "call buffers list");
+    fc_get_integer(h, "draw buffer after call", GL_DRAW_BUFFER, 1);
+    fc_get_integer(h, "read buffer after call", GL_READ_BUFFER, 1);
+    glTranslatef(30, 30, 0);
+    glCallList(l);                /* nothing drawn in colour under GL_NONE */
+    fc_capture(h);
+
+    glNewList(l + 2, GL_COMPILE);
+    glDrawBuffer(GL_FRONT_AND_BACK);
+    glEndList();
+    glCallList(l + 2);
+    fc_error(h, "call front-and-back list");
+    fc_get_integer(h, "draw buffer front and back", GL_DRAW_BUFFER, 1);
+    glTranslatef(-20, 0, 0);
+    glCallList(l);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/basic", 64, 64, 3, "api dlist", basic),
     FC_CASE_RGBA("dlist/quad_diagonal", 64, 64, 2, "api dlist", quad_diagonal),
@@ -1769,5 +1866,7 @@ const fc_case fc_cases_dlist[] = {
     FC_CASE_RGBA("dlist/immediate_inside_begin", 32, 32, 1, "api dlist errors", immediate_inside_begin),
     FC_CASE_RGBA("dlist/exec_format_current", 64, 64, 1, "api dlist query", exec_format_current),
     FC_CASE_RGBA("dlist/select_feedback", 32, 32, 0, "api dlist select feedback", select_feedback),
+    FC_CASE_RGBA("dlist/empty_after_points", 64, 64, 3, "api dlist vertex vbo", empty_after_points),
+    FC_CASE_RGBA("dlist/index_buffers", 64, 64, 3, "api dlist query", index_buffers),
     { 0 }
 };

@@ -20,6 +20,7 @@ extern const fc_case fc_cases_format[];
 extern const fc_case fc_cases_viewport[];
 extern const fc_case fc_cases_matrix[];
 extern const fc_case fc_cases_query[];
+extern const fc_case fc_cases_query_walk[];
 extern const fc_case fc_cases_vertex[];
 extern const fc_case fc_cases_readpix[];
 extern const fc_case fc_cases_errors[];

@@ -23,7 +23,7 @@ struct fc_h {
 };
 
 /* Fill pattern of fresh colour buffers and of glGet output arrays. */
-#define FC_FILL 0xCD
+#define FC_FILL FC_FILL_BYTE
 #define FC_MAX_QUERY 32
 
 int fc_format_bpp(GLenum format)
@@ -160,6 +160,11 @@ void fc_value(fc_h *h, const char *label, long long value)
 {
     int64_t v = value;
     fc_rec_write(h->out, FC_REC_VALUE, label, &v, sizeof v, NULL, 0, NULL, 0);
+}
+
+void fc_documented_difference(fc_h *h, const char *label, const char *reason)
+{
+    fc_rec_write(h->out, FC_REC_DOCUMENTED, label, reason, strlen(reason), NULL, 0, NULL, 0);
 }
 
 void fc_pixel_store(fc_h *h, GLint pname, GLint value)

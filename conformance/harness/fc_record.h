@@ -22,8 +22,14 @@ enum fc_rec_kind {
     FC_REC_QUERY,     /* payload: u32 type, u32 count, count values */
     FC_REC_BLOB,      /* payload: raw bytes */
     FC_REC_FRAME,     /* payload: struct fc_frame_hdr fields, colour, depth */
-    FC_REC_END        /* payload: int32 status, then a text message */
+    FC_REC_END,       /* payload: int32 status, then a text message */
+    FC_REC_DOCUMENTED /* label: a record label, payload: the reason text
+                       * (fc_documented_difference) */
 };
+
+/* Fill byte of fresh colour buffers and of glGet output arrays (values a
+ * query did not write keep it). */
+#define FC_FILL_BYTE 0xCD
 
 /* FC_REC_QUERY value types (element sizes 4, 4, 8, 1). */
 enum fc_query_type { FC_Q_INT = 1, FC_Q_FLOAT, FC_Q_DOUBLE, FC_Q_BOOL };

@@ -4,8 +4,9 @@
  * exercise OSMesaGetProcAddress as legacy loaders use it: the oracle's are
  * Mesa's own functions (taken by name, so their types are checked at
  * compile time), fixgl's come from fixgl's OSMesaGetProcAddress (which
- * answers from libfixgl/main/api_list.h; a gl* name it does not implement
- * gets a no-op stub, as from Mesa's glapi).  fc_lit_gl_load() fills the
+ * answers from libfixgl/main/api_list.h and gives NULL for a name it does
+ * not implement, where Mesa's glapi hands out a no-op stub; the loader
+ * aborts on NULL).  fc_lit_gl_load() fills the
  * table; the generator calls it at the start of every lit scene. */
 #ifndef FC_LIT_GL_H
 #define FC_LIT_GL_H

@@ -43,6 +43,7 @@ struct ctx {
     size_t total;
     const struct known *known;
     size_t unexpected, stale, expected;
+    int self_compare;           /* the same renderer on both sides */
 };
 
 static int load_known(const char *path, struct known *k)
@@ -248,6 +249,7 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
     int pad;
 
     memset(&res, 0, sizeof res);
+    res.self_compare = c->self_compare;
     for (int s = 0; s < 2; s++) {
         if (item->side[s].state == FC_FAILED) {
             res.crashed = 1;
@@ -269,6 +271,8 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
                res.query_mismatches, res.blob_mismatches, res.value_mismatches + res.structure_mismatches);
     else if (res.crashed)
         printf("  (%s)", res.notes[0]);
+    if (res.ndocumented)
+        printf("  (%d documented difference%s)", res.ndocumented, res.ndocumented > 1 ? "s" : "");
     if (item->replay && strcmp(status, "exact") != 0)
         printf("  replay: fixgl-conform %s", item->replay);
     if (is_known(c->known, item->name)) {
@@ -330,6 +334,7 @@ int main(int argc, char **argv)
     c.total = n;
     c.known = o.known ? &known : NULL;
     c.unexpected = c.stale = c.expected = 0;
+    c.self_compare = strcmp(o.renderer[FC_ORACLE], o.renderer[FC_FIXGL]) == 0;
     if (!c.report)
         return 2;
     memset(&cfg, 0, sizeof cfg);

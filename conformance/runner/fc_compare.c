@@ -19,6 +19,13 @@ void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
     va_end(ap);
 }
 
+void fc_result_free(struct fc_case_result *res)
+{
+    free(res->documented);
+    res->documented = NULL;
+    res->ndocumented = 0;
+}
+
 const char *fc_result_status(const struct fc_case_result *res)
 {
     if (res->crashed)
@@ -82,6 +89,7 @@ static const char *kind_name(uint32_t kind)
     case FC_REC_QUERY: return "query";
     case FC_REC_BLOB: return "blob";
     case FC_REC_FRAME: return "frame";
+    case FC_REC_DOCUMENTED: return "documented difference";
     default: return "record";
     }
 }
@@ -90,23 +98,39 @@ static const char *kind_name(uint32_t kind)
 static int next_rec(const unsigned char *buf, size_t len, size_t *pos, struct fc_rec *r)
 {
     while (fc_rec_next(buf, len, pos, r))
-        if (r->kind >= FC_REC_VALUE && r->kind <= FC_REC_FRAME)
+        if ((r->kind >= FC_REC_VALUE && r->kind <= FC_REC_FRAME) || r->kind == FC_REC_DOCUMENTED)
             return 1;
     return 0;
 }
 
-/* Formats up to 16 query values of a payload into out. */
+/* Formats up to 16 query values of a payload into out; trailing values
+ * the query did not write (all bytes FC_FILL_BYTE) are counted, not shown. */
 static void format_query(const struct fc_rec *r, char *out, size_t size)
 {
     uint32_t head[2] = { 0, 0 };
-    size_t n = 0;
+    size_t n = 0, esize;
+    uint32_t count, unwritten = 0;
     const unsigned char *p = r->payload + sizeof head;
     out[0] = 0;
     if (r->payload_len < sizeof head)
         return;
     memcpy(head, r->payload, sizeof head);
+    esize = head[0] == FC_Q_DOUBLE ? 8 : head[0] == FC_Q_BOOL ? 1 : 4;
+    count = head[1];
+    if (r->payload_len < sizeof head + (uint64_t)count * esize)
+        count = (uint32_t)((r->payload_len - sizeof head) / esize);
+    while (count > 0) {
+        const unsigned char *e = p + (size_t)(count - 1) * esize;
+        size_t k = 0;
+        while (k < esize && e[k] == FC_FILL_BYTE)
+            k++;
+        if (k < esize)
+            break;
+        count--;
+        unwritten++;
+    }
     n += (size_t)snprintf(out, size, "{");
-    for (uint32_t i = 0; i < head[1] && i < 16 && n < size; i++) {
+    for (uint32_t i = 0; i < count && i < 16 && n < size; i++) {
         const char *sep = i ? "," : "";
         if (head[0] == FC_Q_INT) {
             int32_t v; memcpy(&v, p + 4 * i, 4);
@@ -122,11 +146,89 @@ static void format_query(const struct fc_rec *r, char *out, size_t size)
         }
     }
     if (n < size)
-        snprintf(out + n, size - n, "%s}", head[1] > 16 ? ",..." : "");
+        n += (size_t)snprintf(out + n, size - n, "%s}", count > 16 ? ",..." : "");
+    if (unwritten && n < size)
+        snprintf(out + n, size - n, " +%" PRIu32 " unwritten", unwritten);
+}
+
+/* The documented differences a case declared so far (fc_documented_difference). */
+#define FC_MAX_DECLARED 64
+struct declared {
+    struct fc_rec store[FC_MAX_DECLARED];       /* the oracle's declaration records */
+    int hits[FC_MAX_DECLARED];
+    int n;
+};
+
+static int find_declared(const struct declared *d, const struct fc_rec *r)
+{
+    for (int i = 0; i < d->n; i++)
+        if (d->store[i].label_len == r->label_len &&
+            memcmp(d->store[i].label, r->label, r->label_len) == 0)
+            return i;
+    return -1;
+}
+
+static void format_blob(const struct fc_rec *r, char *out, size_t size)
+{
+    size_t n = (size_t)snprintf(out, size, "%" PRIu64 " bytes \"", r->payload_len);
+    for (uint64_t i = 0; i < r->payload_len && n + 2 < size; i++) {
+        unsigned char ch = r->payload[i];
+        out[n++] = ch >= 32 && ch < 127 && ch != '"' ? (char)ch : '.';
+    }
+    if (n + 2 < size) {
+        out[n++] = '"';
+        out[n] = 0;
+    } else {
+        snprintf(out + size - 5, 5, "...\"");
+    }
+}
+
+/* A differing query/value/blob record pair: allowed and listed when its
+ * label was declared a documented difference. */
+static int documented(struct declared *d, const struct fc_rec *ra, const struct fc_rec *rb,
+                      struct fc_case_result *res)
+{
+    int i = find_declared(d, ra);
+    struct fc_documented *doc;
+    if (i < 0)
+        return 0;
+    d->hits[i]++;
+    if (res->ndocumented % 16 == 0) {
+        struct fc_documented *m = realloc(res->documented, (size_t)(res->ndocumented + 16) * sizeof *m);
+        if (!m)
+            return 0;
+        res->documented = m;
+    }
+    doc = &res->documented[res->ndocumented++];
+    memset(doc, 0, sizeof *doc);
+    snprintf(doc->label, sizeof doc->label, "%.*s", (int)ra->label_len, ra->label);
+    snprintf(doc->reason, sizeof doc->reason, "%.*s", (int)d->store[i].payload_len,
+             (const char *)d->store[i].payload);
+    snprintf(doc->kind, sizeof doc->kind, "%s", kind_name(ra->kind));
+    if (ra->kind == FC_REC_QUERY) {
+        static const char *const qtype[] = { "query", "query int", "query float",
+                                             "query double", "query boolean" };
+        uint32_t t = 0;
+        if (ra->payload_len >= 4)
+            memcpy(&t, ra->payload, 4);
+        snprintf(doc->kind, sizeof doc->kind, "%s", qtype[t <= FC_Q_BOOL ? t : 0]);
+        format_query(ra, doc->oracle, sizeof doc->oracle);
+        format_query(rb, doc->fixgl, sizeof doc->fixgl);
+    } else if (ra->kind == FC_REC_VALUE) {
+        int64_t va = 0, vb = 0;
+        memcpy(&va, ra->payload, ra->payload_len >= 8 ? 8 : 0);
+        memcpy(&vb, rb->payload, rb->payload_len >= 8 ? 8 : 0);
+        snprintf(doc->oracle, sizeof doc->oracle, "%" PRId64, va);
+        snprintf(doc->fixgl, sizeof doc->fixgl, "%" PRId64, vb);
+    } else {
+        format_blob(ra, doc->oracle, sizeof doc->oracle);
+        format_blob(rb, doc->fixgl, sizeof doc->fixgl);
+    }
+    return 1;
 }
 
 static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *frame,
-                         struct fc_case_result *res, fc_frame_cb cb, void *ud)
+                         struct fc_case_result *res, fc_frame_cb cb, void *ud, struct declared *d)
 {
     int lab = (int)(ra->label_len < 60 ? ra->label_len : 60);
     int same = ra->payload_len == rb->payload_len &&
@@ -179,10 +281,27 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
         }
         break;
     }
+    case FC_REC_DOCUMENTED:
+        /* same label (checked above) and same reason */
+        if (!same) {
+            res->structure_mismatches++;
+            fc_result_note(res, "documented difference \"%.*s\": the reasons differ", lab, ra->label);
+        } else if (find_declared(d, ra) < 0) {
+            if (d->n == FC_MAX_DECLARED) {
+                res->structure_mismatches++;
+                fc_result_note(res, "more than %d documented differences declared", FC_MAX_DECLARED);
+            } else {
+                d->store[d->n] = *ra;
+                d->hits[d->n++] = 0;
+            }
+        }
+        break;
     case FC_REC_VALUE: {
         int64_t va = 0, vb = 0;
         memcpy(&va, ra->payload, ra->payload_len >= 8 ? 8 : 0);
         memcpy(&vb, rb->payload, rb->payload_len >= 8 ? 8 : 0);
+        if (!same && documented(d, ra, rb, res))
+            break;
         if (!same) {
             res->value_mismatches++;
             fc_result_note(res, "value \"%.*s\": oracle %" PRId64 ", fixgl %" PRId64, lab, ra->label, va, vb);
@@ -190,6 +309,8 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
         break;
     }
     case FC_REC_QUERY:
+        if (!same && documented(d, ra, rb, res))
+            break;
         if (!same) {
             char qa[96], qb[96];
             format_query(ra, qa, sizeof qa);
@@ -199,6 +320,8 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
         }
         break;
     case FC_REC_BLOB:
+        if (!same && documented(d, ra, rb, res))
+            break;
         if (!same) {
             uint64_t n = ra->payload_len < rb->payload_len ? ra->payload_len : rb->payload_len, nd = 0, first = n;
             for (uint64_t i = 0; i < n; i++) {
@@ -229,13 +352,20 @@ void fc_compare_case(const unsigned char *a, size_t alen, const unsigned char *b
     size_t pa = 0, pb = 0;
     struct fc_rec ra, rb;
     int frame = 0;
+    struct declared *d = calloc(1, sizeof *d);
+
+    if (!d) {
+        res->crashed = 1;
+        fc_result_note(res, "out of memory");
+        return;
+    }
 
     for (;;) {
         int ha = next_rec(a, alen, &pa, &ra), hb = next_rec(b, blen, &pb, &rb);
         if (!ha && !hb)
             break;
         if (ha && hb) {
-            compare_pair(&ra, &rb, &frame, res, cb, ud);
+            compare_pair(&ra, &rb, &frame, res, cb, ud, d);
             continue;
         }
         res->structure_mismatches++;
@@ -246,4 +376,17 @@ void fc_compare_case(const unsigned char *a, size_t alen, const unsigned char *b
             fc_result_note(res, "only fixgl recorded %s \"%.*s\"", kind_name(rb.kind),
                            (int)(rb.label_len < 60 ? rb.label_len : 60), rb.label);
     }
+    /* a declaration whose records all compared equal is stale (only
+     * meaningful when both sides recorded the whole case) */
+    if (!res->crashed && !res->structure_mismatches && !res->self_compare) {
+        for (int i = 0; i < d->n; i++) {
+            if (d->hits[i] == 0) {
+                res->structure_mismatches++;
+                fc_result_note(res, "documented difference \"%.*s\" compared equal: remove the declaration",
+                               (int)(d->store[i].label_len < 60 ? d->store[i].label_len : 60),
+                               d->store[i].label);
+            }
+        }
+    }
+    free(d);
 }

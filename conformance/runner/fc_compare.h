@@ -27,6 +27,18 @@ struct fc_frame_stats {
 #define FC_MAX_NOTES 24
 #define FC_NOTE_LEN 320
 
+/* A record that differed under a documented difference
+ * (fc_documented_difference in fc_case.h). */
+#define FC_DOC_LABEL_LEN 64
+#define FC_DOC_REASON_LEN 240
+#define FC_DOC_VALUE_LEN 96
+struct fc_documented {
+    char label[FC_DOC_LABEL_LEN];
+    char reason[FC_DOC_REASON_LEN];
+    char kind[24];                      /* "query", "value" or "blob" */
+    char oracle[FC_DOC_VALUE_LEN], fixgl[FC_DOC_VALUE_LEN];
+};
+
 struct fc_case_result {
     int frames;
     uint64_t pixels, mismatched_pixels;
@@ -37,6 +49,14 @@ struct fc_case_result {
     int crashed;                /* a side did not finish the case */
     int nnotes, dropped_notes;
     char notes[FC_MAX_NOTES][FC_NOTE_LEN];
+    /* differing records allowed by a documented difference (malloc'd,
+     * owned by whoever holds the result: fc_report_end_case takes it) */
+    int ndocumented;
+    struct fc_documented *documented;
+    /* set by the caller: both sides ran the same renderer (the harness
+     * self-test), so documented differences compare equal and are not
+     * reported as stale */
+    int self_compare;
 };
 
 /* Called for every frame pair, before the case result is final. */
@@ -58,6 +78,9 @@ void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+
+/* Frees res->documented. */
+void fc_result_free(struct fc_case_result *res);
 
 /* "exact", "differs" or "error". */
 const char *fc_result_status(const struct fc_case_result *res);

@@ -256,10 +256,13 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     struct tag_count t[64], total;
     size_t nt = collect_tags(r, t, 64);
     uint64_t px = 0, mism = 0, dmism = 0;
+    int ndoc = 0, ndoc_cases = 0;
 
     memset(&total, 0, sizeof total);
     for (size_t i = 0; i < r->n; i++) {
         count_into(&total, r->entries[i]);
+        ndoc += r->entries[i]->res.ndocumented;
+        ndoc_cases += r->entries[i]->res.ndocumented > 0;
         px += r->entries[i]->res.pixels;
         mism += r->entries[i]->res.mismatched_pixels;
         dmism += r->entries[i]->res.depth_mismatches;
@@ -270,6 +273,9 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     fprintf(out, "%-16s %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.differs, total.error);
     fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
             mism, px, dmism);
+    if (ndoc)
+        fprintf(out, "documented differences: %d records in %d cases (listed in the report)\n",
+                ndoc, ndoc_cases);
     fprintf(out, "oracle: %s | %s\n", r->renderer[0] ? r->renderer[0] : "?", r->version[0] ? r->version[0] : "?");
     fprintf(out, "fixgl:  %s | %s\n", r->renderer[1] ? r->renderer[1] : "?", r->version[1] ? r->version[1] : "?");
 }
@@ -353,6 +359,20 @@ static int write_json(const struct fc_report *r)
         if (e->replay) {
             fputs(", \"replay\": ", f);
             json_str(f, e->replay);
+        }
+        if (c->ndocumented) {
+            fputs(", \"documented_differences\": [", f);
+            for (int k = 0; k < c->ndocumented; k++) {
+                const struct fc_documented *d = &c->documented[k];
+                fputs(k ? ", {\"label\": " : "{\"label\": ", f);
+                json_str(f, d->label);
+                fputs(", \"kind\": ", f); json_str(f, d->kind);
+                fputs(", \"reason\": ", f); json_str(f, d->reason);
+                fputs(", \"oracle\": ", f); json_str(f, d->oracle);
+                fputs(", \"fixgl\": ", f); json_str(f, d->fixgl);
+                fputc('}', f);
+            }
+            fputc(']', f);
         }
         fputc('}', f);
     }
@@ -456,6 +476,30 @@ static int write_html(const struct fc_report *r)
     for (size_t i = 0; i < r->n; i++)
         if (strcmp(r->entries[i]->status, "exact") != 0)
             html_case(f, r->entries[i]);
+    int ndoc = 0;
+    for (size_t i = 0; i < r->n; i++)
+        ndoc += r->entries[i]->res.ndocumented;
+    if (ndoc) {
+        fprintf(f, "<h2>Documented differences (%d)</h2>\n<p>Records that differ from the oracle on "
+                "purpose, each declared by its case with the reason (fc_documented_difference); "
+                "they do not make a case differ.</p>\n<table><tr><th>case</th><th>label</th>"
+                "<th>record</th><th>reason</th><th>oracle</th><th>fixgl</th></tr>\n", ndoc);
+        for (size_t i = 0; i < r->n; i++) {
+            const struct fc_report_entry *e = r->entries[i];
+            for (int k = 0; k < e->res.ndocumented; k++) {
+                const struct fc_documented *d = &e->res.documented[k];
+                const char *cells[6] = { e->name, d->label, d->kind, d->reason, d->oracle, d->fixgl };
+                fputs("<tr>", f);
+                for (int j = 0; j < 6; j++) {
+                    fputs("<td style=\"text-align:left\">", f);
+                    html_str(f, cells[j]);
+                    fputs("</td>", f);
+                }
+                fputs("</tr>\n", f);
+            }
+        }
+        fputs("</table>\n", f);
+    }
     fputs("<h2>All cases</h2>\n<table><tr><th>case</th><th>status</th><th>mismatched pixels</th></tr>\n", f);
     for (size_t i = 0; i < r->n; i++) {
         const struct fc_report_entry *e = r->entries[i];
@@ -485,6 +529,7 @@ int fc_report_finish(struct fc_report *r)
         struct fc_report_entry *e = r->entries[i];
         bad += strcmp(e->status, "exact") != 0;
         free(e->name); free(e->tags); free(e->replay); free(e->file_stem);
+        fc_result_free(&e->res);
         free(e);
     }
     for (int i = 0; i < 2; i++) {

@@ -30,7 +30,8 @@ struct fc_report_entry *fc_report_begin_case(struct fc_report *r, const char *na
 void fc_report_frame(void *entry, int index, const struct fc_frame_view *oracle,
                      const struct fc_frame_view *fixgl, const struct fc_frame_stats *st);
 
-/* Completes the case with its comparison result (copied); returns its status. */
+/* Completes the case with its comparison result (copied; the entry takes
+ * over res->documented); returns its status. */
 const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_result *res);
 
 /* Prints the per-tag table and totals. */

@@ -200,6 +200,113 @@ int main(int argc, char **argv)
     fc_compare_case(NULL, 0, NULL, 0, &res, fc_report_frame, e);
     CHECK(strcmp(fc_report_end_case(e, &res), "error") == 0);
 
+    /* 6. documented differences: a declared label may differ (listed with
+     * its reason and values), an undeclared one may not; errors are never
+     * allowed; a declaration whose records all compare equal is stale;
+     * declarations must match on both sides */
+    {
+        static const char why[] = "implementation string";
+        uint32_t qh[2] = { FC_Q_INT, 1 };
+        int32_t qa = 1, qb = 2;
+        int64_t va = 5, vb = 6;
+        uint32_t ea = 0x500, eb = 0;
+        open_stream(&a);
+        open_stream(&b);
+        for (int side = 0; side < 2; side++) {
+            FILE *f = side ? b.f : a.f;
+            fc_rec_write(f, FC_REC_CASE, "unit/doc", NULL, 0, NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "GL_VENDOR", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "limit", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "stale", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_BLOB, "GL_VENDOR", side ? "fixgl" : "Mesa", side ? 5 : 4,
+                         NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_QUERY, "limit", qh, sizeof qh, side ? &qb : &qa, 4, NULL, 0);
+            fc_rec_write(f, FC_REC_QUERY, "limit", qh, sizeof qh, &qa, 4, NULL, 0);
+            fc_rec_write(f, FC_REC_VALUE, "stale", &va, 8, NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_VALUE, "other", side ? &vb : &va, 8, NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_ERROR, "limit", side ? &eb : &ea, 4, NULL, 0, NULL, 0);
+            end_case(f);
+        }
+        memset(&res, 0, sizeof res);
+        e = fc_report_begin_case(rep, "unit/doc", "unit", NULL);
+        fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, fc_report_frame, e);
+        CHECK(res.ndocumented == 2);
+        CHECK(res.ndocumented == 2 && strcmp(res.documented[0].label, "GL_VENDOR") == 0 &&
+              strcmp(res.documented[0].reason, why) == 0 &&
+              strstr(res.documented[0].oracle, "Mesa") && strstr(res.documented[0].fixgl, "fixgl"));
+        CHECK(res.ndocumented == 2 && strcmp(res.documented[1].oracle, "{1}") == 0 &&
+              strcmp(res.documented[1].fixgl, "{2}") == 0);
+        CHECK(res.query_mismatches == 0 && res.blob_mismatches == 0);
+        CHECK(res.value_mismatches == 1);       /* "other" */
+        CHECK(res.error_mismatches == 1);       /* errors are never documented */
+        CHECK(res.structure_mismatches == 1);   /* "stale" compared equal */
+        CHECK(strcmp(fc_report_end_case(e, &res), "differs") == 0);
+        free(a.buf);
+        free(b.buf);
+
+        /* only documented differences: exact; a stale declaration differs */
+        open_stream(&a);
+        open_stream(&b);
+        for (int side = 0; side < 2; side++) {
+            FILE *f = side ? b.f : a.f;
+            fc_rec_write(f, FC_REC_CASE, "unit/doc2", NULL, 0, NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "limit", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "stale", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_QUERY, "limit", qh, sizeof qh, side ? &qb : &qa, 4, NULL, 0);
+            fc_rec_write(f, FC_REC_VALUE, "stale", &va, 8, NULL, 0, NULL, 0);
+            end_case(f);
+        }
+        memset(&res, 0, sizeof res);
+        e = fc_report_begin_case(rep, "unit/doc_stale", "unit", NULL);
+        fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, fc_report_frame, e);
+        CHECK(res.ndocumented == 1 && res.structure_mismatches == 1);
+        CHECK(res.nnotes == 1 && strstr(res.notes[0], "\"stale\" compared equal") != NULL);
+        CHECK(strcmp(fc_report_end_case(e, &res), "differs") == 0);
+        /* the same renderer on both sides: no stale check */
+        memset(&res, 0, sizeof res);
+        res.self_compare = 1;
+        e = fc_report_begin_case(rep, "unit/doc_self", "unit", NULL);
+        fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)a.buf, a.len, &res, fc_report_frame, e);
+        CHECK(res.ndocumented == 0 && res.structure_mismatches == 0);
+        CHECK(strcmp(fc_report_end_case(e, &res), "exact") == 0);
+        free(a.buf);
+        free(b.buf);
+
+        /* the stale declaration removed: exact, the difference listed */
+        open_stream(&a);
+        open_stream(&b);
+        for (int side = 0; side < 2; side++) {
+            FILE *f = side ? b.f : a.f;
+            fc_rec_write(f, FC_REC_CASE, "unit/doc3", NULL, 0, NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_DOCUMENTED, "limit", why, strlen(why), NULL, 0, NULL, 0);
+            fc_rec_write(f, FC_REC_QUERY, "limit", qh, sizeof qh, side ? &qb : &qa, 4, NULL, 0);
+            end_case(f);
+        }
+        memset(&res, 0, sizeof res);
+        e = fc_report_begin_case(rep, "unit/doc_ok", "unit", NULL);
+        fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, fc_report_frame, e);
+        CHECK(res.ndocumented == 1 && res.structure_mismatches == 0 && res.nnotes == 0);
+        CHECK(strcmp(fc_report_end_case(e, &res), "exact") == 0);
+        free(a.buf);
+        free(b.buf);
+
+        /* different reasons on the two sides: a structure mismatch */
+        open_stream(&a);
+        open_stream(&b);
+        fc_rec_write(a.f, FC_REC_CASE, "unit/doc4", NULL, 0, NULL, 0, NULL, 0);
+        fc_rec_write(b.f, FC_REC_CASE, "unit/doc4", NULL, 0, NULL, 0, NULL, 0);
+        fc_rec_write(a.f, FC_REC_DOCUMENTED, "limit", why, strlen(why), NULL, 0, NULL, 0);
+        fc_rec_write(b.f, FC_REC_DOCUMENTED, "limit", "other", 5, NULL, 0, NULL, 0);
+        end_case(a.f);
+        end_case(b.f);
+        memset(&res, 0, sizeof res);
+        fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, NULL, NULL);
+        CHECK(res.structure_mismatches == 1);
+        fc_result_free(&res);
+        free(a.buf);
+        free(b.buf);
+    }
+
     /* 5. BGRA display conversion */
     {
         struct fc_frame_view v;
@@ -216,7 +323,7 @@ int main(int argc, char **argv)
     }
 
     fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", "fixgl-v");
-    CHECK(fc_report_finish(rep) == 3);
+    CHECK(fc_report_finish(rep) == 5);
     json = slurp(dir, "summary.json");
     html = slurp(dir, "index.html");
     CHECK(strstr(json, "\"oracle\": \"oracle-r oracle-v\"") != NULL);
@@ -228,6 +335,10 @@ int main(int argc, char **argv)
     CHECK(strstr(html, "img/unit_case-f0-diff.png") != NULL);
     CHECK(strstr(html, "oracle 0x0500, fixgl 0x0000") != NULL);
     CHECK(strstr(html, "img/unit_same") == NULL);
+    CHECK(strstr(json, "\"name\": \"unit/doc_ok\"") != NULL &&
+          strstr(json, "\"documented_differences\": [{\"label\": \"limit\", \"kind\": \"query int\", "
+                       "\"reason\": \"implementation string\", \"oracle\": \"{1}\", \"fixgl\": \"{2}\"}]") != NULL);
+    CHECK(strstr(html, "Documented differences (4)") != NULL);
     free(json);
     free(html);
     if (failures)

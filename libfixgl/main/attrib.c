@@ -5,10 +5,12 @@
  * _mesa_PopAttrib].  Push copies each group the mask names into the node;
  * pop puts it back in Mesa's order.  Mesa restores most groups through
  * its setters, each of which returns early when the value is unchanged,
- * and only the groups changed since the push (ctx->PopAttribState): here a
- * group whose stored copy differs from the current state is copied back
- * and its dirty bit set, which is the same state, except for the lighting
- * group, whose materials can change without marking it (restore_light).
+ * and only the groups changed since the push (ctx->PopAttribState, see
+ * changed_groups, which also loses the changes made under an inner push as
+ * Mesa does): here a group whose stored copy differs from the current
+ * state is copied back and its dirty bit set, which is the same state,
+ * except for the lighting group, whose materials can change without
+ * marking it (restore_light).
  * Stored values come back
  * as they were stored: light positions, spot directions and clip planes
  * stay in the eye space of their glLight/glClipPlane call (Mesa copies
@@ -49,6 +51,9 @@ static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
    GL_TEXTURE_1D, GL_TEXTURE_2D,
    GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+   GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+   GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
+   GL_SAMPLE_COVERAGE,
 };
 
 static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
@@ -58,6 +63,61 @@ static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
       fgl_is_cap(ctx, enable_caps[i], &v);
       node->Enable[i] = v != 0.0;
    }
+}
+
+/* The enables GL_EVAL_BIT (memcpy of Mesa's gl_eval_attrib, which holds
+ * them) and GL_TEXTURE_BIT (pop_texture_group: the unit's enables and
+ * texgen enables) restore besides GL_ENABLE_BIT; fixgl keeps them with the
+ * pending capabilities (enable.c). */
+static const GLenum eval_caps[FGL_EVAL_ATTRIB_CAPS] = {
+   GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
+   GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
+   GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4,
+   GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
+   GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+   GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
+};
+static const GLenum texture_caps[FGL_TEXTURE_ATTRIB_CAPS] = {
+   GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+   GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+};
+
+static void save_caps(struct fgl_context *ctx, const GLenum *caps, int n, bool *out)
+{
+   for (int i = 0; i < n; i++) {
+      double v = 0.0;
+      fgl_is_cap(ctx, caps[i], &v);
+      out[i] = v != 0.0;
+   }
+}
+
+static bool caps_differ(struct fgl_context *ctx, const GLenum *caps, int n, const bool *saved)
+{
+   bool now[FGL_ENABLE_ATTRIB_CAPS];
+   save_caps(ctx, caps, n, now);
+   return memcmp(now, saved, (size_t)n * sizeof(bool)) != 0;
+}
+
+static void save_eval(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   save_caps(ctx, eval_caps, FGL_EVAL_ATTRIB_CAPS, node->EvalEnable);
+}
+
+static void restore_eval(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_EVAL_ATTRIB_CAPS; i++)
+      fgl_set_enable(ctx, eval_caps[i], node->EvalEnable[i]);
+}
+
+static void save_texture(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   save_caps(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, node->TextureEnable);
+}
+
+static void restore_texture(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int i = 0; i < FGL_TEXTURE_ATTRIB_CAPS; i++)
+      fgl_set_enable(ctx, texture_caps[i], node->TextureEnable[i]);
 }
 
 /* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that
@@ -100,17 +160,33 @@ static void restore_current(struct fgl_context *ctx, const struct fgl_attrib_nod
 static void restore_light(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
    const struct fgl_light_attrib *l = &node->Light;
-   if (!(ctx->PopAttribState & GL_LIGHTING_BIT) &&
-       memcmp(&ctx->Light, l, sizeof(*l)) == 0)
+   /* every setter of the group marks it (FGL_FLUSH_VERTICES with
+    * FGL_NEW_LIGHT, t_vbo.c for the materials); a change made under an
+    * inner push no longer counts after its pop */
+   if (!(ctx->PopAttribState & GL_LIGHTING_BIT))
       return;
    const bool cm_call = (ctx->Light.ColorMaterialFace != l->ColorMaterialFace ||
                          ctx->Light.ColorMaterialMode != l->ColorMaterialMode) &&
                         ctx->Light.ColorMaterialEnabled;
    if (cm_call || ctx->Light.ColorMaterialEnabled != l->ColorMaterialEnabled)
       fgl_flush_current(ctx);
-   ctx->Light = *l;
+   memcpy(&ctx->Light, l, sizeof(ctx->Light));   /* padding too: changed_groups */
    memcpy(ctx->Current.Attrib[FGL_ATTR_MAT_FIRST], node->Material, sizeof(node->Material));
    ctx->NewState |= FGL_NEW_LIGHT;
+}
+
+/* GL_COLOR_BUFFER_BIT: a copy, except the index clear value, which
+ * _mesa_PopAttrib restores through glClearIndex((GLfloat)saved) when it
+ * differs: a large GLuint comes back through a float (0xfffffffe -> 0) */
+static void restore_color(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   if (memcmp(&ctx->Color, &node->Color, sizeof(node->Color)) == 0)
+      return;
+   const bool clear_index = ctx->Color.ClearIndex != node->Color.ClearIndex;
+   memcpy(&ctx->Color, &node->Color, sizeof(ctx->Color));   /* padding too: changed_groups */
+   if (clear_index)
+      ctx->Color.ClearIndex = fgl_clear_index_cast((float)node->Color.ClearIndex);
+   ctx->NewState |= FGL_NEW_COLOR;
 }
 
 /* GL_FOG_BIT: the setters, _mesa_Fogfv(GL_FOG_COLOR) with the clamped
@@ -119,7 +195,13 @@ static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *n
 {
    if (memcmp(&ctx->Fog, &node->Fog, sizeof(node->Fog)) == 0)
       return;
-   ctx->Fog = node->Fog;
+   /* _mesa_PopAttrib sets the enable, colour, density, start, end, index
+    * and mode only: GL_FOG_COORDINATE_SOURCE and GL_FOG_DISTANCE_MODE_NV
+    * keep their current values (api/query_walk_popped) */
+   const GLenum source = ctx->Fog.CoordinateSource, distance = ctx->Fog.DistanceMode;
+   memcpy(&ctx->Fog, &node->Fog, sizeof(ctx->Fog));   /* padding too: changed_groups */
+   ctx->Fog.CoordinateSource = source;
+   ctx->Fog.DistanceMode = distance;
    memcpy(ctx->Fog.ColorUnclamped, node->Fog.Color, sizeof(node->Fog.Color));
    ctx->NewState |= FGL_NEW_FOG;
 }
@@ -144,7 +226,7 @@ static void restore_transform(struct fgl_context *ctx, const struct fgl_attrib_n
 {
    if (memcmp(&ctx->Transform, &node->Transform, sizeof(node->Transform)) == 0)
       return;
-   ctx->Transform = node->Transform;
+   memcpy(&ctx->Transform, &node->Transform, sizeof(ctx->Transform));   /* padding too */
    ctx->CurrentStack = fgl_matrix_stack_for_mode(ctx, ctx->Transform.MatrixMode);
    ctx->NewState |= FGL_NEW_CLIP;
 }
@@ -175,33 +257,135 @@ struct attrib_group {
 #define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
- * the lighting group's materials).  GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
- * GL_PIXEL_MODE_BIT, GL_TEXTURE_BIT and GL_MULTISAMPLE_BIT are
- * accepted and save nothing yet: their state gets a line here when it
- * lands (accum before colour, eval after enable, list after line, pixel
- * mode after list, texture after transform, as Mesa pops them).  The
- * raster position joins GL_CURRENT_BIT with glRasterPos; texture
- * coordinates, as vbo attributes before the materials, are in the
- * Current copy already. */
+ * the lighting group's materials).  The accumulation, evaluator,
+ * pixel-mode, texture and multisample groups save the state context.h
+ * holds for them so far (their setters come with their features); the
+ * raster position and texture coordinates are in Current.TexCoord. */
 static const struct attrib_group groups[] = {
-   GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, NULL),
+   /* state of features still to come (context.h), copied back as Mesa
+    * does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
+    * then _mesa_ReadBuffer, the texture bindings and active unit) */
+   GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
+   GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
+   /* the current values outside the vbo (raster position...) */
+   GROUP(GL_CURRENT_BIT, Current.TexCoord, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
+   GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),
+   HOOKS(GL_EVAL_BIT, save_eval, restore_eval),
    GROUP(GL_FOG_BIT, Fog, Fog, FGL_NEW_FOG, NULL, restore_fog),
    GROUP(GL_HINT_BIT, Hint, Hint, 0, NULL, restore_hint),
    GROUP(GL_LIGHTING_BIT, Light, Light, FGL_NEW_LIGHT, save_flush_current, restore_light),
    GROUP(GL_LIGHTING_BIT, Current.Attrib[FGL_ATTR_MAT_FIRST], Material, 0, NULL, restore_nothing),
    GROUP(GL_LINE_BIT, Line, Line, FGL_NEW_LINE, NULL, NULL),
    GROUP(GL_LIST_BIT, List, List, 0, NULL, NULL),
+   GROUP(GL_PIXEL_MODE_BIT, Pixel, Pixel, 0, NULL, NULL),
    GROUP(GL_POINT_BIT, Point, Point, FGL_NEW_POINT, NULL, NULL),
    GROUP(GL_POLYGON_BIT, Polygon, Polygon, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_POLYGON_STIPPLE_BIT, PolygonStipple, PolygonStipple, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_SCISSOR_BIT, Scissor, Scissor, FGL_NEW_SCISSOR, NULL, NULL),
    GROUP(GL_STENCIL_BUFFER_BIT, Stencil, Stencil, FGL_NEW_STENCIL, NULL, NULL),
    GROUP(GL_TRANSFORM_BIT, Transform, Transform, FGL_NEW_CLIP, NULL, restore_transform),
+   GROUP(GL_TEXTURE_BIT, Texture, Texture, 0, NULL, NULL),
+   HOOKS(GL_TEXTURE_BIT, save_texture, restore_texture),
    GROUP(GL_VIEWPORT_BIT, Viewport, Viewport, FGL_NEW_VIEWPORT, NULL, NULL),
+   /* stored and queried only (no multisample buffer) */
+   GROUP(GL_MULTISAMPLE_BIT, Multisample, Multisample, 0, NULL, NULL),
 };
+
+#define POP_FLUSH_ON_CHANGE (GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_HINT_BIT |   \
+                             GL_LIGHTING_BIT | GL_POINT_BIT | GL_LINE_BIT | GL_POLYGON_BIT | \
+                             GL_SCISSOR_BIT | GL_STENCIL_BUFFER_BIT | GL_FOG_BIT |      \
+                             GL_MULTISAMPLE_BIT)
+#define POP_FLUSH_ALWAYS GL_PIXEL_MODE_BIT
+
+/* Whether Mesa restores group g through a setter that flushes: some value
+ * other than those its pop sets without FLUSH_VERTICES (glClearColor,
+ * glClearIndex, glClearDepth, glClearStencil, and the draw buffer, which
+ * _mesa_drawbuffers sets directly) differs. */
+static bool restore_flushes(const struct fgl_context *ctx, const struct fgl_attrib_node *node,
+                            const struct attrib_group *g)
+{
+   if (g->bit == GL_COLOR_BUFFER_BIT) {
+      /* (memcpy, not assignment: the padding bytes take part in memcmp) */
+      struct fgl_colorbuffer_attrib a, b;
+      memcpy(&a, &ctx->Color, sizeof(a));
+      memcpy(&b, &node->Color, sizeof(b));
+      memcpy(a.ClearColor, b.ClearColor, sizeof(a.ClearColor));
+      a.ClearIndex = b.ClearIndex;
+      a.DrawBuffer = b.DrawBuffer;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   if (g->bit == GL_DEPTH_BUFFER_BIT) {
+      struct fgl_depth_attrib a, b;
+      memcpy(&a, &ctx->Depth, sizeof(a));
+      memcpy(&b, &node->Depth, sizeof(b));
+      a.Clear = b.Clear;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   if (g->bit == GL_STENCIL_BUFFER_BIT) {
+      struct fgl_stencil_attrib a, b;
+      memcpy(&a, &ctx->Stencil, sizeof(a));
+      memcpy(&b, &node->Stencil, sizeof(b));
+      a.Clear = b.Clear;
+      return memcmp(&a, &b, sizeof(a)) != 0;
+   }
+   return memcmp((const char *)ctx + g->ctx_offset, (const char *)node + g->node_offset,
+                 g->size) != 0;
+}
+
+/* Copies the groups of mask into node (the save hooks first). */
+static void save_groups(struct fgl_context *ctx, struct fgl_attrib_node *node, GLbitfield mask)
+{
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(mask & g->bit))
+         continue;
+      if (g->save)
+         g->save(ctx, node);
+      if (g->size)
+         memcpy((char *)node + g->node_offset, (const char *)ctx + g->ctx_offset, g->size);
+   }
+}
+
+/* Mesa's ctx->PopAttribState: the groups changed since the last push,
+ * reset to the outer level's value by each pop, so that an outer pop skips
+ * the groups changed only while an inner push was active
+ * [S: main/attrib.c:_mesa_PushAttrib, _mesa_PopAttrib; every setter's
+ * FLUSH_VERTICES(ctx, new_state, pop_attrib_mask)].  GL_CURRENT_BIT and
+ * GL_LIGHTING_BIT are marked where Mesa marks them (t_vbo.c,
+ * FGL_FLUSH_VERTICES) and restored by their hooks; the other groups count
+ * as changed when they differ from ctx->PopAttribBaseline, their copy at
+ * the last push or pop.  (A value changed and set back is not counted:
+ * restoring it would change nothing.) */
+#define DIFF_TRACKED (~(GLbitfield)(GL_CURRENT_BIT | GL_LIGHTING_BIT))
+
+static GLbitfield changed_groups(struct fgl_context *ctx)
+{
+   const struct fgl_attrib_node *base = &ctx->PopAttribBaseline;
+   GLbitfield changed = 0;
+   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+      const struct attrib_group *g = &groups[i];
+      if (!(g->bit & DIFF_TRACKED) || (changed & g->bit))
+         continue;
+      if (g->size) {
+         if (memcmp((const char *)ctx + g->ctx_offset, (const char *)base + g->node_offset,
+                    g->size) != 0)
+            changed |= g->bit;
+      } else if (g->bit == GL_ENABLE_BIT) {
+         if (caps_differ(ctx, enable_caps, FGL_ENABLE_ATTRIB_CAPS, base->Enable))
+            changed |= g->bit;
+      } else if (g->bit == GL_EVAL_BIT) {
+         if (caps_differ(ctx, eval_caps, FGL_EVAL_ATTRIB_CAPS, base->EvalEnable))
+            changed |= g->bit;
+      } else if (g->bit == GL_TEXTURE_BIT) {
+         if (caps_differ(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, base->TextureEnable))
+            changed |= g->bit;
+      }
+   }
+   return changed;
+}
 
 void GLAPIENTRY glPushAttrib(GLbitfield mask)
 {
@@ -217,18 +401,11 @@ void GLAPIENTRY glPushAttrib(GLbitfield mask)
    }
    struct fgl_attrib_node *node = &ctx->AttribStack[ctx->AttribStackDepth];
    node->Mask = mask;
-   node->OldPopAttribState = ctx->PopAttribState;
-   for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
-      const struct attrib_group *g = &groups[i];
-      if (!(mask & g->bit))
-         continue;
-      if (g->save)
-         g->save(ctx, node);
-      if (g->size)
-         memcpy((char *)node + g->node_offset, (const char *)ctx + g->ctx_offset, g->size);
-   }
+   node->OldPopAttribState = ctx->PopAttribState | changed_groups(ctx);
+   save_groups(ctx, node, mask);
    ctx->AttribStackDepth++;
    ctx->PopAttribState = 0;
+   save_groups(ctx, &ctx->PopAttribBaseline, DIFF_TRACKED);
 }
 
 void GLAPIENTRY glPopAttrib(void)
@@ -249,10 +426,22 @@ void GLAPIENTRY glPopAttrib(void)
    /* FLUSH_CURRENT before anything is restored */
    if (node->Mask & GL_CURRENT_BIT)
       fgl_flush_current(ctx);
+   /* _mesa_PopAttrib: mask &= ctx->PopAttribState, after the FLUSH_CURRENT
+    * above (restore_light tests its bit itself) */
+   const GLbitfield changed = ctx->PopAttribState | changed_groups(ctx) | GL_LIGHTING_BIT;
    for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
       const struct attrib_group *g = &groups[i];
-      if (!(node->Mask & g->bit))
+      if (!(node->Mask & g->bit & changed))
          continue;
+      /* Mesa restores these groups through setters whose FLUSH_VERTICES
+       * (when the value changes; glReadBuffer's always) draws what is
+       * batched and copies a vertex format left by an earlier
+       * glPopAttrib(GL_CURRENT_BIT) into the current values, after this
+       * pop restored them (probed group by group; GL_ENABLE_BIT flushes
+       * through fgl_set_enable) */
+      if ((g->bit & POP_FLUSH_ALWAYS) ||
+          ((g->bit & POP_FLUSH_ON_CHANGE) && g->size && restore_flushes(ctx, node, g)))
+         fgl_flush_vertices(ctx);
       if (g->restore) {
          g->restore(ctx, node);
          continue;
@@ -265,6 +454,7 @@ void GLAPIENTRY glPopAttrib(void)
       }
    }
    ctx->PopAttribState = node->OldPopAttribState;
+   save_groups(ctx, &ctx->PopAttribBaseline, DIFF_TRACKED);
 }
 
 void GLAPIENTRY glPushClientAttrib(GLbitfield mask)

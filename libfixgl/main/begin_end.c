@@ -17,6 +17,7 @@ void fgl_init_current(struct fgl_context *ctx)
    static const float init[FGL_ATTR_COUNT][4] = {
       [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
       [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
+      [FGL_ATTR_COLOR_INDEX] = { 1, 0, 0, 1 },
       [FGL_ATTR_EDGEFLAG] = { 1, 0, 0, 1 },
       [FGL_ATTR_MAT_FRONT_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
       [FGL_ATTR_MAT_BACK_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },

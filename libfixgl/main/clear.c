@@ -22,6 +22,8 @@ void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclam
       return;
    FGL_SAVE(ctx, ClearColor, red, green, blue, alpha);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* marked for glPopAttrib even when unchanged [S: main/clear.c] */
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
    ctx->Color.ClearColor[0] = red;
    ctx->Color.ClearColor[1] = green;
    ctx->Color.ClearColor[2] = blue;
@@ -105,6 +107,8 @@ void GLAPIENTRY glClear(GLbitfield mask)
       return;
    fgl_update_state(ctx);
    const struct r_state *rs = &ctx->_Raster;
+   if (ctx->Color.DrawBuffer != GL_NONE)
+      ctx->DrawBuffer->ColorDefined = true;
 
    /* Which buffers take a plain clear and which a quad
     * [S: main/clear.c:clear; state_tracker/st_cb_clear.c:st_Clear].
@@ -114,7 +118,9 @@ void GLAPIENTRY glClear(GLbitfield mask)
     * depth with writes off are not cleared. */
    const bool scissor = scissor_cuts(ctx, fb);
    const unsigned surf_mask = fb->AlphaBits > 0 ? 0xfu : 0x7u;
-   const unsigned cmask = ctx->Color.ColorMask & surf_mask;
+   /* no colour buffer is cleared under glDrawBuffer(GL_NONE) */
+   const unsigned cmask = ctx->Color.DrawBuffer == GL_NONE ? 0u
+                                                         : ctx->Color.ColorMask & surf_mask;
    bool color_quad = false, color_clear = false;
    if ((mask & GL_COLOR_BUFFER_BIT) && cmask != 0) {
       if (scissor || cmask != surf_mask)

@@ -51,5 +51,8 @@ void GLAPIENTRY glClearDepth(GLclampd depth)
       return;
    FGL_SAVE(ctx, ClearDepth, depth);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   ctx->Depth.Clear = depth < 0.0 ? 0.0 : (depth > 1.0 ? 1.0 : depth);
+   /* marked for glPopAttrib even when unchanged; CLAMP(depth, 0.0, 1.0)
+    * [S: main/depth.c:_mesa_ClearDepth]: NaN -> 0 */
+   ctx->PopAttribState |= GL_DEPTH_BUFFER_BIT;
+   ctx->Depth.Clear = depth > 0.0 ? (depth > 1.0 ? 1.0 : depth) : 0.0;
 }

@@ -533,6 +533,7 @@ static void invalidate_saved_current_state(struct fgl_context *ctx)
 #define DL_PUT_BF(c, v) ((c).bf = (v))
 #define DL_PUT_US(c, v) ((c).us = (v))
 #define DL_PUT_D(c, v)  ((c).f = (GLfloat)(v))
+#define DL_PUT_FU(c, v) ((c).f = (v))
 #define DL_GET_E(c)  ((c).e)
 #define DL_GET_I(c)  ((c).i)
 #define DL_GET_SZ(c) ((c).sz)
@@ -542,6 +543,10 @@ static void invalidate_saved_current_state(struct fgl_context *ctx)
 #define DL_GET_BF(c) ((c).bf)
 #define DL_GET_US(c) ((c).us)
 #define DL_GET_D(c)  ((GLdouble)(c).f)
+/* FU: stored as a float, replayed as the float of its bit pattern
+ * ([S: main/dlist.c:execute_list OPCODE_CLEAR_INDEX]: save_ClearIndex
+ * writes n[1].f, the replay calls ClearIndex((GLfloat) n[1].ui)) */
+#define DL_GET_FU(c) ((GLfloat)(c).u)
 
 /* vectors: cells used, store (the first cnt values, zeros after), read */
 #define DL_VEC_NODES_F(N)  (N)
@@ -1120,7 +1125,12 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       }
       free(hash);
    }
-   const unsigned total_vert_count = dedup ? unique : idx;
+   /* max_index starts at 0: with no index at all (primitives without
+    * vertices) Mesa still uploads one vertex of its (uninitialized) merge
+    * buffer; zeros here */
+   if (dedup && unique == 0)
+      memset(temp, 0, vsize * sizeof(float));
+   const unsigned total_vert_count = dedup ? (unique ? unique : 1) : idx;
    const unsigned total_bytes = idx * 4u + total_vert_count * stride;
 
    /* the start is padded to a multiple of the stride from the previous

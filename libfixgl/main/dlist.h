@@ -28,6 +28,7 @@
 #define DL_CT_US GLushort
 #define DL_CT_D  GLdouble
 #define DL_CT_UB GLubyte
+#define DL_CT_FU GLfloat
 
 /* Prototypes: fgl_save_Name(ctx, args) stores the call and returns whether
  * the entry point goes on to execute it; fgl_dl_put_Name only stores (the

@@ -25,7 +25,9 @@
  * U GLuint, F GLfloat, B GLboolean, BF GLbitfield, US GLushort, D GLdouble
  * stored as a float, as Mesa stores every double argument (glFrustum,
  * glOrtho, glClearDepth, glDepthRange, glClipPlane), so the replay sees the
- * rounded value; vectors: F floats, D doubles stored as floats, UB bytes.
+ * rounded value; FU a float that the replay reads back as the number of
+ * its bit pattern (Mesa's glClearIndex replay); vectors: F floats, D
+ * doubles stored as floats, UB bytes.
  *
  * Not here: glBegin/glEnd and the vertex attributes (the vertex-list
  * compiler, vbo_save_api.c), glCallList(s), glNewList, glRect, the array
@@ -44,6 +46,10 @@ DL_OP1(LogicOp, E)
 DL_OP4(ColorMask, B, B, B, B)
 DL_OP4(ClearColor, F, F, F, F)
 DL_OP1(Clear, BF)
+DL_OP1(ClearIndex, FU)        /* Mesa replays the float's bits as a number */
+DL_OP1(IndexMask, U)
+DL_OP1(DrawBuffer, E)
+DL_OP1(ReadBuffer, E)         /* GL_PIXEL_MODE_BIT state, compiled by Mesa */
 /* ---- depth, stencil, scissor, viewport ---- */
 DL_OP1(DepthFunc, E)
 DL_OP1(DepthMask, B)

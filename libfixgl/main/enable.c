@@ -11,7 +11,7 @@
  * stored and reported (so programs see the oracle's errors and queries)
  * but do not affect rendering yet; README's status table lists them. */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_AUTO_NORMAL, GL_INDEX_LOGIC_OP,
+   GL_AUTO_NORMAL,
    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
    GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
    GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -19,7 +19,7 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
    GL_MAP2_VERTEX_4, GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
-   GL_TEXTURE_GEN_T,
+   GL_TEXTURE_GEN_T, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
 };
 
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
@@ -95,12 +95,34 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_COLOR_LOGIC_OP:
       *dirty = FGL_NEW_COLOR;
       return &ctx->Color.LogicOpEnabled;
+   case GL_INDEX_LOGIC_OP:
+      /* stored and queried only: no index buffer */
+      *dirty = 0;
+      return &ctx->Color.IndexLogicOpEnabled;
    case GL_SCISSOR_TEST:
       *dirty = FGL_NEW_SCISSOR;
       return &ctx->Scissor.Enabled;
    case GL_STENCIL_TEST:
       *dirty = FGL_NEW_STENCIL;
       return &ctx->Stencil.Enabled;
+   /* GL_MULTISAMPLE_BIT: stored and queried only, the framebuffer has no
+    * multisample buffer (nor has the oracle's) */
+   case GL_MULTISAMPLE:
+      *dirty = 0;
+      return &ctx->Multisample.Enabled;
+   case GL_SAMPLE_ALPHA_TO_COVERAGE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleAlphaToCoverage;
+   case GL_SAMPLE_ALPHA_TO_ONE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleAlphaToOne;
+   case GL_SAMPLE_COVERAGE:
+      *dirty = 0;
+      return &ctx->Multisample.SampleCoverage;
+   case GL_SAMPLE_COVERAGE_INVERT:
+      /* a capability too in Mesa's compatibility context (enable.c) */
+      *dirty = 0;
+      return &ctx->Multisample.SampleCoverageInvert;
    default:
       return NULL;
    }

@@ -237,7 +237,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOATN, ctx->ProjectionStack.Top->m, 16);
       return true;
    case GL_TEXTURE_MATRIX:
-      set_floats(val, V_FLOATN, ctx->TextureStack[0].Top->m, 16);
+      set_floats(val, V_FLOATN, ctx->TextureStack[ctx->Texture.CurrentUnit].Top->m, 16);
       return true;
    case GL_MODELVIEW_STACK_DEPTH:
       set_ints(val, V_INT, 1, (int)ctx->ModelviewStack.Depth + 1, 0, 0, 0);
@@ -246,7 +246,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->ProjectionStack.Depth + 1, 0, 0, 0);
       return true;
    case GL_TEXTURE_STACK_DEPTH:
-      set_ints(val, V_INT, 1, (int)ctx->TextureStack[0].Depth + 1, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->TextureStack[ctx->Texture.CurrentUnit].Depth + 1, 0, 0, 0);
       return true;
    case GL_MAX_CLIP_PLANES:
       set_ints(val, V_INT, 1, FGL_MAX_CLIP_PLANES, 0, 0, 0);
@@ -365,8 +365,186 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_BOOL, 1, 1, 0, 0, 0);
       return true;
    case GL_DRAW_BUFFER:
+      set_ints(val, V_INT, 1, (int)ctx->Color.DrawBuffer, 0, 0, 0);
+      return true;
    case GL_READ_BUFFER:
-      set_ints(val, V_INT, 1, GL_FRONT, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Pixel.ReadBuffer, 0, 0, 0);
+      return true;
+   /* ---- GL 1.3 state of colour index mode and of features still to come
+    * (context.h: their initial values until their setters land), with
+    * the types of get_hash_params.py ---- */
+   /* colour index (CONST / CONTEXT_INT / CONTEXT_FLOAT) */
+   case GL_CURRENT_INDEX:
+      /* extra_flush_current */
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_COLOR_INDEX], 1);
+      return true;
+   case GL_INDEX_CLEAR_VALUE:
+      /* CONTEXT_INT(Color.ClearIndex): Mesa stores the GLuint */
+      set_ints(val, V_INT, 1, (int)ctx->Color.ClearIndex, 0, 0, 0);
+      return true;
+   case GL_INDEX_WRITEMASK:
+      set_ints(val, V_INT, 1, (int)ctx->Color.IndexMask, 0, 0, 0);
+      return true;
+   case GL_INDEX_BITS:
+   case GL_AUX_BUFFERS:
+   case GL_ACCUM_RED_BITS:      /* OSMesa visuals have no accumulation buffer */
+   case GL_ACCUM_GREEN_BITS:
+   case GL_ACCUM_BLUE_BITS:
+   case GL_ACCUM_ALPHA_BITS:
+   case GL_SAMPLE_BUFFERS:      /* nor multisample buffers */
+   case GL_SAMPLES:
+      set_ints(val, V_INT, 1, 0, 0, 0, 0);
+      return true;
+   /* GL 1.4 current values (no setter yet) */
+   case GL_CURRENT_SECONDARY_COLOR:
+      set_floats(val, V_FLOATN, ctx->Current.SecondaryColor, 4);
+      return true;
+   case GL_CURRENT_FOG_COORD:
+      set_floats(val, V_FLOAT, &ctx->Current.FogCoord, 1);
+      return true;
+   /* current texture coordinates and raster position */
+   case GL_CURRENT_TEXTURE_COORDS:
+      set_floats(val, V_FLOAT, ctx->Current.TexCoord[ctx->Texture.CurrentUnit], 4);
+      return true;
+   case GL_CURRENT_RASTER_POSITION:
+      set_floats(val, V_FLOAT, ctx->Current.RasterPos, 4);
+      return true;
+   case GL_CURRENT_RASTER_DISTANCE:
+      set_floats(val, V_FLOAT, &ctx->Current.RasterDistance, 1);
+      return true;
+   case GL_CURRENT_RASTER_COLOR:
+      set_floats(val, V_FLOATN, ctx->Current.RasterColor, 4);
+      return true;
+   case GL_CURRENT_RASTER_INDEX:
+      set_ints(val, V_INT, 1, 1, 0, 0, 0);     /* CONST(1) */
+      return true;
+   case GL_CURRENT_RASTER_TEXTURE_COORDS:
+      set_floats(val, V_FLOAT, ctx->Current.RasterTexCoords[ctx->Texture.CurrentUnit], 4);
+      return true;
+   case GL_CURRENT_RASTER_POSITION_VALID:
+      set_ints(val, V_BOOL, 1, ctx->Current.RasterPosValid, 0, 0, 0);
+      return true;
+   /* GL_ACCUM_BUFFER_BIT */
+   case GL_ACCUM_CLEAR_VALUE:
+      set_floats(val, V_FLOATN, ctx->Accum.ClearColor, 4);
+      return true;
+   /* GL_PIXEL_MODE_BIT */
+   case GL_MAP_COLOR: set_ints(val, V_BOOL, 1, ctx->Pixel.MapColorFlag, 0, 0, 0); return true;
+   case GL_MAP_STENCIL: set_ints(val, V_BOOL, 1, ctx->Pixel.MapStencilFlag, 0, 0, 0); return true;
+   case GL_INDEX_SHIFT: set_ints(val, V_INT, 1, ctx->Pixel.IndexShift, 0, 0, 0); return true;
+   case GL_INDEX_OFFSET: set_ints(val, V_INT, 1, ctx->Pixel.IndexOffset, 0, 0, 0); return true;
+   case GL_RED_SCALE: set_floats(val, V_FLOAT, &ctx->Pixel.RedScale, 1); return true;
+   case GL_GREEN_SCALE: set_floats(val, V_FLOAT, &ctx->Pixel.GreenScale, 1); return true;
+   case GL_BLUE_SCALE: set_floats(val, V_FLOAT, &ctx->Pixel.BlueScale, 1); return true;
+   case GL_ALPHA_SCALE: set_floats(val, V_FLOAT, &ctx->Pixel.AlphaScale, 1); return true;
+   case GL_DEPTH_SCALE: set_floats(val, V_FLOAT, &ctx->Pixel.DepthScale, 1); return true;
+   case GL_RED_BIAS: set_floats(val, V_FLOAT, &ctx->Pixel.RedBias, 1); return true;
+   case GL_GREEN_BIAS: set_floats(val, V_FLOAT, &ctx->Pixel.GreenBias, 1); return true;
+   case GL_BLUE_BIAS: set_floats(val, V_FLOAT, &ctx->Pixel.BlueBias, 1); return true;
+   case GL_ALPHA_BIAS: set_floats(val, V_FLOAT, &ctx->Pixel.AlphaBias, 1); return true;
+   case GL_DEPTH_BIAS: set_floats(val, V_FLOAT, &ctx->Pixel.DepthBias, 1); return true;
+   case GL_ZOOM_X: set_floats(val, V_FLOAT, &ctx->Pixel.ZoomX, 1); return true;
+   case GL_ZOOM_Y: set_floats(val, V_FLOAT, &ctx->Pixel.ZoomY, 1); return true;
+   case GL_PIXEL_MAP_I_TO_I_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.ItoI.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_S_TO_S_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.StoS.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_I_TO_R_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.ItoR.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_I_TO_G_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.ItoG.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_I_TO_B_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.ItoB.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_I_TO_A_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.ItoA.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_R_TO_R_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.RtoR.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_G_TO_G_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.GtoG.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_B_TO_B_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.BtoB.Size, 0, 0, 0); return true;
+   case GL_PIXEL_MAP_A_TO_A_SIZE: set_ints(val, V_INT, 1, ctx->PixelMaps.AtoA.Size, 0, 0, 0); return true;
+   case GL_MAX_PIXEL_MAP_TABLE:
+      set_ints(val, V_INT, 1, FGL_MAX_PIXEL_MAP_TABLE, 0, 0, 0);
+      return true;
+   /* GL_EVAL_BIT */
+   case GL_MAP1_GRID_DOMAIN:
+      f[0] = ctx->Eval.MapGrid1u1;
+      f[1] = ctx->Eval.MapGrid1u2;
+      set_floats(val, V_FLOAT, f, 2);
+      return true;
+   case GL_MAP2_GRID_DOMAIN:
+      f[0] = ctx->Eval.MapGrid2u1;
+      f[1] = ctx->Eval.MapGrid2u2;
+      f[2] = ctx->Eval.MapGrid2v1;
+      f[3] = ctx->Eval.MapGrid2v2;
+      set_floats(val, V_FLOAT, f, 4);
+      return true;
+   case GL_MAP1_GRID_SEGMENTS:
+      set_ints(val, V_INT, 1, ctx->Eval.MapGrid1un, 0, 0, 0);
+      return true;
+   case GL_MAP2_GRID_SEGMENTS:
+      set_ints(val, V_INT, 2, ctx->Eval.MapGrid2un, ctx->Eval.MapGrid2vn, 0, 0);
+      return true;
+   case GL_MAX_EVAL_ORDER:
+      set_ints(val, V_INT, 1, FGL_MAX_EVAL_ORDER, 0, 0, 0);
+      return true;
+   /* GL_TEXTURE_BIT and texture limits */
+   case GL_ACTIVE_TEXTURE:
+      set_ints(val, V_INT, 1, GL_TEXTURE0 + (int)ctx->Texture.CurrentUnit, 0, 0, 0);
+      return true;
+   case GL_TEXTURE_BINDING_1D:
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound1D, 0, 0, 0);
+      return true;
+   case GL_TEXTURE_BINDING_2D:
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound2D, 0, 0, 0);
+      return true;
+   case GL_TEXTURE_BINDING_3D:
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound3D, 0, 0, 0);
+      return true;
+   case GL_TEXTURE_BINDING_CUBE_MAP:
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].BoundCubeMap, 0, 0, 0);
+      return true;
+   case GL_MAX_TEXTURE_UNITS:
+      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
+      return true;
+   case GL_MAX_TEXTURE_SIZE:
+      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_SIZE, 0, 0, 0);
+      return true;
+   case GL_MAX_3D_TEXTURE_SIZE:
+      set_ints(val, V_INT, 1, FGL_MAX_3D_TEXTURE_SIZE, 0, 0, 0);
+      return true;
+   case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
+      set_ints(val, V_INT, 1, FGL_MAX_CUBE_MAP_TEXTURE_SIZE, 0, 0, 0);
+      return true;
+   case GL_MAX_TEXTURE_LOD_BIAS:
+      f[0] = FGL_MAX_TEXTURE_LOD_BIAS;
+      set_floats(val, V_FLOAT, f, 1);
+      return true;
+   case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
+      /* fixgl has no compressed texture formats (the list is empty) */
+      set_ints(val, V_INT, 1, 0, 0, 0, 0);
+      return true;
+   case GL_COMPRESSED_TEXTURE_FORMATS:
+      val->type = V_INT;
+      val->n = 0;
+      return true;
+   case GL_TRANSPOSE_MODELVIEW_MATRIX:
+   case GL_TRANSPOSE_PROJECTION_MATRIX:
+   case GL_TRANSPOSE_TEXTURE_MATRIX: {
+      /* CONTEXT_MATRIX_T: the top of the stack, transposed */
+      const fgl_matrix *m = pname == GL_TRANSPOSE_MODELVIEW_MATRIX ? ctx->ModelviewStack.Top
+                          : pname == GL_TRANSPOSE_PROJECTION_MATRIX ? ctx->ProjectionStack.Top
+                          : ctx->TextureStack[ctx->Texture.CurrentUnit].Top;
+      val->type = V_FLOATN;
+      val->n = 16;
+      for (int i = 0; i < 4; i++)
+         for (int j = 0; j < 4; j++)
+            val->v[i * 4 + j] = m->m[j * 4 + i];
+      return true;
+   }
+   /* GL_MULTISAMPLE_BIT */
+   case GL_SAMPLE_COVERAGE_VALUE:
+      set_floats(val, V_FLOAT, &ctx->Multisample.SampleCoverageValue, 1);
+      return true;
+   case GL_SAMPLE_COVERAGE_INVERT:
+      set_ints(val, V_BOOL, 1, ctx->Multisample.SampleCoverageInvert, 0, 0, 0);
+      return true;
+   case GL_MAX_ELEMENTS_VERTICES:
+   case GL_MAX_ELEMENTS_INDICES:
+      set_ints(val, V_INT, 1, FGL_MAX_ELEMENTS, 0, 0, 0);
       return true;
    default: {
       /* GL_HINT_BIT: every glHint target */
@@ -498,10 +676,29 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
    case GL_RENDERER:
       return (const GLubyte *)"fixgl CPU rasterizer (OpenGL 1.x fixed function)";
    case GL_VERSION:
-      /* the GL 1.0 core subset implemented so far */
-      return (const GLubyte *)"1.0 fixgl " FIXGL_VERSION_STRING;
+      /* What is implemented: the GL 1.1 entry points and state (vertex
+       * arrays, polygon offset, logic op, queries) except the texture and
+       * pixel paths, which the vendor part says. */
+      return (const GLubyte *)"1.1 fixgl " FIXGL_VERSION_STRING
+                              " (texture mapping not implemented yet)";
    case GL_EXTENSIONS:
-      return (const GLubyte *)"";
+      /* Exactly the extensions fixgl implements, each with its enums and
+       * entry points (the EXT-named ones through OSMesaGetProcAddress);
+       * api/query_extensions checks the oracle advertises each too:
+       *   EXT_blend_color        glBlendColor, GL_CONSTANT_* factors
+       *   EXT_blend_minmax       glBlendEquation, GL_MIN, GL_MAX
+       *   EXT_blend_subtract     GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT
+       *   EXT_draw_range_elements glDrawRangeElements
+       *   EXT_rescale_normal     GL_RESCALE_NORMAL
+       *   EXT_separate_specular_color GL_LIGHT_MODEL_COLOR_CONTROL
+       *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
+       *   NV_blend_square        GL_SRC_COLOR as source, GL_DST_COLOR as
+       *                          destination factor
+       *   NV_fog_distance        GL_FOG_DISTANCE_MODE_NV */
+      return (const GLubyte *)"GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
+                              "GL_EXT_draw_range_elements GL_EXT_rescale_normal "
+                              "GL_EXT_separate_specular_color GL_EXT_stencil_wrap "
+                              "GL_NV_blend_square GL_NV_fog_distance";
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return NULL;

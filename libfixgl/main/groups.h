@@ -12,6 +12,13 @@ bool fgl_init_matrix(struct fgl_context *ctx);
 struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLenum mode);
 void fgl_free_matrix(struct fgl_context *ctx);
 
+/* main/colorindex.c: glClearIndex's (GLuint) cast of a float, as the
+ * oracle's x86-64 build does it */
+GLuint fgl_clear_index_cast(float c);
+
+/* main/buffers.c: the window-system framebuffer was created anew */
+void fgl_new_window_framebuffer(struct fgl_context *ctx);
+
 /* main/varray.c (GL_CLIENT_VERTEX_ARRAY_BIT) */
 void fgl_init_array(struct fgl_context *ctx);
 /* the array behind a GL_*_ARRAY client-state enum, or NULL */

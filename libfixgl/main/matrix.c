@@ -78,6 +78,8 @@ void GLAPIENTRY glMatrixMode(GLenum mode)
    }
    ctx->CurrentStack = stack;
    ctx->Transform.MatrixMode = mode;
+   /* marked even when unchanged (GL_TEXTURE), for glPopAttrib */
+   ctx->PopAttribState |= GL_TRANSFORM_BIT;
 }
 
 void GLAPIENTRY glPushMatrix(void)

@@ -115,6 +115,16 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
          fgl_error(ctx, GL_INVALID_OPERATION);
          return;
       }
+      /* _mesa_source_buffer_exists: under glReadBuffer(GL_NONE) there is
+       * no colour buffer to read, INVALID_OPERATION after the format and
+       * type checks [S: main/readpix.c:read_pixels].  (Mesa's earlier
+       * rb == NULL test reads Attachment[BUFFER_NONE = -1], outside the
+       * array, and does not fire.)  The formats fixgl does not read yet
+       * raise the same error below. */
+      if (ctx->Pixel.ReadBuffer == GL_NONE) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
       comps = format == GL_RGBA ? 4 : 3;
       bytes = type == GL_FLOAT ? 4 : 1;
       break;

@@ -38,6 +38,8 @@ void GLAPIENTRY glClearStencil(GLint s)
       return;
    FGL_SAVE(ctx, ClearStencil, s);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* marked for glPopAttrib even when unchanged [S: main/stencil.c] */
+   ctx->PopAttribState |= GL_STENCIL_BUFFER_BIT;
    ctx->Stencil.Clear = (GLuint)s;
 }
 

@@ -85,6 +85,8 @@ void fgl_init_array(struct fgl_context *ctx)
       [FGL_ARRAY_INDEX] = { 1, GL_FLOAT },
       [FGL_ARRAY_TEXCOORD] = { 4, GL_FLOAT },
       [FGL_ARRAY_EDGEFLAG] = { 1, GL_UNSIGNED_BYTE },
+      [FGL_ARRAY_FOGCOORD] = { 1, GL_FLOAT },
+      [FGL_ARRAY_COLOR1] = { 3, GL_FLOAT },
    };
    for (int i = 0; i < FGL_ARRAY_COUNT; i++) {
       ctx->Array.Array[i] = (struct fgl_client_array){
@@ -267,6 +269,11 @@ struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
    case GL_INDEX_ARRAY: return &ctx->Array.Array[FGL_ARRAY_INDEX];
    case GL_TEXTURE_COORD_ARRAY: return &ctx->Array.Array[FGL_ARRAY_TEXCOORD];
    case GL_EDGE_FLAG_ARRAY: return &ctx->Array.Array[FGL_ARRAY_EDGEFLAG];
+   /* GL 1.4 arrays: accepted as the oracle's compatibility context does
+    * (main/enable.c:_mesa_set_enable); fixgl has no pointer call for them
+    * yet and does not draw them */
+   case GL_FOG_COORD_ARRAY: return &ctx->Array.Array[FGL_ARRAY_FOGCOORD];
+   case GL_SECONDARY_COLOR_ARRAY: return &ctx->Array.Array[FGL_ARRAY_COLOR1];
    default: return NULL;
    }
 }
@@ -317,6 +324,23 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
    case GL_TEXTURE_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_TEXCOORD].Type; return true;
    case GL_TEXTURE_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_TEXCOORD].Stride; return true;
    case GL_EDGE_FLAG_ARRAY_STRIDE: *value = A[FGL_ARRAY_EDGEFLAG].Stride; return true;
+   case GL_FOG_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_FOGCOORD].Type; return true;
+   case GL_FOG_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_FOGCOORD].Stride; return true;
+   case GL_SECONDARY_COLOR_ARRAY_SIZE:
+      *value = A[FGL_ARRAY_COLOR1].Format == GL_BGRA ? GL_BGRA : A[FGL_ARRAY_COLOR1].Size;
+      return true;
+   case GL_SECONDARY_COLOR_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_COLOR1].Type; return true;
+   case GL_SECONDARY_COLOR_ARRAY_STRIDE: *value = A[FGL_ARRAY_COLOR1].Stride; return true;
+   /* GL_EXT_vertex_array counts: CONST(0) [S: main/get_hash_params.py] */
+   case GL_VERTEX_ARRAY_COUNT_EXT:
+   case GL_NORMAL_ARRAY_COUNT_EXT:
+   case GL_COLOR_ARRAY_COUNT_EXT:
+   case GL_INDEX_ARRAY_COUNT_EXT:
+   case GL_TEXTURE_COORD_ARRAY_COUNT_EXT:
+   case GL_EDGE_FLAG_ARRAY_COUNT_EXT:
+      *value = 0;
+      return true;
+   case GL_CLIENT_ACTIVE_TEXTURE: *value = GL_TEXTURE0 + (int)ctx->Array.ActiveTexture; return true;
    default: return false;
    }
 }
@@ -340,6 +364,14 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    /* main/feedback.c */
    case GL_FEEDBACK_BUFFER_POINTER: *params = (GLvoid *)ctx->Feedback.Buffer; break;
    case GL_SELECTION_BUFFER_POINTER: *params = (GLvoid *)ctx->Select.Buffer; break;
+   case GL_FOG_COORD_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_FOGCOORD].Ptr; break;
+   case GL_SECONDARY_COLOR_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_COLOR1].Ptr; break;
+   /* GL_KHR_debug's callback and its parameter: fixgl has no
+    * glDebugMessageCallback, so they stay NULL as the oracle's default */
+   case GL_DEBUG_CALLBACK_FUNCTION:
+   case GL_DEBUG_CALLBACK_USER_PARAM:
+      *params = NULL;
+      break;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       break;

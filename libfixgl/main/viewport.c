@@ -51,9 +51,10 @@ void GLAPIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height)
    fgl_set_viewport(ctx, x, y, width, height);
 }
 
+/* SATURATE = Mesa's CLAMP(x, 0, 1) (util/macros.h): NaN becomes 0 */
 static double clampd(double v)
 {
-   return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+   return v > 0.0 ? (v > 1.0 ? 1.0 : v) : 0.0;
 }
 
 void GLAPIENTRY glDepthRange(GLclampd nearval, GLclampd farval)
@@ -63,9 +64,13 @@ void GLAPIENTRY glDepthRange(GLclampd nearval, GLclampd farval)
       return;
    FGL_SAVE(ctx, DepthRange, nearval, farval);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   const float n = (float)clampd(nearval), f = (float)clampd(farval);
-   if (ctx->Viewport.Near == n && ctx->Viewport.Far == f)
+   /* set_depth_range_no_notify [S: main/viewport.c] compares the stored
+    * floats with the unclamped double arguments: only values a float
+    * holds exactly and inside [0,1] count as unchanged (0.2 flushes every
+    * time) */
+   if (ctx->Viewport.Near == nearval && ctx->Viewport.Far == farval)
       return;
+   const float n = (float)clampd(nearval), f = (float)clampd(farval);
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_VIEWPORT);
    ctx->Viewport.Near = n;
    ctx->Viewport.Far = f;

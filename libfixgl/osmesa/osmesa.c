@@ -78,9 +78,16 @@ static void snapshot_zs(struct osmesa_context *c)
              src + (size_t)y * row, row);
 }
 
-/* glFlush/glFinish: copy the image into the application's buffer. */
+/* glFlush/glFinish: copy the image into the application's buffer and
+ * refresh the depth snapshot, when the colour buffer was bound to a draw
+ * or clear since the last time (st_manager_flush_frontbuffer's
+ * rb->defined): after drawing only under glDrawBuffer(GL_NONE) neither
+ * happens, as in the oracle (api/draw_buffer_render). */
 static void flush_front(struct fgl_framebuffer *fb)
 {
+   if (!fb->ColorDefined)
+      return;
+   fb->ColorDefined = false;
    struct osmesa_context *c = (struct osmesa_context *)((char *)fb - offsetof(struct osmesa_context, fb));
    const int bpp = bytes_per_pixel(c->format);
    const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
@@ -282,6 +289,13 @@ OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
    if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height) {
       if (!alloc_buffers(c, width, height))
          return GL_FALSE;
+      /* Mesa destroys the osmesa_buffer of another size and makes a new
+       * window framebuffer: the read buffer, which lives there, is GL_FRONT
+       * again; the draw buffer is context state and carries over
+       * [S: gallium/frontends/osmesa/osmesa.c:OSMesaMakeCurrent;
+       * main/framebuffer.c:_mesa_initialize_window_framebuffer;
+       * main/context.c:_mesa_make_current, _mesa_update_draw_buffers] */
+      fgl_new_window_framebuffer(c->gl);
    }
    c->user_buffer = buffer;
    c->type = type;
@@ -443,12 +457,21 @@ static const struct proc_entry procs[] = {
    { "OSMesaPostprocess", PROC(OSMesaPostprocess) },
 };
 
-/* Mesa's glapi hands out a no-op dispatch stub for any gl* name it does
- * not know; so does fixgl, so programs probing for functions behave alike. */
-static void noop_stub(void)
-{
-}
+/* Entry points of the extensions fixgl advertises (glGetString,
+ * main/get.c) under their extension names: the same functions, as Mesa's
+ * glapi aliases them. */
+static const struct proc_entry aliases[] = {
+   { "glBlendColorEXT", PROC(glBlendColor) },
+   { "glBlendEquationEXT", PROC(glBlendEquation) },
+   { "glDrawRangeElementsEXT", PROC(glDrawRangeElements) },
+};
 
+/* A name fixgl does not implement gives NULL.  On purpose, this differs
+ * from the oracle: Mesa's glapi hands out a new dispatch stub for any
+ * unknown name starting with "gl" (_glapi_get_proc_address), which does
+ * nothing when called; fixgl never hands out a function that silently
+ * does nothing, so a program can test for what is really there
+ * (api/getprocaddress records it as a documented difference). */
 GLAPI OSMESAproc GLAPIENTRY
 OSMesaGetProcAddress(const char *funcName)
 {
@@ -457,7 +480,8 @@ OSMesaGetProcAddress(const char *funcName)
    for (size_t i = 0; i < sizeof(procs) / sizeof(procs[0]); i++)
       if (strcmp(procs[i].name, funcName) == 0)
          return procs[i].proc;
-   if (strncmp(funcName, "gl", 2) == 0)
-      return PROC(noop_stub);
+   for (size_t i = 0; i < sizeof(aliases) / sizeof(aliases[0]); i++)
+      if (strcmp(aliases[i].name, funcName) == 0)
+         return aliases[i].proc;
    return NULL;
 }

@@ -267,13 +267,15 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
 void t_array_element(struct fgl_context *ctx, GLint elt)
 {
    /* _mesa_array_element: the enabled non-position arrays in attribute
-    * order (normal, colour, edge flag; texture coordinates and colour
-    * indices do not reach fixgl's vertex yet), then the position */
+    * order (normal, colour, colour index, edge flag; texture coordinates
+    * do not reach fixgl's vertex yet), then the position */
    const struct fgl_client_array *A = ctx->Array.Array;
    if (A[FGL_ARRAY_NORMAL].Enabled)
       emit(ctx, &A[FGL_ARRAY_NORMAL], FGL_ATTR_NORMAL, true, elt);
    if (A[FGL_ARRAY_COLOR].Enabled)
       emit(ctx, &A[FGL_ARRAY_COLOR], FGL_ATTR_COLOR0, true, elt);
+   if (A[FGL_ARRAY_INDEX].Enabled)
+      emit(ctx, &A[FGL_ARRAY_INDEX], FGL_ATTR_COLOR_INDEX, false, elt);
    if (A[FGL_ARRAY_EDGEFLAG].Enabled)
       emit(ctx, &A[FGL_ARRAY_EDGEFLAG], FGL_ATTR_EDGEFLAG, false, elt);
    if (A[FGL_ARRAY_VERTEX].Enabled)

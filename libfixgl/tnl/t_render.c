@@ -247,6 +247,8 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
+   if (ctx->Color.DrawBuffer != GL_NONE)
+      ctx->DrawBuffer->ColorDefined = true;
    fgl_update_stipple(ctx);
 
    struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));

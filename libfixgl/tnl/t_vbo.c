@@ -208,11 +208,27 @@ static void vtx_wrap(struct fgl_context *ctx)
 }
 
 /* vbo_exec_wrap_upgrade_vertex: a larger vertex format splits the batch. */
+static void copy_to_current(struct fgl_context *ctx);
+
 static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned size)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
    struct fgl_vbo_vertex copied[3];
+   const unsigned lastcount = vbo->vert_count;
    const unsigned n = wrap_buffers(ctx, copied);
+
+   /* "Heuristic: attempt to isolate attributes received outside
+    * begin/end": a new attribute outside glBegin/glEnd after more than 8
+    * stored vertices empties the vertex format first, so the next glBegin
+    * flushes the batch [S: vbo/vbo_exec_api.c:vbo_exec_wrap_upgrade_vertex]
+    * (dlist/empty_after_points). */
+   if (!fgl_inside_begin_end(ctx) && !vbo->attr_size[attr] && lastcount > 8 &&
+       vbo->vertex_size) {
+      copy_to_current(ctx);
+      memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+      memset(vbo->active_size, 0, sizeof(vbo->active_size));
+      vbo->vertex_size = 0;
+   }
 
    /* Replayed vertices get a newly added attribute as its current value cut
     * to the new size (COPY_SZ_4V), so the missing components read back as

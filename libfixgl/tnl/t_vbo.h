@@ -38,6 +38,9 @@ enum fgl_vbo_attr {
    FGL_ATTR_POS,
    FGL_ATTR_NORMAL,
    FGL_ATTR_COLOR0,
+   FGL_ATTR_COLOR_INDEX,    /* glIndex: stored and queried; nothing reads it
+                             * in RGBA, but it is part of the vertex format
+                             * (VBO_ATTRIB_COLOR_INDEX) */
    FGL_ATTR_EDGEFLAG,       /* glEdgeFlag: 1.0 or 0.0 (VBO_ATTRIB_EDGEFLAG) */
    FGL_ATTR_MAT_FRONT_AMBIENT,
    FGL_ATTR_MAT_BACK_AMBIENT,

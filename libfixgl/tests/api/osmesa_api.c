@@ -241,6 +241,15 @@ static void test_proc_address(void)
   CHECK(PROC("glClear") == (any_fn)glClear,
         "glClear resolves to another function");
   CHECK(PROC(NULL) == NULL, "OSMesaGetProcAddress(NULL) is not NULL");
+  /* Mesa hands out a do-nothing dispatch stub for any unknown gl* name;
+   * fixgl answers NULL for what it does not implement (no silent no-op) */
+  CHECK(PROC("glFooBar") == NULL, "\"glFooBar\" resolves");
+  CHECK(PROC("glCreateShader") == NULL, "glCreateShader resolves");
+  CHECK(PROC("gl") == NULL, "\"gl\" resolves");
+  /* the aliases of the advertised extensions */
+  CHECK(PROC("glBlendColorEXT") == (any_fn)glBlendColor, "glBlendColorEXT is not glBlendColor");
+  CHECK(PROC("glDrawRangeElementsEXT") == (any_fn)glDrawRangeElements,
+        "glDrawRangeElementsEXT is not glDrawRangeElements");
 #endif
   CHECK(PROC("nonsense") == NULL, "\"nonsense\" resolves");
   CHECK(PROC("") == NULL, "\"\" resolves");

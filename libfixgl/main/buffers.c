@@ -1,0 +1,100 @@
+/*
+ * glDrawBuffer, glReadBuffer on the OSMesa framebuffer: one single-buffered
+ * mono colour buffer, which the oracle's GL_FRONT_LEFT stands for.
+ *
+ * [S: main/buffers.c:draw_buffer, read_buffer] The given enum is stored
+ * as is (GL_DRAW_BUFFER/GL_READ_BUFFER report it); on a single-buffered
+ * framebuffer GL_BACK* names the front buffer
+ * (_mesa_back_to_front_if_single_buffered), so every value that names a
+ * left buffer draws into and reads from the one buffer.  Right buffers,
+ * GL_AUXi and colour attachments do not exist: INVALID_OPERATION; any
+ * other enum: INVALID_ENUM.  GL_NONE is legal: no colour is drawn
+ * (state.c, clear.c) and glReadPixels of a colour format raises
+ * INVALID_OPERATION (readpix.c).
+ */
+#include "main/groups.h"
+#include "main/dlist.h"
+
+enum buffer_class { BUF_BAD_ENUM, BUF_MISSING, BUF_OK };
+
+/* draw_buffer_enum_to_bitmask / read_buffer_enum_to_index, with the
+ * supported buffer mask of a single-buffered mono window framebuffer
+ * (BUFFER_BIT_FRONT_LEFT).  The read side maps GL_RIGHT to FRONT_RIGHT and
+ * GL_FRONT_AND_BACK to FRONT_LEFT, which gives the same classes. */
+static enum buffer_class classify(GLenum buffer)
+{
+   switch (buffer) {
+   case GL_NONE:
+   case GL_FRONT:
+   case GL_BACK:
+   case GL_LEFT:
+   case GL_FRONT_LEFT:
+   case GL_BACK_LEFT:
+   case GL_FRONT_AND_BACK:
+      return BUF_OK;
+   case GL_RIGHT:
+   case GL_FRONT_RIGHT:
+   case GL_BACK_RIGHT:
+   case GL_AUX0:
+   case GL_AUX1:
+   case GL_AUX2:
+   case GL_AUX3:
+      return BUF_MISSING;
+   default:
+      if (buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT31)
+         return BUF_MISSING;
+      return BUF_BAD_ENUM;
+   }
+}
+
+static bool check_buffer(struct fgl_context *ctx, GLenum buffer)
+{
+   switch (classify(buffer)) {
+   case BUF_BAD_ENUM:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   case BUF_MISSING:
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return false;
+   default:
+      return true;
+   }
+}
+
+void GLAPIENTRY glDrawBuffer(GLenum buffer)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, DrawBuffer, buffer);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* FLUSH_VERTICES(ctx, 0, GL_COLOR_BUFFER_BIT) before validation, as
+    * draw_buffer does: even a refused call marks the group for glPopAttrib */
+   FGL_FLUSH_VERTICES(ctx, 0);
+   ctx->PopAttribState |= GL_COLOR_BUFFER_BIT;
+   if (!check_buffer(ctx, buffer))
+      return;
+   ctx->NewState |= FGL_NEW_COLOR;
+   ctx->Color.DrawBuffer = buffer;
+}
+
+void GLAPIENTRY glReadBuffer(GLenum buffer)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, ReadBuffer, buffer);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   /* FLUSH_VERTICES(ctx, 0, GL_PIXEL_MODE_BIT) before validation */
+   FGL_FLUSH_VERTICES(ctx, 0);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;
+   if (!check_buffer(ctx, buffer))
+      return;
+   ctx->Pixel.ReadBuffer = buffer;
+}
+
+/* A new window framebuffer's ColorReadBuffer: GL_FRONT (single-buffered) */
+void fgl_new_window_framebuffer(struct fgl_context *ctx)
+{
+   ctx->Pixel.ReadBuffer = GL_FRONT;
+}
