@@ -37,6 +37,7 @@ extern const fc_case fc_cases_points_lines[];
 extern const fc_case fc_cases_polygon_mode[];
 extern const fc_case fc_cases_varray[];
 extern const fc_case fc_cases_attrib[];
+extern const fc_case fc_cases_demo[];
 extern const fc_case fc_cases_dlist[];
 extern const fc_case fc_cases_select[];
 
