@@ -17,6 +17,7 @@ static const fc_case *const groups[] = {
     fc_cases_dlist,
     fc_cases_attrib,
     fc_cases_select,
+    fc_cases_accum,
     fc_cases_query_walk,
 };
 
