@@ -638,6 +638,44 @@ static void formats(fc_h *h)
     }
 }
 
+/* Rebinding the context to another buffer of the same size keeps the
+ * accumulation buffer; a new size makes a new one (the oracle's new buffer
+ * holds garbage, as its first one does, so the case clears it first) */
+static void rebind(fc_h *h)
+{
+    accum_ctx a;
+    if (accum_begin(h, &a, OSMESA_RGBA, 16, 8, 8)) {
+        scene(&a, 3);
+        glAccum(GL_LOAD, 0.8f);
+        unsigned char *other = malloc(8 * 8 * 4);
+        memset(other, 0x33, 8 * 8 * 4);
+        fc_value(h, "same size", OSMesaMakeCurrent(a.ctx, other, GL_UNSIGNED_BYTE, 8, 8));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        ret(h, &a, "same size rebind RETURN 1", 1.0f);
+        fc_capture_buffer(h, other, 8, 8, 8, OSMESA_RGBA, 1);
+        unsigned char *big = malloc(12 * 6 * 4);
+        memset(big, 0x44, 12 * 6 * 4);
+        fc_value(h, "new size", OSMesaMakeCurrent(a.ctx, big, GL_UNSIGNED_BYTE, 12, 6));
+        glViewport(0, 0, 12, 6);
+        glClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+        glClearAccum(-0.25f, 0.25f, 0.5f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+        glAccum(GL_ACCUM, 0.5f);
+        glAccum(GL_RETURN, 1.5f);
+        fc_error(h, "new size");
+        unsigned char px[12 * 6 * 4];
+        glReadPixels(0, 0, 12, 6, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        fc_blob(h, "new size RETURN 1.5", px, sizeof px);
+        /* no capture here: after a resize the oracle's OSMesaGetDepthBuffer
+         * returns its old, smaller mapping with the new size */
+        glFinish();
+        OSMesaMakeCurrent(a.ctx, a.buf, GL_UNSIGNED_BYTE, 8, 8);
+        free(other);
+        free(big);
+    }
+    accum_end(h, &a);
+}
+
 const fc_case fc_cases_accum[] = {
     FC_CASE_RGBA("accum/load_return", 8, 8, 1, "accum", load_return),
     FC_CASE_RGBA("accum/accum_op", 8, 8, 1, "accum", accum_op),
@@ -652,5 +690,6 @@ const fc_case fc_cases_accum[] = {
     FC_CASE_RGBA("accum/display_list", 8, 8, 1, "accum dlist", display_list),
     FC_CASE_RGBA("accum/return_flush", 8, 8, 4, "accum", return_flush),
     FC_CASE_RGBA("accum/formats", 8, 8, 2, "accum format", formats),
+    FC_CASE_RGBA("accum/rebind", 8, 8, 1, "accum", rebind),
     { 0 }
 };
