@@ -89,6 +89,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_current(ctx);
    fgl_init_array(ctx);
    fgl_init_color(ctx);
+   fgl_init_accum(ctx);
    fgl_init_depth(ctx);
    fgl_init_fog(ctx);
    fgl_init_hint(ctx);

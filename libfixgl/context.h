@@ -246,8 +246,7 @@ struct fgl_pixelstore {
 
 #define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
-/* GL_ACCUM_BUFFER_BIT: the accumulation buffer is not implemented (OSMesa
- * gives the oracle none either); only its clear value exists */
+/* GL_ACCUM_BUFFER_BIT (main/accum.c) */
 struct fgl_accum_attrib {
    float ClearColor[4];     /* glClearAccum, clamped to [-1, 1] */
 };
@@ -371,6 +370,11 @@ struct fgl_framebuffer {
    int AlphaBits;             /* 8, or 0 for the RGB formats */
    enum r_zs_format ZSFormat;
    uint8_t *Stencil;          /* stencil-only buffer (S8) when no depth */
+   /* the accumulation buffer (main/accum.c): RGBA int16 scaled by 32767
+    * (the oracle's R16G16B16A16_SNORM), same layout as Color; AccumBits
+    * 16, or 0 and Accum NULL without one */
+   int16_t *Accum;
+   int AccumBits;
    /* called by glFlush/glFinish to make the image visible to the owner */
    void (*FlushFront)(struct fgl_framebuffer *fb);
    /* Mesa's rb->defined of the front colour buffer: set when a draw or a

@@ -2,6 +2,7 @@
  * Every GL entry point fixgl implements, for OSMesaGetProcAddress.
  * Kept sorted; libfixgl/tests check it against the exported symbols.
  */
+FGL_API(glAccum)
 FGL_API(glAlphaFunc)
 FGL_API(glArrayElement)
 FGL_API(glBegin)
@@ -11,6 +12,7 @@ FGL_API(glBlendFunc)
 FGL_API(glCallList)
 FGL_API(glCallLists)
 FGL_API(glClear)
+FGL_API(glClearAccum)
 FGL_API(glClearColor)
 FGL_API(glClearDepth)
 FGL_API(glClearIndex)

@@ -45,6 +45,8 @@ DL_OP4(BlendColor, F, F, F, F)
 DL_OP1(LogicOp, E)
 DL_OP4(ColorMask, B, B, B, B)
 DL_OP4(ClearColor, F, F, F, F)
+DL_OP4(ClearAccum, F, F, F, F)   /* GL_ACCUM_BUFFER_BIT */
+DL_OP2(Accum, E, F)
 DL_OP1(Clear, BF)
 DL_OP1(ClearIndex, FU)        /* Mesa replays the float's bits as a number */
 DL_OP1(IndexMask, U)

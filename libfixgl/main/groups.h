@@ -32,6 +32,11 @@ void fgl_init_current(struct fgl_context *ctx);
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
 
+/* main/accum.c (GL_ACCUM_BUFFER_BIT) */
+void fgl_init_accum(struct fgl_context *ctx);
+/* glClear's GL_ACCUM_BUFFER_BIT: the scissored bounds to the clear value */
+void fgl_clear_accum_buffer(struct fgl_context *ctx);
+
 /* main/blend.c (GL_COLOR_BUFFER_BIT: alpha test, blending, logic op,
  * colour mask) */
 void fgl_init_blend(struct fgl_context *ctx);
