@@ -67,6 +67,7 @@ enum dl_opcode {
 #define DL_OP2(Name, A, B) DL_OP_##Name,
 #define DL_OP3(Name, A, B, C) DL_OP_##Name,
 #define DL_OP4(Name, A, B, C, D_) DL_OP_##Name,
+#define DL_OP5(Name, A, B, C, D_, E_) DL_OP_##Name,
 #define DL_OP6(Name, A, B, C, D_, E_, F_) DL_OP_##Name,
 #define DL_OPV0(Name, VT, N) DL_OP_##Name,
 #define DL_OPV1(Name, A, VT, N) DL_OP_##Name,
@@ -80,6 +81,7 @@ enum dl_opcode {
 #undef DL_OP2
 #undef DL_OP3
 #undef DL_OP4
+#undef DL_OP5
 #undef DL_OP6
 #undef DL_OPV0
 #undef DL_OPV1
@@ -652,6 +654,22 @@ static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsign
    bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
                         DL_CT_##C a2, DL_CT_##D_ a3)                            \
    DL_SAVE_BODY(Name, a0, a1, a2, a3)
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4)           \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 5);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         DL_PUT_##C(n[3], a2);                                                  \
+         DL_PUT_##D_(n[4], a3);                                                 \
+         DL_PUT_##E_(n[5], a4);                                                 \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4)             \
+   DL_SAVE_BODY(Name, a0, a1, a2, a3, a4)
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
    void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
                           DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4,           \
@@ -739,6 +757,7 @@ static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsign
 #undef DL_OP2
 #undef DL_OP3
 #undef DL_OP4
+#undef DL_OP5
 #undef DL_OP6
 #undef DL_OPV0
 #undef DL_OPV1
@@ -2019,6 +2038,11 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
          gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
                   DL_GET_##D_(n[4]));                                           \
          break;
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
+                  DL_GET_##D_(n[4]), DL_GET_##E_(n[5]));                        \
+         break;
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
       case DL_OP_##Name:                                                        \
          gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
@@ -2045,6 +2069,7 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
 #undef DL_OP2
 #undef DL_OP3
 #undef DL_OP4
+#undef DL_OP5
 #undef DL_OP6
 #undef DL_OPV0
 #undef DL_OPV1

@@ -43,6 +43,8 @@
 #define DL_OP2(Name, A, B) DL_PROTO(Name, DL_CT_##A, DL_CT_##B)
 #define DL_OP3(Name, A, B, C) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C)
 #define DL_OP4(Name, A, B, C, D_) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_)
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+   DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_, DL_CT_##E_)
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                        \
    DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_, DL_CT_##E_, DL_CT_##F_)
 #define DL_OPV0(Name, VT, N) DL_PROTO(Name, const DL_CT_##VT *, unsigned)
@@ -59,6 +61,7 @@
 #undef DL_OP2
 #undef DL_OP3
 #undef DL_OP4
+#undef DL_OP5
 #undef DL_OP6
 #undef DL_OPV0
 #undef DL_OPV1
