@@ -308,6 +308,7 @@ struct fgl_eval_map1 {
 };
 struct fgl_eval_map2 {
    GLint Uorder, Vorder;
+   bool NoPoints;        /* glMap2 without points: Mesa's Points == NULL */
    float u1, u2, du, v1, v2, dv;
    float Points[FGL_MAX_EVAL_ORDER * FGL_MAX_EVAL_ORDER * 5];
 };

@@ -443,6 +443,81 @@ static void dlist(fc_h *h)
     fc_capture(h);
 }
 
+/* glMap1/glMap2 compiled (the points copied at compile time, with the
+ * packed stride at replay; a bad stride is not an error when the list
+ * runs), glEvalCoord and glEvalPoint compiled outside and inside
+ * glBegin/glEnd mixed with glVertex, GL_COMPILE_AND_EXECUTE. */
+static void dlist_maps(fc_h *h)
+{
+    setup();
+    GLfloat pts[4][5];
+    for (int i = 0; i < 4; i++) {
+        pts[i][0] = -0.9f + 0.6f * (float)i;
+        pts[i][1] = (i & 1) ? 0.8f : -0.6f;
+        pts[i][2] = 0.0f;
+        pts[i][3] = pts[i][4] = 55.0f;
+    }
+    GLuint l = glGenLists(4);
+    glNewList(l, GL_COMPILE);
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 5, 4, &pts[0][0]);
+    glMap1f(GL_MAP1_COLOR_4, 0.0f, 1.0f, 2, 2, &pts[0][0]);   /* stride < 4 */
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 31, &pts[0][0]);  /* error at replay */
+    glEndList();
+    fc_error(h, "after compile 1");
+    for (int i = 0; i < 4; i++)
+        pts[i][1] = 0.0f;                /* the list keeps its copy */
+    get_all(h, "before call", GL_MAP1_VERTEX_3);
+    glCallList(l);
+    fc_error(h, "after call 1");
+    get_all(h, "after call v3", GL_MAP1_VERTEX_3);
+    get_all(h, "after call c4", GL_MAP1_COLOR_4);
+    glEnable(GL_MAP1_VERTEX_3);
+
+    static const GLdouble sq[2][2][3] = {
+        { { -0.9, -0.9, 0.0 }, { -0.9, 0.9, 0.0 } },
+        { { 0.9, -0.9, 0.0 }, { 0.9, 0.9, 0.0 } },
+    };
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 6, 2, 0.0, 1.0, 3, 2, &sq[0][0][0]);
+    glEnable(GL_MAP2_VERTEX_3);
+    glColor3f(0.0f, 0.0f, 1.0f);
+    glEvalCoord1f(0.5f);             /* outside glBegin/glEnd */
+    glBegin(GL_POINTS);
+    glEvalCoord2f(0.25f, 0.25f);
+    glEvalPoint2(1, 0);
+    glEnd();
+    glEndList();
+    fc_error(h, "after compile 2");
+    get_all(h, "after compile 2", GL_MAP2_VERTEX_3);
+
+    glNewList(l + 2, GL_COMPILE);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glBegin(GL_LINE_STRIP);
+    glVertex2f(-0.9f, 0.9f);
+    glEvalCoord1f(0.3f);
+    glVertex2f(0.0f, 0.95f);
+    glEvalCoord1d(0.9);
+    glEvalPoint1(3);
+    glVertex2f(0.9f, -0.9f);
+    glEnd();
+    glBegin(GL_POINTS);
+    glEvalPoint1(1);
+    glEvalPoint1(2);
+    glEnd();
+    glEndList();
+    glMapGrid1f(4, 0.0f, 1.0f);
+    glCallList(l + 2);
+    glCallList(l + 1);
+    glNewList(l + 3, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 2, &pts[0][0]);  /* compile error */
+    glEnd();
+    glEndList();
+    glCallList(l + 3);
+    fc_error(h, "after calls");
+    fc_capture(h);
+}
+
 const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/curve_orders", 64, 64, 1, "eval", curve_orders),
     FC_CASE_RGBA("eval/mesh1_modes", 48, 48, 1, "eval", mesh1_modes),
@@ -454,5 +529,6 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/errors", 8, 8, 0, "eval errors query", errors),
     FC_CASE_RGBA("eval/push_pop", 32, 32, 1, "eval attrib", push_pop),
     FC_CASE_RGBA("eval/dlist", 48, 48, 1, "eval dlist", dlist),
+    FC_CASE_RGBA("eval/dlist_maps", 48, 48, 1, "eval dlist", dlist_maps),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

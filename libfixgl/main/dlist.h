@@ -106,6 +106,17 @@ void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint s
                                   GLuint end, GLsizei count, GLenum type,
                                   const GLvoid *indices);
 void fgl_save_call_list(struct fgl_context *ctx, GLuint list);
+/* the evaluator commands (main/eval.c); these return whether the entry
+ * point goes on to execute, as the FGL_SAVE functions do */
+bool fgl_save_map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint stride, GLint order, const GLfloat *pf, const GLdouble *pd);
+bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride,
+                   GLint vorder, const GLfloat *pf, const GLdouble *pd);
+bool fgl_save_eval_coord1(struct fgl_context *ctx, GLfloat u);
+bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v);
+bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i);
+bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j);
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
 
 /* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,

@@ -52,6 +52,14 @@ static int map2_index(GLenum target)
           (int)(target - GL_MAP2_COLOR_4) : -1;
 }
 
+unsigned fgl_eval_components(GLenum target)
+{
+   int t = map1_index(target);
+   if (t < 0)
+      t = map2_index(target);
+   return t < 0 ? 0 : eval_components[t];
+}
+
 bool *fgl_eval_cap_flag(struct fgl_context *ctx, GLenum cap)
 {
    int i;
@@ -103,12 +111,9 @@ void fgl_init_eval(struct fgl_context *ctx)
 /* ---- glMap1, glMap2 ---- */
 
 /* map1 [S: main/eval.c:map1]; points are floats or doubles */
-static void map1(GLenum target, GLfloat u1, GLfloat u2, GLint ustride,
-                 GLint uorder, const GLfloat *pf, const GLdouble *pd)
+static void map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                 GLint ustride, GLint uorder, const GLfloat *pf, const GLdouble *pd)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
    /* not in Mesa's begin/end dispatch table */
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (u1 == u2) {
@@ -123,13 +128,13 @@ static void map1(GLenum target, GLfloat u1, GLfloat u2, GLint ustride,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   const int t = map1_index(target);
-   if (t < 0) {
-      /* _mesa_evaluator_components == 0 */
+   /* _mesa_evaluator_components knows the GL_MAP2_* targets too: they
+    * fail only after the stride and active texture checks (get_1d_map) */
+   const int k = (int)fgl_eval_components(target);
+   if (k == 0) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   const int k = (int)eval_components[t];
    if (ustride < k) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -137,6 +142,11 @@ static void map1(GLenum target, GLfloat u1, GLfloat u2, GLint ustride,
    if (ctx->Texture.CurrentUnit != 0) {
       /* OpenGL 1.2.1 spec, F.2.13 */
       fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const int t = map1_index(target);
+   if (t < 0) {
+      fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
    FGL_FLUSH_VERTICES(ctx, 0);
@@ -154,13 +164,10 @@ static void map1(GLenum target, GLfloat u1, GLfloat u2, GLint ustride,
 }
 
 /* map2 [S: main/eval.c:map2] */
-static void map2(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder,
-                 GLfloat v1, GLfloat v2, GLint vstride, GLint vorder,
-                 const GLfloat *pf, const GLdouble *pd)
+static void map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                 GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride,
+                 GLint vorder, const GLfloat *pf, const GLdouble *pd)
 {
-   GET_CURRENT_CONTEXT(ctx);
-   if (!ctx)
-      return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (u1 == u2 || v1 == v2) {
       fgl_error(ctx, GL_INVALID_VALUE);
@@ -172,14 +179,13 @@ static void map2(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uor
       return;
    }
    /* map2 does not check points: _mesa_copy_map_points2* return NULL
-    * and the map keeps no points; fixgl then keeps the old ones (see
-    * ORACLE-NOTES.md "Evaluators") */
-   const int t = map2_index(target);
-   if (t < 0) {
+    * and the map keeps no points (glGetMap GL_COEFF then writes nothing;
+    * evaluating it would crash the oracle) */
+   const int k = (int)fgl_eval_components(target);
+   if (k == 0) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   const int k = (int)eval_components[t];
    if (ustride < k || vstride < k) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -188,8 +194,14 @@ static void map2(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uor
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   const int t = map2_index(target);
+   if (t < 0) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
    FGL_FLUSH_VERTICES(ctx, 0);
    struct fgl_eval_map2 *map = &ctx->EvalMap.Map2[t];
+   map->NoPoints = !pf && !pd;
    if (pf || pd) {
       /* _mesa_copy_map_points2{f,d}: u-major, then v, packed */
       float *p = map->Points;
@@ -214,28 +226,55 @@ static void map2(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uor
 void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride,
                         GLint order, const GLfloat *points)
 {
-   map1(target, u1, u2, stride, order, points, NULL);
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag &&
+       !fgl_save_map1(ctx, target, u1, u2, stride, order, points, NULL))
+      return;
+   map1(ctx, target, u1, u2, stride, order, points, NULL);
 }
 
 void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride,
                         GLint order, const GLdouble *points)
 {
-   map1(target, (GLfloat)u1, (GLfloat)u2, stride, order, NULL, points);
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag &&
+       !fgl_save_map1(ctx, target, (GLfloat)u1, (GLfloat)u2, stride, order, NULL, points))
+      return;
+   map1(ctx, target, (GLfloat)u1, (GLfloat)u2, stride, order, NULL, points);
 }
 
 void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride,
                         GLint uorder, GLfloat v1, GLfloat v2, GLint vstride,
                         GLint vorder, const GLfloat *points)
 {
-   map2(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points, NULL);
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag &&
+       !fgl_save_map2(ctx, target, u1, u2, ustride, uorder, v1, v2, vstride, vorder,
+                      points, NULL))
+      return;
+   map2(ctx, target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points, NULL);
 }
 
 void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride,
                         GLint uorder, GLdouble v1, GLdouble v2, GLint vstride,
                         GLint vorder, const GLdouble *points)
 {
-   map2(target, (GLfloat)u1, (GLfloat)u2, ustride, uorder,
-        (GLfloat)v1, (GLfloat)v2, vstride, vorder, NULL, points);
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   const GLfloat fu1 = (GLfloat)u1, fu2 = (GLfloat)u2;
+   const GLfloat fv1 = (GLfloat)v1, fv2 = (GLfloat)v2;
+   if (ctx->CompileFlag &&
+       !fgl_save_map2(ctx, target, fu1, fu2, ustride, uorder, fv1, fv2, vstride, vorder,
+                      NULL, points))
+      return;
+   map2(ctx, target, fu1, fu2, ustride, uorder, fv1, fv2, vstride, vorder, NULL, points);
 }
 
 /* ---- glGetMap ---- */
@@ -270,7 +309,8 @@ static void get_map(GLenum target, GLenum query, void *out, enum get_type type)
          n = (unsigned)m1->Order * comps;
       } else {
          data = m2->Points;
-         n = (unsigned)(m2->Uorder * m2->Vorder) * comps;
+         /* no points (glMap2 with NULL): nothing written */
+         n = m2->NoPoints ? 0 : (unsigned)(m2->Uorder * m2->Vorder) * comps;
       }
       integer_rounded = true;
       break;
@@ -547,6 +587,8 @@ void GLAPIENTRY glEvalCoord1f(GLfloat u)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && !fgl_save_eval_coord1(ctx, u))
+      return;
    eval_coord1(ctx, u);
 }
 
@@ -569,6 +611,8 @@ void GLAPIENTRY glEvalCoord2f(GLfloat u, GLfloat v)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_eval_coord2(ctx, u, v))
       return;
    eval_coord2(ctx, u, v);
 }
@@ -594,6 +638,8 @@ void GLAPIENTRY glEvalPoint1(GLint i)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && !fgl_save_eval_point1(ctx, i))
+      return;
    const GLfloat du = (ctx->Eval.MapGrid1u2 - ctx->Eval.MapGrid1u1) /
                       (GLfloat)ctx->Eval.MapGrid1un;
    const GLfloat u = i * du + ctx->Eval.MapGrid1u1;
@@ -604,6 +650,8 @@ void GLAPIENTRY glEvalPoint2(GLint i, GLint j)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_eval_point2(ctx, i, j))
       return;
    const GLfloat du = (ctx->Eval.MapGrid2u2 - ctx->Eval.MapGrid2u1) /
                       (GLfloat)ctx->Eval.MapGrid2un;

@@ -87,6 +87,8 @@ void fgl_init_point(struct fgl_context *ctx);
 void fgl_init_eval(struct fgl_context *ctx);
 /* the flag of an evaluator capability (GL_MAPn_*, GL_AUTO_NORMAL), or NULL */
 bool *fgl_eval_cap_flag(struct fgl_context *ctx, GLenum cap);
+/* _mesa_evaluator_components: 0 for a target that is no map */
+unsigned fgl_eval_components(GLenum target);
 void fgl_init_line(struct fgl_context *ctx);
 
 /* main/viewport.c (GL_VIEWPORT_BIT) */
