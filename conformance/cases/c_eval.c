@@ -518,6 +518,53 @@ static void dlist_maps(fc_h *h)
     fc_capture(h);
 }
 
+/* GL_COMPILE_AND_EXECUTE: the oracle runs glEvalMesh and glEvalCoord
+ * through the current (save) dispatch while compiling, so their glBegin,
+ * glEnd and the evaluated glVertex calls are compiled into the list as
+ * well, and the list draws them again when called. */
+static void dlist_compile_execute(fc_h *h)
+{
+    setup();
+    static const GLfloat c[3][3] = { { -0.9f, -0.2f, 0 }, { 0.0f, 0.9f, 0 }, { 0.9f, -0.2f, 0 } };
+    static const GLfloat col[2][4] = { { 1, 0, 0, 1 }, { 0, 1, 1, 1 } };
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 3, &c[0][0]);
+    glMap1f(GL_MAP1_COLOR_4, 0.0f, 1.0f, 4, 2, &col[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glEnable(GL_MAP1_COLOR_4);
+    glMapGrid1f(6, 0.0f, 1.0f);
+    GLuint l = glGenLists(3);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glNewList(l, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_LINE_STRIP);
+    glEvalCoord1f(0.0f);
+    glEvalCoord1f(0.4f);
+    glVertex2f(0.2f, -0.9f);
+    glEvalCoord1f(1.0f);
+    glEnd();
+    glEndList();
+    fc_error(h, "list 1");
+    fc_get_float(h, "color after list 1", GL_CURRENT_COLOR, 4);
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    glEvalMesh1(GL_LINE, 1, 5);
+    glEndList();
+    fc_error(h, "list 2");
+    glNewList(l + 2, GL_COMPILE_AND_EXECUTE);
+    glEvalPoint1(2);
+    glEvalCoord1f(0.9f);
+    glEndList();
+    fc_error(h, "list 3");
+    glMatrixMode(GL_MODELVIEW);
+    glTranslatef(0.0f, -0.5f, 0.0f);
+    glColor3f(0.5f, 0.5f, 1.0f);
+    glCallList(l);
+    glTranslatef(0.0f, 0.2f, 0.0f);
+    glCallList(l + 1);
+    glCallList(l + 2);
+    fc_error(h, "calls");
+    fc_get_float(h, "color after calls", GL_CURRENT_COLOR, 4);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/curve_orders", 64, 64, 1, "eval", curve_orders),
     FC_CASE_RGBA("eval/mesh1_modes", 48, 48, 1, "eval", mesh1_modes),
@@ -530,5 +577,6 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/push_pop", 32, 32, 1, "eval attrib", push_pop),
     FC_CASE_RGBA("eval/dlist", 48, 48, 1, "eval dlist", dlist),
     FC_CASE_RGBA("eval/dlist_maps", 48, 48, 1, "eval dlist", dlist_maps),
+    FC_CASE_RGBA("eval/dlist_compile_execute", 48, 48, 1, "eval dlist", dlist_compile_execute),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

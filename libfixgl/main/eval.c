@@ -507,7 +507,9 @@ static void eval_coord1(struct fgl_context *ctx, GLfloat u)
       float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
       const unsigned sz = eval_components[vertex];
       fgl_horner_bezier_curve(map->Points, v, uu, sz, (unsigned)map->Order);
-      fgl_vbo_attr(ctx, FGL_ATTR_POS, sz, v[0], v[1], v[2], v[3]);
+      /* CALL_Vertex*fv(ctx->CurrentServerDispatch): while a list is
+       * compiled (GL_COMPILE_AND_EXECUTE) the vertex is compiled too */
+      fgl_attr(ctx, FGL_ATTR_POS, sz, v[0], v[1], v[2], v[3]);
    }
    memcpy(ctx->Vbo.current, saved, sizeof(saved));
 }
@@ -577,7 +579,7 @@ static void eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v)
       }
       /* Vertex4fv when the position's format size is 4, else Vertex3fv */
       const unsigned psz = ctx->Vbo.attr_size[FGL_ATTR_POS] == 4 ? 4 : 3;
-      fgl_vbo_attr(ctx, FGL_ATTR_POS, psz, p[0], p[1], p[2], psz == 4 ? p[3] : 1.0f);
+      fgl_attr(ctx, FGL_ATTR_POS, psz, p[0], p[1], p[2], psz == 4 ? p[3] : 1.0f);
    }
    memcpy(ctx->Vbo.current, saved, sizeof(saved));
 }
@@ -686,15 +688,18 @@ void GLAPIENTRY glEvalMesh1(GLenum mode, GLint i1, GLint i2)
       return;
    const GLfloat du = ctx->Eval.MapGrid1du;
    GLfloat u = ctx->Eval.MapGrid1u1 + i1 * du;
-   fgl_exec_begin(ctx, prim);
+   /* CALL_Begin/EvalCoord1f/End(ctx->CurrentServerDispatch): the entry
+    * points, which compile them as well under GL_COMPILE_AND_EXECUTE */
+   glBegin(prim);
    for (GLint i = i1; i <= i2; i++, u += du)
-      eval_coord1(ctx, u);
-   fgl_exec_end(ctx);
+      glEvalCoord1f(u);
+   glEnd();
 }
 
 /* [S: main/draw.c:_mesa_EvalMesh2]: points in one GL_POINTS, lines as a
  * GL_LINE_STRIP per row then per column, fill as a GL_TRIANGLE_STRIP per
- * row of (u, v), (u, v + dv) */
+ * row of (u, v), (u, v + dv); through the entry points, as for
+ * glEvalMesh1 */
 void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -722,34 +727,34 @@ void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
 
    switch (mode) {
    case GL_POINT:
-      fgl_exec_begin(ctx, GL_POINTS);
+      glBegin(GL_POINTS);
       for (v = v1, j = j1; j <= j2; j++, v += dv)
          for (u = u1, i = i1; i <= i2; i++, u += du)
-            eval_coord2(ctx, u, v);
-      fgl_exec_end(ctx);
+            glEvalCoord2f(u, v);
+      glEnd();
       break;
    case GL_LINE:
       for (v = v1, j = j1; j <= j2; j++, v += dv) {
-         fgl_exec_begin(ctx, GL_LINE_STRIP);
+         glBegin(GL_LINE_STRIP);
          for (u = u1, i = i1; i <= i2; i++, u += du)
-            eval_coord2(ctx, u, v);
-         fgl_exec_end(ctx);
+            glEvalCoord2f(u, v);
+         glEnd();
       }
       for (u = u1, i = i1; i <= i2; i++, u += du) {
-         fgl_exec_begin(ctx, GL_LINE_STRIP);
+         glBegin(GL_LINE_STRIP);
          for (v = v1, j = j1; j <= j2; j++, v += dv)
-            eval_coord2(ctx, u, v);
-         fgl_exec_end(ctx);
+            glEvalCoord2f(u, v);
+         glEnd();
       }
       break;
    default:
       for (v = v1, j = j1; j < j2; j++, v += dv) {
-         fgl_exec_begin(ctx, GL_TRIANGLE_STRIP);
+         glBegin(GL_TRIANGLE_STRIP);
          for (u = u1, i = i1; i <= i2; i++, u += du) {
-            eval_coord2(ctx, u, v);
-            eval_coord2(ctx, u, v + dv);
+            glEvalCoord2f(u, v);
+            glEvalCoord2f(u, v + dv);
          }
-         fgl_exec_end(ctx);
+         glEnd();
       }
       break;
    }
