@@ -565,6 +565,64 @@ static void dlist_compile_execute(fc_h *h)
     fc_capture(h);
 }
 
+/* The slot an attribute gets when glEvalCoord adds it to the vertex
+ * format keeps what an earlier format left there: the evaluated colour
+ * is restored to that stale value for the following glVertex calls and
+ * after glEnd; normals and colours of different formats, a grown colour
+ * (3 -> 4 components), and glMap2 without points (queried only). */
+static void stale_slots(fc_h *h)
+{
+    setup();
+    glEnable(GL_DEPTH_TEST);
+    /* a batch with colour (offset 0) and normal (offset 4) */
+    glBegin(GL_TRIANGLES);
+    glColor4f(0.25f, 0.5f, 0.75f, 0.625f);
+    glNormal3f(0.125f, 0.375f, 0.875f);
+    glVertex2f(-1.0f, -1.0f);
+    glVertex2f(-0.8f, -1.0f);
+    glVertex2f(-1.0f, -0.8f);
+    glEnd();
+    glDepthFunc(GL_LEQUAL);          /* flushes: the format is emptied */
+    static const GLfloat line[2][3] = { { -0.9f, -0.5f, 0.0f }, { 0.9f, 0.6f, 0.0f } };
+    static const GLfloat col[2][4] = { { 1, 0, 0, 1 }, { 0, 1, 0, 1 } };
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 2, &line[0][0]);
+    glMap1f(GL_MAP1_COLOR_4, 0.0f, 1.0f, 4, 2, &col[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glEnable(GL_MAP1_COLOR_4);
+    /* normal first (offset 0..2), then the colour joins at 3..6 */
+    glBegin(GL_LINE_STRIP);
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glVertex2f(-0.9f, 0.9f);
+    glEvalCoord1f(0.5f);
+    glVertex2f(0.9f, 0.9f);
+    glEnd();
+    fc_get_float(h, "color after normal format", GL_CURRENT_COLOR, 4);
+    fc_get_float(h, "normal after", GL_CURRENT_NORMAL, 3);
+    glDepthFunc(GL_LESS);
+    /* a 3-component colour grown to 4 by the map */
+    glBegin(GL_LINE_STRIP);
+    glColor3f(0.0f, 0.0f, 1.0f);
+    glVertex2f(-0.9f, 0.0f);
+    glEvalCoord1f(0.25f);
+    glVertex2f(0.9f, 0.0f);
+    glEnd();
+    fc_get_float(h, "color after grown", GL_CURRENT_COLOR, 4);
+    /* auto normal only (no vertex map): the normal joins the format */
+    glDisable(GL_MAP1_VERTEX_3);
+    glEnable(GL_AUTO_NORMAL);
+    glBegin(GL_POINTS);
+    glColor3f(1.0f, 1.0f, 0.0f);
+    glEvalCoord2f(0.5f, 0.5f);
+    glVertex2f(0.5f, -0.7f);
+    glEnd();
+    fc_get_float(h, "normal after auto", GL_CURRENT_NORMAL, 3);
+    fc_capture(h);
+    glMap2f(GL_MAP2_INDEX, 0.0f, 1.0f, 1, 2, 0.0f, 1.0f, 2, 2, NULL);
+    fc_error(h, "map2 null");
+    get_all(h, "map2 null", GL_MAP2_INDEX);
+    fc_error(h, "end");
+}
+
 const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/curve_orders", 64, 64, 1, "eval", curve_orders),
     FC_CASE_RGBA("eval/mesh1_modes", 48, 48, 1, "eval", mesh1_modes),
@@ -577,6 +635,7 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/push_pop", 32, 32, 1, "eval attrib", push_pop),
     FC_CASE_RGBA("eval/dlist", 48, 48, 1, "eval dlist", dlist),
     FC_CASE_RGBA("eval/dlist_maps", 48, 48, 1, "eval dlist", dlist_maps),
+    FC_CASE_RGBA("eval/stale_slots", 32, 32, 1, "eval", stale_slots),
     FC_CASE_RGBA("eval/dlist_compile_execute", 48, 48, 1, "eval dlist", dlist_compile_execute),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };
