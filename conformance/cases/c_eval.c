@@ -623,6 +623,40 @@ static void stale_slots(fc_h *h)
     fc_error(h, "end");
 }
 
+/* Before any glMapGrid the mesh steps are 0 (Mesa never initialises
+ * MapGrid*du/dv): every mesh vertex is at u1 + i1 * 0; glEvalPoint
+ * computes its step from the grid. */
+static void grid_initial(fc_h *h)
+{
+    setup();
+    static const GLfloat c[3][3] = { { -0.9f, -0.9f, 0 }, { 0.0f, 0.9f, 0 }, { 0.9f, -0.9f, 0 } };
+    glMap1f(GL_MAP1_VERTEX_3, -1.0f, 1.0f, 3, 3, &c[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glPointSize(3.0f);
+    glColor3f(1.0f, 0.0f, 0.0f);
+    glEvalMesh1(GL_POINT, 0, 4);
+    glEvalMesh1(GL_LINE, 0, 4);
+    glColor3f(0.0f, 1.0f, 0.0f);
+    glBegin(GL_POINTS);
+    glEvalPoint1(1);
+    glEvalPoint1(-1);
+    glEnd();
+    GLfloat sq[2][2][3] = {
+        { { -0.5f, -0.5f, 0.0f }, { -0.5f, 0.5f, 0.0f } },
+        { { 0.5f, -0.5f, 0.0f }, { 0.5f, 0.5f, 0.0f } },
+    };
+    glMap2f(GL_MAP2_VERTEX_3, 0.0f, 1.0f, 6, 2, 0.0f, 1.0f, 3, 2, &sq[0][0][0]);
+    glEnable(GL_MAP2_VERTEX_3);
+    glColor3f(0.0f, 0.0f, 1.0f);
+    glEvalMesh2(GL_FILL, 0, 3, 0, 3);
+    glEvalMesh2(GL_POINT, 0, 3, 0, 3);
+    glBegin(GL_POINTS);
+    glEvalPoint2(1, 0);
+    glEnd();
+    fc_capture(h);
+    fc_error(h, "end");
+}
+
 const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/curve_orders", 64, 64, 1, "eval", curve_orders),
     FC_CASE_RGBA("eval/mesh1_modes", 48, 48, 1, "eval", mesh1_modes),
@@ -635,6 +669,7 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/push_pop", 32, 32, 1, "eval attrib", push_pop),
     FC_CASE_RGBA("eval/dlist", 48, 48, 1, "eval dlist", dlist),
     FC_CASE_RGBA("eval/dlist_maps", 48, 48, 1, "eval dlist", dlist_maps),
+    FC_CASE_RGBA("eval/grid_initial", 32, 32, 1, "eval", grid_initial),
     FC_CASE_RGBA("eval/stale_slots", 32, 32, 1, "eval", stale_slots),
     FC_CASE_RGBA("eval/dlist_compile_execute", 48, 48, 1, "eval dlist", dlist_compile_execute),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },

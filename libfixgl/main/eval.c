@@ -15,7 +15,6 @@
  * stored, queried and enabled exactly, and their evaluated values are
  * dropped until the attribute lands.
  */
-#include <limits.h>
 #include <math.h>
 #include <string.h>
 
