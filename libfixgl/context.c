@@ -104,6 +104,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_viewport(ctx);
    fgl_init_feedback(ctx);
    init_pending_state(ctx);
+   fgl_init_eval(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }

@@ -20,6 +20,7 @@ static const fc_case *const groups[] = {
     fc_cases_select,
     fc_cases_accum,
     fc_cases_query_walk,
+    fc_cases_eval,
 };
 
 size_t fc_case_count(void)
