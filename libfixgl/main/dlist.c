@@ -76,19 +76,7 @@ enum dl_opcode {
 #define DL_CUSTOM1 DL_OP1
 #define DL_CUSTOMV2 DL_OPV2
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP5
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
    DL_OP_ATTR,             /* OPCODE_ATTR_{1,2,3,4}F_NV: attr, size, 4 values */
    DL_OP_MAP1,             /* target, u1, u2, stride, order, count, points */
    DL_OP_MAP2,             /* target, u1, u2, v1, v2, ustride, vstride,
@@ -764,19 +752,7 @@ static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsign
       }                                                                         \
    }
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP5
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
 
 /* ------------------------------------------------------------------ */
 /* The vertex-list compiler [S: vbo/vbo_save_api.c]                    */
@@ -902,33 +878,9 @@ static void try_prim_conversion(GLenum *mode, unsigned count)
 /* vbo_merge_draws (in_dlist) */
 static bool merge_draws(struct save_prim *p0, const struct save_prim *p1)
 {
-   if (p0->mode != p1->mode || p0->start + p0->count != p1->start)
+   if (p0->mode != p1->mode || p0->start + p0->count != p1->start ||
+       !fgl_vbo_prim_mergeable(p0->mode, p0->count))
       return false;
-   switch (p0->mode) {
-   case GL_POINTS:
-      break;
-   case GL_LINES:
-      if (p0->count % 2)
-         return false;
-      break;
-   case GL_TRIANGLES:
-      if (p0->count % 3)
-         return false;
-      break;
-   case GL_QUADS:
-   case GL_LINES_ADJACENCY:
-      if (p0->count % 4)
-         return false;
-      break;
-   case GL_TRIANGLES_ADJACENCY:
-      if (p0->count % 6)
-         return false;
-      break;
-   default:
-      /* strips, loops, fans, polygons; lines strips and loops also
-       * because a begin restarts their stipple */
-      return false;
-   }
    p0->count += p1->count;
    p0->end = p1->end;
    return true;
@@ -2185,19 +2137,7 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
 #define DL_CUSTOM1 DL_OP1
 #define DL_CUSTOMV2 DL_OPV2
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP5
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
       case DL_OP_ATTR: {
          /* glVertexAttrib{1,2,3,4}fvNV of the stored values */
          const unsigned sz = n[2].u;

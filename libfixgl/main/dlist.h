@@ -56,19 +56,7 @@
 #define DL_CUSTOMV2(Name, A, B, VT, N)                                          \
    DL_PUT_PROTO(Name, DL_CT_##A, DL_CT_##B, const DL_CT_##VT *, unsigned)
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP5
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
 #undef DL_PROTO
 #undef DL_PUT_PROTO
 #undef DL_SAVE_PROTO

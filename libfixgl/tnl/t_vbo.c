@@ -428,26 +428,9 @@ void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
  * (ORACLE-NOTES.md "Vertex batching"). */
 static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cur)
 {
-   if (prev->mode != cur->mode || prev->start + prev->count != cur->start)
+   if (prev->mode != cur->mode || prev->start + prev->count != cur->start ||
+       !fgl_vbo_prim_mergeable(prev->mode, prev->count))
       return false;
-   switch (prev->mode) {
-   case GL_POINTS:
-      break;
-   case GL_LINES:
-      if (prev->count % 2)
-         return false;
-      break;
-   case GL_TRIANGLES:
-      if (prev->count % 3)
-         return false;
-      break;
-   case GL_QUADS:
-      if (prev->count % 4)
-         return false;
-      break;
-   default:
-      return false;
-   }
    prev->count += cur->count;
    prev->end = cur->end;
    return true;

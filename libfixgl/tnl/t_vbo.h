@@ -23,6 +23,30 @@
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
 
+/* vbo_merge_draws' test of the earlier draw [S: vbo/vbo_exec.c:
+ * vbo_merge_draws], shared by immediate mode and the display-list
+ * compiler: a draw of independent primitives with no partial tail can take
+ * the next draw of its mode; strips, loops, fans and polygons never (line
+ * strips and loops also because a begin restarts their stipple). */
+static inline bool fgl_vbo_prim_mergeable(GLenum mode, unsigned count)
+{
+   switch (mode) {
+   case GL_POINTS:
+      return true;
+   case GL_LINES:
+      return count % 2 == 0;
+   case GL_TRIANGLES:
+      return count % 3 == 0;
+   case GL_QUADS:
+   case GL_LINES_ADJACENCY:
+      return count % 4 == 0;
+   case GL_TRIANGLES_ADJACENCY:
+      return count % 6 == 0;
+   default:
+      return false;
+   }
+}
+
 struct fgl_context;
 
 /* What a flush has to do (Mesa's ctx->Driver.NeedFlush bits). */
