@@ -92,6 +92,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_texgen(ctx);
    fgl_init_array(ctx);
    fgl_init_color(ctx);
+   fgl_init_accum(ctx);
    fgl_init_depth(ctx);
    fgl_init_fog(ctx);
    fgl_init_hint(ctx);
@@ -106,6 +107,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_viewport(ctx);
    fgl_init_feedback(ctx);
    init_pending_state(ctx);
+   fgl_init_eval(ctx);
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }

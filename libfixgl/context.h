@@ -246,8 +246,7 @@ struct fgl_pixelstore {
 
 #define FGL_MAX_CLIP_PLANES 8         /* Const.MaxClipPlanes with GLSL >= 1.30 */
 
-/* GL_ACCUM_BUFFER_BIT: the accumulation buffer is not implemented (OSMesa
- * gives the oracle none either); only its clear value exists */
+/* GL_ACCUM_BUFFER_BIT (main/accum.c) */
 struct fgl_accum_attrib {
    float ClearColor[4];     /* glClearAccum, clamped to [-1, 1] */
 };
@@ -286,9 +285,37 @@ struct fgl_pixel_attrib {
  * stored with the pending capabilities, main/enable.c) */
 struct fgl_eval_attrib {
    GLint MapGrid1un;
-   float MapGrid1u1, MapGrid1u2;
+   float MapGrid1u1, MapGrid1u2, MapGrid1du;
    GLint MapGrid2un, MapGrid2vn;
-   float MapGrid2u1, MapGrid2u2, MapGrid2v1, MapGrid2v2;
+   float MapGrid2u1, MapGrid2u2, MapGrid2du;
+   float MapGrid2v1, MapGrid2v2, MapGrid2dv;
+};
+
+/* The evaluator maps (main/eval.c) [S: main/mtypes.h, gl_1d_map,
+ * gl_2d_map, gl_evaluators]: indexed by target - GL_MAP1_COLOR_4 and
+ * target - GL_MAP2_COLOR_4.  The control points are Mesa's float copy,
+ * packed (order x components); a 2D map keeps room after them for the
+ * scratch values of the Horner and de Casteljau evaluation
+ * (_mesa_copy_map_points2f's hsize/dsize). The enables (GL_MAPn_*,
+ * GL_AUTO_NORMAL) are Mesa's gl_eval_attrib flags, saved by GL_EVAL_BIT
+ * through attrib.c's cap list. */
+#define FGL_EVAL_TARGETS 9
+struct fgl_eval_map1 {
+   GLint Order;
+   float u1, u2, du;
+   float Points[FGL_MAX_EVAL_ORDER * 4];
+};
+struct fgl_eval_map2 {
+   GLint Uorder, Vorder;
+   bool NoPoints;        /* glMap2 without points: Mesa's Points == NULL */
+   float u1, u2, du, v1, v2, dv;
+   float Points[FGL_MAX_EVAL_ORDER * FGL_MAX_EVAL_ORDER * 5];
+};
+struct fgl_eval_maps {
+   struct fgl_eval_map1 Map1[FGL_EVAL_TARGETS];
+   struct fgl_eval_map2 Map2[FGL_EVAL_TARGETS];
+   bool Map1Enabled[FGL_EVAL_TARGETS], Map2Enabled[FGL_EVAL_TARGETS];
+   bool AutoNormal;
 };
 
 /* The texture targets an object can be bound to in the oracle's
@@ -418,6 +445,11 @@ struct fgl_framebuffer {
    int AlphaBits;             /* 8, or 0 for the RGB formats */
    enum r_zs_format ZSFormat;
    uint8_t *Stencil;          /* stencil-only buffer (S8) when no depth */
+   /* the accumulation buffer (main/accum.c): RGBA int16 scaled by 32767
+    * (the oracle's R16G16B16A16_SNORM), same layout as Color; AccumBits
+    * 16, or 0 and Accum NULL without one */
+   int16_t *Accum;
+   int AccumBits;
    /* called by glFlush/glFinish to make the image visible to the owner */
    void (*FlushFront)(struct fgl_framebuffer *fb);
    /* Mesa's rb->defined of the front colour buffer: set when a draw or a
@@ -562,7 +594,7 @@ struct fgl_client_attrib_node {
 };
 
 /* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 27
+#define FGL_PENDING_CAPS 8
 
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit
@@ -639,6 +671,7 @@ struct fgl_context {
    struct fgl_pixel_attrib Pixel;
    struct fgl_pixelmaps PixelMaps;
    struct fgl_eval_attrib Eval;
+   struct fgl_eval_maps EvalMap;        /* main/eval.c */
    struct fgl_texture_attrib Texture;
    struct fgl_texture_objects TexObjects;
    struct fgl_multisample_attrib Multisample;

@@ -37,9 +37,12 @@ extern const fc_case fc_cases_points_lines[];
 extern const fc_case fc_cases_polygon_mode[];
 extern const fc_case fc_cases_varray[];
 extern const fc_case fc_cases_attrib[];
+extern const fc_case fc_cases_demo[];
 extern const fc_case fc_cases_dlist[];
 extern const fc_case fc_cases_select[];
 extern const fc_case fc_cases_texstate[];
+extern const fc_case fc_cases_accum[];
+extern const fc_case fc_cases_eval[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -11,6 +11,7 @@
 #include "fc_random_shared.h"
 #include "fc_rng.h"
 #include "fc_trace.h"
+#include "fc_emit.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -439,6 +440,7 @@ static void random_scene(fc_h *h)
     memset(&s, 0, sizeof s);
     fc_random_parse(c->name, &seed, &index);
     s.r = fc_rng_make(seed, index, 2);
+    fce_scene_begin(FCE_PLAIN, seed, index, index);
     s.w = c->width;
     s.h = c->height;
     s.space = (enum space)(fc_rng_below(&s.r, 100) < 45 ? SP_PIXEL : 1 + fc_rng_below(&s.r, 4));

@@ -37,6 +37,7 @@
 #include "fc_random_shared.h"
 #include "fc_rng.h"
 #include "fc_trace.h"
+#include "fc_emit.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -1331,6 +1332,7 @@ static void lit_scene(fc_h *h)
     *r = fc_rng_make(seed, index, 4);
     K = &L.k;
     *K = fc_rng_make(seed, index % FC_LIT_PROFILES, 5);
+    fce_scene_begin(FCE_LIT, seed, index, index % FC_LIT_PROFILES);
     L.s.w = c->width;
     L.s.h = c->height;
     k = (int)fc_rng_below(r, 100);

@@ -31,6 +31,7 @@
 #include "fc_rng.h"
 #include "fc_trace.h"
 #include "fc_trace_raster.h"
+#include "fc_emit.h"
 
 #include <inttypes.h>
 #include <math.h>
@@ -370,6 +371,7 @@ static void raster_scene(fc_h *h)
     fc_random_raster_parse(c->name, &seed, &index);
     fc_rng k = fc_rng_make(seed, index % FC_RASTER_PROFILES, 8);
     make_profile(&k, &p);
+    fce_scene_begin(FCE_RASTER, seed, index, index % FC_RASTER_PROFILES);
     s.r = fc_rng_make(seed, index, 7);
     s.w = c->width;
     s.h = c->height;

@@ -161,4 +161,9 @@ void GLAPIENTRY glClear(GLbitfield mask)
                             stencil_clear, (uint8_t)ctx->Stencil.Clear);
    if (color_quad || depth_quad || stencil_quad)
       clear_with_quad(ctx, color_quad, depth_quad, stencil_quad);
+   /* the accumulation buffer last, in software [S: state_tracker/
+    * st_cb_clear.c:st_Clear; main/accum.c:_mesa_clear_accum_buffer]; only
+    * in GL_RENDER mode [S: main/clear.c:clear] */
+   if ((mask & GL_ACCUM_BUFFER_BIT) && ctx->RenderMode == GL_RENDER)
+      fgl_clear_accum_buffer(ctx);
 }

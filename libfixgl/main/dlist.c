@@ -67,6 +67,7 @@ enum dl_opcode {
 #define DL_OP2(Name, A, B) DL_OP_##Name,
 #define DL_OP3(Name, A, B, C) DL_OP_##Name,
 #define DL_OP4(Name, A, B, C, D_) DL_OP_##Name,
+#define DL_OP5(Name, A, B, C, D_, E_) DL_OP_##Name,
 #define DL_OP6(Name, A, B, C, D_, E_, F_) DL_OP_##Name,
 #define DL_OPV0(Name, VT, N) DL_OP_##Name,
 #define DL_OPV1(Name, A, VT, N) DL_OP_##Name,
@@ -75,19 +76,15 @@ enum dl_opcode {
 #define DL_CUSTOM1 DL_OP1
 #define DL_CUSTOMV2 DL_OPV2
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
    DL_OP_ATTR,             /* OPCODE_ATTR_{1,2,3,4}F_NV: attr, size, 4 values */
+   DL_OP_MAP1,             /* target, u1, u2, stride, order, count, points */
+   DL_OP_MAP2,             /* target, u1, u2, v1, v2, ustride, vstride,
+                            * uorder, vorder, count, points */
+   DL_OP_EVAL_C1,          /* u */
+   DL_OP_EVAL_C2,          /* u, v */
+   DL_OP_EVAL_P1,          /* i */
+   DL_OP_EVAL_P2,          /* i, j */
    DL_OP_CALL_LIST,        /* list */
    DL_OP_CALL_LISTS,       /* n, type, pointer to a copy of the names */
    DL_OP_ERROR,            /* a compiled error */
@@ -252,6 +249,11 @@ struct fgl_dlist_state {
    struct display_list *current_list;   /* ListState.CurrentList */
    unsigned call_depth;            /* ListState.CallDepth */
    bool use_loopback;              /* ListState.Current.UseLoopback */
+   /* after dlist_fallback inside glBegin/glEnd, the rest of the primitive
+    * compiles into nodes: the attributes as save_Attr* nodes, glEnd as an
+    * END node [S: vbo_save_api.c:dlist_fallback installs
+    * _mesa_init_dispatch_save_begin_end's functions] */
+   bool opcode_fallback;
    GLenum shade_model;             /* ListState.Current.ShadeModel */
    /* ListState.ActiveAttribSize/ActiveMaterialSize and
     * CurrentAttrib/CurrentMaterial: what the compiler knows of the
@@ -652,6 +654,22 @@ static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsign
    bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
                         DL_CT_##C a2, DL_CT_##D_ a3)                            \
    DL_SAVE_BODY(Name, a0, a1, a2, a3)
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+   void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
+                          DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4)           \
+   {                                                                            \
+      union dl_node *n = alloc_node(ctx, DL_OP_##Name, 5);                      \
+      if (n) {                                                                  \
+         DL_PUT_##A(n[1], a0);                                                  \
+         DL_PUT_##B(n[2], a1);                                                  \
+         DL_PUT_##C(n[3], a2);                                                  \
+         DL_PUT_##D_(n[4], a3);                                                 \
+         DL_PUT_##E_(n[5], a4);                                                 \
+      }                                                                         \
+   }                                                                            \
+   bool fgl_save_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,    \
+                        DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4)             \
+   DL_SAVE_BODY(Name, a0, a1, a2, a3, a4)
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
    void fgl_dl_put_##Name(struct fgl_context *ctx, DL_CT_##A a0, DL_CT_##B a1,  \
                           DL_CT_##C a2, DL_CT_##D_ a3, DL_CT_##E_ a4,           \
@@ -734,18 +752,7 @@ static const GLdouble *get_vec_D(const union dl_node *src, GLdouble *tmp, unsign
       }                                                                         \
    }
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
 
 /* ------------------------------------------------------------------ */
 /* The vertex-list compiler [S: vbo/vbo_save_api.c]                    */
@@ -871,33 +878,9 @@ static void try_prim_conversion(GLenum *mode, unsigned count)
 /* vbo_merge_draws (in_dlist) */
 static bool merge_draws(struct save_prim *p0, const struct save_prim *p1)
 {
-   if (p0->mode != p1->mode || p0->start + p0->count != p1->start)
+   if (p0->mode != p1->mode || p0->start + p0->count != p1->start ||
+       !fgl_vbo_prim_mergeable(p0->mode, p0->count))
       return false;
-   switch (p0->mode) {
-   case GL_POINTS:
-      break;
-   case GL_LINES:
-      if (p0->count % 2)
-         return false;
-      break;
-   case GL_TRIANGLES:
-      if (p0->count % 3)
-         return false;
-      break;
-   case GL_QUADS:
-   case GL_LINES_ADJACENCY:
-      if (p0->count % 4)
-         return false;
-      break;
-   case GL_TRIANGLES_ADJACENCY:
-      if (p0->count % 6)
-         return false;
-      break;
-   default:
-      /* strips, loops, fans, polygons; lines strips and loops also
-       * because a begin restarts their stipple */
-      return false;
-   }
    p0->count += p1->count;
    p0->end = p1->end;
    return true;
@@ -1440,6 +1423,7 @@ static void notify_begin(struct fgl_context *ctx, GLenum mode, bool no_current_u
    }
    const unsigned i = save->prim_used++;
    ls->save_prim = mode;
+   ls->opcode_fallback = false;
    save->prims[i] = (struct save_prim){
       .mode = mode, .begin = true, .start = get_vertex_count(save),
    };
@@ -1476,6 +1460,8 @@ static void dlist_fallback(struct fgl_context *ctx)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
    struct save_context *save = &ls->save;
+   if (inside_save_begin_end(ls))
+      ls->opcode_fallback = true;
    if (save->used || save->prim_used) {
       if (save->prim_used > 0 && save->used > 0) {
          const unsigned i = save->prim_used - 1;
@@ -1498,7 +1484,7 @@ void fgl_save_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
 {
    struct fgl_dlist_state *ls = ctx->ListState;
    const float v[4] = { x, y, z, w };
-   if (inside_save_begin_end(ls)) {
+   if (inside_save_begin_end(ls) && !ls->opcode_fallback) {
       save_attr_vertex(ctx, attr, n, v);
       return;
    }
@@ -1539,13 +1525,14 @@ void fgl_save_begin(struct fgl_context *ctx, GLenum mode)
 void fgl_save_end(struct fgl_context *ctx)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
-   if (inside_save_begin_end(ls)) {
+   if (inside_save_begin_end(ls) && !ls->opcode_fallback) {
       save_end_vertex(ctx);
       return;
    }
    save_flush(ctx);
    fgl_dl_put_End(ctx);
    ls->save_prim = PRIM_OUTSIDE_BEGIN_END;
+   ls->opcode_fallback = false;
    if (ctx->ExecuteFlag)
       fgl_exec_end(ctx);
 }
@@ -1826,6 +1813,111 @@ static unsigned call_lists_type_size(GLenum type)
    }
 }
 
+/* save_Map1f, save_Map1d [S: main/dlist.c]: the points as
+ * _mesa_copy_map_points1{f,d} copies them (packed floats; none for a bad
+ * target or no points), replayed with the packed stride; the arguments
+ * are validated when the list executes.  fixgl keeps the points in the
+ * node itself; an order out of range stores none (the replay fails on the
+ * order before it looks at the points). */
+bool fgl_save_map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint stride, GLint order, const GLfloat *pf, const GLdouble *pd)
+{
+   if (!save_prologue(ctx))
+      return false;
+   const int k = (int)fgl_eval_components(target);
+   const unsigned cnt = (pf || pd) && k && order >= 1 && order <= FGL_MAX_EVAL_ORDER ?
+                        (unsigned)(order * k) : 0;
+   union dl_node *n = alloc_node(ctx, DL_OP_MAP1, 6 + cnt);
+   if (n) {
+      n[1].e = target;
+      n[2].f = u1;
+      n[3].f = u2;
+      n[4].i = k;            /* stride */
+      n[5].i = order;
+      n[6].u = cnt;
+      float *p = &n[7].f;
+      for (int i = 0; cnt && i < order; i++)
+         for (int c = 0; c < k; c++)
+            *p++ = pf ? pf[(size_t)i * stride + c] : (float)pd[(size_t)i * stride + c];
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_Map2f, save_Map2d: ustride = components * vorder, vstride =
+ * components */
+bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride,
+                   GLint vorder, const GLfloat *pf, const GLdouble *pd)
+{
+   if (!save_prologue(ctx))
+      return false;
+   const int k = (int)fgl_eval_components(target);
+   const bool ok = (pf || pd) && k && uorder >= 1 && uorder <= FGL_MAX_EVAL_ORDER &&
+                   vorder >= 1 && vorder <= FGL_MAX_EVAL_ORDER;
+   const unsigned cnt = ok ? (unsigned)(uorder * vorder * k) : 0;
+   union dl_node *n = alloc_node(ctx, DL_OP_MAP2, 10 + cnt);
+   if (n) {
+      n[1].e = target;
+      n[2].f = u1;
+      n[3].f = u2;
+      n[4].f = v1;
+      n[5].f = v2;
+      n[6].i = k * vorder;   /* ustride */
+      n[7].i = k;            /* vstride */
+      n[8].i = uorder;
+      n[9].i = vorder;
+      n[10].u = cnt;
+      float *p = &n[11].f;
+      for (int i = 0; cnt && i < uorder; i++)
+         for (int j = 0; j < vorder; j++) {
+            const size_t o = (size_t)i * ustride + (size_t)j * vstride;
+            for (int c = 0; c < k; c++)
+               *p++ = pf ? pf[o + c] : (float)pd[o + c];
+         }
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* glEvalCoord and glEvalPoint: inside glBegin/glEnd _save_EvalCoord1f
+ * etc. [S: vbo/vbo_save_api.c] end the vertex list being compiled
+ * (dlist_fallback), then save_EvalCoord1f etc. [S: main/dlist.c] store a
+ * node of their own */
+static bool save_eval(struct fgl_context *ctx, enum dl_opcode op, union dl_node a,
+                      union dl_node b, unsigned args)
+{
+   struct fgl_dlist_state *ls = ctx->ListState;
+   if (inside_save_begin_end(ls))
+      dlist_fallback(ctx);
+   save_flush(ctx);
+   union dl_node *n = alloc_node(ctx, op, args);
+   if (n) {
+      n[1] = a;
+      if (args > 1)
+         n[2] = b;
+   }
+   return ctx->ExecuteFlag;
+}
+
+bool fgl_save_eval_coord1(struct fgl_context *ctx, GLfloat u)
+{
+   return save_eval(ctx, DL_OP_EVAL_C1, (union dl_node){ .f = u }, (union dl_node){ .u = 0 }, 1);
+}
+
+bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v)
+{
+   return save_eval(ctx, DL_OP_EVAL_C2, (union dl_node){ .f = u }, (union dl_node){ .f = v }, 2);
+}
+
+bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i)
+{
+   return save_eval(ctx, DL_OP_EVAL_P1, (union dl_node){ .i = i }, (union dl_node){ .u = 0 }, 1);
+}
+
+bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j)
+{
+   return save_eval(ctx, DL_OP_EVAL_P2, (union dl_node){ .i = i }, (union dl_node){ .i = j }, 2);
+}
+
 /* save_CallLists: the names are copied, validated when executed */
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, const GLvoid *lists)
 {
@@ -2019,6 +2111,11 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
          gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
                   DL_GET_##D_(n[4]));                                           \
          break;
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+      case DL_OP_##Name:                                                        \
+         gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
+                  DL_GET_##D_(n[4]), DL_GET_##E_(n[5]));                        \
+         break;
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                       \
       case DL_OP_##Name:                                                        \
          gl##Name(DL_GET_##A(n[1]), DL_GET_##B(n[2]), DL_GET_##C(n[3]),         \
@@ -2040,18 +2137,7 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
 #define DL_CUSTOM1 DL_OP1
 #define DL_CUSTOMV2 DL_OPV2
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
       case DL_OP_ATTR: {
          /* glVertexAttrib{1,2,3,4}fvNV of the stored values */
          const unsigned sz = n[2].u;
@@ -2059,6 +2145,25 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
                       sz > 2 ? n[5].f : 0.0f, sz > 3 ? n[6].f : 1.0f);
          break;
       }
+      case DL_OP_MAP1:
+         glMap1f(n[1].e, n[2].f, n[3].f, n[4].i, n[5].i, n[6].u ? &n[7].f : NULL);
+         break;
+      case DL_OP_MAP2:
+         glMap2f(n[1].e, n[2].f, n[3].f, n[6].i, n[8].i, n[4].f, n[5].f, n[7].i, n[9].i,
+                 n[10].u ? &n[11].f : NULL);
+         break;
+      case DL_OP_EVAL_C1:
+         glEvalCoord1f(n[1].f);
+         break;
+      case DL_OP_EVAL_C2:
+         glEvalCoord2f(n[1].f, n[2].f);
+         break;
+      case DL_OP_EVAL_P1:
+         glEvalPoint1(n[1].i);
+         break;
+      case DL_OP_EVAL_P2:
+         glEvalPoint2(n[1].i, n[2].i);
+         break;
       case DL_OP_CALL_LIST:
          /* the nested call is skipped beyond MAX_LIST_NESTING */
          if (ctx->ListState->call_depth < FGL_MAX_LIST_NESTING) {
@@ -2302,6 +2407,7 @@ void GLAPIENTRY glEndList(void)
       save->dangling_attr_ref = true;
       save_flush_vertices(ctx);
    }
+   ls->opcode_fallback = false;
    pthread_mutex_lock(&ls->shared->lock);
    if (ls->use_loopback) {
       ls->shared->walk++;

@@ -43,6 +43,8 @@
 #define DL_OP2(Name, A, B) DL_PROTO(Name, DL_CT_##A, DL_CT_##B)
 #define DL_OP3(Name, A, B, C) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C)
 #define DL_OP4(Name, A, B, C, D_) DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_)
+#define DL_OP5(Name, A, B, C, D_, E_)                                           \
+   DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_, DL_CT_##E_)
 #define DL_OP6(Name, A, B, C, D_, E_, F_)                                        \
    DL_PROTO(Name, DL_CT_##A, DL_CT_##B, DL_CT_##C, DL_CT_##D_, DL_CT_##E_, DL_CT_##F_)
 #define DL_OPV0(Name, VT, N) DL_PROTO(Name, const DL_CT_##VT *, unsigned)
@@ -54,18 +56,7 @@
 #define DL_CUSTOMV2(Name, A, B, VT, N)                                          \
    DL_PUT_PROTO(Name, DL_CT_##A, DL_CT_##B, const DL_CT_##VT *, unsigned)
 #include "main/dlist_ops.h"
-#undef DL_OP0
-#undef DL_OP1
-#undef DL_OP2
-#undef DL_OP3
-#undef DL_OP4
-#undef DL_OP6
-#undef DL_OPV0
-#undef DL_OPV1
-#undef DL_OPV2
-#undef DL_CUSTOM0
-#undef DL_CUSTOM1
-#undef DL_CUSTOMV2
+#include "main/dlist_ops_undef.h"
 #undef DL_PROTO
 #undef DL_PUT_PROTO
 #undef DL_SAVE_PROTO
@@ -111,6 +102,17 @@ void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint s
                                   GLuint end, GLsizei count, GLenum type,
                                   const GLvoid *indices);
 void fgl_save_call_list(struct fgl_context *ctx, GLuint list);
+/* the evaluator commands (main/eval.c); these return whether the entry
+ * point goes on to execute, as the FGL_SAVE functions do */
+bool fgl_save_map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint stride, GLint order, const GLfloat *pf, const GLdouble *pd);
+bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u2,
+                   GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride,
+                   GLint vorder, const GLfloat *pf, const GLdouble *pd);
+bool fgl_save_eval_coord1(struct fgl_context *ctx, GLfloat u);
+bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v);
+bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i);
+bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j);
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
 
 /* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,

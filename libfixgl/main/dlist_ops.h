@@ -12,7 +12,7 @@
  * Adding a command is one line here and one FGL_SAVE hook at the top of
  * its entry point.
  *
- *   DL_OPn(Name, T1, ..., Tn)        glName with n scalar arguments
+ *   DL_OPn(Name, T1, ..., Tn)        glName with n scalar arguments (n = 0..6)
  *   DL_OPVk(Name, T1..Tk, VT, N)     glName with k scalars and a pointer to
  *                                    up to N values (the entry point's hook
  *                                    passes how many to read; the others
@@ -46,6 +46,8 @@ DL_OP4(BlendColor, F, F, F, F)
 DL_OP1(LogicOp, E)
 DL_OP4(ColorMask, B, B, B, B)
 DL_OP4(ClearColor, F, F, F, F)
+DL_OP4(ClearAccum, F, F, F, F)   /* GL_ACCUM_BUFFER_BIT */
+DL_OP2(Accum, E, F)
 DL_OP1(Clear, BF)
 DL_OP1(ClearIndex, FU)        /* Mesa replays the float's bits as a number */
 DL_OP1(IndexMask, U)
@@ -94,6 +96,11 @@ DL_OPV1(LightModelfv, E, F, 4)
 DL_OP2(ColorMaterial, E, E)
 DL_CUSTOM1(ShadeModel, E)          /* executes first, skips a repeat */
 DL_CUSTOMV2(Materialfv, E, E, F, 4)/* outside glBegin/glEnd: likewise */
+/* ---- evaluators ---- */
+DL_OP3(MapGrid1f, I, F, F)         /* glMapGrid1d: converted, then this */
+DL_OP6(MapGrid2f, I, F, F, I, F, F)
+DL_OP3(EvalMesh1, E, I, I)
+DL_OP5(EvalMesh2, E, I, I, I, I)
 /* ---- selection and feedback ---- */
 DL_OP0(InitNames)
 DL_OP1(LoadName, U)

@@ -15,13 +15,7 @@
  * complete texture out of fixed-function texturing
  * [S: texstate.c:update_ff_texture_state] (texstate/incomplete_*). */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_AUTO_NORMAL,
-   GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
-   GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
-   GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
-   GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2,
-   GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
-   GL_MAP2_VERTEX_4, GL_TEXTURE_1D,
+   GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
    GL_TEXTURE_GEN_T, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
 };
@@ -34,6 +28,12 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
          *dirty = 0;
          return &ctx->PendingCaps[i];
       }
+   }
+   /* GL_MAPn_* and GL_AUTO_NORMAL (main/eval.c) */
+   bool *eval = fgl_eval_cap_flag(ctx, cap);
+   if (eval) {
+      *dirty = 0;
+      return eval;
    }
    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + FGL_MAX_LIGHTS) {
       *dirty = FGL_NEW_LIGHT;

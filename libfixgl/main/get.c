@@ -386,12 +386,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_INDEX_WRITEMASK:
       set_ints(val, V_INT, 1, (int)ctx->Color.IndexMask, 0, 0, 0);
       return true;
-   case GL_INDEX_BITS:
-   case GL_AUX_BUFFERS:
-   case GL_ACCUM_RED_BITS:      /* OSMesa visuals have no accumulation buffer */
+   case GL_ACCUM_RED_BITS:      /* 16 with an accumulation buffer (main/accum.c) */
    case GL_ACCUM_GREEN_BITS:
    case GL_ACCUM_BLUE_BITS:
    case GL_ACCUM_ALPHA_BITS:
+      set_ints(val, V_INT, 1, ctx->DrawBuffer ? ctx->DrawBuffer->AccumBits : 0, 0, 0, 0);
+      return true;
+   case GL_INDEX_BITS:
+   case GL_AUX_BUFFERS:
    case GL_SAMPLE_BUFFERS:      /* nor multisample buffers */
    case GL_SAMPLES:
       set_ints(val, V_INT, 1, 0, 0, 0, 0);

@@ -40,6 +40,11 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
 
+/* main/accum.c (GL_ACCUM_BUFFER_BIT) */
+void fgl_init_accum(struct fgl_context *ctx);
+/* glClear's GL_ACCUM_BUFFER_BIT: the scissored bounds to the clear value */
+void fgl_clear_accum_buffer(struct fgl_context *ctx);
+
 /* main/blend.c (GL_COLOR_BUFFER_BIT: alpha test, blending, logic op,
  * colour mask) */
 void fgl_init_blend(struct fgl_context *ctx);
@@ -92,6 +97,11 @@ void fgl_pack_stipple(const struct fgl_pixelstore *p, const uint32_t pattern[32]
                       uint8_t *dest);
 /* main/points.c (GL_POINT_BIT), main/lines.c (GL_LINE_BIT) */
 void fgl_init_point(struct fgl_context *ctx);
+void fgl_init_eval(struct fgl_context *ctx);
+/* the flag of an evaluator capability (GL_MAPn_*, GL_AUTO_NORMAL), or NULL */
+bool *fgl_eval_cap_flag(struct fgl_context *ctx, GLenum cap);
+/* _mesa_evaluator_components: 0 for a target that is no map */
+unsigned fgl_eval_components(GLenum target);
 void fgl_init_line(struct fgl_context *ctx);
 
 /* main/viewport.c (GL_VIEWPORT_BIT) */

@@ -20,6 +20,17 @@
 #include "main/groups.h"
 #include "tnl/t_pipeline.h"
 
+/* Only the BeginEnd dispatch table's generic_nop refuses the client-state
+ * entry points (pointers, glInterleavedArrays, glEnable/DisableClientState,
+ * glGetPointerv) inside glBegin/glEnd: Mesa's functions have no check of
+ * their own, so they use ASSERT_OUTSIDE_BEGIN_END_DISPATCH (context.h):
+ * while a list is compiled they run, also when a GL_COMPILE_AND_EXECUTE
+ * list has left the executed glBegin open (a primitive wrapped by the
+ * compiler runs by loopback up to the wrap; its glEnd runs when the rest
+ * is compiled) [S: vbo/vbo_exec_api.c:vbo_exec_Begin keeps the save table,
+ * main/enable.c:_mesa_EnableClientState, main/varray.c:_mesa_VertexPointer,
+ * main/getstring.c:_mesa_GetPointerv]. */
+
 /* Mesa's type bits [S: main/varray.c:type_to_bit] for the legal types of
  * each array on the desktop compatibility profile */
 #define B_BYTE    (1u << 0)

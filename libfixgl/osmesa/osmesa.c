@@ -7,7 +7,8 @@
  * false); OSMesaGetDepthBuffer returns a bottom-row-first copy of the depth
  * buffer taken at the first call and refreshed at every glFlush/glFinish.
  * Buffer formats are chosen as Mesa does: depth and stencil give Z24S8,
- * stencil alone S8, 24 or more depth bits Z24X8, 16..23 Z16.
+ * stencil alone S8, 24 or more depth bits Z24X8, 16..23 Z16; any accumBits
+ * gives a 16-bit-per-channel accumulation buffer (main/accum.c).
  *
  * Differences from the oracle, on purpose: OSMESA_BGR works (Mesa has no
  * gallium format for it and fails OSMesaMakeCurrent); GL_UNSIGNED_SHORT,
@@ -38,6 +39,7 @@ struct osmesa_context {
    GLenum format;
    enum r_zs_format zs_format;
    int depth_bits, stencil_bits;
+   int accum_bits;            /* 16 when accumBits > 0, else 0 */
 
    /* the bound image and the internal buffers that render for it */
    struct fgl_framebuffer fb;
@@ -134,7 +136,7 @@ GLAPI OSMesaContext GLAPIENTRY
 OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 {
    GLenum format = GL_RGBA;
-   int depth = 0, stencil = 0;
+   int depth = 0, stencil = 0, accum = 0;
 
    for (int i = 0; attribList && attribList[i]; i += 2) {
       const int value = attribList[i + 1];
@@ -162,6 +164,7 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       case OSMESA_ACCUM_BITS:
          if (value < 0)
             return NULL;
+         accum = value;
          break;
       case OSMESA_PROFILE:
          if (value != OSMESA_CORE_PROFILE && value != OSMESA_COMPAT_PROFILE)
@@ -204,6 +207,9 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       c->zs_format = R_ZS_Z16; c->depth_bits = 16;
    }
    c->zs_bpv = zs_bytes_per_value(c->zs_format);
+   /* any accumBits > 0 gives PIPE_FORMAT_R16G16B16A16_SNORM
+    * [S: gallium/frontends/osmesa/osmesa.c:OSMesaCreateContextAttribs] */
+   c->accum_bits = accum > 0 ? 16 : 0;
    return c;
 }
 
@@ -212,7 +218,9 @@ static void free_buffers(struct osmesa_context *c)
    free(c->fb.Color);
    free(c->fb.Depth);
    free(c->fb.Stencil);
+   free(c->fb.Accum);
    free(c->zs_copy);
+   c->fb.Accum = NULL;
    c->fb.Color = NULL;
    c->fb.Depth = NULL;
    c->fb.Stencil = NULL;
@@ -247,12 +255,16 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->AlphaBits = bytes_per_pixel(c->format) == 4 ? 8 : 0;
    fb->ZSFormat = c->zs_format;
    fb->FlushFront = flush_front;
+   fb->AccumBits = c->accum_bits;
    fb->Color = calloc(n, 4);
    if (c->zs_format == R_ZS_S8)
       fb->Stencil = calloc(n, 1);
    else if (c->zs_format != R_ZS_NONE)
       fb->Depth = calloc(n, (size_t)c->zs_bpv);
-   if (!fb->Color || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil)) {
+   if (c->accum_bits > 0)
+      fb->Accum = calloc(n, 4 * sizeof(int16_t));
+   if (!fb->Color || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil) ||
+       (c->accum_bits > 0 && !fb->Accum)) {
       free_buffers(c);
       return false;
    }

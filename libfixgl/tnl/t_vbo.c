@@ -210,6 +210,51 @@ static void vtx_wrap(struct fgl_context *ctx)
 /* vbo_exec_wrap_upgrade_vertex: a larger vertex format splits the batch. */
 static void copy_to_current(struct fgl_context *ctx);
 
+/* the format's attribute values into their slots of the vertex memory,
+ * before the layout changes */
+static void sync_vtx_mem(struct fgl_vbo *vbo)
+{
+   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
+      if (vbo->attr_size[a])
+         memcpy(&vbo->vtx_mem[vbo->mem_offset[a]], vbo->current[a],
+                vbo->attr_size[a] * sizeof(float));
+}
+
+/* vbo_reset_all_attr: the memory keeps its contents */
+static void reset_all_attr(struct fgl_vbo *vbo)
+{
+   sync_vtx_mem(vbo);
+   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   memset(vbo->active_size, 0, sizeof(vbo->active_size));
+   vbo->vertex_size = 0;
+   vbo->size_no_pos = 0;
+}
+
+/* the slot layout of vbo_exec_wrap_upgrade_vertex: a new attribute is
+ * appended (the position is always last, outside the memory); a grown
+ * one moves the attributes after it right.  The components the attribute
+ * gains read what the memory held there. */
+static void upgrade_layout(struct fgl_vbo *vbo, enum fgl_vbo_attr attr, unsigned size)
+{
+   const unsigned old = vbo->attr_size[attr];
+   sync_vtx_mem(vbo);
+   if (old) {
+      const unsigned off = vbo->mem_offset[attr];
+      if (off + old < vbo->size_no_pos) {
+         memmove(&vbo->vtx_mem[off + size], &vbo->vtx_mem[off + old],
+                 (vbo->size_no_pos - off - old) * sizeof(float));
+         for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
+            if (a != (int)attr && vbo->attr_size[a] && vbo->mem_offset[a] > off)
+               vbo->mem_offset[a] += size - old;
+      }
+   } else {
+      vbo->mem_offset[attr] = vbo->size_no_pos;
+   }
+   vbo->size_no_pos += size - old;
+   for (unsigned i = old; i < size; i++)
+      vbo->current[attr][i] = vbo->vtx_mem[vbo->mem_offset[attr] + i];
+}
+
 static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned size)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
@@ -225,9 +270,7 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
    if (!fgl_inside_begin_end(ctx) && !vbo->attr_size[attr] && lastcount > 8 &&
        vbo->vertex_size) {
       copy_to_current(ctx);
-      memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
-      memset(vbo->active_size, 0, sizeof(vbo->active_size));
-      vbo->vertex_size = 0;
+      reset_all_attr(vbo);
    }
 
    /* Replayed vertices get a newly added attribute as its current value cut
@@ -240,6 +283,8 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
             copied[k].attr[attr][i] = i < size ? ctx->Current.Attrib[attr][i] : attr_default[i];
    }
 
+   if (attr != FGL_ATTR_POS)
+      upgrade_layout(vbo, attr, size);
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
    vbo->active_size[attr] = size;
@@ -298,10 +343,7 @@ void fgl_vbo_flush_vertices(struct fgl_context *ctx)
       vtx_flush(ctx, NULL, NULL);
    if (vbo->vertex_size) {
       copy_to_current(ctx);
-      /* vbo_reset_all_attr */
-      memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
-      memset(vbo->active_size, 0, sizeof(vbo->active_size));
-      vbo->vertex_size = 0;
+      reset_all_attr(vbo);
    }
    vbo->need_flush = 0;
 }
@@ -313,6 +355,26 @@ void fgl_vbo_flush_current(struct fgl_context *ctx)
    ctx->Vbo.need_flush = FGL_VBO_FLUSH_STORED;
 }
 
+/* vbo_exec_fixup_vertex: grow the format, or fill defaults when the call
+ * has fewer components than the last one; active_size only changes on
+ * those two paths (so glColor4f then glColor3fv after a shrink keeps the
+ * old alpha, as in the oracle). */
+void fgl_vbo_fixup(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n)
+{
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   float *cur = vbo->current[attr];
+
+   if (vbo->active_size[attr] != n) {
+      if (n > vbo->attr_size[attr]) {
+         upgrade_vertex(ctx, attr, n);
+      } else if (n < vbo->active_size[attr]) {
+         for (unsigned i = n - 1; i < vbo->attr_size[attr]; i++)
+            cur[i] = attr_default[i];
+         vbo->active_size[attr] = n;
+      }
+   }
+}
+
 void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
                   float x, float y, float z, float w)
 {
@@ -321,19 +383,7 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
    float *cur = vbo->current[attr];
 
    if (attr != FGL_ATTR_POS) {
-      /* vbo_exec_fixup_vertex: grow the format, or fill defaults when the
-       * call has fewer components than the last one; active_size only
-       * changes on those two paths (so glColor4f then glColor3fv after a
-       * shrink keeps the old alpha, as in the oracle). */
-      if (vbo->active_size[attr] != n) {
-         if (n > vbo->attr_size[attr]) {
-            upgrade_vertex(ctx, attr, n);
-         } else if (n < vbo->active_size[attr]) {
-            for (unsigned i = n - 1; i < vbo->attr_size[attr]; i++)
-               cur[i] = attr_default[i];
-            vbo->active_size[attr] = n;
-         }
-      }
+      fgl_vbo_fixup(ctx, attr, n);
       for (unsigned i = 0; i < n; i++)
          cur[i] = v[i];
       vbo->need_flush |= FGL_VBO_FLUSH_CURRENT;
@@ -378,26 +428,9 @@ void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
  * (ORACLE-NOTES.md "Vertex batching"). */
 static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cur)
 {
-   if (prev->mode != cur->mode || prev->start + prev->count != cur->start)
+   if (prev->mode != cur->mode || prev->start + prev->count != cur->start ||
+       !fgl_vbo_prim_mergeable(prev->mode, prev->count))
       return false;
-   switch (prev->mode) {
-   case GL_POINTS:
-      break;
-   case GL_LINES:
-      if (prev->count % 2)
-         return false;
-      break;
-   case GL_TRIANGLES:
-      if (prev->count % 3)
-         return false;
-      break;
-   case GL_QUADS:
-      if (prev->count % 4)
-         return false;
-      break;
-   default:
-      return false;
-   }
    prev->count += cur->count;
    prev->end = cur->end;
    return true;

@@ -23,6 +23,30 @@
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
 
+/* vbo_merge_draws' test of the earlier draw [S: vbo/vbo_exec.c:
+ * vbo_merge_draws], shared by immediate mode and the display-list
+ * compiler: a draw of independent primitives with no partial tail can take
+ * the next draw of its mode; strips, loops, fans and polygons never (line
+ * strips and loops also because a begin restarts their stipple). */
+static inline bool fgl_vbo_prim_mergeable(GLenum mode, unsigned count)
+{
+   switch (mode) {
+   case GL_POINTS:
+      return true;
+   case GL_LINES:
+      return count % 2 == 0;
+   case GL_TRIANGLES:
+      return count % 3 == 0;
+   case GL_QUADS:
+   case GL_LINES_ADJACENCY:
+      return count % 4 == 0;
+   case GL_TRIANGLES_ADJACENCY:
+      return count % 6 == 0;
+   default:
+      return false;
+   }
+}
+
 struct fgl_context;
 
 /* What a flush has to do (Mesa's ctx->Driver.NeedFlush bits). */
@@ -89,6 +113,18 @@ struct fgl_vbo {
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
                                          * the format (ctx->Current.Attrib
                                          * holds the others) */
+   /* Mesa's exec->vtx.vertex memory behind the non-position attributes:
+    * each attribute's slot (offset, attr_size floats, in the order the
+    * attributes joined the format), and what the slots last held when the
+    * layout changed.  A slot keeps its old contents when the format is
+    * reset or rearranged, so an attribute that joins the format starts
+    * with whatever an earlier format left there; only glEvalCoord
+    * (main/eval.c), which restores the vertex after evaluating, lets such
+    * a value survive [S: vbo_exec_api.c:vbo_exec_wrap_upgrade_vertex,
+    * _mesa_EvalCoord1f]. */
+   float vtx_mem[FGL_ATTR_COUNT * 4];
+   unsigned mem_offset[FGL_ATTR_COUNT];
+   unsigned size_no_pos;                /* vertex_size_no_pos */
 };
 
 bool fgl_vbo_init(struct fgl_vbo *vbo);
@@ -97,6 +133,8 @@ void fgl_vbo_fini(struct fgl_vbo *vbo);
 /* An attribute call (glColor*, glVertex*) with n components. */
 void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
                   float x, float y, float z, float w);
+/* vbo_exec_fixup_vertex: make attr's vertex-format size fit n components */
+void fgl_vbo_fixup(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n);
 void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode);
 void fgl_vbo_end(struct fgl_context *ctx);
 
