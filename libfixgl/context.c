@@ -87,6 +87,9 @@ struct fgl_context *fgl_context_create(void)
    ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
    ctx->ErrorValue = GL_NO_ERROR;
    fgl_init_current(ctx);
+   fgl_init_texobj(ctx);
+   fgl_init_texenv(ctx);
+   fgl_init_texgen(ctx);
    fgl_init_array(ctx);
    fgl_init_color(ctx);
    fgl_init_accum(ctx);
@@ -115,6 +118,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
       return;
    fgl_free_matrix(ctx);
    fgl_free_dlist(ctx);
+   fgl_free_texobj(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    free(ctx->_DrawVbuf.queue);
    free(ctx);

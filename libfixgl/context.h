@@ -318,17 +318,64 @@ struct fgl_eval_maps {
    bool AutoNormal;
 };
 
+/* The texture targets an object can be bound to in the oracle's
+ * compatibility context (texobj.c:_mesa_tex_target_to_index; buffer and
+ * multisample targets are not modelled) */
+enum fgl_tex_index {
+   FGL_TEX_1D, FGL_TEX_2D, FGL_TEX_3D, FGL_TEX_CUBE, FGL_TEX_RECT,
+   FGL_TEX_1D_ARRAY, FGL_TEX_2D_ARRAY, FGL_TEX_CUBE_ARRAY,
+   FGL_TEX_TARGETS,
+};
+
 /* GL_TEXTURE_BIT, as far as glGet reports it: the active unit and the
  * texture object names bound to each unit (0, the default textures); the
  * texture path adds the objects, environment and coordinate generation
  * [S: main/mtypes.h, gl_texture_attrib] */
 struct fgl_texture_unit {
-   GLuint Bound1D, Bound2D, Bound3D, BoundCubeMap;
+   GLuint Bound[FGL_TEX_TARGETS];   /* object names, 0 the default object */
+   /* the texture environment (main/texenv.c) [S: mtypes.h,
+    * gl_fixedfunc_texture_unit, gl_tex_env_combine_state] */
+   GLenum EnvMode;
+   float EnvColor[4];               /* clamped */
+   float EnvColorUnclamped[4];
+   GLenum CombineModeRGB, CombineModeA;
+   GLenum SourceRGB[4], SourceA[4];
+   GLenum OperandRGB[4], OperandA[4];
+   unsigned ScaleShiftRGB, ScaleShiftA;
+   float LodBias;                   /* GL_TEXTURE_FILTER_CONTROL */
+   /* coordinate generation (main/texgen.c), S T R Q */
+   GLenum GenMode[4];
+   float ObjectPlane[4][4];
+   float EyePlane[4][4];            /* in eye space (inverse modelview
+                                     * applied when specified) */
 };
 
 struct fgl_texture_attrib {
    GLuint CurrentUnit;      /* glActiveTexture - GL_TEXTURE0 */
    struct fgl_texture_unit Unit[FGL_MAX_TEXTURE_UNITS];
+};
+
+/* A texture object's state, no images yet (main/texobj.c, texparam.c)
+ * [S: main/mtypes.h, gl_texture_object, gl_sampler_attrib] */
+struct fgl_texture_object {
+   GLuint Name;
+   GLenum Target;           /* 0 until first bound */
+   GLenum MinFilter, MagFilter;
+   GLenum WrapS, WrapT, WrapR;
+   float BorderColor[4];    /* clamped to [0,1] */
+   float Priority;          /* [0,1] */
+   float MinLod, MaxLod, LodBias;
+   GLint BaseLevel, MaxLevel;
+   bool GenerateMipmap;
+};
+
+/* The named objects (Mesa's Shared->TexObjects) and the default ones. */
+struct fgl_texture_objects {
+   struct fgl_texture_object **Objs;   /* unordered */
+   unsigned Count, Alloc;
+   GLuint MaxName;                     /* names are never reused */
+   unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
+   struct fgl_texture_object Default[FGL_TEX_TARGETS];
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample
@@ -576,6 +623,14 @@ struct fgl_attrib_node {
    bool Enable[FGL_ENABLE_ATTRIB_CAPS];    /* GL_ENABLE_BIT, attrib.c's cap list */
    bool EvalEnable[FGL_EVAL_ATTRIB_CAPS];  /* GL_EVAL_BIT: map enables, auto normal */
    bool TextureEnable[FGL_TEXTURE_ATTRIB_CAPS]; /* GL_TEXTURE_BIT: unit 0's enables */
+   /* GL_TEXTURE_BIT: the default objects, always; unit 0's bound objects
+    * and LOD bias, saved only when the unit has had a texture bound
+    * (Mesa's NumCurrentTexUsed), else left from an earlier push at this
+    * depth (zero at first) */
+   struct fgl_texture_object TexDefault[FGL_TEX_TARGETS];
+   struct fgl_texture_object TexObj[FGL_TEX_TARGETS];
+   float TexLodBias;
+   bool TexSaved;
    struct fgl_fog_attrib Fog;
    struct fgl_hint_attrib Hint;
    struct fgl_light_attrib Light;
@@ -618,6 +673,7 @@ struct fgl_context {
    struct fgl_eval_attrib Eval;
    struct fgl_eval_maps EvalMap;        /* main/eval.c */
    struct fgl_texture_attrib Texture;
+   struct fgl_texture_objects TexObjects;
    struct fgl_multisample_attrib Multisample;
    struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
    unsigned ClientAttribStackDepth;

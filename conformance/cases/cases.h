@@ -40,6 +40,7 @@ extern const fc_case fc_cases_attrib[];
 extern const fc_case fc_cases_demo[];
 extern const fc_case fc_cases_dlist[];
 extern const fc_case fc_cases_select[];
+extern const fc_case fc_cases_texstate[];
 extern const fc_case fc_cases_accum[];
 extern const fc_case fc_cases_eval[];
 

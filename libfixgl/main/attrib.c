@@ -112,12 +112,14 @@ static void restore_eval(struct fgl_context *ctx, const struct fgl_attrib_node *
 static void save_texture(struct fgl_context *ctx, struct fgl_attrib_node *node)
 {
    save_caps(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, node->TextureEnable);
+   fgl_save_texobjs(ctx, node);
 }
 
 static void restore_texture(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
    for (int i = 0; i < FGL_TEXTURE_ATTRIB_CAPS; i++)
       fgl_set_enable(ctx, texture_caps[i], node->TextureEnable[i]);
+   fgl_restore_texobjs(ctx, node);
 }
 
 /* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that

@@ -18,6 +18,7 @@ void fgl_init_current(struct fgl_context *ctx)
       [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
       [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
       [FGL_ATTR_COLOR_INDEX] = { 1, 0, 0, 1 },
+      [FGL_ATTR_TEX0] = { 0, 0, 0, 1 },
       [FGL_ATTR_EDGEFLAG] = { 1, 0, 0, 1 },
       [FGL_ATTR_MAT_FRONT_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
       [FGL_ATTR_MAT_BACK_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
@@ -169,6 +170,42 @@ VERTEX_FUNCS(s, GLshort)
 VERTEX_FUNCS(i, GLint)
 VERTEX_FUNCS(f, GLfloat)
 VERTEX_FUNCS(d, GLdouble)
+
+/* glTexCoord{1,2,3,4}{s,i,f,d}[v]: texture unit 0's coordinate with as many
+ * components as the call names (the missing ones 0, 0, 1), integers and
+ * doubles cast to float, never normalized [S: vbo/vbo_attrib_tmp.h:
+ * TAG(TexCoord1f..4fv); main/api_loopback.c:_mesa_TexCoord1d.. call
+ * TexCoordNf with the same N]. */
+static inline void texcoord4(float s, float t, float r, float q, unsigned n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_attr(ctx, FGL_ATTR_TEX0, n, s, t, r, q);
+}
+
+#define TEXCOORD_FUNCS(suffix, type)                                            \
+   void GLAPIENTRY glTexCoord1##suffix(type s)                                  \
+   { texcoord4((GLfloat)s, 0.0f, 0.0f, 1.0f, 1); }                              \
+   void GLAPIENTRY glTexCoord2##suffix(type s, type t)                          \
+   { texcoord4((GLfloat)s, (GLfloat)t, 0.0f, 1.0f, 2); }                        \
+   void GLAPIENTRY glTexCoord3##suffix(type s, type t, type r)                  \
+   { texcoord4((GLfloat)s, (GLfloat)t, (GLfloat)r, 1.0f, 3); }                  \
+   void GLAPIENTRY glTexCoord4##suffix(type s, type t, type r, type q)          \
+   { texcoord4((GLfloat)s, (GLfloat)t, (GLfloat)r, (GLfloat)q, 4); }            \
+   void GLAPIENTRY glTexCoord1##suffix##v(const type *v)                        \
+   { if (v) texcoord4((GLfloat)v[0], 0.0f, 0.0f, 1.0f, 1); }                    \
+   void GLAPIENTRY glTexCoord2##suffix##v(const type *v)                        \
+   { if (v) texcoord4((GLfloat)v[0], (GLfloat)v[1], 0.0f, 1.0f, 2); }           \
+   void GLAPIENTRY glTexCoord3##suffix##v(const type *v)                        \
+   { if (v) texcoord4((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], 1.0f, 3); }  \
+   void GLAPIENTRY glTexCoord4##suffix##v(const type *v)                        \
+   { if (v) texcoord4((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], (GLfloat)v[3], 4); }
+
+TEXCOORD_FUNCS(s, GLshort)
+TEXCOORD_FUNCS(i, GLint)
+TEXCOORD_FUNCS(f, GLfloat)
+TEXCOORD_FUNCS(d, GLdouble)
 
 /* glEdgeFlag: a one-component vbo attribute, 1.0 or 0.0 (any non-zero
  * GLboolean converts as its value) [S: vbo/vbo_attrib_tmp.h:EdgeFlag].  It

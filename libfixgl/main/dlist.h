@@ -61,6 +61,14 @@
 #undef DL_PUT_PROTO
 #undef DL_SAVE_PROTO
 
+/* The replay of a glPrioritizeTextures node: Mesa compiles one node per
+ * name and replays each as glPrioritizeTextures(1, &name, &priority)
+ * [S: dlist.c:save_PrioritizeTextures, OPCODE_PRIORITIZE_TEXTURE]. */
+static inline void glPrioritizeTexture1(GLuint texture, GLfloat priority)
+{
+   glPrioritizeTextures(1, &texture, &priority);
+}
+
 /* The hook at the top of a compiled entry point (after its context
  * fetch): store the call while compiling, and return unless the list is
  * GL_COMPILE_AND_EXECUTE. */

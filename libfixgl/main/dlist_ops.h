@@ -33,6 +33,7 @@
  * compiler, vbo_save_api.c), glCallList(s), glNewList, glRect, the array
  * draws, and every command Mesa executes at once during compilation
  * (queries, client state, pixel store, glReadPixels, glFlush, glFinish,
+ * glGenTextures, glDeleteTextures, glIsTexture, glAreTexturesResident,
  * glGenLists, glDeleteLists, glIsList, glEndList, glRenderMode,
  * glFeedbackBuffer, glSelectBuffer).
  */
@@ -106,6 +107,16 @@ DL_OP1(LoadName, U)
 DL_OP1(PushName, U)
 DL_OP0(PopName)
 DL_OP1(PassThrough, F)
+/* ---- textures ---- */
+DL_OP2(BindTexture, E, U)
+DL_OPV2(TexParameterfv, E, E, F, 4) /* glTexParameter{f,i,iv}: params[0] as
+                                     * float, the rest 0 (hooks) */
+DL_OPV2(TexEnvfv, E, E, F, 4)       /* glTexEnv{f,i,iv}: converted (hooks) */
+DL_OPV2(TexGenfv, E, E, F, 4)       /* glTexGen{i,f,d}[v]: converted (hooks) */
+DL_OP2(PrioritizeTexture1, U, F)    /* glPrioritizeTextures: one node per
+                                     * name, replayed as a call with n = 1
+                                     * (main/dlist.h) */
+
 /* ---- attribute stack, lists ---- */
 DL_OP1(PushAttrib, BF)
 DL_OP0(PopAttrib)

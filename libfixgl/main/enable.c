@@ -9,7 +9,11 @@
 
 /* GL 1.x capabilities whose feature has not landed yet: their flags are
  * stored and reported (so programs see the oracle's errors and queries)
- * but do not affect rendering yet; README's status table lists them. */
+ * but do not affect rendering yet; README's status table lists them.
+ * GL_TEXTURE_1D/2D already render as the oracle does while no texture can
+ * be complete (no glTexImage yet): the oracle leaves a unit without a
+ * complete texture out of fixed-function texturing
+ * [S: texstate.c:update_ff_texture_state] (texstate/incomplete_*). */
 static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_TEXTURE_1D,
    GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,

@@ -407,7 +407,11 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    /* current texture coordinates and raster position */
    case GL_CURRENT_TEXTURE_COORDS:
-      set_floats(val, V_FLOAT, ctx->Current.TexCoord[ctx->Texture.CurrentUnit], 4);
+      /* extra_flush_current_valid_texture_unit; unit 0's coordinate is a
+       * vbo attribute, the other units' are kept until multitexture comes */
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOAT, ctx->Texture.CurrentUnit == 0 ? ctx->Current.Attrib[FGL_ATTR_TEX0]
+                               : ctx->Current.TexCoord[ctx->Texture.CurrentUnit], 4);
       return true;
    case GL_CURRENT_RASTER_POSITION:
       set_floats(val, V_FLOAT, ctx->Current.RasterPos, 4);
@@ -488,16 +492,16 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, GL_TEXTURE0 + (int)ctx->Texture.CurrentUnit, 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_1D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound1D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_1D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_2D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound2D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_2D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_3D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound3D, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_3D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_CUBE_MAP:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].BoundCubeMap, 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_CUBE], 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_UNITS:
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);

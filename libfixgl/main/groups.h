@@ -29,6 +29,14 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value);
 /* main/begin_end.c (GL_CURRENT_BIT) */
 void fgl_init_current(struct fgl_context *ctx);
 
+/* main/texobj.c */
+void fgl_init_texobj(struct fgl_context *ctx);
+void fgl_init_texenv(struct fgl_context *ctx);
+void fgl_init_texgen(struct fgl_context *ctx);
+void fgl_free_texobj(struct fgl_context *ctx);
+void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node);
+void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *node);
+
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
 

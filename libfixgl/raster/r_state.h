@@ -16,7 +16,7 @@
 #include <xmmintrin.h>
 #endif
 
-#define R_MAX_ATTRIBS 6
+#define R_MAX_ATTRIBS 7
 
 /* Varying slots: the colour written to the buffer, the secondary colour
  * the fragment stage adds to it (separate specular), their back-face
@@ -24,6 +24,8 @@
  * 0, 0, 1 as the oracle's vertex program writes them), and the coverage
  * coordinates of the draw module's smooth point and line quads
  * (tnl/t_linepoint.c; written after clipping, so never part of
+ * num_attribs), then texture unit 0's coordinate, which only GL_FEEDBACK
+ * reads so far (the vertex stage and the clipper fill it then, outside
  * num_attribs).  Only the colour slots are clamped to [0,1]. */
 enum {
    R_ATTR_COLOR0,
@@ -32,6 +34,7 @@ enum {
    R_ATTR_BCOLOR1,
    R_ATTR_FOG,
    R_ATTR_AA,
+   R_ATTR_TEX0,
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been

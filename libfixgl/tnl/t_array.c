@@ -175,6 +175,7 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
       { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
       { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
+      { FGL_ARRAY_TEXCOORD, FGL_ATTR_TEX0, false },
       { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
    };
    for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
@@ -267,8 +268,9 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
 void t_array_element(struct fgl_context *ctx, GLint elt)
 {
    /* _mesa_array_element: the enabled non-position arrays in attribute
-    * order (normal, colour, colour index, edge flag; texture coordinates
-    * do not reach fixgl's vertex yet), then the position */
+    * order (normal, colour, colour index, texture coordinate, edge flag),
+    * then the position; texture coordinates are not normalized
+    * [S: main/api_arrayelt.c:_mesa_array_element] */
    const struct fgl_client_array *A = ctx->Array.Array;
    if (A[FGL_ARRAY_NORMAL].Enabled)
       emit(ctx, &A[FGL_ARRAY_NORMAL], FGL_ATTR_NORMAL, true, elt);
@@ -276,6 +278,8 @@ void t_array_element(struct fgl_context *ctx, GLint elt)
       emit(ctx, &A[FGL_ARRAY_COLOR], FGL_ATTR_COLOR0, true, elt);
    if (A[FGL_ARRAY_INDEX].Enabled)
       emit(ctx, &A[FGL_ARRAY_INDEX], FGL_ATTR_COLOR_INDEX, false, elt);
+   if (A[FGL_ARRAY_TEXCOORD].Enabled)
+      emit(ctx, &A[FGL_ARRAY_TEXCOORD], FGL_ATTR_TEX0, false, elt);
    if (A[FGL_ARRAY_EDGEFLAG].Enabled)
       emit(ctx, &A[FGL_ARRAY_EDGEFLAG], FGL_ATTR_EDGEFLAG, false, elt);
    if (A[FGL_ARRAY_VERTEX].Enabled)

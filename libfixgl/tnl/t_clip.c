@@ -79,6 +79,12 @@ static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
    for (int a = 0; a < nattr; a++)
       for (int c = 0; c < 4; c++)
          dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
+   /* the feedback vertex's texture coordinate (t_vertex.c), a perspective
+    * attribute like the colours */
+   if (ctx->RenderMode == GL_FEEDBACK)
+      for (int c = 0; c < 4; c++)
+         dst->r.attr[R_ATTR_TEX0][c] = lerp(t, out->r.attr[R_ATTR_TEX0][c],
+                                            in->r.attr[R_ATTR_TEX0][c]);
 }
 
 /* GL_SELECT, GL_FEEDBACK: the feedback draw context's clip stage

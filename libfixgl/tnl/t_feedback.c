@@ -35,9 +35,6 @@ static void feedback_vertex(struct fgl_context *ctx, const struct r_vertex *v)
 {
    const unsigned mask = ctx->Feedback.Mask;
    const GLuint height = ctx->DrawBuffer ? (GLuint)ctx->DrawBuffer->Height : 0u;
-   /* texture coordinates are not implemented yet: every vertex has the
-    * initial current texture coordinate, which clipping keeps */
-   static const float texcoord[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
 
    fgl_feedback_token(ctx, v->pos[0]);
    fgl_feedback_token(ctx, (float)height - v->pos[1]);
@@ -50,7 +47,7 @@ static void feedback_vertex(struct fgl_context *ctx, const struct r_vertex *v)
          fgl_feedback_token(ctx, v->attr[R_ATTR_COLOR0][c]);
    if (mask & FGL_FB_TEXTURE)
       for (int c = 0; c < 4; c++)
-         fgl_feedback_token(ctx, texcoord[c]);
+         fgl_feedback_token(ctx, v->attr[R_ATTR_TEX0][c]);
 }
 
 void t_feedback_tri(struct fgl_context *ctx, const struct r_vertex *v0,

@@ -1,0 +1,397 @@
+/*
+ * The texture environment (Mesa 22.3 main/texenv.c): glTexEnv{f,i}[v],
+ * glGetTexEnv{f,i}v for GL_TEXTURE_ENV (mode, colour, the combiner state
+ * of GL 1.3 with the ATI_texture_env_combine3, NV_texture_env_combine4 and
+ * dot3 additions the oracle enables) and GL_TEXTURE_FILTER_CONTROL's LOD
+ * bias, per texture unit (the active unit; glActiveTexture comes with
+ * multitexture).  State only: nothing samples a texture yet.
+ */
+#include <string.h>
+
+#include "main/conv.h"
+#include "main/dlist.h"
+#include "main/groups.h"
+
+/* [S: texstate.c:init_texture_unit, default_combine_state] */
+void fgl_init_texenv(struct fgl_context *ctx)
+{
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      struct fgl_texture_unit *t = &ctx->Texture.Unit[u];
+      t->EnvMode = GL_MODULATE;
+      memset(t->EnvColor, 0, sizeof(t->EnvColor));
+      memset(t->EnvColorUnclamped, 0, sizeof(t->EnvColorUnclamped));
+      t->CombineModeRGB = t->CombineModeA = GL_MODULATE;
+      static const GLenum src[4] = { GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT, GL_CONSTANT };
+      static const GLenum oprgb[4] = { GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA, GL_SRC_ALPHA };
+      for (int i = 0; i < 4; i++) {
+         t->SourceRGB[i] = t->SourceA[i] = src[i];
+         t->OperandRGB[i] = oprgb[i];
+         t->OperandA[i] = GL_SRC_ALPHA;
+      }
+      t->ScaleShiftRGB = t->ScaleShiftA = 0;
+      t->LodBias = 0.0f;
+   }
+}
+
+/* FLUSH_VERTICES(ctx, _NEW_TEXTURE_STATE, GL_TEXTURE_BIT) */
+static void env_flush(struct fgl_context *ctx)
+{
+   fgl_flush_vertices(ctx);
+   ctx->PopAttribState |= GL_TEXTURE_BIT;
+}
+
+static inline float clamp01(float x)
+{
+   return x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x;   /* CLAMP */
+}
+
+/* [S: texenv.c:set_env_mode] */
+static void set_env_mode(struct fgl_context *ctx, struct fgl_texture_unit *t, GLenum mode)
+{
+   if (t->EnvMode == mode)
+      return;
+   switch (mode) {
+   case GL_MODULATE:
+   case GL_BLEND:
+   case GL_DECAL:
+   case GL_REPLACE:
+   case GL_ADD:
+   case GL_COMBINE:
+   case GL_COMBINE4_NV:
+      break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   env_flush(ctx);
+   t->EnvMode = mode;
+}
+
+/* [S: texenv.c:set_combiner_mode] */
+static void set_combiner_mode(struct fgl_context *ctx, struct fgl_texture_unit *t,
+                              GLenum pname, GLenum mode)
+{
+   bool legal;
+   switch (mode) {
+   case GL_REPLACE:
+   case GL_MODULATE:
+   case GL_ADD:
+   case GL_ADD_SIGNED:
+   case GL_INTERPOLATE:
+   case GL_SUBTRACT:
+   case GL_MODULATE_ADD_ATI:
+   case GL_MODULATE_SIGNED_ADD_ATI:
+   case GL_MODULATE_SUBTRACT_ATI:
+      legal = true;
+      break;
+   case GL_DOT3_RGB_EXT:
+   case GL_DOT3_RGBA_EXT:
+   case GL_DOT3_RGB:
+   case GL_DOT3_RGBA:
+      legal = pname == GL_COMBINE_RGB;
+      break;
+   default:
+      legal = false;
+   }
+   if (!legal) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   GLenum *dst = pname == GL_COMBINE_RGB ? &t->CombineModeRGB : &t->CombineModeA;
+   if (*dst == mode)
+      return;
+   env_flush(ctx);
+   *dst = mode;
+}
+
+/* [S: texenv.c:set_combiner_source] four terms (NV_texture_env_combine4),
+ * GL_ZERO and GL_ONE (ATI_texture_env_combine3); set even when unchanged */
+static void set_combiner_source(struct fgl_context *ctx, struct fgl_texture_unit *t,
+                                GLenum pname, GLenum param)
+{
+   const bool alpha = pname >= GL_SOURCE0_ALPHA && pname <= GL_SOURCE3_ALPHA_NV;
+   const unsigned term = alpha ? pname - GL_SOURCE0_ALPHA : pname - GL_SOURCE0_RGB;
+   bool legal;
+   switch (param) {
+   case GL_TEXTURE:
+   case GL_CONSTANT:
+   case GL_PRIMARY_COLOR:
+   case GL_PREVIOUS:
+   case GL_ZERO:
+   case GL_ONE:
+      legal = true;
+      break;
+   default:
+      /* GL_TEXTUREi of a unit below MaxTextureUnits */
+      legal = param >= GL_TEXTURE0 && param < GL_TEXTURE0 + FGL_MAX_TEXTURE_UNITS;
+   }
+   if (!legal) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   env_flush(ctx);
+   if (alpha)
+      t->SourceA[term] = param;
+   else
+      t->SourceRGB[term] = param;
+}
+
+/* [S: texenv.c:set_combiner_operand] */
+static void set_combiner_operand(struct fgl_context *ctx, struct fgl_texture_unit *t,
+                                 GLenum pname, GLenum param)
+{
+   const bool alpha = pname >= GL_OPERAND0_ALPHA && pname <= GL_OPERAND3_ALPHA_NV;
+   const unsigned term = alpha ? pname - GL_OPERAND0_ALPHA : pname - GL_OPERAND0_RGB;
+   bool legal;
+   switch (param) {
+   case GL_SRC_COLOR:
+   case GL_ONE_MINUS_SRC_COLOR:
+      legal = !alpha;
+      break;
+   case GL_ONE_MINUS_SRC_ALPHA:
+   case GL_SRC_ALPHA:
+      legal = true;
+      break;
+   default:
+      legal = false;
+   }
+   if (!legal) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   env_flush(ctx);
+   if (alpha)
+      t->OperandA[term] = param;
+   else
+      t->OperandRGB[term] = param;
+}
+
+/* [S: texenv.c:set_combiner_scale] */
+static void set_combiner_scale(struct fgl_context *ctx, struct fgl_texture_unit *t,
+                               GLenum pname, GLfloat scale)
+{
+   unsigned shift;
+   if (scale == 1.0f)
+      shift = 0;
+   else if (scale == 2.0f)
+      shift = 1;
+   else if (scale == 4.0f)
+      shift = 2;
+   else {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   unsigned *dst = pname == GL_RGB_SCALE ? &t->ScaleShiftRGB : &t->ScaleShiftA;
+   if (*dst == shift)
+      return;
+   env_flush(ctx);
+   *dst = shift;
+}
+
+/* [S: texenv.c:_mesa_texenvfv_indexed] */
+static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, const GLfloat *param)
+{
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   struct fgl_texture_unit *t = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   const GLint iparam0 = (GLint)param[0];
+   if (target == GL_TEXTURE_ENV) {
+      switch (pname) {
+      case GL_TEXTURE_ENV_MODE:
+         set_env_mode(ctx, t, (GLenum)iparam0);
+         return;
+      case GL_TEXTURE_ENV_COLOR:
+         /* [S: texenv.c:set_env_color] */
+         if (param[0] == t->EnvColorUnclamped[0] && param[1] == t->EnvColorUnclamped[1] &&
+             param[2] == t->EnvColorUnclamped[2] && param[3] == t->EnvColorUnclamped[3])
+            return;   /* TEST_EQ_4V */
+         env_flush(ctx);
+         for (int c = 0; c < 4; c++) {
+            t->EnvColorUnclamped[c] = param[c];
+            t->EnvColor[c] = clamp01(param[c]);
+         }
+         return;
+      case GL_COMBINE_RGB:
+      case GL_COMBINE_ALPHA:
+         set_combiner_mode(ctx, t, pname, (GLenum)iparam0);
+         return;
+      case GL_SOURCE0_RGB:
+      case GL_SOURCE1_RGB:
+      case GL_SOURCE2_RGB:
+      case GL_SOURCE3_RGB_NV:
+      case GL_SOURCE0_ALPHA:
+      case GL_SOURCE1_ALPHA:
+      case GL_SOURCE2_ALPHA:
+      case GL_SOURCE3_ALPHA_NV:
+         set_combiner_source(ctx, t, pname, (GLenum)iparam0);
+         return;
+      case GL_OPERAND0_RGB:
+      case GL_OPERAND1_RGB:
+      case GL_OPERAND2_RGB:
+      case GL_OPERAND3_RGB_NV:
+      case GL_OPERAND0_ALPHA:
+      case GL_OPERAND1_ALPHA:
+      case GL_OPERAND2_ALPHA:
+      case GL_OPERAND3_ALPHA_NV:
+         set_combiner_operand(ctx, t, pname, (GLenum)iparam0);
+         return;
+      case GL_RGB_SCALE:
+      case GL_ALPHA_SCALE:
+         set_combiner_scale(ctx, t, pname, param[0]);
+         return;
+      default:
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+   } else if (target == GL_TEXTURE_FILTER_CONTROL) {
+      if (pname != GL_TEXTURE_LOD_BIAS) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      if (t->LodBias == param[0])
+         return;
+      env_flush(ctx);
+      t->LodBias = param[0];
+   } else {
+      /* GL_POINT_SPRITE's GL_COORD_REPLACE comes with point sprites */
+      fgl_error(ctx, GL_INVALID_ENUM);
+   }
+}
+
+/* While compiling, every variant is stored as glTexEnvfv: the colour's
+ * four values (integers normalized), else params[0] and zeros
+ * (dlist.c:save_TexEnvfv, save_TexEnvi, save_TexEnviv) */
+void GLAPIENTRY glTexEnvfv(GLenum target, GLenum pname, const GLfloat *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !params)
+      return;
+   FGL_SAVE(ctx, TexEnvfv, target, pname, params, pname == GL_TEXTURE_ENV_COLOR ? 4 : 1);
+   tex_envfv(ctx, target, pname, params);
+}
+
+void GLAPIENTRY glTexEnvf(GLenum target, GLenum pname, GLfloat param)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   const GLfloat p[4] = { param, 0.0f, 0.0f, 0.0f };
+   FGL_SAVE(ctx, TexEnvfv, target, pname, p, 4);
+   tex_envfv(ctx, target, pname, p);
+}
+
+void GLAPIENTRY glTexEnvi(GLenum target, GLenum pname, GLint param)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   const GLfloat p[4] = { (GLfloat)param, 0.0f, 0.0f, 0.0f };
+   FGL_SAVE(ctx, TexEnvfv, target, pname, p, 4);
+   tex_envfv(ctx, target, pname, p);
+}
+
+void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !params)
+      return;
+   GLfloat p[4] = { (GLfloat)params[0], 0.0f, 0.0f, 0.0f };
+   if (pname == GL_TEXTURE_ENV_COLOR)
+      for (int c = 0; c < 4; c++)
+         p[c] = INT_TO_FLOAT(params[c]);
+   FGL_SAVE(ctx, TexEnvfv, target, pname, p, 4);
+   tex_envfv(ctx, target, pname, p);
+}
+
+/* [S: texenv.c:get_texenvi] -1 after an error */
+static GLint get_texenvi(struct fgl_context *ctx, const struct fgl_texture_unit *t, GLenum pname)
+{
+   switch (pname) {
+   case GL_TEXTURE_ENV_MODE: return (GLint)t->EnvMode;
+   case GL_COMBINE_RGB: return (GLint)t->CombineModeRGB;
+   case GL_COMBINE_ALPHA: return (GLint)t->CombineModeA;
+   case GL_SOURCE0_RGB:
+   case GL_SOURCE1_RGB:
+   case GL_SOURCE2_RGB:
+   case GL_SOURCE3_RGB_NV:
+      return (GLint)t->SourceRGB[pname - GL_SOURCE0_RGB];
+   case GL_SOURCE0_ALPHA:
+   case GL_SOURCE1_ALPHA:
+   case GL_SOURCE2_ALPHA:
+   case GL_SOURCE3_ALPHA_NV:
+      return (GLint)t->SourceA[pname - GL_SOURCE0_ALPHA];
+   case GL_OPERAND0_RGB:
+   case GL_OPERAND1_RGB:
+   case GL_OPERAND2_RGB:
+   case GL_OPERAND3_RGB_NV:
+      return (GLint)t->OperandRGB[pname - GL_OPERAND0_RGB];
+   case GL_OPERAND0_ALPHA:
+   case GL_OPERAND1_ALPHA:
+   case GL_OPERAND2_ALPHA:
+   case GL_OPERAND3_ALPHA_NV:
+      return (GLint)t->OperandA[pname - GL_OPERAND0_ALPHA];
+   case GL_RGB_SCALE: return 1 << t->ScaleShiftRGB;
+   case GL_ALPHA_SCALE: return 1 << t->ScaleShiftA;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return -1;
+   }
+}
+
+/* [S: texenv.c:_mesa_gettexenvfv_indexed, _mesa_gettexenviv_indexed]; the
+ * float colour query returns the clamped colour (fragment colour clamping
+ * is on for the oracle's fixed-point buffers) */
+static void get_tex_env(GLenum target, GLenum pname, GLfloat *fv, GLint *iv)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const struct fgl_texture_unit *t = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   if (target == GL_TEXTURE_ENV) {
+      if (pname == GL_TEXTURE_ENV_COLOR) {
+         for (int c = 0; c < 4; c++) {
+            if (fv)
+               fv[c] = t->EnvColor[c];
+            else
+               iv[c] = fgl_float_to_int_norm(t->EnvColor[c]);   /* FLOAT_TO_INT */
+         }
+         return;
+      }
+      const GLint v = get_texenvi(ctx, t, pname);
+      if (v >= 0) {
+         if (fv)
+            *fv = (GLfloat)v;
+         else
+            *iv = v;
+      }
+   } else if (target == GL_TEXTURE_FILTER_CONTROL) {
+      if (pname != GL_TEXTURE_LOD_BIAS) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      if (fv)
+         *fv = t->LodBias;
+      else
+         *iv = (GLint)t->LodBias;
+   } else {
+      fgl_error(ctx, GL_INVALID_ENUM);
+   }
+}
+
+void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params)
+{
+   if (params)
+      get_tex_env(target, pname, params, NULL);
+}
+
+void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint *params)
+{
+   if (params)
+      get_tex_env(target, pname, NULL, params);
+}

@@ -1,0 +1,718 @@
+/*
+ * Texture objects and their parameters, no images yet (Mesa 22.3
+ * main/texobj.c, main/texparam.c): glGenTextures, glBindTexture,
+ * glDeleteTextures, glIsTexture, glAreTexturesResident,
+ * glPrioritizeTextures, glTexParameter{f,i}[v], glGetTexParameter{f,i}v.
+ *
+ * Names come from the shared hash's free-key search
+ * (hash.c:_mesa_HashFindFreeKeyBlock: one past the largest name ever
+ * used; texture objects do not enable name reuse), a generated name is an
+ * object without a target until it is first bound (glIsTexture false), and
+ * binding a name never generated creates it (compatibility profile).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "main/conv.h"
+#include "main/dlist.h"
+#include "main/groups.h"
+
+/* [S: texobj.c:_mesa_initialize_texture_object] */
+static void init_object(struct fgl_texture_object *t, GLuint name, GLenum target)
+{
+   memset(t, 0, sizeof(*t));
+   t->Name = name;
+   t->Target = target;
+   const bool rect = target == GL_TEXTURE_RECTANGLE;
+   t->MinFilter = rect ? GL_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+   t->MagFilter = GL_LINEAR;
+   t->WrapS = t->WrapT = t->WrapR = rect ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+   t->Priority = 1.0f;
+   t->MinLod = -1000.0f;
+   t->MaxLod = 1000.0f;
+   t->MaxLevel = 1000;
+}
+
+static const GLenum index_target[FGL_TEX_TARGETS] = {
+   [FGL_TEX_1D] = GL_TEXTURE_1D, [FGL_TEX_2D] = GL_TEXTURE_2D,
+   [FGL_TEX_3D] = GL_TEXTURE_3D, [FGL_TEX_CUBE] = GL_TEXTURE_CUBE_MAP,
+   [FGL_TEX_RECT] = GL_TEXTURE_RECTANGLE, [FGL_TEX_1D_ARRAY] = GL_TEXTURE_1D_ARRAY,
+   [FGL_TEX_2D_ARRAY] = GL_TEXTURE_2D_ARRAY, [FGL_TEX_CUBE_ARRAY] = GL_TEXTURE_CUBE_MAP_ARRAY,
+};
+
+void fgl_init_texobj(struct fgl_context *ctx)
+{
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   memset(to, 0, sizeof(*to));
+   for (int i = 0; i < FGL_TEX_TARGETS; i++)
+      init_object(&to->Default[i], 0, index_target[i]);
+}
+
+void fgl_free_texobj(struct fgl_context *ctx)
+{
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   for (unsigned i = 0; i < to->Count; i++)
+      free(to->Objs[i]);
+   free(to->Objs);
+   to->Objs = NULL;
+   to->Count = to->Alloc = 0;
+}
+
+/* [S: texobj.c:_mesa_tex_target_to_index] -1 for other targets */
+static int target_index(GLenum target)
+{
+   for (int i = 0; i < FGL_TEX_TARGETS; i++)
+      if (index_target[i] == target)
+         return i;
+   return -1;
+}
+
+static struct fgl_texture_object *lookup(struct fgl_context *ctx, GLuint name)
+{
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   for (unsigned i = 0; i < to->Count; i++)
+      if (to->Objs[i]->Name == name)
+         return to->Objs[i];
+   return NULL;
+}
+
+static struct fgl_texture_object *insert(struct fgl_context *ctx, GLuint name, GLenum target)
+{
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   if (to->Count == to->Alloc) {
+      const unsigned alloc = to->Alloc ? to->Alloc * 2 : 16;
+      struct fgl_texture_object **objs = realloc(to->Objs, alloc * sizeof(*objs));
+      if (!objs)
+         return NULL;
+      to->Objs = objs;
+      to->Alloc = alloc;
+   }
+   struct fgl_texture_object *t = malloc(sizeof(*t));
+   if (!t)
+      return NULL;
+   init_object(t, name, target);
+   to->Objs[to->Count++] = t;
+   if (name > to->MaxName)
+      to->MaxName = name;
+   return t;
+}
+
+/* The object bound to target's index on the active unit. */
+static struct fgl_texture_object *current_object(struct fgl_context *ctx, int index)
+{
+   const GLuint name = ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[index];
+   if (name == 0)
+      return &ctx->TexObjects.Default[index];
+   struct fgl_texture_object *t = lookup(ctx, name);
+   return t ? t : &ctx->TexObjects.Default[index];
+}
+
+/* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
+ * also marks the group for glPopAttrib */
+static void tex_flush(struct fgl_context *ctx)
+{
+   fgl_flush_vertices(ctx);
+   ctx->PopAttribState |= GL_TEXTURE_BIT;
+}
+
+/* ---- objects ---- */
+
+/* [S: texobj.c:create_textures] */
+void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (n < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!textures || n == 0)
+      return;
+   /* [S: hash.c:_mesa_HashFindFreeKeyBlock] past the largest key while
+    * that does not overflow (a search for a free block after that is not
+    * modelled: 4 billion names) */
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   if ((GLuint)n > ~0u - to->MaxName) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   const GLuint first = to->MaxName + 1;
+   for (GLsizei i = 0; i < n; i++) {
+      if (!insert(ctx, first + (GLuint)i, 0)) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      textures[i] = first + (GLuint)i;
+   }
+}
+
+/* [S: texobj.c:_mesa_BindTexture, _mesa_lookup_or_create_texture,
+ * bind_texture] */
+void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, BindTexture, target, texture);
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const int index = target_index(target);
+   if (index < 0) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (texture != 0) {
+      struct fgl_texture_object *t = lookup(ctx, texture);
+      if (t) {
+         if (t->Target != 0 && t->Target != target) {
+            fgl_error(ctx, GL_INVALID_OPERATION);
+            return;
+         }
+         if (t->Target == 0) {
+            /* [S: texobj.c:finish_texture_init] the target; a rectangle
+             * gets its clamped wraps and linear filters, other parameters
+             * (a priority set before the first bind) stay */
+            t->Target = target;
+            if (target == GL_TEXTURE_RECTANGLE) {
+               t->WrapS = t->WrapT = t->WrapR = GL_CLAMP_TO_EDGE;
+               t->MinFilter = t->MagFilter = GL_LINEAR;
+            }
+         }
+      } else if (!insert(ctx, texture, target)) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+   }
+   struct fgl_texture_unit *u = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   if (u->Bound[index] == texture)
+      return;   /* bind_texture: nothing when already bound (no flush) */
+   tex_flush(ctx);
+   u->Bound[index] = texture;
+   if (ctx->TexObjects.NumCurrentTexUsed < ctx->Texture.CurrentUnit + 1)
+      ctx->TexObjects.NumCurrentTexUsed = ctx->Texture.CurrentUnit + 1;
+}
+
+/* [S: texobj.c:delete_textures, unbind_texobj_from_texunits] */
+void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   fgl_flush_vertices(ctx);
+   if (n < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!textures)
+      return;
+   struct fgl_texture_objects *to = &ctx->TexObjects;
+   for (GLsizei i = 0; i < n; i++) {
+      if (textures[i] == 0)
+         continue;
+      for (unsigned k = 0; k < to->Count; k++) {
+         struct fgl_texture_object *t = to->Objs[k];
+         if (t->Name != textures[i])
+            continue;
+         /* every unit's binding of it goes back to the default object */
+         for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+            for (int x = 0; x < FGL_TEX_TARGETS; x++)
+               if (ctx->Texture.Unit[u].Bound[x] == t->Name) {
+                  ctx->Texture.Unit[u].Bound[x] = 0;
+                  ctx->PopAttribState |= GL_TEXTURE_BIT;
+               }
+         free(t);
+         to->Objs[k] = to->Objs[--to->Count];
+         break;
+      }
+   }
+}
+
+/* [S: texobj.c:_mesa_IsTexture] only an object bound once has a target */
+GLboolean GLAPIENTRY glIsTexture(GLuint texture)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return GL_FALSE;
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return GL_FALSE;
+   }
+   if (!texture)
+      return GL_FALSE;
+   const struct fgl_texture_object *t = lookup(ctx, texture);
+   return t && t->Target ? GL_TRUE : GL_FALSE;
+}
+
+/* [S: texobj.c:_mesa_AreTexturesResident] every object is resident;
+ * residences is never written */
+GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint *textures,
+                                           GLboolean *residences)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return GL_FALSE;
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return GL_FALSE;
+   }
+   if (n < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return GL_FALSE;
+   }
+   if (!textures || !residences)
+      return GL_FALSE;
+   for (GLsizei i = 0; i < n; i++) {
+      if (textures[i] == 0 || !lookup(ctx, textures[i])) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return GL_FALSE;
+      }
+   }
+   return GL_TRUE;
+}
+
+/* [S: texobj.c:_mesa_PrioritizeTextures] names without an object are
+ * skipped silently */
+void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures,
+                                     const GLclampf *priorities)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      /* [S: dlist.c:save_PrioritizeTextures] a node per name (none for
+       * n <= 0), then the call itself under GL_COMPILE_AND_EXECUTE */
+      bool execute = ctx->ExecuteFlag;
+      for (GLsizei i = 0; i < n && textures && priorities; i++)
+         execute = fgl_save_PrioritizeTexture1(ctx, textures[i], priorities[i]);
+      if (!execute)
+         return;
+   }
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (n < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!priorities)
+      return;
+   tex_flush(ctx);
+   for (GLsizei i = 0; i < n; i++) {
+      if (textures[i] == 0)
+         continue;
+      struct fgl_texture_object *t = lookup(ctx, textures[i]);
+      if (t)
+         t->Priority = fminf(fmaxf(priorities[i], 0.0f), 1.0f);   /* CLAMP */
+   }
+}
+
+/* ---- parameters ---- */
+
+/* [S: texparam.c:get_texobj_by_target] the targets glTexParameter takes
+ * (proxy targets and the others are INVALID_ENUM) */
+static struct fgl_texture_object *param_object(struct fgl_context *ctx, GLenum target)
+{
+   const int index = target_index(target);
+   if (index < 0) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return NULL;
+   }
+   return current_object(ctx, index);
+}
+
+/* [S: texparam.c:validate_texture_wrap_mode] */
+static bool valid_wrap(const struct fgl_texture_object *t, GLint wrap)
+{
+   if (wrap == GL_CLAMP || wrap == GL_CLAMP_TO_EDGE || wrap == GL_CLAMP_TO_BORDER)
+      return true;
+   if (t->Target == GL_TEXTURE_RECTANGLE)
+      return false;
+   return wrap == GL_REPEAT || wrap == GL_MIRRORED_REPEAT ||
+          wrap == GL_MIRROR_CLAMP_EXT || wrap == GL_MIRROR_CLAMP_TO_EDGE ||
+          wrap == GL_MIRROR_CLAMP_TO_BORDER_EXT;
+}
+
+/* [S: texparam.c:set_tex_parameteri] the integer pnames (GL 1.3 and
+ * GL_GENERATE_MIPMAP); a value equal to the current one changes nothing */
+static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum pname, GLint v)
+{
+   GLenum *wrap = NULL;
+   switch (pname) {
+   case GL_TEXTURE_MIN_FILTER:
+      if ((GLint)t->MinFilter == v)
+         return;
+      switch (v) {
+      case GL_NEAREST_MIPMAP_NEAREST:
+      case GL_LINEAR_MIPMAP_NEAREST:
+      case GL_NEAREST_MIPMAP_LINEAR:
+      case GL_LINEAR_MIPMAP_LINEAR:
+         if (t->Target == GL_TEXTURE_RECTANGLE)
+            break;
+         /* fallthrough */
+      case GL_NEAREST:
+      case GL_LINEAR:
+         tex_flush(ctx);
+         t->MinFilter = (GLenum)v;
+         return;
+      }
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   case GL_TEXTURE_MAG_FILTER:
+      if ((GLint)t->MagFilter == v)
+         return;
+      if (v != GL_NEAREST && v != GL_LINEAR) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      tex_flush(ctx);
+      t->MagFilter = (GLenum)v;
+      return;
+   case GL_TEXTURE_WRAP_S: wrap = &t->WrapS; break;
+   case GL_TEXTURE_WRAP_T: wrap = &t->WrapT; break;
+   case GL_TEXTURE_WRAP_R: wrap = &t->WrapR; break;
+   case GL_TEXTURE_BASE_LEVEL:
+      if (t->BaseLevel == v)
+         return;
+      if (t->Target == GL_TEXTURE_RECTANGLE && v != 0) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+      if (v < 0) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+      tex_flush(ctx);
+      t->BaseLevel = v;
+      return;
+   case GL_TEXTURE_MAX_LEVEL:
+      if (t->MaxLevel == v)
+         return;
+      if (v < 0 || (t->Target == GL_TEXTURE_RECTANGLE && v > 0)) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+      tex_flush(ctx);
+      t->MaxLevel = v;
+      return;
+   case GL_GENERATE_MIPMAP:
+      t->GenerateMipmap = v != 0;   /* no flush */
+      return;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if ((GLint)*wrap == v)
+      return;
+   if (!valid_wrap(t, v)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   tex_flush(ctx);
+   *wrap = (GLenum)v;
+}
+
+static inline float clamp01(float x)
+{
+   return fminf(fmaxf(x, 0.0f), 1.0f);
+}
+
+/* [S: texparam.c:set_tex_parameterf] the float pnames; the border colour
+ * is clamped to [0,1] (llvmpipe's compatibility context has no
+ * ARB_texture_float) */
+static void set_parameterf(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum pname, const float *v)
+{
+   switch (pname) {
+   case GL_TEXTURE_MIN_LOD:
+      if (t->MinLod == v[0])
+         return;
+      tex_flush(ctx);
+      t->MinLod = v[0];
+      return;
+   case GL_TEXTURE_MAX_LOD:
+      if (t->MaxLod == v[0])
+         return;
+      tex_flush(ctx);
+      t->MaxLod = v[0];
+      return;
+   case GL_TEXTURE_PRIORITY:
+      tex_flush(ctx);
+      t->Priority = clamp01(v[0]);
+      return;
+   case GL_TEXTURE_LOD_BIAS:
+      if (t->LodBias == v[0])
+         return;
+      tex_flush(ctx);
+      t->LodBias = v[0];
+      return;
+   case GL_TEXTURE_BORDER_COLOR:
+      tex_flush(ctx);
+      for (int c = 0; c < 4; c++)
+         t->BorderColor[c] = clamp01(v[c]);
+      return;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+}
+
+static bool int_pname(GLenum pname)
+{
+   switch (pname) {
+   case GL_TEXTURE_MIN_FILTER:
+   case GL_TEXTURE_MAG_FILTER:
+   case GL_TEXTURE_WRAP_S:
+   case GL_TEXTURE_WRAP_T:
+   case GL_TEXTURE_WRAP_R:
+   case GL_TEXTURE_BASE_LEVEL:
+   case GL_TEXTURE_MAX_LEVEL:
+   case GL_GENERATE_MIPMAP:
+      return true;
+   default:
+      return false;
+   }
+}
+
+/* [S: texparam.c:_mesa_texture_parameterfv] integer pnames take the value
+ * cast to GLint; the scalar glTexParameterf rounds instead and refuses the
+ * border colour */
+static void tex_parameterfv(struct fgl_context *ctx, GLenum target, GLenum pname,
+                            const GLfloat *params, bool scalar)
+{
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   struct fgl_texture_object *t = param_object(ctx, target);
+   if (!t)
+      return;
+   if (int_pname(pname)) {
+      GLint v;
+      if (scalar) {
+         /* [S: texparam.c:_mesa_texture_parameterf] (param > 0) ?
+          * floor(param + 0.5) : ceil(param - 0.5) */
+         const float p = params[0];
+         v = p > 0 ? (GLint)floor(p + 0.5) : (GLint)ceil(p - 0.5);
+      } else {
+         v = (GLint)params[0];
+      }
+      set_parameteri(ctx, t, pname, v);
+      return;
+   }
+   if (scalar && pname == GL_TEXTURE_BORDER_COLOR) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   float p[4] = { params[0], 0.0f, 0.0f, 0.0f };
+   if (pname == GL_TEXTURE_BORDER_COLOR)
+      memcpy(p, params, sizeof(p));
+   set_parameterf(ctx, t, pname, p);
+}
+
+/* [S: texparam.c:_mesa_texture_parameteriv] float pnames take the value
+ * converted to float, the border colour normalized (INT_TO_FLOAT) */
+static void tex_parameteriv(struct fgl_context *ctx, GLenum target, GLenum pname,
+                            const GLint *params, bool scalar)
+{
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   struct fgl_texture_object *t = param_object(ctx, target);
+   if (!t)
+      return;
+   if (int_pname(pname)) {
+      set_parameteri(ctx, t, pname, params[0]);
+      return;
+   }
+   if (pname == GL_TEXTURE_BORDER_COLOR) {
+      if (scalar) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      const float c[4] = { INT_TO_FLOAT(params[0]), INT_TO_FLOAT(params[1]),
+                           INT_TO_FLOAT(params[2]), INT_TO_FLOAT(params[3]) };
+      set_parameterf(ctx, t, pname, c);
+      return;
+   }
+   const float p[4] = { (GLfloat)params[0], 0.0f, 0.0f, 0.0f };
+   set_parameterf(ctx, t, pname, p);
+}
+
+/* While compiling, every variant is stored as glTexParameterfv with
+ * params[0] converted to float and the rest 0 (dlist.c:save_TexParameteri,
+ * save_TexParameteriv: an integer border colour loses three components);
+ * glTexParameterfv keeps four values. */
+void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   const GLfloat p[4] = { param, 0.0f, 0.0f, 0.0f };
+   FGL_SAVE(ctx, TexParameterfv, target, pname, p, 4);
+   tex_parameterfv(ctx, target, pname, p, true);
+}
+
+void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !params)
+      return;
+   FGL_SAVE(ctx, TexParameterfv, target, pname, params,
+            pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1);
+   tex_parameterfv(ctx, target, pname, params, false);
+}
+
+void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint param)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   const GLfloat f[4] = { (GLfloat)param, 0.0f, 0.0f, 0.0f };
+   FGL_SAVE(ctx, TexParameterfv, target, pname, f, 4);
+   tex_parameteriv(ctx, target, pname, &param, true);
+}
+
+void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx || !params)
+      return;
+   const GLfloat f[4] = { (GLfloat)params[0], 0.0f, 0.0f, 0.0f };
+   FGL_SAVE(ctx, TexParameterfv, target, pname, f, 4);
+   tex_parameteriv(ctx, target, pname, params, false);
+}
+
+/* [S: texparam.c:get_tex_parameterfv, get_tex_parameteriv] the GL 1.3
+ * pnames; GL_TEXTURE_RESIDENT is always true */
+static bool get_parameter(struct fgl_context *ctx, GLenum target, GLenum pname,
+                          float f[4], GLint i[4], bool *is_float, int *count)
+{
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return false;
+   }
+   struct fgl_texture_object *t = param_object(ctx, target);
+   if (!t)
+      return false;
+   *count = 1;
+   *is_float = false;
+   switch (pname) {
+   case GL_TEXTURE_MIN_FILTER: i[0] = (GLint)t->MinFilter; break;
+   case GL_TEXTURE_MAG_FILTER: i[0] = (GLint)t->MagFilter; break;
+   case GL_TEXTURE_WRAP_S: i[0] = (GLint)t->WrapS; break;
+   case GL_TEXTURE_WRAP_T: i[0] = (GLint)t->WrapT; break;
+   case GL_TEXTURE_WRAP_R: i[0] = (GLint)t->WrapR; break;
+   case GL_TEXTURE_BASE_LEVEL: i[0] = t->BaseLevel; break;
+   case GL_TEXTURE_MAX_LEVEL: i[0] = t->MaxLevel; break;
+   case GL_GENERATE_MIPMAP: i[0] = t->GenerateMipmap; break;
+   case GL_TEXTURE_RESIDENT: i[0] = GL_TRUE; break;
+   case GL_TEXTURE_BORDER_COLOR:
+      memcpy(f, t->BorderColor, 4 * sizeof(float));
+      *count = 4;
+      *is_float = true;
+      break;
+   case GL_TEXTURE_PRIORITY: f[0] = t->Priority; *is_float = true; break;
+   case GL_TEXTURE_MIN_LOD: f[0] = t->MinLod; *is_float = true; break;
+   case GL_TEXTURE_MAX_LOD: f[0] = t->MaxLod; *is_float = true; break;
+   case GL_TEXTURE_LOD_BIAS: f[0] = t->LodBias; *is_float = true; break;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   }
+   return true;
+}
+
+void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   float f[4];
+   GLint i[4];
+   bool is_float;
+   int count;
+   if (!get_parameter(ctx, target, pname, f, i, &is_float, &count) || !params)
+      return;
+   for (int c = 0; c < count; c++)
+      params[c] = is_float ? f[c] : (GLfloat)i[c];
+}
+
+/* integer queries of float values: rounded, the border colour through
+ * CLAMP then FLOAT_TO_INT, the priority FLOAT_TO_INT
+ * [S: texparam.c:get_tex_parameteriv] */
+void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   float f[4];
+   GLint i[4];
+   bool is_float;
+   int count;
+   if (!get_parameter(ctx, target, pname, f, i, &is_float, &count) || !params)
+      return;
+   for (int c = 0; c < count; c++) {
+      if (!is_float)
+         params[c] = i[c];
+      else if (pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_PRIORITY)
+         params[c] = fgl_float_to_int_norm(clamp01(f[c]));   /* FLOAT_TO_INT */
+      else   /* LCLAMPF: the nearest integer, clamped to GLint's range */
+         params[c] = f[c] >= 2147483647.0f ? 2147483647
+                   : f[c] <= -2147483648.0f ? (GLint)-2147483647 - 1
+                   : (GLint)(f[c] >= 0.0f ? f[c] + 0.5f : f[c] - 0.5f);
+   }
+}
+
+/* ---- GL_TEXTURE_BIT ---- */
+
+/* [S: attrib.c:_mesa_PushAttrib] the default objects always; for the
+ * units that have had a texture bound (NumCurrentTexUsed; only unit 0
+ * exists for now) the LOD bias and a copy of each bound named object.
+ * Otherwise the node keeps what an earlier push at the same depth left
+ * (the node is allocated zeroed once). */
+void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node)
+{
+   memcpy(node->TexDefault, ctx->TexObjects.Default, sizeof(node->TexDefault));
+   node->TexSaved = ctx->TexObjects.NumCurrentTexUsed > 0;
+   if (!node->TexSaved)
+      return;
+   node->TexLodBias = ctx->Texture.Unit[0].LodBias;
+   for (int x = 0; x < FGL_TEX_TARGETS; x++)
+      node->TexObj[x] = *current_object(ctx, x);
+}
+
+/* [S: attrib.c:pop_texture_group] after the bindings are restored (a
+ * unit not saved had nothing but default objects bound at the push): the
+ * LOD bias from the node, saved or not; for a saved unit each bound named
+ * object gets the saved parameters back (a deleted one is created again
+ * by the rebind); then the default objects get theirs back */
+void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   ctx->Texture.Unit[0].LodBias = node->TexLodBias;
+   if (node->TexSaved) {
+      const struct fgl_texture_object *saved = node->TexObj;
+      const struct fgl_texture_unit *u = &ctx->Texture.Unit[0];
+      for (int x = 0; x < FGL_TEX_TARGETS; x++) {
+         const GLuint name = u->Bound[x];
+         if (name == 0)
+            continue;
+         struct fgl_texture_object *t = lookup(ctx, name);
+         if (!t)
+            t = insert(ctx, name, index_target[x]);
+         if (t && saved[x].Name == name)
+            *t = saved[x];
+      }
+   }
+   memcpy(ctx->TexObjects.Default, node->TexDefault, sizeof(node->TexDefault));
+}
