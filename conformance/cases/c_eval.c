@@ -657,6 +657,72 @@ static void grid_initial(fc_h *h)
     fc_error(h, "end");
 }
 
+/* Texture-coordinate maps feed texture unit 0's coordinate (the highest
+ * enabled TEXTURE_COORD_n wins), seen in GL_4D_COLOR_TEXTURE feedback and
+ * in the current values and the vertex format they leave. */
+static void texcoord_maps(fc_h *h)
+{
+    static GLfloat fb[1024];
+    static const GLfloat line[2][3] = { { -0.9f, -0.5f, 0.0f }, { 0.9f, 0.6f, 0.5f } };
+    static const GLfloat tc1[3][1] = { { 0.0f }, { 2.5f }, { -1.0f } };
+    static const GLfloat tc2[2][2] = { { 0.25f, 1.0f }, { 0.75f, -0.5f } };
+    static const GLfloat tc3[2][2][3] = {
+        { { 0, 0, 0.5f }, { 1, 0, 0.25f } }, { { 0, 1, 0.125f }, { 1, 1, 1 } } };
+    static const GLfloat tc4[2][2][4] = {
+        { { 0, 0, 0, 1 }, { 2, 0, 0, 2 } }, { { 0, 3, 1, 1 }, { 1, 1, 1, 0.5f } } };
+    setup();
+    make_patch();
+    glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 2, &line[0][0]);
+    glMap1f(GL_MAP1_TEXTURE_COORD_1, 0.0f, 1.0f, 1, 3, &tc1[0][0]);
+    glMap1f(GL_MAP1_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 2, &tc2[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glEnable(GL_MAP1_TEXTURE_COORD_1);
+    glMapGrid1f(4, 0.0f, 1.0f);
+
+    glFeedbackBuffer(1024, GL_4D_COLOR_TEXTURE, fb);
+    glRenderMode(GL_FEEDBACK);
+    glEvalMesh1(GL_LINE, 0, 4);          /* TEXTURE_COORD_1 */
+    glEnable(GL_MAP1_TEXTURE_COORD_2);
+    glEvalMesh1(GL_POINT, 1, 3);         /* 2 wins over 1 */
+    glBegin(GL_LINE_STRIP);
+    glTexCoord4f(9, 8, 7, 6);
+    glVertex2f(-0.5f, 0.9f);
+    glEvalCoord1f(0.375f);               /* the map's coordinate, then back */
+    glVertex2f(0.5f, 0.9f);
+    glEnd();
+    GLint n = glRenderMode(GL_RENDER);
+    fc_value(h, "feedback values 1d", n);
+    if (n > 0)
+        fc_blob(h, "feedback 1d", fb, (size_t)n * sizeof(GLfloat));
+    fc_get_float(h, "texcoord after 1d", GL_CURRENT_TEXTURE_COORDS, 4);
+
+    glMap2f(GL_MAP2_VERTEX_3, 0.0f, 1.0f, 3, 4, 0.0f, 1.0f, 12, 4, &patch[0][0][0]);
+    glMap2f(GL_MAP2_TEXTURE_COORD_3, 0.0f, 1.0f, 3, 2, 0.0f, 1.0f, 6, 2, &tc3[0][0][0]);
+    glMap2f(GL_MAP2_TEXTURE_COORD_4, 0.0f, 1.0f, 4, 2, 0.0f, 1.0f, 8, 2, &tc4[0][0][0]);
+    glEnable(GL_MAP2_VERTEX_3);
+    glEnable(GL_MAP2_TEXTURE_COORD_3);
+    glEnable(GL_AUTO_NORMAL);
+    glMapGrid2f(3, 0.0f, 1.0f, 2, 0.0f, 1.0f);
+    glRenderMode(GL_FEEDBACK);
+    glEvalMesh2(GL_FILL, 0, 3, 0, 2);    /* TEXTURE_COORD_3 */
+    glEnable(GL_MAP2_TEXTURE_COORD_4);
+    glEvalMesh2(GL_LINE, 1, 2, 0, 1);    /* 4 wins */
+    n = glRenderMode(GL_RENDER);
+    fc_value(h, "feedback values 2d", n);
+    if (n > 0)
+        fc_blob(h, "feedback 2d", fb, (size_t)n * sizeof(GLfloat));
+    fc_get_float(h, "texcoord after 2d", GL_CURRENT_TEXTURE_COORDS, 4);
+    fc_get_float(h, "normal after 2d", GL_CURRENT_NORMAL, 3);
+
+    /* the same maps rendered (texture coordinates do not change the image
+     * while no texture is complete) */
+    glEnable(GL_DEPTH_TEST);
+    glEvalMesh2(GL_FILL, 0, 3, 0, 2);
+    glEvalMesh1(GL_LINE, 0, 4);
+    fc_capture(h);
+    fc_error(h, "end");
+}
+
 const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/curve_orders", 64, 64, 1, "eval", curve_orders),
     FC_CASE_RGBA("eval/mesh1_modes", 48, 48, 1, "eval", mesh1_modes),
@@ -672,5 +738,6 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/grid_initial", 32, 32, 1, "eval", grid_initial),
     FC_CASE_RGBA("eval/stale_slots", 32, 32, 1, "eval", stale_slots),
     FC_CASE_RGBA("eval/dlist_compile_execute", 48, 48, 1, "eval dlist", dlist_compile_execute),
+    FC_CASE_RGBA("eval/texcoord_maps", 48, 48, 1, "eval feedback texture", texcoord_maps),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

@@ -428,22 +428,33 @@ void GLAPIENTRY glMapGrid2d(GLint un, GLdouble u1, GLdouble u2,
 
 /* ---- evaluation ---- */
 
-/* vbo_exec_eval_update: the attribute each enabled map feeds (texture
- * coordinates have no attribute yet: -1) and the map index, for the
- * attributes fixgl has; the vertex map last */
+/* vbo_exec_eval_update: the attribute each enabled map feeds and the map
+ * index, in vbo attribute order (NORMAL, COLOR0, TEX0), as the fixup and
+ * evaluation loops of _mesa_EvalCoord and vbo_exec_do_EvalCoord run
+ * 1..VBO_ATTRIB_TEX7; the vertex map apart.  TEXTURE_COORD_4 wins over 3,
+ * 2 and 1.  GL_MAP*_INDEX is never evaluated (vbo_exec_eval_update has no
+ * entry for it). */
 struct active_map {
    int attr;
    int index;
 };
 
-static unsigned active_maps(const bool *enabled, struct active_map out[3], int *vertex)
+#define EV_MAX_ACTIVE 3
+
+static unsigned active_maps(const bool *enabled, struct active_map out[EV_MAX_ACTIVE],
+                            int *vertex)
 {
    unsigned n = 0;
-   if (enabled[EV_COLOR4])
-      out[n++] = (struct active_map){ FGL_ATTR_COLOR0, EV_COLOR4 };
-   /* TEXTURE_COORD_4 over 3, 2, 1 feed VBO_ATTRIB_TEX0: not stored yet */
    if (enabled[EV_NORMAL])
       out[n++] = (struct active_map){ FGL_ATTR_NORMAL, EV_NORMAL };
+   if (enabled[EV_COLOR4])
+      out[n++] = (struct active_map){ FGL_ATTR_COLOR0, EV_COLOR4 };
+   for (int t = EV_TEX4; t >= EV_TEX1; t--) {
+      if (enabled[t]) {
+         out[n++] = (struct active_map){ FGL_ATTR_TEX0, t };
+         break;
+      }
+   }
    *vertex = enabled[EV_VERTEX4] ? EV_VERTEX4 : enabled[EV_VERTEX3] ? EV_VERTEX3 : -1;
    return n;
 }
@@ -456,8 +467,7 @@ static void fixup_attrs(struct fgl_context *ctx, const struct active_map *am, un
    if (vertex >= 0)
       fgl_vbo_fixup(ctx, FGL_ATTR_POS, eval_components[vertex]);
    for (unsigned i = 0; i < n; i++) {
-      /* NORMAL (1) before COLOR0 (2) */
-      const struct active_map *m = &am[n - 1 - i];
+      const struct active_map *m = &am[i];
       if (ctx->Vbo.active_size[m->attr] != eval_components[m->index])
          fgl_vbo_fixup(ctx, (enum fgl_vbo_attr)m->attr, eval_components[m->index]);
    }
@@ -480,7 +490,7 @@ static void set_attr(struct fgl_context *ctx, int attr, const float data[4])
 static void eval_coord1(struct fgl_context *ctx, GLfloat u)
 {
    struct fgl_eval_maps *em = &ctx->EvalMap;
-   struct active_map am[3];
+   struct active_map am[EV_MAX_ACTIVE];
    int vertex;
    const unsigned n = active_maps(em->Map1Enabled, am, &vertex);
 
@@ -517,7 +527,7 @@ static void eval_coord1(struct fgl_context *ctx, GLfloat u)
 static void eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v)
 {
    struct fgl_eval_maps *em = &ctx->EvalMap;
-   struct active_map am[3];
+   struct active_map am[EV_MAX_ACTIVE];
    int vertex;
    const unsigned n = active_maps(em->Map2Enabled, am, &vertex);
 
