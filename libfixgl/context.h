@@ -73,6 +73,7 @@ enum {
    FGL_NEW_POINT      = 1u << 12,  /* point size, smoothing */
    FGL_NEW_LINE       = 1u << 13,  /* line width, smoothing, stipple */
    FGL_NEW_RENDERMODE = 1u << 14,  /* glRenderMode: the draw pipeline's stages */
+   FGL_NEW_PIXEL      = 1u << 15,  /* pixel transfer, zoom and maps (main/pixel.c) */
 };
 #define FGL_NEW_ALL (~0u)
 
