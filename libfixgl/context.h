@@ -252,7 +252,7 @@ struct fgl_accum_attrib {
    float ClearColor[4];     /* glClearAccum, clamped to [-1, 1] */
 };
 
-/* The pixel maps (glPixelMap comes with the pixel path) [S: main/mtypes.h,
+/* The pixel maps (glPixelMap, main/pixel.c) [S: main/mtypes.h,
  * gl_pixelmaps]: each has one entry, 0, at first. */
 #define FGL_MAX_PIXEL_MAP_TABLE 256
 struct fgl_pixelmap {
@@ -267,7 +267,7 @@ struct fgl_pixelmaps {
 };
 
 /* GL_PIXEL_MODE_BIT [S: main/mtypes.h, gl_pixel_attrib]: pixel transfer
- * and zoom, whose setters come with the pixel path, and the read buffer */
+ * and zoom (main/pixel.c), and the read buffer */
 struct fgl_pixel_attrib {
    GLenum ReadBuffer;       /* glReadBuffer (main/buffers.c): as given */
    float RedBias, RedScale;

@@ -389,6 +389,45 @@ static void pushpop(fc_h *h)
     fc_error(h, "end");
 }
 
+/* A transfer or zoom value changed and set back still marks the group for
+ * glPopAttrib (Mesa's FLUSH_VERTICES(.., GL_PIXEL_MODE_BIT)), whose restore
+ * flushes through glReadBuffer: seen on a colour left in the vertex format
+ * after the push of GL_CURRENT_BIT.  A map changed back does not mark it. */
+static void pushpop_flush(fc_h *h)
+{
+    static const struct { int kind; const char *label; } steps[] = {
+        { 0, "zoom back" }, { 1, "transfer back" }, { 2, "map" }, { 3, "nothing" },
+    };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    char l[64];
+    for (int i = 0; i < 4; i++) {
+        glColor3f(0.2f, 0.4f, 0.6f);
+        fcu_rect((float)(i * 8), 0, (float)(i * 8 + 4), 4, 0);
+        glPushAttrib(GL_CURRENT_BIT | GL_PIXEL_MODE_BIT);
+        if (steps[i].kind == 0) {
+            glPixelZoom(2.0f, 2.0f);
+            glPixelZoom(1.0f, 1.0f);
+        } else if (steps[i].kind == 1) {
+            glPixelTransferf(GL_RED_SCALE, 2.0f);
+            glPixelTransferf(GL_RED_SCALE, 1.0f);
+        } else if (steps[i].kind == 2) {
+            const GLfloat v[2] = { 0.5f, 0.25f };
+            glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 2, v);
+            glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 1, v);
+        }
+        glColor3f(0.0f, 1.0f, 0.0f);
+        glPopAttrib();
+        snprintf(l, sizeof l, "%s colour", steps[i].label);
+        fc_get_float(h, l, GL_CURRENT_COLOR, 4);
+        fcu_rect((float)(i * 8), 4, (float)(i * 8 + 8), 12, 0);
+        snprintf(l, sizeof l, "%s colour after draw", steps[i].label);
+        fc_get_float(h, l, GL_CURRENT_COLOR, 4);
+    }
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
 /* Display lists: compiled (uiv/usv converted at compile time), replayed;
  * compiled errors raised at replay; glGetPixelMap executes at once */
 static void dlist(fc_h *h)
@@ -464,6 +503,7 @@ const fc_case fc_cases_pixelstate[] = {
     FC_CASE_RGBA("pixelstate/sizes", 8, 8, 0, "pixel api errors", sizes),
     FC_CASE_RGBA("pixelstate/errors", 8, 8, 0, "pixel api errors", errors),
     FC_CASE_RGBA("pixelstate/pushpop", 8, 8, 0, "pixel api attrib", pushpop),
+    FC_CASE_RGBA("pixelstate/pushpop_flush", 32, 16, 1, "pixel api attrib", pushpop_flush),
     FC_CASE_RGBA("pixelstate/dlist", 8, 8, 0, "pixel api dlist", dlist),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

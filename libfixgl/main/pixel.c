@@ -57,6 +57,10 @@ static struct fgl_pixelmap *get_pixelmap(struct fgl_context *ctx, GLenum map)
 /* glPixelZoom, glPixelTransfer                                        */
 /* ------------------------------------------------------------------ */
 
+/* A change marks GL_PIXEL_MODE_BIT for glPopAttrib (Mesa passes it to
+ * FLUSH_VERTICES), so a value changed and set back still makes the pop
+ * restore the group, whose glReadBuffer flushes; glPixelMap passes 0. */
+
 void GLAPIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -69,6 +73,7 @@ void GLAPIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor)
    if (ctx->Pixel.ZoomX == xfactor && ctx->Pixel.ZoomY == yfactor)
       return;
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_PIXEL);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;   /* FLUSH_VERTICES(.., GL_PIXEL_MODE_BIT) */
    ctx->Pixel.ZoomX = xfactor;
    ctx->Pixel.ZoomY = yfactor;
 }
@@ -78,6 +83,7 @@ static void set_float(struct fgl_context *ctx, float *dst, float param)
    if (*dst == param)
       return;
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_PIXEL);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;
    *dst = param;
 }
 
@@ -88,6 +94,7 @@ static void set_int(struct fgl_context *ctx, GLint *dst, float param)
    if (*dst == v)
       return;
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_PIXEL);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;
    *dst = v;
 }
 
@@ -97,6 +104,7 @@ static void set_flag(struct fgl_context *ctx, bool *dst, float param)
    if (*dst == v)
       return;
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_PIXEL);
+   ctx->PopAttribState |= GL_PIXEL_MODE_BIT;
    *dst = v;
 }
 
