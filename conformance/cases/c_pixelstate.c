@@ -209,6 +209,8 @@ static void maps_fv(fc_h *h)
     fc_error(h, "set 16");
     read_maps(h, "16");
     for (int m = 0; m < NMAPS; m++)
+        get_all(h, map_names[m], map_sizes[m]);
+    for (int m = 0; m < NMAPS; m++)
         glPixelMapfv(maps[m], 256, ftab);
     fc_error(h, "set 256");
     read_maps(h, "256");

@@ -227,6 +227,12 @@ static void pixel_map_converted(struct fgl_context *ctx, GLenum map, GLsizei map
 {
    GLfloat fvalues[FGL_MAX_PIXEL_MAP_TABLE];
    const bool index = map == GL_PIXEL_MAP_I_TO_I || map == GL_PIXEL_MAP_S_TO_S;
+   if (!ctx->CompileFlag) {
+      /* executed: the values are read only after the size tests */
+      ASSERT_OUTSIDE_BEGIN_END(ctx);
+      if (!check_map_size(ctx, map, mapsize))
+         return;
+   }
    const unsigned n = saved_count(mapsize, values);
    for (unsigned i = 0; i < n; i++) {
       if (is_uint) {
