@@ -73,6 +73,7 @@ enum {
    FGL_NEW_POINT      = 1u << 12,  /* point size, smoothing */
    FGL_NEW_LINE       = 1u << 13,  /* line width, smoothing, stipple */
    FGL_NEW_RENDERMODE = 1u << 14,  /* glRenderMode: the draw pipeline's stages */
+   FGL_NEW_PIXEL      = 1u << 15,  /* pixel transfer, zoom and maps (main/pixel.c) */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -251,7 +252,7 @@ struct fgl_accum_attrib {
    float ClearColor[4];     /* glClearAccum, clamped to [-1, 1] */
 };
 
-/* The pixel maps (glPixelMap comes with the pixel path) [S: main/mtypes.h,
+/* The pixel maps (glPixelMap, main/pixel.c) [S: main/mtypes.h,
  * gl_pixelmaps]: each has one entry, 0, at first. */
 #define FGL_MAX_PIXEL_MAP_TABLE 256
 struct fgl_pixelmap {
@@ -266,7 +267,7 @@ struct fgl_pixelmaps {
 };
 
 /* GL_PIXEL_MODE_BIT [S: main/mtypes.h, gl_pixel_attrib]: pixel transfer
- * and zoom, whose setters come with the pixel path, and the read buffer */
+ * and zoom (main/pixel.c), and the read buffer */
 struct fgl_pixel_attrib {
    GLenum ReadBuffer;       /* glReadBuffer (main/buffers.c): as given */
    float RedBias, RedScale;

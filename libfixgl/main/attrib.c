@@ -282,7 +282,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_LIGHTING_BIT, Current.Attrib[FGL_ATTR_MAT_FIRST], Material, 0, NULL, restore_nothing),
    GROUP(GL_LINE_BIT, Line, Line, FGL_NEW_LINE, NULL, NULL),
    GROUP(GL_LIST_BIT, List, List, 0, NULL, NULL),
-   GROUP(GL_PIXEL_MODE_BIT, Pixel, Pixel, 0, NULL, NULL),
+   GROUP(GL_PIXEL_MODE_BIT, Pixel, Pixel, FGL_NEW_PIXEL, NULL, NULL),
    GROUP(GL_POINT_BIT, Point, Point, FGL_NEW_POINT, NULL, NULL),
    GROUP(GL_POLYGON_BIT, Polygon, Polygon, FGL_NEW_POLYGON, NULL, NULL),
    GROUP(GL_POLYGON_STIPPLE_BIT, PolygonStipple, PolygonStipple, FGL_NEW_POLYGON, NULL, NULL),

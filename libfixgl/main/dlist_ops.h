@@ -53,6 +53,11 @@ DL_OP1(ClearIndex, FU)        /* Mesa replays the float's bits as a number */
 DL_OP1(IndexMask, U)
 DL_OP1(DrawBuffer, E)
 DL_OP1(ReadBuffer, E)         /* GL_PIXEL_MODE_BIT state, compiled by Mesa */
+DL_OP2(PixelTransferf, E, F)  /* glPixelTransferi: converted, then this */
+DL_OP2(PixelZoom, F, F)
+DL_OPV2(PixelMapfv, E, SZ, F, 256) /* uiv/usv converted at compile time
+                                    * (save_PixelMapuiv/usv); the hook
+                                    * passes min(mapsize, 256) values */
 /* ---- depth, stencil, scissor, viewport ---- */
 DL_OP1(DepthFunc, E)
 DL_OP1(DepthMask, B)
