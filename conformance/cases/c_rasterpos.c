@@ -258,6 +258,94 @@ static void rp_color_texcoord(fc_h *h)
     rp_query(h, "current after glEnd");
 }
 
+/* Lit raster colours: Mesa's CPU lighting (front material only), in
+ * object space (directional lights, rotation-only modelview) and in eye
+ * space (positional, spot, local viewer, separate specular, a scaled
+ * modelview); a normal facing away; colour material. */
+static void rp_lit(fc_h *h)
+{
+    static const float pos0[4] = { 0.3f, 0.5f, 0.8f, 0.0f };
+    static const float pos1[4] = { -1.0f, 2.0f, 1.5f, 1.0f };
+    static const float amb[4] = { 0.1f, 0.15f, 0.2f, 1.0f };
+    static const float dif[4] = { 0.7f, 0.5f, 0.9f, 1.0f };
+    static const float spe[4] = { 0.9f, 0.8f, 0.4f, 1.0f };
+    static const float mamb[4] = { 0.3f, 0.2f, 0.4f, 0.6f };
+    static const float mdif[4] = { 0.8f, 0.6f, 0.3f, 0.45f };
+    static const float mspe[4] = { 0.5f, 0.7f, 0.9f, 1.0f };
+    static const float memi[4] = { 0.05f, 0.02f, 0.0f, 1.0f };
+    static const float spot_dir[3] = { 0.4f, -0.7f, -0.5f };
+    glViewport(0, 0, 32, 32);
+    fcu_frustum(-1, 1, -1, 1, 1, 10);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glLightfv(GL_LIGHT0, GL_POSITION, pos0);
+    glLightfv(GL_LIGHT0, GL_AMBIENT, amb);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, dif);
+    glLightfv(GL_LIGHT0, GL_SPECULAR, spe);
+    glMaterialfv(GL_FRONT, GL_AMBIENT, mamb);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, mdif);
+    glMaterialfv(GL_FRONT, GL_SPECULAR, mspe);
+    glMaterialfv(GL_FRONT, GL_EMISSION, memi);
+    glMaterialf(GL_FRONT, GL_SHININESS, 12.5f);
+    glMaterialf(GL_BACK, GL_SHININESS, 3.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glTranslatef(0.1f, -0.2f, -4.0f);
+    glRotatef(25.0f, 0.3f, 0.9f, 0.1f);
+    glNormal3f(0.2f, 0.4f, 0.9f);
+    glColor3f(0.1f, 0.9f, 0.5f);
+    glRasterPos3f(0.3f, 0.2f, 0.1f);
+    rp_query(h, "directional");
+    glNormal3f(-0.2f, -0.4f, -0.9f);
+    glRasterPos3f(0.3f, 0.2f, 0.1f);
+    rp_query(h, "facing away");
+    glNormal3f(0.5f, 0.3f, 0.6f);
+    glScalef(1.5f, 0.8f, 1.1f);
+    glRasterPos3f(0.2f, -0.2f, 0.3f);
+    rp_query(h, "scaled modelview");
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glRasterPos3f(0.2f, -0.2f, 0.3f);
+    rp_query(h, "two-sided");
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+    glEnable(GL_LIGHT1);
+    glPushMatrix();
+    glLoadIdentity();
+    glLightfv(GL_LIGHT1, GL_POSITION, pos1);
+    glLightfv(GL_LIGHT1, GL_SPECULAR, spe);
+    glLightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.2f);
+    glLightf(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.05f);
+    glPopMatrix();
+    glRasterPos3f(0.1f, 0.3f, -0.2f);
+    rp_query(h, "positional");
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+    glRasterPos3f(0.1f, 0.3f, -0.2f);
+    rp_query(h, "local viewer");
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    glRasterPos3f(-0.3f, 0.1f, 0.2f);
+    rp_query(h, "separate specular");
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_FALSE);
+    glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, spot_dir);
+    glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 60.0f);
+    glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 3.5f);
+    glRasterPos3f(-0.3f, 0.1f, 0.2f);
+    rp_query(h, "spot");
+    glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 5.0f);
+    glRasterPos3f(-0.3f, 0.1f, 0.2f);
+    rp_query(h, "spot outside cone");
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+    glDisable(GL_LIGHT1);
+    glLoadIdentity();
+    glTranslatef(0.0f, 0.0f, -3.0f);
+    glRotatef(-40.0f, 1.0f, 0.2f, 0.0f);
+    glEnable(GL_COLOR_MATERIAL);
+    glColor4f(0.9f, 0.3f, 0.2f, 0.35f);
+    glRasterPos3f(0.2f, 0.2f, 0.2f);
+    rp_query(h, "color material");
+    glDisable(GL_LIGHTING);
+    glRasterPos3f(0.2f, 0.2f, 0.2f);
+    rp_query(h, "lighting off");
+}
+
 /* Inside glBegin/glEnd: INVALID_OPERATION, nothing changes. */
 static void rp_errors(fc_h *h)
 {
@@ -376,6 +464,7 @@ const fc_case fc_cases_rasterpos[] = {
     FC_CASE_RGBA("pixel/rasterpos_variants", 64, 52, 0, "pixel rasterpos", rp_variants),
     FC_CASE_RGBA("pixel/rasterpos_fog_distance", 32, 32, 0, "pixel rasterpos fog", rp_fog_distance),
     FC_CASE_RGBA("pixel/rasterpos_color_texcoord", 16, 16, 0, "pixel rasterpos", rp_color_texcoord),
+    FC_CASE_RGBA("pixel/rasterpos_lit", 32, 32, 0, "pixel rasterpos light", rp_lit),
     FC_CASE_RGBA("pixel/rasterpos_errors", 16, 16, 0, "pixel rasterpos errors", rp_errors),
     FC_CASE_RGBA("pixel/rasterpos_dlist", 32, 32, 0, "pixel rasterpos dlist", rp_dlist),
     FC_CASE_RGBA("pixel/rasterpos_attrib", 32, 32, 0, "pixel rasterpos attrib", rp_attrib),
