@@ -4,6 +4,7 @@
  * other values kept); w != 1 and w == 0; every variant; fog distance; the
  * texture matrix; display lists; glPushAttrib(GL_CURRENT_BIT); selection
  * and feedback; errors inside glBegin/glEnd; queries in every type. */
+#include <math.h>
 #include <stdio.h>
 
 #include "cases.h"
@@ -346,6 +347,39 @@ static void rp_lit(fc_h *h)
     rp_query(h, "lighting off");
 }
 
+/* Non-finite and huge coordinates, a singular modelview with lighting. */
+static void rp_robust(fc_h *h)
+{
+    const float inf = INFINITY, nan = NAN;
+    glViewport(0, 0, 16, 16);
+    fcu_ortho(-1, 1, -1, 1, -1, 1);
+    glRasterPos4f(nan, 0.2f, 0.1f, 1.0f);
+    rp_query(h, "nan x");
+    glRasterPos4f(0.2f, 0.1f, 0.3f, nan);
+    rp_query(h, "nan w");
+    glRasterPos4f(inf, 0.2f, 0.1f, 1.0f);
+    rp_query(h, "inf x");
+    glRasterPos4f(0.5f, 0.2f, 0.1f, inf);
+    rp_query(h, "inf w");
+    glRasterPos4f(1e30f, -1e30f, 1e30f, 1e30f);
+    rp_query(h, "huge");
+    glRasterPos4f(1e-30f, 1e-30f, -1e-30f, 1e-38f);
+    rp_query(h, "tiny w");
+    glRasterPos4d(1e300, 0.0, 0.0, 1e300);
+    rp_query(h, "double overflow");
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glMatrixMode(GL_MODELVIEW);
+    glScalef(1.0f, 0.0f, 1.0f);
+    glNormal3f(0.3f, 0.4f, 0.5f);
+    glRasterPos3f(0.2f, 0.3f, 0.4f);
+    rp_query(h, "singular lit");
+    glLoadIdentity();
+    glNormal3f(0.0f, 0.0f, 0.0f);
+    glRasterPos3f(0.2f, 0.3f, 0.4f);
+    rp_query(h, "zero normal lit");
+}
+
 /* Inside glBegin/glEnd: INVALID_OPERATION, nothing changes. */
 static void rp_errors(fc_h *h)
 {
@@ -393,6 +427,15 @@ static void rp_dlist(fc_h *h)
     rp_query(h, "compiled inside begin");
     glCallList(l);
     rp_query(h, "call list begin");
+    /* a list with a raster position called between glBegin and glEnd */
+    glNewList(l, GL_COMPILE);
+    glRasterPos2f(-0.3f, 0.6f);
+    glEndList();
+    glBegin(GL_POINTS);
+    glVertex2f(0.1f, 0.1f);
+    glCallList(l);
+    glEnd();
+    rp_query(h, "call list inside begin");
     glDeleteLists(l, 2);
 }
 
@@ -465,6 +508,7 @@ const fc_case fc_cases_rasterpos[] = {
     FC_CASE_RGBA("pixel/rasterpos_fog_distance", 32, 32, 0, "pixel rasterpos fog", rp_fog_distance),
     FC_CASE_RGBA("pixel/rasterpos_color_texcoord", 16, 16, 0, "pixel rasterpos", rp_color_texcoord),
     FC_CASE_RGBA("pixel/rasterpos_lit", 32, 32, 0, "pixel rasterpos light", rp_lit),
+    FC_CASE_RGBA("pixel/rasterpos_robust", 16, 16, 0, "pixel rasterpos robust", rp_robust),
     FC_CASE_RGBA("pixel/rasterpos_errors", 16, 16, 0, "pixel rasterpos errors", rp_errors),
     FC_CASE_RGBA("pixel/rasterpos_dlist", 32, 32, 0, "pixel rasterpos dlist", rp_dlist),
     FC_CASE_RGBA("pixel/rasterpos_attrib", 32, 32, 0, "pixel rasterpos attrib", rp_attrib),
