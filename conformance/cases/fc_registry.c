@@ -23,6 +23,7 @@ static const fc_case *const groups[] = {
     fc_cases_query_walk,
     fc_cases_eval,
     fc_cases_pixelstate,
+    fc_cases_rasterpos,
 };
 
 size_t fc_case_count(void)

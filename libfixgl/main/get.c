@@ -422,6 +422,9 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_CURRENT_RASTER_COLOR:
       set_floats(val, V_FLOATN, ctx->Current.RasterColor, 4);
       return true;
+   case GL_CURRENT_RASTER_SECONDARY_COLOR:
+      set_floats(val, V_FLOATN, ctx->Current.RasterSecondaryColor, 4);   /* TYPE_FLOATN_4 */
+      return true;
    case GL_CURRENT_RASTER_INDEX:
       set_ints(val, V_INT, 1, 1, 0, 0, 0);     /* CONST(1) */
       return true;

@@ -1,0 +1,400 @@
+/*
+ * glRasterPos{2,3,4}{s,i,f,d}[v] (GL_CURRENT_BIT's raster position).
+ *
+ * [S: state_tracker/st_cb_rasterpos.c:st_RasterPos] With the fixed-function
+ * vertex program (no ARB vertex program or shader) the state tracker does
+ * not go through the draw module: it calls main/rastpos.c:_mesa_RasterPos,
+ * which computes the raster position on the CPU in plain C (x86-64 SSE
+ * arithmetic, no fused multiply-adds, every operation rounded to float):
+ *
+ *   eye  = MV * obj, clip = P * eye     (TRANSFORM_POINT: each row summed
+ *                                         left to right, not the MVP product
+ *                                         the vertex program uses)
+ *   clip test: near z, far z, then x/y (strict comparisons, a point on a
+ *   plane is inside), then the user planes (dot in clip space < 0 is
+ *   outside); outside: GL_CURRENT_RASTER_POSITION_VALID false, every other
+ *   raster value kept
+ *   d = 1/clip.w (1 when clip.w == 0), ndc = clip * d,
+ *   win = ndc * scale + translate (_mesa_get_viewport_xform, y up),
+ *   RasterPos.w = clip.w (not 1/w)
+ *   distance: |eye.xyz| (sqrtf of the left-to-right sum of squares), or the
+ *   current fog coordinate with GL_FOG_COORDINATE as the fog source
+ *   colour: the current colours, or with lighting Mesa's CPU lighting
+ *   (shade_rastpos, front material, below), not the vertex program's
+ *   texture coordinates: texture matrix * current coordinate, every unit
+ *   in GL_SELECT a valid raster position updates the hit record with its z.
+ */
+#include <math.h>
+
+#include "main/groups.h"
+#include "main/dlist.h"
+
+/* [S: rastpos.c:TRANSFORM_POINT (macros.h)] q = m * p, each row summed
+ * left to right, unfused. */
+static void transform_point(float q[4], const float *m, const float p[4])
+{
+   const float p0 = p[0], p1 = p[1], p2 = p[2], p3 = p[3];
+   for (int r = 0; r < 4; r++)
+      q[r] = m[r] * p0 + m[4 + r] * p1 + m[8 + r] * p2 + m[12 + r] * p3;
+}
+
+/* [S: rastpos.c:viewclip_point_near_z, viewclip_point_far_z,
+ * viewclip_point_xy, userclip_point] in this order; false when clipped. */
+static bool rastpos_inside(const struct fgl_context *ctx, const float clip[4])
+{
+   if (clip[2] < -clip[3])
+      return false;
+   if (clip[2] > clip[3])
+      return false;
+   if (clip[0] > clip[3] || clip[0] < -clip[3] || clip[1] > clip[3] || clip[1] < -clip[3])
+      return false;
+   unsigned mask = ctx->Transform.ClipPlanesEnabled;
+   while (mask) {
+      const int p = __builtin_ctz(mask);
+      const float *pl = ctx->_ClipUserPlane[p];
+      mask &= mask - 1;
+      const float dot = clip[0] * pl[0] + clip[1] * pl[1] + clip[2] * pl[2] + clip[3] * pl[3];
+      if (dot < 0.0f)
+         return false;
+   }
+   return true;
+}
+
+/* ---- lighting: [S: rastpos.c:shade_rastpos], not the vertex program ---- */
+
+static float dot3(const float a[3], const float b[3])
+{
+   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* [S: macros.h:NORMALIZE_3FV] */
+static void normalize3(float v[3])
+{
+   float len = dot3(v, v);
+   if (len) {
+      len = 1.0f / sqrtf(len);
+      v[0] *= len;
+      v[1] *= len;
+      v[2] *= len;
+   }
+}
+
+/* [S: m_matrix.h:TRANSFORM_NORMAL] the row vector n times m */
+static void transform_normal(float to[3], const float n[3], const float *m)
+{
+   to[0] = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+   to[1] = n[0] * m[4] + n[1] * m[5] + n[2] * m[6];
+   to[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
+}
+
+static float clamp01(float x)
+{
+   /* CLAMP(x, 0, 1): (x < 0 ? 0 : (x > 1 ? 1 : x)), NaN passes through */
+   return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+}
+
+/* A light's values as Mesa's CPU state derives them: light.c
+ * compute_light_positions (in eye space with _NeedEyeCoords, else in
+ * object space through the inverse modelview) and _mesa_update_material
+ * (the light colours times the front material). */
+struct rp_light {
+   float Position[4], VPInfNorm[3], HInfNorm[3], NormSpotDirection[3];
+   float VPInfSpotAttenuation;
+   float MatAmbient[3], MatDiffuse[3], MatSpecular[3];
+   bool Positional, Spot;
+};
+
+static void rp_light_state(const struct fgl_context *ctx, const struct fgl_light *l, bool eye,
+                           const float eye_z_dir[3], struct rp_light *r)
+{
+   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+   const float (*mat)[4] = (const float (*)[4])ctx->Current.Attrib;
+   r->Positional = l->EyePosition[3] != 0.0f;
+   r->Spot = l->SpotCutoff != 180.0f;
+   if (eye) {
+      for (int k = 0; k < 4; k++)
+         r->Position[k] = l->EyePosition[k];
+   } else {
+      transform_point(r->Position, mv->inv, l->EyePosition);
+   }
+   if (!r->Positional) {
+      for (int k = 0; k < 3; k++)
+         r->VPInfNorm[k] = r->Position[k];
+      normalize3(r->VPInfNorm);
+      if (!ctx->Light.Model.LocalViewer) {
+         for (int k = 0; k < 3; k++)
+            r->HInfNorm[k] = r->VPInfNorm[k] + eye_z_dir[k];
+         normalize3(r->HInfNorm);
+      }
+      r->VPInfSpotAttenuation = 1.0f;
+   } else {
+      const float w_inv = 1.0f / r->Position[3];
+      r->Position[0] *= w_inv;
+      r->Position[1] *= w_inv;
+      r->Position[2] *= w_inv;
+   }
+   if (r->Spot) {
+      if (eye) {
+         for (int k = 0; k < 3; k++)
+            r->NormSpotDirection[k] = l->SpotDirection[k];
+         normalize3(r->NormSpotDirection);
+      } else {
+         float dir[3] = { l->SpotDirection[0], l->SpotDirection[1], l->SpotDirection[2] };
+         normalize3(dir);
+         transform_normal(r->NormSpotDirection, dir, mv->m);
+      }
+      normalize3(r->NormSpotDirection);
+      if (!r->Positional) {
+         const float pv_dot_dir = -dot3(r->VPInfNorm, r->NormSpotDirection);
+         r->VPInfSpotAttenuation = pv_dot_dir > l->CosCutoff ? powf(pv_dot_dir, l->SpotExponent)
+                                                             : 0.0f;
+      }
+   }
+   for (int k = 0; k < 3; k++) {
+      r->MatAmbient[k] = l->Ambient[k] * mat[FGL_ATTR_MAT_FRONT_AMBIENT][k];
+      r->MatDiffuse[k] = l->Diffuse[k] * mat[FGL_ATTR_MAT_FRONT_DIFFUSE][k];
+      r->MatSpecular[k] = l->Specular[k] * mat[FGL_ATTR_MAT_FRONT_SPECULAR][k];
+   }
+}
+
+/* [S: rastpos.c:shade_rastpos] front material only; `vertex` is the
+ * object-space position even when the lights are in eye space (as Mesa
+ * passes it); the results clamped to [0, 1]. */
+static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
+                          const float normal[3], bool eye, const float eye_z_dir[3],
+                          float rcolor[4], float rspec[4])
+{
+   const float (*mat)[4] = (const float (*)[4])ctx->Current.Attrib;
+   float diffuse_color[4], specular_color[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+   /* _BaseColor = emission + material ambient * scene ambient */
+   for (int k = 0; k < 3; k++)
+      diffuse_color[k] = mat[FGL_ATTR_MAT_FRONT_EMISSION][k] +
+                         mat[FGL_ATTR_MAT_FRONT_AMBIENT][k] * ctx->Light.Model.Ambient[k];
+   diffuse_color[3] = clamp01(mat[FGL_ATTR_MAT_FRONT_DIFFUSE][3]);
+
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      const struct fgl_light *l = &ctx->Light.Light[i];
+      if (!l->Enabled)
+         continue;
+      struct rp_light r;
+      rp_light_state(ctx, l, eye, eye_z_dir, &r);
+      float attenuation, vp[3], diffuse_contrib[3], specular_contrib[3];
+      if (!r.Positional) {
+         for (int k = 0; k < 3; k++)
+            vp[k] = r.VPInfNorm[k];
+         attenuation = r.VPInfSpotAttenuation;
+      } else {
+         for (int k = 0; k < 3; k++)
+            vp[k] = r.Position[k] - vertex[k];
+         const float d = sqrtf(dot3(vp, vp));
+         if (d > 1.0e-6f) {
+            const float invd = 1.0f / d;
+            for (int k = 0; k < 3; k++)
+               vp[k] = vp[k] * invd;
+         }
+         attenuation = 1.0f / (l->ConstantAttenuation +
+                               d * (l->LinearAttenuation + d * l->QuadraticAttenuation));
+         if (r.Spot) {
+            const float pv_dot_dir = -dot3(vp, r.NormSpotDirection);
+            if (pv_dot_dir < l->CosCutoff)
+               continue;
+            attenuation *= powf(pv_dot_dir, l->SpotExponent);
+         }
+      }
+      if (attenuation < 1e-3f)
+         continue;
+      const float n_dot_vp = dot3(normal, vp);
+      if (n_dot_vp < 0.0f) {
+         for (int k = 0; k < 3; k++)
+            diffuse_color[k] += attenuation * r.MatAmbient[k];
+         continue;
+      }
+      for (int k = 0; k < 3; k++) {
+         diffuse_contrib[k] = r.MatAmbient[k];
+         diffuse_contrib[k] += n_dot_vp * r.MatDiffuse[k];
+         specular_contrib[k] = 0.0f;
+      }
+      const float *h;
+      if (ctx->Light.Model.LocalViewer) {
+         float v[3] = { vertex[0], vertex[1], vertex[2] };
+         normalize3(v);
+         for (int k = 0; k < 3; k++)
+            vp[k] = vp[k] - v[k];
+         normalize3(vp);
+         h = vp;
+      } else if (r.Positional) {
+         for (int k = 0; k < 3; k++)
+            vp[k] += eye_z_dir[k];
+         normalize3(vp);
+         h = vp;
+      } else {
+         h = r.HInfNorm;
+      }
+      const float n_dot_h = dot3(normal, h);
+      if (n_dot_h > 0.0f) {
+         const float spec_coef = powf(n_dot_h, mat[FGL_ATTR_MAT_FRONT_SHININESS][0]);
+         if (spec_coef > 1.0e-10f) {
+            float *dst = ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR
+                            ? specular_contrib : diffuse_contrib;
+            for (int k = 0; k < 3; k++)
+               dst[k] += spec_coef * r.MatSpecular[k];
+         }
+      }
+      for (int k = 0; k < 3; k++) {
+         diffuse_color[k] += attenuation * diffuse_contrib[k];
+         specular_color[k] += attenuation * specular_contrib[k];
+      }
+   }
+   for (int k = 0; k < 4; k++) {
+      rcolor[k] = clamp01(diffuse_color[k]);
+      rspec[k] = clamp01(specular_color[k]);
+   }
+}
+
+/* [S: feedback.c:_mesa_update_hitflag] */
+static void update_hitflag(struct fgl_context *ctx, float z)
+{
+   struct fgl_selection *s = &ctx->Select;
+   s->HitFlag = true;
+   if (z < s->HitMinZ)
+      s->HitMinZ = z;
+   if (z > s->HitMaxZ)
+      s->HitMaxZ = z;
+}
+
+/* [S: rastpos.c:_mesa_RasterPos] */
+static void raster_pos(struct fgl_context *ctx, const float obj[4])
+{
+   struct fgl_current_attrib *cur = &ctx->Current;
+   float eye[4], clip[4];
+
+   ctx->PopAttribState |= GL_CURRENT_BIT;
+   fgl_matrix_analyse(ctx->ModelviewStack.Top);   /* the inverse, for lighting */
+   transform_point(eye, ctx->ModelviewStack.Top->m, obj);
+   transform_point(clip, ctx->ProjectionStack.Top->m, eye);
+   if (!rastpos_inside(ctx, clip)) {
+      cur->RasterPosValid = false;
+      return;
+   }
+
+   /* ndc = clip / w; _mesa_get_viewport_xform (y up, the scale and
+    * translation of z computed in double) */
+   const float d = clip[3] == 0.0f ? 1.0f : 1.0f / clip[3];
+   const float ndc[3] = { clip[0] * d, clip[1] * d, clip[2] * d };
+   const struct fgl_viewport_attrib *vp = &ctx->Viewport;
+   const float half_w = 0.5f * (float)vp->Width, half_h = 0.5f * (float)vp->Height;
+   const double n = vp->Near, f = vp->Far;
+   const float scale[3] = { half_w, half_h, (float)(0.5 * (f - n)) };
+   const float translate[3] = { half_w + (float)vp->X, half_h + (float)vp->Y,
+                                (float)(0.5 * (n + f)) };
+   for (int i = 0; i < 3; i++)
+      cur->RasterPos[i] = ndc[i] * scale[i] + translate[i];
+   cur->RasterPos[3] = clip[3];
+
+   if (ctx->Fog.CoordinateSource == GL_FOG_COORDINATE)
+      cur->RasterDistance = cur->FogCoord;
+   else
+      cur->RasterDistance = sqrtf(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
+
+   if (ctx->Light.Enabled) {
+      /* _NeedEyeCoords (light.c:_mesa_update_tnl_spaces; no texgen or
+       * point attenuation in fixgl): the normal through the inverse
+       * modelview, not normalized or rescaled; else the object normal */
+      const bool eye_coords = ctx->_Lighting.NeedEyeCoords;
+      const float *norm = cur->Attrib[FGL_ATTR_NORMAL];
+      float eyenorm[3], eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
+      if (eye_coords) {
+         transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
+         norm = eyenorm;
+      } else {
+         /* compute_light_positions: TRANSFORM_NORMAL of (0, 0, 1) */
+         static const float z[3] = { 0.0f, 0.0f, 1.0f };
+         transform_normal(eye_z_dir, z, ctx->ModelviewStack.Top->m);
+      }
+      shade_rastpos(ctx, obj, norm, eye_coords, eye_z_dir, cur->RasterColor,
+                    cur->RasterSecondaryColor);
+   } else {
+      for (int k = 0; k < 4; k++) {
+         cur->RasterColor[k] = cur->Attrib[FGL_ATTR_COLOR0][k];
+         cur->RasterSecondaryColor[k] = cur->SecondaryColor[k];
+      }
+   }
+
+   /* no texture coordinate generation: the GL_TEXTURE_GEN_* enables are
+    * not part of fixgl yet (TexGenEnabled is always 0) */
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      const float *tc = u == 0 ? cur->Attrib[FGL_ATTR_TEX0] : cur->TexCoord[u];
+      transform_point(cur->RasterTexCoords[u], ctx->TextureStack[u].Top->m, tc);
+   }
+   cur->RasterPosValid = true;
+
+   if (ctx->RenderMode == GL_SELECT)
+      update_hitflag(ctx, cur->RasterPos[2]);
+}
+
+/* [S: rastpos.c:rasterpos] every variant converts to four floats, then
+ * FLUSH_VERTICES, FLUSH_CURRENT and the state update; while compiling,
+ * every variant is stored as glRasterPos4f (dlist.c:save_RasterPos*). */
+static void rasterpos(GLfloat x, GLfloat y, GLfloat z, GLfloat w)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, RasterPos4f, x, y, z, w);
+   /* only the BeginEnd dispatch's generic_nop checks for glBegin/glEnd */
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   FGL_FLUSH_VERTICES(ctx, 0);
+   fgl_flush_current(ctx);
+   fgl_update_state(ctx);
+   const float p[4] = { x, y, z, w };
+   raster_pos(ctx, p);
+}
+
+void GLAPIENTRY glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { rasterpos(x, y, z, w); }
+void GLAPIENTRY glRasterPos2d(GLdouble x, GLdouble y) { rasterpos((GLfloat)x, (GLfloat)y, 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2f(GLfloat x, GLfloat y) { rasterpos(x, y, 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2i(GLint x, GLint y) { rasterpos((GLfloat)x, (GLfloat)y, 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2s(GLshort x, GLshort y) { rasterpos(x, y, 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos3d(GLdouble x, GLdouble y, GLdouble z)
+{
+   rasterpos((GLfloat)x, (GLfloat)y, (GLfloat)z, 1.0f);
+}
+void GLAPIENTRY glRasterPos3f(GLfloat x, GLfloat y, GLfloat z) { rasterpos(x, y, z, 1.0f); }
+void GLAPIENTRY glRasterPos3i(GLint x, GLint y, GLint z)
+{
+   rasterpos((GLfloat)x, (GLfloat)y, (GLfloat)z, 1.0f);
+}
+void GLAPIENTRY glRasterPos3s(GLshort x, GLshort y, GLshort z) { rasterpos(x, y, z, 1.0f); }
+void GLAPIENTRY glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w)
+{
+   rasterpos((GLfloat)x, (GLfloat)y, (GLfloat)z, (GLfloat)w);
+}
+void GLAPIENTRY glRasterPos4i(GLint x, GLint y, GLint z, GLint w)
+{
+   rasterpos((GLfloat)x, (GLfloat)y, (GLfloat)z, (GLfloat)w);
+}
+void GLAPIENTRY glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w) { rasterpos(x, y, z, w); }
+void GLAPIENTRY glRasterPos2dv(const GLdouble *v) { rasterpos((GLfloat)v[0], (GLfloat)v[1], 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2fv(const GLfloat *v) { rasterpos(v[0], v[1], 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2iv(const GLint *v) { rasterpos((GLfloat)v[0], (GLfloat)v[1], 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos2sv(const GLshort *v) { rasterpos(v[0], v[1], 0.0f, 1.0f); }
+void GLAPIENTRY glRasterPos3dv(const GLdouble *v)
+{
+   rasterpos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], 1.0f);
+}
+void GLAPIENTRY glRasterPos3fv(const GLfloat *v) { rasterpos(v[0], v[1], v[2], 1.0f); }
+void GLAPIENTRY glRasterPos3iv(const GLint *v)
+{
+   rasterpos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], 1.0f);
+}
+void GLAPIENTRY glRasterPos3sv(const GLshort *v) { rasterpos(v[0], v[1], v[2], 1.0f); }
+void GLAPIENTRY glRasterPos4dv(const GLdouble *v)
+{
+   rasterpos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], (GLfloat)v[3]);
+}
+void GLAPIENTRY glRasterPos4fv(const GLfloat *v) { rasterpos(v[0], v[1], v[2], v[3]); }
+void GLAPIENTRY glRasterPos4iv(const GLint *v)
+{
+   rasterpos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], (GLfloat)v[3]);
+}
+void GLAPIENTRY glRasterPos4sv(const GLshort *v) { rasterpos(v[0], v[1], v[2], v[3]); }
