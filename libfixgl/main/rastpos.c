@@ -28,6 +28,7 @@
 
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "tnl/t_pipeline.h"
 
 /* [S: rastpos.c:TRANSFORM_POINT (macros.h)] q = m * p, each row summed
  * left to right, unfused. */
@@ -223,17 +224,6 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
    }
 }
 
-/* [S: feedback.c:_mesa_update_hitflag] */
-static void update_hitflag(struct fgl_context *ctx, float z)
-{
-   struct fgl_selection *s = &ctx->Select;
-   s->HitFlag = true;
-   if (z < s->HitMinZ)
-      s->HitMinZ = z;
-   if (z > s->HitMaxZ)
-      s->HitMaxZ = z;
-}
-
 /* [S: rastpos.c:_mesa_RasterPos] */
 static void raster_pos(struct fgl_context *ctx, const float obj[4])
 {
@@ -301,7 +291,7 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    cur->RasterPosValid = true;
 
    if (ctx->RenderMode == GL_SELECT)
-      update_hitflag(ctx, cur->RasterPos[2]);
+      t_update_hitflag(ctx, cur->RasterPos[2]);
 }
 
 /* [S: rastpos.c:rasterpos] every variant converts to four floats, then
