@@ -49,13 +49,12 @@ static bool rastpos_inside(const struct fgl_context *ctx, const float clip[4])
       return false;
    if (clip[0] > clip[3] || clip[0] < -clip[3] || clip[1] > clip[3] || clip[1] < -clip[3])
       return false;
+   /* the user planes: t_clip_dist's left-to-right dot in clip space */
    unsigned mask = ctx->Transform.ClipPlanesEnabled;
    while (mask) {
-      const int p = __builtin_ctz(mask);
-      const float *pl = ctx->_ClipUserPlane[p];
+      const unsigned p = (unsigned)__builtin_ctz(mask);
       mask &= mask - 1;
-      const float dot = clip[0] * pl[0] + clip[1] * pl[1] + clip[2] * pl[2] + clip[3] * pl[3];
-      if (dot < 0.0f)
+      if (t_clip_dist(ctx, clip, 6 + p) < 0.0f)
          return false;
    }
    return true;
