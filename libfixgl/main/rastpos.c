@@ -28,6 +28,7 @@
 
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "tnl/t_pipeline.h"
 
 /* [S: rastpos.c:TRANSFORM_POINT (macros.h)] q = m * p, each row summed
  * left to right, unfused. */
@@ -48,13 +49,12 @@ static bool rastpos_inside(const struct fgl_context *ctx, const float clip[4])
       return false;
    if (clip[0] > clip[3] || clip[0] < -clip[3] || clip[1] > clip[3] || clip[1] < -clip[3])
       return false;
+   /* the user planes: t_clip_dist's left-to-right dot in clip space */
    unsigned mask = ctx->Transform.ClipPlanesEnabled;
    while (mask) {
-      const int p = __builtin_ctz(mask);
-      const float *pl = ctx->_ClipUserPlane[p];
+      const unsigned p = (unsigned)__builtin_ctz(mask);
       mask &= mask - 1;
-      const float dot = clip[0] * pl[0] + clip[1] * pl[1] + clip[2] * pl[2] + clip[3] * pl[3];
-      if (dot < 0.0f)
+      if (t_clip_dist(ctx, clip, 6 + p) < 0.0f)
          return false;
    }
    return true;
@@ -95,60 +95,32 @@ static float clamp01(float x)
 
 /* A light's values as Mesa's CPU state derives them: light.c
  * compute_light_positions (in eye space with _NeedEyeCoords, else in
- * object space through the inverse modelview) and _mesa_update_material
- * (the light colours times the front material). */
+ * object space through the inverse modelview: the same values
+ * fgl_update_lighting keeps in ctx->_Lighting, read from there) and
+ * _mesa_update_material (the light colours times the front material). */
 struct rp_light {
-   float Position[4], VPInfNorm[3], HInfNorm[3], NormSpotDirection[3];
+   const float *Position, *VPInfNorm, *HInfNorm, *NormSpotDirection;
    float VPInfSpotAttenuation;
    float MatAmbient[3], MatDiffuse[3], MatSpecular[3];
    bool Positional, Spot;
 };
 
-static void rp_light_state(const struct fgl_context *ctx, const struct fgl_light *l, bool eye,
-                           const float eye_z_dir[3], struct rp_light *r)
+static void rp_light_state(const struct fgl_context *ctx, int i, struct rp_light *r)
 {
-   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+   const struct fgl_light *l = &ctx->Light.Light[i];
+   const struct fgl_light_derived *ld = &ctx->_Lighting.Light[i];
    const float (*mat)[4] = (const float (*)[4])ctx->Current.Attrib;
-   r->Positional = l->EyePosition[3] != 0.0f;
-   r->Spot = l->SpotCutoff != 180.0f;
-   if (eye) {
-      for (int k = 0; k < 4; k++)
-         r->Position[k] = l->EyePosition[k];
-   } else {
-      transform_point(r->Position, mv->inv, l->EyePosition);
-   }
-   if (!r->Positional) {
-      for (int k = 0; k < 3; k++)
-         r->VPInfNorm[k] = r->Position[k];
-      normalize3(r->VPInfNorm);
-      if (!ctx->Light.Model.LocalViewer) {
-         for (int k = 0; k < 3; k++)
-            r->HInfNorm[k] = r->VPInfNorm[k] + eye_z_dir[k];
-         normalize3(r->HInfNorm);
-      }
-      r->VPInfSpotAttenuation = 1.0f;
-   } else {
-      const float w_inv = 1.0f / r->Position[3];
-      r->Position[0] *= w_inv;
-      r->Position[1] *= w_inv;
-      r->Position[2] *= w_inv;
-   }
-   if (r->Spot) {
-      if (eye) {
-         for (int k = 0; k < 3; k++)
-            r->NormSpotDirection[k] = l->SpotDirection[k];
-         normalize3(r->NormSpotDirection);
-      } else {
-         float dir[3] = { l->SpotDirection[0], l->SpotDirection[1], l->SpotDirection[2] };
-         normalize3(dir);
-         transform_normal(r->NormSpotDirection, dir, mv->m);
-      }
-      normalize3(r->NormSpotDirection);
-      if (!r->Positional) {
-         const float pv_dot_dir = -dot3(r->VPInfNorm, r->NormSpotDirection);
-         r->VPInfSpotAttenuation = pv_dot_dir > l->CosCutoff ? powf(pv_dot_dir, l->SpotExponent)
-                                                             : 0.0f;
-      }
+   r->Positional = ld->Positional;
+   r->Spot = ld->Spot;
+   /* directional: Position is _VP_inf_norm, HalfVector _h_inf_norm */
+   r->Position = r->VPInfNorm = ld->Position;
+   r->HInfNorm = ld->HalfVector;
+   r->NormSpotDirection = ld->SpotDirection;
+   r->VPInfSpotAttenuation = 1.0f;
+   if (r->Spot && !r->Positional) {
+      const float pv_dot_dir = -dot3(r->VPInfNorm, r->NormSpotDirection);
+      r->VPInfSpotAttenuation = pv_dot_dir > l->CosCutoff ? powf(pv_dot_dir, l->SpotExponent)
+                                                          : 0.0f;
    }
    for (int k = 0; k < 3; k++) {
       r->MatAmbient[k] = l->Ambient[k] * mat[FGL_ATTR_MAT_FRONT_AMBIENT][k];
@@ -161,7 +133,7 @@ static void rp_light_state(const struct fgl_context *ctx, const struct fgl_light
  * object-space position even when the lights are in eye space (as Mesa
  * passes it); the results clamped to [0, 1]. */
 static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
-                          const float normal[3], bool eye, const float eye_z_dir[3],
+                          const float normal[3], const float eye_z_dir[3],
                           float rcolor[4], float rspec[4])
 {
    const float (*mat)[4] = (const float (*)[4])ctx->Current.Attrib;
@@ -177,7 +149,7 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
       if (!l->Enabled)
          continue;
       struct rp_light r;
-      rp_light_state(ctx, l, eye, eye_z_dir, &r);
+      rp_light_state(ctx, i, &r);
       float attenuation, vp[3], diffuse_contrib[3], specular_contrib[3];
       if (!r.Positional) {
          for (int k = 0; k < 3; k++)
@@ -251,17 +223,6 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
    }
 }
 
-/* [S: feedback.c:_mesa_update_hitflag] */
-static void update_hitflag(struct fgl_context *ctx, float z)
-{
-   struct fgl_selection *s = &ctx->Select;
-   s->HitFlag = true;
-   if (z < s->HitMinZ)
-      s->HitMinZ = z;
-   if (z > s->HitMaxZ)
-      s->HitMaxZ = z;
-}
-
 /* [S: rastpos.c:_mesa_RasterPos] */
 static void raster_pos(struct fgl_context *ctx, const float obj[4])
 {
@@ -311,7 +272,7 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
          static const float z[3] = { 0.0f, 0.0f, 1.0f };
          transform_normal(eye_z_dir, z, ctx->ModelviewStack.Top->m);
       }
-      shade_rastpos(ctx, obj, norm, eye_coords, eye_z_dir, cur->RasterColor,
+      shade_rastpos(ctx, obj, norm, eye_z_dir, cur->RasterColor,
                     cur->RasterSecondaryColor);
    } else {
       for (int k = 0; k < 4; k++) {
@@ -329,7 +290,7 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    cur->RasterPosValid = true;
 
    if (ctx->RenderMode == GL_SELECT)
-      update_hitflag(ctx, cur->RasterPos[2]);
+      t_update_hitflag(ctx, cur->RasterPos[2]);
 }
 
 /* [S: rastpos.c:rasterpos] every variant converts to four floats, then

@@ -16,7 +16,7 @@
 #include "context.h"
 
 /* [S: feedback.c:_mesa_update_hitflag] */
-static inline void update_hitflag(struct fgl_context *ctx, float z)
+void t_update_hitflag(struct fgl_context *ctx, float z)
 {
    struct fgl_selection *s = &ctx->Select;
    s->HitFlag = true;
@@ -55,9 +55,9 @@ void t_feedback_tri(struct fgl_context *ctx, const struct r_vertex *v0,
 {
    if (ctx->RenderMode == GL_SELECT) {
       /* [S: st_cb_feedback.c:select_tri] */
-      update_hitflag(ctx, v0->pos[2]);
-      update_hitflag(ctx, v1->pos[2]);
-      update_hitflag(ctx, v2->pos[2]);
+      t_update_hitflag(ctx, v0->pos[2]);
+      t_update_hitflag(ctx, v1->pos[2]);
+      t_update_hitflag(ctx, v2->pos[2]);
       return;
    }
    /* [S: st_cb_feedback.c:feedback_tri] every triangle is a polygon of
@@ -74,8 +74,8 @@ void t_feedback_line(struct fgl_context *ctx, const struct r_vertex *v0,
 {
    if (ctx->RenderMode == GL_SELECT) {
       /* [S: st_cb_feedback.c:select_line] */
-      update_hitflag(ctx, v0->pos[2]);
-      update_hitflag(ctx, v1->pos[2]);
+      t_update_hitflag(ctx, v0->pos[2]);
+      t_update_hitflag(ctx, v1->pos[2]);
       return;
    }
    /* [S: st_cb_feedback.c:feedback_line] a reset token after the stage's
@@ -95,7 +95,7 @@ void t_feedback_point(struct fgl_context *ctx, const struct r_vertex *v)
 {
    if (ctx->RenderMode == GL_SELECT) {
       /* [S: st_cb_feedback.c:select_point] */
-      update_hitflag(ctx, v->pos[2]);
+      t_update_hitflag(ctx, v->pos[2]);
       return;
    }
    /* [S: st_cb_feedback.c:feedback_point] */

@@ -136,6 +136,8 @@ void t_feedback_tri(struct fgl_context *ctx, const struct r_vertex *v0,
 void t_feedback_line(struct fgl_context *ctx, const struct r_vertex *v0,
                      const struct r_vertex *v1);
 void t_feedback_point(struct fgl_context *ctx, const struct r_vertex *v);
+/* [S: feedback.c:_mesa_update_hitflag] (also glRasterPos's) */
+void t_update_hitflag(struct fgl_context *ctx, float z);
 void t_feedback_reset_stipple(struct fgl_context *ctx);
 /* t_clip.c: in GL_SELECT and GL_FEEDBACK, the clip stage's temporary
  * vertex `slot` now holds v (its flat colours first taken from what the
