@@ -378,6 +378,12 @@ static void rp_robust(fc_h *h)
     glNormal3f(0.0f, 0.0f, 0.0f);
     glRasterPos3f(0.2f, 0.3f, 0.4f);
     rp_query(h, "zero normal lit");
+    /* Mesa's CLAMP(x, 0, 1) of the raster colours: NaN and -0 give +0 */
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, (const GLfloat[]){ nan, -0.0f, 0.5f, nan });
+    glMaterialfv(GL_FRONT, GL_AMBIENT, (const GLfloat[]){ 0.0f, -0.0f, 0.0f, 1.0f });
+    glRasterPos3f(0.2f, 0.3f, 0.4f);
+    rp_query(h, "nan material lit");
 }
 
 /* Inside glBegin/glEnd: INVALID_OPERATION, nothing changes. */

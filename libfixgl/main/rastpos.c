@@ -27,6 +27,7 @@
 #include <math.h>
 
 #include "main/groups.h"
+#include "main/conv.h"
 #include "main/dlist.h"
 #include "tnl/t_pipeline.h"
 
@@ -87,12 +88,6 @@ static void transform_normal(float to[3], const float n[3], const float *m)
    to[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
 }
 
-static float clamp01(float x)
-{
-   /* CLAMP(x, 0, 1): (x < 0 ? 0 : (x > 1 ? 1 : x)), NaN passes through */
-   return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
-}
-
 /* A light's values as Mesa's CPU state derives them: light.c
  * compute_light_positions (in eye space with _NeedEyeCoords, else in
  * object space through the inverse modelview: the same values
@@ -142,7 +137,7 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
    for (int k = 0; k < 3; k++)
       diffuse_color[k] = mat[FGL_ATTR_MAT_FRONT_EMISSION][k] +
                          mat[FGL_ATTR_MAT_FRONT_AMBIENT][k] * ctx->Light.Model.Ambient[k];
-   diffuse_color[3] = clamp01(mat[FGL_ATTR_MAT_FRONT_DIFFUSE][3]);
+   diffuse_color[3] = fgl_clamp01(mat[FGL_ATTR_MAT_FRONT_DIFFUSE][3]);
 
    for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
       const struct fgl_light *l = &ctx->Light.Light[i];
@@ -218,8 +213,8 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
       }
    }
    for (int k = 0; k < 4; k++) {
-      rcolor[k] = clamp01(diffuse_color[k]);
-      rspec[k] = clamp01(specular_color[k]);
+      rcolor[k] = fgl_clamp01(diffuse_color[k]);
+      rspec[k] = fgl_clamp01(specular_color[k]);
    }
 }
 
