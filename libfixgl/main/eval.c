@@ -573,13 +573,7 @@ static void eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v)
          normal[0] = du[1] * dv[2] - du[2] * dv[1];
          normal[1] = du[2] * dv[0] - du[0] * dv[2];
          normal[2] = du[0] * dv[1] - du[1] * dv[0];
-         float len = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
-         if (len != 0.0f) {
-            len = 1.0f / sqrtf(len);
-            normal[0] *= len;
-            normal[1] *= len;
-            normal[2] *= len;
-         }
+         fgl_normalize3(normal);
          normal[3] = 1.0f;
          set_attr(ctx, FGL_ATTR_NORMAL, normal);
       } else {

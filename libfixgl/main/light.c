@@ -608,26 +608,6 @@ void fgl_set_color_material_enabled(struct fgl_context *ctx, bool state)
 
 /* ---- derived state ---- */
 
-/* NORMALIZE_3FV: left-to-right length, no change for a zero vector. */
-static void normalize3(float v[3])
-{
-   float len = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-   if (len != 0.0f) {
-      len = 1.0f / sqrtf(len);
-      v[0] *= len;
-      v[1] *= len;
-      v[2] *= len;
-   }
-}
-
-/* TRANSFORM_NORMAL: n times the 3x3 part of m, by columns. */
-static void transform_normal(float out[3], const float n[3], const float *m)
-{
-   out[0] = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-   out[1] = n[0] * m[4] + n[1] * m[5] + n[2] * m[6];
-   out[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
-}
-
 /* The lighting space and the light vectors in it (Mesa's
  * _mesa_update_lighting, _mesa_update_tnl_spaces, update_modelview_scale,
  * compute_light_positions and the STATE_LIGHT_* uniforms of
@@ -676,7 +656,7 @@ void fgl_update_lighting(struct fgl_context *ctx)
    if (d->NeedEyeCoords)
       memcpy(eye_z_dir, eye_z, sizeof(eye_z));
    else
-      transform_normal(eye_z_dir, eye_z, mv->m);
+      fgl_transform_normal(eye_z_dir, eye_z, mv->m);
    for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
       if (!(d->EnabledLights & (1u << i)))
          continue;
@@ -698,23 +678,23 @@ void fgl_update_lighting(struct fgl_context *ctx)
          p[2] *= w_inv;
       } else {
          /* STATE_LIGHT_POSITION_NORMALIZED and STATE_LIGHT_HALF_VECTOR */
-         normalize3(p);
+         fgl_normalize3(p);
          for (int k = 0; k < 3; k++)
             ld->HalfVector[k] = p[k] + eye_z_dir[k];
-         normalize3(ld->HalfVector);
+         fgl_normalize3(ld->HalfVector);
       }
       if (ld->Spot) {
          float *s = ld->SpotDirection;
          if (d->NeedEyeCoords) {
             memcpy(s, l->SpotDirection, 3 * sizeof(float));
-            normalize3(s);
+            fgl_normalize3(s);
          } else {
             float dir[3];
             memcpy(dir, l->SpotDirection, sizeof(dir));
-            normalize3(dir);
-            transform_normal(s, dir, mv->m);
+            fgl_normalize3(dir);
+            fgl_transform_normal(s, dir, mv->m);
          }
-         normalize3(s);
+         fgl_normalize3(s);
       }
    }
 }

@@ -68,26 +68,6 @@ static float dot3(const float a[3], const float b[3])
    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* [S: macros.h:NORMALIZE_3FV] */
-static void normalize3(float v[3])
-{
-   float len = dot3(v, v);
-   if (len) {
-      len = 1.0f / sqrtf(len);
-      v[0] *= len;
-      v[1] *= len;
-      v[2] *= len;
-   }
-}
-
-/* [S: m_matrix.h:TRANSFORM_NORMAL] the row vector n times m */
-static void transform_normal(float to[3], const float n[3], const float *m)
-{
-   to[0] = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-   to[1] = n[0] * m[4] + n[1] * m[5] + n[2] * m[6];
-   to[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
-}
-
 /* A light's values as Mesa's CPU state derives them: light.c
  * compute_light_positions (in eye space with _NeedEyeCoords, else in
  * object space through the inverse modelview: the same values
@@ -184,15 +164,15 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
       const float *h;
       if (ctx->Light.Model.LocalViewer) {
          float v[3] = { vertex[0], vertex[1], vertex[2] };
-         normalize3(v);
+         fgl_normalize3(v);
          for (int k = 0; k < 3; k++)
             vp[k] = vp[k] - v[k];
-         normalize3(vp);
+         fgl_normalize3(vp);
          h = vp;
       } else if (r.Positional) {
          for (int k = 0; k < 3; k++)
             vp[k] += eye_z_dir[k];
-         normalize3(vp);
+         fgl_normalize3(vp);
          h = vp;
       } else {
          h = r.HInfNorm;
@@ -260,12 +240,12 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
       const float *norm = cur->Attrib[FGL_ATTR_NORMAL];
       float eyenorm[3], eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
       if (eye_coords) {
-         transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
+         fgl_transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
          norm = eyenorm;
       } else {
          /* compute_light_positions: TRANSFORM_NORMAL of (0, 0, 1) */
          static const float z[3] = { 0.0f, 0.0f, 1.0f };
-         transform_normal(eye_z_dir, z, ctx->ModelviewStack.Top->m);
+         fgl_transform_normal(eye_z_dir, z, ctx->ModelviewStack.Top->m);
       }
       shade_rastpos(ctx, obj, norm, eye_z_dir, cur->RasterColor,
                     cur->RasterSecondaryColor);

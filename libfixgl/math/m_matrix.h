@@ -15,6 +15,7 @@
 #ifndef FGL_M_MATRIX_H
 #define FGL_M_MATRIX_H
 
+#include <math.h>
 #include <stdbool.h>
 
 enum {
@@ -72,6 +73,29 @@ static inline bool fgl_matrix_is_3d(unsigned flags)
 static inline bool fgl_matrix_is_length_preserving(unsigned flags)
 {
    return (MAT_FLAGS_GEOMETRY & ~(MAT_FLAG_ROTATION | MAT_FLAG_TRANSLATION) & flags) == 0;
+}
+
+/* [S: main/macros.h:NORMALIZE_3FV] left-to-right squared length, one
+ * reciprocal square root, no change for a zero vector (the CPU-side
+ * normalisations: light state, raster position, evaluator auto-normals). */
+static inline void fgl_normalize3(float v[3])
+{
+   float len = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+   if (len != 0.0f) {
+      len = 1.0f / sqrtf(len);
+      v[0] *= len;
+      v[1] *= len;
+      v[2] *= len;
+   }
+}
+
+/* [S: math/m_matrix.h:TRANSFORM_NORMAL] the row vector n times the 3x3
+ * part of the column-major m */
+static inline void fgl_transform_normal(float to[3], const float n[3], const float *m)
+{
+   to[0] = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+   to[1] = n[0] * m[4] + n[1] * m[5] + n[2] * m[6];
+   to[2] = n[0] * m[8] + n[1] * m[9] + n[2] * m[10];
 }
 
 #endif
