@@ -43,7 +43,6 @@ static void init_pending_state(struct fgl_context *ctx)
    for (int i = 0; i < 4; i++)
       cur->RasterColor[i] = 1.0f;
    cur->RasterSecondaryColor[3] = 1.0f;
-   cur->RasterIndex = 1.0f;
    cur->RasterPosValid = true;
 
    struct fgl_pixel_attrib *px = &ctx->Pixel;

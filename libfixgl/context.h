@@ -94,7 +94,6 @@ struct fgl_current_attrib {
    float RasterDistance;                         /* 0 */
    float RasterColor[4];                         /* (1, 1, 1, 1) */
    float RasterSecondaryColor[4];                /* (0, 0, 0, 1) */
-   float RasterIndex;                            /* 1 */
    float RasterTexCoords[FGL_MAX_TEXTURE_UNITS][4]; /* (0, 0, 0, 1) */
    bool RasterPosValid;                          /* true */
 };
