@@ -1157,6 +1157,36 @@ static void texgen(fc_h *h)
     glDeleteLists(list, 1);
 }
 
+/* Mesa's CLAMP(x, 0, 1) of the priority, border colour and environment
+ * colour (texparam.c:set_tex_parameterf, texenv.c:set_env_color): NaN and
+ * -0 are stored as +0, read back through every query type. */
+static void clamp_nan(fc_h *h)
+{
+    const float nan = NAN;
+    GLuint t;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR,
+                     (const GLfloat[]){ nan, -0.0f, 2.0f, -1.0f });
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, nan);
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR,
+               (const GLfloat[]){ -0.0f, nan, 0.5f, 3.0f });
+    fc_error(h, "set");
+    GLfloat f[4];
+    GLint iv[4];
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, f);
+    fc_blob(h, "border colour fv", f, sizeof f);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, iv);
+    fc_blob(h, "border colour iv", iv, sizeof iv);
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, f);
+    fc_blob(h, "priority fv", f, sizeof(GLfloat));
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, f);
+    fc_blob(h, "env colour fv", f, sizeof f);
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, iv);
+    fc_blob(h, "env colour iv", iv, sizeof iv);
+    fc_error(h, "get");
+}
+
 const fc_case fc_cases_texstate[] = {
     FC_CASE_RGBA("texstate/coord_variants", 16, 16, 0, "texture api", coord_variants),
     FC_CASE_RGBA("texstate/coord_feedback", 32, 32, 0, "texture api feedback", coord_feedback),
@@ -1182,5 +1212,6 @@ const fc_case fc_cases_texstate[] = {
                  texture_pushpop_unused),
     FC_CASE_RGBA("texstate/environment", 16, 16, 0, "texture api", environment),
     FC_CASE_RGBA("texstate/texgen", 16, 16, 0, "texture api", texgen),
+    FC_CASE_RGBA("texstate/clamp_nan", 8, 8, 0, "texture api query", clamp_nan),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

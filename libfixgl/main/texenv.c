@@ -40,11 +40,6 @@ static void env_flush(struct fgl_context *ctx)
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 
-static inline float clamp01(float x)
-{
-   return x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x;   /* CLAMP */
-}
-
 /* [S: texenv.c:set_env_mode] */
 static void set_env_mode(struct fgl_context *ctx, struct fgl_texture_unit *t, GLenum mode)
 {
@@ -210,7 +205,7 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
          env_flush(ctx);
          for (int c = 0; c < 4; c++) {
             t->EnvColorUnclamped[c] = param[c];
-            t->EnvColor[c] = clamp01(param[c]);
+            t->EnvColor[c] = fgl_clamp01(param[c]);
          }
          return;
       case GL_COMBINE_RGB:

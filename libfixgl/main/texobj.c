@@ -421,11 +421,6 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
    *wrap = (GLenum)v;
 }
 
-static inline float clamp01(float x)
-{
-   return fminf(fmaxf(x, 0.0f), 1.0f);
-}
-
 /* [S: texparam.c:set_tex_parameterf] the float pnames; the border colour
  * is clamped to [0,1] (llvmpipe's compatibility context has no
  * ARB_texture_float) */
@@ -447,7 +442,7 @@ static void set_parameterf(struct fgl_context *ctx, struct fgl_texture_object *t
       return;
    case GL_TEXTURE_PRIORITY:
       tex_flush(ctx);
-      t->Priority = clamp01(v[0]);
+      t->Priority = fgl_clamp01(v[0]);
       return;
    case GL_TEXTURE_LOD_BIAS:
       if (t->LodBias == v[0])
@@ -458,7 +453,7 @@ static void set_parameterf(struct fgl_context *ctx, struct fgl_texture_object *t
    case GL_TEXTURE_BORDER_COLOR:
       tex_flush(ctx);
       for (int c = 0; c < 4; c++)
-         t->BorderColor[c] = clamp01(v[c]);
+         t->BorderColor[c] = fgl_clamp01(v[c]);
       return;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -666,7 +661,7 @@ void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params)
       if (!is_float)
          params[c] = i[c];
       else if (pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_PRIORITY)
-         params[c] = fgl_float_to_int_norm(clamp01(f[c]));   /* FLOAT_TO_INT */
+         params[c] = fgl_float_to_int_norm(fgl_clamp01(f[c]));   /* FLOAT_TO_INT */
       else   /* LCLAMPF: the nearest integer, clamped to GLint's range */
          params[c] = f[c] >= 2147483647.0f ? 2147483647
                    : f[c] <= -2147483648.0f ? (GLint)-2147483647 - 1
