@@ -259,13 +259,10 @@ struct attrib_group {
 #define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
- * the lighting group's materials).  The accumulation, evaluator,
- * pixel-mode, texture and multisample groups save the state context.h
- * holds for them so far (their setters come with their features); the
- * raster position and texture coordinates are in Current.TexCoord. */
+ * the lighting group's materials).  The raster position and texture
+ * coordinates are in Current.TexCoord. */
 static const struct attrib_group groups[] = {
-   /* state of features still to come (context.h), copied back as Mesa
-    * does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
+   /* copied back as Mesa does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
     * then _mesa_ReadBuffer, the texture bindings and active unit) */
    GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
