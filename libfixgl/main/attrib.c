@@ -262,8 +262,9 @@ struct attrib_group {
  * the lighting group's materials).  The raster position and texture
  * coordinates are in Current.TexCoord. */
 static const struct attrib_group groups[] = {
-   /* copied back as Mesa does (_mesa_ClearAccum of the stored value, memcpy of Eval and Pixel
-    * then _mesa_ReadBuffer, the texture bindings and active unit) */
+   /* copied back as Mesa does (_mesa_ClearAccum of the stored value,
+    * memcpy of Eval and Pixel then _mesa_ReadBuffer, the texture bindings
+    * and active unit) */
    GROUP(GL_ACCUM_BUFFER_BIT, Accum, Accum, 0, NULL, NULL),
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
