@@ -1735,16 +1735,8 @@ void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
    }
    grow_vertex_storage(ctx, (unsigned)count);
    notify_begin(ctx, mode, true);
-   for (GLsizei i = 0; i < count && indices; i++) {
-      GLuint elt;
-      if (type == GL_UNSIGNED_BYTE)
-         elt = ((const GLubyte *)indices)[i];
-      else if (type == GL_UNSIGNED_SHORT)
-         elt = ((const GLushort *)indices)[i];
-      else
-         elt = ((const GLuint *)indices)[i];
-      t_array_element(ctx, (GLint)elt);
-   }
+   for (GLsizei i = 0; i < count && indices; i++)
+      t_array_element(ctx, (GLint)t_index_at(type, indices, i));
    fgl_save_end(ctx);
 }
 

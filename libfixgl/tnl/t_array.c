@@ -139,18 +139,6 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
    }
 }
 
-static GLuint index_at(GLenum type, const GLvoid *indices, GLsizei i)
-{
-   switch (type) {
-   case GL_UNSIGNED_BYTE:
-      return ((const GLubyte *)indices)[i];
-   case GL_UNSIGNED_SHORT:
-      return ((const GLushort *)indices)[i];
-   default:
-      return ((const GLuint *)indices)[i];
-   }
-}
-
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices)
 {
@@ -184,7 +172,7 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
          continue;
       vbo->attr_size[map[m].attr] = (unsigned)a->Size;
       for (GLsizei i = 0; i < count; i++) {
-         const GLuint elt = index_type ? index_at(index_type, indices, i)
+         const GLuint elt = index_type ? t_index_at(index_type, indices, i)
                                        : (GLuint)(first + i);
          fetch(a, map[m].norm, elt, verts[i].attr[map[m].attr]);
       }

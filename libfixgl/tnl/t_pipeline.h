@@ -157,5 +157,17 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
 /* glArrayElement: the enabled arrays' element elt through the immediate-mode
  * attribute calls. */
 void t_array_element(struct fgl_context *ctx, GLint elt);
+/* index i of an index array of type GL_UNSIGNED_BYTE/SHORT/INT */
+static inline GLuint t_index_at(GLenum type, const GLvoid *indices, GLsizei i)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE:
+      return ((const GLubyte *)indices)[i];
+   case GL_UNSIGNED_SHORT:
+      return ((const GLushort *)indices)[i];
+   default:
+      return ((const GLuint *)indices)[i];
+   }
+}
 
 #endif
