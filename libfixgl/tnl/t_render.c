@@ -336,7 +336,7 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
        * empty (`!draws[0].count`), skipping the others: an empty
        * glBegin/glEnd hides the primitives of its mode batched after it
        * (ORACLE-NOTES.md "Vertex batching", dlist/fuzz). */
-      if (i == 0 || prims[i].mode != prims[i - 1].mode || ctx->RenderMode != GL_RENDER) {
+      if (i == 0 || prims[i].mode != prims[i - 1].mode || feedback) {
          t_vbuf_end_draw(ctx);
          ctx->_DrawOffset.latched = false;
          skip_draw = prims[i].count == 0;
