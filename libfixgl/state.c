@@ -145,7 +145,10 @@ static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
    rs->logic_op = c->LogicOpEnabled;
    rs->logic_op_mode = c->LogicOp - GL_CLEAR;
    /* glDrawBuffer(GL_NONE): no colour buffer is bound (Mesa's
-    * _NumColorDrawBuffers 0), the fragments still reach depth and stencil */
+    * _NumColorDrawBuffers 0, [S: main/buffers.c:_mesa_drawbuffers],
+    * st_atom_framebuffer.c:st_update_framebuffer_state binds no cbuf), the
+    * fragments still reach depth and stencil (ORACLE-NOTES.md "Queries,
+    * strings, buffers") */
    rs->color_mask = c->DrawBuffer == GL_NONE ? 0u : c->ColorMask & 0xfu;
    rs->blend = !c->LogicOpEnabled && c->BlendEnabled && rs->color_mask != 0;
    rs->blend_eq = blend_eq(c->BlendEquation);

@@ -11,8 +11,8 @@
  *    are stored in a vertex format of their own, and consecutive
  *    primitives accumulate until a compiled state change, an attribute
  *    call outside glBegin/glEnd or glEndList flushes them into one
- *    "vertex list" node (compile_vertex_list): independent primitives of
- *    one mode merge, the last line loop becomes a strip, and the
+ *    "vertex list" node ([S: vbo/vbo_save_api.c:compile_vertex_list]):
+ *    independent primitives of one mode merge, the last line loop becomes a strip, and the
  *    primitives become indexed draws (consecutive ones of one mode merged
  *    into one, strips joined by degenerate triangles, line strips next to
  *    lines turned into lines, short primitives padded by repeating their
