@@ -74,6 +74,7 @@ enum {
    FGL_NEW_LINE       = 1u << 13,  /* line width, smoothing, stipple */
    FGL_NEW_RENDERMODE = 1u << 14,  /* glRenderMode: the draw pipeline's stages */
    FGL_NEW_PIXEL      = 1u << 15,  /* pixel transfer, zoom and maps (main/pixel.c) */
+   FGL_NEW_TEXTURE    = 1u << 16,  /* texture objects, images, enables, units */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -355,8 +356,26 @@ struct fgl_texture_attrib {
    struct fgl_texture_unit Unit[FGL_MAX_TEXTURE_UNITS];
 };
 
-/* A texture object's state, no images yet (main/texobj.c, texparam.c)
- * [S: main/mtypes.h, gl_texture_object, gl_sampler_attrib] */
+/* One mipmap level of a texture object (main/teximage.c)
+ * [S: main/mtypes.h, gl_texture_image].  The texels are stored as RGBA8
+ * whatever the base format, already expanded the way the oracle's sampler
+ * swizzles its format (LUMINANCE: L, L, L, 1; ALPHA: 0, 0, 0, A;
+ * INTENSITY: I, I, I, I; LUMINANCE_ALPHA: L, L, L, A; RGB: R, G, B, 1), so
+ * the raster core filters four 8-bit channels alike; row 0 is the first
+ * row the application gave (t = 0, the bottom of the image). */
+#define FGL_MAX_TEXTURE_LEVELS 15   /* LP_MAX_TEXTURE_2D_LEVELS */
+struct fgl_texture_image {
+   GLint Width, Height, Border;     /* Height 1 for 1D images */
+   GLenum InternalFormat;           /* as the application gave it */
+   GLenum BaseFormat;               /* GL_RGBA, GL_RGB, GL_LUMINANCE,
+                                     * GL_LUMINANCE_ALPHA, GL_ALPHA or
+                                     * GL_INTENSITY */
+   uint8_t *Data;                   /* Width * Height RGBA8 texels */
+};
+
+/* A texture object's state (main/texobj.c, texparam.c) and its images
+ * (main/teximage.c) [S: main/mtypes.h, gl_texture_object,
+ * gl_sampler_attrib] */
 struct fgl_texture_object {
    GLuint Name;
    GLenum Target;           /* 0 until first bound */
@@ -367,6 +386,9 @@ struct fgl_texture_object {
    float MinLod, MaxLod, LodBias;
    GLint BaseLevel, MaxLevel;
    bool GenerateMipmap;
+   /* the images, by level (NULL: none); glPopAttrib restores the
+    * parameters above and keeps these */
+   struct fgl_texture_image *Image[FGL_MAX_TEXTURE_LEVELS];
 };
 
 /* The named objects (Mesa's Shared->TexObjects) and the default ones. */
@@ -731,6 +753,11 @@ struct fgl_context {
                                     * made from (all zero at first, as the
                                     * state tracker's copy) */
    struct r_state _Raster;
+   /* texture units that texture fragments: enabled, with a complete
+    * texture (main/texstate.c) [S: texstate.c:update_ff_texture_state] */
+   unsigned _EnabledTexUnits;                     /* bit u: unit u */
+   struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
+   GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
 
    /* ---- framebuffer ---- */
    struct fgl_framebuffer *DrawBuffer;

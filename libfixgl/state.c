@@ -196,12 +196,15 @@ void fgl_update_state(struct fgl_context *ctx)
       ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
    }
 
+   if (dirty & FGL_NEW_TEXTURE)
+      fgl_update_texture_state(ctx);
+
    if (dirty & (FGL_NEW_CLIP | FGL_NEW_PROJECTION))
       fgl_update_clip_planes(ctx);
 
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
                 FGL_NEW_FOG | FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR |
-                FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_RENDERMODE)) {
+                FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_RENDERMODE | FGL_NEW_TEXTURE)) {
       struct r_state *rs = &ctx->_Raster;
       const struct fgl_framebuffer *fb = ctx->DrawBuffer;
       if (fb) {
@@ -223,6 +226,14 @@ void fgl_update_state(struct fgl_context *ctx)
       /* fog: the fragment program reads the fog coordinate, which the
        * vertex stage writes to its own slot after the colours */
       update_fog(ctx, rs);
+      /* texture coordinates: a slot per unit up to the last enabled one
+       * (ffvertex_prog.c writes the coordinate of every enabled unit) */
+      for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+         if (ctx->_EnabledTexUnits & (1u << u)) {
+            rs->fs_inputs |= 1u << (R_FS_TEX0 + u);
+            rs->num_attribs = R_ATTR_TEX0 + (int)u + 1;
+         }
+      }
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
       rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;

@@ -20,12 +20,24 @@ static const GLenum pending_caps[FGL_PENDING_CAPS] = {
    GL_TEXTURE_GEN_T, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
 };
 
+/* Whether unit `unit` has texture target `target` enabled (only unit 0
+ * has enables until multitexture lands). */
+bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GLenum target)
+{
+   if (unit != 0)
+      return false;
+   for (int i = 0; i < FGL_PENDING_CAPS; i++)
+      if (pending_caps[i] == target)
+         return ctx->PendingCaps[i];
+   return false;
+}
+
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
 static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
    for (int i = 0; i < FGL_PENDING_CAPS; i++) {
       if (pending_caps[i] == cap) {
-         *dirty = 0;
+         *dirty = FGL_NEW_TEXTURE;
          return &ctx->PendingCaps[i];
       }
    }

@@ -36,6 +36,18 @@ void fgl_init_texgen(struct fgl_context *ctx);
 void fgl_free_texobj(struct fgl_context *ctx);
 void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node);
 void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *node);
+/* the object bound to target on unit `unit` (the default object for 0 or
+ * a name without an object) */
+struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned unit,
+                                             GLenum target);
+
+/* main/teximage.c */
+void fgl_free_tex_images(struct fgl_texture_object *t);
+
+/* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
+ * _CurrentTex) */
+void fgl_update_texture_state(struct fgl_context *ctx);
+bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level);
 
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
@@ -115,6 +127,7 @@ void fgl_flush_front(struct fgl_context *ctx);
 /* main/enable.c: whether pname is a capability; its state in *value */
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);
 bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state);
+bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GLenum target);
 
 /* main/feedback.c (selection and feedback) */
 void fgl_init_feedback(struct fgl_context *ctx);

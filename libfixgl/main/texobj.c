@@ -1,5 +1,5 @@
 /*
- * Texture objects and their parameters, no images yet (Mesa 22.3
+ * Texture objects and their parameters (Mesa 22.3
  * main/texobj.c, main/texparam.c): glGenTextures, glBindTexture,
  * glDeleteTextures, glIsTexture, glAreTexturesResident,
  * glPrioritizeTextures, glTexParameter{f,i}[v], glGetTexParameter{f,i}v.
@@ -52,9 +52,13 @@ void fgl_init_texobj(struct fgl_context *ctx)
 void fgl_free_texobj(struct fgl_context *ctx)
 {
    struct fgl_texture_objects *to = &ctx->TexObjects;
-   for (unsigned i = 0; i < to->Count; i++)
+   for (unsigned i = 0; i < to->Count; i++) {
+      fgl_free_tex_images(to->Objs[i]);
       free(to->Objs[i]);
+   }
    free(to->Objs);
+   for (int i = 0; i < FGL_TEX_TARGETS; i++)
+      fgl_free_tex_images(&to->Default[i]);
    to->Objs = NULL;
    to->Count = to->Alloc = 0;
 }
@@ -108,11 +112,23 @@ static struct fgl_texture_object *current_object(struct fgl_context *ctx, int in
    return t ? t : &ctx->TexObjects.Default[index];
 }
 
+struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned unit,
+                                             GLenum target)
+{
+   const int index = target_index(target);
+   const GLuint name = ctx->Texture.Unit[unit].Bound[index];
+   if (name == 0)
+      return &ctx->TexObjects.Default[index];
+   struct fgl_texture_object *t = lookup(ctx, name);
+   return t ? t : &ctx->TexObjects.Default[index];
+}
+
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
  * also marks the group for glPopAttrib */
 static void tex_flush(struct fgl_context *ctx)
 {
    fgl_flush_vertices(ctx);
+   ctx->NewState |= FGL_NEW_TEXTURE;
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 
@@ -228,6 +244,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
                   ctx->Texture.Unit[u].Bound[x] = 0;
                   ctx->PopAttribState |= GL_TEXTURE_BIT;
                }
+         fgl_free_tex_images(t);
          free(t);
          to->Objs[k] = to->Objs[--to->Count];
          break;
@@ -705,9 +722,19 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
          struct fgl_texture_object *t = lookup(ctx, name);
          if (!t)
             t = insert(ctx, name, index_target[x]);
-         if (t && saved[x].Name == name)
+         if (t && saved[x].Name == name) {
+            struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
+            memcpy(images, t->Image, sizeof(images));
             *t = saved[x];
+            memcpy(t->Image, images, sizeof(images));
+         }
       }
    }
-   memcpy(ctx->TexObjects.Default, node->TexDefault, sizeof(node->TexDefault));
+   for (int x = 0; x < FGL_TEX_TARGETS; x++) {
+      struct fgl_texture_object *t = &ctx->TexObjects.Default[x];
+      struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
+      memcpy(images, t->Image, sizeof(images));
+      *t = node->TexDefault[x];
+      memcpy(t->Image, images, sizeof(images));
+   }
 }

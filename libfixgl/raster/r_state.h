@@ -16,7 +16,8 @@
 #include <xmmintrin.h>
 #endif
 
-#define R_MAX_ATTRIBS 7
+#define R_MAX_TEX_UNITS 8
+#define R_MAX_ATTRIBS (7 + R_MAX_TEX_UNITS)
 
 /* Varying slots: the colour written to the buffer, the secondary colour
  * the fragment stage adds to it (separate specular), their back-face
@@ -24,9 +25,9 @@
  * 0, 0, 1 as the oracle's vertex program writes them), and the coverage
  * coordinates of the draw module's smooth point and line quads
  * (tnl/t_linepoint.c; written after clipping, so never part of
- * num_attribs), then texture unit 0's coordinate, which only GL_FEEDBACK
- * reads so far (the vertex stage and the clipper fill it then, outside
- * num_attribs).  Only the colour slots are clamped to [0,1]. */
+ * num_attribs), then the texture coordinates of units 0..7 (unit 0's
+ * slot is also filled for GL_FEEDBACK, outside num_attribs).  Only the
+ * colour slots are clamped to [0,1]. */
 enum {
    R_ATTR_COLOR0,
    R_ATTR_COLOR1,
@@ -34,18 +35,20 @@ enum {
    R_ATTR_BCOLOR1,
    R_ATTR_FOG,
    R_ATTR_AA,
-   R_ATTR_TEX0,
+   R_ATTR_TEX0,      /* R_ATTR_TEX0 + u: texture unit u */
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been
- * chosen: the colour, the secondary colour, the fog coordinate and the
- * smooth point/line coverage coordinates. */
+ * chosen: the colour, the secondary colour, the fog coordinate, the
+ * smooth point/line coverage coordinates and the texture coordinates
+ * (s, t, r, q as interpolated). */
 enum {
    R_FS_COLOR0,
    R_FS_COLOR1,
    R_FS_FOG,
    R_FS_AA,          /* the aapoint/aaline generic input */
-   R_FS_NUM_INPUTS,
+   R_FS_TEX0,        /* R_FS_TEX0 + u: texture unit u */
+   R_FS_NUM_INPUTS = R_FS_TEX0 + R_MAX_TEX_UNITS,
 };
 
 /* The vertex slot that feeds fragment-shader input `input`, for a front-
@@ -58,7 +61,7 @@ static inline int r_fs_slot(int input, bool back)
    case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
    case R_FS_FOG:    return R_ATTR_FOG;
    case R_FS_AA:     return R_ATTR_AA;
-   default:          return input;
+   default:          return R_ATTR_TEX0 + (input - R_FS_TEX0);
    }
 }
 

@@ -63,28 +63,25 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    const bool lit = ctx->Light.Enabled;
    const bool fog = (ctx->_Raster.fs_inputs & (1u << R_FS_FOG)) != 0;
    /* [S: ffvertex_prog.c:make_state_key] in GL_FEEDBACK the vertex
-    * program always writes TEX0 (for the feedback records); nothing else
-    * reads a texture coordinate yet: a texture unit is enabled only with a
-    * complete texture (texstate.c:update_ff_texture_state), and there are
-    * no texture images yet */
-   const bool texcoord = ctx->RenderMode == GL_FEEDBACK;
+    * program always writes TEX0 (for the feedback records); otherwise it
+    * writes the coordinate of each unit enabled with a complete texture
+    * (texstate.c:update_ff_texture_state) */
+   const bool texcoord = ctx->RenderMode == GL_FEEDBACK || (ctx->_EnabledTexUnits & 1u);
    unsigned tstride;
    const float *tex = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_TEX0, &tstride);
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
       struct t_vertex *v = &out[i];
-      if (fog) {
+      if (fog || ctx->_EnabledTexUnits) {
          /* the colour slots below the fog slot that this draw does not
           * use are still clipped and interpolated: give them a value */
          memset(v->r.attr, 0, sizeof(v->r.attr));
       }
       if (texcoord) {
          /* [S: ffvertex_prog.c:build_texture_transform] a passthrough of
-          * the vertex's coordinate: the texture matrix applies only to a
-          * unit with a complete texture (texmat_enabled needs the unit's
-          * _Current, texstate.c:_mesa_update_texture_matrices), and no
-          * texture is complete yet */
+          * the vertex's coordinate (texture matrices and coordinate
+          * generation are still to come) */
          const float *tc = tex + (size_t)i * tstride;
          for (int k = 0; k < 4; k++)
             v->r.attr[R_ATTR_TEX0][k] = tc[k];
