@@ -2077,6 +2077,9 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
 
 static void execute_list(struct fgl_context *ctx, GLuint list);
 
+/* commands whose replay is not an exported gl* function */
+#define glWindowPos4fMESA fgl_window_pos4f
+
 static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl)
 {
    for (unsigned pos = 0; pos < dl->count;) {

@@ -114,6 +114,7 @@ DL_OP0(PopName)
 DL_OP1(PassThrough, F)
 /* ---- the raster position ---- */
 DL_OP4(RasterPos4f, F, F, F, F) /* every glRasterPos variant: converted, then this */
+DL_OP4(WindowPos4fMESA, F, F, F, F) /* every glWindowPos variant (replay: rastpos.c) */
 /* ---- textures ---- */
 DL_OP2(BindTexture, E, U)
 DL_OPV2(TexParameterfv, E, E, F, 4) /* glTexParameter{f,i,iv}: params[0] as

@@ -129,6 +129,10 @@ bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);
 bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state);
 bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GLenum target);
 
+/* main/rastpos.c: the replay of a compiled glWindowPos (Mesa's
+ * glWindowPos4fMESA) */
+void fgl_window_pos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+
 /* main/feedback.c (selection and feedback) */
 void fgl_init_feedback(struct fgl_context *ctx);
 /* glGet of GL_RENDER_MODE, the name stack and the buffer sizes and type */

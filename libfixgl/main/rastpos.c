@@ -1,5 +1,6 @@
 /*
- * glRasterPos{2,3,4}{s,i,f,d}[v] (GL_CURRENT_BIT's raster position).
+ * glRasterPos{2,3,4}{s,i,f,d}[v] and glWindowPos{2,3}{s,i,f,d}[v]
+ * (GL_CURRENT_BIT's raster position).
  *
  * [S: state_tracker/st_cb_rasterpos.c:st_RasterPos] With the fixed-function
  * vertex program (no ARB vertex program or shader) the state tracker does
@@ -24,6 +25,10 @@
  *   texture coordinates: texture matrix * current coordinate, every unit
  *   in GL_SELECT a valid raster position updates the hit record with its z.
  */
+/* glWindowPos (GL 1.4) is declared by <GL/glext.h> only with
+ * GL_GLEXT_PROTOTYPES: asking for the prototypes checks the definitions
+ * below against them */
+#define GL_GLEXT_PROTOTYPES 1
 #include <math.h>
 
 #include "main/groups.h"
@@ -334,3 +339,81 @@ void GLAPIENTRY glRasterPos4iv(const GLint *v)
    rasterpos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2], (GLfloat)v[3]);
 }
 void GLAPIENTRY glRasterPos4sv(const GLshort *v) { rasterpos(v[0], v[1], v[2], v[3]); }
+
+/* ---- glWindowPos (GL 1.4) ---- */
+
+/* [S: rastpos.c:window_pos3f, window_pos4f] the window position as
+ * given, z mapped into the depth range (CLAMP(z, 0, 1) * (far - near) +
+ * near, in float), always valid; the distance from the fog coordinate with
+ * GL_FOG_COORDINATE as the fog source, else 0; the current colours clamped
+ * (no lighting) and the current texture coordinates (no texture matrix);
+ * in GL_SELECT the hit record takes the z.  While compiling, every variant
+ * is stored as Mesa's glWindowPos4fMESA (dlist.c:save_WindowPos*). */
+static void window_pos(GLfloat x, GLfloat y, GLfloat z)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, WindowPos4fMESA, x, y, z, 1.0f);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   FGL_FLUSH_VERTICES(ctx, 0);
+   fgl_flush_current(ctx);
+   struct fgl_current_attrib *cur = &ctx->Current;
+   ctx->PopAttribState |= GL_CURRENT_BIT;
+   const float n = ctx->Viewport.Near, f = ctx->Viewport.Far;
+   cur->RasterPos[0] = x;
+   cur->RasterPos[1] = y;
+   cur->RasterPos[2] = fgl_clamp01(z) * (f - n) + n;
+   cur->RasterPos[3] = 1.0f;
+   cur->RasterPosValid = true;
+   cur->RasterDistance = ctx->Fog.CoordinateSource == GL_FOG_COORDINATE ? cur->FogCoord : 0.0f;
+   for (int k = 0; k < 4; k++) {
+      cur->RasterColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR0][k]);
+      cur->RasterSecondaryColor[k] = fgl_clamp01(cur->SecondaryColor[k]);
+   }
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      const float *tc = u == 0 ? cur->Attrib[FGL_ATTR_TEX0] : cur->TexCoord[u];
+      for (int k = 0; k < 4; k++)
+         cur->RasterTexCoords[u][k] = tc[k];
+   }
+   if (ctx->RenderMode == GL_SELECT)
+      t_update_hitflag(ctx, cur->RasterPos[2]);
+}
+
+/* the list replay of glWindowPos4fMESA: window_pos4f sets w after */
+void fgl_window_pos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w)
+{
+   window_pos(x, y, z);
+   GET_CURRENT_CONTEXT(ctx);
+   if (ctx)
+      ctx->Current.RasterPos[3] = w;
+}
+
+void GLAPIENTRY glWindowPos2d(GLdouble x, GLdouble y) { window_pos((GLfloat)x, (GLfloat)y, 0.0f); }
+void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y) { window_pos(x, y, 0.0f); }
+void GLAPIENTRY glWindowPos2i(GLint x, GLint y) { window_pos((GLfloat)x, (GLfloat)y, 0.0f); }
+void GLAPIENTRY glWindowPos2s(GLshort x, GLshort y) { window_pos(x, y, 0.0f); }
+void GLAPIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z)
+{
+   window_pos((GLfloat)x, (GLfloat)y, (GLfloat)z);
+}
+void GLAPIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { window_pos(x, y, z); }
+void GLAPIENTRY glWindowPos3i(GLint x, GLint y, GLint z)
+{
+   window_pos((GLfloat)x, (GLfloat)y, (GLfloat)z);
+}
+void GLAPIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) { window_pos(x, y, z); }
+void GLAPIENTRY glWindowPos2dv(const GLdouble *v) { window_pos((GLfloat)v[0], (GLfloat)v[1], 0.0f); }
+void GLAPIENTRY glWindowPos2fv(const GLfloat *v) { window_pos(v[0], v[1], 0.0f); }
+void GLAPIENTRY glWindowPos2iv(const GLint *v) { window_pos((GLfloat)v[0], (GLfloat)v[1], 0.0f); }
+void GLAPIENTRY glWindowPos2sv(const GLshort *v) { window_pos(v[0], v[1], 0.0f); }
+void GLAPIENTRY glWindowPos3dv(const GLdouble *v)
+{
+   window_pos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2]);
+}
+void GLAPIENTRY glWindowPos3fv(const GLfloat *v) { window_pos(v[0], v[1], v[2]); }
+void GLAPIENTRY glWindowPos3iv(const GLint *v)
+{
+   window_pos((GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2]);
+}
+void GLAPIENTRY glWindowPos3sv(const GLshort *v) { window_pos(v[0], v[1], v[2]); }

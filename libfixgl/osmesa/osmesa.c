@@ -15,6 +15,9 @@
  * GL_FLOAT and OSMESA_RGB_565 buffers are refused (OSMesaMakeCurrent
  * returns GL_FALSE); NULL arguments never crash.
  */
+/* the GL 1.4 entry points fixgl exports (glWindowPos) are declared by
+ * <GL/glext.h> only with GL_GLEXT_PROTOTYPES */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 
 #include <stddef.h>
