@@ -236,6 +236,14 @@ int glutStrokeLength(void *font, const unsigned char *string);
 void glutStrokeString(void *font, const unsigned char *string);
 GLfloat glutStrokeHeight(void *font);
 
+/* GLU's matrix helpers, provided by libfixglut (classic <GL/glut.h>
+ * includes <GL/glu.h>; libGLU itself needs the system libGL). */
+void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
+void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
+void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ,
+               GLdouble centerX, GLdouble centerY, GLdouble centerZ,
+               GLdouble upX, GLdouble upY, GLdouble upZ);
+
 /* Geometric objects */
 void glutWireSphere(GLdouble radius, GLint slices, GLint stacks);
 void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks);

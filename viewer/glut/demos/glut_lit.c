@@ -1,8 +1,9 @@
 /*
  * A lit, animated legacy GLUT demo: a teapot, a torus and a sphere under
  * two lights, turned by a timer, the sphere bobbing by the elapsed time
- * in an idle callback.  Plain GLUT 3.7 code: it builds unchanged against
- * any <GL/glut.h>.  Esc quits.
+ * in an idle callback; the view through gluPerspective and gluLookAt, which
+ * classic <GL/glut.h> brings with <GL/glu.h>.  Plain GLUT 3.7 code: it
+ * builds unchanged against any <GL/glut.h>.  Esc quits.
  */
 #include <GL/glut.h>
 #include <math.h>
@@ -48,8 +49,7 @@ static void display(void)
    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
    glMatrixMode(GL_MODELVIEW);
    glLoadIdentity();
-   glTranslatef(0.0f, 0.0f, -6.0f);
-   glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+   gluLookAt(0.0, 2.0, 5.6, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
 
    glPushMatrix();
    glRotatef(angle, 0.0f, 1.0f, 0.0f);
@@ -78,8 +78,7 @@ static void reshape(int w, int h)
    glViewport(0, 0, w, h);
    glMatrixMode(GL_PROJECTION);
    glLoadIdentity();
-   double aspect = (double)w / (double)(h ? h : 1);
-   glFrustum(-0.5 * aspect, 0.5 * aspect, -0.5, 0.5, 1.0, 20.0);
+   gluPerspective(50.0, (double)w / (double)(h ? h : 1), 1.0, 20.0);
    glMatrixMode(GL_MODELVIEW);
 }
 
