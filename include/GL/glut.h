@@ -18,9 +18,12 @@
  *   FIXGLUT_OUT=PATH       PNG output: a pattern with %d (each frame, e.g.
  *                          out/f%03d.png), a directory (each frame as
  *                          DIR/frame-NNNN.png) or a .png file (last frame)
- *   FIXGLUT_EVENTS=LIST    scripted events "FRAME:EVENT;...", see README.md
+ *   FIXGLUT_EVENTS=LIST    scripted events "FRAME:EVENT;...", see
+ *                          viewer/glut/README.md
  *   FIXGLUT_SCREENSHOT=F   window mode: after the last frame, read the
  *                          window back through the system GL into PNG F
+ *   FIXGLUT_SCREENSHOT_X11=F  the same frame as the X server shows the
+ *                          window (XGetImage), into PNG F
  */
 #ifndef FIXGL_GLUT_H
 #define FIXGL_GLUT_H

@@ -109,3 +109,8 @@ void fv_present_read(struct fv_present *p, int front, int w, int h, unsigned cha
    p->ReadBuffer(front ? GL_FRONT : GL_BACK);
    p->ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
+
+void fv_present_finish(struct fv_present *p)
+{
+   p->Finish();
+}

@@ -35,6 +35,9 @@ void fv_present_frame(struct fv_present *p, const unsigned char *rgba, int w, in
  * buffer of the current context: the screenshot of the window. */
 void fv_present_read(struct fv_present *p, int front, int w, int h, unsigned char *rgba);
 
+/* glFinish of the system GL. */
+void fv_present_finish(struct fv_present *p);
+
 #ifdef __cplusplus
 }
 #endif

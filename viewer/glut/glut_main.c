@@ -24,6 +24,7 @@
 #ifndef FIXGLUT_ORACLE
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include "fv_grab.h"
 #include "fv_present.h"
 #endif
 
@@ -84,6 +85,7 @@ static struct {
    long frame;            /* current frame number */
    char *out;             /* FIXGLUT_OUT */
    char *screenshot;      /* FIXGLUT_SCREENSHOT */
+   char *screenshot_x11;  /* FIXGLUT_SCREENSHOT_X11 */
    struct glut_event *events;
    int num_events;
    double t0;             /* real clock origin, seconds */
@@ -237,6 +239,8 @@ GLUT_EXPORT void glutInit(int *argcp, char **argv)
       G.out = xstrdup(e);
    if ((e = getenv("FIXGLUT_SCREENSHOT")) && *e)
       G.screenshot = xstrdup(e);
+   if ((e = getenv("FIXGLUT_SCREENSHOT_X11")) && *e)
+      G.screenshot_x11 = xstrdup(e);
    if ((e = getenv("FIXGLUT_EVENTS")) && *e)
       parse_events(e);
 
@@ -635,6 +639,7 @@ GLUT_EXPORT int glutCreateWindow(const char *title)
    return 1;
 }
 
+/* The one window gone, the program ends (documented in README.md). */
 GLUT_EXPORT void glutDestroyWindow(int win)
 {
    (void)win;
@@ -1022,7 +1027,7 @@ static void write_frame(bool last)
 static void write_screenshot(void)
 {
 #ifndef FIXGLUT_ORACLE
-   if (!G.screenshot || !G.win)
+   if ((!G.screenshot && !G.screenshot_x11) || !G.win)
       return;
    int fw, fh;
    glfwGetFramebufferSize(G.win, &fw, &fh);
@@ -1036,8 +1041,21 @@ static void write_screenshot(void)
    fv_present_frame(G.present, G.overlay, G.w, G.h, fw, fh);
    fv_present_read(G.present, 0, fw, fh, px);
    glfwSwapBuffers(G.win);
-   if (fv_png_write(G.screenshot, fw, fh, px, 1) != 0)
+   if (G.screenshot && fv_png_write(G.screenshot, fw, fh, px, 1) != 0)
       glut_fatal("cannot write %s", G.screenshot);
+   /* What the X server shows in the window once the buffers are swapped. */
+   if (G.screenshot_x11) {
+      fv_present_finish(G.present);
+      int ww, wh;
+      glfwGetWindowSize(G.win, &ww, &wh);
+      unsigned char *xp = malloc((size_t)ww * wh * 4);
+      if (!xp)
+         glut_fatal("out of memory");
+      if (fv_grab_window(G.win, ww, wh, xp) != 0 ||
+          fv_png_write(G.screenshot_x11, ww, wh, xp, 1) != 0)
+         glut_fatal("cannot write the window's X11 image to %s", G.screenshot_x11);
+      free(xp);
+   }
    free(px);
 #endif
 }
@@ -1103,8 +1121,7 @@ GLUT_EXPORT void glutMainLoop(void)
       if (last)
          write_screenshot();
    }
-   if (G.frames < 0 || !G.frame) {
-      /* window closed: nothing more */
-   }
+   /* N frames done, or the window was closed: GLUT's main loop never
+    * returns. */
    exit(0);
 }

@@ -8,6 +8,10 @@
  *                --fixgl DEMO --oracle DEMO [--fixgl-has-glbitmap yes|no]
  *   glut-compare --window --out DIR --frames N --fixgl DEMO --xvfb XVFB
  *
+ * The window run writes two screenshots of the last frame: the system GL's
+ * read-back of the presented back buffer and the X server's image of the
+ * window after the swap (XGetImage); both must equal the headless frame.
+ *
  * A frame that differs fails the test and leaves DIR/diff/frame-NNNN.png
  * (differing pixels red, equal ones dimmed).  --fixgl-has-glbitmap no: the
  * demo draws bitmap text and libfixgl does not export glBitmap yet (known
@@ -273,10 +277,11 @@ static int compare_window(void)
       return 1;
    }
    atexit(stop_xvfb);
-   char e_display[32], e_frames[64], e_shot[4200], e_ms[64], e_asan[4200];
+   char e_display[32], e_frames[64], e_shot[4200], e_shot_x11[4200], e_ms[64], e_asan[4200];
    snprintf(e_display, sizeof e_display, "DISPLAY=:%d", n);
    snprintf(e_frames, sizeof e_frames, "FIXGLUT_FRAMES=%d", frames);
    snprintf(e_shot, sizeof e_shot, "FIXGLUT_SCREENSHOT=%s/screenshot.png", wdir);
+   snprintf(e_shot_x11, sizeof e_shot_x11, "FIXGLUT_SCREENSHOT_X11=%s/x11.png", wdir);
    snprintf(e_ms, sizeof e_ms, "FIXGLUT_FRAME_MS=%s", frame_ms ? frame_ms : "16");
    /* Under AddressSanitizer: leaks inside the system's GL and X libraries
     * (loaded by GLFW) are not ours; everything else is still checked. */
@@ -286,7 +291,8 @@ static int compare_window(void)
    static char e_headless[] = "FIXGLUT_HEADLESS=0";
    static char e_events[] = "FIXGLUT_EVENTS=";
    static char e_out[] = "FIXGLUT_OUT=";
-   char *env[] = { e_display, e_frames, e_shot, e_ms, e_asan, e_headless, e_events, e_out, NULL };
+   char *env[] = { e_display, e_frames, e_shot, e_shot_x11, e_ms, e_asan, e_headless, e_events,
+                   e_out, NULL };
    printf("running %s in a window on Xvfb :%d (%d frames)\n", fixgl_demo, n, frames);
    fflush(stdout);
    int rc = run(fixgl_demo, env, 120);
@@ -295,19 +301,29 @@ static int compare_window(void)
       fprintf(stderr, "glut-compare: %s in a window exited with %d\n", fixgl_demo, rc);
       return 1;
    }
-   char a[4200], b[4200], d[4200];
-   snprintf(a, sizeof a, "%s/screenshot.png", wdir);
+   char b[4200];
    snprintf(b, sizeof b, "%s/frame-%04d.png", hdir, frames - 1);
-   snprintf(d, sizeof d, "%s/screenshot.png", ddir);
    if (!has_content(b)) {
       fprintf(stderr, "glut-compare: the headless frame is blank\n");
       return 1;
    }
-   /* RGB: the window's visual need not keep alpha. */
-   long diff = compare(a, b, d, 3);
-   printf("window screenshot vs headless frame %d: %s\n", frames - 1,
-          diff == 0 ? "exact" : diff < 0 ? "ERROR" : "DIFFERS");
-   return diff == 0 ? 0 : 1;
+   /* Both screenshots, RGB (the window's visual need not keep alpha): the
+    * back buffer read through the system GL as presented, and the window
+    * as the X server shows it after the swap. */
+   static const char *const shots[2] = { "screenshot.png", "x11.png" };
+   static const char *const what[2] = { "system-GL read-back", "X server image" };
+   int failed = 0;
+   for (int i = 0; i < 2; i++) {
+      char a[4200], d[4200];
+      snprintf(a, sizeof a, "%s/%s", wdir, shots[i]);
+      snprintf(d, sizeof d, "%s/%s", ddir, shots[i]);
+      long diff = compare(a, b, d, 3);
+      printf("window (%s) vs headless frame %d: %s\n", what[i], frames - 1,
+             diff == 0 ? "exact" : diff < 0 ? "ERROR" : "DIFFERS");
+      if (diff != 0)
+         failed++;
+   }
+   return failed ? 1 : 0;
 }
 
 int main(int argc, char **argv)
