@@ -214,6 +214,29 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    }
 }
 
+/* The texture coordinates of the quad of pixel (px, py): its top-left,
+ * top-right and bottom-left pixels (even y-down coordinates), evaluated like
+ * every pixel's inputs whether or not they are covered
+ * [S: lp_bld_interp.c, lp_bld_quad.c] (llvmpipe-facts.md §5). */
+static void tri_quad(const struct r_state *rs, const struct tri_shade *ts, int px, int py,
+                     struct r_fs_quad *q)
+{
+   static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
+   const int qx = px & ~1, qy = py & ~1;
+   for (int i = 0; i < 3; i++) {
+      const float fx = (float)(qx + dx[i]), fy = (float)(qy + dy[i]);
+      const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
+      for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+         if (!(rs->tex_units & (1u << u)))
+            continue;
+         const int a = R_FS_TEX0 + u;
+         for (int c = 0; c < 4; c++)
+            q->tex[u][i][c] = ts->flat_attr[a] ? ts->flat[a][c]
+                                               : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+      }
+   }
+}
+
 /* Shades pixel (px, py), which is inside the draw region. */
 static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
@@ -231,7 +254,13 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
    float color[4];
-   r_fragment_shader(rs, (const float (*)[4])in, color);
+   if (rs->tex_units) {
+      struct r_fs_quad quad;
+      tri_quad(rs, ts, px, py, &quad);
+      r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
+   } else {
+      r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
+   }
    if (rs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
       return;
    /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
