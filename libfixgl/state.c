@@ -53,6 +53,13 @@ static enum r_tex_wrap tex_wrap(GLenum w)
    }
 }
 
+/* [S: util/u_math.h:util_quantize_lod_bias] */
+static float quantize_lod_bias(float lod)
+{
+   lod = lod > -16.0f ? (lod > 16.0f ? 16.0f : lod) : -16.0f;
+   return roundf(lod * 256.0f) / 256.0f;
+}
+
 static bool is_pot(int n)
 {
    return n > 0 && (n & (n - 1)) == 0;
@@ -99,9 +106,11 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    rt->wrap_t = tex_wrap(t->WrapT);
    for (int c = 0; c < 4; c++)
       rt->border_color[c] = t->BorderColor[c];
-   /* sampler->lod_bias += tex_unit_lod_bias; min_lod is kept >= 0
+   /* both biases quantized when set (util_quantize_lod_bias: clamped to
+    * [-16, 16], rounded to 1/256), then sampler->lod_bias +=
+    * tex_unit_lod_bias (st_convert_sampler); min_lod is kept >= 0
     * (samplerobj.c, texparam.c) */
-   rt->lod_bias = t->LodBias + ctx->Texture.Unit[u].LodBias;
+   rt->lod_bias = quantize_lod_bias(t->LodBias) + quantize_lod_bias(ctx->Texture.Unit[u].LodBias);
    rt->min_lod = t->MinLod > 0.0f ? t->MinLod : 0.0f;
    rt->max_lod = t->MaxLod;
    /* use_aos [S: lp_bld_sample_soa.c:lp_build_sample_soa_code]: simple
@@ -113,7 +122,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
                             (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE);
    const bool lod_used = rt->mip != R_MIP_NONE || rt->min_img != rt->mag_img;
    const bool lod_clamps = lod_used && (rt->min_lod == rt->max_lod || rt->min_lod > 0.0f ||
-                                        rt->max_lod < (float)(R_MAX_TEX_LEVELS - 1));
+                                        rt->max_lod < 15.0f);   /* PIPE_MAX_TEXTURE_LEVELS - 1 */
    rt->soa = !simple_wrap || rt->lod_bias != 0.0f || lod_clamps;
 }
 
