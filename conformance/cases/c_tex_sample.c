@@ -422,6 +422,112 @@ static void raster_state(fc_h *h)
     fc_capture(h);
 }
 
+/* Different wraps on s and t; GL_TEXTURE_1D and 2D enabled together (2D
+ * wins); the 1D texture minified on a receding plane. */
+static void mixed_wrap(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    noise_image(GL_TEXTURE_2D, 0, 6, 8, 5);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_1D, 2);
+    noise_image(GL_TEXTURE_1D, 0, 8, 1, 6);
+    tex_params(GL_TEXTURE_1D, GL_NEAREST, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_1D);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    scene_flat(h, -1.3f, 2.1f);
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    scene_persp(h, 5.0f);
+    glDisable(GL_TEXTURE_2D);
+    scene_persp(h, 7.0f);
+}
+
+/* Large triangles crossing the near plane in a bigger buffer: clipped
+ * vertices get their texture coordinates by the clipper's lerp, then
+ * perspective-correct interpolation over hundreds of pixels. */
+static void persp_large(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 64, 64);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    const fc_case *c = fc_this_case(h);
+    glViewport(0, 0, c->width, c->height);
+    fcu_frustum(-0.6, 0.6, -0.45, 0.45, 0.5, 100);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glEnable(GL_DEPTH_TEST);
+    glRotatef(17.0f, 0.2f, 1.0f, 0.1f);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);       glTexCoord2f(0, 0);   glVertex3f(-30, -2, 10);
+    glColor3f(1, 0.8f, 0.6f); glTexCoord2f(20, 0);  glVertex3f(30, -2, 10);
+    glColor3f(0.6f, 0.8f, 1); glTexCoord2f(10, 40); glVertex3f(0, -2, -90);
+    glColor3f(0.9f, 0.9f, 0.9f); glTexCoord2f(-3, 1); glVertex3f(-3, 4, 3);
+    glColor3f(0.7f, 1, 0.7f); glTexCoord2f(5, 2);   glVertex3f(6, -1, -25);
+    glColor3f(1, 0.7f, 0.7f); glTexCoord2f(1, 9);   glVertex3f(-2, 9, -40);
+    glEnd();
+    fc_capture(h);
+    tex_params(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    glRotatef(-40.0f, 1.0f, 0.0f, 0.0f);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glBegin(GL_QUADS);
+    glTexCoord2f(-0.5f, -0.5f); glVertex3f(-20, -3, 5);
+    glTexCoord2f(1.5f, -0.5f);  glVertex3f(20, -3, 5);
+    glTexCoord2f(1.5f, 1.5f);   glVertex3f(20, -3, -60);
+    glTexCoord2f(-0.5f, 1.5f);  glVertex3f(-20, -3, -60);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Texture coordinates from arrays (glDrawArrays, glDrawElements), a
+ * display list, and polygon mode GL_LINE / GL_POINT (the draw module's
+ * unfilled stage). */
+static void arrays_lists(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 32, 32);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    static const GLfloat v[8][2] = { { 2, 2 }, { 30, 4 }, { 60, 3 }, { 4, 30 },
+                                     { 33, 31 }, { 61, 28 }, { 3, 61 }, { 58, 60 } };
+    static const GLfloat t[8][2] = { { 0, 0 }, { 1.5f, 0.1f }, { 3.2f, -0.2f }, { 0.2f, 1.4f },
+                                     { 1.7f, 1.6f }, { 2.9f, 1.1f }, { -0.4f, 3.3f }, { 2.5f, 3.0f } };
+    static const GLubyte idx[] = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glTexCoordPointer(2, GL_FLOAT, 0, t);
+    glDrawElements(GL_QUADS, 12, GL_UNSIGNED_BYTE, idx);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 8);
+    fc_capture(h);
+    glNewList(1, GL_COMPILE);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, 6);
+    glEndList();
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    fcu_clear(0, 0, 0, 1, 1);
+    glCallList(1);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glLineWidth(2.0f);
+    glCallList(1);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+    glPointSize(3.0f);
+    glTranslatef(1.5f, 0.5f, 0);
+    glCallList(1);
+    fc_capture(h);
+}
+
 #define S(name) FC_CASE_RGBA(name, 64, 64, 2, "texture", sample_case),
 #define SIZES(base) S(base "_nearest_repeat") S(base "_nearest_edge") S(base "_linear_repeat") \
     S(base "_linear_edge") S(base "_minlin_magnear_repeat") S(base "_minnear_maglin_edge")
@@ -448,6 +554,9 @@ const fc_case fc_cases_tex_sample[] = {
     FC_CASE_RGBA("texture/sample_const_coord", 64, 64, 2, "texture", const_coord),
     FC_CASE_RGBA("texture/mip_base_max_level", 64, 64, 2, "texture", base_max_level),
     FC_CASE_RGBA("texture/sample_raster_state", 64, 64, 2, "texture", raster_state),
+    FC_CASE_RGBA("texture/sample_mixed_wrap", 64, 64, 3, "texture", mixed_wrap),
+    FC_CASE_RGBA("texture/sample_persp_large", 160, 120, 2, "texture", persp_large),
+    FC_CASE_RGBA("texture/sample_arrays_lists", 64, 64, 4, "texture varray dlist", arrays_lists),
     FC_CASE_RGBA("texture/sample_lines_points", 64, 64, 2, "texture", lines_points),
     FC_CASE_RGBA("texture/sample_rebind_incomplete", 48, 48, 4, "texture", rebind_incomplete),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }

@@ -508,29 +508,36 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
    }
 }
 
+/* The texture environments of the enabled units in order, each on the
+ * previous one's result, the first on the fragment colour
+ * (ff_fragment_shader.cpp emit_instructions); kept out of line so the
+ * untextured fragment program stays small. */
+static __attribute__((noinline)) void texture_units(const struct r_state *rs, const float in[][4],
+                                                    const struct r_fs_quad *quad, float out[4])
+{
+   struct tex_cache tc;
+   tc.have = 0;
+   float prev[4], res[4];
+   bool first = true;   /* PREVIOUS is still the primary colour */
+   for (int c = 0; c < 4; c++)
+      prev[c] = in[R_FS_COLOR0][c];
+   for (int u = 0; u < rs->tex_nr; u++) {
+      if (!(rs->tex_units & (1u << u)))
+         continue;
+      emit_texenv(rs, in, quad, &tc, u, prev, first, res);
+      first = false;
+      for (int c = 0; c < 4; c++)
+         prev[c] = res[c];
+   }
+   for (int c = 0; c < 4; c++)
+      out[c] = prev[c];
+}
+
 void r_fragment_shader(const struct r_state *rs, const float in[][4],
                        const struct r_fs_quad *quad, float out[4])
 {
-   /* the texture environments of the enabled units in order, each on the
-    * previous one's result, the first on the fragment colour
-    * (ff_fragment_shader.cpp emit_instructions) */
    if (rs->tex_units) {
-      struct tex_cache tc;
-      tc.have = 0;
-      float prev[4], res[4];
-      bool first = true;   /* PREVIOUS is still the primary colour */
-      for (int c = 0; c < 4; c++)
-         prev[c] = in[R_FS_COLOR0][c];
-      for (int u = 0; u < rs->tex_nr; u++) {
-         if (!(rs->tex_units & (1u << u)))
-            continue;
-         emit_texenv(rs, in, quad, &tc, u, prev, first, res);
-         first = false;
-         for (int c = 0; c < 4; c++)
-            prev[c] = res[c];
-      }
-      for (int c = 0; c < 4; c++)
-         out[c] = prev[c];
+      texture_units(rs, in, quad, out);
    } else {
       for (int c = 0; c < 4; c++)
          out[c] = in[R_FS_COLOR0][c];
