@@ -528,6 +528,37 @@ static void arrays_lists(fc_h *h)
     fc_capture(h);
 }
 
+/* Extreme coordinates: huge s and t (the fixed-point conversions
+ * overflow), q = 0 at a vertex (infinite and NaN coordinates), for every
+ * filter and wrap of the AoS path. */
+static void extreme_coords(fc_h *h)
+{
+    static const GLenum filt[4][2] = { { GL_NEAREST, GL_NEAREST }, { GL_LINEAR, GL_LINEAR },
+                                       { GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST },
+                                       { GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR } };
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 8, 8);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 4; f++) {
+        tex_params(GL_TEXTURE_2D, filt[f][0], filt[f][1], f & 1 ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+        fcu_clear(0, 0, 0, 1, 1);
+        glBegin(GL_TRIANGLES);
+        glTexCoord2f(3e9f, -2e9f);   glVertex2f(1, 1);
+        glTexCoord2f(-1e8f, 5e7f);   glVertex2f(30, 2);
+        glTexCoord2f(1e6f, 1e6f);    glVertex2f(15, 30);
+        glTexCoord4f(0.5f, 0.5f, 0, 0);  glVertex2f(33, 33);
+        glTexCoord4f(1, 2, 0, 1);        glVertex2f(62, 35);
+        glTexCoord4f(0, 0, 0, 0);        glVertex2f(50, 62);
+        glTexCoord2f(16777216.0f, 8388609.5f); glVertex2f(2, 34);
+        glTexCoord2f(-16777215.0f, 0.5f);      glVertex2f(30, 40);
+        glTexCoord2f(1e30f, -1e30f);           glVertex2f(10, 62);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 #define S(name) FC_CASE_RGBA(name, 64, 64, 2, "texture", sample_case),
 #define SIZES(base) S(base "_nearest_repeat") S(base "_nearest_edge") S(base "_linear_repeat") \
     S(base "_linear_edge") S(base "_minlin_magnear_repeat") S(base "_minnear_maglin_edge")
@@ -557,6 +588,7 @@ const fc_case fc_cases_tex_sample[] = {
     FC_CASE_RGBA("texture/sample_mixed_wrap", 64, 64, 3, "texture", mixed_wrap),
     FC_CASE_RGBA("texture/sample_persp_large", 160, 120, 2, "texture", persp_large),
     FC_CASE_RGBA("texture/sample_arrays_lists", 64, 64, 4, "texture varray dlist", arrays_lists),
+    FC_CASE_RGBA("texture/sample_extreme_coords", 64, 64, 4, "texture", extreme_coords),
     FC_CASE_RGBA("texture/sample_lines_points", 64, 64, 2, "texture", lines_points),
     FC_CASE_RGBA("texture/sample_rebind_incomplete", 48, 48, 4, "texture", rebind_incomplete),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }
