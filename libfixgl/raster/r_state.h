@@ -220,6 +220,10 @@ void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[
 /* The AoS path with the fast LOD (r_tex.c), whatever `soa` says. */
 void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
                       float out[4]);
+/* lp_build_rho of a quad's projected coordinates (TL, TR, BL) with the
+ * size of the first level: squared for 2D, max(|ds|) * W for 1D (r_tex.c),
+ * shared by both LOD paths. */
+float r_tex_rho(const struct r_texture *t, const float q[3][3]);
 /* The AoS filtering alone, given the LOD selector's results (for the
  * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still
  * filters on the AoS path): minify picks the min or mag image filter

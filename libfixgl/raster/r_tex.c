@@ -157,7 +157,7 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
  * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2).  1D (the
  * approximation stays on for one dimension): max(|dsdx|, |dsdy|) * W, not
  * squared. */
-static float quad_rho(const struct r_texture *t, const float q[3][3])
+float r_tex_rho(const struct r_texture *t, const float q[3][3])
 {
    const struct r_tex_level *l = &t->level[t->first_level];
    const float fw = (float)l->width;
@@ -232,7 +232,7 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
       return;
    }
    /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
-   const float rho = quad_rho(t, quad);
+   const float rho = r_tex_rho(t, quad);
    const bool squared = t->dims > 1;
    bool minify;
    int level0 = first, level1 = first, weight = 0;
