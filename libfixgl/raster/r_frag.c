@@ -347,11 +347,14 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
    }
    for (int c = c0; c < c1; c++) {
       float r;
-      int key[4];
-      for (int i = 0; i < nargs; i++)
-         key[i] = arg_key(src[i], is_one_minus(opr[i]),
-                          opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
-                          unit, prev_is_primary);
+      int key[4] = { -1, -1, -1, -1 };
+      if (mode == R_COMB_INTERPOLATE || mode == R_COMB_ADD_PRODUCTS_NV ||
+          mode == R_COMB_ADD_PRODUCTS_SIGNED_NV) {
+         for (int i = 0; i < nargs; i++)
+            key[i] = arg_key(src[i], is_one_minus(opr[i]),
+                             opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
+                             unit, prev_is_primary);
+      }
       switch (mode) {
       case R_COMB_REPLACE:
          r = a[0][c];
