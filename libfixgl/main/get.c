@@ -508,6 +508,10 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_MAX_TEXTURE_UNITS:
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
       return true;
+   case GL_MAX_TEXTURE_COORDS:
+      /* Const.MaxTextureCoordUnits (extra_ARB_fragment_program) */
+      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
+      return true;
    case GL_MAX_TEXTURE_SIZE:
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_SIZE, 0, 0, 0);
       return true;

@@ -50,6 +50,14 @@ static unsigned component_mode(const struct fgl_texture_unit *t, int c)
 void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
                 unsigned units, struct t_vertex *out)
 {
+   /* whether the program computes a reflection map's R anywhere (the
+    * eye normal and position are shared by every unit) */
+   bool reflect_r = false;
+   for (unsigned m = units & ctx->_TexGenEnabled; m; m &= m - 1) {
+      const unsigned u = (unsigned)__builtin_ctz(m);
+      reflect_r |= component_mode(&ctx->Texture.Unit[u], 2) == FGL_TEXGEN_REFLECTION_MAP;
+   }
+
    const float *mv = ctx->ModelviewStack.Top->m;
    unsigned nstride;
    const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
@@ -91,6 +99,7 @@ void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, 
          if (texgen) {
             const float *obj = in[i].attr[FGL_ATTR_POS];
             float eye[4] = { 0 }, nrm[3] = { 0 }, eye_hat[3] = { 0 }, r[3] = { 0 };
+            float neg_nu_n[3] = { 0 };
             if (need_eye)
                t_mul_mad_chain(eye, mv, obj);      /* get_eye_position */
             if (need_normal)
@@ -103,15 +112,22 @@ void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, 
                /* n.u, 2n.u, then (-2n.u)n + u */
                float nu = dp3(nrm, eye_hat);
                nu = nu + nu;
-               for (int k = 0; k < 3; k++)
-                  r[k] = -nu * nrm[k] + eye_hat[k];
+               for (int k = 0; k < 3; k++) {
+                  neg_nu_n[k] = -nu * nrm[k];
+                  r[k] = neg_nu_n[k] + eye_hat[k];
+               }
             }
             float sphere[3] = { 0 };
             if (used & FGL_TEXGEN_SPHERE_MAP) {
-               /* build_sphere_texgen: m = rsq(|r + (0,0,1)|^2) (the x and
-                * y additions of 0 folded away by NIR), then
-                * r * (m * 0.5) + 0.5 */
-               const float v[3] = { r[0], r[1], r[2] + 1.0f };
+               /* build_sphere_texgen: m = rsq(|r + (0,0,1)|^2), then
+                * r * (m * 0.5) + 0.5.  NIR folds the x and y additions of
+                * 0 and, when r.z has no other use, reassociates the z one
+                * to (-2(n.u) n.z + 1) + u.z (nir_opt_algebraic's constant
+                * reassociation; ST_DEBUG=nir dump); a reflection map on R
+                * computes the same r.z, which CSE shares, and keeps
+                * (r.z + 1) */
+               const float vz = reflect_r ? r[2] + 1.0f : (neg_nu_n[2] + 1.0f) + eye_hat[2];
+               const float v[3] = { r[0], r[1], vz };
                const float inv_m = (1.0f / sqrtf(fabsf(dp3(v, v)))) * 0.5f;
                for (int k = 0; k < 3; k++)
                   sphere[k] = r[k] * inv_m + 0.5f;
