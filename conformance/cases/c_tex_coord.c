@@ -958,6 +958,371 @@ static void multi_upgrade(fc_h *h)
     cur_all(h, "after");
 }
 
+/* ---- rendered cases (sampling and environment from raster/r_tex.c) ---- */
+
+/* A w x h RGBA image of coloured cells (each cell a distinct colour, with
+ * a gradient inside so that filtering shows) bound to GL_TEXTURE_2D of the
+ * active unit, with the given filter and wrap; the unit's 2D target is
+ * enabled. */
+static void cell_texture(int w, int h, unsigned seed, GLenum filter, GLenum wrap)
+{
+    static GLubyte img[64 * 64 * 4];
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            GLubyte *p = img + 4 * (y * w + x);
+            const unsigned c = (unsigned)((x * 4) / w + 4 * ((y * 4) / h)) + seed;
+            p[0] = (GLubyte)((c * 67u + (unsigned)x * 9u) & 255u);
+            p[1] = (GLubyte)((c * 151u + (unsigned)y * 13u) & 255u);
+            p[2] = (GLubyte)((c * 29u + 96u) & 255u);
+            p[3] = (GLubyte)(255u - ((c * 37u) & 127u));
+        }
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+    glEnable(GL_TEXTURE_2D);
+}
+
+/* A sphere of stacks x slices quads with unit normals, radius r at z0 */
+static void sphere(float r, float z0, int stacks, int slices)
+{
+    for (int i = 0; i < stacks; i++) {
+        const float a0 = 3.14159265f * ((float)i / (float)stacks - 0.5f);
+        const float a1 = 3.14159265f * ((float)(i + 1) / (float)stacks - 0.5f);
+        glBegin(GL_QUAD_STRIP);
+        for (int j = 0; j <= slices; j++) {
+            const float b = 2.0f * 3.14159265f * (float)j / (float)slices;
+            const float c0 = cosf(a0), c1 = cosf(a1);
+            glNormal3f(c1 * cosf(b), sinf(a1), c1 * sinf(b));
+            glVertex3f(r * c1 * cosf(b), r * sinf(a1), z0 + r * c1 * sinf(b));
+            glNormal3f(c0 * cosf(b), sinf(a0), c0 * sinf(b));
+            glVertex3f(r * c0 * cosf(b), r * sinf(a0), z0 + r * c0 * sinf(b));
+        }
+        glEnd();
+    }
+}
+
+/* A tilted grid of quads (normals bent towards the edges), drawn with the
+ * current state; its texture coordinates come from generation or are
+ * glTexCoord (s, t) = position. */
+static void grid(int n, bool texcoords)
+{
+    for (int i = 0; i < n; i++) {
+        glBegin(GL_QUAD_STRIP);
+        for (int j = 0; j <= n; j++) {
+            for (int k = 1; k >= 0; k--) {
+                const float x = -1.0f + 2.0f * (float)(i + k) / (float)n;
+                const float y = -1.0f + 2.0f * (float)j / (float)n;
+                glNormal3f(0.4f * x, 0.4f * y, 1.0f);
+                if (texcoords)
+                    glTexCoord2f(x, y);
+                glVertex3f(x, y, -0.25f * x * y);
+            }
+        }
+        glEnd();
+    }
+}
+
+static void render_frame(fc_h *h, void (*draw)(void))
+{
+    fcu_clear(0.1f, 0.2f, 0.3f, 1.0f, 1.0);
+    draw();
+    fc_capture(h);
+}
+
+static void draw_grid_gen(void)
+{
+    grid(6, false);
+}
+
+static void draw_grid_tc(void)
+{
+    grid(6, true);
+}
+
+static void draw_sphere(void)
+{
+    sphere(0.8f, 0.0f, 10, 14);
+}
+
+static void render_view(void)
+{
+    glViewport(0, 0, 48, 48);
+    fcu_frustum(-0.6, 0.6, -0.6, 0.6, 1, 10);
+    glTranslatef(0.0f, 0.0f, -3.0f);
+}
+
+/* OBJECT_LINEAR and EYE_LINEAR generation on a rotating grid: object
+ * coordinates stick to the grid, eye coordinates to the view; NEAREST and
+ * LINEAR, REPEAT and CLAMP_TO_EDGE. */
+static void gen_render_linear(fc_h *h)
+{
+    static const GLfloat sp[4] = { 0.75f, 0.125f, 0.0f, 0.5f };
+    static const GLfloat tp[4] = { -0.125f, 0.625f, 0.25f, 0.5f };
+    render_view();
+    glEnable(GL_DEPTH_TEST);
+    for (int mode = 0; mode < 2; mode++) {
+        const GLenum gm = mode ? GL_EYE_LINEAR : GL_OBJECT_LINEAR;
+        const GLenum pl = mode ? GL_EYE_PLANE : GL_OBJECT_PLANE;
+        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, gm);
+        glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, gm);
+        glTexGenfv(GL_S, pl, sp);
+        glTexGenfv(GL_T, pl, tp);
+        glEnable(GL_TEXTURE_GEN_S);
+        glEnable(GL_TEXTURE_GEN_T);
+        for (int f = 0; f < 2; f++) {
+            cell_texture(16, 16, (unsigned)(3 * mode + f), f ? GL_LINEAR : GL_NEAREST,
+                         f ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+            glPushMatrix();
+            glRotatef(25.0f + 20.0f * (float)f, 0.3f, 1.0f, 0.2f);
+            glRotatef(-15.0f * (float)mode, 1.0f, 0.0f, 0.0f);
+            render_frame(h, draw_grid_gen);
+            glPopMatrix();
+        }
+    }
+}
+
+/* SPHERE_MAP on a lit sphere (GL_NORMALIZE off and on), modulated; the
+ * sphere moved and scaled so that lighting and generation run in eye
+ * space. */
+static void gen_render_sphere(fc_h *h)
+{
+    render_view();
+    glEnable(GL_DEPTH_TEST);
+    cell_texture(32, 32, 7, GL_LINEAR, GL_REPEAT);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+    glEnable(GL_TEXTURE_GEN_S);
+    glEnable(GL_TEXTURE_GEN_T);
+    render_frame(h, draw_sphere);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glPushMatrix();
+    glTranslatef(0.2f, -0.1f, 0.3f);
+    glRotatef(40.0f, 1.0f, 0.5f, 0.0f);
+    render_frame(h, draw_sphere);
+    glScalef(1.3f, 0.8f, 1.0f);
+    glEnable(GL_NORMALIZE);
+    render_frame(h, draw_sphere);
+    glPopMatrix();
+}
+
+/* REFLECTION_MAP and NORMAL_MAP on S and T of a 2D texture (R generated
+ * too, unused by 2D sampling) */
+static void gen_render_reflection(fc_h *h)
+{
+    render_view();
+    glEnable(GL_DEPTH_TEST);
+    cell_texture(16, 16, 11, GL_LINEAR, GL_REPEAT);
+    const GLenum modes[2] = { GL_REFLECTION_MAP, GL_NORMAL_MAP };
+    for (int m = 0; m < 2; m++) {
+        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, (GLint)modes[m]);
+        glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, (GLint)modes[m]);
+        glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, (GLint)modes[m]);
+        glEnable(GL_TEXTURE_GEN_S);
+        glEnable(GL_TEXTURE_GEN_T);
+        glEnable(GL_TEXTURE_GEN_R);
+        glPushMatrix();
+        glRotatef(30.0f * (float)(m + 1), 0.0f, 1.0f, 0.3f);
+        render_frame(h, draw_sphere);
+        glPopMatrix();
+    }
+}
+
+/* The texture matrix: rotation and scale about the centre, a projective
+ * matrix (q varies), and generation followed by the matrix. */
+static void matrix_render(fc_h *h)
+{
+    render_view();
+    cell_texture(16, 16, 5, GL_NEAREST, GL_REPEAT);
+    glMatrixMode(GL_TEXTURE);
+    glTranslatef(0.5f, 0.5f, 0.0f);
+    glRotatef(33.0f, 0.0f, 0.0f, 1.0f);
+    glScalef(0.75f, 1.5f, 1.0f);
+    glMatrixMode(GL_MODELVIEW);
+    render_frame(h, draw_grid_tc);
+    static const GLfloat proj[16] = { 1, 0, 0, 0.3f, 0, 1, 0, -0.2f, 0, 0, 1, 0, 0, 0, 0, 1 };
+    glMatrixMode(GL_TEXTURE);
+    glLoadMatrixf(proj);
+    glMatrixMode(GL_MODELVIEW);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    render_frame(h, draw_grid_tc);
+    static const GLfloat sp[4] = { 1.0f, 0.0f, 0.5f, 0.0f };
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    glTexGenfv(GL_S, GL_EYE_PLANE, sp);
+    glEnable(GL_TEXTURE_GEN_S);
+    glRotatef(20.0f, 1.0f, 1.0f, 0.0f);
+    render_frame(h, draw_grid_tc);
+}
+
+/* two units at once: unit 0 modulates a cell texture with the colour,
+ * unit 1 adds (or decals, or blends) another, with its own coordinates:
+ * glMultiTexCoord, then generation and a matrix on unit 1 */
+static void draw_two_units(void)
+{
+    for (int i = 0; i < 5; i++) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= 5; j++) {
+            for (int k = 0; k < 2; k++) {
+                const float x = -1.0f + 0.4f * (float)(i + k), y = -1.0f + 0.4f * (float)j;
+                glColor3f(0.5f + 0.5f * x, 0.5f + 0.5f * y, 0.75f);
+                glMultiTexCoord2f(GL_TEXTURE0, 0.5f * x + 0.5f, 0.5f * y + 0.5f);
+                glMultiTexCoord3f(GL_TEXTURE1, 2.0f * x, y * y, 1.0f);
+                glVertex3f(x, y, -0.3f * x);
+            }
+        }
+        glEnd();
+    }
+}
+
+static void multi_render_two_units(fc_h *h)
+{
+    render_view();
+    glRotatef(-20.0f, 1.0f, 0.2f, 0.0f);
+    glActiveTexture(GL_TEXTURE0);
+    cell_texture(16, 16, 1, GL_NEAREST, GL_REPEAT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glActiveTexture(GL_TEXTURE1);
+    cell_texture(8, 8, 9, GL_LINEAR, GL_REPEAT);
+    static const GLenum envs[3] = { GL_ADD, GL_DECAL, GL_BLEND };
+    for (int e = 0; e < 3; e++) {
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)envs[e]);
+        render_frame(h, draw_two_units);
+    }
+    /* unit 1's coordinates generated and transformed */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    static const GLfloat sp[4] = { 0.5f, 0.25f, 0.0f, 0.5f };
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glTexGenfv(GL_S, GL_OBJECT_PLANE, sp);
+    glEnable(GL_TEXTURE_GEN_S);
+    glMatrixMode(GL_TEXTURE);
+    glRotatef(45.0f, 0.0f, 0.0f, 1.0f);
+    glMatrixMode(GL_MODELVIEW);
+    render_frame(h, draw_two_units);
+    /* unit 0 disabled: unit 1 alone */
+    glActiveTexture(GL_TEXTURE0);
+    glDisable(GL_TEXTURE_2D);
+    render_frame(h, draw_two_units);
+    /* unit 0 back, matrix changed on unit 0 only (unit 1's matrix drops
+     * out of the program: texture/matrix_other_unit) */
+    glEnable(GL_TEXTURE_2D);
+    render_frame(h, draw_two_units);
+    glMatrixMode(GL_TEXTURE);
+    glScalef(2.0f, 2.0f, 1.0f);
+    glMatrixMode(GL_MODELVIEW);
+    render_frame(h, draw_two_units);
+}
+
+/* Units 0..7 each with its own small texture and ADD (unit 0 REPLACE),
+ * coordinates from glMultiTexCoord, generation on the odd units. */
+static void draw_eight(void)
+{
+    glBegin(GL_QUADS);
+    static const float v[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+    for (int k = 0; k < 4; k++) {
+        for (int u = 0; u < 8; u++)
+            glMultiTexCoord2f(GL_TEXTURE0 + u, v[k][0] * (0.5f + 0.25f * (float)u),
+                              v[k][1] * (1.0f + 0.125f * (float)u));
+        glVertex2f(v[k][0], v[k][1]);
+    }
+    glEnd();
+}
+
+static void multi_render_eight_units(fc_h *h)
+{
+    render_view();
+    for (int u = 0; u < 8; u++) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        cell_texture(4, 4, (unsigned)(13 * u), (u & 2) ? GL_LINEAR : GL_NEAREST, GL_REPEAT);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, u == 0 ? GL_REPLACE : GL_ADD);
+        if (u & 1) {
+            const GLfloat tp[4] = { 0.0f, 0.5f + 0.1f * (float)u, 0.0f, 0.25f };
+            glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+            glTexGenfv(GL_T, GL_EYE_PLANE, tp);
+            glEnable(GL_TEXTURE_GEN_T);
+        }
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glColor4f(0.1f, 0.1f, 0.1f, 1.0f);
+    for (int u = 0; u < 8; u++)
+        glMultiTexCoord2f(GL_TEXTURE0 + u, 0.0f, 0.0f);
+    render_frame(h, draw_eight);
+    glRotatef(30.0f, 0.2f, 0.2f, 1.0f);
+    render_frame(h, draw_eight);
+}
+
+/* Two units from arrays (glClientActiveTexture), glDrawArrays,
+ * glDrawElements and glArrayElement, and the same compiled in a list. */
+static void multi_render_arrays(fc_h *h)
+{
+    static GLfloat pos[36][3], tc0[36][2];
+    static GLshort tc1[36][2];
+    static GLushort idx[150];
+    int n = 0;
+    for (int j = 0; j < 6; j++)
+        for (int i = 0; i < 6; i++) {
+            const float x = -1.0f + 0.4f * (float)i, y = -1.0f + 0.4f * (float)j;
+            pos[n][0] = x;
+            pos[n][1] = y;
+            pos[n][2] = -0.2f * y;
+            tc0[n][0] = 0.3f * x + 0.5f;
+            tc0[n][1] = 0.6f * y;
+            tc1[n][0] = (GLshort)(i - 2);
+            tc1[n][1] = (GLshort)(j * 2 - 5);
+            n++;
+        }
+    int m = 0;
+    for (int j = 0; j < 5; j++)
+        for (int i = 0; i < 5; i++) {
+            const GLushort a = (GLushort)(j * 6 + i);
+            idx[m++] = a;
+            idx[m++] = (GLushort)(a + 1);
+            idx[m++] = (GLushort)(a + 7);
+            idx[m++] = a;
+            idx[m++] = (GLushort)(a + 7);
+            idx[m++] = (GLushort)(a + 6);
+        }
+    render_view();
+    glRotatef(25.0f, 0.0f, 1.0f, 0.1f);
+    glActiveTexture(GL_TEXTURE0);
+    cell_texture(16, 16, 2, GL_LINEAR, GL_REPEAT);
+    glActiveTexture(GL_TEXTURE1);
+    cell_texture(8, 8, 6, GL_NEAREST, GL_REPEAT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glMatrixMode(GL_TEXTURE);
+    glScalef(0.25f, 0.125f, 1.0f);
+    glMatrixMode(GL_MODELVIEW);
+    glVertexPointer(3, GL_FLOAT, 0, pos);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glClientActiveTexture(GL_TEXTURE0);
+    glTexCoordPointer(2, GL_FLOAT, 0, tc0);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glClientActiveTexture(GL_TEXTURE1);
+    glTexCoordPointer(2, GL_SHORT, 0, tc1);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    fcu_clear(0.1f, 0.2f, 0.3f, 1.0f, 1.0);
+    glDrawElements(GL_TRIANGLES, m, GL_UNSIGNED_SHORT, idx);
+    fc_capture(h);
+    fcu_clear(0.1f, 0.2f, 0.3f, 1.0f, 1.0);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 36);
+    fc_capture(h);
+    fcu_clear(0.1f, 0.2f, 0.3f, 1.0f, 1.0);
+    glNewList(5, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    for (int k = 0; k < m; k++)
+        glArrayElement(idx[k]);
+    glEnd();
+    glEndList();
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glCallList(5);
+    fc_capture(h);
+    glDeleteLists(5, 1);
+    glClientActiveTexture(GL_TEXTURE0);
+}
+
 /* glActiveTexture of the units past the fixed-function ones: the oracle
  * takes every combined image unit (192); fixgl has the eight
  * (known-differences.txt). */
@@ -990,5 +1355,17 @@ const fc_case fc_cases_tex_coord[] = {
     FC_CASE_RGBA("texture/multi_upgrade", 32, 32, 0, "texture feedback", multi_upgrade),
     FC_CASE_RGBA("texture/multi_active_image_units", 8, 8, 0, "texture api errors",
                  multi_active_image_units),
+    FC_CASE_RGBA("texture/gen_render_linear", 48, 48, 4, "texture render", gen_render_linear),
+    FC_CASE_RGBA("texture/gen_render_sphere", 48, 48, 3, "texture render lighting",
+                 gen_render_sphere),
+    FC_CASE_RGBA("texture/gen_render_reflection", 48, 48, 2, "texture render",
+                 gen_render_reflection),
+    FC_CASE_RGBA("texture/matrix_render", 48, 48, 3, "texture render", matrix_render),
+    FC_CASE_RGBA("texture/multi_render_two_units", 48, 48, 7, "texture render",
+                 multi_render_two_units),
+    FC_CASE_RGBA("texture/multi_render_eight_units", 48, 48, 2, "texture render",
+                 multi_render_eight_units),
+    FC_CASE_RGBA("texture/multi_render_arrays", 48, 48, 3, "texture render varray dlist",
+                 multi_render_arrays),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

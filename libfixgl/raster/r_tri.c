@@ -214,6 +214,35 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    }
 }
 
+/* The fragment program of a textured triangle, given the texture
+ * coordinates of the quad of pixel (px, py): its top-left, top-right and
+ * bottom-left pixels (even y-down coordinates), evaluated like every
+ * pixel's inputs whether or not they are covered [S: lp_bld_interp.c,
+ * lp_bld_quad.c] (llvmpipe-facts.md §5).  Out of line: the untextured
+ * pixel loop keeps its size. */
+static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
+                                                     const struct tri_shade *ts,
+                                                     const float in[][4], int px, int py,
+                                                     float color[4])
+{
+   static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
+   struct r_fs_quad q;
+   const int qx = px & ~1, qy = py & ~1;
+   for (int i = 0; i < 3; i++) {
+      const float fx = (float)(qx + dx[i]), fy = (float)(qy + dy[i]);
+      const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
+      for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+         if (!(rs->tex_units & (1u << u)))
+            continue;
+         const int a = R_FS_TEX0 + u;
+         for (int c = 0; c < 4; c++)
+            q.tex[u][i][c] = ts->flat_attr[a] ? ts->flat[a][c]
+                                              : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+      }
+   }
+   r_fragment_shader(rs, in, &q, color);
+}
+
 /* Shades pixel (px, py), which is inside the draw region. */
 static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
                                int px, int py)
@@ -231,7 +260,11 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
    float color[4];
-   r_fragment_shader(rs, (const float (*)[4])in, color);
+   if (rs->tex_units) {
+      shade_textured(rs, ts, (const float (*)[4])in, px, py, color);
+   } else {
+      r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
+   }
    if (rs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
       return;
    /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
