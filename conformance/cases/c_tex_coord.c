@@ -742,6 +742,25 @@ static void multi_enables(fc_h *h)
     set_unit_enables(1);
     glPopAttrib();
     enables(h, "both popped");
+    /* the texture bit keeps every unit's generation state */
+    glActiveTexture(GL_TEXTURE3);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glActiveTexture(GL_TEXTURE5);
+    static const GLfloat op[4] = { 1.5f, -2.0f, 0.25f, 4.0f };
+    glTexGenfv(GL_Q, GL_OBJECT_PLANE, op);
+    glPopAttrib();
+    for (int u = 3; u <= 5; u += 2) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        GLint mode = -1;
+        GLfloat plane[4] = { -1, -1, -1, -1 };
+        glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, &mode);
+        glGetTexGenfv(GL_Q, GL_OBJECT_PLANE, plane);
+        fc_value(h, u == 3 ? "unit 3 s mode" : "unit 5 s mode", mode);
+        fc_blob(h, u == 3 ? "unit 3 q plane" : "unit 5 q plane", plane, sizeof plane);
+    }
+    fc_get_integer(h, "active after gen pop", GL_ACTIVE_TEXTURE, 1);
     /* bad caps for the active unit */
     glEnable(GL_TEXTURE_RECTANGLE);
     fc_error(h, "rectangle");
@@ -1323,6 +1342,75 @@ static void multi_render_arrays(fc_h *h)
     glClientActiveTexture(GL_TEXTURE0);
 }
 
+/* Large triangles crossing the near plane with three units: the clipper
+ * interpolates every unit's coordinate (unit 1 eye-linear generated, unit
+ * 2 through a projective matrix), flat and smooth, filled and as lines. */
+static void draw_clipped(void)
+{
+    glBegin(GL_TRIANGLES);
+    glColor3f(1.0f, 0.5f, 0.25f);
+    glMultiTexCoord2f(GL_TEXTURE0, 0.0f, 0.0f);
+    glMultiTexCoord4f(GL_TEXTURE2, 0.0f, 0.0f, 0.0f, 1.0f);
+    glVertex3f(-2.0f, -1.5f, 2.5f);
+    glColor3f(0.25f, 1.0f, 0.5f);
+    glMultiTexCoord2f(GL_TEXTURE0, 4.0f, 0.5f);
+    glMultiTexCoord4f(GL_TEXTURE2, 2.0f, 0.0f, 0.0f, 2.0f);
+    glVertex3f(2.5f, -1.0f, -6.0f);
+    glColor3f(0.5f, 0.25f, 1.0f);
+    glMultiTexCoord2f(GL_TEXTURE0, 1.0f, 3.0f);
+    glMultiTexCoord4f(GL_TEXTURE2, 0.5f, 1.5f, 0.0f, 0.5f);
+    glVertex3f(-0.5f, 2.0f, -1.0f);
+    glColor3f(0.9f, 0.9f, 0.2f);
+    glMultiTexCoord2f(GL_TEXTURE0, -1.0f, -1.0f);
+    glMultiTexCoord4f(GL_TEXTURE2, 1.0f, 1.0f, 0.0f, 1.0f);
+    glVertex3f(1.5f, 1.5f, 2.0f);
+    glVertex3f(-2.5f, 0.5f, -7.0f);
+    glMultiTexCoord2f(GL_TEXTURE0, 2.0f, -2.0f);
+    glVertex3f(2.0f, -2.0f, -2.0f);
+    glEnd();
+}
+
+static void multi_render_clipped(fc_h *h)
+{
+    glViewport(0, 0, 48, 48);
+    fcu_frustum(-0.5, 0.5, -0.5, 0.5, 1, 20);
+    glTranslatef(0.0f, 0.0f, -2.5f);
+    glEnable(GL_DEPTH_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    cell_texture(16, 16, 4, GL_LINEAR, GL_REPEAT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glActiveTexture(GL_TEXTURE1);
+    cell_texture(8, 8, 8, GL_NEAREST, GL_REPEAT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    static const GLfloat sp[4] = { 0.3f, 0.1f, 0.05f, 0.5f }, tp[4] = { 0.0f, 0.4f, -0.1f, 0.0f };
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    glTexGenfv(GL_S, GL_EYE_PLANE, sp);
+    glTexGenfv(GL_T, GL_EYE_PLANE, tp);
+    glEnable(GL_TEXTURE_GEN_S);
+    glEnable(GL_TEXTURE_GEN_T);
+    glActiveTexture(GL_TEXTURE2);
+    cell_texture(16, 16, 12, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+    static const GLfloat proj[16] = { 1, 0, 0, 0.25f, 0, 1, 0, 0.5f, 0, 0, 1, 0, 0, 0, 0, 1 };
+    glMatrixMode(GL_TEXTURE);
+    glLoadMatrixf(proj);
+    glMatrixMode(GL_MODELVIEW);
+    glActiveTexture(GL_TEXTURE0);
+    render_frame(h, draw_clipped);
+    glShadeModel(GL_FLAT);
+    render_frame(h, draw_clipped);
+    glShadeModel(GL_SMOOTH);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    render_frame(h, draw_clipped);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glEnable(GL_CLIP_PLANE0);
+    static const GLdouble cp[4] = { 1.0, 0.5, 0.0, 0.25 };
+    glClipPlane(GL_CLIP_PLANE0, cp);
+    glRotatef(15.0f, 0.0f, 0.0f, 1.0f);
+    render_frame(h, draw_clipped);
+}
+
 /* glActiveTexture of the units past the fixed-function ones: the oracle
  * takes every combined image unit (192); fixgl has the eight
  * (known-differences.txt). */
@@ -1367,5 +1455,7 @@ const fc_case fc_cases_tex_coord[] = {
                  multi_render_eight_units),
     FC_CASE_RGBA("texture/multi_render_arrays", 48, 48, 3, "texture render varray dlist",
                  multi_render_arrays),
+    FC_CASE_RGBA("texture/multi_render_clipped", 48, 48, 4, "texture render clip",
+                 multi_render_clipped),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };
