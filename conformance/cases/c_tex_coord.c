@@ -385,6 +385,31 @@ static void matrix_other_unit(fc_h *h)
     fb_begin(GL_4D_COLOR_TEXTURE);
     scene();
     fb_end(h, "both");
+    /* glLoadIdentity leaves its matrix clean: after it alone no matrix
+     * is dirty, and the mask empties */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    fb_begin(GL_4D_COLOR_TEXTURE);
+    scene();
+    fb_end(h, "revalidated");
+    glActiveTexture(GL_TEXTURE1);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glActiveTexture(GL_TEXTURE0);
+    fb_begin(GL_4D_COLOR_TEXTURE);
+    scene();
+    fb_end(h, "unit 1 load identity");
+    /* glPushMatrix analyses the top: a push, a change and a pop back to
+     * the same matrix */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glMatrixMode(GL_TEXTURE);
+    glPushMatrix();
+    glTranslatef(0.0f, 0.0f, 1.0f);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    fb_begin(GL_4D_COLOR_TEXTURE);
+    scene();
+    fb_end(h, "push translate pop");
 }
 
 static void raster_tc(fc_h *h, const char *label)
