@@ -6,6 +6,11 @@
  * PLACEHOLDER until then: the lookup is done by the AoS path with the fast
  * LOD, wraps other than REPEAT mapped to CLAMP_TO_EDGE; the result differs
  * from the oracle's for these samplers.
+ *
+ * Pieces of r_tex.c to build on: r_tex_rho (lp_build_rho, the same for
+ * both LOD paths) and r_tex_filter_aos (the AoS filtering given minify,
+ * the levels and the mip weight: llvmpipe keeps REPEAT / CLAMP_TO_EDGE
+ * samplers on the AoS path whatever their LOD path).
  */
 #include "r_state.h"
 
