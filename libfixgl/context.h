@@ -75,6 +75,8 @@ enum {
    FGL_NEW_RENDERMODE = 1u << 14,  /* glRenderMode: the draw pipeline's stages */
    FGL_NEW_PIXEL      = 1u << 15,  /* pixel transfer, zoom and maps (main/pixel.c) */
    FGL_NEW_TEXTURE    = 1u << 16,  /* texture objects, images, enables, units */
+   FGL_NEW_TEXTURE_MATRIX = 1u << 17,  /* a texture matrix (Mesa's
+                                        * _NEW_TEXTURE_MATRIX) */
 };
 #define FGL_NEW_ALL (~0u)
 
@@ -85,8 +87,7 @@ struct fgl_current_attrib {
    float Attrib[FGL_ATTR_COUNT][4];
    /* Current values that do not take part in drawing yet, kept outside the
     * vbo until their setters come with their features (Mesa keeps them as
-    * vbo attributes, VERT_ATTRIB_TEX0.., _COLOR1, _FOG). */
-   float TexCoord[FGL_MAX_TEXTURE_UNITS][4];     /* (0, 0, 0, 1) */
+    * vbo attributes, VERT_ATTRIB_COLOR1, _FOG). */
    float SecondaryColor[4];                      /* (0, 0, 0, 1) */
    float FogCoord;                               /* 0 */
    /* the current raster position (glRasterPos and glWindowPos come with
@@ -334,6 +335,11 @@ enum fgl_tex_index {
  * [S: main/mtypes.h, gl_texture_attrib] */
 struct fgl_texture_unit {
    GLuint Bound[FGL_TEX_TARGETS];   /* object names, 0 the default object */
+   /* glEnable of the unit's targets (bit FGL_TEX_* of GL_TEXTURE_1D, 2D,
+    * 3D, CUBE_MAP) and of its coordinate generation (bit 0 S .. 3 Q)
+    * [S: mtypes.h, gl_fixedfunc_texture_unit Enabled, TexGenEnabled] */
+   unsigned Enabled;
+   unsigned TexGenEnabled;
    /* the texture environment (main/texenv.c) [S: mtypes.h,
     * gl_fixedfunc_texture_unit, gl_tex_env_combine_state] */
    GLenum EnvMode;
@@ -350,6 +356,16 @@ struct fgl_texture_unit {
    float EyePlane[4][4];            /* in eye space (inverse modelview
                                      * applied when specified) */
 };
+
+/* Coordinate generation modes as bits (Mesa's TEXGEN_*, mtypes.h) and
+ * those that need eye coordinates (TEXGEN_NEED_EYE_COORD) */
+#define FGL_TEXGEN_SPHERE_MAP     0x1u
+#define FGL_TEXGEN_OBJ_LINEAR     0x2u
+#define FGL_TEXGEN_EYE_LINEAR     0x4u
+#define FGL_TEXGEN_REFLECTION_MAP 0x8u
+#define FGL_TEXGEN_NORMAL_MAP     0x10u
+#define FGL_TEXGEN_NEED_EYE_COORD (FGL_TEXGEN_SPHERE_MAP | FGL_TEXGEN_REFLECTION_MAP | \
+                                   FGL_TEXGEN_NORMAL_MAP | FGL_TEXGEN_EYE_LINEAR)
 
 struct fgl_texture_attrib {
    GLuint CurrentUnit;      /* glActiveTexture - GL_TEXTURE0 */
@@ -599,8 +615,11 @@ enum fgl_array_index {
    FGL_ARRAY_EDGEFLAG,
    FGL_ARRAY_FOGCOORD,     /* GL 1.4 arrays: enabled, pointed at and */
    FGL_ARRAY_COLOR1,       /* queried as Mesa does; not drawn */
-   FGL_ARRAY_COUNT,
+   FGL_ARRAY_TEXCOORD1,    /* units 1..7's coordinate arrays: */
+   FGL_ARRAY_COUNT = FGL_ARRAY_TEXCOORD1 + FGL_MAX_TEXTURE_UNITS - 1,
 };
+/* texture unit u's coordinate array */
+#define FGL_ARRAY_TEX(u) ((u) ? FGL_ARRAY_TEXCOORD1 + (u) - 1 : FGL_ARRAY_TEXCOORD)
 
 struct fgl_array_attrib {
    struct fgl_client_array Array[FGL_ARRAY_COUNT];
@@ -615,9 +634,6 @@ struct fgl_client_attrib_node {
    struct fgl_array_attrib Array;
 };
 
-/* enable flags of GL 1.x features still to come (main/enable.c) */
-#define FGL_PENDING_CAPS 8
-
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit
  * saves which member.  Texture (GL_TEXTURE_BIT), evaluator (GL_EVAL_BIT),
@@ -625,17 +641,16 @@ struct fgl_client_attrib_node {
  * and display list (GL_LIST_BIT) state get their member here, and their
  * line in the table, when the feature lands. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
-#define FGL_ENABLE_ATTRIB_CAPS 61          /* caps restored by GL_ENABLE_BIT */
+#define FGL_ENABLE_ATTRIB_CAPS 53          /* caps restored by GL_ENABLE_BIT */
 #define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
-#define FGL_TEXTURE_ATTRIB_CAPS 8          /* ... by GL_TEXTURE_BIT */
 struct fgl_attrib_node {
    GLbitfield Mask;
    GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
    struct fgl_colorbuffer_attrib Color;
    float Current[FGL_ATTR_MAT_FIRST][4];   /* ctx->Current, materials excluded */
-   /* the rest of ctx->Current: TexCoord .. RasterPosValid */
+   /* the rest of ctx->Current: SecondaryColor .. RasterPosValid */
    unsigned char CurrentExtra[sizeof(struct fgl_current_attrib) -
-                              offsetof(struct fgl_current_attrib, TexCoord)];
+                              offsetof(struct fgl_current_attrib, SecondaryColor)];
    struct fgl_multisample_attrib Multisample;
    struct fgl_accum_attrib Accum;
    struct fgl_pixel_attrib Pixel;
@@ -644,7 +659,11 @@ struct fgl_attrib_node {
    struct fgl_depth_attrib Depth;
    bool Enable[FGL_ENABLE_ATTRIB_CAPS];    /* GL_ENABLE_BIT, attrib.c's cap list */
    bool EvalEnable[FGL_EVAL_ATTRIB_CAPS];  /* GL_EVAL_BIT: map enables, auto normal */
-   bool TextureEnable[FGL_TEXTURE_ATTRIB_CAPS]; /* GL_TEXTURE_BIT: unit 0's enables */
+   /* GL_ENABLE_BIT: every unit's target and coordinate generation
+    * enables (attrib.c: attr->Texture[u], attr->TexGen[u]); GL_TEXTURE_BIT
+    * keeps them with the units in Texture */
+   unsigned TexEnabled[FGL_MAX_TEXTURE_UNITS];
+   unsigned TexGenEnabled[FGL_MAX_TEXTURE_UNITS];
    /* GL_TEXTURE_BIT: the default objects, always; unit 0's bound objects
     * and LOD bias, saved only when the unit has had a texture bound
     * (Mesa's NumCurrentTexUsed), else left from an earlier push at this
@@ -715,9 +734,6 @@ struct fgl_context {
    struct fgl_matrix_stack ProgramStack[FGL_MAX_PROGRAM_MATRICES];
    struct fgl_matrix_stack *CurrentStack;
 
-   /* enable flags of GL 1.x features still to come (main/enable.c) */
-   bool PendingCaps[FGL_PENDING_CAPS];
-
    /* ---- immediate mode ---- */
    GLenum BeginMode;          /* FGL_OUTSIDE_BEGIN_END when not inside */
    struct fgl_vbo Vbo;
@@ -758,6 +774,13 @@ struct fgl_context {
    unsigned _EnabledTexUnits;                     /* bit u: unit u */
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
+   /* the vertex side of those units [S: texstate.c:update_texgen,
+    * _mesa_update_texture_matrices]: bit u when the unit's texture matrix
+    * applies (Mesa's _TexMatEnabled), when it generates coordinates
+    * (_TexGenEnabled); the FGL_TEXGEN_* modes in use (_GenFlags) */
+   unsigned _TexMatEnabled;
+   unsigned _TexGenEnabled;
+   unsigned _GenFlags;
 
    /* ---- framebuffer ---- */
    struct fgl_framebuffer *DrawBuffer;

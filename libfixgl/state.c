@@ -444,7 +444,16 @@ void fgl_update_state(struct fgl_context *ctx)
                             ctx->ModelviewStack.Top);
    }
 
-   if (dirty & (FGL_NEW_MODELVIEW | FGL_NEW_LIGHT))
+   /* [S: main/state.c:_mesa_update_state_locked] the texture matrices,
+    * the texture state (which units texture, their coordinate generation
+    * and matrices), then the lighting space, which eye-space coordinate
+    * generation moves to eye coordinates (_mesa_update_tnl_spaces) */
+   if (dirty & FGL_NEW_TEXTURE_MATRIX)
+      fgl_update_texture_matrices(ctx);
+   if (dirty & FGL_NEW_TEXTURE)
+      fgl_update_texture_state(ctx);
+
+   if (dirty & (FGL_NEW_MODELVIEW | FGL_NEW_LIGHT | FGL_NEW_TEXTURE))
       fgl_update_lighting(ctx);
 
    if (dirty & (FGL_NEW_VIEWPORT | FGL_NEW_BUFFERS)) {
@@ -462,9 +471,6 @@ void fgl_update_state(struct fgl_context *ctx)
       ctx->_ViewportScale[2] = (float)(0.5 * (f - n));
       ctx->_ViewportTranslate[2] = (float)(0.5 * (n + f));
    }
-
-   if (dirty & FGL_NEW_TEXTURE)
-      fgl_update_texture_state(ctx);
 
    if (dirty & (FGL_NEW_CLIP | FGL_NEW_PROJECTION))
       fgl_update_clip_planes(ctx);

@@ -46,6 +46,7 @@ extern const fc_case fc_cases_texstate[];
 extern const fc_case fc_cases_accum[];
 extern const fc_case fc_cases_eval[];
 extern const fc_case fc_cases_pixelstate[];
+extern const fc_case fc_cases_tex_coord[];
 extern const fc_case fc_cases_tex_sample[];
 extern const fc_case fc_cases_tex_env[];
 

@@ -31,8 +31,8 @@
 /* GL_ENABLE_BIT: the capabilities pop_enable_group restores, in its
  * order [S: main/attrib.c:pop_enable_group].  _mesa_PushAttrib also saves
  * GL_LIGHT0..7 but pop_enable_group never restores them (Mesa 22.3): a
- * light enable comes back only with GL_LIGHTING_BIT.  The texture enables
- * are the pending ones of unit 0 until texturing lands. */
+ * light enable comes back only with GL_LIGHTING_BIT.  The texture units'
+ * enables follow them (save_enable, restore_enable). */
 static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
    GL_ALPHA_TEST, GL_BLEND,
    GL_CLIP_PLANE0, GL_CLIP_PLANE0 + 1, GL_CLIP_PLANE0 + 2, GL_CLIP_PLANE0 + 3,
@@ -49,9 +49,6 @@ static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
    GL_AUTO_NORMAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_POINT_SMOOTH,
    GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL,
    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
-   GL_TEXTURE_1D, GL_TEXTURE_2D,
-   GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
-   GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
    GL_SAMPLE_COVERAGE,
 };
@@ -63,12 +60,25 @@ static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
       fgl_is_cap(ctx, enable_caps[i], &v);
       node->Enable[i] = v != 0.0;
    }
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      node->TexEnabled[u] = ctx->Texture.Unit[u].Enabled;
+      node->TexGenEnabled[u] = ctx->Texture.Unit[u].TexGenEnabled;
+   }
+}
+
+static bool tex_enables_differ(const struct fgl_context *ctx, const struct fgl_attrib_node *node)
+{
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+      if (node->TexEnabled[u] != ctx->Texture.Unit[u].Enabled ||
+          node->TexGenEnabled[u] != ctx->Texture.Unit[u].TexGenEnabled)
+         return true;
+   return false;
 }
 
 /* The enables GL_EVAL_BIT (memcpy of Mesa's gl_eval_attrib, which holds
- * them) and GL_TEXTURE_BIT (pop_texture_group: the unit's enables and
- * texgen enables) restore besides GL_ENABLE_BIT; fixgl keeps them with the
- * pending capabilities (enable.c). */
+ * them) restores besides GL_ENABLE_BIT; fixgl keeps them with the other
+ * capabilities (enable.c).  GL_TEXTURE_BIT's unit enables are copied with
+ * the units (ctx->Texture). */
 static const GLenum eval_caps[FGL_EVAL_ATTRIB_CAPS] = {
    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1,
    GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4,
@@ -76,10 +86,6 @@ static const GLenum eval_caps[FGL_EVAL_ATTRIB_CAPS] = {
    GL_MAP2_COLOR_4, GL_MAP2_INDEX, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1,
    GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
-};
-static const GLenum texture_caps[FGL_TEXTURE_ATTRIB_CAPS] = {
-   GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
-   GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
 };
 
 static void save_caps(struct fgl_context *ctx, const GLenum *caps, int n, bool *out)
@@ -111,15 +117,17 @@ static void restore_eval(struct fgl_context *ctx, const struct fgl_attrib_node *
 
 static void save_texture(struct fgl_context *ctx, struct fgl_attrib_node *node)
 {
-   save_caps(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, node->TextureEnable);
    fgl_save_texobjs(ctx, node);
 }
 
+/* pop_texture_group: the units (copied by the group's entry), the
+ * objects, then _mesa_ActiveTexture(saved unit), which points a
+ * GL_TEXTURE matrix mode at that unit's stack. */
 static void restore_texture(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
-   for (int i = 0; i < FGL_TEXTURE_ATTRIB_CAPS; i++)
-      fgl_set_enable(ctx, texture_caps[i], node->TextureEnable[i]);
    fgl_restore_texobjs(ctx, node);
+   if (ctx->Transform.MatrixMode == GL_TEXTURE)
+      ctx->CurrentStack = &ctx->TextureStack[ctx->Texture.CurrentUnit];
 }
 
 /* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that
@@ -129,6 +137,15 @@ static void restore_enable(struct fgl_context *ctx, const struct fgl_attrib_node
 {
    for (int i = 0; i < FGL_ENABLE_ATTRIB_CAPS; i++)
       fgl_set_enable(ctx, enable_caps[i], node->Enable[i]);
+   /* the texture unit enables, unit by unit (pop_enable_group) */
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      struct fgl_texture_unit *t = &ctx->Texture.Unit[u];
+      if (t->Enabled != node->TexEnabled[u] || t->TexGenEnabled != node->TexGenEnabled[u]) {
+         FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
+         t->Enabled = node->TexEnabled[u];
+         t->TexGenEnabled = node->TexGenEnabled[u];
+      }
+   }
 }
 
 /* GL_CURRENT_BIT and GL_LIGHTING_BIT take the vertex format's values
@@ -259,8 +276,8 @@ struct attrib_group {
 #define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
- * the lighting group's materials).  The raster position and texture
- * coordinates are in Current.TexCoord. */
+ * the lighting group's materials).  The secondary colour, fog coordinate
+ * and raster position are in Current.SecondaryColor and after. */
 static const struct attrib_group groups[] = {
    /* copied back as Mesa does (_mesa_ClearAccum of the stored value,
     * memcpy of Eval and Pixel then _mesa_ReadBuffer, the texture bindings
@@ -269,7 +286,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
    /* the current values outside the vbo (raster position...) */
-   GROUP(GL_CURRENT_BIT, Current.TexCoord, CurrentExtra, 0, NULL, NULL),
+   GROUP(GL_CURRENT_BIT, Current.SecondaryColor, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
    GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),
@@ -287,7 +304,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_SCISSOR_BIT, Scissor, Scissor, FGL_NEW_SCISSOR, NULL, NULL),
    GROUP(GL_STENCIL_BUFFER_BIT, Stencil, Stencil, FGL_NEW_STENCIL, NULL, NULL),
    GROUP(GL_TRANSFORM_BIT, Transform, Transform, FGL_NEW_CLIP, NULL, restore_transform),
-   GROUP(GL_TEXTURE_BIT, Texture, Texture, 0, NULL, NULL),
+   GROUP(GL_TEXTURE_BIT, Texture, Texture, FGL_NEW_TEXTURE, NULL, NULL),
    HOOKS(GL_TEXTURE_BIT, save_texture, restore_texture),
    GROUP(GL_VIEWPORT_BIT, Viewport, Viewport, FGL_NEW_VIEWPORT, NULL, NULL),
    /* stored and queried only (no multisample buffer) */
@@ -374,13 +391,11 @@ static GLbitfield changed_groups(struct fgl_context *ctx)
                     g->size) != 0)
             changed |= g->bit;
       } else if (g->bit == GL_ENABLE_BIT) {
-         if (caps_differ(ctx, enable_caps, FGL_ENABLE_ATTRIB_CAPS, base->Enable))
+         if (caps_differ(ctx, enable_caps, FGL_ENABLE_ATTRIB_CAPS, base->Enable) ||
+             tex_enables_differ(ctx, base))
             changed |= g->bit;
       } else if (g->bit == GL_EVAL_BIT) {
          if (caps_differ(ctx, eval_caps, FGL_EVAL_ATTRIB_CAPS, base->EvalEnable))
-            changed |= g->bit;
-      } else if (g->bit == GL_TEXTURE_BIT) {
-         if (caps_differ(ctx, texture_caps, FGL_TEXTURE_ATTRIB_CAPS, base->TextureEnable))
             changed |= g->bit;
       }
    }

@@ -18,7 +18,10 @@ void fgl_init_current(struct fgl_context *ctx)
       [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
       [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
       [FGL_ATTR_COLOR_INDEX] = { 1, 0, 0, 1 },
-      [FGL_ATTR_TEX0] = { 0, 0, 0, 1 },
+      [FGL_ATTR_TEX0] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX1] = { 0, 0, 0, 1 },
+      [FGL_ATTR_TEX2] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX3] = { 0, 0, 0, 1 },
+      [FGL_ATTR_TEX4] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX5] = { 0, 0, 0, 1 },
+      [FGL_ATTR_TEX6] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX7] = { 0, 0, 0, 1 },
       [FGL_ATTR_EDGEFLAG] = { 1, 0, 0, 1 },
       [FGL_ATTR_MAT_FRONT_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
       [FGL_ATTR_MAT_BACK_AMBIENT] = { 0.2f, 0.2f, 0.2f, 1.0f },
@@ -206,6 +209,51 @@ TEXCOORD_FUNCS(s, GLshort)
 TEXCOORD_FUNCS(i, GLint)
 TEXCOORD_FUNCS(f, GLfloat)
 TEXCOORD_FUNCS(d, GLdouble)
+
+/* glMultiTexCoord{1,2,3,4}{s,i,f,d}[v] (GL 1.3) and their ARB aliases:
+ * texture unit (target & 7)'s coordinate.  The vbo never checks the
+ * target: any value, GL_TEXTURE8 or 0 included, selects a unit by its low
+ * three bits, without an error [S: vbo/vbo_attrib_tmp.h:
+ * TAG(MultiTexCoord1f..4fv): attr = (target & 0x7) + VBO_ATTRIB_TEX0;
+ * main/api_loopback.c:_mesa_MultiTexCoord1d.. call MultiTexCoordNf]. */
+static inline void multi_texcoord4(GLenum target, float s, float t, float r, float q,
+                                   unsigned n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_attr(ctx, (enum fgl_vbo_attr)(FGL_ATTR_TEX0 + (target & 7u)), n, s, t, r, q);
+}
+
+#define MULTI_TEXCOORD_FUNCS(suffix, type, ARB)                                  \
+   void GLAPIENTRY glMultiTexCoord1##suffix##ARB(GLenum u, type s)               \
+   { multi_texcoord4(u, (GLfloat)s, 0.0f, 0.0f, 1.0f, 1); }                      \
+   void GLAPIENTRY glMultiTexCoord2##suffix##ARB(GLenum u, type s, type t)       \
+   { multi_texcoord4(u, (GLfloat)s, (GLfloat)t, 0.0f, 1.0f, 2); }                \
+   void GLAPIENTRY glMultiTexCoord3##suffix##ARB(GLenum u, type s, type t, type r) \
+   { multi_texcoord4(u, (GLfloat)s, (GLfloat)t, (GLfloat)r, 1.0f, 3); }          \
+   void GLAPIENTRY glMultiTexCoord4##suffix##ARB(GLenum u, type s, type t, type r, \
+                                                 type q)                         \
+   { multi_texcoord4(u, (GLfloat)s, (GLfloat)t, (GLfloat)r, (GLfloat)q, 4); }    \
+   void GLAPIENTRY glMultiTexCoord1##suffix##v##ARB(GLenum u, const type *v)     \
+   { if (v) multi_texcoord4(u, (GLfloat)v[0], 0.0f, 0.0f, 1.0f, 1); }            \
+   void GLAPIENTRY glMultiTexCoord2##suffix##v##ARB(GLenum u, const type *v)     \
+   { if (v) multi_texcoord4(u, (GLfloat)v[0], (GLfloat)v[1], 0.0f, 1.0f, 2); }   \
+   void GLAPIENTRY glMultiTexCoord3##suffix##v##ARB(GLenum u, const type *v)     \
+   { if (v) multi_texcoord4(u, (GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2],      \
+                            1.0f, 3); }                                          \
+   void GLAPIENTRY glMultiTexCoord4##suffix##v##ARB(GLenum u, const type *v)     \
+   { if (v) multi_texcoord4(u, (GLfloat)v[0], (GLfloat)v[1], (GLfloat)v[2],      \
+                            (GLfloat)v[3], 4); }
+
+MULTI_TEXCOORD_FUNCS(s, GLshort, )
+MULTI_TEXCOORD_FUNCS(i, GLint, )
+MULTI_TEXCOORD_FUNCS(f, GLfloat, )
+MULTI_TEXCOORD_FUNCS(d, GLdouble, )
+MULTI_TEXCOORD_FUNCS(s, GLshort, ARB)
+MULTI_TEXCOORD_FUNCS(i, GLint, ARB)
+MULTI_TEXCOORD_FUNCS(f, GLfloat, ARB)
+MULTI_TEXCOORD_FUNCS(d, GLdouble, ARB)
 
 /* glEdgeFlag: a one-component vbo attribute, 1.0 or 0.0 (any non-zero
  * GLboolean converts as its value) [S: vbo/vbo_attrib_tmp.h:EdgeFlag].  It

@@ -117,6 +117,7 @@ DL_OP4(RasterPos4f, F, F, F, F) /* every glRasterPos variant: converted, then th
 DL_OP4(WindowPos4fMESA, F, F, F, F) /* every glWindowPos variant (replay: rastpos.c) */
 /* ---- textures ---- */
 DL_OP2(BindTexture, E, U)
+DL_OP1(ActiveTexture, E)            /* glActiveTextureARB too */
 DL_OPV2(TexParameterfv, E, E, F, 4) /* glTexParameter{f,i,iv}: params[0] as
                                      * float, the rest 0 (hooks) */
 DL_OPV2(TexEnvfv, E, E, F, 4)       /* glTexEnv{f,i,iv}: converted (hooks) */

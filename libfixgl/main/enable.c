@@ -7,40 +7,48 @@
 #include "main/groups.h"
 #include "main/dlist.h"
 
-/* GL 1.x capabilities whose feature has not landed yet: their flags are
- * stored and reported (so programs see the oracle's errors and queries)
- * but do not affect rendering yet; README's status table lists them.
- * GL_TEXTURE_1D/2D already render as the oracle does while no texture can
- * be complete (no glTexImage yet): the oracle leaves a unit without a
- * complete texture out of fixed-function texturing
- * [S: texstate.c:update_ff_texture_state] (texstate/incomplete_*). */
-static const GLenum pending_caps[FGL_PENDING_CAPS] = {
-   GL_TEXTURE_1D,
-   GL_TEXTURE_2D, GL_TEXTURE_GEN_Q, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_S,
-   GL_TEXTURE_GEN_T, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
-};
+/* The texture unit capabilities: the targets (a bit of the active
+ * unit's Enabled, by FGL_TEX_* index) and the coordinate generation
+ * enables (a bit of its TexGenEnabled, S = bit 0) [S: main/enable.c:
+ * _mesa_set_enable, enable_texture, is_texture_enabled].  Returns the
+ * unit's bitfield and the bit, or NULL when cap is neither. */
+static unsigned *texture_cap(struct fgl_context *ctx, GLenum cap, unsigned *bit)
+{
+   struct fgl_texture_unit *u = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   switch (cap) {
+   case GL_TEXTURE_1D:       *bit = 1u << FGL_TEX_1D;   return &u->Enabled;
+   case GL_TEXTURE_2D:       *bit = 1u << FGL_TEX_2D;   return &u->Enabled;
+   case GL_TEXTURE_3D:       *bit = 1u << FGL_TEX_3D;   return &u->Enabled;
+   case GL_TEXTURE_CUBE_MAP: *bit = 1u << FGL_TEX_CUBE; return &u->Enabled;
+   case GL_TEXTURE_RECTANGLE: *bit = 1u << FGL_TEX_RECT; return &u->Enabled;  /* NV_texture_rectangle */
+   case GL_TEXTURE_GEN_S:
+   case GL_TEXTURE_GEN_T:
+   case GL_TEXTURE_GEN_R:
+   case GL_TEXTURE_GEN_Q:
+      *bit = 1u << (cap - GL_TEXTURE_GEN_S);
+      return &u->TexGenEnabled;
+   default:
+      return NULL;
+   }
+}
 
-/* Whether unit `unit` has texture target `target` enabled (only unit 0
- * has enables until multitexture lands). */
+/* Whether unit `unit` has texture target `target` enabled. */
 bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GLenum target)
 {
-   if (unit != 0)
-      return false;
-   for (int i = 0; i < FGL_PENDING_CAPS; i++)
-      if (pending_caps[i] == target)
-         return ctx->PendingCaps[i];
-   return false;
+   const unsigned e = ctx->Texture.Unit[unit].Enabled;
+   switch (target) {
+   case GL_TEXTURE_1D:       return e & (1u << FGL_TEX_1D);
+   case GL_TEXTURE_2D:       return e & (1u << FGL_TEX_2D);
+   case GL_TEXTURE_3D:       return e & (1u << FGL_TEX_3D);
+   case GL_TEXTURE_CUBE_MAP: return e & (1u << FGL_TEX_CUBE);
+   case GL_TEXTURE_RECTANGLE: return e & (1u << FGL_TEX_RECT);
+   default:                  return false;
+   }
 }
 
 /* Returns a pointer to the flag for cap and its dirty bit, or NULL. */
 static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
 {
-   for (int i = 0; i < FGL_PENDING_CAPS; i++) {
-      if (pending_caps[i] == cap) {
-         *dirty = FGL_NEW_TEXTURE;
-         return &ctx->PendingCaps[i];
-      }
-   }
    /* GL_MAPn_* and GL_AUTO_NORMAL (main/eval.c) */
    bool *eval = fgl_eval_cap_flag(ctx, cap);
    if (eval) {
@@ -179,6 +187,17 @@ bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state)
       arr->Enabled = state;
       return true;
    }
+   /* the active unit's targets and coordinate generation: a flush when
+    * the unit's bitfield changes */
+   unsigned *tex = texture_cap(ctx, cap, &bit);
+   if (tex) {
+      const unsigned now = state ? *tex | bit : *tex & ~bit;
+      if (now != *tex) {
+         FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
+         *tex = now;
+      }
+      return true;
+   }
    unsigned dirty = 0;
    bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag)
@@ -230,6 +249,9 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    const struct fgl_client_array *arr = fgl_client_array(ctx, cap);
    if (arr)
       return arr->Enabled ? GL_TRUE : GL_FALSE;
+   const unsigned *tex = texture_cap(ctx, cap, &bit);
+   if (tex)
+      return (*tex & bit) ? GL_TRUE : GL_FALSE;
    const bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -248,6 +270,11 @@ bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
    const struct fgl_client_array *arr = fgl_client_array(ctx, pname);
    if (arr) {
       *value = arr->Enabled ? 1.0 : 0.0;
+      return true;
+   }
+   const unsigned *tex = texture_cap(ctx, pname, &bit);
+   if (tex) {
+      *value = (*tex & bit) ? 1.0 : 0.0;
       return true;
    }
    const bool *flag = cap_flag(ctx, pname, &dirty);

@@ -407,11 +407,10 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    /* current texture coordinates and raster position */
    case GL_CURRENT_TEXTURE_COORDS:
-      /* extra_flush_current_valid_texture_unit; unit 0's coordinate is a
-       * vbo attribute, the other units' are kept until multitexture comes */
+      /* extra_flush_current_valid_texture_unit: the active unit's vbo
+       * attribute */
       fgl_flush_current(ctx);
-      set_floats(val, V_FLOAT, ctx->Texture.CurrentUnit == 0 ? ctx->Current.Attrib[FGL_ATTR_TEX0]
-                               : ctx->Current.TexCoord[ctx->Texture.CurrentUnit], 4);
+      set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_TEX0 + ctx->Texture.CurrentUnit], 4);
       return true;
    case GL_CURRENT_RASTER_POSITION:
       set_floats(val, V_FLOAT, ctx->Current.RasterPos, 4);
@@ -507,6 +506,10 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_CUBE], 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_UNITS:
+      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
+      return true;
+   case GL_MAX_TEXTURE_COORDS:
+      /* Const.MaxTextureCoordUnits (extra_ARB_fragment_program) */
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_SIZE:

@@ -47,6 +47,7 @@ void fgl_free_tex_images(struct fgl_texture_object *t);
 /* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
  * _CurrentTex) */
 void fgl_update_texture_state(struct fgl_context *ctx);
+void fgl_update_texture_matrices(struct fgl_context *ctx);
 bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level);
 
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */

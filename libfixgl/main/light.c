@@ -637,8 +637,11 @@ void fgl_update_lighting(struct fgl_context *ctx)
                                l->QuadraticAttenuation != 0.0f;
       need_vertices |= d->Light[i].Positional || d->Light[i].Spot;
    }
-   d->NeedEyeCoords = la->Enabled &&
-                      (need_vertices || !fgl_matrix_is_length_preserving(mv->flags));
+   /* _mesa_update_tnl_spaces: eye-space coordinate generation needs eye
+    * coordinates too (for its normals, whether or not lighting is on) */
+   d->NeedEyeCoords = (la->Enabled &&
+                       (need_vertices || !fgl_matrix_is_length_preserving(mv->flags))) ||
+                      (ctx->_GenFlags & FGL_TEXGEN_NEED_EYE_COORD) != 0;
 
    /* update_modelview_scale */
    d->NormalScale = 1.0f;

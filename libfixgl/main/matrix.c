@@ -26,7 +26,8 @@ bool fgl_init_matrix(struct fgl_context *ctx)
    bool ok = init_stack(&ctx->ModelviewStack, FGL_MAX_MODELVIEW_STACK_DEPTH, FGL_NEW_MODELVIEW) &&
              init_stack(&ctx->ProjectionStack, FGL_MAX_PROJECTION_STACK_DEPTH, FGL_NEW_PROJECTION);
    for (int i = 0; ok && i < FGL_MAX_TEXTURE_UNITS; i++)
-      ok = init_stack(&ctx->TextureStack[i], FGL_MAX_TEXTURE_STACK_DEPTH, 0);
+      ok = init_stack(&ctx->TextureStack[i], FGL_MAX_TEXTURE_STACK_DEPTH,
+                      FGL_NEW_TEXTURE_MATRIX);
    for (int i = 0; ok && i < FGL_MAX_PROGRAM_MATRICES; i++)
       ok = init_stack(&ctx->ProgramStack[i], FGL_MAX_PROGRAM_STACK_DEPTH, 0);
    ctx->CurrentStack = &ctx->ModelviewStack;
@@ -54,7 +55,8 @@ struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLen
    case GL_PROJECTION:
       return &ctx->ProjectionStack;
    case GL_TEXTURE:
-      return &ctx->TextureStack[0];
+      /* the active unit's [S: matrix.c:get_named_matrix_stack] */
+      return &ctx->TextureStack[ctx->Texture.CurrentUnit];
    default:
       if (mode >= GL_MATRIX0_ARB && mode < GL_MATRIX0_ARB + FGL_MAX_PROGRAM_MATRICES)
          return &ctx->ProgramStack[mode - GL_MATRIX0_ARB];

@@ -30,6 +30,7 @@
  * below against them */
 #define GL_GLEXT_PROTOTYPES 1
 #include <math.h>
+#include <string.h>
 
 #include "main/groups.h"
 #include "main/conv.h"
@@ -203,6 +204,37 @@ static void shade_rastpos(const struct fgl_context *ctx, const float vertex[4],
    }
 }
 
+static inline float dot4(const float *a, const float *b)
+{
+   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
+
+/* [S: rastpos.c:compute_texgen] in C on the CPU, left-to-right sums: the
+ * sphere map terms always, then each enabled coordinate's mode */
+static void compute_texgen(const struct fgl_texture_unit *t, const float obj[4],
+                           const float eye[4], const float normal[3], float tc[4])
+{
+   float u[3] = { eye[0], eye[1], eye[2] };
+   fgl_normalize3(u);
+   const float two_nu = 2.0f * (normal[0] * u[0] + normal[1] * u[1] + normal[2] * u[2]);
+   const float r[3] = { u[0] - normal[0] * two_nu, u[1] - normal[1] * two_nu,
+                        u[2] - normal[2] * two_nu };
+   const float m = r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0f) * (r[2] + 1.0f);
+   const float m_inv = m > 0.0f ? 0.5f * (1.0f / sqrtf(m)) : 0.0f;
+   for (int c = 0; c < 4; c++) {
+      if (!(t->TexGenEnabled & (1u << c)))
+         continue;
+      switch (t->GenMode[c]) {
+      case GL_OBJECT_LINEAR: tc[c] = dot4(obj, t->ObjectPlane[c]); break;
+      case GL_EYE_LINEAR:    tc[c] = dot4(eye, t->EyePlane[c]); break;
+      case GL_SPHERE_MAP:    tc[c] = r[c] * m_inv + 0.5f; break;
+      case GL_REFLECTION_MAP: tc[c] = r[c]; break;
+      case GL_NORMAL_MAP:    tc[c] = normal[c]; break;
+      default:               return;   /* _mesa_problem */
+      }
+   }
+}
+
 /* [S: rastpos.c:_mesa_RasterPos] */
 static void raster_pos(struct fgl_context *ctx, const float obj[4])
 {
@@ -237,17 +269,20 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    else
       cur->RasterDistance = sqrtf(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
 
+   /* the normal for lighting and texgen: with _NeedEyeCoords
+    * (light.c:_mesa_update_tnl_spaces; no point attenuation in fixgl)
+    * through the inverse modelview, not normalized or rescaled; else the
+    * object normal */
+   const bool eye_coords = ctx->_Lighting.NeedEyeCoords;
+   const float *norm = cur->Attrib[FGL_ATTR_NORMAL];
+   float eyenorm[3];
+   if (eye_coords) {
+      fgl_transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
+      norm = eyenorm;
+   }
    if (ctx->Light.Enabled) {
-      /* _NeedEyeCoords (light.c:_mesa_update_tnl_spaces; no texgen or
-       * point attenuation in fixgl): the normal through the inverse
-       * modelview, not normalized or rescaled; else the object normal */
-      const bool eye_coords = ctx->_Lighting.NeedEyeCoords;
-      const float *norm = cur->Attrib[FGL_ATTR_NORMAL];
-      float eyenorm[3], eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
-      if (eye_coords) {
-         fgl_transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
-         norm = eyenorm;
-      } else {
+      float eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
+      if (!eye_coords) {
          /* compute_light_positions: TRANSFORM_NORMAL of (0, 0, 1) */
          static const float z[3] = { 0.0f, 0.0f, 1.0f };
          fgl_transform_normal(eye_z_dir, z, ctx->ModelviewStack.Top->m);
@@ -261,10 +296,14 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
       }
    }
 
-   /* no texture coordinate generation: the GL_TEXTURE_GEN_* enables are
-    * not part of fixgl yet (TexGenEnabled is always 0) */
+   /* every unit's coordinate: generated where the unit enables it,
+    * whether or not it textures, then through its texture matrix
+    * (TRANSFORM_POINT, unanalysed) */
    for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
-      const float *tc = u == 0 ? cur->Attrib[FGL_ATTR_TEX0] : cur->TexCoord[u];
+      float tc[4];
+      memcpy(tc, cur->Attrib[FGL_ATTR_TEX0 + u], sizeof(tc));
+      if (ctx->Texture.Unit[u].TexGenEnabled)
+         compute_texgen(&ctx->Texture.Unit[u], obj, eye, norm, tc);
       transform_point(cur->RasterTexCoords[u], ctx->TextureStack[u].Top->m, tc);
    }
    cur->RasterPosValid = true;

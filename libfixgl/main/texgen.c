@@ -2,9 +2,8 @@
  * Texture coordinate generation state (Mesa 22.3 main/texgen.c):
  * glTexGen{i,f,d}[v] and glGetTexGen{i,f,d}v for the active unit.  The eye
  * planes are transformed by the inverse modelview at specification time,
- * exactly as glClipPlane's (_mesa_transform_vector).  State only: the
- * vertex stage generates no coordinates yet (GL_TEXTURE_GEN_* enables are
- * still pending caps).
+ * exactly as glClipPlane's (_mesa_transform_vector).  The vertex stage
+ * generates the coordinates (tnl/t_texcoord.c).
  */
 #include <string.h>
 
@@ -49,7 +48,7 @@ static inline bool eq4(const float *a, const float *b)
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_STATE, GL_TEXTURE_BIT) */
 static void gen_flush(struct fgl_context *ctx)
 {
-   fgl_flush_vertices(ctx);
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 

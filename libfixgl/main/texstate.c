@@ -5,6 +5,7 @@
  * left out of fixed-function texturing.
  */
 #include "main/groups.h"
+#include "main/dlist.h"
 
 /* floor(log2(n)) + 1: the number of levels of a base image whose larger
  * side is n (gl_texture_image MaxNumLevels) */
@@ -65,6 +66,62 @@ bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level)
    return true;
 }
 
+/* Mesa's _ModeBit of a glTexGen mode [S: texgen.c:texgenfv] */
+static unsigned gen_mode_bit(GLenum mode)
+{
+   switch (mode) {
+   case GL_OBJECT_LINEAR: return FGL_TEXGEN_OBJ_LINEAR;
+   case GL_EYE_LINEAR:    return FGL_TEXGEN_EYE_LINEAR;
+   case GL_SPHERE_MAP:    return FGL_TEXGEN_SPHERE_MAP;
+   case GL_REFLECTION_MAP: return FGL_TEXGEN_REFLECTION_MAP;
+   case GL_NORMAL_MAP:    return FGL_TEXGEN_NORMAL_MAP;
+   default:               return 0;
+   }
+}
+
+/* [S: texstate.c:update_texgen] for the units that texture: the enabled
+ * coordinate generation and its modes, and the texture matrix unless its
+ * type is the identity (analysed: _mesa_update_texture_matrices ran first
+ * for a changed matrix) */
+static void update_texgen(struct fgl_context *ctx)
+{
+   ctx->_TexGenEnabled = 0;
+   ctx->_TexMatEnabled = 0;
+   ctx->_GenFlags = 0;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      if (!(ctx->_EnabledTexUnits & (1u << u)))
+         continue;
+      const struct fgl_texture_unit *t = &ctx->Texture.Unit[u];
+      if (t->TexGenEnabled) {
+         for (int c = 0; c < 4; c++)
+            if (t->TexGenEnabled & (1u << c))
+               ctx->_GenFlags |= gen_mode_bit(t->GenMode[c]);
+         ctx->_TexGenEnabled |= 1u << u;
+      }
+      fgl_matrix_analyse(ctx->TextureStack[u].Top);
+      if (!ctx->TextureStack[u].Top->type_identity)
+         ctx->_TexMatEnabled |= 1u << u;
+   }
+}
+
+/* [S: texstate.c:_mesa_update_texture_matrices] on a texture matrix change
+ * alone (_NEW_TEXTURE_MATRIX): the mask is rebuilt from the matrices
+ * changed since the last validation only, for the units that had a texture
+ * then; an unchanged non-identity matrix of another unit drops out until
+ * the texture state is validated again (texture/matrix_other_unit). */
+void fgl_update_texture_matrices(struct fgl_context *ctx)
+{
+   ctx->_TexMatEnabled = 0;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      fgl_matrix *m = ctx->TextureStack[u].Top;
+      if (!(m->flags & MAT_DIRTY))
+         continue;
+      fgl_matrix_analyse(m);
+      if (ctx->_CurrentTex[u] && !m->type_identity)
+         ctx->_TexMatEnabled |= 1u << u;
+   }
+}
+
 /* [S: texstate.c:update_ff_texture_state] targets in priority order,
  * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.  Only 1D
  * and 2D textures can have images in fixgl, so only they can texture. */
@@ -87,5 +144,71 @@ void fgl_update_texture_state(struct fgl_context *ctx)
          ctx->_CurrentTexTarget[u] = targets[k];
          break;
       }
+   }   update_texgen(ctx);
+}
+
+/* ---- the active units (GL 1.3 multitexture) ---- */
+
+/* [S: texstate.c:active_texture] units beyond the oracle's are
+ * GL_INVALID_ENUM; a change flushes and, in GL_TEXTURE matrix mode, points
+ * the matrix calls at the unit's stack.  The oracle takes units up to its
+ * combined image unit count (192) here; fixgl keeps the eight units that
+ * have fixed-function state (ORACLE-NOTES.md "Multitexture"). */
+static void active_texture(GLenum texture)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, ActiveTexture, texture);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   const GLuint unit = texture - GL_TEXTURE0;
+   if (ctx->Texture.CurrentUnit == unit)
+      return;
+   if (unit >= FGL_MAX_TEXTURE_UNITS) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
    }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
+   ctx->Texture.CurrentUnit = unit;
+   if (ctx->Transform.MatrixMode == GL_TEXTURE)
+      ctx->CurrentStack = &ctx->TextureStack[unit];
+}
+
+void GLAPIENTRY glActiveTexture(GLenum texture)
+{
+   active_texture(texture);
+}
+
+void GLAPIENTRY glActiveTextureARB(GLenum texture)
+{
+   active_texture(texture);
+}
+
+/* [S: texstate.c:_mesa_ClientActiveTexture] client state: no flush, not
+ * compiled into lists; units beyond MaxTextureCoordUnits (8) are
+ * GL_INVALID_ENUM. */
+static void client_active_texture(GLenum texture)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   const GLuint unit = texture - GL_TEXTURE0;
+   if (ctx->Array.ActiveTexture == unit)
+      return;
+   if (unit >= FGL_MAX_TEXTURE_UNITS) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   ctx->Array.ActiveTexture = unit;
+}
+
+void GLAPIENTRY glClientActiveTexture(GLenum texture)
+{
+   client_active_texture(texture);
+}
+
+void GLAPIENTRY glClientActiveTextureARB(GLenum texture)
+{
+   client_active_texture(texture);
 }

@@ -87,6 +87,10 @@ void fgl_init_array(struct fgl_context *ctx)
       [FGL_ARRAY_EDGEFLAG] = { 1, GL_UNSIGNED_BYTE },
       [FGL_ARRAY_FOGCOORD] = { 1, GL_FLOAT },
       [FGL_ARRAY_COLOR1] = { 3, GL_FLOAT },
+      [FGL_ARRAY_TEXCOORD1 + 0] = { 4, GL_FLOAT }, [FGL_ARRAY_TEXCOORD1 + 1] = { 4, GL_FLOAT },
+      [FGL_ARRAY_TEXCOORD1 + 2] = { 4, GL_FLOAT }, [FGL_ARRAY_TEXCOORD1 + 3] = { 4, GL_FLOAT },
+      [FGL_ARRAY_TEXCOORD1 + 4] = { 4, GL_FLOAT }, [FGL_ARRAY_TEXCOORD1 + 5] = { 4, GL_FLOAT },
+      [FGL_ARRAY_TEXCOORD1 + 6] = { 4, GL_FLOAT },
    };
    for (int i = 0; i < FGL_ARRAY_COUNT; i++) {
       ctx->Array.Array[i] = (struct fgl_client_array){
@@ -177,10 +181,14 @@ void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
            1, type, stride, ptr);
 }
 
-/* state only until textures land */
+/* the client active unit's array [S: varray.c:_mesa_TexCoordPointer:
+ * VERT_ATTRIB_TEX(ctx->Array.ActiveTexture)] */
 void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_TEXCOORD, B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   pointer(FGL_ARRAY_TEX(ctx->Array.ActiveTexture), B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
            B_UI2101010 | B_I2101010, 1, 4, false, size, type, stride, ptr);
 }
 
@@ -247,9 +255,11 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid 
    struct fgl_client_array *A = ctx->Array.Array;
    A[FGL_ARRAY_EDGEFLAG].Enabled = false;
    A[FGL_ARRAY_INDEX].Enabled = false;
-   A[FGL_ARRAY_TEXCOORD].Enabled = tc != 0;
+   /* the client active unit's coordinate array */
+   const enum fgl_array_index tex = FGL_ARRAY_TEX(ctx->Array.ActiveTexture);
+   A[tex].Enabled = tc != 0;
    if (tc)
-      update_array(ctx, FGL_ARRAY_TEXCOORD, tc, GL_RGBA, GL_FLOAT, stride, p);
+      update_array(ctx, tex, tc, GL_RGBA, GL_FLOAT, stride, p);
    A[FGL_ARRAY_COLOR].Enabled = cc != 0;
    if (cc)
       update_array(ctx, FGL_ARRAY_COLOR, cc, GL_RGBA, ctype, stride, p + coff);
@@ -267,7 +277,8 @@ struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
    case GL_NORMAL_ARRAY: return &ctx->Array.Array[FGL_ARRAY_NORMAL];
    case GL_COLOR_ARRAY: return &ctx->Array.Array[FGL_ARRAY_COLOR];
    case GL_INDEX_ARRAY: return &ctx->Array.Array[FGL_ARRAY_INDEX];
-   case GL_TEXTURE_COORD_ARRAY: return &ctx->Array.Array[FGL_ARRAY_TEXCOORD];
+   case GL_TEXTURE_COORD_ARRAY:
+      return &ctx->Array.Array[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)];
    case GL_EDGE_FLAG_ARRAY: return &ctx->Array.Array[FGL_ARRAY_EDGEFLAG];
    /* GL 1.4 arrays: accepted as the oracle's compatibility context does
     * (main/enable.c:_mesa_set_enable); fixgl has no pointer call for them
@@ -320,9 +331,10 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
    case GL_COLOR_ARRAY_STRIDE: *value = A[FGL_ARRAY_COLOR].Stride; return true;
    case GL_INDEX_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_INDEX].Type; return true;
    case GL_INDEX_ARRAY_STRIDE: *value = A[FGL_ARRAY_INDEX].Stride; return true;
-   case GL_TEXTURE_COORD_ARRAY_SIZE: *value = A[FGL_ARRAY_TEXCOORD].Size; return true;
-   case GL_TEXTURE_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_TEXCOORD].Type; return true;
-   case GL_TEXTURE_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_TEXCOORD].Stride; return true;
+   /* the client active unit's */
+   case GL_TEXTURE_COORD_ARRAY_SIZE: *value = A[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)].Size; return true;
+   case GL_TEXTURE_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)].Type; return true;
+   case GL_TEXTURE_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)].Stride; return true;
    case GL_EDGE_FLAG_ARRAY_STRIDE: *value = A[FGL_ARRAY_EDGEFLAG].Stride; return true;
    case GL_FOG_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_FOGCOORD].Type; return true;
    case GL_FOG_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_FOGCOORD].Stride; return true;
@@ -359,7 +371,9 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
    case GL_NORMAL_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_NORMAL].Ptr; break;
    case GL_COLOR_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_COLOR].Ptr; break;
    case GL_INDEX_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_INDEX].Ptr; break;
-   case GL_TEXTURE_COORD_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_TEXCOORD].Ptr; break;
+   case GL_TEXTURE_COORD_ARRAY_POINTER:
+      *params = (GLvoid *)A[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)].Ptr;
+      break;
    case GL_EDGE_FLAG_ARRAY_POINTER: *params = (GLvoid *)A[FGL_ARRAY_EDGEFLAG].Ptr; break;
    /* main/feedback.c */
    case GL_FEEDBACK_BUFFER_POINTER: *params = (GLvoid *)ctx->Feedback.Buffer; break;

@@ -73,6 +73,7 @@ void fgl_matrix_identity(fgl_matrix *mat)
    memcpy(mat->m, identity, sizeof(identity));
    memcpy(mat->inv, identity, sizeof(identity));
    mat->flags &= ~(MAT_DIRTY_FLAGS | MAT_DIRTY_TYPE | MAT_DIRTY_INVERSE);
+   mat->type_identity = true;
 }
 
 void fgl_matrix_loadf(fgl_matrix *mat, const float m[16])
@@ -568,6 +569,7 @@ void fgl_matrix_analyse(fgl_matrix *mat)
       type = analyse_from_scratch(mat);
    else
       type = analyse_from_flags(mat);
+   mat->type_identity = type == MATRIX_IDENTITY;
    /* matrix_invert: a singular matrix gets the identity as its inverse */
    if (invert(mat, type, mat->inv)) {
       mat->flags &= ~MAT_FLAG_SINGULAR;

@@ -44,6 +44,8 @@ typedef struct fgl_matrix {
    float inv[16];    /* Mesa's inverse for the matrix type (valid after
                       * fgl_matrix_analyse; identity when singular) */
    unsigned flags;   /* MAT_FLAG_* geometry flags and MAT_DIRTY_* */
+   bool type_identity;  /* Mesa's type == MATRIX_IDENTITY: set by
+                         * fgl_matrix_identity and fgl_matrix_analyse only */
 } fgl_matrix;
 
 void fgl_matrix_identity(fgl_matrix *mat);

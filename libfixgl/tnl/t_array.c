@@ -164,6 +164,13 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
       { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
       { FGL_ARRAY_TEXCOORD, FGL_ATTR_TEX0, false },
+      { FGL_ARRAY_TEXCOORD1 + 0, FGL_ATTR_TEX1, false },
+      { FGL_ARRAY_TEXCOORD1 + 1, FGL_ATTR_TEX2, false },
+      { FGL_ARRAY_TEXCOORD1 + 2, FGL_ATTR_TEX3, false },
+      { FGL_ARRAY_TEXCOORD1 + 3, FGL_ATTR_TEX4, false },
+      { FGL_ARRAY_TEXCOORD1 + 4, FGL_ATTR_TEX5, false },
+      { FGL_ARRAY_TEXCOORD1 + 5, FGL_ATTR_TEX6, false },
+      { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
       { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
    };
    for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
@@ -256,7 +263,8 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
 void t_array_element(struct fgl_context *ctx, GLint elt)
 {
    /* _mesa_array_element: the enabled non-position arrays in attribute
-    * order (normal, colour, colour index, texture coordinate, edge flag),
+    * order (normal, colour, colour index, the units' texture coordinates,
+    * edge flag),
     * then the position; texture coordinates are not normalized
     * [S: main/api_arrayelt.c:_mesa_array_element] */
    const struct fgl_client_array *A = ctx->Array.Array;
@@ -266,8 +274,9 @@ void t_array_element(struct fgl_context *ctx, GLint elt)
       emit(ctx, &A[FGL_ARRAY_COLOR], FGL_ATTR_COLOR0, true, elt);
    if (A[FGL_ARRAY_INDEX].Enabled)
       emit(ctx, &A[FGL_ARRAY_INDEX], FGL_ATTR_COLOR_INDEX, false, elt);
-   if (A[FGL_ARRAY_TEXCOORD].Enabled)
-      emit(ctx, &A[FGL_ARRAY_TEXCOORD], FGL_ATTR_TEX0, false, elt);
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+      if (A[FGL_ARRAY_TEX(u)].Enabled)
+         emit(ctx, &A[FGL_ARRAY_TEX(u)], (enum fgl_vbo_attr)(FGL_ATTR_TEX0 + u), false, elt);
    if (A[FGL_ARRAY_EDGEFLAG].Enabled)
       emit(ctx, &A[FGL_ARRAY_EDGEFLAG], FGL_ATTR_EDGEFLAG, false, elt);
    if (A[FGL_ARRAY_VERTEX].Enabled)

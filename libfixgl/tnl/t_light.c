@@ -272,6 +272,18 @@ static void transform_normal(const struct fgl_context *ctx, const struct light_k
    }
 }
 
+/* get_transformed_normal outside the lighting code (texgen, t_texcoord.c):
+ * the same key fields (_NeedEyeCoords, GL_NORMALIZE, the rescale rule) */
+void t_transformed_normal(const struct fgl_context *ctx, const float *in, float n[3])
+{
+   struct light_key key = {
+      .eye = ctx->_Lighting.NeedEyeCoords,
+      .normalize = ctx->Transform.Normalize,
+   };
+   key.rescale = !key.normalize && key.eye == ctx->Transform.RescaleNormals;
+   transform_normal(ctx, &key, in, n);
+}
+
 /* The material source of each property of each face for this batch: the
  * vertex colour when it tracks the colour and the colour varies
  * (get_material's order), else the vbo attribute (per vertex when it is in

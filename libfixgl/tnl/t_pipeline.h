@@ -70,6 +70,15 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out);
 
+/* The oracle's transformed normal (get_transformed_normal) of one vertex's
+ * normal `in` (t_light.c). */
+void t_transformed_normal(const struct fgl_context *ctx, const float *in, float n[3]);
+
+/* The texture coordinates of n stored vertices (t_texcoord.c) into the
+ * R_ATTR_TEX0 + u slots of out[], for the units in `units`. */
+void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+                unsigned units, struct t_vertex *out);
+
 /* The fog coordinate of n stored vertices (t_fog.c) into the R_ATTR_FOG
  * slot of out[]; eye_position_from_lighting is t_light's result. */
 void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,

@@ -65,9 +65,12 @@ enum fgl_vbo_attr {
    FGL_ATTR_COLOR_INDEX,    /* glIndex: stored and queried; nothing reads it
                              * in RGBA, but it is part of the vertex format
                              * (VBO_ATTRIB_COLOR_INDEX) */
-   FGL_ATTR_TEX0,           /* glTexCoord: texture unit 0's coordinate
-                             * (VBO_ATTRIB_TEX0, after COLOR_INDEX as in
-                             * Mesa's VERT_ATTRIB order) */
+   FGL_ATTR_TEX0,           /* glTexCoord, glMultiTexCoord: texture unit
+                             * u's coordinate is FGL_ATTR_TEX0 + u
+                             * (VBO_ATTRIB_TEX0..TEX7, after COLOR_INDEX
+                             * as in Mesa's vbo_attrib order) */
+   FGL_ATTR_TEX1, FGL_ATTR_TEX2, FGL_ATTR_TEX3, FGL_ATTR_TEX4,
+   FGL_ATTR_TEX5, FGL_ATTR_TEX6, FGL_ATTR_TEX7,
    FGL_ATTR_EDGEFLAG,       /* glEdgeFlag: 1.0 or 0.0 (VBO_ATTRIB_EDGEFLAG) */
    FGL_ATTR_MAT_FRONT_AMBIENT,
    FGL_ATTR_MAT_BACK_AMBIENT,

@@ -66,9 +66,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
     * program always writes TEX0 (for the feedback records); otherwise it
     * writes the coordinate of each unit enabled with a complete texture
     * (texstate.c:update_ff_texture_state) */
-   const bool texcoord = ctx->RenderMode == GL_FEEDBACK || (ctx->_EnabledTexUnits & 1u);
-   unsigned tstride;
-   const float *tex = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_TEX0, &tstride);
+   const unsigned tex_units = ctx->_EnabledTexUnits | (ctx->RenderMode == GL_FEEDBACK ? 1u : 0u);
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
@@ -77,14 +75,6 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
          /* the colour slots below the fog slot that this draw does not
           * use are still clipped and interpolated: give them a value */
          memset(v->r.attr, 0, sizeof(v->r.attr));
-      }
-      if (texcoord) {
-         /* [S: ffvertex_prog.c:build_texture_transform] a passthrough of
-          * the vertex's coordinate (texture matrices and coordinate
-          * generation are still to come) */
-         const float *tc = tex + (size_t)i * tstride;
-         for (int k = 0; k < 4; k++)
-            v->r.attr[R_ATTR_TEX0][k] = tc[k];
       }
       t_mul_mad_chain(v->clip, m, p);
       v->mask = clip_mask(v->clip);
@@ -103,6 +93,11 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
             v->r.attr[R_ATTR_COLOR0][k] = c[k];
       }
    }
+
+   /* ffvertex_prog.c: build_texture_transform (after build_lighting,
+    * independent of it) */
+   if (tex_units)
+      t_texcoord(ctx, in, n, tex_units, out);
 
    bool eye_position = false;
    if (lit)
