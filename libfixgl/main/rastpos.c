@@ -410,11 +410,9 @@ static void window_pos(GLfloat x, GLfloat y, GLfloat z)
       cur->RasterColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR0][k]);
       cur->RasterSecondaryColor[k] = fgl_clamp01(cur->SecondaryColor[k]);
    }
-   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
-      const float *tc = u == 0 ? cur->Attrib[FGL_ATTR_TEX0] : cur->TexCoord[u];
+   for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
       for (int k = 0; k < 4; k++)
-         cur->RasterTexCoords[u][k] = tc[k];
-   }
+         cur->RasterTexCoords[u][k] = cur->Attrib[FGL_ATTR_TEX0 + u][k];
    if (ctx->RenderMode == GL_SELECT)
       t_update_hitflag(ctx, cur->RasterPos[2]);
 }
