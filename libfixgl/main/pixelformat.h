@@ -80,6 +80,10 @@ unsigned fgl_image_transfer_state(const struct fgl_context *ctx);
 void fgl_apply_rgba_transfer_ops(const struct fgl_context *ctx, unsigned ops, size_t n,
                                  float (*rgba)[4]);
 
+/* [S: pixeltransfer.c:_mesa_apply_stencil_transfer_ops] shift/offset
+ * and GL_MAP_STENCIL on 8-bit stencil values */
+void fgl_apply_stencil_transfer_ops(const struct fgl_context *ctx, size_t n, uint8_t *s);
+
 /* [S: pixeltransfer.c:_mesa_shift_and_offset_ci, _mesa_map_ci_to_rgba] */
 void fgl_shift_and_offset_ci(const struct fgl_context *ctx, size_t n, GLuint *index);
 void fgl_map_ci_to_rgba(const struct fgl_context *ctx, size_t n, const GLuint *index,
