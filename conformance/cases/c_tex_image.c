@@ -480,7 +480,7 @@ static void copy_image(fc_h *h)
     level_params(h, "rgba", GL_TEXTURE_2D, 0);
     get_image(h, "rgba", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
     static const GLenum q[] = { GL_RGB, GL_LUMINANCE, GL_ALPHA, GL_LUMINANCE_ALPHA,
-                                GL_INTENSITY, GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2,
+                                GL_INTENSITY, GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_RGB565,
                                 GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGBA16, GL_RGB8 };
     for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
         char l[64];
@@ -561,6 +561,49 @@ static void copy_image(fc_h *h)
 #undef E
     level_params(h, "final", GL_TEXTURE_2D, 0);
     get_image(h, "final", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+}
+
+/* Every 8-bit value of each channel copied into the small formats: the
+ * oracle truncates into its 5-5-5(-1) and 5-6-5 formats and rounds into
+ * 4-4-4-4, 4-4 luminance/alpha and 10-10-10-2. */
+static void copy_values(fc_h *h, const GLint *fmts, size_t n)
+{
+    fc_pixel_ortho(h);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 256; i++) {
+        glColor4ub((GLubyte)i, (GLubyte)(255 - i), (GLubyte)(i * 7), (GLubyte)(i * 3 + 1));
+        glVertex2f((float)i + 0.5f, 0.5f);
+    }
+    glEnd();
+    fc_capture(h);
+    for (size_t k = 0; k < n; k++) {
+        char l[64];
+        snprintf(l, sizeof l, "fmt 0x%04x", (unsigned)fmts[k]);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, fmts[k], 0, 0, 256, 1, 0);
+        fc_error(h, l);
+        memset(readback, 0xA5, sizeof readback);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+        fc_blob(h, l, readback, 4 * 256);
+        /* a sub-image copy converts the same way */
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 128, 0, 128, 1);
+        memset(readback, 0xA5, sizeof readback);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+        fc_blob(h, "sub", readback, 4 * 256);
+    }
+}
+
+static void copy_values_small(fc_h *h)
+{
+    static const GLint f[] = { GL_RGB5, GL_RGB5_A1, GL_RGB565, GL_RGBA4, GL_RGBA2, GL_RGB4,
+                               GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGB10, GL_ALPHA4,
+                               GL_INTENSITY16, GL_LUMINANCE6_ALPHA2 };
+    copy_values(h, f, sizeof f / sizeof f[0]);
+}
+
+static void copy_values_r3g3b2(fc_h *h)
+{
+    static const GLint f[] = { GL_R3_G3_B2 };
+    copy_values(h, f, 1);
 }
 
 /* glGetTexImage and glGetTexLevelParameter errors. */
@@ -665,6 +708,8 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_errors", 8, 8, 0, "texture", tex_image_errors),
     FC_CASE_RGBA("texture/image_subimage", 8, 8, 0, "texture", sub_image),
     FC_CASE_RGBA("texture/image_copy", 32, 32, 1, "texture", copy_image),
+    FC_CASE_RGBA("texture/image_copy_values", 256, 1, 1, "texture", copy_values_small),
+    FC_CASE_RGBA("texture/image_copy_r3g3b2", 256, 1, 1, "texture", copy_values_r3g3b2),
     FC_CASE_RGBA("texture/image_query_errors", 8, 8, 0, "texture", query_errors),
     FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
