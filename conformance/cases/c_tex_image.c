@@ -606,6 +606,91 @@ static void copy_values_r3g3b2(fc_h *h)
     copy_values(h, f, 1);
 }
 
+/* Display lists: glTexImage and glTexSubImage copy the client image at
+ * compile time under the unpack state of then (replayed with the default
+ * packing), proxies execute at once, copies replay from the colour
+ * buffer of the call, queries execute at once. */
+static void lists(fc_h *h)
+{
+    fill_src(31);
+    GLuint l = glGenLists(4);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 6);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    glNewList(l, GL_COMPILE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5_A1, 4, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_LUMINANCE, 2, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_ALPHA8, 5, 0, GL_ALPHA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, src + 50);
+    glTexSubImage1D(GL_TEXTURE_1D, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 90);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 64, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGB4, 16, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 7, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 9, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    level_params(h, "proxy while compiling", GL_PROXY_TEXTURE_2D, 0);
+    level_params(h, "proxy 1d while compiling", GL_PROXY_TEXTURE_1D, 0);
+    level_params(h, "2d while compiling", GL_TEXTURE_2D, 0);
+    get_image(h, "get while compiling", GL_TEXTURE_2D, 0, GL_RGBA, 1, 1);
+    glEndList();
+    fc_error(h, "compiled");
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    memset(src, 0, 256);   /* the list holds its own copy */
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glCallList(l);
+    fc_error(h, "called");
+    level_params(h, "l0", GL_TEXTURE_2D, 0);
+    get_image(h, "l0", GL_TEXTURE_2D, 0, GL_RGBA, 4, 3);
+    get_image(h, "l1", GL_TEXTURE_2D, 1, GL_RGBA, 2, 1);
+    get_image(h, "l2", GL_TEXTURE_2D, 2, GL_RGBA, 1, 1);
+    get_image(h, "1d", GL_TEXTURE_1D, 0, GL_RGBA, 5, 1);
+    fc_get_integer(h, "unpack alignment", GL_UNPACK_ALIGNMENT, 1);
+    fc_get_integer(h, "unpack row length", GL_UNPACK_ROW_LENGTH, 1);
+    /* swapped bytes are undone at compile time */
+    static const GLushort us[4] = { 0x1234, 0xfedc, 0x00ff, 0x8001 };
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    glTexImage2D(GL_TEXTURE_2D, 3, GL_LUMINANCE, 2, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, us);
+    glEndList();
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    get_image(h, "executed", GL_TEXTURE_2D, 3, GL_RGBA, 2, 2);
+    glTexImage2D(GL_TEXTURE_2D, 3, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glCallList(l + 1);
+    get_image(h, "replayed", GL_TEXTURE_2D, 3, GL_RGBA, 2, 2);
+    /* copies */
+    draw_picture(h);
+    glNewList(l + 2, GL_COMPILE);
+    glCopyTexImage2D(GL_TEXTURE_2D, 4, GL_RGB, 4, 4, 8, 8, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 4, 2, 2, 20, 20, 4, 4);
+    glCopyTexImage1D(GL_TEXTURE_1D, 1, GL_RGBA, 3, 3, 9, 0);
+    glCopyTexSubImage1D(GL_TEXTURE_1D, 1, 1, 10, 10, 4);
+    glCopyTexImage2D(GL_TEXTURE_2D, 4, 3, 0, 0, 8, 8, 0);
+    glEndList();
+    fc_error(h, "copies compiled");
+    level_params(h, "copy before call", GL_TEXTURE_2D, 4);
+    fc_capture(h);
+    glCallList(l + 2);
+    fc_error(h, "copies called");
+    get_image(h, "copy 2d", GL_TEXTURE_2D, 4, GL_RGBA, 8, 8);
+    get_image(h, "copy 1d", GL_TEXTURE_1D, 1, GL_RGBA, 9, 1);
+    /* glBegin while compiling: the image calls are errors, not compiled */
+    glNewList(l + 3, GL_COMPILE);
+    glBegin(GL_POINTS);
+    glTexImage2D(GL_TEXTURE_2D, 5, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 4, 0, 0, 0, 0, 1, 1);
+    glEnd();
+    glEndList();
+    fc_error(h, "inside begin compiled");
+    glCallList(l + 3);
+    fc_error(h, "inside begin called");
+    level_params(h, "level 5", GL_TEXTURE_2D, 5);
+    glDeleteLists(l, 4);
+    fc_error(h, "deleted");
+}
+
 /* glGetTexImage and glGetTexLevelParameter errors. */
 static void query_errors(fc_h *h)
 {
@@ -712,5 +797,6 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_copy_r3g3b2", 256, 1, 1, "texture", copy_values_r3g3b2),
     FC_CASE_RGBA("texture/image_query_errors", 8, 8, 0, "texture", query_errors),
     FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
+    FC_CASE_RGBA("texture/image_dlist", 32, 32, 1, "texture dlist", lists),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

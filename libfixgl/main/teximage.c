@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "main/dlist.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
 
@@ -549,6 +550,9 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && !fgl_save_tex_image(ctx, dims, target, level, internal, width,
+                                               height, border, format, type, pixels))
+      return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    /* legal_teximage_target (cube faces, rectangle and 1D array targets
@@ -686,6 +690,9 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && !fgl_save_tex_sub_image(ctx, dims, target, level, xoff, yoff,
+                                                   width, height, format, type, pixels))
+      return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
@@ -804,6 +811,9 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   if (ctx->CompileFlag && !fgl_save_copy_tex_image(ctx, dims, target, level, internal, x, y,
+                                                    width, height, border))
+      return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    /* legal_texsubimage_target: no proxies */
@@ -891,6 +901,9 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_copy_tex_sub_image(ctx, dims, target, level, xoff, yoff,
+                                                        x, y, width, height))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
