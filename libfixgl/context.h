@@ -371,6 +371,9 @@ struct fgl_texture_image {
                                      * GL_LUMINANCE_ALPHA, GL_ALPHA or
                                      * GL_INTENSITY */
    uint8_t *Data;                   /* Width * Height RGBA8 texels */
+   /* the oracle's pipe format for the image (its channel bits, which
+    * glGetTexLevelParameter reports; main/teximage.c) */
+   const struct fgl_tex_pipe_format *Format;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images
@@ -398,6 +401,9 @@ struct fgl_texture_objects {
    GLuint MaxName;                     /* names are never reused */
    unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
    struct fgl_texture_object Default[FGL_TEX_TARGETS];
+   /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D (per context, as
+    * Mesa's ctx->Texture.ProxyTex): images without texels */
+   struct fgl_texture_object Proxy[2];
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample

@@ -43,6 +43,7 @@ extern const fc_case fc_cases_demo[];
 extern const fc_case fc_cases_dlist[];
 extern const fc_case fc_cases_select[];
 extern const fc_case fc_cases_texstate[];
+extern const fc_case fc_cases_tex_image[];
 extern const fc_case fc_cases_accum[];
 extern const fc_case fc_cases_eval[];
 extern const fc_case fc_cases_pixelstate[];

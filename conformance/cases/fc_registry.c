@@ -19,6 +19,7 @@ static const fc_case *const groups[] = {
     fc_cases_demo,
     fc_cases_select,
     fc_cases_texstate,
+    fc_cases_tex_image,
     fc_cases_accum,
     fc_cases_query_walk,
     fc_cases_eval,
