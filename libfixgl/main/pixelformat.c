@@ -1322,9 +1322,11 @@ static void store_texel(GLenum base, const uint8_t c[4], uint8_t *t)
  * [S: texstore.c:texstore_rgba] into the oracle's 8-bit texture formats:
  *  - GL_COLOR_INDEX: indices -> I_TO_RGBA maps (shift/offset when on),
  *    clamped, CLAMPED_FLOAT_TO_UBYTE (pack.c:
- *    _mesa_unpack_color_index_to_rgba_ubyte);
+ *    _mesa_unpack_color_index_to_rgba_ubyte), that image addressed with
+ *    the unpack state again;
  *  - any pixel transfer state (_ImageTransferState, the index shift/offset
- *    included): to float RGBA, the operations, then _mesa_float_to_unorm;
+ *    included): to float RGBA without the skips, the operations, then
+ *    _mesa_float_to_unorm;
  *  - otherwise straight to 8 bits (_mesa_format_convert: array formats
  *    channel by channel, packed ones through unpack_rgba_8unorm).
  */
@@ -1339,31 +1341,54 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
    if (format == GL_COLOR_INDEX) {
       float (*rgba)[4] = malloc(count * sizeof(*rgba));
       GLuint *index = malloc(count * sizeof(*index));
-      if (!rgba || !index) {
+      uint8_t (*temp)[4] = malloc(count * sizeof(*temp));
+      if (!rgba || !index || !temp) {
          free(rgba);
          free(index);
+         free(temp);
          return false;
       }
       unpack_ci_float(ctx, p, width, height, type, pixels, ops | FGL_IMAGE_CLAMP_BIT, rgba,
                       index);
-      for (size_t i = 0; i < count; i++) {
-         uint8_t c[4];
+      for (size_t i = 0; i < count; i++)
          for (int k = 0; k < 4; k++)
-            c[k] = clamped_float_to_ubyte(rgba[i][k]);
-         store_texel(base, c, dst + 4 * i);
+            temp[i][k] = clamped_float_to_ubyte(rgba[i][k]);
+      /* texstore_rgba then reads that tight RGBA ubyte image with the
+       * caller's unpack state still in place: the skips, row length and
+       * alignment apply to it a second time.  A texel beyond the
+       * width*height pixels reads past the oracle's buffer (undefined);
+       * fixgl stores 0 there. */
+      const size_t stride = fgl_image_row_stride(p, width, GL_RGBA, GL_UNSIGNED_BYTE);
+      const size_t total = count * 4;
+      for (int y = 0; y < height; y++) {
+         for (int x = 0; x < width; x++) {
+            const size_t off = ((size_t)p->SkipRows + (size_t)y) * stride +
+                               ((size_t)p->SkipPixels + (size_t)x) * 4;
+            uint8_t c[4] = {0, 0, 0, 0};
+            if (off + 4 <= total)
+               memcpy(c, (const uint8_t *)temp + off, 4);
+            store_texel(base, c, dst + 4 * ((size_t)y * (size_t)width + (size_t)x));
+         }
       }
       free(rgba);
       free(index);
+      free(temp);
       return true;
    }
    struct layout l;
    if (!get_layout(format, type, &l))
       return false;
    if (ops) {
+      /* texstore_rgba converts to float from the image's base address at
+       * its row stride: SKIP_PIXELS and SKIP_ROWS are not applied on this
+       * path */
+      struct fgl_pixelstore noskip = *p;
+      noskip.SkipPixels = 0;
+      noskip.SkipRows = 0;
       float (*rgba)[4] = malloc(count * sizeof(*rgba));
       if (!rgba)
          return false;
-      if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels, ops,
+      if (!fgl_unpack_rgba_float(ctx, &noskip, width, height, format, type, pixels, ops,
                                  (float *)rgba)) {
          free(rgba);
          return false;
