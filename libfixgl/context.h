@@ -471,6 +471,9 @@ struct fgl_framebuffer {
    int DepthBits;             /* 0, 16 or 24 */
    int StencilBits;           /* 0 or 8 */
    int AlphaBits;             /* 8, or 0 for the RGB formats */
+   bool ColorR8G8B8A8;        /* the oracle's colour buffer format is R8G8B8A8_UNORM
+                               * (OSMESA_RGBA), which glReadPixels packs from
+                               * by other rules than B8G8R8A8 etc. */
    enum r_zs_format ZSFormat;
    uint8_t *Stencil;          /* stencil-only buffer (S8) when no depth */
    /* the accumulation buffer (main/accum.c): RGBA int16 scaled by 32767

@@ -382,6 +382,13 @@ const fc_case fc_cases_pix_format[] = {
     ZS("pixel/readpixels_half_float_formats", read_half),
     ZS("pixel/readpixels_half_float_oes", read_half_oes),
     ZS("pixel/readpixels_packed_types", read_packed),
+    /* B8G8R8A8 / A8R8G8B8 buffers: the 10-bit fields pack through float */
+    FC_CASE("pixel/readpixels_packed_types_bgra", W, H, OSMESA_BGRA, 24, 8, 0,
+            "pixel readpixels", read_packed),
+    FC_CASE("pixel/readpixels_packed_types_argb", W, H, OSMESA_ARGB, 24, 8, 0,
+            "pixel readpixels", read_packed),
+    FC_CASE("pixel/readpixels_ushort_formats_bgra", W, H, OSMESA_BGRA, 24, 8, 0,
+            "pixel readpixels", read_ushort),
     ZS("pixel/readpixels_pack_state", read_pack_state),
     ZS("pixel/readpixels_transfer_ops", read_transfer),
     ZS("pixel/readpixels_depth_types", read_depth_types),

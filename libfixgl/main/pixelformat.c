@@ -1436,7 +1436,7 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
  *    intermediate (destination fields <= 8 bits) or float (> 8 bits).
  */
 bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
-                    enum fgl_pack_source source, int width, int height, GLenum base,
+                    unsigned source, int width, int height, GLenum base,
                     const uint8_t *rgba8, GLenum format, GLenum type, void *pixels)
 {
    struct layout l;
@@ -1448,6 +1448,8 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
    unsigned ops;
    bool rgb_to_lum = false;
+   const bool exact_rgba8 = base == GL_RGBA && !(source & FGL_PACK_NOT_R8G8B8A8);
+   source &= ~(unsigned)FGL_PACK_NOT_R8G8B8A8;
    if (source == FGL_PACK_READPIXELS) {
       /* [S: readpix.c:_mesa_get_readpixels_transfer_ops] the clamp stays
        * only for the R+G+B luminance of an unsigned normalized buffer */
@@ -1486,7 +1488,6 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
          memcpy(src[i], t, 4); break;
       }
    }
-   const bool exact_rgba8 = base == GL_RGBA;
    const size_t stride = fgl_image_row_stride(p, width, format, type);
    uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
 

@@ -109,8 +109,10 @@ static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb
    }
    /* the oracle's buffer without alpha is an RGB format: alpha reads 1 */
    const GLenum base = fb->AlphaBits == 0 ? GL_RGB : GL_RGBA;
-   if (!fgl_pack_rgba8(ctx, pack, FGL_PACK_READPIXELS, r->width, r->height, base, rgba, format,
-                       type, pixels))
+   const unsigned source =
+      FGL_PACK_READPIXELS | (fb->ColorR8G8B8A8 ? 0 : FGL_PACK_NOT_R8G8B8A8);
+   if (!fgl_pack_rgba8(ctx, pack, source, r->width, r->height, base, rgba, format, type,
+                       pixels))
       fgl_error(ctx, GL_INVALID_OPERATION);   /* not reached: validated */
    free(rgba);
 }
@@ -301,6 +303,9 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       r.height -= (GLsizei)((int64_t)r.y + r.height - fb->Height);
    if (r.height <= 0)
       return;
+   /* [S: st_cb_readpixels.c:st_ReadPixels] runs from here: it draws
+    * glBitmap's cache first (pixdraw's fgl_flush_bitmap_cache belongs
+    * here, NULL pixels included) */
    if (!pixels)
       return;
 
