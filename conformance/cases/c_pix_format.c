@@ -715,6 +715,66 @@ static void upload_bases(fc_h *h)
     }
 }
 
+/* Unsized internal formats: the oracle picks the texture format that
+ * matches format/type when it has the internal format's base
+ * (st_format.c:st_choose_format), e.g. R16G16B16A16 for GL_RGBA +
+ * GL_UNSIGNED_SHORT; read back as 8 bits the values agree with the 8-bit
+ * store. */
+static void upload_unsized(fc_h *h)
+{
+    static const GLint internals[] = {GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA,
+                                      GL_ALPHA, GL_INTENSITY, 3, 4};
+    static const struct { GLenum format, type; } src[] = {
+        {GL_RGBA, GL_UNSIGNED_SHORT}, {GL_BGRA, GL_UNSIGNED_BYTE}, {GL_RGB, GL_FLOAT},
+        {GL_LUMINANCE, GL_UNSIGNED_SHORT}, {GL_ALPHA, GL_UNSIGNED_BYTE},
+        {GL_LUMINANCE_ALPHA, GL_BYTE}, {GL_RGBA, GL_UNSIGNED_INT_8_8_8_8},
+        {GL_BGR, GL_HALF_FLOAT},
+    };
+    char label[96];
+    for (size_t i = 0; i < sizeof(internals) / sizeof(internals[0]); i++) {
+        for (size_t k = 0; k < sizeof(src) / sizeof(src[0]); k++) {
+            snprintf(label, sizeof(label), "internal %#x format %#x type %#x", internals[i],
+                     src[k].format, src[k].type);
+            up(h, label, internals[i], TW, TH, src[k].format, src[k].type,
+               1100u + (unsigned)(i * 8 + k));
+        }
+    }
+}
+
+/* glTexImage1D takes the same path (one row; SKIP_ROWS still applies). */
+static void upload_1d(fc_h *h)
+{
+    static const struct { GLenum format, type; } src[] = {
+        {GL_RGBA, GL_UNSIGNED_BYTE}, {GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV},
+        {GL_LUMINANCE_ALPHA, GL_FLOAT}, {GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV},
+        {GL_COLOR_INDEX, GL_BITMAP}, {GL_RED, GL_INT},
+    };
+    char label[96];
+    set_index_maps();
+    for (int s = 0; s < 2; s++) {
+        if (s == 1) {
+            glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 9);
+        }
+        for (size_t k = 0; k < sizeof(src) / sizeof(src[0]); k++) {
+            const size_t size = 8 * 4 * 48 * 24;
+            unsigned char *img = client_image(size, src[k].type, 1300u + (unsigned)k);
+            unsigned char back[TW * 4 + 64];
+            if (s == 1 && src[k].format == GL_COLOR_INDEX)
+                continue;   /* the colour-index image addressed twice reads past it */
+            memset(back, FILL, sizeof(back));
+            snprintf(label, sizeof(label), "1D %d format %#x type %#x", s, src[k].format,
+                     src[k].type);
+            glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, TW, 0, src[k].format, src[k].type, img);
+            fc_error(h, label);
+            glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+            fc_error(h, label);
+            fc_blob(h, label, back, sizeof(back));
+            free(img);
+        }
+    }
+}
+
 #define TX(name, fn) FC_CASE(name, 8, 8, OSMESA_RGBA, 0, 0, 0, "pixel teximage", fn)
 
 const fc_case fc_cases_pix_format_tex[] = {
@@ -732,5 +792,7 @@ const fc_case fc_cases_pix_format_tex[] = {
     TX("pixel/teximage_unpack_color_index", upload_color_index),
     TX("pixel/teximage_unpack_color_index_half_float", upload_color_index_half),
     TX("pixel/teximage_unpack_base_formats", upload_bases),
+    TX("pixel/teximage_unpack_unsized_internal", upload_unsized),
+    TX("pixel/teximage_unpack_1d", upload_1d),
     { 0 }
 };
