@@ -775,6 +775,77 @@ static void upload_1d(fc_h *h)
     }
 }
 
+/* glGetTexImage in every format x type from 8-bit textures of each base
+ * format (texgetimage.c:get_tex_rgba_uncompressed: L/I read as
+ * (L, 0, 0, 1), luminance = R, only a clamp for LUMINANCE destinations
+ * of unsigned types, no pixel transfer), with pack states. */
+static void get_all(fc_h *h, const char *what)
+{
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                   GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_HALF_FLOAT};
+    static const struct { GLenum type, format; } packed[] = {
+        {GL_UNSIGNED_BYTE_3_3_2, GL_RGB}, {GL_UNSIGNED_SHORT_5_6_5_REV, GL_RGB},
+        {GL_UNSIGNED_SHORT_4_4_4_4, GL_ABGR_EXT}, {GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_BGRA},
+        {GL_UNSIGNED_INT_8_8_8_8, GL_RGBA}, {GL_UNSIGNED_INT_10_10_10_2, GL_RGBA},
+        {GL_UNSIGNED_INT_2_10_10_10_REV, GL_BGRA}, {GL_UNSIGNED_INT_10F_11F_11F_REV, GL_RGB},
+        {GL_UNSIGNED_INT_5_9_9_9_REV, GL_RGB},
+    };
+    const size_t size = 8 * 4 * 48 * 24;
+    unsigned char *buf = malloc(size);
+    char label[96];
+    for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
+        for (size_t f = 0; f < N_COLOR_FORMATS; f++) {
+            memset(buf, FILL, size);
+            glGetTexImage(GL_TEXTURE_2D, 0, color_formats[f], types[t], buf);
+            snprintf(label, sizeof(label), "%s format %#x type %#x", what, color_formats[f],
+                     types[t]);
+            fc_error(h, label);
+            fc_blob(h, label, buf, size);
+        }
+    }
+    for (size_t k = 0; k < sizeof(packed) / sizeof(packed[0]); k++) {
+        memset(buf, FILL, size);
+        glGetTexImage(GL_TEXTURE_2D, 0, packed[k].format, packed[k].type, buf);
+        snprintf(label, sizeof(label), "%s format %#x type %#x", what, packed[k].format,
+                 packed[k].type);
+        fc_error(h, label);
+        fc_blob(h, label, buf, size);
+    }
+    free(buf);
+}
+
+static void get_teximage(fc_h *h)
+{
+    static const GLint internals[] = {GL_RGBA8, GL_RGB8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8,
+                                      GL_INTENSITY8, GL_ALPHA8};
+    unsigned char *img = client_image(TW * TH * 4, GL_UNSIGNED_BYTE, 4242u);
+    char what[64];
+    /* pixel transfer does not apply to glGetTexImage */
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    for (size_t i = 0; i < sizeof(internals) / sizeof(internals[0]); i++) {
+        glPixelTransferf(GL_RED_SCALE, 1.0f);
+        glTexImage2D(GL_TEXTURE_2D, 0, internals[i], TW, TH, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     img);
+        glPixelTransferf(GL_RED_SCALE, 0.5f);
+        snprintf(what, sizeof(what), "internal %#x", internals[i]);
+        get_all(h, what);
+    }
+    free(img);
+}
+
+static void get_teximage_pack_state(fc_h *h)
+{
+    unsigned char *img = client_image(TW * TH * 4, GL_UNSIGNED_BYTE, 4343u);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, TW, TH, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glPixelStorei(GL_PACK_ALIGNMENT, 8);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 11);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 2);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 3);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    get_all(h, "pack state");
+    free(img);
+}
+
 #define TX(name, fn) FC_CASE(name, 8, 8, OSMESA_RGBA, 0, 0, 0, "pixel teximage", fn)
 
 const fc_case fc_cases_pix_format_tex[] = {
@@ -794,5 +865,7 @@ const fc_case fc_cases_pix_format_tex[] = {
     TX("pixel/teximage_unpack_base_formats", upload_bases),
     TX("pixel/teximage_unpack_unsized_internal", upload_unsized),
     TX("pixel/teximage_unpack_1d", upload_1d),
+    TX("pixel/getteximage_formats_types", get_teximage),
+    TX("pixel/getteximage_pack_state", get_teximage_pack_state),
     { 0 }
 };
