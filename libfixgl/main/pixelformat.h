@@ -102,7 +102,12 @@ void fgl_map_ci_to_rgba(const struct fgl_context *ctx, size_t n, const GLuint *i
  * the I_TO_R/G/B/A maps, then only the clamp of ops
  * ([S: pack.c:_mesa_unpack_color_index_to_rgba_float]; note that Mesa
  * reads the width*height indices as one contiguous span, ignoring the row
- * padding).  Returns false for a format/type it does not convert. */
+ * padding).  Returns false for a format/type it does not convert.
+ * Note for callers emulating a texstore (glDrawPixels' image texture):
+ * texstore_rgba then addresses a colour-index image a second time with
+ * the unpack state, ignores the skips on its float (transfer) path and
+ * applies the skips to its byte-swapped temporary; fgl_unpack_texels_rgba8
+ * reproduces these, see ORACLE-NOTES.md "Client pixel formats". */
 bool fgl_unpack_rgba_float(struct fgl_context *ctx, const struct fgl_pixelstore *p,
                            int width, int height, GLenum format, GLenum type,
                            const void *pixels, unsigned ops, float *rgba);
