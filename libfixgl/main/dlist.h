@@ -114,6 +114,20 @@ bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v);
 bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i);
 bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j);
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+/* the texture image commands (main/teximage.c); these return whether the
+ * entry point goes on to execute */
+bool fgl_save_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                        GLint internal, GLsizei width, GLsizei height, GLint border,
+                        GLenum format, GLenum type, const void *pixels);
+bool fgl_save_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                            GLint xoffset, GLint yoffset, GLsizei width, GLsizei height,
+                            GLenum format, GLenum type, const void *pixels);
+bool fgl_save_copy_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                             GLint level, GLenum internal, GLint x, GLint y, GLsizei width,
+                             GLsizei height, GLint border);
+bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                                 GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
+                                 GLsizei width, GLsizei height);
 
 /* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,
  * glArrayElement's attributes): compiled while compiling, else executed. */
