@@ -691,6 +691,91 @@ static void lists(fc_h *h)
     fc_error(h, "deleted");
 }
 
+/* Texture objects shared through OSMesaCreateContext's sharelist: names,
+ * images and the default objects are shared, proxies are not; a context
+ * that does not share has its own.  Deleting an object in one context
+ * unbinds it there only. */
+static void sharing(fc_h *h)
+{
+    fill_src(41);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    GLuint t[2];
+    glGenTextures(2, t);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 5, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 20);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 7, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    static GLubyte buf2[8 * 8 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, fc_context(h));
+    OSMesaContext alone = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, NULL);
+    fc_value(h, "contexts", shared != NULL && alone != NULL);
+    if (!shared || !alone)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    level_params(h, "shared default", GL_TEXTURE_2D, 0);
+    get_image(h, "shared default", GL_TEXTURE_2D, 0, GL_RGBA, 3, 1);
+    level_params(h, "shared proxy", GL_PROXY_TEXTURE_2D, 0);
+    fc_value(h, "shared istexture t0", glIsTexture(t[0]));
+    fc_value(h, "shared istexture t1", glIsTexture(t[1]));
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    level_params(h, "shared t0", GL_TEXTURE_2D, 0);
+    get_image(h, "shared t0", GL_TEXTURE_2D, 0, GL_RGBA, 5, 2);
+    GLuint n = 0;
+    glGenTextures(1, &n);
+    fc_value(h, "shared gen", n);
+    glBindTexture(GL_TEXTURE_2D, n);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE4_ALPHA4, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, src + 60);
+    glDeleteTextures(1, &t[1]);
+    fc_get_integer(h, "shared binding", GL_TEXTURE_BINDING_2D, 1);
+    fc_error(h, "shared");
+    OSMesaMakeCurrent(alone, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    level_params(h, "alone default", GL_TEXTURE_2D, 0);
+    fc_value(h, "alone istexture t0", glIsTexture(t[0]));
+    glGenTextures(1, &n);
+    fc_value(h, "alone gen", n);
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 8, 8);
+    get_image(h, "first t0", GL_TEXTURE_2D, 0, GL_RGBA, 5, 2);
+    fc_value(h, "first istexture t1", glIsTexture(t[1]));
+    glBindTexture(GL_TEXTURE_2D, 3);
+    level_params(h, "first 3", GL_TEXTURE_2D, 0);
+    OSMesaDestroyContext(shared);
+    OSMesaDestroyContext(alone);
+    level_params(h, "after destroy", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    get_image(h, "default after destroy", GL_TEXTURE_2D, 0, GL_RGBA, 3, 1);
+    fc_error(h, "end");
+}
+
+/* An object deleted in one context while bound in another stays that
+ * context's binding (Mesa's reference count) with its images, without a
+ * name; rebinding the name makes a new object. */
+static void sharing_delete_bound(fc_h *h)
+{
+    fill_src(43);
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 5, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    static GLubyte buf2[8 * 8 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, fc_context(h));
+    fc_value(h, "context", shared != NULL);
+    if (!shared)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    glDeleteTextures(1, &t);
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 8, 8);
+    fc_get_integer(h, "binding", GL_TEXTURE_BINDING_2D, 1);
+    fc_value(h, "istexture", glIsTexture(t));
+    level_params(h, "orphan", GL_TEXTURE_2D, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 9, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    level_params(h, "orphan respecified", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, t);
+    level_params(h, "rebound", GL_TEXTURE_2D, 0);
+    OSMesaDestroyContext(shared);
+    fc_error(h, "end");
+}
+
 /* glGetTexImage and glGetTexLevelParameter errors. */
 static void query_errors(fc_h *h)
 {
@@ -798,5 +883,8 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_query_errors", 8, 8, 0, "texture", query_errors),
     FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
     FC_CASE_RGBA("texture/image_dlist", 32, 32, 1, "texture dlist", lists),
+    FC_CASE_RGBA("texture/image_sharing", 8, 8, 0, "texture api", sharing),
+    FC_CASE_RGBA("texture/image_sharing_delete_bound", 8, 8, 0, "texture api",
+                 sharing_delete_bound),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

@@ -30,7 +30,8 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value);
 void fgl_init_current(struct fgl_context *ctx);
 
 /* main/texobj.c */
-void fgl_init_texobj(struct fgl_context *ctx);
+bool fgl_init_texobj(struct fgl_context *ctx);
+void fgl_share_texobjs(struct fgl_context *ctx, struct fgl_context *share);
 void fgl_init_texenv(struct fgl_context *ctx);
 void fgl_init_texgen(struct fgl_context *ctx);
 void fgl_free_texobj(struct fgl_context *ctx);

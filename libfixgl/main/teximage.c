@@ -424,8 +424,8 @@ static bool is_proxy(GLenum target)
 static struct fgl_texture_object *target_object(struct fgl_context *ctx, GLenum target)
 {
    switch (target) {
-   case GL_PROXY_TEXTURE_1D: return &ctx->TexObjects.Proxy[0];
-   case GL_PROXY_TEXTURE_2D: return &ctx->TexObjects.Proxy[1];
+   case GL_PROXY_TEXTURE_1D: return &ctx->TexLocal.Proxy[0];
+   case GL_PROXY_TEXTURE_2D: return &ctx->TexLocal.Proxy[1];
    default: return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
    }
 }
