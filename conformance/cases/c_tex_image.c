@@ -776,6 +776,78 @@ static void sharing_delete_bound(fc_h *h)
     fc_error(h, "end");
 }
 
+/* glGetTexImage of every base format as every client format and type
+ * (pixelformat's packer; luminance reads back as R, not R+G+B), with
+ * pack state and SWAP_BYTES. */
+static void readback_types_of(fc_h *h, const GLint *internals, size_t ni)
+{
+    static const GLenum fmts[] = { GL_RGBA, GL_RGB, GL_BGRA, GL_BGR, GL_ABGR_EXT, GL_RED,
+                                   GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
+                                   GL_LUMINANCE_ALPHA, GL_RG };
+    static const GLenum types[] = { GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_HALF_FLOAT };
+    static const struct { GLenum f, t; } packed[] = {
+        { GL_RGB, GL_UNSIGNED_BYTE_3_3_2 }, { GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV },
+        { GL_RGB, GL_UNSIGNED_SHORT_5_6_5 }, { GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV },
+        { GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4 }, { GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV },
+        { GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 }, { GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV },
+        { GL_RGBA, GL_UNSIGNED_INT_8_8_8_8 }, { GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV },
+        { GL_RGBA, GL_UNSIGNED_INT_10_10_10_2 }, { GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV },
+    };
+    fill_src(51);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static GLubyte out[4 * 4 * 5 * 3 + 64];
+    for (size_t k = 0; k < ni; k++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, internals[k], 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        for (size_t f = 0; f < sizeof fmts / sizeof fmts[0]; f++)
+            for (size_t t = 0; t < sizeof types / sizeof types[0]; t++) {
+                char l[96];
+                snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k],
+                         (unsigned)fmts[f], (unsigned)types[t]);
+                memset(out, 0xA5, sizeof out);
+                glGetTexImage(GL_TEXTURE_2D, 0, fmts[f], types[t], out);
+                fc_blob(h, l, out, sizeof out);
+                fc_error(h, l);
+            }
+        for (size_t i = 0; i < sizeof packed / sizeof packed[0]; i++) {
+            char l[96];
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k],
+                     (unsigned)packed[i].f, (unsigned)packed[i].t);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, packed[i].f, packed[i].t, out);
+            fc_blob(h, l, out, sizeof out);
+            fc_error(h, l);
+        }
+        /* pack state */
+        glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+        glPixelStorei(GL_PACK_ALIGNMENT, 8);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, 1);
+        memset(out, 0xA5, sizeof out);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT, out);
+        fc_blob(h, "swap", out, sizeof out);
+        glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    }
+}
+
+static void readback_types(fc_h *h)
+{
+    static const GLint f[] = { GL_RGBA8, GL_RGB8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8,
+                               GL_ALPHA8, GL_INTENSITY8 };
+    readback_types_of(h, f, sizeof f / sizeof f[0]);
+}
+
+/* The formats of other than 8 bits read back: the oracle converts the
+ * stored n-bit values, fixgl their 8-bit expansion (the same values for
+ * 8-bit types, which image_formats_* check). */
+static void readback_types_precision(fc_h *h)
+{
+    static const GLint f[] = { GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2,
+                               GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGBA16, GL_LUMINANCE16 };
+    readback_types_of(h, f, sizeof f / sizeof f[0]);
+}
+
 /* glGetTexImage and glGetTexLevelParameter errors. */
 static void query_errors(fc_h *h)
 {
@@ -869,6 +941,9 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_formats_alpha", 8, 8, 0, "texture", formats_alpha),
     FC_CASE_RGBA("texture/image_formats_1d", 8, 8, 0, "texture", formats_1d),
     FC_CASE_RGBA("texture/image_readback_formats", 8, 8, 0, "texture", readback_formats),
+    FC_CASE_RGBA("texture/image_readback_types", 8, 8, 0, "texture pixel", readback_types),
+    FC_CASE_RGBA("texture/image_readback_types_precision", 8, 8, 0, "texture pixel",
+                 readback_types_precision),
     FC_CASE_RGBA("texture/image_unpack_store", 8, 8, 0, "texture", unpack_store),
     FC_CASE_RGBA("texture/image_border", 8, 8, 0, "texture", border),
     FC_CASE_RGBA("texture/image_null_data", 8, 8, 0, "texture", null_data),

@@ -24,6 +24,8 @@ extern const fc_case fc_cases_query[];
 extern const fc_case fc_cases_query_walk[];
 extern const fc_case fc_cases_vertex[];
 extern const fc_case fc_cases_readpix[];
+extern const fc_case fc_cases_pix_format[];
+extern const fc_case fc_cases_pix_format_tex[];
 extern const fc_case fc_cases_errors[];
 extern const fc_case fc_cases_light[];
 extern const fc_case fc_cases_light_space[];
