@@ -650,7 +650,7 @@ static void lists(fc_h *h)
     fc_get_integer(h, "unpack alignment", GL_UNPACK_ALIGNMENT, 1);
     fc_get_integer(h, "unpack row length", GL_UNPACK_ROW_LENGTH, 1);
     /* swapped bytes are undone at compile time */
-    static const GLushort us[4] = { 0x1234, 0xfedc, 0x00ff, 0x8001 };
+    static const GLushort us[8] = { 0x1234, 0xfedc, 0x00ff, 0x8001, 0x4321, 0x0102, 0x7f80, 9 };
     glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
     glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
     glTexImage2D(GL_TEXTURE_2D, 3, GL_LUMINANCE, 2, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, us);
