@@ -39,6 +39,273 @@ static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
    rs->num_attribs = R_ATTR_FOG + 1;
 }
 
+/* ---- texturing ---------------------------------------------------------- */
+
+static enum r_tex_wrap tex_wrap(GLenum w)
+{
+   switch (w) {
+   case GL_CLAMP_TO_EDGE:     return R_WRAP_CLAMP_TO_EDGE;
+   case GL_CLAMP:             return R_WRAP_CLAMP;
+   case GL_CLAMP_TO_BORDER:   return R_WRAP_CLAMP_TO_BORDER;
+   case GL_MIRRORED_REPEAT:   return R_WRAP_MIRRORED_REPEAT;
+   case GL_REPEAT:
+   default:                   return R_WRAP_REPEAT;
+   }
+}
+
+/* [S: util/u_math.h:util_quantize_lod_bias] */
+static float quantize_lod_bias(float lod)
+{
+   lod = lod > -16.0f ? (lod > 16.0f ? 16.0f : lod) : -16.0f;
+   return roundf(lod * 256.0f) / 256.0f;
+}
+
+static bool is_pot(int n)
+{
+   return n > 0 && (n & (n - 1)) == 0;
+}
+
+/* The sampler view and sampler state the state tracker hands llvmpipe for
+ * a complete texture object [S: st_atom_texture.c, st_atom_sampler.c:
+ * st_convert_sampler; gallivm/lp_bld_sample.c:
+ * lp_sampler_static_sampler_state]. */
+static void update_texture(const struct fgl_context *ctx, unsigned u,
+                           const struct fgl_texture_object *t, GLenum target,
+                           struct r_texture *rt)
+{
+   int max_level = t->BaseLevel;
+   fgl_texture_complete(t, &max_level);
+   rt->dims = target == GL_TEXTURE_1D ? 1 : 2;
+   rt->first_level = t->BaseLevel;
+   const bool mipmapped = t->MinFilter != GL_NEAREST && t->MinFilter != GL_LINEAR;
+   rt->last_level = mipmapped ? max_level : t->BaseLevel;
+   for (int l = rt->first_level; l <= rt->last_level; l++) {
+      const struct fgl_texture_image *img = t->Image[l];
+      rt->level[l].width = img->Width;
+      rt->level[l].height = rt->dims == 1 ? 1 : img->Height;
+      rt->level[l].data = img->Data;
+   }
+   /* the resource's level-0 size (st_texture_create from the base image,
+    * guess_and_alloc_texture: the base size scaled up to level 0) */
+   const struct fgl_texture_image *base = t->Image[rt->first_level];
+   const int w0 = t->Image[0] ? t->Image[0]->Width : base->Width << rt->first_level;
+   const int h0 = t->Image[0] ? t->Image[0]->Height : base->Height << rt->first_level;
+   rt->pot_s = is_pot(w0);
+   rt->pot_t = rt->dims == 1 || is_pot(h0);
+   switch (t->MinFilter) {
+   case GL_NEAREST:                rt->min_img = R_TEX_NEAREST; rt->mip = R_MIP_NONE; break;
+   case GL_LINEAR:                 rt->min_img = R_TEX_LINEAR;  rt->mip = R_MIP_NONE; break;
+   case GL_NEAREST_MIPMAP_NEAREST: rt->min_img = R_TEX_NEAREST; rt->mip = R_MIP_NEAREST; break;
+   case GL_LINEAR_MIPMAP_NEAREST:  rt->min_img = R_TEX_LINEAR;  rt->mip = R_MIP_NEAREST; break;
+   case GL_NEAREST_MIPMAP_LINEAR:  rt->min_img = R_TEX_NEAREST; rt->mip = R_MIP_LINEAR; break;
+   case GL_LINEAR_MIPMAP_LINEAR:
+   default:                        rt->min_img = R_TEX_LINEAR;  rt->mip = R_MIP_LINEAR; break;
+   }
+   rt->mag_img = t->MagFilter == GL_NEAREST ? R_TEX_NEAREST : R_TEX_LINEAR;
+   rt->wrap_s = tex_wrap(t->WrapS);
+   rt->wrap_t = tex_wrap(t->WrapT);
+   for (int c = 0; c < 4; c++)
+      rt->border_color[c] = t->BorderColor[c];
+   /* both biases quantized when set (util_quantize_lod_bias: clamped to
+    * [-16, 16], rounded to 1/256), then sampler->lod_bias +=
+    * tex_unit_lod_bias (st_convert_sampler); min_lod is kept >= 0
+    * (samplerobj.c, texparam.c) */
+   rt->lod_bias = quantize_lod_bias(t->LodBias) + quantize_lod_bias(ctx->Texture.Unit[u].LodBias);
+   rt->min_lod = t->MinLod > 0.0f ? t->MinLod : 0.0f;
+   rt->max_lod = t->MaxLod;
+   /* use_aos [S: lp_bld_sample_soa.c:lp_build_sample_soa_code]: simple
+    * wraps on the used axes; the fast LOD [S: lp_bld_sample.c:
+    * lp_build_lod_selector] without bias, min_max_lod_equal,
+    * apply_min_lod or apply_max_lod (lp_sampler_static_sampler_state,
+    * whose LOD flags only count with a mip filter or min != mag) */
+   const bool simple_wrap = rt->wrap_s <= R_WRAP_CLAMP_TO_EDGE &&
+                            (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE);
+   const bool lod_used = rt->mip != R_MIP_NONE || rt->min_img != rt->mag_img;
+   const bool lod_clamps = lod_used && (rt->min_lod == rt->max_lod || rt->min_lod > 0.0f ||
+                                        rt->max_lod < 15.0f);   /* PIPE_MAX_TEXTURE_LEVELS - 1 */
+   rt->soa = !simple_wrap || rt->lod_bias != 0.0f || lod_clamps;
+}
+
+static uint8_t comb_mode(GLenum env, GLenum mode)
+{
+   switch (mode) {
+   case GL_REPLACE:                  return R_COMB_REPLACE;
+   case GL_MODULATE:                 return R_COMB_MODULATE;
+   case GL_ADD:        return env == GL_COMBINE4_NV ? R_COMB_ADD_PRODUCTS_NV : R_COMB_ADD;
+   case GL_ADD_SIGNED: return env == GL_COMBINE4_NV ? R_COMB_ADD_PRODUCTS_SIGNED_NV
+                                                    : R_COMB_ADD_SIGNED;
+   case GL_INTERPOLATE:              return R_COMB_INTERPOLATE;
+   case GL_SUBTRACT:                 return R_COMB_SUBTRACT;
+   case GL_DOT3_RGB:                 return R_COMB_DOT3_RGB;
+   case GL_DOT3_RGBA:                return R_COMB_DOT3_RGBA;
+   case GL_DOT3_RGB_EXT:             return R_COMB_DOT3_RGB_EXT;
+   case GL_DOT3_RGBA_EXT:            return R_COMB_DOT3_RGBA_EXT;
+   case GL_MODULATE_ADD_ATI:         return R_COMB_MODULATE_ADD_ATI;
+   case GL_MODULATE_SIGNED_ADD_ATI:  return R_COMB_MODULATE_SIGNED_ADD_ATI;
+   case GL_MODULATE_SUBTRACT_ATI:
+   default:                          return R_COMB_MODULATE_SUBTRACT_ATI;
+   }
+}
+
+static uint8_t comb_src(GLenum src)
+{
+   switch (src) {
+   case GL_TEXTURE:        return R_SRC_TEXTURE;
+   case GL_PREVIOUS:       return R_SRC_PREVIOUS;
+   case GL_PRIMARY_COLOR:  return R_SRC_PRIMARY_COLOR;
+   case GL_CONSTANT:       return R_SRC_CONSTANT;
+   case GL_ZERO:           return R_SRC_ZERO;
+   case GL_ONE:            return R_SRC_ONE;
+   default:                return (uint8_t)(R_SRC_TEXTURE0 + (src - GL_TEXTURE0));
+   }
+}
+
+static uint8_t comb_opr(GLenum opr)
+{
+   switch (opr) {
+   case GL_SRC_COLOR:           return R_OPR_COLOR;
+   case GL_ONE_MINUS_SRC_COLOR: return R_OPR_ONE_MINUS_COLOR;
+   case GL_SRC_ALPHA:           return R_OPR_ALPHA;
+   case GL_ONE_MINUS_SRC_ALPHA:
+   default:                     return R_OPR_ONE_MINUS_ALPHA;
+   }
+}
+
+/* The number of arguments of a combiner function
+ * [S: texstate.c:update_tex_combine]. */
+static uint8_t comb_nargs(GLenum env, GLenum mode)
+{
+   switch (mode) {
+   case GL_REPLACE:
+      return 1;
+   case GL_ADD:
+   case GL_ADD_SIGNED:
+      return env == GL_COMBINE4_NV ? 4 : 2;
+   case GL_INTERPOLATE:
+   case GL_MODULATE_ADD_ATI:
+   case GL_MODULATE_SIGNED_ADD_ATI:
+   case GL_MODULATE_SUBTRACT_ATI:
+      return 3;
+   default:
+      return 2;
+   }
+}
+
+/* The combiner state of a unit: the unit's own with GL_COMBINE, else the
+ * one Mesa derives from the env mode and the base format
+ * [S: texstate.c:calculate_derived_texenv, update_tex_combine,
+ * pack_tex_combine]. */
+static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format,
+                           struct r_tex_combine *k)
+{
+   GLenum mode_rgb, mode_a;
+   GLenum src_rgb[4] = { GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT, GL_CONSTANT };
+   GLenum src_a[4] = { GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT, GL_CONSTANT };
+   GLenum opr_rgb[4] = { GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA, GL_SRC_ALPHA };
+   GLenum opr_a[4] = { GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA };
+   unsigned shift_rgb = 0, shift_a = 0;
+   const GLenum env = tu->EnvMode;
+   if (env == GL_COMBINE || env == GL_COMBINE4_NV) {
+      mode_rgb = tu->CombineModeRGB;
+      mode_a = tu->CombineModeA;
+      for (int i = 0; i < 4; i++) {
+         src_rgb[i] = tu->SourceRGB[i];
+         src_a[i] = tu->SourceA[i];
+         opr_rgb[i] = tu->OperandRGB[i];
+         opr_a[i] = tu->OperandA[i];
+      }
+      shift_rgb = tu->ScaleShiftRGB;
+      shift_a = tu->ScaleShiftA;
+   } else {
+      const GLenum f = base_format;
+      if (f == GL_ALPHA)
+         src_rgb[0] = GL_PREVIOUS;
+      else if (f == GL_LUMINANCE || f == GL_RGB)
+         src_a[0] = GL_PREVIOUS;
+      switch (env) {
+      case GL_REPLACE:
+      case GL_MODULATE:
+      default:
+         mode_rgb = f == GL_ALPHA ? GL_REPLACE : env;
+         mode_a = env;
+         break;
+      case GL_DECAL:
+         mode_rgb = GL_INTERPOLATE;
+         mode_a = GL_REPLACE;
+         src_a[0] = GL_PREVIOUS;
+         if (f == GL_ALPHA || f == GL_LUMINANCE || f == GL_LUMINANCE_ALPHA || f == GL_INTENSITY)
+            src_rgb[0] = GL_PREVIOUS;
+         else if (f == GL_RGB)
+            mode_rgb = GL_REPLACE;
+         else
+            src_rgb[2] = GL_TEXTURE;
+         break;
+      case GL_BLEND:
+         mode_rgb = GL_INTERPOLATE;
+         mode_a = GL_MODULATE;
+         if (f == GL_ALPHA) {
+            mode_rgb = GL_REPLACE;
+         } else {
+            if (f == GL_INTENSITY) {
+               mode_a = GL_INTERPOLATE;
+               src_a[0] = GL_CONSTANT;
+               opr_a[2] = GL_SRC_ALPHA;
+            }
+            src_rgb[2] = GL_TEXTURE;
+            src_a[2] = GL_TEXTURE;
+            src_rgb[0] = GL_CONSTANT;
+            opr_rgb[2] = GL_SRC_COLOR;
+         }
+         break;
+      case GL_ADD:
+         mode_rgb = f == GL_ALPHA ? GL_REPLACE : GL_ADD;
+         mode_a = f == GL_INTENSITY ? GL_ADD : GL_MODULATE;
+         break;
+      }
+      if (src_rgb[0] == GL_PREVIOUS)
+         mode_rgb = GL_REPLACE;
+      if (src_a[0] == GL_PREVIOUS)
+         mode_a = GL_REPLACE;
+   }
+   memset(k, 0, sizeof(*k));
+   k->mode_rgb = comb_mode(env, mode_rgb);
+   k->mode_a = comb_mode(env, mode_a);
+   k->shift_rgb = (uint8_t)shift_rgb;
+   k->shift_a = (uint8_t)shift_a;
+   k->nargs_rgb = comb_nargs(env, mode_rgb);
+   k->nargs_a = comb_nargs(env, mode_a);
+   for (int i = 0; i < k->nargs_rgb; i++) {
+      k->src_rgb[i] = comb_src(src_rgb[i]);
+      k->opr_rgb[i] = comb_opr(opr_rgb[i]);
+   }
+   for (int i = 0; i < k->nargs_a; i++) {
+      k->src_a[i] = comb_src(src_a[i]);
+      k->opr_a[i] = comb_opr(opr_a[i]);
+   }
+}
+
+/* The texture units of the fixed-function fragment program
+ * (ff_fragment_shader.cpp make_state_key): every unit with a complete
+ * texture, walked up to the last one. */
+static void update_tex_units(const struct fgl_context *ctx, struct r_state *rs)
+{
+   rs->tex_units = 0;
+   rs->tex_nr = 0;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS && u < R_MAX_TEX_UNITS; u++) {
+      if (!(ctx->_EnabledTexUnits & (1u << u)))
+         continue;
+      const struct fgl_texture_object *t = ctx->_CurrentTex[u];
+      struct r_tex_unit *ru = &rs->tex[u];
+      update_texture(ctx, u, t, ctx->_CurrentTexTarget[u], &ru->tex);
+      const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
+      update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru->comb);
+      for (int c = 0; c < 4; c++)
+         ru->env_color[c] = tu->EnvColor[c];
+      rs->tex_units |= 1u << u;
+      rs->tex_nr = (int)u + 1;
+   }
+}
+
 /* GL comparison, stencil op, blend factor and equation enums to the raster
  * core's (st_atom_depth.c, st_atom_blend.c translate them the same way). */
 static enum r_stencil_op stencil_op(GLenum op)
@@ -234,6 +501,7 @@ void fgl_update_state(struct fgl_context *ctx)
             rs->num_attribs = R_ATTR_TEX0 + (int)u + 1;
          }
       }
+      update_tex_units(ctx, rs);
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
       rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;

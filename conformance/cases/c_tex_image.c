@@ -5,6 +5,7 @@
  * llvmpipe cannot create, glTexSubImage, glCopyTexImage and
  * glCopyTexSubImage from the colour buffer (clipped to it), and every
  * error path in Mesa's order. */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -848,6 +849,89 @@ static void readback_types_precision(fc_h *h)
     readback_types_of(h, f, sizeof f / sizeof f[0]);
 }
 
+/* The images as the oracle samples them: every internal format drawn
+ * NEAREST with GL_REPLACE and GL_MODULATE (a 4x4 texture on a 6x6 cell;
+ * each texel at least one pixel), then images made by glCopyTexImage,
+ * glTexSubImage and a stripped border. */
+static void draw_cell(int i, int cols)
+{
+    const float x = (float)(i % cols) * 6.0f, y = (float)(i / cols) * 6.0f;
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(x, y);
+    glTexCoord2f(1, 0); glVertex2f(x + 6, y);
+    glTexCoord2f(1, 1); glVertex2f(x + 6, y + 6);
+    glTexCoord2f(0, 1); glVertex2f(x, y + 6);
+    glEnd();
+}
+
+static bool wide_format(GLint f)
+{
+    switch (f) {
+    case GL_ALPHA12: case GL_ALPHA16: case GL_LUMINANCE12: case GL_LUMINANCE16:
+    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
+    case GL_INTENSITY12: case GL_INTENSITY16: case GL_RGB10: case GL_RGB12: case GL_RGB16:
+    case GL_RGB10_A2: case GL_RGBA12: case GL_RGBA16:
+        return true;
+    default:
+        return false;
+    }
+}
+
+/* wide: only the formats of more than 8 bits per channel (the oracle
+ * samples them on its float path), else the others */
+static void rendered_of(fc_h *h, bool wide)
+{
+    fill_src(61);
+    fc_pixel_ortho(h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glEnable(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    static const GLenum modes[2] = { GL_REPLACE, GL_MODULATE };
+    for (int m = 0; m < 2; m++) {
+        glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)modes[m]);
+        glColor4f(0.9f, 0.7f, 0.5f, 0.6f);
+        int cell = 0;
+        for (size_t f = 0; f < NFORMATS; f++) {
+            if (wide_format(formats[f]) != wide)
+                continue;
+            glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                         src + 16 * f);
+            draw_cell(cell++, 8);
+        }
+        fc_capture(h);
+    }
+    /* copies, sub-images, a border */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    static const GLint cf[] = { GL_RGB5, GL_RGB5_A1, GL_RGB565, GL_RGBA4, GL_LUMINANCE,
+                                GL_ALPHA, GL_INTENSITY, GL_LUMINANCE_ALPHA, GL_RGB10_A2,
+                                GL_RGBA, GL_RGBA16, GL_LUMINANCE16 };
+    int cell = 16;
+    for (size_t i = 0; i < sizeof cf / sizeof cf[0]; i++) {
+        if (wide_format(cf[i]) != wide)
+            continue;
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, (GLenum)cf[i], (GLint)(5 * i), 3, 4, 4, 0);
+        draw_cell(cell++, 8);
+    }
+    if (!wide) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5_A1, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 300);
+        draw_cell(cell++, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA4, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, src + 500);
+        draw_cell(cell++, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE4_ALPHA4, 4, 4, 0, GL_LUMINANCE_ALPHA,
+                     GL_UNSIGNED_BYTE, src + 700);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);
+        draw_cell(cell++, 8);
+    }
+    fc_capture(h);
+}
+
+static void rendered(fc_h *h) { rendered_of(h, false); }
+static void rendered_wide(fc_h *h) { rendered_of(h, true); }
+
 /* glGetTexImage and glGetTexLevelParameter errors. */
 static void query_errors(fc_h *h)
 {
@@ -959,6 +1043,8 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
     FC_CASE_RGBA("texture/image_dlist", 32, 32, 1, "texture dlist", lists),
     FC_CASE_RGBA("texture/image_sharing", 8, 8, 0, "texture api", sharing),
+    FC_CASE_RGBA("texture/image_rendered", 48, 36, 3, "texture", rendered),
+    FC_CASE_RGBA("texture/image_rendered_wide", 48, 36, 3, "texture", rendered_wide),
     FC_CASE_RGBA("texture/image_sharing_delete_bound", 8, 8, 0, "texture api",
                  sharing_delete_bound),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },

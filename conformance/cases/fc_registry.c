@@ -26,6 +26,8 @@ static const fc_case *const groups[] = {
     fc_cases_eval,
     fc_cases_pixelstate,
     fc_cases_rasterpos,
+    fc_cases_tex_sample,
+    fc_cases_tex_env,
 };
 
 size_t fc_case_count(void)

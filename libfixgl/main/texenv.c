@@ -37,6 +37,7 @@ void fgl_init_texenv(struct fgl_context *ctx)
 static void env_flush(struct fgl_context *ctx)
 {
    fgl_flush_vertices(ctx);
+   ctx->NewState |= FGL_NEW_TEXTURE;
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 

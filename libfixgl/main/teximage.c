@@ -124,6 +124,18 @@ static const struct tex_format tex_formats[] = {
    { GL_RGBA16, GL_RGBA, &PF_RGBA16 },
 };
 
+/* [S: util/format/u_format.c:util_format_fits_8unorm; llvmpipe's
+ * lp_bld_sample_soa.c picks its AoS 8-bit path only for such formats]
+ * whether no channel of the image's oracle format is wider than 8 bits:
+ * the 12/16-bit and 10-10-10-2 formats are sampled on the float path
+ * (texture/image_rendered_wide) */
+bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img)
+{
+   const struct fgl_tex_pipe_format *pf = img->Format;
+   return !pf || (pf->r <= 8 && pf->g <= 8 && pf->b <= 8 && pf->a <= 8 && pf->l <= 8 &&
+                  pf->i <= 8);
+}
+
 static const struct tex_format *find_format(GLint internal)
 {
    for (size_t i = 0; i < sizeof(tex_formats) / sizeof(tex_formats[0]); i++)

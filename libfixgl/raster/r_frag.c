@@ -203,13 +203,350 @@ static uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
    }
 }
 
-void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4])
+/* nir fsat as llvmpipe lowers it, fmin(fmax(x, 0), 1) with gallivm's
+ * NaN-returns-the-other-operand min/max: NaN gives 0 */
+static inline float fsat(float x)
 {
-   /* the fixed-function fragment program: the colour, plus the secondary
-    * colour's rgb with separate specular (ff_fragment_shader.cpp
-    * emit_instructions: rgb += spec.rgb) */
+   x = x > 0.0f ? x : 0.0f;
+   return x < 1.0f ? x : 1.0f;
+}
+
+/* The texture colours of the fragment program, looked up when a combiner
+ * first reads them (ff_fragment_shader.cpp load_texture: a projective
+ * lookup, coord * frcp(q); a GL_TEXTUREn source of a unit without a
+ * texture reads 0). */
+struct tex_cache {
+   unsigned have;
+   float c[R_MAX_TEX_UNITS][4];
+};
+
+static const float *tex_color(const struct r_state *rs, const float in[][4],
+                              const struct r_fs_quad *quad, struct tex_cache *tc, int u)
+{
+   if (tc->have & (1u << u))
+      return tc->c[u];
+   tc->have |= 1u << u;
+   if (!(rs->tex_units & (1u << u))) {
+      tc->c[u][0] = tc->c[u][1] = tc->c[u][2] = tc->c[u][3] = 0.0f;   /* dummy_tex */
+      return tc->c[u];
+   }
+   const struct r_texture *t = &rs->tex[u].tex;
+   const float *tcin = in[R_FS_TEX0 + u];
+   /* vec2 coord * frcp(q): the reciprocal is a true divide in gallivm */
+   const float rq = 1.0f / tcin[3];
+   const float c[3] = { tcin[0] * rq, tcin[1] * rq, tcin[2] * rq };
+   float qc[3][3];
+   for (int i = 0; i < 3; i++) {
+      const float *v = quad->tex[u][i];
+      const float r = 1.0f / v[3];
+      qc[i][0] = v[0] * r;
+      qc[i][1] = v[1] * r;
+      qc[i][2] = v[2] * r;
+   }
+   r_tex_sample(t, c, (const float (*)[3])qc, tc->c[u]);
+   return tc->c[u];
+}
+
+/* One combiner argument, all four channels
+ * [S: ff_fragment_shader.cpp:get_source, emit_combine_source]: 1 - x is
+ * an fadd of 1 and -x, which equals the float subtraction. */
+static void comb_arg(const struct r_state *rs, const float in[][4], const struct r_fs_quad *quad,
+                     struct tex_cache *tc, int unit, const float prev[4],
+                     int src, int opr, float v[4], float raw[4])
+{
+   const float *s;
+   float konst[4];
+   switch (src) {
+   case R_SRC_TEXTURE:        s = tex_color(rs, in, quad, tc, unit); break;
+   case R_SRC_PREVIOUS:       s = prev; break;
+   case R_SRC_PRIMARY_COLOR:  s = in[R_FS_COLOR0]; break;
+   case R_SRC_CONSTANT:       s = rs->tex[unit].env_color; break;
+   case R_SRC_ZERO:
+   case R_SRC_ONE:
+      konst[0] = konst[1] = konst[2] = konst[3] = src == R_SRC_ONE ? 1.0f : 0.0f;
+      s = konst;
+      break;
+   default:                   s = tex_color(rs, in, quad, tc, src - R_SRC_TEXTURE0); break;
+   }
+   for (int c = 0; c < 4; c++) {
+      raw[c] = opr == R_OPR_COLOR || opr == R_OPR_ONE_MINUS_COLOR ? s[c] : s[3];
+      switch (opr) {
+      case R_OPR_COLOR:           v[c] = s[c]; break;
+      case R_OPR_ONE_MINUS_COLOR: v[c] = 1.0f - s[c]; break;
+      case R_OPR_ALPHA:           v[c] = s[3]; break;
+      case R_OPR_ONE_MINUS_ALPHA:
+      default:                    v[c] = 1.0f - s[3]; break;
+      }
+   }
+}
+
+static bool comb_need_saturate(int mode)
+{
+   return !(mode == R_COMB_REPLACE || mode == R_COMB_MODULATE || mode == R_COMB_INTERPOLATE);
+}
+
+static bool is_one_minus(int opr)
+{
+   return opr == R_OPR_ONE_MINUS_COLOR || opr == R_OPR_ONE_MINUS_ALPHA;
+}
+
+/* Which value an argument's channel c is in the compiled shader (NIR's CSE
+ * merges equal expressions, and nir_opt_algebraic then factors
+ * a*b + a*c into a*(b + c)): its source (the unit's own texture is its
+ * GL_TEXTUREn; the first unit's PREVIOUS is the primary colour, the same
+ * gl_Color load), whether it is 1 - x and the component read.  GL_ZERO and
+ * GL_ONE fold away first: -1, never equal. */
+static int arg_key(int src, bool one_minus, bool alpha, int c, int unit, bool prev_is_primary)
+{
+   if (src == R_SRC_ZERO || src == R_SRC_ONE)
+      return -1;
+   if (src == R_SRC_TEXTURE)
+      src = R_SRC_TEXTURE0 + unit;
+   if (src == R_SRC_PREVIOUS && prev_is_primary)
+      src = R_SRC_PRIMARY_COLOR;
+   return src * 16 + (one_minus ? 8 : 0) + (alpha ? 3 : c);
+}
+
+static inline bool same_key(int a, int b)
+{
+   return a >= 0 && a == b;
+}
+
+/* emit_combine for channels [c0, c1) [S: ff_fragment_shader.cpp:
+ * emit_combine], as NIR optimizes it before llvmpipe compiles it (every op
+ * rounded on its own: llvmpipe lowers ffma; ST_DEBUG=nir shows the
+ * reassociations nir_opt_algebraic makes, noted below). */
+static void emit_combine(const struct r_state *rs, const float in[][4],
+                         const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
+                         const float prev[4], bool prev_is_primary, int nargs, int mode,
+                         const uint8_t *src, const uint8_t *opr, int c0, int c1, float res[4])
+{
+   /* a: the arguments; x: their sources before a 1 - x operand */
+   float a[4][4], x4[4][4];
+   for (int i = 0; i < nargs; i++)
+      comb_arg(rs, in, quad, tc, unit, prev, src[i], opr[i], a[i], x4[i]);
+   switch (mode) {
+   case R_COMB_DOT3_RGB:
+   case R_COMB_DOT3_RGBA:
+   case R_COMB_DOT3_RGB_EXT:
+   case R_COMB_DOT3_RGBA_EXT: {
+      /* (a*2 + -1) . (b*2 + -1) over xyz, smeared; fdot3 is reduced
+       * from the last component: (z*z' + y*y') + x*x' */
+      float x[3], y[3];
+      for (int k = 0; k < 3; k++) {
+         x[k] = a[0][k] * 2.0f + -1.0f;
+         y[k] = a[1][k] * 2.0f + -1.0f;
+      }
+      const float d = (x[2] * y[2] + x[1] * y[1]) + x[0] * y[0];
+      for (int c = c0; c < c1; c++)
+         res[c] = d;
+      return;
+   }
+   default:
+      break;
+   }
+   for (int c = c0; c < c1; c++) {
+      float r;
+      int key[4] = { -1, -1, -1, -1 };
+      if (mode == R_COMB_INTERPOLATE || mode == R_COMB_ADD_PRODUCTS_NV ||
+          mode == R_COMB_ADD_PRODUCTS_SIGNED_NV) {
+         for (int i = 0; i < nargs; i++)
+            key[i] = arg_key(src[i], is_one_minus(opr[i]),
+                             opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
+                             unit, prev_is_primary);
+      }
+      switch (mode) {
+      case R_COMB_REPLACE:
+         r = a[0][c];
+         break;
+      case R_COMB_MODULATE:
+         r = a[0][c] * a[1][c];
+         break;
+      case R_COMB_ADD:
+         r = a[0][c] + a[1][c];
+         break;
+      case R_COMB_ADD_SIGNED:
+         /* (a0 + a1) + -0.5 becomes (a0 + -0.5) + a1 (nir_opt_algebraic
+          * "Prefer moving out a multiplication": (a + b) + #c ->
+          * (a + c) + b); with a0 = 1 - x the constants fold,
+          * -0.5 + (1 + -x) -> 0.5 + -x; a1 = 1 - x stays unfolded (both
+          * checked against the oracle's float output; GL_ZERO/GL_ONE
+          * arguments fold to the same values) */
+         if (is_one_minus(opr[0]) && src[0] != R_SRC_ZERO && src[0] != R_SRC_ONE)
+            r = (0.5f + -x4[0][c]) + a[1][c];
+         else
+            r = (a[0][c] + -0.5f) + a[1][c];
+         break;
+      case R_COMB_INTERPOLATE: {
+         /* a0*a2 + a1*b, b = 1 - a2; with a2 = 1 - x, b = 1 - (1 - x)
+          * folds to x (nir_opt_algebraic: a + -(a + b) -> -b); a common
+          * factor of the two products is taken out, a*b + a*c ->
+          * a*(b + c) (all checked against the oracle's float output) */
+         const float b = is_one_minus(opr[2]) && key[2] >= 0 ? x4[2][c] : 1.0f - a[2][c];
+         const int kb = key[2] >= 0 ? (key[2] ^ 8) : -1;
+         if (same_key(key[0], key[1]))
+            r = a[0][c] * (a[2][c] + b);
+         else if (same_key(key[0], kb))
+            r = a[0][c] * (a[2][c] + a[1][c]);
+         else if (same_key(key[2], key[1]))
+            r = a[2][c] * (a[0][c] + b);
+         else
+            r = a[0][c] * a[2][c] + a[1][c] * b;
+         break;
+      }
+      case R_COMB_SUBTRACT:
+         r = a[0][c] - a[1][c];
+         break;
+      case R_COMB_MODULATE_ADD_ATI:
+         r = a[0][c] * a[2][c] + a[1][c];
+         break;
+      case R_COMB_MODULATE_SIGNED_ADD_ATI:
+         /* (a0*a2 + a1) + -0.5 -> (a1 + -0.5) + a0*a2, with a1 = 1 - x
+          * folded to (0.5 + -x) + a0*a2 as for ADD_SIGNED */
+         if (is_one_minus(opr[1]) && src[1] != R_SRC_ZERO && src[1] != R_SRC_ONE)
+            r = (0.5f + -x4[1][c]) + a[0][c] * a[2][c];
+         else
+            r = (a[1][c] + -0.5f) + a[0][c] * a[2][c];
+         break;
+      case R_COMB_MODULATE_SUBTRACT_ATI:
+         r = a[0][c] * a[2][c] - a[1][c];
+         break;
+      case R_COMB_ADD_PRODUCTS_NV:
+      case R_COMB_ADD_PRODUCTS_SIGNED_NV:
+      default: {
+         /* a0*a1 + a2*a3, a common factor taken out first; the signed
+          * form adds -0.5 to the first product, (p0 + -0.5) + p1, unless
+          * factored */
+         const float *f = NULL;
+         float u = 0.0f, v = 0.0f;
+         if (same_key(key[0], key[2])) { f = a[0]; u = a[1][c]; v = a[3][c]; }
+         else if (same_key(key[0], key[3])) { f = a[0]; u = a[1][c]; v = a[2][c]; }
+         else if (same_key(key[1], key[2])) { f = a[1]; u = a[0][c]; v = a[3][c]; }
+         else if (same_key(key[1], key[3])) { f = a[1]; u = a[0][c]; v = a[2][c]; }
+         if (f) {
+            r = f[c] * (u + v);
+            if (mode == R_COMB_ADD_PRODUCTS_SIGNED_NV)
+               r = r + -0.5f;
+         } else if (mode == R_COMB_ADD_PRODUCTS_SIGNED_NV) {
+            r = (a[0][c] * a[1][c] + -0.5f) + a[2][c] * a[3][c];
+         } else {
+            r = a[0][c] * a[1][c] + a[2][c] * a[3][c];
+         }
+         break;
+      }
+      }
+      res[c] = r;
+   }
+}
+
+/* Whether the RGB and alpha arguments match [S: ff_fragment_shader.cpp:
+ * args_match]. */
+static bool args_match(const struct r_tex_combine *k)
+{
+   for (int i = 0; i < k->nargs_rgb; i++) {
+      if (k->src_a[i] != k->src_rgb[i])
+         return false;
+      switch (k->opr_a[i]) {
+      case R_OPR_ALPHA:
+         if (k->opr_rgb[i] != R_OPR_COLOR && k->opr_rgb[i] != R_OPR_ALPHA)
+            return false;
+         break;
+      case R_OPR_ONE_MINUS_ALPHA:
+         if (k->opr_rgb[i] != R_OPR_ONE_MINUS_COLOR && k->opr_rgb[i] != R_OPR_ONE_MINUS_ALPHA)
+            return false;
+         break;
+      default:
+         return false;
+      }
+   }
+   return true;
+}
+
+/* One unit's environment [S: ff_fragment_shader.cpp:emit_texenv]. */
+static void emit_texenv(const struct r_state *rs, const float in[][4],
+                        const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
+                        const float prev[4], bool first, float res[4])
+{
+   const struct r_tex_combine *k = &rs->tex[unit].comb;
+   unsigned rgb_shift = k->shift_rgb, alpha_shift = k->shift_a;
+   if (k->mode_rgb == R_COMB_DOT3_RGB_EXT) {
+      rgb_shift = 0;
+   } else if (k->mode_rgb == R_COMB_DOT3_RGBA_EXT) {
+      rgb_shift = 0;
+      alpha_shift = 0;
+   }
+   const bool rgb_sat = !rgb_shift && comb_need_saturate(k->mode_rgb);
+   const bool alpha_sat = !alpha_shift && comb_need_saturate(k->mode_a);
+
+   if (k->mode_rgb == k->mode_a && args_match(k)) {
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
+                   k->src_rgb, k->opr_rgb, 0, 4, res);
+      if (rgb_sat)
+         for (int c = 0; c < 4; c++)
+            res[c] = fsat(res[c]);
+   } else if (k->mode_rgb == R_COMB_DOT3_RGBA || k->mode_rgb == R_COMB_DOT3_RGBA_EXT) {
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
+                   k->src_rgb, k->opr_rgb, 0, 4, res);
+      if (rgb_sat)
+         for (int c = 0; c < 4; c++)
+            res[c] = fsat(res[c]);
+   } else {
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
+                   k->src_rgb, k->opr_rgb, 0, 3, res);
+      if (rgb_sat)
+         for (int c = 0; c < 3; c++)
+            res[c] = fsat(res[c]);
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_a, k->mode_a,
+                   k->src_a, k->opr_a, 3, 4, res);
+      if (alpha_sat)
+         res[3] = fsat(res[3]);
+   }
+   /* the final shift: saturate(val * (2^rgb_shift, ..., 2^alpha_shift)),
+    * on every channel once either shift is set (a factor 1 is dropped) */
+   if (rgb_shift || alpha_shift) {
+      for (int c = 0; c < 4; c++) {
+         const unsigned sh = c < 3 ? rgb_shift : alpha_shift;
+         res[c] = fsat(sh ? res[c] * (float)(1u << sh) : res[c]);
+      }
+   }
+}
+
+/* The texture environments of the enabled units in order, each on the
+ * previous one's result, the first on the fragment colour
+ * (ff_fragment_shader.cpp emit_instructions); kept out of line so the
+ * untextured fragment program stays small. */
+static __attribute__((noinline)) void texture_units(const struct r_state *rs, const float in[][4],
+                                                    const struct r_fs_quad *quad, float out[4])
+{
+   struct tex_cache tc;
+   tc.have = 0;
+   float prev[4], res[4];
+   bool first = true;   /* PREVIOUS is still the primary colour */
    for (int c = 0; c < 4; c++)
-      out[c] = in[R_FS_COLOR0][c];
+      prev[c] = in[R_FS_COLOR0][c];
+   for (int u = 0; u < rs->tex_nr; u++) {
+      if (!(rs->tex_units & (1u << u)))
+         continue;
+      emit_texenv(rs, in, quad, &tc, u, prev, first, res);
+      first = false;
+      for (int c = 0; c < 4; c++)
+         prev[c] = res[c];
+   }
+   for (int c = 0; c < 4; c++)
+      out[c] = prev[c];
+}
+
+void r_fragment_shader(const struct r_state *rs, const float in[][4],
+                       const struct r_fs_quad *quad, float out[4])
+{
+   if (rs->tex_units) {
+      texture_units(rs, in, quad, out);
+   } else {
+      for (int c = 0; c < 4; c++)
+         out[c] = in[R_FS_COLOR0][c];
+   }
+   /* the secondary colour's rgb with separate specular
+    * (ff_fragment_shader.cpp emit_instructions: rgb += spec.rgb) */
    if (rs->color_sum) {
       for (int c = 0; c < 3; c++)
          out[c] = out[c] + in[R_FS_COLOR1][c];

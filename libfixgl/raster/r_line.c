@@ -98,7 +98,28 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
          in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], fx, fy) * rw;
    }
    float color[4];
-   r_fragment_shader(rs, (const float (*)[4])in, color);
+   if (rs->tex_units) {
+      /* the quad's texture coordinates from the line's planes
+       * (llvmpipe-facts.md §5) */
+      static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
+      struct r_fs_quad quad;
+      const int qx = px & ~1, qy = py & ~1;
+      for (int i = 0; i < 3; i++) {
+         const float qfx = (float)(qx + dx[i]), qfy = (float)(qy + dy[i]);
+         const float qrw = 1.0f / eval_plane(&ls->w, qfx, qfy);
+         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+            if (!(rs->tex_units & (1u << u)))
+               continue;
+            const int a = R_FS_TEX0 + u;
+            for (int k = 0; k < 4; k++)
+               quad.tex[u][i][k] = ls->flat_attr[a] ? ls->flat[a][k]
+                                                    : eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
+         }
+      }
+      r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
+   } else {
+      r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
+   }
    r_fragment_ops(rs, px, py, eval_plane(&ls->z, fx, fy), color);
 }
 

@@ -67,8 +67,18 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
       for (int c = 0; c < 4; c++)
          in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
    }
+   /* the quad's texture coordinates are the vertex's too: zero
+    * derivatives, so the texture is magnified */
+   struct r_fs_quad quad;
+   for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+      if (!(rs->tex_units & (1u << u)))
+         continue;
+      for (int i = 0; i < 3; i++)
+         for (int c = 0; c < 4; c++)
+            quad.tex[u][i][c] = in[R_FS_TEX0 + u][c];
+   }
    float color[4];
-   r_fragment_shader(rs, (const float (*)[4])in, color);
+   r_fragment_shader(rs, (const float (*)[4])in, rs->tex_units ? &quad : NULL, color);
    for (int32_t py = by0; py <= by1; py++) {
       for (int32_t px = bx0; px <= bx1; px++) {
          if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))

@@ -115,6 +115,127 @@ enum r_aa_mode {
    R_AA_LINE,        /* nir_lower_aaline_fs */
 };
 
+/* ---- textures (r_tex.c, r_tex_soa.c) ----------------------------------
+ *
+ * A texture as the sampler sees it: its levels as RGBA8 texels (already
+ * expanded from the base format, row 0 at t = 0), the gallium sampler state
+ * the state tracker derives from the GL object and unit
+ * [S: state_tracker/st_atom_sampler.c:st_convert_sampler,
+ * st_atom_texture.c], and which of llvmpipe's two sampling paths the
+ * oracle takes for it [S: gallivm/lp_bld_sample_soa.c:
+ * lp_build_sample_soa_code, use_aos]:
+ *  - the fixed-point AoS path (r_tex.c): 8-bit unorm texels (always, here)
+ *    with wrap modes REPEAT or CLAMP_TO_EDGE on every used axis;
+ *  - the float SoA path (r_tex_soa.c, owned by the `texsoa` work): any
+ *    other wrap mode (GL_CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT).
+ * The level of detail is computed by one of two paths as well
+ * [S: gallivm/lp_bld_sample.c:lp_build_lod_selector]: the fast one when the
+ * sampler has no LOD bias and no min/max LOD clamp (r_tex.c), the general
+ * one otherwise (r_tex_soa.c).  `soa` is set by state.c when either the
+ * sampling or the LOD needs the general path; r_tex_sample then hands the
+ * whole lookup to r_tex_sample_soa. */
+#define R_MAX_TEX_LEVELS 15
+
+enum r_tex_filter { R_TEX_NEAREST, R_TEX_LINEAR };
+enum r_tex_mip { R_MIP_NONE, R_MIP_NEAREST, R_MIP_LINEAR };
+enum r_tex_wrap {
+   R_WRAP_REPEAT, R_WRAP_CLAMP_TO_EDGE,          /* the AoS path */
+   R_WRAP_CLAMP, R_WRAP_CLAMP_TO_BORDER, R_WRAP_MIRRORED_REPEAT,
+};
+
+struct r_tex_level {
+   int width, height;            /* height 1 for 1D */
+   const uint8_t *data;          /* width * height RGBA8 texels */
+};
+
+struct r_texture {
+   int dims;                     /* 1 (GL_TEXTURE_1D) or 2 (GL_TEXTURE_2D) */
+   int first_level, last_level;  /* BaseLevel .. _MaxLevel */
+   struct r_tex_level level[R_MAX_TEX_LEVELS];
+   /* the resource's level-0 size is a power of two (the REPEAT wrap of
+    * every level uses the pot or npot code by it; lp_bld_sample.c
+    * lp_sampler_static_texture_state pot_width/pot_height) */
+   bool pot_s, pot_t;
+   enum r_tex_filter min_img, mag_img;
+   enum r_tex_mip mip;
+   enum r_tex_wrap wrap_s, wrap_t;
+   float border_color[4];        /* for r_tex_soa.c */
+   float lod_bias;               /* object + unit bias (st_convert_sampler) */
+   float min_lod, max_lod;       /* GL_TEXTURE_MIN_LOD / MAX_LOD */
+   bool soa;                     /* the lookup goes to r_tex_sample_soa */
+};
+
+/* Texture combiner state of one unit after Mesa derives it from the env
+ * mode and the base format [S: main/texstate.c:calculate_derived_texenv,
+ * update_tex_combine, pack_tex_combine] (GL_COMBINE takes the unit's own
+ * combiner state).  Modes, sources and operands are Mesa's TEXENV_*
+ * values [S: main/mtypes.h, TEXENV_MODE_*, TEXENV_SRC_*,
+ * TEXENV_OPR_*]. */
+enum r_comb_mode {
+   R_COMB_REPLACE, R_COMB_MODULATE, R_COMB_ADD, R_COMB_ADD_SIGNED,
+   R_COMB_INTERPOLATE, R_COMB_SUBTRACT, R_COMB_DOT3_RGB, R_COMB_DOT3_RGBA,
+   R_COMB_DOT3_RGB_EXT, R_COMB_DOT3_RGBA_EXT, R_COMB_MODULATE_ADD_ATI,
+   R_COMB_MODULATE_SIGNED_ADD_ATI, R_COMB_MODULATE_SUBTRACT_ATI,
+   R_COMB_ADD_PRODUCTS_NV, R_COMB_ADD_PRODUCTS_SIGNED_NV,
+};
+enum r_comb_src {
+   R_SRC_TEXTURE, R_SRC_TEXTURE0,  /* R_SRC_TEXTURE0 + n: GL_TEXTUREn */
+   R_SRC_PREVIOUS = R_SRC_TEXTURE0 + R_MAX_TEX_UNITS,
+   R_SRC_PRIMARY_COLOR, R_SRC_CONSTANT, R_SRC_ZERO, R_SRC_ONE,
+};
+enum r_comb_operand {
+   R_OPR_COLOR, R_OPR_ONE_MINUS_COLOR, R_OPR_ALPHA, R_OPR_ONE_MINUS_ALPHA,
+};
+
+struct r_tex_combine {
+   uint8_t mode_rgb, mode_a;     /* enum r_comb_mode */
+   uint8_t shift_rgb, shift_a;   /* log2 of RGB_SCALE / ALPHA_SCALE */
+   uint8_t nargs_rgb, nargs_a;
+   uint8_t src_rgb[4], opr_rgb[4], src_a[4], opr_a[4];
+};
+
+struct r_tex_unit {
+   struct r_texture tex;
+   struct r_tex_combine comb;
+   float env_color[4];           /* GL_TEXTURE_ENV_COLOR, clamped */
+};
+
+/* The texture coordinates (s, t, r, q as interpolated) of the pixels of a
+ * fragment's 2x2 quad that the level of detail needs: quads are aligned to
+ * even y-down coordinates and the derivatives come from the quad's top-left
+ * pixel, whether or not the other pixels are covered
+ * [S: gallivm/lp_bld_quad.c:lp_build_packed_ddx_ddy_twocoord,
+ * lp_bld_sample.c:lp_build_rho] (llvmpipe-facts.md §5). */
+enum { R_QUAD_TL, R_QUAD_TR, R_QUAD_BL };
+struct r_fs_quad {
+   float tex[R_MAX_TEX_UNITS][3][4];   /* [unit][R_QUAD_*][s, t, r, q] */
+};
+
+/* A texture lookup (r_tex.c): the coordinate c (s, t, r after the
+ * projective divide) of the fragment, those of its quad's top-left,
+ * top-right and bottom-left pixels (for the level of detail), to the
+ * texel as floats (t * (1/255) per channel for unorm8). */
+void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
+                  float out[4]);
+/* The AoS path with the fast LOD (r_tex.c), whatever `soa` says. */
+void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4]);
+/* lp_build_rho of a quad's projected coordinates (TL, TR, BL) with the
+ * size of the first level: squared for 2D, max(|ds|) * W for 1D (r_tex.c),
+ * shared by both LOD paths. */
+float r_tex_rho(const struct r_texture *t, const float q[3][3]);
+/* The AoS filtering alone, given the LOD selector's results (for the
+ * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still
+ * filters on the AoS path): minify picks the min or mag image filter
+ * (when they differ), level0/level1 are absolute level indices and weight
+ * the 8-bit mip lerp weight (R_MIP_LINEAR; 0 for one level). */
+void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
+                      int level0, int level1, int weight, float out[4]);
+/* The dispatch point of the float SoA path and the general LOD path
+ * (r_tex_soa.c): called by r_tex_sample for a texture with `soa` set. */
+void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4]);
+
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
  * clamping, w = 1/clip_w) and its varyings. */
 struct r_vertex {
@@ -207,15 +328,26 @@ struct r_state {
    /* smooth point/line quads: the fragment shader's coverage lowering
     * (R_FS_AA is then one of fs_inputs) */
    enum r_aa_mode aa;
+
+   /* texturing: bit u of tex_units is set for each unit with a complete
+    * texture (ff_fragment_shader.cpp key->unit[u].enabled), units
+    * 0 .. tex_nr - 1 are walked in order (nr_enabled_units); the fragment
+    * program is untouched (no per-pixel cost) when tex_units is 0 */
+   unsigned tex_units;
+   int tex_nr;
+   struct r_tex_unit tex[R_MAX_TEX_UNITS];
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.
  * r_fragment_shader: the fixed-function fragment program, from the
- *   interpolated inputs (R_FS_*) to the fragment colour.
+ *   interpolated inputs (R_FS_*) to the fragment colour; quad holds the
+ *   texture coordinates of the fragment's quad (read only for the units
+ *   in tex_units; NULL when tex_units is 0).
  * r_fragment_ops: the per-fragment operations in the specification's order
  *   on pixel (px, py) inside the draw region, with the fragment's depth
  *   before clamping. */
-void r_fragment_shader(const struct r_state *rs, const float in[][4], float out[4]);
+void r_fragment_shader(const struct r_state *rs, const float in[][4],
+                       const struct r_fs_quad *quad, float out[4]);
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4]);
 
 /* The smooth point/line lowering appended to the fragment shader

@@ -1,0 +1,275 @@
+/*
+ * Texture sampling, bit-exact with llvmpipe's fixed-point AoS path for
+ * 8-bit unorm textures (llvmpipe-facts.md §5; probes t13, t15) and its
+ * fast level-of-detail selection [S: gallivm/lp_bld_sample_aos.c,
+ * lp_bld_sample.c:lp_build_rho, lp_build_lod_selector, lp_bld_arit.c:
+ * lp_build_fast_log2, lp_build_ilog2].
+ *
+ * Dispatch: r_tex_sample handles the samplers state.c marks as AoS with
+ * the fast LOD (wraps REPEAT / CLAMP_TO_EDGE, no LOD bias, no min/max LOD
+ * clamp); every other sampler (`soa` set: GL_CLAMP, CLAMP_TO_BORDER,
+ * MIRRORED_REPEAT, LOD bias, MIN_LOD/MAX_LOD) goes whole to
+ * r_tex_sample_soa (r_tex_soa.c), with the same arguments: the fragment's
+ * projected coordinate and those of the top-left, top-right and
+ * bottom-left pixels of its quad.
+ */
+#include "r_state.h"
+
+#include <math.h>
+#include <string.h>
+
+static inline uint32_t f2u(float f)
+{
+   uint32_t u;
+   memcpy(&u, &f, 4);
+   return u;
+}
+
+static inline float u2f(uint32_t u)
+{
+   float f;
+   memcpy(&f, &u, 4);
+   return f;
+}
+
+/* cvtps2dq / cvttps2dq of values outside int32 give INT32_MIN */
+static inline int32_t iround_even(float f)
+{
+   if (!(f >= -2147483648.0f && f < 2147483648.0f))
+      return INT32_MIN;
+   return r_round_even(f);
+}
+
+static inline int32_t itrunc(float f)
+{
+   if (!(f >= -2147483648.0f && f < 2147483648.0f))
+      return INT32_MIN;
+   return (int32_t)f;
+}
+
+static inline int32_t ifloor(float f)
+{
+   return itrunc(floorf(f));
+}
+
+/* [S: lp_bld_arit.c:lp_build_lerp_simple] on 8-bit channels with SSSE3 /
+ * AVX2: pmulhrsw rounding, (w*(b-a) + 128) >> 8, then the low 8 bits. */
+static inline int lerp8(int w, int a, int b)
+{
+   return (a + ((w * (b - a) + 128) >> 8)) & 0xff;
+}
+
+static inline int clampi(int i, int lo, int hi)
+{
+   return i < lo ? lo : (i > hi ? hi : i);
+}
+
+/* lp_build_fract_safe: s - floor(s), kept below 1 */
+static inline float fract_safe(float s)
+{
+   const float f = s - floorf(s);
+   return f < 0.99999994f ? f : 0.99999994f;
+}
+
+/* Texel index of NEAREST filtering along one axis of size n
+ * [S: lp_bld_sample_aos.c:lp_build_sample_wrap_nearest_int]. */
+static int wrap_nearest(float s, int n, bool pot, enum r_tex_wrap wrap)
+{
+   if (wrap == R_WRAP_REPEAT) {
+      if (pot)
+         return ifloor(s * (float)n) & (n - 1);
+      return itrunc(fract_safe(s) * (float)n);
+   }
+   /* CLAMP_TO_EDGE */
+   return clampi(ifloor(s * (float)n), 0, n - 1);
+}
+
+/* Texel indices and 8-bit weight of LINEAR filtering along one axis
+ * [S: lp_bld_sample_aos.c:lp_build_sample_wrap_linear_int]: the
+ * coordinate in 24.8 fixed point (RNE), minus half a texel. */
+static void wrap_linear(float s, int n, bool pot, enum r_tex_wrap wrap,
+                        int *i0, int *i1, int *w)
+{
+   if (wrap == R_WRAP_REPEAT && !pot) {
+      const float v = (fract_safe(s) * (float)n) * 256.0f;
+      int i = iround_even(v) - 128;
+      *w = i & 255;
+      i >>= 8;
+      if (i < 0)
+         i = n - 1;
+      if (i > n - 1)
+         i = n - 1;
+      *i0 = i;
+      *i1 = i != n - 1 ? i + 1 : 0;
+      return;
+   }
+   const int u = (int)((uint32_t)iround_even(s * (float)(n << 8)) - 128u);
+   *w = u & 255;
+   const int i = u >> 8;
+   if (wrap == R_WRAP_REPEAT) {
+      *i0 = i & (n - 1);
+      *i1 = (i + 1) & (n - 1);
+   } else {
+      *i0 = clampi(i, 0, n - 1);
+      *i1 = (i < 0 || i >= n - 1) ? *i0 : i + 1;
+   }
+}
+
+static inline const uint8_t *texel(const struct r_tex_level *l, int x, int y)
+{
+   return l->data + 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+}
+
+/* One level, one image filter, to 8-bit channels
+ * [S: lp_bld_sample_aos.c:lp_build_sample_image_nearest,
+ * lp_build_sample_image_linear]: lerp along s on rows t0 and t1, then
+ * along t. */
+static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter filter,
+                         const float c[3], int out[4])
+{
+   const struct r_tex_level *l = &t->level[lvl];
+   if (filter == R_TEX_NEAREST) {
+      const int i = wrap_nearest(c[0], l->width, t->pot_s, t->wrap_s);
+      const int j = t->dims > 1 ? wrap_nearest(c[1], l->height, t->pot_t, t->wrap_t) : 0;
+      const uint8_t *p = texel(l, i, j);
+      for (int k = 0; k < 4; k++)
+         out[k] = p[k];
+      return;
+   }
+   int i0, i1, ws;
+   wrap_linear(c[0], l->width, t->pot_s, t->wrap_s, &i0, &i1, &ws);
+   if (t->dims == 1) {
+      const uint8_t *a = texel(l, i0, 0), *b = texel(l, i1, 0);
+      for (int k = 0; k < 4; k++)
+         out[k] = lerp8(ws, a[k], b[k]);
+      return;
+   }
+   int j0, j1, wt;
+   wrap_linear(c[1], l->height, t->pot_t, t->wrap_t, &j0, &j1, &wt);
+   const uint8_t *a = texel(l, i0, j0), *b = texel(l, i1, j0);
+   const uint8_t *d = texel(l, i0, j1), *e = texel(l, i1, j1);
+   for (int k = 0; k < 4; k++)
+      out[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, d[k], e[k]));
+}
+
+/* rho of the quad [S: lp_bld_sample.c:lp_build_rho] from the base
+ * level's size.  2D (no_rho_approx): the squared length,
+ * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2).  1D (the
+ * approximation stays on for one dimension): max(|dsdx|, |dsdy|) * W, not
+ * squared. */
+float r_tex_rho(const struct r_texture *t, const float q[3][3])
+{
+   const struct r_tex_level *l = &t->level[t->first_level];
+   const float fw = (float)l->width;
+   if (t->dims == 1) {
+      const float dx = fabsf(q[R_QUAD_TR][0] - q[R_QUAD_TL][0]);
+      const float dy = fabsf(q[R_QUAD_TL][0] - q[R_QUAD_BL][0]);
+      const float m = dx > dy ? dx : dy;
+      return m * fw;
+   }
+   const float fh = (float)l->height;
+   float dsdx = (q[R_QUAD_TR][0] - q[R_QUAD_TL][0]) * fw;
+   float dsdy = (q[R_QUAD_BL][0] - q[R_QUAD_TL][0]) * fw;
+   float dtdx = (q[R_QUAD_TR][1] - q[R_QUAD_TL][1]) * fh;
+   float dtdy = (q[R_QUAD_BL][1] - q[R_QUAD_TL][1]) * fh;
+   dsdx = dsdx * dsdx;
+   dsdy = dsdy * dsdy;
+   dtdx = dtdx * dtdx;
+   dtdy = dtdy * dtdy;
+   const float rx = dsdx + dtdx, ry = dsdy + dtdy;
+   return rx > ry ? rx : ry;
+}
+
+/* biased exponent field of a float */
+static inline int float_exp(float x)
+{
+   return (int)((f2u(x) >> 23) & 255u);
+}
+
+void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
+                  float out[4])
+{
+   if (t->soa)
+      r_tex_sample_soa(t, c, quad, out);
+   else
+      r_tex_sample_aos(t, c, quad, out);
+}
+
+void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
+                      int level0, int level1, int weight, float out[4])
+{
+   int texel8[4];
+   if (!minify && t->mag_img != t->min_img) {
+      /* the magnification branch: one level, no mip filter
+       * [S: lp_bld_sample_aos.c:lp_build_sample_aos] */
+      sample_level(t, level0, t->mag_img, c, texel8);
+   } else if (t->mip == R_MIP_NONE) {
+      sample_level(t, t->first_level, minify ? t->min_img : t->mag_img, c, texel8);
+   } else {
+      /* [S: lp_bld_sample_aos.c:lp_build_sample_mipmap] */
+      sample_level(t, level0, t->min_img, c, texel8);
+      if (t->mip == R_MIP_LINEAR && weight > 0) {
+         int t1[4];
+         sample_level(t, level1, t->min_img, c, t1);
+         for (int k = 0; k < 4; k++)
+            texel8[k] = lerp8(weight, texel8[k], t1[k]);
+      }
+   }
+   /* unorm8 to float: a multiply by (float)(1.0/255.0)
+    * [S: lp_bld_conv.c:lp_build_unsigned_norm_to_float] */
+   const float scale = (float)(1.0 / 255.0);
+   for (int k = 0; k < 4; k++)
+      out[k] = (float)texel8[k] * scale;
+}
+
+void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4])
+{
+   const int first = t->first_level, last = t->last_level;
+   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
+      /* no level of detail at all */
+      r_tex_filter_aos(t, c, true, first, first, 0, out);
+      return;
+   }
+   /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
+   const float rho = r_tex_rho(t, quad);
+   const bool squared = t->dims > 1;
+   bool minify;
+   int level0 = first, level1 = first, weight = 0;
+   if (t->mip != R_MIP_LINEAR) {
+      /* lp_build_ilog2_sqrt (2D: rho squared) or lp_build_ilog2 (1D:
+       * log2(rho * sqrt(2)) rounded down), then
+       * lp_build_nearest_mip_level's clamp to the level range */
+      int ipart;
+      if (squared)
+         ipart = (float_exp(rho) - 126) >> 1;
+      else
+         ipart = float_exp(rho * (float)M_SQRT2) - 127;
+      minify = rho > 1.0f;
+      level0 = clampi(first + ipart, first, last);
+   } else {
+      /* lp_build_fast_log2 of rho squared, halved
+       * [S: lp_bld_sample.c:lp_build_lod_selector, ordinary path]; then
+       * lp_build_linear_mip_levels */
+      const float r2 = squared ? rho : rho * rho;
+      const float l2 = (float)(float_exp(r2) - 128) +
+                       u2f((f2u(r2) & 0x7fffffu) | 0x3f800000u);
+      const float lod = l2 * 0.5f;
+      minify = lod > 0.0f;
+      const float fl = floorf(lod);
+      float fpart = lod - fl;
+      int l0 = first + itrunc(fl);
+      if (l0 < first) {
+         l0 = first;
+         fpart = 0.0f;
+      }
+      if (l0 >= last) {
+         l0 = last;
+         fpart = 0.0f;
+      }
+      level0 = l0;
+      level1 = l0 + 1 <= last ? l0 + 1 : last;
+      weight = itrunc(fpart * 256.0f);
+   }
+   r_tex_filter_aos(t, c, minify, level0, level1, weight, out);
+}
