@@ -932,6 +932,105 @@ static void rendered_of(fc_h *h, bool wide)
 static void rendered(fc_h *h) { rendered_of(h, false); }
 static void rendered_wide(fc_h *h) { rendered_of(h, true); }
 
+/* Mipmap completeness from the images (texobj.c:
+ * _mesa_test_texobj_completeness): a level of another internal format or
+ * size, a missing level, levels of one internal format stored in
+ * different formats (GL_RGBA from 4-4-4-4 data), zero-sized base. */
+static void chain(GLint base_if, GLint l1_if, GLenum l1_type, int l1_size, bool l2)
+{
+    static GLushort us[64];
+    for (int i = 0; i < 64; i++)
+        us[i] = (GLushort)(i * 0x1357u + 0x0f0fu);
+    glTexImage2D(GL_TEXTURE_2D, 0, base_if, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    if (l1_type == GL_UNSIGNED_SHORT_4_4_4_4)
+        glTexImage2D(GL_TEXTURE_2D, 1, l1_if, l1_size, l1_size, 0, GL_RGBA, l1_type, us);
+    else
+        glTexImage2D(GL_TEXTURE_2D, 1, l1_if, l1_size, l1_size, 0, GL_RGBA, l1_type, src + 300);
+    if (l2)
+        glTexImage2D(GL_TEXTURE_2D, 2, l1_if, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 600);
+    glTexImage2D(GL_TEXTURE_2D, 3, l1_if, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 700);
+}
+
+static void completeness(fc_h *h)
+{
+    fill_src(71);
+    fc_pixel_ortho(h);
+    glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glColor3f(0.9f, 0.1f, 0.5f);
+    static const struct { GLint b, l1; GLenum t; int size; bool l2; } c[] = {
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 4, true },      /* complete */
+        { GL_RGBA, GL_RGB, GL_UNSIGNED_BYTE, 4, true },       /* format differs */
+        { GL_RGBA, GL_RGBA8, GL_UNSIGNED_BYTE, 4, true },     /* RGBA vs RGBA8 */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 3, true },      /* size */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 4, false },     /* missing level 2 */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, 4, true }, /* 4-4-4-4 storage */
+        { GL_RGB5, GL_RGB5, GL_UNSIGNED_BYTE, 4, true },
+        { GL_LUMINANCE4_ALPHA4, GL_LUMINANCE4_ALPHA4, GL_UNSIGNED_BYTE, 4, true },
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        GLuint t;
+        glGenTextures(1, &t);
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        chain(c[i].b, c[i].l1, c[i].t, c[i].size, c[i].l2);
+        const float x = (float)(i % 4) * 10.0f, y = (float)(i / 4) * 10.0f;
+        /* 8x8 texels on 4x4 pixels: level 1 */
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(x, y);
+        glTexCoord2f(1, 0); glVertex2f(x + 4, y);
+        glTexCoord2f(1, 1); glVertex2f(x + 4, y + 4);
+        glTexCoord2f(0, 1); glVertex2f(x, y + 4);
+        glEnd();
+        /* magnified: level 0 */
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(x + 4, y);
+        glTexCoord2f(0.5f, 0); glVertex2f(x + 10, y);
+        glTexCoord2f(0.5f, 0.5f); glVertex2f(x + 10, y + 6);
+        glTexCoord2f(0, 0.5f); glVertex2f(x + 4, y + 6);
+        glEnd();
+    }
+    fc_capture(h);
+    /* a zero-sized base, then BASE_LEVEL past it */
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    draw_cell(0, 6);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    draw_cell(1, 6);
+    /* MAX_LEVEL < BASE_LEVEL: mipmap-incomplete only */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    draw_cell(2, 6);
+    fc_capture(h);
+}
+
+/* MAX_LEVEL < BASE_LEVEL with a non-mipmap filter: complete, sampled
+ * through a sampler view whose last level is below its first */
+static void completeness_max_below_base(fc_h *h)
+{
+    fill_src(73);
+    fc_pixel_ortho(h);
+    glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    draw_cell(0, 6);
+    fc_capture(h);
+}
+
 /* glGetTexImage and glGetTexLevelParameter errors. */
 static void query_errors(fc_h *h)
 {
@@ -1045,6 +1144,9 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_sharing", 8, 8, 0, "texture api", sharing),
     FC_CASE_RGBA("texture/image_rendered", 48, 36, 3, "texture", rendered),
     FC_CASE_RGBA("texture/image_rendered_wide", 48, 36, 3, "texture", rendered_wide),
+    FC_CASE_RGBA("texture/image_completeness", 40, 20, 2, "texture", completeness),
+    FC_CASE_RGBA("texture/image_completeness_max_below_base", 8, 8, 1, "texture",
+                 completeness_max_below_base),
     FC_CASE_RGBA("texture/image_sharing_delete_bound", 8, 8, 0, "texture api",
                  sharing_delete_bound),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
