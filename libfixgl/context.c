@@ -77,14 +77,14 @@ struct fgl_context *fgl_context_create(void)
    struct fgl_context *ctx = calloc(1, sizeof(*ctx));
    if (!ctx)
       return NULL;
-   if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx) || !fgl_init_dlist(ctx)) {
+   if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx) || !fgl_init_dlist(ctx) ||
+       !fgl_init_texobj(ctx)) {
       fgl_context_destroy(ctx);
       return NULL;
    }
    ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
    ctx->ErrorValue = GL_NO_ERROR;
    fgl_init_current(ctx);
-   fgl_init_texobj(ctx);
    fgl_init_texenv(ctx);
    fgl_init_texgen(ctx);
    fgl_init_array(ctx);

@@ -18,6 +18,7 @@
 #include <GL/gl.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <pthread.h>
 #include <stdint.h>
 
 #include "math/m_matrix.h"
@@ -410,15 +411,25 @@ struct fgl_texture_object {
    struct fgl_texture_image *Image[FGL_MAX_TEXTURE_LEVELS];
 };
 
-/* The named objects (Mesa's Shared->TexObjects) and the default ones. */
+/* The named objects and the default ones (Mesa's Shared->TexObjects and
+ * Shared->DefaultTex): shared by the contexts of an OSMesaCreateContext
+ * sharelist, freed with the last of them; the table is changed under
+ * Lock. */
 struct fgl_texture_objects {
    struct fgl_texture_object **Objs;   /* unordered */
    unsigned Count, Alloc;
    GLuint MaxName;                     /* names are never reused */
-   unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
    struct fgl_texture_object Default[FGL_TEX_TARGETS];
-   /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D (per context, as
-    * Mesa's ctx->Texture.ProxyTex): images without texels */
+   unsigned Refs;                      /* contexts sharing it */
+   pthread_mutex_t Lock;
+};
+
+/* The per-context texture object state: Mesa's
+ * ctx->Texture.NumCurrentTexUsed and ctx->Texture.ProxyTex */
+struct fgl_texture_local {
+   unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
+   /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D: images without
+    * texels */
    struct fgl_texture_object Proxy[2];
 };
 
@@ -723,7 +734,8 @@ struct fgl_context {
    struct fgl_eval_attrib Eval;
    struct fgl_eval_maps EvalMap;        /* main/eval.c */
    struct fgl_texture_attrib Texture;
-   struct fgl_texture_objects TexObjects;
+   struct fgl_texture_objects *TexObjects;   /* shared */
+   struct fgl_texture_local TexLocal;
    struct fgl_multisample_attrib Multisample;
    struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
    unsigned ClientAttribStackDepth;

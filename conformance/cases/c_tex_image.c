@@ -5,6 +5,7 @@
  * llvmpipe cannot create, glTexSubImage, glCopyTexImage and
  * glCopyTexSubImage from the colour buffer (clipped to it), and every
  * error path in Mesa's order. */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -650,7 +651,7 @@ static void lists(fc_h *h)
     fc_get_integer(h, "unpack alignment", GL_UNPACK_ALIGNMENT, 1);
     fc_get_integer(h, "unpack row length", GL_UNPACK_ROW_LENGTH, 1);
     /* swapped bytes are undone at compile time */
-    static const GLushort us[4] = { 0x1234, 0xfedc, 0x00ff, 0x8001 };
+    static const GLushort us[8] = { 0x1234, 0xfedc, 0x00ff, 0x8001, 0x4321, 0x0102, 0x7f80, 9 };
     glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
     glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
     glTexImage2D(GL_TEXTURE_2D, 3, GL_LUMINANCE, 2, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, us);
@@ -689,6 +690,345 @@ static void lists(fc_h *h)
     level_params(h, "level 5", GL_TEXTURE_2D, 5);
     glDeleteLists(l, 4);
     fc_error(h, "deleted");
+}
+
+/* Texture objects shared through OSMesaCreateContext's sharelist: names,
+ * images and the default objects are shared, proxies are not; a context
+ * that does not share has its own.  Deleting an object in one context
+ * unbinds it there only. */
+static void sharing(fc_h *h)
+{
+    fill_src(41);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    GLuint t[2];
+    glGenTextures(2, t);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 5, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 20);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 7, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    static GLubyte buf2[8 * 8 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, fc_context(h));
+    OSMesaContext alone = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, NULL);
+    fc_value(h, "contexts", shared != NULL && alone != NULL);
+    if (!shared || !alone)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    level_params(h, "shared default", GL_TEXTURE_2D, 0);
+    get_image(h, "shared default", GL_TEXTURE_2D, 0, GL_RGBA, 3, 1);
+    level_params(h, "shared proxy", GL_PROXY_TEXTURE_2D, 0);
+    fc_value(h, "shared istexture t0", glIsTexture(t[0]));
+    fc_value(h, "shared istexture t1", glIsTexture(t[1]));
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    level_params(h, "shared t0", GL_TEXTURE_2D, 0);
+    get_image(h, "shared t0", GL_TEXTURE_2D, 0, GL_RGBA, 5, 2);
+    GLuint n = 0;
+    glGenTextures(1, &n);
+    fc_value(h, "shared gen", n);
+    glBindTexture(GL_TEXTURE_2D, n);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE4_ALPHA4, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, src + 60);
+    glDeleteTextures(1, &t[1]);
+    fc_get_integer(h, "shared binding", GL_TEXTURE_BINDING_2D, 1);
+    fc_error(h, "shared");
+    OSMesaMakeCurrent(alone, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    level_params(h, "alone default", GL_TEXTURE_2D, 0);
+    fc_value(h, "alone istexture t0", glIsTexture(t[0]));
+    glGenTextures(1, &n);
+    fc_value(h, "alone gen", n);
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 8, 8);
+    get_image(h, "first t0", GL_TEXTURE_2D, 0, GL_RGBA, 5, 2);
+    fc_value(h, "first istexture t1", glIsTexture(t[1]));
+    glBindTexture(GL_TEXTURE_2D, 3);
+    level_params(h, "first 3", GL_TEXTURE_2D, 0);
+    OSMesaDestroyContext(shared);
+    OSMesaDestroyContext(alone);
+    level_params(h, "after destroy", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    get_image(h, "default after destroy", GL_TEXTURE_2D, 0, GL_RGBA, 3, 1);
+    fc_error(h, "end");
+}
+
+/* An object deleted in one context while bound in another stays that
+ * context's binding (Mesa's reference count) with its images, without a
+ * name; rebinding the name makes a new object. */
+static void sharing_delete_bound(fc_h *h)
+{
+    fill_src(43);
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 5, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    static GLubyte buf2[8 * 8 * 4];
+    OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, fc_context(h));
+    fc_value(h, "context", shared != NULL);
+    if (!shared)
+        return;
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    glDeleteTextures(1, &t);
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 8, 8);
+    fc_get_integer(h, "binding", GL_TEXTURE_BINDING_2D, 1);
+    fc_value(h, "istexture", glIsTexture(t));
+    level_params(h, "orphan", GL_TEXTURE_2D, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 9, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    level_params(h, "orphan respecified", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, t);
+    level_params(h, "rebound", GL_TEXTURE_2D, 0);
+    OSMesaDestroyContext(shared);
+    fc_error(h, "end");
+}
+
+/* glGetTexImage of every base format as every client format and type
+ * (pixelformat's packer; luminance reads back as R, not R+G+B), with
+ * pack state and SWAP_BYTES. */
+static void readback_types_of(fc_h *h, const GLint *internals, size_t ni)
+{
+    static const GLenum fmts[] = { GL_RGBA, GL_RGB, GL_BGRA, GL_BGR, GL_ABGR_EXT, GL_RED,
+                                   GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
+                                   GL_LUMINANCE_ALPHA, GL_RG };
+    static const GLenum types[] = { GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_HALF_FLOAT };
+    static const struct { GLenum f, t; } packed[] = {
+        { GL_RGB, GL_UNSIGNED_BYTE_3_3_2 }, { GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV },
+        { GL_RGB, GL_UNSIGNED_SHORT_5_6_5 }, { GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV },
+        { GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4 }, { GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV },
+        { GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 }, { GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV },
+        { GL_RGBA, GL_UNSIGNED_INT_8_8_8_8 }, { GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV },
+        { GL_RGBA, GL_UNSIGNED_INT_10_10_10_2 }, { GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV },
+    };
+    fill_src(51);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static GLubyte out[4 * 4 * 5 * 3 + 64];
+    for (size_t k = 0; k < ni; k++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, internals[k], 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        for (size_t f = 0; f < sizeof fmts / sizeof fmts[0]; f++)
+            for (size_t t = 0; t < sizeof types / sizeof types[0]; t++) {
+                char l[96];
+                snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k],
+                         (unsigned)fmts[f], (unsigned)types[t]);
+                memset(out, 0xA5, sizeof out);
+                glGetTexImage(GL_TEXTURE_2D, 0, fmts[f], types[t], out);
+                fc_blob(h, l, out, sizeof out);
+                fc_error(h, l);
+            }
+        for (size_t i = 0; i < sizeof packed / sizeof packed[0]; i++) {
+            char l[96];
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k],
+                     (unsigned)packed[i].f, (unsigned)packed[i].t);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, packed[i].f, packed[i].t, out);
+            fc_blob(h, l, out, sizeof out);
+            fc_error(h, l);
+        }
+        /* pack state */
+        glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+        glPixelStorei(GL_PACK_ALIGNMENT, 8);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, 1);
+        memset(out, 0xA5, sizeof out);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT, out);
+        fc_blob(h, "swap", out, sizeof out);
+        glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    }
+}
+
+static void readback_types(fc_h *h)
+{
+    static const GLint f[] = { GL_RGBA8, GL_RGB8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8,
+                               GL_ALPHA8, GL_INTENSITY8 };
+    readback_types_of(h, f, sizeof f / sizeof f[0]);
+}
+
+/* The formats of other than 8 bits read back: the oracle converts the
+ * stored n-bit values, fixgl their 8-bit expansion (the same values for
+ * 8-bit types, which image_formats_* check). */
+static void readback_types_precision(fc_h *h)
+{
+    static const GLint f[] = { GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2,
+                               GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGBA16, GL_LUMINANCE16 };
+    readback_types_of(h, f, sizeof f / sizeof f[0]);
+}
+
+/* The images as the oracle samples them: every internal format drawn
+ * NEAREST with GL_REPLACE and GL_MODULATE (a 4x4 texture on a 6x6 cell;
+ * each texel at least one pixel), then images made by glCopyTexImage,
+ * glTexSubImage and a stripped border. */
+static void draw_cell(int i, int cols)
+{
+    const float x = (float)(i % cols) * 6.0f, y = (float)(i / cols) * 6.0f;
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(x, y);
+    glTexCoord2f(1, 0); glVertex2f(x + 6, y);
+    glTexCoord2f(1, 1); glVertex2f(x + 6, y + 6);
+    glTexCoord2f(0, 1); glVertex2f(x, y + 6);
+    glEnd();
+}
+
+static bool wide_format(GLint f)
+{
+    switch (f) {
+    case GL_ALPHA12: case GL_ALPHA16: case GL_LUMINANCE12: case GL_LUMINANCE16:
+    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
+    case GL_INTENSITY12: case GL_INTENSITY16: case GL_RGB10: case GL_RGB12: case GL_RGB16:
+    case GL_RGB10_A2: case GL_RGBA12: case GL_RGBA16:
+        return true;
+    default:
+        return false;
+    }
+}
+
+/* wide: only the formats of more than 8 bits per channel (the oracle
+ * samples them on its float path), else the others */
+static void rendered_of(fc_h *h, bool wide)
+{
+    fill_src(61);
+    fc_pixel_ortho(h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glEnable(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    static const GLenum modes[2] = { GL_REPLACE, GL_MODULATE };
+    for (int m = 0; m < 2; m++) {
+        glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)modes[m]);
+        glColor4f(0.9f, 0.7f, 0.5f, 0.6f);
+        int cell = 0;
+        for (size_t f = 0; f < NFORMATS; f++) {
+            if (wide_format(formats[f]) != wide)
+                continue;
+            glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                         src + 16 * f);
+            draw_cell(cell++, 8);
+        }
+        fc_capture(h);
+    }
+    /* copies, sub-images, a border */
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    static const GLint cf[] = { GL_RGB5, GL_RGB5_A1, GL_RGB565, GL_RGBA4, GL_LUMINANCE,
+                                GL_ALPHA, GL_INTENSITY, GL_LUMINANCE_ALPHA, GL_RGB10_A2,
+                                GL_RGBA, GL_RGBA16, GL_LUMINANCE16 };
+    int cell = 16;
+    for (size_t i = 0; i < sizeof cf / sizeof cf[0]; i++) {
+        if (wide_format(cf[i]) != wide)
+            continue;
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, (GLenum)cf[i], (GLint)(5 * i), 3, 4, 4, 0);
+        draw_cell(cell++, 8);
+    }
+    if (!wide) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5_A1, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 300);
+        draw_cell(cell++, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA4, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, src + 500);
+        draw_cell(cell++, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE4_ALPHA4, 4, 4, 0, GL_LUMINANCE_ALPHA,
+                     GL_UNSIGNED_BYTE, src + 700);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);
+        draw_cell(cell++, 8);
+    }
+    fc_capture(h);
+}
+
+static void rendered(fc_h *h) { rendered_of(h, false); }
+static void rendered_wide(fc_h *h) { rendered_of(h, true); }
+
+/* Mipmap completeness from the images (texobj.c:
+ * _mesa_test_texobj_completeness): a level of another internal format or
+ * size, a missing level, levels of one internal format stored in
+ * different formats (GL_RGBA from 4-4-4-4 data), zero-sized base. */
+static void chain(GLint base_if, GLint l1_if, GLenum l1_type, int l1_size, bool l2)
+{
+    static GLushort us[64];
+    for (int i = 0; i < 64; i++)
+        us[i] = (GLushort)(i * 0x1357u + 0x0f0fu);
+    glTexImage2D(GL_TEXTURE_2D, 0, base_if, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    if (l1_type == GL_UNSIGNED_SHORT_4_4_4_4)
+        glTexImage2D(GL_TEXTURE_2D, 1, l1_if, l1_size, l1_size, 0, GL_RGBA, l1_type, us);
+    else
+        glTexImage2D(GL_TEXTURE_2D, 1, l1_if, l1_size, l1_size, 0, GL_RGBA, l1_type, src + 300);
+    if (l2)
+        glTexImage2D(GL_TEXTURE_2D, 2, l1_if, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 600);
+    glTexImage2D(GL_TEXTURE_2D, 3, l1_if, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 700);
+}
+
+static void completeness(fc_h *h)
+{
+    fill_src(71);
+    fc_pixel_ortho(h);
+    glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glColor3f(0.9f, 0.1f, 0.5f);
+    static const struct { GLint b, l1; GLenum t; int size; bool l2; } c[] = {
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 4, true },      /* complete */
+        { GL_RGBA, GL_RGB, GL_UNSIGNED_BYTE, 4, true },       /* format differs */
+        { GL_RGBA, GL_RGBA8, GL_UNSIGNED_BYTE, 4, true },     /* RGBA vs RGBA8 */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 3, true },      /* size */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 4, false },     /* missing level 2 */
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, 4, true }, /* 4-4-4-4 storage */
+        { GL_RGB5, GL_RGB5, GL_UNSIGNED_BYTE, 4, true },
+        { GL_LUMINANCE4_ALPHA4, GL_LUMINANCE4_ALPHA4, GL_UNSIGNED_BYTE, 4, true },
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        GLuint t;
+        glGenTextures(1, &t);
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        chain(c[i].b, c[i].l1, c[i].t, c[i].size, c[i].l2);
+        const float x = (float)(i % 4) * 10.0f, y = (float)(i / 4) * 10.0f;
+        /* 8x8 texels on 4x4 pixels: level 1 */
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(x, y);
+        glTexCoord2f(1, 0); glVertex2f(x + 4, y);
+        glTexCoord2f(1, 1); glVertex2f(x + 4, y + 4);
+        glTexCoord2f(0, 1); glVertex2f(x, y + 4);
+        glEnd();
+        /* magnified: level 0 */
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(x + 4, y);
+        glTexCoord2f(0.5f, 0); glVertex2f(x + 10, y);
+        glTexCoord2f(0.5f, 0.5f); glVertex2f(x + 10, y + 6);
+        glTexCoord2f(0, 0.5f); glVertex2f(x + 4, y + 6);
+        glEnd();
+    }
+    fc_capture(h);
+    /* a zero-sized base, then BASE_LEVEL past it */
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    draw_cell(0, 6);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    draw_cell(1, 6);
+    /* MAX_LEVEL < BASE_LEVEL: mipmap-incomplete only */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    draw_cell(2, 6);
+    fc_capture(h);
+}
+
+/* MAX_LEVEL < BASE_LEVEL with a non-mipmap filter: complete, sampled
+ * through a sampler view whose last level is below its first */
+static void completeness_max_below_base(fc_h *h)
+{
+    fill_src(73);
+    fc_pixel_ortho(h);
+    glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    draw_cell(0, 6);
+    fc_capture(h);
 }
 
 /* glGetTexImage and glGetTexLevelParameter errors. */
@@ -784,6 +1124,9 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_formats_alpha", 8, 8, 0, "texture", formats_alpha),
     FC_CASE_RGBA("texture/image_formats_1d", 8, 8, 0, "texture", formats_1d),
     FC_CASE_RGBA("texture/image_readback_formats", 8, 8, 0, "texture", readback_formats),
+    FC_CASE_RGBA("texture/image_readback_types", 8, 8, 0, "texture pixel", readback_types),
+    FC_CASE_RGBA("texture/image_readback_types_precision", 8, 8, 0, "texture pixel",
+                 readback_types_precision),
     FC_CASE_RGBA("texture/image_unpack_store", 8, 8, 0, "texture", unpack_store),
     FC_CASE_RGBA("texture/image_border", 8, 8, 0, "texture", border),
     FC_CASE_RGBA("texture/image_null_data", 8, 8, 0, "texture", null_data),
@@ -798,5 +1141,13 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_query_errors", 8, 8, 0, "texture", query_errors),
     FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
     FC_CASE_RGBA("texture/image_dlist", 32, 32, 1, "texture dlist", lists),
+    FC_CASE_RGBA("texture/image_sharing", 8, 8, 0, "texture api", sharing),
+    FC_CASE_RGBA("texture/image_rendered", 48, 36, 3, "texture", rendered),
+    FC_CASE_RGBA("texture/image_rendered_wide", 48, 36, 3, "texture", rendered_wide),
+    FC_CASE_RGBA("texture/image_completeness", 40, 20, 2, "texture", completeness),
+    FC_CASE_RGBA("texture/image_completeness_max_below_base", 8, 8, 1, "texture",
+                 completeness_max_below_base),
+    FC_CASE_RGBA("texture/image_sharing_delete_bound", 8, 8, 0, "texture api",
+                 sharing_delete_bound),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
 };

@@ -30,7 +30,8 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value);
 void fgl_init_current(struct fgl_context *ctx);
 
 /* main/texobj.c */
-void fgl_init_texobj(struct fgl_context *ctx);
+bool fgl_init_texobj(struct fgl_context *ctx);
+void fgl_share_texobjs(struct fgl_context *ctx, struct fgl_context *share);
 void fgl_init_texenv(struct fgl_context *ctx);
 void fgl_init_texgen(struct fgl_context *ctx);
 void fgl_free_texobj(struct fgl_context *ctx);
@@ -43,6 +44,9 @@ struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned u
 
 /* main/teximage.c */
 void fgl_free_tex_images(struct fgl_texture_object *t);
+/* whether the oracle samples the image on its 8-bit AoS path (no channel
+ * of its format wider than 8 bits; main/teximage.c) */
+bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img);
 
 /* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
  * _CurrentTex) */

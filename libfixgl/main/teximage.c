@@ -124,6 +124,18 @@ static const struct tex_format tex_formats[] = {
    { GL_RGBA16, GL_RGBA, &PF_RGBA16 },
 };
 
+/* [S: util/format/u_format.c:util_format_fits_8unorm; llvmpipe's
+ * lp_bld_sample_soa.c picks its AoS 8-bit path only for such formats]
+ * whether no channel of the image's oracle format is wider than 8 bits:
+ * the 12/16-bit and 10-10-10-2 formats are sampled on the float path
+ * (texture/image_rendered_wide) */
+bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img)
+{
+   const struct fgl_tex_pipe_format *pf = img->Format;
+   return !pf || (pf->r <= 8 && pf->g <= 8 && pf->b <= 8 && pf->a <= 8 && pf->l <= 8 &&
+                  pf->i <= 8);
+}
+
 static const struct tex_format *find_format(GLint internal)
 {
    for (size_t i = 0; i < sizeof(tex_formats) / sizeof(tex_formats[0]); i++)
@@ -143,125 +155,13 @@ static bool is_depthstencil_format(GLenum f)
    return f == GL_DEPTH_STENCIL || f == GL_DEPTH24_STENCIL8;
 }
 
-static bool is_integer_format(GLenum f)
-{
-   switch (f) {
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER:
-   case GL_BGR_INTEGER: case GL_BGRA_INTEGER: case GL_RG_INTEGER:
-   case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return true;
-   default:
-      return false;
-   }
-}
-
-/* [S: glformats.c:_mesa_is_color_format] for client formats */
-static bool is_color_format(GLenum f)
-{
-   switch (f) {
-   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RG:
-   case GL_RGB: case GL_BGR: case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
-   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_INTENSITY:
-      return true;
-   default:
-      return is_integer_format(f);
-   }
-}
-
-static bool basic_type(GLenum type)
-{
-   switch (type) {
-   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
-   case GL_UNSIGNED_INT: case GL_INT:
-      return true;
-   default:
-      return false;
-   }
-}
-
-/* [S: glformats.c:_mesa_error_check_format_and_type] the GL error of a
- * client format/type pair in the oracle's compatibility context, or
- * GL_NO_ERROR.  (Local until pixelformat exports Mesa's check.) */
-static GLenum format_type_error(GLenum format, GLenum type)
-{
-   if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
-       type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
-      return GL_INVALID_ENUM;
-   switch (type) {
-   case GL_BITMAP:
-      if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-         return GL_INVALID_ENUM;
-      break;
-   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      if (format == GL_RGB || format == GL_RGB_INTEGER)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT ||
-          format == GL_RGBA_INTEGER || format == GL_BGRA_INTEGER)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_RGBA_INTEGER ||
-          format == GL_BGRA_INTEGER)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_24_8:
-      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
-      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_10F_11F_11F_REV: case GL_UNSIGNED_INT_5_9_9_9_REV:
-      return format == GL_RGB ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   default:
-      break;
-   }
-   bool packed;
-   switch (type) {
-   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-      packed = true;
-      break;
-   default:
-      packed = false;
-      break;
-   }
-   switch (format) {
-   case GL_COLOR_INDEX: case GL_STENCIL_INDEX:
-      return basic_type(type) || type == GL_BITMAP || type == GL_FLOAT ? GL_NO_ERROR
-                                                                       : GL_INVALID_ENUM;
-   case GL_DEPTH_COMPONENT:
-      return basic_type(type) || type == GL_FLOAT ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RG:
-   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_BGR:
-      return basic_type(type) || type == GL_FLOAT || type == GL_HALF_FLOAT
-                ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RGB: case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
-      return basic_type(type) || type == GL_FLOAT || type == GL_HALF_FLOAT || packed
-                ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_DEPTH_STENCIL:
-      return GL_NO_ERROR;
-   default:
-      if (is_integer_format(format))
-         return basic_type(type) || packed ? GL_NO_ERROR : GL_INVALID_ENUM;
-      return GL_INVALID_ENUM;
-   }
-}
-
 /* [S: teximage.c:texture_formats_agree] */
 static bool formats_agree(GLint internal, GLenum format)
 {
    const bool int_depth = is_depth_format((GLenum)internal) ||
                           is_depthstencil_format((GLenum)internal);
    const bool fmt_depth = is_depth_format(format) || is_depthstencil_format(format);
-   if (!int_depth && !is_color_format(format) && format != GL_COLOR_INDEX)
+   if (!int_depth && !fgl_is_color_format(format) && format != GL_COLOR_INDEX)
       return false;
    return int_depth == fmt_depth;
 }
@@ -424,8 +324,8 @@ static bool is_proxy(GLenum target)
 static struct fgl_texture_object *target_object(struct fgl_context *ctx, GLenum target)
 {
    switch (target) {
-   case GL_PROXY_TEXTURE_1D: return &ctx->TexObjects.Proxy[0];
-   case GL_PROXY_TEXTURE_2D: return &ctx->TexObjects.Proxy[1];
+   case GL_PROXY_TEXTURE_1D: return &ctx->TexLocal.Proxy[0];
+   case GL_PROXY_TEXTURE_2D: return &ctx->TexLocal.Proxy[1];
    default: return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
    }
 }
@@ -575,7 +475,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   const GLenum err = format_type_error(format, type);
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
    if (err != GL_NO_ERROR) {
       fgl_error(ctx, err);
       return;
@@ -585,7 +485,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (!formats_agree(internal, format) || is_integer_format(format)) {
+   if (!formats_agree(internal, format) || fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -714,7 +614,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   const GLenum err = format_type_error(format, type);
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
    if (err != GL_NO_ERROR) {
       fgl_error(ctx, err);
       return;
@@ -725,7 +625,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    }
    if (sub_dimensions_error(ctx, dims, img, xoff, yoff, width, height))
       return;
-   if (is_integer_format(format)) {
+   if (fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -984,26 +884,6 @@ static int max_levels(GLenum target)
    }
 }
 
-/* The colour glGetTexImage reads from a texel: the base format's
- * channels, the others (0, 0, 0, 1) [S: texgetimage.c:
- * get_tex_rgba_uncompressed, the rebase swizzle of luminance,
- * intensity and alpha images] */
-static void read_texel(GLenum base, const uint8_t *t, uint8_t c[4])
-{
-   switch (base) {
-   case GL_LUMINANCE: case GL_INTENSITY:
-      c[0] = t[0]; c[1] = c[2] = 0; c[3] = 255; break;
-   case GL_LUMINANCE_ALPHA:
-      c[0] = t[0]; c[1] = c[2] = 0; c[3] = t[3]; break;
-   case GL_ALPHA:
-      c[0] = c[1] = c[2] = 0; c[3] = t[3]; break;
-   case GL_RGB:
-      c[0] = t[0]; c[1] = t[1]; c[2] = t[2]; c[3] = 255; break;
-   default:
-      memcpy(c, t, 4); break;
-   }
-}
-
 void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type,
                               GLvoid *pixels)
 {
@@ -1020,7 +900,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   const GLenum err = format_type_error(format, type);
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
    if (err != GL_NO_ERROR) {
       fgl_error(ctx, err);
       return;
@@ -1032,37 +912,16 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       return;
    /* teximage_error_check: a colour image reads back as colours only */
    if (is_depth_format(format) || is_depthstencil_format(format) ||
-       format == GL_STENCIL_INDEX || is_integer_format(format)) {
+       format == GL_STENCIL_INDEX || fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
    if (!pixels)
       return;
-   /* packing: RGBA, RGB, BGRA, BGR as unsigned bytes (the other pairs
-    * pack through pixelformat's packer, when it lands) */
-   int comps;
-   bool bgr = format == GL_BGRA || format == GL_BGR;
-   switch (format) {
-   case GL_RGBA: case GL_BGRA: comps = 4; break;
-   case GL_RGB: case GL_BGR: comps = 3; break;
-   default: comps = 0; break;
-   }
-   if (type != GL_UNSIGNED_BYTE || comps == 0)
-      return;
-   const struct fgl_pixelstore *pack = &ctx->Pack;
-   for (int j = 0; j < img->Height; j++) {
-      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, img->Width, format, type, j, 0);
-      for (int i = 0; i < img->Width; i++) {
-         uint8_t c[4];
-         read_texel(img->BaseFormat, img->Data + 4 * ((size_t)j * (size_t)img->Width + (size_t)i), c);
-         if (bgr) {
-            const uint8_t r = c[0];
-            c[0] = c[2];
-            c[2] = r;
-         }
-         memcpy(dst + (size_t)i * (size_t)comps, c, (size_t)comps);
-      }
-   }
+   /* [S: texgetimage.c:get_tex_rgba_uncompressed] the texels through
+    * pixelformat's packer (the rebase of L/LA/I/A/RGB images, L = R) */
+   fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
+                  img->BaseFormat, img->Data, format, type, pixels);
 }
 
 /* ------------------------------------------------------------------ */

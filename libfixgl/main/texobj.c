@@ -11,6 +11,7 @@
  * binding a name never generated creates it (compatibility profile).
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -41,19 +42,33 @@ static const GLenum index_target[FGL_TEX_TARGETS] = {
    [FGL_TEX_2D_ARRAY] = GL_TEXTURE_2D_ARRAY, [FGL_TEX_CUBE_ARRAY] = GL_TEXTURE_CUBE_MAP_ARRAY,
 };
 
-void fgl_init_texobj(struct fgl_context *ctx)
+/* [S: shared.c:_mesa_alloc_shared_state] the object table and the
+ * default objects of a new context; false when out of memory */
+bool fgl_init_texobj(struct fgl_context *ctx)
 {
-   struct fgl_texture_objects *to = &ctx->TexObjects;
-   memset(to, 0, sizeof(*to));
+   struct fgl_texture_objects *to = calloc(1, sizeof(*to));
+   if (!to)
+      return false;
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       init_object(&to->Default[i], 0, index_target[i]);
-   init_object(&to->Proxy[0], 0, GL_PROXY_TEXTURE_1D);
-   init_object(&to->Proxy[1], 0, GL_PROXY_TEXTURE_2D);
+   to->Refs = 1;
+   pthread_mutex_init(&to->Lock, NULL);
+   ctx->TexObjects = to;
+   memset(&ctx->TexLocal, 0, sizeof(ctx->TexLocal));
+   init_object(&ctx->TexLocal.Proxy[0], 0, GL_PROXY_TEXTURE_1D);
+   init_object(&ctx->TexLocal.Proxy[1], 0, GL_PROXY_TEXTURE_2D);
+   return true;
 }
 
-void fgl_free_texobj(struct fgl_context *ctx)
+/* [S: shared.c:free_shared_state] the last context frees every object
+ * and image */
+static void unref_shared(struct fgl_texture_objects *to)
 {
-   struct fgl_texture_objects *to = &ctx->TexObjects;
+   pthread_mutex_lock(&to->Lock);
+   const bool last = --to->Refs == 0;
+   pthread_mutex_unlock(&to->Lock);
+   if (!last)
+      return;
    for (unsigned i = 0; i < to->Count; i++) {
       fgl_free_tex_images(to->Objs[i]);
       free(to->Objs[i]);
@@ -61,10 +76,30 @@ void fgl_free_texobj(struct fgl_context *ctx)
    free(to->Objs);
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       fgl_free_tex_images(&to->Default[i]);
-   fgl_free_tex_images(&to->Proxy[0]);
-   fgl_free_tex_images(&to->Proxy[1]);
-   to->Objs = NULL;
-   to->Count = to->Alloc = 0;
+   pthread_mutex_destroy(&to->Lock);
+   free(to);
+}
+
+void fgl_free_texobj(struct fgl_context *ctx)
+{
+   if (ctx->TexObjects)
+      unref_shared(ctx->TexObjects);
+   ctx->TexObjects = NULL;
+   fgl_free_tex_images(&ctx->TexLocal.Proxy[0]);
+   fgl_free_tex_images(&ctx->TexLocal.Proxy[1]);
+}
+
+/* OSMesaCreateContext's sharelist: the new context (which has bound
+ * nothing yet) takes share's objects and default objects
+ * [S: context.c:_mesa_initialize_context, shared state] */
+void fgl_share_texobjs(struct fgl_context *ctx, struct fgl_context *share)
+{
+   struct fgl_texture_objects *to = share->TexObjects;
+   pthread_mutex_lock(&to->Lock);
+   to->Refs++;
+   pthread_mutex_unlock(&to->Lock);
+   unref_shared(ctx->TexObjects);
+   ctx->TexObjects = to;
 }
 
 /* [S: texobj.c:_mesa_tex_target_to_index] -1 for other targets */
@@ -76,18 +111,28 @@ static int target_index(GLenum target)
    return -1;
 }
 
-static struct fgl_texture_object *lookup(struct fgl_context *ctx, GLuint name)
+/* the object named `name`; the caller holds the table's lock */
+static struct fgl_texture_object *lookup_locked(struct fgl_context *ctx, GLuint name)
 {
-   struct fgl_texture_objects *to = &ctx->TexObjects;
+   struct fgl_texture_objects *to = ctx->TexObjects;
    for (unsigned i = 0; i < to->Count; i++)
       if (to->Objs[i]->Name == name)
          return to->Objs[i];
    return NULL;
 }
 
+/* _mesa_lookup_texture: under the lock of the shared table */
+static struct fgl_texture_object *lookup(struct fgl_context *ctx, GLuint name)
+{
+   pthread_mutex_lock(&ctx->TexObjects->Lock);
+   struct fgl_texture_object *t = lookup_locked(ctx, name);
+   pthread_mutex_unlock(&ctx->TexObjects->Lock);
+   return t;
+}
+
 static struct fgl_texture_object *insert(struct fgl_context *ctx, GLuint name, GLenum target)
 {
-   struct fgl_texture_objects *to = &ctx->TexObjects;
+   struct fgl_texture_objects *to = ctx->TexObjects;
    if (to->Count == to->Alloc) {
       const unsigned alloc = to->Alloc ? to->Alloc * 2 : 16;
       struct fgl_texture_object **objs = realloc(to->Objs, alloc * sizeof(*objs));
@@ -111,9 +156,9 @@ static struct fgl_texture_object *current_object(struct fgl_context *ctx, int in
 {
    const GLuint name = ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[index];
    if (name == 0)
-      return &ctx->TexObjects.Default[index];
+      return &ctx->TexObjects->Default[index];
    struct fgl_texture_object *t = lookup(ctx, name);
-   return t ? t : &ctx->TexObjects.Default[index];
+   return t ? t : &ctx->TexObjects->Default[index];
 }
 
 struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned unit,
@@ -122,9 +167,9 @@ struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned u
    const int index = target_index(target);
    const GLuint name = ctx->Texture.Unit[unit].Bound[index];
    if (name == 0)
-      return &ctx->TexObjects.Default[index];
+      return &ctx->TexObjects->Default[index];
    struct fgl_texture_object *t = lookup(ctx, name);
-   return t ? t : &ctx->TexObjects.Default[index];
+   return t ? t : &ctx->TexObjects->Default[index];
 }
 
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
@@ -153,19 +198,23 @@ void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures)
    /* [S: hash.c:_mesa_HashFindFreeKeyBlock] past the largest key while
     * that does not overflow (a search for a free block after that is not
     * modelled: 4 billion names) */
-   struct fgl_texture_objects *to = &ctx->TexObjects;
+   struct fgl_texture_objects *to = ctx->TexObjects;
+   pthread_mutex_lock(&to->Lock);
    if ((GLuint)n > ~0u - to->MaxName) {
+      pthread_mutex_unlock(&to->Lock);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
    const GLuint first = to->MaxName + 1;
    for (GLsizei i = 0; i < n; i++) {
       if (!insert(ctx, first + (GLuint)i, 0)) {
+         pthread_mutex_unlock(&to->Lock);
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
       textures[i] = first + (GLuint)i;
    }
+   pthread_mutex_unlock(&to->Lock);
 }
 
 /* [S: texobj.c:_mesa_BindTexture, _mesa_lookup_or_create_texture,
@@ -186,9 +235,11 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
       return;
    }
    if (texture != 0) {
-      struct fgl_texture_object *t = lookup(ctx, texture);
+      pthread_mutex_lock(&ctx->TexObjects->Lock);
+      struct fgl_texture_object *t = lookup_locked(ctx, texture);
       if (t) {
          if (t->Target != 0 && t->Target != target) {
+            pthread_mutex_unlock(&ctx->TexObjects->Lock);
             fgl_error(ctx, GL_INVALID_OPERATION);
             return;
          }
@@ -203,17 +254,19 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
             }
          }
       } else if (!insert(ctx, texture, target)) {
+         pthread_mutex_unlock(&ctx->TexObjects->Lock);
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
+      pthread_mutex_unlock(&ctx->TexObjects->Lock);
    }
    struct fgl_texture_unit *u = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
    if (u->Bound[index] == texture)
       return;   /* bind_texture: nothing when already bound (no flush) */
    tex_flush(ctx);
    u->Bound[index] = texture;
-   if (ctx->TexObjects.NumCurrentTexUsed < ctx->Texture.CurrentUnit + 1)
-      ctx->TexObjects.NumCurrentTexUsed = ctx->Texture.CurrentUnit + 1;
+   if (ctx->TexLocal.NumCurrentTexUsed < ctx->Texture.CurrentUnit + 1)
+      ctx->TexLocal.NumCurrentTexUsed = ctx->Texture.CurrentUnit + 1;
 }
 
 /* [S: texobj.c:delete_textures, unbind_texobj_from_texunits] */
@@ -233,7 +286,8 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
    }
    if (!textures)
       return;
-   struct fgl_texture_objects *to = &ctx->TexObjects;
+   struct fgl_texture_objects *to = ctx->TexObjects;
+   pthread_mutex_lock(&to->Lock);
    for (GLsizei i = 0; i < n; i++) {
       if (textures[i] == 0)
          continue;
@@ -254,6 +308,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
          break;
       }
    }
+   pthread_mutex_unlock(&to->Lock);
 }
 
 /* [S: texobj.c:_mesa_IsTexture] only an object bound once has a target */
@@ -699,8 +754,8 @@ void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params)
  * (the node is allocated zeroed once). */
 void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node)
 {
-   memcpy(node->TexDefault, ctx->TexObjects.Default, sizeof(node->TexDefault));
-   node->TexSaved = ctx->TexObjects.NumCurrentTexUsed > 0;
+   memcpy(node->TexDefault, ctx->TexObjects->Default, sizeof(node->TexDefault));
+   node->TexSaved = ctx->TexLocal.NumCurrentTexUsed > 0;
    if (!node->TexSaved)
       return;
    node->TexLodBias = ctx->Texture.Unit[0].LodBias;
@@ -723,9 +778,11 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
          const GLuint name = u->Bound[x];
          if (name == 0)
             continue;
-         struct fgl_texture_object *t = lookup(ctx, name);
+         pthread_mutex_lock(&ctx->TexObjects->Lock);
+         struct fgl_texture_object *t = lookup_locked(ctx, name);
          if (!t)
             t = insert(ctx, name, index_target[x]);
+         pthread_mutex_unlock(&ctx->TexObjects->Lock);
          if (t && saved[x].Name == name) {
             struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
             memcpy(images, t->Image, sizeof(images));
@@ -735,7 +792,7 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
       }
    }
    for (int x = 0; x < FGL_TEX_TARGETS; x++) {
-      struct fgl_texture_object *t = &ctx->TexObjects.Default[x];
+      struct fgl_texture_object *t = &ctx->TexObjects->Default[x];
       struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
       memcpy(images, t->Image, sizeof(images));
       *t = node->TexDefault[x];

@@ -28,11 +28,16 @@ static bool needs_mipmaps(GLenum min_filter)
  * _mesa_is_texture_complete] the base image must exist and be non-empty;
  * with a mipmap filter every level from the base to _MaxLevel =
  * min(MaxLevel, base + levels - 1, 14) must exist with the halved size,
- * the base's internal format and border.  *max_level gets _MaxLevel. */
+ * the base's internal format and border.  *max_level gets _MaxLevel.
+ * MAX_LEVEL < BASE_LEVEL makes the object mipmap-incomplete only
+ * (incomplete(t, MIPMAP)): without a mipmap filter it stays complete
+ * (texture/image_completeness), with _MaxLevel below the base. */
 bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level)
 {
    const int base = t->BaseLevel;
-   if (base < 0 || base >= FGL_MAX_TEXTURE_LEVELS || t->MaxLevel < base)
+   if (base < 0 || base >= FGL_MAX_TEXTURE_LEVELS)
+      return false;
+   if (t->MaxLevel < base && needs_mipmaps(t->MinFilter))
       return false;
    const struct fgl_texture_image *bi = t->Image[base];
    if (!bi || bi->Width == 0 || bi->Height == 0)

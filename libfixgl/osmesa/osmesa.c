@@ -194,10 +194,12 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       free(c);
       return NULL;
    }
-   /* display lists are shared with sharelist's context (textures, when
-    * they land, too) */
-   if (sharelist)
+   /* display lists and texture objects are shared with sharelist's
+    * context */
+   if (sharelist) {
       fgl_share_dlists(c->gl, sharelist->gl);
+      fgl_share_texobjs(c->gl, sharelist->gl);
+   }
    c->format = format;
    c->y_up = GL_TRUE;
    if (depth > 0 && stencil > 0) {
