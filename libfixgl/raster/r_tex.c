@@ -187,10 +187,10 @@ static inline int float_exp(float x)
 }
 
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
-                  float out[4])
+                  const float (*pair)[3], float out[4])
 {
    if (t->soa)
-      r_tex_sample_soa(t, c, quad, out);
+      r_tex_sample_soa(t, c, quad, pair, out);
    else
       r_tex_sample_aos(t, c, quad, out);
 }
@@ -266,4 +266,10 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
    const float scale = (float)(1.0 / 255.0);
    for (int k = 0; k < 4; k++)
       out[k] = (float)texel8[k] * scale;
+}
+
+void r_tex_aos_level(const struct r_texture *t, int lvl, enum r_tex_filter filter,
+                     const float c[3], int out[4])
+{
+   sample_level(t, lvl, filter, c, out);
 }
