@@ -1,9 +1,11 @@
 /*
  * llvmpipe's float (SoA) texture sampling path and its general level-of-
- * detail selection, bit-exact (probe /work/shared/reference/probes/
- * t30_texsoa.c: every wrap mode x filter x size, mipmaps, LOD bias,
+ * detail selection, bit-exact (probes /work/shared/reference/probes/
+ * t30_texsoa.c, the C model, and t31_texsoa_fixgl.c, this file and r_tex.c
+ * against the oracle: every wrap mode x filter x size, mipmaps, LOD bias,
  * MIN_LOD/MAX_LOD, BASE/MAX_LEVEL, 1D, border colours of every base
- * format, projective coordinates; 0 mismatches in ~10M samples).
+ * format, projective coordinates; 0 mismatches in ~12M samples;
+ * ORACLE-NOTES.md "Texture sampling: the float SoA path").
  *
  * r_tex_sample (r_tex.c) hands a lookup here when state.c set `soa`:
  *  - float_path: the sampler is not one the fixed-point AoS path takes
