@@ -56,16 +56,16 @@ static enum r_tex_wrap tex_wrap(GLenum w)
    }
 }
 
-static bool is_pot(int n)
-{
-   return n > 0 && (n & (n - 1)) == 0;
-}
-
 /* [S: util/u_math.h:util_quantize_lod_bias] */
 static float quantize_lod_bias(float lod)
 {
-   lod = lod < -16.0f ? -16.0f : (lod > 16.0f ? 16.0f : lod);
+   lod = lod > -16.0f ? (lod > 16.0f ? 16.0f : lod) : -16.0f;
    return roundf(lod * 256.0f) / 256.0f;
+}
+
+static bool is_pot(int n)
+{
+   return n > 0 && (n & (n - 1)) == 0;
 }
 
 /* The parts of the sampler state r_tex_soa.c uses: which path samples

@@ -220,6 +220,113 @@ static const struct comb comb_frames[][4] = {
       { GL_SUBTRACT, GL_INTERPOLATE, { T, P, K }, { C, C, A }, { T, P, T }, { A, A, NA }, 4, 4 } },
 };
 
+#define Z GL_ZERO
+#define O GL_ONE
+#define T0 GL_TEXTURE0
+#define T1 GL_TEXTURE1
+
+static const struct comb comb_frames2[][4] = {
+    /* GL_ZERO / GL_ONE sources (ATI_texture_env_combine3): constants the
+     * compiler folds */
+    { { GL_ADD_SIGNED, GL_ADD_SIGNED, { O, T, K }, { C, C, A }, { T, O, K }, { A, A, A }, 1, 1 },
+      { GL_ADD_SIGNED, GL_MODULATE, { T, O, K }, { NC, NC, A }, { Z, T, K }, { NA, A, A }, 2, 1 },
+      { GL_INTERPOLATE, GL_INTERPOLATE, { T, Z, O }, { C, C, NC }, { O, T, Z }, { A, NA, A }, 1, 1 },
+      { GL_MODULATE, GL_ADD, { O, T, K }, { NC, C, A }, { Z, T, K }, { NA, A, A }, 4, 2 } },
+    /* ATI_texture_env_combine3 functions */
+    { { GL_MODULATE_ADD_ATI, GL_MODULATE_ADD_ATI, { T, P, K }, { C, C, C }, { T, P, K }, { A, A, A }, 1, 1 },
+      { GL_MODULATE_SIGNED_ADD_ATI, GL_MODULATE_SIGNED_ADD_ATI, { T, P, K }, { C, NC, A }, { T, P, K }, { A, NA, A }, 1, 1 },
+      { GL_MODULATE_SUBTRACT_ATI, GL_MODULATE_SUBTRACT_ATI, { T, P, K }, { NC, C, C }, { T, P, K }, { NA, A, A }, 2, 2 },
+      { GL_MODULATE_SIGNED_ADD_ATI, GL_MODULATE_ADD_ATI, { P, K, T }, { C, C, A }, { K, T, P }, { A, A, A }, 4, 1 } },
+    /* GL_TEXTUREn sources (the crossbar): unit 0's own texture, and a unit
+     * without a texture (reads 0) */
+    { { GL_MODULATE, GL_MODULATE, { T0, P, K }, { C, C, A }, { T0, P, K }, { A, A, A }, 1, 1 },
+      { GL_ADD, GL_REPLACE, { T1, P, K }, { C, C, A }, { T1, P, K }, { A, A, A }, 1, 1 },
+      { GL_INTERPOLATE, GL_ADD, { T0, T1, P }, { C, NC, C }, { T1, P, K }, { NA, A, A }, 2, 1 },
+      { GL_SUBTRACT, GL_SUBTRACT, { P, T0, K }, { C, A, A }, { T0, T1, K }, { A, NA, A }, 1, 4 } },
+    /* GL_DOT3_RGB_EXT / DOT3_RGBA_EXT: scales ignored as Mesa does */
+    { { GL_DOT3_RGB_EXT, GL_MODULATE, { T, P, K }, { C, C, A }, { T, P, K }, { A, A, A }, 4, 2 },
+      { GL_DOT3_RGBA_EXT, GL_MODULATE, { T, K, K }, { C, NC, A }, { P, K, K }, { A, A, A }, 2, 4 },
+      { GL_DOT3_RGB_EXT, GL_REPLACE, { P, T, K }, { NC, A, A }, { T, T, K }, { NA, A, A }, 1, 4 },
+      { GL_DOT3_RGBA, GL_MODULATE, { T, T, K }, { C, C, A }, { T, T, K }, { A, A, A }, 4, 4 } },
+    /* one source in two products of INTERPOLATE: the compiler factors
+     * a*b + a*c into a*(b + c) */
+    { { GL_INTERPOLATE, GL_INTERPOLATE, { T, K, K }, { C, C, C }, { T, K, K }, { A, A, A }, 1, 1 },
+      { GL_INTERPOLATE, GL_INTERPOLATE, { K, K, T }, { C, C, C }, { P, P, T }, { A, A, A }, 1, 1 },
+      { GL_INTERPOLATE, GL_INTERPOLATE, { T, P, T }, { NC, C, C }, { P, T, V }, { A, NA, A }, 2, 1 },
+      { GL_INTERPOLATE, GL_INTERPOLATE, { V, P, T }, { C, C, NC }, { T, T, K }, { NA, NA, A }, 1, 2 } },
+};
+
+static const char *const comb_names2[] = {
+    "texture/env_combine_zero_one", "texture/env_combine_ati", "texture/env_combine_crossbar",
+    "texture/env_combine_dot3_ext", "texture/env_combine_factor",
+};
+
+static void combine_case2(fc_h *h)
+{
+    const char *name = fc_this_case(h)->name;
+    size_t f = 0;
+    for (size_t i = 0; i < sizeof comb_names2 / sizeof comb_names2[0]; i++)
+        if (strcmp(comb_names2[i], name) == 0)
+            f = i;
+    env_texture(GL_RGBA, GL_RGBA, 11);
+    const float ec[4] = { 0.15f, 0.85f, 0.5f, 0.65f };
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+    for (int i = 0; i < 4; i++) {
+        set_comb(&comb_frames2[f][i]);
+        draw_unlit(h);
+    }
+    draw_lit(h);
+}
+
+/* NV_texture_env_combine4: four arguments, ADD = a0*a1 + a2*a3. */
+static void combine4_nv(fc_h *h)
+{
+    env_texture(GL_RGBA, GL_RGBA, 13);
+    const float ec[4] = { 0.4f, 0.6f, 0.2f, 0.9f };
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+    static const GLenum modes[4] = { GL_ADD, GL_ADD_SIGNED, GL_ADD, GL_ADD_SIGNED };
+    static const GLenum srcs[4][4] = { { T, P, K, V }, { P, K, T, O }, { T, T, P, Z }, { K, P, T, P } };
+    static const GLenum oprs[4][4] = { { C, NC, A, C }, { C, C, NA, C }, { NC, A, C, C }, { A, NC, C, NA } };
+    for (int f = 0; f < 4; f++) {
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE4_NV);
+        glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)modes[f]);
+        glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)modes[3 - f]);
+        for (int i = 0; i < 4; i++) {
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, (GLint)srcs[f][i]);
+            glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, (GLint)oprs[f][i]);
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i, (GLint)srcs[3 - f][i]);
+            glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i,
+                      (GLint)(oprs[f][i] == NC || oprs[f][i] == NA ? NA : A));
+        }
+        glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, (float)(1 << (f & 1)));
+        glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, (float)(1 << (f >> 1)));
+        draw_unlit(h);
+    }
+}
+
+/* Texture alpha through the alpha test and blending; two-sided lighting
+ * and flat shading under MODULATE. */
+static void env_fragment_ops(fc_h *h)
+{
+    env_texture(GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, 17);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_GREATER, 0.3f);
+    draw_unlit(h);
+    glDisable(GL_ALPHA_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    draw_unlit(h);
+    glDisable(GL_BLEND);
+    glShadeModel(GL_FLAT);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    const float bd[4] = { 0.2f, 0.9f, 0.3f, 0.8f };
+    glMaterialfv(GL_BACK, GL_DIFFUSE, bd);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    draw_lit(h);
+}
+
 static const char *const comb_names[] = {
     "texture/env_combine_replace", "texture/env_combine_modulate", "texture/env_combine_add",
     "texture/env_combine_add_signed", "texture/env_combine_interpolate",
@@ -263,5 +370,12 @@ const fc_case fc_cases_tex_env[] = {
     CB("texture/env_combine_dot3_rgb")
     CB("texture/env_combine_dot3_rgba")
     CB("texture/env_combine_mixed")
+    FC_CASE_RGBA("texture/env_combine_zero_one", 48, 48, 5, "texture", combine_case2),
+    FC_CASE_RGBA("texture/env_combine_ati", 48, 48, 5, "texture", combine_case2),
+    FC_CASE_RGBA("texture/env_combine_crossbar", 48, 48, 5, "texture", combine_case2),
+    FC_CASE_RGBA("texture/env_combine_dot3_ext", 48, 48, 5, "texture", combine_case2),
+    FC_CASE_RGBA("texture/env_combine_factor", 48, 48, 5, "texture", combine_case2),
+    FC_CASE_RGBA("texture/env_combine4_nv", 48, 48, 4, "texture", combine4_nv),
+    FC_CASE_RGBA("texture/env_fragment_ops", 48, 48, 3, "texture", env_fragment_ops),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }
 };

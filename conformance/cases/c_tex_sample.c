@@ -297,6 +297,237 @@ static void rebind_incomplete(fc_h *h)
     scene_flat(h, -2.2f, 4.3f);
 }
 
+
+/* Projective texture coordinates: q varies per vertex, so the lookup
+ * divides by the interpolated q (coord * frcp(q)) before the level of
+ * detail; ortho and perspective, with mipmaps. */
+static void projective(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 32, 16);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glTexCoord4f(0.1f, 0.2f, 0, 1.0f);   glVertex2f(2, 3);
+    glTexCoord4f(2.4f, 0.1f, 0, 3.0f);   glVertex2f(62, 5);
+    glTexCoord4f(0.5f, 1.9f, 0, 0.5f);   glVertex2f(30, 61);
+    glTexCoord4f(-1.0f, 3.0f, 0, 2.0f);  glVertex2f(61, 62);
+    glTexCoord4f(4.0f, -2.0f, 0, -1.5f); glVertex2f(40, 20);
+    glTexCoord4f(0.3f, 0.7f, 0, 0.25f);  glVertex2f(10, 55);
+    glEnd();
+    fc_capture(h);
+    tex_params(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    const fc_case *c = fc_this_case(h);
+    glViewport(0, 0, c->width, c->height);
+    fcu_frustum(-0.5, 0.5, -0.5, 0.5, 1, 60);
+    fcu_clear(0, 0, 0, 1, 1);
+    glBegin(GL_QUADS);
+    glTexCoord4f(0, 0, 0, 1);       glVertex3f(-4, -1, -1.5f);
+    glTexCoord4f(8, 0, 0, 2);       glVertex3f(4, -1, -1.5f);
+    glTexCoord4f(4, 12, 0, 0.5f);   glVertex3f(4, -1, -40);
+    glTexCoord4f(0, 3, 0, 1.25f);   glVertex3f(-4, -1, -40);
+    glEnd();
+    fc_capture(h);
+}
+
+/* A texture coordinate set once before glBegin (the current value), on
+ * perspective triangles, at coordinates on exact LINEAR rounding ties
+ * and NEAREST texel edges. */
+static void const_coord(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    noise_image(GL_TEXTURE_2D, 0, 4, 4, 4);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    const fc_case *c = fc_this_case(h);
+    for (int frame = 0; frame < 2; frame++) {
+        glViewport(0, 0, c->width, c->height);
+        fcu_frustum(-0.5, 0.5, -0.5, 0.5, 1, 60);
+        fcu_clear(0, 0, 0, 1, 1);
+        for (int i = 0; i < 16; i++) {
+            const float x = -3.0f + 0.4f * (float)(i % 4), y = -1.0f + 0.6f * (float)(i / 4);
+            /* (k + 0.5) / 1024: s * 4 * 256 is a tie */
+            glTexCoord2f(((float)(i * 37 % 1024) + 0.5f) / 1024.0f,
+                         ((float)(i * 91 % 1024) + 0.5f) / 1024.0f);
+            glBegin(GL_TRIANGLES);
+            glVertex3f(x, y, -2.0f - 0.5f * (float)i);
+            glVertex3f(x + 1.5f, y - 0.3f, -9.0f);
+            glVertex3f(x + 0.2f, y + 1.2f, -4.0f);
+            glEnd();
+        }
+        fc_capture(h);
+        tex_params(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_REPEAT);
+    }
+}
+
+/* GL_TEXTURE_BASE_LEVEL / MAX_LEVEL: the chain from level 1, cut at 3
+ * (the levels range, not a LOD clamp: still the fast path). */
+static void base_max_level(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 64, 64);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    scene_persp(h, 10.0f);
+    tex_params(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT);
+    scene_flat(h, -1.0f, 7.0f);
+}
+
+/* Texturing with polygon stipple, flat shading, smooth points and lines
+ * (the draw module's quads, drawn as triangles), culling and polygon
+ * offset. */
+static void raster_state(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 16, 16);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GLubyte pat[128];
+    for (int i = 0; i < 128; i++)
+        pat[i] = (GLubyte)(0x5a ^ (i * 13));
+    glPolygonStipple(pat);
+    glEnable(GL_POLYGON_STIPPLE);
+    glShadeModel(GL_FLAT);
+    scene_flat(h, -0.5f, 2.5f);
+    glDisable(GL_POLYGON_STIPPLE);
+    glShadeModel(GL_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_LINE_SMOOTH);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glPointSize(6.0f);
+    glLineWidth(3.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 6; i++) {
+        glTexCoord2f(0.17f * (float)i, 0.4f);
+        glVertex2f(6.0f + 10.0f * (float)i, 10.0f);
+    }
+    glEnd();
+    glBegin(GL_LINES);
+    glTexCoord2f(0, 0); glVertex2f(3, 20);
+    glTexCoord2f(3, 1); glVertex2f(60, 50);
+    glTexCoord2f(0, 2); glVertex2f(5, 60);
+    glTexCoord2f(1, 0); glVertex2f(58, 30);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Different wraps on s and t; GL_TEXTURE_1D and 2D enabled together (2D
+ * wins); the 1D texture minified on a receding plane. */
+static void mixed_wrap(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    noise_image(GL_TEXTURE_2D, 0, 6, 8, 5);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_1D, 2);
+    noise_image(GL_TEXTURE_1D, 0, 8, 1, 6);
+    tex_params(GL_TEXTURE_1D, GL_NEAREST, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_1D);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    scene_flat(h, -1.3f, 2.1f);
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    scene_persp(h, 5.0f);
+    glDisable(GL_TEXTURE_2D);
+    scene_persp(h, 7.0f);
+}
+
+/* Large triangles crossing the near plane in a bigger buffer: clipped
+ * vertices get their texture coordinates by the clipper's lerp, then
+ * perspective-correct interpolation over hundreds of pixels. */
+static void persp_large(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 64, 64);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    const fc_case *c = fc_this_case(h);
+    glViewport(0, 0, c->width, c->height);
+    fcu_frustum(-0.6, 0.6, -0.45, 0.45, 0.5, 100);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glEnable(GL_DEPTH_TEST);
+    glRotatef(17.0f, 0.2f, 1.0f, 0.1f);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);       glTexCoord2f(0, 0);   glVertex3f(-30, -2, 10);
+    glColor3f(1, 0.8f, 0.6f); glTexCoord2f(20, 0);  glVertex3f(30, -2, 10);
+    glColor3f(0.6f, 0.8f, 1); glTexCoord2f(10, 40); glVertex3f(0, -2, -90);
+    glColor3f(0.9f, 0.9f, 0.9f); glTexCoord2f(-3, 1); glVertex3f(-3, 4, 3);
+    glColor3f(0.7f, 1, 0.7f); glTexCoord2f(5, 2);   glVertex3f(6, -1, -25);
+    glColor3f(1, 0.7f, 0.7f); glTexCoord2f(1, 9);   glVertex3f(-2, 9, -40);
+    glEnd();
+    fc_capture(h);
+    tex_params(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    glRotatef(-40.0f, 1.0f, 0.0f, 0.0f);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glBegin(GL_QUADS);
+    glTexCoord2f(-0.5f, -0.5f); glVertex3f(-20, -3, 5);
+    glTexCoord2f(1.5f, -0.5f);  glVertex3f(20, -3, 5);
+    glTexCoord2f(1.5f, 1.5f);   glVertex3f(20, -3, -60);
+    glTexCoord2f(-0.5f, 1.5f);  glVertex3f(-20, -3, -60);
+    glEnd();
+    fc_capture(h);
+}
+
+/* Texture coordinates from arrays (glDrawArrays, glDrawElements), a
+ * display list, and polygon mode GL_LINE / GL_POINT (the draw module's
+ * unfilled stage). */
+static void arrays_lists(fc_h *h)
+{
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 32, 32);
+    tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    static const GLfloat v[8][2] = { { 2, 2 }, { 30, 4 }, { 60, 3 }, { 4, 30 },
+                                     { 33, 31 }, { 61, 28 }, { 3, 61 }, { 58, 60 } };
+    static const GLfloat t[8][2] = { { 0, 0 }, { 1.5f, 0.1f }, { 3.2f, -0.2f }, { 0.2f, 1.4f },
+                                     { 1.7f, 1.6f }, { 2.9f, 1.1f }, { -0.4f, 3.3f }, { 2.5f, 3.0f } };
+    static const GLubyte idx[] = { 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glTexCoordPointer(2, GL_FLOAT, 0, t);
+    glDrawElements(GL_QUADS, 12, GL_UNSIGNED_BYTE, idx);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 8);
+    fc_capture(h);
+    glNewList(1, GL_COMPILE);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, 6);
+    glEndList();
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    fcu_clear(0, 0, 0, 1, 1);
+    glCallList(1);
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glLineWidth(2.0f);
+    glCallList(1);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+    glPointSize(3.0f);
+    glTranslatef(1.5f, 0.5f, 0);
+    glCallList(1);
+    fc_capture(h);
+}
+
 #define S(name) FC_CASE_RGBA(name, 64, 64, 2, "texture", sample_case),
 #define SIZES(base) S(base "_nearest_repeat") S(base "_nearest_edge") S(base "_linear_repeat") \
     S(base "_linear_edge") S(base "_minlin_magnear_repeat") S(base "_minnear_maglin_edge")
@@ -319,6 +550,13 @@ const fc_case fc_cases_tex_sample[] = {
     FILTERS("texture/mip_2d_npot_edge")
     FILTERS("texture/mip_1d_repeat")
     FILTERS("texture/mip_1d_npot_edge")
+    FC_CASE_RGBA("texture/sample_projective", 64, 64, 2, "texture", projective),
+    FC_CASE_RGBA("texture/sample_const_coord", 64, 64, 2, "texture", const_coord),
+    FC_CASE_RGBA("texture/mip_base_max_level", 64, 64, 2, "texture", base_max_level),
+    FC_CASE_RGBA("texture/sample_raster_state", 64, 64, 2, "texture", raster_state),
+    FC_CASE_RGBA("texture/sample_mixed_wrap", 64, 64, 3, "texture", mixed_wrap),
+    FC_CASE_RGBA("texture/sample_persp_large", 160, 120, 2, "texture", persp_large),
+    FC_CASE_RGBA("texture/sample_arrays_lists", 64, 64, 4, "texture varray dlist", arrays_lists),
     FC_CASE_RGBA("texture/sample_lines_points", 64, 64, 2, "texture", lines_points),
     FC_CASE_RGBA("texture/sample_rebind_incomplete", 48, 48, 4, "texture", rebind_incomplete),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }

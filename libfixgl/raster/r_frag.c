@@ -303,10 +303,32 @@ static bool is_one_minus(int opr)
  * emit_combine], as NIR optimizes it before llvmpipe compiles it (every op
  * rounded on its own: llvmpipe lowers ffma; ST_DEBUG=nir shows the
  * reassociations nir_opt_algebraic makes, noted below). */
+/* Which value an argument's channel c is in the compiled shader (NIR's CSE
+ * merges equal expressions, and nir_opt_algebraic then factors
+ * a*b + a*c into a*(b + c)): its source (the unit's own texture is its
+ * GL_TEXTUREn; the first unit's PREVIOUS is the primary colour, the same
+ * gl_Color load), whether it is 1 - x and the component read.  GL_ZERO and
+ * GL_ONE fold away first: -1, never equal. */
+static int arg_key(int src, bool one_minus, bool alpha, int c, int unit, bool prev_is_primary)
+{
+   if (src == R_SRC_ZERO || src == R_SRC_ONE)
+      return -1;
+   if (src == R_SRC_TEXTURE)
+      src = R_SRC_TEXTURE0 + unit;
+   if (src == R_SRC_PREVIOUS && prev_is_primary)
+      src = R_SRC_PRIMARY_COLOR;
+   return src * 16 + (one_minus ? 8 : 0) + (alpha ? 3 : c);
+}
+
+static inline bool same_key(int a, int b)
+{
+   return a >= 0 && a == b;
+}
+
 static void emit_combine(const struct r_state *rs, const float in[][4],
                          const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
-                         const float prev[4], int nargs, int mode, const uint8_t *src,
-                         const uint8_t *opr, int c0, int c1, float res[4])
+                         const float prev[4], bool prev_is_primary, int nargs, int mode,
+                         const uint8_t *src, const uint8_t *opr, int c0, int c1, float res[4])
 {
    /* a: the arguments; x: their sources before a 1 - x operand */
    float a[4][4], x4[4][4];
@@ -334,6 +356,11 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
    }
    for (int c = c0; c < c1; c++) {
       float r;
+      int key[4];
+      for (int i = 0; i < nargs; i++)
+         key[i] = arg_key(src[i], is_one_minus(opr[i]),
+                          opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
+                          unit, prev_is_primary);
       switch (mode) {
       case R_COMB_REPLACE:
          r = a[0][c];
@@ -348,20 +375,31 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
          /* (a0 + a1) + -0.5 becomes (a0 + -0.5) + a1 (nir_opt_algebraic
           * "Prefer moving out a multiplication": (a + b) + #c ->
           * (a + c) + b); with a0 = 1 - x the constants fold,
-          * -0.5 + (1 + -x) -> 0.5 + -x */
+          * -0.5 + (1 + -x) -> 0.5 + -x; a1 = 1 - x stays unfolded (both
+          * checked against the oracle's float output; GL_ZERO/GL_ONE
+          * arguments fold to the same values) */
          if (is_one_minus(opr[0]) && src[0] != R_SRC_ZERO && src[0] != R_SRC_ONE)
             r = (0.5f + -x4[0][c]) + a[1][c];
          else
             r = (a[0][c] + -0.5f) + a[1][c];
          break;
-      case R_COMB_INTERPOLATE:
-         /* a0*a2 + a1*(1 - a2); with a2 = 1 - x, 1 - (1 - x) folds to x
-          * (nir_opt_algebraic: a + -(a + b) -> -b) */
-         if (is_one_minus(opr[2]) && src[2] != R_SRC_ZERO && src[2] != R_SRC_ONE)
-            r = a[0][c] * a[2][c] + a[1][c] * x4[2][c];
+      case R_COMB_INTERPOLATE: {
+         /* a0*a2 + a1*b, b = 1 - a2; with a2 = 1 - x, b = 1 - (1 - x)
+          * folds to x (nir_opt_algebraic: a + -(a + b) -> -b); a common
+          * factor of the two products is taken out, a*b + a*c ->
+          * a*(b + c) (all checked against the oracle's float output) */
+         const float b = is_one_minus(opr[2]) && key[2] >= 0 ? x4[2][c] : 1.0f - a[2][c];
+         const int kb = key[2] >= 0 ? (key[2] ^ 8) : -1;
+         if (same_key(key[0], key[1]))
+            r = a[0][c] * (a[2][c] + b);
+         else if (same_key(key[0], kb))
+            r = a[0][c] * (a[2][c] + a[1][c]);
+         else if (same_key(key[2], key[1]))
+            r = a[2][c] * (a[0][c] + b);
          else
-            r = a[0][c] * a[2][c] + a[1][c] * (1.0f - a[2][c]);
+            r = a[0][c] * a[2][c] + a[1][c] * b;
          break;
+      }
       case R_COMB_SUBTRACT:
          r = a[0][c] - a[1][c];
          break;
@@ -369,20 +407,39 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
          r = a[0][c] * a[2][c] + a[1][c];
          break;
       case R_COMB_MODULATE_SIGNED_ADD_ATI:
-         /* (a0*a2 + a1) + -0.5 -> (a1 + -0.5) + a0*a2 */
-         r = (a[1][c] + -0.5f) + a[0][c] * a[2][c];
+         /* (a0*a2 + a1) + -0.5 -> (a1 + -0.5) + a0*a2, with a1 = 1 - x
+          * folded to (0.5 + -x) + a0*a2 as for ADD_SIGNED */
+         if (is_one_minus(opr[1]) && src[1] != R_SRC_ZERO && src[1] != R_SRC_ONE)
+            r = (0.5f + -x4[1][c]) + a[0][c] * a[2][c];
+         else
+            r = (a[1][c] + -0.5f) + a[0][c] * a[2][c];
          break;
       case R_COMB_MODULATE_SUBTRACT_ATI:
          r = a[0][c] * a[2][c] - a[1][c];
          break;
       case R_COMB_ADD_PRODUCTS_NV:
-         r = a[0][c] * a[1][c] + a[2][c] * a[3][c];
-         break;
       case R_COMB_ADD_PRODUCTS_SIGNED_NV:
-      default:
-         /* (a0*a1 + a2*a3) + -0.5 -> (a0*a1 + -0.5) + a2*a3 */
-         r = (a[0][c] * a[1][c] + -0.5f) + a[2][c] * a[3][c];
+      default: {
+         /* a0*a1 + a2*a3, a common factor taken out first; the signed
+          * form adds -0.5 to the first product, (p0 + -0.5) + p1, unless
+          * factored */
+         const float *f = NULL;
+         float u = 0.0f, v = 0.0f;
+         if (same_key(key[0], key[2])) { f = a[0]; u = a[1][c]; v = a[3][c]; }
+         else if (same_key(key[0], key[3])) { f = a[0]; u = a[1][c]; v = a[2][c]; }
+         else if (same_key(key[1], key[2])) { f = a[1]; u = a[0][c]; v = a[3][c]; }
+         else if (same_key(key[1], key[3])) { f = a[1]; u = a[0][c]; v = a[2][c]; }
+         if (f) {
+            r = f[c] * (u + v);
+            if (mode == R_COMB_ADD_PRODUCTS_SIGNED_NV)
+               r = r + -0.5f;
+         } else if (mode == R_COMB_ADD_PRODUCTS_SIGNED_NV) {
+            r = (a[0][c] * a[1][c] + -0.5f) + a[2][c] * a[3][c];
+         } else {
+            r = a[0][c] * a[1][c] + a[2][c] * a[3][c];
+         }
          break;
+      }
       }
       res[c] = r;
    }
@@ -414,7 +471,7 @@ static bool args_match(const struct r_tex_combine *k)
 /* One unit's environment [S: ff_fragment_shader.cpp:emit_texenv]. */
 static void emit_texenv(const struct r_state *rs, const float in[][4],
                         const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
-                        const float prev[4], float res[4])
+                        const float prev[4], bool first, float res[4])
 {
    const struct r_tex_combine *k = &rs->tex[unit].comb;
    unsigned rgb_shift = k->shift_rgb, alpha_shift = k->shift_a;
@@ -428,24 +485,24 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
    const bool alpha_sat = !alpha_shift && comb_need_saturate(k->mode_a);
 
    if (k->mode_rgb == k->mode_a && args_match(k)) {
-      emit_combine(rs, in, quad, tc, unit, prev, k->nargs_rgb, k->mode_rgb,
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
                    k->src_rgb, k->opr_rgb, 0, 4, res);
       if (rgb_sat)
          for (int c = 0; c < 4; c++)
             res[c] = fsat(res[c]);
    } else if (k->mode_rgb == R_COMB_DOT3_RGBA || k->mode_rgb == R_COMB_DOT3_RGBA_EXT) {
-      emit_combine(rs, in, quad, tc, unit, prev, k->nargs_rgb, k->mode_rgb,
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
                    k->src_rgb, k->opr_rgb, 0, 4, res);
       if (rgb_sat)
          for (int c = 0; c < 4; c++)
             res[c] = fsat(res[c]);
    } else {
-      emit_combine(rs, in, quad, tc, unit, prev, k->nargs_rgb, k->mode_rgb,
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_rgb, k->mode_rgb,
                    k->src_rgb, k->opr_rgb, 0, 3, res);
       if (rgb_sat)
          for (int c = 0; c < 3; c++)
             res[c] = fsat(res[c]);
-      emit_combine(rs, in, quad, tc, unit, prev, k->nargs_a, k->mode_a,
+      emit_combine(rs, in, quad, tc, unit, prev, first, k->nargs_a, k->mode_a,
                    k->src_a, k->opr_a, 3, 4, res);
       if (alpha_sat)
          res[3] = fsat(res[3]);
@@ -460,27 +517,36 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
    }
 }
 
+/* The texture environments of the enabled units in order, each on the
+ * previous one's result, the first on the fragment colour
+ * (ff_fragment_shader.cpp emit_instructions); kept out of line so the
+ * untextured fragment program stays small. */
+static __attribute__((noinline)) void texture_units(const struct r_state *rs, const float in[][4],
+                                                    const struct r_fs_quad *quad, float out[4])
+{
+   struct tex_cache tc;
+   tc.have = 0;
+   float prev[4], res[4];
+   bool first = true;   /* PREVIOUS is still the primary colour */
+   for (int c = 0; c < 4; c++)
+      prev[c] = in[R_FS_COLOR0][c];
+   for (int u = 0; u < rs->tex_nr; u++) {
+      if (!(rs->tex_units & (1u << u)))
+         continue;
+      emit_texenv(rs, in, quad, &tc, u, prev, first, res);
+      first = false;
+      for (int c = 0; c < 4; c++)
+         prev[c] = res[c];
+   }
+   for (int c = 0; c < 4; c++)
+      out[c] = prev[c];
+}
+
 void r_fragment_shader(const struct r_state *rs, const float in[][4],
                        const struct r_fs_quad *quad, float out[4])
 {
-   /* the texture environments of the enabled units in order, each on the
-    * previous one's result, the first on the fragment colour
-    * (ff_fragment_shader.cpp emit_instructions) */
    if (rs->tex_units) {
-      struct tex_cache tc;
-      tc.have = 0;
-      float prev[4], res[4];
-      for (int c = 0; c < 4; c++)
-         prev[c] = in[R_FS_COLOR0][c];
-      for (int u = 0; u < rs->tex_nr; u++) {
-         if (!(rs->tex_units & (1u << u)))
-            continue;
-         emit_texenv(rs, in, quad, &tc, u, prev, res);
-         for (int c = 0; c < 4; c++)
-            prev[c] = res[c];
-      }
-      for (int c = 0; c < 4; c++)
-         out[c] = prev[c];
+      texture_units(rs, in, quad, out);
    } else {
       for (int c = 0; c < 4; c++)
          out[c] = in[R_FS_COLOR0][c];

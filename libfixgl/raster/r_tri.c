@@ -214,14 +214,19 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    }
 }
 
-/* The texture coordinates of the quad of pixel (px, py): its top-left,
- * top-right and bottom-left pixels (even y-down coordinates), evaluated like
- * every pixel's inputs whether or not they are covered
- * [S: lp_bld_interp.c, lp_bld_quad.c] (llvmpipe-facts.md §5). */
-static void tri_quad(const struct r_state *rs, const struct tri_shade *ts, int px, int py,
-                     struct r_fs_quad *q)
+/* The fragment program of a textured triangle, given the texture
+ * coordinates of the quad of pixel (px, py): its top-left, top-right and
+ * bottom-left pixels (even y-down coordinates), evaluated like every
+ * pixel's inputs whether or not they are covered [S: lp_bld_interp.c,
+ * lp_bld_quad.c] (llvmpipe-facts.md §5).  Out of line: the untextured
+ * pixel loop keeps its size. */
+static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
+                                                     const struct tri_shade *ts,
+                                                     const float in[][4], int px, int py,
+                                                     float color[4])
 {
    static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
+   struct r_fs_quad q;
    const int qx = px & ~1, qy = py & ~1;
    /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
    for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
@@ -231,11 +236,12 @@ static void tri_quad(const struct r_state *rs, const struct tri_shade *ts, int p
          if (!(rs->tex_units & (1u << u)))
             continue;
          const int a = R_FS_TEX0 + u;
-         float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
+         float *d = i < 3 ? q.tex[u][i] : q.pair[u][i - 3];
          for (int c = 0; c < 4; c++)
             d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
       }
    }
+   r_fragment_shader(rs, in, &q, color);
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
@@ -256,9 +262,7 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    }
    float color[4];
    if (rs->tex_units) {
-      struct r_fs_quad quad;
-      tri_quad(rs, ts, px, py, &quad);
-      r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
+      shade_textured(rs, ts, (const float (*)[4])in, px, py, color);
    } else {
       r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
    }
