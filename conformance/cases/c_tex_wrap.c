@@ -420,6 +420,77 @@ static void wrap_minmag_vector(fc_h *h)
     }
 }
 
+/* Random samplers (seeded): size (power of two or not, 1D or 2D), a full
+ * mipmap chain of noise, wraps on s and t from all eight modes, min, mag
+ * and mip filters, border colour, object and unit LOD bias, MIN_LOD /
+ * MAX_LOD, BASE_LEVEL / MAX_LEVEL, on projective triangles.  One frame
+ * each. */
+static void wrap_random(fc_h *h)
+{
+    static const GLenum wraps[8] = {
+        GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT,
+        GL_MIRROR_CLAMP_EXT, GL_MIRROR_CLAMP_TO_EDGE, GL_MIRROR_CLAMP_TO_BORDER_EXT,
+    };
+    static const GLenum mins[6] = {
+        GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+        GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR,
+    };
+    const fc_case *c = fc_this_case(h);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    for (int f = 0; f < c->frames; f++) {
+        rng_state = (unsigned)f * 7717u + 3u;
+        const bool is1d = f % 4 == 3;
+        const GLenum target = is1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+        glDisable(GL_TEXTURE_1D);
+        glDisable(GL_TEXTURE_2D);
+        glEnable(target);
+        glBindTexture(target, (GLuint)(1 + is1d));
+        int w = 1 << (rng() % 6), hh = is1d ? 1 : 1 << (rng() % 6);
+        if (rng() % 3 == 0) {
+            w += (int)(rng() % 3);
+            hh += is1d ? 0 : (int)(rng() % 3);
+        }
+        int nl = 0;
+        for (int lw = w, lh = hh;; lw = lw > 1 ? lw / 2 : 1, lh = lh > 1 ? lh / 2 : 1) {
+            noise_image(target, nl, lw, lh, (unsigned)f * 31u + (unsigned)nl);
+            nl++;
+            if (lw == 1 && lh == 1)
+                break;
+        }
+        tex_params(target, mins[rng() % 6], rng() % 2 ? GL_LINEAR : GL_NEAREST,
+                   wraps[rng() % 8], wraps[rng() % 8]);
+        border(target, (float)(rng() % 256) / 255.0f, (float)(rng() % 256) / 255.0f,
+               (float)(rng() % 256) / 255.0f, (float)(rng() % 256) / 255.0f);
+        glTexParameterf(target, GL_TEXTURE_LOD_BIAS,
+                        rng() % 2 ? (float)((int)(rng() % 64) - 32) / 8.0f : 0.0f);
+        glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS,
+                  rng() % 3 == 0 ? (float)((int)(rng() % 64) - 32) / 8.0f : 0.0f);
+        glTexParameterf(target, GL_TEXTURE_MIN_LOD,
+                        rng() % 3 == 0 ? (float)((int)(rng() % 40) - 10) / 8.0f : -1000.0f);
+        glTexParameterf(target, GL_TEXTURE_MAX_LOD,
+                        rng() % 3 == 0 ? (float)((int)(rng() % 40) - 10) / 8.0f : 1000.0f);
+        const int base = rng() % 4 == 0 ? (int)(rng() % (unsigned)nl) : 0;
+        glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, base);
+        glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, rng() % 4 == 0 ? base + (int)(rng() % 4) : 1000);
+        fc_pixel_ortho(h);
+        fcu_clear(0.2f, 0.1f, 0.3f, 1, 1);
+        const float range = 1.0f + (float)(rng() % 16);
+        glBegin(GL_TRIANGLES);
+        for (int i = 0; i < 12; i++) {
+            const float q = rng() % 3 ? 0.2f + (float)(rng() % 1000) / 250.0f : 1.0f;
+            const float s = ((float)(rng() % 2000) / 1000.0f - 1.0f) * range + 0.5f;
+            const float t = ((float)(rng() % 2000) / 1000.0f - 1.0f) * range + 0.5f;
+            glTexCoord4f(s * q, t * q, 0, q);
+            glVertex2f((float)(rng() % (unsigned)(c->width * 16)) / 16.0f,
+                       (float)(rng() % (unsigned)(c->height * 16)) / 16.0f);
+        }
+        glEnd();
+        fc_capture(h);
+    }
+    fc_error(h, "random samplers");
+}
+
 /* Mipmapped textures on the float path: every mip filter with the wraps
  * that take it, on the receding floor. */
 struct wmip_param {
@@ -626,6 +697,7 @@ const fc_case fc_cases_tex_wrap[] = {
     FC_CASE_RGBA("texture/wrap_border_formats", 40, 40, 24, "texture", wrap_border_formats),
     FC_CASE_RGBA("texture/wrap_border_blend", 40, 40, 2, "texture fragment", wrap_border_blend),
     FC_CASE_RGBA("texture/wrap_minmag_vector", 48, 48, 16, "texture", wrap_minmag_vector),
+    FC_CASE_RGBA("texture/wrap_random", 48, 48, 32, "texture", wrap_random),
 #define MC(n) FC_CASE_RGBA(n "_nn", 64, 64, 3, "texture", wrap_mip_case),         \
               FC_CASE_RGBA(n "_ln", 64, 64, 3, "texture", wrap_mip_case),         \
               FC_CASE_RGBA(n "_nl", 64, 64, 3, "texture", wrap_mip_case),         \
