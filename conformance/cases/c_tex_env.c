@@ -351,6 +351,83 @@ static void combine_case(fc_h *h)
     draw_lit(h);
 }
 
+/* Random combiners: per frame random functions, sources (every source,
+ * GL_ZERO/GL_ONE and GL_TEXTURE0/1 included), operands and scales for rgb
+ * and alpha, on random smooth triangles over a random RGBA texture. */
+static void random_combine(fc_h *h)
+{
+    static const GLenum fr[] = { GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE,
+                                 GL_SUBTRACT, GL_DOT3_RGB, GL_DOT3_RGBA, GL_MODULATE_ADD_ATI,
+                                 GL_MODULATE_SIGNED_ADD_ATI, GL_MODULATE_SUBTRACT_ATI };
+    static const GLenum fa[] = { GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE,
+                                 GL_SUBTRACT, GL_MODULATE_ADD_ATI, GL_MODULATE_SIGNED_ADD_ATI,
+                                 GL_MODULATE_SUBTRACT_ATI };
+    static const GLenum src[] = { GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS,
+                                  GL_ZERO, GL_ONE, GL_TEXTURE0, GL_TEXTURE1,
+                                  GL_TEXTURE, GL_PRIMARY_COLOR, GL_CONSTANT };
+    static const GLenum opr[] = { GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
+                                  GL_ONE_MINUS_SRC_ALPHA };
+    static const float scales[3] = { 1, 2, 4 };
+    const fc_case *c = fc_this_case(h);
+    unsigned seed = (unsigned)c->name[strlen(c->name) - 1] * 1237u;
+    rng_state = seed;
+    env_texture(GL_RGBA, GL_RGBA, rng());
+    fc_pixel_ortho(h);
+    for (int frame = 0; frame < c->frames; frame++) {
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+        glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)fr[rng() % (sizeof fr / sizeof fr[0])]);
+        glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)fa[rng() % (sizeof fa / sizeof fa[0])]);
+        const bool same = (rng() % 3) == 0;   /* rgb and alpha arguments alike */
+        for (int i = 0; i < 3; i++) {
+            const GLenum s0 = src[rng() % (sizeof src / sizeof src[0])];
+            const GLenum o0 = opr[rng() % 4];
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, (GLint)s0);
+            glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, (GLint)o0);
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i,
+                      (GLint)(same ? s0 : src[rng() % (sizeof src / sizeof src[0])]));
+            glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i,
+                      (GLint)(same ? (o0 == GL_SRC_COLOR || o0 == GL_SRC_ALPHA ? GL_SRC_ALPHA
+                                                                                : GL_ONE_MINUS_SRC_ALPHA)
+                                   : opr[2 + rng() % 2]));
+        }
+        glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, scales[rng() % 3]);
+        glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, scales[rng() % 3]);
+        float ec[4];
+        for (int k = 0; k < 4; k++)
+            ec[k] = (float)(rng() % 1000) / 999.0f;
+        glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+        fcu_clear(0.25f, 0.5f, 0.75f, 0.5f, 1);
+        glBegin(GL_TRIANGLES);
+        for (int i = 0; i < 12 * 3; i++) {
+            glColor4f((float)(rng() % 256) / 255.0f, (float)(rng() % 256) / 255.0f,
+                      (float)(rng() % 256) / 255.0f, (float)(rng() % 256) / 255.0f);
+            glTexCoord2f((float)(rng() % 300) / 100.0f - 1.0f, (float)(rng() % 300) / 100.0f - 1.0f);
+            glVertex2f((float)(rng() % 480) / 10.0f, (float)(rng() % 480) / 10.0f);
+        }
+        glEnd();
+        fc_capture(h);
+    }
+}
+
+/* An env colour outside [0, 1] (clamped when set, for the fixed-point
+ * colour buffer) through BLEND and a combiner reading it. */
+static void env_color_range(fc_h *h)
+{
+    env_texture(GL_LUMINANCE, GL_LUMINANCE, 21);
+    const float ec[4] = { 1.5f, -0.5f, 0.5f, 3.0f };
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+    fc_get_float(h, "env colour", GL_TEXTURE_ENV_COLOR, 4);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
+    draw_unlit(h);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD);
+    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_CONSTANT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_SUBTRACT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_CONSTANT);
+    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_PRIMARY_COLOR);
+    draw_unlit(h);
+}
+
 #define E(name) FC_CASE_RGBA(name, 48, 48, 2, "texture", env_case),
 #define FORMATS(base) E(base "_rgba") E(base "_rgb") E(base "_l") E(base "_la") E(base "_a") E(base "_i")
 #define CB(name) FC_CASE_RGBA(name, 48, 48, 5, "texture", combine_case),
@@ -376,6 +453,11 @@ const fc_case fc_cases_tex_env[] = {
     FC_CASE_RGBA("texture/env_combine_dot3_ext", 48, 48, 5, "texture", combine_case2),
     FC_CASE_RGBA("texture/env_combine_factor", 48, 48, 5, "texture", combine_case2),
     FC_CASE_RGBA("texture/env_combine4_nv", 48, 48, 4, "texture", combine4_nv),
+    FC_CASE_RGBA("texture/env_combine_random_1", 48, 48, 12, "texture", random_combine),
+    FC_CASE_RGBA("texture/env_combine_random_2", 48, 48, 12, "texture", random_combine),
+    FC_CASE_RGBA("texture/env_combine_random_3", 48, 48, 12, "texture", random_combine),
+    FC_CASE_RGBA("texture/env_combine_random_4", 48, 48, 12, "texture", random_combine),
+    FC_CASE_RGBA("texture/env_color_range", 48, 48, 2, "texture", env_color_range),
     FC_CASE_RGBA("texture/env_fragment_ops", 48, 48, 3, "texture", env_fragment_ops),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }
 };

@@ -528,6 +528,110 @@ static void arrays_lists(fc_h *h)
     fc_capture(h);
 }
 
+/* Extreme coordinates: huge s and t (the fixed-point conversions
+ * overflow), q = 0 at a vertex (infinite and NaN coordinates), for every
+ * filter and wrap of the AoS path. */
+static void extreme_coords(fc_h *h)
+{
+    static const GLenum filt[4][2] = { { GL_NEAREST, GL_NEAREST }, { GL_LINEAR, GL_LINEAR },
+                                       { GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST },
+                                       { GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR } };
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 8, 8);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 4; f++) {
+        tex_params(GL_TEXTURE_2D, filt[f][0], filt[f][1], f & 1 ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+        fcu_clear(0, 0, 0, 1, 1);
+        glBegin(GL_TRIANGLES);
+        glTexCoord2f(3e9f, -2e9f);   glVertex2f(1, 1);
+        glTexCoord2f(-1e8f, 5e7f);   glVertex2f(30, 2);
+        glTexCoord2f(1e6f, 1e6f);    glVertex2f(15, 30);
+        glTexCoord4f(0.5f, 0.5f, 0, 0);  glVertex2f(33, 33);
+        glTexCoord4f(1, 2, 0, 1);        glVertex2f(62, 35);
+        glTexCoord4f(0, 0, 0, 0);        glVertex2f(50, 62);
+        glTexCoord2f(16777216.0f, 8388609.5f); glVertex2f(2, 34);
+        glTexCoord2f(-16777215.0f, 0.5f);      glVertex2f(30, 40);
+        glTexCoord2f(1e30f, -1e30f);           glVertex2f(10, 62);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
+/* Random scenes: per frame a random texture size (1..70 each way, 1D or
+ * 2D), random filters, wraps, mipmap chain, env mode, and 24 random
+ * triangles, half of them in perspective with random w. */
+static float frand(float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(rng() & 0x7fff) / 32767.0f;
+}
+
+static void random_scenes(fc_h *h)
+{
+    static const GLenum mins[6] = { GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST,
+                                    GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST_MIPMAP_LINEAR,
+                                    GL_LINEAR_MIPMAP_LINEAR };
+    static const GLenum envs[5] = { GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD };
+    const fc_case *c = fc_this_case(h);
+    unsigned seed = (unsigned)c->name[strlen(c->name) - 1] * 977u;
+    for (int frame = 0; frame < c->frames; frame++) {
+        rng_state = seed + (unsigned)frame * 7717u;
+        const bool is1d = (rng() % 5) == 0;
+        const GLenum target = is1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+        int w = 1 + (int)(rng() % 70), hh = is1d ? 1 : 1 + (int)(rng() % 70);
+        if (rng() & 1) {
+            /* power of two */
+            w = 1 << (rng() % 7);
+            hh = is1d ? 1 : 1 << (rng() % 7);
+        }
+        const GLenum min = mins[rng() % 6], mag = (rng() & 1) ? GL_LINEAR : GL_NEAREST;
+        const GLenum ws = (rng() & 1) ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        const GLenum wt = (rng() & 1) ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        const GLenum env = envs[rng() % 5];
+        const unsigned tseed = rng();
+        glDisable(GL_TEXTURE_1D);
+        glDisable(GL_TEXTURE_2D);
+        glBindTexture(target, (GLuint)(frame + 1));
+        if (min == GL_NEAREST || min == GL_LINEAR) {
+            noise_image(target, 0, w, hh, tseed);
+        } else {
+            int lw = w, lh = hh;
+            for (int l = 0;; l++) {
+                noise_image(target, l, lw, lh, tseed + (unsigned)l);
+                if (lw == 1 && lh == 1)
+                    break;
+                lw = lw > 1 ? lw / 2 : 1;
+                lh = lh > 1 ? lh / 2 : 1;
+            }
+        }
+        rng_state = seed * 31u + (unsigned)frame;
+        glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)min);
+        glTexParameteri(target, GL_TEXTURE_MAG_FILTER, (GLint)mag);
+        glTexParameteri(target, GL_TEXTURE_WRAP_S, (GLint)ws);
+        glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)wt);
+        glEnable(target);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)env);
+        const float ec[4] = { frand(0, 1), frand(0, 1), frand(0, 1), frand(0, 1) };
+        glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+        glViewport(0, 0, c->width, c->height);
+        fcu_frustum(-0.5, 0.5, -0.5, 0.5, 1, 50);
+        fcu_clear(0.1f, 0.2f, 0.3f, 0.4f, 1);
+        glEnable(GL_DEPTH_TEST);
+        const float range = frand(0.2f, 12.0f);
+        glBegin(GL_TRIANGLES);
+        for (int i = 0; i < 24 * 3; i++) {
+            glColor4f(frand(0, 1), frand(0, 1), frand(0, 1), frand(0, 1));
+            const float q = (rng() % 4) == 0 ? frand(0.3f, 3.0f) : 1.0f;
+            glTexCoord4f(frand(-range, range) * q, frand(-range, range) * q, 0, q);
+            glVertex3f(frand(-6, 6), frand(-6, 6), frand(-40, -1.2f));
+        }
+        glEnd();
+        glDisable(GL_DEPTH_TEST);
+        fc_capture(h);
+    }
+}
+
 #define S(name) FC_CASE_RGBA(name, 64, 64, 2, "texture", sample_case),
 #define SIZES(base) S(base "_nearest_repeat") S(base "_nearest_edge") S(base "_linear_repeat") \
     S(base "_linear_edge") S(base "_minlin_magnear_repeat") S(base "_minnear_maglin_edge")
@@ -557,6 +661,11 @@ const fc_case fc_cases_tex_sample[] = {
     FC_CASE_RGBA("texture/sample_mixed_wrap", 64, 64, 3, "texture", mixed_wrap),
     FC_CASE_RGBA("texture/sample_persp_large", 160, 120, 2, "texture", persp_large),
     FC_CASE_RGBA("texture/sample_arrays_lists", 64, 64, 4, "texture varray dlist", arrays_lists),
+    FC_CASE_RGBA("texture/sample_extreme_coords", 64, 64, 4, "texture", extreme_coords),
+    FC_CASE_RGBA("texture/sample_random_1", 96, 96, 8, "texture", random_scenes),
+    FC_CASE_RGBA("texture/sample_random_2", 96, 96, 8, "texture", random_scenes),
+    FC_CASE_RGBA("texture/sample_random_3", 96, 96, 8, "texture", random_scenes),
+    FC_CASE_RGBA("texture/sample_random_4", 96, 96, 8, "texture", random_scenes),
     FC_CASE_RGBA("texture/sample_lines_points", 64, 64, 2, "texture", lines_points),
     FC_CASE_RGBA("texture/sample_rebind_incomplete", 48, 48, 4, "texture", rebind_incomplete),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 }

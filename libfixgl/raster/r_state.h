@@ -234,10 +234,17 @@ void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[
 /* The AoS path with the fast LOD (r_tex.c), whatever `soa` says. */
 void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
                       float out[4]);
-/* One level of the AoS path with one image filter, to 8-bit channels
- * (r_tex.c; r_tex_soa.c samples with it under the general LOD). */
-void r_tex_aos_level(const struct r_texture *t, int lvl, enum r_tex_filter filter,
-                     const float c[3], int out[4]);
+/* lp_build_rho of a quad's projected coordinates (TL, TR, BL) with the
+ * size of the first level: squared for 2D, max(|ds|) * W for 1D (r_tex.c),
+ * shared by both LOD paths. */
+float r_tex_rho(const struct r_texture *t, const float q[3][3]);
+/* The AoS filtering alone, given the LOD selector's results (for the
+ * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still
+ * filters on the AoS path): minify picks the min or mag image filter
+ * (when they differ), level0/level1 are absolute level indices and weight
+ * the 8-bit mip lerp weight (R_MIP_LINEAR; 0 for one level). */
+void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
+                      int level0, int level1, int weight, float out[4]);
 /* The dispatch point of the float SoA path and the general LOD path
  * (r_tex_soa.c): called by r_tex_sample for a texture with `soa` set. */
 void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],

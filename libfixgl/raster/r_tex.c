@@ -157,7 +157,7 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
  * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2).  1D (the
  * approximation stays on for one dimension): max(|dsdx|, |dsdy|) * W, not
  * squared. */
-static float quad_rho(const struct r_texture *t, const float q[3][3])
+float r_tex_rho(const struct r_texture *t, const float q[3][3])
 {
    const struct r_tex_level *l = &t->level[t->first_level];
    const float fw = (float)l->width;
@@ -195,70 +195,24 @@ void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[
       r_tex_sample_aos(t, c, quad, out);
 }
 
-void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
-                      float out[4])
+void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
+                      int level0, int level1, int weight, float out[4])
 {
    int texel8[4];
-   const int first = t->first_level, last = t->last_level;
-   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
-      /* no level of detail at all */
-      sample_level(t, first, t->min_img, c, texel8);
+   if (!minify && t->mag_img != t->min_img) {
+      /* the magnification branch: one level, no mip filter
+       * [S: lp_bld_sample_aos.c:lp_build_sample_aos] */
+      sample_level(t, level0, t->mag_img, c, texel8);
+   } else if (t->mip == R_MIP_NONE) {
+      sample_level(t, t->first_level, minify ? t->min_img : t->mag_img, c, texel8);
    } else {
-      /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
-      const float rho = quad_rho(t, quad);
-      const bool squared = t->dims > 1;
-      bool minify;
-      int level0 = first, level1 = first, weight = 0;
-      if (t->mip != R_MIP_LINEAR) {
-         /* lp_build_ilog2_sqrt (2D: rho squared) or lp_build_ilog2 (1D:
-          * log2(rho * sqrt(2)) rounded down), then
-          * lp_build_nearest_mip_level's clamp to the level range */
-         int ipart;
-         if (squared)
-            ipart = (float_exp(rho) - 126) >> 1;
-         else
-            ipart = float_exp(rho * (float)M_SQRT2) - 127;
-         minify = rho > 1.0f;
-         level0 = clampi(first + ipart, first, last);
-      } else {
-         /* lp_build_fast_log2 of rho squared, halved
-          * [S: lp_bld_sample.c:lp_build_lod_selector, ordinary path]; then
-          * lp_build_linear_mip_levels */
-         const float r2 = squared ? rho : rho * rho;
-         const float l2 = (float)(float_exp(r2) - 128) +
-                          u2f((f2u(r2) & 0x7fffffu) | 0x3f800000u);
-         const float lod = l2 * 0.5f;
-         minify = lod > 0.0f;
-         const float fl = floorf(lod);
-         float fpart = lod - fl;
-         int l0 = first + itrunc(fl);
-         if (l0 < first) {
-            l0 = first;
-            fpart = 0.0f;
-         }
-         if (l0 >= last) {
-            l0 = last;
-            fpart = 0.0f;
-         }
-         level0 = l0;
-         level1 = l0 + 1 <= last ? l0 + 1 : last;
-         weight = itrunc(fpart * 256.0f);
-      }
-      if (!minify && t->mag_img != t->min_img) {
-         /* the magnification branch: one level, no mip filter
-          * [S: lp_bld_sample_aos.c:lp_build_sample_aos] */
-         sample_level(t, level0, t->mag_img, c, texel8);
-      } else if (t->mip == R_MIP_NONE) {
-         sample_level(t, first, minify ? t->min_img : t->mag_img, c, texel8);
-      } else {
-         /* [S: lp_bld_sample_aos.c:lp_build_sample_mipmap] */
-         sample_level(t, level0, t->min_img, c, texel8);
-         if (t->mip == R_MIP_LINEAR && weight > 0) {
-            int t1[4];
-            sample_level(t, level1, t->min_img, c, t1);
-            for (int k = 0; k < 4; k++)
-               texel8[k] = lerp8(weight, texel8[k], t1[k]);
-         }
+      /* [S: lp_bld_sample_aos.c:lp_build_sample_mipmap] */
+      sample_level(t, level0, t->min_img, c, texel8);
+      if (t->mip == R_MIP_LINEAR && weight > 0) {
+         int t1[4];
+         sample_level(t, level1, t->min_img, c, t1);
+         for (int k = 0; k < 4; k++)
+            texel8[k] = lerp8(weight, texel8[k], t1[k]);
       }
    }
    /* unorm8 to float: a multiply by (float)(1.0/255.0)
@@ -268,8 +222,54 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
       out[k] = (float)texel8[k] * scale;
 }
 
-void r_tex_aos_level(const struct r_texture *t, int lvl, enum r_tex_filter filter,
-                     const float c[3], int out[4])
+void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4])
 {
-   sample_level(t, lvl, filter, c, out);
+   const int first = t->first_level, last = t->last_level;
+   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
+      /* no level of detail at all */
+      r_tex_filter_aos(t, c, true, first, first, 0, out);
+      return;
+   }
+   /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
+   const float rho = r_tex_rho(t, quad);
+   const bool squared = t->dims > 1;
+   bool minify;
+   int level0 = first, level1 = first, weight = 0;
+   if (t->mip != R_MIP_LINEAR) {
+      /* lp_build_ilog2_sqrt (2D: rho squared) or lp_build_ilog2 (1D:
+       * log2(rho * sqrt(2)) rounded down), then
+       * lp_build_nearest_mip_level's clamp to the level range */
+      int ipart;
+      if (squared)
+         ipart = (float_exp(rho) - 126) >> 1;
+      else
+         ipart = float_exp(rho * (float)M_SQRT2) - 127;
+      minify = rho > 1.0f;
+      level0 = clampi(first + ipart, first, last);
+   } else {
+      /* lp_build_fast_log2 of rho squared, halved
+       * [S: lp_bld_sample.c:lp_build_lod_selector, ordinary path]; then
+       * lp_build_linear_mip_levels */
+      const float r2 = squared ? rho : rho * rho;
+      const float l2 = (float)(float_exp(r2) - 128) +
+                       u2f((f2u(r2) & 0x7fffffu) | 0x3f800000u);
+      const float lod = l2 * 0.5f;
+      minify = lod > 0.0f;
+      const float fl = floorf(lod);
+      float fpart = lod - fl;
+      int l0 = first + itrunc(fl);
+      if (l0 < first) {
+         l0 = first;
+         fpart = 0.0f;
+      }
+      if (l0 >= last) {
+         l0 = last;
+         fpart = 0.0f;
+      }
+      level0 = l0;
+      level1 = l0 + 1 <= last ? l0 + 1 : last;
+      weight = itrunc(fpart * 256.0f);
+   }
+   r_tex_filter_aos(t, c, minify, level0, level1, weight, out);
 }

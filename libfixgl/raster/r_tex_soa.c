@@ -13,7 +13,7 @@
  *    [S: gallivm/lp_bld_sample_soa.c:lp_build_sample_soa_code, use_aos];
  *    the texels are filtered as floats [S: lp_bld_sample_soa.c:
  *    lp_build_sample_general];
- *  - otherwise the AoS path samples (r_tex_aos_level, r_tex.c) with the
+ *  - otherwise the AoS path samples (r_tex_filter_aos, r_tex.c) with the
  *    level of detail of the general path: LOD bias, MIN_LOD / MAX_LOD
  *    [S: gallivm/lp_bld_sample.c:lp_build_lod_selector].
  *
@@ -80,30 +80,6 @@ struct lod {
    float fpart;
 };
 
-/* rho of the quad [S: lp_bld_sample.c:lp_build_rho], base level size:
- * 2D (no_rho_approx) squared, max((dsdx*W)^2 + (dtdx*H)^2,
- * (dsdy*W)^2 + (dtdy*H)^2); 1D max(|dsdx|, |dsdy|) * W, not squared. */
-static float quad_rho(const struct r_texture *t, const float q[3][3])
-{
-   const struct r_tex_level *l = &t->level[t->first_level];
-   const float fw = (float)l->width;
-   if (t->dims == 1) {
-      const float dx = fabsf(q[R_QUAD_TR][0] - q[R_QUAD_TL][0]);
-      const float dy = fabsf(q[R_QUAD_BL][0] - q[R_QUAD_TL][0]);
-      return fmax_ps(dx, dy) * fw;
-   }
-   const float fh = (float)l->height;
-   float dsdx = (q[R_QUAD_TR][0] - q[R_QUAD_TL][0]) * fw;
-   float dsdy = (q[R_QUAD_BL][0] - q[R_QUAD_TL][0]) * fw;
-   float dtdx = (q[R_QUAD_TR][1] - q[R_QUAD_TL][1]) * fh;
-   float dtdy = (q[R_QUAD_BL][1] - q[R_QUAD_TL][1]) * fh;
-   dsdx = dsdx * dsdx;
-   dsdy = dsdy * dsdy;
-   dtdx = dtdx * dtdx;
-   dtdy = dtdy * dtdy;
-   return fmax_ps(dsdx + dtdx, dsdy + dtdy);
-}
-
 static inline int float_exp(float x)
 {
    return (int)((f2u(x) >> 23) & 255u);
@@ -130,7 +106,8 @@ static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod 
       /* MIN_LOD == MAX_LOD: the LOD is min_lod, no rho, no bias */
       lod = t->min_lod;
    } else {
-      float rho = quad_rho(t, q);
+      /* lp_build_rho (r_tex.c) */
+      float rho = r_tex_rho(t, q);
       const bool squared = t->dims > 1;
       if (!t->lod_bias_non_zero && !t->apply_min_lod && !t->apply_max_lod &&
           t->mip != R_MIP_LINEAR) {
@@ -448,35 +425,15 @@ static void sample_float(const struct r_texture *t, const float c[3], const floa
 }
 
 /* The AoS path with the general LOD [S: lp_bld_sample_aos.c:
- * lp_build_sample_aos, lp_build_sample_mipmap]: min != mag decided per
- * quad (the AoS path splits 8-wide vectors into quads then), the level
- * weight is (int)(fpart * 256) and the lerp is the 8-bit one. */
-static inline int lerp8(int w, int a, int b)
-{
-   return (a + ((w * (b - a) + 128) >> 8)) & 0xff;
-}
-
+ * lp_build_sample_aos, lp_build_sample_mipmap] (r_tex_filter_aos):
+ * min != mag decided per quad (the AoS path splits 8-wide vectors into
+ * quads then), the level weight is (int)(fpart * 256). */
 static void sample_aos_lod(const struct r_texture *t, const float c[3], const float quad[3][3],
                            float out[4])
 {
    struct lod q;
    quad_lod(t, quad, &q);
-   int texel8[4];
-   if (t->min_img != t->mag_img && !q.minify) {
-      r_tex_aos_level(t, q.level0, t->mag_img, c, texel8);
-   } else {
-      r_tex_aos_level(t, q.level0, t->min_img, c, texel8);
-      const int w = itrunc(q.fpart * 256.0f);
-      if (t->mip == R_MIP_LINEAR && w > 0) {
-         int t1[4];
-         r_tex_aos_level(t, q.level1, t->min_img, c, t1);
-         for (int k = 0; k < 4; k++)
-            texel8[k] = lerp8(w, texel8[k], t1[k]);
-      }
-   }
-   const float scale = (float)(1.0 / 255.0);
-   for (int k = 0; k < 4; k++)
-      out[k] = (float)texel8[k] * scale;
+   r_tex_filter_aos(t, c, q.minify, q.level0, q.level1, itrunc(q.fpart * 256.0f), out);
 }
 
 void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],
