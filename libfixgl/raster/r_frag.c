@@ -299,10 +299,6 @@ static bool is_one_minus(int opr)
    return opr == R_OPR_ONE_MINUS_COLOR || opr == R_OPR_ONE_MINUS_ALPHA;
 }
 
-/* emit_combine for channels [c0, c1) [S: ff_fragment_shader.cpp:
- * emit_combine], as NIR optimizes it before llvmpipe compiles it (every op
- * rounded on its own: llvmpipe lowers ffma; ST_DEBUG=nir shows the
- * reassociations nir_opt_algebraic makes, noted below). */
 /* Which value an argument's channel c is in the compiled shader (NIR's CSE
  * merges equal expressions, and nir_opt_algebraic then factors
  * a*b + a*c into a*(b + c)): its source (the unit's own texture is its
@@ -325,6 +321,10 @@ static inline bool same_key(int a, int b)
    return a >= 0 && a == b;
 }
 
+/* emit_combine for channels [c0, c1) [S: ff_fragment_shader.cpp:
+ * emit_combine], as NIR optimizes it before llvmpipe compiles it (every op
+ * rounded on its own: llvmpipe lowers ffma; ST_DEBUG=nir shows the
+ * reassociations nir_opt_algebraic makes, noted below). */
 static void emit_combine(const struct r_state *rs, const float in[][4],
                          const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
                          const float prev[4], bool prev_is_primary, int nargs, int mode,
@@ -356,11 +356,14 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
    }
    for (int c = c0; c < c1; c++) {
       float r;
-      int key[4];
-      for (int i = 0; i < nargs; i++)
-         key[i] = arg_key(src[i], is_one_minus(opr[i]),
-                          opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
-                          unit, prev_is_primary);
+      int key[4] = { -1, -1, -1, -1 };
+      if (mode == R_COMB_INTERPOLATE || mode == R_COMB_ADD_PRODUCTS_NV ||
+          mode == R_COMB_ADD_PRODUCTS_SIGNED_NV) {
+         for (int i = 0; i < nargs; i++)
+            key[i] = arg_key(src[i], is_one_minus(opr[i]),
+                             opr[i] == R_OPR_ALPHA || opr[i] == R_OPR_ONE_MINUS_ALPHA, c,
+                             unit, prev_is_primary);
+      }
       switch (mode) {
       case R_COMB_REPLACE:
          r = a[0][c];

@@ -158,6 +158,10 @@ struct tri_shade {
    bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;             /* some input is interpolated */
    unsigned inputs;         /* R_FS_* inputs the fragment shader reads */
+   /* shade_textured's cache: the texture coordinates of the quad at
+    * (quad_x, quad_y), which the pixels of a quad's row share */
+   int quad_x, quad_y;
+   struct r_fs_quad quad;
 };
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
@@ -194,6 +198,8 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
       ts->zoffset = rs->offset_units + max * rs->offset_scale;
    }
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
+   ts->quad_x = INT_MIN;   /* no quad cached */
+   ts->quad_y = INT_MIN;
    ts->inputs = rs->fs_inputs;
    ts->need_w = false;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
@@ -220,28 +226,36 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
  * pixel's inputs whether or not they are covered [S: lp_bld_interp.c,
  * lp_bld_quad.c] (llvmpipe-facts.md §5).  Out of line: the untextured
  * pixel loop keeps its size. */
+R_FMA_CLONES
 static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      const struct tri_shade *ts,
                                                      const float in[][4], int px, int py,
                                                      float color[4])
 {
    static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
-   struct r_fs_quad q;
    const int qx = px & ~1, qy = py & ~1;
-   /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
-   for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
-      const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
-      const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
-      for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-         if (!(rs->tex_units & (1u << u)))
-            continue;
-         const int a = R_FS_TEX0 + u;
-         float *d = i < 3 ? q.tex[u][i] : q.pair[u][i - 3];
-         for (int c = 0; c < 4; c++)
-            d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+   /* the setup object itself is not const (rasterize_ccw's local): the
+    * cache is written through it */
+   struct tri_shade *cache = (struct tri_shade *)ts;
+   if (qx != ts->quad_x || qy != ts->quad_y) {
+      struct r_fs_quad *q = &cache->quad;
+      /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
+      for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
+         const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
+         const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
+         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+            if (!(rs->tex_units & (1u << u)))
+               continue;
+            const int a = R_FS_TEX0 + u;
+            float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
+            for (int c = 0; c < 4; c++)
+               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+         }
       }
+      cache->quad_x = qx;
+      cache->quad_y = qy;
    }
-   r_fragment_shader(rs, in, &q, color);
+   r_fragment_shader(rs, in, &ts->quad, color);
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
