@@ -127,7 +127,9 @@ enum r_aa_mode {
  *  - the fixed-point AoS path (r_tex.c): 8-bit unorm texels (always, here)
  *    with wrap modes REPEAT or CLAMP_TO_EDGE on every used axis;
  *  - the float SoA path (r_tex_soa.c, owned by the `texsoa` work): any
- *    other wrap mode (GL_CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT).
+ *    other wrap mode (GL_CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT, the
+ *    MIRROR_CLAMP family); min != mag filters there decide per 8 pixels
+ *    (r_fs_quad.pair).
  * The level of detail is computed by one of two paths as well
  * [S: gallivm/lp_bld_sample.c:lp_build_lod_selector]: the fast one when the
  * sampler has no LOD bias and no min/max LOD clamp (r_tex.c), the general
