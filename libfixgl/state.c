@@ -48,6 +48,9 @@ static enum r_tex_wrap tex_wrap(GLenum w)
    case GL_CLAMP:             return R_WRAP_CLAMP;
    case GL_CLAMP_TO_BORDER:   return R_WRAP_CLAMP_TO_BORDER;
    case GL_MIRRORED_REPEAT:   return R_WRAP_MIRRORED_REPEAT;
+   case GL_MIRROR_CLAMP_EXT:  return R_WRAP_MIRROR_CLAMP;
+   case GL_MIRROR_CLAMP_TO_EDGE: return R_WRAP_MIRROR_CLAMP_TO_EDGE;
+   case GL_MIRROR_CLAMP_TO_BORDER_EXT: return R_WRAP_MIRROR_CLAMP_TO_BORDER;
    case GL_REPEAT:
    default:                   return R_WRAP_REPEAT;
    }
@@ -63,6 +66,84 @@ static float quantize_lod_bias(float lod)
 static bool is_pot(int n)
 {
    return n > 0 && (n & (n - 1)) == 0;
+}
+
+/* The parts of the sampler state r_tex_soa.c uses: which path samples
+ * (use_aos [S: gallivm/lp_bld_sample_soa.c:lp_build_sample_soa_code]:
+ * REPEAT / CLAMP_TO_EDGE on the used axes, else the float path), the LOD
+ * bias and limits and their flags, the border colour. */
+static void update_texture_general(const struct fgl_context *ctx, unsigned u,
+                                   const struct fgl_texture_object *t, struct r_texture *rt)
+{
+   /* st_convert_sampler: sampler->lod_bias (the object's, quantized by
+    * texparam.c) += the unit's (quantized by texenv.c); min_lod is kept
+    * >= 0 (texparam.c) */
+   rt->lod_bias = quantize_lod_bias(t->LodBias) + quantize_lod_bias(ctx->Texture.Unit[u].LodBias);
+   rt->min_lod = t->MinLod > 0.0f ? t->MinLod : 0.0f;
+   rt->max_lod = t->MaxLod;
+   /* [S: lp_bld_sample.c:lp_sampler_static_sampler_state]: the LOD
+    * flags, only with a mip filter or min != mag; max_lod is compared
+    * with PIPE_MAX_TEXTURE_LEVELS - 1 = 15 */
+   rt->lod_bias_non_zero = rt->lod_bias != 0.0f;
+   rt->min_max_lod_equal = rt->apply_min_lod = rt->apply_max_lod = false;
+   if (rt->mip != R_MIP_NONE || rt->min_img != rt->mag_img) {
+      if (rt->min_lod == rt->max_lod) {
+         rt->min_max_lod_equal = true;
+      } else {
+         rt->apply_min_lod = rt->min_lod > 0.0f;
+         rt->apply_max_lod = rt->max_lod < 15.0f;
+      }
+   }
+   /* lp_build_sample_soa_code: a view of one level (last_level 0) with
+    * max_lod > 0 samples without the mip filter */
+   if (rt->mip != R_MIP_NONE && rt->last_level == 0 && rt->max_lod > 0.0f)
+      rt->mip = R_MIP_NONE;
+   rt->float_path = !(rt->wrap_s <= R_WRAP_CLAMP_TO_EDGE &&
+                      (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE));
+   rt->soa = rt->float_path || rt->lod_bias_non_zero || rt->min_max_lod_equal ||
+             rt->apply_min_lod || rt->apply_max_lod;
+   /* The border colour (clamped by glTexParameter): st_convert_sampler
+    * translates a non-zero one by the base format (st_format.c:
+    * st_translate_color); lp_build_sample_texel_soa replaces only the
+    * channels the texture's format has (L8: rgb, A8: a, RGBX8: rgb), the
+    * others keep the format's constants. */
+   const GLenum base = t->Image[rt->first_level]->BaseFormat;
+   float b[4];
+   for (int c = 0; c < 4; c++)
+      b[c] = t->BorderColor[c];
+   rt->border_mask = 15;
+   const bool nonzero = b[0] != 0.0f || b[1] != 0.0f || b[2] != 0.0f || b[3] != 0.0f;
+   switch (base) {
+   case GL_ALPHA:
+      if (nonzero)
+         b[0] = b[1] = b[2] = 0.0f;
+      rt->border_mask = 8;
+      break;
+   case GL_LUMINANCE:
+      if (nonzero) {
+         b[1] = b[2] = b[0];
+         b[3] = 1.0f;
+      }
+      rt->border_mask = 7;
+      break;
+   case GL_LUMINANCE_ALPHA:
+      if (nonzero)
+         b[1] = b[2] = b[0];
+      break;
+   case GL_INTENSITY:
+      if (nonzero)
+         b[1] = b[2] = b[3] = b[0];
+      break;
+   case GL_RGB:
+      if (nonzero)
+         b[3] = 1.0f;
+      rt->border_mask = 7;
+      break;
+   default:
+      break;
+   }
+   for (int c = 0; c < 4; c++)
+      rt->border_color[c] = b[c];
 }
 
 /* The sampler view and sampler state the state tracker hands llvmpipe for
@@ -104,26 +185,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    rt->mag_img = t->MagFilter == GL_NEAREST ? R_TEX_NEAREST : R_TEX_LINEAR;
    rt->wrap_s = tex_wrap(t->WrapS);
    rt->wrap_t = tex_wrap(t->WrapT);
-   for (int c = 0; c < 4; c++)
-      rt->border_color[c] = t->BorderColor[c];
-   /* both biases quantized when set (util_quantize_lod_bias: clamped to
-    * [-16, 16], rounded to 1/256), then sampler->lod_bias +=
-    * tex_unit_lod_bias (st_convert_sampler); min_lod is kept >= 0
-    * (samplerobj.c, texparam.c) */
-   rt->lod_bias = quantize_lod_bias(t->LodBias) + quantize_lod_bias(ctx->Texture.Unit[u].LodBias);
-   rt->min_lod = t->MinLod > 0.0f ? t->MinLod : 0.0f;
-   rt->max_lod = t->MaxLod;
-   /* use_aos [S: lp_bld_sample_soa.c:lp_build_sample_soa_code]: simple
-    * wraps on the used axes; the fast LOD [S: lp_bld_sample.c:
-    * lp_build_lod_selector] without bias, min_max_lod_equal,
-    * apply_min_lod or apply_max_lod (lp_sampler_static_sampler_state,
-    * whose LOD flags only count with a mip filter or min != mag) */
-   const bool simple_wrap = rt->wrap_s <= R_WRAP_CLAMP_TO_EDGE &&
-                            (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE);
-   const bool lod_used = rt->mip != R_MIP_NONE || rt->min_img != rt->mag_img;
-   const bool lod_clamps = lod_used && (rt->min_lod == rt->max_lod || rt->min_lod > 0.0f ||
-                                        rt->max_lod < 15.0f);   /* PIPE_MAX_TEXTURE_LEVELS - 1 */
-   rt->soa = !simple_wrap || rt->lod_bias != 0.0f || lod_clamps;
+   update_texture_general(ctx, u, t, rt);
 }
 
 static uint8_t comb_mode(GLenum env, GLenum mode)
@@ -291,12 +353,14 @@ static void update_tex_units(const struct fgl_context *ctx, struct r_state *rs)
 {
    rs->tex_units = 0;
    rs->tex_nr = 0;
+   rs->tex_pair = false;
    for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS && u < R_MAX_TEX_UNITS; u++) {
       if (!(ctx->_EnabledTexUnits & (1u << u)))
          continue;
       const struct fgl_texture_object *t = ctx->_CurrentTex[u];
       struct r_tex_unit *ru = &rs->tex[u];
       update_texture(ctx, u, t, ctx->_CurrentTexTarget[u], &ru->tex);
+      rs->tex_pair |= r_tex_need_pair(&ru->tex);
       const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
       update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru->comb);
       for (int c = 0; c < 4; c++)

@@ -52,6 +52,7 @@ extern const fc_case fc_cases_pixelstate[];
 extern const fc_case fc_cases_tex_coord[];
 extern const fc_case fc_cases_tex_sample[];
 extern const fc_case fc_cases_tex_env[];
+extern const fc_case fc_cases_tex_wrap[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

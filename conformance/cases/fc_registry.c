@@ -30,6 +30,7 @@ static const fc_case *const groups[] = {
     fc_cases_windowpos,
     fc_cases_tex_sample,
     fc_cases_tex_env,
+    fc_cases_tex_wrap,
 };
 
 size_t fc_case_count(void)

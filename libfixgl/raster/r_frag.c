@@ -243,7 +243,16 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
       qc[i][1] = v[1] * r;
       qc[i][2] = v[2] * r;
    }
-   r_tex_sample(t, c, (const float (*)[3])qc, tc->c[u]);
+   float pc[3][3];
+   const bool pair = r_tex_need_pair(t);
+   for (int i = 0; pair && i < 3; i++) {
+      const float *v = quad->pair[u][i];
+      const float r = 1.0f / v[3];
+      pc[i][0] = v[0] * r;
+      pc[i][1] = v[1] * r;
+      pc[i][2] = v[2] * r;
+   }
+   r_tex_sample(t, c, (const float (*)[3])qc, pair ? (const float (*)[3])pc : NULL, tc->c[u]);
    return tc->c[u];
 }
 

@@ -104,16 +104,18 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
       static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
       struct r_fs_quad quad;
       const int qx = px & ~1, qy = py & ~1;
-      for (int i = 0; i < 3; i++) {
-         const float qfx = (float)(qx + dx[i]), qfy = (float)(qy + dy[i]);
+      /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
+      for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
+         const float qfx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]);
+         const float qfy = (float)(qy + dy[i % 3]);
          const float qrw = 1.0f / eval_plane(&ls->w, qfx, qfy);
          for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
             if (!(rs->tex_units & (1u << u)))
                continue;
             const int a = R_FS_TEX0 + u;
+            float *d = i < 3 ? quad.tex[u][i] : quad.pair[u][i - 3];
             for (int k = 0; k < 4; k++)
-               quad.tex[u][i][k] = ls->flat_attr[a] ? ls->flat[a][k]
-                                                    : eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
+               d[k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
          }
       }
       r_fragment_shader(rs, (const float (*)[4])in, &quad, color);

@@ -75,7 +75,7 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
          continue;
       for (int i = 0; i < 3; i++)
          for (int c = 0; c < 4; c++)
-            quad.tex[u][i][c] = in[R_FS_TEX0 + u][c];
+            quad.tex[u][i][c] = quad.pair[u][i][c] = in[R_FS_TEX0 + u][c];
    }
    float color[4];
    r_fragment_shader(rs, (const float (*)[4])in, rs->tex_units ? &quad : NULL, color);

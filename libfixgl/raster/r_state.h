@@ -127,7 +127,9 @@ enum r_aa_mode {
  *  - the fixed-point AoS path (r_tex.c): 8-bit unorm texels (always, here)
  *    with wrap modes REPEAT or CLAMP_TO_EDGE on every used axis;
  *  - the float SoA path (r_tex_soa.c, owned by the `texsoa` work): any
- *    other wrap mode (GL_CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT).
+ *    other wrap mode (GL_CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT, the
+ *    MIRROR_CLAMP family); min != mag filters there decide per 8 pixels
+ *    (r_fs_quad.pair).
  * The level of detail is computed by one of two paths as well
  * [S: gallivm/lp_bld_sample.c:lp_build_lod_selector]: the fast one when the
  * sampler has no LOD bias and no min/max LOD clamp (r_tex.c), the general
@@ -141,6 +143,7 @@ enum r_tex_mip { R_MIP_NONE, R_MIP_NEAREST, R_MIP_LINEAR };
 enum r_tex_wrap {
    R_WRAP_REPEAT, R_WRAP_CLAMP_TO_EDGE,          /* the AoS path */
    R_WRAP_CLAMP, R_WRAP_CLAMP_TO_BORDER, R_WRAP_MIRRORED_REPEAT,
+   R_WRAP_MIRROR_CLAMP, R_WRAP_MIRROR_CLAMP_TO_EDGE, R_WRAP_MIRROR_CLAMP_TO_BORDER,
 };
 
 struct r_tex_level {
@@ -163,6 +166,12 @@ struct r_texture {
    float lod_bias;               /* object + unit bias (st_convert_sampler) */
    float min_lod, max_lod;       /* GL_TEXTURE_MIN_LOD / MAX_LOD */
    bool soa;                     /* the lookup goes to r_tex_sample_soa */
+   /* for r_tex_soa.c: use_aos is false (the float SoA sampling); the
+    * channels the border colour replaces (bit c: channel c; the format's
+    * channels); lp_sampler_static_sampler_state's LOD flags */
+   bool float_path;
+   uint8_t border_mask;
+   bool lod_bias_non_zero, apply_min_lod, apply_max_lod, min_max_lod_equal;
 };
 
 /* Texture combiner state of one unit after Mesa derives it from the env
@@ -209,14 +218,21 @@ struct r_tex_unit {
 enum { R_QUAD_TL, R_QUAD_TR, R_QUAD_BL };
 struct r_fs_quad {
    float tex[R_MAX_TEX_UNITS][3][4];   /* [unit][R_QUAD_*][s, t, r, q] */
+   /* the same for the other quad of the fragment's 8-pixel vector (the
+    * quads at x & ~3 and (x & ~3) + 2 of a 4x4 block are shaded together
+    * [S: llvmpipe/lp_bld_interp.c, quad_offset_x/y]), filled only when
+    * r_state.tex_pair is set (r_tex_soa.c) */
+   float pair[R_MAX_TEX_UNITS][3][4];
 };
 
 /* A texture lookup (r_tex.c): the coordinate c (s, t, r after the
  * projective divide) of the fragment, those of its quad's top-left,
  * top-right and bottom-left pixels (for the level of detail), to the
- * texel as floats (t * (1/255) per channel for unorm8). */
+ * texel as floats (t * (1/255) per channel for unorm8).  pair: the same
+ * three coordinates of the other quad of the 8-pixel vector, needed (and
+ * given, else NULL) when r_tex_need_pair(t). */
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
-                  float out[4]);
+                  const float (*pair)[3], float out[4]);
 /* The AoS path with the fast LOD (r_tex.c), whatever `soa` says. */
 void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
                       float out[4]);
@@ -234,7 +250,13 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
 /* The dispatch point of the float SoA path and the general LOD path
  * (r_tex_soa.c): called by r_tex_sample for a texture with `soa` set. */
 void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],
-                      float out[4]);
+                      const float (*pair)[3], float out[4]);
+/* The float path with different min and mag filters decides per 8
+ * pixels (r_tex_soa.c): the lookup needs the pair quad. */
+static inline bool r_tex_need_pair(const struct r_texture *t)
+{
+   return t->soa && t->float_path && t->min_img != t->mag_img;
+}
 
 /* A post-transform vertex: window position (x, y y-down, z in [0,1] before
  * clamping, w = 1/clip_w) and its varyings. */
@@ -336,6 +358,9 @@ struct r_state {
    unsigned tex_units;
    int tex_nr;
    struct r_tex_unit tex[R_MAX_TEX_UNITS];
+   /* some unit's lookup needs the pair quad (r_tex_need_pair): the
+    * primitives fill r_fs_quad.pair */
+   bool tex_pair;
 };
 
 /* The fragment stage (r_frag.c), shared by every primitive.

@@ -187,10 +187,10 @@ static inline int float_exp(float x)
 }
 
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
-                  float out[4])
+                  const float (*pair)[3], float out[4])
 {
    if (t->soa)
-      r_tex_sample_soa(t, c, quad, out);
+      r_tex_sample_soa(t, c, quad, pair, out);
    else
       r_tex_sample_aos(t, c, quad, out);
 }

@@ -239,16 +239,17 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
    struct tri_shade *cache = (struct tri_shade *)ts;
    if (qx != ts->quad_x || qy != ts->quad_y) {
       struct r_fs_quad *q = &cache->quad;
-      for (int i = 0; i < 3; i++) {
-         const float fx = (float)(qx + dx[i]), fy = (float)(qy + dy[i]);
+      /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
+      for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
+         const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
          const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
          for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
             if (!(rs->tex_units & (1u << u)))
                continue;
             const int a = R_FS_TEX0 + u;
+            float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
             for (int c = 0; c < 4; c++)
-               q->tex[u][i][c] = ts->flat_attr[a] ? ts->flat[a][c]
-                                                  : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
       cache->quad_x = qx;
