@@ -45,6 +45,7 @@ extern const fc_case fc_cases_texstate[];
 extern const fc_case fc_cases_accum[];
 extern const fc_case fc_cases_eval[];
 extern const fc_case fc_cases_pixelstate[];
+extern const fc_case fc_cases_pix_draw[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -146,6 +146,9 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    }
    if (!fb || !pixels)
       return;
+   /* [S: st_cb_readpixels.c:st_ReadPixels] glBitmap's cache is drawn
+    * before reading */
+   fgl_flush_bitmap_cache(ctx);
 
    const struct fgl_pixelstore *pack = &ctx->Pack;
    const size_t pixel_bytes = comps * bytes;

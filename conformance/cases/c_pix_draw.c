@@ -1,0 +1,1203 @@
+/* c_pix_draw.c - glBitmap, glDrawPixels and glCopyPixels: bitmap text with
+ * the raster position advance, the unpack modes of bitmaps, the bitmap
+ * cache's drawing order, images of each common format and type with zoom
+ * (positive, negative, fractional) and pixel transfer, through the
+ * per-fragment operations, depth and stencil images, copies of colour,
+ * depth and stencil with overlapping regions and zoom, feedback and
+ * selection records, display lists and errors. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cases.h"
+
+/* ---- helpers ---- */
+
+/* An 8x10 glyph per character of "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ "
+ * made from a hash, rows bottom-up, MSB first: enough structure for
+ * every bit pattern to show. */
+static void glyph(int ch, GLubyte rows[10])
+{
+    unsigned v = (unsigned)ch * 2654435761u;
+    for (int r = 0; r < 10; r++) {
+        v ^= v << 13;
+        v ^= v >> 17;
+        v ^= v << 5;
+        rows[r] = (GLubyte)(r == 0 || r == 9 ? 0 : (v & 0x7e));
+    }
+}
+
+static void draw_text(const char *s)
+{
+    for (; *s; s++) {
+        GLubyte rows[10];
+        glyph(*s, rows);
+        glBitmap(8, 10, 0.0f, 2.0f, 9.0f, 0.0f, rows);
+    }
+}
+
+/* A w x h RGBA image with distinct values per pixel. */
+static void make_rgba_ub(GLubyte *p, int w, int h, unsigned seed)
+{
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            GLubyte *q = p + 4 * (y * w + x);
+            q[0] = (GLubyte)(x * 37 + y * 11 + seed);
+            q[1] = (GLubyte)(y * 41 + x * 3 + seed * 7);
+            q[2] = (GLubyte)((x ^ y) * 29 + seed * 13);
+            q[3] = (GLubyte)(x * 17 + y * 23 + 40 + seed);
+        }
+}
+
+static void make_rgba_f(GLfloat *p, int w, int h, unsigned seed)
+{
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            GLfloat *q = p + 4 * (y * w + x);
+            q[0] = (float)((x * 37 + y * 11 + seed) % 97) / 96.0f;
+            q[1] = (float)((y * 41 + x * 3 + seed * 7) % 89) / 88.0f;
+            q[2] = (float)(((x ^ y) * 29 + seed * 13) % 83) / 82.0f;
+            q[3] = (float)((x * 17 + y * 23 + seed) % 79) / 78.0f;
+        }
+}
+
+static void window_pos(float x, float y, float z)
+{
+    /* with fc_pixel_ortho, object coordinates are window coordinates */
+    glRasterPos3f(x, y, z);
+}
+
+static void raster_query(fc_h *h, const char *label)
+{
+    char l[96];
+    snprintf(l, sizeof l, "%s pos", label);
+    fc_get_float(h, l, GL_CURRENT_RASTER_POSITION, 4);
+    snprintf(l, sizeof l, "%s valid", label);
+    fc_get_boolean(h, l, GL_CURRENT_RASTER_POSITION_VALID, 1);
+    snprintf(l, sizeof l, "%s error", label);
+    fc_error(h, l);
+}
+
+/* ---- glBitmap ---- */
+
+/* Legacy-demo text: lines of glyphs advanced by xmove, colours per line
+ * (the raster colour is latched by glRasterPos), a fractional start. */
+static void bitmap_text(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.2f, 1.0f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const char *lines[] = { "HELLO WORLD 0123", "THE QUICK BROWN FOX", "JUMPS OVER 456789",
+                            "LAZY DOG XYZ" };
+    for (int i = 0; i < 4; i++) {
+        glColor3f(1.0f - 0.2f * (float)i, 0.3f + 0.2f * (float)i, 0.5f);
+        window_pos(3.0f + 0.25f * (float)i, 100.0f - 14.0f * (float)i + 0.5f, 0.0f);
+        draw_text(lines[i]);
+        raster_query(h, "after line");
+    }
+    /* glColor after glRasterPos does not change the text colour */
+    window_pos(5.0f, 30.0f, 0.0f);
+    glColor3f(0.0f, 1.0f, 0.0f);
+    draw_text("AFTER COLOR");
+    fc_capture(h);
+}
+
+/* Unpack modes: LSB first, alignments, skip pixels (not a multiple of 8),
+ * skip rows, row length. */
+static void bitmap_unpack(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    GLubyte bits[64];
+    for (int i = 0; i < 64; i++)
+        bits[i] = (GLubyte)(i * 73 + 19);
+    glColor3f(1, 1, 0);
+    int x = 2;
+    for (int mode = 0; mode < 8; mode++) {
+        glPixelStorei(GL_UNPACK_LSB_FIRST, mode & 1);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, (mode & 2) ? 1 : 4);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, (mode & 4) ? 3 : 0);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, mode / 4);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, (mode & 4) ? 21 : 0);
+        window_pos((float)x, 4.0f, 0.0f);
+        glBitmap(13, 9, 0, 0, 0, 0, bits);
+        window_pos((float)x, 20.0f, 0.0f);
+        glBitmap(5, 11, 0, 0, 0, 0, bits + 1);
+        x += 15;
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 9);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    window_pos(3.0f, 40.0f, 0.0f);
+    glBitmap(23, 5, 0, 0, 0, 0, bits);
+    fc_capture(h);
+}
+
+/* Origins and moves: fractional positions (floor of pos + 1e-4 - orig),
+ * negative origins and moves, the raster position after each. */
+static void bitmap_origin_move(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLubyte rows[10];
+    glyph('Q', rows);
+    static const float pos[][2] = {
+        { 4.0f, 4.0f }, { 14.4999f, 4.0f }, { 24.99995f, 4.99995f }, { 34.5f, 5.5f },
+        { 44.0f, 4.9999f }, { 54.00002f, 3.99992f },
+    };
+    for (int i = 0; i < 6; i++) {
+        glColor3f(0.2f + 0.13f * (float)i, 1.0f, 0.5f);
+        window_pos(pos[i][0], pos[i][1], 0.0f);
+        glBitmap(8, 10, 0.0f, 0.0f, 0.0f, 0.0f, rows);
+    }
+    window_pos(10.0f, 30.0f, 0.0f);
+    glColor3f(1, 0, 1);
+    glBitmap(8, 10, -2.5f, 1.25f, 10.5f, -1.75f, rows);
+    raster_query(h, "move 1");
+    glBitmap(8, 10, 3.0f, -4.0f, -20.25f, 8.0f, rows);
+    raster_query(h, "move 2");
+    glBitmap(0, 0, 0, 0, 30.0f, 3.0f, NULL);
+    raster_query(h, "move empty");
+    glBitmap(8, 10, 0.0f, 0.0f, 0.0f, 0.0f, rows);
+    fc_capture(h);
+}
+
+/* An invalid raster position draws nothing and does not move; bitmaps
+ * partly outside the window; bitmaps too big for the cache (wider than
+ * 512 or taller than 32). */
+static void bitmap_clipped(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static GLubyte big[70 * 40];
+    for (int i = 0; i < (int)sizeof big; i++)
+        big[i] = (GLubyte)(i * 31 + (i >> 3));
+    glColor3f(1, 0.5f, 0);
+    window_pos(-5.0f, 10.0f, 0.0f);       /* outside: invalid */
+    raster_query(h, "invalid");
+    glBitmap(16, 16, 0, 0, 7, 7, big);
+    raster_query(h, "invalid after");
+    window_pos(2.0f, 2.0f, 0.0f);
+    glBitmap(16, 8, 5.0f, 3.0f, 0, 0, big);   /* starts left of / below 0 */
+    window_pos(60.0f, 50.0f, 0.0f);
+    glBitmap(24, 16, 0, 0, 0, 0, big);        /* past the top right */
+    glColor3f(0.3f, 0.7f, 1.0f);
+    window_pos(8.0f, 12.0f, 0.0f);
+    glBitmap(40, 40, 0, 0, 0, 0, big);        /* taller than the cache */
+    window_pos(1.0f, 30.0f, 0.0f);
+    glBitmap(560, 3, 0, 0, 0, 0, big);        /* wider than the cache */
+    fc_capture(h);
+}
+
+/* When the cache is drawn: state changes alone do not draw it, so the
+ * bitmaps take the state of the last glBitmap call, and draws, clears and
+ * reads draw it first. */
+static void bitmap_cache_order(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.2f, 0.2f, 0.2f, 1.0f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLubyte rows[10];
+    glyph('M', rows);
+    glColor4f(1, 0, 0, 0.5f);
+    window_pos(4.0f, 4.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    /* blending enabled after the bitmap: still not drawn when the
+     * triangle is, which draws it with the state validated last */
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_BLEND);
+    glColor4f(0, 1, 0, 1);
+    fcu_rect(6.0f, 6.0f, 30.0f, 9.0f, 0.0f);
+    /* a colour change makes a new cache: the first drawn first */
+    glColor4f(0, 0, 1, 1);
+    window_pos(4.0f, 20.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glColor4f(1, 1, 0, 1);
+    window_pos(8.0f, 22.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    /* depth test enabled after the last bitmap but before the flush */
+    window_pos(4.0f, 40.0f, 0.5f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    GLubyte px[4];
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_blob(h, "read", px, sizeof px);
+    glDisable(GL_DEPTH_TEST);
+    /* the scissor: a change with the test on draws the cache */
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 40, 64);
+    window_pos(30.0f, 50.0f, 0.0f);
+    glColor4f(1, 0, 1, 1);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glScissor(0, 0, 44, 64);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_SCISSOR_TEST);
+    fc_capture(h);
+    /* a bitmap left in the cache at the end of a frame */
+    window_pos(50.0f, 4.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_ONE);
+    fc_capture(h);
+}
+
+/* Through the per-fragment operations: depth test at the raster depth,
+ * alpha test, blending, stencil, fog (the fog coordinate of the quad is
+ * 0), logic op, colour mask. */
+static void bitmap_fragment_ops(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.3f, 0.3f, 0.3f, 0.5f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLubyte rows[10];
+    glyph('W', rows);
+    /* a depth ramp to test against */
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    glColor3f(0.1f, 0.2f, 0.1f);
+    glVertex3f(0, 0, 0.9f);
+    glVertex3f(64, 0, -0.9f);
+    glVertex3f(64, 64, -0.9f);
+    glVertex3f(0, 64, 0.9f);
+    glEnd();
+    glColor3f(1, 1, 1);
+    for (int i = 0; i < 7; i++) {
+        window_pos(2.0f + 9.0f * (float)i, 2.0f, -0.5f + 0.16f * (float)i);
+        glBitmap(8, 10, 0, 0, 0, 0, rows);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_GREATER, 0.5f);
+    for (int i = 0; i < 4; i++) {
+        glColor4f(0.9f, 0.4f, 0.1f, 0.3f + 0.15f * (float)i);
+        window_pos(2.0f + 9.0f * (float)i, 14.0f, 0.0f);
+        glBitmap(8, 10, 0, 0, 0, 0, rows);
+    }
+    glDisable(GL_ALPHA_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColor4f(0.2f, 0.9f, 0.7f, 0.6f);
+    window_pos(40.0f, 14.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_BLEND);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, -1.0f);
+    glFogf(GL_FOG_END, 3.0f);
+    GLfloat fogc[4] = { 0.0f, 0.0f, 1.0f, 1.0f };
+    glFogfv(GL_FOG_COLOR, fogc);
+    glColor3f(1, 0, 0);
+    window_pos(2.0f, 28.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glFogi(GL_FOG_MODE, GL_EXP);
+    glFogf(GL_FOG_DENSITY, 0.7f);
+    window_pos(12.0f, 28.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_FOG);
+    glEnable(GL_COLOR_LOGIC_OP);
+    glLogicOp(GL_XOR);
+    glColor3f(1, 1, 1);
+    window_pos(24.0f, 28.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_COLOR_LOGIC_OP);
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glColor3f(1, 1, 1);
+    window_pos(36.0f, 28.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(4, 40, 20, 5);
+    glColor3f(0, 1, 1);
+    window_pos(2.0f, 38.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glDisable(GL_SCISSOR_TEST);
+    fc_capture(h);
+}
+
+static void bitmap_stencil(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLubyte rows[10];
+    glyph('S', rows);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 5, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glColor3f(1, 0, 0);
+    window_pos(4.0f, 4.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 4, 0, rows);
+    glBitmap(8, 10, 0, 0, 4, 0, rows);
+    glBitmap(8, 10, 0, 0, 4, 0, rows);
+    /* show the stencil */
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    for (int i = 1; i <= 3; i++) {
+        glStencilFunc(GL_EQUAL, i, 0xff);
+        glColor3f(0.3f * (float)i, 1.0f, 0.2f);
+        fcu_rect(0, 0, 32, 20, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+}
+
+/* Feedback: GL_BITMAP_TOKEN with the raster position, colour and texture
+ * coordinate, and the move; selection: no hit, but the move. */
+static void bitmap_feedback_select(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    GLfloat fb[96];
+    for (int i = 0; i < 96; i++)
+        fb[i] = -7.0f;
+    GLubyte rows[10];
+    glyph('F', rows);
+    glFeedbackBuffer(96, GL_4D_COLOR_TEXTURE, fb);
+    glRenderMode(GL_FEEDBACK);
+    glColor4f(0.25f, 0.5f, 0.75f, 1.0f);
+    glTexCoord4f(1, 2, 3, 4);
+    window_pos(10.5f, 12.25f, 0.5f);
+    glBitmap(8, 10, 1, 2, 3.5f, -1.5f, rows);
+    glBitmap(8, 10, 1, 2, 3.5f, -1.5f, rows);
+    glPassThrough(9.0f);
+    window_pos(-3.0f, 5.0f, 0.0f);
+    glBitmap(8, 10, 1, 2, 3.5f, -1.5f, rows);
+    fc_value(h, "feedback count", glRenderMode(GL_RENDER));
+    fc_blob(h, "feedback", fb, sizeof fb);
+    raster_query(h, "after feedback");
+    GLfloat fb2[32];
+    for (int i = 0; i < 32; i++)
+        fb2[i] = -7.0f;
+    glFeedbackBuffer(32, GL_2D, fb2);
+    glRenderMode(GL_FEEDBACK);
+    window_pos(1.0f, 2.0f, 0.0f);
+    glBitmap(0, 0, 0, 0, 1.0f, 1.0f, NULL);
+    fc_value(h, "feedback 2d count", glRenderMode(GL_RENDER));
+    fc_blob(h, "feedback 2d", fb2, sizeof fb2);
+
+    GLuint sel[16];
+    for (int i = 0; i < 16; i++)
+        sel[i] = 0xdeadbeef;
+    glSelectBuffer(16, sel);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(3);
+    window_pos(10.0f, 10.0f, 0.25f);
+    glLoadName(4);
+    glBitmap(8, 10, 0, 0, 5, 5, rows);
+    glLoadName(5);
+    fc_value(h, "select hits", glRenderMode(GL_RENDER));
+    fc_blob(h, "select", sel, sizeof sel);
+    raster_query(h, "after select");
+    fcu_clear(0, 0, 0, 1, 1.0);
+    fc_capture(h);
+}
+
+static void bitmap_dlist(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLuint base = glGenLists(40);
+    for (int c = 0; c < 40; c++) {
+        GLubyte rows[10];
+        glyph("0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ .-"[c], rows);
+        glNewList(base + (GLuint)c, GL_COMPILE);
+        glBitmap(8, 10, 0.0f, 2.0f, 9.0f, 0.0f, rows);
+        glEndList();
+    }
+    /* the unpack state at compile time counts, not at replay */
+    glPixelStorei(GL_UNPACK_LSB_FIRST, 1);
+    glListBase(base - '0');
+    glColor3f(1, 1, 0);
+    window_pos(2.0f, 50.0f, 0.0f);
+    glCallLists(5, GL_UNSIGNED_BYTE, "12345");
+    raster_query(h, "after list text");
+    glPixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    /* compile and execute, and a list of moves */
+    GLubyte rows[10];
+    glyph('Z', rows);
+    glColor3f(0, 1, 1);
+    window_pos(2.0f, 30.0f, 0.0f);
+    GLuint l = glGenLists(1);
+    glNewList(l, GL_COMPILE_AND_EXECUTE);
+    glBitmap(8, 10, 0.0f, 0.0f, 10.0f, 1.0f, rows);
+    glBitmap(8, 10, 0.0f, 0.0f, 10.0f, 1.0f, rows);
+    glEndList();
+    fc_error(h, "compile and execute");
+    glCallList(l);
+    raster_query(h, "after list");
+    /* an empty bitmap in a list */
+    GLuint e = glGenLists(1);
+    glNewList(e, GL_COMPILE);
+    glBitmap(0, 0, 0.0f, 0.0f, 5.0f, -5.0f, rows);
+    glEndList();
+    fc_error(h, "empty bitmap compiled");
+    window_pos(20.0f, 10.0f, 0.0f);
+    glCallList(e);
+    raster_query(h, "after empty list");
+    fc_capture(h);
+}
+
+static void bitmap_errors(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    GLubyte rows[10] = { 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff };
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    window_pos(5.0f, 5.0f, 0.0f);
+    glBitmap(-1, 10, 0, 0, 3, 3, rows);
+    fc_error(h, "negative width");
+    raster_query(h, "negative width");
+    glBitmap(8, -2, 0, 0, 3, 3, rows);
+    fc_error(h, "negative height");
+    glBegin(GL_POINTS);
+    glBitmap(8, 10, 0, 0, 3, 3, rows);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    raster_query(h, "after begin/end");
+    glBitmap(8, 10, 0, 0, 3, 3, NULL);
+    fc_error(h, "null bitmap");
+    raster_query(h, "null bitmap");
+    glBitmap(8, 10, 0, 0, 3, 3, rows);
+    fc_capture(h);
+}
+
+/* ---- glDrawPixels ---- */
+
+/* Each common format with GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and
+ * GL_FLOAT. */
+static void drawpixels_formats(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.2f, 0.3f, 0.4f, 0.5f, 1.0);
+    static GLubyte ub[4 * 9 * 7];
+    static GLushort us[4 * 9 * 7];
+    static GLfloat f[4 * 9 * 7];
+    make_rgba_ub(ub, 9, 7, 3);
+    for (int i = 0; i < 4 * 9 * 7; i++)
+        us[i] = (GLushort)(ub[i] * 257 + (i * 13) % 200);
+    make_rgba_f(f, 9, 7, 5);
+    static const GLenum formats[] = { GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA,
+                                      GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE, GL_BGR, GL_BGRA };
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int i = 0; i < 10; i++) {
+        const float x = 1.0f + 10.0f * (float)(i % 6);
+        const float y = 1.0f + 24.0f * (float)(i / 6);
+        window_pos(x, y, 0.0f);
+        glDrawPixels(9, 7, formats[i], GL_UNSIGNED_BYTE, ub);
+        window_pos(x, y + 8.0f, 0.0f);
+        glDrawPixels(9, 7, formats[i], GL_UNSIGNED_SHORT, us);
+        window_pos(x, y + 16.0f, 0.0f);
+        glDrawPixels(9, 7, formats[i], GL_FLOAT, f);
+        fc_error(h, "format");
+    }
+    fc_capture(h);
+}
+
+/* Zoom: integer, negative, fractional, with integer and fractional
+ * raster positions, partly outside the window. */
+static void drawpixels_zoom(fc_h *h)
+{
+    static GLubyte img[4 * 7 * 5];
+    make_rgba_ub(img, 7, 5, 11);
+    static const float zooms[][2] = {
+        { 2.0f, 3.0f }, { -1.0f, 1.0f }, { 1.0f, -1.0f }, { -2.0f, -1.5f },
+        { 0.5f, 0.5f }, { 1.5f, 2.25f }, { 0.75f, 1.3f }, { 3.3f, 0.6f },
+        { 1.01f, 0.99f }, { 2.5f, -2.5f },
+    };
+    for (int frame = 0; frame < 2; frame++) {
+        fc_pixel_ortho(h);
+        fcu_clear(0, 0, 0, 1, 1.0);
+        for (int i = 0; i < 10; i++) {
+            glPixelZoom(zooms[i][0], zooms[i][1]);
+            const float fx = frame ? 0.37f + 0.1f * (float)i : 0.0f;
+            const float fy = frame ? 0.61f - 0.05f * (float)i : 0.0f;
+            window_pos(12.0f + 24.0f * (float)(i % 4) + fx, 12.0f + 20.0f * (float)(i / 4) + fy,
+                       0.0f);
+            glDrawPixels(7, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        }
+        /* partly outside: zoomed (clipped by the draw module) and not
+         * (clipped on the CPU) */
+        glPixelZoom(2.0f, 2.0f);
+        window_pos(90.0f, 60.0f, 0.0f);
+        glDrawPixels(7, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glPixelZoom(-1.5f, 1.0f);
+        window_pos(3.0f, 2.0f, 0.0f);
+        glDrawPixels(7, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glPixelZoom(1.0f, 1.0f);
+        window_pos(93.0f, 1.0f, 0.0f);
+        glDrawPixels(7, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glPixelZoom(1.0f, 1.0f);
+        fc_capture(h);
+    }
+}
+
+/* Pixel transfer: scale and bias (in the shader), colour maps. */
+static void drawpixels_transfer(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte ub[4 * 16 * 8];
+    static GLfloat f[4 * 16 * 8];
+    make_rgba_ub(ub, 16, 8, 1);
+    make_rgba_f(f, 16, 8, 2);
+    window_pos(1, 1, 0);
+    glDrawPixels(16, 8, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+    glPixelTransferf(GL_BLUE_SCALE, -1.0f);
+    glPixelTransferf(GL_BLUE_BIAS, 1.0f);
+    glPixelTransferf(GL_ALPHA_SCALE, 1.7f);
+    window_pos(20, 1, 0);
+    glDrawPixels(16, 8, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    window_pos(40, 1, 0);
+    glDrawPixels(16, 8, GL_RGBA, GL_FLOAT, f);
+    window_pos(1, 12, 0);
+    glDrawPixels(16, 8, GL_LUMINANCE, GL_UNSIGNED_BYTE, ub);
+    glPixelTransferf(GL_RED_SCALE, 1.0f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.0f);
+    glPixelTransferf(GL_BLUE_SCALE, 1.0f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.0f);
+    glPixelTransferf(GL_ALPHA_SCALE, 1.0f);
+    /* transfer on float data out of [0, 1] */
+    static GLfloat wide[4 * 8 * 4];
+    for (int i = 0; i < 4 * 8 * 4; i++)
+        wide[i] = -0.75f + 0.07f * (float)i;
+    glPixelTransferf(GL_RED_SCALE, 0.25f);
+    glPixelTransferf(GL_GREEN_SCALE, -0.5f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.6f);
+    window_pos(20, 24, 0);
+    glDrawPixels(8, 4, GL_RGBA, GL_FLOAT, wide);
+    fc_capture(h);
+}
+
+/* GL_MAP_COLOR through the shader's pixel-map lookups (see
+ * known-differences.txt: the second lookup of nir_lower_drawpixels). */
+static void drawpixels_map_color(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte ub[4 * 16 * 8];
+    static GLfloat f[4 * 16 * 8];
+    make_rgba_ub(ub, 16, 8, 1);
+    make_rgba_f(f, 16, 8, 2);
+    /* colour maps of different sizes */
+    GLfloat rmap[256], gmap[7], bmap[64], amap[2];
+    for (int i = 0; i < 256; i++)
+        rmap[i] = 1.0f - (float)i / 255.0f;
+    for (int i = 0; i < 7; i++)
+        gmap[i] = (float)(i * i) / 36.0f;
+    for (int i = 0; i < 64; i++)
+        bmap[i] = (float)((i * 5) % 64) / 63.0f;
+    amap[0] = 0.2f;
+    amap[1] = 0.9f;
+    glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 256, rmap);
+    glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 7, gmap);
+    glPixelMapfv(GL_PIXEL_MAP_B_TO_B, 64, bmap);
+    glPixelMapfv(GL_PIXEL_MAP_A_TO_A, 2, amap);
+    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+    window_pos(20, 12, 0);
+    glDrawPixels(16, 8, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    window_pos(40, 12, 0);
+    glDrawPixels(16, 8, GL_RGBA, GL_FLOAT, f);
+    glPixelTransferf(GL_RED_BIAS, 0.3f);
+    window_pos(1, 24, 0);
+    glDrawPixels(16, 8, GL_RGB, GL_UNSIGNED_BYTE, ub);
+    glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+    glPixelTransferf(GL_RED_BIAS, 0.0f);
+    fc_capture(h);
+}
+
+/* Through the fragment operations: depth test at the raster depth,
+ * blending, alpha test, fog, logic op, colour mask, scissor. */
+static void drawpixels_fragment_ops(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.3f, 0.3f, 0.3f, 0.5f, 1.0);
+    static GLubyte ub[4 * 12 * 10];
+    make_rgba_ub(ub, 12, 10, 9);
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    glColor3f(0.1f, 0.2f, 0.1f);
+    glVertex3f(0, 0, 0.9f);
+    glVertex3f(64, 0, -0.9f);
+    glVertex3f(64, 64, -0.9f);
+    glVertex3f(0, 64, 0.9f);
+    glEnd();
+    for (int i = 0; i < 4; i++) {
+        window_pos(2.0f + 14.0f * (float)i, 2.0f, -0.6f + 0.4f * (float)i);
+        glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    window_pos(2, 14, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+    window_pos(16, 14, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_LESS, 0.6f);
+    window_pos(30, 14, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glDisable(GL_ALPHA_TEST);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, -2.0f);
+    glFogf(GL_FOG_END, 2.0f);
+    GLfloat fogc[4] = { 1.0f, 0.0f, 1.0f, 1.0f };
+    glFogfv(GL_FOG_COLOR, fogc);
+    window_pos(44, 14, 0.5f);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glFogi(GL_FOG_MODE, GL_EXP2);
+    glFogf(GL_FOG_DENSITY, 1.3f);
+    window_pos(2, 26, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glDisable(GL_FOG);
+    glEnable(GL_COLOR_LOGIC_OP);
+    glLogicOp(GL_AND_REVERSE);
+    window_pos(16, 26, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glDisable(GL_COLOR_LOGIC_OP);
+    glColorMask(GL_FALSE, GL_TRUE, GL_TRUE, GL_FALSE);
+    window_pos(30, 26, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(46, 28, 7, 5);
+    window_pos(44, 26, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glPixelZoom(1.5f, 1.5f);
+    glScissor(3, 40, 12, 9);
+    window_pos(2, 38, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glPixelZoom(1.0f, 1.0f);
+    glDisable(GL_SCISSOR_TEST);
+    /* lighting with separate specular: no secondary colour reaches it */
+    glEnable(GL_LIGHTING);
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    window_pos(30, 40, 0);
+    glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glDisable(GL_LIGHTING);
+    fc_capture(h);
+}
+
+/* Unpack state: skip pixels and rows, row length, alignment; clipped
+ * with zoom 1 on every side. */
+static void drawpixels_unpack(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte ub[4 * 20 * 16 + 64];
+    make_rgba_ub(ub, 20, 16, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 20);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+    window_pos(2, 2, 0);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    window_pos(14, 2, 0);
+    glDrawPixels(7, 5, GL_RGB, GL_UNSIGNED_BYTE, ub);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    window_pos(24, 2, 0);
+    glDrawPixels(7, 5, GL_LUMINANCE, GL_UNSIGNED_BYTE, ub);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    /* clipped by the window on each side */
+    window_pos(-5, 20, 0);   /* invalid: nothing */
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    window_pos(0, 20, 0);
+    glBitmap(0, 0, 0, 0, -4, -3, NULL);   /* move outside, still valid */
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    window_pos(58, 44, 0);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    window_pos(30, 30, 0);
+    glBitmap(0, 0, 0, 0, 0.4999f, -0.5f, NULL);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    fc_capture(h);
+}
+
+/* GL_DEPTH_COMPONENT: the image's depth through the depth test, the
+ * raster colour written; depth scale and bias. */
+static void drawpixels_depth(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 0.5);
+    static GLfloat zf[12 * 10];
+    static GLushort zs[12 * 10];
+    static GLuint zi[12 * 10];
+    for (int i = 0; i < 12 * 10; i++) {
+        zf[i] = (float)i / 119.0f * 1.2f - 0.1f;
+        zs[i] = (GLushort)(i * 551);
+        zi[i] = (GLuint)i * 35791394u + 12345u;
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glColor3f(1, 0, 0);
+    window_pos(2, 2, 0.9f);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    glColor3f(0, 1, 0);
+    window_pos(16, 2, 0.9f);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, zs);
+    glColor3f(0, 0, 1);
+    window_pos(30, 2, 0.9f);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zi);
+    glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.3f);
+    glColor3f(1, 1, 0);
+    window_pos(44, 2, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    window_pos(2, 16, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, zs);
+    window_pos(16, 16, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zi);
+    glPixelTransferf(GL_DEPTH_SCALE, 1.0f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.0f);
+    /* zoomed, and with the depth test off (no depth write) */
+    glPixelZoom(2.0f, -1.5f);
+    glColor3f(0, 1, 1);
+    window_pos(30, 40, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    glPixelZoom(1.0f, 1.0f);
+    glDisable(GL_DEPTH_TEST);
+    glColor3f(1, 0, 1);
+    window_pos(2, 40, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_FALSE);
+    glColor3f(1, 1, 1);
+    window_pos(50, 40, 0);
+    glDrawPixels(12, 10, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    glDepthMask(GL_TRUE);
+    fc_capture(h);
+}
+
+/* GL_STENCIL_INDEX: written with the stencil write mask whatever the
+ * stencil test; GL_MAP_STENCIL applies, the index shift does not. */
+static void drawpixels_stencil(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0x10);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    static GLubyte s[16 * 12];
+    static GLushort s16[16 * 12];
+    for (int i = 0; i < 16 * 12; i++) {
+        s[i] = (GLubyte)((i % 16) / 4 + (i / 16) / 3 * 4);
+        s16[i] = (GLushort)(s[i] + 0x300);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_NEVER, 0, 0);
+    window_pos(2, 2, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    glStencilMask(0x0c);
+    window_pos(20, 2, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, s16);
+    glStencilMask(0xff);
+    glPixelTransferi(GL_INDEX_SHIFT, 1);
+    glPixelTransferi(GL_INDEX_OFFSET, 3);
+    window_pos(38, 2, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+    GLfloat smap[16];
+    for (int i = 0; i < 16; i++)
+        smap[i] = (float)(15 - i);
+    glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 16, smap);
+    glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+    glPixelZoom(1.5f, -1.25f);
+    window_pos(2, 40, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    glPixelZoom(1.0f, 1.0f);
+    glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+    /* show the stencil values */
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    for (int v = 0; v < 32; v++) {
+        glStencilFunc(GL_EQUAL, v, 0xff);
+        glColor3ub((GLubyte)(v * 8), (GLubyte)(255 - v * 8), (GLubyte)(v * 37));
+        fcu_rect(0, 0, 64, 64, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+}
+
+static void drawpixels_errors(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    GLubyte img[4 * 4 * 4];
+    memset(img, 200, sizeof img);
+    window_pos(2, 2, 0);
+    glDrawPixels(-1, 4, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "negative width");
+    glDrawPixels(4, 4, GL_RGBA, GL_BITMAP, img);
+    fc_error(h, "rgba bitmap");
+    glDrawPixels(4, 4, 0x1234, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "bad format");
+    glDrawPixels(4, 4, GL_RGBA, 0x1234, img);
+    fc_error(h, "bad type");
+    glDrawPixels(4, 4, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, img);
+    fc_error(h, "packed mismatch");
+    glDrawPixels(4, 4, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "integer format");
+    glDrawPixels(4, 4, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "no stencil buffer");
+    glDrawPixels(4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "depth stencil bad type");
+    glDrawPixels(4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, img);
+    fc_error(h, "depth stencil no stencil");
+    glDrawPixels(4, 4, GL_INTENSITY, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "intensity");
+    glBegin(GL_POINTS);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "null pixels");
+    window_pos(100, 100, 0);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "null pixels invalid position");
+    window_pos(30, 30, 0);
+    glBitmap(0, 0, 0, 0, 40, 0, NULL);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "null pixels clipped away");
+    glDrawPixels(0, 4, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    fc_error(h, "zero width");
+    window_pos(5, 5, 0);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    fc_capture(h);
+}
+
+static void drawpixels_feedback_dlist(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte ub[4 * 8 * 6];
+    make_rgba_ub(ub, 8, 6, 21);
+    GLfloat fb[64];
+    for (int i = 0; i < 64; i++)
+        fb[i] = -7.0f;
+    glFeedbackBuffer(64, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glColor4f(0.5f, 0.25f, 1.0f, 0.75f);
+    window_pos(3.5f, 4.25f, 0.125f);
+    glDrawPixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glCopyPixels(0, 0, 4, 4, GL_COLOR);
+    glDrawPixels(8, 6, GL_RGBA, GL_BITMAP, ub);
+    fc_value(h, "feedback count", glRenderMode(GL_RENDER));
+    fc_error(h, "feedback error");
+    fc_blob(h, "feedback", fb, sizeof fb);
+    GLuint sel[8];
+    for (int i = 0; i < 8; i++)
+        sel[i] = 0xdeadbeef;
+    glSelectBuffer(8, sel);
+    glRenderMode(GL_SELECT);
+    glPushName(1);
+    glDrawPixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glCopyPixels(0, 0, 4, 4, GL_COLOR);
+    fc_value(h, "select hits", glRenderMode(GL_RENDER));
+    fc_blob(h, "select", sel, sizeof sel);
+
+    /* display lists: the image is copied with the compile-time unpack */
+    GLuint l = glGenLists(2);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 8);
+    glNewList(l, GL_COMPILE);
+    glDrawPixels(6, 6, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glEndList();
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    window_pos(20, 20, 0);
+    glDrawPixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glCopyPixels(20, 20, 8, 6, GL_COLOR);
+    glEndList();
+    window_pos(2, 2, 0);
+    glCallList(l);
+    glPixelZoom(2, 2);
+    window_pos(40, 2, 0);
+    glCallList(l + 1);
+    glPixelZoom(1, 1);
+    fc_error(h, "lists");
+    fc_capture(h);
+}
+
+/* ---- glCopyPixels ---- */
+
+static void copy_scene(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    static GLubyte ub[4 * 24 * 20];
+    make_rgba_ub(ub, 24, 20, 17);
+    window_pos(8, 8, 0);
+    glDrawPixels(24, 20, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0);
+    glVertex3f(40, 4, 0.5f);
+    glColor3f(0, 1, 0);
+    glVertex3f(60, 10, -0.5f);
+    glColor3f(0, 0, 1);
+    glVertex3f(44, 30, 0.0f);
+    glEnd();
+}
+
+/* Overlapping copies in every direction (the texture path keeps the
+ * source intact), a disjoint copy (the blit), zoom 1. */
+static void copypixels_overlap(fc_h *h)
+{
+    static const int moves[][2] = { { 3, 0 }, { -3, 0 }, { 0, 4 }, { 0, -4 }, { 5, -2 } };
+    for (int i = 0; i < 5; i++) {
+        copy_scene(h);
+        window_pos(8.0f + (float)moves[i][0], 8.0f + (float)moves[i][1], 0.0f);
+        glCopyPixels(8, 8, 24, 20, GL_COLOR);
+        fc_error(h, "overlap");
+        fc_capture(h);
+    }
+    copy_scene(h);
+    /* disjoint: a blit, which ignores the colour mask */
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+    window_pos(36, 34, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    /* partly outside the window as source and as destination */
+    window_pos(2, 40, 0);
+    glCopyPixels(40, 0, 30, 12, GL_COLOR);
+    fc_capture(h);
+}
+
+/* With zoom and with per-fragment state (the texture path). */
+static void copypixels_zoom_ops(fc_h *h)
+{
+    copy_scene(h);
+    glPixelZoom(2.0f, 1.5f);
+    window_pos(2, 30, 0);
+    glCopyPixels(8, 8, 12, 10, GL_COLOR);
+    glPixelZoom(-1.0f, -1.0f);
+    window_pos(60, 60, 0);
+    glCopyPixels(8, 8, 12, 10, GL_COLOR);
+    glPixelZoom(0.5f, 0.75f);
+    window_pos(40, 40, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);
+    glPixelZoom(1.0f, 1.0f);
+    fc_capture(h);
+    copy_scene(h);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    window_pos(30, 30, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);
+    glDisable(GL_BLEND);
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.2f);
+    window_pos(2, 40, 0);
+    glCopyPixels(8, 8, 20, 20, GL_COLOR);
+    glPixelTransferf(GL_RED_SCALE, 1.0f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.0f);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_EXP);
+    glFogf(GL_FOG_DENSITY, 0.4f);
+    window_pos(40, 2, 0);
+    glCopyPixels(8, 8, 20, 20, GL_COLOR);
+    glDisable(GL_FOG);
+    /* overlap with zoom 1 but blending: texture path */
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_GEQUAL, 0.5f);
+    window_pos(10, 10, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);
+    glDisable(GL_ALPHA_TEST);
+    fc_capture(h);
+}
+
+/* GL_DEPTH: the depth copied (through the depth test, with the current
+ * colour, on the texture path; straight on the blit path). */
+static void copypixels_depth(fc_h *h)
+{
+    copy_scene(h);
+    glEnable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    glColor3f(0.2f, 0.4f, 0.2f);
+    glVertex3f(0, 0, 0.9f);
+    glVertex3f(64, 0, -0.9f);
+    glVertex3f(64, 20, 0.7f);
+    glVertex3f(0, 20, 0.1f);
+    glEnd();
+    glDepthFunc(GL_LESS);
+    glColor3f(1, 1, 0);
+    window_pos(2, 30, 0);
+    glCopyPixels(0, 0, 30, 20, GL_DEPTH);        /* disjoint, zoom 1: blit */
+    glColor3f(0, 1, 1);
+    window_pos(4, 4, 0);
+    glCopyPixels(0, 0, 30, 16, GL_DEPTH);        /* overlap: texture path */
+    glPixelZoom(1.5f, 1.0f);
+    glColor3f(1, 0, 1);
+    window_pos(34, 22, 0);
+    glCopyPixels(0, 0, 20, 20, GL_DEPTH);
+    glPixelZoom(1.0f, 1.0f);
+    glDisable(GL_DEPTH_TEST);
+    fc_capture(h);
+    /* read the depth back */
+    static GLfloat z[64 * 64];
+    glReadPixels(0, 0, 64, 64, GL_DEPTH_COMPONENT, GL_FLOAT, z);
+    fc_blob(h, "depth", z, sizeof z);
+}
+
+static void copypixels_stencil(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_STENCIL_TEST);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    fcu_tri(2, 2, 30, 6, 10, 28);
+    fcu_tri(4, 20, 28, 2, 24, 26);
+    fcu_rect(8, 8, 20, 14, 0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    window_pos(34, 2, 0);
+    glCopyPixels(0, 0, 30, 30, GL_STENCIL);       /* blit */
+    window_pos(3, 34, 0);
+    glCopyPixels(0, 0, 30, 28, GL_STENCIL);
+    window_pos(5, 1, 0);
+    glStencilMask(0x06);
+    glCopyPixels(0, 0, 20, 20, GL_STENCIL);       /* overlap */
+    glStencilMask(0xff);
+    glPixelZoom(1.0f, 0.5f);
+    window_pos(34, 34, 0);
+    glCopyPixels(0, 0, 30, 30, GL_STENCIL);
+    glPixelZoom(1.0f, 1.0f);
+    for (int v = 0; v < 8; v++) {
+        glStencilFunc(GL_EQUAL, v, 0xff);
+        glColor3ub((GLubyte)(v * 32), (GLubyte)(255 - v * 32), (GLubyte)(v * 97));
+        fcu_rect(0, 0, 64, 64, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+}
+
+static void copypixels_errors(fc_h *h)
+{
+    copy_scene(h);
+    window_pos(30, 30, 0);
+    glCopyPixels(0, 0, -1, 5, GL_COLOR);
+    fc_error(h, "negative width");
+    glCopyPixels(0, 0, 5, 5, GL_RGBA);
+    fc_error(h, "bad type");
+    glCopyPixels(0, 0, 5, 5, GL_STENCIL);
+    fc_error(h, "no stencil");
+    glCopyPixels(0, 0, 5, 5, GL_DEPTH_STENCIL);
+    fc_error(h, "no depth stencil");
+    glCopyPixels(0, 0, 5, 5, 0x886E /* GL_DEPTH_STENCIL_TO_RGBA_NV */);
+    fc_error(h, "nv type");
+    glBegin(GL_POINTS);
+    glCopyPixels(0, 0, 5, 5, GL_COLOR);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    glReadBuffer(GL_NONE);
+    glCopyPixels(0, 0, 5, 5, GL_COLOR);
+    fc_error(h, "no read buffer");
+    glReadBuffer(GL_FRONT);
+    glCopyPixels(0, 0, 0, 5, GL_COLOR);
+    fc_error(h, "zero width");
+    fc_capture(h);
+}
+
+/* GL_DEPTH_STENCIL_TO_RGBA_NV / BGRA_NV (NV_copy_depth_to_color): the
+ * depth and stencil bytes as a colour. */
+static void copypixels_depth_to_color(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0x5a);
+    fcu_clear(0, 0, 0, 1, 0.3);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0xc3, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex3f(1, 1, -0.8f);
+    glVertex3f(30, 4, 0.6f);
+    glVertex3f(8, 30, 0.1f);
+    glEnd();
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+    window_pos(32, 0, 0);
+    glCopyPixels(0, 0, 32, 32, GL_DEPTH_STENCIL_TO_RGBA_NV);
+    fc_error(h, "rgba");
+    window_pos(0, 32, 0);
+    glCopyPixels(0, 0, 32, 32, GL_DEPTH_STENCIL_TO_BGRA_NV);
+    fc_error(h, "bgra");
+    glPixelZoom(0.5f, 0.5f);
+    window_pos(40, 40, 0);
+    glCopyPixels(0, 0, 32, 32, GL_DEPTH_STENCIL_TO_RGBA_NV);
+    glPixelZoom(1, 1);
+    fc_capture(h);
+}
+
+const fc_case fc_cases_pix_draw[] = {
+    FC_CASE_RGBA("pixel/bitmap_text", 180, 110, 1, "pixel bitmap", bitmap_text),
+    FC_CASE_RGBA("pixel/bitmap_unpack", 128, 48, 1, "pixel bitmap", bitmap_unpack),
+    FC_CASE_RGBA("pixel/bitmap_origin_move", 80, 48, 1, "pixel bitmap", bitmap_origin_move),
+    FC_CASE_RGBA("pixel/bitmap_clipped", 72, 64, 1, "pixel bitmap", bitmap_clipped),
+    FC_CASE_RGBA("pixel/bitmap_cache_order", 64, 64, 2, "pixel bitmap", bitmap_cache_order),
+    FC_CASE_RGBA("pixel/bitmap_fragment_ops", 64, 64, 1, "pixel bitmap",
+                 bitmap_fragment_ops),
+    FC_CASE("pixel/bitmap_stencil", 32, 24, OSMESA_RGBA, 24, 8, 1, "pixel bitmap stencil",
+            bitmap_stencil),
+    FC_CASE_RGBA("pixel/bitmap_feedback_select", 32, 32, 1, "pixel bitmap feedback select",
+                 bitmap_feedback_select),
+    FC_CASE_RGBA("pixel/bitmap_dlist", 64, 64, 1, "pixel bitmap dlist", bitmap_dlist),
+    FC_CASE_RGBA("pixel/bitmap_errors", 32, 32, 1, "pixel bitmap errors", bitmap_errors),
+    FC_CASE_RGBA("pixel/drawpixels_formats", 64, 48, 1, "pixel drawpixels",
+                 drawpixels_formats),
+    FC_CASE_RGBA("pixel/drawpixels_zoom", 100, 64, 2, "pixel drawpixels", drawpixels_zoom),
+    FC_CASE_RGBA("pixel/drawpixels_transfer", 64, 40, 1, "pixel drawpixels",
+                 drawpixels_transfer),
+    FC_CASE_RGBA("pixel/drawpixels_map_color", 64, 40, 1, "pixel drawpixels",
+                 drawpixels_map_color),
+    FC_CASE_RGBA("pixel/drawpixels_fragment_ops", 64, 64, 1, "pixel drawpixels",
+                 drawpixels_fragment_ops),
+    FC_CASE_RGBA("pixel/drawpixels_unpack", 64, 48, 1, "pixel drawpixels", drawpixels_unpack),
+    FC_CASE_RGBA("pixel/drawpixels_depth", 64, 64, 1, "pixel drawpixels depth",
+                 drawpixels_depth),
+    FC_CASE("pixel/drawpixels_stencil", 64, 64, OSMESA_RGBA, 24, 8, 1,
+            "pixel drawpixels stencil", drawpixels_stencil),
+    FC_CASE_RGBA("pixel/drawpixels_errors", 32, 32, 1, "pixel drawpixels errors",
+                 drawpixels_errors),
+    FC_CASE_RGBA("pixel/drawpixels_feedback_dlist", 64, 32, 1,
+                 "pixel drawpixels feedback dlist", drawpixels_feedback_dlist),
+    FC_CASE_RGBA("pixel/copypixels_overlap", 64, 64, 6, "pixel copypixels",
+                 copypixels_overlap),
+    FC_CASE_RGBA("pixel/copypixels_zoom_ops", 64, 64, 2, "pixel copypixels",
+                 copypixels_zoom_ops),
+    FC_CASE_RGBA("pixel/copypixels_depth", 64, 64, 1, "pixel copypixels depth",
+                 copypixels_depth),
+    FC_CASE("pixel/copypixels_stencil", 64, 64, OSMESA_RGBA, 24, 8, 1,
+            "pixel copypixels stencil", copypixels_stencil),
+    FC_CASE("pixel/copypixels_depth_to_color", 64, 64, OSMESA_RGBA, 24, 8, 1,
+            "pixel copypixels depth stencil", copypixels_depth_to_color),
+    FC_CASE_RGBA("pixel/copypixels_errors", 64, 64, 1, "pixel copypixels errors",
+                 copypixels_errors),
+    { 0 }
+};
