@@ -16,12 +16,14 @@
  * GL_LUMINANCE_ALPHA 2, GL_LUMINANCE/ALPHA/RED/... 1), 0 if unknown. */
 int fgl_format_components(GLenum format);
 
-/* Bytes per pixel of format/type, 0 if unknown (GL_BITMAP: 0). */
+/* Bytes per pixel of format/type, 0 if unknown (GL_BITMAP: 0; the packed
+ * types: their size). */
 size_t fgl_pixel_bytes(GLenum format, GLenum type);
 
 /* [S: image.c:_mesa_image_address2d, _mesa_image_row_stride] the address
  * of pixel (col, row) of a width-wide image at `pixels` under the store
- * state p. */
+ * state p (GL_BITMAP: the byte holding the pixel, its bit being
+ * (SkipPixels + col) & 7 counted as LSB_FIRST says). */
 const uint8_t *fgl_image_address(const struct fgl_pixelstore *p, const void *pixels,
                                  int width, GLenum format, GLenum type, int row, int col);
 size_t fgl_image_row_stride(const struct fgl_pixelstore *p, int width, GLenum format,
@@ -37,5 +39,119 @@ size_t fgl_image_row_stride(const struct fgl_pixelstore *p, int width, GLenum fo
 bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
                              int width, int height, GLenum format, GLenum type,
                              const void *pixels, GLenum base, uint8_t *dst);
+
+/* ------------------------------------------------------------------ */
+/* Format/type validation                                              */
+/* ------------------------------------------------------------------ */
+
+/* [S: glformats.c:_mesa_error_check_format_and_type] GL_NO_ERROR, or the
+ * error (GL_INVALID_ENUM / GL_INVALID_OPERATION) the oracle raises for a
+ * client format/type pair in glReadPixels, glDrawPixels and
+ * glTex[Sub]Image (desktop GL, the oracle's extensions). */
+GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum format,
+                                       GLenum type);
+
+/* [S: glformats.c:_mesa_is_color_format, _mesa_is_enum_format_integer].
+ * fixgl converts the colour formats of the check above (incl. GL_RG and
+ * GL_ABGR_EXT), GL_COLOR_INDEX, GL_STENCIL_INDEX and GL_DEPTH_COMPONENT;
+ * the integer formats pass the check but are not converted. */
+bool fgl_is_color_format(GLenum format);
+bool fgl_is_integer_format(GLenum format);
+
+/* [S: util/half_float.c] */
+float fgl_half_to_float(uint16_t h);
+uint16_t fgl_float_to_half(float f);
+
+/* ------------------------------------------------------------------ */
+/* Pixel transfer                                                      */
+/* ------------------------------------------------------------------ */
+
+/* Mesa's IMAGE_*_BIT transfer operation bits */
+#define FGL_IMAGE_SCALE_BIAS_BIT    0x1
+#define FGL_IMAGE_SHIFT_OFFSET_BIT  0x2
+#define FGL_IMAGE_MAP_COLOR_BIT     0x4
+#define FGL_IMAGE_CLAMP_BIT         0x800
+
+/* [S: pixel.c:_mesa_update_pixel] ctx->_ImageTransferState */
+unsigned fgl_image_transfer_state(const struct fgl_context *ctx);
+
+/* [S: pixeltransfer.c:_mesa_apply_rgba_transfer_ops] scale/bias, then
+ * the colour maps, then the clamp, as `ops` selects */
+void fgl_apply_rgba_transfer_ops(const struct fgl_context *ctx, unsigned ops, size_t n,
+                                 float (*rgba)[4]);
+
+/* [S: pixeltransfer.c:_mesa_shift_and_offset_ci, _mesa_map_ci_to_rgba] */
+void fgl_shift_and_offset_ci(const struct fgl_context *ctx, size_t n, GLuint *index);
+void fgl_map_ci_to_rgba(const struct fgl_context *ctx, size_t n, const GLuint *index,
+                        float (*rgba)[4]);
+
+/* ------------------------------------------------------------------ */
+/* Unpacking (client memory -> values)                                 */
+/* ------------------------------------------------------------------ */
+
+/* width x height colour pixels (any colour format of the check above
+ * but the integer ones, or GL_COLOR_INDEX) to float RGBA, row-major,
+ * rows in the order given: [S: format_utils.c:_mesa_format_convert] to
+ * RGBA32_FLOAT with SWAP_BYTES handled first (texstore.c:texstore_rgba),
+ * then fgl_apply_rgba_transfer_ops(ops).  GL_COLOR_INDEX: the indices
+ * (shifted and offset when ops has FGL_IMAGE_SHIFT_OFFSET_BIT) through
+ * the I_TO_R/G/B/A maps, then only the clamp of ops
+ * ([S: pack.c:_mesa_unpack_color_index_to_rgba_float]; note that Mesa
+ * reads the width*height indices as one contiguous span, ignoring the row
+ * padding).  Returns false for a format/type it does not convert. */
+bool fgl_unpack_rgba_float(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                           int width, int height, GLenum format, GLenum type,
+                           const void *pixels, unsigned ops, float *rgba);
+
+/* n indices of one row at `src` (already addressed, e.g. by
+ * fgl_image_address) of type `type` (GL_BITMAP: bits from SkipPixels & 7
+ * on, honouring LSB_FIRST) [S: pack.c:extract_uint_indexes] */
+void fgl_extract_uint_indexes(const struct fgl_pixelstore *p, size_t n, GLenum type,
+                              const void *src, GLuint *index);
+
+/* n stencil indices of one row [S: pack.c:_mesa_unpack_stencil_span]
+ * with shift/offset (when `ops` has FGL_IMAGE_SHIFT_OFFSET_BIT) and
+ * GL_MAP_STENCIL (when on), as GLuint. */
+void fgl_unpack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                             size_t n, GLenum type, const void *src, unsigned ops,
+                             GLuint *dst);
+
+/* n depth values of one row as floats [S: pack.c:_mesa_unpack_depth_span]
+ * (GL_DEPTH_SCALE/BIAS applied, clamped as Mesa clamps). */
+void fgl_unpack_depth_span_float(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                 size_t n, GLenum type, const void *src, float *dst);
+
+/* ------------------------------------------------------------------ */
+/* Packing (values -> client memory)                                   */
+/* ------------------------------------------------------------------ */
+
+/* Where the RGBA8 values to pack come from: their base format decides
+ * Mesa's rebase and its luminance rule. */
+enum fgl_pack_source {
+   FGL_PACK_READPIXELS,   /* colour buffer: L = R+G+B clamped (readpix.c) */
+   FGL_PACK_TEXIMAGE,     /* texture image: L = R (texgetimage.c) */
+};
+
+/* Packs width x height RGBA8 values (row-major; rows in the order they
+ * go to memory) of base format `base` (GL_RGBA, GL_RGB for a buffer or
+ * texture without alpha, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_INTENSITY,
+ * GL_ALPHA) into `pixels` as format/type under the pack state p, with the
+ * pixel transfer operations the context has on, SWAP_BYTES last
+ * [S: readpix.c:read_rgba_pixels, texgetimage.c:get_tex_rgba_uncompressed].
+ * Returns false for a format/type it does not convert. */
+bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                    enum fgl_pack_source source, int width, int height, GLenum base,
+                    const uint8_t *rgba8, GLenum format, GLenum type, void *pixels);
+
+/* One row of n depth values [S: pack.c:_mesa_pack_depth_span] (depth
+ * scale/bias applied, SWAP_BYTES) at `dst` (already addressed). */
+void fgl_pack_depth_span(struct fgl_context *ctx, const struct fgl_pixelstore *p, size_t n,
+                         GLenum type, const float *depth, void *dst);
+
+/* One row of n stencil values [S: pack.c:_mesa_pack_stencil_span]
+ * (shift/offset and MAP_STENCIL applied, SWAP_BYTES, GL_BITMAP bits) at
+ * `dst` (already addressed). */
+void fgl_pack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore *p, size_t n,
+                           GLenum type, const uint8_t *stencil, void *dst);
 
 #endif
