@@ -310,95 +310,6 @@ void fgl_exec_list_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height
 
 /* ---- format and type checks ---- */
 
-/* [S: glformats.c:_mesa_is_enum_format_integer] */
-static bool is_integer_format(GLenum format)
-{
-   switch (format) {
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER:
-   case GL_BGR_INTEGER: case GL_BGRA_INTEGER: case GL_RG_INTEGER:
-   case 0x8D9C: /* GL_LUMINANCE_INTEGER_EXT */
-   case 0x8D9D: /* GL_LUMINANCE_ALPHA_INTEGER_EXT */
-      return true;
-   default:
-      return false;
-   }
-}
-
-/* [S: glformats.c:_mesa_error_check_format_and_type] for a desktop
- * compatibility context with llvmpipe's extensions (RG textures, packed
- * float, shared exponent, float depth buffers) */
-static GLenum check_format_and_type(GLenum format, GLenum type)
-{
-   if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
-       type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
-      return GL_INVALID_ENUM;
-
-   switch (type) {
-   case GL_BITMAP:
-      if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-         return GL_INVALID_ENUM;
-      break;
-   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      if (format == GL_RGB)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-      if (format == GL_RGBA || format == GL_BGRA)
-         break;
-      return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_24_8:
-   case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
-      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_10F_11F_11F_REV:
-      return format == GL_RGB ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   default:
-      break;
-   }
-
-   const bool plain = type == GL_BYTE || type == GL_UNSIGNED_BYTE || type == GL_SHORT ||
-                      type == GL_UNSIGNED_SHORT || type == GL_INT || type == GL_UNSIGNED_INT ||
-                      type == GL_FLOAT || type == GL_HALF_FLOAT;
-   switch (format) {
-   case GL_COLOR_INDEX:
-   case GL_STENCIL_INDEX:
-      return plain || type == GL_BITMAP ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA:
-   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_DEPTH_COMPONENT:
-   case GL_RG: case GL_BGR:
-      return plain ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RGB:
-      return plain || type == GL_UNSIGNED_BYTE_3_3_2 || type == GL_UNSIGNED_BYTE_2_3_3_REV ||
-             type == GL_UNSIGNED_SHORT_5_6_5 || type == GL_UNSIGNED_SHORT_5_6_5_REV ||
-             type == GL_UNSIGNED_INT_5_9_9_9_REV || type == GL_UNSIGNED_INT_10F_11F_11F_REV
-             ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RGBA:
-   case GL_BGRA:
-      return plain || type == GL_UNSIGNED_SHORT_4_4_4_4 ||
-             type == GL_UNSIGNED_SHORT_4_4_4_4_REV || type == GL_UNSIGNED_SHORT_5_5_5_1 ||
-             type == GL_UNSIGNED_SHORT_1_5_5_5_REV || type == GL_UNSIGNED_INT_8_8_8_8 ||
-             type == GL_UNSIGNED_INT_8_8_8_8_REV || type == GL_UNSIGNED_INT_10_10_10_2 ||
-             type == GL_UNSIGNED_INT_2_10_10_10_REV
-             ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_ABGR_EXT:
-      return plain || type == GL_UNSIGNED_SHORT_4_4_4_4 ||
-             type == GL_UNSIGNED_SHORT_4_4_4_4_REV || type == GL_UNSIGNED_INT_8_8_8_8 ||
-             type == GL_UNSIGNED_INT_8_8_8_8_REV
-             ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_DEPTH_STENCIL:
-      return GL_NO_ERROR;   /* the type was checked first */
-   default:
-      return GL_INVALID_ENUM;
-   }
-}
-
 /* [S: framebuffer.c:_mesa_dest_buffer_exists] for depth and stencil */
 static bool zs_buffer_exists(const struct fgl_framebuffer *fb, GLenum format)
 {
@@ -588,6 +499,99 @@ static bool unpack_depth_texels(const struct fgl_context *ctx, const struct fgl_
    return true;
 }
 
+/* The depth texels of the other types: the GL_DEPTH_COMPONENT texture is
+ * Z24X8 (st_format.c DEFAULT_DEPTH_FORMATS), filled by _mesa_unpack_depth_span
+ * (conversion, scale and bias, clamp) and (GLuint)(d * (float)0xffffff),
+ * sampled as z * (float)(1 / 0xffffff). */
+static bool unpack_depth_texels_z24(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                    const void *pixels, int width, int height, GLenum type,
+                                    float *dst)
+{
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_COMPONENT, type, y, 0);
+      float *row = dst + (size_t)y * (size_t)width;
+      fgl_unpack_depth_span_float(ctx, p, (size_t)width, type, src, row);
+      for (int x = 0; x < width; x++) {
+         const uint32_t z = (uint32_t)(row[x] * (float)0xffffff);
+         row[x] = (float)z * (float)(1.0 / 16777215.0);
+      }
+   }
+   return true;
+}
+
+/* The colour texels of the formats and types unpack_color_texels leaves:
+ * through main/pixelformat.c without transfer operations (make_texture
+ * clears _ImageTransferState).  The matching texture formats (snorm,
+ * half float, the packed unorm formats) sample as those floats, up to the
+ * last bit of the unorm conversions, which no output rounding sees.
+ * GL_COLOR_INDEX goes through the I_TO_R/G/B/A maps into an RGBA8
+ * texture (_mesa_unpack_color_index_to_rgba_ubyte, CLAMPED_FLOAT_TO_UBYTE:
+ * the index shift and offset are off as well). */
+/* The channel widths (r, g, b, a; 0: none) of the types whose matching
+ * texture formats fit in 8-bit unorm: llvmpipe samples them on its AoS
+ * path, which widens each channel to 8 bits by repeating its bits
+ * (util_format's unpack_rgba_8unorm: (c << 3) | (c >> 2) for 5 bits)
+ * before the conversion to float, t * (float)(1/255). */
+static bool unorm8_widths(GLenum type, int w[4])
+{
+   static const int w332[4] = { 3, 3, 2, 0 }, w565[4] = { 5, 6, 5, 0 },
+                    w4444[4] = { 4, 4, 4, 4 }, w5551[4] = { 5, 5, 5, 1 },
+                    w8888[4] = { 8, 8, 8, 8 };
+   const int *src;
+   switch (type) {
+   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:   src = w332; break;
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV: src = w565; break;
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV: src = w4444; break;
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV: src = w5551; break;
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+   case GL_UNSIGNED_BYTE:
+      src = w8888;
+      break;
+   default:
+      return false;
+   }
+   memcpy(w, src, 4 * sizeof(int));
+   return true;
+}
+
+/* n-bit c widened to 8 bits by repeating its bits */
+static unsigned replicate_bits(unsigned c, int n)
+{
+   unsigned v = 0;
+   for (int shift = 8 - n; shift > -n; shift -= n)
+      v |= shift >= 0 ? c << shift : c >> -shift;
+   return v & 0xffu;
+}
+
+static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                const void *pixels, int width, int height, GLenum format,
+                                GLenum type, float *dst)
+{
+   if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels, 0, dst))
+      return false;
+   int w[4];
+   if (format != GL_COLOR_INDEX && unorm8_widths(type, w)) {
+      const size_t n = (size_t)width * (size_t)height;
+      for (size_t i = 0; i < n; i++)
+         for (int c = 0; c < 4; c++) {
+            if (w[c] == 0)
+               continue;   /* a channel the format lacks keeps its default */
+            float *v = &dst[4 * i + (size_t)c];
+            const unsigned max = (1u << w[c]) - 1u;
+            const unsigned q = (unsigned)lrintf(*v * (float)max);
+            *v = (float)replicate_bits(q, w[c]) * (float)(1.0 / 255.0);
+         }
+   }
+   if (format == GL_COLOR_INDEX) {
+      const size_t n = 4 * (size_t)width * (size_t)height;
+      for (size_t i = 0; i < n; i++) {
+         const float v = dst[i] > 0.0f ? (dst[i] > 1.0f ? 1.0f : dst[i]) : 0.0f;
+         dst[i] = (float)r_round_even(v * 255.0f) * (float)(1.0 / 255.0);
+      }
+   }
+   return true;
+}
+
 /* The stencil texels of a GL_STENCIL_INDEX image [S: texstore.c:
  * _mesa_texstore_s8, pack.c:_mesa_unpack_stencil_span with the transfer
  * operations off (make_texture clears _ImageTransferState): no index shift
@@ -597,34 +601,14 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
                                   const struct fgl_pixelstore *p, const void *pixels,
                                   int width, int height, GLenum type, uint8_t *dst)
 {
-   if (p->SwapBytes && type != GL_UNSIGNED_BYTE && type != GL_BYTE)
+   GLuint *idx = malloc((size_t)width * sizeof(GLuint));
+   if (!idx)
       return false;
    for (int y = 0; y < height; y++) {
       const uint8_t *src = fgl_image_address(p, pixels, width, GL_STENCIL_INDEX, type, y, 0);
+      fgl_extract_uint_indexes(p, (size_t)width, type, src, idx);
       for (int x = 0; x < width; x++) {
-         GLuint v;
-         switch (type) {
-         case GL_UNSIGNED_BYTE: v = src[x]; break;
-         case GL_BYTE:          v = (GLuint)(GLint)(int8_t)src[x]; break;
-         case GL_UNSIGNED_SHORT: {
-            uint16_t s;
-            memcpy(&s, src + 2 * x, 2);
-            v = s;
-            break;
-         }
-         case GL_SHORT: {
-            int16_t s;
-            memcpy(&s, src + 2 * x, 2);
-            v = (GLuint)(GLint)s;
-            break;
-         }
-         case GL_UNSIGNED_INT:
-         case GL_INT:
-            memcpy(&v, src + 4 * x, 4);
-            break;
-         default:
-            return false;
-         }
+         GLuint v = idx[x];
          if (ctx->Pixel.MapStencilFlag) {
             const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
             v = (GLuint)ctx->PixelMaps.StoS.Map[v & mask];
@@ -632,6 +616,7 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
          dst[(size_t)y * (size_t)width + (size_t)x] = (uint8_t)(v & 0xffu);
       }
    }
+   free(idx);
    return true;
 }
 
@@ -824,11 +809,16 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
          return true;
    } else if (format == GL_DEPTH_COMPONENT) {
       *texels = malloc(n * sizeof(float));
-      if (*texels && unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels))
+      if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
+                      unpack_depth_texels_z24(ctx, unpack, pixels, width, height, type,
+                                              *texels)))
          return true;
    } else {
       *texels = malloc(4 * n * sizeof(float));
-      if (*texels && unpack_color_texels(unpack, pixels, width, height, format, type, *texels))
+      if (*texels && (unpack_color_texels(unpack, pixels, width, height, format, type,
+                                          *texels) ||
+                      unpack_other_texels(ctx, unpack, pixels, width, height, format, type,
+                                          *texels)))
          return true;
    }
    free(*texels);
@@ -904,11 +894,11 @@ static void drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height, G
       return;
    }
    fgl_update_state(ctx);
-   if (is_integer_format(format)) {
+   if (fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   const GLenum err = check_format_and_type(format, type);
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
    if (err != GL_NO_ERROR) {
       fgl_error(ctx, err);
       return;
