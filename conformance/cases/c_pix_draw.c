@@ -737,6 +737,59 @@ static void drawpixels_zs_types(fc_h *h)
     fc_capture(h);
 }
 
+/* GL_DEPTH_STENCIL images: depth and stencil written (depth ALWAYS under
+ * the depth mask, whatever GL_DEPTH_TEST), no colour; both packed types,
+ * with and without a depth transfer and the stencil map. */
+static void drawpixels_depth_stencil(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    static GLuint zs[12 * 10];
+    static GLfloat zf[2 * 12 * 10];
+    for (int i = 0; i < 12 * 10; i++) {
+        zs[i] = ((GLuint)(i * 139810u) << 8) | (GLuint)(i % 7);
+        GLuint st = (GLuint)(i % 5 + 8);
+        zf[2 * i] = (float)i / 130.0f - 0.05f;
+        memcpy(&zf[2 * i + 1], &st, 4);
+    }
+    glColor3f(1, 0, 0);
+    window_pos(1, 1, 0);
+    glDrawPixels(12, 10, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, zs);
+    window_pos(14, 1, 0);
+    glDrawPixels(12, 10, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, zf);
+    glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.25f);
+    window_pos(27, 1, 0);
+    glDrawPixels(12, 10, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, zs + 1);
+    window_pos(40, 1, 0);
+    glDrawPixels(12, 10, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, zf + 2);
+    glPixelTransferf(GL_DEPTH_SCALE, 1.0f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.0f);
+    GLfloat smap[8] = { 7, 6, 5, 4, 3, 2, 1, 0 };
+    glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 8, smap);
+    glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glStencilMask(0x3);
+    glPixelZoom(1.5f, 1.5f);
+    window_pos(1, 14, 0);
+    glDrawPixels(12, 10, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, zs + 2);
+    glPixelZoom(1.0f, 1.0f);
+    glStencilMask(0xff);
+    glDepthMask(GL_TRUE);
+    glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    for (int v = 0; v < 16; v++) {
+        glStencilFunc(GL_EQUAL, v, 0xff);
+        glColor3ub((GLubyte)(v * 16), (GLubyte)(255 - v * 16), (GLubyte)(v * 53));
+        fcu_rect(0, 0, 64, 40, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+}
+
 /* GL_MAP_COLOR through the shader's pixel-map lookups (see
  * known-differences.txt: the second lookup of nir_lower_drawpixels). */
 static void drawpixels_map_color(fc_h *h)
@@ -982,6 +1035,17 @@ static void drawpixels_stencil(fc_h *h)
     window_pos(2, 40, 0);
     glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
     glPixelZoom(1.0f, 1.0f);
+    /* a new array: unsigned bytes are copied as they are (memcpy
+     * texstore: no map), shorts go through the map */
+    static GLubyte s2[16 * 12];
+    memcpy(s2, s, sizeof s2);
+    window_pos(26, 40, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s2);
+    static GLushort s3[16 * 12];
+    for (int i = 0; i < 16 * 12; i++)
+        s3[i] = s[i];
+    window_pos(44, 40, 0);
+    glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, s3);
     glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
     /* show the stencil values */
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -1309,12 +1373,129 @@ static void copypixels_depth_to_color(fc_h *h)
     fc_capture(h);
 }
 
+/* Cache edges: a run of bitmaps wider than the 512-texel cache, bitmaps
+ * above and below the rows it holds, raster depths within and beyond its
+ * 1e-6, -0 and 0 colours, a 32-row bitmap (not centred), one just wider
+ * than the cache; glDrawPixels and glCopyPixels after bitmaps. */
+static void bitmap_cache_edges(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLubyte rows[34 * 2];
+    for (int i = 0; i < 68; i++)
+        rows[i] = (GLubyte)(0x81 ^ (i * 37));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glColor3f(1, 1, 1);
+    window_pos(1, 1, 0);
+    for (int i = 0; i < 70; i++) {
+        glColor3f((float)(i % 3) * 0.5f, 1.0f, 0.25f);
+        glBitmap(9, 6, 0, 0, 9.0f, (i % 5 == 4) ? -1.0f : 0.5f, rows);
+    }
+    /* depth: same within 1e-6, then beyond */
+    glColor3f(1, 0, 0);
+    window_pos(2, 20, 0.5f);
+    glBitmap(9, 6, 0, 0, 9.0f, 0.0f, rows);
+    window_pos(11, 20, 0.5000005f);
+    glBitmap(9, 6, 0, 0, 9.0f, 0.0f, rows);
+    window_pos(20, 20, 0.502f);
+    glBitmap(9, 6, 0, 0, 9.0f, 0.0f, rows);
+    /* colours -0 and 0 compare equal */
+    glColor3f(-0.0f, 1.0f, 0.0f);
+    window_pos(30, 20, 0.0f);
+    glBitmap(9, 6, 0, 0, 9.0f, 0.0f, rows);
+    glColor3f(0.0f, 1.0f, 0.0f);
+    window_pos(39, 20, 0.0f);
+    glBitmap(9, 6, 0, 0, 9.0f, 0.0f, rows);
+    /* rows above and below the cache's */
+    glColor3f(0, 0, 1);
+    window_pos(2, 40, 0);
+    glBitmap(9, 6, 0, 0, 0.0f, 14.0f, rows);
+    glBitmap(9, 6, 0, 0, 0.0f, -28.0f, rows);
+    glBitmap(16, 32, 0, 0, 20.0f, 0.0f, rows);
+    glBitmap(16, 33, 0, 0, 20.0f, 0.0f, rows);
+    glDisable(GL_DEPTH_TEST);
+    /* a DrawPixels, a CopyPixels right after bitmaps */
+    static GLubyte img[4 * 6 * 5];
+    make_rgba_ub(img, 6, 5, 3);
+    glColor3f(1, 1, 0);
+    window_pos(50, 50, 0);
+    glBitmap(9, 6, 0, 0, 0.0f, 0.0f, rows);
+    glDrawPixels(6, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    window_pos(50, 40, 0);
+    glBitmap(9, 6, 0, 0, 0.0f, 0.0f, rows);
+    window_pos(56, 30, 0);
+    glCopyPixels(50, 40, 9, 6, GL_COLOR);
+    fc_capture(h);
+}
+
+/* Zoomed images crossing each window edge, large and tiny zooms, zoom
+ * under a scissor, a zoomed image entirely outside. */
+static void drawpixels_zoom_clip(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte img[4 * 9 * 7];
+    make_rgba_ub(img, 9, 7, 29);
+    static const float cfg[][4] = {
+        { -5.0f, 20.0f, 2.5f, 1.5f },  { 60.0f, 10.0f, 1.75f, 2.0f },
+        { 20.0f, -6.0f, 1.5f, 3.0f },  { 30.0f, 60.0f, 2.0f, 1.25f },
+        { 5.0f, 5.0f, -2.0f, -2.0f },  { 60.0f, 60.0f, -1.5f, 3.5f },
+        { 40.0f, 30.0f, 7.3f, 5.1f },  { 10.0f, 40.0f, 0.1f, 0.2f },
+        { 100.0f, 10.0f, 2.0f, 2.0f }, { 45.0f, 2.0f, 0.33f, 4.0f },
+    };
+    for (int i = 0; i < 10; i++) {
+        glPixelZoom(cfg[i][2], cfg[i][3]);
+        window_pos(2, 2, 0);
+        glBitmap(0, 0, 0, 0, cfg[i][0] - 2.0f, cfg[i][1] - 2.0f, NULL);
+        glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        if (i == 6)
+            fc_capture(h);
+    }
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(10, 10, 13, 17);
+    glPixelZoom(3.0f, 3.0f);
+    window_pos(5, 5, 0);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glDisable(GL_SCISSOR_TEST);
+    glPixelZoom(1.0f, 1.0f);
+    fc_capture(h);
+}
+
+/* glCopyPixels under the scissor (the blit clips to it), a copy reading
+ * bitmaps still in the cache, and from a display list. */
+static void copypixels_scissor_list(fc_h *h)
+{
+    copy_scene(h);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(36, 30, 20, 12);
+    window_pos(34, 28, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);        /* blit, clipped */
+    glScissor(10, 10, 12, 9);
+    window_pos(12, 11, 0);
+    glCopyPixels(8, 8, 24, 20, GL_COLOR);        /* overlap, texture path */
+    glDisable(GL_SCISSOR_TEST);
+    GLuint l = glGenLists(1);
+    glNewList(l, GL_COMPILE);
+    glCopyPixels(40, 4, 20, 20, GL_COLOR);
+    glEndList();
+    window_pos(2, 40, 0);
+    glCallList(l);
+    glPixelZoom(0.5f, -0.5f);
+    window_pos(40, 63, 0);
+    glCallList(l);
+    glPixelZoom(1.0f, 1.0f);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_pix_draw[] = {
     FC_CASE_RGBA("pixel/bitmap_text", 180, 110, 1, "pixel bitmap", bitmap_text),
     FC_CASE_RGBA("pixel/bitmap_unpack", 128, 48, 1, "pixel bitmap", bitmap_unpack),
     FC_CASE_RGBA("pixel/bitmap_origin_move", 80, 48, 1, "pixel bitmap", bitmap_origin_move),
     FC_CASE_RGBA("pixel/bitmap_clipped", 72, 64, 1, "pixel bitmap", bitmap_clipped),
     FC_CASE_RGBA("pixel/bitmap_cache_order", 64, 64, 2, "pixel bitmap", bitmap_cache_order),
+    FC_CASE_RGBA("pixel/bitmap_cache_edges", 64, 64, 1, "pixel bitmap", bitmap_cache_edges),
     FC_CASE_RGBA("pixel/bitmap_fragment_ops", 64, 64, 1, "pixel bitmap",
                  bitmap_fragment_ops),
     FC_CASE("pixel/bitmap_stencil", 32, 24, OSMESA_RGBA, 24, 8, 1, "pixel bitmap stencil",
@@ -1326,6 +1507,8 @@ const fc_case fc_cases_pix_draw[] = {
     FC_CASE_RGBA("pixel/drawpixels_formats", 64, 48, 1, "pixel drawpixels",
                  drawpixels_formats),
     FC_CASE_RGBA("pixel/drawpixels_zoom", 100, 64, 2, "pixel drawpixels", drawpixels_zoom),
+    FC_CASE_RGBA("pixel/drawpixels_zoom_clip", 64, 64, 2, "pixel drawpixels",
+                 drawpixels_zoom_clip),
     FC_CASE_RGBA("pixel/drawpixels_transfer", 64, 40, 1, "pixel drawpixels",
                  drawpixels_transfer),
     FC_CASE_RGBA("pixel/drawpixels_types", 64, 48, 1, "pixel drawpixels", drawpixels_types),
@@ -1333,6 +1516,8 @@ const fc_case fc_cases_pix_draw[] = {
                  drawpixels_color_index),
     FC_CASE("pixel/drawpixels_zs_types", 64, 32, OSMESA_RGBA, 24, 8, 1,
             "pixel drawpixels depth stencil", drawpixels_zs_types),
+    FC_CASE("pixel/drawpixels_depth_stencil", 64, 40, OSMESA_RGBA, 24, 8, 1,
+            "pixel drawpixels depth stencil", drawpixels_depth_stencil),
     FC_CASE_RGBA("pixel/drawpixels_map_color", 64, 40, 1, "pixel drawpixels",
                  drawpixels_map_color),
     FC_CASE_RGBA("pixel/drawpixels_fragment_ops", 64, 64, 1, "pixel drawpixels",
@@ -1356,6 +1541,8 @@ const fc_case fc_cases_pix_draw[] = {
             "pixel copypixels stencil", copypixels_stencil),
     FC_CASE("pixel/copypixels_depth_to_color", 64, 64, OSMESA_RGBA, 24, 8, 1,
             "pixel copypixels depth stencil", copypixels_depth_to_color),
+    FC_CASE_RGBA("pixel/copypixels_scissor_list", 64, 64, 1, "pixel copypixels dlist",
+                 copypixels_scissor_list),
     FC_CASE_RGBA("pixel/copypixels_errors", 64, 64, 1, "pixel copypixels errors",
                  copypixels_errors),
     { 0 }

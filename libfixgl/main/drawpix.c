@@ -592,15 +592,74 @@ static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixels
    return true;
 }
 
+/* GL_DEPTH_STENCIL images [S: texstore.c:_mesa_texstore_z24_s8,
+ * _mesa_texstore_z32f_x24s8; pack.c:_mesa_unpack_depth_span,
+ * _mesa_unpack_stencil_span]: GL_UNSIGNED_INT_24_8 into S8_UINT_Z24_UNORM,
+ * GL_FLOAT_32_UNSIGNED_INT_24_8_REV into Z32_FLOAT_S8X24_UINT; copied as
+ * they are when the depth transfer is the identity and GL_MAP_STENCIL is
+ * off, else depth through scale, bias and the clamp ((GLuint)(d *
+ * (float)0xffffff) for the 24-bit one) and the stencil byte through the
+ * stencil map. */
+static bool unpack_depth_stencil_texels(const struct fgl_context *ctx,
+                                        const struct fgl_pixelstore *p, const void *pixels,
+                                        int width, int height, GLenum type, float *depth,
+                                        uint8_t *stencil)
+{
+   if (p->SwapBytes)
+      return false;
+   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
+   const bool identity = scale == 1.0f && bias == 0.0f;
+   const bool f32 = type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_STENCIL, type, y, 0);
+      for (int x = 0; x < width; x++) {
+         const size_t i = (size_t)y * (size_t)width + (size_t)x;
+         GLuint s;
+         float d;
+         if (f32) {
+            memcpy(&d, src + 8 * x, 4);
+            memcpy(&s, src + 8 * x + 4, 4);
+            if (!identity) {
+               d = d * scale + bias;
+               d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;
+            }
+         } else {
+            GLuint v;
+            memcpy(&v, src + 4 * x, 4);
+            s = v;
+            uint32_t z = v >> 8;
+            if (!identity) {
+               float f = (float)z * (1.0f / 0xffffff);
+               f = f * scale + bias;
+               f = f > 0.0f ? (f > 1.0f ? 1.0f : f) : 0.0f;
+               z = (uint32_t)(f * (float)0xffffff);
+            }
+            d = (float)z * (float)(1.0 / 16777215.0);
+         }
+         s &= 0xffu;
+         if (!identity && ctx->Pixel.MapStencilFlag) {
+            const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
+            s = (GLuint)ctx->PixelMaps.StoS.Map[s & mask];
+         }
+         depth[i] = d;
+         stencil[i] = (uint8_t)(s & 0xffu);
+      }
+   }
+   return true;
+}
+
 /* The stencil texels of a GL_STENCIL_INDEX image [S: texstore.c:
  * _mesa_texstore_s8, pack.c:_mesa_unpack_stencil_span with the transfer
  * operations off (make_texture clears _ImageTransferState): no index shift
  * or offset, but GL_MAP_STENCIL, which the function reads from the
- * context], the low 8 bits. */
+ * context, except for unsigned bytes, which are copied], the low 8 bits. */
 static bool unpack_stencil_texels(const struct fgl_context *ctx,
                                   const struct fgl_pixelstore *p, const void *pixels,
                                   int width, int height, GLenum type, uint8_t *dst)
 {
+   /* unsigned bytes match S8: _mesa_texstore_can_use_memcpy (stencil
+    * needs no transfer operations, it says), so no map either */
+   const bool map = ctx->Pixel.MapStencilFlag && type != GL_UNSIGNED_BYTE;
    GLuint *idx = malloc((size_t)width * sizeof(GLuint));
    if (!idx)
       return false;
@@ -609,7 +668,7 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
       fgl_extract_uint_indexes(p, (size_t)width, type, src, idx);
       for (int x = 0; x < width; x++) {
          GLuint v = idx[x];
-         if (ctx->Pixel.MapStencilFlag) {
+         if (map) {
             const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
             v = (GLuint)ctx->PixelMaps.StoS.Map[v & mask];
          }
@@ -807,6 +866,13 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
       *mask = malloc(n);
       if (*mask && unpack_stencil_texels(ctx, unpack, pixels, width, height, type, *mask))
          return true;
+   } else if (format == GL_DEPTH_STENCIL) {
+      *mask = malloc(n);
+      *texels = malloc(n * sizeof(float));
+      if (*mask && *texels &&
+          unpack_depth_stencil_texels(ctx, unpack, pixels, width, height, type, *texels,
+                                      *mask))
+         return true;
    } else if (format == GL_DEPTH_COMPONENT) {
       *texels = malloc(n * sizeof(float));
       if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
@@ -872,6 +938,10 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
    if (format == GL_STENCIL_INDEX) {
       img.kind = R_PIX_STENCIL;
       stencil_quad_state(ctx, &rs, false);
+   } else if (format == GL_DEPTH_STENCIL) {
+      img.kind = R_PIX_DEPTH;
+      img.with_stencil = true;
+      stencil_quad_state(ctx, &rs, true);
    } else if (format == GL_DEPTH_COMPONENT) {
       img.kind = R_PIX_DEPTH;
    } else {
