@@ -790,6 +790,139 @@ static void drawpixels_depth_stencil(fc_h *h)
     fc_capture(h);
 }
 
+/* The quad's rasterizer state is its own: polygon stipple, culling,
+ * polygon modes, polygon offset, flat shading, smooth points and lines,
+ * two-sided lighting do not touch pixel rectangles. */
+static void pixels_raster_state(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte img[4 * 10 * 8];
+    make_rgba_ub(img, 10, 8, 5);
+    GLubyte stipple[128];
+    for (int i = 0; i < 128; i++)
+        stipple[i] = (GLubyte)(i & 1 ? 0xaa : 0x55);
+    GLubyte rows[10];
+    glyph('K', rows);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPolygonStipple(stipple);
+    glEnable(GL_POLYGON_STIPPLE);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT_AND_BACK);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(4.0f, 100.0f);
+    glShadeModel(GL_FLAT);
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0f0f);
+    glEnable(GL_LIGHTING);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glColor3f(1, 1, 0);
+    window_pos(2, 2, 0.25f);
+    glDrawPixels(10, 8, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glPixelZoom(1.5f, 2.0f);
+    window_pos(14, 2, 0.25f);
+    glDrawPixels(10, 8, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glPixelZoom(1.0f, 1.0f);
+    window_pos(32, 2, 0.25f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    window_pos(2, 24, 0.25f);
+    glCopyPixels(2, 2, 28, 16, GL_COLOR);
+    glDisable(GL_LIGHTING);
+    fc_capture(h);
+}
+
+/* A 16-bit depth buffer: depth images and copies. */
+static void pixels_depth16(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 0.6);
+    static GLfloat zf[10 * 8];
+    static GLushort zs[10 * 8];
+    for (int i = 0; i < 10 * 8; i++) {
+        zf[i] = (float)i / 79.0f;
+        zs[i] = (GLushort)(i * 829);
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glColor3f(1, 0, 0);
+    window_pos(2, 2, 0);
+    glDrawPixels(10, 8, GL_DEPTH_COMPONENT, GL_FLOAT, zf);
+    glColor3f(0, 1, 0);
+    window_pos(14, 2, 0);
+    glDrawPixels(10, 8, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, zs);
+    glColor3f(0, 0, 1);
+    window_pos(2, 14, 0);
+    glCopyPixels(2, 2, 22, 8, GL_DEPTH);
+    glDepthFunc(GL_GREATER);
+    glColor3f(1, 0, 1);
+    glPixelZoom(1.0f, 2.0f);
+    window_pos(26, 2, 0);
+    glCopyPixels(2, 2, 22, 8, GL_DEPTH);
+    glPixelZoom(1.0f, 1.0f);
+    glDisable(GL_DEPTH_TEST);
+    fc_capture(h);
+}
+
+/* A stencil buffer without depth (S8): stencil images and copies; depth
+ * images and copies are errors there. */
+static void pixels_stencil_only(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(3);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    static GLubyte s[12 * 10];
+    for (int i = 0; i < 12 * 10; i++)
+        s[i] = (GLubyte)(i % 11);
+    GLfloat z[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+    window_pos(2, 2, 0);
+    glDrawPixels(12, 10, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    window_pos(16, 2, 0);
+    glCopyPixels(0, 0, 14, 12, GL_STENCIL);
+    glDrawPixels(2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, z);
+    fc_error(h, "depth image without depth");
+    glCopyPixels(0, 0, 2, 2, GL_DEPTH);
+    fc_error(h, "depth copy without depth");
+    glCopyPixels(0, 0, 2, 2, GL_DEPTH_STENCIL);
+    fc_error(h, "depth stencil copy without depth");
+    glDrawPixels(2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, z);
+    fc_error(h, "depth stencil image without depth");
+    glEnable(GL_STENCIL_TEST);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    for (int v = 0; v < 12; v++) {
+        glStencilFunc(GL_EQUAL, v, 0xff);
+        glColor3ub((GLubyte)(v * 20), (GLubyte)(255 - v * 20), (GLubyte)(v * 53));
+        fcu_rect(0, 0, 32, 16, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
+    fc_capture(h);
+}
+
+/* No depth buffer at all. */
+static void pixels_no_depth(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.5f, 0, 0, 1, 1.0);
+    GLfloat z[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+    window_pos(2, 2, 0);
+    glDrawPixels(2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, z);
+    fc_error(h, "depth image");
+    glCopyPixels(0, 0, 2, 2, GL_DEPTH);
+    fc_error(h, "depth copy");
+    glCopyPixels(0, 0, 2, 2, GL_STENCIL);
+    fc_error(h, "stencil copy");
+    static GLubyte img[4 * 6 * 4];
+    make_rgba_ub(img, 6, 4, 1);
+    glEnable(GL_DEPTH_TEST);
+    glDrawPixels(6, 4, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    fc_capture(h);
+}
+
 /* GL_MAP_COLOR through the shader's pixel-map lookups (see
  * known-differences.txt: the second lookup of nir_lower_drawpixels). */
 static void drawpixels_map_color(fc_h *h)
@@ -1545,5 +1678,13 @@ const fc_case fc_cases_pix_draw[] = {
                  copypixels_scissor_list),
     FC_CASE_RGBA("pixel/copypixels_errors", 64, 64, 1, "pixel copypixels errors",
                  copypixels_errors),
+    FC_CASE_RGBA("pixel/drawpixels_raster_state", 64, 48, 1, "pixel drawpixels bitmap",
+                 pixels_raster_state),
+    FC_CASE("pixel/drawpixels_depth16", 48, 24, OSMESA_RGBA, 16, 0, 1,
+            "pixel drawpixels copypixels depth", pixels_depth16),
+    FC_CASE("pixel/drawpixels_stencil_only", 32, 16, OSMESA_RGBA, 0, 8, 1,
+            "pixel drawpixels copypixels stencil errors", pixels_stencil_only),
+    FC_CASE("pixel/drawpixels_no_depth", 16, 16, OSMESA_RGBA, 0, 0, 1,
+            "pixel drawpixels copypixels errors", pixels_no_depth),
     { 0 }
 };
