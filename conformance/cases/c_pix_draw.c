@@ -923,6 +923,56 @@ static void pixels_no_depth(fc_h *h)
     fc_capture(h);
 }
 
+/* Degenerate and extreme zooms (zero, negative zero, tiny, huge: the
+ * clipper's new vertices carry the texture coordinates), under a
+ * perspective raster position; glDrawBuffer(GL_NONE) keeps depth. */
+static void drawpixels_zoom_extreme(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1.0);
+    static GLubyte img[4 * 9 * 7];
+    make_rgba_ub(img, 9, 7, 41);
+    static const float z[][2] = {
+        { 0.0f, 1.0f }, { 1.0f, 0.0f }, { -0.0f, -0.0f }, { 0.001f, 500.0f },
+        { 300.0f, 0.05f }, { 1e4f, 1e4f }, { -7777.7f, 3.3f },
+    };
+    for (int i = 0; i < 7; i++) {
+        glPixelZoom(z[i][0], z[i][1]);
+        window_pos(3.0f + 8.0f * (float)i + 0.3f, 3.0f + 6.0f * (float)i + 0.7f, 0.0f);
+        glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        fc_error(h, "zoom");
+        if (i == 4 || i == 5)
+            fc_capture(h);
+    }
+    glPixelZoom(1.0f, 1.0f);
+    /* a perspective raster position: z and w from the projection */
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-1, 1, -1, 1, 1, 10);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_DEPTH_TEST);
+    glRasterPos3f(0.3f, -0.2f, -2.5f);
+    glPixelZoom(2.0f, 2.0f);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glRasterPos3f(-0.3f, 0.1f, -1.5f);
+    glDrawBuffer(GL_NONE);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glDrawBuffer(GL_FRONT);
+    glPixelZoom(1.0f, 1.0f);
+    GLfloat fb[32];
+    for (int i = 0; i < 32; i++)
+        fb[i] = -7.0f;
+    glFeedbackBuffer(32, GL_4D_COLOR_TEXTURE, fb);
+    glRenderMode(GL_FEEDBACK);
+    glRasterPos4f(0.2f, 0.3f, -2.0f, 1.5f);
+    glDrawPixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    fc_value(h, "feedback count", glRenderMode(GL_RENDER));
+    fc_blob(h, "feedback", fb, sizeof fb);
+    glDisable(GL_DEPTH_TEST);
+    fc_capture(h);
+}
+
 /* GL_MAP_COLOR through the shader's pixel-map lookups (see
  * known-differences.txt: the second lookup of nir_lower_drawpixels). */
 static void drawpixels_map_color(fc_h *h)
@@ -1642,6 +1692,8 @@ const fc_case fc_cases_pix_draw[] = {
     FC_CASE_RGBA("pixel/drawpixels_zoom", 100, 64, 2, "pixel drawpixels", drawpixels_zoom),
     FC_CASE_RGBA("pixel/drawpixels_zoom_clip", 64, 64, 2, "pixel drawpixels",
                  drawpixels_zoom_clip),
+    FC_CASE_RGBA("pixel/drawpixels_zoom_extreme", 64, 64, 3, "pixel drawpixels feedback",
+                 drawpixels_zoom_extreme),
     FC_CASE_RGBA("pixel/drawpixels_transfer", 64, 40, 1, "pixel drawpixels",
                  drawpixels_transfer),
     FC_CASE_RGBA("pixel/drawpixels_types", 64, 48, 1, "pixel drawpixels", drawpixels_types),
