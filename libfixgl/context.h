@@ -371,6 +371,9 @@ struct fgl_texture_image {
                                      * GL_LUMINANCE_ALPHA, GL_ALPHA or
                                      * GL_INTENSITY */
    uint8_t *Data;                   /* Width * Height RGBA8 texels */
+   /* the oracle's pipe format for the image (its channel bits, which
+    * glGetTexLevelParameter reports; main/teximage.c) */
+   const struct fgl_tex_pipe_format *Format;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images
@@ -398,6 +401,9 @@ struct fgl_texture_objects {
    GLuint MaxName;                     /* names are never reused */
    unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
    struct fgl_texture_object Default[FGL_TEX_TARGETS];
+   /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D (per context, as
+    * Mesa's ctx->Texture.ProxyTex): images without texels */
+   struct fgl_texture_object Proxy[2];
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample
@@ -465,6 +471,9 @@ struct fgl_framebuffer {
    int DepthBits;             /* 0, 16 or 24 */
    int StencilBits;           /* 0 or 8 */
    int AlphaBits;             /* 8, or 0 for the RGB formats */
+   bool ColorR8G8B8A8;        /* the oracle's colour buffer format is R8G8B8A8_UNORM
+                               * (OSMESA_RGBA), which glReadPixels packs from
+                               * by other rules than B8G8R8A8 etc. */
    enum r_zs_format ZSFormat;
    uint8_t *Stencil;          /* stencil-only buffer (S8) when no depth */
    /* the accumulation buffer (main/accum.c): RGBA int16 scaled by 32767

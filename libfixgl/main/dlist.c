@@ -40,6 +40,7 @@
 #include <string.h>
 
 #include "main/groups.h"
+#include "main/pixelformat.h"
 #include "tnl/t_pipeline.h"
 
 /* ------------------------------------------------------------------ */
@@ -92,6 +93,14 @@ enum dl_opcode {
    DL_OP_DRAW_PIXELS,      /* width, height, format, type, pointer to the
                             * image copy */
    DL_OP_ERROR,            /* a compiled error */
+   DL_OP_TEX_IMAGE,        /* dims, target, level, internal, width, height,
+                            * border, format, type, pointer to the image */
+   DL_OP_TEX_SUB_IMAGE,    /* dims, target, level, xoffset, yoffset, width,
+                            * height, format, type, pointer to the image */
+   DL_OP_COPY_TEX_IMAGE,   /* dims, target, level, internal, x, y, width,
+                            * height, border */
+   DL_OP_COPY_TEX_SUB_IMAGE, /* dims, target, level, xoffset, yoffset, x, y,
+                              * width, height */
    DL_OP_VERTEX_LIST,      /* pointer to a struct vertex_list */
    DL_OP_END_OF_LIST,
 };
@@ -314,6 +323,8 @@ static void delete_list(struct display_list *dl)
          free(get_pointer(&n[7]));
       else if (n->h.op == DL_OP_DRAW_PIXELS)
          free(get_pointer(&n[5]));
+      else if (n->h.op == DL_OP_TEX_IMAGE || n->h.op == DL_OP_TEX_SUB_IMAGE)
+         free(get_pointer(&n[10]));
    }
    free(dl->nodes);
    free(dl);
@@ -1946,6 +1957,178 @@ void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, cons
 }
 
 /* ------------------------------------------------------------------ */
+/* Texture images                                                      */
+/* ------------------------------------------------------------------ */
+
+/* bytes of one component of `type` (packed types: the whole pixel) */
+static size_t image_comp_bytes(GLenum type)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_BYTE_3_3_2:
+   case GL_UNSIGNED_BYTE_2_3_3_REV:
+      return 1;
+   case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT:
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+      return 2;
+   default:
+      return 4;
+   }
+}
+
+/* [S: dlist.c:unpack_image, pack.c:_mesa_unpack_image] a copy of the
+ * client image in Mesa's default packing (tight rows, alignment 1, bytes
+ * swapped as the unpack state asks); NULL for NULL data, an empty image
+ * or a format/type without a pixel size */
+static void *copy_client_image(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                               GLenum format, GLenum type, const void *pixels)
+{
+   if (!pixels || width <= 0 || height <= 0)
+      return NULL;
+   const size_t bpp = fgl_pixel_bytes(format, type);
+   if (bpp == 0)
+      return NULL;
+   const size_t row_bytes = bpp * (size_t)width;
+   uint8_t *image = malloc(row_bytes * (size_t)height);
+   if (!image) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return NULL;
+   }
+   const size_t cb = image_comp_bytes(type);
+   const bool swap = ctx->Unpack.SwapBytes && (cb == 2 || cb == 4);
+   for (GLsizei row = 0; row < height; row++) {
+      const uint8_t *src = fgl_image_address(&ctx->Unpack, pixels, width, format, type,
+                                             row, 0);
+      uint8_t *dst = image + (size_t)row * row_bytes;
+      memcpy(dst, src, row_bytes);
+      if (swap)
+         for (size_t k = 0; k + cb <= row_bytes; k += cb)
+            for (size_t a = 0, b = cb - 1; a < b; a++, b--) {
+               const uint8_t t = dst[k + a];
+               dst[k + a] = dst[k + b];
+               dst[k + b] = t;
+            }
+   }
+   return image;
+}
+
+/* save_TexImage1D/2D: a proxy target executes at once (no node);
+ * otherwise the image is copied into the node */
+bool fgl_save_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                        GLint internal, GLsizei width, GLsizei height, GLint border,
+                        GLenum format, GLenum type, const void *pixels)
+{
+   if (target == (dims == 1 ? GL_PROXY_TEXTURE_1D : GL_PROXY_TEXTURE_2D))
+      return true;
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_TEX_IMAGE, 9 + PTR_NODES);
+   if (n) {
+      n[1].u = dims;
+      n[2].e = target;
+      n[3].i = level;
+      n[4].i = internal;
+      n[5].i = width;
+      n[6].i = height;
+      n[7].i = border;
+      n[8].e = format;
+      n[9].e = type;
+      put_pointer(&n[10], copy_client_image(ctx, width, height, format, type, pixels));
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_TexSubImage1D/2D */
+bool fgl_save_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                            GLint xoffset, GLint yoffset, GLsizei width, GLsizei height,
+                            GLenum format, GLenum type, const void *pixels)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_TEX_SUB_IMAGE, 9 + PTR_NODES);
+   if (n) {
+      n[1].u = dims;
+      n[2].e = target;
+      n[3].i = level;
+      n[4].i = xoffset;
+      n[5].i = yoffset;
+      n[6].i = width;
+      n[7].i = height;
+      n[8].e = format;
+      n[9].e = type;
+      put_pointer(&n[10], copy_client_image(ctx, width, height, format, type, pixels));
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_CopyTexImage1D/2D (height 1 and no slot for 1D) */
+bool fgl_save_copy_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                             GLint level, GLenum internal, GLint x, GLint y, GLsizei width,
+                             GLsizei height, GLint border)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_COPY_TEX_IMAGE, 9);
+   if (n) {
+      n[1].u = dims;
+      n[2].e = target;
+      n[3].i = level;
+      n[4].e = internal;
+      n[5].i = x;
+      n[6].i = y;
+      n[7].i = width;
+      n[8].i = height;
+      n[9].i = border;
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_CopyTexSubImage1D/2D */
+bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                                 GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
+                                 GLsizei width, GLsizei height)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_COPY_TEX_SUB_IMAGE, 9);
+   if (n) {
+      n[1].u = dims;
+      n[2].e = target;
+      n[3].i = level;
+      n[4].i = xoffset;
+      n[5].i = yoffset;
+      n[6].i = x;
+      n[7].i = y;
+      n[8].i = width;
+      n[9].i = height;
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* OPCODE_TEX_IMAGE*D / OPCODE_TEX_SUB_IMAGE*D: the stored image under
+ * ctx->DefaultPacking */
+static void exec_tex_image_node(struct fgl_context *ctx, const union dl_node *n)
+{
+   const struct fgl_pixelstore save = ctx->Unpack;
+   ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
+   const void *image = get_pointer(&n[10]);
+   if (n->h.op == DL_OP_TEX_IMAGE) {
+      if (n[1].u == 1)
+         glTexImage1D(n[2].e, n[3].i, n[4].i, n[5].i, n[7].i, n[8].e, n[9].e, image);
+      else
+         glTexImage2D(n[2].e, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].e, n[9].e, image);
+   } else {
+      if (n[1].u == 1)
+         glTexSubImage1D(n[2].e, n[3].i, n[4].i, n[6].i, n[8].e, n[9].e, image);
+      else
+         glTexSubImage2D(n[2].e, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].e, n[9].e,
+                         image);
+   }
+   ctx->Unpack = save;
+}
+
+/* ------------------------------------------------------------------ */
 /* Execution                                                           */
 /* ------------------------------------------------------------------ */
 
@@ -2188,6 +2371,23 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
          break;
       case DL_OP_ERROR:
          fgl_error(ctx, n[1].e);
+         break;
+      case DL_OP_TEX_IMAGE:
+      case DL_OP_TEX_SUB_IMAGE:
+         exec_tex_image_node(ctx, n);
+         break;
+      case DL_OP_COPY_TEX_IMAGE:
+         if (n[1].u == 1)
+            glCopyTexImage1D(n[2].e, n[3].i, n[4].e, n[5].i, n[6].i, n[7].i, n[9].i);
+         else
+            glCopyTexImage2D(n[2].e, n[3].i, n[4].e, n[5].i, n[6].i, n[7].i, n[8].i, n[9].i);
+         break;
+      case DL_OP_COPY_TEX_SUB_IMAGE:
+         if (n[1].u == 1)
+            glCopyTexSubImage1D(n[2].e, n[3].i, n[4].i, n[6].i, n[7].i, n[8].i);
+         else
+            glCopyTexSubImage2D(n[2].e, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].i,
+                                n[9].i);
          break;
       case DL_OP_VERTEX_LIST:
          playback_vertex_list(ctx, get_pointer(&n[1]));

@@ -128,6 +128,20 @@ GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsize
                             GLenum format, GLenum type, const GLvoid *pixels);
 void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
                               GLenum format, GLenum type, const GLvoid *pixels);
+/* the texture image commands (main/teximage.c); these return whether the
+ * entry point goes on to execute */
+bool fgl_save_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                        GLint internal, GLsizei width, GLsizei height, GLint border,
+                        GLenum format, GLenum type, const void *pixels);
+bool fgl_save_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,
+                            GLint xoffset, GLint yoffset, GLsizei width, GLsizei height,
+                            GLenum format, GLenum type, const void *pixels);
+bool fgl_save_copy_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                             GLint level, GLenum internal, GLint x, GLint y, GLsizei width,
+                             GLsizei height, GLint border);
+bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target,
+                                 GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
+                                 GLsizei width, GLsizei height);
 
 /* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,
  * glArrayElement's attributes): compiled while compiling, else executed. */

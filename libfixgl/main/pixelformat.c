@@ -158,6 +158,18 @@ uint16_t fgl_float_to_half(float val)
    return (uint16_t)((s << 15) | (e << 10) | m);
 }
 
+/* [S: util/u_math.h:float_to_ubyte] */
+static uint8_t float_to_ubyte(float f)
+{
+   if (!(f > 0.0f))
+      return 0;
+   if (f >= 1.0f)
+      return 255;
+   union { float f; uint32_t u; } t;
+   t.f = f * (255.0f / 256.0f) + 32768.0f;
+   return (uint8_t)t.u;
+}
+
 /* macros.h CLAMPED_FLOAT_TO_UBYTE (the IEEE form) for a value in [0, 1] */
 static uint8_t clamped_float_to_ubyte(float f)
 {
@@ -205,7 +217,7 @@ static size_t type_size(GLenum type)
    case GL_UNSIGNED_BYTE: case GL_BYTE:
    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
       return 1;
-   case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT:
+   case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: case 0x8D61: /* _OES */
    case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
@@ -228,7 +240,7 @@ static bool is_packed_type(GLenum type)
    switch (type) {
    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
-   case GL_BITMAP:
+   case 0x8D61: /* GL_HALF_FLOAT_OES */ case GL_BITMAP:
       return false;
    default:
       return true;
@@ -284,8 +296,11 @@ const uint8_t *fgl_image_address(const struct fgl_pixelstore *p, const void *pix
  * an array format (every channel one `type`, `swz` giving for each of
  * R, G, B, A the channel or SWZ_ZERO/ONE) or a packed one (one word of
  * `bytes`, the bit field of R, G, B, A; bits 0 = absent). */
+enum packed_float { PF_NONE, PF_R11G11B10F, PF_RGB9E5 };
+
 struct layout {
    bool packed;
+   enum packed_float pf;      /* packed: one of the float formats */
    GLenum type;               /* array: the channel type */
    int nchan;
    uint8_t swz[4];
@@ -338,8 +353,18 @@ static bool packed_order(GLenum format, int pos[4])
 static bool get_layout(GLenum format, GLenum type, struct layout *l)
 {
    memset(l, 0, sizeof(*l));
+   if (type == 0x8D61)   /* GL_HALF_FLOAT_OES: the same array format */
+      type = GL_HALF_FLOAT;
    l->type = type;
    switch (type) {
+   case GL_UNSIGNED_INT_10F_11F_11F_REV:
+   case GL_UNSIGNED_INT_5_9_9_9_REV:
+      if (format != GL_RGB)
+         return false;
+      l->packed = true;
+      l->pf = type == GL_UNSIGNED_INT_5_9_9_9_REV ? PF_RGB9E5 : PF_R11G11B10F;
+      l->bytes = 4;
+      return true;
    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
       if (!format_swizzle(format, l->swz))
@@ -401,6 +426,123 @@ static bool get_layout(GLenum format, GLenum type, struct layout *l)
       return true;
    }
    return false;
+}
+
+/* [S: util/format_r11g11b10f.h] */
+static uint32_t f32_to_ufloat(float val, int mbits, float maxval)
+{
+   union { float f; uint32_t u; } f32 = {val};
+   const int sign = (int)((f32.u >> 16) & 0x8000);
+   int exponent = (int)((f32.u >> 23) & 0xff) - 127;
+   int mantissa = (int)(f32.u & 0x007fffff);
+   uint32_t r = 0;
+   if (exponent == 128) {
+      r = 0x1fu << mbits;
+      if (mantissa)
+         r |= 1;
+      else if (sign)
+         r = 0;
+   } else if (sign) {
+      return 0;
+   } else if (val > maxval) {
+      r = (30u << mbits) | ((1u << mbits) - 1);
+   } else if (exponent > -15) {
+      exponent += 15;
+      mantissa >>= 23 - mbits;
+      r = (uint32_t)exponent << mbits | (uint32_t)mantissa;
+   }
+   return r;
+}
+
+static float ufloat_to_f32(uint32_t val, int mbits)
+{
+   union { float f; uint32_t u; } f32;
+   int exponent = (int)(val >> mbits) & 0x1f;
+   const int mantissa = (int)(val & ((1u << mbits) - 1));
+   f32.f = 0.0f;
+   if (exponent == 0) {
+      if (mantissa != 0) {
+         const float scale = (float)(1.0 / (1 << (mbits == 6 ? 20 : 19)));
+         f32.f = scale * (float)mantissa;
+      }
+   } else if (exponent == 31) {
+      f32.u = 0x7f800000u | (uint32_t)mantissa;
+   } else {
+      float scale;
+      exponent -= 15;
+      if (exponent < 0)
+         scale = 1.0f / (float)(1 << -exponent);
+      else
+         scale = (float)(1 << exponent);
+      const float decimal = 1.0f + (float)mantissa / (float)(1 << mbits);
+      f32.f = scale * decimal;
+   }
+   return f32.f;
+}
+
+/* [S: util/format_rgb9e5.h] */
+static uint32_t rgb9e5_clamp_range(float x)
+{
+   union { float f; uint32_t u; } f = {x}, max;
+   max.f = (float)511 / 512 * (1 << 16);
+   if (f.u > 0x7f800000u)
+      return 0;
+   else if (f.u >= max.u)
+      return max.u;
+   return f.u;
+}
+
+static uint32_t float3_to_rgb9e5(const float rgb[3])
+{
+   union { float f; uint32_t u; } rc, gc, bc, maxrgb, revdenom;
+   rc.u = rgb9e5_clamp_range(rgb[0]);
+   gc.u = rgb9e5_clamp_range(rgb[1]);
+   bc.u = rgb9e5_clamp_range(rgb[2]);
+   maxrgb.u = rc.u > gc.u ? rc.u : gc.u;
+   if (bc.u > maxrgb.u)
+      maxrgb.u = bc.u;
+   maxrgb.u += maxrgb.u & (1u << (23 - 9));
+   const int e = (int)(maxrgb.u >> 23);
+   const int exp_shared = (e > -15 - 1 + 127 ? e : -15 - 1 + 127) + 1 + 15 - 127;
+   revdenom.u = (uint32_t)(127 - (exp_shared - 15 - 9) + 1) << 23;
+   int rm = (int)(rc.f * revdenom.f);
+   int gm = (int)(gc.f * revdenom.f);
+   int bm = (int)(bc.f * revdenom.f);
+   rm = (rm & 1) + (rm >> 1);
+   gm = (gm & 1) + (gm >> 1);
+   bm = (bm & 1) + (bm >> 1);
+   return ((uint32_t)exp_shared << 27) | ((uint32_t)bm << 18) | ((uint32_t)gm << 9) |
+          (uint32_t)rm;
+}
+
+static void rgb9e5_to_float3(uint32_t rgb, float out[3])
+{
+   const int exponent = (int)(rgb >> 27) - 15 - 9;
+   union { float f; uint32_t u; } scale;
+   scale.u = (uint32_t)(exponent + 127) << 23;
+   out[0] = (float)(rgb & 0x1ff) * scale.f;
+   out[1] = (float)((rgb >> 9) & 0x1ff) * scale.f;
+   out[2] = (float)((rgb >> 18) & 0x1ff) * scale.f;
+}
+
+static void packed_float_to_float3(enum packed_float pf, uint32_t w, float out[3])
+{
+   if (pf == PF_RGB9E5) {
+      rgb9e5_to_float3(w, out);
+      return;
+   }
+   out[0] = ufloat_to_f32(w & 0x7ff, 6);
+   out[1] = ufloat_to_f32((w >> 11) & 0x7ff, 6);
+   out[2] = ufloat_to_f32((w >> 22) & 0x3ff, 5);
+}
+
+static uint32_t float3_to_packed_float(enum packed_float pf, const float rgb[3])
+{
+   if (pf == PF_RGB9E5)
+      return float3_to_rgb9e5(rgb);
+   return (f32_to_ufloat(rgb[0], 6, 65024.0f) & 0x7ff) |
+          ((f32_to_ufloat(rgb[1], 6, 65024.0f) & 0x7ff) << 11) |
+          ((f32_to_ufloat(rgb[2], 5, 64512.0f) & 0x3ff) << 22);
 }
 
 static uint32_t load_word(const uint8_t *src, size_t bytes)
@@ -504,6 +646,15 @@ static void unpack_row_ubyte(const struct layout *l, const uint8_t *src, size_t 
                              uint8_t (*out)[4])
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
+      if (l->pf) {
+         /* u_format_other.c unpack_rgba_8unorm: float_to_ubyte */
+         float f[3];
+         packed_float_to_float3(l->pf, load_word(src, 4), f);
+         for (int c = 0; c < 3; c++)
+            out[i][c] = float_to_ubyte(f[c]);
+         out[i][3] = 255;
+         continue;
+      }
       if (l->packed) {
          const uint32_t w = load_word(src, l->bytes);
          for (int c = 0; c < 4; c++) {
@@ -529,6 +680,11 @@ static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t 
                              float (*out)[4])
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
+      if (l->pf) {
+         packed_float_to_float3(l->pf, load_word(src, 4), out[i]);
+         out[i][3] = 1.0f;
+         continue;
+      }
       if (l->packed) {
          const uint32_t w = load_word(src, l->bytes);
          for (int c = 0; c < 4; c++) {
@@ -583,6 +739,13 @@ static void pack_row_ubyte(const struct layout *l, const uint8_t (*in)[4], size_
                            uint8_t *dst)
 {
    for (size_t i = 0; i < n; i++, dst += l->bytes) {
+      if (l->pf) {
+         /* u_format_other.c pack_rgba_8unorm: ubyte_to_float first */
+         const float f[3] = {unorm_to_float(in[i][0], 8), unorm_to_float(in[i][1], 8),
+                             unorm_to_float(in[i][2], 8)};
+         store_word(dst, 4, float3_to_packed_float(l->pf, f));
+         continue;
+      }
       if (l->packed) {
          uint32_t w = 0;
          for (int c = 0; c < 4; c++)
@@ -622,6 +785,10 @@ static void pack_row_float(const struct layout *l, const float (*in)[4], size_t 
                            uint8_t *dst)
 {
    for (size_t i = 0; i < n; i++, dst += l->bytes) {
+      if (l->pf) {
+         store_word(dst, 4, float3_to_packed_float(l->pf, in[i]));
+         continue;
+      }
       if (l->packed) {
          uint32_t w = 0;
          for (int c = 0; c < 4; c++) {
@@ -984,7 +1151,7 @@ void fgl_pack_depth_span(struct fgl_context *ctx, const struct fgl_pixelstore *p
    }
 }
 
-static void stencil_transfer(const struct fgl_context *ctx, size_t n, uint8_t *s)
+void fgl_apply_stencil_transfer_ops(const struct fgl_context *ctx, size_t n, uint8_t *s)
 {
    /* [S: pixeltransfer.c:_mesa_apply_stencil_transfer_ops] in 8 bits */
    if (ctx->Pixel.IndexShift != 0 || ctx->Pixel.IndexOffset != 0) {
@@ -1014,7 +1181,7 @@ void fgl_pack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore 
    if (!s)
       return;
    memcpy(s, stencil, n);
-   stencil_transfer(ctx, n, s);
+   fgl_apply_stencil_transfer_ops(ctx, n, s);
    for (size_t i = 0; i < n; i++) {
       switch (type) {
       case GL_UNSIGNED_BYTE: dst[i] = s[i]; break;
@@ -1155,9 +1322,11 @@ static void store_texel(GLenum base, const uint8_t c[4], uint8_t *t)
  * [S: texstore.c:texstore_rgba] into the oracle's 8-bit texture formats:
  *  - GL_COLOR_INDEX: indices -> I_TO_RGBA maps (shift/offset when on),
  *    clamped, CLAMPED_FLOAT_TO_UBYTE (pack.c:
- *    _mesa_unpack_color_index_to_rgba_ubyte);
+ *    _mesa_unpack_color_index_to_rgba_ubyte), that image addressed with
+ *    the unpack state again;
  *  - any pixel transfer state (_ImageTransferState, the index shift/offset
- *    included): to float RGBA, the operations, then _mesa_float_to_unorm;
+ *    included): to float RGBA without the skips, the operations, then
+ *    _mesa_float_to_unorm;
  *  - otherwise straight to 8 bits (_mesa_format_convert: array formats
  *    channel by channel, packed ones through unpack_rgba_8unorm).
  */
@@ -1172,31 +1341,54 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
    if (format == GL_COLOR_INDEX) {
       float (*rgba)[4] = malloc(count * sizeof(*rgba));
       GLuint *index = malloc(count * sizeof(*index));
-      if (!rgba || !index) {
+      uint8_t (*temp)[4] = malloc(count * sizeof(*temp));
+      if (!rgba || !index || !temp) {
          free(rgba);
          free(index);
+         free(temp);
          return false;
       }
       unpack_ci_float(ctx, p, width, height, type, pixels, ops | FGL_IMAGE_CLAMP_BIT, rgba,
                       index);
-      for (size_t i = 0; i < count; i++) {
-         uint8_t c[4];
+      for (size_t i = 0; i < count; i++)
          for (int k = 0; k < 4; k++)
-            c[k] = clamped_float_to_ubyte(rgba[i][k]);
-         store_texel(base, c, dst + 4 * i);
+            temp[i][k] = clamped_float_to_ubyte(rgba[i][k]);
+      /* texstore_rgba then reads that tight RGBA ubyte image with the
+       * caller's unpack state still in place: the skips, row length and
+       * alignment apply to it a second time.  A texel beyond the
+       * width*height pixels reads past the oracle's buffer (undefined);
+       * fixgl stores 0 there. */
+      const size_t stride = fgl_image_row_stride(p, width, GL_RGBA, GL_UNSIGNED_BYTE);
+      const size_t total = count * 4;
+      for (int y = 0; y < height; y++) {
+         for (int x = 0; x < width; x++) {
+            const size_t off = ((size_t)p->SkipRows + (size_t)y) * stride +
+                               ((size_t)p->SkipPixels + (size_t)x) * 4;
+            uint8_t c[4] = {0, 0, 0, 0};
+            if (off + 4 <= total)
+               memcpy(c, (const uint8_t *)temp + off, 4);
+            store_texel(base, c, dst + 4 * ((size_t)y * (size_t)width + (size_t)x));
+         }
       }
       free(rgba);
       free(index);
+      free(temp);
       return true;
    }
    struct layout l;
    if (!get_layout(format, type, &l))
       return false;
    if (ops) {
+      /* texstore_rgba converts to float from the image's base address at
+       * its row stride: SKIP_PIXELS and SKIP_ROWS are not applied on this
+       * path */
+      struct fgl_pixelstore noskip = *p;
+      noskip.SkipPixels = 0;
+      noskip.SkipRows = 0;
       float (*rgba)[4] = malloc(count * sizeof(*rgba));
       if (!rgba)
          return false;
-      if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels, ops,
+      if (!fgl_unpack_rgba_float(ctx, &noskip, width, height, format, type, pixels, ops,
                                  (float *)rgba)) {
          free(rgba);
          return false;
@@ -1244,7 +1436,7 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
  *    intermediate (destination fields <= 8 bits) or float (> 8 bits).
  */
 bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
-                    enum fgl_pack_source source, int width, int height, GLenum base,
+                    unsigned source, int width, int height, GLenum base,
                     const uint8_t *rgba8, GLenum format, GLenum type, void *pixels)
 {
    struct layout l;
@@ -1256,6 +1448,8 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
    unsigned ops;
    bool rgb_to_lum = false;
+   const bool exact_rgba8 = base == GL_RGBA && !(source & FGL_PACK_NOT_R8G8B8A8);
+   source &= ~(unsigned)FGL_PACK_NOT_R8G8B8A8;
    if (source == FGL_PACK_READPIXELS) {
       /* [S: readpix.c:_mesa_get_readpixels_transfer_ops] the clamp stays
        * only for the R+G+B luminance of an unsigned normalized buffer */
@@ -1294,7 +1488,6 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
          memcpy(src[i], t, 4); break;
       }
    }
-   const bool exact_rgba8 = base == GL_RGBA;
    const size_t stride = fgl_image_row_stride(p, width, format, type);
    uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
 
@@ -1419,6 +1612,17 @@ bool fgl_is_color_format(GLenum format)
    case GL_LUMINANCE_ALPHA_SNORM: case GL_LUMINANCE8_ALPHA8_SNORM:
    case GL_LUMINANCE16_ALPHA16_SNORM: case GL_INTENSITY_SNORM: case GL_INTENSITY8_SNORM:
    case GL_INTENSITY16_SNORM:
+   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
+   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER: case GL_BGR_INTEGER:
+   case GL_BGRA_INTEGER: case GL_RG_INTEGER: case GL_LUMINANCE_INTEGER_EXT:
+   case GL_LUMINANCE_ALPHA_INTEGER_EXT:
+   case GL_RGBA32UI: case GL_RGB32UI: case GL_RG32UI: case GL_R32UI:
+   case GL_RGBA16UI: case GL_RGB16UI: case GL_RG16UI: case GL_R16UI:
+   case GL_RGBA8UI: case GL_RGB8UI: case GL_RG8UI: case GL_R8UI:
+   case GL_RGBA32I: case GL_RGB32I: case GL_RG32I: case GL_R32I:
+   case GL_RGBA16I: case GL_RGB16I: case GL_RG16I: case GL_R16I:
+   case GL_RGBA8I: case GL_RGB8I: case GL_RG8I: case GL_R8I:
+   case GL_RGB10_A2UI:
       return true;
    default:
       return false;
@@ -1541,14 +1745,15 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
    case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
    case GL_ALPHA_INTEGER: case GL_RG_INTEGER: case GL_BGR_INTEGER:
    case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return is_basic_type(type, false) ? GL_NO_ERROR : GL_INVALID_ENUM;
+      return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR : GL_INVALID_ENUM;
    case GL_RGB_INTEGER:
       switch (type) {
       case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
       case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, false) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
+                                                               : GL_INVALID_ENUM;
       }
    case GL_RGBA_INTEGER: case GL_BGRA_INTEGER:
       switch (type) {
@@ -1558,7 +1763,8 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, false) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
+                                                               : GL_INVALID_ENUM;
       }
    default:
       return GL_INVALID_ENUM;

@@ -80,6 +80,10 @@ unsigned fgl_image_transfer_state(const struct fgl_context *ctx);
 void fgl_apply_rgba_transfer_ops(const struct fgl_context *ctx, unsigned ops, size_t n,
                                  float (*rgba)[4]);
 
+/* [S: pixeltransfer.c:_mesa_apply_stencil_transfer_ops] shift/offset
+ * and GL_MAP_STENCIL on 8-bit stencil values */
+void fgl_apply_stencil_transfer_ops(const struct fgl_context *ctx, size_t n, uint8_t *s);
+
 /* [S: pixeltransfer.c:_mesa_shift_and_offset_ci, _mesa_map_ci_to_rgba] */
 void fgl_shift_and_offset_ci(const struct fgl_context *ctx, size_t n, GLuint *index);
 void fgl_map_ci_to_rgba(const struct fgl_context *ctx, size_t n, const GLuint *index,
@@ -131,6 +135,12 @@ enum fgl_pack_source {
    FGL_PACK_READPIXELS,   /* colour buffer: L = R+G+B clamped (readpix.c) */
    FGL_PACK_TEXIMAGE,     /* texture image: L = R (texgetimage.c) */
 };
+/* Or'ed into the source when the oracle stores the values in an 8-bit
+ * layout other than R8G8B8A8_UNORM (B8G8R8A8, A8R8G8B8, R8G8B8, L8...):
+ * _mesa_format_convert then packs fields wider than 8 bits through float
+ * rather than pack_rgba_8unorm, which rounds differently
+ * (GL_UNSIGNED_INT_10_10_10_2 and _REV). */
+#define FGL_PACK_NOT_R8G8B8A8 0x100
 
 /* Packs width x height RGBA8 values (row-major; rows in the order they
  * go to memory) of base format `base` (GL_RGBA, GL_RGB for a buffer or
@@ -140,7 +150,7 @@ enum fgl_pack_source {
  * [S: readpix.c:read_rgba_pixels, texgetimage.c:get_tex_rgba_uncompressed].
  * Returns false for a format/type it does not convert. */
 bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
-                    enum fgl_pack_source source, int width, int height, GLenum base,
+                    unsigned source, int width, int height, GLenum base,
                     const uint8_t *rgba8, GLenum format, GLenum type, void *pixels);
 
 /* One row of n depth values [S: pack.c:_mesa_pack_depth_span] (depth

@@ -1,58 +1,19 @@
 /*
- * glReadPixels for the formats of the first slice: GL_RGBA and GL_RGB as
- * GL_UNSIGNED_BYTE or GL_FLOAT, and GL_DEPTH_COMPONENT as GL_FLOAT,
- * GL_UNSIGNED_INT or GL_UNSIGNED_SHORT.  Pixels are placed with the pack
- * state (main/image.c:_mesa_image_offset: GL_PACK_ALIGNMENT, ROW_LENGTH,
- * SKIP_PIXELS, SKIP_ROWS; GL_PACK_SWAP_BYTES swaps 2- and 4-byte
- * components); pixels outside the framebuffer are not written.
- * Conversions follow Mesa's unpack functions (format_utils.h, format_unpack.c).
+ * glReadPixels [S: main/readpix.c:read_pixels, _mesa_readpixels;
+ * state_tracker/st_cb_readpixels.c:st_ReadPixels, which on llvmpipe (no
+ * PIPE_CAP_TEXTURE_TRANSFER_MODES) always falls back to _mesa_readpixels].
+ * Every colour format and type (the conversions are in pixelformat.c),
+ * GL_DEPTH_COMPONENT, GL_STENCIL_INDEX and GL_DEPTH_STENCIL in every type
+ * the oracle takes, with the pack state and the pixel transfer
+ * operations.  The rectangle is first clipped to the buffer
+ * (image.c:_mesa_clip_readpixels, which moves SKIP_PIXELS/SKIP_ROWS and
+ * sets ROW_LENGTH to the width when 0); pixels outside are not written.
  */
-#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "main/groups.h"
-
-/* _mesa_swap2 / _mesa_swap4 of one component */
-static void swap_component(uint8_t *p, size_t bytes)
-{
-   for (size_t i = 0; i < bytes / 2; i++) {
-      const uint8_t t = p[i];
-      p[i] = p[bytes - 1 - i];
-      p[bytes - 1 - i] = t;
-   }
-}
-
-/* The pixel types GL knows; another type is an invalid enum, while a
- * known type with a format it does not combine with (or one fixgl does
- * not read yet) is an invalid operation, as in the oracle. */
-static bool known_type(GLenum type)
-{
-   switch (type) {
-   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
-   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
-   case GL_BITMAP: case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-   case GL_UNSIGNED_INT_24_8: case GL_UNSIGNED_INT_10F_11F_11F_REV:
-   case GL_UNSIGNED_INT_5_9_9_9_REV: case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
-      return true;
-   default:
-      return false;
-   }
-}
-
-static bool color_type_ok(GLenum type)
-{
-   return type == GL_UNSIGNED_BYTE || type == GL_FLOAT;
-}
-
-static bool depth_type_ok(GLenum type)
-{
-   return type == GL_FLOAT || type == GL_UNSIGNED_INT || type == GL_UNSIGNED_SHORT;
-}
+#include "main/pixelformat.h"
 
 /* depth value at internal (y-down) pixel idx, as 24- or 16-bit integer */
 static uint32_t depth_at(const struct fgl_framebuffer *fb, size_t idx)
@@ -62,32 +23,219 @@ static uint32_t depth_at(const struct fgl_framebuffer *fb, size_t idx)
    return ((const uint32_t *)fb->Depth)[idx] & 0xffffffu;
 }
 
-/* swap: GL_PACK_SWAP_BYTES, which makes GL_UNSIGNED_INT leave the integer
- * fast path (readpix.c:read_uint_depth_pixels) for the float one:
- * _mesa_pack_depth_span's FLOAT_TO_UINT, (GLuint)(z * 4294967295.0). */
-static void read_depth_pixel(const struct fgl_framebuffer *fb, size_t idx, GLenum type,
-                             bool swap, void *dst)
+/* [S: util/format unpack_z_float] Z16: z * (1.0f / 0xffff); Z24: in double */
+static float depth_float_at(const struct fgl_framebuffer *fb, size_t idx)
 {
    const uint32_t z = depth_at(fb, idx);
-   const bool z16 = fb->ZSFormat == R_ZS_Z16;
-   const float f = z16 ? (float)z * (1.0f / 65535.0f)
-                       : (float)((double)z * (1.0 / (double)0xffffff));
-   switch (type) {
-   case GL_FLOAT:
-      memcpy(dst, &f, 4);
-      break;
-   case GL_UNSIGNED_INT: {
-      const uint32_t u = swap ? (uint32_t)((double)f * 4294967295.0)
-                              : z16 ? (z << 16) | z : (z << 8) | (z >> 16);
-      memcpy(dst, &u, 4);
-      break;
+   if (fb->ZSFormat == R_ZS_Z16)
+      return (float)z * (1.0f / 65535.0f);
+   return (float)((double)z * (1.0 / (double)0xffffff));
+}
+
+/* [S: util/format unpack_z_32unorm] the depth bits replicated to 32 */
+static uint32_t depth_uint_at(const struct fgl_framebuffer *fb, size_t idx)
+{
+   const uint32_t z = depth_at(fb, idx);
+   if (fb->ZSFormat == R_ZS_Z16)
+      return (z << 16) | z;
+   return (z << 8) | (z >> 16);
+}
+
+static uint8_t stencil_at(const struct fgl_framebuffer *fb, size_t idx)
+{
+   if (fb->ZSFormat == R_ZS_S8)
+      return fb->Stencil[idx];
+   return (uint8_t)(((const uint32_t *)fb->Depth)[idx] >> 24);
+}
+
+/* [S: glformats.c:_mesa_is_depth_format, _mesa_is_depthstencil_format] */
+static bool is_depth_or_ds_format(GLenum format)
+{
+   switch (format) {
+   case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24:
+   case GL_DEPTH_COMPONENT32: case GL_DEPTH_COMPONENT32F:
+   case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: case GL_DEPTH32F_STENCIL8:
+      return true;
+   default:
+      return false;
    }
-   default: { /* GL_UNSIGNED_SHORT: through float, rounded (pack.c) */
-      const uint16_t u = z16 ? (uint16_t)z : (uint16_t)lrintf(f * 65535.0f);
-      memcpy(dst, &u, 2);
-      break;
+}
+
+/* [S: framebuffer.c:renderbuffer_exists] for reading */
+static bool source_buffer_exists(const struct fgl_context *ctx,
+                                 const struct fgl_framebuffer *fb, GLenum format)
+{
+   switch (format) {
+   case GL_DEPTH_COMPONENT:
+      return fb->DepthBits > 0;
+   case GL_STENCIL_INDEX:
+      return fb->StencilBits > 0;
+   case GL_DEPTH_STENCIL:
+      return fb->DepthBits > 0 && fb->StencilBits > 0;
+   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
+   case GL_LUMINANCE_ALPHA: case GL_INTENSITY: case GL_RG: case GL_RGB: case GL_BGR:
+   case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
+   case GL_RED_INTEGER: case GL_RG_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
+   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER: case GL_BGR_INTEGER:
+   case GL_BGRA_INTEGER: case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
+      /* no colour buffer to read under glReadBuffer(GL_NONE) */
+      return ctx->Pixel.ReadBuffer != GL_NONE;
+   default:   /* GL_COLOR_INDEX: no index buffer */
+      return false;
    }
+}
+
+/* the clipped rectangle, in GL (y-up) coordinates */
+struct read_rect {
+   GLint x, y;
+   GLsizei width, height;
+};
+
+static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
+                       const struct read_rect *r, const struct fgl_pixelstore *pack,
+                       GLenum format, GLenum type, void *pixels)
+{
+   const size_t n = (size_t)r->width * (size_t)r->height;
+   uint8_t *rgba = malloc(n * 4);
+   if (!rgba) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
    }
+   /* rows bottom-up as GL reads them; the buffer is stored y-down */
+   for (GLsizei j = 0; j < r->height; j++) {
+      const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
+      memcpy(rgba + 4 * (size_t)j * (size_t)r->width,
+             fb->Color + 4 * (row * (size_t)fb->Width + (size_t)r->x), 4 * (size_t)r->width);
+   }
+   /* the oracle's buffer without alpha is an RGB format: alpha reads 1 */
+   const GLenum base = fb->AlphaBits == 0 ? GL_RGB : GL_RGBA;
+   const unsigned source =
+      FGL_PACK_READPIXELS | (fb->ColorR8G8B8A8 ? 0 : FGL_PACK_NOT_R8G8B8A8);
+   if (!fgl_pack_rgba8(ctx, pack, source, r->width, r->height, base, rgba, format, type,
+                       pixels))
+      fgl_error(ctx, GL_INVALID_OPERATION);   /* not reached: validated */
+   free(rgba);
+}
+
+static void read_depth(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
+                       const struct read_rect *r, const struct fgl_pixelstore *pack,
+                       GLenum type, void *pixels)
+{
+   float *z = malloc((size_t)r->width * sizeof(float));
+   if (!z) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   /* [S: readpix.c:read_uint_depth_pixels] GL_UNSIGNED_INT without
+    * scale/bias or byte swapping copies the replicated integer */
+   const bool uint_fast = type == GL_UNSIGNED_INT && ctx->Pixel.DepthScale == 1.0f &&
+                          ctx->Pixel.DepthBias == 0.0f && !pack->SwapBytes;
+   for (GLsizei j = 0; j < r->height; j++) {
+      const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
+      const size_t idx0 = row * (size_t)fb->Width + (size_t)r->x;
+      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, r->width, GL_DEPTH_COMPONENT,
+                                                  type, j, 0);
+      if (uint_fast) {
+         for (GLsizei i = 0; i < r->width; i++) {
+            const uint32_t u = depth_uint_at(fb, idx0 + (size_t)i);
+            memcpy(dst + 4 * (size_t)i, &u, 4);
+         }
+         continue;
+      }
+      /* [S: readpix.c:read_depth_pixels] float, then _mesa_pack_depth_span */
+      for (GLsizei i = 0; i < r->width; i++)
+         z[i] = depth_float_at(fb, idx0 + (size_t)i);
+      fgl_pack_depth_span(ctx, pack, (size_t)r->width, type, z, dst);
+   }
+   free(z);
+}
+
+static void read_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
+                         const struct read_rect *r, const struct fgl_pixelstore *pack,
+                         GLenum type, void *pixels)
+{
+   uint8_t *s = malloc((size_t)r->width);
+   if (!s) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   /* [S: readpix.c:read_stencil_pixels, pack.c:_mesa_pack_stencil_span] */
+   for (GLsizei j = 0; j < r->height; j++) {
+      const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
+      const size_t idx0 = row * (size_t)fb->Width + (size_t)r->x;
+      for (GLsizei i = 0; i < r->width; i++)
+         s[i] = stencil_at(fb, idx0 + (size_t)i);
+      void *dst = (void *)fgl_image_address(pack, pixels, r->width, GL_STENCIL_INDEX, type, j, 0);
+      fgl_pack_stencil_span(ctx, pack, (size_t)r->width, type, s, dst);
+   }
+   free(s);
+}
+
+static void read_depth_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
+                               const struct read_rect *r, const struct fgl_pixelstore *pack,
+                               GLenum type, void *pixels)
+{
+   const struct fgl_pixel_attrib *px = &ctx->Pixel;
+   const bool scale_bias = px->DepthScale != 1.0f || px->DepthBias != 0.0f;
+   const bool stencil_transfer = px->IndexShift || px->IndexOffset || px->MapStencilFlag;
+   /* [S: readpix.c:read_depth_stencil_pixels] */
+   const bool fast = type == GL_UNSIGNED_INT_24_8 && !scale_bias && !stencil_transfer &&
+                     !pack->SwapBytes;
+   const size_t n = (size_t)r->width;
+   float *z = malloc(n * sizeof(float));
+   uint8_t *s = malloc(n);
+   if (!z || !s) {
+      free(z);
+      free(s);
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   for (GLsizei j = 0; j < r->height; j++) {
+      const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
+      const size_t idx0 = row * (size_t)fb->Width + (size_t)r->x;
+      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, r->width, GL_DEPTH_STENCIL,
+                                                  type, j, 0);
+      if (fast) {
+         /* fast_read_depth_stencil_pixels: z24 << 8 | s */
+         for (size_t i = 0; i < n; i++) {
+            const uint32_t v = (depth_at(fb, idx0 + i) << 8) | stencil_at(fb, idx0 + i);
+            memcpy(dst + 4 * i, &v, 4);
+         }
+         continue;
+      }
+      /* slow_read_depth_stencil_pixels_separate, pack.c:
+       * _mesa_pack_depth_stencil_span */
+      for (size_t i = 0; i < n; i++) {
+         z[i] = depth_float_at(fb, idx0 + i);
+         s[i] = stencil_at(fb, idx0 + i);
+         if (scale_bias) {
+            const float d = z[i] * px->DepthScale + px->DepthBias;
+            z[i] = d < 0.0f ? 0.0f : d > 1.0f ? 1.0f : d;
+         }
+      }
+      if (stencil_transfer)
+         fgl_apply_stencil_transfer_ops(ctx, n, s);
+      for (size_t i = 0; i < n; i++) {
+         if (type == GL_UNSIGNED_INT_24_8) {
+            const uint32_t v = ((uint32_t)(z[i] * (float)0xffffff) << 8) | s[i];
+            memcpy(dst + 4 * i, &v, 4);
+         } else {
+            const uint32_t sv = s[i];
+            memcpy(dst + 8 * i, &z[i], 4);
+            memcpy(dst + 8 * i + 4, &sv, 4);
+         }
+      }
+      /* _mesa_swap4(dest, n): n words, half of the float/uint pairs */
+      if (pack->SwapBytes) {
+         for (size_t i = 0; i < n; i++) {
+            uint8_t *w = dst + 4 * i;
+            uint8_t t = w[0]; w[0] = w[3]; w[3] = t;
+            t = w[1]; w[1] = w[2]; w[2] = t;
+         }
+      }
+   }
+   free(z);
+   free(s);
 }
 
 void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
@@ -103,94 +251,76 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       return;
    }
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   size_t comps, bytes;
-   if (!known_type(type)) {
-      fgl_error(ctx, GL_INVALID_ENUM);
+   if (!fb)
+      return;
+   /* [S: readpix.c:read_pixels] the renderbuffer the format reads
+    * (_mesa_get_read_renderbuffer_for_format) must exist: the colour
+    * buffer for a colour format (Mesa's NULL test does not fire under
+    * glReadBuffer(GL_NONE), it reads Attachment[-1]), the depth buffer for
+    * a depth format, the stencil buffer for anything else (GL_COLOR_INDEX
+    * and unknown enums included) */
+   if (!fgl_is_color_format(format)) {
+      if (is_depth_or_ds_format(format) ? fb->DepthBits == 0 : fb->StencilBits == 0) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+   }
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
+   if (err != GL_NO_ERROR) {
+      fgl_error(ctx, err);
       return;
    }
-   switch (format) {
-   case GL_RGBA:
-   case GL_RGB:
-      if (!color_type_ok(type)) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
-      /* _mesa_source_buffer_exists: under glReadBuffer(GL_NONE) there is
-       * no colour buffer to read, INVALID_OPERATION after the format and
-       * type checks [S: main/readpix.c:read_pixels].  (Mesa's earlier
-       * rb == NULL test reads Attachment[BUFFER_NONE = -1], outside the
-       * array, and does not fire.)  The formats fixgl does not read yet
-       * raise the same error below. */
-      if (ctx->Pixel.ReadBuffer == GL_NONE) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
-      comps = format == GL_RGBA ? 4 : 3;
-      bytes = type == GL_FLOAT ? 4 : 1;
-      break;
-   case GL_DEPTH_COMPONENT:
-      if (!depth_type_ok(type)) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
-      if (!fb || fb->DepthBits == 0) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
-      comps = 1;
-      bytes = type == GL_UNSIGNED_SHORT ? 2 : 4;
-      break;
-   default:
+   if (!source_buffer_exists(ctx, fb, format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (!fb || !pixels)
+   /* integer formats from the normalized colour buffer */
+   if (fgl_is_color_format(format) && fgl_is_integer_format(format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
       return;
-   /* [S: st_cb_readpixels.c:st_ReadPixels] glBitmap's cache is drawn
-    * before reading */
-   fgl_flush_bitmap_cache(ctx);
+   }
 
-   const struct fgl_pixelstore *pack = &ctx->Pack;
-   const size_t pixel_bytes = comps * bytes;
-   const size_t ppr = (size_t)(pack->RowLength > 0 ? pack->RowLength : width);
-   size_t row_stride = ppr * pixel_bytes;
-   if (row_stride % (size_t)pack->Alignment)
-      row_stride += (size_t)pack->Alignment - row_stride % (size_t)pack->Alignment;
-   pixels = (uint8_t *)pixels + (size_t)pack->SkipRows * row_stride +
-            (size_t)pack->SkipPixels * pixel_bytes;
-   const bool swap = pack->SwapBytes && bytes > 1;
-   for (GLint j = 0; j < height; j++) {
-      const int64_t gy = (int64_t)y + j;          /* GL row, y-up */
-      if (gy < 0 || gy >= fb->Height)
-         continue;
-      const size_t row = (size_t)(fb->Height - 1 - gy);   /* internal y-down row */
-      uint8_t *dst_row = (uint8_t *)pixels + (size_t)j * row_stride;
-      for (GLint i = 0; i < width; i++) {
-         const int64_t gx = (int64_t)x + i;
-         if (gx < 0 || gx >= fb->Width)
-            continue;
-         const size_t idx = row * (size_t)fb->Width + (size_t)gx;
-         uint8_t *dst = dst_row + (size_t)i * comps * bytes;
-         if (format == GL_DEPTH_COMPONENT) {
-            read_depth_pixel(fb, idx, type, swap, dst);
-            if (swap)
-               swap_component(dst, bytes);
-            continue;
-         }
-         uint8_t src[4];
-         memcpy(src, fb->Color + 4 * idx, 4);
-         if (fb->AlphaBits == 0)
-            src[3] = 255;
-         for (size_t c = 0; c < comps; c++) {
-            if (type == GL_FLOAT) {
-               const float f = (float)src[c] * (1.0f / 255.0f);
-               memcpy(dst + 4 * c, &f, 4);
-               if (swap)
-                  swap_component(dst + 4 * c, 4);
-            } else {
-               dst[c] = src[c];
-            }
-         }
-      }
+   /* [S: image.c:_mesa_clip_readpixels] */
+   struct fgl_pixelstore pack = ctx->Pack;
+   struct read_rect r = {x, y, width, height};
+   if (pack.RowLength == 0)
+      pack.RowLength = r.width;
+   if (r.x < 0) {
+      pack.SkipPixels += -r.x;
+      r.width += r.x;
+      r.x = 0;
+   }
+   if ((int64_t)r.x + r.width > fb->Width)
+      r.width -= (GLsizei)((int64_t)r.x + r.width - fb->Width);
+   if (r.width <= 0)
+      return;
+   if (r.y < 0) {
+      pack.SkipRows += -r.y;
+      r.height += r.y;
+      r.y = 0;
+   }
+   if ((int64_t)r.y + r.height > fb->Height)
+      r.height -= (GLsizei)((int64_t)r.y + r.height - fb->Height);
+   if (r.height <= 0)
+      return;
+   /* [S: st_cb_readpixels.c:st_ReadPixels] runs from here: it draws
+    * glBitmap's cache first, NULL pixels included */
+   fgl_flush_bitmap_cache(ctx);
+   if (!pixels)
+      return;
+
+   switch (format) {
+   case GL_DEPTH_COMPONENT:
+      read_depth(ctx, fb, &r, &pack, type, pixels);
+      break;
+   case GL_STENCIL_INDEX:
+      read_stencil(ctx, fb, &r, &pack, type, pixels);
+      break;
+   case GL_DEPTH_STENCIL:
+      read_depth_stencil(ctx, fb, &r, &pack, type, pixels);
+      break;
+   default:
+      read_color(ctx, fb, &r, &pack, format, type, pixels);
+      break;
    }
 }

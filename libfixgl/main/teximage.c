@@ -1,11 +1,23 @@
 /*
- * Texture images (Mesa 22.3 main/teximage.c, texstore.c): glTexImage1D and
- * glTexImage2D.  Images are stored as RGBA8 texels expanded from their
- * base format (struct fgl_texture_image).
+ * Texture images (Mesa 22.3 main/teximage.c, texstore.c, texgetimage.c,
+ * texparam.c, state_tracker/st_format.c, st_cb_texture.c):
+ * glTexImage1D/2D, glTexSubImage1D/2D, glCopyTexImage1D/2D,
+ * glCopyTexSubImage1D/2D, glGetTexImage, glGetTexLevelParameter{fv,iv}.
+ *
+ * Images are stored as RGBA8 texels expanded from their base format
+ * (struct fgl_texture_image).  The oracle stores each image in the pipe
+ * format st_choose_format picks for the internal format (and, for unsized
+ * internal formats, the client format/type); a format with fewer than 8
+ * bits per channel is stored here already quantized to it and expanded
+ * back to 8 bits the way llvmpipe's sampler and glGetTexImage expand it,
+ * so that every 8-bit value the oracle can read back is the one fixgl
+ * holds.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "main/dlist.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
 
@@ -20,65 +32,517 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
    }
 }
 
-/* [S: glformats.c:_mesa_base_tex_format] the base format of the internal
- * formats fixgl stores, 0 for others */
-static GLenum base_format(GLint internal)
+/* ------------------------------------------------------------------ */
+/* Internal formats                                                   */
+/* ------------------------------------------------------------------ */
+
+/* The pipe formats llvmpipe gets for the legacy internal formats
+ * [S: st_format.c:format_map, st_choose_format; the bits checked against
+ * the oracle's GL_TEXTURE_*_SIZE]: bits of R, G, B, A, L, I and bytes
+ * per texel (the size llvmpipe_can_create_resource weighs). */
+struct fgl_tex_pipe_format {
+   uint8_t r, g, b, a, l, i;
+   uint8_t bytes;
+   /* glCopyTexImage truncates the colour buffer's 8-bit channels to the
+    * format (x >> (8 - bits)) instead of rounding as texstore does
+    * (measured: every 8-bit value into B5G5R5X1, B5G5R5A1, B5G6R5) */
+   bool copy_truncates;
+};
+
+static const struct fgl_tex_pipe_format PF_RGBA8 = { 8, 8, 8, 8, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGBX8 = { 8, 8, 8, 0, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGBA16 = { 16, 16, 16, 16, 0, 0, 8, false };
+static const struct fgl_tex_pipe_format PF_RGBX16 = { 16, 16, 16, 0, 0, 0, 8, false };
+static const struct fgl_tex_pipe_format PF_RGB10A2 = { 10, 10, 10, 2, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGB10X2 = { 10, 10, 10, 0, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGBA4 = { 4, 4, 4, 4, 0, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_RGBX4 = { 4, 4, 4, 0, 0, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, true };
+static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, true };
+static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, true };
+static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_L8 = { 0, 0, 0, 0, 8, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_L16 = { 0, 0, 0, 0, 16, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_A8 = { 0, 0, 0, 8, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_A16 = { 0, 0, 0, 16, 0, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_L8A8 = { 0, 0, 0, 8, 8, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_L4A4 = { 0, 0, 0, 4, 4, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_L16A16 = { 0, 0, 0, 16, 16, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_I8 = { 0, 0, 0, 0, 0, 8, 1, false };
+static const struct fgl_tex_pipe_format PF_I16 = { 0, 0, 0, 0, 0, 16, 2, false };
+
+struct tex_format {
+   GLint internal;
+   GLenum base;
+   const struct fgl_tex_pipe_format *pf;
+};
+
+/* [S: glformats.c:_mesa_base_tex_format; st_format.c:format_map] */
+static const struct tex_format tex_formats[] = {
+   { 1, GL_LUMINANCE, &PF_L8 },
+   { 2, GL_LUMINANCE_ALPHA, &PF_L8A8 },
+   { 3, GL_RGB, &PF_RGBX8 },
+   { 4, GL_RGBA, &PF_RGBA8 },
+   { GL_ALPHA, GL_ALPHA, &PF_A8 },
+   { GL_ALPHA4, GL_ALPHA, &PF_A8 },
+   { GL_ALPHA8, GL_ALPHA, &PF_A8 },
+   { GL_ALPHA12, GL_ALPHA, &PF_A16 },
+   { GL_ALPHA16, GL_ALPHA, &PF_A16 },
+   { GL_LUMINANCE, GL_LUMINANCE, &PF_L8 },
+   { GL_LUMINANCE4, GL_LUMINANCE, &PF_L8 },
+   { GL_LUMINANCE8, GL_LUMINANCE, &PF_L8 },
+   { GL_LUMINANCE12, GL_LUMINANCE, &PF_L16 },
+   { GL_LUMINANCE16, GL_LUMINANCE, &PF_L16 },
+   { GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, &PF_L8A8 },
+   { GL_LUMINANCE4_ALPHA4, GL_LUMINANCE_ALPHA, &PF_L4A4 },
+   { GL_LUMINANCE6_ALPHA2, GL_LUMINANCE_ALPHA, &PF_L8A8 },
+   { GL_LUMINANCE8_ALPHA8, GL_LUMINANCE_ALPHA, &PF_L8A8 },
+   { GL_LUMINANCE12_ALPHA4, GL_LUMINANCE_ALPHA, &PF_L16A16 },
+   { GL_LUMINANCE12_ALPHA12, GL_LUMINANCE_ALPHA, &PF_L16A16 },
+   { GL_LUMINANCE16_ALPHA16, GL_LUMINANCE_ALPHA, &PF_L16A16 },
+   { GL_INTENSITY, GL_INTENSITY, &PF_I8 },
+   { GL_INTENSITY4, GL_INTENSITY, &PF_I8 },
+   { GL_INTENSITY8, GL_INTENSITY, &PF_I8 },
+   { GL_INTENSITY12, GL_INTENSITY, &PF_I16 },
+   { GL_INTENSITY16, GL_INTENSITY, &PF_I16 },
+   { GL_RGB, GL_RGB, &PF_RGBX8 },
+   { GL_R3_G3_B2, GL_RGB, &PF_RGB332 },
+   { GL_RGB4, GL_RGB, &PF_RGBX4 },
+   { GL_RGB5, GL_RGB, &PF_RGB5X1 },
+   { GL_RGB565, GL_RGB, &PF_RGB565 },
+   { GL_RGB8, GL_RGB, &PF_RGBX8 },
+   { GL_RGB10, GL_RGB, &PF_RGB10X2 },
+   { GL_RGB12, GL_RGB, &PF_RGBX16 },
+   { GL_RGB16, GL_RGB, &PF_RGBX16 },
+   { GL_RGBA, GL_RGBA, &PF_RGBA8 },
+   { GL_RGBA2, GL_RGBA, &PF_RGBA4 },
+   { GL_RGBA4, GL_RGBA, &PF_RGBA4 },
+   { GL_RGB5_A1, GL_RGBA, &PF_RGB5A1 },
+   { GL_RGBA8, GL_RGBA, &PF_RGBA8 },
+   { GL_RGB10_A2, GL_RGBA, &PF_RGB10A2 },
+   { GL_RGBA12, GL_RGBA, &PF_RGBA16 },
+   { GL_RGBA16, GL_RGBA, &PF_RGBA16 },
+};
+
+static const struct tex_format *find_format(GLint internal)
 {
-   switch (internal) {
-   case 1: case GL_LUMINANCE: case GL_LUMINANCE8:
-      return GL_LUMINANCE;
-   case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE8_ALPHA8:
-      return GL_LUMINANCE_ALPHA;
-   case 3: case GL_RGB: case GL_RGB8:
-      return GL_RGB;
-   case 4: case GL_RGBA: case GL_RGBA8:
-      return GL_RGBA;
-   case GL_ALPHA: case GL_ALPHA8:
-      return GL_ALPHA;
-   case GL_INTENSITY: case GL_INTENSITY8:
-      return GL_INTENSITY;
+   for (size_t i = 0; i < sizeof(tex_formats) / sizeof(tex_formats[0]); i++)
+      if (tex_formats[i].internal == internal)
+         return &tex_formats[i];
+   return NULL;
+}
+
+static bool is_depth_format(GLenum f)
+{
+   return f == GL_DEPTH_COMPONENT || f == GL_DEPTH_COMPONENT16 ||
+          f == GL_DEPTH_COMPONENT24 || f == GL_DEPTH_COMPONENT32;
+}
+
+static bool is_depthstencil_format(GLenum f)
+{
+   return f == GL_DEPTH_STENCIL || f == GL_DEPTH24_STENCIL8;
+}
+
+static bool is_integer_format(GLenum f)
+{
+   switch (f) {
+   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
+   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER:
+   case GL_BGR_INTEGER: case GL_BGRA_INTEGER: case GL_RG_INTEGER:
+   case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
+      return true;
    default:
-      return 0;
+      return false;
    }
 }
 
-/* Replaces level `level` of t with a width x height image from `pixels`
- * (NULL: texels undefined, zero here). */
-static void store_image(struct fgl_context *ctx, struct fgl_texture_object *t, GLint level,
-                        GLint internal, GLenum base, int width, int height,
-                        GLenum format, GLenum type, const void *pixels)
+/* [S: glformats.c:_mesa_is_color_format] for client formats */
+static bool is_color_format(GLenum f)
 {
-   const size_t n = (size_t)width * (size_t)height;
-   uint8_t *data = calloc(n ? n : 1, 4);
+   switch (f) {
+   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RG:
+   case GL_RGB: case GL_BGR: case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
+   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_INTENSITY:
+      return true;
+   default:
+      return is_integer_format(f);
+   }
+}
+
+static bool basic_type(GLenum type)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
+   case GL_UNSIGNED_INT: case GL_INT:
+      return true;
+   default:
+      return false;
+   }
+}
+
+/* [S: glformats.c:_mesa_error_check_format_and_type] the GL error of a
+ * client format/type pair in the oracle's compatibility context, or
+ * GL_NO_ERROR.  (Local until pixelformat exports Mesa's check.) */
+static GLenum format_type_error(GLenum format, GLenum type)
+{
+   if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
+       type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
+      return GL_INVALID_ENUM;
+   switch (type) {
+   case GL_BITMAP:
+      if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
+         return GL_INVALID_ENUM;
+      break;
+   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+      if (format == GL_RGB || format == GL_RGB_INTEGER)
+         break;
+      return GL_INVALID_OPERATION;
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT ||
+          format == GL_RGBA_INTEGER || format == GL_BGRA_INTEGER)
+         break;
+      return GL_INVALID_OPERATION;
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+      if (format == GL_RGBA || format == GL_BGRA || format == GL_RGBA_INTEGER ||
+          format == GL_BGRA_INTEGER)
+         break;
+      return GL_INVALID_OPERATION;
+   case GL_UNSIGNED_INT_24_8:
+      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
+   case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
+   case GL_UNSIGNED_INT_10F_11F_11F_REV: case GL_UNSIGNED_INT_5_9_9_9_REV:
+      return format == GL_RGB ? GL_NO_ERROR : GL_INVALID_OPERATION;
+   default:
+      break;
+   }
+   bool packed;
+   switch (type) {
+   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+      packed = true;
+      break;
+   default:
+      packed = false;
+      break;
+   }
+   switch (format) {
+   case GL_COLOR_INDEX: case GL_STENCIL_INDEX:
+      return basic_type(type) || type == GL_BITMAP || type == GL_FLOAT ? GL_NO_ERROR
+                                                                       : GL_INVALID_ENUM;
+   case GL_DEPTH_COMPONENT:
+      return basic_type(type) || type == GL_FLOAT ? GL_NO_ERROR : GL_INVALID_ENUM;
+   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RG:
+   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_BGR:
+      return basic_type(type) || type == GL_FLOAT || type == GL_HALF_FLOAT
+                ? GL_NO_ERROR : GL_INVALID_ENUM;
+   case GL_RGB: case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
+      return basic_type(type) || type == GL_FLOAT || type == GL_HALF_FLOAT || packed
+                ? GL_NO_ERROR : GL_INVALID_ENUM;
+   case GL_DEPTH_STENCIL:
+      return GL_NO_ERROR;
+   default:
+      if (is_integer_format(format))
+         return basic_type(type) || packed ? GL_NO_ERROR : GL_INVALID_ENUM;
+      return GL_INVALID_ENUM;
+   }
+}
+
+/* [S: teximage.c:texture_formats_agree] */
+static bool formats_agree(GLint internal, GLenum format)
+{
+   const bool int_depth = is_depth_format((GLenum)internal) ||
+                          is_depthstencil_format((GLenum)internal);
+   const bool fmt_depth = is_depth_format(format) || is_depthstencil_format(format);
+   if (!int_depth && !is_color_format(format) && format != GL_COLOR_INDEX)
+      return false;
+   return int_depth == fmt_depth;
+}
+
+/* [S: st_format.c:st_choose_format] an unsized internal format with an
+ * unsigned client type takes the pipe format matching the client data
+ * when its base format is the internal format; GL_RGB/GL_RGBA with the
+ * 5_5_5_1 or 2_10_10_10_REV types become RGB5/RGB5_A1 and RGB10/RGB10_A2. */
+static const struct fgl_tex_pipe_format *choose_pipe_format(const struct tex_format *tf,
+                                                 GLenum format, GLenum type)
+{
+   const GLint in = tf->internal;
+   if (in == GL_RGBA) {
+      if ((format == GL_RGBA && (type == GL_UNSIGNED_SHORT_4_4_4_4 ||
+                                 type == GL_UNSIGNED_SHORT_4_4_4_4_REV)) ||
+          (format == GL_BGRA && type == GL_UNSIGNED_SHORT_4_4_4_4_REV))
+         return &PF_RGBA4;
+      if ((format == GL_RGBA && type == GL_UNSIGNED_INT_10_10_10_2) ||
+          type == GL_UNSIGNED_INT_2_10_10_10_REV)
+         return &PF_RGB10A2;
+      if (type == GL_UNSIGNED_SHORT_5_5_5_1 ||
+          (format == GL_BGRA && type == GL_UNSIGNED_SHORT_1_5_5_5_REV))
+         return &PF_RGB5A1;
+      if (format == GL_RGBA && type == GL_UNSIGNED_SHORT)
+         return &PF_RGBA16;
+   } else if (in == GL_RGB) {
+      if (format == GL_RGB && (type == GL_UNSIGNED_SHORT_5_6_5 ||
+                               type == GL_UNSIGNED_SHORT_5_6_5_REV))
+         return &PF_RGB565;
+      if (format == GL_RGB && (type == GL_UNSIGNED_BYTE_3_3_2 ||
+                               type == GL_UNSIGNED_BYTE_2_3_3_REV))
+         return &PF_RGB332;
+      if (type == GL_UNSIGNED_SHORT_5_5_5_1)
+         return &PF_RGB5X1;
+      if (type == GL_UNSIGNED_INT_2_10_10_10_REV)
+         return &PF_RGB10X2;
+   } else if (type == GL_UNSIGNED_SHORT && format == (GLenum)in) {
+      if (in == GL_LUMINANCE)
+         return &PF_L16;
+      if (in == GL_ALPHA)
+         return &PF_A16;
+      if (in == GL_LUMINANCE_ALPHA)
+         return &PF_L16A16;
+   }
+   return tf->pf;
+}
+
+/* ------------------------------------------------------------------ */
+/* Quantization                                                       */
+/* ------------------------------------------------------------------ */
+
+/* [S: util/format/format_utils.h:EXTEND_NORMALIZED_INT] */
+static unsigned extend_to_8(unsigned x, unsigned bits)
+{
+   const unsigned mul = 255u / ((1u << bits) - 1u);
+   return x * mul + ((8u % bits) ? x >> (bits - 8u % bits) : 0u);
+}
+
+/* One 8-bit channel value as a channel of `bits` bits stores it and the
+ * sampler / glGetTexImage expand it again.  [S: format_utils.c:
+ * _mesa_format_convert] a format of at most 8 bits per channel converts
+ * through an RGBA ubyte intermediate (_mesa_unorm_to_unorm(x, 8, n):
+ * (x * max + 127) / 255), a wider one through float
+ * (_mesa_float_to_unorm: round-half-even of x/255 * max) and back with
+ * _mesa_unorm_to_unorm(q, n, 8). */
+static uint8_t quantize(uint8_t x, unsigned bits, bool via_float, bool truncate)
+{
+   if (bits == 0 || bits == 8)
+      return x;
+   if (truncate)
+      return (uint8_t)extend_to_8((unsigned)x >> (8u - bits), bits);
+   const unsigned max = (1u << bits) - 1u;
+   if (via_float) {
+      const float f = (float)x * (1.0f / 255.0f);
+      const unsigned q = (unsigned)llrintf(f * (float)max);
+      if (bits > 8)
+         return (uint8_t)((q * 255u + (1u << (bits - 1)) - 1u) / max);
+      return (uint8_t)extend_to_8(q, bits);
+   }
+   const unsigned q = ((unsigned)x * max + 127u) / 255u;
+   return (uint8_t)extend_to_8(q, bits);
+}
+
+static unsigned max_bits(const struct fgl_tex_pipe_format *pf)
+{
+   unsigned m = pf->r;
+   const uint8_t o[5] = { pf->g, pf->b, pf->a, pf->l, pf->i };
+   for (int k = 0; k < 5; k++)
+      if (o[k] > m)
+         m = o[k];
+   return m;
+}
+
+/* Quantizes n RGBA8 texels of base format `base` in place to pf
+ * (truncating: as glCopyTexImage stores them). */
+static void quantize_texels(const struct fgl_tex_pipe_format *pf, GLenum base, uint8_t *t,
+                            size_t n, bool truncate)
+{
+   unsigned bits[4];
+   switch (base) {
+   case GL_LUMINANCE: case GL_LUMINANCE_ALPHA:
+      bits[0] = bits[1] = bits[2] = pf->l;
+      bits[3] = base == GL_LUMINANCE ? 0 : pf->a;
+      break;
+   case GL_INTENSITY:
+      bits[0] = bits[1] = bits[2] = bits[3] = pf->i;
+      break;
+   case GL_ALPHA:
+      bits[0] = bits[1] = bits[2] = 0;
+      bits[3] = pf->a;
+      break;
+   default:
+      bits[0] = pf->r;
+      bits[1] = pf->g;
+      bits[2] = pf->b;
+      bits[3] = base == GL_RGB ? 0 : pf->a;
+      break;
+   }
+   if (bits[0] % 8 == 0 && bits[1] % 8 == 0 && bits[2] % 8 == 0 && bits[3] % 8 == 0 &&
+       max_bits(pf) != 10)
+      return;   /* 8 and 16 bits give back every 8-bit value */
+   const bool via_float = max_bits(pf) > 8;
+   for (size_t i = 0; i < n; i++)
+      for (int c = 0; c < 4; c++)
+         t[4 * i + c] = quantize(t[4 * i + c], bits[c], via_float, truncate);
+}
+
+/* The texel an unwritten (zeroed) texel of the oracle's storage reads as. */
+static void zero_texel(GLenum base, uint8_t *t)
+{
+   t[0] = t[1] = t[2] = 0;
+   t[3] = base == GL_RGB || base == GL_LUMINANCE ? 255 : 0;
+}
+
+/* The RGBA8 texel of base format `base` from an RGBA colour (Mesa's
+ * rebase: luminance and intensity take red). */
+static void rebase_texel(GLenum base, const uint8_t c[4], uint8_t *t)
+{
+   switch (base) {
+   case GL_LUMINANCE:       t[0] = t[1] = t[2] = c[0]; t[3] = 255; break;
+   case GL_LUMINANCE_ALPHA: t[0] = t[1] = t[2] = c[0]; t[3] = c[3]; break;
+   case GL_INTENSITY:       t[0] = t[1] = t[2] = t[3] = c[0]; break;
+   case GL_ALPHA:           t[0] = t[1] = t[2] = 0; t[3] = c[3]; break;
+   case GL_RGB:             t[0] = c[0]; t[1] = c[1]; t[2] = c[2]; t[3] = 255; break;
+   default:                 memcpy(t, c, 4); break;
+   }
+}
+
+/* ------------------------------------------------------------------ */
+/* Targets, objects, sizes                                            */
+/* ------------------------------------------------------------------ */
+
+static bool is_proxy(GLenum target)
+{
+   return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+}
+
+/* The object an image call on `target` changes: the bound object, or the
+ * context's proxy object. */
+static struct fgl_texture_object *target_object(struct fgl_context *ctx, GLenum target)
+{
+   switch (target) {
+   case GL_PROXY_TEXTURE_1D: return &ctx->TexObjects.Proxy[0];
+   case GL_PROXY_TEXTURE_2D: return &ctx->TexObjects.Proxy[1];
+   default: return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
+   }
+}
+
+/* [S: teximage.c:_mesa_legal_texture_dimensions] with NPOT textures */
+static bool legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint border)
+{
+   const GLint max = FGL_MAX_TEXTURE_SIZE >> level;
+   if (w < 2 * border || w > 2 * border + max)
+      return false;
+   if (dims == 2 && (h < 2 * border || h > 2 * border + max))
+      return false;
+   return true;
+}
+
+static unsigned logbase2(unsigned n)
+{
+   unsigned l = 0;
+   while (n >>= 1)
+      l++;
+   return l;
+}
+
+/* [S: st_cb_texture.c:st_TestProxyTexImage, lp_texture.c:
+ * llvmpipe_texture_layout, llvmpipe_can_create_resource] the oracle
+ * sizes a full mipmap chain from (w, h) (the proxy object's filter is
+ * the default mipmap one): rows of 4-aligned width padded to the 64-byte
+ * cache line, 2D heights aligned to 4, levels aligned to 64 bytes; more
+ * than LP_MAX_TEXTURE_SIZE (2 GiB) does not fit. */
+static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, GLint h)
+{
+   if (w == 0 || h == 0)
+      return true;
+   uint64_t total = 0;
+   unsigned width = (unsigned)w, height = (unsigned)h;
+   const unsigned last = logbase2(width > height ? width : height);
+   for (unsigned l = 0; l <= last; l++) {
+      const uint64_t aw = (width + 3u) & ~3u;
+      const uint64_t ah = dims == 1 ? height : ((height + 3u) & ~3u);
+      const uint64_t stride = (aw * pf->bytes + 63u) & ~(uint64_t)63u;
+      total += (stride * ah + 63u) & ~(uint64_t)63u;
+      width = width > 1 ? width >> 1 : 1;
+      height = height > 1 ? height >> 1 : 1;
+   }
+   return total <= 2ull * 1024 * 1024 * 1024;
+}
+
+static struct fgl_texture_image *new_image(int w, int h, int border, GLint internal,
+                                           GLenum base, const struct fgl_tex_pipe_format *pf)
+{
    struct fgl_texture_image *img = calloc(1, sizeof(*img));
-   if (!data || !img) {
-      free(data);
-      free(img);
-      fgl_error(ctx, GL_OUT_OF_MEMORY);
-      return;
-   }
-   if (pixels && n &&
-       !fgl_unpack_texels_rgba8(ctx, &ctx->Unpack, width, height, format, type, pixels,
-                                base, data)) {
-      free(data);
-      free(img);
-      fgl_error(ctx, GL_INVALID_ENUM);
-      return;
-   }
-   img->Width = width;
-   img->Height = height;
-   img->Border = 0;
+   if (!img)
+      return NULL;
+   img->Width = w;
+   img->Height = h;
+   img->Border = border;
    img->InternalFormat = (GLenum)internal;
    img->BaseFormat = base;
-   img->Data = data;
+   img->Format = pf;
+   return img;
+}
+
+static void set_image(struct fgl_texture_object *t, GLint level,
+                      struct fgl_texture_image *img)
+{
    if (t->Image[level]) {
       free(t->Image[level]->Data);
       free(t->Image[level]);
    }
    t->Image[level] = img;
-   ctx->NewState |= FGL_NEW_TEXTURE;
 }
 
+/* Allocates the texel storage of img, every texel as the oracle's zeroed
+ * storage reads; false when out of memory. */
+static bool alloc_texels(struct fgl_texture_image *img)
+{
+   const size_t n = (size_t)img->Width * (size_t)img->Height;
+   img->Data = malloc(n ? n * 4 : 4);
+   if (!img->Data)
+      return false;
+   for (size_t i = 0; i < n; i++)
+      zero_texel(img->BaseFormat, img->Data + 4 * i);
+   return true;
+}
+
+/* Unpacks a w x h client image into texels (x, y) of img. */
+static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
+                         const struct fgl_pixelstore *unpack, int x, int y, int w, int h,
+                         GLenum format, GLenum type, const void *pixels)
+{
+   if (!pixels || w == 0 || h == 0)
+      return true;
+   uint8_t *tmp = malloc((size_t)w * (size_t)h * 4);
+   if (!tmp) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return false;
+   }
+   if (!fgl_unpack_texels_rgba8(ctx, unpack, w, h, format, type, pixels,
+                                img->BaseFormat, tmp)) {
+      /* a legal format/type pair the unpacker does not convert yet */
+      free(tmp);
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   }
+   quantize_texels(img->Format, img->BaseFormat, tmp, (size_t)w * (size_t)h, false);
+   for (int j = 0; j < h; j++)
+      memcpy(img->Data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x),
+             tmp + 4 * (size_t)j * (size_t)w, 4 * (size_t)w);
+   free(tmp);
+   return true;
+}
+
+/* ------------------------------------------------------------------ */
+/* glTexImage                                                         */
+/* ------------------------------------------------------------------ */
+
+/* [S: teximage.c:teximage, texture_error_check] */
 static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
                       GLsizei width, GLsizei height, GLint border, GLenum format,
                       GLenum type, const void *pixels)
@@ -86,25 +550,100 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
+   if (ctx->CompileFlag && !fgl_save_tex_image(ctx, dims, target, level, internal, width,
+                                               height, border, format, type, pixels))
       return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
-   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+   /* legal_teximage_target (cube faces, rectangle and 1D array targets
+    * are not modelled) */
+   if (dims == 1 ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
+                 : target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   const GLenum base = base_format(internal);
-   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS || width < 0 || height < 0 ||
-       width > FGL_MAX_TEXTURE_SIZE || height > FGL_MAX_TEXTURE_SIZE || border != 0 ||
-       !base) {
+   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   struct fgl_texture_object *t =
-      fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
-   store_image(ctx, t, level, internal, base, width, height, format, type, pixels);
+   /* border 1 is legal in the compatibility profile */
+   if (border < 0 || border > 1) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (width < 0 || height < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const GLenum err = format_type_error(format, type);
+   if (err != GL_NO_ERROR) {
+      fgl_error(ctx, err);
+      return;
+   }
+   const struct tex_format *tf = find_format(internal);
+   if (!tf) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!formats_agree(internal, format) || is_integer_format(format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const struct fgl_tex_pipe_format *pf = choose_pipe_format(tf, format, type);
+   const bool dims_ok = legal_dimensions(dims, level, width, height, border);
+   const bool sz_ok = size_ok(dims, pf, width, height);
+
+   struct fgl_texture_object *t = target_object(ctx, target);
+   if (is_proxy(target)) {
+      /* [S: teximage.c:teximage] a proxy keeps the fields as given (border
+       * included) or is cleared, without an error */
+      struct fgl_texture_image *img = NULL;
+      if (dims_ok && sz_ok) {
+         img = new_image(width, height, border, internal, tf->base, pf);
+         if (!img) {
+            fgl_error(ctx, GL_OUT_OF_MEMORY);
+            return;
+         }
+      }
+      set_image(t, level, img);
+      return;
+   }
+   if (!dims_ok) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!sz_ok) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   /* [S: teximage.c:strip_texture_border] the oracle drops the border:
+    * the image is the inner width - 2 (height - 2 when at least 3) texels */
+   struct fgl_pixelstore unpack = ctx->Unpack;
+   if (border) {
+      if (unpack.RowLength == 0)
+         unpack.RowLength = width;
+      if (unpack.ImageHeight == 0)
+         unpack.ImageHeight = height;
+      unpack.SkipPixels++;
+      width -= 2;
+      if (dims == 2 && height >= 3) {
+         unpack.SkipRows++;
+         height -= 2;
+      }
+   }
+   struct fgl_texture_image *img = new_image(width, height, 0, internal, tf->base, pf);
+   if (!img || !alloc_texels(img)) {
+      free(img);
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   if (!store_texels(ctx, img, &unpack, 0, 0, width, height, format, type, pixels)) {
+      free(img->Data);
+      free(img);
+      return;
+   }
+   set_image(t, level, img);
+   ctx->NewState |= FGL_NEW_TEXTURE;
 }
 
 void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat,
@@ -119,4 +658,570 @@ void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internalFormat,
                              GLenum type, const GLvoid *pixels)
 {
    tex_image(2, target, level, internalFormat, width, height, border, format, type, pixels);
+}
+
+/* ------------------------------------------------------------------ */
+/* glTexSubImage                                                      */
+/* ------------------------------------------------------------------ */
+
+/* [S: teximage.c:error_check_subtexture_dimensions] (borders are
+ * stripped, so the image's border is 0) */
+static bool sub_dimensions_error(struct fgl_context *ctx, GLuint dims,
+                                 const struct fgl_texture_image *img, GLint xoff,
+                                 GLint yoff, GLsizei w, GLsizei h)
+{
+   if (xoff < -img->Border || (int64_t)xoff + w > img->Width) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return true;
+   }
+   if (dims > 1 && (yoff < -img->Border || (int64_t)yoff + h > img->Height)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return true;
+   }
+   return false;
+}
+
+/* [S: teximage.c:texsubimage_err, texsubimage_error_check,
+ * legal_texsubimage_target] */
+static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, GLint yoff,
+                          GLsizei width, GLsizei height, GLenum format, GLenum type,
+                          const void *pixels)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_tex_sub_image(ctx, dims, target, level, xoff, yoff,
+                                                   width, height, format, type, pixels))
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_vertices(ctx);
+   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   /* error_check_subtexture_negative_dimensions */
+   if (width < 0 || (dims > 1 && height < 0)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   struct fgl_texture_object *t = target_object(ctx, target);
+   struct fgl_texture_image *img = t->Image[level];
+   if (!img) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const GLenum err = format_type_error(format, type);
+   if (err != GL_NO_ERROR) {
+      fgl_error(ctx, err);
+      return;
+   }
+   if (!formats_agree((GLint)img->InternalFormat, format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, width, height))
+      return;
+   if (is_integer_format(format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   /* [S: teximage.c:texture_sub_image] nothing to store for an empty
+    * region; offsets are biased by the (stripped, 0) border */
+   if (width == 0 || height == 0)
+      return;
+   if (store_texels(ctx, img, &ctx->Unpack, xoff, yoff, width, height, format, type,
+                    pixels))
+      ctx->NewState |= FGL_NEW_TEXTURE;
+}
+
+void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
+                                GLenum format, GLenum type, const GLvoid *pixels)
+{
+   tex_sub_image(1, target, level, xoffset, 0, width, 1, format, type, pixels);
+}
+
+void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                const GLvoid *pixels)
+{
+   tex_sub_image(2, target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+/* ------------------------------------------------------------------ */
+/* glCopyTexImage, glCopyTexSubImage                                  */
+/* ------------------------------------------------------------------ */
+
+/* [S: teximage.c:copy_texture_sub_image, image.c:_mesa_clip_copytexsubimage]
+ * copies the framebuffer rectangle (x, y, w, h) (GL window coordinates,
+ * y up) to texels (xoff, yoff) of img, clipped to the framebuffer; the
+ * texels whose source is outside keep their values.  The colour goes
+ * through the texture's format as glTexImage stores RGBA ubyte data,
+ * except for the formats whose copy truncates (copy_truncates; the
+ * oracle's st_CopyTexSubImage blits into them).  Copies into R3G3B2 are
+ * not modelled exactly (known-differences.txt). */
+static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
+                        GLint yoff, GLint x, GLint y, GLsizei w, GLsizei h)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || !fb->Color)
+      return;
+   /* _mesa_clip_to_region */
+   if (x < 0) {
+      w -= -x;
+      xoff += -x;
+      x = 0;
+   }
+   if ((int64_t)x + w > fb->Width)
+      w = fb->Width - x;
+   if (w <= 0)
+      return;
+   if (y < 0) {
+      h -= -y;
+      yoff += -y;
+      y = 0;
+   }
+   if ((int64_t)y + h > fb->Height)
+      h = fb->Height - y;
+   if (h <= 0)
+      return;
+   for (GLint j = 0; j < h; j++) {
+      const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
+      uint8_t *dst = img->Data + 4 * ((size_t)(yoff + j) * (size_t)img->Width + (size_t)xoff);
+      for (GLint i = 0; i < w; i++) {
+         uint8_t c[4];
+         memcpy(c, fb->Color + 4 * (row * (size_t)fb->Width + (size_t)(x + i)), 4);
+         if (fb->AlphaBits == 0)
+            c[3] = 255;
+         rebase_texel(img->BaseFormat, c, dst + 4 * (size_t)i);
+      }
+      quantize_texels(img->Format, img->BaseFormat, dst, (size_t)w,
+                      img->Format->copy_truncates);
+   }
+   ctx->NewState |= FGL_NEW_TEXTURE;
+}
+
+/* [S: teximage.c:copyteximage, copytexture_error_check] */
+static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum internal, GLint x,
+                           GLint y, GLsizei width, GLsizei height, GLint border)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_copy_tex_image(ctx, dims, target, level, internal, x, y,
+                                                    width, height, border))
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_vertices(ctx);
+   /* legal_texsubimage_target: no proxies */
+   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (border < 0 || border > 1) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   /* the unsized component counts 1..4 are not taken */
+   if (internal >= 1 && internal <= 4) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   const struct tex_format *tf = find_format((GLint)internal);
+   if (!tf) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   /* _mesa_get_read_renderbuffer_for_format: no colour read buffer under
+    * glReadBuffer(GL_NONE) */
+   if (ctx->Pixel.ReadBuffer == GL_NONE) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (!legal_dimensions(dims, level, width, height, border)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const struct fgl_tex_pipe_format *pf = tf->pf;
+   struct fgl_texture_object *t = target_object(ctx, target);
+   struct fgl_texture_image *old = t->Image[level];
+   /* can_avoid_reallocation: the same format and size keeps the storage,
+    * and the texels outside the framebuffer keep their values */
+   if (old && old->InternalFormat == internal && old->Format == pf && border == 0 &&
+       old->Border == 0 && old->Width == width && old->Height == height) {
+      copy_texels(ctx, old, 0, 0, x, y, width, height);
+      return;
+   }
+   if (!size_ok(dims, pf, width, height)) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   if (border) {
+      x += 1;
+      width -= 2;
+      if (dims == 2) {
+         y += 1;
+         height -= 2;
+      }
+   }
+   struct fgl_texture_image *img = new_image(width, height, 0, (GLint)internal, tf->base, pf);
+   if (!img || !alloc_texels(img)) {
+      free(img);
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   set_image(t, level, img);
+   ctx->NewState |= FGL_NEW_TEXTURE;
+   if (width && height)
+      copy_texels(ctx, img, 0, 0, x, y, width, height);
+}
+
+void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                 GLint y, GLsizei width, GLint border)
+{
+   copy_tex_image(1, target, level, internalformat, x, y, width, 1, border);
+}
+
+void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                 GLint y, GLsizei width, GLsizei height, GLint border)
+{
+   copy_tex_image(2, target, level, internalformat, x, y, width, height, border);
+}
+
+/* [S: teximage.c:copy_texture_sub_image_err, copytexsubimage_error_check] */
+static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff,
+                               GLint yoff, GLint x, GLint y, GLsizei width, GLsizei height)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_copy_tex_sub_image(ctx, dims, target, level, xoff, yoff,
+                                                        x, y, width, height))
+      return;
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_vertices(ctx);
+   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   struct fgl_texture_object *t = target_object(ctx, target);
+   struct fgl_texture_image *img = t->Image[level];
+   if (!img) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (width < 0 || (dims > 1 && height < 0)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, width, height))
+      return;
+   /* _mesa_source_buffer_exists */
+   if (ctx->Pixel.ReadBuffer == GL_NONE) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (width == 0 || height == 0)
+      return;
+   copy_texels(ctx, img, xoff, yoff, x, y, width, height);
+}
+
+void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x,
+                                    GLint y, GLsizei width)
+{
+   copy_tex_sub_image(1, target, level, xoffset, 0, x, y, width, 1);
+}
+
+void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset,
+                                    GLint yoffset, GLint x, GLint y, GLsizei width,
+                                    GLsizei height)
+{
+   copy_tex_sub_image(2, target, level, xoffset, yoffset, x, y, width, height);
+}
+
+/* ------------------------------------------------------------------ */
+/* glGetTexImage                                                      */
+/* ------------------------------------------------------------------ */
+
+/* [S: texgetimage.c:legal_getteximage_target] the targets the oracle
+ * takes; fixgl has images on 1D and 2D only, the others have none */
+static bool legal_get_target(GLenum target)
+{
+   switch (target) {
+   case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_X: case GL_TEXTURE_CUBE_MAP_NEGATIVE_X:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z:
+   case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY: case GL_TEXTURE_2D_ARRAY:
+   case GL_TEXTURE_CUBE_MAP_ARRAY:
+      return true;
+   default:
+      return false;
+   }
+}
+
+/* [S: teximage.c:_mesa_max_texture_levels] */
+static int max_levels(GLenum target)
+{
+   switch (target) {
+   case GL_TEXTURE_3D: case GL_PROXY_TEXTURE_3D:
+      return 12;
+   case GL_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_RECTANGLE:
+      return 1;
+   default:
+      return FGL_MAX_TEXTURE_LEVELS;
+   }
+}
+
+/* The colour glGetTexImage reads from a texel: the base format's
+ * channels, the others (0, 0, 0, 1) [S: texgetimage.c:
+ * get_tex_rgba_uncompressed, the rebase swizzle of luminance,
+ * intensity and alpha images] */
+static void read_texel(GLenum base, const uint8_t *t, uint8_t c[4])
+{
+   switch (base) {
+   case GL_LUMINANCE: case GL_INTENSITY:
+      c[0] = t[0]; c[1] = c[2] = 0; c[3] = 255; break;
+   case GL_LUMINANCE_ALPHA:
+      c[0] = t[0]; c[1] = c[2] = 0; c[3] = t[3]; break;
+   case GL_ALPHA:
+      c[0] = c[1] = c[2] = 0; c[3] = t[3]; break;
+   case GL_RGB:
+      c[0] = t[0]; c[1] = t[1]; c[2] = t[2]; c[3] = 255; break;
+   default:
+      memcpy(c, t, 4); break;
+   }
+}
+
+void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type,
+                              GLvoid *pixels)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   fgl_flush_vertices(ctx);
+   if (!legal_get_target(target)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (level < 0 || level >= max_levels(target)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   const GLenum err = format_type_error(format, type);
+   if (err != GL_NO_ERROR) {
+      fgl_error(ctx, err);
+      return;
+   }
+   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D)
+      return;   /* no image: nothing to do */
+   const struct fgl_texture_image *img = target_object(ctx, target)->Image[level];
+   if (!img || img->Width == 0 || img->Height == 0)
+      return;
+   /* teximage_error_check: a colour image reads back as colours only */
+   if (is_depth_format(format) || is_depthstencil_format(format) ||
+       format == GL_STENCIL_INDEX || is_integer_format(format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (!pixels)
+      return;
+   /* packing: RGBA, RGB, BGRA, BGR as unsigned bytes (the other pairs
+    * pack through pixelformat's packer, when it lands) */
+   int comps;
+   bool bgr = format == GL_BGRA || format == GL_BGR;
+   switch (format) {
+   case GL_RGBA: case GL_BGRA: comps = 4; break;
+   case GL_RGB: case GL_BGR: comps = 3; break;
+   default: comps = 0; break;
+   }
+   if (type != GL_UNSIGNED_BYTE || comps == 0)
+      return;
+   const struct fgl_pixelstore *pack = &ctx->Pack;
+   for (int j = 0; j < img->Height; j++) {
+      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, img->Width, format, type, j, 0);
+      for (int i = 0; i < img->Width; i++) {
+         uint8_t c[4];
+         read_texel(img->BaseFormat, img->Data + 4 * ((size_t)j * (size_t)img->Width + (size_t)i), c);
+         if (bgr) {
+            const uint8_t r = c[0];
+            c[0] = c[2];
+            c[2] = r;
+         }
+         memcpy(dst + (size_t)i * (size_t)comps, c, (size_t)comps);
+      }
+   }
+}
+
+/* ------------------------------------------------------------------ */
+/* glGetTexLevelParameter                                             */
+/* ------------------------------------------------------------------ */
+
+/* [S: glformats.c:_mesa_legal_get_tex_level_parameter_target] */
+static bool legal_level_param_target(GLenum target)
+{
+   switch (target) {
+   case GL_TEXTURE_1D: case GL_PROXY_TEXTURE_1D:
+   case GL_TEXTURE_2D: case GL_PROXY_TEXTURE_2D:
+   case GL_TEXTURE_3D: case GL_PROXY_TEXTURE_3D:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_X: case GL_TEXTURE_CUBE_MAP_NEGATIVE_X:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z:
+   case GL_PROXY_TEXTURE_CUBE_MAP:
+   case GL_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_RECTANGLE:
+   case GL_TEXTURE_1D_ARRAY: case GL_PROXY_TEXTURE_1D_ARRAY:
+   case GL_TEXTURE_2D_ARRAY: case GL_PROXY_TEXTURE_2D_ARRAY:
+   case GL_TEXTURE_CUBE_MAP_ARRAY: case GL_PROXY_TEXTURE_CUBE_MAP_ARRAY:
+   case GL_TEXTURE_2D_MULTISAMPLE: case GL_PROXY_TEXTURE_2D_MULTISAMPLE:
+   case GL_TEXTURE_2D_MULTISAMPLE_ARRAY: case GL_PROXY_TEXTURE_2D_MULTISAMPLE_ARRAY:
+      return true;
+   default:
+      return false;
+   }
+}
+
+static int level_param_max_levels(GLenum target)
+{
+   switch (target) {
+   case GL_TEXTURE_2D_MULTISAMPLE: case GL_PROXY_TEXTURE_2D_MULTISAMPLE:
+   case GL_TEXTURE_2D_MULTISAMPLE_ARRAY: case GL_PROXY_TEXTURE_2D_MULTISAMPLE_ARRAY:
+      return 1;
+   default:
+      return max_levels(target);
+   }
+}
+
+/* [S: glformats.c:_mesa_base_format_has_channel] */
+static bool has_channel(GLenum base, GLenum pname)
+{
+   switch (pname) {
+   case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_RED_TYPE:
+      return base == GL_RGB || base == GL_RGBA;
+   case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_GREEN_TYPE:
+      return base == GL_RGB || base == GL_RGBA;
+   case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_BLUE_TYPE:
+      return base == GL_RGB || base == GL_RGBA;
+   case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_ALPHA_TYPE:
+      return base == GL_ALPHA || base == GL_LUMINANCE_ALPHA || base == GL_RGBA;
+   case GL_TEXTURE_LUMINANCE_SIZE: case GL_TEXTURE_LUMINANCE_TYPE:
+      return base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA;
+   case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_INTENSITY_TYPE:
+      return base == GL_INTENSITY;
+   default:
+      return false;
+   }
+}
+
+/* [S: texparam.c:get_tex_level_parameteriv, get_tex_level_parameter_image]
+ * false after an error */
+static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint level,
+                                GLenum pname, GLint *v)
+{
+   if (!legal_level_param_target(target)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   }
+   if (level < 0 || level >= level_param_max_levels(target)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return false;
+   }
+   const struct fgl_texture_image *img = NULL;
+   if (target == GL_TEXTURE_1D || target == GL_TEXTURE_2D || is_proxy(target))
+      img = target_object(ctx, target)->Image[level];
+   /* an undefined image reads as Mesa's dummy image: sizes 0, internal
+    * format GL_RGBA, no format */
+   const GLenum base = img ? img->BaseFormat : GL_NONE;
+   const struct fgl_tex_pipe_format *pf = img ? img->Format : NULL;
+   switch (pname) {
+   case GL_TEXTURE_WIDTH:
+      *v = img ? img->Width : 0;
+      return true;
+   case GL_TEXTURE_HEIGHT:
+      *v = img ? img->Height : 0;
+      return true;
+   case GL_TEXTURE_DEPTH:
+      *v = img ? 1 : 0;
+      return true;
+   case GL_TEXTURE_INTERNAL_FORMAT:
+      *v = img ? (GLint)img->InternalFormat : GL_RGBA;
+      return true;
+   case GL_TEXTURE_BORDER:
+      *v = img ? img->Border : 0;
+      return true;
+   case GL_TEXTURE_RED_SIZE:
+      *v = has_channel(base, pname) ? pf->r : 0;
+      return true;
+   case GL_TEXTURE_GREEN_SIZE:
+      *v = has_channel(base, pname) ? pf->g : 0;
+      return true;
+   case GL_TEXTURE_BLUE_SIZE:
+      *v = has_channel(base, pname) ? pf->b : 0;
+      return true;
+   case GL_TEXTURE_ALPHA_SIZE:
+      *v = has_channel(base, pname) ? pf->a : 0;
+      return true;
+   case GL_TEXTURE_LUMINANCE_SIZE:
+      *v = has_channel(base, pname) ? pf->l : 0;
+      return true;
+   case GL_TEXTURE_INTENSITY_SIZE:
+      *v = has_channel(base, pname) ? pf->i : 0;
+      return true;
+   case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_SHARED_SIZE:
+   case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_SAMPLES:
+   case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: case GL_TEXTURE_BUFFER_OFFSET:
+   case GL_TEXTURE_BUFFER_SIZE:
+      *v = 0;
+      return true;
+   case GL_TEXTURE_FIXED_SAMPLE_LOCATIONS:
+      *v = 1;
+      return true;
+   case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
+      /* no compressed formats */
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return false;
+   case GL_TEXTURE_RED_TYPE: case GL_TEXTURE_GREEN_TYPE: case GL_TEXTURE_BLUE_TYPE:
+   case GL_TEXTURE_ALPHA_TYPE: case GL_TEXTURE_LUMINANCE_TYPE:
+   case GL_TEXTURE_INTENSITY_TYPE: case GL_TEXTURE_DEPTH_TYPE:
+      *v = has_channel(base, pname) ? GL_UNSIGNED_NORMALIZED : GL_NONE;
+      return true;
+   default:
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return false;
+   }
+}
+
+void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname,
+                                         GLint *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   GLint v;
+   if (tex_level_parameter(ctx, target, level, pname, &v))
+      *params = v;
+}
+
+void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname,
+                                         GLfloat *params)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   GLint v;
+   if (tex_level_parameter(ctx, target, level, pname, &v))
+      *params = (GLfloat)v;
 }

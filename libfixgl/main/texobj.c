@@ -47,6 +47,8 @@ void fgl_init_texobj(struct fgl_context *ctx)
    memset(to, 0, sizeof(*to));
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       init_object(&to->Default[i], 0, index_target[i]);
+   init_object(&to->Proxy[0], 0, GL_PROXY_TEXTURE_1D);
+   init_object(&to->Proxy[1], 0, GL_PROXY_TEXTURE_2D);
 }
 
 void fgl_free_texobj(struct fgl_context *ctx)
@@ -59,6 +61,8 @@ void fgl_free_texobj(struct fgl_context *ctx)
    free(to->Objs);
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       fgl_free_tex_images(&to->Default[i]);
+   fgl_free_tex_images(&to->Proxy[0]);
+   fgl_free_tex_images(&to->Proxy[1]);
    to->Objs = NULL;
    to->Count = to->Alloc = 0;
 }

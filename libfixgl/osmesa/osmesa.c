@@ -253,6 +253,7 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->DepthBits = c->depth_bits;
    fb->StencilBits = c->stencil_bits;
    fb->AlphaBits = bytes_per_pixel(c->format) == 4 ? 8 : 0;
+   fb->ColorR8G8B8A8 = c->format == OSMESA_RGBA;
    fb->ZSFormat = c->zs_format;
    fb->FlushFront = flush_front;
    fb->AccumBits = c->accum_bits;

@@ -1,0 +1,802 @@
+/* c_tex_image.c - texture images: glTexImage1D/2D for every legacy
+ * internal format (the oracle quantizes each to its pipe format) read
+ * back through glGetTexImage and glGetTexLevelParameter, proxies, borders
+ * (the oracle strips them), NULL data, GL_OUT_OF_MEMORY for images
+ * llvmpipe cannot create, glTexSubImage, glCopyTexImage and
+ * glCopyTexSubImage from the colour buffer (clipped to it), and every
+ * error path in Mesa's order. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cases.h"
+
+#ifndef GL_RGB565
+#define GL_RGB565 0x8D62
+#endif
+
+static const GLint formats[] = {
+    1, 2, 3, 4,
+    GL_ALPHA, GL_ALPHA4, GL_ALPHA8, GL_ALPHA12, GL_ALPHA16,
+    GL_LUMINANCE, GL_LUMINANCE4, GL_LUMINANCE8, GL_LUMINANCE12, GL_LUMINANCE16,
+    GL_LUMINANCE_ALPHA, GL_LUMINANCE4_ALPHA4, GL_LUMINANCE6_ALPHA2, GL_LUMINANCE8_ALPHA8,
+    GL_LUMINANCE12_ALPHA4, GL_LUMINANCE12_ALPHA12, GL_LUMINANCE16_ALPHA16,
+    GL_INTENSITY, GL_INTENSITY4, GL_INTENSITY8, GL_INTENSITY12, GL_INTENSITY16,
+    GL_RGB, GL_R3_G3_B2, GL_RGB4, GL_RGB5, GL_RGB565, GL_RGB8, GL_RGB10, GL_RGB12, GL_RGB16,
+    GL_RGBA, GL_RGBA2, GL_RGBA4, GL_RGB5_A1, GL_RGBA8, GL_RGB10_A2, GL_RGBA12, GL_RGBA16,
+};
+#define NFORMATS (sizeof formats / sizeof formats[0])
+
+static const GLenum level_pnames[] = {
+    GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH, GL_TEXTURE_INTERNAL_FORMAT,
+    GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
+    GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE, GL_TEXTURE_INTENSITY_SIZE,
+    GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_COMPRESSED, GL_TEXTURE_RED_TYPE, GL_TEXTURE_GREEN_TYPE,
+    GL_TEXTURE_BLUE_TYPE, GL_TEXTURE_ALPHA_TYPE, GL_TEXTURE_LUMINANCE_TYPE,
+    GL_TEXTURE_INTENSITY_TYPE, GL_TEXTURE_DEPTH_TYPE, GL_TEXTURE_STENCIL_SIZE,
+    GL_TEXTURE_SHARED_SIZE, GL_TEXTURE_SAMPLES, GL_TEXTURE_FIXED_SAMPLE_LOCATIONS,
+};
+#define NPNAMES (sizeof level_pnames / sizeof level_pnames[0])
+
+/* Every level parameter of (target, level), integer and float. */
+static void level_params(fc_h *h, const char *label, GLenum target, GLint level)
+{
+    GLint iv[NPNAMES];
+    GLfloat fv[NPNAMES];
+    for (size_t i = 0; i < NPNAMES; i++) {
+        iv[i] = -77;
+        fv[i] = -77.0f;
+        glGetTexLevelParameteriv(target, level, level_pnames[i], &iv[i]);
+        glGetTexLevelParameterfv(target, level, level_pnames[i], &fv[i]);
+    }
+    char l[128];
+    snprintf(l, sizeof l, "%s params", label);
+    fc_blob(h, l, iv, sizeof iv);
+    snprintf(l, sizeof l, "%s paramsf", label);
+    fc_blob(h, l, fv, sizeof fv);
+    snprintf(l, sizeof l, "%s params error", label);
+    fc_error(h, l);
+}
+
+static GLubyte readback[4 * 64 * 64 + 64];
+
+/* glGetTexImage(GL_RGBA / GL_RGB / GL_BGRA, GL_UNSIGNED_BYTE) of a level
+ * of at most 64x64 into a marked buffer. */
+static void get_image(fc_h *h, const char *label, GLenum target, GLint level, GLenum format,
+                      int w, int hh)
+{
+    memset(readback, 0xA5, sizeof readback);
+    glGetTexImage(target, level, format, GL_UNSIGNED_BYTE, readback);
+    char l[128];
+    snprintf(l, sizeof l, "%s image", label);
+    const size_t comps = format == GL_RGB || format == GL_BGR ? 3 : 4;
+    fc_blob(h, l, readback, comps * (size_t)w * (size_t)hh + 16);
+    snprintf(l, sizeof l, "%s image error", label);
+    fc_error(h, l);
+}
+
+/* A w x h source image of 4-byte pixels covering many values. */
+static GLubyte src[4 * 64 * 64];
+static void fill_src(int seed)
+{
+    for (size_t i = 0; i < sizeof src; i++)
+        src[i] = (GLubyte)((i * 37u + (size_t)seed * 101u + (i >> 4) * 13u) & 255u);
+}
+
+/* Every internal format from one client format, 2D and 1D. */
+static void formats_from(fc_h *h, GLenum format, GLenum target)
+{
+    fill_src((int)format);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (size_t f = 0; f < NFORMATS; f++) {
+        char l[64];
+        snprintf(l, sizeof l, "0x%04x", (unsigned)formats[f]);
+        if (target == GL_TEXTURE_1D)
+            glTexImage1D(GL_TEXTURE_1D, 0, formats[f], 37, 0, format, GL_UNSIGNED_BYTE, src);
+        else
+            glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 16, 11, 0, format, GL_UNSIGNED_BYTE,
+                         src);
+        fc_error(h, l);
+        level_params(h, l, target, 0);
+        get_image(h, l, target, 0, GL_RGBA, target == GL_TEXTURE_1D ? 37 : 16,
+                  target == GL_TEXTURE_1D ? 1 : 11);
+    }
+}
+
+static void formats_rgba(fc_h *h) { formats_from(h, GL_RGBA, GL_TEXTURE_2D); }
+static void formats_rgb(fc_h *h) { formats_from(h, GL_RGB, GL_TEXTURE_2D); }
+static void formats_lum(fc_h *h) { formats_from(h, GL_LUMINANCE, GL_TEXTURE_2D); }
+static void formats_la(fc_h *h) { formats_from(h, GL_LUMINANCE_ALPHA, GL_TEXTURE_2D); }
+static void formats_alpha(fc_h *h) { formats_from(h, GL_ALPHA, GL_TEXTURE_2D); }
+static void formats_1d(fc_h *h) { formats_from(h, GL_RGBA, GL_TEXTURE_1D); }
+
+/* glGetTexImage as RGB and BGRA; pack alignment and row length. */
+static void readback_formats(fc_h *h)
+{
+    fill_src(3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    get_image(h, "rgba", GL_TEXTURE_2D, 0, GL_RGBA, 5, 3);
+    get_image(h, "rgb", GL_TEXTURE_2D, 0, GL_RGB, 5, 3);
+    get_image(h, "bgra", GL_TEXTURE_2D, 0, GL_BGRA, 5, 3);
+    get_image(h, "bgr", GL_TEXTURE_2D, 0, GL_BGR, 5, 3);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 7);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 1);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 2);
+    get_image(h, "rgb row length", GL_TEXTURE_2D, 0, GL_RGB, 9, 5);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 8);
+    get_image(h, "rgb align 8", GL_TEXTURE_2D, 0, GL_RGB, 8, 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 src);
+    get_image(h, "la as bgr", GL_TEXTURE_2D, 0, GL_BGR, 8, 3);
+    /* levels that do not exist read nothing */
+    get_image(h, "missing level", GL_TEXTURE_2D, 3, GL_RGBA, 4, 4);
+    get_image(h, "missing 1d", GL_TEXTURE_1D, 0, GL_RGBA, 4, 1);
+    get_image(h, "3d", GL_TEXTURE_3D, 0, GL_RGBA, 4, 1);
+}
+
+/* The pixel store state applies to the upload. */
+static void unpack_store(fc_h *h)
+{
+    fill_src(9);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 5, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "align 8");
+    get_image(h, "align 8", GL_TEXTURE_2D, 0, GL_RGBA, 5, 4);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 9);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    get_image(h, "row length skip", GL_TEXTURE_2D, 0, GL_RGBA, 5, 4);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE, 6, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, src);
+    get_image(h, "1d skip", GL_TEXTURE_1D, 0, GL_RGBA, 6, 1);
+}
+
+/* Border 1: the oracle strips it (the inner image, border 0). */
+static void border(fc_h *h)
+{
+    fill_src(5);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 6, 5, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "6x5");
+    level_params(h, "6x5", GL_TEXTURE_2D, 0);
+    get_image(h, "6x5", GL_TEXTURE_2D, 0, GL_RGBA, 4, 3);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGB5, 4, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "4x2");
+    level_params(h, "4x2", GL_TEXTURE_2D, 1);
+    get_image(h, "4x2", GL_TEXTURE_2D, 1, GL_RGBA, 2, 2);
+    glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 2, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "2x2");
+    level_params(h, "2x2", GL_TEXTURE_2D, 2);
+    glTexImage2D(GL_TEXTURE_2D, 3, GL_RGBA, 1, 3, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "1x3");
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE_ALPHA, 10, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "1d");
+    level_params(h, "1d", GL_TEXTURE_1D, 0);
+    get_image(h, "1d", GL_TEXTURE_1D, 0, GL_RGBA, 8, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 8);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    get_image(h, "row length", GL_TEXTURE_2D, 0, GL_RGBA, 3, 2);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16386, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "too wide");
+    glTexImage2D(GL_TEXTURE_2D, 14, GL_RGBA, 3, 3, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "level 14 3x3");
+    level_params(h, "level 14", GL_TEXTURE_2D, 14);
+}
+
+/* NULL data: the oracle's storage starts zeroed. */
+static void null_data(fc_h *h)
+{
+    for (size_t f = 0; f < NFORMATS; f += 3) {
+        char l[64];
+        snprintf(l, sizeof l, "0x%04x", (unsigned)formats[f]);
+        glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 4, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        fc_error(h, l);
+        get_image(h, l, GL_TEXTURE_2D, 0, GL_RGBA, 4, 3);
+    }
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "0x0");
+    level_params(h, "0x0", GL_TEXTURE_2D, 0);
+    get_image(h, "0x0", GL_TEXTURE_2D, 0, GL_RGBA, 1, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    level_params(h, "4x0", GL_TEXTURE_2D, 0);
+    glTexImage1D(GL_TEXTURE_1D, 2, GL_ALPHA, 0, 0, GL_ALPHA, GL_UNSIGNED_BYTE, NULL);
+    level_params(h, "1d 0", GL_TEXTURE_1D, 2);
+}
+
+/* Unsized internal formats take the client data's packed format. */
+static void packed_types(fc_h *h)
+{
+    static const struct { GLint in; GLenum f, t; } c[] = {
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4 },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4_REV },
+        { GL_RGBA, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4_REV },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 },
+        { GL_RGBA, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2 },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_SHORT },
+        { GL_RGBA, GL_RGBA, GL_UNSIGNED_INT },
+        { GL_RGBA, GL_RGBA, GL_FLOAT },
+        { GL_RGBA, GL_BGRA, GL_UNSIGNED_BYTE },
+        { GL_RGB, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 },
+        { GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5 },
+        { GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV },
+        { GL_RGB, GL_RGB, GL_UNSIGNED_BYTE_3_3_2 },
+        { GL_RGB, GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV },
+        { GL_RGB, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV },
+        { GL_RGB, GL_RGB, GL_UNSIGNED_SHORT },
+        { GL_LUMINANCE, GL_LUMINANCE, GL_UNSIGNED_SHORT },
+        { GL_ALPHA, GL_ALPHA, GL_UNSIGNED_SHORT },
+        { GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, GL_UNSIGNED_SHORT },
+        { GL_INTENSITY, GL_LUMINANCE, GL_UNSIGNED_SHORT },
+        { 4, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4 },
+        { 3, GL_RGB, GL_UNSIGNED_SHORT_5_6_5 },
+        { GL_RGBA8, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4 },
+        { GL_LUMINANCE, GL_RGBA, GL_UNSIGNED_SHORT },
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        char l[64];
+        snprintf(l, sizeof l, "%zu", i);
+        glTexImage2D(GL_TEXTURE_2D, 0, c[i].in, 4, 4, 0, c[i].f, c[i].t, NULL);
+        fc_error(h, l);
+        level_params(h, l, GL_TEXTURE_2D, 0);
+    }
+}
+
+/* Proxies: fields as given (border kept) or cleared, never an error
+ * for sizes; GL_TEXTURE_2D untouched. */
+static void proxy(fc_h *h)
+{
+    static const struct { GLint in; int level, w, hh, b; } c[] = {
+        { GL_RGBA8, 0, 16384, 16384, 0 }, { GL_RGBA16, 0, 16384, 16384, 0 },
+        { GL_RGBA16, 0, 16384, 8192, 0 }, { GL_RGB16, 0, 16384, 16384, 0 },
+        { GL_RGB12, 0, 16384, 16383, 0 }, { GL_RGB10, 0, 16384, 16384, 0 },
+        { GL_LUMINANCE16_ALPHA16, 0, 16384, 16384, 0 }, { GL_RGBA, 0, 16385, 1, 0 },
+        { GL_RGBA, 0, 16386, 1, 1 }, { GL_RGBA, 0, 6, 6, 1 }, { GL_RGBA, 3, 2049, 1, 0 },
+        { GL_RGBA, 3, 2048, 2048, 0 }, { GL_RGBA, 14, 1, 1, 0 }, { GL_RGBA, 14, 2, 1, 0 },
+        { GL_RGBA, 14, 3, 3, 1 }, { GL_RGBA, 0, 1, 1, 1 }, { GL_INTENSITY12, 2, 5, 7, 0 },
+        { GL_RGBA, 0, 0, 0, 0 }, { GL_R3_G3_B2, 1, 0, 9, 0 },
+    };
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        char l[64];
+        snprintf(l, sizeof l, "2d %zu", i);
+        glTexImage2D(GL_PROXY_TEXTURE_2D, c[i].level, c[i].in, c[i].w, c[i].hh, c[i].b,
+                     GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        fc_error(h, l);
+        level_params(h, l, GL_PROXY_TEXTURE_2D, c[i].level);
+        snprintf(l, sizeof l, "1d %zu", i);
+        glTexImage1D(GL_PROXY_TEXTURE_1D, c[i].level, c[i].in, c[i].w, c[i].b, GL_RGBA,
+                     GL_UNSIGNED_BYTE, NULL);
+        fc_error(h, l);
+        level_params(h, l, GL_PROXY_TEXTURE_1D, c[i].level);
+    }
+    level_params(h, "real 2d", GL_TEXTURE_2D, 0);
+    /* errors other than sizes are raised for proxies too */
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 15, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "level 15");
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, -1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "negative");
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, 99, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "internal");
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 1, 1, 2, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "border 2");
+    glTexImage2D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "1d proxy in 2d");
+    glTexImage1D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "2d proxy in 1d");
+    level_params(h, "after errors", GL_PROXY_TEXTURE_2D, 0);
+    /* proxies are not sub-image or copy targets */
+    glTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "sub proxy");
+    glCopyTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1, 1, 0);
+    fc_error(h, "copy proxy");
+    get_image(h, "get proxy", GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 1, 1);
+}
+
+/* Images llvmpipe cannot create: GL_OUT_OF_MEMORY, nothing changed. */
+static void out_of_memory(fc_h *h)
+{
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, 16384, 16384, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 NULL);
+    fc_error(h, "rgba16 16384^2");
+    level_params(h, "after", GL_TEXTURE_2D, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16, 16384, 16384, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "rgb16 16384^2");
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16384, 16384, 0, GL_RGBA, GL_UNSIGNED_SHORT,
+                 NULL);
+    fc_error(h, "rgba ushort 16384^2");
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA12, 16384, 16384, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                 NULL);
+    fc_error(h, "rgba12 16384^2 border");
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, 16385, 16385, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 NULL);
+    fc_error(h, "too large first");
+    level_params(h, "end", GL_TEXTURE_2D, 0);
+    get_image(h, "end", GL_TEXTURE_2D, 0, GL_RGBA, 2, 2);
+}
+
+/* Every glTexImage error, in Mesa's order (several wrong at once). */
+static void tex_image_errors(fc_h *h)
+{
+    static const GLubyte px[64] = { 1, 2, 3, 4 };
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    fc_error(h, "valid");
+#define E(label, call) do { call; fc_error(h, label); } while (0)
+    E("target 3d", glTexImage2D(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("target 1d", glTexImage2D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("target 2d in 1d", glTexImage1D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("target env", glTexImage1D(GL_TEXTURE_ENV, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("target before level", glTexImage2D(GL_TEXTURE_3D, -1, 99, -1, 1, 2, 0x1234, GL_UNSIGNED_BYTE, px));
+    E("level -1", glTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("level 15", glTexImage2D(GL_TEXTURE_2D, 15, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("level 14 2x1", glTexImage2D(GL_TEXTURE_2D, 14, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("level 14 1x1", glTexImage2D(GL_TEXTURE_2D, 14, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("level first", glTexImage2D(GL_TEXTURE_2D, -1, 99, -1, 1, 2, 0x1234, 0x1234, px));
+    E("border 2", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 2, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("border -1", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, -1, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("border before size", glTexImage2D(GL_TEXTURE_2D, 0, 99, -1, 1, 2, 0x1234, GL_UNSIGNED_BYTE, px));
+    E("border 1 width 1", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 3, 1, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("width -1", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("height -1", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, -1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("size before format", glTexImage2D(GL_TEXTURE_2D, 0, 99, -1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, px));
+    E("width 16385", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16385, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
+    E("1d width 16385", glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 16385, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
+    E("level 3 2049", glTexImage2D(GL_TEXTURE_2D, 3, GL_RGBA, 4, 2049, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
+    E("format", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, px));
+    E("type", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, 0x1234, px));
+    E("format intensity", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_INTENSITY, GL_UNSIGNED_BYTE, px));
+    E("bitmap rgba", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_BITMAP, px));
+    E("rgb 4444", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, px));
+    E("rgba 565", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, px));
+    E("lum 5551", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_SHORT_5_5_5_1, px));
+    E("depth_stencil ubyte", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_BYTE, px));
+    E("24_8 rgba", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, px));
+    E("format before internal", glTexImage2D(GL_TEXTURE_2D, 0, 99, 1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, px));
+    E("internal 0", glTexImage2D(GL_TEXTURE_2D, 0, 0, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("internal 5", glTexImage2D(GL_TEXTURE_2D, 0, 5, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("internal bgra", glTexImage2D(GL_TEXTURE_2D, 0, GL_BGRA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("internal 99", glTexImage2D(GL_TEXTURE_2D, 0, 99, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("internal color index", glTexImage2D(GL_TEXTURE_2D, 0, GL_COLOR_INDEX, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("format depth", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, px));
+    E("format stencil", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, px));
+    E("format integer", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, px));
+    E("1d level 15", glTexImage1D(GL_TEXTURE_1D, 15, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("1d border 3", glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 3, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    E("1d internal", glTexImage1D(GL_TEXTURE_1D, 0, 77, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
+    glBegin(GL_POINTS);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    level_params(h, "unchanged", GL_TEXTURE_2D, 0);
+    get_image(h, "unchanged", GL_TEXTURE_2D, 0, GL_RGBA, 1, 1);
+    level_params(h, "level 14", GL_TEXTURE_2D, 14);
+#undef E
+}
+
+/* glTexSubImage1D/2D: regions, formats, store state, errors. */
+static void sub_image(fc_h *h)
+{
+    fill_src(11);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 6, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 1, 3, 4, GL_RGB, GL_UNSIGNED_BYTE, src + 100);
+    fc_error(h, "rgb region");
+    get_image(h, "rgb region", GL_TEXTURE_2D, 0, GL_RGBA, 8, 6);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 5, 8, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, src + 7);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 7, 0, 1, 6, GL_ALPHA, GL_UNSIGNED_BYTE, src + 9);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 3, 3, 0, 2, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 3, 3, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "edges");
+    get_image(h, "edges", GL_TEXTURE_2D, 0, GL_RGBA, 8, 6);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 10);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 4, 3, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    get_image(h, "store", GL_TEXTURE_2D, 0, GL_RGBA, 8, 6);
+    /* quantized formats */
+    static const GLint q[] = { GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2, GL_LUMINANCE4_ALPHA4,
+                               GL_RGB10_A2, GL_INTENSITY, GL_ALPHA12 };
+    for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
+        char l[64];
+        snprintf(l, sizeof l, "fmt 0x%04x", (unsigned)q[i]);
+        glTexImage2D(GL_TEXTURE_2D, 1, q[i], 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        glTexSubImage2D(GL_TEXTURE_2D, 1, 1, 0, 3, 3, GL_RGBA, GL_UNSIGNED_BYTE, src + 40);
+        fc_error(h, l);
+        get_image(h, l, GL_TEXTURE_2D, 1, GL_RGBA, 4, 4);
+    }
+    /* 1D */
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 9, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    glTexSubImage1D(GL_TEXTURE_1D, 0, 4, 5, GL_RGBA, GL_UNSIGNED_BYTE, src + 200);
+    fc_error(h, "1d");
+    get_image(h, "1d", GL_TEXTURE_1D, 0, GL_RGBA, 9, 1);
+    /* border-stripped image: offsets from 0 */
+    glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 2, -1, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    fc_error(h, "border offset -1");
+    glTexSubImage2D(GL_TEXTURE_2D, 2, 2, 2, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 300);
+    get_image(h, "border", GL_TEXTURE_2D, 2, GL_RGBA, 4, 4);
+    /* errors */
+#define E(label, call) do { call; fc_error(h, label); } while (0)
+    E("target", glTexSubImage2D(GL_TEXTURE_1D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("target 1d", glTexSubImage1D(GL_TEXTURE_2D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("level -1", glTexSubImage2D(GL_TEXTURE_2D, -1, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("level 15", glTexSubImage2D(GL_TEXTURE_2D, 15, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("no level", glTexSubImage2D(GL_TEXTURE_2D, 5, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("width -1", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("negative before level", glTexSubImage2D(GL_TEXTURE_2D, 5, 0, 0, 1, -1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("format", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, src));
+    E("type", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_BITMAP, src));
+    E("packed", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, src));
+    E("depth", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, src));
+    E("xoffset -1", glTexSubImage2D(GL_TEXTURE_2D, 0, -1, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("x past", glTexSubImage2D(GL_TEXTURE_2D, 0, 5, 0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("y past", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("y -1", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, -1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("format before size", glTexSubImage2D(GL_TEXTURE_2D, 0, 50, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, src));
+    E("integer", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, src));
+    E("1d past", glTexSubImage1D(GL_TEXTURE_1D, 0, 8, 2, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    E("1d yoffset ignored", glTexSubImage1D(GL_TEXTURE_1D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
+    glBegin(GL_POINTS);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glEnd();
+    fc_error(h, "inside begin/end");
+#undef E
+    get_image(h, "final", GL_TEXTURE_2D, 0, GL_RGBA, 8, 6);
+}
+
+/* A picture in the colour buffer to copy from. */
+static void draw_picture(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_TRIANGLES);
+    glColor4f(1, 0, 0, 1); glVertex2f(0, 0);
+    glColor4f(0, 1, 0, 0.5f); glVertex2f(32, 4);
+    glColor4f(0, 0, 1, 0.25f); glVertex2f(8, 24);
+    glColor4f(1, 1, 0, 0.75f); glVertex2f(30, 30);
+    glColor4f(0, 1, 1, 0.1f); glVertex2f(2, 31);
+    glColor4f(1, 0, 1, 0.9f); glVertex2f(31, 10);
+    glEnd();
+}
+
+static void copy_image(fc_h *h)
+{
+    draw_picture(h);
+    fc_capture(h);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 5, 16, 12, 0);
+    fc_error(h, "rgba");
+    level_params(h, "rgba", GL_TEXTURE_2D, 0);
+    get_image(h, "rgba", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+    static const GLenum q[] = { GL_RGB, GL_LUMINANCE, GL_ALPHA, GL_LUMINANCE_ALPHA,
+                                GL_INTENSITY, GL_RGB5, GL_RGBA4, GL_RGB5_A1, GL_RGB565,
+                                GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGBA16, GL_RGB8 };
+    for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
+        char l[64];
+        snprintf(l, sizeof l, "fmt 0x%04x", (unsigned)q[i]);
+        glCopyTexImage2D(GL_TEXTURE_2D, 1, q[i], 7, 2, 8, 8, 0);
+        fc_error(h, l);
+        level_params(h, l, GL_TEXTURE_2D, 1);
+        get_image(h, l, GL_TEXTURE_2D, 1, GL_RGBA, 8, 8);
+    }
+    /* partly outside the framebuffer: a new image keeps zeros there */
+    glCopyTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, -3, 28, 8, 8, 0);
+    fc_error(h, "outside");
+    get_image(h, "outside", GL_TEXTURE_2D, 2, GL_RGBA, 8, 8);
+    glCopyTexImage2D(GL_TEXTURE_2D, 3, GL_RGB, 29, -2, 6, 4, 0);
+    get_image(h, "outside rgb", GL_TEXTURE_2D, 3, GL_RGBA, 6, 4);
+    /* the same size and format again reuses the storage: texels copied
+     * from outside keep their old values */
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 20, 25, 16, 12, 0);
+    fc_error(h, "reuse");
+    get_image(h, "reuse", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+    glCopyTexImage2D(GL_TEXTURE_2D, 4, GL_RGBA, 100, 100, 4, 4, 0);
+    get_image(h, "all outside", GL_TEXTURE_2D, 4, GL_RGBA, 4, 4);
+    /* border 1 */
+    glCopyTexImage2D(GL_TEXTURE_2D, 5, GL_RGBA, 4, 4, 6, 5, 1);
+    fc_error(h, "border");
+    level_params(h, "border", GL_TEXTURE_2D, 5);
+    get_image(h, "border", GL_TEXTURE_2D, 5, GL_RGBA, 4, 3);
+    /* 1D */
+    glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 5, 9, 20, 0);
+    fc_error(h, "1d");
+    level_params(h, "1d", GL_TEXTURE_1D, 0);
+    get_image(h, "1d", GL_TEXTURE_1D, 0, GL_RGBA, 20, 1);
+    glCopyTexImage1D(GL_TEXTURE_1D, 1, GL_LUMINANCE, 25, 31, 10, 1);
+    get_image(h, "1d border", GL_TEXTURE_1D, 1, GL_RGBA, 8, 1);
+    /* sub images */
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 2, 3, 10, 10, 5, 4);
+    fc_error(h, "sub");
+    get_image(h, "sub", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, -4, 30, 8, 8);
+    fc_error(h, "sub outside");
+    get_image(h, "sub outside", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 1, 1, 1, 3, 3, 4, 4);
+    get_image(h, "sub quantized", GL_TEXTURE_2D, 1, GL_RGBA, 8, 8);
+    glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 3, 0, 0, 7);
+    fc_error(h, "sub 1d");
+    get_image(h, "sub 1d", GL_TEXTURE_1D, 0, GL_RGBA, 20, 1);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 1, 1, 0, 3);
+    fc_error(h, "sub empty");
+    /* errors */
+#define E(label, call) do { call; fc_error(h, label); } while (0)
+    E("copy target", glCopyTexImage2D(GL_TEXTURE_1D, 0, GL_RGBA, 0, 0, 1, 1, 0));
+    E("copy target 3d", glCopyTexImage2D(GL_TEXTURE_3D, 0, GL_RGBA, 0, 0, 1, 1, 0));
+    E("copy level", glCopyTexImage2D(GL_TEXTURE_2D, 15, GL_RGBA, 0, 0, 1, 1, 0));
+    E("copy level -1", glCopyTexImage2D(GL_TEXTURE_2D, -1, 99, 0, 0, 1, 1, 5));
+    E("copy border", glCopyTexImage2D(GL_TEXTURE_2D, 0, 99, 0, 0, 1, 1, 2));
+    E("copy internal 4", glCopyTexImage2D(GL_TEXTURE_2D, 0, 4, 0, 0, 1, 1, 0));
+    E("copy internal 1", glCopyTexImage1D(GL_TEXTURE_1D, 0, 1, 0, 0, 1, 0));
+    E("copy internal 99", glCopyTexImage2D(GL_TEXTURE_2D, 0, 99, 0, 0, 1, 1, 0));
+    E("copy internal depth", glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_COLOR_INDEX, 0, 0, 1, 1, 0));
+    E("copy width -1", glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -1, 1, 0));
+    E("copy width 16385", glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 16385, 1, 0));
+    E("copy border 1 width 1", glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1, 4, 1));
+    E("sub target", glCopyTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1));
+    E("sub level", glCopyTexSubImage2D(GL_TEXTURE_2D, 15, 0, 0, 0, 0, 1, 1));
+    E("sub no image", glCopyTexSubImage2D(GL_TEXTURE_2D, 9, 0, 0, 0, 0, 1, 1));
+    E("sub width -1", glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, -1, 1));
+    E("sub past", glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 10, 0, 0, 0, 7, 1));
+    E("sub y past", glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 11, 0, 0, 1, 2));
+    E("sub offset -1", glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, -1, 0, 0, 1, 1));
+    E("sub 1d past", glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 19, 0, 0, 2));
+    /* (glReadBuffer(GL_NONE) then glCopyTexImage2D crashes the oracle:
+     * not compared) */
+    glBegin(GL_POINTS);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1, 1, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+    glEnd();
+    fc_error(h, "inside begin/end");
+#undef E
+    level_params(h, "final", GL_TEXTURE_2D, 0);
+    get_image(h, "final", GL_TEXTURE_2D, 0, GL_RGBA, 16, 12);
+}
+
+/* Every 8-bit value of each channel copied into the small formats: the
+ * oracle truncates into its 5-5-5(-1) and 5-6-5 formats and rounds into
+ * 4-4-4-4, 4-4 luminance/alpha and 10-10-10-2. */
+static void copy_values(fc_h *h, const GLint *fmts, size_t n)
+{
+    fc_pixel_ortho(h);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 256; i++) {
+        glColor4ub((GLubyte)i, (GLubyte)(255 - i), (GLubyte)(i * 7), (GLubyte)(i * 3 + 1));
+        glVertex2f((float)i + 0.5f, 0.5f);
+    }
+    glEnd();
+    fc_capture(h);
+    for (size_t k = 0; k < n; k++) {
+        char l[64];
+        snprintf(l, sizeof l, "fmt 0x%04x", (unsigned)fmts[k]);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, fmts[k], 0, 0, 256, 1, 0);
+        fc_error(h, l);
+        memset(readback, 0xA5, sizeof readback);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+        fc_blob(h, l, readback, 4 * 256);
+        /* a sub-image copy converts the same way */
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 128, 0, 128, 1);
+        memset(readback, 0xA5, sizeof readback);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+        fc_blob(h, "sub", readback, 4 * 256);
+    }
+}
+
+static void copy_values_small(fc_h *h)
+{
+    static const GLint f[] = { GL_RGB5, GL_RGB5_A1, GL_RGB565, GL_RGBA4, GL_RGBA2, GL_RGB4,
+                               GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGB10, GL_ALPHA4,
+                               GL_INTENSITY16, GL_LUMINANCE6_ALPHA2 };
+    copy_values(h, f, sizeof f / sizeof f[0]);
+}
+
+static void copy_values_r3g3b2(fc_h *h)
+{
+    static const GLint f[] = { GL_R3_G3_B2 };
+    copy_values(h, f, 1);
+}
+
+/* Display lists: glTexImage and glTexSubImage copy the client image at
+ * compile time under the unpack state of then (replayed with the default
+ * packing), proxies execute at once, copies replay from the colour
+ * buffer of the call, queries execute at once. */
+static void lists(fc_h *h)
+{
+    fill_src(31);
+    GLuint l = glGenLists(4);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 6);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    glNewList(l, GL_COMPILE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5_A1, 4, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_LUMINANCE, 2, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_ALPHA8, 5, 0, GL_ALPHA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, src + 50);
+    glTexSubImage1D(GL_TEXTURE_1D, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 90);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 64, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGB4, 16, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 7, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 9, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    level_params(h, "proxy while compiling", GL_PROXY_TEXTURE_2D, 0);
+    level_params(h, "proxy 1d while compiling", GL_PROXY_TEXTURE_1D, 0);
+    level_params(h, "2d while compiling", GL_TEXTURE_2D, 0);
+    get_image(h, "get while compiling", GL_TEXTURE_2D, 0, GL_RGBA, 1, 1);
+    glEndList();
+    fc_error(h, "compiled");
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    memset(src, 0, 256);   /* the list holds its own copy */
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glCallList(l);
+    fc_error(h, "called");
+    level_params(h, "l0", GL_TEXTURE_2D, 0);
+    get_image(h, "l0", GL_TEXTURE_2D, 0, GL_RGBA, 4, 3);
+    get_image(h, "l1", GL_TEXTURE_2D, 1, GL_RGBA, 2, 1);
+    get_image(h, "l2", GL_TEXTURE_2D, 2, GL_RGBA, 1, 1);
+    get_image(h, "1d", GL_TEXTURE_1D, 0, GL_RGBA, 5, 1);
+    fc_get_integer(h, "unpack alignment", GL_UNPACK_ALIGNMENT, 1);
+    fc_get_integer(h, "unpack row length", GL_UNPACK_ROW_LENGTH, 1);
+    /* swapped bytes are undone at compile time */
+    static const GLushort us[4] = { 0x1234, 0xfedc, 0x00ff, 0x8001 };
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+    glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+    glTexImage2D(GL_TEXTURE_2D, 3, GL_LUMINANCE, 2, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, us);
+    glEndList();
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    get_image(h, "executed", GL_TEXTURE_2D, 3, GL_RGBA, 2, 2);
+    glTexImage2D(GL_TEXTURE_2D, 3, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glCallList(l + 1);
+    get_image(h, "replayed", GL_TEXTURE_2D, 3, GL_RGBA, 2, 2);
+    /* copies */
+    draw_picture(h);
+    glNewList(l + 2, GL_COMPILE);
+    glCopyTexImage2D(GL_TEXTURE_2D, 4, GL_RGB, 4, 4, 8, 8, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 4, 2, 2, 20, 20, 4, 4);
+    glCopyTexImage1D(GL_TEXTURE_1D, 1, GL_RGBA, 3, 3, 9, 0);
+    glCopyTexSubImage1D(GL_TEXTURE_1D, 1, 1, 10, 10, 4);
+    glCopyTexImage2D(GL_TEXTURE_2D, 4, 3, 0, 0, 8, 8, 0);
+    glEndList();
+    fc_error(h, "copies compiled");
+    level_params(h, "copy before call", GL_TEXTURE_2D, 4);
+    fc_capture(h);
+    glCallList(l + 2);
+    fc_error(h, "copies called");
+    get_image(h, "copy 2d", GL_TEXTURE_2D, 4, GL_RGBA, 8, 8);
+    get_image(h, "copy 1d", GL_TEXTURE_1D, 1, GL_RGBA, 9, 1);
+    /* glBegin while compiling: the image calls are errors, not compiled */
+    glNewList(l + 3, GL_COMPILE);
+    glBegin(GL_POINTS);
+    glTexImage2D(GL_TEXTURE_2D, 5, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 4, 0, 0, 0, 0, 1, 1);
+    glEnd();
+    glEndList();
+    fc_error(h, "inside begin compiled");
+    glCallList(l + 3);
+    fc_error(h, "inside begin called");
+    level_params(h, "level 5", GL_TEXTURE_2D, 5);
+    glDeleteLists(l, 4);
+    fc_error(h, "deleted");
+}
+
+/* glGetTexImage and glGetTexLevelParameter errors. */
+static void query_errors(fc_h *h)
+{
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_LUMINANCE, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+#define E(label, call) do { call; fc_error(h, label); } while (0)
+    E("get target proxy", glGetTexImage(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get target env", glGetTexImage(GL_TEXTURE_ENV, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get level", glGetTexImage(GL_TEXTURE_2D, 15, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get level -1", glGetTexImage(GL_TEXTURE_2D, -1, 0x1234, GL_UNSIGNED_BYTE, readback));
+    E("get 3d level 12", glGetTexImage(GL_TEXTURE_3D, 12, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get 3d level 11", glGetTexImage(GL_TEXTURE_3D, 11, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get rect level 1", glGetTexImage(GL_TEXTURE_RECTANGLE, 1, GL_RGBA, GL_UNSIGNED_BYTE, readback));
+    E("get format", glGetTexImage(GL_TEXTURE_2D, 0, 0x1234, GL_UNSIGNED_BYTE, readback));
+    E("get type", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, 0x1234, readback));
+    E("get packed", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, readback));
+    E("get depth", glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, readback));
+    E("get depth no image", glGetTexImage(GL_TEXTURE_2D, 4, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, readback));
+    E("get integer", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, readback));
+    E("get depth_stencil", glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, readback));
+    GLint v = -5;
+    E("lp target", glGetTexLevelParameteriv(GL_TEXTURE_ENV, 0, GL_TEXTURE_WIDTH, &v));
+    E("lp target cube", glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP, 0, GL_TEXTURE_WIDTH, &v));
+    E("lp level 15", glGetTexLevelParameteriv(GL_TEXTURE_2D, 15, GL_TEXTURE_WIDTH, &v));
+    E("lp level -1", glGetTexLevelParameteriv(GL_TEXTURE_1D, -1, GL_TEXTURE_WIDTH, &v));
+    E("lp 3d level 12", glGetTexLevelParameteriv(GL_TEXTURE_3D, 12, GL_TEXTURE_WIDTH, &v));
+    E("lp rect level 1", glGetTexLevelParameteriv(GL_TEXTURE_RECTANGLE, 1, GL_TEXTURE_WIDTH, &v));
+    E("lp pname", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_ENV_MODE, &v));
+    E("lp pname min filter", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &v));
+    E("lp compressed size", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &v));
+    E("lp compressed size none", glGetTexLevelParameteriv(GL_TEXTURE_2D, 7, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &v));
+    fc_value(h, "untouched", v);
+    glBegin(GL_POINTS);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &v);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    fc_value(h, "untouched 2", v);
+#undef E
+    level_params(h, "level 1", GL_TEXTURE_2D, 1);
+    level_params(h, "3d", GL_TEXTURE_3D, 0);
+    level_params(h, "cube face", GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 3);
+    level_params(h, "rect", GL_TEXTURE_RECTANGLE, 0);
+    level_params(h, "proxy cube", GL_PROXY_TEXTURE_CUBE_MAP, 0);
+    level_params(h, "1d array", GL_TEXTURE_1D_ARRAY, 2);
+    level_params(h, "proxy 1d none", GL_PROXY_TEXTURE_1D, 4);
+}
+
+/* Images belong to the bound object: binding, deleting, levels. */
+static void objects(fc_h *h)
+{
+    GLuint t[3];
+    glGenTextures(3, t);
+    fill_src(21);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGB5, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 8);
+    glBindTexture(GL_TEXTURE_2D, t[1]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 2, 5, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 40);
+    level_params(h, "t1", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    level_params(h, "t0", GL_TEXTURE_2D, 0);
+    level_params(h, "t0 1", GL_TEXTURE_2D, 1);
+    get_image(h, "t0", GL_TEXTURE_2D, 0, GL_RGBA, 3, 3);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    level_params(h, "default", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_1D, t[2]);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_INTENSITY, 4, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, src);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glDeleteTextures(1, &t[0]);
+    fc_error(h, "delete bound");
+    level_params(h, "after delete", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, t[1]);
+    get_image(h, "t1", GL_TEXTURE_2D, 0, GL_RGBA, 2, 5);
+    glDeleteTextures(2, &t[1]);
+    level_params(h, "1d after delete", GL_TEXTURE_1D, 0);
+    /* the default texture keeps its images across binds */
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glBindTexture(GL_TEXTURE_2D, 77);
+    level_params(h, "new name", GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    get_image(h, "default", GL_TEXTURE_2D, 0, GL_RGBA, 2, 2);
+}
+
+const fc_case fc_cases_tex_image[] = {
+    FC_CASE_RGBA("texture/image_formats_rgba", 8, 8, 0, "texture", formats_rgba),
+    FC_CASE_RGBA("texture/image_formats_rgb", 8, 8, 0, "texture", formats_rgb),
+    FC_CASE_RGBA("texture/image_formats_luminance", 8, 8, 0, "texture", formats_lum),
+    FC_CASE_RGBA("texture/image_formats_lum_alpha", 8, 8, 0, "texture", formats_la),
+    FC_CASE_RGBA("texture/image_formats_alpha", 8, 8, 0, "texture", formats_alpha),
+    FC_CASE_RGBA("texture/image_formats_1d", 8, 8, 0, "texture", formats_1d),
+    FC_CASE_RGBA("texture/image_readback_formats", 8, 8, 0, "texture", readback_formats),
+    FC_CASE_RGBA("texture/image_unpack_store", 8, 8, 0, "texture", unpack_store),
+    FC_CASE_RGBA("texture/image_border", 8, 8, 0, "texture", border),
+    FC_CASE_RGBA("texture/image_null_data", 8, 8, 0, "texture", null_data),
+    FC_CASE_RGBA("texture/image_packed_types", 8, 8, 0, "texture", packed_types),
+    FC_CASE_RGBA("texture/image_proxy", 8, 8, 0, "texture", proxy),
+    FC_CASE_RGBA("texture/image_out_of_memory", 8, 8, 0, "texture", out_of_memory),
+    FC_CASE_RGBA("texture/image_errors", 8, 8, 0, "texture", tex_image_errors),
+    FC_CASE_RGBA("texture/image_subimage", 8, 8, 0, "texture", sub_image),
+    FC_CASE_RGBA("texture/image_copy", 32, 32, 1, "texture", copy_image),
+    FC_CASE_RGBA("texture/image_copy_values", 256, 1, 1, "texture", copy_values_small),
+    FC_CASE_RGBA("texture/image_copy_r3g3b2", 256, 1, 1, "texture", copy_values_r3g3b2),
+    FC_CASE_RGBA("texture/image_query_errors", 8, 8, 0, "texture", query_errors),
+    FC_CASE_RGBA("texture/image_objects", 8, 8, 0, "texture", objects),
+    FC_CASE_RGBA("texture/image_dlist", 32, 32, 1, "texture dlist", lists),
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0 },
+};
