@@ -156,6 +156,13 @@ void fgl_flush_bitmap_cache(struct fgl_context *ctx)
    if (!c->Pending)
       return;
    c->Pending = false;
+   /* the cache is drawn into the framebuffer it was validated with; one
+    * replaced since (a rebind to another size reallocates the buffers)
+    * is gone, and so is the drawing */
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || fb->Color != c->Raster.color || fb->Width != c->Raster.width ||
+       fb->Height != c->Raster.height)
+      return;
    draw_bitmap_quad(&c->Raster, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
                     BITMAP_CACHE_WIDTH, BITMAP_CACHE_HEIGHT, c->Buffer, c->Color);
 }
