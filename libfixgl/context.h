@@ -824,6 +824,9 @@ void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
+/* The fog uniforms of the fragment program (STATE_FOG_PARAMS_OPTIMIZED,
+ * STATE_FOG_COLOR) from the current fog state into rs (state.c) */
+void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
 

@@ -241,6 +241,22 @@ static void bitmap_cache_order(fc_h *h)
     glBitmap(8, 10, 0, 0, 9, 0, rows);
     glDisable(GL_SCISSOR_TEST);
     fc_capture(h);
+    /* fog changed after the bitmaps: the cache's program is the last
+     * validated one, its constants (fog colour, end) the current ones */
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, -1.0f);
+    glFogf(GL_FOG_END, 1.0f);
+    GLfloat fred[4] = { 1, 0, 0, 1 }, fblue[4] = { 0, 0, 1, 1 };
+    glFogfv(GL_FOG_COLOR, fred);
+    glColor4f(0, 1, 0, 1);
+    window_pos(40.0f, 30.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 9, 0, rows);
+    glFogfv(GL_FOG_COLOR, fblue);
+    glFogf(GL_FOG_END, 3.0f);
+    glFogi(GL_FOG_MODE, GL_EXP);
+    glFinish();
+    glDisable(GL_FOG);
     /* a bitmap left in the cache at the end of a frame */
     window_pos(50.0f, 4.0f, 0.0f);
     glBitmap(8, 10, 0, 0, 9, 0, rows);

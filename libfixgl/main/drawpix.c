@@ -163,7 +163,13 @@ void fgl_flush_bitmap_cache(struct fgl_context *ctx)
    if (!fb || fb->Color != c->Raster.color || fb->Width != c->Raster.width ||
        fb->Height != c->Raster.height)
       return;
-   draw_bitmap_quad(&c->Raster, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
+   /* [S: st_cb_bitmap.c:setup_render_state] the shader variant is the
+    * last validated one, but its constants are uploaded now
+    * (st_upload_constants): the fog parameters and colour are the
+    * current ones */
+   struct r_state rs = c->Raster;
+   fgl_fog_uniforms(ctx, &rs);
+   draw_bitmap_quad(&rs, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
                     BITMAP_CACHE_WIDTH, BITMAP_CACHE_HEIGHT, c->Buffer, c->Color);
 }
 
