@@ -115,6 +115,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
       return;
    fgl_free_matrix(ctx);
    fgl_free_dlist(ctx);
+   fgl_free_drawpix_cache(ctx);
    fgl_free_texobj(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    free(ctx->_DrawVbuf.queue);

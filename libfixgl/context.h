@@ -774,6 +774,33 @@ struct fgl_context {
    struct fgl_feedback Feedback;
    struct fgl_selection Select;
 
+   /* ---- glBitmap's cache (main/drawpix.c) [S: st_cb_bitmap.c] ---- */
+   struct fgl_bitmap_cache {
+      bool Pending;            /* bitmaps accumulated, not drawn yet */
+      int XPos, YPos;          /* GL window position of the 512x32 image */
+      float ZPos;
+      float Color[4];
+      int FbWidth, FbHeight;
+      uint8_t Buffer[512 * 32]; /* R8 texels, row 0 at YPos: 0 draws */
+      struct r_state Raster;   /* the state last validated (the cso state
+                                * the cache is drawn with) */
+   } BitmapCache;
+
+   /* ---- glDrawPixels' image cache (main/drawpix.c)
+    * [S: st_cb_drawpixels.c:search_drawpixels_cache] ---- */
+   struct fgl_drawpix_cache {
+      struct fgl_drawpix_cache_entry {
+         GLsizei Width, Height;
+         GLenum Format, Type;
+         const void *UserPointer;
+         uint8_t *Image;          /* copy of the client bytes */
+         float *Texels;           /* the texture made of them */
+         uint8_t *Mask;
+         unsigned Age;
+      } Entries[4];
+      unsigned Age;
+   } DrawpixCache;
+
    /* ---- errors ---- */
    GLenum ErrorValue;
 
@@ -832,6 +859,9 @@ void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
+/* The fog uniforms of the fragment program (STATE_FOG_PARAMS_OPTIMIZED,
+ * STATE_FOG_COLOR) from the current fog state into rs (state.c) */
+void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
 

@@ -17,15 +17,9 @@
  * fixed-point colour buffer) and the fog coordinate as an input of the
  * fragment program (ff_fragment_shader.cpp: key->fog_mode from
  * _PackedEnabledMode). */
-static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
+void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs)
 {
    const struct fgl_fog_attrib *fog = &ctx->Fog;
-   if (!fog->Enabled) {
-      rs->fog_mode = R_FOG_NONE;
-      return;
-   }
-   rs->fog_mode = fog->Mode == GL_LINEAR ? R_FOG_LINEAR
-                : fog->Mode == GL_EXP    ? R_FOG_EXP : R_FOG_EXP2;
    /* start == end gives val = 1, so f = c - end */
    const float val = fog->End == fog->Start ? 1.0f : -1.0f / (fog->End - fog->Start);
    rs->fog_params[0] = val;
@@ -35,6 +29,18 @@ static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
    rs->fog_params[3] = (float)(fog->Density * 1.201122408786449815);
    for (int c = 0; c < 3; c++)
       rs->fog_color[c] = fog->Color[c];
+}
+
+static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
+{
+   const struct fgl_fog_attrib *fog = &ctx->Fog;
+   if (!fog->Enabled) {
+      rs->fog_mode = R_FOG_NONE;
+      return;
+   }
+   rs->fog_mode = fog->Mode == GL_LINEAR ? R_FOG_LINEAR
+                : fog->Mode == GL_EXP    ? R_FOG_EXP : R_FOG_EXP2;
+   fgl_fog_uniforms(ctx, rs);
    rs->fs_inputs |= 1u << R_FS_FOG;
    rs->num_attribs = R_ATTR_FOG + 1;
 }

@@ -53,6 +53,7 @@ extern const fc_case fc_cases_tex_coord[];
 extern const fc_case fc_cases_tex_sample[];
 extern const fc_case fc_cases_tex_env[];
 extern const fc_case fc_cases_tex_wrap[];
+extern const fc_case fc_cases_pix_draw[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

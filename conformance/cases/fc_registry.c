@@ -26,6 +26,7 @@ static const fc_case *const groups[] = {
     fc_cases_query_walk,
     fc_cases_eval,
     fc_cases_pixelstate,
+    fc_cases_pix_draw,
     fc_cases_rasterpos,
     fc_cases_windowpos,
     fc_cases_tex_sample,

@@ -105,6 +105,8 @@ void GLAPIENTRY glClear(GLbitfield mask)
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb)
       return;
+   /* [S: st_cb_clear.c:st_Clear] glBitmap's cache is drawn first */
+   fgl_flush_bitmap_cache(ctx);
    fgl_update_state(ctx);
    const struct r_state *rs = &ctx->_Raster;
    if (ctx->Color.DrawBuffer != GL_NONE)

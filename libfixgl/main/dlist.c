@@ -88,6 +88,10 @@ enum dl_opcode {
    DL_OP_EVAL_P2,          /* i, j */
    DL_OP_CALL_LIST,        /* list */
    DL_OP_CALL_LISTS,       /* n, type, pointer to a copy of the names */
+   DL_OP_BITMAP,           /* width, height, xorig, yorig, xmove, ymove,
+                            * pointer to the bitmap texture */
+   DL_OP_DRAW_PIXELS,      /* width, height, format, type, pointer to the
+                            * image copy */
    DL_OP_ERROR,            /* a compiled error */
    DL_OP_TEX_IMAGE,        /* dims, target, level, internal, width, height,
                             * border, format, type, pointer to the image */
@@ -315,6 +319,10 @@ static void delete_list(struct display_list *dl)
          free_vertex_list(get_pointer(&n[1]));
       else if (n->h.op == DL_OP_CALL_LISTS)
          free(get_pointer(&n[3]));
+      else if (n->h.op == DL_OP_BITMAP)
+         free(get_pointer(&n[7]));
+      else if (n->h.op == DL_OP_DRAW_PIXELS)
+         free(get_pointer(&n[5]));
       else if (n->h.op == DL_OP_TEX_IMAGE || n->h.op == DL_OP_TEX_SUB_IMAGE)
          free(get_pointer(&n[10]));
    }
@@ -2357,6 +2365,13 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
             ctx->ListState->call_depth--;
          }
          break;
+      case DL_OP_BITMAP:
+         fgl_exec_list_bitmap(ctx, n[1].i, n[2].i, n[3].f, n[4].f, n[5].f, n[6].f,
+                              get_pointer(&n[7]));
+         break;
+      case DL_OP_DRAW_PIXELS:
+         fgl_exec_list_drawpixels(ctx, n[1].i, n[2].i, n[3].e, n[4].e, get_pointer(&n[5]));
+         break;
       case DL_OP_ERROR:
          fgl_error(ctx, n[1].e);
          break;
@@ -2760,4 +2775,53 @@ bool fgl_get_list_value(const struct fgl_context *ctx, GLenum pname, int *value)
    default:
       return false;
    }
+}
+
+/* [S: dlist.c:save_Bitmap] the bitmap becomes a texture at compile time
+ * (st_make_bitmap_texture; without data: GL_OUT_OF_MEMORY and no node);
+ * GL_COMPILE_AND_EXECUTE draws that texture at once */
+bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLfloat xorig,
+                     GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bits)
+{
+   if (!save_prologue(ctx))
+      return false;
+   uint8_t *tex = fgl_make_bitmap_texture(ctx, width, height, bits);
+   if (!tex) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return false;
+   }
+   union dl_node *n = alloc_node(ctx, DL_OP_BITMAP, 6 + PTR_NODES);
+   if (!n) {
+      free(tex);
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return false;
+   }
+   n[1].i = width;
+   n[2].i = height;
+   n[3].f = xorig;
+   n[4].f = yorig;
+   n[5].f = xmove;
+   n[6].f = ymove;
+   put_pointer(&n[7], tex);
+   if (ctx->ExecuteFlag)
+      fgl_exec_list_bitmap(ctx, width, height, xorig, yorig, xmove, ymove, tex);
+   return false;
+}
+
+/* [S: dlist.c:save_DrawPixels] the image copied with the unpack state
+ * (unpack_image), replayed with the default packing */
+bool fgl_save_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                         GLenum format, GLenum type, const GLvoid *pixels)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_DRAW_PIXELS, 4 + PTR_NODES);
+   if (n) {
+      n[1].i = width;
+      n[2].i = height;
+      n[3].e = format;
+      n[4].e = type;
+      put_pointer(&n[5], fgl_pack_list_image(ctx, width, height, format, type, pixels));
+   }
+   return ctx->ExecuteFlag;
 }

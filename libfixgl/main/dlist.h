@@ -114,6 +114,20 @@ bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v);
 bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i);
 bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j);
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+/* glBitmap and glDrawPixels (main/drawpix.c keeps their images) */
+bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLfloat xorig,
+                     GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bits);
+bool fgl_save_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                         GLenum format, GLenum type, const GLvoid *pixels);
+uint8_t *fgl_make_bitmap_texture(const struct fgl_context *ctx, GLsizei width,
+                                 GLsizei height, const GLubyte *bits);
+void fgl_exec_list_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                          GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+                          const uint8_t *tex);
+GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsizei height,
+                            GLenum format, GLenum type, const GLvoid *pixels);
+void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                              GLenum format, GLenum type, const GLvoid *pixels);
 /* the texture image commands (main/teximage.c); these return whether the
  * entry point goes on to execute */
 bool fgl_save_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target, GLint level,

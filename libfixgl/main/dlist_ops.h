@@ -55,6 +55,7 @@ DL_OP1(DrawBuffer, E)
 DL_OP1(ReadBuffer, E)         /* GL_PIXEL_MODE_BIT state, compiled by Mesa */
 DL_OP2(PixelTransferf, E, F)  /* glPixelTransferi: converted, then this */
 DL_OP2(PixelZoom, F, F)
+DL_OP5(CopyPixels, I, I, SZ, SZ, E)
 DL_OPV2(PixelMapfv, E, SZ, F, 256) /* uiv/usv converted at compile time
                                     * (save_PixelMapuiv/usv); the hook
                                     * passes min(mapsize, 256) values */

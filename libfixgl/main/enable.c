@@ -209,6 +209,10 @@ bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state)
       fgl_set_color_material_enabled(ctx, state);
       return true;
    }
+   /* [S: main/enable.c:_mesa_set_enable GL_SCISSOR_TEST] a change draws
+    * glBitmap's cache first */
+   if (cap == GL_SCISSOR_TEST)
+      fgl_flush_bitmap_cache(ctx);
    FGL_FLUSH_VERTICES(ctx, dirty);
    *flag = state;
    return true;

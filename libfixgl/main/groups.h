@@ -128,6 +128,12 @@ void fgl_set_viewport(struct fgl_context *ctx, int x, int y, int width, int heig
 /* main/misc.c: make the framebuffer's content visible to the application
  * (glFlush/glFinish). */
 void fgl_flush_front(struct fgl_context *ctx);
+/* main/drawpix.c: draw the bitmaps glBitmap has accumulated
+ * [S: st_cb_bitmap.c:st_flush_bitmap_cache]; every draw, clear, pixel
+ * read or copy, scissor change and flush calls it first */
+void fgl_flush_bitmap_cache(struct fgl_context *ctx);
+/* main/drawpix.c: frees glDrawPixels' image cache */
+void fgl_free_drawpix_cache(struct fgl_context *ctx);
 
 /* main/enable.c: whether pname is a capability; its state in *value */
 bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value);

@@ -12,6 +12,8 @@
 void fgl_flush_front(struct fgl_context *ctx)
 {
    FGL_FLUSH_VERTICES(ctx, 0);
+   /* [S: st_cb_flush.c:st_flush] glBitmap's cache is drawn first */
+   fgl_flush_bitmap_cache(ctx);
    if (ctx->DrawBuffer && ctx->DrawBuffer->FlushFront)
       ctx->DrawBuffer->FlushFront(ctx->DrawBuffer);
 }

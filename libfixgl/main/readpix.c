@@ -304,8 +304,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    if (r.height <= 0)
       return;
    /* [S: st_cb_readpixels.c:st_ReadPixels] runs from here: it draws
-    * glBitmap's cache first (pixdraw's fgl_flush_bitmap_cache belongs
-    * here, NULL pixels included) */
+    * glBitmap's cache first, NULL pixels included */
+   fgl_flush_bitmap_cache(ctx);
    if (!pixels)
       return;
 

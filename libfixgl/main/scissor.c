@@ -23,6 +23,9 @@ void fgl_set_scissor(struct fgl_context *ctx, int x, int y, int width, int heigh
    if (x == ctx->Scissor.X && y == ctx->Scissor.Y &&
        width == ctx->Scissor.Width && height == ctx->Scissor.Height)
       return;
+   /* a new box with the test on draws glBitmap's cache first */
+   if (ctx->Scissor.Enabled)
+      fgl_flush_bitmap_cache(ctx);
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_SCISSOR);
    ctx->Scissor.X = x;
    ctx->Scissor.Y = y;

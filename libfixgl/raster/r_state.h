@@ -361,7 +361,63 @@ struct r_state {
    /* some unit's lookup needs the pair quad (r_tex_need_pair): the
     * primitives fill r_fs_quad.pair */
    bool tex_pair;
+   /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c): the state
+    * tracker's textured quad replaces the fragment shader; NULL for every
+    * other primitive */
+   const struct r_pixel_image *pix;
 };
+
+/* The image a pixel rectangle samples (r_pixels.c), NEAREST with
+ * CLAMP_TO_EDGE, normalized coordinates; row 0 is t = 0. */
+enum r_pixel_kind {
+   R_PIX_BITMAP,     /* R8 texels: a texel != 0 kills (nir_lower_bitmap) */
+   R_PIX_COLOR,      /* RGBA float texels replace the fragment program's
+                      * primary colour (nir_lower_drawpixels) */
+   R_PIX_DEPTH,      /* float depth texels: the fragment depth; the colour
+                      * is the vertex colour (drawpix Z shader) */
+   R_PIX_STENCIL,    /* stencil texels exported as the stencil reference */
+};
+
+struct r_pixel_image {
+   enum r_pixel_kind kind;
+   int width, height;
+   const uint8_t *mask;      /* R_PIX_BITMAP, R_PIX_STENCIL */
+   const float *texels;      /* R_PIX_COLOR: 4 floats a texel; R_PIX_DEPTH: 1 */
+   /* R_PIX_COLOR: the shader's pixel transfer, texel * scale + bias
+    * (fmul, fadd: llvmpipe lowers ffma), then the colour maps */
+   bool scale_bias;
+   float scale[4], bias[4];
+   bool map_color;
+   const float *maps[4];     /* R, G, B, A maps (GL_PIXEL_MAP_x_TO_x) */
+   int map_size[4];
+   /* R_PIX_STENCIL with R_PIX_DEPTH values too (GL_DEPTH_STENCIL) */
+   bool with_stencil;
+   /* R_PIX_COLOR: the texel is the fragment colour, no fixed-function
+    * program (glCopyPixels of GL_DEPTH_STENCIL_TO_RGBA/BGRA_NV) */
+   bool raw_color;
+};
+
+/* A pixel rectangle drawn as the state tracker's textured quad
+ * (st_draw_quad through the passthrough vertex shader): corners x0..x1,
+ * y0..y1 in GL window coordinates (y up) of a fb_width x fb_height
+ * buffer, window depth z, a constant colour, texture coordinates s0..s1
+ * and t at y0 (t_y0) and y1 (t_y1). */
+struct r_pixel_quad {
+   float x0, y0, x1, y1, z;
+   int fb_width, fb_height;
+   float color[4];
+   float s0, s1, t_y0, t_y1;
+};
+
+/* Draws the quad with `pix` sampled per fragment, through the triangle
+ * rasterizer and r_fragment_ops (r_pixels.c). */
+void r_pixel_rect(const struct r_state *rs, const struct r_pixel_image *pix,
+                  const struct r_pixel_quad *q);
+
+/* The fragment stage of a pixel rectangle: fragment (px, py) with the
+ * interpolated inputs and depth (r_tri.c calls it instead of the
+ * fragment shader when rs->pix is set). */
+void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z);
 
 /* The fragment stage (r_frag.c), shared by every primitive.
  * r_fragment_shader: the fixed-function fragment program, from the

@@ -274,6 +274,11 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
+   if (rs->pix) {
+      /* a pixel rectangle's quad: its own fragment stage (r_pixels.c) */
+      r_pixel_fragment(rs, px, py, (const float (*)[4])in, eval_plane(&ts->z, fx, fy));
+      return;
+   }
    float color[4];
    if (rs->tex_units) {
       shade_textured(rs, ts, (const float (*)[4])in, px, py, color);

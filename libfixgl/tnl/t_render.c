@@ -31,6 +31,7 @@
 #endif
 
 #include "context.h"
+#include "main/groups.h"
 
 #define SEGMENT_SIZE 4096
 
@@ -244,6 +245,9 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
 {
+   /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
+    * the state validated before this draw's */
+   fgl_flush_bitmap_cache(ctx);
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;

@@ -1,0 +1,1292 @@
+/*
+ * glBitmap, glDrawPixels and glCopyPixels [S: main/drawpix.c,
+ * state_tracker/st_cb_bitmap.c, st_cb_drawpixels.c].
+ *
+ * The oracle draws each as a texture plus a screen-aligned quad whose
+ * fragment shader samples it (raster/r_pixels.c).  This file validates,
+ * builds the texture exactly as the state tracker fills it, and places
+ * the quad:
+ *  - glBitmap: the bitmap is expanded into the state tracker's 512x32
+ *    bitmap cache (0 where a bit is set, 0xff elsewhere), which is drawn
+ *    later, as one quad, with the raster colour and depth of its first
+ *    bitmap and the state validated last: when a bitmap does not fit or
+ *    its colour or depth differs, and before every draw, clear, pixel
+ *    read or copy, scissor change and flush (st_flush_bitmap_cache's
+ *    callers).  State changes alone do not draw it.
+ *  - glDrawPixels: colour images replace the fixed-function program's
+ *    primary colour (scale/bias and colour maps in the shader), depth and
+ *    stencil images write the fragment depth or the stencil value.
+ *  - glCopyPixels: a blit when nothing per-fragment applies (no zoom, no
+ *    overlap), otherwise the source copied into a texture and drawn.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "main/dlist.h"
+#include "main/pixelformat.h"
+#include "main/groups.h"
+
+#define BITMAP_CACHE_WIDTH  512
+#define BITMAP_CACHE_HEIGHT 32
+
+/* ---- helpers ---- */
+
+/* util_ifloor (u_math.h) */
+static int ifloor(float f)
+{
+   return (int)floorf(f);
+}
+
+/* The window-buffer orientation: the oracle renders y-down; the quads
+ * are placed in GL's y-up window coordinates and the viewport flips
+ * them (r_pixels.c). */
+static void quad_init(struct r_pixel_quad *q, const struct fgl_framebuffer *fb, float z,
+                      const float color[4])
+{
+   memset(q, 0, sizeof(*q));
+   q->fb_width = fb->Width;
+   q->fb_height = fb->Height;
+   q->z = z;
+   memcpy(q->color, color, sizeof(q->color));
+}
+
+/* [S: feedback.c:_mesa_feedback_vertex] for the raster position */
+static void feedback_raster(struct fgl_context *ctx, GLenum token)
+{
+   const struct fgl_current_attrib *cur = &ctx->Current;
+   const unsigned mask = ctx->Feedback.Mask;
+   fgl_feedback_token(ctx, (GLfloat)(GLint)token);
+   fgl_feedback_token(ctx, cur->RasterPos[0]);
+   fgl_feedback_token(ctx, cur->RasterPos[1]);
+   if (mask & FGL_FB_3D)
+      fgl_feedback_token(ctx, cur->RasterPos[2]);
+   if (mask & FGL_FB_4D)
+      fgl_feedback_token(ctx, cur->RasterPos[3]);
+   if (mask & FGL_FB_COLOR)
+      for (int c = 0; c < 4; c++)
+         fgl_feedback_token(ctx, cur->RasterColor[c]);
+   if (mask & FGL_FB_TEXTURE)
+      for (int c = 0; c < 4; c++)
+         fgl_feedback_token(ctx, cur->RasterTexCoords[0][c]);
+}
+
+/* ---- glBitmap ---- */
+
+/* _mesa_image_offset for GL_BITMAP data */
+static const uint8_t *bitmap_row(const struct fgl_pixelstore *p, const uint8_t *bitmap,
+                                 int width, int row)
+{
+   const size_t ppr = (size_t)(p->RowLength > 0 ? p->RowLength : width);
+   const size_t align = (size_t)p->Alignment;
+   const size_t bytes_per_row = align * ((ppr + 8 * align - 1) / (8 * align));
+   return bitmap + ((size_t)p->SkipRows + (size_t)row) * bytes_per_row +
+          (size_t)p->SkipPixels / 8;
+}
+
+/* [S: main/pack.c:_mesa_expand_bitmap] with onValue 0: a set bit stores
+ * 0 (drawn), a clear bit leaves the byte (0xff) */
+static void expand_bitmap(const struct fgl_pixelstore *p, const uint8_t *bitmap, int width,
+                          int height, uint8_t *dst, int dst_stride)
+{
+   for (int row = 0; row < height; row++) {
+      const uint8_t *src = bitmap_row(p, bitmap, width, row);
+      uint8_t *d = dst + (size_t)row * (size_t)dst_stride;
+      if (p->LsbFirst) {
+         unsigned mask = 1u << (p->SkipPixels & 7);
+         for (int col = 0; col < width; col++) {
+            if (*src & mask)
+               d[col] = 0;
+            if (mask == 128u) {
+               src++;
+               mask = 1u;
+            } else {
+               mask <<= 1;
+            }
+         }
+      } else {
+         unsigned mask = 128u >> (p->SkipPixels & 7);
+         for (int col = 0; col < width; col++) {
+            if (*src & mask)
+               d[col] = 0;
+            if (mask == 1u) {
+               src++;
+               mask = 128u;
+            } else {
+               mask >>= 1;
+            }
+         }
+      }
+   }
+}
+
+/* Draws a bitmap texture of w x h texels at GL window (x, y) with the
+ * state rs [S: st_cb_bitmap.c:draw_bitmap_quad]: texture coordinates 0..1,
+ * t = 1 at the top edge. */
+static void draw_bitmap_quad(const struct r_state *rs, int fb_w, int fb_h, int x, int y,
+                             float z, int w, int h, const uint8_t *texels, const float color[4])
+{
+   if (!rs->color && !rs->zs)
+      return;
+   const struct r_pixel_image img = {
+      .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
+   };
+   struct r_pixel_quad q;
+   memset(&q, 0, sizeof(q));
+   q.fb_width = fb_w;
+   q.fb_height = fb_h;
+   q.z = z;
+   memcpy(q.color, color, sizeof(q.color));
+   q.x0 = (float)x;
+   q.x1 = (float)(x + w);
+   q.y0 = (float)y;
+   q.y1 = (float)(y + h);
+   q.s0 = 0.0f;
+   q.s1 = 1.0f;
+   /* st_draw_quad(..., sLeft, tBot = 1, sRight, tTop = 0): t0 = 1 goes to
+    * the y1 corners */
+   q.t_y1 = 1.0f;
+   q.t_y0 = 0.0f;
+   r_pixel_rect(rs, &img, &q);
+}
+
+void fgl_flush_bitmap_cache(struct fgl_context *ctx)
+{
+   struct fgl_bitmap_cache *c = &ctx->BitmapCache;
+   if (!c->Pending)
+      return;
+   c->Pending = false;
+   /* the cache is drawn into the framebuffer it was validated with; one
+    * replaced since (a rebind to another size reallocates the buffers)
+    * is gone, and so is the drawing */
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || fb->Color != c->Raster.color || fb->Width != c->Raster.width ||
+       fb->Height != c->Raster.height)
+      return;
+   /* [S: st_cb_bitmap.c:setup_render_state] the shader variant is the
+    * last validated one, but its constants are uploaded now
+    * (st_upload_constants): the fog parameters and colour are the
+    * current ones */
+   struct r_state rs = c->Raster;
+   fgl_fog_uniforms(ctx, &rs);
+   draw_bitmap_quad(&rs, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
+                    BITMAP_CACHE_WIDTH, BITMAP_CACHE_HEIGHT, c->Buffer, c->Color);
+}
+
+/* TEST_EQ_4V: == per component (-0 equals 0, NaN never equal) */
+static bool same_color(const float a[4], const float b[4])
+{
+   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3];
+}
+
+/* [S: st_cb_bitmap.c:accum_bitmap] false if the bitmap is too big to
+ * cache, or has no data (no PBO: _mesa_map_pbo_source returns the NULL
+ * pointer, after the cache took its position) */
+static bool accum_bitmap(struct fgl_context *ctx, int x, int y, int width, int height,
+                         const uint8_t *bitmap)
+{
+   struct fgl_bitmap_cache *c = &ctx->BitmapCache;
+   const float z = ctx->Current.RasterPos[2];
+   int px = 0, py = 0;
+
+   if (width > BITMAP_CACHE_WIDTH || height > BITMAP_CACHE_HEIGHT)
+      return false;
+   if (c->Pending) {
+      px = x - c->XPos;
+      py = y - c->YPos;
+      if (px < 0 || px + width > BITMAP_CACHE_WIDTH || py < 0 ||
+          py + height > BITMAP_CACHE_HEIGHT || !same_color(ctx->Current.RasterColor, c->Color) ||
+          fabsf(z - c->ZPos) > 1e-06)
+         fgl_flush_bitmap_cache(ctx);
+   }
+   if (!c->Pending) {
+      /* centre the bitmap vertically in the cache */
+      px = 0;
+      py = (BITMAP_CACHE_HEIGHT - height) / 2;
+      c->XPos = x;
+      c->YPos = y - py;
+      c->ZPos = z;
+      c->Pending = true;
+      memcpy(c->Color, ctx->Current.RasterColor, sizeof(c->Color));
+      memset(c->Buffer, 0xff, sizeof(c->Buffer));
+      c->FbWidth = ctx->DrawBuffer->Width;
+      c->FbHeight = ctx->DrawBuffer->Height;
+   }
+   if (!bitmap)
+      return false;
+   expand_bitmap(&ctx->Unpack, bitmap, width, height,
+                 c->Buffer + (size_t)py * BITMAP_CACHE_WIDTH + (size_t)px, BITMAP_CACHE_WIDTH);
+   return true;
+}
+
+/* [S: drawpix.c:_mesa_bitmap, st_cb_bitmap.c:st_Bitmap]; `tex`: the
+ * texels a display list made at compile time (st_make_bitmap_texture),
+ * drawn at once after the cache */
+static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLfloat xorig,
+                   GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bits,
+                   const uint8_t *tex)
+{
+   if (width < 0 || height < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (!ctx->Current.RasterPosValid)
+      return;   /* nothing, not even the move */
+   fgl_update_state(ctx);
+
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (ctx->RenderMode == GL_RENDER) {
+      /* truncate, with an epsilon */
+      if (width > 0 && height > 0 && fb) {
+         const float eps = 0.0001f;
+         const int x = ifloor(ctx->Current.RasterPos[0] + eps - xorig);
+         const int y = ifloor(ctx->Current.RasterPos[1] + eps - yorig);
+         if (ctx->Color.DrawBuffer != GL_NONE)
+            fb->ColorDefined = true;
+         if (tex)
+            fgl_flush_bitmap_cache(ctx);
+         /* the cache is drawn with the state validated last: this call's */
+         ctx->BitmapCache.Raster = ctx->_Raster;
+         if (tex) {
+            draw_bitmap_quad(&ctx->_Raster, fb->Width, fb->Height, x, y,
+                             ctx->Current.RasterPos[2], width, height, tex,
+                             ctx->Current.RasterColor);
+         } else if (!accum_bitmap(ctx, x, y, width, height, bits) && bits) {
+            /* too big: a texture of its own, drawn at once */
+            uint8_t *t = malloc((size_t)width * (size_t)height);
+            if (!t) {
+               fgl_error(ctx, GL_OUT_OF_MEMORY);
+               return;
+            }
+            memset(t, 0xff, (size_t)width * (size_t)height);
+            expand_bitmap(&ctx->Unpack, bits, width, height, t, width);
+            draw_bitmap_quad(&ctx->_Raster, fb->Width, fb->Height, x, y,
+                             ctx->Current.RasterPos[2], width, height, t,
+                             ctx->Current.RasterColor);
+            free(t);
+         }
+      }
+   } else if (ctx->RenderMode == GL_FEEDBACK) {
+      fgl_flush_current(ctx);
+      feedback_raster(ctx, GL_BITMAP_TOKEN);
+   }
+   /* GL_SELECT: nothing */
+
+   ctx->Current.RasterPos[0] += xmove;
+   ctx->Current.RasterPos[1] += ymove;
+}
+
+void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig,
+                         GLfloat xmove, GLfloat ymove, const GLubyte *bits)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_bitmap(ctx, width, height, xorig, yorig, xmove, ymove,
+                                            bits))
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   FGL_FLUSH_VERTICES(ctx, 0);
+   bitmap(ctx, width, height, xorig, yorig, xmove, ymove, bits, NULL);
+}
+
+/* [S: st_cb_bitmap.c:st_make_bitmap_texture] the texels a compiled
+ * glBitmap keeps: 0 where a bit is set, 0xff elsewhere; NULL without
+ * data (the list then gets no node and GL_OUT_OF_MEMORY) */
+uint8_t *fgl_make_bitmap_texture(const struct fgl_context *ctx, GLsizei width,
+                                 GLsizei height, const GLubyte *bits)
+{
+   if (!bits || width < 0 || height < 0)
+      return NULL;
+   const size_t n = (size_t)width * (size_t)height;
+   uint8_t *t = malloc(n ? n : 1);
+   if (!t)
+      return NULL;
+   memset(t, 0xff, n ? n : 1);
+   expand_bitmap(&ctx->Unpack, bits, width, height, t, width);
+   return t;
+}
+
+/* OPCODE_BITMAP: _mesa_bitmap with the compiled texture (glBitmap inside
+ * glBegin/glEnd is GL_INVALID_OPERATION there) */
+void fgl_exec_list_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                          GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+                          const uint8_t *tex)
+{
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, 0);
+   bitmap(ctx, width, height, xorig, yorig, xmove, ymove, NULL, tex);
+}
+
+/* ---- format and type checks ---- */
+
+/* [S: framebuffer.c:_mesa_dest_buffer_exists] for depth and stencil */
+static bool zs_buffer_exists(const struct fgl_framebuffer *fb, GLenum format)
+{
+   if (!fb)
+      return false;
+   switch (format) {
+   case GL_DEPTH_COMPONENT: return fb->DepthBits > 0;
+   case GL_STENCIL_INDEX:   return fb->StencilBits > 0;
+   case GL_DEPTH_STENCIL:   return fb->DepthBits > 0 && fb->StencilBits > 0;
+   default:                 return true;
+   }
+}
+
+/* ---- glDrawPixels ---- */
+
+/* The float RGBA a colour sample of the oracle's texture returns for one
+ * component value of the client image: the texture format matches the
+ * client format and type (st_choose_matching_format), so normalized
+ * integers come back as value * (float)(1 / (2^n - 1))
+ * [S: gallivm/lp_bld_conv.c:lp_build_unsigned_norm_to_float] and floats
+ * unchanged. */
+static bool color_component(GLenum type, const uint8_t *src, int i, float *out)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE:
+      *out = (float)src[i] * (float)(1.0 / 255.0);
+      return true;
+   case GL_UNSIGNED_SHORT: {
+      uint16_t v;
+      memcpy(&v, src + 2 * i, 2);
+      *out = (float)v * (float)(1.0 / 65535.0);
+      return true;
+   }
+   case GL_FLOAT:
+      memcpy(out, src + 4 * i, 4);
+      return true;
+   default:
+      return false;
+   }
+}
+
+/* The client colour image as the RGBA texels the oracle samples
+ * (missing channels 0, alpha 1; luminance in r, g, b), rows bottom-up.
+ * False for the formats and types fixgl does not draw yet. */
+static bool unpack_color_texels(const struct fgl_pixelstore *p, const void *pixels,
+                                int width, int height, GLenum format, GLenum type,
+                                float *dst)
+{
+   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_FLOAT)
+      return false;
+   if (p->SwapBytes && type != GL_UNSIGNED_BYTE)
+      return false;
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, format, type, y, 0);
+      const size_t bpp = fgl_pixel_bytes(format, type);
+      for (int x = 0; x < width; x++, src += bpp) {
+         float c[4] = { 0.0f, 0.0f, 0.0f, 1.0f }, v0, v1, v2, v3;
+         switch (format) {
+         case GL_RGBA:
+            color_component(type, src, 0, &c[0]);
+            color_component(type, src, 1, &c[1]);
+            color_component(type, src, 2, &c[2]);
+            color_component(type, src, 3, &c[3]);
+            break;
+         case GL_BGRA:
+            color_component(type, src, 2, &c[0]);
+            color_component(type, src, 1, &c[1]);
+            color_component(type, src, 0, &c[2]);
+            color_component(type, src, 3, &c[3]);
+            break;
+         case GL_RGB:
+            color_component(type, src, 0, &c[0]);
+            color_component(type, src, 1, &c[1]);
+            color_component(type, src, 2, &c[2]);
+            break;
+         case GL_BGR:
+            color_component(type, src, 2, &c[0]);
+            color_component(type, src, 1, &c[1]);
+            color_component(type, src, 0, &c[2]);
+            break;
+         case GL_RG:
+            color_component(type, src, 0, &c[0]);
+            color_component(type, src, 1, &c[1]);
+            break;
+         case GL_RED:   color_component(type, src, 0, &c[0]); break;
+         case GL_GREEN: color_component(type, src, 0, &c[1]); break;
+         case GL_BLUE:  color_component(type, src, 0, &c[2]); break;
+         case GL_ALPHA: color_component(type, src, 0, &c[3]); break;
+         case GL_LUMINANCE:
+            color_component(type, src, 0, &v0);
+            c[0] = c[1] = c[2] = v0;
+            break;
+         case GL_LUMINANCE_ALPHA:
+            color_component(type, src, 0, &v0);
+            color_component(type, src, 1, &v1);
+            c[0] = c[1] = c[2] = v0;
+            c[3] = v1;
+            break;
+         default:
+            (void)v2;
+            (void)v3;
+            return false;
+         }
+         memcpy(dst + 4 * ((size_t)y * (size_t)width + (size_t)x), c, sizeof(c));
+      }
+   }
+   return true;
+}
+
+/* The depth texels of a GL_DEPTH_COMPONENT image, as texstore fills the
+ * matching depth texture and the sampler reads it back
+ * [S: pack.c:_mesa_unpack_depth_span; texstore.c:texstore_z32f,
+ * texstore_z16, texstore_z32; lp_bld_conv.c:lp_build_unsigned_norm_to_float]:
+ *   GL_FLOAT        Z32F: clamp01(d * scale + bias)
+ *   GL_UNSIGNED_SHORT Z16: (ushort)(d * 65535.0f), read as z * (1/65535)
+ *   GL_UNSIGNED_INT Z32: (uint)(d * 4294967295.0), read through its top 23
+ *                   bits
+ * where d is the value converted to float (USHORT_TO_FLOAT, UINT_TO_FLOAT),
+ * scaled and biased and clamped when the transfer is not the identity. */
+static bool unpack_depth_texels(const struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                const void *pixels, int width, int height, GLenum type,
+                                float *dst)
+{
+   if (type != GL_FLOAT && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
+      return false;
+   if (p->SwapBytes)
+      return false;
+   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
+   const bool identity = scale == 1.0f && bias == 0.0f;
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_COMPONENT, type, y, 0);
+      for (int x = 0; x < width; x++) {
+         float d, t;
+         bool clamp = false;
+         if (type == GL_FLOAT) {
+            memcpy(&d, src + 4 * x, 4);
+            clamp = true;
+         } else if (type == GL_UNSIGNED_SHORT) {
+            uint16_t v;
+            memcpy(&v, src + 2 * x, 2);
+            d = (float)v * (1.0f / 65535.0f);
+         } else {
+            uint32_t v;
+            memcpy(&v, src + 4 * x, 4);
+            d = (float)((double)v * (double)(1.0f / 4294967295.0));
+         }
+         if (!identity) {
+            d = d * scale + bias;
+            clamp = true;
+         }
+         if (clamp)
+            d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;   /* Mesa's CLAMP */
+         if (identity) {
+            /* _mesa_texstore_can_use_memcpy: the texture is the client
+             * data as is (a float unclamped, an integer not rounded
+             * through float) */
+            if (type == GL_FLOAT) {
+               memcpy(&t, src + 4 * x, 4);
+            } else if (type == GL_UNSIGNED_SHORT) {
+               uint16_t v;
+               memcpy(&v, src + 2 * x, 2);
+               t = (float)v * (float)(1.0 / 65535.0);
+            } else {
+               uint32_t v;
+               memcpy(&v, src + 4 * x, 4);
+               const uint32_t bits = (v >> 9) | 0x3f800000u;
+               float f;
+               memcpy(&f, &bits, 4);
+               t = (f - 1.0f) * (float)(8388608.0 / 8388607.0);
+            }
+         } else if (type == GL_FLOAT) {
+            t = d;
+         } else if (type == GL_UNSIGNED_SHORT) {
+            const uint16_t z = (uint16_t)(d * 65535.0f);
+            t = (float)z * (float)(1.0 / 65535.0);
+         } else {
+            const double zd = (double)d * 4294967295.0;
+            const uint32_t z = zd >= 4294967295.0 ? 0xffffffffu : (uint32_t)zd;
+            const uint32_t bits = (z >> 9) | 0x3f800000u;
+            float f;
+            memcpy(&f, &bits, 4);
+            t = (f - 1.0f) * (float)(8388608.0 / 8388607.0);
+         }
+         dst[(size_t)y * (size_t)width + (size_t)x] = t;
+      }
+   }
+   return true;
+}
+
+/* The depth texels of the other types: the GL_DEPTH_COMPONENT texture is
+ * Z24X8 (st_format.c DEFAULT_DEPTH_FORMATS), filled by _mesa_unpack_depth_span
+ * (conversion, scale and bias, clamp) and (GLuint)(d * (float)0xffffff),
+ * sampled as z * (float)(1 / 0xffffff). */
+static bool unpack_depth_texels_z24(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                    const void *pixels, int width, int height, GLenum type,
+                                    float *dst)
+{
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_COMPONENT, type, y, 0);
+      float *row = dst + (size_t)y * (size_t)width;
+      fgl_unpack_depth_span_float(ctx, p, (size_t)width, type, src, row);
+      for (int x = 0; x < width; x++) {
+         const uint32_t z = (uint32_t)(row[x] * (float)0xffffff);
+         row[x] = (float)z * (float)(1.0 / 16777215.0);
+      }
+   }
+   return true;
+}
+
+/* The colour texels of the formats and types unpack_color_texels leaves:
+ * through main/pixelformat.c without transfer operations (make_texture
+ * clears _ImageTransferState).  The matching texture formats (snorm,
+ * half float, the packed unorm formats) sample as those floats, up to the
+ * last bit of the unorm conversions, which no output rounding sees.
+ * GL_COLOR_INDEX goes through the I_TO_R/G/B/A maps into an RGBA8
+ * texture (_mesa_unpack_color_index_to_rgba_ubyte, CLAMPED_FLOAT_TO_UBYTE:
+ * the index shift and offset are off as well). */
+/* The channel widths (r, g, b, a; 0: none) of the types whose matching
+ * texture formats fit in 8-bit unorm: llvmpipe samples them on its AoS
+ * path, which widens each channel to 8 bits by repeating its bits
+ * (util_format's unpack_rgba_8unorm: (c << 3) | (c >> 2) for 5 bits)
+ * before the conversion to float, t * (float)(1/255). */
+static bool unorm8_widths(GLenum type, int w[4])
+{
+   static const int w332[4] = { 3, 3, 2, 0 }, w565[4] = { 5, 6, 5, 0 },
+                    w4444[4] = { 4, 4, 4, 4 }, w5551[4] = { 5, 5, 5, 1 },
+                    w8888[4] = { 8, 8, 8, 8 };
+   const int *src;
+   switch (type) {
+   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:   src = w332; break;
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV: src = w565; break;
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV: src = w4444; break;
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV: src = w5551; break;
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+   case GL_UNSIGNED_BYTE:
+      src = w8888;
+      break;
+   default:
+      return false;
+   }
+   memcpy(w, src, 4 * sizeof(int));
+   return true;
+}
+
+/* n-bit c widened to 8 bits by repeating its bits */
+static unsigned replicate_bits(unsigned c, int n)
+{
+   unsigned v = 0;
+   for (int shift = 8 - n; shift > -n; shift -= n)
+      v |= shift >= 0 ? c << shift : c >> -shift;
+   return v & 0xffu;
+}
+
+static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                                const void *pixels, int width, int height, GLenum format,
+                                GLenum type, float *dst)
+{
+   if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels, 0, dst))
+      return false;
+   int w[4];
+   if (format != GL_COLOR_INDEX && unorm8_widths(type, w)) {
+      const size_t n = (size_t)width * (size_t)height;
+      for (size_t i = 0; i < n; i++)
+         for (int c = 0; c < 4; c++) {
+            if (w[c] == 0)
+               continue;   /* a channel the format lacks keeps its default */
+            float *v = &dst[4 * i + (size_t)c];
+            const unsigned max = (1u << w[c]) - 1u;
+            const unsigned q = (unsigned)lrintf(*v * (float)max);
+            *v = (float)replicate_bits(q, w[c]) * (float)(1.0 / 255.0);
+         }
+   }
+   if (format == GL_COLOR_INDEX) {
+      const size_t n = 4 * (size_t)width * (size_t)height;
+      for (size_t i = 0; i < n; i++) {
+         const float v = dst[i] > 0.0f ? (dst[i] > 1.0f ? 1.0f : dst[i]) : 0.0f;
+         dst[i] = (float)r_round_even(v * 255.0f) * (float)(1.0 / 255.0);
+      }
+   }
+   return true;
+}
+
+/* GL_DEPTH_STENCIL images [S: texstore.c:_mesa_texstore_z24_s8,
+ * _mesa_texstore_z32f_x24s8; pack.c:_mesa_unpack_depth_span,
+ * _mesa_unpack_stencil_span]: GL_UNSIGNED_INT_24_8 into S8_UINT_Z24_UNORM,
+ * GL_FLOAT_32_UNSIGNED_INT_24_8_REV into Z32_FLOAT_S8X24_UINT; copied as
+ * they are when the depth transfer is the identity and GL_MAP_STENCIL is
+ * off, else depth through scale, bias and the clamp ((GLuint)(d *
+ * (float)0xffffff) for the 24-bit one) and the stencil byte through the
+ * stencil map. */
+static bool unpack_depth_stencil_texels(const struct fgl_context *ctx,
+                                        const struct fgl_pixelstore *p, const void *pixels,
+                                        int width, int height, GLenum type, float *depth,
+                                        uint8_t *stencil)
+{
+   if (p->SwapBytes)
+      return false;
+   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
+   const bool identity = scale == 1.0f && bias == 0.0f;
+   const bool f32 = type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_STENCIL, type, y, 0);
+      for (int x = 0; x < width; x++) {
+         const size_t i = (size_t)y * (size_t)width + (size_t)x;
+         GLuint s;
+         float d;
+         if (f32) {
+            memcpy(&d, src + 8 * x, 4);
+            memcpy(&s, src + 8 * x + 4, 4);
+            if (!identity) {
+               d = d * scale + bias;
+               d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;
+            }
+         } else {
+            GLuint v;
+            memcpy(&v, src + 4 * x, 4);
+            s = v;
+            uint32_t z = v >> 8;
+            if (!identity) {
+               float f = (float)z * (1.0f / 0xffffff);
+               f = f * scale + bias;
+               f = f > 0.0f ? (f > 1.0f ? 1.0f : f) : 0.0f;
+               z = (uint32_t)(f * (float)0xffffff);
+            }
+            d = (float)z * (float)(1.0 / 16777215.0);
+         }
+         s &= 0xffu;
+         if (!identity && ctx->Pixel.MapStencilFlag) {
+            const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
+            s = (GLuint)ctx->PixelMaps.StoS.Map[s & mask];
+         }
+         depth[i] = d;
+         stencil[i] = (uint8_t)(s & 0xffu);
+      }
+   }
+   return true;
+}
+
+/* The stencil texels of a GL_STENCIL_INDEX image [S: texstore.c:
+ * _mesa_texstore_s8, pack.c:_mesa_unpack_stencil_span with the transfer
+ * operations off (make_texture clears _ImageTransferState): no index shift
+ * or offset, but GL_MAP_STENCIL, which the function reads from the
+ * context, except for unsigned bytes, which are copied], the low 8 bits. */
+static bool unpack_stencil_texels(const struct fgl_context *ctx,
+                                  const struct fgl_pixelstore *p, const void *pixels,
+                                  int width, int height, GLenum type, uint8_t *dst)
+{
+   /* unsigned bytes match S8: _mesa_texstore_can_use_memcpy (stencil
+    * needs no transfer operations, it says), so no map either */
+   const bool map = ctx->Pixel.MapStencilFlag && type != GL_UNSIGNED_BYTE;
+   GLuint *idx = malloc((size_t)width * sizeof(GLuint));
+   if (!idx)
+      return false;
+   for (int y = 0; y < height; y++) {
+      const uint8_t *src = fgl_image_address(p, pixels, width, GL_STENCIL_INDEX, type, y, 0);
+      fgl_extract_uint_indexes(p, (size_t)width, type, src, idx);
+      for (int x = 0; x < width; x++) {
+         GLuint v = idx[x];
+         if (map) {
+            const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
+            v = (GLuint)ctx->PixelMaps.StoS.Map[v & mask];
+         }
+         dst[(size_t)y * (size_t)width + (size_t)x] = (uint8_t)(v & 0xffu);
+      }
+   }
+   free(idx);
+   return true;
+}
+
+/* The state of the stencil-writing quad [S: st_cb_drawpixels.c:
+ * draw_textured_quad with write_stencil]: stencil ALWAYS, zpass REPLACE
+ * with the exported value under the stencil write mask, depth ALWAYS with
+ * the depth mask when depth is written too, else off; no colour, alpha
+ * test or blending. */
+static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs,
+                               bool write_depth)
+{
+   rs->stencil_test = true;
+   rs->stencil_func = R_ALWAYS;
+   rs->stencil_valuemask = 0;
+   rs->stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
+   rs->stencil_fail = rs->stencil_zfail = R_STENCIL_KEEP;
+   rs->stencil_zpass = R_STENCIL_REPLACE;
+   rs->depth_test = write_depth;
+   rs->depth_func = R_ALWAYS;
+   rs->depth_write = ctx->Depth.Mask;
+   rs->alpha_test = false;
+   rs->blend = false;
+   rs->logic_op = false;
+   rs->color_mask = 0;
+   rs->full_ops = true;
+}
+
+/* [S: pixel.c:_mesa_update_pixel] the scale/bias uniforms of the shader */
+static bool scale_bias_on(const struct fgl_pixel_attrib *px)
+{
+   return px->RedBias != 0.0f || px->RedScale != 1.0f || px->GreenBias != 0.0f ||
+          px->GreenScale != 1.0f || px->BlueBias != 0.0f || px->BlueScale != 1.0f ||
+          px->AlphaBias != 0.0f || px->AlphaScale != 1.0f;
+}
+
+static void color_transfer(const struct fgl_context *ctx, struct r_pixel_image *img)
+{
+   const struct fgl_pixel_attrib *px = &ctx->Pixel;
+   img->scale_bias = scale_bias_on(px);
+   img->scale[0] = px->RedScale;
+   img->scale[1] = px->GreenScale;
+   img->scale[2] = px->BlueScale;
+   img->scale[3] = px->AlphaScale;
+   img->bias[0] = px->RedBias;
+   img->bias[1] = px->GreenBias;
+   img->bias[2] = px->BlueBias;
+   img->bias[3] = px->AlphaBias;
+   img->map_color = px->MapColorFlag;
+   const struct fgl_pixelmap *maps[4] = {
+      &ctx->PixelMaps.RtoR, &ctx->PixelMaps.GtoG, &ctx->PixelMaps.BtoB, &ctx->PixelMaps.AtoA,
+   };
+   for (int i = 0; i < 4; i++) {
+      img->maps[i] = maps[i]->Map;
+      img->map_size[i] = maps[i]->Size;
+   }
+}
+
+/* [S: image.c:_mesa_clip_drawpixels] with zoom (1, 1): the destination
+ * against the scissored draw bounds, skipping what is left out */
+static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *w, int *h,
+                            struct fgl_pixelstore *unpack)
+{
+   int b[4];
+   fgl_scissor_bounds(ctx, b);   /* xmin, xmax, ymin, ymax */
+   if (unpack->RowLength == 0)
+      unpack->RowLength = *w;
+   if (*x < b[0]) {
+      unpack->SkipPixels += b[0] - *x;
+      *w -= b[0] - *x;
+      *x = b[0];
+   }
+   if (*x + *w > b[1])
+      *w -= *x + *w - b[1];
+   if (*w <= 0)
+      return false;
+   if (*y < b[2]) {
+      unpack->SkipRows += b[2] - *y;
+      *h -= b[2] - *y;
+      *y = b[2];
+   }
+   if (*y + *h > b[3])
+      *h -= *y + *h - b[3];
+   return *h > 0;
+}
+
+/* The quad of a glDrawPixels or glCopyPixels texture [S: st_cb_drawpixels.c:
+ * draw_textured_quad]: x1 = x + width * zoomX, y1 = y + height * zoomY
+ * (float), texture coordinates 0..1; `invert` (glCopyPixels, whose
+ * texture is y-down): t = 0 at the y1 edge. */
+static void textured_quad(const struct fgl_context *ctx, struct r_pixel_quad *q, int x, int y,
+                          int width, int height, bool invert)
+{
+   q->x0 = (float)x;
+   q->x1 = (float)x + (float)width * ctx->Pixel.ZoomX;
+   q->y0 = (float)y;
+   q->y1 = (float)y + (float)height * ctx->Pixel.ZoomY;
+   q->s0 = 0.0f;
+   q->s1 = 1.0f;
+   /* st_draw_quad(..., sLeft, tBot, sRight, tTop): tBot at the y1 edge */
+   q->t_y1 = invert ? 0.0f : 1.0f;
+   q->t_y0 = invert ? 1.0f : 0.0f;
+}
+
+/* [S: st_cb_drawpixels.c:search_drawpixels_cache] the texture made from
+ * the same client pointer, size, format and type with the same bytes
+ * (compared over width * height * bytes per pixel, whatever the row
+ * padding) is reused as it was made: with the depth scale and bias or
+ * the stencil map of that time.  Only images without skips or a row
+ * length of their own take part. */
+static struct fgl_drawpix_cache_entry *search_cache(struct fgl_context *ctx, int width,
+                                                    int height, GLenum format, GLenum type,
+                                                    const struct fgl_pixelstore *unpack,
+                                                    const void *pixels)
+{
+   struct fgl_drawpix_cache *c = &ctx->DrawpixCache;
+   const size_t bpp = fgl_pixel_bytes(format, type);
+   if ((unpack->RowLength != 0 && unpack->RowLength != width) || unpack->SkipPixels != 0 ||
+       unpack->SkipRows != 0 || unpack->SwapBytes)
+      return NULL;
+   for (int i = 0; i < 4; i++) {
+      struct fgl_drawpix_cache_entry *e = &c->Entries[i];
+      if (width == e->Width && height == e->Height && format == e->Format &&
+          type == e->Type && pixels == e->UserPointer && e->Image &&
+          memcmp(pixels, e->Image, (size_t)width * (size_t)height * bpp) == 0) {
+         e->Age = ++c->Age;
+         return e;
+      }
+   }
+   return NULL;
+}
+
+/* [S: st_cb_drawpixels.c:cache_drawpixels_image] into the oldest entry;
+ * takes ownership of texels and mask (false: the caller keeps them) */
+static bool cache_image(struct fgl_context *ctx, int width, int height, GLenum format,
+                        GLenum type, const struct fgl_pixelstore *unpack, const void *pixels,
+                        float *texels, uint8_t *mask)
+{
+   struct fgl_drawpix_cache *c = &ctx->DrawpixCache;
+   if (!((unpack->RowLength == 0 || unpack->RowLength == width) && unpack->SkipPixels == 0 &&
+         unpack->SkipRows == 0))
+      return false;
+   const size_t bytes = (size_t)width * (size_t)height * fgl_pixel_bytes(format, type);
+   struct fgl_drawpix_cache_entry *e = &c->Entries[0];
+   for (int i = 1; i < 4; i++)
+      if (c->Entries[i].Age < e->Age)
+         e = &c->Entries[i];
+   free(e->Image);
+   free(e->Texels);
+   free(e->Mask);
+   memset(e, 0, sizeof(*e));
+   e->Image = malloc(bytes ? bytes : 1);
+   if (!e->Image)
+      return false;
+   memcpy(e->Image, pixels, bytes);
+   e->Width = width;
+   e->Height = height;
+   e->Format = format;
+   e->Type = type;
+   e->UserPointer = pixels;
+   e->Texels = texels;
+   e->Mask = mask;
+   e->Age = ++c->Age;
+   return true;
+}
+
+void fgl_free_drawpix_cache(struct fgl_context *ctx)
+{
+   for (int i = 0; i < 4; i++) {
+      struct fgl_drawpix_cache_entry *e = &ctx->DrawpixCache.Entries[i];
+      free(e->Image);
+      free(e->Texels);
+      free(e->Mask);
+      memset(e, 0, sizeof(*e));
+   }
+}
+
+/* [S: st_cb_drawpixels.c:make_texture] the texels of the image: stencil
+ * values in *mask, depth or RGBA floats in *texels; false if fixgl does
+ * not convert this format and type */
+static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *unpack,
+                         int width, int height, GLenum format, GLenum type,
+                         const void *pixels, float **texels, uint8_t **mask)
+{
+   const size_t n = (size_t)width * (size_t)height;
+   *texels = NULL;
+   *mask = NULL;
+   if (format == GL_STENCIL_INDEX) {
+      *mask = malloc(n);
+      if (*mask && unpack_stencil_texels(ctx, unpack, pixels, width, height, type, *mask))
+         return true;
+   } else if (format == GL_DEPTH_STENCIL) {
+      *mask = malloc(n);
+      *texels = malloc(n * sizeof(float));
+      if (*mask && *texels &&
+          unpack_depth_stencil_texels(ctx, unpack, pixels, width, height, type, *texels,
+                                      *mask))
+         return true;
+   } else if (format == GL_DEPTH_COMPONENT) {
+      *texels = malloc(n * sizeof(float));
+      if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
+                      unpack_depth_texels_z24(ctx, unpack, pixels, width, height, type,
+                                              *texels)))
+         return true;
+   } else {
+      *texels = malloc(4 * n * sizeof(float));
+      if (*texels && (unpack_color_texels(unpack, pixels, width, height, format, type,
+                                          *texels) ||
+                      unpack_other_texels(ctx, unpack, pixels, width, height, format, type,
+                                          *texels)))
+         return true;
+   }
+   free(*texels);
+   free(*mask);
+   *texels = NULL;
+   *mask = NULL;
+   return false;
+}
+
+/* [S: st_cb_drawpixels.c:st_DrawPixels] */
+static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int height,
+                        GLenum format, GLenum type, const void *pixels)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   struct fgl_pixelstore unpack = ctx->Unpack;
+
+   fgl_flush_bitmap_cache(ctx);
+   if (ctx->Pixel.ZoomX == 1.0f && ctx->Pixel.ZoomY == 1.0f &&
+       !clip_drawpixels(ctx, &x, &y, &width, &height, &unpack))
+      return;
+
+   float *texels;
+   uint8_t *mask;
+   bool owned = true;
+   const struct fgl_drawpix_cache_entry *hit =
+      pixels ? search_cache(ctx, width, height, format, type, &unpack, pixels) : NULL;
+   if (hit) {
+      texels = hit->Texels;
+      mask = hit->Mask;
+      owned = false;
+   } else {
+      /* make_texture: no image (no PBO) is GL_OUT_OF_MEMORY */
+      if (!pixels) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      if (!make_texture(ctx, &unpack, width, height, format, type, pixels, &texels, &mask))
+         return;
+      if (cache_image(ctx, width, height, format, type, &unpack, pixels, texels, mask))
+         owned = false;
+   }
+   if (ctx->Color.DrawBuffer != GL_NONE)
+      fb->ColorDefined = true;
+
+   struct r_pixel_image img = { .width = width, .height = height, .texels = texels,
+                                .mask = mask };
+   struct r_pixel_quad q;
+   quad_init(&q, fb, ctx->Current.RasterPos[2], ctx->Current.RasterColor);
+   textured_quad(ctx, &q, x, y, width, height, false);
+   struct r_state rs = ctx->_Raster;
+   if (format == GL_STENCIL_INDEX) {
+      img.kind = R_PIX_STENCIL;
+      stencil_quad_state(ctx, &rs, false);
+   } else if (format == GL_DEPTH_STENCIL) {
+      img.kind = R_PIX_DEPTH;
+      img.with_stencil = true;
+      stencil_quad_state(ctx, &rs, true);
+   } else if (format == GL_DEPTH_COMPONENT) {
+      img.kind = R_PIX_DEPTH;
+   } else {
+      img.kind = R_PIX_COLOR;
+      color_transfer(ctx, &img);
+   }
+   r_pixel_rect(&rs, &img, &q);
+   if (owned) {
+      free(texels);
+      free(mask);
+   }
+}
+
+static void drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height, GLenum format,
+                       GLenum type, const GLvoid *pixels)
+{
+   FGL_FLUSH_VERTICES(ctx, 0);
+   if (width < 0 || height < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   fgl_update_state(ctx);
+   if (fgl_is_integer_format(format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
+   if (err != GL_NO_ERROR) {
+      fgl_error(ctx, err);
+      return;
+   }
+   if (!zs_buffer_exists(ctx->DrawBuffer, format)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (!ctx->Current.RasterPosValid || !ctx->DrawBuffer)
+      return;
+   if (ctx->RenderMode == GL_RENDER) {
+      if (width > 0 && height > 0) {
+         /* round half away from zero (lroundf) */
+         const int x = (int)lroundf(ctx->Current.RasterPos[0]);
+         const int y = (int)lroundf(ctx->Current.RasterPos[1]);
+         draw_pixels(ctx, x, y, width, height, format, type, pixels);
+      }
+   } else if (ctx->RenderMode == GL_FEEDBACK) {
+      fgl_flush_current(ctx);
+      feedback_raster(ctx, GL_DRAW_PIXEL_TOKEN);
+   }
+}
+
+void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                             const GLvoid *pixels)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag && !fgl_save_drawpixels(ctx, width, height, format, type, pixels))
+      return;
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   drawpixels(ctx, width, height, format, type, pixels);
+}
+
+/* OPCODE_DRAW_PIXELS: the compile-time copy with the default packing */
+void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                              GLenum format, GLenum type, const GLvoid *pixels)
+{
+   const struct fgl_pixelstore saved = ctx->Unpack;
+   ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
+   drawpixels(ctx, width, height, format, type, pixels);
+   ctx->Unpack = saved;
+}
+
+/* [S: dlist.c:unpack_image] the image copied with the unpack state into
+ * rows packed with alignment 1 (NULL for a size or format it cannot
+ * address) */
+GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsizei height,
+                            GLenum format, GLenum type, const GLvoid *pixels)
+{
+   const size_t bpp = fgl_pixel_bytes(format, type);
+   if (!pixels || width <= 0 || height <= 0 || bpp == 0)
+      return NULL;
+   uint8_t *out = malloc(bpp * (size_t)width * (size_t)height);
+   if (!out)
+      return NULL;
+   for (int y = 0; y < height; y++)
+      memcpy(out + (size_t)y * bpp * (size_t)width,
+             fgl_image_address(&ctx->Unpack, pixels, width, format, type, y, 0),
+             bpp * (size_t)width);
+   return out;
+}
+
+/* ---- glCopyPixels ---- */
+
+/* [S: image.c:_mesa_clip_readpixels] against the framebuffer */
+static bool clip_readpixels(const struct fgl_framebuffer *fb, int *x, int *y, int *w, int *h,
+                            int *skip_pixels, int *skip_rows)
+{
+   if (*x < 0) {
+      *skip_pixels += -*x;
+      *w -= -*x;
+      *x = 0;
+   }
+   if (*x + *w > fb->Width)
+      *w -= *x + *w - fb->Width;
+   if (*w <= 0)
+      return false;
+   if (*y < 0) {
+      *skip_rows += -*y;
+      *h -= -*y;
+      *y = 0;
+   }
+   if (*y + *h > fb->Height)
+      *h -= *y + *h - fb->Height;
+   return *h > 0;
+}
+
+/* The _ImageTransferState of the colour path (_mesa_update_pixel):
+ * scale/bias, index shift/offset, colour maps */
+static bool transfer_ops(const struct fgl_context *ctx)
+{
+   return scale_bias_on(&ctx->Pixel) || ctx->Pixel.IndexShift != 0 ||
+          ctx->Pixel.IndexOffset != 0 || ctx->Pixel.MapColorFlag;
+}
+
+/* pipe->blit of a w x h colour rectangle between two y-down positions:
+ * whole pixels (PIPE_MASK_RGBA) */
+static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy, int w, int h)
+{
+   for (int j = 0; j < h; j++) {
+      const size_t s = (size_t)(sy + j) * (size_t)fb->Width + (size_t)sx;
+      const size_t d = (size_t)(dy + j) * (size_t)fb->Width + (size_t)dx;
+      memmove(fb->Color + 4 * d, fb->Color + 4 * s, 4 * (size_t)w);
+   }
+}
+
+/* [S: st_cb_drawpixels.c:blit_copy_pixels] true if done by pipe->blit:
+ * colour, zoom 1, and no per-fragment work the blit would skip
+ * (blending, alpha test, a logic op but COPY, a depth test that could
+ * fail or write, fog, stencil ops, pixel transfer, no colour buffer); the
+ * colour mask and the stencil function are not looked at.  The regions
+ * are clipped like glReadPixels and glDrawPixels; overlapping source and
+ * destination take the texture path. */
+static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width,
+                             int height, int dstx, int dsty, GLenum type)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   /* the blit needs formats the screen can sample and render to: depth
+    * and stencil buffers are no render targets of llvmpipe, so only
+    * colour copies take it */
+   if (type != GL_COLOR || ctx->Pixel.ZoomX != 1.0f || ctx->Pixel.ZoomY != 1.0f)
+      return false;
+   if (type == GL_COLOR &&
+       (transfer_ops(ctx) || ctx->Color.BlendEnabled || ctx->Color.AlphaEnabled ||
+        (ctx->Color.LogicOpEnabled && ctx->Color.LogicOp != GL_COPY) ||
+        (ctx->Depth.Test && !(ctx->Depth.Func == GL_ALWAYS && !ctx->Depth.Mask)) ||
+        ctx->Fog.Enabled ||
+        (ctx->Stencil.Enabled &&
+         (ctx->Stencil.FailFunc != GL_KEEP || ctx->Stencil.ZPassFunc != GL_KEEP ||
+          ctx->Stencil.ZFailFunc != GL_KEEP)) ||
+        ctx->_EnabledTexUnits != 0 || ctx->Color.DrawBuffer == GL_NONE))
+      return false;
+
+   int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
+   if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
+      return true;
+   int drx = dstx + skip_px, dry = dsty + skip_rows;
+   struct fgl_pixelstore unpack = { .Alignment = 1, .RowLength = width,
+                                    .SkipPixels = skip_px, .SkipRows = skip_rows };
+   if (!clip_drawpixels(ctx, &drx, &dry, &rw, &rh, &unpack))
+      return true;
+   rx = rx - skip_px + unpack.SkipPixels;
+   ry = ry - skip_rows + unpack.SkipRows;
+   /* y-down */
+   const int H = fb->Height;
+   const int ry_down = H - ry - rh, dy_down = H - dry - rh;
+   /* _mesa_regions_overlap */
+   const bool overlap = !((rx > drx ? rx : drx) >= (rx + rw < drx + rw ? rx + rw : drx + rw)) &&
+                        !((ry_down > dy_down ? ry_down : dy_down) >=
+                          (ry_down + rh < dy_down + rh ? ry_down + rh : dy_down + rh));
+   if (overlap)
+      return false;
+   fb->ColorDefined = true;
+   blit_rect(fb, rx, ry_down, drx, dy_down, rw, rh);
+   return true;
+}
+
+/* [S: st_cb_drawpixels.c:st_CopyPixels] */
+static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, int height,
+                        int dstx, int dsty, GLenum type)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   fgl_flush_bitmap_cache(ctx);
+   if (blit_copy_pixels(ctx, srcx, srcy, width, height, dstx, dsty, type))
+      return;
+
+   /* the source, y-down, into a width x height texture whose row 0 is
+    * the top row; the part outside the framebuffer stays uninitialised
+    * in the oracle (zero here) */
+   const int H = fb->Height;
+   int rx = srcx, ry = H - srcy - height, rw = width, rh = height;
+   int skip_px = 0, skip_rows = 0;
+   if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
+      return;
+   const size_t n = (size_t)width * (size_t)height;
+   float *t = NULL;
+   uint8_t *s = NULL;
+   const bool to_color = type == GL_DEPTH_STENCIL_TO_RGBA_NV ||
+                         type == GL_DEPTH_STENCIL_TO_BGRA_NV;
+   const bool color = type == GL_COLOR || to_color;
+   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL;
+   const bool stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
+   if (color || depth)
+      t = calloc(color ? 4 * n : n, sizeof(float));
+   if (stencil)
+      s = calloc(n, 1);
+   if ((!t && (color || depth)) || (!s && stencil)) {
+      free(t);
+      free(s);
+      return;
+   }
+   for (int j = 0; j < rh; j++) {
+      for (int i = 0; i < rw; i++) {
+         const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)(rx + i);
+         const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)(skip_px + i);
+         if (to_color) {
+            /* [S: st_cb_drawpixels.c:make_drawpix_zs_to_color_program_nir]
+             * the depth sampled as float, times 0xffffff in double,
+             * truncated; bytes of the stencil and of that depth, each
+             * u2f * (float)(1/255) */
+            const uint32_t zs = ((uint32_t *)fb->Depth)[src];
+            const float zf = (float)(zs & 0xffffffu) * (float)(1.0 / 16777215.0);
+            const uint32_t iz = (uint32_t)((double)zf * (double)0xffffff);
+            const uint32_t ds[4] = { zs >> 24, iz & 0xffu, (iz >> 8) & 0xffu,
+                                     (iz >> 16) & 0xffu };
+            const float k = (float)(1.0 / 255.0);
+            float v[4] = { (float)ds[3] * k, (float)ds[2] * k, (float)ds[1] * k,
+                           (float)ds[0] * k };
+            if (type == GL_DEPTH_STENCIL_TO_BGRA_NV) {
+               const float tmp = v[0];
+               v[0] = v[2];
+               v[2] = tmp;
+            }
+            memcpy(t + 4 * dst, v, sizeof(v));
+         } else if (color) {
+            for (int c = 0; c < 4; c++)
+               t[4 * dst + c] = (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
+         }
+         if (depth) {
+            /* the depth texture (the buffer's format) sampled: unorm to
+             * float, value * (float)(1 / (2^n - 1)) */
+            if (fb->ZSFormat == R_ZS_Z16)
+               t[dst] = (float)((uint16_t *)fb->Depth)[src] * (float)(1.0 / 65535.0);
+            else
+               t[dst] = (float)(((uint32_t *)fb->Depth)[src] & 0xffffffu) *
+                        (float)(1.0 / 16777215.0);
+         }
+         if (stencil)
+            s[dst] = fb->ZSFormat == R_ZS_S8 ? fb->Stencil[src]
+                                             : (uint8_t)(((uint32_t *)fb->Depth)[src] >> 24);
+      }
+   }
+
+   struct r_pixel_image img = { .width = width, .height = height, .texels = t, .mask = s };
+   struct r_pixel_quad q;
+   /* the quad's colour is the current colour, which the depth and
+    * stencil shaders pass on */
+   fgl_flush_current(ctx);
+   quad_init(&q, fb, ctx->Current.RasterPos[2], ctx->Current.Attrib[FGL_ATTR_COLOR0]);
+   textured_quad(ctx, &q, dstx, dsty, width, height, true);
+   struct r_state rs = ctx->_Raster;
+   if (to_color) {
+      /* the shader's colour goes straight to the fragment operations */
+      img.kind = R_PIX_COLOR;
+      img.raw_color = true;
+      if (ctx->Color.DrawBuffer != GL_NONE)
+         fb->ColorDefined = true;
+   } else if (color) {
+      img.kind = R_PIX_COLOR;
+      color_transfer(ctx, &img);
+      if (ctx->Color.DrawBuffer != GL_NONE)
+         fb->ColorDefined = true;
+   } else if (stencil) {
+      img.kind = depth ? R_PIX_DEPTH : R_PIX_STENCIL;
+      img.with_stencil = depth;
+      stencil_quad_state(ctx, &rs, depth);
+   } else {
+      img.kind = R_PIX_DEPTH;
+      if (ctx->Color.DrawBuffer != GL_NONE)
+         fb->ColorDefined = true;
+   }
+   r_pixel_rect(&rs, &img, &q);
+   free(t);
+   free(s);
+}
+
+void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, CopyPixels, x, y, width, height, type);
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   FGL_FLUSH_VERTICES(ctx, 0);
+   if (width < 0 || height < 0) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL &&
+       type != GL_DEPTH_STENCIL && type != GL_DEPTH_STENCIL_TO_RGBA_NV &&
+       type != GL_DEPTH_STENCIL_TO_BGRA_NV) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   fgl_update_state(ctx);
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   /* _mesa_source_buffer_exists, _mesa_dest_buffer_exists */
+   const bool exists = fb && (type == GL_COLOR ? ctx->Pixel.ReadBuffer != GL_NONE
+                              : type == GL_DEPTH ? fb->DepthBits > 0
+                              : type == GL_STENCIL ? fb->StencilBits > 0
+                              : fb->DepthBits > 0 && fb->StencilBits > 0);   /* and the NV types */
+   if (!exists) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   if (!ctx->Current.RasterPosValid || width == 0 || height == 0)
+      return;
+   if (ctx->RenderMode == GL_RENDER) {
+      const int dx = (int)lroundf(ctx->Current.RasterPos[0]);
+      const int dy = (int)lroundf(ctx->Current.RasterPos[1]);
+      copy_pixels(ctx, x, y, width, height, dx, dy, type);
+   } else if (ctx->RenderMode == GL_FEEDBACK) {
+      fgl_flush_current(ctx);
+      feedback_raster(ctx, GL_COPY_PIXEL_TOKEN);
+   }
+}
