@@ -248,6 +248,25 @@ static int nearest(float s, int size)
    return (int)f;
 }
 
+
+/* The fixed-function fragment program for a fragment of the quad.  Its
+ * texture coordinate inputs are the same at every pixel (zero so far: the
+ * texturing of pixel rectangles is still to come), so the quad's
+ * coordinates are the fragment's own. */
+static void pixel_shader(const struct r_state *rs, const float fin[][4], float color[4])
+{
+   if (!rs->tex_units) {
+      r_fragment_shader(rs, fin, NULL, color);
+      return;
+   }
+   struct r_fs_quad q;
+   for (int u = 0; u < R_MAX_TEX_UNITS; u++)
+      for (int i = 0; i < 3; i++)
+         for (int c = 0; c < 4; c++)
+            q.tex[u][i][c] = q.pair[u][i][c] = fin[R_FS_TEX0 + u][c];
+   r_fragment_shader(rs, fin, &q, color);
+}
+
 /* A colour map looked up in the state tracker's 256x256 pixel-map texture
  * [S: st_atom_pixeltransfer.c:load_color_map_texture]: texel (i, j) holds
  * R map[j * size / 256], G map[i * size / 256] (and B, A maps, which no
@@ -282,7 +301,7 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
       if (pix->mask[idx] != 0)
          return;
       memcpy(fin[R_FS_COLOR0], in[R_FS_COLOR0], sizeof(fin[0]));
-      r_fragment_shader(rs, (const float (*)[4])fin, color);
+      pixel_shader(rs, (const float (*)[4])fin, color);
       r_fragment_ops(rs, px, py, z, color);
       return;
    case R_PIX_COLOR: {
@@ -314,7 +333,7 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
          c[3] = pix->texels[4 * k + 1];
       }
       memcpy(fin[R_FS_COLOR0], c, sizeof(c));
-      r_fragment_shader(rs, (const float (*)[4])fin, color);
+      pixel_shader(rs, (const float (*)[4])fin, color);
       r_fragment_ops(rs, px, py, z, color);
       return;
    }
