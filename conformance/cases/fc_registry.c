@@ -24,6 +24,7 @@ static const fc_case *const groups[] = {
     fc_cases_eval,
     fc_cases_pixelstate,
     fc_cases_rasterpos,
+    fc_cases_demo_tex,
 };
 
 size_t fc_case_count(void)
