@@ -27,6 +27,7 @@
  * functions, which primitive types) repeats every FC_TEX_PROFILES indices
  * with other values, as in the lit and raster families, so long runs reuse
  * the oracle's shader cache. */
+#define GL_GLEXT_PROTOTYPES 1   /* glWindowPos */
 #include "fc_random.h"
 #include "fc_random_shared.h"
 #include "fc_rng.h"
@@ -42,6 +43,14 @@
 #include <string.h>
 
 #define FC_TEX_PROFILES 256
+
+static void fct_glWindowPos2i(GLint x, GLint y) { fc_trace_calli("glWindowPos2i", 2, x, y, 0, 0); glWindowPos2i(x, y); }
+static void fct_glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { fc_trace_call("glWindowPos3f", 3, x, y, z, 0); glWindowPos3f(x, y, z); }
+#define glWindowPos2i fct_glWindowPos2i
+#define glWindowPos3f fct_glWindowPos3f
+#define glActiveTexture fct_glActiveTexture
+#define glMultiTexCoord2f fct_glMultiTexCoord2f
+#define glPixelZoom fct_glPixelZoom
 
 static const GLenum prim_modes[10] = {
     GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES, GL_TRIANGLE_STRIP,
@@ -93,6 +102,9 @@ struct profile {
     int texmat;
     int lit, fog, blend, flat, depth_test;
     int tex_enabled;            /* GL_TEXTURE_1D/2D enabled (rarely off) */
+    int unit1;                  /* a second unit: 0 off, 1 texgen, 2 a constant coordinate */
+    GLenum env1;
+    int pixels;                 /* pixel operations after the primitives */
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -133,6 +145,9 @@ static void make_profile(fc_rng *k, struct profile *p)
     p->flat = fc_rng_chance(k, 20);
     p->depth_test = fc_rng_chance(k, 50);
     p->tex_enabled = fc_rng_chance(k, 95);
+    p->unit1 = fc_rng_chance(k, 25) ? 1 + (int)fc_rng_below(k, 2) : 0;
+    p->env1 = env_modes[fc_rng_below(k, 5)];
+    p->pixels = fc_rng_chance(k, 30);
 }
 
 /* ---- the texture ---------------------------------------------------------- */
@@ -392,6 +407,32 @@ static int vertex_count(fc_rng *r, GLenum mode)
     }
 }
 
+/* A vertex well inside the view (60%: textures need covered pixels), or
+ * one of the plain generator's fresh vertices (view-volume bounds, w near
+ * 0, behind the eye...). */
+static void tex_vertex(struct scene *s, double v[4])
+{
+    fc_rng *r = &s->r;
+    if (fc_rng_chance(r, 40) || (s->space != SP_PIXEL && s->space != SP_FRUSTUM)) {
+        fcr_fresh_vertex(s, v);
+        return;
+    }
+    v[3] = 1;
+    if (s->space == SP_PIXEL) {
+        v[0] = (float)fc_rng_real(r, -0.2 * s->vw, 1.2 * s->vw);
+        v[1] = (float)fc_rng_real(r, -0.2 * s->vh, 1.2 * s->vh);
+        v[2] = (float)fc_rng_real(r, -0.9, 0.9);
+        return;
+    }
+    /* in the frustum: eye depth from just past the near plane to 30 near
+     * distances (or the far plane), x and y across the view and beyond */
+    const double n = s->fr[4], f = s->fr[5] < 30 * n ? s->fr[5] : 30 * n;
+    const double ze = -(float)fc_rng_real(r, n * 1.001, f * 0.999);
+    v[0] = (float)(fc_rng_real(r, s->fr[0], s->fr[1]) * 1.3 * -ze / n);
+    v[1] = (float)(fc_rng_real(r, s->fr[2], s->fr[3]) * 1.3 * -ze / n);
+    v[2] = ze;
+}
+
 static void random_primitive(struct scene *s, GLenum mode)
 {
     fc_rng *r = &s->r;
@@ -403,7 +444,7 @@ static void random_primitive(struct scene *s, GLenum mode)
             memcpy(v, s->pool[fc_rng_below(r, (uint32_t)(s->npool < POOL ? s->npool : POOL))],
                    sizeof v);
         else
-            fcr_fresh_vertex(s, v);
+            tex_vertex(s, v);
         if (fc_rng_chance(r, 60))
             fcr_emit_color(s);
         if (k == 0 || fc_rng_chance(r, 85))
@@ -412,6 +453,94 @@ static void random_primitive(struct scene *s, GLenum mode)
         memcpy(s->pool[s->npool++ % POOL], v, sizeof v);
     }
     glEnd();
+}
+
+/* Unit 1: a small 2D texture (REPEAT, LINEAR or NEAREST) with its own
+ * environment, its coordinates from OBJECT_LINEAR texgen or one constant
+ * glMultiTexCoord; then unit 0 is active again. */
+static void random_unit1(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    if (!p->unit1)
+        return;
+    glActiveTexture(GL_TEXTURE1);
+    fct_glBindTexture(GL_TEXTURE_2D, 7);
+    const int w = 1 << fc_rng_below(r, 4), h = 1 << fc_rng_below(r, 4);
+    unsigned char img[8 * 8 * 4];
+    for (int i = 0; i < w * h * 4; i++)
+        img[i] = texel_byte(r);
+    fct_glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img,
+                     (size_t)(w * h * 4));
+    fct_glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, fc_rng_chance(r, 50) ? GL_LINEAR : GL_NEAREST);
+    fct_glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, fc_rng_chance(r, 50) ? GL_LINEAR : GL_NEAREST);
+    fct_glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)p->env1);
+    if (p->unit1 == 1) {
+        for (int c = 0; c < 2; c++) {
+            GLfloat plane[4];
+            for (int i = 0; i < 4; i++)
+                plane[i] = (GLfloat)fc_rng_real(r, -0.2, 0.2);
+            fct_glTexGeni(GL_S + (GLenum)c, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+            fct_glTexGenfv(GL_S + (GLenum)c, GL_OBJECT_PLANE, plane);
+            glEnable(GL_TEXTURE_GEN_S + (GLenum)c);
+        }
+    } else {
+        glMultiTexCoord2f(GL_TEXTURE1, (GLfloat)fc_rng_unit(r), (GLfloat)fc_rng_unit(r));
+    }
+    glEnable(GL_TEXTURE_2D);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+/* glBitmap, glDrawPixels and glCopyPixels at random raster positions,
+ * with zoom, under the scene's texture, fog and blend state. */
+static void random_pixels(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    static const GLfloat zooms[7] = { 1, 1, 2, 0.5f, -1, 1.5f, 3 };
+    if (!p->pixels)
+        return;
+    const int n = fc_rng_range(r, 1, 3);
+    for (int i = 0; i < n; i++) {
+        if (fc_rng_chance(r, 50))
+            glWindowPos2i(fc_rng_range(r, -4, s->w), fc_rng_range(r, -4, s->h));
+        else
+            glWindowPos3f((GLfloat)fc_rng_real(r, -4, s->w), (GLfloat)fc_rng_real(r, -4, s->h),
+                          (GLfloat)fc_rng_unit(r));
+        glPixelZoom(zooms[fc_rng_below(r, 7)], zooms[fc_rng_below(r, 7)]);
+        const int w = fc_rng_range(r, 1, 24), h = fc_rng_range(r, 1, 24);
+        unsigned char img[24 * 24 * 4];
+        switch (fc_rng_below(r, 3)) {
+        case 0: {
+            for (int k = 0; k < 24 * 24 * 4; k++)
+                img[k] = (unsigned char)fc_rng_below(r, 256);
+            fct_trace_image(img, (size_t)((w + 7) / 8 * h));
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glBitmap(%d, %d, 0, 0, %d, %d, img); }\n", w, h, w / 2, -h / 3);
+            glBitmap(w, h, 0.0f, 0.0f, (GLfloat)(w / 2), (GLfloat)(-h / 3), img);
+            break;
+        }
+        case 1: {
+            const int src = (int)fc_rng_below(r, 5);
+            for (int k = 0; k < 24 * 24 * 4; k++)
+                img[k] = texel_byte(r);
+            fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            fct_trace_image(img, (size_t)(w * h * src_components[src]));
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glDrawPixels(%d, %d, %#x, GL_UNSIGNED_BYTE, img); }\n", w, h,
+                        (unsigned)src_formats[src]);
+            glDrawPixels(w, h, src_formats[src], GL_UNSIGNED_BYTE, img);
+            break;
+        }
+        default: {
+            const int x = fc_rng_range(r, -4, s->w), y = fc_rng_range(r, -4, s->h);
+            const GLenum type = fc_rng_chance(r, 80) ? GL_COLOR : GL_DEPTH;
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glCopyPixels(%d, %d, %d, %d, %#x);\n", x, y, w, h, (unsigned)type);
+            glCopyPixels(x, y, w, h, type);
+            break;
+        }
+        }
+    }
+    glPixelZoom(1, 1);
 }
 
 static void tex_scene(fc_h *h)
@@ -431,9 +560,16 @@ static void tex_scene(fc_h *h)
     s.r = fc_rng_make(seed, index, 11);
     s.w = c->width;
     s.h = c->height;
-    s.space = (enum space)(fc_rng_below(&k, 100) < 40 ? SP_PIXEL : 1 + fc_rng_below(&k, 4));
+    {
+        const uint32_t sp = fc_rng_below(&k, 100);
+        s.space = sp < 45 ? SP_PIXEL : sp < 85 ? SP_FRUSTUM : (enum space)(1 + fc_rng_below(&k, 4));
+    }
 
-    fcr_clear(&s.r, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    /* a clear the primitives can pass the depth test against */
+    glClearColor((GLclampf)fc_rng_unit(&s.r), (GLclampf)fc_rng_unit(&s.r),
+                 (GLclampf)fc_rng_unit(&s.r), (GLclampf)fc_rng_unit(&s.r));
+    glClearDepth(fc_rng_chance(&s.r, 80) ? 1.0 : fc_rng_real(&s.r, 0.5, 1.0));
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     fcr_viewport(&s);
     fcr_depth_range(&s.r);
     fcr_projection(&s);
@@ -444,6 +580,7 @@ static void tex_scene(fc_h *h)
 
     random_texture(&s, &p);
     random_env(&s, &p);
+    random_unit1(&s, &p);
     random_texgen(&s, &p);
     random_texmatrix(&s, &p);
     random_light(&s, &p);
@@ -454,6 +591,7 @@ static void tex_scene(fc_h *h)
         if (c->frames == 2 && i == p.nprim / 2)
             fc_capture(h);
     }
+    random_pixels(&s, &p);
     fc_capture(h);
     fc_error(h, "scene glGetError");
 }

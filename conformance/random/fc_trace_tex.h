@@ -46,6 +46,10 @@ static inline void fct_glTexGeni(GLenum c, GLenum p, GLint v) { fc_trace_enums_i
 static inline void fct_glTexGenfv(GLenum c, GLenum p, const GLfloat *v) { fc_trace_enums_vf("glTexGenfv", 2, c, p, 4, v); glTexGenfv(c, p, v); }
 static inline void fct_glPixelStorei(GLenum p, GLint v) { fc_trace_enums_i("glPixelStorei", 1, p, 0, v); glPixelStorei(p, v); }
 
+static inline void fct_glActiveTexture(GLenum u) { fc_trace_calli("glActiveTexture", 1, u, 0, 0, 0); glActiveTexture(u); }
+static inline void fct_glMultiTexCoord2f(GLenum u, GLfloat s, GLfloat t) { fc_trace_enums_vf("glMultiTexCoord2fv", 1, u, 0, 2, (const GLfloat[]){ s, t }); glMultiTexCoord2f(u, s, t); }
+static inline void fct_glPixelZoom(GLfloat x, GLfloat y) { fc_trace_call("glPixelZoom", 2, x, y, 0, 0); glPixelZoom(x, y); }
+
 /* an image: its bytes as a static array in the trace */
 static inline void fct_trace_image(const void *pixels, size_t n)
 {
