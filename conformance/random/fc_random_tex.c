@@ -469,6 +469,8 @@ static void random_unit1(struct scene *s, const struct profile *p)
     unsigned char img[8 * 8 * 4];
     for (int i = 0; i < w * h * 4; i++)
         img[i] = texel_byte(r);
+    /* rows of 4 * w bytes: no padding under an alignment of 4 */
+    fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     fct_glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img,
                      (size_t)(w * h * 4));
     fct_glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, fc_rng_chance(r, 50) ? GL_LINEAR : GL_NEAREST);
@@ -508,6 +510,8 @@ static void random_pixels(struct scene *s, const struct profile *p)
         glPixelZoom(zooms[fc_rng_below(r, 7)], zooms[fc_rng_below(r, 7)]);
         const int w = fc_rng_range(r, 1, 24), h = fc_rng_range(r, 1, 24);
         unsigned char img[24 * 24 * 4];
+        /* tight rows: the trace holds exactly the bytes GL reads */
+        fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         switch (fc_rng_below(r, 3)) {
         case 0: {
             for (int k = 0; k < 24 * 24 * 4; k++)
@@ -522,7 +526,6 @@ static void random_pixels(struct scene *s, const struct profile *p)
             const int src = (int)fc_rng_below(r, 5);
             for (int k = 0; k < 24 * 24 * 4; k++)
                 img[k] = texel_byte(r);
-            fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
             fct_trace_image(img, (size_t)(w * h * src_components[src]));
             if (fc_trace_out)
                 fprintf(fc_trace_out, "glDrawPixels(%d, %d, %#x, GL_UNSIGNED_BYTE, img); }\n", w, h,
