@@ -17,6 +17,7 @@ extern const fc_case fc_cases_shade[];
 extern const fc_case fc_cases_clip[];
 extern const fc_case fc_cases_rasterpos[];
 extern const fc_case fc_cases_windowpos[];
+extern const fc_case fc_cases_demo_tex[];
 extern const fc_case fc_cases_depth[];
 extern const fc_case fc_cases_format[];
 extern const fc_case fc_cases_viewport[];

@@ -32,6 +32,7 @@ static const fc_case *const groups[] = {
     fc_cases_tex_sample,
     fc_cases_tex_env,
     fc_cases_tex_wrap,
+    fc_cases_demo_tex,
 };
 
 size_t fc_case_count(void)

@@ -176,6 +176,7 @@ void fce_block_begin(GLenum mode)
 
 /* ---- replaying one recorded call ---- */
 
+#define FCE_CALL1(f, t) f(t[0])
 #define FCE_CALL2(f, t) f(t[0], t[1])
 #define FCE_CALL3(f, t) f(t[0], t[1], t[2])
 #define FCE_CALL4(f, t) f(t[0], t[1], t[2], t[3])
@@ -223,7 +224,7 @@ static void replay(const struct ev *e)
 static float imm_float(const struct ev *e, int c)
 {
     const double v = e->v[c];
-    if (e->kind == FCE_VERTEX || e->kind == FCE_EDGE)
+    if (e->kind == FCE_VERTEX || e->kind == FCE_EDGE || e->kind == FCE_TEXCOORD)
         return (float)v;
     switch (e->type) {
     case FCE_B: return (2.0F * (GLbyte)v + 1.0F) * (1.0F / 255.0F);
@@ -259,7 +260,7 @@ static void put(unsigned char *p, int t, double x)
 
 /* ---- one block through arrays ---- */
 
-enum { A_POS, A_COL, A_NRM, A_EDGE, A_COUNT };
+enum { A_POS, A_COL, A_NRM, A_EDGE, A_TEX, A_COUNT };
 
 struct attr {
     int on;                         /* an array of this attribute */
@@ -271,7 +272,7 @@ struct attr {
 static int kind_attr(int kind)
 {
     return kind == FCE_VERTEX ? A_POS : kind == FCE_COLOR ? A_COL : kind == FCE_NORMAL ? A_NRM
-         : kind == FCE_EDGE ? A_EDGE : -1;
+         : kind == FCE_EDGE ? A_EDGE : kind == FCE_TEXCOORD ? A_TEX : -1;
 }
 
 /* Chooses the array type and size of attribute a from the block's calls of
@@ -292,7 +293,10 @@ static void choose_type(struct attr *at, int a, int draw)
         if (e->size > max_size)
             max_size = e->size;
     }
-    const int pol = a == A_POS ? E.P.vtype : a == A_COL ? E.P.ctype : E.P.ntype;
+    /* texture coordinates convert with a cast like vertices
+     * [S: vbo_attrib_tmp.h TexCoord*: ATTR*F of the values] and take the
+     * vertices' policy */
+    const int pol = a == A_POS || a == A_TEX ? E.P.vtype : a == A_COL ? E.P.ctype : E.P.ntype;
     at->size = max_size;
     at->raw = 0;
     if (a == A_EDGE) {
@@ -301,13 +305,13 @@ static void choose_type(struct attr *at, int a, int draw)
         at->type = FCE_F;
     } else if (pol == 2) {
         at->type = FCE_D;
-    } else if (a == A_POS && (shorts || ints)) {
+    } else if ((a == A_POS || a == A_TEX) && (shorts || ints)) {
         /* vertices convert with a cast: integer values are exact in an
          * integer array whatever call gave them */
         at->type = shorts ? FCE_S : FCE_I, at->raw = 1;
     } else if (uniform_type < 0) {
         at->type = FCE_F;
-    } else if (a == A_POS || uniform_type == FCE_F || uniform_type == FCE_D) {
+    } else if (a == A_POS || a == A_TEX || uniform_type == FCE_F || uniform_type == FCE_D) {
         at->type = uniform_type, at->raw = 1;
     } else if (uniform_size < 0) {
         at->type = FCE_F;           /* normalized integers: one size only */
@@ -319,13 +323,62 @@ static void choose_type(struct attr *at, int a, int draw)
     at->bytes = at->size * type_bytes[at->type];
 }
 
+/* The formats with texture coordinates (at offset 0): T2F_V3F,
+ * T4F_V4F, T2F_C4UB_V3F, T2F_C3F_V3F, T2F_N3F_V3F, T2F_C4F_N3F_V3F,
+ * T4F_C4F_N3F_V4F [S: main/varray.c:_mesa_get_interleaved_layout]. */
+static GLenum interleaved_tex_format(struct attr *at, int *coff, int *noff, int *voff, int *def)
+{
+    const struct attr *p = &at[A_POS], *c = &at[A_COL], *n = &at[A_NRM], *t = &at[A_TEX];
+    const int f = 4;
+    if (t->type != FCE_F)
+        return 0;
+    *coff = *noff = 0;
+    if (t->size == 2 && p->size == 3) {
+        if (!c->on && !n->on) {
+            *voff = 2 * f, *def = 5 * f;
+            return GL_T2F_V3F;
+        }
+        if (c->on && c->type == FCE_UB && c->size == 4 && !n->on) {
+            *coff = 2 * f, *voff = 2 * f + 4, *def = 6 * f;
+            return GL_T2F_C4UB_V3F;
+        }
+        if (c->on && c->type == FCE_F && c->size == 3 && !n->on) {
+            *coff = 2 * f, *voff = 5 * f, *def = 8 * f;
+            return GL_T2F_C3F_V3F;
+        }
+        if (!c->on && n->on) {
+            *noff = 2 * f, *voff = 5 * f, *def = 8 * f;
+            return GL_T2F_N3F_V3F;
+        }
+        if (c->on && c->type == FCE_F && c->size == 4 && n->on) {
+            *coff = 2 * f, *noff = 6 * f, *voff = 9 * f, *def = 12 * f;
+            return GL_T2F_C4F_N3F_V3F;
+        }
+    }
+    if (t->size == 4 && p->size == 4) {
+        if (!c->on && !n->on) {
+            *voff = 4 * f, *def = 8 * f;
+            return GL_T4F_V4F;
+        }
+        if (c->on && c->type == FCE_F && c->size == 4 && n->on) {
+            *coff = 4 * f, *noff = 8 * f, *voff = 11 * f, *def = 15 * f;
+            return GL_T4F_C4F_N3F_V4F;
+        }
+    }
+    return 0;
+}
+
 /* glInterleavedArrays format matching the arrays, or 0
  * [S: main/varray.c:_mesa_get_interleaved_layout] */
-static GLenum interleaved_format(const struct attr *at, int *coff, int *noff, int *voff, int *def)
+static GLenum interleaved_format(struct attr *at, int *coff, int *noff, int *voff, int *def)
 {
-    const struct attr *p = &at[A_POS], *c = &at[A_COL], *n = &at[A_NRM];
+    const struct attr *p = &at[A_POS], *c = &at[A_COL], *n = &at[A_NRM], *t = &at[A_TEX];
     const int f = 4;
-    if (at[A_EDGE].on || p->type != FCE_F || p->size > 3 || (n->on && n->type != FCE_F))
+    if (at[A_EDGE].on || p->type != FCE_F || (n->on && n->type != FCE_F))
+        return 0;
+    if (t->on)
+        return interleaved_tex_format(at, coff, noff, voff, def);
+    if (p->size > 3)
         return 0;
     *coff = *noff = 0;
     if (!c->on && !n->on) {
@@ -463,7 +516,7 @@ void fce_block_end(void)
     if (!packed)
         abort();
     {
-        int cur[A_COUNT] = { -1, -1, -1, -1 }, k = 0;
+        int cur[A_COUNT] = { -1, -1, -1, -1, -1 }, k = 0;
         for (int i = 0; i < nev; i++) {
             const int a = kind_attr(E.ev[i].kind);
             if (a < 0)
@@ -545,6 +598,7 @@ void fce_block_end(void)
     if (ifmt) {
         istride = def + E.P.pad;
         at[A_COL].offset = coff, at[A_NRM].offset = noff, at[A_POS].offset = voff;
+        at[A_TEX].offset = 0;
         for (int a = 0; a < A_COUNT; a++)
             at[a].stride = istride;
         total = istride * nstore;
@@ -554,9 +608,19 @@ void fce_block_end(void)
             {1,2,0,3},{1,2,3,0},{1,3,0,2},{1,3,2,0},{2,0,1,3},{2,0,3,1},{2,1,0,3},{2,1,3,0},
             {2,3,0,1},{2,3,1,0},{3,0,1,2},{3,0,2,1},{3,1,0,2},{3,1,2,0},{3,2,0,1},{3,2,1,0},
         };
-        int off = 0, al = 4;
+        /* texture coordinates go in at place order % 5 (the order of
+         * the other four is as before they existed) */
+        int seq[A_COUNT], ns = 0;
         for (int i = 0; i < 4; i++) {
-            struct attr *x = &at[perms[E.P.order][i]];
+            if (i == E.P.order % 5)
+                seq[ns++] = A_TEX;
+            seq[ns++] = perms[E.P.order][i];
+        }
+        if (ns == 4)
+            seq[ns++] = A_TEX;
+        int off = 0, al = 4;
+        for (int i = 0; i < A_COUNT; i++) {
+            struct attr *x = &at[seq[i]];
             if (!x->on)
                 continue;
             const int a = x->type == FCE_D ? 8 : 4;
@@ -598,6 +662,7 @@ void fce_block_end(void)
         trace_bytes(buf, total);
     static const GLenum caps[A_COUNT] = {
         GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_EDGE_FLAG_ARRAY,
+        GL_TEXTURE_COORD_ARRAY,
     };
     if (ifmt) {
         if (fc_trace_out)
@@ -624,6 +689,10 @@ void fce_block_end(void)
             case A_NRM:
                 trace_pointer("glNormalPointer", 0, at[a].type, stride, at[a].offset);
                 glNormalPointer(t, stride, p);
+                break;
+            case A_TEX:
+                trace_pointer("glTexCoordPointer", at[a].size, at[a].type, stride, at[a].offset);
+                glTexCoordPointer(at[a].size, t, stride, p);
                 break;
             default:
                 trace_pointer("glEdgeFlagPointer", 0, -1, stride, at[a].offset);
@@ -689,6 +758,8 @@ void fce_block_end(void)
             replay(&E.ev[last[A_COL]]);
         if (last[A_NRM] >= 0)
             replay(&E.ev[last[A_NRM]]);
+        if (last[A_TEX] >= 0)
+            replay(&E.ev[last[A_TEX]]);
     }
     if (nvert) {
         for (int a = 0; a < A_COUNT; a++)

@@ -34,13 +34,14 @@
 
 #include "fc_trace.h"
 #include "fc_trace_raster.h"
+#include "fc_trace_tex.h"
 
 #include <stdint.h>
 
 enum fce_path { FCE_IMMEDIATE, FCE_ARRAYS, FCE_DLIST };
 
 /* Families (keys of the layer's random streams). */
-enum fce_family { FCE_PLAIN = 1, FCE_LIT = 2, FCE_RASTER = 3 };
+enum fce_family { FCE_PLAIN = 1, FCE_LIT = 2, FCE_RASTER = 3, FCE_TEX = 4 };
 
 /* Starts a scene: picks its path from (seed, profile) and resets the
  * layer.  profile is the index for the plain family, the profile index
@@ -52,7 +53,7 @@ const char *fce_path_name(enum fce_path path);
 
 /* ---- the layer's side (fc_emit.c) ---- */
 
-enum fce_kind { FCE_VERTEX, FCE_COLOR, FCE_NORMAL, FCE_EDGE, FCE_MATERIAL };
+enum fce_kind { FCE_VERTEX, FCE_COLOR, FCE_NORMAL, FCE_EDGE, FCE_MATERIAL, FCE_TEXCOORD };
 enum fce_type { FCE_B, FCE_UB, FCE_S, FCE_US, FCE_I, FCE_UI, FCE_F, FCE_D };
 
 extern int fce_recording;          /* inside a recorded glBegin / glEnd */
@@ -71,6 +72,9 @@ void fce_dl_resume(void);
 
 /* ---- wrappers of the calls the layer intercepts ---- */
 
+#define FCE_SCALAR1(name, T) \
+    static inline void fce_##name(T a) \
+    { if (fce_recording) { fce_rec_attr(FCE_K_##name, FCE_T_##name, 1, 0, a, 0, 0, 1); return; } fct_##name(a); }
 #define FCE_SCALAR2(name, T) \
     static inline void fce_##name(T a, T b) \
     { if (fce_recording) { fce_rec_attr(FCE_K_##name, FCE_T_##name, 2, 0, a, b, 0, 1); return; } fct_##name(a, b); }
@@ -82,7 +86,7 @@ void fce_dl_resume(void);
     { if (fce_recording) { fce_rec_attr(FCE_K_##name, FCE_T_##name, 4, 0, a, b, c, d); return; } fct_##name(a, b, c, d); }
 #define FCE_VECTOR(name, T, n) \
     static inline void fce_##name(const T *p) \
-    { if (fce_recording) { fce_rec_attr(FCE_K_##name, FCE_T_##name, n, 1, p[0], p[1], n > 2 ? p[n > 2 ? 2 : 0] : 0, n > 3 ? p[n > 3 ? 3 : 0] : 1); return; } fct_##name(p); }
+    { if (fce_recording) { fce_rec_attr(FCE_K_##name, FCE_T_##name, n, 1, p[0], n > 1 ? p[n > 1 ? 1 : 0] : 0, n > 2 ? p[n > 2 ? 2 : 0] : 0, n > 3 ? p[n > 3 ? 3 : 0] : 1); return; } fct_##name(p); }
 
 /* X(kind, gl prefix, size, suffix, C type, fce_type) */
 #define FCE_ATTR_VARIANTS(X)                                                 \
@@ -102,7 +106,15 @@ void fce_dl_resume(void);
     X(FCE_COLOR, glColor, 4, f, GLfloat, FCE_F) X(FCE_COLOR, glColor, 4, d, GLdouble, FCE_D) \
     X(FCE_NORMAL, glNormal, 3, b, GLbyte, FCE_B) X(FCE_NORMAL, glNormal, 3, s, GLshort, FCE_S) \
     X(FCE_NORMAL, glNormal, 3, i, GLint, FCE_I) X(FCE_NORMAL, glNormal, 3, f, GLfloat, FCE_F) \
-    X(FCE_NORMAL, glNormal, 3, d, GLdouble, FCE_D)
+    X(FCE_NORMAL, glNormal, 3, d, GLdouble, FCE_D) \
+    X(FCE_TEXCOORD, glTexCoord, 1, s, GLshort, FCE_S) X(FCE_TEXCOORD, glTexCoord, 1, i, GLint, FCE_I) \
+    X(FCE_TEXCOORD, glTexCoord, 1, f, GLfloat, FCE_F) X(FCE_TEXCOORD, glTexCoord, 1, d, GLdouble, FCE_D) \
+    X(FCE_TEXCOORD, glTexCoord, 2, s, GLshort, FCE_S) X(FCE_TEXCOORD, glTexCoord, 2, i, GLint, FCE_I) \
+    X(FCE_TEXCOORD, glTexCoord, 2, f, GLfloat, FCE_F) X(FCE_TEXCOORD, glTexCoord, 2, d, GLdouble, FCE_D) \
+    X(FCE_TEXCOORD, glTexCoord, 3, s, GLshort, FCE_S) X(FCE_TEXCOORD, glTexCoord, 3, i, GLint, FCE_I) \
+    X(FCE_TEXCOORD, glTexCoord, 3, f, GLfloat, FCE_F) X(FCE_TEXCOORD, glTexCoord, 3, d, GLdouble, FCE_D) \
+    X(FCE_TEXCOORD, glTexCoord, 4, s, GLshort, FCE_S) X(FCE_TEXCOORD, glTexCoord, 4, i, GLint, FCE_I) \
+    X(FCE_TEXCOORD, glTexCoord, 4, f, GLfloat, FCE_F) X(FCE_TEXCOORD, glTexCoord, 4, d, GLdouble, FCE_D)
 
 /* the scalar and vector wrapper of one variant */
 #define FCE_WRAP(kind, pre, n, suf, T, type)                                 \
@@ -251,6 +263,38 @@ static inline void fce_fc_error(fc_h *h, const char *label)
 #undef glNormal3fv
 #undef glNormal3d
 #undef glNormal3dv
+#undef glTexCoord1s
+#undef glTexCoord1sv
+#undef glTexCoord1i
+#undef glTexCoord1iv
+#undef glTexCoord1f
+#undef glTexCoord1fv
+#undef glTexCoord1d
+#undef glTexCoord1dv
+#undef glTexCoord2s
+#undef glTexCoord2sv
+#undef glTexCoord2i
+#undef glTexCoord2iv
+#undef glTexCoord2f
+#undef glTexCoord2fv
+#undef glTexCoord2d
+#undef glTexCoord2dv
+#undef glTexCoord3s
+#undef glTexCoord3sv
+#undef glTexCoord3i
+#undef glTexCoord3iv
+#undef glTexCoord3f
+#undef glTexCoord3fv
+#undef glTexCoord3d
+#undef glTexCoord3dv
+#undef glTexCoord4s
+#undef glTexCoord4sv
+#undef glTexCoord4i
+#undef glTexCoord4iv
+#undef glTexCoord4f
+#undef glTexCoord4fv
+#undef glTexCoord4d
+#undef glTexCoord4dv
 #undef glMaterialf
 #undef glMaterialfv
 #undef glMateriali
@@ -326,6 +370,38 @@ static inline void fce_fc_error(fc_h *h, const char *label)
 #define glNormal3fv fce_glNormal3fv
 #define glNormal3d fce_glNormal3d
 #define glNormal3dv fce_glNormal3dv
+#define glTexCoord1s fce_glTexCoord1s
+#define glTexCoord1sv fce_glTexCoord1sv
+#define glTexCoord1i fce_glTexCoord1i
+#define glTexCoord1iv fce_glTexCoord1iv
+#define glTexCoord1f fce_glTexCoord1f
+#define glTexCoord1fv fce_glTexCoord1fv
+#define glTexCoord1d fce_glTexCoord1d
+#define glTexCoord1dv fce_glTexCoord1dv
+#define glTexCoord2s fce_glTexCoord2s
+#define glTexCoord2sv fce_glTexCoord2sv
+#define glTexCoord2i fce_glTexCoord2i
+#define glTexCoord2iv fce_glTexCoord2iv
+#define glTexCoord2f fce_glTexCoord2f
+#define glTexCoord2fv fce_glTexCoord2fv
+#define glTexCoord2d fce_glTexCoord2d
+#define glTexCoord2dv fce_glTexCoord2dv
+#define glTexCoord3s fce_glTexCoord3s
+#define glTexCoord3sv fce_glTexCoord3sv
+#define glTexCoord3i fce_glTexCoord3i
+#define glTexCoord3iv fce_glTexCoord3iv
+#define glTexCoord3f fce_glTexCoord3f
+#define glTexCoord3fv fce_glTexCoord3fv
+#define glTexCoord3d fce_glTexCoord3d
+#define glTexCoord3dv fce_glTexCoord3dv
+#define glTexCoord4s fce_glTexCoord4s
+#define glTexCoord4sv fce_glTexCoord4sv
+#define glTexCoord4i fce_glTexCoord4i
+#define glTexCoord4iv fce_glTexCoord4iv
+#define glTexCoord4f fce_glTexCoord4f
+#define glTexCoord4fv fce_glTexCoord4fv
+#define glTexCoord4d fce_glTexCoord4d
+#define glTexCoord4dv fce_glTexCoord4dv
 #define glMaterialf fce_glMaterialf
 #define glMaterialfv fce_glMaterialfv
 #define glMateriali fce_glMateriali

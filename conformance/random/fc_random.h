@@ -27,4 +27,8 @@ void fc_random_lit_case(uint64_t seed, uint32_t index, fc_case *out, char *name)
 int fc_random_raster_parse(const char *name, uint64_t *seed, uint32_t *index);
 void fc_random_raster_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
 
+/* The same for the texture scenes (textures, texture state, pixel path). */
+int fc_random_tex_parse(const char *name, uint64_t *seed, uint32_t *index);
+void fc_random_tex_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
+
 #endif

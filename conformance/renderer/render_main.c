@@ -83,6 +83,10 @@ static const fc_case *find_case(const char *name, fc_case *scratch, char *namebu
         fc_random_raster_case(seed, index, scratch, namebuf);
         return scratch;
     }
+    if (fc_random_tex_parse(name, &seed, &index)) {
+        fc_random_tex_case(seed, index, scratch, namebuf);
+        return scratch;
+    }
     for (size_t i = 0; i < fc_case_count(); i++)
         if (strcmp(fc_case_at(i)->name, name) == 0)
             return fc_case_at(i);

@@ -22,6 +22,7 @@ struct options {
     long random;                /* number of random scenes */
     long random_lit;            /* number of random lit scenes */
     long random_raster;         /* number of random raster scenes */
+    long random_tex;            /* number of random texture scenes */
     uint64_t seed;
     long index;                 /* first scene index; >= 0 replays from there */
     const char *report, *renderer[2], *fixgl_arg;
@@ -81,15 +82,19 @@ static void usage(FILE *f)
         "  --tag T              only cases with tag T (repeatable)\n"
         "  --case GLOB          only cases whose name matches GLOB (repeatable)\n"
         "  --random N           add N random scenes, random/s<S>-i<I> (default 100, or 0\n"
-        "                       when --random-lit or --random-raster is given)\n"
+        "                       when another family's count is given)\n"
         "  --random-lit N       add N random lit scenes, random-lit/s<S>-i<I> (tag random-lit;\n"
         "                       default 0): lights, materials, light models, normals\n"
         "  --random-raster N    add N random raster scenes, random-raster/s<S>-i<I> (tag\n"
         "                       random-raster; default 0): points, lines, polygon state,\n"
         "                       clip planes, fog, per-fragment operations\n"
+        "  --random-tex N       add N random texture scenes, random-tex/s<S>-i<I> (tag\n"
+        "                       random-tex; default 0): texture images, filters, wraps,\n"
+        "                       mipmaps, environments, coordinates\n"
         "  --seed S             random seed of every family (default 1)\n"
         "  --index I            replay random scene I of seed S alone (with --random N,\n"
-        "                       --random-lit N or --random-raster N: scenes I..I+N-1 of\n"
+        "                       --random-lit N, --random-raster N or --random-tex N:\n"
+        "                       scenes I..I+N-1 of\n"
         "                       that family)\n"
         "  --no-random          no plain random scenes\n"
         "  --jobs N             renderer processes at once (default: online CPUs)\n"
@@ -126,6 +131,7 @@ static int parse_args(int argc, char **argv, struct options *o)
         else if (strcmp(a, "--random") == 0) { o->random = strtol(v, NULL, 10); explicit_random = 1; }
         else if (strcmp(a, "--random-lit") == 0) { o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--random-raster") == 0) { o->random_raster = strtol(v, NULL, 10); explicit_lit = 1; }
+        else if (strcmp(a, "--random-tex") == 0) { o->random_tex = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
         else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
         else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
@@ -142,7 +148,7 @@ static int parse_args(int argc, char **argv, struct options *o)
     else if (o->index >= 0 && !explicit_random)
         o->random = 1;
     o->jobs = o->jobs < 1 ? 1 : o->jobs;
-    return o->random >= 0 && o->random_lit >= 0 && o->random_raster >= 0;
+    return o->random >= 0 && o->random_lit >= 0 && o->random_raster >= 0 && o->random_tex >= 0;
 }
 
 static int has_tag(const char *tags, const char *tag)
@@ -235,6 +241,7 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
     add_random(o, &items, n, &cap, "random", o->random, "");
     add_random(o, &items, n, &cap, "random-lit", o->random_lit, "--random-lit 1 ");
     add_random(o, &items, n, &cap, "random-raster", o->random_raster, "--random-raster 1 ");
+    add_random(o, &items, n, &cap, "random-tex", o->random_tex, "--random-tex 1 ");
     *out = items;
     return 1;
 }

@@ -1,0 +1,627 @@
+/* fc_random_tex.c - random scenes of textured primitives,
+ * "random-tex/s<seed>-i<index>" (tag random-tex).  Like the other families
+ * a scene is a pure function of (seed, index) and nothing depends on GL
+ * results (texture names are fixed, never from glGenTextures).
+ *
+ * A scene: a clear, viewport, depth range and projection from the plain
+ * generator's helpers, then one texture (1D or 2D) built with glTexImage:
+ *   - sizes powers of two or not (1 to 64 texels a side), every 8-bit
+ *     internal format of GL 1.x (RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA,
+ *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
+ *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
+ *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
+ *     gradient or a few colours on u8 extremes;
+ *   - a mipmap chain built by hand (every level, levels of one colour
+ *     each, or a level missing: the texture is then incomplete and the
+ *     unit does not texture) when the minification filter uses one;
+ *   - every minification and magnification filter, wrap modes REPEAT,
+ *     CLAMP_TO_EDGE, CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT per axis, a
+ *     border colour, LOD clamps, base and maximum level, LOD biases;
+ *   - an environment: MODULATE, REPLACE, DECAL, BLEND, ADD or COMBINE
+ *     (every function, source, operand and scale), an environment colour;
+ *   - sometimes coordinate generation, a texture matrix, lighting, fog,
+ *     blending;
+ * and 1-6 primitives of every type with per-vertex texture coordinates
+ * (1 to 4 components, in [0,1], beyond it, on texel centres, with q != 1).
+ * The structure (which state is on, which filters, wraps and env
+ * functions, which primitive types) repeats every FC_TEX_PROFILES indices
+ * with other values, as in the lit and raster families, so long runs reuse
+ * the oracle's shader cache. */
+#define GL_GLEXT_PROTOTYPES 1   /* glWindowPos */
+#include "fc_random.h"
+#include "fc_random_shared.h"
+#include "fc_rng.h"
+#include "fc_trace.h"
+#include "fc_trace_raster.h"
+#include "fc_trace_tex.h"
+#include "fc_emit.h"
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FC_TEX_PROFILES 256
+
+static void fct_glWindowPos2i(GLint x, GLint y) { fc_trace_calli("glWindowPos2i", 2, x, y, 0, 0); glWindowPos2i(x, y); }
+static void fct_glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { fc_trace_call("glWindowPos3f", 3, x, y, z, 0); glWindowPos3f(x, y, z); }
+#define glWindowPos2i fct_glWindowPos2i
+#define glWindowPos3f fct_glWindowPos3f
+#define glActiveTexture fct_glActiveTexture
+#define glMultiTexCoord2f fct_glMultiTexCoord2f
+#define glPixelZoom fct_glPixelZoom
+
+static const GLenum prim_modes[10] = {
+    GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES, GL_TRIANGLE_STRIP,
+    GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON,
+};
+static const GLenum min_filters[6] = {
+    GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+    GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR,
+};
+static const GLenum wraps[5] = {
+    GL_REPEAT, GL_CLAMP_TO_EDGE, GL_CLAMP, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT,
+};
+static const GLenum env_modes[6] = { GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD, GL_COMBINE };
+static const GLenum combine_rgb[8] = {
+    GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT,
+    GL_DOT3_RGB, GL_DOT3_RGBA,
+};
+static const GLenum combine_sources[4] = { GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS };
+static const GLenum operands_rgb[4] = {
+    GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA,
+};
+static const GLenum operands_a[2] = { GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA };
+/* internal format, and the source formats that fit it */
+static const GLint internals[14] = {
+    GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_INTENSITY,
+    GL_RGBA8, GL_RGB8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8, GL_ALPHA8, GL_INTENSITY8, 3, 4,
+};
+static const GLenum src_formats[5] = { GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA };
+static const int src_components[5] = { 4, 3, 1, 2, 1 };
+
+/* The structure of a scene: drawn from the profile stream. */
+struct profile {
+    int nprim;
+    GLenum modes[6];
+    int tex1d;                  /* a 1D texture rather than 2D */
+    int npot;                   /* sizes not powers of two */
+    GLint internal;
+    int src;                    /* index into src_formats */
+    GLenum min_filter, mag_filter;
+    GLenum wrap_s, wrap_t;
+    int mip;                    /* 0 full chain, 1 single colours, 2 a level missing */
+    int lod;                    /* MIN/MAX_LOD, BASE/MAX_LEVEL, LOD_BIAS set */
+    int border_color;
+    GLenum env;
+    GLenum crgb, calpha;        /* COMBINE functions */
+    GLenum src_rgb[3], src_a[3], op_rgb[3], op_a[3];
+    int scale_rgb, scale_a;
+    int texgen;                 /* 0 off, 1 OBJECT_LINEAR, 2 EYE_LINEAR, 3 SPHERE_MAP */
+    int texmat;
+    int lit, fog, blend, flat, depth_test;
+    int tex_enabled;            /* GL_TEXTURE_1D/2D enabled (rarely off) */
+    int unit1;                  /* a second unit: 0 off, 1 texgen, 2 a constant coordinate */
+    GLenum env1;
+    int pixels;                 /* pixel operations after the primitives */
+};
+
+static void make_profile(fc_rng *k, struct profile *p)
+{
+    memset(p, 0, sizeof *p);
+    p->nprim = fc_rng_range(k, 1, 6);
+    for (int i = 0; i < p->nprim; i++)
+        p->modes[i] = fc_rng_chance(k, 70) ? prim_modes[4 + fc_rng_below(k, 6)]
+                                          : prim_modes[fc_rng_below(k, 4)];
+    p->tex1d = fc_rng_chance(k, 15);
+    p->npot = fc_rng_chance(k, 30);
+    p->internal = internals[fc_rng_below(k, 14)];
+    p->src = (int)fc_rng_below(k, 5);
+    p->min_filter = min_filters[fc_rng_below(k, 6)];
+    p->mag_filter = fc_rng_chance(k, 50) ? GL_NEAREST : GL_LINEAR;
+    /* the fixed-point path's wraps most of the time */
+    p->wrap_s = fc_rng_chance(k, 70) ? wraps[fc_rng_below(k, 2)] : wraps[fc_rng_below(k, 5)];
+    p->wrap_t = fc_rng_chance(k, 70) ? wraps[fc_rng_below(k, 2)] : wraps[fc_rng_below(k, 5)];
+    p->mip = fc_rng_chance(k, 80) ? (int)fc_rng_below(k, 2) : 2;
+    p->lod = fc_rng_chance(k, 15);
+    p->border_color = fc_rng_chance(k, 50);
+    p->env = env_modes[fc_rng_below(k, 6)];
+    p->crgb = combine_rgb[fc_rng_below(k, 8)];
+    p->calpha = combine_rgb[fc_rng_below(k, 6)];
+    for (int i = 0; i < 3; i++) {
+        p->src_rgb[i] = combine_sources[fc_rng_below(k, 4)];
+        p->src_a[i] = combine_sources[fc_rng_below(k, 4)];
+        p->op_rgb[i] = operands_rgb[fc_rng_below(k, 4)];
+        p->op_a[i] = operands_a[fc_rng_below(k, 2)];
+    }
+    p->scale_rgb = 1 << fc_rng_below(k, 3);
+    p->scale_a = 1 << fc_rng_below(k, 3);
+    p->texgen = fc_rng_chance(k, 15) ? 1 + (int)fc_rng_below(k, 3) : 0;
+    p->texmat = fc_rng_chance(k, 15);
+    p->lit = fc_rng_chance(k, 25);
+    p->fog = fc_rng_chance(k, 10);
+    p->blend = fc_rng_chance(k, 20);
+    p->flat = fc_rng_chance(k, 20);
+    p->depth_test = fc_rng_chance(k, 50);
+    p->tex_enabled = fc_rng_chance(k, 95);
+    p->unit1 = fc_rng_chance(k, 25) ? 1 + (int)fc_rng_below(k, 2) : 0;
+    p->env1 = env_modes[fc_rng_below(k, 5)];
+    p->pixels = fc_rng_chance(k, 30);
+}
+
+/* ---- the texture ---------------------------------------------------------- */
+
+static int tex_size(fc_rng *r, int npot)
+{
+    static const int pot[8] = { 1, 2, 4, 8, 16, 32, 64, 8 };
+    static const int odd[10] = { 3, 5, 6, 7, 10, 13, 17, 31, 33, 50 };
+    return npot ? odd[fc_rng_below(r, 10)] : pot[fc_rng_below(r, 8)];
+}
+
+/* A byte on or next to the extremes, or any. */
+static unsigned char texel_byte(fc_rng *r)
+{
+    switch (fc_rng_below(r, 6)) {
+    case 0: return 0;
+    case 1: return 255;
+    case 2: return (unsigned char)(fc_rng_chance(r, 50) ? 127 : 128);
+    default: return (unsigned char)fc_rng_below(r, 256);
+    }
+}
+
+/* Uploads one level (w x h texels of n components, rows padded to align)
+ * with a pattern: 0 random, 1 checker, 2 gradient, 3 one colour. */
+static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h,
+                         int pattern, int align)
+{
+    const int n = src_components[p->src];
+    const size_t row = ((size_t)(w * n) + (size_t)align - 1) / (size_t)align * (size_t)align;
+    const size_t bytes = row * (size_t)h;
+    unsigned char *img = calloc(bytes ? bytes : 1, 1);
+    unsigned char a[4], b[4];
+    if (!img)
+        abort();
+    for (int c = 0; c < 4; c++)
+        a[c] = texel_byte(r), b[c] = texel_byte(r);
+    const int cell = 1 << fc_rng_below(r, 3);
+    for (int y = 0; y < h; y++) {
+        for (int x = 0; x < w; x++) {
+            unsigned char *t = img + (size_t)y * row + (size_t)(x * n);
+            for (int c = 0; c < n; c++) {
+                switch (pattern) {
+                case 0: t[c] = texel_byte(r); break;
+                case 1: t[c] = ((x / cell + y / cell) & 1) ? a[c] : b[c]; break;
+                case 2: t[c] = (unsigned char)((a[c] * (w - x) + b[c] * x + 255 * y) / (w + h)); break;
+                default: t[c] = a[c]; break;
+                }
+            }
+        }
+    }
+    if (p->tex1d)
+        fct_glTexImage1D(GL_TEXTURE_1D, level, p->internal, w, 0, src_formats[p->src],
+                         GL_UNSIGNED_BYTE, img, bytes);
+    else
+        fct_glTexImage2D(GL_TEXTURE_2D, level, p->internal, w, h, 0, src_formats[p->src],
+                         GL_UNSIGNED_BYTE, img, bytes);
+    free(img);
+}
+
+static void random_texture(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    const GLenum target = p->tex1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+    fct_glBindTexture(target, 1 + fc_rng_below(r, 3));
+    static const int aligns[4] = { 1, 2, 4, 8 };
+    GLint align = aligns[fc_rng_below(r, 4)];
+    fct_glPixelStorei(GL_UNPACK_ALIGNMENT, align);
+    int w = tex_size(r, p->npot), h = p->tex1d ? 1 : tex_size(r, p->npot);
+    const int pattern = (int)fc_rng_below(r, 3);
+    upload_level(r, p, 0, w, h, pattern, align);
+    const int mipmapped = p->min_filter != GL_NEAREST && p->min_filter != GL_LINEAR;
+    if (mipmapped || fc_rng_chance(r, 10)) {
+        const int skip = p->mip == 2 ? fc_rng_range(r, 1, 6) : -1;
+        for (int level = 1; w > 1 || h > 1; level++) {
+            w = w > 1 ? w / 2 : 1;
+            h = h > 1 ? h / 2 : 1;
+            if (level == skip)
+                continue;
+            upload_level(r, p, level, w, h, p->mip == 1 ? 3 : (int)fc_rng_below(r, 4), align);
+        }
+    }
+    fct_glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)p->min_filter);
+    fct_glTexParameteri(target, GL_TEXTURE_MAG_FILTER, (GLint)p->mag_filter);
+    fct_glTexParameteri(target, GL_TEXTURE_WRAP_S, (GLint)p->wrap_s);
+    if (!p->tex1d)
+        fct_glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)p->wrap_t);
+    if (p->border_color) {
+        GLfloat c[4];
+        for (int i = 0; i < 4; i++)
+            c[i] = (GLfloat)(fc_rng_chance(r, 50) ? fc_rng_range(r, 0, 255) / 255.0 : fc_rng_unit(r));
+        fct_glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, c);
+    }
+    if (p->lod) {
+        if (fc_rng_chance(r, 50))
+            fct_glTexParameterf(target, GL_TEXTURE_MIN_LOD, (GLfloat)fc_rng_real(r, -2, 4));
+        if (fc_rng_chance(r, 50))
+            fct_glTexParameterf(target, GL_TEXTURE_MAX_LOD, (GLfloat)fc_rng_real(r, 0, 6));
+        if (fc_rng_chance(r, 40))
+            fct_glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, fc_rng_range(r, 0, 2));
+        if (fc_rng_chance(r, 40))
+            fct_glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, fc_rng_range(r, 0, 6));
+        if (fc_rng_chance(r, 50))
+            fct_glTexParameterf(target, GL_TEXTURE_LOD_BIAS, (GLfloat)fc_rng_real(r, -3, 3));
+        if (fc_rng_chance(r, 30))
+            fct_glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, (GLfloat)fc_rng_real(r, -2, 2));
+    }
+    if (p->tex_enabled)
+        glEnable(target);
+}
+
+static void random_env(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    GLfloat c[4];
+    for (int i = 0; i < 4; i++)
+        c[i] = (GLfloat)(fc_rng_chance(r, 50) ? fc_rng_range(r, 0, 255) / 255.0 : fc_rng_unit(r));
+    fct_glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, c);
+    fct_glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)p->env);
+    if (p->env != GL_COMBINE)
+        return;
+    fct_glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)p->crgb);
+    fct_glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)p->calpha);
+    for (int i = 0; i < 3; i++) {
+        fct_glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, (GLint)p->src_rgb[i]);
+        fct_glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i, (GLint)p->src_a[i]);
+        fct_glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, (GLint)p->op_rgb[i]);
+        fct_glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i, (GLint)p->op_a[i]);
+    }
+    fct_glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, (GLfloat)p->scale_rgb);
+    fct_glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, (GLfloat)p->scale_a);
+}
+
+static void random_texgen(struct scene *s, const struct profile *p)
+{
+    static const GLenum modes[3] = { GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP };
+    fc_rng *r = &s->r;
+    if (!p->texgen)
+        return;
+    for (int c = 0; c < 2; c++) {
+        const GLenum coord = GL_S + (GLenum)c;
+        GLfloat plane[4];
+        for (int i = 0; i < 4; i++)
+            plane[i] = (GLfloat)(fc_rng_chance(r, 30) ? 0.0 : fc_rng_real(r, -0.1, 0.1));
+        fct_glTexGeni(coord, GL_TEXTURE_GEN_MODE, (GLint)modes[p->texgen - 1]);
+        fct_glTexGenfv(coord, p->texgen == 2 ? GL_EYE_PLANE : GL_OBJECT_PLANE, plane);
+        glEnable(GL_TEXTURE_GEN_S + (GLenum)c);
+    }
+}
+
+static void random_texmatrix(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    if (!p->texmat)
+        return;
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    switch (fc_rng_below(r, 3)) {
+    case 0: glTranslatef((GLfloat)fc_rng_real(r, -1, 1), (GLfloat)fc_rng_real(r, -1, 1), 0); break;
+    case 1: glRotatef((GLfloat)fc_rng_real(r, -180, 180), 0, 0, 1); break;
+    default: glScalef((GLfloat)fc_rng_real(r, -3, 3), (GLfloat)fc_rng_real(r, -3, 3), 1); break;
+    }
+    glMatrixMode(GL_MODELVIEW);
+}
+
+static void random_light(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    if (!p->lit)
+        return;
+    GLfloat pos[4] = { (GLfloat)fc_rng_real(r, -1, 1), (GLfloat)fc_rng_real(r, -1, 1), 1, 0 };
+    GLfloat dif[4] = { (GLfloat)fc_rng_unit(r), (GLfloat)fc_rng_unit(r), (GLfloat)fc_rng_unit(r), 1 };
+    glLightfv(GL_LIGHT0, GL_POSITION, pos);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, dif);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHTING);
+    if (fc_rng_chance(r, 50))
+        glEnable(GL_COLOR_MATERIAL);
+    glNormal3f((GLfloat)fc_rng_real(r, -1, 1), (GLfloat)fc_rng_real(r, -1, 1), 1);
+}
+
+static void random_fragment(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    if (p->fog) {
+        glEnable(GL_FOG);
+        glFogi(GL_FOG_MODE, GL_LINEAR);
+        glFogf(GL_FOG_START, (GLfloat)fc_rng_real(r, -1, 1));
+        glFogf(GL_FOG_END, (GLfloat)fc_rng_real(r, 1, 20));
+    }
+    if (p->blend) {
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glEnable(GL_BLEND);
+    }
+}
+
+/* ---- primitives ------------------------------------------------------------ */
+
+/* A texture coordinate component. */
+static double tc_value(fc_rng *r, int size)
+{
+    switch (fc_rng_below(r, 8)) {
+    case 0: return fc_rng_range(r, -2, 3);
+    case 1: return (fc_rng_range(r, 0, 2 * size) + 0.5) / size;     /* texel centres */
+    case 2: return (double)(float)fc_rng_real(r, -3, 4);
+    case 3: return fc_rng_range(r, 0, 8 * size) / (4.0 * size);     /* texel edges */
+    case 4: return (double)(float)fc_rng_real(r, -1000, 1000);
+    default: return (double)(float)fc_rng_unit(r);
+    }
+}
+
+static void emit_texcoord(struct scene *s)
+{
+    fc_rng *r = &s->r;
+    double t[4];
+    const int n = fc_rng_chance(r, 10) ? 4 : fc_rng_chance(r, 10) ? 1 : fc_rng_chance(r, 10) ? 3 : 2;
+    const int size = 1 << fc_rng_below(r, 6);
+    for (int i = 0; i < 4; i++)
+        t[i] = i < 3 ? tc_value(r, size) : 1.0;
+    if (n == 4)
+        t[3] = fc_rng_chance(r, 50) ? (double)(float)fc_rng_real(r, 0.25, 4) : fc_rng_range(r, -2, 3);
+    int ints = 1;
+    for (int i = 0; i < n; i++)
+        ints &= t[i] == floor(t[i]) && fabs(t[i]) <= 32767;
+    const int vec = fc_rng_chance(r, 40);
+    int type = (int)fc_rng_below(r, ints ? 4 : 2);
+#define TC(T, suf) do {                                                                  \
+        T a[4] = { (T)t[0], (T)t[1], (T)t[2], (T)t[3] };                                 \
+        if (vec) {                                                                       \
+            if (n == 1) glTexCoord1##suf##v(a); else if (n == 2) glTexCoord2##suf##v(a); \
+            else if (n == 3) glTexCoord3##suf##v(a); else glTexCoord4##suf##v(a);        \
+        } else {                                                                         \
+            if (n == 1) glTexCoord1##suf(a[0]); else if (n == 2) glTexCoord2##suf(a[0], a[1]); \
+            else if (n == 3) glTexCoord3##suf(a[0], a[1], a[2]);                         \
+            else glTexCoord4##suf(a[0], a[1], a[2], a[3]);                               \
+        }                                                                                \
+    } while (0)
+    switch (type) {
+    case 0: TC(GLfloat, f); break;
+    case 1: TC(GLdouble, d); break;
+    case 2: TC(GLshort, s); break;
+    default: TC(GLint, i); break;
+    }
+#undef TC
+}
+
+static int vertex_count(fc_rng *r, GLenum mode)
+{
+    int n = fc_rng_range(r, 1, 4);
+    switch (mode) {
+    case GL_POINTS: return fc_rng_range(r, 1, 10);
+    case GL_LINES: return 2 * n;
+    case GL_LINE_STRIP: case GL_LINE_LOOP: return fc_rng_range(r, 2, 6);
+    case GL_TRIANGLES: return 3 * n;
+    case GL_QUADS: return 4 * n;
+    case GL_QUAD_STRIP: return 2 + 2 * n;
+    default: return 2 + n;
+    }
+}
+
+/* A vertex well inside the view (60%: textures need covered pixels), or
+ * one of the plain generator's fresh vertices (view-volume bounds, w near
+ * 0, behind the eye...). */
+static void tex_vertex(struct scene *s, double v[4])
+{
+    fc_rng *r = &s->r;
+    if (fc_rng_chance(r, 40) || (s->space != SP_PIXEL && s->space != SP_FRUSTUM)) {
+        fcr_fresh_vertex(s, v);
+        return;
+    }
+    v[3] = 1;
+    if (s->space == SP_PIXEL) {
+        v[0] = (float)fc_rng_real(r, -0.2 * s->vw, 1.2 * s->vw);
+        v[1] = (float)fc_rng_real(r, -0.2 * s->vh, 1.2 * s->vh);
+        v[2] = (float)fc_rng_real(r, -0.9, 0.9);
+        return;
+    }
+    /* in the frustum: eye depth from just past the near plane to 30 near
+     * distances (or the far plane), x and y across the view and beyond */
+    const double n = s->fr[4], f = s->fr[5] < 30 * n ? s->fr[5] : 30 * n;
+    const double ze = -(float)fc_rng_real(r, n * 1.001, f * 0.999);
+    v[0] = (float)(fc_rng_real(r, s->fr[0], s->fr[1]) * 1.3 * -ze / n);
+    v[1] = (float)(fc_rng_real(r, s->fr[2], s->fr[3]) * 1.3 * -ze / n);
+    v[2] = ze;
+}
+
+static void random_primitive(struct scene *s, GLenum mode)
+{
+    fc_rng *r = &s->r;
+    double v[4];
+    const int n = vertex_count(r, mode);
+    glBegin(mode);
+    for (int k = 0; k < n; k++) {
+        if (s->npool && fc_rng_chance(r, 15))
+            memcpy(v, s->pool[fc_rng_below(r, (uint32_t)(s->npool < POOL ? s->npool : POOL))],
+                   sizeof v);
+        else
+            tex_vertex(s, v);
+        if (fc_rng_chance(r, 60))
+            fcr_emit_color(s);
+        if (k == 0 || fc_rng_chance(r, 85))
+            emit_texcoord(s);
+        fcr_emit_vertex(s, v, v[3] != 1 ? 4 : 3);
+        memcpy(s->pool[s->npool++ % POOL], v, sizeof v);
+    }
+    glEnd();
+}
+
+/* Unit 1: a small 2D texture (REPEAT, LINEAR or NEAREST) with its own
+ * environment, its coordinates from OBJECT_LINEAR texgen or one constant
+ * glMultiTexCoord; then unit 0 is active again. */
+static void random_unit1(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    if (!p->unit1)
+        return;
+    glActiveTexture(GL_TEXTURE1);
+    fct_glBindTexture(GL_TEXTURE_2D, 7);
+    const int w = 1 << fc_rng_below(r, 4), h = 1 << fc_rng_below(r, 4);
+    unsigned char img[8 * 8 * 4];
+    for (int i = 0; i < w * h * 4; i++)
+        img[i] = texel_byte(r);
+    /* rows of 4 * w bytes: no padding under an alignment of 4 */
+    fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    fct_glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img,
+                     (size_t)(w * h * 4));
+    fct_glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, fc_rng_chance(r, 50) ? GL_LINEAR : GL_NEAREST);
+    fct_glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, fc_rng_chance(r, 50) ? GL_LINEAR : GL_NEAREST);
+    fct_glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)p->env1);
+    if (p->unit1 == 1) {
+        for (int c = 0; c < 2; c++) {
+            GLfloat plane[4];
+            for (int i = 0; i < 4; i++)
+                plane[i] = (GLfloat)fc_rng_real(r, -0.2, 0.2);
+            fct_glTexGeni(GL_S + (GLenum)c, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+            fct_glTexGenfv(GL_S + (GLenum)c, GL_OBJECT_PLANE, plane);
+            glEnable(GL_TEXTURE_GEN_S + (GLenum)c);
+        }
+    } else {
+        glMultiTexCoord2f(GL_TEXTURE1, (GLfloat)fc_rng_unit(r), (GLfloat)fc_rng_unit(r));
+    }
+    glEnable(GL_TEXTURE_2D);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+/* glBitmap, glDrawPixels and glCopyPixels at random raster positions,
+ * with zoom, under the scene's texture, fog and blend state. */
+static void random_pixels(struct scene *s, const struct profile *p)
+{
+    fc_rng *r = &s->r;
+    static const GLfloat zooms[7] = { 1, 1, 2, 0.5f, -1, 1.5f, 3 };
+    if (!p->pixels)
+        return;
+    const int n = fc_rng_range(r, 1, 3);
+    for (int i = 0; i < n; i++) {
+        if (fc_rng_chance(r, 50))
+            glWindowPos2i(fc_rng_range(r, -4, s->w), fc_rng_range(r, -4, s->h));
+        else
+            glWindowPos3f((GLfloat)fc_rng_real(r, -4, s->w), (GLfloat)fc_rng_real(r, -4, s->h),
+                          (GLfloat)fc_rng_unit(r));
+        glPixelZoom(zooms[fc_rng_below(r, 7)], zooms[fc_rng_below(r, 7)]);
+        const int w = fc_rng_range(r, 1, 24), h = fc_rng_range(r, 1, 24);
+        unsigned char img[24 * 24 * 4];
+        /* tight rows: the trace holds exactly the bytes GL reads */
+        fct_glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        switch (fc_rng_below(r, 3)) {
+        case 0: {
+            for (int k = 0; k < 24 * 24 * 4; k++)
+                img[k] = (unsigned char)fc_rng_below(r, 256);
+            fct_trace_image(img, (size_t)((w + 7) / 8 * h));
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glBitmap(%d, %d, 0, 0, %d, %d, img); }\n", w, h, w / 2, -h / 3);
+            glBitmap(w, h, 0.0f, 0.0f, (GLfloat)(w / 2), (GLfloat)(-h / 3), img);
+            break;
+        }
+        case 1: {
+            const int src = (int)fc_rng_below(r, 5);
+            for (int k = 0; k < 24 * 24 * 4; k++)
+                img[k] = texel_byte(r);
+            fct_trace_image(img, (size_t)(w * h * src_components[src]));
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glDrawPixels(%d, %d, %#x, GL_UNSIGNED_BYTE, img); }\n", w, h,
+                        (unsigned)src_formats[src]);
+            glDrawPixels(w, h, src_formats[src], GL_UNSIGNED_BYTE, img);
+            break;
+        }
+        default: {
+            const int x = fc_rng_range(r, -4, s->w), y = fc_rng_range(r, -4, s->h);
+            const GLenum type = fc_rng_chance(r, 80) ? GL_COLOR : GL_DEPTH;
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "glCopyPixels(%d, %d, %d, %d, %#x);\n", x, y, w, h, (unsigned)type);
+            glCopyPixels(x, y, w, h, type);
+            break;
+        }
+        }
+    }
+    glPixelZoom(1, 1);
+}
+
+static void tex_scene(fc_h *h)
+{
+    const fc_case *c = fc_this_case(h);
+    struct scene s;
+    struct profile p;
+    uint64_t seed;
+    uint32_t index;
+
+    fc_lit_gl_load();
+    memset(&s, 0, sizeof s);
+    fc_random_tex_parse(c->name, &seed, &index);
+    fc_rng k = fc_rng_make(seed, index % FC_TEX_PROFILES, 12);
+    make_profile(&k, &p);
+    fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
+    s.r = fc_rng_make(seed, index, 11);
+    s.w = c->width;
+    s.h = c->height;
+    {
+        const uint32_t sp = fc_rng_below(&k, 100);
+        s.space = sp < 45 ? SP_PIXEL : sp < 85 ? SP_FRUSTUM : (enum space)(1 + fc_rng_below(&k, 4));
+    }
+
+    /* a clear the primitives can pass the depth test against */
+    glClearColor((GLclampf)fc_rng_unit(&s.r), (GLclampf)fc_rng_unit(&s.r),
+                 (GLclampf)fc_rng_unit(&s.r), (GLclampf)fc_rng_unit(&s.r));
+    glClearDepth(fc_rng_chance(&s.r, 80) ? 1.0 : fc_rng_real(&s.r, 0.5, 1.0));
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    fcr_viewport(&s);
+    fcr_depth_range(&s.r);
+    fcr_projection(&s);
+    glLoadIdentity();
+    if (p.depth_test)
+        glEnable(GL_DEPTH_TEST);
+    glShadeModel(p.flat ? GL_FLAT : GL_SMOOTH);
+
+    random_texture(&s, &p);
+    random_env(&s, &p);
+    random_unit1(&s, &p);
+    random_texgen(&s, &p);
+    random_texmatrix(&s, &p);
+    random_light(&s, &p);
+    random_fragment(&s, &p);
+
+    for (int i = 0; i < p.nprim; i++) {
+        random_primitive(&s, p.modes[i]);
+        if (c->frames == 2 && i == p.nprim / 2)
+            fc_capture(h);
+    }
+    random_pixels(&s, &p);
+    fc_capture(h);
+    fc_error(h, "scene glGetError");
+}
+
+int fc_random_tex_parse(const char *name, uint64_t *seed, uint32_t *index)
+{
+    char tail;
+    return sscanf(name, "random-tex/s%" SCNu64 "-i%" SCNu32 "%c", seed, index, &tail) == 2;
+}
+
+void fc_random_tex_case(uint64_t seed, uint32_t index, fc_case *out, char *name)
+{
+    static const GLenum formats[8] = {
+        OSMESA_RGBA, OSMESA_RGBA, OSMESA_RGBA, OSMESA_RGBA, OSMESA_RGBA,
+        OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB,
+    };
+    fc_rng r = fc_rng_make(seed, index, 13);
+    fc_rng k = fc_rng_make(seed, index % FC_TEX_PROFILES, 14);
+
+    snprintf(name, FC_RANDOM_NAME_MAX, "random-tex/s%" PRIu64 "-i%" PRIu32, seed, index);
+    memset(out, 0, sizeof *out);
+    out->name = name;
+    out->width = fc_rng_range(&r, 16, 96);
+    out->height = fc_rng_range(&r, 16, 96);
+    out->format = formats[fc_rng_below(&k, 8)];
+    out->depth_bits = fc_rng_chance(&k, 80) ? 24 : 16;
+    out->frames = fc_rng_chance(&k, 20) ? 2 : 1;
+    out->tags = "random-tex";
+    out->fn = tex_scene;
+}
