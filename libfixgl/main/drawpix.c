@@ -133,15 +133,19 @@ static unsigned tex_varying(const struct fgl_context *ctx)
 /* What each unit sees (r_pixel_image.tex_quad, tex_const), for the
  * program whose varying coordinates are `varying`.  The passthrough
  * vertex shader writes only gl_TexCoord[0], the image's coordinate
- * [S: st_cb_drawpixels.c:st_make_passthrough_vertex_shader]:
+ * [S: st_cb_drawpixels.c:st_make_passthrough_vertex_shader], and
+ * llvmpipe feeds varyings no output writes zeros
+ * [S: draw_vertex.h:draw_emit_vertex_attr, DRAW_ATTR_NONEXIST]:
  * - glBitmap (nir_lower_bitmap.c) reads the image through that same
- *   varying, so unit 0's varying is the quad's coordinate;
+ *   varying, so a varying unit 0 reads the quad's coordinate, the other
+ *   varying units zeros, the rest the current coordinate;
  * - glDrawPixels and glCopyPixels (nir_lower_drawpixels.c:lower_texcoord)
- *   replace every read of gl_TexCoord[0] by the current coordinate of
- *   unit 0 (STATE_CURRENT_ATTRIB, VERT_ATTRIB_TEX0);
- * - the varyings of the other units are written by nothing, and llvmpipe
- *   feeds them zeros [S: draw_vertex.h:draw_emit_vertex_attr,
- *   DRAW_ATTR_NONEXIST]. */
+ *   replace gl_TexCoord[0] by the current coordinate of unit 0
+ *   (STATE_CURRENT_ATTRIB, VERT_ATTRIB_TEX0), and the other units read
+ *   (0, 0, 0, 0) whether or not their coordinate varies (probed: a unit-1
+ *   lookup with a current coordinate of its own, with no draw before, or
+ *   with unit 1 outside the last batch's vertex format, is the lookup at
+ *   q = 0 under NEAREST and LINEAR, never the current coordinate's). */
 static void pixel_texcoords(struct fgl_context *ctx, struct r_pixel_image *img,
                             unsigned varying, bool bitmap)
 {
@@ -149,15 +153,13 @@ static void pixel_texcoords(struct fgl_context *ctx, struct r_pixel_image *img,
    img->tex_quad = 0;
    for (unsigned u = 0; u < R_MAX_TEX_UNITS && u < FGL_MAX_TEXTURE_UNITS; u++) {
       const float *cur = ctx->Current.Attrib[FGL_ATTR_TEX0 + u];
-      if (!(varying & (1u << u))) {
-         memcpy(img->tex_const[u], cur, sizeof(img->tex_const[u]));
-      } else if (u == 0 && bitmap) {
+      const bool vary = (varying & (1u << u)) != 0;
+      if (bitmap && u == 0 && vary)
          img->tex_quad = 1u;
-      } else if (u == 0) {
+      else if (bitmap ? !vary : u == 0)
          memcpy(img->tex_const[u], cur, sizeof(img->tex_const[u]));
-      } else {
+      else
          memset(img->tex_const[u], 0, sizeof(img->tex_const[u]));
-      }
    }
 }
 
