@@ -1141,7 +1141,8 @@ static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy
  * colour, zoom 1, and no per-fragment work the blit would skip
  * (blending, alpha test, a logic op but COPY, a depth test that could
  * fail or write, fog, stencil ops, pixel transfer, no colour buffer); the
- * colour mask and the stencil function are not looked at.  The regions
+ * colour mask, the stencil function and texturing are not looked at (an
+ * enabled texture does not stop the blit: pixel/copypixels_textured_1d).  The regions
  * are clipped like glReadPixels and glDrawPixels; overlapping source and
  * destination take the texture path. */
 static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width,
@@ -1161,7 +1162,7 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
         (ctx->Stencil.Enabled &&
          (ctx->Stencil.FailFunc != GL_KEEP || ctx->Stencil.ZPassFunc != GL_KEEP ||
           ctx->Stencil.ZFailFunc != GL_KEEP)) ||
-        ctx->_EnabledTexUnits != 0 || ctx->Color.DrawBuffer == GL_NONE))
+        ctx->Color.DrawBuffer == GL_NONE))
       return false;
 
    int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
