@@ -784,6 +784,7 @@ struct fgl_context {
       uint8_t Buffer[512 * 32]; /* R8 texels, row 0 at YPos: 0 draws */
       struct r_state Raster;   /* the state last validated (the cso state
                                 * the cache is drawn with) */
+      unsigned TexVarying;     /* its program's gl_TexCoord[u] inputs */
    } BitmapCache;
 
    /* ---- glDrawPixels' image cache (main/drawpix.c)
@@ -829,6 +830,13 @@ struct fgl_context {
    unsigned _TexMatEnabled;
    unsigned _TexGenEnabled;
    unsigned _GenFlags;
+   /* bit u: the last draw's vertex format had unit u's coordinate
+    * [S: draw.c:_mesa_set_varying_vp_inputs, _VaryingInputs]; with
+    * _TexGenEnabled and _TexMatEnabled it decides whether the fixed-function
+    * fragment program reads gl_TexCoord[u] or the current coordinate
+    * (ff_fragment_shader.cpp:filter_fp_input_mask), which pixel
+    * rectangles see (main/drawpix.c) */
+   unsigned _VaryingTexUnits;
 
    /* ---- framebuffer ---- */
    struct fgl_framebuffer *DrawBuffer;

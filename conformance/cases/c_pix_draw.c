@@ -6,6 +6,7 @@
  * depth and stencil with overlapping regions and zoom, feedback and
  * selection records, display lists and errors. */
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -1688,6 +1689,235 @@ static void copypixels_scissor_list(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- textured pixel rectangles ---- */
+
+/* A 2D texture of `size` texels with every mip level (a colour pattern
+ * of its own per level) or only level 0, on the active unit. */
+static void tex2d_levels(GLuint name, int size, bool mips, unsigned seed)
+{
+    glBindTexture(GL_TEXTURE_2D, name);
+    static GLubyte img[64 * 64 * 4];
+    for (int level = 0, s = size; s >= 1; level++, s /= 2) {
+        make_rgba_ub(img, s, s, seed + (unsigned)level * 7u);
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        if (!mips)
+            break;
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                    mips ? GL_LINEAR_MIPMAP_NEAREST : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+/* A textured triangle with per-vertex coordinates on the units in
+ * `units` (they become the fragment program's varyings). */
+static void textured_tri(unsigned units)
+{
+    static const float v[3][4] = { { 2, 2, 0.1f, 0.2f }, { 20, 3, 0.9f, 0.1f }, { 4, 22, 0.3f, 0.8f } };
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < 3; i++) {
+        for (int u = 0; u < 2; u++)
+            if (units & (1u << u))
+                glMultiTexCoord2f(GL_TEXTURE0 + (GLenum)u, v[i][2], v[i][3]);
+        glVertex2f(v[i][0], v[i][1]);
+    }
+    glEnd();
+}
+
+/* glBitmap under a mipmapped 2D texture: with the coordinate varying
+ * (in the last draw's vertex format, or made by texgen or the texture
+ * matrix) the unit reads the bitmap quad's own 0..1 coordinate, whose
+ * derivatives pick the level (a bitmap too big for the cache spans its
+ * own texture; a cached one the 512x32 cache); otherwise the current
+ * coordinate, the same at every pixel (magnified). */
+static void bitmap_textured_2d(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    tex2d_levels(1, 64, true, 11u);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GLubyte tall[8 * 40], rows[10];
+    for (int i = 0; i < (int)sizeof tall; i++)
+        tall[i] = (GLubyte)(0xff ^ (i * 37));
+    glyph('W', rows);
+    for (int frame = 0; frame < 4; frame++) {
+        glColor4f(1, 1, 1, 1);
+        if (frame == 2) {
+            glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+            glEnable(GL_TEXTURE_GEN_S);
+        } else if (frame == 3) {
+            glDisable(GL_TEXTURE_GEN_S);
+            glMatrixMode(GL_TEXTURE);
+            glLoadIdentity();
+            glScalef(2.0f, 0.5f, 1.0f);
+            glMatrixMode(GL_MODELVIEW);
+        }
+        /* frame 1: the coordinate outside the batch's vertex format */
+        textured_tri(frame == 1 ? 0u : 1u);
+        glTexCoord4f(0.7f, 0.3f, 0.0f, 1.0f);
+        window_pos(24.0f + 2.0f * (float)frame, 4.0f, 0.0f);
+        glBitmap(64, 40, 0, 0, 0, 0, tall);
+        window_pos(4.0f, 48.0f, 0.0f);
+        glBitmap(8, 10, 0, 0, 10, 0, rows);
+        glBitmap(8, 10, 0, 0, 10, 0, rows);
+        glFinish();
+        fc_capture(h);
+        fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    }
+}
+
+/* glDrawPixels and glCopyPixels under two units: unit 0 reads the current
+ * coordinate of unit 0 (nir_lower_drawpixels' gl_TexCoord[0]), unit 1
+ * (0, 0, 0, 0) whatever its current coordinate; both magnified.  Then the
+ * same with the coordinates outside the last batch, with texgen and with
+ * a texture matrix (all of them without effect on the pixels). */
+static void drawpixels_textured_units(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    glActiveTexture(GL_TEXTURE0);
+    tex2d_levels(1, 8, true, 3u);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glActiveTexture(GL_TEXTURE1);
+    tex2d_levels(2, 4, false, 5u);
+    /* min != mag: the lookup at q = 0 has NaN coordinates and derivatives,
+     * and llvmpipe's unordered rho > 1 compare minifies (NEAREST) */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glActiveTexture(GL_TEXTURE0);
+    GLubyte img[12 * 10 * 4];
+    make_rgba_ub(img, 12, 10, 9u);
+    for (int frame = 0; frame < 4; frame++) {
+        if (frame == 2) {
+            glActiveTexture(GL_TEXTURE1);
+            glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+            glEnable(GL_TEXTURE_GEN_T);
+            glActiveTexture(GL_TEXTURE0);
+        } else if (frame == 3) {
+            glMatrixMode(GL_TEXTURE);
+            glRotatef(30.0f, 0, 0, 1);
+            glMatrixMode(GL_MODELVIEW);
+        }
+        textured_tri(frame == 1 ? 0u : 3u);
+        glMultiTexCoord4f(GL_TEXTURE0, 0.3f + 0.1f * (float)frame, 0.6f, 0.0f, 1.0f);
+        glMultiTexCoord4f(GL_TEXTURE1, 0.8f, 0.2f + 0.2f * (float)frame, 0.0f, 1.0f);
+        glColor4f(0.5f, 0.7f, 1.0f, 1.0f);
+        window_pos(26.0f, 4.0f, 0.0f);
+        glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glPixelZoom(1.5f, -1.0f);
+        window_pos(42.0f, 40.0f, 0.0f);
+        glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glPixelZoom(1.0f, 1.0f);
+        window_pos(4.0f, 40.0f, 0.0f);
+        glCopyPixels(0, 0, 24, 20, GL_COLOR);
+        fc_capture(h);
+        fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    }
+}
+
+/* A 1D texture with mipmaps under glCopyPixels and glBitmap: the copy
+ * reads the current s (magnified), the bitmap's coordinate spans the
+ * quad (minified for a wide bitmap), and with fog and blending on. */
+static void copypixels_textured_1d(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.2f, 0.1f, 0.3f, 1.0f, 1.0);
+    glBindTexture(GL_TEXTURE_1D, 3);
+    static GLubyte img[64 * 4];
+    for (int level = 0, s = 64; s >= 1; level++, s /= 2) {
+        make_rgba_ub(img, s, 1, 21u + (unsigned)level);
+        glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    }
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glEnable(GL_TEXTURE_1D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+    GLubyte wide[64 * 8];
+    for (int i = 0; i < (int)sizeof wide; i++)
+        wide[i] = (GLubyte)(i * 29 + 5);
+    for (int frame = 0; frame < 2; frame++) {
+        if (frame == 1) {
+            glEnable(GL_FOG);
+            glFogi(GL_FOG_MODE, GL_LINEAR);
+            glFogf(GL_FOG_START, 0.0f);
+            glFogf(GL_FOG_END, 2.0f);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        }
+        textured_tri(1u);
+        glTexCoord1f(0.55f);
+        glColor4f(0.9f, 0.4f, 0.2f, 0.6f);
+        window_pos(30.0f, 2.0f, 0.0f);
+        glCopyPixels(0, 0, 22, 22, GL_COLOR);
+        window_pos(0.0f, 30.0f, 0.0f);
+        glBitmap(64, 8, 0, 0, 0, 0, wide);
+        window_pos(0.0f, 44.0f, 0.0f);
+        glPixelZoom(0.5f, 2.0f);
+        glCopyPixels(0, 28, 64, 10, GL_COLOR);
+        glPixelZoom(1.0f, 1.0f);
+        fc_capture(h);
+        glDisable(GL_FOG);
+        glDisable(GL_BLEND);
+        fcu_clear(0.2f, 0.1f, 0.3f, 1.0f, 1.0);
+    }
+}
+
+/* The bitmap cache is drawn before a texture image changes or is read
+ * (st_cb_texture.c: st_TexSubImage, st_GetTexSubImage,
+ * st_CopyTexSubImage): cached bitmaps sample the texture as it was, and
+ * a copy into a texture reads them. */
+static void bitmap_cache_teximage(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    tex2d_levels(1, 8, false, 13u);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GLubyte rows[10];
+    glyph('A', rows);
+    static GLubyte red[8 * 8 * 4];
+    for (int i = 0; i < 8 * 8; i++) {
+        red[4 * i] = 255;
+        red[4 * i + 3] = 255;
+    }
+    textured_tri(1u);
+    glColor4f(1, 1, 1, 1);
+    /* glTexSubImage */
+    window_pos(4.0f, 30.0f, 0.0f);
+    glBitmap(8, 10, 0, 0, 10, 0, rows);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, red);
+    glBitmap(8, 10, 0, 0, 10, 0, rows);
+    /* an empty glTexSubImage draws nothing */
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, red);
+    /* glTexImage */
+    tex2d_levels(1, 8, false, 17u);
+    glBitmap(8, 10, 0, 0, 10, 0, rows);
+    /* glGetTexImage, then the texture changes again */
+    static GLubyte back[8 * 8 * 4];
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+    fc_blob(h, "teximage", back, sizeof back);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, red);
+    glBitmap(8, 10, 0, 0, 10, 0, rows);
+    /* glCopyTexSubImage and glCopyTexImage read the cached bitmaps */
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 30, 8, 8);
+    glBitmap(8, 10, 0, 0, 10, 0, rows);
+    glBindTexture(GL_TEXTURE_2D, 4);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 44, 30, 8, 8, 0);
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+    fc_blob(h, "copied", back, sizeof back);
+    glBindTexture(GL_TEXTURE_2D, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+    fc_blob(h, "copied2", back, sizeof back);
+    fc_capture(h);
+}
+
 const fc_case fc_cases_pix_draw[] = {
     FC_CASE_RGBA("pixel/bitmap_text", 180, 110, 1, "pixel bitmap", bitmap_text),
     FC_CASE_RGBA("pixel/bitmap_unpack", 128, 48, 1, "pixel bitmap", bitmap_unpack),
@@ -1754,5 +1984,14 @@ const fc_case fc_cases_pix_draw[] = {
             "pixel drawpixels copypixels stencil errors", pixels_stencil_only),
     FC_CASE("pixel/drawpixels_no_depth", 16, 16, OSMESA_RGBA, 0, 0, 1,
             "pixel drawpixels copypixels errors", pixels_no_depth),
+    FC_CASE_RGBA("pixel/bitmap_textured_2d", 96, 64, 4, "pixel bitmap texture mipmap texgen texmat",
+                 bitmap_textured_2d),
+    FC_CASE_RGBA("pixel/drawpixels_textured_units", 64, 64, 4,
+                 "pixel drawpixels copypixels texture multitexture texgen texmat",
+                 drawpixels_textured_units),
+    FC_CASE_RGBA("pixel/copypixels_textured_1d", 64, 64, 2,
+                 "pixel copypixels bitmap texture mipmap fog", copypixels_textured_1d),
+    FC_CASE_RGBA("pixel/bitmap_cache_textured_teximage", 64, 48, 1, "pixel bitmap texture",
+                 bitmap_cache_teximage),
     { 0 }
 };

@@ -120,17 +120,62 @@ static void expand_bitmap(const struct fgl_pixelstore *p, const uint8_t *bitmap,
    }
 }
 
+/* The fixed-function fragment program's gl_TexCoord[u] inputs at a pixel
+ * rectangle: a unit whose coordinate may vary (the last draw's vertex
+ * format had it, or texgen or the texture matrix produce it) reads the
+ * varying, the others the current coordinate as a constant
+ * [S: ff_fragment_shader.cpp:filter_fp_input_mask, load_texture]. */
+static unsigned tex_varying(const struct fgl_context *ctx)
+{
+   return ctx->_VaryingTexUnits | ctx->_TexGenEnabled | ctx->_TexMatEnabled;
+}
+
+/* What each unit sees (r_pixel_image.tex_quad, tex_const), for the
+ * program whose varying coordinates are `varying`.  The passthrough
+ * vertex shader writes only gl_TexCoord[0], the image's coordinate
+ * [S: st_cb_drawpixels.c:st_make_passthrough_vertex_shader], and
+ * llvmpipe feeds varyings no output writes zeros
+ * [S: draw_vertex.h:draw_emit_vertex_attr, DRAW_ATTR_NONEXIST]:
+ * - glBitmap (nir_lower_bitmap.c) reads the image through that same
+ *   varying, so a varying unit 0 reads the quad's coordinate, the other
+ *   varying units zeros, the rest the current coordinate;
+ * - glDrawPixels and glCopyPixels (nir_lower_drawpixels.c:lower_texcoord)
+ *   replace gl_TexCoord[0] by the current coordinate of unit 0
+ *   (STATE_CURRENT_ATTRIB, VERT_ATTRIB_TEX0), and the other units read
+ *   (0, 0, 0, 0) whether or not their coordinate varies (probed: a unit-1
+ *   lookup with a current coordinate of its own, with no draw before, or
+ *   with unit 1 outside the last batch's vertex format, is the lookup at
+ *   q = 0 under NEAREST and LINEAR, never the current coordinate's). */
+static void pixel_texcoords(struct fgl_context *ctx, struct r_pixel_image *img,
+                            unsigned varying, bool bitmap)
+{
+   fgl_flush_current(ctx);
+   img->tex_quad = 0;
+   for (unsigned u = 0; u < R_MAX_TEX_UNITS && u < FGL_MAX_TEXTURE_UNITS; u++) {
+      const float *cur = ctx->Current.Attrib[FGL_ATTR_TEX0 + u];
+      const bool vary = (varying & (1u << u)) != 0;
+      if (bitmap && u == 0 && vary)
+         img->tex_quad = 1u;
+      else if (bitmap ? !vary : u == 0)
+         memcpy(img->tex_const[u], cur, sizeof(img->tex_const[u]));
+      else
+         memset(img->tex_const[u], 0, sizeof(img->tex_const[u]));
+   }
+}
+
 /* Draws a bitmap texture of w x h texels at GL window (x, y) with the
  * state rs [S: st_cb_bitmap.c:draw_bitmap_quad]: texture coordinates 0..1,
  * t = 1 at the top edge. */
-static void draw_bitmap_quad(const struct r_state *rs, int fb_w, int fb_h, int x, int y,
+static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
+                             unsigned varying, int fb_w, int fb_h, int x, int y,
                              float z, int w, int h, const uint8_t *texels, const float color[4])
 {
    if (!rs->color && !rs->zs)
       return;
-   const struct r_pixel_image img = {
+   struct r_pixel_image img = {
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
    };
+   pixel_texcoords(ctx, &img, varying, true);
    struct r_pixel_quad q;
    memset(&q, 0, sizeof(q));
    q.fb_width = fb_w;
@@ -169,7 +214,7 @@ void fgl_flush_bitmap_cache(struct fgl_context *ctx)
     * current ones */
    struct r_state rs = c->Raster;
    fgl_fog_uniforms(ctx, &rs);
-   draw_bitmap_quad(&rs, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
+   draw_bitmap_quad(ctx, &rs, c->TexVarying, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
                     BITMAP_CACHE_WIDTH, BITMAP_CACHE_HEIGHT, c->Buffer, c->Color);
 }
 
@@ -247,8 +292,9 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
             fgl_flush_bitmap_cache(ctx);
          /* the cache is drawn with the state validated last: this call's */
          ctx->BitmapCache.Raster = ctx->_Raster;
+         ctx->BitmapCache.TexVarying = tex_varying(ctx);
          if (tex) {
-            draw_bitmap_quad(&ctx->_Raster, fb->Width, fb->Height, x, y,
+            draw_bitmap_quad(ctx, &ctx->_Raster, tex_varying(ctx), fb->Width, fb->Height, x, y,
                              ctx->Current.RasterPos[2], width, height, tex,
                              ctx->Current.RasterColor);
          } else if (!accum_bitmap(ctx, x, y, width, height, bits) && bits) {
@@ -260,7 +306,7 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
             }
             memset(t, 0xff, (size_t)width * (size_t)height);
             expand_bitmap(&ctx->Unpack, bits, width, height, t, width);
-            draw_bitmap_quad(&ctx->_Raster, fb->Width, fb->Height, x, y,
+            draw_bitmap_quad(ctx, &ctx->_Raster, tex_varying(ctx), fb->Width, fb->Height, x, y,
                              ctx->Current.RasterPos[2], width, height, t,
                              ctx->Current.RasterColor);
             free(t);
@@ -961,6 +1007,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
       img.kind = R_PIX_COLOR;
       color_transfer(ctx, &img);
    }
+   pixel_texcoords(ctx, &img, tex_varying(ctx), false);
    r_pixel_rect(&rs, &img, &q);
    if (owned) {
       free(texels);
@@ -1094,7 +1141,8 @@ static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy
  * colour, zoom 1, and no per-fragment work the blit would skip
  * (blending, alpha test, a logic op but COPY, a depth test that could
  * fail or write, fog, stencil ops, pixel transfer, no colour buffer); the
- * colour mask and the stencil function are not looked at.  The regions
+ * colour mask, the stencil function and texturing are not looked at (an
+ * enabled texture does not stop the blit: pixel/copypixels_textured_1d).  The regions
  * are clipped like glReadPixels and glDrawPixels; overlapping source and
  * destination take the texture path. */
 static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width,
@@ -1114,7 +1162,7 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
         (ctx->Stencil.Enabled &&
          (ctx->Stencil.FailFunc != GL_KEEP || ctx->Stencil.ZPassFunc != GL_KEEP ||
           ctx->Stencil.ZFailFunc != GL_KEEP)) ||
-        ctx->_EnabledTexUnits != 0 || ctx->Color.DrawBuffer == GL_NONE))
+        ctx->Color.DrawBuffer == GL_NONE))
       return false;
 
    int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
@@ -1245,6 +1293,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       if (ctx->Color.DrawBuffer != GL_NONE)
          fb->ColorDefined = true;
    }
+   pixel_texcoords(ctx, &img, tex_varying(ctx), false);
    r_pixel_rect(&rs, &img, &q);
    free(t);
    free(s);

@@ -537,6 +537,10 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
+   /* [S: st_cb_texture.c:st_TexImage, st_TexSubImage] a non-empty image
+    * draws glBitmap's cache first */
+   if (width && height)
+      fgl_flush_bitmap_cache(ctx);
    if (!store_texels(ctx, img, &unpack, 0, 0, width, height, format, type, pixels)) {
       free(img->Data);
       free(img);
@@ -633,6 +637,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
     * region; offsets are biased by the (stripped, 0) border */
    if (width == 0 || height == 0)
       return;
+   /* [S: st_cb_texture.c:st_TexSubImage] glBitmap's cache is drawn first */
+   fgl_flush_bitmap_cache(ctx);
    if (store_texels(ctx, img, &ctx->Unpack, xoff, yoff, width, height, format, type,
                     pixels))
       ctx->NewState |= FGL_NEW_TEXTURE;
@@ -688,6 +694,10 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
       h = fb->Height - y;
    if (h <= 0)
       return;
+   /* [S: st_cb_texture.c:st_CopyTexSubImage] called for a non-empty
+    * clipped region only (teximage.c:copy_texture_sub_image): glBitmap's
+    * cache is drawn first, and may be copied */
+   fgl_flush_bitmap_cache(ctx);
    for (GLint j = 0; j < h; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
       uint8_t *dst = img->Data + 4 * ((size_t)(yoff + j) * (size_t)img->Width + (size_t)xoff);
@@ -918,6 +928,9 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    }
    if (!pixels)
       return;
+   /* [S: st_cb_texture.c:st_GetTexSubImage] glBitmap's cache is drawn
+    * first */
+   fgl_flush_bitmap_cache(ctx);
    /* [S: texgetimage.c:get_tex_rgba_uncompressed] the texels through
     * pixelformat's packer (the rebase of L/LA/I/A/RGB images, L = R) */
    fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,

@@ -249,22 +249,35 @@ static int nearest(float s, int size)
 }
 
 
-/* The fixed-function fragment program for a fragment of the quad.  Its
- * texture coordinate inputs are the same at every pixel (zero so far: the
- * texturing of pixel rectangles is still to come), so the quad's
- * coordinates are the fragment's own. */
-static void pixel_shader(const struct r_state *rs, const float fin[][4], float color[4])
+/* The fixed-function fragment program for a fragment of the quad.  The
+ * user's units read either the quad's own coordinate (pix->tex_quad:
+ * glBitmap's gl_TexCoord[0] is the bitmap coordinate, interpolated with
+ * real derivatives) or a constant, the same at every pixel of the quad
+ * (derivatives 0: always magnified). */
+static void pixel_shader(const struct r_state *rs, const float fin_in[][4],
+                         const float *quad_tc, const struct r_fs_quad *quad, float color[4])
 {
    if (!rs->tex_units) {
-      r_fragment_shader(rs, fin, NULL, color);
+      r_fragment_shader(rs, fin_in, NULL, color);
       return;
    }
+   const struct r_pixel_image *pix = rs->pix;
+   float fin[R_FS_NUM_INPUTS][4];
+   memcpy(fin, fin_in, sizeof(fin));
    struct r_fs_quad q;
-   for (int u = 0; u < R_MAX_TEX_UNITS; u++)
+   for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+      if ((pix->tex_quad & (1u << u)) && quad) {
+         memcpy(fin[R_FS_TEX0 + u], quad_tc, sizeof(fin[0]));
+         memcpy(q.tex[u], quad->tex[0], sizeof(q.tex[u]));
+         memcpy(q.pair[u], quad->pair[0], sizeof(q.pair[u]));
+         continue;
+      }
+      memcpy(fin[R_FS_TEX0 + u], pix->tex_const[u], sizeof(fin[0]));
       for (int i = 0; i < 3; i++)
          for (int c = 0; c < 4; c++)
-            q.tex[u][i][c] = q.pair[u][i][c] = fin[R_FS_TEX0 + u][c];
-   r_fragment_shader(rs, fin, &q, color);
+            q.tex[u][i][c] = q.pair[u][i][c] = pix->tex_const[u][c];
+   }
+   r_fragment_shader(rs, (const float (*)[4])fin, &q, color);
 }
 
 /* A colour map looked up in the state tracker's 256x256 pixel-map texture
@@ -279,7 +292,8 @@ static float map_lookup(const struct r_pixel_image *pix, int map, float v)
    return (float)r_float_to_unorm8(pix->maps[map][k]) * (float)(1.0 / 255.0);
 }
 
-void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z)
+void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z,
+                      const struct r_fs_quad *quad)
 {
    const struct r_pixel_image *pix = rs->pix;
    const float *tc = in[R_FS_TEX0];
@@ -301,7 +315,7 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
       if (pix->mask[idx] != 0)
          return;
       memcpy(fin[R_FS_COLOR0], in[R_FS_COLOR0], sizeof(fin[0]));
-      pixel_shader(rs, (const float (*)[4])fin, color);
+      pixel_shader(rs, (const float (*)[4])fin, tc, quad, color);
       r_fragment_ops(rs, px, py, z, color);
       return;
    case R_PIX_COLOR: {
@@ -333,7 +347,7 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
          c[3] = pix->texels[4 * k + 1];
       }
       memcpy(fin[R_FS_COLOR0], c, sizeof(c));
-      pixel_shader(rs, (const float (*)[4])fin, color);
+      pixel_shader(rs, (const float (*)[4])fin, tc, quad, color);
       r_fragment_ops(rs, px, py, z, color);
       return;
    }

@@ -395,6 +395,12 @@ struct r_pixel_image {
    /* R_PIX_COLOR: the texel is the fragment colour, no fixed-function
     * program (glCopyPixels of GL_DEPTH_STENCIL_TO_RGBA/BGRA_NV) */
    bool raw_color;
+   /* The texture coordinates the user's units (r_state.tex_units) see:
+    * units in tex_quad read the quad's own coordinate (s, t, 0, 1) with
+    * its derivatives (glBitmap's gl_TexCoord[0]), the others the constant
+    * tex_const[u] */
+   unsigned tex_quad;
+   float tex_const[R_MAX_TEX_UNITS][4];
 };
 
 /* A pixel rectangle drawn as the state tracker's textured quad
@@ -416,8 +422,11 @@ void r_pixel_rect(const struct r_state *rs, const struct r_pixel_image *pix,
 
 /* The fragment stage of a pixel rectangle: fragment (px, py) with the
  * interpolated inputs and depth (r_tri.c calls it instead of the
- * fragment shader when rs->pix is set). */
-void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z);
+ * fragment shader when rs->pix is set); quad: the quad coordinate
+ * (R_FS_TEX0) at the fragment's quad in tex[0] (and pair[0]), given when
+ * the image's tex_quad and rs->tex_units are not 0. */
+void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z,
+                      const struct r_fs_quad *quad);
 
 /* The fragment stage (r_frag.c), shared by every primitive.
  * r_fragment_shader: the fixed-function fragment program, from the

@@ -119,7 +119,8 @@ static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod 
             ipart = (float_exp(rho) - 126) >> 1;
          else
             ipart = float_exp(rho * (float)M_SQRT2) - 127;
-         r->minify = rho > 1.0f;
+         /* lp_build_cmp(GREATER) is unordered: NaN minifies */
+         r->minify = !(rho <= 1.0f);
          if (t->mip == R_MIP_NEAREST) {
             /* lp_build_nearest_mip_level: clamp (min, then max) */
             int l = first + ipart;
@@ -141,7 +142,7 @@ static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod 
       if (t->apply_min_lod)
          lod = fmax_ps(lod, t->min_lod);
    }
-   r->minify = lod > 0.0f;
+   r->minify = !(lod <= 0.0f);   /* unordered: NaN minifies */
    if (t->mip == R_MIP_NEAREST) {
       /* lp_build_iround (cvtps2dq, half to even), then
        * lp_build_nearest_mip_level */

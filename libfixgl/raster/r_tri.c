@@ -220,17 +220,13 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    }
 }
 
-/* The fragment program of a textured triangle, given the texture
- * coordinates of the quad of pixel (px, py): its top-left, top-right and
- * bottom-left pixels (even y-down coordinates), evaluated like every
- * pixel's inputs whether or not they are covered [S: lp_bld_interp.c,
- * lp_bld_quad.c] (llvmpipe-facts.md §5).  Out of line: the untextured
- * pixel loop keeps its size. */
-R_FMA_CLONES
-static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
-                                                     const struct tri_shade *ts,
-                                                     const float in[][4], int px, int py,
-                                                     float color[4])
+/* The texture coordinates of the quad of pixel (px, py) for the units in
+ * `units`: its top-left, top-right and bottom-left pixels (even y-down
+ * coordinates), evaluated like every pixel's inputs whether or not they
+ * are covered [S: lp_bld_interp.c, lp_bld_quad.c] (llvmpipe-facts.md
+ * §5), cached in ts->quad for the pixels of a quad's row. */
+static inline __attribute__((always_inline)) void fill_quad(const struct r_state *rs, const struct tri_shade *ts, int px, int py,
+                      unsigned units)
 {
    static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
    const int qx = px & ~1, qy = py & ~1;
@@ -244,7 +240,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
          const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
          const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
          for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-            if (!(rs->tex_units & (1u << u)))
+            if (!(units & (1u << u)))
                continue;
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
@@ -255,6 +251,17 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
       cache->quad_x = qx;
       cache->quad_y = qy;
    }
+}
+
+/* The fragment program of a textured triangle.  Out of line: the
+ * untextured pixel loop keeps its size. */
+R_FMA_CLONES
+static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
+                                                     const struct tri_shade *ts,
+                                                     const float in[][4], int px, int py,
+                                                     float color[4])
+{
+   fill_quad(rs, ts, px, py, rs->tex_units);
    r_fragment_shader(rs, in, &ts->quad, color);
 }
 
@@ -275,8 +282,13 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
    if (rs->pix) {
-      /* a pixel rectangle's quad: its own fragment stage (r_pixels.c) */
-      r_pixel_fragment(rs, px, py, (const float (*)[4])in, eval_plane(&ts->z, fx, fy));
+      /* a pixel rectangle's quad: its own fragment stage (r_pixels.c);
+       * a unit reading the quad's coordinate (R_FS_TEX0) needs its quad */
+      const bool quad = rs->tex_units && rs->pix->tex_quad;
+      if (quad)
+         fill_quad(rs, ts, px, py, 1u);
+      r_pixel_fragment(rs, px, py, (const float (*)[4])in, eval_plane(&ts->z, fx, fy),
+                       quad ? &ts->quad : NULL);
       return;
    }
    float color[4];

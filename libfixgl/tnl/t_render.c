@@ -248,6 +248,12 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
     * the state validated before this draw's */
    fgl_flush_bitmap_cache(ctx);
+   /* [S: draw.c:_mesa_set_varying_vp_inputs] the batch's texture
+    * coordinates are the fragment program's varyings from now on */
+   ctx->_VaryingTexUnits = 0;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+      if (ctx->Vbo.attr_size[FGL_ATTR_TEX0 + u] != 0)
+         ctx->_VaryingTexUnits |= 1u << u;
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
