@@ -615,6 +615,15 @@ static void query_extensions(fc_h *h)
         "GL_EXT_draw_range_elements", "GL_EXT_rescale_normal",
         "GL_EXT_separate_specular_color", "GL_EXT_stencil_wrap", "GL_NV_blend_square",
         "GL_NV_fog_distance",
+        "GL_ARB_multitexture", "GL_ARB_texture_border_clamp", "GL_ARB_texture_env_add",
+        "GL_ARB_texture_env_combine", "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3",
+        "GL_ARB_texture_mirrored_repeat", "GL_ARB_texture_non_power_of_two",
+        "GL_ATI_texture_env_combine3", "GL_ATI_texture_mirror_once", "GL_EXT_abgr",
+        "GL_EXT_bgra", "GL_EXT_packed_pixels", "GL_EXT_texture_edge_clamp",
+        "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine", "GL_EXT_texture_env_dot3",
+        "GL_EXT_texture_lod_bias", "GL_EXT_texture_mirror_clamp",
+        "GL_IBM_texture_mirrored_repeat", "GL_NV_texture_env_combine4",
+        "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod",
     };
     const size_t n = sizeof fixgl_ext / sizeof fixgl_ext[0];
     const char *list = (const char *)glGetString(GL_EXTENSIONS);
@@ -658,6 +667,56 @@ static void query_extensions(fc_h *h)
     fc_error(h, "NV_fog_distance");
     glDrawRangeElements(GL_POINTS, 0, 0, 0, GL_UNSIGNED_BYTE, NULL);
     fc_error(h, "EXT_draw_range_elements");
+    /* the texture extensions' enums, on a bound 2D texture and unit 1 */
+    {
+        static const GLubyte texel[16] = { 255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9 };
+        static const GLenum wraps[7] = {
+            GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_CLAMP_TO_EDGE, GL_MIRROR_CLAMP_EXT,
+            GL_MIRROR_CLAMP_TO_EDGE_EXT, GL_MIRROR_CLAMP_TO_BORDER_EXT, GL_MIRRORED_REPEAT_IBM,
+        };
+        static const GLenum funcs[8] = {
+            GL_ADD, GL_COMBINE, GL_COMBINE4_NV, GL_MODULATE_ADD_ATI, GL_MODULATE_SIGNED_ADD_ATI,
+            GL_MODULATE_SUBTRACT_ATI, GL_DOT3_RGB_EXT, GL_DOT3_RGBA,
+        };
+        glBindTexture(GL_TEXTURE_2D, 3);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+        fc_error(h, "ARB_texture_non_power_of_two");
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_BGRA, GL_UNSIGNED_BYTE, texel);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_ABGR_EXT, GL_UNSIGNED_BYTE, texel);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, texel);
+        fc_error(h, "EXT_bgra, EXT_abgr, EXT_packed_pixels");
+        for (int i = 0; i < 7; i++) {
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wraps[i]);
+            fc_error(h, "texture wraps");
+        }
+        glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, 0.5f);
+        glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, -0.5f);
+        fc_error(h, "EXT_texture_lod_bias");
+        glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 0.5f);
+        glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 3.0f);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
+        fc_error(h, "SGIS_texture_lod");
+        for (int i = 0; i < 8; i++) {
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, i < 3 ? (GLint)funcs[i] : GL_COMBINE);
+            if (i >= 3)
+                glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)funcs[i]);
+            fc_error(h, "texture env functions");
+        }
+        glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE1);
+        fc_error(h, "ARB_texture_env_crossbar");
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        typedef void (GLAPIENTRY *active_fn)(GLenum);
+        active_fn at = (active_fn)OSMesaGetProcAddress("glActiveTextureARB");
+        if (at)
+            at(GL_TEXTURE1_ARB);
+        fc_get_integer(h, "GL_ACTIVE_TEXTURE via glActiveTextureARB", GL_ACTIVE_TEXTURE, 1);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        fc_error(h, "ARB_multitexture");
+        fc_value(h, "glMultiTexCoord2fARB", OSMesaGetProcAddress("glMultiTexCoord2fARB") != NULL);
+        fc_value(h, "glClientActiveTextureARB", OSMesaGetProcAddress("glClientActiveTextureARB") != NULL);
+    }
     fc_value(h, "glBlendColorEXT", OSMesaGetProcAddress("glBlendColorEXT") != NULL);
     fc_value(h, "glBlendEquationEXT", OSMesaGetProcAddress("glBlendEquationEXT") != NULL);
     fc_value(h, "glDrawRangeElementsEXT", OSMesaGetProcAddress("glDrawRangeElementsEXT") != NULL);

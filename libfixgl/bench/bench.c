@@ -20,6 +20,10 @@
  *   gears   three gears as glxgears draws them (quad strips and quads, flat
  *           and smooth shading, glNormal3f), one directional light,
  *           GL_NORMALIZE, GL_CULL_FACE, depth test
+ *   texfloor a 256x256 RGB texture with a full mipmap chain
+ *           (GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_MODULATE) on a floor
+ *           receding to the horizon plus a GL_LINEAR-textured wall, the
+ *           whole screen textured, perspective, depth test
  *
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
@@ -436,6 +440,75 @@ static void draw_gears(void)
   glFinish();
 }
 
+/* The texfloor scene's texture: a checker with a colour ramp, every level
+ * built by hand as the 2x2 box average of the one above. */
+#define TEX_SIZE 256
+static GLuint tex_name;
+static void build_texture(void)
+{
+  static unsigned char level[2][TEX_SIZE * TEX_SIZE * 3];
+  int w = TEX_SIZE, cur = 0;
+  for (int y = 0; y < TEX_SIZE; y++)
+    for (int x = 0; x < TEX_SIZE; x++) {
+      unsigned char *t = &level[0][(y * TEX_SIZE + x) * 3];
+      const int on = ((x / 16) ^ (y / 16)) & 1;
+      t[0] = (unsigned char)(on ? 230 : x);
+      t[1] = (unsigned char)(on ? 200 : y);
+      t[2] = (unsigned char)(on ? 120 : 255 - x);
+    }
+  glGenTextures(1, &tex_name);
+  glBindTexture(GL_TEXTURE_2D, tex_name);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int l = 0;; l++) {
+    glTexImage2D(GL_TEXTURE_2D, l, GL_RGB, w, w, 0, GL_RGB, GL_UNSIGNED_BYTE, level[cur]);
+    if (w == 1)
+      break;
+    const int n = w / 2;
+    for (int y = 0; y < n; y++)
+      for (int x = 0; x < n; x++)
+        for (int c = 0; c < 3; c++) {
+          const unsigned char *a = level[cur];
+          level[1 - cur][(y * n + x) * 3 + c] =
+              (unsigned char)((a[((2 * y) * w + 2 * x) * 3 + c] + a[((2 * y) * w + 2 * x + 1) * 3 + c] +
+                               a[((2 * y + 1) * w + 2 * x) * 3 + c] +
+                               a[((2 * y + 1) * w + 2 * x + 1) * 3 + c]) / 4);
+        }
+    cur = 1 - cur;
+    w = n;
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+static void draw_texfloor(void)
+{
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.4, 0.4, -0.3, 0.3, 0.5, 200.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(0.0f, -1.0f, 0.0f);
+  glBindTexture(GL_TEXTURE_2D, tex_name);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glBegin(GL_QUADS);
+  glColor3f(1.0f, 0.9f, 0.8f);
+  glTexCoord2f(0.0f, 0.0f);   glVertex3f(-40.0f, 0.0f, -0.5f);
+  glTexCoord2f(20.0f, 0.0f);  glVertex3f(40.0f, 0.0f, -0.5f);
+  glTexCoord2f(20.0f, 40.0f); glVertex3f(40.0f, 0.0f, -100.0f);
+  glTexCoord2f(0.0f, 40.0f);  glVertex3f(-40.0f, 0.0f, -100.0f);
+  glColor3f(0.8f, 0.9f, 1.0f);
+  glTexCoord2f(0.0f, 0.0f);   glVertex3f(-40.0f, 0.0f, -100.0f);
+  glTexCoord2f(20.0f, 0.0f);  glVertex3f(40.0f, 0.0f, -100.0f);
+  glTexCoord2f(20.0f, 10.0f); glVertex3f(40.0f, 60.0f, -100.0f);
+  glTexCoord2f(0.0f, 10.0f);  glVertex3f(-40.0f, 60.0f, -100.0f);
+  glEnd();
+  glDisable(GL_TEXTURE_2D);
+  glFinish();
+}
+
 static double now(void)
 {
   struct timespec ts;
@@ -519,11 +592,13 @@ int main(int argc, char **argv)
   build_lit_sphere(lit_small, LIT_SMALL_STACKS, LIT_SMALL_SLICES);
   build_lit_sphere(lit_large, SPHERE_STACKS, SPHERE_SLICES);
   build_gears();
+  build_texture();
   run_scene("soup", draw_soup, seconds, buf);
   run_scene("sphere", draw_sphere, seconds, buf);
   run_scene("lit200", draw_lit200, seconds, buf);
   run_scene("lit20k", draw_lit20k, seconds, buf);
   run_scene("gears", draw_gears, seconds, buf);
+  run_scene("texfloor", draw_texfloor, seconds, buf);
 
   GLenum err = glGetError();
   OSMesaDestroyContext(ctx);

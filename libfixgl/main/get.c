@@ -688,15 +688,29 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
    case GL_RENDERER:
       return (const GLubyte *)"fixgl CPU rasterizer (OpenGL 1.x fixed function)";
    case GL_VERSION:
-      /* What is implemented: the GL 1.1 entry points and state (vertex
-       * arrays, polygon offset, logic op, queries) except the texture and
-       * pixel paths, which the vendor part says. */
-      return (const GLubyte *)"1.1 fixgl " FIXGL_VERSION_STRING
-                              " (texture mapping not implemented yet)";
+      /* The GL 1.1 entry points and state are all there; of later versions
+       * what the extension list names (a version number above 1.1 would
+       * promise 3D and cube-map textures, which fixgl does not have) */
+      return (const GLubyte *)"1.1 fixgl " FIXGL_VERSION_STRING;
    case GL_EXTENSIONS:
       /* Exactly the extensions fixgl implements, each with its enums and
-       * entry points (the EXT-named ones through OSMesaGetProcAddress);
+       * entry points (the suffixed ones through OSMesaGetProcAddress);
        * api/query_extensions checks the oracle advertises each too:
+       *   ARB_multitexture       glActiveTextureARB, glClientActiveTextureARB,
+       *                          glMultiTexCoord*ARB, GL_TEXTUREn_ARB
+       *   ARB_texture_border_clamp GL_CLAMP_TO_BORDER
+       *   ARB/EXT_texture_env_add GL_ADD
+       *   ARB/EXT_texture_env_combine GL_COMBINE and its functions,
+       *                          sources, operands and scales
+       *   ARB_texture_env_crossbar GL_TEXTUREn as a combiner source
+       *   ARB/EXT_texture_env_dot3 GL_DOT3_RGB(A)(_EXT)
+       *   ARB_texture_mirrored_repeat, IBM_texture_mirrored_repeat
+       *                          GL_MIRRORED_REPEAT
+       *   ARB_texture_non_power_of_two any texture size
+       *   ATI_texture_env_combine3 GL_MODULATE_ADD/SIGNED_ADD/SUBTRACT_ATI
+       *   ATI_texture_mirror_once, EXT_texture_mirror_clamp the
+       *                          GL_MIRROR_CLAMP* wraps
+       *   EXT_abgr, EXT_bgra, EXT_packed_pixels client formats and types
        *   EXT_blend_color        glBlendColor, GL_CONSTANT_* factors
        *   EXT_blend_minmax       glBlendEquation, GL_MIN, GL_MAX
        *   EXT_blend_subtract     GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT
@@ -704,13 +718,29 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_rescale_normal     GL_RESCALE_NORMAL
        *   EXT_separate_specular_color GL_LIGHT_MODEL_COLOR_CONTROL
        *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
+       *   EXT/SGIS_texture_edge_clamp GL_CLAMP_TO_EDGE
+       *   EXT_texture_lod_bias   GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
+       *   SGIS_texture_lod       GL_TEXTURE_MIN/MAX_LOD, BASE/MAX_LEVEL
        *   NV_blend_square        GL_SRC_COLOR as source, GL_DST_COLOR as
        *                          destination factor
-       *   NV_fog_distance        GL_FOG_DISTANCE_MODE_NV */
-      return (const GLubyte *)"GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
-                              "GL_EXT_draw_range_elements GL_EXT_rescale_normal "
-                              "GL_EXT_separate_specular_color GL_EXT_stencil_wrap "
-                              "GL_NV_blend_square GL_NV_fog_distance";
+       *   NV_fog_distance        GL_FOG_DISTANCE_MODE_NV
+       *   NV_texture_env_combine4 GL_COMBINE4_NV */
+      return (const GLubyte *)"GL_ARB_multitexture GL_ARB_texture_border_clamp "
+                              "GL_ARB_texture_env_add GL_ARB_texture_env_combine "
+                              "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
+                              "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
+                              "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
+                              "GL_EXT_abgr GL_EXT_bgra "
+                              "GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
+                              "GL_EXT_draw_range_elements GL_EXT_packed_pixels "
+                              "GL_EXT_rescale_normal GL_EXT_separate_specular_color "
+                              "GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp "
+                              "GL_EXT_texture_env_add GL_EXT_texture_env_combine "
+                              "GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias "
+                              "GL_EXT_texture_mirror_clamp GL_IBM_texture_mirrored_repeat "
+                              "GL_NV_blend_square GL_NV_fog_distance "
+                              "GL_NV_texture_env_combine4 GL_SGIS_texture_edge_clamp "
+                              "GL_SGIS_texture_lod";
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return NULL;
