@@ -285,7 +285,7 @@ static uint8_t expand_to_8(unsigned q, unsigned bits)
  * the byte channel by _mesa_unorm_to_unorm(x, 8, 16) (x * 257); a packed
  * format of at most 8 bits per channel converts through an RGBA ubyte
  * intermediate (_mesa_unorm_to_unorm(x, 8, n): (x * max + 127) / 255), a
- * wider one (10-10-10-2) through float (x/255, rounded to the field).
+ * wider one (10-10-10-2) through float (x/255, then util_iround(f * max)).
  * `truncate`: glCopyTexImage's x >> (8 - bits) (copy_truncates). */
 static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, bool truncate)
 {
@@ -297,10 +297,24 @@ static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, bool trun
       return (unsigned)x >> (8u - bits);
    const unsigned max = (1u << bits) - 1u;
    if (via_float) {
+      /* [S: u_format_pack.py: util_iround(x * max), (int)(f + 0.5f) off
+       * x86-32: the float sum rounds, 794.49997 gives 795] */
       const float f = (float)x * (1.0f / 255.0f);
-      return (unsigned)llrintf(f * (float)max);
+      return (unsigned)(int)(f * (float)max + 0.5f);
    }
    return ((unsigned)x * max + 127u) / 255u;
+}
+
+/* Stores n texels of stored values `q` (four per texel, img->StoreBits
+ * wide; constants 0 or 1) at texel index `at` of img. */
+static void put_stored(struct fgl_texture_image *img, size_t at, const uint16_t *q, size_t n)
+{
+   uint8_t *data = img->Data + 4 * at;
+   memcpy(img->Store + 4 * at, q, 4 * n * sizeof(uint16_t));
+   for (size_t i = 0; i < 4 * n; i++) {
+      const unsigned bits = img->StoreBits[i & 3];
+      data[i] = bits ? expand_to_8(q[i], bits) : (q[i] ? 255 : 0);
+   }
 }
 
 /* Stores n RGBA8 texels `t` of img's base format (rebased: constants 0 or
@@ -471,6 +485,26 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
 {
    if (!pixels || w == 0 || h == 0)
       return true;
+   if (img->Store) {
+      /* the stored values straight from the client data: a float or
+       * 16-bit source reaches a wide format without an 8-bit step */
+      uint16_t *q = malloc((size_t)w * (size_t)h * 4 * sizeof(uint16_t));
+      if (!q) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return false;
+      }
+      if (!fgl_unpack_texels_stored(ctx, unpack, w, h, format, type, pixels, img->BaseFormat,
+                                    img->StoreBits, max_bits(img->Format) == 16, q)) {
+         free(q);
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return false;
+      }
+      for (int j = 0; j < h; j++)
+         put_stored(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
+                    q + 4 * (size_t)j * (size_t)w, (size_t)w);
+      free(q);
+      return true;
+   }
    uint8_t *tmp = malloc((size_t)w * (size_t)h * 4);
    if (!tmp) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
@@ -972,8 +1006,13 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       return;
    /* [S: texgetimage.c:get_tex_rgba_uncompressed] the texels through
     * pixelformat's packer (the rebase of L/LA/I/A/RGB images, L = R) */
-   fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                  img->BaseFormat, img->Data, format, type, pixels);
+   if (img->Store)
+      fgl_pack_tex_stored(ctx, &ctx->Pack, img->Width, img->Height, img->BaseFormat,
+                          img->Store, img->StoreBits, max_bits(img->Format) == 16, format,
+                          type, pixels);
+   else
+      fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
+                     img->BaseFormat, img->Data, format, type, pixels);
 }
 
 /* ------------------------------------------------------------------ */
