@@ -524,6 +524,80 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
    return true;
 }
 
+/* [S: lp_bld_arit.c:lp_build_lerp_simple, AoS with pmulhrsw rounding] */
+static uint8_t lerp8(int w, int a, int b)
+{
+   return (uint8_t)((a + ((w * (b - a) + 128) >> 8)) & 255);
+}
+
+/* [S: teximage.c:check_gen_mipmap, st_gen_mipmap.c:st_generate_mipmap,
+ * util/u_gen_mipmap.c:util_gen_mipmap] with GL_GENERATE_MIPMAP, a change
+ * of the base level (below MAX_LEVEL) regenerates the levels after it up
+ * to the last of a full chain (_mesa_compute_num_levels, at most
+ * MAX_LEVEL): _mesa_prepare_mipmap_levels makes each the base image's
+ * format at half the size above it (at least 1), and llvmpipe, which has
+ * no PIPE_CAP_GENERATE_MIPMAP, fills it by util_gen_mipmap's
+ * PIPE_TEX_FILTER_LINEAR blit from the level above: a quad sampling that
+ * level bilinearly at each pixel centre, s = (i + 0.5) / w, on the AoS
+ * 8-bit path (CLAMP_TO_EDGE, weights (int)round(s * W * 256) - 128 in 8.8
+ * fixed point, lerp8 along s on both rows, then along t).  Checked for
+ * the 8-bit formats, POT and NPOT sizes, 1D (texture/genmipmap_*); the
+ * formats of other than 8 bits per channel are blitted here from their
+ * 8-bit values (not checked). */
+static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object *t,
+                             GLint level)
+{
+   if (!t->GenerateMipmap || level != t->BaseLevel || level >= t->MaxLevel)
+      return;
+   const struct fgl_texture_image *base = t->Image[level];
+   if (!base || base->Width == 0 || base->Height == 0)
+      return;
+   GLint last = level + (GLint)logbase2((unsigned)(base->Width > base->Height ? base->Width
+                                                                              : base->Height));
+   if (last > t->MaxLevel)
+      last = t->MaxLevel;
+   if (last > FGL_MAX_TEXTURE_LEVELS - 1)
+      last = FGL_MAX_TEXTURE_LEVELS - 1;
+   for (GLint l = level + 1; l <= last; l++) {
+      const struct fgl_texture_image *src = t->Image[l - 1];
+      const int W = src->Width, H = src->Height;
+      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
+      struct fgl_texture_image *img = new_image(w, h, 0, (GLint)base->InternalFormat,
+                                                base->BaseFormat, base->Format);
+      if (!img || !alloc_texels(img)) {
+         free(img);
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      for (int j = 0; j < h; j++) {
+         const long ft = lrintf(((float)j + 0.5f) / (float)h * (float)H * 256.0f) - 128;
+         int y0 = (int)(ft >> 8);
+         const int wt = (int)(ft & 255);
+         int y1 = y0 + 1;
+         y0 = y0 < 0 ? 0 : y0 > H - 1 ? H - 1 : y0;
+         y1 = y1 < 0 ? 0 : y1 > H - 1 ? H - 1 : y1;
+         for (int i = 0; i < w; i++) {
+            const long fs = lrintf(((float)i + 0.5f) / (float)w * (float)W * 256.0f) - 128;
+            int x0 = (int)(fs >> 8);
+            const int ws = (int)(fs & 255);
+            int x1 = x0 + 1;
+            x0 = x0 < 0 ? 0 : x0 > W - 1 ? W - 1 : x0;
+            x1 = x1 < 0 ? 0 : x1 > W - 1 ? W - 1 : x1;
+            const uint8_t *a = src->Data + 4 * ((size_t)y0 * (size_t)W + (size_t)x0);
+            const uint8_t *b = src->Data + 4 * ((size_t)y0 * (size_t)W + (size_t)x1);
+            const uint8_t *c = src->Data + 4 * ((size_t)y1 * (size_t)W + (size_t)x0);
+            const uint8_t *d = src->Data + 4 * ((size_t)y1 * (size_t)W + (size_t)x1);
+            uint8_t texel[4];
+            for (int k = 0; k < 4; k++)
+               texel[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, c[k], d[k]));
+            put_texels(img, (size_t)j * (size_t)w + (size_t)i, texel, 1, false);
+         }
+      }
+      set_image(t, l, img);
+   }
+   ctx->NewState |= FGL_NEW_TEXTURE;
+}
+
 /* ------------------------------------------------------------------ */
 /* glTexImage                                                         */
 /* ------------------------------------------------------------------ */
@@ -631,6 +705,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    set_image(t, level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
+   check_gen_mipmap(ctx, t, level);
 }
 
 void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat,
@@ -721,8 +796,10 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    if (width == 0 || height == 0)
       return;
    if (store_texels(ctx, img, &ctx->Unpack, xoff, yoff, width, height, format, type,
-                    pixels))
+                    pixels)) {
       ctx->NewState |= FGL_NEW_TEXTURE;
+      check_gen_mipmap(ctx, t, level);
+   }
 }
 
 void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
@@ -843,6 +920,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    if (old && old->InternalFormat == internal && old->Format == pf && border == 0 &&
        old->Border == 0 && old->Width == width && old->Height == height) {
       copy_texels(ctx, old, 0, 0, x, y, width, height);
+      check_gen_mipmap(ctx, t, level);
       return;
    }
    if (!size_ok(dims, pf, width, height)) {
@@ -867,6 +945,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    ctx->NewState |= FGL_NEW_TEXTURE;
    if (width && height)
       copy_texels(ctx, img, 0, 0, x, y, width, height);
+   check_gen_mipmap(ctx, t, level);
 }
 
 void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x,
@@ -921,6 +1000,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
    if (width == 0 || height == 0)
       return;
    copy_texels(ctx, img, xoff, yoff, x, y, width, height);
+   check_gen_mipmap(ctx, t, level);
 }
 
 void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x,
