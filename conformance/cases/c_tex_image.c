@@ -849,6 +849,241 @@ static void readback_types_precision(fc_h *h)
     readback_types_of(h, f, sizeof f / sizeof f[0]);
 }
 
+/* Uploads of float, 16-bit, packed and transfer-scaled data into the
+ * formats of other than 8 bits per channel, read back as float and
+ * 16-bit: the oracle converts the client data straight to the stored
+ * precision (texstore: RGBA float and transfer results through
+ * _mesa_pack_float_rgba_row, RGBA ubyte through _mesa_pack_ubyte_rgba_row
+ * even into 10-bit fields, 16-bit arrays channel by channel). */
+static void store_precision(fc_h *h)
+{
+    static const GLint internals[] = {
+        GL_RGB10_A2, GL_RGB10, GL_RGBA16, GL_RGB12, GL_LUMINANCE16, GL_LUMINANCE12_ALPHA4,
+        GL_INTENSITY16, GL_ALPHA12, GL_RGB5_A1, GL_RGBA4, GL_R3_G3_B2, GL_RGB5,
+        GL_LUMINANCE4_ALPHA4, GL_RGBA2, GL_RGB565,
+    };
+    static const struct { GLenum f, t; } clients[] = {
+        { GL_RGBA, GL_FLOAT }, { GL_RGB, GL_FLOAT }, { GL_LUMINANCE, GL_FLOAT },
+        { GL_BGRA, GL_FLOAT }, { GL_RGBA, GL_HALF_FLOAT }, { GL_RGBA, GL_UNSIGNED_SHORT },
+        { GL_BGRA, GL_UNSIGNED_SHORT }, { GL_RGBA, GL_SHORT }, { GL_RGBA, GL_UNSIGNED_INT },
+        { GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV }, { GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 },
+        { GL_RGB, GL_UNSIGNED_BYTE }, { GL_RGBA, GL_UNSIGNED_BYTE },
+        { GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE },
+    };
+    static GLfloat fsrc[4 * 7 * 5];
+    for (size_t i = 0; i < sizeof fsrc / sizeof fsrc[0]; i++)
+        fsrc[i] = (float)((i * 7919u) % 1000u) / 999.0f * 1.2f - 0.1f;
+    fill_src(71);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static GLubyte out[4 * 4 * 7 * 5 + 64];
+    for (size_t k = 0; k < sizeof internals / sizeof internals[0]; k++) {
+        for (size_t c = 0; c <= sizeof clients / sizeof clients[0]; c++) {
+            /* the last pass: RGBA ubyte under a transfer scale (float path) */
+            const bool scaled = c == sizeof clients / sizeof clients[0];
+            const GLenum f = scaled ? GL_RGB : clients[c].f;
+            const GLenum t = scaled ? GL_UNSIGNED_BYTE : clients[c].t;
+            if (scaled)
+                glPixelTransferf(GL_GREEN_SCALE, 0.7f);
+            const void *data = t == GL_FLOAT ? (const void *)fsrc : (const void *)src;
+            glTexImage2D(GL_TEXTURE_2D, 0, internals[k], 7, 5, 0, f, t, data);
+            if (scaled)
+                glPixelTransferf(GL_GREEN_SCALE, 1.0f);
+            char l[96];
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k], (unsigned)f,
+                     (unsigned)t);
+            fc_error(h, l);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out);
+            fc_blob(h, l, out, sizeof out);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, out);
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x ushort", (unsigned)internals[k],
+                     (unsigned)f, (unsigned)t);
+            fc_blob(h, l, out, sizeof out);
+            /* a sub-image of float data over it */
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 1, 3, 2, GL_RGBA, GL_FLOAT, fsrc + 40);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out);
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x sub", (unsigned)internals[k],
+                     (unsigned)f, (unsigned)t);
+            fc_blob(h, l, out, sizeof out);
+            fc_error(h, l);
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* GL_GENERATE_MIPMAP: the oracle regenerates the levels below the base
+ * by util_gen_mipmap's bilinear blits (texture/genmipmap_*). */
+
+/* Every level of the bound target that exists, as RGBA bytes, with its
+ * level parameters. */
+static void get_levels(fc_h *h, const char *label, GLenum target)
+{
+    for (GLint l = 0; l < 8; l++) {
+        GLint w = 0, hh = 0;
+        glGetTexLevelParameteriv(target, l, GL_TEXTURE_WIDTH, &w);
+        glGetTexLevelParameteriv(target, l, GL_TEXTURE_HEIGHT, &hh);
+        char m[96];
+        snprintf(m, sizeof m, "%s L%d", label, (int)l);
+        fc_value(h, m, (long long)w * 1000 + hh);
+        if (w == 0 || w > 64 || hh > 64)
+            continue;
+        level_params(h, m, target, l);
+        get_image(h, m, target, l, GL_RGBA, w, hh);
+        /* the levels after a chain's 1x1 end keep older images, which
+         * the oracle reads back from another resource (not modelled) */
+        if (w == 1 && hh == 1)
+            break;
+    }
+}
+
+/* A minified textured quad per filter, then the frame. */
+static void draw_minified(fc_h *h, GLenum target)
+{
+    static const GLenum mins[] = { GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+                                   GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR };
+    fc_pixel_ortho(h);
+    glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(target);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    for (int m = 0; m < 4; m++) {
+        glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)mins[m]);
+        const float x = (float)(m % 2) * 16.0f, y = (float)(m / 2) * 16.0f;
+        const float sz = 5.0f + (float)m * 3.0f;
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(x, y);
+        glTexCoord2f(1, 0); glVertex2f(x + sz, y);
+        glTexCoord2f(1, 1); glVertex2f(x + sz, y + sz);
+        glTexCoord2f(0, 1); glVertex2f(x, y + sz);
+        glEnd();
+    }
+    glDisable(target);
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+    fc_capture(h);
+}
+
+/* 2D, every 8-bit base format, power-of-two and other sizes */
+static void genmipmap_2d(fc_h *h)
+{
+    static const GLint internals[] = { GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA,
+                                       GL_ALPHA, GL_INTENSITY, GL_RGBA8 };
+    static const int sizes[][2] = { { 16, 16 }, { 13, 9 }, { 8, 3 }, { 5, 12 }, { 1, 7 } };
+    fill_src(81);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    for (size_t k = 0; k < sizeof internals / sizeof internals[0]; k++)
+        for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            if (k != 0 && z > 1)
+                continue;
+            glTexImage2D(GL_TEXTURE_2D, 0, internals[k], sizes[z][0], sizes[z][1], 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, src);
+            char l[64];
+            snprintf(l, sizeof l, "0x%04x %dx%d", (unsigned)internals[k], sizes[z][0],
+                     sizes[z][1]);
+            fc_error(h, l);
+            get_levels(h, l, GL_TEXTURE_2D);
+            if (z == 1)
+                draw_minified(h, GL_TEXTURE_2D);
+        }
+}
+
+/* 1D */
+static void genmipmap_1d(fc_h *h)
+{
+    fill_src(82);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_1D, GL_GENERATE_MIPMAP, GL_TRUE);
+    static const int widths[] = { 32, 37, 6 };
+    for (size_t z = 0; z < 3; z++) {
+        glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, widths[z], 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        char l[32];
+        snprintf(l, sizeof l, "1d %d", widths[z]);
+        get_levels(h, l, GL_TEXTURE_1D);
+        draw_minified(h, GL_TEXTURE_1D);
+    }
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 11, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 100);
+    get_levels(h, "1d rgb", GL_TEXTURE_1D);
+}
+
+/* Which calls regenerate: glTexSubImage of the base level, not of another
+ * level; BASE_LEVEL and MAX_LEVEL bound the chain; the flag off keeps the
+ * levels; glCopyTexImage / glCopyTexSubImage of the base level; a
+ * display list replays it. */
+static void genmipmap_calls(fc_h *h)
+{
+    fill_src(83);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 3, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 500);
+    get_levels(h, "sub base", GL_TEXTURE_2D);
+    glTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src + 900);
+    get_levels(h, "sub level 1", GL_TEXTURE_2D);
+    /* NULL data still regenerates (from the zeroed image) */
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    get_levels(h, "null", GL_TEXTURE_2D);
+    /* base level 1, max level 3 */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    get_levels(h, "level 0 not base", GL_TEXTURE_2D);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 300);
+    get_levels(h, "base 1 max 3", GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1);
+    glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 700);
+    get_levels(h, "base 1 max 1", GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
+    /* off: nothing regenerates */
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_FALSE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 1000);
+    get_levels(h, "off", GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    /* copies from a picture */
+    draw_picture(h);
+    fc_capture(h);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 5, 16, 12, 0);
+    get_levels(h, "copy", GL_TEXTURE_2D);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 4, 2, 20, 18, 8, 8);
+    get_levels(h, "copy sub", GL_TEXTURE_2D);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 7, 16, 12, 0);   /* reuses the storage */
+    get_levels(h, "copy reuse", GL_TEXTURE_2D);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 1, 1, 9, 6, 0);
+    get_levels(h, "copy lum", GL_TEXTURE_2D);
+    /* a display list */
+    const GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, src + 64);
+    glEndList();
+    glCallList(list);
+    get_levels(h, "list", GL_TEXTURE_2D);
+    glDeleteLists(list, 1);
+    fc_error(h, "end");
+}
+
+/* The formats of other than 8 bits per channel */
+static void genmipmap_formats(fc_h *h)
+{
+    static const GLint internals[] = { GL_RGB5_A1, GL_RGBA4, GL_RGB565, GL_R3_G3_B2,
+                                       GL_LUMINANCE4_ALPHA4, GL_RGB10_A2, GL_RGBA16,
+                                       GL_LUMINANCE16, GL_ALPHA16, GL_INTENSITY16 };
+    fill_src(84);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    for (size_t k = 0; k < sizeof internals / sizeof internals[0]; k++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, internals[k], 8, 6, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+        char l[32];
+        snprintf(l, sizeof l, "0x%04x", (unsigned)internals[k]);
+        get_levels(h, l, GL_TEXTURE_2D);
+    }
+}
+
 /* The images as the oracle samples them: every internal format drawn
  * NEAREST with GL_REPLACE and GL_MODULATE (a 4x4 texture on a 6x6 cell;
  * each texel at least one pixel), then images made by glCopyTexImage,
@@ -1127,7 +1362,12 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_readback_types", 8, 8, 0, "texture pixel", readback_types),
     FC_CASE_RGBA("texture/image_readback_types_precision", 8, 8, 0, "texture pixel",
                  readback_types_precision),
+    FC_CASE_RGBA("texture/image_store_precision", 8, 8, 0, "texture pixel", store_precision),
     FC_CASE_RGBA("texture/image_unpack_store", 8, 8, 0, "texture", unpack_store),
+    FC_CASE_RGBA("texture/genmipmap_2d", 32, 32, 7, "texture", genmipmap_2d),
+    FC_CASE_RGBA("texture/genmipmap_1d", 32, 32, 3, "texture", genmipmap_1d),
+    FC_CASE_RGBA("texture/genmipmap_calls", 32, 32, 1, "texture dlist", genmipmap_calls),
+    FC_CASE_RGBA("texture/genmipmap_formats", 8, 8, 0, "texture", genmipmap_formats),
     FC_CASE_RGBA("texture/image_border", 8, 8, 0, "texture", border),
     FC_CASE_RGBA("texture/image_null_data", 8, 8, 0, "texture", null_data),
     FC_CASE_RGBA("texture/image_packed_types", 8, 8, 0, "texture", packed_types),
