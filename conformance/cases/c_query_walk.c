@@ -623,7 +623,7 @@ static void query_extensions(fc_h *h)
         "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine", "GL_EXT_texture_env_dot3",
         "GL_EXT_texture_lod_bias", "GL_EXT_texture_mirror_clamp",
         "GL_IBM_texture_mirrored_repeat", "GL_NV_texture_env_combine4",
-        "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod",
+        "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod", "GL_SGIS_generate_mipmap",
     };
     const size_t n = sizeof fixgl_ext / sizeof fixgl_ext[0];
     const char *list = (const char *)glGetString(GL_EXTENSIONS);
@@ -697,6 +697,11 @@ static void query_extensions(fc_h *h)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
         fc_error(h, "SGIS_texture_lod");
+        glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+        glHint(GL_GENERATE_MIPMAP_HINT, GL_NICEST);
+        fc_get_integer(h, "GL_GENERATE_MIPMAP_HINT", GL_GENERATE_MIPMAP_HINT, 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_FALSE);
+        fc_error(h, "SGIS_generate_mipmap");
         for (int i = 0; i < 8; i++) {
             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, i < 3 ? (GLint)funcs[i] : GL_COMBINE);
             if (i >= 3)

@@ -720,6 +720,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
        *   EXT/SGIS_texture_edge_clamp GL_CLAMP_TO_EDGE
        *   EXT_texture_lod_bias   GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
+       *   SGIS_generate_mipmap   GL_GENERATE_MIPMAP, GL_GENERATE_MIPMAP_HINT
        *   SGIS_texture_lod       GL_TEXTURE_MIN/MAX_LOD, BASE/MAX_LEVEL
        *   NV_blend_square        GL_SRC_COLOR as source, GL_DST_COLOR as
        *                          destination factor
@@ -739,7 +740,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias "
                               "GL_EXT_texture_mirror_clamp GL_IBM_texture_mirrored_repeat "
                               "GL_NV_blend_square GL_NV_fog_distance "
-                              "GL_NV_texture_env_combine4 GL_SGIS_texture_edge_clamp "
+                              "GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp "
                               "GL_SGIS_texture_lod";
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
