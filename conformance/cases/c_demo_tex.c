@@ -333,12 +333,15 @@ static void textured_scene(fc_h *h)
         glCopyPixels(40, 30, 80, 60, GL_COLOR);
         glPixelZoom(1.0f, 1.0f);
         glColor3f(1.0f, 0.9f, 0.2f);
+        /* one byte per glyph row */
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glWindowPos2i(44, 110);
         {
             char text[32];
             snprintf(text, sizeof text, "F%d %03d", frame, (int)angle);
             hud_text(text);
         }
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glEnable(GL_DEPTH_TEST);
         fc_capture(h);
     }
