@@ -398,6 +398,11 @@ struct fgl_texture_image {
  * gl_sampler_attrib] */
 struct fgl_texture_object {
    GLuint Name;
+   /* references: the shared table's while the name exists, and each unit
+    * binding of each context (Mesa's RefCount, _mesa_reference_texobj);
+    * the object and its images are freed with the last one, changed under
+    * the table's lock; the default objects are not counted */
+   unsigned RefCount;
    GLenum Target;           /* 0 until first bound */
    GLenum MinFilter, MagFilter;
    GLenum WrapS, WrapT, WrapR;
@@ -428,6 +433,10 @@ struct fgl_texture_objects {
  * ctx->Texture.NumCurrentTexUsed and ctx->Texture.ProxyTex */
 struct fgl_texture_local {
    unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
+   /* the objects bound to each unit, holding a reference (NULL: the
+    * default object); ctx->Texture.Unit[u].Bound keeps their names for
+    * glGet and GL_TEXTURE_BIT [S: mtypes.h, gl_texture_unit CurrentTex] */
+   struct fgl_texture_object *Current[FGL_MAX_TEXTURE_UNITS][FGL_TEX_TARGETS];
    /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D: images without
     * texels */
    struct fgl_texture_object Proxy[2];
