@@ -94,7 +94,7 @@ void fgl_free_texobj(struct fgl_context *ctx)
 {
    if (ctx->TexObjects) {
       pthread_mutex_lock(&ctx->TexObjects->Lock);
-      for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+      for (int u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
          for (int x = 0; x < FGL_TEX_TARGETS; x++)
             if (ctx->TexLocal.Current[u][x])
                unref_object_locked(ctx->TexLocal.Current[u][x]);
@@ -191,6 +191,13 @@ struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned u
    return unit_object(ctx, unit, target_index(target));
 }
 
+/* the names bound to a unit (units 8..191 keep them apart) */
+static GLuint *unit_names(struct fgl_context *ctx, unsigned unit)
+{
+   return unit < FGL_MAX_TEXTURE_UNITS ? ctx->Texture.Unit[unit].Bound
+                                       : ctx->Texture.ImageBound[unit - FGL_MAX_TEXTURE_UNITS];
+}
+
 /* [S: texobj.c:bind_texture_object, _mesa_reference_texobj] unit's
  * binding of index references t (NULL: the default object) and reports
  * its name; the caller holds the table's lock */
@@ -203,7 +210,7 @@ static void set_binding_locked(struct fgl_context *ctx, unsigned unit, int index
    if (*cur)
       unref_object_locked(*cur);
    *cur = t;
-   ctx->Texture.Unit[unit].Bound[index] = t ? t->Name : 0;
+   unit_names(ctx, unit)[index] = t ? t->Name : 0;
 }
 
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
@@ -337,7 +344,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
          /* every unit of this context bound to it goes back to the
           * default object (FLUSH_VERTICES(_NEW_TEXTURE_OBJECT)); other
           * contexts keep their references */
-         for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+         for (unsigned u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
             for (int x = 0; x < FGL_TEX_TARGETS; x++)
                if (ctx->TexLocal.Current[u][x] == t) {
                   tex_flush(ctx);
@@ -816,9 +823,9 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
     * object of that name, or a new one when it was deleted); one that
     * still has the name keeps its object, deleted elsewhere or not */
    pthread_mutex_lock(&ctx->TexObjects->Lock);
-   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+   for (unsigned u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
       for (int x = 0; x < FGL_TEX_TARGETS; x++) {
-         const GLuint name = ctx->Texture.Unit[u].Bound[x];
+         const GLuint name = unit_names(ctx, u)[x];
          struct fgl_texture_object *cur = ctx->TexLocal.Current[u][x];
          if ((cur ? cur->Name : 0) == name)
             continue;
