@@ -32,6 +32,10 @@
 #define FGL_MAX_TEXTURE_STACK_DEPTH    10
 #define FGL_MAX_PROGRAM_STACK_DEPTH    4
 #define FGL_MAX_TEXTURE_UNITS          8
+/* the units glActiveTexture takes (Const.MaxCombinedTextureImageUnits);
+ * those past the eight above have a binding and a LOD bias only */
+#define FGL_MAX_COMBINED_TEXTURE_UNITS 192
+#define FGL_IMAGE_ONLY_UNITS (FGL_MAX_COMBINED_TEXTURE_UNITS - FGL_MAX_TEXTURE_UNITS)
 #define FGL_MAX_PROGRAM_MATRICES       8
 #define FGL_MAX_VIEWPORT_SIZE          16384
 #define FGL_VIEWPORT_BOUNDS_MIN        (-32768)
@@ -371,6 +375,9 @@ struct fgl_texture_unit {
 struct fgl_texture_attrib {
    GLuint CurrentUnit;      /* glActiveTexture - GL_TEXTURE0 */
    struct fgl_texture_unit Unit[FGL_MAX_TEXTURE_UNITS];
+   /* the names bound to units 8..191 (GL_TEXTURE_BIT restores them like
+    * the others') */
+   GLuint ImageBound[FGL_IMAGE_ONLY_UNITS][FGL_TEX_TARGETS];
 };
 
 /* One mipmap level of a texture object (main/teximage.c)
@@ -409,6 +416,11 @@ struct fgl_texture_image {
  * gl_sampler_attrib] */
 struct fgl_texture_object {
    GLuint Name;
+   /* references: the shared table's while the name exists, and each unit
+    * binding of each context (Mesa's RefCount, _mesa_reference_texobj);
+    * the object and its images are freed with the last one, changed under
+    * the table's lock; the default objects are not counted */
+   unsigned RefCount;
    GLenum Target;           /* 0 until first bound */
    GLenum MinFilter, MagFilter;
    GLenum WrapS, WrapT, WrapR;
@@ -439,6 +451,13 @@ struct fgl_texture_objects {
  * ctx->Texture.NumCurrentTexUsed and ctx->Texture.ProxyTex */
 struct fgl_texture_local {
    unsigned NumCurrentTexUsed;         /* units a glBindTexture changed */
+   /* the objects bound to each unit, holding a reference (NULL: the
+    * default object); ctx->Texture.Unit[u].Bound keeps their names for
+    * glGet and GL_TEXTURE_BIT [S: mtypes.h, gl_texture_unit CurrentTex] */
+   struct fgl_texture_object *Current[FGL_MAX_COMBINED_TEXTURE_UNITS][FGL_TEX_TARGETS];
+   /* the LOD bias of units 8..191: glPopAttrib restores only the
+    * fixed-function units' (attrib.c:pop_texture_group) */
+   float ImageLodBias[FGL_IMAGE_ONLY_UNITS];
    /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D: images without
     * texels */
    struct fgl_texture_object Proxy[2];
@@ -762,7 +781,10 @@ struct fgl_context {
 
    struct fgl_matrix_stack ModelviewStack;
    struct fgl_matrix_stack ProjectionStack;
-   struct fgl_matrix_stack TextureStack[FGL_MAX_TEXTURE_UNITS];
+   /* one per unit, and a scratch stack for units 8..191, where the
+    * oracle's GL_TEXTURE matrix mode reads past its array (undefined;
+    * nothing uses the scratch stack's matrix) */
+   struct fgl_matrix_stack TextureStack[FGL_MAX_TEXTURE_UNITS + 1];
    struct fgl_matrix_stack ProgramStack[FGL_MAX_PROGRAM_MATRICES];
    struct fgl_matrix_stack *CurrentStack;
 
@@ -883,6 +905,13 @@ void fgl_update_state(struct fgl_context *ctx);
 void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
+
+/* the active unit's matrix stack (the scratch stack past unit 7) */
+static inline struct fgl_matrix_stack *fgl_texture_stack(struct fgl_context *ctx)
+{
+   const unsigned u = ctx->Texture.CurrentUnit;
+   return &ctx->TextureStack[u < FGL_MAX_TEXTURE_UNITS ? u : FGL_MAX_TEXTURE_UNITS];
+}
 
 static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 {

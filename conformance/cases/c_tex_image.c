@@ -771,8 +771,32 @@ static void sharing_delete_bound(fc_h *h)
     level_params(h, "orphan", GL_TEXTURE_2D, 0);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 9, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
     level_params(h, "orphan respecified", GL_TEXTURE_2D, 0);
+    /* a pop that finds the name bound keeps the object */
+    glPushAttrib(GL_TEXTURE_BIT);
+    glPopAttrib();
+    level_params(h, "orphan popped", GL_TEXTURE_2D, 0);
     glBindTexture(GL_TEXTURE_2D, t);
     level_params(h, "rebound", GL_TEXTURE_2D, 0);
+    /* a pop that finds another object rebinds the name: the orphan is
+     * gone, the new object of the name stays */
+    GLuint t2 = 0;
+    glGenTextures(1, &t2);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, t2);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 3, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 8, 8);
+    glBindTexture(GL_TEXTURE_2D, t2);
+    glDeleteTextures(1, &t2);
+    fc_get_integer(h, "deleter's binding", GL_TEXTURE_BINDING_2D, 1);
+    glBindTexture(GL_TEXTURE_2D, t2);
+    OSMesaMakeCurrent(fc_context(h), fc_buffer(h), GL_UNSIGNED_BYTE, 8, 8);
+    level_params(h, "unit 1 orphan", GL_TEXTURE_2D, 0);
+    glPushAttrib(GL_TEXTURE_BIT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glPopAttrib();
+    fc_get_integer(h, "unit 1 popped binding", GL_TEXTURE_BINDING_2D, 1);
+    level_params(h, "unit 1 popped", GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
     OSMesaDestroyContext(shared);
     fc_error(h, "end");
 }

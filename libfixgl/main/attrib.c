@@ -127,7 +127,7 @@ static void restore_texture(struct fgl_context *ctx, const struct fgl_attrib_nod
 {
    fgl_restore_texobjs(ctx, node);
    if (ctx->Transform.MatrixMode == GL_TEXTURE)
-      ctx->CurrentStack = &ctx->TextureStack[ctx->Texture.CurrentUnit];
+      ctx->CurrentStack = fgl_texture_stack(ctx);
 }
 
 /* TEST_AND_UPDATE: _mesa_set_enable for each flag that differs, so that

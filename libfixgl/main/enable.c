@@ -14,7 +14,21 @@
  * unit's bitfield and the bit, or NULL when cap is neither. */
 static unsigned *texture_cap(struct fgl_context *ctx, GLenum cap, unsigned *bit)
 {
-   struct fgl_texture_unit *u = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   static unsigned no_unit;   /* never written: see image_only_unit */
+   struct fgl_texture_unit *u = ctx->Texture.CurrentUnit < FGL_MAX_TEXTURE_UNITS
+                              ? &ctx->Texture.Unit[ctx->Texture.CurrentUnit] : NULL;
+   if (!u) {
+      switch (cap) {
+      case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D:
+      case GL_TEXTURE_CUBE_MAP: case GL_TEXTURE_RECTANGLE:
+      case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T:
+      case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
+         *bit = 0;
+         return &no_unit;
+      default:
+         return NULL;
+      }
+   }
    switch (cap) {
    case GL_TEXTURE_1D:       *bit = 1u << FGL_TEX_1D;   return &u->Enabled;
    case GL_TEXTURE_2D:       *bit = 1u << FGL_TEX_2D;   return &u->Enabled;
@@ -33,6 +47,22 @@ static unsigned *texture_cap(struct fgl_context *ctx, GLenum cap, unsigned *bit)
 }
 
 /* Whether unit `unit` has texture target `target` enabled. */
+/* Units 8..191 have no fixed-function state: their target enables are
+ * ignored and read as false (enable.c:enable_texture, is_texture_enabled
+ * return for them), their coordinate generation enables are
+ * GL_INVALID_OPERATION (get_texcoord_unit) and GL_INVALID_ENUM as glGet
+ * values (get.c finds no value).  True when cap is of those and the
+ * active unit is one of them. */
+static bool image_only_unit(const struct fgl_context *ctx)
+{
+   return ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS;
+}
+
+static bool is_texgen_cap(GLenum cap)
+{
+   return cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q;
+}
+
 bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GLenum target)
 {
    const unsigned e = ctx->Texture.Unit[unit].Enabled;
@@ -190,6 +220,11 @@ bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state)
    /* the active unit's targets and coordinate generation: a flush when
     * the unit's bitfield changes */
    unsigned *tex = texture_cap(ctx, cap, &bit);
+   if (tex && image_only_unit(ctx)) {
+      if (is_texgen_cap(cap))
+         fgl_error(ctx, GL_INVALID_OPERATION);
+      return true;
+   }
    if (tex) {
       const unsigned now = state ? *tex | bit : *tex & ~bit;
       if (now != *tex) {
@@ -254,6 +289,10 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    if (arr)
       return arr->Enabled ? GL_TRUE : GL_FALSE;
    const unsigned *tex = texture_cap(ctx, cap, &bit);
+   if (tex && image_only_unit(ctx) && is_texgen_cap(cap)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return GL_FALSE;
+   }
    if (tex)
       return (*tex & bit) ? GL_TRUE : GL_FALSE;
    const bool *flag = cap_flag(ctx, cap, &dirty);
@@ -277,6 +316,8 @@ bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
       return true;
    }
    const unsigned *tex = texture_cap(ctx, pname, &bit);
+   if (tex && image_only_unit(ctx) && is_texgen_cap(pname))
+      return false;
    if (tex) {
       *value = (*tex & bit) ? 1.0 : 0.0;
       return true;

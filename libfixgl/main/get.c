@@ -51,6 +51,25 @@ static void set_ints(struct value *val, enum value_type type, int n, int a, int 
       val->v[i] = x[i];
 }
 
+/* [S: get.c:check_extra, EXTRA_VALID_TEXTURE_UNIT] the active unit's
+ * matrix and coordinates exist for the fixed-function units only; past
+ * them GL_INVALID_OPERATION (then no value) */
+static bool valid_texture_unit(struct fgl_context *ctx)
+{
+   if (ctx->Texture.CurrentUnit < FGL_MAX_TEXTURE_UNITS)
+      return true;
+   fgl_error(ctx, GL_INVALID_OPERATION);
+   return false;
+}
+
+/* the names bound to the active unit */
+static const GLuint *bound_names(const struct fgl_context *ctx)
+{
+   const unsigned u = ctx->Texture.CurrentUnit;
+   return u < FGL_MAX_TEXTURE_UNITS ? ctx->Texture.Unit[u].Bound
+                                    : ctx->Texture.ImageBound[u - FGL_MAX_TEXTURE_UNITS];
+}
+
 static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
 {
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
@@ -237,6 +256,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOATN, ctx->ProjectionStack.Top->m, 16);
       return true;
    case GL_TEXTURE_MATRIX:
+      if (!valid_texture_unit(ctx))
+         return false;
       set_floats(val, V_FLOATN, ctx->TextureStack[ctx->Texture.CurrentUnit].Top->m, 16);
       return true;
    case GL_MODELVIEW_STACK_DEPTH:
@@ -246,6 +267,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->ProjectionStack.Depth + 1, 0, 0, 0);
       return true;
    case GL_TEXTURE_STACK_DEPTH:
+      if (!valid_texture_unit(ctx))
+         return false;
       set_ints(val, V_INT, 1, (int)ctx->TextureStack[ctx->Texture.CurrentUnit].Depth + 1, 0, 0, 0);
       return true;
    case GL_MAX_CLIP_PLANES:
@@ -410,6 +433,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       /* extra_flush_current_valid_texture_unit: the active unit's vbo
        * attribute */
       fgl_flush_current(ctx);
+      if (!valid_texture_unit(ctx))
+         return false;
       set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_TEX0 + ctx->Texture.CurrentUnit], 4);
       return true;
    case GL_CURRENT_RASTER_POSITION:
@@ -428,6 +453,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, 1, 0, 0, 0);     /* CONST(1) */
       return true;
    case GL_CURRENT_RASTER_TEXTURE_COORDS:
+      if (!valid_texture_unit(ctx))
+         return false;
       set_floats(val, V_FLOAT, ctx->Current.RasterTexCoords[ctx->Texture.CurrentUnit], 4);
       return true;
    case GL_CURRENT_RASTER_POSITION_VALID:
@@ -494,16 +521,16 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, GL_TEXTURE0 + (int)ctx->Texture.CurrentUnit, 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_1D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_1D], 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)bound_names(ctx)[FGL_TEX_1D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_2D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_2D], 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)bound_names(ctx)[FGL_TEX_2D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_3D:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_3D], 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)bound_names(ctx)[FGL_TEX_3D], 0, 0, 0);
       return true;
    case GL_TEXTURE_BINDING_CUBE_MAP:
-      set_ints(val, V_INT, 1, (int)ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[FGL_TEX_CUBE], 0, 0, 0);
+      set_ints(val, V_INT, 1, (int)bound_names(ctx)[FGL_TEX_CUBE], 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_UNITS:
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
@@ -539,7 +566,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       /* CONTEXT_MATRIX_T: the top of the stack, transposed */
       const fgl_matrix *m = pname == GL_TRANSPOSE_MODELVIEW_MATRIX ? ctx->ModelviewStack.Top
                           : pname == GL_TRANSPOSE_PROJECTION_MATRIX ? ctx->ProjectionStack.Top
-                          : ctx->TextureStack[ctx->Texture.CurrentUnit].Top;
+                          : fgl_texture_stack(ctx)->Top;
       val->type = V_FLOATN;
       val->n = 16;
       for (int i = 0; i < 4; i++)

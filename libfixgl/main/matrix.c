@@ -25,7 +25,7 @@ bool fgl_init_matrix(struct fgl_context *ctx)
 {
    bool ok = init_stack(&ctx->ModelviewStack, FGL_MAX_MODELVIEW_STACK_DEPTH, FGL_NEW_MODELVIEW) &&
              init_stack(&ctx->ProjectionStack, FGL_MAX_PROJECTION_STACK_DEPTH, FGL_NEW_PROJECTION);
-   for (int i = 0; ok && i < FGL_MAX_TEXTURE_UNITS; i++)
+   for (int i = 0; ok && i <= FGL_MAX_TEXTURE_UNITS; i++)
       ok = init_stack(&ctx->TextureStack[i], FGL_MAX_TEXTURE_STACK_DEPTH,
                       FGL_NEW_TEXTURE_MATRIX);
    for (int i = 0; ok && i < FGL_MAX_PROGRAM_MATRICES; i++)
@@ -39,7 +39,7 @@ void fgl_free_matrix(struct fgl_context *ctx)
 {
    free(ctx->ModelviewStack.Stack);
    free(ctx->ProjectionStack.Stack);
-   for (int i = 0; i < FGL_MAX_TEXTURE_UNITS; i++)
+   for (int i = 0; i <= FGL_MAX_TEXTURE_UNITS; i++)
       free(ctx->TextureStack[i].Stack);
    for (int i = 0; i < FGL_MAX_PROGRAM_MATRICES; i++)
       free(ctx->ProgramStack[i].Stack);
@@ -55,8 +55,10 @@ struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLen
    case GL_PROJECTION:
       return &ctx->ProjectionStack;
    case GL_TEXTURE:
-      /* the active unit's [S: matrix.c:get_named_matrix_stack] */
-      return &ctx->TextureStack[ctx->Texture.CurrentUnit];
+      /* the active unit's [S: matrix.c:get_named_matrix_stack]; past
+       * unit 7 the oracle's index leaves its array, fixgl's scratch
+       * stack takes the calls */
+      return fgl_texture_stack(ctx);
    default:
       if (mode >= GL_MATRIX0_ARB && mode < GL_MATRIX0_ARB + FGL_MAX_PROGRAM_MATRICES)
          return &ctx->ProgramStack[mode - GL_MATRIX0_ARB];

@@ -191,9 +191,21 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   struct fgl_texture_unit *t = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   const unsigned unit = ctx->Texture.CurrentUnit;
+   /* units 8..191: GL_COORD_REPLACE is GL_INVALID_OPERATION (its limit is
+    * MaxTextureCoordUnits), GL_TEXTURE_ENV returns before any check (no
+    * fixed-function unit), the LOD bias is the unit's */
+   if (unit >= FGL_MAX_TEXTURE_UNITS && target == GL_POINT_SPRITE &&
+       pname == GL_COORD_REPLACE) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   struct fgl_texture_unit *t = unit < FGL_MAX_TEXTURE_UNITS ? &ctx->Texture.Unit[unit] : NULL;
+   float *lod_bias = t ? &t->LodBias : &ctx->TexLocal.ImageLodBias[unit - FGL_MAX_TEXTURE_UNITS];
    const GLint iparam0 = (GLint)param[0];
    if (target == GL_TEXTURE_ENV) {
+      if (!t)
+         return;
       switch (pname) {
       case GL_TEXTURE_ENV_MODE:
          set_env_mode(ctx, t, (GLenum)iparam0);
@@ -246,10 +258,10 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }
-      if (t->LodBias == param[0])
+      if (*lod_bias == param[0])
          return;
       env_flush(ctx);
-      t->LodBias = param[0];
+      *lod_bias = param[0];
    } else {
       /* GL_POINT_SPRITE's GL_COORD_REPLACE comes with point sprites */
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -348,8 +360,19 @@ static void get_tex_env(GLenum target, GLenum pname, GLfloat *fv, GLint *iv)
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   const struct fgl_texture_unit *t = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
+   /* [S: texenv.c:_mesa_gettexenvfv_indexed] units 8..191 as glTexEnv */
+   const unsigned unit = ctx->Texture.CurrentUnit;
+   if (unit >= FGL_MAX_TEXTURE_UNITS && target == GL_POINT_SPRITE &&
+       pname == GL_COORD_REPLACE) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   const struct fgl_texture_unit *t =
+      unit < FGL_MAX_TEXTURE_UNITS ? &ctx->Texture.Unit[unit] : NULL;
+   const float lod_bias = t ? t->LodBias : ctx->TexLocal.ImageLodBias[unit - FGL_MAX_TEXTURE_UNITS];
    if (target == GL_TEXTURE_ENV) {
+      if (!t)
+         return;
       if (pname == GL_TEXTURE_ENV_COLOR) {
          for (int c = 0; c < 4; c++) {
             if (fv)
@@ -372,9 +395,9 @@ static void get_tex_env(GLenum target, GLenum pname, GLfloat *fv, GLint *iv)
          return;
       }
       if (fv)
-         *fv = t->LodBias;
+         *fv = lod_bias;
       else
-         *iv = (GLint)t->LodBias;
+         *iv = (GLint)lod_bias;
    } else {
       fgl_error(ctx, GL_INVALID_ENUM);
    }

@@ -59,6 +59,11 @@ static void tex_genfv(struct fgl_context *ctx, GLenum coord, GLenum pname, const
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   /* [S: texgen.c:get_texgen] units past MaxTextureCoordUnits first */
+   if (ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
    const int i = coord_index(coord);
    if (i < 0) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -205,6 +210,11 @@ static void get_tex_gen(GLenum coord, GLenum pname, GLfloat *fv, GLint *iv, GLdo
    if (!ctx)
       return;
    if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   /* [S: texgen.c:get_texgen] units past MaxTextureCoordUnits first */
+   if (ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }

@@ -60,8 +60,18 @@ bool fgl_init_texobj(struct fgl_context *ctx)
    return true;
 }
 
-/* [S: shared.c:free_shared_state] the last context frees every object
- * and image */
+/* [S: texobj.c:_mesa_reference_texobj_] one reference fewer; the last
+ * frees the object and its images.  The caller holds the table's lock. */
+static void unref_object_locked(struct fgl_texture_object *t)
+{
+   if (--t->RefCount != 0)
+      return;
+   fgl_free_tex_images(t);
+   free(t);
+}
+
+/* [S: shared.c:free_shared_state] the last context drops the table's
+ * references (the contexts' bindings are gone by then) */
 static void unref_shared(struct fgl_texture_objects *to)
 {
    pthread_mutex_lock(&to->Lock);
@@ -69,10 +79,8 @@ static void unref_shared(struct fgl_texture_objects *to)
    pthread_mutex_unlock(&to->Lock);
    if (!last)
       return;
-   for (unsigned i = 0; i < to->Count; i++) {
-      fgl_free_tex_images(to->Objs[i]);
-      free(to->Objs[i]);
-   }
+   for (unsigned i = 0; i < to->Count; i++)
+      unref_object_locked(to->Objs[i]);
    free(to->Objs);
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       fgl_free_tex_images(&to->Default[i]);
@@ -80,10 +88,20 @@ static void unref_shared(struct fgl_texture_objects *to)
    free(to);
 }
 
+/* [S: texstate.c:_mesa_free_texture_data] the context's bindings drop
+ * their references before the shared table goes */
 void fgl_free_texobj(struct fgl_context *ctx)
 {
-   if (ctx->TexObjects)
+   if (ctx->TexObjects) {
+      pthread_mutex_lock(&ctx->TexObjects->Lock);
+      for (int u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
+         for (int x = 0; x < FGL_TEX_TARGETS; x++)
+            if (ctx->TexLocal.Current[u][x])
+               unref_object_locked(ctx->TexLocal.Current[u][x]);
+      pthread_mutex_unlock(&ctx->TexObjects->Lock);
+      memset(ctx->TexLocal.Current, 0, sizeof(ctx->TexLocal.Current));
       unref_shared(ctx->TexObjects);
+   }
    ctx->TexObjects = NULL;
    fgl_free_tex_images(&ctx->TexLocal.Proxy[0]);
    fgl_free_tex_images(&ctx->TexLocal.Proxy[1]);
@@ -145,31 +163,54 @@ static struct fgl_texture_object *insert(struct fgl_context *ctx, GLuint name, G
    if (!t)
       return NULL;
    init_object(t, name, target);
+   t->RefCount = 1;   /* the table's */
    to->Objs[to->Count++] = t;
    if (name > to->MaxName)
       to->MaxName = name;
    return t;
 }
 
-/* The object bound to target's index on the active unit. */
+/* The object bound to target's index on a unit: the one its binding
+ * references, which outlives a glDeleteTextures of its name in another
+ * context sharing the table (texture/image_sharing_delete_bound). */
+static struct fgl_texture_object *unit_object(struct fgl_context *ctx, unsigned unit,
+                                              int index)
+{
+   struct fgl_texture_object *t = ctx->TexLocal.Current[unit][index];
+   return t ? t : &ctx->TexObjects->Default[index];
+}
+
 static struct fgl_texture_object *current_object(struct fgl_context *ctx, int index)
 {
-   const GLuint name = ctx->Texture.Unit[ctx->Texture.CurrentUnit].Bound[index];
-   if (name == 0)
-      return &ctx->TexObjects->Default[index];
-   struct fgl_texture_object *t = lookup(ctx, name);
-   return t ? t : &ctx->TexObjects->Default[index];
+   return unit_object(ctx, ctx->Texture.CurrentUnit, index);
 }
 
 struct fgl_texture_object *fgl_bound_texture(struct fgl_context *ctx, unsigned unit,
                                              GLenum target)
 {
-   const int index = target_index(target);
-   const GLuint name = ctx->Texture.Unit[unit].Bound[index];
-   if (name == 0)
-      return &ctx->TexObjects->Default[index];
-   struct fgl_texture_object *t = lookup(ctx, name);
-   return t ? t : &ctx->TexObjects->Default[index];
+   return unit_object(ctx, unit, target_index(target));
+}
+
+/* the names bound to a unit (units 8..191 keep them apart) */
+static GLuint *unit_names(struct fgl_context *ctx, unsigned unit)
+{
+   return unit < FGL_MAX_TEXTURE_UNITS ? ctx->Texture.Unit[unit].Bound
+                                       : ctx->Texture.ImageBound[unit - FGL_MAX_TEXTURE_UNITS];
+}
+
+/* [S: texobj.c:bind_texture_object, _mesa_reference_texobj] unit's
+ * binding of index references t (NULL: the default object) and reports
+ * its name; the caller holds the table's lock */
+static void set_binding_locked(struct fgl_context *ctx, unsigned unit, int index,
+                               struct fgl_texture_object *t)
+{
+   struct fgl_texture_object **cur = &ctx->TexLocal.Current[unit][index];
+   if (t)
+      t->RefCount++;
+   if (*cur)
+      unref_object_locked(*cur);
+   *cur = t;
+   unit_names(ctx, unit)[index] = t ? t->Name : 0;
 }
 
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
@@ -234,9 +275,10 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
+   struct fgl_texture_object *t = NULL;
+   pthread_mutex_lock(&ctx->TexObjects->Lock);
    if (texture != 0) {
-      pthread_mutex_lock(&ctx->TexObjects->Lock);
-      struct fgl_texture_object *t = lookup_locked(ctx, texture);
+      t = lookup_locked(ctx, texture);
       if (t) {
          if (t->Target != 0 && t->Target != target) {
             pthread_mutex_unlock(&ctx->TexObjects->Lock);
@@ -253,18 +295,22 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
                t->MinFilter = t->MagFilter = GL_LINEAR;
             }
          }
-      } else if (!insert(ctx, texture, target)) {
+      } else if (!(t = insert(ctx, texture, target))) {
          pthread_mutex_unlock(&ctx->TexObjects->Lock);
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
-      pthread_mutex_unlock(&ctx->TexObjects->Lock);
    }
-   struct fgl_texture_unit *u = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
-   if (u->Bound[index] == texture)
-      return;   /* bind_texture: nothing when already bound (no flush) */
+   /* bind_texture: nothing when the object is already bound (no flush);
+    * an object deleted in another context keeps its name on the unit, and
+    * binding the name again binds the new object of that name */
+   if (ctx->TexLocal.Current[ctx->Texture.CurrentUnit][index] == t) {
+      pthread_mutex_unlock(&ctx->TexObjects->Lock);
+      return;
+   }
    tex_flush(ctx);
-   u->Bound[index] = texture;
+   set_binding_locked(ctx, ctx->Texture.CurrentUnit, index, t);
+   pthread_mutex_unlock(&ctx->TexObjects->Lock);
    if (ctx->TexLocal.NumCurrentTexUsed < ctx->Texture.CurrentUnit + 1)
       ctx->TexLocal.NumCurrentTexUsed = ctx->Texture.CurrentUnit + 1;
 }
@@ -295,16 +341,18 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
          struct fgl_texture_object *t = to->Objs[k];
          if (t->Name != textures[i])
             continue;
-         /* every unit's binding of it goes back to the default object */
-         for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+         /* every unit of this context bound to it goes back to the
+          * default object (FLUSH_VERTICES(_NEW_TEXTURE_OBJECT)); other
+          * contexts keep their references */
+         for (unsigned u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
             for (int x = 0; x < FGL_TEX_TARGETS; x++)
-               if (ctx->Texture.Unit[u].Bound[x] == t->Name) {
-                  ctx->Texture.Unit[u].Bound[x] = 0;
-                  ctx->PopAttribState |= GL_TEXTURE_BIT;
+               if (ctx->TexLocal.Current[u][x] == t) {
+                  tex_flush(ctx);
+                  set_binding_locked(ctx, u, x, NULL);
                }
-         fgl_free_tex_images(t);
-         free(t);
+         /* the name goes from the table with the table's reference */
          to->Objs[k] = to->Objs[--to->Count];
+         unref_object_locked(t);
          break;
       }
    }
@@ -770,24 +818,35 @@ void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node)
  * by the rebind); then the default objects get theirs back */
 void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
+   /* the group's copy restored the bound names: a unit whose object has
+    * another name binds the name again (_mesa_BindTexture_no_error: the
+    * object of that name, or a new one when it was deleted); one that
+    * still has the name keeps its object, deleted elsewhere or not */
+   pthread_mutex_lock(&ctx->TexObjects->Lock);
+   for (unsigned u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
+      for (int x = 0; x < FGL_TEX_TARGETS; x++) {
+         const GLuint name = unit_names(ctx, u)[x];
+         struct fgl_texture_object *cur = ctx->TexLocal.Current[u][x];
+         if ((cur ? cur->Name : 0) == name)
+            continue;
+         struct fgl_texture_object *t = NULL;
+         if (name != 0 && !(t = lookup_locked(ctx, name)))
+            t = insert(ctx, name, index_target[x]);
+         set_binding_locked(ctx, u, x, t);
+      }
+   pthread_mutex_unlock(&ctx->TexObjects->Lock);
    ctx->Texture.Unit[0].LodBias = node->TexLodBias;
    if (node->TexSaved) {
       const struct fgl_texture_object *saved = node->TexObj;
-      const struct fgl_texture_unit *u = &ctx->Texture.Unit[0];
       for (int x = 0; x < FGL_TEX_TARGETS; x++) {
-         const GLuint name = u->Bound[x];
-         if (name == 0)
-            continue;
-         pthread_mutex_lock(&ctx->TexObjects->Lock);
-         struct fgl_texture_object *t = lookup_locked(ctx, name);
-         if (!t)
-            t = insert(ctx, name, index_target[x]);
-         pthread_mutex_unlock(&ctx->TexObjects->Lock);
-         if (t && saved[x].Name == name) {
+         struct fgl_texture_object *t = ctx->TexLocal.Current[0][x];
+         if (t && saved[x].Name == t->Name) {
             struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
             memcpy(images, t->Image, sizeof(images));
+            const unsigned refs = t->RefCount;
             *t = saved[x];
             memcpy(t->Image, images, sizeof(images));
+            t->RefCount = refs;
          }
       }
    }

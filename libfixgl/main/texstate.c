@@ -154,11 +154,10 @@ void fgl_update_texture_state(struct fgl_context *ctx)
 
 /* ---- the active units (GL 1.3 multitexture) ---- */
 
-/* [S: texstate.c:active_texture] units beyond the oracle's are
- * GL_INVALID_ENUM; a change flushes and, in GL_TEXTURE matrix mode, points
- * the matrix calls at the unit's stack.  The oracle takes units up to its
- * combined image unit count (192) here; fixgl keeps the eight units that
- * have fixed-function state (ORACLE-NOTES.md "Multitexture"). */
+/* [S: texstate.c:active_texture] units beyond the combined image unit
+ * count (192) are GL_INVALID_ENUM; a change flushes and, in GL_TEXTURE
+ * matrix mode, points the matrix calls at the unit's stack (units 8..191
+ * have none: ORACLE-NOTES.md "Units 8..191"). */
 static void active_texture(GLenum texture)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -169,14 +168,14 @@ static void active_texture(GLenum texture)
    const GLuint unit = texture - GL_TEXTURE0;
    if (ctx->Texture.CurrentUnit == unit)
       return;
-   if (unit >= FGL_MAX_TEXTURE_UNITS) {
+   if (unit >= FGL_MAX_COMBINED_TEXTURE_UNITS) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
    ctx->Texture.CurrentUnit = unit;
    if (ctx->Transform.MatrixMode == GL_TEXTURE)
-      ctx->CurrentStack = &ctx->TextureStack[unit];
+      ctx->CurrentStack = fgl_texture_stack(ctx);
 }
 
 void GLAPIENTRY glActiveTexture(GLenum texture)
