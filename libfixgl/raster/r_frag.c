@@ -218,6 +218,7 @@ static inline float fsat(float x)
 struct tex_cache {
    unsigned have;
    float c[R_MAX_TEX_UNITS][4];
+   const struct r_tex_lod *lod;   /* the quad's LOD per unit, or NULL */
 };
 
 static const float *tex_color(const struct r_state *rs, const float in[][4],
@@ -235,6 +236,12 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
    /* vec2 coord * frcp(q): the reciprocal is a true divide in gallivm */
    const float rq = 1.0f / tcin[3];
    const float c[3] = { tcin[0] * rq, tcin[1] * rq, tcin[2] * rq };
+   if (tc->lod && !t->soa) {
+      /* the quad's LOD, selected once for the quad (r_tex_lod_aos) */
+      const struct r_tex_lod *l = &tc->lod[u];
+      r_tex_filter_aos(t, c, l->minify, l->level0, l->level1, l->weight, tc->c[u]);
+      return tc->c[u];
+   }
    float qc[3][3];
    for (int i = 0; i < 3; i++) {
       const float *v = quad->tex[u][i];
@@ -525,10 +532,12 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
  * (ff_fragment_shader.cpp emit_instructions); kept out of line so the
  * untextured fragment program stays small. */
 static __attribute__((noinline)) void texture_units(const struct r_state *rs, const float in[][4],
-                                                    const struct r_fs_quad *quad, float out[4])
+                                                    const struct r_fs_quad *quad,
+                                                    const struct r_tex_lod *lod, float out[4])
 {
    struct tex_cache tc;
    tc.have = 0;
+   tc.lod = lod;
    float prev[4], res[4];
    bool first = true;   /* PREVIOUS is still the primary colour */
    for (int c = 0; c < 4; c++)
@@ -545,11 +554,12 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
       out[c] = prev[c];
 }
 
-void r_fragment_shader(const struct r_state *rs, const float in[][4],
-                       const struct r_fs_quad *quad, float out[4])
+static inline __attribute__((always_inline)) void
+fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs_quad *quad,
+                const struct r_tex_lod *lod, float out[4])
 {
    if (rs->tex_units) {
-      texture_units(rs, in, quad, out);
+      texture_units(rs, in, quad, lod, out);
    } else {
       for (int c = 0; c < 4; c++)
          out[c] = in[R_FS_COLOR0][c];
@@ -569,6 +579,19 @@ void r_fragment_shader(const struct r_state *rs, const float in[][4],
       for (int c = 0; c < 3; c++)
          out[c] = rs->fog_color[c] * g + out[c] * f;
    }
+}
+
+void r_fragment_shader(const struct r_state *rs, const float in[][4],
+                       const struct r_fs_quad *quad, float out[4])
+{
+   fragment_shader(rs, in, quad, NULL, out);
+}
+
+void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
+                           const struct r_fs_quad *quad, const struct r_tex_lod *lod,
+                           float out[4])
+{
+   fragment_shader(rs, in, quad, lod, out);
 }
 
 /* The depth test alone, with its write: the common path. */

@@ -222,13 +222,14 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
       out[k] = (float)texel8[k] * scale;
 }
 
-void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
-                      float out[4])
+void r_tex_lod_aos(const struct r_texture *t, const float quad[3][3], struct r_tex_lod *lod)
 {
    const int first = t->first_level, last = t->last_level;
    if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
       /* no level of detail at all */
-      r_tex_filter_aos(t, c, true, first, first, 0, out);
+      lod->minify = true;
+      lod->level0 = lod->level1 = first;
+      lod->weight = 0;
       return;
    }
    /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
@@ -271,5 +272,16 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
       level1 = l0 + 1 <= last ? l0 + 1 : last;
       weight = itrunc(fpart * 256.0f);
    }
-   r_tex_filter_aos(t, c, minify, level0, level1, weight, out);
+   lod->minify = minify;
+   lod->level0 = level0;
+   lod->level1 = level1;
+   lod->weight = weight;
+}
+
+void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4])
+{
+   struct r_tex_lod lod;
+   r_tex_lod_aos(t, quad, &lod);
+   r_tex_filter_aos(t, c, lod.minify, lod.level0, lod.level1, lod.weight, out);
 }

@@ -162,6 +162,8 @@ struct tri_shade {
     * (quad_x, quad_y), which the pixels of a quad's row share */
    int quad_x, quad_y;
    struct r_fs_quad quad;
+   /* and the fast LOD of the quad for the units without `soa` */
+   struct r_tex_lod lod[R_MAX_TEX_UNITS];
 };
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
@@ -252,10 +254,19 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
+      for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+         const struct r_texture *t = &rs->tex[u].tex;
+         if (!(rs->tex_units & (1u << u)) || t->soa)
+            continue;
+         float qc[3][3];
+         for (int i = 0; i < 3; i++)
+            r_tex_project(q->tex[u][i], qc[i]);
+         r_tex_lod_aos(t, (const float (*)[3])qc, &cache->lod[u]);
+      }
       cache->quad_x = qx;
       cache->quad_y = qy;
    }
-   r_fragment_shader(rs, in, &ts->quad, color);
+   r_fragment_shader_lod(rs, in, &ts->quad, ts->lod, color);
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
