@@ -422,6 +422,33 @@ static void rasterize_direct(const struct r_state *rs, const struct tri_shade *t
    }
 }
 
+/* rasterize_direct for textured triangles: the same pixels, walked two
+ * rows at a time, column by column, so that the four pixels of a 2x2
+ * quad come one after the other and share shade_textured's per-quad
+ * cache (each pixel is shaded once whatever the order, and the per-fragment
+ * operations of one triangle's pixels are independent). */
+R_FMA_CLONES
+static void rasterize_direct_quads(const struct r_state *rs, const struct tri_shade *ts,
+                                   const struct r_plane *p, int32_t x0, int32_t y0,
+                                   int32_t x1, int32_t y1)
+{
+   for (int32_t qy = y0 & ~1; qy <= y1; qy += 2) {
+      const int32_t ra = qy < y0 ? 1 : 0, rb = qy + 1 > y1 ? 0 : 1;   /* rows used */
+      int64_t c[2][3];
+      for (int32_t r = ra; r <= rb; r++)
+         for (int i = 0; i < 3; i++)
+            c[r][i] = p[i].c - (int64_t)p[i].dcdx * x0 + (int64_t)p[i].dcdy * (qy + r);
+      for (int32_t px = x0; px <= x1; px++) {
+         for (int32_t r = ra; r <= rb; r++) {
+            if (c[r][0] > 0 && c[r][1] > 0 && c[r][2] > 0)
+               shade_pixel(rs, ts, px, qy + r);
+            for (int i = 0; i < 3; i++)
+               c[r][i] -= p[i].dcdx;
+         }
+      }
+   }
+}
+
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
 /* Triangle setup and binning of a triangle whose snapped area is positive
@@ -477,7 +504,10 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct tri_shade ts;
       setup_shade(rs, v, back, &ts);
-      rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
+      if (rs->tex_units)
+         rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
+      else
+         rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
       return;
    }
 
