@@ -201,7 +201,28 @@ struct r_tex_combine {
    uint8_t shift_rgb, shift_a;   /* log2 of RGB_SCALE / ALPHA_SCALE */
    uint8_t nargs_rgb, nargs_a;
    uint8_t src_rgb[4], opr_rgb[4], src_a[4], opr_a[4];
+   /* r_tex_combine_simplify (r_frag.c): the environment is, on every
+    * channel c, one argument (REPLACE) or the product of two (MODULATE),
+    * without saturation or scale; simple_arg[c][i] = R_SIMPLE_* source
+    * * 8 + 4 for 1 - x + the component read (0..3) */
+   bool simple;
+   uint8_t simple_nargs[4];
+   uint8_t simple_arg[4][2];
+   /* the common forms of the RGB channels and of alpha (enum r_simple_fn):
+    * the texture, PREVIOUS, or their product, in that order or the other,
+    * channel by channel; R_SIMPLE_FN_ARGS: by simple_arg */
+   uint8_t simple_fn_rgb, simple_fn_a;
 };
+enum r_simple_src {
+   R_SIMPLE_TEXTURE, R_SIMPLE_PREVIOUS, R_SIMPLE_PRIMARY, R_SIMPLE_CONSTANT,
+   R_SIMPLE_ZERO, R_SIMPLE_ONE,
+};
+enum r_simple_fn {
+   R_SIMPLE_FN_ARGS, R_SIMPLE_FN_T, R_SIMPLE_FN_P, R_SIMPLE_FN_TP, R_SIMPLE_FN_PT,
+};
+/* Sets k->simple and the simple_* fields from the rest of k (unit: the
+ * unit k belongs to). */
+void r_tex_combine_simplify(struct r_tex_combine *k, int unit);
 
 struct r_tex_unit {
    struct r_texture tex;
