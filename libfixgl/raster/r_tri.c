@@ -245,18 +245,18 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
       for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
          const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
          const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
-         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-            if (!(rs->tex_units & (1u << u)))
-               continue;
+         for (unsigned m = rs->tex_units; m; m &= m - 1) {
+            const int u = __builtin_ctz(m);
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
             for (int c = 0; c < 4; c++)
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
-      for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+      for (unsigned m = rs->tex_units; m; m &= m - 1) {
+         const int u = __builtin_ctz(m);
          const struct r_texture *t = &rs->tex[u].tex;
-         if (!(rs->tex_units & (1u << u)) || t->soa)
+         if (t->soa)
             continue;
          float qc[3][3];
          for (int i = 0; i < 3; i++)
@@ -279,9 +279,8 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(ts->inputs & (1u << a)))
-         continue;
+   for (unsigned m = ts->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
