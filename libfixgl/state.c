@@ -369,6 +369,7 @@ static void update_tex_units(const struct fgl_context *ctx, struct r_state *rs)
       rs->tex_pair |= r_tex_need_pair(&ru->tex);
       const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
       update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru->comb);
+      r_tex_combine_simplify(&ru->comb, (int)u);
       for (int c = 0; c < 4; c++)
          ru->env_color[c] = tu->EnvColor[c];
       rs->tex_units |= 1u << u;

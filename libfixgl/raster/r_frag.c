@@ -218,6 +218,7 @@ static inline float fsat(float x)
 struct tex_cache {
    unsigned have;
    float c[R_MAX_TEX_UNITS][4];
+   const struct r_tex_lod *lod;   /* the quad's LOD per unit, or NULL */
 };
 
 static const float *tex_color(const struct r_state *rs, const float in[][4],
@@ -235,6 +236,12 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
    /* vec2 coord * frcp(q): the reciprocal is a true divide in gallivm */
    const float rq = 1.0f / tcin[3];
    const float c[3] = { tcin[0] * rq, tcin[1] * rq, tcin[2] * rq };
+   if (tc->lod && !t->soa) {
+      /* the quad's LOD, selected once for the quad (r_tex_lod_aos) */
+      const struct r_tex_lod *l = &tc->lod[u];
+      r_tex_filter_aos(t, c, l->minify, l->level0, l->level1, l->weight, tc->c[u]);
+      return tc->c[u];
+   }
    float qc[3][3];
    for (int i = 0; i < 3; i++) {
       const float *v = quad->tex[u][i];
@@ -520,15 +527,128 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
    }
 }
 
+/* A unit's environment as r_tex_combine_simplify records it: emit_texenv
+ * without saturation, scale or NIR's rewrites (REPLACE and MODULATE have
+ * none), each channel one argument or a product of two, the argument
+ * read as comb_arg reads it: s[c] (COLOR) or s[3] (ALPHA), or 1 - that.
+ * Channel 3 is the alpha combiner's: with mode_rgb == mode_a and
+ * args_match emit_texenv computes it with the RGB arguments, which then
+ * read the same values. */
+static bool simple_arg(int src, int opr, int unit, int c, uint8_t *arg)
+{
+   int s;
+   switch (src) {
+   case R_SRC_TEXTURE:       s = R_SIMPLE_TEXTURE; break;
+   case R_SRC_PREVIOUS:      s = R_SIMPLE_PREVIOUS; break;
+   case R_SRC_PRIMARY_COLOR: s = R_SIMPLE_PRIMARY; break;
+   case R_SRC_CONSTANT:      s = R_SIMPLE_CONSTANT; break;
+   case R_SRC_ZERO:          s = R_SIMPLE_ZERO; break;
+   case R_SRC_ONE:           s = R_SIMPLE_ONE; break;
+   default:
+      if (src != R_SRC_TEXTURE0 + unit)
+         return false;   /* another unit's texture */
+      s = R_SIMPLE_TEXTURE;
+      break;
+   }
+   const bool alpha = opr == R_OPR_ALPHA || opr == R_OPR_ONE_MINUS_ALPHA;
+   *arg = (uint8_t)(s * 8 + (is_one_minus(opr) ? 4 : 0) + (alpha ? 3 : c));
+   return true;
+}
+
+void r_tex_combine_simplify(struct r_tex_combine *k, int unit)
+{
+   k->simple = false;
+   if (k->shift_rgb || k->shift_a)
+      return;
+   for (int c = 0; c < 4; c++) {
+      const int mode = c < 3 ? k->mode_rgb : k->mode_a;
+      const uint8_t *src = c < 3 ? k->src_rgb : k->src_a;
+      const uint8_t *opr = c < 3 ? k->opr_rgb : k->opr_a;
+      if (mode != R_COMB_REPLACE && mode != R_COMB_MODULATE)
+         return;
+      k->simple_nargs[c] = mode == R_COMB_REPLACE ? 1 : 2;
+      for (int i = 0; i < k->simple_nargs[c]; i++)
+         if (!simple_arg(src[i], opr[i], unit, c, &k->simple_arg[c][i]))
+            return;
+   }
+   k->simple = true;
+   /* the common forms */
+   for (int g = 0; g < 2; g++) {
+      const int c0 = g ? 3 : 0, c1 = g ? 4 : 3;
+      int fn = -1;
+      for (int c = c0; c < c1; c++) {
+         const uint8_t *a = k->simple_arg[c];
+         const int t = R_SIMPLE_TEXTURE * 8 + c, p = R_SIMPLE_PREVIOUS * 8 + c;
+         int f = R_SIMPLE_FN_ARGS;
+         if (k->simple_nargs[c] == 1)
+            f = a[0] == t ? R_SIMPLE_FN_T : a[0] == p ? R_SIMPLE_FN_P : R_SIMPLE_FN_ARGS;
+         else if (a[0] == t && a[1] == p)
+            f = R_SIMPLE_FN_TP;
+         else if (a[0] == p && a[1] == t)
+            f = R_SIMPLE_FN_PT;
+         fn = fn < 0 || fn == f ? f : R_SIMPLE_FN_ARGS;
+      }
+      if (g)
+         k->simple_fn_a = (uint8_t)fn;
+      else
+         k->simple_fn_rgb = (uint8_t)fn;
+   }
+}
+
+static inline __attribute__((always_inline)) void
+simple_fn(int fn, const float t[4], const float p[4], int c0, int c1, float res[4])
+{
+   for (int c = c0; c < c1; c++) {
+      switch (fn) {
+      case R_SIMPLE_FN_T:  res[c] = t[c]; break;
+      case R_SIMPLE_FN_P:  res[c] = p[c]; break;
+      case R_SIMPLE_FN_TP: res[c] = t[c] * p[c]; break;
+      case R_SIMPLE_FN_PT:
+      default:             res[c] = p[c] * t[c]; break;
+      }
+   }
+}
+
+/* emit_texenv of a unit with comb.simple set. */
+static void simple_texenv(const struct r_state *rs, const float in[][4],
+                          const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
+                          const float prev[4], float res[4])
+{
+   static const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+   static const float one[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+   const struct r_tex_combine *k = &rs->tex[unit].comb;
+   if (k->simple_fn_rgb != R_SIMPLE_FN_ARGS && k->simple_fn_a != R_SIMPLE_FN_ARGS) {
+      const float *t = tex_color(rs, in, quad, tc, unit);
+      simple_fn(k->simple_fn_rgb, t, prev, 0, 3, res);
+      simple_fn(k->simple_fn_a, t, prev, 3, 4, res);
+      return;
+   }
+   const float *srcs[6] = { NULL, prev, in[R_FS_COLOR0], rs->tex[unit].env_color, zero, one };
+   for (int c = 0; c < 4; c++) {
+      float v[2];
+      for (int i = 0; i < k->simple_nargs[c]; i++) {
+         const int a = k->simple_arg[c][i];
+         if (!srcs[a >> 3])
+            srcs[R_SIMPLE_TEXTURE] = tex_color(rs, in, quad, tc, unit);
+         v[i] = srcs[a >> 3][a & 3];
+         if (a & 4)
+            v[i] = 1.0f - v[i];
+      }
+      res[c] = k->simple_nargs[c] == 1 ? v[0] : v[0] * v[1];
+   }
+}
+
 /* The texture environments of the enabled units in order, each on the
  * previous one's result, the first on the fragment colour
  * (ff_fragment_shader.cpp emit_instructions); kept out of line so the
  * untextured fragment program stays small. */
 static __attribute__((noinline)) void texture_units(const struct r_state *rs, const float in[][4],
-                                                    const struct r_fs_quad *quad, float out[4])
+                                                    const struct r_fs_quad *quad,
+                                                    const struct r_tex_lod *lod, float out[4])
 {
    struct tex_cache tc;
    tc.have = 0;
+   tc.lod = lod;
    float prev[4], res[4];
    bool first = true;   /* PREVIOUS is still the primary colour */
    for (int c = 0; c < 4; c++)
@@ -536,7 +656,10 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
    for (int u = 0; u < rs->tex_nr; u++) {
       if (!(rs->tex_units & (1u << u)))
          continue;
-      emit_texenv(rs, in, quad, &tc, u, prev, first, res);
+      if (rs->tex[u].comb.simple)
+         simple_texenv(rs, in, quad, &tc, u, prev, res);
+      else
+         emit_texenv(rs, in, quad, &tc, u, prev, first, res);
       first = false;
       for (int c = 0; c < 4; c++)
          prev[c] = res[c];
@@ -545,11 +668,12 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
       out[c] = prev[c];
 }
 
-void r_fragment_shader(const struct r_state *rs, const float in[][4],
-                       const struct r_fs_quad *quad, float out[4])
+static inline __attribute__((always_inline)) void
+fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs_quad *quad,
+                const struct r_tex_lod *lod, float out[4])
 {
    if (rs->tex_units) {
-      texture_units(rs, in, quad, out);
+      texture_units(rs, in, quad, lod, out);
    } else {
       for (int c = 0; c < 4; c++)
          out[c] = in[R_FS_COLOR0][c];
@@ -569,6 +693,19 @@ void r_fragment_shader(const struct r_state *rs, const float in[][4],
       for (int c = 0; c < 3; c++)
          out[c] = rs->fog_color[c] * g + out[c] * f;
    }
+}
+
+void r_fragment_shader(const struct r_state *rs, const float in[][4],
+                       const struct r_fs_quad *quad, float out[4])
+{
+   fragment_shader(rs, in, quad, NULL, out);
+}
+
+void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
+                           const struct r_fs_quad *quad, const struct r_tex_lod *lod,
+                           float out[4])
+{
+   fragment_shader(rs, in, quad, lod, out);
 }
 
 /* The depth test alone, with its write: the common path. */

@@ -201,7 +201,28 @@ struct r_tex_combine {
    uint8_t shift_rgb, shift_a;   /* log2 of RGB_SCALE / ALPHA_SCALE */
    uint8_t nargs_rgb, nargs_a;
    uint8_t src_rgb[4], opr_rgb[4], src_a[4], opr_a[4];
+   /* r_tex_combine_simplify (r_frag.c): the environment is, on every
+    * channel c, one argument (REPLACE) or the product of two (MODULATE),
+    * without saturation or scale; simple_arg[c][i] = R_SIMPLE_* source
+    * * 8 + 4 for 1 - x + the component read (0..3) */
+   bool simple;
+   uint8_t simple_nargs[4];
+   uint8_t simple_arg[4][2];
+   /* the common forms of the RGB channels and of alpha (enum r_simple_fn):
+    * the texture, PREVIOUS, or their product, in that order or the other,
+    * channel by channel; R_SIMPLE_FN_ARGS: by simple_arg */
+   uint8_t simple_fn_rgb, simple_fn_a;
 };
+enum r_simple_src {
+   R_SIMPLE_TEXTURE, R_SIMPLE_PREVIOUS, R_SIMPLE_PRIMARY, R_SIMPLE_CONSTANT,
+   R_SIMPLE_ZERO, R_SIMPLE_ONE,
+};
+enum r_simple_fn {
+   R_SIMPLE_FN_ARGS, R_SIMPLE_FN_T, R_SIMPLE_FN_P, R_SIMPLE_FN_TP, R_SIMPLE_FN_PT,
+};
+/* Sets k->simple and the simple_* fields from the rest of k (unit: the
+ * unit k belongs to). */
+void r_tex_combine_simplify(struct r_tex_combine *k, int unit);
 
 struct r_tex_unit {
    struct r_texture tex;
@@ -236,6 +257,29 @@ void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[
 /* The AoS path with the fast LOD (r_tex.c), whatever `soa` says. */
 void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
                       float out[4]);
+/* The fast level-of-detail selection's results (r_tex.c
+ * r_tex_lod_aos): they depend on the quad's coordinates alone, so every
+ * pixel of a 2x2 quad shares them (llvmpipe computes one LOD per quad,
+ * llvmpipe-facts.md §5) and the primitives compute them once per quad. */
+struct r_tex_lod {
+   bool minify;                  /* the min image filter (else mag) */
+   int level0, level1;           /* absolute level indices */
+   int weight;                   /* 8-bit mip lerp weight */
+};
+/* lp_build_lod_selector's fast path and lp_build_{nearest,linear}_mip_levels
+ * on a quad's projected coordinates (TL, TR, BL): r_tex_sample_aos is
+ * r_tex_lod_aos, then r_tex_filter_aos with its results. */
+void r_tex_lod_aos(const struct r_texture *t, const float quad[3][3], struct r_tex_lod *lod);
+/* The projective divide of a lookup's coordinate (s, t, r, q) to
+ * (s, t, r) [S: ff_fragment_shader.cpp:load_texture]: vec coord * frcp(q),
+ * the reciprocal a true divide in gallivm. */
+static inline void r_tex_project(const float v[4], float out[3])
+{
+   const float r = 1.0f / v[3];
+   out[0] = v[0] * r;
+   out[1] = v[1] * r;
+   out[2] = v[2] * r;
+}
 /* lp_build_rho of a quad's projected coordinates (TL, TR, BL) with the
  * size of the first level: squared for 2D, max(|ds|) * W for 1D (r_tex.c),
  * shared by both LOD paths. */
@@ -439,6 +483,13 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
 void r_fragment_shader(const struct r_state *rs, const float in[][4],
                        const struct r_fs_quad *quad, float out[4]);
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4]);
+/* r_fragment_shader with the fast LOD of the fragment's quad already
+ * selected (r_tex_lod_aos) for the units in tex_units whose texture does
+ * not have `soa` set: lod[u] for unit u (a triangle's per-quad cache);
+ * lod NULL is r_fragment_shader. */
+void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
+                           const struct r_fs_quad *quad, const struct r_tex_lod *lod,
+                           float out[4]);
 
 /* The smooth point/line lowering appended to the fragment shader
  * (r_aa.c): false if the fragment is discarded, else color's alpha is

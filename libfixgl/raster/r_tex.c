@@ -120,6 +120,25 @@ static inline const uint8_t *texel(const struct r_tex_level *l, int x, int y)
    return l->data + 4 * ((size_t)y * (size_t)l->width + (size_t)x);
 }
 
+/* sample_level's LINEAR filter for a 2D texture with REPEAT on both axes
+ * and a power-of-two size, the commonest lookup, inlined: wrap_linear's
+ * pot REPEAT branch on both axes, then the same lerps. */
+static inline __attribute__((always_inline)) void
+linear_2d_repeat_pot(const struct r_tex_level *l, const float c[3], int out[4])
+{
+   const int w = l->width, h = l->height;
+   const int us = (int)((uint32_t)iround_even(c[0] * (float)(w << 8)) - 128u);
+   const int ut = (int)((uint32_t)iround_even(c[1] * (float)(h << 8)) - 128u);
+   const int ws = us & 255, wt = ut & 255;
+   const int is = us >> 8, it = ut >> 8;
+   const size_t x0 = (size_t)(is & (w - 1)), x1 = (size_t)((is + 1) & (w - 1));
+   const size_t y0 = (size_t)(it & (h - 1)), y1 = (size_t)((it + 1) & (h - 1));
+   const uint8_t *r0 = l->data + 4 * y0 * (size_t)w, *r1 = l->data + 4 * y1 * (size_t)w;
+   const uint8_t *a = r0 + 4 * x0, *b = r0 + 4 * x1, *d = r1 + 4 * x0, *e = r1 + 4 * x1;
+   for (int k = 0; k < 4; k++)
+      out[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, d[k], e[k]));
+}
+
 /* One level, one image filter, to 8-bit channels
  * [S: lp_bld_sample_aos.c:lp_build_sample_image_nearest,
  * lp_build_sample_image_linear]: lerp along s on rows t0 and t1, then
@@ -134,6 +153,11 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
       const uint8_t *p = texel(l, i, j);
       for (int k = 0; k < 4; k++)
          out[k] = p[k];
+      return;
+   }
+   if (t->dims == 2 && t->wrap_s == R_WRAP_REPEAT && t->wrap_t == R_WRAP_REPEAT &&
+       t->pot_s && t->pot_t) {
+      linear_2d_repeat_pot(l, c, out);
       return;
    }
    int i0, i1, ws;
@@ -222,13 +246,14 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
       out[k] = (float)texel8[k] * scale;
 }
 
-void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
-                      float out[4])
+void r_tex_lod_aos(const struct r_texture *t, const float quad[3][3], struct r_tex_lod *lod)
 {
    const int first = t->first_level, last = t->last_level;
    if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
       /* no level of detail at all */
-      r_tex_filter_aos(t, c, true, first, first, 0, out);
+      lod->minify = true;
+      lod->level0 = lod->level1 = first;
+      lod->weight = 0;
       return;
    }
    /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
@@ -273,5 +298,16 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
       level1 = l0 + 1 <= last ? l0 + 1 : last;
       weight = itrunc(fpart * 256.0f);
    }
-   r_tex_filter_aos(t, c, minify, level0, level1, weight, out);
+   lod->minify = minify;
+   lod->level0 = level0;
+   lod->level1 = level1;
+   lod->weight = weight;
+}
+
+void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
+                      float out[4])
+{
+   struct r_tex_lod lod;
+   r_tex_lod_aos(t, quad, &lod);
+   r_tex_filter_aos(t, c, lod.minify, lod.level0, lod.level1, lod.weight, out);
 }

@@ -162,6 +162,8 @@ struct tri_shade {
     * (quad_x, quad_y), which the pixels of a quad's row share */
    int quad_x, quad_y;
    struct r_fs_quad quad;
+   /* and the fast LOD of the quad for the units without `soa` */
+   struct r_tex_lod lod[R_MAX_TEX_UNITS];
 };
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
@@ -239,22 +241,32 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
       for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
          const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
          const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
-         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-            if (!(units & (1u << u)))
-               continue;
+         for (unsigned m = units; m; m &= m - 1) {
+            const int u = __builtin_ctz(m);
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
             for (int c = 0; c < 4; c++)
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
+      for (unsigned m = units; m; m &= m - 1) {
+         const int u = __builtin_ctz(m);
+         const struct r_texture *t = &rs->tex[u].tex;
+         if (t->soa)
+            continue;
+         float qc[3][3];
+         for (int i = 0; i < 3; i++)
+            r_tex_project(q->tex[u][i], qc[i]);
+         r_tex_lod_aos(t, (const float (*)[3])qc, &cache->lod[u]);
+      }
       cache->quad_x = qx;
       cache->quad_y = qy;
    }
 }
 
-/* The fragment program of a textured triangle.  Out of line: the
- * untextured pixel loop keeps its size. */
+/* The fragment program of a textured triangle, with the level of detail
+ * chosen once per quad (fill_quad).  Out of line: the untextured pixel
+ * loop keeps its size. */
 R_FMA_CLONES
 static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      const struct tri_shade *ts,
@@ -262,7 +274,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      float color[4])
 {
    fill_quad(rs, ts, px, py, rs->tex_units);
-   r_fragment_shader(rs, in, &ts->quad, color);
+   r_fragment_shader_lod(rs, in, &ts->quad, ts->lod, color);
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
@@ -275,9 +287,8 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(ts->inputs & (1u << a)))
-         continue;
+   for (unsigned m = ts->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
       for (int c = 0; c < 4; c++)
          in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
@@ -423,6 +434,33 @@ static void rasterize_direct(const struct r_state *rs, const struct tri_shade *t
    }
 }
 
+/* rasterize_direct for textured triangles: the same pixels, walked two
+ * rows at a time, column by column, so that the four pixels of a 2x2
+ * quad come one after the other and share shade_textured's per-quad
+ * cache (each pixel is shaded once whatever the order, and the per-fragment
+ * operations of one triangle's pixels are independent). */
+R_FMA_CLONES
+static void rasterize_direct_quads(const struct r_state *rs, const struct tri_shade *ts,
+                                   const struct r_plane *p, int32_t x0, int32_t y0,
+                                   int32_t x1, int32_t y1)
+{
+   for (int32_t qy = y0 & ~1; qy <= y1; qy += 2) {
+      const int32_t ra = qy < y0 ? 1 : 0, rb = qy + 1 > y1 ? 0 : 1;   /* rows used */
+      int64_t c[2][3];
+      for (int32_t r = ra; r <= rb; r++)
+         for (int i = 0; i < 3; i++)
+            c[r][i] = p[i].c - (int64_t)p[i].dcdx * x0 + (int64_t)p[i].dcdy * (qy + r);
+      for (int32_t px = x0; px <= x1; px++) {
+         for (int32_t r = ra; r <= rb; r++) {
+            if (c[r][0] > 0 && c[r][1] > 0 && c[r][2] > 0)
+               shade_pixel(rs, ts, px, qy + r);
+            for (int i = 0; i < 3; i++)
+               c[r][i] -= p[i].dcdx;
+         }
+      }
+   }
+}
+
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
 /* Triangle setup and binning of a triangle whose snapped area is positive
@@ -478,7 +516,10 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct tri_shade ts;
       setup_shade(rs, v, back, &ts);
-      rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
+      if (rs->tex_units)
+         rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
+      else
+         rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
       return;
    }
 
