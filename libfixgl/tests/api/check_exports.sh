@@ -37,7 +37,9 @@ for sym in OSMesaCreateContext OSMesaCreateContextExt OSMesaDestroyContext \
            OSMesaMakeCurrent OSMesaGetCurrentContext OSMesaPixelStore \
            OSMesaGetIntegerv OSMesaGetDepthBuffer OSMesaGetColorBuffer \
            OSMesaGetProcAddress; do
-  printf '%s\n' "$symbols" | grep -qx "$sym" || fail "$sym is not exported"
+  # a here-string, not a pipe: grep -q stops reading at the first match,
+  # and under pipefail the writer's SIGPIPE would fail the check
+  grep -qx "$sym" <<<"$symbols" || fail "$sym is not exported"
 done
 
 api_list=$(dirname "$0")/../../main/api_list.h
