@@ -91,6 +91,9 @@ static inline float fast_log2(float x)
    return (float)(float_exp(x) - 128) + u2f((f2u(x) & 0x7fffffu) | 0x3f800000u);
 }
 
+/* lod_positive (minified) is lp_build_cmp(GREATER), an unordered compare
+ * (LLVMRealUGT) [S: lp_bld_logic.c:lp_build_compare_ext, ordered FALSE]:
+ * a NaN rho or lod (derivatives of infinite coordinates, q == 0) minifies. */
 static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod *r)
 {
    const int first = t->first_level, last = t->last_level;
@@ -119,7 +122,7 @@ static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod 
             ipart = (float_exp(rho) - 126) >> 1;
          else
             ipart = float_exp(rho * (float)M_SQRT2) - 127;
-         r->minify = rho > 1.0f;
+         r->minify = !(rho <= 1.0f); /* unordered: NaN minifies */
          if (t->mip == R_MIP_NEAREST) {
             /* lp_build_nearest_mip_level: clamp (min, then max) */
             int l = first + ipart;
@@ -141,7 +144,7 @@ static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod 
       if (t->apply_min_lod)
          lod = fmax_ps(lod, t->min_lod);
    }
-   r->minify = lod > 0.0f;
+   r->minify = !(lod <= 0.0f); /* unordered: NaN minifies */
    if (t->mip == R_MIP_NEAREST) {
       /* lp_build_iround (cvtps2dq, half to even), then
        * lp_build_nearest_mip_level */
