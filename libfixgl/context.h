@@ -391,6 +391,17 @@ struct fgl_texture_image {
    /* the oracle's pipe format for the image (its channel bits, which
     * glGetTexLevelParameter reports; main/teximage.c) */
    const struct fgl_tex_pipe_format *Format;
+   /* The values the oracle stores, in their own precision, for an image
+    * whose pipe format has a channel of other than 8 bits (NULL for the
+    * 8-bit formats, where Data is exact): Width * Height texels of four
+    * uint16_t in Data's order (R, G, B, A after the base format's
+    * expansion: L in R, G and B, I in all four), channel c an unsigned
+    * integer of StoreBits[c] bits (1..16; its float is
+    * Store[c] * (1.0f / ((1 << bits) - 1)), or bits 0: a constant of the
+    * format, Store[c] is then 0 or 1).  Data holds each such value as the
+    * oracle expands it to 8 bits (_mesa_unorm_to_unorm(x, bits, 8)). */
+   uint16_t *Store;
+   uint8_t StoreBits[4];
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images

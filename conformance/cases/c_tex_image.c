@@ -849,6 +849,69 @@ static void readback_types_precision(fc_h *h)
     readback_types_of(h, f, sizeof f / sizeof f[0]);
 }
 
+/* Uploads of float, 16-bit, packed and transfer-scaled data into the
+ * formats of other than 8 bits per channel, read back as float and
+ * 16-bit: the oracle converts the client data straight to the stored
+ * precision (texstore: RGBA float and transfer results through
+ * _mesa_pack_float_rgba_row, RGBA ubyte through _mesa_pack_ubyte_rgba_row
+ * even into 10-bit fields, 16-bit arrays channel by channel). */
+static void store_precision(fc_h *h)
+{
+    static const GLint internals[] = {
+        GL_RGB10_A2, GL_RGB10, GL_RGBA16, GL_RGB12, GL_LUMINANCE16, GL_LUMINANCE12_ALPHA4,
+        GL_INTENSITY16, GL_ALPHA12, GL_RGB5_A1, GL_RGBA4, GL_R3_G3_B2, GL_RGB5,
+        GL_LUMINANCE4_ALPHA4, GL_RGBA2, GL_RGB565,
+    };
+    static const struct { GLenum f, t; } clients[] = {
+        { GL_RGBA, GL_FLOAT }, { GL_RGB, GL_FLOAT }, { GL_LUMINANCE, GL_FLOAT },
+        { GL_BGRA, GL_FLOAT }, { GL_RGBA, GL_HALF_FLOAT }, { GL_RGBA, GL_UNSIGNED_SHORT },
+        { GL_BGRA, GL_UNSIGNED_SHORT }, { GL_RGBA, GL_SHORT }, { GL_RGBA, GL_UNSIGNED_INT },
+        { GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV }, { GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 },
+        { GL_RGB, GL_UNSIGNED_BYTE }, { GL_RGBA, GL_UNSIGNED_BYTE },
+        { GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE },
+    };
+    static GLfloat fsrc[4 * 7 * 5];
+    for (size_t i = 0; i < sizeof fsrc / sizeof fsrc[0]; i++)
+        fsrc[i] = (float)((i * 7919u) % 1000u) / 999.0f * 1.2f - 0.1f;
+    fill_src(71);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static GLubyte out[4 * 4 * 7 * 5 + 64];
+    for (size_t k = 0; k < sizeof internals / sizeof internals[0]; k++) {
+        for (size_t c = 0; c <= sizeof clients / sizeof clients[0]; c++) {
+            /* the last pass: RGBA ubyte under a transfer scale (float path) */
+            const bool scaled = c == sizeof clients / sizeof clients[0];
+            const GLenum f = scaled ? GL_RGB : clients[c].f;
+            const GLenum t = scaled ? GL_UNSIGNED_BYTE : clients[c].t;
+            if (scaled)
+                glPixelTransferf(GL_GREEN_SCALE, 0.7f);
+            const void *data = t == GL_FLOAT ? (const void *)fsrc : (const void *)src;
+            glTexImage2D(GL_TEXTURE_2D, 0, internals[k], 7, 5, 0, f, t, data);
+            if (scaled)
+                glPixelTransferf(GL_GREEN_SCALE, 1.0f);
+            char l[96];
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x", (unsigned)internals[k], (unsigned)f,
+                     (unsigned)t);
+            fc_error(h, l);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out);
+            fc_blob(h, l, out, sizeof out);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, out);
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x ushort", (unsigned)internals[k],
+                     (unsigned)f, (unsigned)t);
+            fc_blob(h, l, out, sizeof out);
+            /* a sub-image of float data over it */
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 1, 3, 2, GL_RGBA, GL_FLOAT, fsrc + 40);
+            memset(out, 0xA5, sizeof out);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out);
+            snprintf(l, sizeof l, "0x%04x 0x%04x 0x%04x sub", (unsigned)internals[k],
+                     (unsigned)f, (unsigned)t);
+            fc_blob(h, l, out, sizeof out);
+            fc_error(h, l);
+        }
+    }
+}
+
 /* The images as the oracle samples them: every internal format drawn
  * NEAREST with GL_REPLACE and GL_MODULATE (a 4x4 texture on a 6x6 cell;
  * each texel at least one pixel), then images made by glCopyTexImage,
@@ -1127,6 +1190,7 @@ const fc_case fc_cases_tex_image[] = {
     FC_CASE_RGBA("texture/image_readback_types", 8, 8, 0, "texture pixel", readback_types),
     FC_CASE_RGBA("texture/image_readback_types_precision", 8, 8, 0, "texture pixel",
                  readback_types_precision),
+    FC_CASE_RGBA("texture/image_store_precision", 8, 8, 0, "texture pixel", store_precision),
     FC_CASE_RGBA("texture/image_unpack_store", 8, 8, 0, "texture", unpack_store),
     FC_CASE_RGBA("texture/image_border", 8, 8, 0, "texture", border),
     FC_CASE_RGBA("texture/image_null_data", 8, 8, 0, "texture", null_data),

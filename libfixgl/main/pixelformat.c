@@ -1420,6 +1420,154 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
    return true;
 }
 
+/* [S: format_utils.c:convert_ushort, normalized] a plain-type channel
+ * straight to unorm16 (_mesa_swizzle_and_convert between array formats) */
+static uint32_t channel_to_unorm16(GLenum type, const uint8_t *px, int c)
+{
+   int64_t i = 0;
+   float f = 0.0f;
+   load_channel(type, px, c, &i, &f);
+   switch (type) {
+   case GL_UNSIGNED_BYTE: return unorm_to_unorm((uint32_t)i, 8, 16);
+   case GL_BYTE: return snorm_to_unorm((int32_t)i, 8, 16);
+   case GL_UNSIGNED_SHORT: return (uint32_t)i;
+   case GL_SHORT: return snorm_to_unorm((int32_t)i, 16, 16);
+   case GL_UNSIGNED_INT: return unorm_to_unorm((uint32_t)i, 32, 16);
+   case GL_INT: return snorm_to_unorm((int32_t)i, 32, 16);
+   default: return float_to_unorm(f, 16);   /* GL_FLOAT; GL_HALF_FLOAT: _mesa_half_to_unorm */
+   }
+}
+
+/*
+ * [S: texstore.c:texstore_rgba, format_utils.c:_mesa_format_convert into
+ * the texture's own format] Mesa's paths to the stored values:
+ *  - GL_COLOR_INDEX: the RGBA ubyte image fgl_unpack_texels_rgba8 makes,
+ *    packed by _mesa_pack_ubyte_rgba_row (_mesa_unorm_to_unorm(x, 8, n))
+ *    or, into a 16-bit array format, x * 257;
+ *  - a transfer state or GL_RGBA/GL_FLOAT data: RGBA32_FLOAT, which goes
+ *    to a packed format by _mesa_pack_float_rgba_row (util_iround of
+ *    CLAMP(f) * max) and to a 16-bit array by _mesa_float_to_unorm;
+ *  - plain-type data into a 16-bit array format: channel by channel;
+ *  - RGBA8 data (GL_RGBA with GL_UNSIGNED_BYTE or _8_8_8_8_REV) into a
+ *    packed format: _mesa_pack_ubyte_rgba_row (the 10-bit fields too);
+ *  - anything else through an intermediate: ubyte for a packed format of
+ *    at most 8 bits per field, float otherwise.
+ */
+bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                              int width, int height, GLenum format, GLenum type,
+                              const void *pixels, GLenum base, const uint8_t bits[4],
+                              bool array16, uint16_t *dst)
+{
+   if (width <= 0 || height <= 0)
+      return true;
+   const size_t count = (size_t)width * (size_t)height;
+   const unsigned ops = fgl_image_transfer_state(ctx);
+   int maxbits = 0;
+   for (int c = 0; c < 4; c++)
+      if (bits[c] > maxbits)
+         maxbits = bits[c];
+   /* the source channel of each texel channel (store_texel), -1 / -2: the
+    * constant 0 / 1 */
+   int map[4] = { 0, 1, 2, 3 };
+   switch (base) {
+   case GL_LUMINANCE: map[1] = map[2] = 0; map[3] = -2; break;
+   case GL_LUMINANCE_ALPHA: map[1] = map[2] = 0; break;
+   case GL_INTENSITY: map[1] = map[2] = map[3] = 0; break;
+   case GL_ALPHA: map[0] = map[1] = map[2] = -1; break;
+   case GL_RGB: map[3] = -2; break;
+   default: break;
+   }
+   struct layout l;
+   const bool have_layout = format != GL_COLOR_INDEX && get_layout(format, type, &l);
+   if (format != GL_COLOR_INDEX && !have_layout)
+      return false;
+   const bool rgba8 = format == GL_RGBA && (type == GL_UNSIGNED_BYTE ||
+                                            type == GL_UNSIGNED_INT_8_8_8_8_REV);
+   const bool rgba_float = format == GL_RGBA && type == GL_FLOAT;
+   enum { VIA_UBYTE, VIA_FLOAT, DIRECT16 } path;
+   if (format == GL_COLOR_INDEX)
+      path = VIA_UBYTE;
+   else if (ops || rgba_float)
+      path = VIA_FLOAT;
+   else if (array16 && !l.packed && !l.pf)
+      path = DIRECT16;
+   else if (!array16 && (rgba8 || maxbits <= 8))
+      path = VIA_UBYTE;
+   else
+      path = VIA_FLOAT;
+
+   if (path == VIA_UBYTE) {
+      uint8_t *t = malloc(count * 4);
+      if (!t)
+         return false;
+      if (!fgl_unpack_texels_rgba8(ctx, p, width, height, format, type, pixels, base, t)) {
+         free(t);
+         return false;
+      }
+      for (size_t i = 0; i < 4 * count; i++) {
+         const unsigned b = bits[i & 3];
+         dst[i] = (uint16_t)(b == 0 ? (t[i] ? 1 : 0) : unorm_to_unorm(t[i], 8, b));
+      }
+      free(t);
+      return true;
+   }
+   if (path == DIRECT16) {
+      uint8_t *tmp = p->SwapBytes ? malloc((size_t)width * l.bytes) : NULL;
+      if (p->SwapBytes && !tmp)
+         return false;
+      for (int y = 0; y < height; y++) {
+         const uint8_t *src = image_row(p, &l, width, format, type, pixels, y, tmp);
+         for (int x = 0; x < width; x++, src += l.bytes) {
+            uint32_t c[4];
+            for (int k = 0; k < 4; k++) {
+               const int sw = l.swz[k];
+               c[k] = sw == SWZ_ZERO ? 0 : sw == SWZ_ONE ? 0xffff
+                                                        : channel_to_unorm16(l.type, src, sw);
+            }
+            uint16_t *o = dst + 4 * ((size_t)y * (size_t)width + (size_t)x);
+            for (int k = 0; k < 4; k++)
+               o[k] = (uint16_t)(map[k] < 0 ? (map[k] == -2) : bits[k] ? c[map[k]] : 0);
+         }
+      }
+      free(tmp);
+      return true;
+   }
+   /* VIA_FLOAT; a transfer state converts from the base address (the
+    * skips are not applied, as fgl_unpack_texels_rgba8 notes) */
+   struct fgl_pixelstore noskip = *p;
+   if (ops) {
+      noskip.SkipPixels = 0;
+      noskip.SkipRows = 0;
+   }
+   float (*rgba)[4] = malloc(count * sizeof(*rgba));
+   if (!rgba)
+      return false;
+   if (!fgl_unpack_rgba_float(ctx, &noskip, width, height, format, type, pixels, ops,
+                              (float *)rgba)) {
+      free(rgba);
+      return false;
+   }
+   for (size_t i = 0; i < count; i++) {
+      for (int k = 0; k < 4; k++) {
+         uint32_t v;
+         if (map[k] < 0) {
+            v = map[k] == -2;
+         } else if (!bits[k]) {
+            v = 0;
+         } else if (array16) {
+            v = float_to_unorm(rgba[i][map[k]], 16);
+         } else {
+            /* util_iround off x86-32: (int)(f + 0.5f) */
+            const float x = clampf(rgba[i][map[k]], 0.0f, 1.0f);
+            v = (uint32_t)(int)(x * (float)uint_max(bits[k]) + 0.5f);
+         }
+         dst[4 * i + (size_t)k] = (uint16_t)v;
+      }
+   }
+   free(rgba);
+   return true;
+}
+
 /* ------------------------------------------------------------------ */
 /* Packing colour images                                               */
 /* ------------------------------------------------------------------ */
@@ -1545,6 +1693,178 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
          swap_row(&l, type, dst0 + (size_t)y * stride, (size_t)width);
    free(src);
    return true;
+}
+
+/* A stored texel channel (value v of `bits` bits, or bits 0: the
+ * constant v, 0 or 1) as float [S: util/format unpack_rgba_float:
+ * field * (1.0f / max); format_utils.h:_mesa_unorm_to_float] */
+static float stored_to_float(uint32_t v, unsigned bits)
+{
+   return bits ? unorm_to_float(v, bits) : (float)v;
+}
+
+static uint8_t stored_to_ubyte(uint32_t v, unsigned bits)
+{
+   return bits ? (uint8_t)unorm_to_unorm(v, bits, 8) : (uint8_t)(v ? 255 : 0);
+}
+
+/*
+ * [S: texgetimage.c:get_tex_rgba_uncompressed, format_utils.c:
+ * _mesa_format_convert from the texture's own format]
+ *  - a luminance destination of an unsigned type (the clamp): to float
+ *    RGBA, clamped, then float to the destination;
+ *  - a 16-bit array format to a plain GL type: channel by channel from
+ *    unorm16 (_mesa_swizzle_and_convert: _mesa_unorm_to_unorm/_snorm,
+ *    _mesa_unorm_to_float, _mesa_unorm_to_half);
+ *  - otherwise (a packed texture format or a packed type) through an
+ *    RGBA intermediate: float when the destination is signed, float or
+ *    wider than 8 bits (its type size for a plain type, its widest field
+ *    for a packed one), else ubyte (_mesa_unpack_ubyte_rgba_row /
+ *    _mesa_pack_ubyte_rgba_row).
+ * Constant channels (the rebase's 0 and 1, a format's missing channel)
+ * are the exact 0 and 1 of the path's type.
+ */
+bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                         int width, int height, GLenum base, const uint16_t *store,
+                         const uint8_t bits[4], bool array16, GLenum format, GLenum type,
+                         void *pixels)
+{
+   (void)ctx;
+   struct layout l;
+   if (!get_layout(format, type, &l))
+      return false;
+   if (width <= 0 || height <= 0)
+      return true;
+   const size_t count = (size_t)width * (size_t)height;
+   const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
+   const bool signed_type = type == GL_BYTE || type == GL_SHORT || type == GL_INT ||
+                            type == GL_FLOAT || type == GL_HALF_FLOAT || type == 0x8D61;
+   const bool clamp = lum && !signed_type;
+
+   /* the rebase (teximage_needs_rebase): L and I read as (L, 0, 0, 1), LA
+    * as (L, 0, 0, A), A as (0, 0, 0, A), RGB with alpha 1 */
+   uint32_t (*v)[4] = malloc(count * sizeof(*v));
+   uint8_t (*b)[4] = malloc(count * sizeof(*b));
+   if (!v || !b) {
+      free(v);
+      free(b);
+      return false;
+   }
+   for (size_t i = 0; i < count; i++) {
+      const uint16_t *t = store + 4 * i;
+      static const int zero = -1, one = -2;
+      int src[4] = { 0, 1, 2, 3 };
+      switch (base) {
+      case GL_LUMINANCE: case GL_INTENSITY:
+         src[1] = src[2] = zero; src[3] = one; break;
+      case GL_LUMINANCE_ALPHA:
+         src[1] = src[2] = zero; break;
+      case GL_ALPHA:
+         src[0] = src[1] = src[2] = zero; break;
+      case GL_RGB:
+         src[3] = one; break;
+      default:
+         break;
+      }
+      for (int c = 0; c < 4; c++) {
+         if (src[c] < 0) {
+            v[i][c] = src[c] == one ? 1 : 0;
+            b[i][c] = 0;
+         } else {
+            v[i][c] = t[src[c]];
+            b[i][c] = bits[src[c]];
+         }
+      }
+   }
+   const size_t stride = fgl_image_row_stride(p, width, format, type);
+   uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
+   const bool dst_array = !l.packed && !l.pf;
+   bool via_float;
+   if (dst_array) {
+      via_float = signed_type || type_size(l.type) > 1;
+   } else if (l.pf) {
+      via_float = true;   /* a float format: GL_FLOAT datatype, signed */
+   } else {
+      int maxbits = 0;
+      for (int c = 0; c < 4; c++)
+         if (l.bits[c] > maxbits)
+            maxbits = l.bits[c];
+      via_float = maxbits > 8;
+   }
+   bool ok = true;
+   if (!clamp && array16 && dst_array) {
+      for (int y = 0; y < height; y++) {
+         uint8_t *dst = dst0 + (size_t)y * stride;
+         for (int x = 0; x < width; x++, dst += l.bytes) {
+            const size_t i = (size_t)y * (size_t)width + (size_t)x;
+            for (int ch = 0; ch < l.nchan; ch++) {
+               const int c = rgba_of_channel(&l, ch);
+               /* a constant 1 converts as unorm16 0xffff does, but for
+                * float/half: exactly 1.0 */
+               const bool konst = c < 0 || b[i][c] == 0;
+               const uint32_t x16 = c < 0 ? 0 : konst ? (v[i][c] ? 0xffffu : 0u) : v[i][c];
+               switch (l.type) {
+               case GL_UNSIGNED_BYTE: dst[ch] = (uint8_t)unorm_to_unorm(x16, 16, 8); break;
+               case GL_BYTE: dst[ch] = (uint8_t)unorm_to_snorm(x16, 16, 8); break;
+               case GL_UNSIGNED_SHORT: store_channel_int(l.type, dst, ch, x16); break;
+               case GL_SHORT: store_channel_int(l.type, dst, ch, unorm_to_snorm(x16, 16, 16)); break;
+               case GL_UNSIGNED_INT: store_channel_int(l.type, dst, ch, unorm_to_unorm(x16, 16, 32)); break;
+               case GL_INT: store_channel_int(l.type, dst, ch, unorm_to_snorm(x16, 16, 32)); break;
+               case GL_HALF_FLOAT: case 0x8D61: {
+                  const float f = konst ? (x16 ? 1.0f : 0.0f) : unorm_to_float(x16, 16);
+                  store_channel_int(GL_HALF_FLOAT, dst, ch, fgl_float_to_half(f));
+                  break;
+               }
+               case GL_FLOAT: {
+                  const float f = konst ? (x16 ? 1.0f : 0.0f) : unorm_to_float(x16, 16);
+                  memcpy(dst + 4 * ch, &f, 4);
+                  break;
+               }
+               default: break;
+               }
+            }
+         }
+      }
+   } else if (clamp || via_float) {
+      float (*f)[4] = malloc((size_t)width * sizeof(*f));
+      if (!f) {
+         ok = false;
+      } else {
+         for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+               const size_t i = (size_t)y * (size_t)width + (size_t)x;
+               for (int c = 0; c < 4; c++) {
+                  f[x][c] = stored_to_float(v[i][c], b[i][c]);
+                  if (clamp)
+                     f[x][c] = clampf(f[x][c], 0.0f, 1.0f);
+               }
+            }
+            pack_row_float(&l, (const float (*)[4])f, (size_t)width, dst0 + (size_t)y * stride);
+         }
+         free(f);
+      }
+   } else {
+      uint8_t (*u)[4] = malloc((size_t)width * sizeof(*u));
+      if (!u) {
+         ok = false;
+      } else {
+         for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+               const size_t i = (size_t)y * (size_t)width + (size_t)x;
+               for (int c = 0; c < 4; c++)
+                  u[x][c] = stored_to_ubyte(v[i][c], b[i][c]);
+            }
+            pack_row_ubyte(&l, (const uint8_t (*)[4])u, (size_t)width, dst0 + (size_t)y * stride);
+         }
+         free(u);
+      }
+   }
+   if (ok && p->SwapBytes)
+      for (int y = 0; y < height; y++)
+         swap_row(&l, type, dst0 + (size_t)y * stride, (size_t)width);
+   free(v);
+   free(b);
+   return ok;
 }
 
 /* ------------------------------------------------------------------ */

@@ -40,6 +40,16 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
                              int width, int height, GLenum format, GLenum type,
                              const void *pixels, GLenum base, uint8_t *dst);
 
+/* The same into the values of a texture format of other than 8 bits per
+ * channel as the oracle stores them (struct fgl_texture_image Store):
+ * bits[c] per texel channel (0: a constant of the format), `array16`: the
+ * oracle's format is a 16-bit array format (else a packed one).  dst gets
+ * width * height texels of four uint16_t.  False as above. */
+bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                              int width, int height, GLenum format, GLenum type,
+                              const void *pixels, GLenum base, const uint8_t bits[4],
+                              bool array16, uint16_t *dst);
+
 /* ------------------------------------------------------------------ */
 /* Format/type validation                                              */
 /* ------------------------------------------------------------------ */
@@ -157,6 +167,18 @@ enum fgl_pack_source {
 bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
                     unsigned source, int width, int height, GLenum base,
                     const uint8_t *rgba8, GLenum format, GLenum type, void *pixels);
+
+/* glGetTexImage of an image that keeps its stored values (struct
+ * fgl_texture_image Store/StoreBits, base format `base`): packs the
+ * width x height texels from their own precision as the oracle converts
+ * its texture format [S: texgetimage.c:get_tex_rgba_uncompressed];
+ * `array16`: the oracle's format is a 16-bit array format (RGBA16, RGBX16,
+ * L16, A16, L16A16, I16), else a packed one.  Returns false for a
+ * format/type it does not convert. */
+bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p,
+                         int width, int height, GLenum base, const uint16_t *store,
+                         const uint8_t bits[4], bool array16, GLenum format, GLenum type,
+                         void *pixels);
 
 /* One row of n depth values [S: pack.c:_mesa_pack_depth_span] (depth
  * scale/bias applied, SWAP_BYTES) at `dst` (already addressed). */

@@ -7,11 +7,11 @@
  * Images are stored as RGBA8 texels expanded from their base format
  * (struct fgl_texture_image).  The oracle stores each image in the pipe
  * format st_choose_format picks for the internal format (and, for unsized
- * internal formats, the client format/type); a format with fewer than 8
- * bits per channel is stored here already quantized to it and expanded
- * back to 8 bits the way llvmpipe's sampler and glGetTexImage expand it,
- * so that every 8-bit value the oracle can read back is the one fixgl
- * holds.
+ * internal formats, the client format/type); for a format of other than
+ * 8 bits per channel fixgl keeps the stored values in their own precision
+ * (img->Store, StoreBits) and their 8-bit expansion as llvmpipe's AoS
+ * sampler and glGetTexImage's 8-bit conversions expand them (img->Data),
+ * so that every value the oracle can read back is the one fixgl holds.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -26,6 +26,7 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
    for (int l = 0; l < FGL_MAX_TEXTURE_LEVELS; l++) {
       if (t->Image[l]) {
          free(t->Image[l]->Data);
+         free(t->Image[l]->Store);
          free(t->Image[l]);
          t->Image[l] = NULL;
       }
@@ -220,31 +221,6 @@ static unsigned extend_to_8(unsigned x, unsigned bits)
    return x * mul + ((8u % bits) ? x >> (bits - 8u % bits) : 0u);
 }
 
-/* One 8-bit channel value as a channel of `bits` bits stores it and the
- * sampler / glGetTexImage expand it again.  [S: format_utils.c:
- * _mesa_format_convert] a format of at most 8 bits per channel converts
- * through an RGBA ubyte intermediate (_mesa_unorm_to_unorm(x, 8, n):
- * (x * max + 127) / 255), a wider one through float
- * (_mesa_float_to_unorm: round-half-even of x/255 * max) and back with
- * _mesa_unorm_to_unorm(q, n, 8). */
-static uint8_t quantize(uint8_t x, unsigned bits, bool via_float, bool truncate)
-{
-   if (bits == 0 || bits == 8)
-      return x;
-   if (truncate)
-      return (uint8_t)extend_to_8((unsigned)x >> (8u - bits), bits);
-   const unsigned max = (1u << bits) - 1u;
-   if (via_float) {
-      const float f = (float)x * (1.0f / 255.0f);
-      const unsigned q = (unsigned)llrintf(f * (float)max);
-      if (bits > 8)
-         return (uint8_t)((q * 255u + (1u << (bits - 1)) - 1u) / max);
-      return (uint8_t)extend_to_8(q, bits);
-   }
-   const unsigned q = ((unsigned)x * max + 127u) / 255u;
-   return (uint8_t)extend_to_8(q, bits);
-}
-
 static unsigned max_bits(const struct fgl_tex_pipe_format *pf)
 {
    unsigned m = pf->r;
@@ -255,12 +231,11 @@ static unsigned max_bits(const struct fgl_tex_pipe_format *pf)
    return m;
 }
 
-/* Quantizes n RGBA8 texels of base format `base` in place to pf
- * (truncating: as glCopyTexImage stores them). */
-static void quantize_texels(const struct fgl_tex_pipe_format *pf, GLenum base, uint8_t *t,
-                            size_t n, bool truncate)
+/* The bits of each RGBA channel of a texel of base format `base` stored
+ * in pf (L in R, G and B; I in all four); 0 for a channel the format
+ * does not store (a constant: alpha 1 of RGB and L, R, G, B 0 of A). */
+static void channel_bits(const struct fgl_tex_pipe_format *pf, GLenum base, uint8_t bits[4])
 {
-   unsigned bits[4];
    switch (base) {
    case GL_LUMINANCE: case GL_LUMINANCE_ALPHA:
       bits[0] = bits[1] = bits[2] = pf->l;
@@ -280,13 +255,92 @@ static void quantize_texels(const struct fgl_tex_pipe_format *pf, GLenum base, u
       bits[3] = base == GL_RGB ? 0 : pf->a;
       break;
    }
-   if (bits[0] % 8 == 0 && bits[1] % 8 == 0 && bits[2] % 8 == 0 && bits[3] % 8 == 0 &&
-       max_bits(pf) != 10)
-      return;   /* 8 and 16 bits give back every 8-bit value */
-   const bool via_float = max_bits(pf) > 8;
-   for (size_t i = 0; i < n; i++)
-      for (int c = 0; c < 4; c++)
-         t[4 * i + c] = quantize(t[4 * i + c], bits[c], via_float, truncate);
+}
+
+/* Whether images of pf keep their stored values (img->Store): a channel
+ * of other than 8 bits. */
+static bool needs_store(const struct fgl_tex_pipe_format *pf)
+{
+   const uint8_t b[6] = { pf->r, pf->g, pf->b, pf->a, pf->l, pf->i };
+   for (int k = 0; k < 6; k++)
+      if (b[k] != 0 && b[k] != 8)
+         return true;
+   return false;
+}
+
+/* [S: format_utils.h:_mesa_unorm_to_unorm(q, bits, 8)] a stored value as
+ * the oracle's sampler and glGetTexImage expand it to 8 bits (an 8-bit
+ * intermediate: util/format unpack_rgba_8unorm, _mesa_swizzle_and_convert) */
+static uint8_t expand_to_8(unsigned q, unsigned bits)
+{
+   if (bits == 8)
+      return (uint8_t)q;
+   if (bits > 8)
+      return (uint8_t)((q * 255u + (1u << (bits - 1)) - 1u) / ((1u << bits) - 1u));
+   return (uint8_t)extend_to_8(q, bits);
+}
+
+/* One 8-bit channel value as a channel of `bits` bits stores it.
+ * [S: format_utils.c:_mesa_format_convert] a 16-bit array format takes
+ * the byte channel by _mesa_unorm_to_unorm(x, 8, 16) (x * 257); a packed
+ * format of at most 8 bits per channel converts through an RGBA ubyte
+ * intermediate (_mesa_unorm_to_unorm(x, 8, n): (x * max + 127) / 255), a
+ * wider one (10-10-10-2) through float (x/255, then util_iround(f * max)).
+ * `truncate`: glCopyTexImage's x >> (8 - bits) (copy_truncates). */
+static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, bool truncate)
+{
+   if (bits == 8)
+      return x;
+   if (bits == 16)
+      return (unsigned)x * 257u;
+   if (truncate)
+      return (unsigned)x >> (8u - bits);
+   const unsigned max = (1u << bits) - 1u;
+   if (via_float) {
+      /* [S: u_format_pack.py: util_iround(x * max), (int)(f + 0.5f) off
+       * x86-32: the float sum rounds, 794.49997 gives 795] */
+      const float f = (float)x * (1.0f / 255.0f);
+      return (unsigned)(int)(f * (float)max + 0.5f);
+   }
+   return ((unsigned)x * max + 127u) / 255u;
+}
+
+/* Stores n texels of stored values `q` (four per texel, img->StoreBits
+ * wide; constants 0 or 1) at texel index `at` of img. */
+static void put_stored(struct fgl_texture_image *img, size_t at, const uint16_t *q, size_t n)
+{
+   uint8_t *data = img->Data + 4 * at;
+   memcpy(img->Store + 4 * at, q, 4 * n * sizeof(uint16_t));
+   for (size_t i = 0; i < 4 * n; i++) {
+      const unsigned bits = img->StoreBits[i & 3];
+      data[i] = bits ? expand_to_8(q[i], bits) : (q[i] ? 255 : 0);
+   }
+}
+
+/* Stores n RGBA8 texels `t` of img's base format (rebased: constants 0 or
+ * 255 in the channels the format lacks) at texel index `at` of img, in
+ * img's format (truncating: as glCopyTexImage stores into some formats). */
+static void put_texels(struct fgl_texture_image *img, size_t at, const uint8_t *t, size_t n,
+                       bool truncate)
+{
+   uint8_t *data = img->Data + 4 * at;
+   if (!img->Store) {
+      memcpy(data, t, 4 * n);   /* 8 bits per channel */
+      return;
+   }
+   uint16_t *store = img->Store + 4 * at;
+   const bool via_float = max_bits(img->Format) > 8;
+   for (size_t i = 0; i < 4 * n; i++) {
+      const unsigned bits = img->StoreBits[i & 3];
+      if (bits == 0) {
+         store[i] = t[i] ? 1 : 0;
+         data[i] = t[i];
+         continue;
+      }
+      const unsigned q = store_from_8(t[i], bits, via_float, truncate);
+      store[i] = (uint16_t)q;
+      data[i] = expand_to_8(q, bits);
+   }
 }
 
 /* The texel an unwritten (zeroed) texel of the oracle's storage reads as. */
@@ -393,21 +447,34 @@ static void set_image(struct fgl_texture_object *t, GLint level,
 {
    if (t->Image[level]) {
       free(t->Image[level]->Data);
+      free(t->Image[level]->Store);
       free(t->Image[level]);
    }
    t->Image[level] = img;
 }
 
-/* Allocates the texel storage of img, every texel as the oracle's zeroed
- * storage reads; false when out of memory. */
+/* Allocates the texel storage of img (and its stored values when the
+ * format is not 8 bits per channel), every texel as the oracle's zeroed
+ * storage reads; false (nothing allocated) when out of memory. */
 static bool alloc_texels(struct fgl_texture_image *img)
 {
    const size_t n = (size_t)img->Width * (size_t)img->Height;
    img->Data = malloc(n ? n * 4 : 4);
-   if (!img->Data)
+   if (needs_store(img->Format)) {
+      channel_bits(img->Format, img->BaseFormat, img->StoreBits);
+      img->Store = malloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t));
+   }
+   if (!img->Data || (needs_store(img->Format) && !img->Store)) {
+      free(img->Data);
+      free(img->Store);
+      img->Data = NULL;
+      img->Store = NULL;
       return false;
+   }
+   uint8_t t[4];
+   zero_texel(img->BaseFormat, t);
    for (size_t i = 0; i < n; i++)
-      zero_texel(img->BaseFormat, img->Data + 4 * i);
+      put_texels(img, i, t, 1, false);
    return true;
 }
 
@@ -418,6 +485,26 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
 {
    if (!pixels || w == 0 || h == 0)
       return true;
+   if (img->Store) {
+      /* the stored values straight from the client data: a float or
+       * 16-bit source reaches a wide format without an 8-bit step */
+      uint16_t *q = malloc((size_t)w * (size_t)h * 4 * sizeof(uint16_t));
+      if (!q) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return false;
+      }
+      if (!fgl_unpack_texels_stored(ctx, unpack, w, h, format, type, pixels, img->BaseFormat,
+                                    img->StoreBits, max_bits(img->Format) == 16, q)) {
+         free(q);
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return false;
+      }
+      for (int j = 0; j < h; j++)
+         put_stored(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
+                    q + 4 * (size_t)j * (size_t)w, (size_t)w);
+      free(q);
+      return true;
+   }
    uint8_t *tmp = malloc((size_t)w * (size_t)h * 4);
    if (!tmp) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
@@ -430,10 +517,9 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
       fgl_error(ctx, GL_INVALID_ENUM);
       return false;
    }
-   quantize_texels(img->Format, img->BaseFormat, tmp, (size_t)w * (size_t)h, false);
    for (int j = 0; j < h; j++)
-      memcpy(img->Data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x),
-             tmp + 4 * (size_t)j * (size_t)w, 4 * (size_t)w);
+      put_texels(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
+                 tmp + 4 * (size_t)j * (size_t)w, (size_t)w, false);
    free(tmp);
    return true;
 }
@@ -539,6 +625,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    if (!store_texels(ctx, img, &unpack, 0, 0, width, height, format, type, pixels)) {
       free(img->Data);
+      free(img->Store);
       free(img);
       return;
    }
@@ -690,16 +777,15 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
       return;
    for (GLint j = 0; j < h; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
-      uint8_t *dst = img->Data + 4 * ((size_t)(yoff + j) * (size_t)img->Width + (size_t)xoff);
+      const size_t at = (size_t)(yoff + j) * (size_t)img->Width + (size_t)xoff;
       for (GLint i = 0; i < w; i++) {
-         uint8_t c[4];
+         uint8_t c[4], t[4];
          memcpy(c, fb->Color + 4 * (row * (size_t)fb->Width + (size_t)(x + i)), 4);
          if (fb->AlphaBits == 0)
             c[3] = 255;
-         rebase_texel(img->BaseFormat, c, dst + 4 * (size_t)i);
+         rebase_texel(img->BaseFormat, c, t);
+         put_texels(img, at + (size_t)i, t, 1, img->Format->copy_truncates);
       }
-      quantize_texels(img->Format, img->BaseFormat, dst, (size_t)w,
-                      img->Format->copy_truncates);
    }
    ctx->NewState |= FGL_NEW_TEXTURE;
 }
@@ -920,8 +1006,13 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       return;
    /* [S: texgetimage.c:get_tex_rgba_uncompressed] the texels through
     * pixelformat's packer (the rebase of L/LA/I/A/RGB images, L = R) */
-   fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                  img->BaseFormat, img->Data, format, type, pixels);
+   if (img->Store)
+      fgl_pack_tex_stored(ctx, &ctx->Pack, img->Width, img->Height, img->BaseFormat,
+                          img->Store, img->StoreBits, max_bits(img->Format) == 16, format,
+                          type, pixels);
+   else
+      fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
+                     img->BaseFormat, img->Data, format, type, pixels);
 }
 
 /* ------------------------------------------------------------------ */
