@@ -318,7 +318,19 @@ static void texel(const struct r_texture *t, int lvl, int x, int y, float out[4]
       border = true;
    if (border)
       x = y = 0;
-   const uint8_t *p = l->data + 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+   const size_t at = 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+   if (l->store) {
+      /* a format wider (or narrower) than 8 bits per channel: the stored
+       * n-bit value times (float)(1 / (2^n - 1)) [S: lp_bld_conv.c:
+       * lp_build_unsigned_norm_to_float], a constant channel as is */
+      const uint16_t *q = l->store + at;
+      for (int c = 0; c < 4; c++) {
+         float v = l->store_bits[c] ? (float)q[c] * l->store_scale[c] : (float)q[c];
+         out[c] = border && (t->border_mask >> c & 1) ? t->border_color[c] : v;
+      }
+      return;
+   }
+   const uint8_t *p = l->data + at;
    const float scale = (float)(1.0 / 255.0);
    for (int c = 0; c < 4; c++)
       out[c] = border && (t->border_mask >> c & 1) ? t->border_color[c] : (float)p[c] * scale;
