@@ -245,10 +245,7 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
          ipart = (float_exp(rho) - 126) >> 1;
       else
          ipart = float_exp(rho * (float)M_SQRT2) - 127;
-      /* an ordered compare here: the unordered one (NaN rho minifies, as
-       * r_tex_soa.c's quad_lod) broke random-tex/s1-i61, i141, i207, i569,
-       * i653; texture/wrap_lod_nan_aos in known-differences.txt */
-      minify = rho > 1.0f;
+      minify = !(rho <= 1.0f); /* unordered: NaN minifies */
       level0 = clampi(first + ipart, first, last);
    } else {
       /* lp_build_fast_log2 of rho squared, halved
@@ -258,7 +255,7 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
       const float l2 = (float)(float_exp(r2) - 128) +
                        u2f((f2u(r2) & 0x7fffffu) | 0x3f800000u);
       const float lod = l2 * 0.5f;
-      minify = lod > 0.0f;
+      minify = !(lod <= 0.0f); /* unordered: NaN minifies */
       const float fl = floorf(lod);
       float fpart = lod - fl;
       int l0 = first + itrunc(fl);
