@@ -104,8 +104,11 @@ static void update_texture_general(const struct fgl_context *ctx, unsigned u,
     * max_lod > 0 samples without the mip filter */
    if (rt->mip != R_MIP_NONE && rt->last_level == 0 && rt->max_lod > 0.0f)
       rt->mip = R_MIP_NONE;
+   /* use_aos needs util_format_fits_8unorm [S: lp_bld_sample_soa.c:
+    * lp_build_sample_soa_code] */
    rt->float_path = !(rt->wrap_s <= R_WRAP_CLAMP_TO_EDGE &&
-                      (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE));
+                      (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE)) ||
+                    !fgl_tex_image_fits_unorm8(t->Image[rt->first_level]);
    rt->soa = rt->float_path || rt->lod_bias_non_zero || rt->min_max_lod_equal ||
              rt->apply_min_lod || rt->apply_max_lod;
    /* The border colour (clamped by glTexParameter): st_convert_sampler
@@ -171,6 +174,14 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
       rt->level[l].width = img->Width;
       rt->level[l].height = rt->dims == 1 ? 1 : img->Height;
       rt->level[l].data = img->Data;
+      /* the stored values of a format that is not 8 bits per channel,
+       * for the float path */
+      rt->level[l].store = fgl_tex_image_fits_unorm8(img) ? NULL : img->Store;
+      for (int c = 0; c < 4; c++) {
+         const int bits = img->StoreBits[c];
+         rt->level[l].store_bits[c] = (uint8_t)bits;
+         rt->level[l].store_scale[c] = bits ? (float)(1.0 / (double)((1u << bits) - 1u)) : 1.0f;
+      }
    }
    /* the resource's level-0 size (st_texture_create from the base image,
     * guess_and_alloc_texture: the base size scaled up to level 0) */

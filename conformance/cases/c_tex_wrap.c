@@ -355,6 +355,52 @@ static void wrap_border_blend(fc_h *h)
     glDisable(GL_BLEND);
 }
 
+/* q == 0: the coordinates are infinite, their derivatives NaN, so rho and
+ * the level of detail are NaN.  lod_positive is an unordered compare, so
+ * NaN counts as minified: with min filter != mag filter the min filter
+ * samples (LINEAR on an infinite coordinate: NaN weights, black with alpha
+ * 0 in the colour buffer).  Every filter pair x mip filter, on the AoS
+ * (REPEAT) and the float path (MIRRORED_REPEAT, CLAMP), as a triangle and
+ * as lines; one frame per combination (random-tex/s1-i561). */
+static void wrap_lod_nan(fc_h *h)
+{
+    static const GLenum mins[6] = {
+        GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+        GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR,
+    };
+    static const GLenum wraps[4][2] = {
+        { GL_REPEAT, GL_REPEAT }, { GL_MIRRORED_REPEAT, GL_REPEAT },
+        { GL_MIRRORED_REPEAT, GL_MIRRORED_REPEAT }, { GL_CLAMP, GL_MIRRORED_REPEAT },
+    };
+    const fc_case *c = fc_this_case(h);
+    glBindTexture(GL_TEXTURE_2D, 1);
+    level_chain(GL_TEXTURE_2D, 4, 8);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    for (int w = 0; w < 4; w++) {
+        for (int m = 0; m < 12; m++) {
+            tex_params(GL_TEXTURE_2D, mins[m % 6], m < 6 ? GL_NEAREST : GL_LINEAR, wraps[w][0],
+                       wraps[w][1]);
+            fc_pixel_ortho(h);
+            fcu_clear(0.2f, 0.1f, 0.3f, 1, 1);
+            glTexCoord4f(0.34f, 0.77f, 0.5f, 0.0f);
+            glBegin(GL_TRIANGLES);
+            glVertex2f(1.0f, 1.0f);
+            glVertex2f((float)c->width - 2.0f, 3.0f);
+            glVertex2f(5.0f, (float)c->height * 0.5f);
+            glEnd();
+            glTexCoord4f(-1.5f, 0.25f, 0.0f, 0.0f);
+            glBegin(GL_LINES);
+            glVertex2f(2.0f, (float)c->height - 3.0f);
+            glVertex2f((float)c->width - 1.0f, (float)c->height * 0.6f);
+            glVertex2f((float)c->width * 0.5f, (float)c->height - 1.0f);
+            glVertex2f((float)c->width * 0.75f, 2.0f);
+            glEnd();
+            fc_capture(h);
+        }
+    }
+}
+
 /* Projective triangles (q varies per vertex, so the level of detail varies
  * across each) with min filter != mag filter on the float path: 8 pixels
  * (two quads) are filtered together, linearly if either quad wants the
@@ -697,6 +743,7 @@ const fc_case fc_cases_tex_wrap[] = {
     FC_CASE_RGBA("texture/wrap_border_formats", 40, 40, 24, "texture", wrap_border_formats),
     FC_CASE_RGBA("texture/wrap_border_blend", 40, 40, 2, "texture fragment", wrap_border_blend),
     FC_CASE_RGBA("texture/wrap_minmag_vector", 48, 48, 16, "texture", wrap_minmag_vector),
+    FC_CASE_RGBA("texture/wrap_lod_nan", 24, 24, 48, "texture", wrap_lod_nan),
     FC_CASE_RGBA("texture/wrap_random", 48, 48, 32, "texture", wrap_random),
 #define MC(n) FC_CASE_RGBA(n "_nn", 64, 64, 3, "texture", wrap_mip_case),         \
               FC_CASE_RGBA(n "_ln", 64, 64, 3, "texture", wrap_mip_case),         \

@@ -149,6 +149,13 @@ enum r_tex_wrap {
 struct r_tex_level {
    int width, height;            /* height 1 for 1D */
    const uint8_t *data;          /* width * height RGBA8 texels */
+   /* a format of other than 8 bits per channel (float path only): the
+    * stored values, four uint16_t per texel, channel c an integer of
+    * store_bits[c] bits (0: a constant 0 or 1) read as
+    * store[c] * store_scale[c] (NULL for the 8-bit formats) */
+   const uint16_t *store;
+   uint8_t store_bits[4];
+   float store_scale[4];
 };
 
 struct r_texture {

@@ -91,6 +91,9 @@ static inline float fast_log2(float x)
    return (float)(float_exp(x) - 128) + u2f((f2u(x) & 0x7fffffu) | 0x3f800000u);
 }
 
+/* lod_positive (minified) is lp_build_cmp(GREATER), an unordered compare
+ * (LLVMRealUGT) [S: lp_bld_logic.c:lp_build_compare_ext, ordered FALSE]:
+ * a NaN rho or lod (derivatives of infinite coordinates, q == 0) minifies. */
 static void quad_lod(const struct r_texture *t, const float q[3][3], struct lod *r)
 {
    const int first = t->first_level, last = t->last_level;
@@ -316,7 +319,19 @@ static void texel(const struct r_texture *t, int lvl, int x, int y, float out[4]
       border = true;
    if (border)
       x = y = 0;
-   const uint8_t *p = l->data + 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+   const size_t at = 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+   if (l->store) {
+      /* a format wider (or narrower) than 8 bits per channel: the stored
+       * n-bit value times (float)(1 / (2^n - 1)) [S: lp_bld_conv.c:
+       * lp_build_unsigned_norm_to_float], a constant channel as is */
+      const uint16_t *q = l->store + at;
+      for (int c = 0; c < 4; c++) {
+         float v = l->store_bits[c] ? (float)q[c] * l->store_scale[c] : (float)q[c];
+         out[c] = border && (t->border_mask >> c & 1) ? t->border_color[c] : v;
+      }
+      return;
+   }
+   const uint8_t *p = l->data + at;
    const float scale = (float)(1.0 / 255.0);
    for (int c = 0; c < 4; c++)
       out[c] = border && (t->border_mask >> c & 1) ? t->border_color[c] : (float)p[c] * scale;
