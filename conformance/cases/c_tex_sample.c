@@ -39,43 +39,6 @@ static void noise_image(GLenum target, int level, int w, int h, unsigned seed)
         glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
 }
 
-/* Level `level` of a hand-built chain: a checker of two colours distinct
- * to the level (so both the level and the texel show). */
-static void level_image(GLenum target, int level, int w, int h)
-{
-    static const unsigned char pal[8][2][4] = {
-        { { 255, 0, 0, 255 }, { 128, 0, 40, 200 } },
-        { { 0, 255, 0, 230 }, { 0, 110, 60, 150 } },
-        { { 0, 0, 255, 210 }, { 60, 40, 140, 100 } },
-        { { 255, 255, 0, 190 }, { 120, 120, 20, 60 } },
-        { { 0, 255, 255, 170 }, { 30, 100, 100, 30 } },
-        { { 255, 0, 255, 150 }, { 90, 20, 90, 10 } },
-        { { 255, 255, 255, 130 }, { 70, 70, 70, 0 } },
-        { { 255, 128, 0, 110 }, { 10, 10, 10, 255 } },
-    };
-    static unsigned char buf[256 * 256 * 4];
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            memcpy(&buf[4 * (y * w + x)], pal[level & 7][(x ^ y) & 1], 4);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (target == GL_TEXTURE_1D)
-        glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, w, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
-    else
-        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
-}
-
-/* A full chain from w x h down to 1x1 of level_image levels. */
-static void level_chain(GLenum target, int w, int h)
-{
-    for (int l = 0;; l++) {
-        level_image(target, l, w, h);
-        if (w == 1 && (h == 1 || target == GL_TEXTURE_1D))
-            break;
-        w = w > 1 ? w / 2 : 1;
-        h = h > 1 ? h / 2 : 1;
-    }
-}
-
 static void tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap)
 {
     glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)min);
@@ -225,7 +188,7 @@ static void mip_case(fc_h *h)
                                            sizeof mip_params / sizeof mip_params[0],
                                            sizeof mip_params[0]);
     glBindTexture(p->target, 1);
-    level_chain(p->target, p->w, p->h);
+    fcu_tex_level_chain(p->target, p->w, p->h);
     tex_params(p->target, p->min, p->mag, p->wrap);
     glEnable(p->target);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
@@ -243,7 +206,7 @@ static void lines_points(fc_h *h)
 {
     fc_pixel_ortho(h);
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 16, 16);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 16, 16);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
@@ -292,7 +255,7 @@ static void rebind_incomplete(fc_h *h)
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
     scene_flat(h, -0.2f, 1.3f);
     glBindTexture(GL_TEXTURE_2D, 2);
-    level_chain(GL_TEXTURE_2D, 8, 8);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 8, 8);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT);
     scene_flat(h, -2.2f, 4.3f);
 }
@@ -304,7 +267,7 @@ static void rebind_incomplete(fc_h *h)
 static void projective(fc_h *h)
 {
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 32, 16);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 32, 16);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
@@ -369,7 +332,7 @@ static void const_coord(fc_h *h)
 static void base_max_level(fc_h *h)
 {
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 64, 64);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 64, 64);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3);
@@ -386,7 +349,7 @@ static void base_max_level(fc_h *h)
 static void raster_state(fc_h *h)
 {
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 16, 16);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 16, 16);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
@@ -452,7 +415,7 @@ static void mixed_wrap(fc_h *h)
 static void persp_large(fc_h *h)
 {
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 64, 64);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 64, 64);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
@@ -489,7 +452,7 @@ static void persp_large(fc_h *h)
 static void arrays_lists(fc_h *h)
 {
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 32, 32);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 32, 32);
     tex_params(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
@@ -537,7 +500,7 @@ static void extreme_coords(fc_h *h)
                                        { GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST },
                                        { GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR } };
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 8, 8);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 8, 8);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     fc_pixel_ortho(h);

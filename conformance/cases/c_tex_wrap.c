@@ -65,43 +65,6 @@ static void noise_image(GLenum target, int level, int w, int h, unsigned seed)
     noise_image_fmt(target, level, w, h, seed, GL_RGBA, GL_RGBA);
 }
 
-/* Level `level` of a hand-built chain: a checker of two colours distinct
- * to the level, so both the level and the texel show. */
-static void level_image(GLenum target, int level, int w, int h)
-{
-    static const unsigned char pal[8][2][4] = {
-        { { 255, 0, 0, 255 }, { 128, 0, 40, 200 } },
-        { { 0, 255, 0, 230 }, { 0, 110, 60, 150 } },
-        { { 0, 0, 255, 210 }, { 60, 40, 140, 100 } },
-        { { 255, 255, 0, 190 }, { 120, 120, 20, 60 } },
-        { { 0, 255, 255, 170 }, { 30, 100, 100, 30 } },
-        { { 255, 0, 255, 150 }, { 90, 20, 90, 10 } },
-        { { 255, 255, 255, 130 }, { 70, 70, 70, 0 } },
-        { { 255, 128, 0, 110 }, { 10, 10, 10, 255 } },
-    };
-    static unsigned char buf[128 * 128 * 4];
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            memcpy(&buf[4 * (y * w + x)], pal[level & 7][(x ^ y) & 1], 4);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (target == GL_TEXTURE_1D)
-        glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, w, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
-    else
-        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
-}
-
-/* A full chain from w x h down to 1x1. */
-static void level_chain(GLenum target, int w, int h)
-{
-    for (int l = 0;; l++) {
-        level_image(target, l, w, h);
-        if (w == 1 && (h == 1 || target == GL_TEXTURE_1D))
-            break;
-        w = w > 1 ? w / 2 : 1;
-        h = h > 1 ? h / 2 : 1;
-    }
-}
-
 static void tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap_s, GLenum wrap_t)
 {
     glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)min);
@@ -374,7 +337,7 @@ static void wrap_lod_nan(fc_h *h)
     };
     const fc_case *c = fc_this_case(h);
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, 4, 8);
+    fcu_tex_level_chain(GL_TEXTURE_2D, 4, 8);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     for (int w = 0; w < 4; w++) {
@@ -567,7 +530,7 @@ static void wrap_mip_case(fc_h *h)
                                             sizeof wmip_params / sizeof wmip_params[0],
                                             sizeof wmip_params[0]);
     glBindTexture(GL_TEXTURE_2D, 1);
-    level_chain(GL_TEXTURE_2D, p->w, p->h);
+    fcu_tex_level_chain(GL_TEXTURE_2D, p->w, p->h);
     tex_params(GL_TEXTURE_2D, p->min, p->mag, p->wrap_s, p->wrap_t);
     border(GL_TEXTURE_2D, 0.1f, 0.8f, 0.7f, 0.5f);
     glEnable(GL_TEXTURE_2D);
@@ -663,7 +626,7 @@ static void lod_case(fc_h *h)
                                            sizeof lod_params / sizeof lod_params[0],
                                            sizeof lod_params[0]);
     glBindTexture(p->target, 1);
-    level_chain(p->target, p->w, p->h);
+    fcu_tex_level_chain(p->target, p->w, p->h);
     tex_params(p->target, p->min, p->mag, p->wrap, p->wrap);
     border(p->target, 0.6f, 0.2f, 0.9f, 0.4f);
     glEnable(p->target);

@@ -65,6 +65,12 @@ void fcu_rect(float x0, float y0, float x1, float y1, float z);
 /* One GL_TRIANGLES triangle (x, y pairs) at z = 0. */
 void fcu_tri(float x0, float y0, float x1, float y1, float x2, float y2);
 /* Sets the projection matrix (and returns to GL_MODELVIEW with identity). */
+/* Level `level` of a hand-built mipmap chain (GL_TEXTURE_1D or 2D, RGBA,
+ * up to 256x256): a checker of two colours distinct to the level, so
+ * both the level and the texel show; and a full chain of them from
+ * w x h down to 1x1. */
+void fcu_tex_level_image(GLenum target, int level, int w, int h);
+void fcu_tex_level_chain(GLenum target, int w, int h);
 void fcu_ortho(double l, double r, double b, double t, double n, double f);
 void fcu_frustum(double l, double r, double b, double t, double n, double f);
 

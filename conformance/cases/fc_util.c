@@ -1,6 +1,8 @@
 /* fc_util.c - drawing helpers shared by the fixed cases (see cases.h). */
 #include "cases.h"
 
+#include <string.h>
+
 static const GLubyte palette[16][3] = {
     { 255, 0, 0 }, { 0, 255, 0 }, { 0, 0, 255 }, { 255, 255, 0 },
     { 0, 255, 255 }, { 255, 0, 255 }, { 255, 128, 0 }, { 128, 0, 255 },
@@ -76,3 +78,37 @@ const float fcu_qstrip_v[8][2] = {
 const float fcu_poly_v[6][2] = {
     { 16, 2 }, { 29, 9 }, { 28, 24 }, { 16, 30 }, { 4, 23 }, { 3, 8 },
 };
+
+void fcu_tex_level_image(GLenum target, int level, int w, int h)
+{
+    static const unsigned char pal[8][2][4] = {
+        { { 255, 0, 0, 255 }, { 128, 0, 40, 200 } },
+        { { 0, 255, 0, 230 }, { 0, 110, 60, 150 } },
+        { { 0, 0, 255, 210 }, { 60, 40, 140, 100 } },
+        { { 255, 255, 0, 190 }, { 120, 120, 20, 60 } },
+        { { 0, 255, 255, 170 }, { 30, 100, 100, 30 } },
+        { { 255, 0, 255, 150 }, { 90, 20, 90, 10 } },
+        { { 255, 255, 255, 130 }, { 70, 70, 70, 0 } },
+        { { 255, 128, 0, 110 }, { 10, 10, 10, 255 } },
+    };
+    static unsigned char buf[256 * 256 * 4];
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            memcpy(&buf[4 * (y * w + x)], pal[level & 7][(x ^ y) & 1], 4);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (target == GL_TEXTURE_1D)
+        glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, w, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
+    else
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, buf);
+}
+
+void fcu_tex_level_chain(GLenum target, int w, int h)
+{
+    for (int l = 0;; l++) {
+        fcu_tex_level_image(target, l, w, h);
+        if (w == 1 && (h == 1 || target == GL_TEXTURE_1D))
+            break;
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+    }
+}
