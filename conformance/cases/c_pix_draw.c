@@ -701,7 +701,7 @@ static void drawpixels_zs_types(fc_h *h)
     glClearStencil(0);
     fcu_clear(0, 0, 0, 1, 0.5);
     glClear(GL_STENCIL_BUFFER_BIT);
-    static GLubyte raw[4 * 10 * 8];
+    static GLubyte raw[4 * 16 * 8];   /* the largest image: 16x8 GL_UNSIGNED_INT */
     for (int i = 0; i < (int)sizeof raw; i++)
         raw[i] = (GLubyte)(i * 89 + 11);
     static GLhalf half[10 * 8];
@@ -763,9 +763,11 @@ static void drawpixels_depth_stencil(fc_h *h)
     glClearStencil(0);
     fcu_clear(0, 0, 0, 1, 1.0);
     glClear(GL_STENCIL_BUFFER_BIT);
-    static GLuint zs[12 * 10];
-    static GLfloat zf[2 * 12 * 10];
-    for (int i = 0; i < 12 * 10; i++) {
+    /* one element more than an image: the second pair of draws starts
+     * one pixel in */
+    static GLuint zs[12 * 10 + 1];
+    static GLfloat zf[2 * (12 * 10 + 1)];
+    for (int i = 0; i < 12 * 10 + 1; i++) {
         zs[i] = ((GLuint)(i * 139810u) << 8) | (GLuint)(i % 7);
         GLuint st = (GLuint)(i % 5 + 8);
         zf[2 * i] = (float)i / 130.0f - 0.05f;
