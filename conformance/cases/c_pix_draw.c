@@ -763,11 +763,10 @@ static void drawpixels_depth_stencil(fc_h *h)
     glClearStencil(0);
     fcu_clear(0, 0, 0, 1, 1.0);
     glClear(GL_STENCIL_BUFFER_BIT);
-    /* one element more than an image: the second pair of draws starts
-     * one pixel in */
-    static GLuint zs[12 * 10 + 1];
-    static GLfloat zf[2 * (12 * 10 + 1)];
-    for (int i = 0; i < 12 * 10 + 1; i++) {
+    /* room past one image: later draws start up to two pixels in */
+    static GLuint zs[12 * 10 + 2];
+    static GLfloat zf[2 * (12 * 10 + 2)];
+    for (int i = 0; i < 12 * 10 + 2; i++) {
         zs[i] = ((GLuint)(i * 139810u) << 8) | (GLuint)(i % 7);
         GLuint st = (GLuint)(i % 5 + 8);
         zf[2 * i] = (float)i / 130.0f - 0.05f;
