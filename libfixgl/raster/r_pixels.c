@@ -248,7 +248,6 @@ static int nearest(float s, int size)
    return (int)f;
 }
 
-
 /* The fixed-function fragment program for a fragment of the quad.  The
  * user's units read either the quad's own coordinate (pix->tex_quad:
  * glBitmap's gl_TexCoord[0] is the bitmap coordinate, interpolated with
