@@ -14,6 +14,36 @@ extern "C" {
 #define FIXGL_VERSION_MINOR 1
 #define FIXGL_VERSION_PATCH 0
 
+/* ---- GL_WIN_phong_shading ------------------------------------------------
+ * glShadeModel(GL_PHONG_WIN) lights every fragment with the GL lighting
+ * equation, from the perspective-correctly interpolated eye-space normal
+ * (renormalised) and eye position.  Values are Microsoft's (glext.h).
+ * The exact equations: include/fixgl/shading.md. */
+#ifndef GL_WIN_phong_shading
+#define GL_WIN_phong_shading 1
+#define GL_PHONG_WIN                 0x80EA
+#define GL_PHONG_HINT_WIN            0x80EB
+#endif
+
+/* ---- GL_FIXGL_cook_torrance ----------------------------------------------
+ * A per-face reflectance model for the ordinary GL lights:
+ *   glMateriali(face, GL_REFLECTANCE_MODEL_FIXGL, GL_COOK_TORRANCE_FIXGL)
+ *   glMaterialf(face, GL_ROUGHNESS_FIXGL, r)        r  in [0,1], default 0.5
+ *   glMaterialf(face, GL_METALNESS_FIXGL, m)        m  in [0,1], default 0
+ *   glMaterialf(face, GL_DIELECTRIC_F0_FIXGL, f0)   f0 in [0,1], default 0.04
+ * GGX distribution, Schlick's Fresnel, Smith-Schlick-GGX geometry; per
+ * vertex under GL_SMOOTH / GL_FLAT, per fragment under GL_PHONG_WIN.
+ * The exact equations: include/fixgl/shading.md. */
+#ifndef GL_FIXGL_cook_torrance
+#define GL_FIXGL_cook_torrance 1
+#define GL_REFLECTANCE_MODEL_FIXGL   0x6F00
+#define GL_BLINN_PHONG_FIXGL         0x6F01
+#define GL_COOK_TORRANCE_FIXGL       0x6F02
+#define GL_ROUGHNESS_FIXGL           0x6F03
+#define GL_METALNESS_FIXGL           0x6F04
+#define GL_DIELECTRIC_F0_FIXGL       0x6F05
+#endif
+
 /* The library's version as "major.minor.patch". */
 const char *fixglGetVersion(void);
 
