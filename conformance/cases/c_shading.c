@@ -18,8 +18,8 @@
  * 1, dielectrics (f0 0.04, 0.5), coloured and half metals, grazing light
  * and silhouettes, a light on the surface, strong perspective, clipping at
  * the near plane, big triangles with a highlight inside one triangle,
- * points and lines, display lists, vertex arrays, GL_NORMALIZE and
- * GL_RESCALE_NORMAL, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
+ * points and lines, polygon modes, display lists, vertex arrays,
+ * GL_NORMALIZE and GL_RESCALE_NORMAL, a clipped height field, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
  * and GL_PHONG_WIN without lighting. */
 #include "lt_util.h"
 #include "fcr_shading.h"
@@ -616,6 +616,25 @@ static void phong_unlit(fc_h *h)
     sh_end();
 }
 
+/* Polygon modes: the sphere's front faces as lines, its back faces (seen
+ * through the gaps, two-sided) as points. */
+static void phong_polygon_mode(fc_h *h)
+{
+    sh_scene(h);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    lt_mat(GL_BACK, GL_DIFFUSE, 0.3f, 0.8f, 0.5f, 1);
+    lt_lamp(GL_LIGHT0, k_dim, k_warm, k_white, 1, 1, 2, 0);
+    sh_begin(h, SH_PHONG, &sh_blinn, &sh_blinn);
+    glPolygonMode(GL_FRONT, GL_LINE);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glTranslatef(0, 0, -4);
+    glRotatef(20, 1, 0, 0);
+    sh_sphere(1.3f, 12, 8, 0);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    fc_capture(h);
+    sh_end();
+}
+
 /* ---- Cook-Torrance ------------------------------------------------------ */
 
 /* A sphere per fragment with a point light and a local viewer: the lobe
@@ -850,6 +869,28 @@ static void ct_perspective(fc_h *h)
     sh_end();
 }
 
+/* A height field larger than the viewport (clipped at its edges), two
+ * lights, a rough metal, per fragment then per vertex. */
+static void ct_wave_clipped(fc_h *h)
+{
+    struct fcr_face f = sh_ct(0.4f, 0.9f, 0.04f);
+    sh_scene(h);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    lt_mat(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.56f, 0.57f, 0.58f, 1);
+    lt_lamp(GL_LIGHT0, k_dim, k_white, k_white, 1, 1, -2, 1);
+    lt_lamp(GL_LIGHT1, k_black, k_cool, k_cool, -1, 0.5f, 1, 0);
+    for (int pass = 0; pass < 2; pass++) {
+        sh_begin(h, pass ? SH_SMOOTH : SH_PHONG, &f, &f);
+        glLoadIdentity();
+        glTranslatef(0, 0, -3.5f);
+        glRotatef(-35, 1, 0, 0);
+        lt_wave(-3, -3, 3, 3, 14, 0.25f, 2.2f);
+        fc_capture(h);
+        sh_end();
+        lt_clear();
+    }
+}
+
 #define SH_CASE(name, w, h, frames, tags, fn) \
     { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference " tags, fn, 0, 0, 1 }
 
@@ -877,6 +918,7 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/phong_dlist", 64, 48, 1, "phong cook-torrance", phong_dlist),
     SH_CASE("shading/phong_varray", 48, 48, 1, "phong", phong_varray),
     SH_CASE("shading/phong_unlit", 32, 32, 1, "phong", phong_unlit),
+    SH_CASE("shading/phong_polygon_mode", 64, 64, 1, "phong", phong_polygon_mode),
     SH_CASE("shading/ct_rough_0", 64, 64, 1, "phong cook-torrance", ct_rough_0),
     SH_CASE("shading/ct_rough_005", 64, 64, 1, "phong cook-torrance", ct_rough_005),
     SH_CASE("shading/ct_rough_025", 64, 64, 1, "phong cook-torrance", ct_rough_025),
@@ -897,5 +939,6 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/ct_flat", 64, 64, 1, "cook-torrance", ct_flat),
     SH_CASE("shading/ct_smooth_rough_005", 64, 64, 1, "cook-torrance", ct_smooth_rough_005),
     SH_CASE("shading/ct_dlist_varray", 64, 64, 1, "cook-torrance", ct_dlist_varray),
+    SH_CASE("shading/ct_wave_clipped", 64, 48, 2, "phong cook-torrance", ct_wave_clipped),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
 };
