@@ -8,12 +8,16 @@
  *
  * Lighting is always evaluated in eye space, whatever the oracle's
  * fixed-function vertex program would choose (_NeedEyeCoords): the normal
- * goes through the modelview's inverse (transposed: row r of the inverse
- * dotted with the normal, t_light.c's DP3 order), then GL_NORMALIZE
- * (times 1/sqrt(|n.n|)) or GL_RESCALE_NORMAL (times the eye-space normal
- * scale, Mesa's _ModelViewInvScaleEyespace [S: main/light.c:
- * update_modelview_scale], which is GLSL's gl_NormalScale); the eye
- * position is the modelview's column MUL/MAD chain (get_eye_position).
+ * goes through the modelview's inverse transposed (GLSL's gl_NormalMatrix *
+ * gl_Normal: the columns of the inverse transposed times x, y, z, summed
+ * in that order), then GL_NORMALIZE (shading.md's normalize) or
+ * GL_RESCALE_NORMAL (times the eye-space normal scale, Mesa's
+ * _ModelViewInvScaleEyespace [S: main/light.c:update_modelview_scale],
+ * which is GLSL's gl_NormalScale); the eye position is the modelview's
+ * column MUL/MAD chain (gl_ModelViewMatrix * gl_Vertex, get_eye_position).
+ * These are not the oracle's fixed-function arithmetic (t_light.c) but
+ * shading.md's, whose dot(a, b) sums x, y, z in that order; llvmpipe
+ * lowers ffma, so each product and sum is rounded on its own.
  */
 #include "tnl/t_pipeline.h"
 
@@ -23,8 +27,19 @@
 
 #include "context.h"
 
-/* DP3 = (z*z' + y*y') + x*x' (t_light.c's order) */
-static inline float dp3(const float *a, const float *b)
+/* GLSL's mat3 * vec3 on llvmpipe: column 0 times x, plus column 1 times
+ * y, plus column 2 times z (glsl_to_nir's fmul/ffma chain, ffma lowered):
+ * row r of the product is (m0*x + m1*y) + m2*z */
+static inline float mat_row3(const float *m, const float *v)
+{
+   return (m[0] * v[0] + m[1] * v[1]) + m[2] * v[2];
+}
+
+/* dot(a, b) on llvmpipe: fdot3 scalarised from the last component,
+ * (z*z' + y*y') + x*x' (nir_lower_alu_to_scalar's reduction; the
+ * ORACLE-NOTES.md finding for the fixed-function DP3, and what the GLSL
+ * reference computes) */
+static inline float dot3(const float *a, const float *b)
 {
    return (a[2] * b[2] + a[1] * b[1]) + a[0] * b[0];
 }
@@ -66,10 +81,12 @@ void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
 
       const float *nin = normal + (size_t)i * nstride;
       float *nrm = attr[R_ATTR_NORMAL];
+      /* row r of the transposed inverse is column r of the inverse */
       for (int r = 0; r < 3; r++)
-         nrm[r] = dp3(nin, mv->inv + 4 * r);
+         nrm[r] = mat_row3(mv->inv + 4 * r, nin);
       if (normalize) {
-         const float k = 1.0f / sqrtf(fabsf(dp3(nrm, nrm)));
+         /* normalize(v) = v * (1/sqrt(dot(v, v))) */
+         const float k = 1.0f / sqrtf(dot3(nrm, nrm));
          for (int r = 0; r < 3; r++)
             nrm[r] *= k;
       } else if (rescale) {

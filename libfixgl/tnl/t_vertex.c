@@ -110,9 +110,11 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    else if (lit)
       eye_position = t_light(ctx, in, n, out);
 
-   /* draw_llvm.c do_clamp_vertex_color: every colour output */
+   /* draw_llvm.c do_clamp_vertex_color: every colour output; under
+    * GL_PHONG_WIN the vertex colour is a material input of the lighting
+    * per fragment, unclamped (as a generic varying of the reference) */
    const int nattr = ctx->_Raster.num_attribs;
-   const int ncolor = nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
+   const int ncolor = phong ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
    for (unsigned i = 0; i < n; i++)
       for (int a = 0; a < ncolor; a++)
          for (int k = 0; k < 4; k++)
