@@ -332,9 +332,7 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
        * xyz (its w is ignored, as GL's lighting ignores it). */
       const float *nin = normal + (size_t)i * nstride;
       float nrm[3], P[4];
-      for (int r = 0; r < 3; r++)
-         nrm[r] = mv->inv[4 * r] * nin[0] + mv->inv[4 * r + 1] * nin[1] +
-                  mv->inv[4 * r + 2] * nin[2];
+      fgl_transform_normal(nrm, nin, mv->inv);
       t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
 
       for (int s = 0; s < sides; s++) {

@@ -20,7 +20,8 @@
  *                unchanged after a Cook-Torrance draw; a Blinn-Phong front
  *                face drawn with a Cook-Torrance back face (m_shade_point)
  *                stays within 1 LSB of the oracle-exact path; unlit
- *                GL_PHONG_WIN draws as GL_SMOOTH
+ *                GL_PHONG_WIN draws as GL_SMOOTH; glRasterPos's colours
+ *                under Cook-Torrance
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -592,6 +593,36 @@ static void test_render_cook_torrance(void)
   base_scene(&s);
   s.mat[0].cook_torrance = false;
   flat_triangle("Blinn-Phong face in a CT draw", &s, tilted, pv, white, false);
+
+  /* glRasterPos lights the raster position like a vertex (front face) */
+  base_scene(&s);
+  s.env.local_viewer = true;
+  s.env.separate_specular = true;
+  s.env.light[0].position[3] = 1.0;
+  s.env.light[0].kl = 0.25;
+  s.mat[0].roughness = 0.3;
+  s.mat[0].metalness = 0.5;
+  setup_view();
+  apply_scene(&s);
+  glNormal3fv(tilted);
+  glRasterPos3f(0.25f, -0.5f, -1.5f);
+  float rc[4], rs[4];
+  glGetFloatv(GL_CURRENT_RASTER_COLOR, rc);
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, rs);
+  {
+    const double n3[3] = { tilted[0], tilted[1], tilted[2] }, P[3] = { 0.25, -0.5, -1.5 };
+    double prim[4], sec[3], un[6];
+    shade_ref_point(&s.env, &s.mat[0], n3, P, prim, sec, un);
+    double worst = 0.0;
+    for (int k = 0; k < 4; k++)
+      worst = fmax(worst, fabs(rc[k] - prim[k]));
+    for (int k = 0; k < 3; k++)
+      worst = fmax(worst, fabs(rs[k] - sec[k]));
+    CHECK(worst < 1e-5, "raster colour %g %g %g %g + %g %g %g vs %g %g %g %g + %g %g %g", rc[0],
+          rc[1], rc[2], rc[3], rs[0], rs[1], rs[2], prim[0], prim[1], prim[2], prim[3], sec[0],
+          sec[1], sec[2]);
+    CHECK(sec[0] > 0.0 && prim[0] > sec[0], "a lit raster position");
+  }
 
   glDisable(GL_LIGHTING);
   glDisable(GL_COLOR_MATERIAL);
