@@ -16,7 +16,9 @@
  * fixgl's shading extensions (include/fixgl/shading.md) leave that path
  * untouched: when either face's reflectance model is Cook-Torrance, every
  * vertex is lit by m_shade_point (math/m_shade.c) instead, and under
- * GL_PHONG_WIN the lighting moves to the fragments.
+ * GL_PHONG_WIN the lighting moves to the fragments (t_vertex.c calls
+ * t_phong.c instead of t_light; in GL_SELECT / GL_FEEDBACK the vertices
+ * are lit here, as under GL_SMOOTH).
  */
 #include "tnl/t_pipeline.h"
 
@@ -350,37 +352,9 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
    }
 }
 
-/* GL_WIN_phong_shading's vertex stage: no lighting here.  The colour slots
- * carry the unlit vertex colour (the property GL_COLOR_MATERIAL tracks per
- * fragment), the secondary colours (0, 0, 0, 1).
- * HOOK (frag branch): the per-fragment path adds the eye-space normal and
- * position varyings and lights each fragment with m_shade_point. */
-static void light_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
-                        unsigned n, struct t_vertex *out)
-{
-   unsigned cstride;
-   const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
-   const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
-   for (unsigned i = 0; i < n; i++) {
-      const float *c = color + (size_t)i * cstride;
-      for (int s = 0; s < sides; s++) {
-         float *c0 = out[i].r.attr[2 * s], *c1 = out[i].r.attr[2 * s + 1];
-         for (int k = 0; k < 4; k++)
-            c0[k] = c[k];
-         c1[0] = c1[1] = c1[2] = 0.0f;
-         c1[3] = 1.0f;
-      }
-   }
-}
-
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out)
 {
-   if (ctx->Light.ShadeModel == GL_PHONG_WIN) {
-      light_phong(ctx, in, n, out);
-      return false;
-   }
-
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
    const struct fgl_vbo *vbo = &ctx->Vbo;
    struct light_key key = {
