@@ -3,8 +3,10 @@
  * equations" line by line, in the document's operation order; every
  * intermediate is `precise` so that Mesa's NIR neither reassociates nor
  * fuses it (llvmpipe lowers ffma anyway), which keeps the program as close
- * to the document's float arithmetic as GLSL allows.  What remains
- * different from a C float evaluation is llvmpipe's own arithmetic: pow()
+ * to the document's float arithmetic as GLSL allows; dot() is written out
+ * (fcr_dot) because llvmpipe sums GLSL's dot() from the last component,
+ * where shading.md sums x, y, z in that order.  What remains of llvmpipe's
+ * own arithmetic: pow()
  * is gallivm's exp2(log2(x) * y) approximation (the one fixgl's
  * m_gallivm_pow replicates), normalize() is v * (1 / sqrt(dot(v, v))) with
  * a true division and square root, as the document writes it.
@@ -115,10 +117,21 @@ static const char shade_glsl[] =
     "   return e == 0.0 ? 1.0 : (x <= 0.0 ? 0.0 : pow(x, e));\n"
     "}\n"
     "\n"
+    "/* dot(a,b) = a.x*b.x + a.y*b.y + a.z*b.z, summed in that order (GLSL's\n"
+    " * dot() sums from the last component on llvmpipe) */\n"
+    "float fcr_dot(vec3 a, vec3 b)\n"
+    "{\n"
+    "   precise float x = a.x * b.x;\n"
+    "   precise float y = a.y * b.y;\n"
+    "   precise float z = a.z * b.z;\n"
+    "   precise float d = (x + y) + z;\n"
+    "   return d;\n"
+    "}\n"
+    "\n"
     "/* normalize(v) = v * (1/sqrt(dot(v,v))) */\n"
     "vec3 fcr_normalize(vec3 v)\n"
     "{\n"
-    "   precise float d = dot(v, v);\n"
+    "   precise float d = fcr_dot(v, v);\n"
     "   precise float s = 1.0 / sqrt(d);\n"
     "   precise vec3 r = v * s;\n"
     "   return r;\n"
@@ -171,7 +184,7 @@ static const char shade_lights_glsl[] =
     "      precise float att;\n"
     "      if (p.w != 0.0) {\n"
     "         L = p.xyz / p.w - P;\n"
-    "         precise float d = sqrt(dot(L, L));\n"
+    "         precise float d = sqrt(fcr_dot(L, L));\n"
     "         L = L / d;\n"
     "         att = 1.0 / (gl_LightSource[i].constantAttenuation + gl_LightSource[i].linearAttenuation * d\n"
     "                      + gl_LightSource[i].quadraticAttenuation * d * d);\n"
@@ -181,23 +194,23 @@ static const char shade_lights_glsl[] =
     "      }\n"
     "      precise float spot;\n"
     "      if (gl_LightSource[i].spotCutoff != 180.0) {\n"
-    "         precise float cs = dot(-L, fcr_normalize(gl_LightSource[i].spotDirection));\n"
+    "         precise float cs = fcr_dot(-L, fcr_normalize(gl_LightSource[i].spotDirection));\n"
     "         spot = cs >= gl_LightSource[i].spotCosCutoff ? spow(cs, gl_LightSource[i].spotExponent) : 0.0;\n"
     "      } else {\n"
     "         spot = 1.0;\n"
     "      }\n"
-    "      precise float ndl = dot(N, L);\n"
+    "      precise float ndl = fcr_dot(N, L);\n"
     "      precise vec3 H = fcr_normalize(L + V);\n"
     "      precise vec3 ambient = gl_LightSource[i].ambient.rgb * a_m.rgb;\n"
     "      precise vec3 diffuse, specular;\n"
     "      if (!ct) {\n"
     "         diffuse = max(ndl, 0.0) * (gl_LightSource[i].diffuse.rgb * d_m.rgb);\n"
-    "         specular = ndl > 0.0 ? spow(max(dot(N, H), 0.0), shin) * (gl_LightSource[i].specular.rgb * s_m.rgb)\n"
+    "         specular = ndl > 0.0 ? spow(max(fcr_dot(N, H), 0.0), shin) * (gl_LightSource[i].specular.rgb * s_m.rgb)\n"
     "                              : vec3(0.0);\n"
     "      } else {\n"
-    "         precise float ndv = dot(N, V);\n"
-    "         precise float ndh = max(dot(N, H), 0.0);\n"
-    "         precise float vdh = max(dot(V, H), 0.0);\n"
+    "         precise float ndv = fcr_dot(N, V);\n"
+    "         precise float ndh = max(fcr_dot(N, H), 0.0);\n"
+    "         precise float vdh = max(fcr_dot(V, H), 0.0);\n"
     "         diffuse = ndl > 0.0 ? (1.0 - m) * ndl * (gl_LightSource[i].diffuse.rgb * c) : vec3(0.0);\n"
     "         if (ndl > 0.0 && ndv > 0.0) {\n"
     "            precise float t = ndh * ndh * (a2 - 1.0) + 1.0;\n"
@@ -224,13 +237,18 @@ static const char shade_lights_glsl[] =
     "}\n";
 
 /* The eye-space normal as GL's lighting transforms it: the
- * inverse-transpose modelview, then GL_NORMALIZE or GL_RESCALE_NORMAL. */
+ * inverse-transpose modelview, then GL_NORMALIZE or GL_RESCALE_NORMAL.
+ * GLSL's own arithmetic: gl_NormalMatrix * gl_Normal is the column chain
+ * (c0*x + c1*y) + c2*z, normalize() is v * (1/sqrt(dot(v,v))) with the
+ * dot summed from the last component (nir_lower_alu_width.c
+ * lower_reduction), as GL's fixed-function GL_NORMALIZE does on llvmpipe;
+ * the eye position is the modelview's column chain. */
 static const char normal_glsl[] =
     "vec3 fcr_eye_normal()\n"
     "{\n"
     "   precise vec3 n = gl_NormalMatrix * gl_Normal;\n"
     "#if NORMALIZE\n"
-    "   n = fcr_normalize(n);\n"
+    "   n = normalize(n);\n"
     "#elif RESCALE\n"
     "   n = n * gl_NormalScale;\n"
     "#endif\n"
