@@ -3,9 +3,7 @@
  * equations", transcribed operation by operation.  Every binary operation
  * is one rounded float operation (-ffp-contract=off, no fmaf), in the
  * order shading.md writes it (left to right where it writes a chain):
- *   dot(a, b)       = (a.z*b.z + a.y*b.y) + a.x*b.x   (from the last
- *                     component, as llvmpipe reduces GLSL's dot(): fdot3
- *                     scalarised by nir_lower_alu_to_scalar)
+ *   dot(a, b)       = (a.x*b.x + a.y*b.y) + a.z*b.z
  *   normalize(v)    = v * (1/sqrt(dot(v, v)))
  *   kc + kl*d + kq*d*d = (kc + kl*d) + (kq*d)*d
  * and pow is gallivm's approximation (m_gallivm_pow), the one llvmpipe
@@ -25,7 +23,7 @@
 
 static inline float dot3(const float *a, const float *b)
 {
-   return (a[2] * b[2] + a[1] * b[1]) + a[0] * b[0];
+   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 static inline void normalize3(float *v)
