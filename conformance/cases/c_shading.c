@@ -19,7 +19,9 @@
  * and silhouettes, a light on the surface, strong perspective, clipping at
  * the near plane, big triangles with a highlight inside one triangle,
  * points and lines, polygon modes, display lists, vertex arrays,
- * GL_NORMALIZE and GL_RESCALE_NORMAL, a clipped height field, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
+ * GL_NORMALIZE and GL_RESCALE_NORMAL, a clipped height field, texturing,
+ * the colour sum and the three fog modes after the lit colour, random
+ * scenes of all of it, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
  * and GL_PHONG_WIN without lighting. */
 #include "lt_util.h"
 #include "fcr_shading.h"
@@ -103,6 +105,9 @@ static const float k_warm[3] = { 0.85f, 0.75f, 0.6f };
 static const float k_cool[3] = { 0.4f, 0.6f, 1.0f };
 static const float k_black[3] = { 0, 0, 0 };
 
+/* Texture coordinates on sh_sphere's vertices (longitude, latitude). */
+static int sh_texcoords;
+
 /* Sphere with unit normals and, when colored, a hue per vertex (colour
  * material), one triangle strip per stack. */
 static void sh_sphere(float r, int slices, int stacks, int colored)
@@ -117,6 +122,8 @@ static void sh_sphere(float r, int slices, int stacks, int colored)
                       z = (float)(cos(lat[k]) * cos(lon));
                 if (colored)
                     lt_hue((float)j / (float)slices + 0.3f * y, 1.0f - 0.4f * (y > 0 ? y : -y));
+                if (sh_texcoords)
+                    glTexCoord2f(2.0f * (float)j / (float)slices, (float)((lat[k] + LT_PI / 2) / LT_PI));
                 glNormal3f(x, y, z);
                 glVertex3f(x * r, y * r, z * r);
             }
@@ -636,6 +643,74 @@ static void phong_polygon_mode(fc_h *h)
     sh_end();
 }
 
+/* A smooth 8x8 RGBA texture (GL_LINEAR, GL_REPEAT, GL_MODULATE). */
+static void sh_texture(void)
+{
+    static unsigned char img[8 * 8 * 4];
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 8; x++) {
+            unsigned char *t = &img[4 * (y * 8 + x)];
+            t[0] = (unsigned char)(255 - 20 * x);
+            t[1] = (unsigned char)(120 + 15 * y);
+            t[2] = (unsigned char)(60 + 12 * ((x + y) & 7) * 2);
+            t[3] = (unsigned char)(255 - 8 * x);
+        }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_TEXTURE_2D);
+}
+
+/* The lit colour goes on through the fragment pipeline: a GL_MODULATE
+ * texture, the separate specular colour sum, then linear fog (frame 1);
+ * EXP fog without texture, single colour (frame 2); EXP2 fog with the
+ * texture and blending (frame 3). */
+static void phong_texture_fog(fc_h *h)
+{
+    static const float fog_color[4] = { 0.3f, 0.35f, 0.5f, 1 };
+    sh_scene(h);
+    sh_texture();
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    lt_lamp(GL_LIGHT0, k_dim, k_white, k_white, 1, 1, 2, 0);
+    glFogfv(GL_FOG_COLOR, fog_color);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 2.5f);
+    glFogf(GL_FOG_END, 6);
+    glEnable(GL_FOG);
+    sh_texcoords = 1;
+    sh_begin(h, SH_PHONG, &sh_blinn, &sh_blinn);
+    glTranslatef(0, 0, -4);
+    glRotatef(-40, 1, 0, 0);
+    sh_sphere(1.3f, 20, 12, 0);
+    fc_capture(h);
+    sh_end();
+    lt_clear();
+    glDisable(GL_TEXTURE_2D);
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+    glFogi(GL_FOG_MODE, GL_EXP);
+    glFogf(GL_FOG_DENSITY, 0.2f);
+    sh_begin(h, SH_PHONG, &sh_blinn, &sh_blinn);
+    sh_sphere(1.3f, 20, 12, 0);
+    fc_capture(h);
+    sh_end();
+    lt_clear();
+    glEnable(GL_TEXTURE_2D);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glFogi(GL_FOG_MODE, GL_EXP2);
+    glFogf(GL_FOG_DENSITY, 0.25f);
+    sh_begin(h, SH_PHONG, &sh_blinn, &sh_blinn);
+    sh_sphere(1.3f, 20, 12, 0);
+    fc_capture(h);
+    sh_end();
+    sh_texcoords = 0;
+    glDisable(GL_BLEND);
+    glDisable(GL_FOG);
+    glDisable(GL_TEXTURE_2D);
+}
+
 /* ---- Cook-Torrance ------------------------------------------------------ */
 
 /* A sphere per fragment with a point light and a local viewer: the lobe
@@ -854,6 +929,38 @@ static void ct_dlist_varray(fc_h *h)
     glDeleteLists(1, 1);
 }
 
+/* Cook-Torrance through the fragment pipeline: textured, separate
+ * specular and linear fog, per fragment then per vertex. */
+static void ct_texture_fog(fc_h *h)
+{
+    static const float fog_color[4] = { 0.5f, 0.45f, 0.4f, 1 };
+    struct fcr_face f = sh_ct(0.3f, 0.4f, 0.04f);
+    sh_scene(h);
+    sh_texture();
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    lt_lamp(GL_LIGHT0, k_dim, k_white, k_white, 2, 2, 0, 1);
+    glFogfv(GL_FOG_COLOR, fog_color);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 3);
+    glFogf(GL_FOG_END, 5.5f);
+    glEnable(GL_FOG);
+    sh_texcoords = 1;
+    for (int pass = 0; pass < 2; pass++) {
+        sh_begin(h, pass ? SH_SMOOTH : SH_PHONG, &f, &f);
+        glLoadIdentity();
+        glTranslatef(0, 0, -4);
+        glRotatef(30, 0, 1, 0);
+        sh_sphere(1.3f, 20, 12, 0);
+        fc_capture(h);
+        sh_end();
+        lt_clear();
+    }
+    sh_texcoords = 0;
+    glDisable(GL_FOG);
+    glDisable(GL_TEXTURE_2D);
+}
+
 /* Perspective and a local viewer on a receding plane, rough metal. */
 static void ct_perspective(fc_h *h)
 {
@@ -1067,6 +1174,7 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/phong_varray", 48, 48, 1, "phong", phong_varray),
     SH_CASE("shading/phong_unlit", 32, 32, 1, "phong", phong_unlit),
     SH_CASE("shading/phong_polygon_mode", 64, 64, 1, "phong", phong_polygon_mode),
+    SH_CASE("shading/phong_texture_fog", 64, 64, 3, "phong", phong_texture_fog),
     SH_CASE("shading/ct_rough_0", 64, 64, 1, "phong cook-torrance", ct_rough_0),
     SH_CASE("shading/ct_rough_005", 64, 64, 1, "phong cook-torrance", ct_rough_005),
     SH_CASE("shading/ct_rough_025", 64, 64, 1, "phong cook-torrance", ct_rough_025),
@@ -1083,6 +1191,7 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/ct_big_triangles", 64, 64, 1, "phong cook-torrance", ct_big_triangles),
     SH_CASE("shading/ct_points_lines", 64, 64, 2, "phong cook-torrance", ct_points_lines),
     SH_CASE("shading/ct_perspective", 64, 64, 1, "phong cook-torrance", ct_perspective),
+    SH_CASE("shading/ct_texture_fog", 64, 64, 2, "phong cook-torrance", ct_texture_fog),
     SH_CASE("shading/ct_smooth", 64, 64, 1, "cook-torrance", ct_smooth),
     SH_CASE("shading/ct_flat", 64, 64, 1, "cook-torrance", ct_flat),
     SH_CASE("shading/ct_smooth_rough_005", 64, 64, 1, "cook-torrance", ct_smooth_rough_005),
