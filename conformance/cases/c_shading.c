@@ -1205,7 +1205,12 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/random_5", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
     SH_CASE("shading/random_6", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
     /* of seeds 1-60 (480 scenes, 1.1M pixels), the only one that is not
-     * bit-exact: one pixel 1 LSB off (frame 0, pixel (17,18), blue) */
+     * bit-exact: one pixel 1 LSB off (frame 0, pixel (17,18), blue), in a
+     * per-vertex Cook-Torrance scene under GL_RESCALE_NORMAL: branch
+     * shade's t_light.c light_shade leaves GL_RESCALE_NORMAL/GL_NORMALIZE
+     * out before m_shade_point's normalize (equal in real arithmetic, not
+     * in float); the reference applies it, as shading.md's n says
+     * (exact with the reference's rescale removed) */
     SH_CASE("shading/random_21", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
 };
