@@ -34,6 +34,7 @@
    X(void, FrontFace, (GLenum mode))                                                \
    X(void, DepthFunc, (GLenum func))                                                \
    X(void, DepthMask, (GLboolean flag))                                             \
+   X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a))         \
    X(void, BlendFunc, (GLenum sfactor, GLenum dfactor))                             \
    X(void, EnableClientState, (GLenum array))                                       \
    X(void, DisableClientState, (GLenum array))                                      \

@@ -148,7 +148,7 @@ int fv_model_load(struct fv_model *m, const char *path)
    }
    aiReleaseImport(sc);
    if (m->num_tris == 0) {
-      fprintf(stderr, "fixgl-view: the model %s has no triangles\n", path);
+      fprintf(stderr, "fixgl-view: cannot load the model %s: it has no triangles\n", path);
       fv_model_free(m);
       return -1;
    }

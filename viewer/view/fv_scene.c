@@ -277,12 +277,15 @@ void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int 
    gl->EnableClientState(GL_NORMAL_ARRAY);
 
    /* Opaque meshes first, then the translucent ones (MTL d < 1) blended
-    * over them without writing depth. */
+    * over them without writing depth, nor alpha: the frame stays opaque, as
+    * a window shows it (the X server's image of a window whose frame had
+    * alpha < 1 differed from its RGB by 1 LSB under Xvfb). */
    for (int pass = 0; pass < 2; pass++) {
       if (pass == 1) {
          gl->Enable(GL_BLEND);
          gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
          gl->DepthMask(GL_FALSE);
+         gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
       }
       for (int i = 0; i < s->model->num_meshes; i++) {
          const struct fv_mesh *me = &s->model->meshes[i];
@@ -298,6 +301,7 @@ void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int 
 #endif
    gl->Disable(GL_BLEND);
    gl->DepthMask(GL_TRUE);
+   gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
    gl->DisableClientState(GL_VERTEX_ARRAY);
    gl->DisableClientState(GL_NORMAL_ARRAY);
    gl->Finish();

@@ -547,6 +547,18 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
          A.model_path = a;
          continue;
       }
+      static const char *const with_value[] = {
+         "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw", "--pitch",
+         "--zoom", "--spin", "--light", "--renderer", "--out", "--osmesa-out", "--frames",
+         "--screenshot", "--screenshot-x11",
+      };
+      int known = 0;
+      for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+         known |= !strcmp(a, with_value[k]);
+      if (!known) {
+         fprintf(stderr, "fixgl-view: unknown option %s (see --help)\n", a);
+         exit(2);
+      }
       if (i + 1 >= argc) {
          fprintf(stderr, "fixgl-view: %s needs a value (see --help)\n", a);
          exit(2);
