@@ -57,6 +57,9 @@ static struct {
    float spin;
    int renderer_osmesa;
    const char *out, *osmesa_out, *screenshot, *screenshot_x11;
+   const char *key_list;
+   int script[256], num_script;   /* --keys: key table indices, one per frame */
+   int quit;
 
    struct fv_model model;
    struct fv_scene scene;
@@ -374,7 +377,12 @@ static void k_screenshot(void)
    write_png(path, &A.shown);
    printf("fixgl-view: wrote %s\n", path);
 }
-static void k_quit(void) { glfwSetWindowShouldClose(A.win, GLFW_TRUE); }
+static void k_quit(void)
+{
+   A.quit = 1;
+   if (A.win)
+      glfwSetWindowShouldClose(A.win, GLFW_TRUE);
+}
 static void k_help(void);
 
 struct key {
@@ -440,6 +448,30 @@ static void k_help(void)
    print_keys(stdout);
 }
 
+/* --keys: the names of the key table, comma-separated. */
+static void parse_keys(const char *list)
+{
+   char *copy = strdup(list), *save = NULL;
+   for (char *t = strtok_r(copy, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+      size_t i = 0;
+      while (i < sizeof keys / sizeof keys[0] && strcmp(keys[i].name, t))
+         i++;
+      if (i == sizeof keys / sizeof keys[0] || A.num_script == 256) {
+         fprintf(stderr, "fixgl-view: --keys: no key \"%s\" (the names --help lists)\n", t);
+         exit(2);
+      }
+      A.script[A.num_script++] = (int)i;
+   }
+   free(copy);
+}
+
+/* The scripted key of this frame, pressed before it is rendered. */
+static void scripted_key(int frame)
+{
+   if (frame < A.num_script)
+      keys[A.script[frame]].fn();
+}
+
 static void usage(FILE *f)
 {
    fprintf(f,
@@ -480,6 +512,8 @@ static void usage(FILE *f)
       "                        through the system GL\n"
       "  --screenshot-x11 FILE window: after --frames, the window as the X server\n"
       "                        shows it\n"
+      "  --keys LIST           press these keys (names as below, comma-separated),\n"
+      "                        one per frame from the first: a scripted session\n"
       "  --info                print the model, the renderers and their extensions\n"
       "  --help                this help\n"
       "\n"
@@ -550,7 +584,7 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
       static const char *const with_value[] = {
          "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw", "--pitch",
          "--zoom", "--spin", "--light", "--renderer", "--out", "--osmesa-out", "--frames",
-         "--screenshot", "--screenshot-x11",
+         "--screenshot", "--screenshot-x11", "--keys",
       };
       int known = 0;
       for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
@@ -622,6 +656,8 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
          A.screenshot = v;
       } else if (!strcmp(a, "--screenshot-x11")) {
          A.screenshot_x11 = v;
+      } else if (!strcmp(a, "--keys")) {
+         A.key_list = v;
       } else {
          fprintf(stderr, "fixgl-view: unknown option %s (see --help)\n", a);
          exit(2);
@@ -634,10 +670,13 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
 static int run_headless(void)
 {
    int frames = A.frames > 0 ? A.frames : 1;
+   if (frames < A.num_script)
+      frames = A.num_script;
    double total = 0.0;
-   for (int f = 0; f < frames; f++) {
+   for (int f = 0; f < frames && !A.quit; f++) {
       if (f > 0)
          A.scene.yaw += A.spin;
+      scripted_key(f);
       if (A.renderer_osmesa && !A.split) {
          frame_size(&A.shown, A.width, A.height);
          render_osmesa(A.width, A.height);
@@ -821,6 +860,12 @@ static int run_window(void)
          A.scene.yaw += A.spin;
          A.dirty = 1;
       }
+      if (frame < A.num_script) {
+         scripted_key(frame);
+         A.dirty = 1;
+      }
+      if (glfwWindowShouldClose(A.win))
+         break;
       if (!A.dirty && A.frames == 0)
          continue;
       A.dirty = 0;
@@ -829,7 +874,7 @@ static int run_window(void)
       status_line(title, sizeof title);
       glfwSetWindowTitle(A.win, title);
       frame++;
-      if (A.frames > 0 && frame >= A.frames) {
+      if (A.frames > 0 && frame >= A.frames && frame >= A.num_script) {
          if (A.screenshot || A.screenshot_x11)
             window_screenshots(fw, fh);
          else {
@@ -887,6 +932,8 @@ int main(int argc, char **argv)
    parse_options(argc, argv, &opts, lights, &num_lights);
    if (!A.model_path)
       A.model_path = FV_DEFAULT_MODEL;
+   if (A.key_list)
+      parse_keys(A.key_list);
    if (!A.width)
       A.width = A.headless ? 640 : 800, A.height = A.headless ? 480 : 600;
    if (A.headless && (A.screenshot || A.screenshot_x11)) {

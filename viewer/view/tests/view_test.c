@@ -25,6 +25,9 @@
  *       extension, the GLSL reference), saying which.
  *   view-test differ VIEW DIR MODEL ARGS_A -- ARGS_B
  *       two views that must differ (e.g. flat vs smooth)
+ *   view-test same VIEW DIR MODEL ARGS_A -- ARGS_B
+ *       two ways to the same view (e.g. scripted keys vs options): bit for
+ *       bit the same frame
  *   view-test frames VIEW DIR MODEL
  *       --frames 4 --spin 15 ends on the frame a single render at yaw
  *       30 + 45 gives, bit for bit
@@ -205,7 +208,8 @@ static int compare(const struct image *a, const struct image *b, int nc, const c
 static const char *const options[] = {
    "--headless", "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw",
    "--pitch", "--zoom", "--spin", "--light", "--wireframe", "--cull", "--split", "--renderer",
-   "--out", "--osmesa-out", "--frames", "--screenshot", "--screenshot-x11", "--info", "--help",
+   "--out", "--osmesa-out", "--frames", "--screenshot", "--screenshot-x11", "--keys", "--info",
+   "--help",
    "flat", "smooth", "phong", "cook-torrance", "blinn-phong", "directional", "point", "spot",
    "FIXGL_VIEW_OSMESA",
 };
@@ -474,7 +478,7 @@ static int cmd_render(const char *model, int argc, char **argv)
 
 /* ---- differ -------------------------------------------------------------------- */
 
-static int cmd_differ(const char *model, int argc, char **argv)
+static int cmd_differ(const char *model, int argc, char **argv, int same)
 {
    int sep = 0;
    while (sep < argc && strcmp(argv[sep], "--"))
@@ -500,6 +504,11 @@ static int cmd_differ(const char *model, int argc, char **argv)
    long n = counts[1] + counts[2];
    printf("the two views differ in %ld pixels (max %d)\n", n, max);
    free(ia.px), free(ib.px);
+   if (same) {
+      if (n)
+         fprintf(stderr, "view-test: the two views should be the same\n");
+      return n ? 1 : 0;
+   }
    if (n < (long)ia.w * ia.h / 100) {
       fprintf(stderr, "view-test: the views should differ in at least 1%% of the pixels\n");
       return 1;
@@ -665,7 +674,9 @@ int main(int argc, char **argv)
    if (!strcmp(cmd, "render"))
       return cmd_render(argv[4], argc - 5, argv + 5);
    if (!strcmp(cmd, "differ"))
-      return cmd_differ(argv[4], argc - 5, argv + 5);
+      return cmd_differ(argv[4], argc - 5, argv + 5, 0);
+   if (!strcmp(cmd, "same"))
+      return cmd_differ(argv[4], argc - 5, argv + 5, 1);
    if (!strcmp(cmd, "frames"))
       return cmd_frames(argv[4]);
    if (!strcmp(cmd, "window") && argc >= 6)
