@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Renders the README's screenshot of the viewer: the bundled teapot flat,
-# smooth (Gouraud) and Phong side by side, headless, assembled with
-# oiiotool.  `ninja -C build view-screenshot` runs it into
+# Renders the README's screenshot of the viewer: the bundled sphere (whose
+# 40 x 20 facets show what each mode makes of a highlight) flat, smooth
+# (Gouraud) and Phong side by side, headless, assembled with oiiotool.  `ninja -C build view-screenshot` runs it into
 # viewer/view/screenshot.png.
 #
 #   make_screenshot.sh FIXGL_VIEW MODEL OUT.png
@@ -13,8 +13,8 @@ if ! "$view" --info "$model" | grep -q "GL_WIN_phong_shading yes"; then
 fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-common=(--headless --size 400x320 --yaw 25 --pitch 25 --zoom 1.25
-        --light directional:-35:35 --light point:50:25:1.6)
+common=(--headless --size 400x320 --yaw 25 --pitch 30
+        --light directional:-30:30 --light point:25:30:2)
 labels=(flat Gouraud Phong)
 i=0
 for shade in flat smooth phong; do
