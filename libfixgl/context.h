@@ -174,6 +174,7 @@ struct fgl_fog_attrib {
 struct fgl_hint_attrib {
    GLenum PerspectiveCorrection, PointSmooth, LineSmooth, PolygonSmooth, Fog;
    GLenum TextureCompression, GenerateMipmap, FragmentShaderDerivative;
+   GLenum PhongWin;             /* GL_PHONG_HINT_WIN (include/fixgl/shading.md) */
 };
 
 #define FGL_MAX_LIGHTS 8
@@ -196,8 +197,17 @@ struct fgl_light_model {
    GLenum ColorControl;         /* GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR */
 };
 
+/* A face's reflectance model (GL_FIXGL_cook_torrance,
+ * include/fixgl/shading.md): lighting state set through glMaterial, not a
+ * vertex attribute. */
+struct fgl_reflectance {
+   GLenum Model;                /* GL_BLINN_PHONG_FIXGL or GL_COOK_TORRANCE_FIXGL */
+   float Roughness, Metalness, F0;
+};
+
 /* GL_LIGHTING_BIT.  The material values are vbo attributes and live in
- * ctx->Current.Attrib[FGL_ATTR_MAT_*], as Mesa's vbo keeps them current. */
+ * ctx->Current.Attrib[FGL_ATTR_MAT_*], as Mesa's vbo keeps them current;
+ * the reflectance models are state of the group (Reflectance). */
 struct fgl_light_attrib {
    GLenum ShadeModel;
    bool Enabled;                /* GL_LIGHTING */
@@ -206,6 +216,7 @@ struct fgl_light_attrib {
    bool ColorMaterialEnabled;
    GLenum ColorMaterialFace, ColorMaterialMode;
    unsigned _ColorMaterialBitmask;  /* FGL_MAT_BIT_* that track the colour */
+   struct fgl_reflectance Reflectance[2];   /* front, back */
 };
 
 /* Bits of the material attributes, in vbo attribute order (Mesa's
@@ -900,6 +911,12 @@ void fgl_flush_current(struct fgl_context *ctx);
 
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
+/* The shading environment of m_shade_point (math/m_shade.h) from the
+ * current lighting state (main/light.c): the enabled lights in eye space,
+ * the light model, both faces' current materials and reflectance models,
+ * and the colour material bits when GL_COLOR_MATERIAL is on. */
+struct m_shade_env;
+void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env);
 /* The fog uniforms of the fragment program (STATE_FOG_PARAMS_OPTIMIZED,
  * STATE_FOG_COLOR) from the current fog state into rs (state.c) */
 void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);

@@ -9,6 +9,8 @@
 #include <math.h>
 #include <string.h>
 
+#include <fixgl/fixgl.h>
+
 #include "context.h"
 #include "main/groups.h"
 
@@ -573,7 +575,20 @@ void fgl_update_state(struct fgl_context *ctx)
       /* colours: the lit front (and back, and secondary) colours, or the
        * vertex colour */
       const bool lit = ctx->Light.Enabled;
-      const bool twoside = lit && ctx->Light.Model.TwoSide;
+      /* GL_PHONG_WIN with lighting (include/fixgl/shading.md): the
+       * fragments are lit from the interpolated eye-space normal and eye
+       * position, two varyings after the texture coordinates (t_phong.c,
+       * r_fragment_phong).  Not in GL_SELECT / GL_FEEDBACK, whose vertices
+       * carry the per-vertex lit colours, as under GL_SMOOTH.  The
+       * environment is filled per batch (t_render.c).  The colour slots
+       * then hold the vertex colour for both faces, and the face is the
+       * fragment's (gl_FrontFacing's): no two-sided colours, neither
+       * llvmpipe's nor draw's, as for a shader on the oracle (the state
+       * tracker's light_twoside is GL_VERTEX_PROGRAM_TWO_SIDE's then
+       * [S: main/state.h:_mesa_vertex_program_two_side_enabled]) */
+      const bool phong = lit && ctx->Light.ShadeModel == GL_PHONG_WIN &&
+                         ctx->RenderMode == GL_RENDER;
+      const bool twoside = lit && ctx->Light.Model.TwoSide && !phong;
       rs->twoside = twoside;
       rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
       rs->num_attribs = twoside ? 4 : rs->color_sum ? 2 : 1;
@@ -590,6 +605,12 @@ void fgl_update_state(struct fgl_context *ctx)
          }
       }
       update_tex_units(ctx, rs);
+      rs->phong = phong;
+      rs->phong_vertex_face = false;
+      if (rs->phong) {
+         rs->fs_inputs |= 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
+         rs->num_attribs = R_ATTR_EYEPOS + 1;
+      }
       /* GL's counter-clockwise is a positive snapped area in the y-down
        * window buffer (the state tracker's front_ccw for OSMesa) */
       rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;

@@ -6,7 +6,7 @@
 
 /* Table entry with the default buffer row length. */
 #define FC_CASE(name, w, h, fmt, depth, stencil, frames, tags, fn) \
-    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0 }
+    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0, 0 }
 /* RGBA, depth 24, no stencil. */
 #define FC_CASE_RGBA(name, w, h, frames, tags, fn) \
     FC_CASE(name, w, h, OSMESA_RGBA, 24, 0, frames, tags, fn)
@@ -55,6 +55,7 @@ extern const fc_case fc_cases_tex_sample[];
 extern const fc_case fc_cases_tex_env[];
 extern const fc_case fc_cases_tex_wrap[];
 extern const fc_case fc_cases_pix_draw[];
+extern const fc_case fc_cases_shading[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

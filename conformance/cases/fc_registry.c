@@ -33,6 +33,7 @@ static const fc_case *const groups[] = {
     fc_cases_tex_env,
     fc_cases_tex_wrap,
     fc_cases_demo_tex,
+    fc_cases_shading,
 };
 
 size_t fc_case_count(void)

@@ -31,7 +31,23 @@ typedef struct fc_case {
     int row_length;         /* colour buffer row length in pixels; 0 = width */
     int raw_oracle_rgb;     /* OSMESA_RGB only: 1 = let the oracle render into
                              * its own OSMESA_RGB buffer (see below) */
+    int tolerance_lsb;      /* 0 = colours exact; N > 0: only for a case tagged
+                             * "reference" (see below) */
 } fc_case;
+
+/* Reference cases.  A case that exercises something the oracle does not
+ * have (fixgl's shading extensions) draws its reference differently: the
+ * source is compiled into both renderers, and under FC_ORACLE the case
+ * issues other calls (a GLSL program on OSMesa evaluating the same
+ * equations, conformance/reference/) where the fixgl side calls the
+ * extension.  Such a case carries the tag "reference" and declares in
+ * tolerance_lsb how far a colour channel may differ (the two sides round
+ * float arithmetic differently).  The runner measures per frame the
+ * largest channel difference and the pixels at 1 LSB and beyond; the case
+ * "agrees" when no channel differs by more than tolerance_lsb and depth,
+ * errors, queries, blobs and values are exact.  A tolerance on a case
+ * without the "reference" tag is a setup error of the runner, so nothing
+ * else can loosen. */
 
 /* The oracle's OSMESA_RGB colour buffers are corrupt: llvmpipe stores every
  * shaded fragment of a 3-byte-per-pixel render target with misplaced 4-byte

@@ -1,7 +1,8 @@
 /* render_main.c - a conformance renderer.  The same source builds
  * fixgl-render-osmesa (Mesa, FC_ORACLE defined) and fixgl-render-fixgl.
  *
- *   fixgl-render-X --list                       case names and tags
+ *   fixgl-render-X --list                       case names, tags and (reference
+ *                                               cases) the colour tolerance in LSB
  *   fixgl-render-X [--perturb] [--crash=NAME] --out FILE NAME...
  *
  * --out runs the named cases (fixed names, random/s<seed>-i<index> or
@@ -32,8 +33,13 @@ extern FILE *fc_trace_out;   /* fc_trace.c: random scene call trace */
 
 static int list_cases(void)
 {
-    for (size_t i = 0; i < fc_case_count(); i++)
-        printf("%s\t%s\n", fc_case_at(i)->name, fc_case_at(i)->tags);
+    for (size_t i = 0; i < fc_case_count(); i++) {
+        const fc_case *c = fc_case_at(i);
+        if (c->tolerance_lsb)
+            printf("%s\t%s\t%d\n", c->name, c->tags, c->tolerance_lsb);
+        else
+            printf("%s\t%s\n", c->name, c->tags);
+    }
     return 0;
 }
 

@@ -2,7 +2,8 @@
  * (Mesa OSMesa, llvmpipe) and on fixgl, compares every frame pixel by pixel
  * plus the recorded error/query/blob/value sequences, prints one line per
  * case and a per-tag summary, and writes the HTML/JSON report.
- * Exit status: 0 all exact, 1 some case differs or failed, 2 usage/setup. */
+ * Exit status: 0 all exact (reference cases: within their tolerance), 1 some
+ * case differs or failed, 2 usage/setup. */
 #include "fc_compare.h"
 #include "fc_report.h"
 #include "fc_run.h"
@@ -184,7 +185,7 @@ static char *dup_str(const char *s)
 }
 
 static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char *name,
-                     const char *tags, const char *replay)
+                     const char *tags, const char *replay, int tolerance)
 {
     if (*n == *cap) {
         *cap = *cap ? 2 * *cap : 256;
@@ -194,6 +195,7 @@ static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char 
     (*items)[*n].name = dup_str(name);
     (*items)[*n].tags = dup_str(tags);
     (*items)[*n].replay = replay ? dup_str(replay) : NULL;
+    (*items)[*n].tolerance = tolerance;
     ++*n;
 }
 
@@ -210,7 +212,7 @@ static void add_random(const struct options *o, struct fc_item **items, size_t *
         snprintf(replay, sizeof replay, "%s--seed %" PRIu64 " --index %" PRIu64, replay_prefix,
                  o->seed, index);
         if (selected(o, name, family))
-            add_item(items, n, cap, name, family, replay);
+            add_item(items, n, cap, name, family, replay, 0);
     }
 }
 
@@ -229,12 +231,25 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
             return 0;
         }
         for (char *line = strtok_r(list, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
-            char *tab = strchr(line, '\t');
+            char *tab = strchr(line, '\t'), *tol;
+            int tolerance = 0;
             if (!tab)
                 continue;
             *tab = 0;
+            /* a third field: the colour tolerance of a reference case */
+            if ((tol = strchr(tab + 1, '\t')) != NULL) {
+                *tol = 0;
+                tolerance = atoi(tol + 1);
+                if (tolerance < 0 || tolerance > 255 || !has_tag(tab + 1, "reference")) {
+                    fprintf(stderr, "fixgl-conform: case %s declares a colour tolerance of %s LSB "
+                            "without the \"reference\" tag (fc_case.h)\n", line, tol + 1);
+                    free(list);
+                    free(items);
+                    return 0;
+                }
+            }
             if (selected(o, line, tab + 1))
-                add_item(&items, n, &cap, line, tab + 1, NULL);
+                add_item(&items, n, &cap, line, tab + 1, NULL, tolerance);
         }
         free(list);
     }
@@ -257,6 +272,7 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
 
     memset(&res, 0, sizeof res);
     res.self_compare = c->self_compare;
+    res.tolerance = item->tolerance;
     for (int s = 0; s < 2; s++) {
         if (item->side[s].state == FC_FAILED) {
             res.crashed = 1;
@@ -276,6 +292,9 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
         printf("  (%" PRIu64 " px, max diff %d, depth %" PRIu64 ", errors %d, queries %d, blobs %d, values %d)",
                res.mismatched_pixels, res.max_channel_diff, res.depth_mismatches, res.error_mismatches,
                res.query_mismatches, res.blob_mismatches, res.value_mismatches + res.structure_mismatches);
+    else if (strcmp(status, "agrees") == 0)
+        printf("  (within %d LSB: %" PRIu64 " px differ, max diff %d, %" PRIu64 " px at 1 LSB)",
+               res.tolerance, res.mismatched_pixels, res.max_channel_diff, res.pixels_at_1);
     else if (res.crashed)
         printf("  (%s)", res.notes[0]);
     if (res.ndocumented)
@@ -283,14 +302,14 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
     if (item->replay && strcmp(status, "exact") != 0)
         printf("  replay: fixgl-conform %s", item->replay);
     if (is_known(c->known, item->name)) {
-        if (strcmp(status, "exact") == 0) {
+        if (fc_status_passes(status)) {
             printf("  (listed as a known difference: remove it from the list)");
             c->stale++;
         } else {
             printf("  [known difference]");
             c->expected++;
         }
-    } else if (strcmp(status, "exact") != 0) {
+    } else if (!fc_status_passes(status)) {
         c->unexpected++;
     }
     putchar('\n');
@@ -330,8 +349,12 @@ int main(int argc, char **argv)
         return 2;
     }
     if (o.list_only) {
-        for (size_t i = 0; i < n; i++)
-            printf("%s\t%s\n", items[i].name, items[i].tags);
+        for (size_t i = 0; i < n; i++) {
+            if (items[i].tolerance)
+                printf("%s\t%s\t%d\n", items[i].name, items[i].tags, items[i].tolerance);
+            else
+                printf("%s\t%s\n", items[i].name, items[i].tags);
+        }
         return 0;
     }
     struct known known = { NULL, 0 };

@@ -30,17 +30,31 @@ const char *fc_result_status(const struct fc_case_result *res)
 {
     if (res->crashed)
         return "error";
-    if (res->mismatched_pixels || res->depth_mismatches || res->error_mismatches ||
+    if (res->pixels_beyond || res->depth_mismatches || res->error_mismatches ||
         res->query_mismatches || res->blob_mismatches || res->value_mismatches ||
         res->structure_mismatches)
         return "differs";
+    /* colours within a reference case's tolerance (fc_case.h) */
+    if (res->mismatched_pixels)
+        return res->tolerance > 0 ? "agrees" : "differs";
     return "exact";
+}
+
+int fc_status_passes(const char *status)
+{
+    return strcmp(status, "exact") == 0 || strcmp(status, "agrees") == 0;
 }
 
 static uint64_t umax(uint64_t a, uint64_t b) { return a > b ? a : b; }
 
 void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
                       struct fc_frame_stats *st)
+{
+    fc_compare_frame_tol(a, b, 0, st);
+}
+
+void fc_compare_frame_tol(const struct fc_frame_view *a, const struct fc_frame_view *b,
+                          int tolerance, struct fc_frame_stats *st)
 {
     const struct fc_frame_hdr *ha = &a->hdr, *hb = &b->hdr;
     uint64_t pa = (uint64_t)ha->row_length * (uint64_t)ha->height;
@@ -53,7 +67,7 @@ void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view 
     if (ha->width != hb->width || ha->height != hb->height || ha->row_length != hb->row_length ||
         ha->format != hb->format || ha->bpp != hb->bpp) {
         st->layout_differs = 1;
-        st->mismatched = st->pixels;
+        st->mismatched = st->beyond = st->pixels;
         st->max_diff = 255;
     } else {
         for (uint64_t p = 0; p < pa; p++) {
@@ -65,6 +79,8 @@ void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view 
             }
             if (d) {
                 st->mismatched++;
+                st->at_1 += d == 1;
+                st->beyond += d > tolerance;
                 st->max_diff = d > st->max_diff ? d : st->max_diff;
             }
         }
@@ -252,10 +268,12 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
             fc_result_note(res, "frame %d: malformed frame record", *frame);
             break;
         }
-        fc_compare_frame(&a, &b, &st);
+        fc_compare_frame_tol(&a, &b, res->tolerance, &st);
         res->frames++;
         res->pixels += st.pixels;
         res->mismatched_pixels += st.mismatched;
+        res->pixels_at_1 += st.at_1;
+        res->pixels_beyond += st.beyond;
         res->max_channel_diff = st.max_diff > res->max_channel_diff ? st.max_diff : res->max_channel_diff;
         res->depth_values += st.depth_values;
         res->depth_mismatches += st.depth_mismatches;

@@ -20,6 +20,9 @@ struct fc_frame_stats {
     uint64_t pixels;            /* colour pixels compared (row_length x height) */
     uint64_t mismatched;        /* pixels with any differing byte */
     int max_diff;               /* largest per-byte difference */
+    uint64_t at_1;              /* pixels whose largest byte difference is 1 */
+    uint64_t beyond;            /* pixels with a byte difference > the tolerance
+                                 * (= mismatched when the tolerance is 0) */
     uint64_t depth_values, depth_mismatches;
     int layout_differs;         /* sizes / formats / depth presence differ */
 };
@@ -43,6 +46,11 @@ struct fc_case_result {
     int frames;
     uint64_t pixels, mismatched_pixels;
     int max_channel_diff;
+    /* set by the caller before fc_compare_case: the colour tolerance of a
+     * reference case in LSB (fc_case.h), 0 = exact */
+    int tolerance;
+    uint64_t pixels_at_1;       /* pixels whose largest channel difference is 1 */
+    uint64_t pixels_beyond;     /* pixels beyond the tolerance */
     uint64_t depth_values, depth_mismatches;
     int error_mismatches, query_mismatches, blob_mismatches, value_mismatches;
     int structure_mismatches;   /* records of different kind/label/count */
@@ -65,6 +73,9 @@ typedef void (*fc_frame_cb)(void *ud, int index, const struct fc_frame_view *ora
 
 void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
                       struct fc_frame_stats *st);
+/* Same with a colour tolerance in LSB (st->beyond counts the pixels past it). */
+void fc_compare_frame_tol(const struct fc_frame_view *a, const struct fc_frame_view *b,
+                          int tolerance, struct fc_frame_stats *st);
 
 /* Compares two record sequences (the records between CASE and END; other
  * kinds are ignored).  res must be zeroed by the caller, who may have added
@@ -82,7 +93,11 @@ void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
 /* Frees res->documented. */
 void fc_result_free(struct fc_case_result *res);
 
-/* "exact", "differs" or "error". */
+/* "exact", "agrees" (a reference case: colours differ, none by more than
+ * its tolerance, everything else exact), "differs" or "error". */
 const char *fc_result_status(const struct fc_case_result *res);
+
+/* 1 for the statuses that pass: "exact" and "agrees". */
+int fc_status_passes(const char *status);
 
 #endif

@@ -201,9 +201,76 @@ const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_r
     return e->status;
 }
 
+/* ---- agreement of the reference cases --------------------------------- */
+
+/* Per tag of the cases with a colour tolerance (fc_case.h: the reference
+ * cases, drawn on the oracle by a GLSL program), how close fixgl comes. */
+struct agreement {
+    char tag[48];
+    int cases, exact, agrees, differs, error, tolerance;
+    int max_lsb;
+    uint64_t pixels, mismatched, at_1, beyond_1, beyond_tolerance, depth_mismatches;
+};
+
+#define MAX_AGREEMENT 16
+
+static size_t collect_agreement(const struct fc_report *r, struct agreement *a, size_t max)
+{
+    size_t na = 0;
+    memset(a, 0, max * sizeof *a);
+    for (size_t i = 0; i < r->n; i++) {
+        const struct fc_report_entry *e = r->entries[i];
+        const struct fc_case_result *c = &e->res;
+        if (c->tolerance <= 0)
+            continue;
+        for (const char *s = e->tags; *s;) {
+            size_t k = strcspn(s, " "), j;
+            for (j = 0; j < na; j++)
+                if (strlen(a[j].tag) == k && strncmp(a[j].tag, s, k) == 0)
+                    break;
+            if (j == na && na < max && k > 0 && k < sizeof a[0].tag)
+                memcpy(a[na++].tag, s, k);
+            if (j < na) {
+                struct agreement *g = &a[j];
+                g->cases++;
+                if (strcmp(e->status, "exact") == 0) g->exact++;
+                else if (strcmp(e->status, "agrees") == 0) g->agrees++;
+                else if (strcmp(e->status, "differs") == 0) g->differs++;
+                else g->error++;
+                g->tolerance = c->tolerance > g->tolerance ? c->tolerance : g->tolerance;
+                g->max_lsb = c->max_channel_diff > g->max_lsb ? c->max_channel_diff : g->max_lsb;
+                g->pixels += c->pixels;
+                g->mismatched += c->mismatched_pixels;
+                g->at_1 += c->pixels_at_1;
+                g->beyond_1 += c->mismatched_pixels - c->pixels_at_1;
+                g->beyond_tolerance += c->pixels_beyond;
+                g->depth_mismatches += c->depth_mismatches;
+            }
+            s += k;
+            s += strspn(s, " ");
+        }
+    }
+    return na;
+}
+
+static void print_agreement(const struct fc_report *r, FILE *out)
+{
+    struct agreement a[MAX_AGREEMENT];
+    size_t na = collect_agreement(r, a, MAX_AGREEMENT);
+    if (!na)
+        return;
+    fprintf(out, "\nagreement of the reference cases (fixgl against the GLSL reference on the oracle):\n"
+            "%-16s %6s %6s %6s %7s %7s %10s %9s %9s %8s\n", "tag", "cases", "exact", "agrees",
+            "differs", "max LSB", "pixels", "at 1 LSB", "beyond 1", "depth");
+    for (size_t j = 0; j < na; j++)
+        fprintf(out, "%-16s %6d %6d %6d %7d %7d %10" PRIu64 " %9" PRIu64 " %9" PRIu64 " %8" PRIu64 "\n",
+                a[j].tag, a[j].cases, a[j].exact, a[j].agrees, a[j].differs + a[j].error, a[j].max_lsb,
+                a[j].pixels, a[j].at_1, a[j].beyond_1, a[j].depth_mismatches);
+}
+
 /* ---- summary table ---------------------------------------------------- */
 
-struct tag_count { char tag[48]; int cases, exact, differs, error; };
+struct tag_count { char tag[48]; int cases, exact, agrees, differs, error; };
 
 static int has_tag_word(const char *tags, const char *tag, size_t n)
 {
@@ -221,6 +288,7 @@ static void count_into(struct tag_count *t, const struct fc_report_entry *e)
 {
     t->cases++;
     if (strcmp(e->status, "exact") == 0) t->exact++;
+    else if (strcmp(e->status, "agrees") == 0) t->agrees++;
     else if (strcmp(e->status, "differs") == 0) t->differs++;
     else t->error++;
 }
@@ -267,15 +335,18 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
         mism += r->entries[i]->res.mismatched_pixels;
         dmism += r->entries[i]->res.depth_mismatches;
     }
-    fprintf(out, "\n%-16s %7s %7s %7s %7s\n", "tag", "cases", "exact", "differs", "error");
+    fprintf(out, "\n%-16s %7s %7s %7s %7s %7s\n", "tag", "cases", "exact", "agrees", "differs", "error");
     for (size_t j = 0; j < nt; j++)
-        fprintf(out, "%-16s %7d %7d %7d %7d\n", t[j].tag, t[j].cases, t[j].exact, t[j].differs, t[j].error);
-    fprintf(out, "%-16s %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.differs, total.error);
+        fprintf(out, "%-16s %7d %7d %7d %7d %7d\n", t[j].tag, t[j].cases, t[j].exact, t[j].agrees,
+                t[j].differs, t[j].error);
+    fprintf(out, "%-16s %7d %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.agrees,
+            total.differs, total.error);
     fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
             mism, px, dmism);
     if (ndoc)
         fprintf(out, "documented differences: %d records in %d cases (listed in the report)\n",
                 ndoc, ndoc_cases);
+    print_agreement(r, out);
     fprintf(out, "oracle: %s | %s\n", r->renderer[0] ? r->renderer[0] : "?", r->version[0] ? r->version[0] : "?");
     fprintf(out, "fixgl:  %s | %s\n", r->renderer[1] ? r->renderer[1] : "?", r->version[1] ? r->version[1] : "?");
 }
@@ -356,6 +427,10 @@ static int write_json(const struct fc_report *r)
                 c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
                 c->error_mismatches, c->query_mismatches, c->blob_mismatches, c->value_mismatches,
                 c->structure_mismatches, e->status);
+        if (c->tolerance)
+            fprintf(f, ", \"tolerance_lsb\": %d, \"pixels_at_1\": %" PRIu64 ", \"pixels_beyond_1\": %" PRIu64
+                    ", \"pixels_beyond_tolerance\": %" PRIu64, c->tolerance, c->pixels_at_1,
+                    c->mismatched_pixels - c->pixels_at_1, c->pixels_beyond);
         if (e->replay) {
             fputs(", \"replay\": ", f);
             json_str(f, e->replay);
@@ -376,7 +451,28 @@ static int write_json(const struct fc_report *r)
         }
         fputc('}', f);
     }
-    fputs("\n  ]\n}\n", f);
+    fputs("\n  ]", f);
+    {
+        struct agreement a[MAX_AGREEMENT];
+        size_t na = collect_agreement(r, a, MAX_AGREEMENT);
+        /* per tag of the reference cases: how close fixgl comes to the
+         * GLSL reference (max LSB, pixels at 1 LSB and beyond) */
+        fputs(",\n  \"agreement\": {", f);
+        for (size_t j = 0; j < na; j++) {
+            fprintf(f, "%s\n    ", j ? "," : "");
+            json_str(f, a[j].tag);
+            fprintf(f, ": {\"cases\": %d, \"bit_exact_cases\": %d, \"agreeing_cases\": %d, "
+                    "\"differing_cases\": %d, \"error_cases\": %d, \"tolerance_lsb\": %d, \"max_lsb\": %d, "
+                    "\"pixels_compared\": %" PRIu64 ", \"pixels_exact\": %" PRIu64 ", \"pixels_at_1_lsb\": %" PRIu64
+                    ", \"pixels_beyond_1_lsb\": %" PRIu64 ", \"pixels_beyond_tolerance\": %" PRIu64
+                    ", \"depth_mismatches\": %" PRIu64 "}",
+                    a[j].cases, a[j].exact, a[j].agrees, a[j].differs, a[j].error, a[j].tolerance,
+                    a[j].max_lsb, a[j].pixels, a[j].pixels - a[j].mismatched, a[j].at_1, a[j].beyond_1,
+                    a[j].beyond_tolerance, a[j].depth_mismatches);
+        }
+        fputs(na ? "\n  }" : "}", f);
+    }
+    fputs("\n}\n", f);
     return fclose(f) == 0;
 }
 
@@ -406,6 +502,10 @@ static void html_case(FILE *f, const struct fc_report_entry *e)
             c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
             c->depth_values, c->error_mismatches, c->query_mismatches, c->blob_mismatches,
             c->value_mismatches, c->structure_mismatches);
+    if (c->tolerance)
+        fprintf(f, "<p>reference case, tolerance %d LSB: %" PRIu64 " pixels at 1 LSB, %" PRIu64
+                " beyond 1 LSB, %" PRIu64 " beyond the tolerance</p>\n", c->tolerance, c->pixels_at_1,
+                c->mismatched_pixels - c->pixels_at_1, c->pixels_beyond);
     fputs("<p>replay: <code>fixgl-conform ", f);
     if (e->replay) {
         html_str(f, e->replay);
@@ -456,6 +556,7 @@ static int write_html(const struct fc_report *r)
           "border:1px solid #888;background:#222}figure{display:inline-block;margin:0 1em 1em 0}"
           "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
           "td:first-child{text-align:left}.differs{color:#b60}.error{color:#c00}.exact{color:#080}"
+          ".agrees{color:#06a}"
           "section{border-top:1px solid #ccc}.notes{font-family:monospace}</style></head><body>\n"
           "<h1>fixgl conformance report</h1>\n<p>oracle: <b>", f);
     html_str(f, r->renderer[0] ? r->renderer[0] : "?");
@@ -467,12 +568,33 @@ static int write_html(const struct fc_report *r)
     html_str(f, r->version[1] ? r->version[1] : "?");
     fputs("</p>\n<p>Heat maps: matching pixels are the oracle image dimmed; differing pixels go from "
           "yellow (difference 1) through red to magenta (255), log scale. Depth heat maps use a "
-          "24-bit scale.</p>\n<table><tr><th>tag</th><th>cases</th><th>exact</th><th>differs</th>"
-          "<th>error</th></tr>\n", f);
+          "24-bit scale.</p>\n<table><tr><th>tag</th><th>cases</th><th>exact</th><th>agrees</th>"
+          "<th>differs</th><th>error</th></tr>\n", f);
     for (size_t j = 0; j < nt; j++)
-        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td></tr>\n",
-                t[j].tag, t[j].cases, t[j].exact, t[j].differs, t[j].error);
+        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td></tr>\n",
+                t[j].tag, t[j].cases, t[j].exact, t[j].agrees, t[j].differs, t[j].error);
     fputs("</table>\n", f);
+    {
+        struct agreement a[MAX_AGREEMENT];
+        size_t na = collect_agreement(r, a, MAX_AGREEMENT);
+        if (na) {
+            fputs("<h2>Agreement of the reference cases</h2>\n<p>Cases tagged <code>reference</code> "
+                  "draw their oracle side with a GLSL program on OSMesa that evaluates the equations of "
+                  "<code>include/fixgl/shading.md</code>; a case <span class=\"agrees\">agrees</span> when "
+                  "no colour channel differs by more than its tolerance and depth, errors and queries "
+                  "are exact. Their heat maps are below with the other non-exact cases.</p>\n"
+                  "<table><tr><th>tag</th><th>cases</th><th>bit-exact</th><th>agree</th><th>differ</th>"
+                  "<th>tolerance</th><th>max LSB</th><th>pixels</th><th>at 1 LSB</th><th>beyond 1 LSB</th>"
+                  "<th>beyond tolerance</th><th>depth mismatches</th></tr>\n", f);
+            for (size_t j = 0; j < na; j++)
+                fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td>"
+                        "<td>%d</td><td>%" PRIu64 "</td><td>%" PRIu64 "</td><td>%" PRIu64 "</td><td>%" PRIu64
+                        "</td><td>%" PRIu64 "</td></tr>\n", a[j].tag, a[j].cases, a[j].exact, a[j].agrees,
+                        a[j].differs + a[j].error, a[j].tolerance, a[j].max_lsb, a[j].pixels, a[j].at_1,
+                        a[j].beyond_1, a[j].beyond_tolerance, a[j].depth_mismatches);
+            fputs("</table>\n", f);
+        }
+    }
     for (size_t i = 0; i < r->n; i++)
         if (strcmp(r->entries[i]->status, "exact") != 0)
             html_case(f, r->entries[i]);
@@ -527,7 +649,7 @@ int fc_report_finish(struct fc_report *r)
         fprintf(stderr, "fixgl-conform: cannot write the report in %s\n", r->dir);
     for (size_t i = 0; i < r->n; i++) {
         struct fc_report_entry *e = r->entries[i];
-        bad += strcmp(e->status, "exact") != 0;
+        bad += !fc_status_passes(e->status);
         free(e->name); free(e->tags); free(e->replay); free(e->file_stem);
         fc_result_free(&e->res);
         free(e);

@@ -37,8 +37,9 @@ const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_r
 /* Prints the per-tag table and totals. */
 void fc_report_print_summary(const struct fc_report *r, FILE *out);
 
-/* Writes index.html and summary.json; returns the number of cases that are
- * not exact, or -1 if the files could not be written.  Frees r. */
+/* Writes index.html and summary.json; returns the number of cases that do
+ * not pass (neither exact nor, for a reference case, "agrees"),
+ * or -1 if the files could not be written.  Frees r. */
 int fc_report_finish(struct fc_report *r);
 
 #endif

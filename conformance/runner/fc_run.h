@@ -19,6 +19,7 @@ struct fc_side_result {
 
 struct fc_item {
     char *name, *tags, *replay;
+    int tolerance;              /* colour tolerance in LSB (reference cases), else 0 */
     struct fc_side_result side[2];
 };
 

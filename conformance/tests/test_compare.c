@@ -307,6 +307,55 @@ int main(int argc, char **argv)
         free(b.buf);
     }
 
+    /* 7. reference cases (fc_case.h tolerance_lsb): with a tolerance of 1,
+     * a channel 1 off agrees, a channel 2 off differs; depth stays exact;
+     * the same frames without a tolerance differ; the agreement section
+     * of summary.json sums them per tag */
+    {
+        unsigned char c1[W * H * 4], c2[W * H * 4];
+        unsigned int d1[W * H];
+        struct { const char *name; const unsigned char *fix; int tol, depth; const char *status; } t[] = {
+            { "unit/tol_1", c1, 1, 0, "agrees" },
+            { "unit/tol_2", c2, 1, 0, "differs" },
+            { "unit/tol_0", c1, 0, 0, "differs" },
+            { "unit/tol_depth", c1, 1, 1, "differs" },
+            { "unit/tol_same", ca, 1, 0, "exact" },
+        };
+        memcpy(c1, ca, sizeof c1);
+        memcpy(c2, ca, sizeof c2);
+        memcpy(d1, da, sizeof d1);
+        c1[4 * 5 + 0] += 1;                     /* pixel (5,0): R +1 */
+        c1[4 * 9 + 2] -= 1;                     /* pixel (1,1): B -1 */
+        c2[4 * 5 + 0] += 1;
+        c2[4 * 9 + 2] -= 2;                     /* B -2: beyond 1 LSB */
+        d1[3] += 1;
+        for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+            open_stream(&a);
+            open_stream(&b);
+            write_common(a.f, 0, 1, "x", 1);
+            write_common(b.f, 0, 1, "x", 1);
+            write_frame(a.f, FMT_RGBA, W, ca, da);
+            write_frame(b.f, FMT_RGBA, W, t[i].fix, t[i].depth ? d1 : da);
+            end_case(a.f);
+            end_case(b.f);
+            memset(&res, 0, sizeof res);
+            res.tolerance = t[i].tol;
+            e = fc_report_begin_case(rep, t[i].name, t[i].tol ? "unit reference phong" : "unit", NULL);
+            fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res,
+                            fc_report_frame, e);
+            CHECK(strcmp(fc_report_end_case(e, &res), t[i].status) == 0);
+            CHECK(fc_status_passes(t[i].status) == (strcmp(t[i].status, "differs") != 0));
+            if (t[i].fix != ca) {
+                CHECK(res.mismatched_pixels == 2);
+                CHECK(res.pixels_at_1 == (t[i].fix == c1 ? 2u : 1u));
+                CHECK(res.pixels_beyond == (t[i].tol == 0 ? 2u : t[i].fix == c1 ? 0u : 1u));
+                CHECK(res.max_channel_diff == (t[i].fix == c1 ? 1 : 2));
+            }
+            free(a.buf);
+            free(b.buf);
+        }
+    }
+
     /* 5. BGRA display conversion */
     {
         struct fc_frame_view v;
@@ -323,7 +372,7 @@ int main(int argc, char **argv)
     }
 
     fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", "fixgl-v");
-    CHECK(fc_report_finish(rep) == 5);
+    CHECK(fc_report_finish(rep) == 8);      /* + tol_2, tol_0, tol_depth */
     json = slurp(dir, "summary.json");
     html = slurp(dir, "index.html");
     CHECK(strstr(json, "\"oracle\": \"oracle-r oracle-v\"") != NULL);
@@ -339,6 +388,16 @@ int main(int argc, char **argv)
           strstr(json, "\"documented_differences\": [{\"label\": \"limit\", \"kind\": \"query int\", "
                        "\"reason\": \"implementation string\", \"oracle\": \"{1}\", \"fixgl\": \"{2}\"}]") != NULL);
     CHECK(strstr(html, "Documented differences (4)") != NULL);
+    CHECK(strstr(json, "\"name\": \"unit/tol_1\"") &&
+          strstr(json, "\"status\": \"agrees\", \"tolerance_lsb\": 1, \"pixels_at_1\": 2, "
+                       "\"pixels_beyond_1\": 0, \"pixels_beyond_tolerance\": 0"));
+    /* tol_1, tol_2, tol_depth, tol_same: 4 cases, 1 bit-exact, 1 agrees */
+    CHECK(strstr(json, "\"phong\": {\"cases\": 4, \"bit_exact_cases\": 1, \"agreeing_cases\": 1, "
+                       "\"differing_cases\": 2, \"error_cases\": 0, \"tolerance_lsb\": 1, \"max_lsb\": 2, "
+                       "\"pixels_compared\": 128, \"pixels_exact\": 122, \"pixels_at_1_lsb\": 5, "
+                       "\"pixels_beyond_1_lsb\": 1, \"pixels_beyond_tolerance\": 1, \"depth_mismatches\": 1}") != NULL);
+    CHECK(strstr(html, "Agreement of the reference cases") != NULL);
+    CHECK(strstr(html, "img/unit_tol_1-f0-diff.png") != NULL);
     free(json);
     free(html);
     if (failures)

@@ -237,6 +237,8 @@ static void restore_hint(struct fgl_context *ctx, const struct fgl_attrib_node *
    h->PolygonSmooth = node->Hint.PolygonSmooth;
    h->Fog = node->Hint.Fog;
    h->TextureCompression = node->Hint.TextureCompression;
+   /* fixgl's own GL_PHONG_HINT_WIN comes back too (shading.md) */
+   h->PhongWin = node->Hint.PhongWin;
 }
 
 /* GL_TRANSFORM_BIT: glMatrixMode selects the stack; planes and enables are

@@ -39,6 +39,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <fixgl/fixgl.h>
+
 #include "main/groups.h"
 #include "main/pixelformat.h"
 #include "tnl/t_pipeline.h"
@@ -1616,6 +1618,25 @@ void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
    struct fgl_dlist_state *ls = ctx->ListState;
    if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
       compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   /* GL_FIXGL_cook_torrance's pnames are lighting state, not vertex
+    * attributes (include/fixgl/shading.md): refused between glBegin and
+    * glEnd like glShadeModel, else a MATERIAL node that executes first;
+    * their value errors come when the node executes */
+   if (pname == GL_REFLECTANCE_MODEL_FIXGL || pname == GL_ROUGHNESS_FIXGL ||
+       pname == GL_METALNESS_FIXGL || pname == GL_DIELECTRIC_F0_FIXGL) {
+      if (inside_save_begin_end(ls)) {
+         compile_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+      if (ctx->ExecuteFlag) {
+         ctx->CompileFlag = false;
+         glMaterialfv(face, pname, params);
+         ctx->CompileFlag = true;
+      }
+      save_flush(ctx);
+      fgl_dl_put_Materialfv(ctx, face, pname, params, 1);
       return;
    }
    if (inside_save_begin_end(ls)) {

@@ -752,12 +752,17 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   NV_blend_square        GL_SRC_COLOR as source, GL_DST_COLOR as
        *                          destination factor
        *   NV_fog_distance        GL_FOG_DISTANCE_MODE_NV
-       *   NV_texture_env_combine4 GL_COMBINE4_NV */
+       *   NV_texture_env_combine4 GL_COMBINE4_NV
+       * and fixgl's own (include/fixgl/shading.md; the oracle has neither):
+       *   WIN_phong_shading      GL_PHONG_WIN, GL_PHONG_HINT_WIN
+       *   FIXGL_cook_torrance    glMaterial's GL_REFLECTANCE_MODEL_FIXGL,
+       *                          GL_ROUGHNESS/METALNESS/DIELECTRIC_F0_FIXGL */
       return (const GLubyte *)"GL_ARB_multitexture GL_ARB_texture_border_clamp "
                               "GL_ARB_texture_env_add GL_ARB_texture_env_combine "
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
                               "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
+                              "GL_FIXGL_cook_torrance "
                               "GL_EXT_abgr GL_EXT_bgra "
                               "GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
                               "GL_EXT_draw_range_elements GL_EXT_packed_pixels "
@@ -768,7 +773,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_EXT_texture_mirror_clamp GL_IBM_texture_mirrored_repeat "
                               "GL_NV_blend_square GL_NV_fog_distance "
                               "GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp "
-                              "GL_SGIS_texture_lod";
+                              "GL_SGIS_texture_lod GL_WIN_phong_shading";
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return NULL;

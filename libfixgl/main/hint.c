@@ -8,6 +8,8 @@
 
 #include <stddef.h>
 
+#include <fixgl/fixgl.h>
+
 #include "main/groups.h"
 #include "main/dlist.h"
 
@@ -22,6 +24,7 @@ void fgl_init_hint(struct fgl_context *ctx)
    h->TextureCompression = GL_DONT_CARE;
    h->GenerateMipmap = GL_DONT_CARE;
    h->FragmentShaderDerivative = GL_DONT_CARE;
+   h->PhongWin = GL_DONT_CARE;
 }
 
 /* The stored value of a hint target, NULL for an invalid target. */
@@ -37,6 +40,9 @@ static GLenum *hint_field(struct fgl_context *ctx, GLenum target)
    case GL_TEXTURE_COMPRESSION_HINT:         return &h->TextureCompression;
    case GL_GENERATE_MIPMAP_HINT:             return &h->GenerateMipmap;
    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT:  return &h->FragmentShaderDerivative;
+   /* GL_WIN_phong_shading: stored and ignored (fixgl always shades every
+    * fragment; include/fixgl/shading.md) */
+   case GL_PHONG_HINT_WIN:                   return &h->PhongWin;
    default:                                  return NULL;
    }
 }

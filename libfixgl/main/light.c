@@ -1,7 +1,8 @@
 /*
  * Lighting state (GL_LIGHTING_BIT): glShadeModel, glLight, glLightModel,
  * glMaterial, glColorMaterial, and the derived state the vertex stage
- * lights with (fgl_update_lighting).
+ * lights with (fgl_update_lighting, and fgl_update_shade_env for fixgl's
+ * shading extensions, include/fixgl/shading.md).
  * Entry points validate as Mesa's main/light.c does and store what it
  * stores: positions through the modelview and spot directions through its
  * 3x3 part at call time (TRANSFORM_POINT / TRANSFORM_DIRECTION, float, left
@@ -11,9 +12,12 @@
 #include <math.h>
 #include <string.h>
 
+#include <fixgl/fixgl.h>
+
 #include "main/conv.h"
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "math/m_shade.h"
 
 static unsigned material_pname_bits(GLenum pname);
 
@@ -41,6 +45,11 @@ void fgl_init_light(struct fgl_context *ctx)
    ctx->Light.ColorMaterialFace = GL_FRONT_AND_BACK;
    ctx->Light.ColorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
    ctx->Light._ColorMaterialBitmask = material_pname_bits(GL_AMBIENT_AND_DIFFUSE);
+   /* GL_FIXGL_cook_torrance defaults (shading.md) */
+   for (int f = 0; f < 2; f++)
+      ctx->Light.Reflectance[f] = (struct fgl_reflectance){
+         .Model = GL_BLINN_PHONG_FIXGL, .Roughness = 0.5f, .Metalness = 0.0f, .F0 = 0.04f,
+      };
 }
 
 /* ---- glLight ---- */
@@ -352,7 +361,8 @@ void GLAPIENTRY glShadeModel(GLenum mode)
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Light.ShadeModel == mode)
       return;
-   if (mode != GL_FLAT && mode != GL_SMOOTH) {
+   /* GL_WIN_phong_shading: GL_PHONG_WIN too (shading.md) */
+   if (mode != GL_FLAT && mode != GL_SMOOTH && mode != GL_PHONG_WIN) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -407,6 +417,67 @@ void fgl_update_color_material(struct fgl_context *ctx, const float color[4])
    }
 }
 
+/* GL_FIXGL_cook_torrance's material pnames (shading.md) */
+static bool is_reflectance_pname(GLenum pname)
+{
+   return pname == GL_REFLECTANCE_MODEL_FIXGL || pname == GL_ROUGHNESS_FIXGL ||
+          pname == GL_METALNESS_FIXGL || pname == GL_DIELECTRIC_F0_FIXGL;
+}
+
+static float *reflectance_field(struct fgl_reflectance *r, GLenum pname)
+{
+   switch (pname) {
+   case GL_ROUGHNESS_FIXGL: return &r->Roughness;
+   case GL_METALNESS_FIXGL: return &r->Metalness;
+   default: return &r->F0;
+   }
+}
+
+/* glMaterial of a reflectance pname: lighting state, not a vertex
+ * attribute, so refused between glBegin and glEnd like glLight
+ * (GL_INVALID_OPERATION); the model must be one of the two enums
+ * (GL_INVALID_ENUM), a parameter in [0, 1] (GL_INVALID_VALUE, NaN
+ * included).  Nothing changes on an error. */
+static void set_reflectance(struct fgl_context *ctx, GLenum face, GLenum pname,
+                            const GLfloat *params)
+{
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (!params)
+      return;
+   const float v = params[0];
+   GLenum model = 0;
+   if (pname == GL_REFLECTANCE_MODEL_FIXGL) {
+      if (v == (GLfloat)GL_BLINN_PHONG_FIXGL)
+         model = GL_BLINN_PHONG_FIXGL;
+      else if (v == (GLfloat)GL_COOK_TORRANCE_FIXGL)
+         model = GL_COOK_TORRANCE_FIXGL;
+      else {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+   } else if (!(v >= 0.0f && v <= 1.0f)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   for (int f = 0; f < 2; f++) {
+      if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT))
+         continue;
+      struct fgl_reflectance *r = &ctx->Light.Reflectance[f];
+      if (pname == GL_REFLECTANCE_MODEL_FIXGL) {
+         if (r->Model == model)
+            continue;
+         FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
+         r->Model = model;
+      } else {
+         float *dst = reflectance_field(r, pname);
+         if (*dst == v)
+            continue;
+         FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
+         *dst = v;
+      }
+   }
+}
+
 /* glMaterial is a vertex attribute call (allowed inside glBegin/glEnd);
  * materials that track the colour through GL_COLOR_MATERIAL are skipped
  * (vbo_exec_api.c:_mesa_Materialfv). */
@@ -424,6 +495,10 @@ void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat *params)
                                                      : FGL_MAT_BITS_ALL;
    if (!material_face_bits(face, &update)) {
       fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (is_reflectance_pname(pname)) {
+      set_reflectance(ctx, face, pname, params);
       return;
    }
    const unsigned bits = material_pname_bits(pname) & update;
@@ -504,6 +579,10 @@ void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params)
          f[i] = INT_TO_FLOAT(params[i]);
       break;
    case GL_SHININESS:
+   case GL_REFLECTANCE_MODEL_FIXGL:
+   case GL_ROUGHNESS_FIXGL:
+   case GL_METALNESS_FIXGL:
+   case GL_DIELECTRIC_F0_FIXGL:
       f[0] = (GLfloat)params[0];
       break;
    case GL_COLOR_INDEXES:
@@ -517,9 +596,10 @@ void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params)
 }
 
 /* The common part of glGetMaterial{f,i}v: flush (materials are vertex
- * attributes), then the face's attribute for pname and its component
- * count, 0 after raising the error Mesa raises. */
-static int get_material_values(GLenum face, GLenum pname, const float **v)
+ * attributes), then the face's values for pname (the attribute, or the
+ * reflectance state of GL_FIXGL_cook_torrance) and their count, 0 after
+ * raising the error Mesa raises. */
+static int get_material_values(GLenum face, GLenum pname, float v[4])
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
@@ -541,29 +621,38 @@ static int get_material_values(GLenum face, GLenum pname, const float **v)
    case GL_EMISSION: attr = FGL_ATTR_MAT_FRONT_EMISSION; break;
    case GL_SHININESS: attr = FGL_ATTR_MAT_FRONT_SHININESS; n = 1; break;
    case GL_COLOR_INDEXES: attr = FGL_ATTR_MAT_FRONT_INDEXES; n = 3; break;
+   case GL_REFLECTANCE_MODEL_FIXGL:
+      v[0] = (float)ctx->Light.Reflectance[back].Model;
+      return 1;
+   case GL_ROUGHNESS_FIXGL:
+   case GL_METALNESS_FIXGL:
+   case GL_DIELECTRIC_F0_FIXGL:
+      v[0] = *reflectance_field(&ctx->Light.Reflectance[back], pname);
+      return 1;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return 0;
    }
-   *v = ctx->Current.Attrib[attr + back];
+   memcpy(v, ctx->Current.Attrib[attr + back], (size_t)n * sizeof(float));
    return n;
 }
 
 void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params)
 {
-   const float *v;
-   const int n = get_material_values(face, pname, &v);
+   float v[4];
+   const int n = get_material_values(face, pname, v);
    if (n && params)
       memcpy(params, v, (size_t)n * sizeof(float));
 }
 
 void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params)
 {
-   const float *v;
-   const int n = get_material_values(face, pname, &v);
+   float v[4];
+   const int n = get_material_values(face, pname, v);
    if (!n || !params)
       return;
-   /* colours with FLOAT_TO_INT, shininess and indexes with lroundf */
+   /* colours with FLOAT_TO_INT, shininess, indexes and the reflectance
+    * values with lroundf (the model is an enum, exact in a float) */
    for (int i = 0; i < n; i++)
       params[i] = n == 4 ? fgl_float_to_int_norm(v[i]) : fgl_lround_to_int(v[i]);
 }
@@ -698,6 +787,80 @@ void fgl_update_lighting(struct fgl_context *ctx)
             fgl_transform_normal(s, dir, mv->m);
          }
          fgl_normalize3(s);
+      }
+   }
+}
+
+/* ---- fixgl's shading extensions ---- */
+
+static void copy4(float *dst, const float *src)
+{
+   memcpy(dst, src, 4 * sizeof(float));
+}
+
+void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env)
+{
+   const struct fgl_light_attrib *la = &ctx->Light;
+   env->num_lights = 0;
+   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
+      const struct fgl_light *l = &la->Light[i];
+      if (!l->Enabled)
+         continue;
+      struct m_shade_light *sl = &env->light[env->num_lights++];
+      copy4(sl->ambient, l->Ambient);
+      copy4(sl->diffuse, l->Diffuse);
+      copy4(sl->specular, l->Specular);
+      copy4(sl->position, l->EyePosition);
+      /* normalize(sd) as shading.md writes it: v * (1/sqrt(dot(v, v))),
+       * the dot left to right */
+      const float *sd = l->SpotDirection;
+      const float r = 1.0f / sqrtf(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]);
+      for (int k = 0; k < 3; k++)
+         sl->spot_direction[k] = sd[k] * r;
+      sl->spot = l->SpotCutoff != 180.0f;
+      sl->spot_exponent = l->SpotExponent;
+      /* cos(sc) as GL stores it (gl_LightSource[i].spotCosCutoff of the
+       * GLSL reference): cosf of a double angle, clamped to >= 0 */
+      sl->spot_cos_cutoff = l->CosCutoff;
+      sl->kc = l->ConstantAttenuation;
+      sl->kl = l->LinearAttenuation;
+      sl->kq = l->QuadraticAttenuation;
+   }
+   copy4(env->global_ambient, la->Model.Ambient);
+   env->local_viewer = la->Model.LocalViewer;
+   env->two_side = la->Model.TwoSide;
+   env->separate_specular = la->Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
+
+   /* both faces: the current material values, the reflectance state */
+   for (int f = 0; f < 2; f++) {
+      struct m_shade_material *m = &env->material[f];
+      const struct fgl_reflectance *r = &la->Reflectance[f];
+      copy4(m->ambient, ctx->Current.Attrib[FGL_ATTR_MAT_FRONT_AMBIENT + f]);
+      copy4(m->diffuse, ctx->Current.Attrib[FGL_ATTR_MAT_FRONT_DIFFUSE + f]);
+      copy4(m->specular, ctx->Current.Attrib[FGL_ATTR_MAT_FRONT_SPECULAR + f]);
+      copy4(m->emission, ctx->Current.Attrib[FGL_ATTR_MAT_FRONT_EMISSION + f]);
+      m->shininess = ctx->Current.Attrib[FGL_ATTR_MAT_FRONT_SHININESS + f][0];
+      m->model = r->Model == GL_COOK_TORRANCE_FIXGL ? M_SHADE_COOK_TORRANCE
+                                                    : M_SHADE_BLINN_PHONG;
+      m->roughness = r->Roughness;
+      m->metalness = r->Metalness;
+      m->f0 = r->F0;
+   }
+
+   /* the properties that track the vertex colour */
+   env->color_material = 0;
+   if (la->ColorMaterialEnabled) {
+      static const struct { enum fgl_vbo_attr attr; unsigned bit; } cm[] = {
+         { FGL_ATTR_MAT_FRONT_AMBIENT, M_SHADE_CM_AMBIENT },
+         { FGL_ATTR_MAT_FRONT_DIFFUSE, M_SHADE_CM_DIFFUSE },
+         { FGL_ATTR_MAT_FRONT_SPECULAR, M_SHADE_CM_SPECULAR },
+         { FGL_ATTR_MAT_FRONT_EMISSION, M_SHADE_CM_EMISSION },
+      };
+      for (unsigned i = 0; i < sizeof(cm) / sizeof(cm[0]); i++) {
+         if (la->_ColorMaterialBitmask & FGL_MAT_BIT(cm[i].attr))
+            env->color_material |= cm[i].bit;
+         if (la->_ColorMaterialBitmask & FGL_MAT_BIT(cm[i].attr + 1))
+            env->color_material |= cm[i].bit << M_SHADE_CM_BACK_SHIFT;
       }
    }
 }

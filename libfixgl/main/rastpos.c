@@ -32,9 +32,12 @@
 #include <math.h>
 #include <string.h>
 
+#include <fixgl/fixgl.h>
+
 #include "main/groups.h"
 #include "main/conv.h"
 #include "main/dlist.h"
+#include "math/m_shade.h"
 #include "tnl/t_pipeline.h"
 
 /* [S: rastpos.c:TRANSFORM_POINT (macros.h)] q = m * p, each row summed
@@ -280,7 +283,18 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
       fgl_transform_normal(eyenorm, norm, ctx->ModelviewStack.Top->inv);
       norm = eyenorm;
    }
-   if (ctx->Light.Enabled) {
+   if (ctx->Light.Enabled && (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
+                              ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL)) {
+      /* GL_FIXGL_cook_torrance: the raster position is lit like a vertex
+       * (t_light.c light_shade, include/fixgl/shading.md), front face:
+       * m_shade_point with the eye-space normal and position */
+      struct m_shade_env env;
+      float n[3];
+      fgl_update_shade_env(ctx, &env);
+      fgl_transform_normal(n, cur->Attrib[FGL_ATTR_NORMAL], ctx->ModelviewStack.Top->inv);
+      m_shade_point(&env, n, eye, false, cur->Attrib[FGL_ATTR_COLOR0], cur->RasterColor,
+                    cur->RasterSecondaryColor);
+   } else if (ctx->Light.Enabled) {
       float eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
       if (!eye_coords) {
          /* compute_light_positions: TRANSFORM_NORMAL of (0, 0, 1) */

@@ -61,7 +61,9 @@ struct m_shade_env {
 };
 
 /* Lights one point: n the eye-space normal (normalised here), p the eye
- * position (xyz), back the face (the back face uses -n and material[1]),
+ * position (xyz), back the face (the back face uses -n and material[1];
+ * without two_side every face is lit as the front one, so back may be the
+ * raw facing),
  * color the vertex colour (read only for color_material; may be NULL when
  * it is 0).  primary: rgba clamped to [0,1]; secondary: the specular sum,
  * rgb clamped to [0,1] and a = 1, when separate_specular (else 0, 0, 0, 1).

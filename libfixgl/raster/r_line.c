@@ -81,6 +81,7 @@ struct line_shade {
    float flat[R_FS_NUM_INPUTS][4];
    bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;
+   bool phong_back;         /* GL_PHONG_WIN: lit as a back face */
 };
 
 static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
@@ -97,6 +98,8 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
       for (int k = 0; k < 4; k++)
          in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], fx, fy) * rw;
    }
+   if (rs->phong)
+      r_fragment_phong(rs, in, ls->phong_back);
    float color[4];
    if (rs->tex_units) {
       /* the quad's texture coordinates from the line's planes
@@ -312,6 +315,11 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    ls.z = line_coef(&info, v1->pos[2], v2->pos[2]);
    ls.w = line_coef(&info, v1->pos[3], v2->pos[3]);
    ls.need_w = false;
+   /* GL_PHONG_WIN: a line is front facing, unless it is the edge of an
+    * unfilled back face, whose face the vertices carry (draw's
+    * inject_front_face_info [S: draw_pipe_unfilled.c], read by
+    * lp_setup_line.c from the provoking vertex) */
+   ls.phong_back = rs->phong && rs->shade_env.two_side && pv->attr[R_ATTR_NORMAL][3] == 0.0f;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
       if (!(rs->fs_inputs & (1u << a)))
          continue;

@@ -175,6 +175,7 @@ void r_pixel_rect(const struct r_state *rs_in, const struct r_pixel_image *pix,
    rs.offset_units = rs.offset_scale = 0.0f;
    rs.cull_front = rs.cull_back = false;
    rs.twoside = false;
+   rs.phong = false;
    rs.flat_mask = 0;
    rs.fs_inputs = 1u << R_FS_COLOR0 | 1u << R_FS_TEX0;
    rs.num_attribs = R_ATTR_TEX0 + 1;

@@ -67,6 +67,12 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
       for (int c = 0; c < 4; c++)
          in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
    }
+   /* GL_PHONG_WIN: lit once, as every pixel's inputs are the vertex's; a
+    * point is front facing, unless it is a vertex of an unfilled back
+    * face, whose face the vertex carries (draw's inject_front_face_info
+    * [S: draw_pipe_unfilled.c], read by lp_setup_point.c) */
+   if (rs->phong)
+      r_fragment_phong(rs, in, rs->shade_env.two_side && v->attr[R_ATTR_NORMAL][3] == 0.0f);
    /* the quad's texture coordinates are the vertex's too: zero
     * derivatives, so the texture is magnified */
    struct r_fs_quad quad;

@@ -16,8 +16,10 @@
 #include <xmmintrin.h>
 #endif
 
+#include "math/m_shade.h"
+
 #define R_MAX_TEX_UNITS 8
-#define R_MAX_ATTRIBS (7 + R_MAX_TEX_UNITS)
+#define R_MAX_ATTRIBS (9 + R_MAX_TEX_UNITS)
 
 /* Varying slots: the colour written to the buffer, the secondary colour
  * the fragment stage adds to it (separate specular), their back-face
@@ -26,8 +28,12 @@
  * coordinates of the draw module's smooth point and line quads
  * (tnl/t_linepoint.c; written after clipping, so never part of
  * num_attribs), then the texture coordinates of units 0..7 (unit 0's
- * slot is also filled for GL_FEEDBACK, outside num_attribs).  Only the
- * colour slots are clamped to [0,1]. */
+ * slot is also filled for GL_FEEDBACK, outside num_attribs), then the
+ * two varyings of GL_PHONG_WIN (include/fixgl/shading.md): the eye-space
+ * normal as lighting transforms it (x, y, z; w is the face of an
+ * unfilled polygon's lines and points, 1 front, 0 back, read from the
+ * vertex only) and the eye position (x, y, z, w as the modelview gives
+ * it).  Only the colour slots are clamped to [0,1]. */
 enum {
    R_ATTR_COLOR0,
    R_ATTR_COLOR1,
@@ -36,19 +42,24 @@ enum {
    R_ATTR_FOG,
    R_ATTR_AA,
    R_ATTR_TEX0,      /* R_ATTR_TEX0 + u: texture unit u */
+   R_ATTR_NORMAL = R_ATTR_TEX0 + R_MAX_TEX_UNITS,
+   R_ATTR_EYEPOS,
 };
 
 /* Inputs of the fragment shader, after the back-face colours have been
  * chosen: the colour, the secondary colour, the fog coordinate, the
- * smooth point/line coverage coordinates and the texture coordinates
- * (s, t, r, q as interpolated). */
+ * smooth point/line coverage coordinates, the texture coordinates
+ * (s, t, r, q as interpolated), and GL_PHONG_WIN's eye-space normal and
+ * eye position (r_fragment_phong lights the fragment with them). */
 enum {
    R_FS_COLOR0,
    R_FS_COLOR1,
    R_FS_FOG,
    R_FS_AA,          /* the aapoint/aaline generic input */
    R_FS_TEX0,        /* R_FS_TEX0 + u: texture unit u */
-   R_FS_NUM_INPUTS = R_FS_TEX0 + R_MAX_TEX_UNITS,
+   R_FS_NORMAL = R_FS_TEX0 + R_MAX_TEX_UNITS,
+   R_FS_EYEPOS,
+   R_FS_NUM_INPUTS,
 };
 
 /* The vertex slot that feeds fragment-shader input `input`, for a front-
@@ -61,6 +72,8 @@ static inline int r_fs_slot(int input, bool back)
    case R_FS_COLOR1: return back ? R_ATTR_BCOLOR1 : R_ATTR_COLOR1;
    case R_FS_FOG:    return R_ATTR_FOG;
    case R_FS_AA:     return R_ATTR_AA;
+   case R_FS_NORMAL: return R_ATTR_NORMAL;
+   case R_FS_EYEPOS: return R_ATTR_EYEPOS;
    default:          return R_ATTR_TEX0 + (input - R_FS_TEX0);
    }
 }
@@ -416,6 +429,19 @@ struct r_state {
     * tracker's textured quad replaces the fragment shader; NULL for every
     * other primitive */
    const struct r_pixel_image *pix;
+
+   /* GL_PHONG_WIN with lighting (include/fixgl/shading.md): every
+    * fragment is lit by r_fragment_phong from the interpolated R_FS_NORMAL
+    * and R_FS_EYEPOS inputs (then among fs_inputs) with this environment;
+    * the lit colours replace the R_FS_COLOR0/COLOR1 inputs, whose
+    * interpolated value is the vertex colour (for colour material).  The
+    * face is the rasterizer's (shade_env.two_side: a back-facing triangle,
+    * or an unfilled back face's lines and points, use the back material). */
+   bool phong;
+   struct m_shade_env shade_env;
+   /* triangles take the face from the provoking vertex's R_ATTR_NORMAL w
+    * instead of their area (the smooth point and line quads, t_linepoint.c) */
+   bool phong_vertex_face;
 };
 
 /* The image a pixel rectangle samples (r_pixels.c), NEAREST with
@@ -497,6 +523,13 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
 void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
                            const struct r_fs_quad *quad, const struct r_tex_lod *lod,
                            float out[4]);
+
+/* GL_PHONG_WIN's lighting of one fragment (r_frag.c): replaces in's
+ * R_FS_COLOR0 (and R_FS_COLOR1) with m_shade_point's primary (and
+ * secondary) colour for the normal in[R_FS_NORMAL], the eye position
+ * in[R_FS_EYEPOS], the face `back` and the vertex colour in[R_FS_COLOR0].
+ * Called by the primitives before r_fragment_shader when rs->phong. */
+void r_fragment_phong(const struct r_state *rs, float in[][4], bool back);
 
 /* The smooth point/line lowering appended to the fragment shader
  * (r_aa.c): false if the fragment is discarded, else color's alpha is

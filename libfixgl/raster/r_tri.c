@@ -164,13 +164,15 @@ struct tri_shade {
    struct r_fs_quad quad;
    /* and the fast LOD of the quad for the units without `soa` */
    struct r_tex_lod lod[R_MAX_TEX_UNITS];
+   /* GL_PHONG_WIN: the face the fragments are lit with */
+   bool phong_back;
 };
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
  * the back-face slots for a back-facing two-sided triangle
  * (lp_state_setup.c:lp_twoside). */
 static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
-                        bool back, struct tri_shade *ts)
+                        bool back, bool phong_back, struct tri_shade *ts)
 {
    /* plain float arithmetic in llvmpipe's order */
    const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
@@ -203,6 +205,7 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    ts->quad_x = INT_MIN;   /* no quad cached */
    ts->quad_y = INT_MIN;
    ts->inputs = rs->fs_inputs;
+   ts->phong_back = phong_back;
    ts->need_w = false;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
       if (!(ts->inputs & (1u << a)))
@@ -302,6 +305,8 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
                        quad ? &ts->quad : NULL);
       return;
    }
+   if (rs->phong)
+      r_fragment_phong(rs, in, ts->phong_back);
    float color[4];
    if (rs->tex_units) {
       shade_textured(rs, ts, (const float (*)[4])in, px, py, color);
@@ -467,7 +472,7 @@ static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, i
  * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
  * provoking vertex. */
 static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const v[3],
-                          const int32_t X[3], const int32_t Y[3], bool back)
+                          const int32_t X[3], const int32_t Y[3], bool back, bool phong_back)
 {
    /* draw region, inclusive */
    const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
@@ -515,7 +520,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    }
    if (exact) {
       struct tri_shade ts;
-      setup_shade(rs, v, back, &ts);
+      setup_shade(rs, v, back, phong_back, &ts);
       if (rs->tex_units)
          rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
       else
@@ -524,7 +529,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    }
 
    struct tri_shade ts;
-   setup_shade(rs, v, back, &ts);
+   setup_shade(rs, v, back, phong_back, &ts);
    const struct r_shader sh = { tri_shade_pixel, &ts };
    r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, &sh);
 }
@@ -638,11 +643,19 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
    if (is_back ? rs->cull_back : rs->cull_front)
       return;
    const bool back = rs->twoside && is_back;
+   /* GL_PHONG_WIN lights a two-sided back face with the back material, by
+    * the same facing (gl_FrontFacing's), whether llvmpipe's setup or the
+    * draw module handles the two-sided colours; the smooth point and line
+    * quads take the face their vertices carry (front, or an unfilled
+    * polygon's face; r_state.phong_vertex_face) */
+   bool phong_back = false;
+   if (rs->phong && rs->shade_env.two_side)
+      phong_back = rs->phong_vertex_face ? v2->attr[R_ATTR_NORMAL][3] == 0.0f : is_back;
    if (area < 0) {
       /* clockwise: processed as (v1, v0, v2), keeping the provoking vertex */
       const struct r_vertex *t = v[0]; v[0] = v[1]; v[1] = t;
       int32_t ti = X[0]; X[0] = X[1]; X[1] = ti;
       ti = Y[0]; Y[0] = Y[1]; Y[1] = ti;
    }
-   rasterize_ccw(rs, v, X, Y, back);
+   rasterize_ccw(rs, v, X, Y, back, phong_back);
 }

@@ -113,6 +113,23 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
       }
    }
 
+   if (dp->unfilled && mode != GL_FILL && rs->phong) {
+      /* GL_PHONG_WIN: the lines and points of an unfilled face are lit
+       * with its face, which the vertices carry in R_ATTR_NORMAL's w (the
+       * front-face input that draw injects for them when the fragment
+       * shader reads gl_FrontFacing [S: draw_pipe_unfilled.c:
+       * inject_front_face_info]: front iff det < 0 with front_ccw, det > 0
+       * without) */
+      const bool front = dp->front_ccw ? det < 0.0f : det > 0.0f;
+      for (int i = 0; i < 3; i++) {
+         if (v[i] != &tmp[i]) {
+            tmp[i] = *v[i];
+            v[i] = &tmp[i];
+         }
+         tmp[i].attr[R_ATTR_NORMAL][3] = front ? 1.0f : 0.0f;
+      }
+   }
+
    if (dp->unfilled && mode == GL_LINE) {
       /* [S: draw_pipe_unfilled.c:lines] the stipple counter restarts at a
        * primitive's first triangle; edges v2->v0, v0->v1, v1->v2 */

@@ -12,17 +12,28 @@
  * add (no FMA), dot products summed from the last component, 1/sqrt(|x|)
  * for normalisation, and pow from gallivm's exp2/log2 approximations.  The
  * light vectors and the lighting space come from fgl_update_lighting.
+ *
+ * fixgl's shading extensions (include/fixgl/shading.md) leave that path
+ * untouched: when either face's reflectance model is Cook-Torrance, every
+ * vertex is lit by m_shade_point (math/m_shade.c) instead, and under
+ * GL_PHONG_WIN the lighting moves to the fragments (t_vertex.c calls
+ * t_phong.c instead of t_light; in GL_SELECT / GL_FEEDBACK the vertices
+ * are lit here, as under GL_SMOOTH).
  */
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
 #endif
 
+#include <fixgl/fixgl.h>
+
 #include "context.h"
 #include "math/m_gallivm.h"
+#include "math/m_shade.h"
 
 /* DP3 = (z*z' + y*y') + x*x' (NIR's reduction from the last component) */
 static inline float dp3(const float *a, const float *b)
@@ -293,6 +304,54 @@ struct material_source {
    unsigned stride;
 };
 
+/* GL_FIXGL_cook_torrance per vertex (GL_SMOOTH, GL_FLAT): m_shade_point
+ * in eye space for both faces.  A face left at GL_BLINN_PHONG_FIXGL in
+ * such a draw is lit by m_shade_point's Blinn-Phong too (the same
+ * equations as the oracle's program, not its rounding); draws where
+ * neither face is Cook-Torrance keep the oracle-exact path above.  The
+ * material of each vertex comes from src (the vertex colour where it is
+ * tracked, per-vertex values where the format has them, else the current
+ * ones), the reflectance parameters from the lighting state. */
+static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                        unsigned n, const struct material_source *src, struct t_vertex *out)
+{
+   struct m_shade_env env;
+   fgl_update_shade_env(ctx, &env);
+   env.color_material = 0;   /* src already reads the tracked colours */
+   const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
+
+   unsigned nstride;
+   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
+   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+
+   for (unsigned i = 0; i < n; i++) {
+      /* the eye-space normal n: the inverse-transpose of the modelview
+       * (gl_NormalMatrix * gl_Normal, column by column); m_shade_point
+       * normalises it, so GL_NORMALIZE and GL_RESCALE_NORMAL, which change
+       * only its length, are left out.  P: the modelview times the vertex,
+       * xyz (its w is ignored, as GL's lighting ignores it). */
+      const float *nin = normal + (size_t)i * nstride;
+      float nrm[3], P[4];
+      fgl_transform_normal(nrm, nin, mv->inv);
+      t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
+
+      for (int s = 0; s < sides; s++) {
+         struct m_shade_material *m = &env.material[s];
+         /* the face's attribute a + s (front/back attributes alternate) */
+#define MAT(a) (src[(a) + s].ptr + (size_t)i * src[(a) + s].stride)
+         memcpy(m->ambient, MAT(FGL_ATTR_MAT_FRONT_AMBIENT), sizeof(m->ambient));
+         memcpy(m->diffuse, MAT(FGL_ATTR_MAT_FRONT_DIFFUSE), sizeof(m->diffuse));
+         memcpy(m->specular, MAT(FGL_ATTR_MAT_FRONT_SPECULAR), sizeof(m->specular));
+         memcpy(m->emission, MAT(FGL_ATTR_MAT_FRONT_EMISSION), sizeof(m->emission));
+         m->shininess = MAT(FGL_ATTR_MAT_FRONT_SHININESS)[0];
+#undef MAT
+      }
+      float (*col)[4] = out[i].r.attr;
+      for (int s = 0; s < sides; s++)
+         m_shade_point(&env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
+   }
+}
+
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out)
 {
@@ -318,6 +377,15 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &src[a].stride);
       else
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
+   }
+
+   /* GL_FIXGL_cook_torrance: m_shade_point for both faces.  No oracle
+    * program computed an eye position for the fog coordinate: it is
+    * computed as without lighting. */
+   if (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
+       ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL) {
+      light_shade(ctx, in, n, src, out);
+      return false;
    }
 
    /* check_active_shininess: a shininess that varies, or is not 0 (the

@@ -70,6 +70,13 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out);
 
+/* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light, the vertex
+ * colour (R_ATTR_COLOR0), the
+ * eye-space normal (R_ATTR_NORMAL, w = 1: front) and the eye position
+ * (R_ATTR_EYEPOS) of n stored vertices, for r_fragment_phong. */
+void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+             struct t_vertex *out);
+
 /* The oracle's transformed normal (get_transformed_normal) of one vertex's
  * normal `in` (t_light.c). */
 void t_transformed_normal(const struct fgl_context *ctx, const float *in, float n[3]);

@@ -26,6 +26,7 @@
 #include "tnl/t_pipeline.h"
 
 #include <stdlib.h>
+#include <string.h>
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
 #endif
@@ -38,14 +39,52 @@
 struct render {
    struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
+   const struct fgl_vbo_vertex *in;   /* the stored vertices */
+   /* GL_PHONG_WIN with materials in the batch's vertex format (glMaterial
+    * between glBegin and glEnd): bit a - FGL_ATTR_MAT_FIRST for each */
+   unsigned phong_mats;
 };
 
-/* A triangle; `pipeline`: its vsplit segment takes draw's pipeline;
- * flags: draw's decomposition flags (T_EDGE_*, T_RESET_STIPPLE). */
+/* GL_PHONG_WIN (include/fixgl/shading.md): a primitive is lit with the
+ * material current at its provoking vertex pv; the properties the batch
+ * stores per vertex replace the shading environment's current ones
+ * (t_phong.c and r_fragment_phong read no material per vertex).  (Points
+ * and lines queued in the polygon stipple's vbuf batch, t_linepoint.c, are
+ * drawn with the material of the primitive that flushes them.) */
+static void phong_material(const struct render *r, unsigned pv)
+{
+   struct m_shade_env *env = &r->ctx->_Raster.shade_env;
+   const struct fgl_vbo_vertex *v = &r->in[pv];
+   for (unsigned m = r->phong_mats; m; m &= m - 1) {
+      const int a = FGL_ATTR_MAT_FIRST + __builtin_ctz(m);
+      struct m_shade_material *mat = &env->material[(a - FGL_ATTR_MAT_FIRST) & 1];
+      switch ((a - FGL_ATTR_MAT_FIRST) >> 1) {
+      case 0: memcpy(mat->ambient, v->attr[a], sizeof(mat->ambient)); break;
+      case 1: memcpy(mat->diffuse, v->attr[a], sizeof(mat->diffuse)); break;
+      case 2: memcpy(mat->specular, v->attr[a], sizeof(mat->specular)); break;
+      case 3: memcpy(mat->emission, v->attr[a], sizeof(mat->emission)); break;
+      case 4: mat->shininess = v->attr[a][0]; break;
+      default: break;   /* colour indexes */
+      }
+   }
+}
+
+/* A triangle with provoking vertex pv; `pipeline`: its vsplit segment
+ * takes draw's pipeline; flags: draw's decomposition flags (T_EDGE_*,
+ * T_RESET_STIPPLE). */
+static inline void tri_pv(const struct render *r, unsigned a, unsigned b, unsigned c,
+                          unsigned pv, bool pipeline, unsigned flags)
+{
+   if (r->phong_mats)
+      phong_material(r, pv);
+   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
+}
+
+/* A triangle whose last vertex is the provoking vertex. */
 static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned c,
                        bool pipeline, unsigned flags)
 {
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
+   tri_pv(r, a, b, c, c, pipeline, flags);
 }
 
 /* [S: draw_decompose_tmp.h] with the last vertex provoking: every
@@ -156,7 +195,7 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
             tri(r, i, i + 1, i + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
             tri(r, i + 1, i + 2, i + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri(r, i, i + 1, i + 2, pipeline, 0);
+            tri_pv(r, i, i + 1, i + 2, i + 3, pipeline, 0);
             tri(r, i, i + 2, i + 3, pipeline, 0);
          }
       }
@@ -215,14 +254,20 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE) {
          const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
          const bool pipeline = segment_clipped(r, s + seg, cnt);
-         for (unsigned i = seg; i < seg + cnt; i++)
+         for (unsigned i = seg; i < seg + cnt; i++) {
+            if (r->phong_mats)
+               phong_material(r, s + i);
             t_point(r->ctx, &r->v[s + i], pipeline);
+         }
       }
       break;
    case GL_LINES:
       /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
-      for (unsigned i = 0; i + 1 < n; i += 2)
+      for (unsigned i = 0; i + 1 < n; i += 2) {
+         if (r->phong_mats)
+            phong_material(r, s + i + 1);
          t_line(r->ctx, &r->v[s + i], &r->v[s + i + 1], true);
+      }
       break;
    case GL_LINE_STRIP:
    case GL_LINE_LOOP:
@@ -232,10 +277,16 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
        * strips keep this order and the counter, so they need no model. */
       if (n < 2)
          break;
-      for (unsigned i = 1; i < n; i++)
+      for (unsigned i = 1; i < n; i++) {
+         if (r->phong_mats)
+            phong_material(r, s + i);
          t_line(r->ctx, &r->v[s + i - 1], &r->v[s + i], i == 1);
-      if (p->mode == GL_LINE_LOOP)
+      }
+      if (p->mode == GL_LINE_LOOP) {
+         if (r->phong_mats)
+            phong_material(r, s);
          t_line(r->ctx, &r->v[s + n - 1], &r->v[s], false);
+      }
       break;
    default:
       break;
@@ -303,7 +354,16 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
    dp->edge_cull_back = edgeflag_culls && dp->fill_back != GL_FILL;
 
-   const struct render r = { ctx, tv };
+   /* GL_PHONG_WIN: the shading environment of the batch, with the current
+    * material (the materials in the vertex format, per primitive) */
+   unsigned phong_mats = 0;
+   if (ctx->_Raster.phong) {
+      fgl_update_shade_env(ctx, &ctx->_Raster.shade_env);
+      for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++)
+         if (ctx->Vbo.attr_size[a] != 0)
+            phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
+   }
+   const struct render r = { ctx, tv, verts, phong_mats };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program

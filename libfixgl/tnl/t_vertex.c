@@ -61,6 +61,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    unsigned cstride;
    const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
    const bool lit = ctx->Light.Enabled;
+   /* GL_PHONG_WIN: lit per fragment, from t_phong's varyings */
+   const bool phong = ctx->_Raster.phong;
    const bool fog = (ctx->_Raster.fs_inputs & (1u << R_FS_FOG)) != 0;
    /* [S: ffvertex_prog.c:make_state_key] in GL_FEEDBACK the vertex
     * program always writes TEX0 (for the feedback records); otherwise it
@@ -71,9 +73,10 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
       struct t_vertex *v = &out[i];
-      if (fog || ctx->_EnabledTexUnits) {
-         /* the colour slots below the fog slot that this draw does not
-          * use are still clipped and interpolated: give them a value */
+      if (fog || ctx->_EnabledTexUnits || phong) {
+         /* the colour slots below the fog slot (and the slots below the
+          * Phong varyings) that this draw does not use are still clipped
+          * and interpolated: give them a value */
          memset(v->r.attr, 0, sizeof(v->r.attr));
       }
       t_mul_mad_chain(v->clip, m, p);
@@ -100,12 +103,18 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       t_texcoord(ctx, in, n, tex_units, out);
 
    bool eye_position = false;
-   if (lit)
+   if (phong)
+      /* the fog coordinate then comes from its own eye z, as without
+       * lighting (the oracle's vertex program is not involved) */
+      t_phong(ctx, in, n, out);
+   else if (lit)
       eye_position = t_light(ctx, in, n, out);
 
-   /* draw_llvm.c do_clamp_vertex_color: every colour output */
+   /* draw_llvm.c do_clamp_vertex_color: every colour output; under
+    * GL_PHONG_WIN the vertex colour is a material input of the lighting
+    * per fragment, unclamped (as a generic varying of the reference) */
    const int nattr = ctx->_Raster.num_attribs;
-   const int ncolor = nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
+   const int ncolor = phong ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
    for (unsigned i = 0; i < n; i++)
       for (int a = 0; a < ncolor; a++)
          for (int k = 0; k < 4; k++)
