@@ -199,8 +199,9 @@ static void set_lights(const struct fv_scene *s, const struct fv_gl *gl, int w, 
    }
 }
 
-static void set_material(const struct fv_scene *s, const struct fv_gl *gl,
-                         const struct fv_material *m, struct fcr *ref)
+/* Returns 0, or -1 when the GLSL reference's program did not compile. */
+static int set_material(const struct fv_scene *s, const struct fv_gl *gl,
+                        const struct fv_material *m, struct fcr *ref)
 {
    if (!m->lit) {
 #ifdef FV_HAVE_FCR
@@ -209,7 +210,7 @@ static void set_material(const struct fv_scene *s, const struct fv_gl *gl,
 #endif
       gl->Disable(GL_LIGHTING);
       gl->Color4fv(m->diffuse);
-      return;
+      return 0;
    }
    gl->Enable(GL_LIGHTING);
    gl->Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, m->ambient);
@@ -230,9 +231,11 @@ static void set_material(const struct fv_scene *s, const struct fv_gl *gl,
    else {
       /* the GLSL reference reads the fixed-function state just set */
       const struct fcr_face f = { s->cook_torrance, s->roughness, s->metalness, 0.04f };
-      fcr_bind(ref, s->shade == FV_PHONG, &f, &f);
+      if (!fcr_bind(ref, s->shade == FV_PHONG, &f, &f))
+         return -1;
    }
 #endif
+   return 0;
 }
 
 static void draw_mesh(const struct fv_gl *gl, const struct fv_mesh *me)
@@ -242,9 +245,10 @@ static void draw_mesh(const struct fv_gl *gl, const struct fv_mesh *me)
    gl->DrawElements(GL_TRIANGLES, (GLsizei)me->num_idx, GL_UNSIGNED_INT, me->idx);
 }
 
-void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h,
-                   struct fcr *ref)
+int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h,
+                  struct fcr *ref)
 {
+   int rc = 0;
    float p[16], mv[16];
    projection(s, w, h, p);
    modelview(s, w, h, mv);
@@ -291,7 +295,8 @@ void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int 
          const struct fv_mesh *me = &s->model->meshes[i];
          if ((me->mat.diffuse[3] < 1.0f) != (pass == 1))
             continue;
-         set_material(s, gl, &me->mat, ref);
+         if (set_material(s, gl, &me->mat, ref) != 0)
+            rc = -1;
          draw_mesh(gl, me);
       }
    }
@@ -305,4 +310,5 @@ void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int 
    gl->DisableClientState(GL_VERTEX_ARRAY);
    gl->DisableClientState(GL_NORMAL_ARRAY);
    gl->Finish();
+   return rc;
 }

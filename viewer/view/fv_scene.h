@@ -55,8 +55,9 @@ struct fcr;
  * NULL draws with the fixed-function pipeline and fixgl's extensions
  * (GL_PHONG_WIN, GL_REFLECTANCE_MODEL_FIXGL); otherwise the GLSL reference
  * program (conformance/reference/fcr_shading.h) replaces them for Phong
- * and Cook-Torrance, on OSMesa.  Ends with glFinish. */
-void fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h,
-                   struct fcr *ref);
+ * and Cook-Torrance, on OSMesa.  Ends with glFinish.  Returns 0, or -1
+ * when the reference's program did not compile (its log on stderr). */
+int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h,
+                  struct fcr *ref);
 
 #endif

@@ -177,9 +177,9 @@ static void render_osmesa(int w, int h)
       }
    }
    double t0 = now_ms();
-   fv_scene_draw(&A.scene, fv_osmesa_gl(A.osmesa), w, h, ref);
+   int rc = fv_scene_draw(&A.scene, fv_osmesa_gl(A.osmesa), w, h, ref);
    A.osmesa_ms = now_ms() - t0;
-   A.osmesa_status = OSM_OK;
+   A.osmesa_status = rc == 0 ? OSM_OK : OSM_NO_REFERENCE;
 }
 
 /* The difference panel: equal pixels dimmed grey, differing ones by their

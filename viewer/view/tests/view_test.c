@@ -11,7 +11,8 @@
  *   view-test errors VIEW DIR MODEL
  *       a missing model, a model that is not one, bad options: a clear
  *       message naming the problem, exit status 1 (model) or 2 (usage), no
- *       output file
+ *       output file; without OSMesa (FIXGL_VIEW_OSMESA=none) --osmesa-out
+ *       fails saying so and the split view still renders
  *   view-test info VIEW DIR MODEL
  *       the OSMesa side really is Mesa (its GL_RENDERER names llvmpipe) and
  *       the fixgl side is fixgl
@@ -325,11 +326,36 @@ static int cmd_errors(const char *model)
    add(&a, "--screenshot"), add(&a, out), add(&a, model);
    failed += expect("screenshot-headless", &a, 2, "--screenshot needs a window", NULL);
 
+   /* without OSMesa: --osmesa-out fails saying why; the split view is
+    * still drawn, its OSMesa and difference panels a note */
+   static char no_osmesa[] = "FIXGL_VIEW_OSMESA=none";
+   char *env_none[] = { no_osmesa, NULL };
+   a = args_of("--headless");
+   add(&a, "--osmesa-out"), add(&a, out), add(&a, model);
+   int rc = run_view("no-osmesa", a.v, env_none, 30);
+   char *err = slurp(path_in("no-osmesa.err"));
+   if (rc != 1 || !strstr(err, "--osmesa-out: OSMesa disabled")) {
+      fprintf(stderr, "view-test: no-osmesa: exit %d, stderr \"%s\"\n", rc, err);
+      failed++;
+   }
+   free(err);
+   const char *split = path_in("split-no-osmesa.png");
+   a = args_of("--headless");
+   add(&a, "--split"), add(&a, "--size"), add(&a, "240x100"), add(&a, "--out"), add(&a, split);
+   add(&a, model);
+   rc = run_view("split-no-osmesa", a.v, env_none, 30);
+   char *so = slurp(path_in("split-no-osmesa.out"));
+   if (rc != 0 || !strstr(so, "OSMesa: OSMesa disabled") || access(split, F_OK) != 0) {
+      fprintf(stderr, "view-test: split-no-osmesa: exit %d, stdout \"%s\"\n", rc, so);
+      failed++;
+   }
+   free(so);
+
    if (access(out, F_OK) == 0) {
       fprintf(stderr, "view-test: a failed run wrote %s\n", out);
       failed++;
    }
-   printf("%d of 8 error cases as expected\n", 8 - failed);
+   printf("%d of 10 error cases as expected\n", 10 - failed);
    return failed ? 1 : 0;
 }
 
