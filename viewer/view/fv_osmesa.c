@@ -10,6 +10,15 @@
 
 #include "fv_osmesa.h"
 
+/* AddressSanitizer refuses RTLD_DEEPBIND (google/sanitizers issue 611): in
+ * a sanitized build the library gets a link-map namespace of its own
+ * instead, where fixgl's exports are not visible either. */
+#if defined(__SANITIZE_ADDRESS__)
+#define FV_DLOPEN(name) dlmopen(LM_ID_NEWLM, (name), RTLD_LOCAL | RTLD_NOW)
+#else
+#define FV_DLOPEN(name) dlopen((name), RTLD_LOCAL | RTLD_NOW | RTLD_DEEPBIND)
+#endif
+
 typedef OSMesaContext (*pfn_create_attribs)(const int *attribs, OSMesaContext share);
 typedef void (*pfn_destroy)(OSMesaContext ctx);
 typedef GLboolean (*pfn_make_current)(OSMesaContext ctx, void *buf, GLenum type, GLsizei w,
@@ -69,13 +78,12 @@ struct fv_osmesa *fv_osmesa_open(const char **why)
       *why = "out of memory";
       return NULL;
    }
-   const int flags = RTLD_LOCAL | RTLD_NOW | RTLD_DEEPBIND;
    if (env && *env) {
-      o->lib = dlopen(env, flags);
+      o->lib = FV_DLOPEN(env);
       snprintf(o->path, sizeof o->path, "%s", env);
    } else {
       for (size_t i = 0; !o->lib && i < sizeof names / sizeof names[0]; i++) {
-         o->lib = dlopen(names[i], flags);
+         o->lib = FV_DLOPEN(names[i]);
          snprintf(o->path, sizeof o->path, "%s", names[i]);
       }
    }

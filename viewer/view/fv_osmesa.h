@@ -10,7 +10,9 @@
  * OSMesaCreateContextExt -> OSMesaCreateContextAttribs, ...) resolve inside
  * the library instead of to fixgl's functions of the same name.  Every
  * entry point is taken with dlsym on the handle (OSMesaGetProcAddress for
- * what dlsym does not find).
+ * what dlsym does not find).  Built with AddressSanitizer, which refuses
+ * RTLD_DEEPBIND, the library is opened with dlmopen in a new link-map
+ * namespace instead.
  *
  * Mesa's GL context is current on the calling thread through libglapi;
  * the GLX context of a window (fv_present) is too, so fv_osmesa_begin must
