@@ -606,7 +606,6 @@ void fgl_update_state(struct fgl_context *ctx)
       }
       update_tex_units(ctx, rs);
       rs->phong = phong;
-      rs->phong_vertex_face = false;
       if (rs->phong) {
          rs->fs_inputs |= 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
          rs->num_attribs = R_ATTR_EYEPOS + 1;

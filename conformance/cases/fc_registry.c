@@ -34,6 +34,7 @@ static const fc_case *const groups[] = {
     fc_cases_tex_wrap,
     fc_cases_demo_tex,
     fc_cases_shading,
+    fc_cases_shading_paths,
 };
 
 size_t fc_case_count(void)

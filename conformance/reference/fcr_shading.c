@@ -56,6 +56,18 @@ enum {
     FCR_VERTEX_SHADER = 0x8B31,
     FCR_COMPILE_STATUS = 0x8B81,
     FCR_LINK_STATUS = 0x8B82,
+    FCR_TEXTURE_2D = 0x0DE1,
+    FCR_TEXTURE_ENV = 0x2300,
+    FCR_TEXTURE_ENV_MODE = 0x2200,
+    FCR_MODULATE = 0x2100,
+    FCR_FOG = 0x0B60,
+    FCR_FOG_MODE = 0x0B65,
+    FCR_FOG_DENSITY = 0x0B62,
+    FCR_FOG_START = 0x0B63,
+    FCR_FOG_END = 0x0B64,
+    FCR_LINEAR = 0x2601,
+    FCR_EXP = 0x0800,
+    FCR_EXP2 = 0x0801,
     FCR_MAX_LIGHTS = 8,
 };
 
@@ -68,12 +80,15 @@ struct key {
     int local_viewer, two_side, separate_specular, normalize, rescale;
     unsigned color_material;
     int model[2];               /* front, back: 1 = Cook-Torrance */
+    int texture;                /* GL_TEXTURE_2D on unit 0, GL_MODULATE */
+    int fog;                    /* 0, or 1 GL_LINEAR, 2 GL_EXP, 3 GL_EXP2 */
 };
 
 struct program {
     struct key key;
     fcr_uint prog;
     fcr_int loc_ct[2];          /* fcr_ct[0], fcr_ct[1]: roughness, metalness, f0 */
+    fcr_int loc_fog, loc_tex;
 };
 
 #define FCR_MAX_PROGRAMS 64
@@ -94,6 +109,10 @@ struct fcr {
     void (*DeleteProgram)(fcr_uint);
     fcr_int (*GetUniformLocation)(fcr_uint, const fcr_char *);
     void (*Uniform3f)(fcr_int, fcr_float, fcr_float, fcr_float);
+    void (*Uniform4f)(fcr_int, fcr_float, fcr_float, fcr_float, fcr_float);
+    void (*Uniform1i)(fcr_int, fcr_int);
+    void (*GetFloatv)(fcr_enum, fcr_float *);
+    void (*GetTexEnviv)(fcr_enum, fcr_enum, fcr_int *);
     void (*GetIntegerv)(fcr_enum, fcr_int *);
     fcr_boolean (*IsEnabled)(fcr_enum);
     void (*Enable)(fcr_enum);
@@ -258,12 +277,62 @@ static const char normal_glsl[] =
 /* Per vertex (GL_SMOOTH / GL_FLAT): the vertex stage lights both faces,
  * the rasterizer picks the face (GL_VERTEX_PROGRAM_TWO_SIDE) and
  * interpolates as glShadeModel says. */
+/* What the fixed-function vertex stage passes on besides the colours: the
+ * texture coordinate of unit 0 (identity texture matrix) and the fog
+ * coordinate |z_eye| (ffvertex_prog.c build_fog, with the eye position of
+ * the modelview's column chain, as when lighting computed it). */
+static const char vs_common_glsl[] =
+    "void fcr_vertex_common(vec3 P)\n"
+    "{\n"
+    "#if TEXTURE\n"
+    "   gl_TexCoord[0] = gl_MultiTexCoord0;\n"
+    "#endif\n"
+    "#if FOG\n"
+    "   gl_FogFragCoord = abs(P.z);\n"
+    "#endif\n"
+    "}\n";
+
+/* The fixed-function fragment stage after the lit colours, transcribed
+ * from Mesa's ff_fragment_shader.cpp (emit_instructions,
+ * emit_fog_instructions): GL_MODULATE with the unit 0 texture
+ * (textureProj, as the fixed-function lookup), the colour sum when the
+ * specular colour is separate, fog with Mesa's optimised parameters
+ * (fcr_fog = STATE_FOG_PARAMS_OPTIMIZED), nothing clamped before the
+ * colour buffer's conversion. */
+static const char fs_common_glsl[] =
+    "uniform sampler2D fcr_tex;\n"
+    "uniform vec4 fcr_fog;\n"
+    "vec4 fcr_fragment(vec4 pri, vec4 sec)\n"
+    "{\n"
+    "   precise vec4 cf = pri;\n"
+    "#if TEXTURE\n"
+    "   cf = textureProj(fcr_tex, gl_TexCoord[0]) * cf;\n"
+    "#endif\n"
+    "#if SEPARATE_SPECULAR\n"
+    "   cf.rgb = cf.rgb + sec.rgb;\n"
+    "#endif\n"
+    "#if FOG == 1\n"
+    "   precise float f = gl_FogFragCoord * fcr_fog.x + fcr_fog.y;\n"
+    "#elif FOG == 2\n"
+    "   precise float f = exp2(-(gl_FogFragCoord * fcr_fog.z));\n"
+    "#elif FOG == 3\n"
+    "   precise float t = gl_FogFragCoord * fcr_fog.w;\n"
+    "   precise float f = exp2(-(t * t));\n"
+    "#endif\n"
+    "#if FOG\n"
+    "   f = clamp(f, 0.0, 1.0);\n"
+    "   cf.rgb = gl_Fog.color.rgb * (1.0 - f) + cf.rgb * f;\n"
+    "#endif\n"
+    "   return cf;\n"
+    "}\n";
+
 static const char vs_vertex_glsl[] =
     "void main()\n"
     "{\n"
     "   gl_Position = ftransform();\n"
     "   vec3 n = fcr_eye_normal();\n"
     "   vec3 P = (gl_ModelViewMatrix * gl_Vertex).xyz;\n"
+    "   fcr_vertex_common(P);\n"
     "   vec4 pri, sec;\n"
     "   shade(n, P, false, gl_Color, pri, sec);\n"
     "   gl_FrontColor = pri;\n"
@@ -278,7 +347,7 @@ static const char vs_vertex_glsl[] =
 static const char fs_vertex_glsl[] =
     "void main()\n"
     "{\n"
-    "   gl_FragColor = clamp(vec4(gl_Color.rgb + gl_SecondaryColor.rgb, gl_Color.a), 0.0, 1.0);\n"
+    "   gl_FragColor = fcr_fragment(gl_Color, gl_SecondaryColor);\n"
     "}\n";
 
 /* Per fragment (GL_PHONG_WIN): normal, eye position and vertex colour
@@ -293,6 +362,7 @@ static const char vs_fragment_glsl[] =
     "   fcr_n = fcr_eye_normal();\n"
     "   fcr_p = (gl_ModelViewMatrix * gl_Vertex).xyz;\n"
     "   fcr_color = gl_Color;\n"
+    "   fcr_vertex_common(fcr_p);\n"
     "}\n";
 
 static const char fs_fragment_glsl[] =
@@ -303,7 +373,7 @@ static const char fs_fragment_glsl[] =
     "{\n"
     "   vec4 pri, sec;\n"
     "   shade(fcr_n, fcr_p, TWO_SIDE != 0 && !gl_FrontFacing, fcr_color, pri, sec);\n"
-    "   gl_FragColor = clamp(vec4(pri.rgb + sec.rgb, pri.a), 0.0, 1.0);\n"
+    "   gl_FragColor = fcr_fragment(pri, sec);\n"
     "}\n";
 
 /* ---- program building ------------------------------------------------- */
@@ -337,6 +407,10 @@ struct fcr *fcr_create(fcr_getproc getproc)
     GET(DeleteProgram, "glDeleteProgram");
     GET(GetUniformLocation, "glGetUniformLocation");
     GET(Uniform3f, "glUniform3f");
+    GET(Uniform4f, "glUniform4f");
+    GET(Uniform1i, "glUniform1i");
+    GET(GetFloatv, "glGetFloatv");
+    GET(GetTexEnviv, "glGetTexEnviv");
     GET(GetIntegerv, "glGetIntegerv");
     GET(IsEnabled, "glIsEnabled");
     GET(Enable, "glEnable");
@@ -381,7 +455,7 @@ static struct program *build(struct fcr *r, const struct key *k)
 {
     char defs[1024];
     int n = 0, nl = 0;
-    const char *vs[6], *fs[6];
+    const char *vs[6], *fs[5];
     fcr_uint v, f, prog;
     fcr_int ok = 0;
     struct program *p;
@@ -400,19 +474,21 @@ static struct program *build(struct fcr *r, const struct key *k)
     n += snprintf(defs + n, sizeof defs - (size_t)n,
                   "%s);\n#define LOCAL_VIEWER %d\n#define TWO_SIDE %d\n#define SEPARATE_SPECULAR %d\n"
                   "#define NORMALIZE %d\n#define RESCALE %d\n#define CM %u\n#define MODEL_FRONT %d\n"
-                  "#define MODEL_BACK %d\n", nl ? "" : "0", k->local_viewer, k->two_side,
-                  k->separate_specular, k->normalize, k->rescale, k->color_material, k->model[0],
-                  k->model[1]);
+                  "#define MODEL_BACK %d\n#define TEXTURE %d\n#define FOG %d\n", nl ? "" : "0",
+                  k->local_viewer, k->two_side, k->separate_specular, k->normalize, k->rescale,
+                  k->color_material, k->model[0], k->model[1], k->texture, k->fog);
     if (n >= (int)sizeof defs)
         return NULL;
     vs[0] = fs[0] = defs;
     vs[1] = fs[1] = shade_glsl;
     vs[2] = fs[2] = shade_lights_glsl;
     vs[3] = normal_glsl;
-    vs[4] = k->per_fragment ? vs_fragment_glsl : vs_vertex_glsl;
-    fs[3] = k->per_fragment ? fs_fragment_glsl : fs_vertex_glsl;
-    v = compile(r, FCR_VERTEX_SHADER, vs, 5);
-    f = compile(r, FCR_FRAGMENT_SHADER, fs, 4);
+    vs[4] = vs_common_glsl;
+    vs[5] = k->per_fragment ? vs_fragment_glsl : vs_vertex_glsl;
+    fs[3] = fs_common_glsl;
+    fs[4] = k->per_fragment ? fs_fragment_glsl : fs_vertex_glsl;
+    v = compile(r, FCR_VERTEX_SHADER, vs, 6);
+    f = compile(r, FCR_FRAGMENT_SHADER, fs, 5);
     if (!v || !f) {
         if (v)
             r->DeleteShader(v);
@@ -444,6 +520,8 @@ static struct program *build(struct fcr *r, const struct key *k)
     p->prog = prog;
     p->loc_ct[0] = r->GetUniformLocation(prog, "fcr_ct[0]");
     p->loc_ct[1] = r->GetUniformLocation(prog, "fcr_ct[1]");
+    p->loc_fog = r->GetUniformLocation(prog, "fcr_fog");
+    p->loc_tex = r->GetUniformLocation(prog, "fcr_tex");
     return p;
 }
 
@@ -499,6 +577,18 @@ int fcr_bind(struct fcr *r, int per_fragment, const struct fcr_face *front,
     k.color_material = color_material_bits(r);
     k.model[0] = face[0]->cook_torrance != 0;
     k.model[1] = face[1]->cook_torrance != 0;
+    if (r->IsEnabled(FCR_TEXTURE_2D)) {
+        r->GetTexEnviv(FCR_TEXTURE_ENV, FCR_TEXTURE_ENV_MODE, &v);
+        if (v != FCR_MODULATE) {
+            fprintf(stderr, "fcr: only GL_MODULATE texturing is emulated\n");
+            return 0;
+        }
+        k.texture = 1;
+    }
+    if (r->IsEnabled(FCR_FOG)) {
+        r->GetIntegerv(FCR_FOG_MODE, &v);
+        k.fog = v == FCR_LINEAR ? 1 : v == FCR_EXP ? 2 : 3;
+    }
 
     for (int i = 0; i < r->nprograms && !p; i++)
         if (memcmp(&r->programs[i].key, &k, sizeof k) == 0)
@@ -509,6 +599,19 @@ int fcr_bind(struct fcr *r, int per_fragment, const struct fcr_face *front,
     for (int f = 0; f < 2; f++)
         if (p->loc_ct[f] >= 0)
             r->Uniform3f(p->loc_ct[f], face[f]->roughness, face[f]->metalness, face[f]->f0);
+    if (p->loc_tex >= 0)
+        r->Uniform1i(p->loc_tex, 0);
+    if (p->loc_fog >= 0) {
+        /* [S: program/prog_statevars.c STATE_FOG_PARAMS_OPTIMIZED] */
+        fcr_float start = 0, end = 1, density = 1;
+        float val;
+        r->GetFloatv(FCR_FOG_START, &start);
+        r->GetFloatv(FCR_FOG_END, &end);
+        r->GetFloatv(FCR_FOG_DENSITY, &density);
+        val = end == start ? 1.0f : (float)(-1.0f / (end - start));
+        r->Uniform4f(p->loc_fog, val, end * -val, (float)(density * 1.44269504088896340736),
+                     (float)(density * 1.201122408786449815));
+    }
     if (k.two_side && !k.per_fragment)
         r->Enable(FCR_VERTEX_PROGRAM_TWO_SIDE);
     else

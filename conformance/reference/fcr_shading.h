@@ -16,9 +16,12 @@
  *   fcr_destroy(r);
  *
  * The program replaces the fixed-function vertex and fragment stages: its
- * output is the lit colour sum, primary + secondary.rgb clamped to [0, 1],
- * with the vertex position of ftransform() (bit-identical to the
- * fixed-function position).  No texturing and no fog. */
+ * output is the lit colour sum, primary + secondary.rgb, with the vertex
+ * position of ftransform() (bit-identical to the fixed-function position),
+ * then what the fixed-function fragment stage does with it as far as the
+ * cases need: a GL_MODULATE GL_TEXTURE_2D on unit 0 (identity texture
+ * matrix) and fog (GL_LINEAR, GL_EXP, GL_EXP2; fog coordinate = fragment
+ * depth).  Other texture environments make fcr_bind fail. */
 #ifndef FCR_SHADING_H
 #define FCR_SHADING_H
 
@@ -42,7 +45,8 @@ void fcr_destroy(struct fcr *r);
 /* Binds the program for the current fixed-function state, read back with
  * glGet / glIsEnabled: the enabled lights, GL_LIGHT_MODEL_LOCAL_VIEWER,
  * _TWO_SIDE and _COLOR_CONTROL, GL_COLOR_MATERIAL (face, parameter),
- * GL_NORMALIZE and GL_RESCALE_NORMAL.  Light and material values are read
+ * GL_NORMALIZE and GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_FOG and the fog
+ * mode, start, end and density.  Light and material values are read
  * by the program at draw time (gl_LightSource, gl_FrontMaterial, ...), so
  * they may change while it is bound; the state read here may not.
  * per_fragment: every fragment is lit with the interpolated eye-space

@@ -436,12 +436,13 @@ struct r_state {
     * the lit colours replace the R_FS_COLOR0/COLOR1 inputs, whose
     * interpolated value is the vertex colour (for colour material).  The
     * face is the rasterizer's (shade_env.two_side: a back-facing triangle,
-    * or an unfilled back face's lines and points, use the back material). */
+    * or an unfilled back face's lines and points, use the back material);
+    * the smooth point and line quads are triangles of their own, with the
+    * face their winding gives them under the aa stages' front_ccw (as
+    * llvmpipe's triangle setup decides gl_FrontFacing: from the area, never
+    * from the face draw's unfilled stage puts into the vertices). */
    bool phong;
    struct m_shade_env shade_env;
-   /* triangles take the face from the provoking vertex's R_ATTR_NORMAL w
-    * instead of their area (the smooth point and line quads, t_linepoint.c) */
-   bool phong_vertex_face;
 };
 
 /* The image a pixel rectangle samples (r_pixels.c), NEAREST with

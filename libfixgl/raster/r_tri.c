@@ -644,13 +644,9 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
       return;
    const bool back = rs->twoside && is_back;
    /* GL_PHONG_WIN lights a two-sided back face with the back material, by
-    * the same facing (gl_FrontFacing's), whether llvmpipe's setup or the
-    * draw module handles the two-sided colours; the smooth point and line
-    * quads take the face their vertices carry (front, or an unfilled
-    * polygon's face; r_state.phong_vertex_face) */
-   bool phong_back = false;
-   if (rs->phong && rs->shade_env.two_side)
-      phong_back = rs->phong_vertex_face ? v2->attr[R_ATTR_NORMAL][3] == 0.0f : is_back;
+    * this facing (gl_FrontFacing's [S: lp_setup_tri.c: the area sign]),
+    * smooth point and line quads included */
+   const bool phong_back = rs->phong && rs->shade_env.two_side && is_back;
    if (area < 0) {
       /* clockwise: processed as (v1, v0, v2), keeping the provoking vertex */
       const struct r_vertex *t = v[0]; v[0] = v[1]; v[1] = t;

@@ -40,9 +40,6 @@ static void aa_state(const struct r_state *rs, struct r_state *aa, enum r_aa_mod
    aa->ccw_is_front = true;
    aa->fs_inputs |= 1u << R_FS_AA;
    aa->aa = mode;
-   /* GL_PHONG_WIN: the quads are lit as the point or line they draw:
-    * front facing, or as the unfilled face their vertices carry */
-   aa->phong_vertex_face = true;
 }
 
 /* draw_pipe_aapoint.c:aapoint_point: a square of half size `radius` with

@@ -10,14 +10,16 @@
  * fixed-function vertex program would choose (_NeedEyeCoords): the normal
  * goes through the modelview's inverse transposed (GLSL's gl_NormalMatrix *
  * gl_Normal: the columns of the inverse transposed times x, y, z, summed
- * in that order), then GL_NORMALIZE (shading.md's normalize) or
+ * in that order), then GL_NORMALIZE (GLSL's normalize() on llvmpipe,
+ * v * 1/sqrt(dot(v, v)) with the dot from the last component) or
  * GL_RESCALE_NORMAL (times the eye-space normal scale, Mesa's
  * _ModelViewInvScaleEyespace [S: main/light.c:update_modelview_scale],
  * which is GLSL's gl_NormalScale); the eye position is the modelview's
  * column MUL/MAD chain (gl_ModelViewMatrix * gl_Vertex, get_eye_position).
  * These are not the oracle's fixed-function arithmetic (t_light.c) but
- * shading.md's, whose dot(a, b) sums x, y, z in that order; llvmpipe
- * lowers ffma, so each product and sum is rounded on its own.
+ * the GLSL reference's vertex stage (conformance/reference/fcr_shading.c)
+ * as llvmpipe runs it; it lowers ffma, so each product and sum is rounded
+ * on its own.
  */
 #include "tnl/t_pipeline.h"
 
