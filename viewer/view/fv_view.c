@@ -58,7 +58,12 @@ static struct {
    int renderer_osmesa;
    const char *out, *osmesa_out, *screenshot, *screenshot_x11;
    const char *key_list;
-   int script[256], num_script;   /* --keys: key table indices, one per frame */
+   struct scripted {
+      int key;                      /* key table index, or -1: a mouse action */
+      int button;                   /* 0 drag, 1 right drag, 2 wheel */
+      float dx, dy;
+   } script[256];                   /* --keys: one per frame */
+   int num_script;
    int quit;
 
    struct fv_model model;
@@ -316,6 +321,13 @@ static void write_png(const char *path, const struct frame *f)
       die("cannot write %s", path);
 }
 
+/* ---- mouse ---------------------------------------------------------------- */
+
+/* A drag by (dx, dy) pixels: the left button orbits the camera, the right
+ * one moves the selected light. */
+static void mouse_drag(int right, float dx, float dy);
+static void mouse_wheel(float steps);
+
 /* ---- keys ----------------------------------------------------------------- */
 
 static void key_shade(int mode, int ct)
@@ -448,28 +460,50 @@ static void k_help(void)
    print_keys(stdout);
 }
 
-/* --keys: the names of the key table, comma-separated. */
+/* --keys: the names of the key table and the mouse actions drag:DX:DY,
+ * rdrag:DX:DY and wheel:N, comma-separated. */
 static void parse_keys(const char *list)
 {
    char *copy = strdup(list), *save = NULL;
    for (char *t = strtok_r(copy, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+      struct scripted *sc = &A.script[A.num_script];
       size_t i = 0;
       while (i < sizeof keys / sizeof keys[0] && strcmp(keys[i].name, t))
          i++;
-      if (i == sizeof keys / sizeof keys[0] || A.num_script == 256) {
-         fprintf(stderr, "fixgl-view: --keys: no key \"%s\" (the names --help lists)\n", t);
+      char tail;
+      int ok = A.num_script < 256;
+      if (i < sizeof keys / sizeof keys[0]) {
+         sc->key = (int)i;
+      } else if (sscanf(t, "drag:%f:%f%c", &sc->dx, &sc->dy, &tail) == 2) {
+         sc->key = -1, sc->button = 0;
+      } else if (sscanf(t, "rdrag:%f:%f%c", &sc->dx, &sc->dy, &tail) == 2) {
+         sc->key = -1, sc->button = 1;
+      } else if (sscanf(t, "wheel:%f%c", &sc->dy, &tail) == 1) {
+         sc->key = -1, sc->button = 2;
+      } else {
+         ok = 0;
+      }
+      if (!ok) {
+         fprintf(stderr, "fixgl-view: --keys: no key or mouse action \"%s\" (see --help)\n", t);
          exit(2);
       }
-      A.script[A.num_script++] = (int)i;
+      A.num_script++;
    }
    free(copy);
 }
 
-/* The scripted key of this frame, pressed before it is rendered. */
+/* The scripted key or mouse action of this frame, before it is rendered. */
 static void scripted_key(int frame)
 {
-   if (frame < A.num_script)
-      keys[A.script[frame]].fn();
+   if (frame >= A.num_script)
+      return;
+   const struct scripted *sc = &A.script[frame];
+   if (sc->key >= 0)
+      keys[sc->key].fn();
+   else if (sc->button == 2)
+      mouse_wheel(sc->dy);
+   else
+      mouse_drag(sc->button, sc->dx, sc->dy);
 }
 
 static void usage(FILE *f)
@@ -512,8 +546,9 @@ static void usage(FILE *f)
       "                        through the system GL\n"
       "  --screenshot-x11 FILE window: after --frames, the window as the X server\n"
       "                        shows it\n"
-      "  --keys LIST           press these keys (names as below, comma-separated),\n"
-      "                        one per frame from the first: a scripted session\n"
+      "  --keys LIST           press these keys (names as below) and mouse actions\n"
+      "                        (drag:DX:DY, rdrag:DX:DY in pixels, wheel:N),\n"
+      "                        comma-separated, one per frame from the first\n"
       "  --info                print the model, the renderers and their extensions\n"
       "  --help                this help\n"
       "\n"
@@ -754,7 +789,12 @@ static void cb_cursor(GLFWwindow *w, double x, double y)
       return;
    float dx = (float)(x - A.drag_x), dy = (float)(y - A.drag_y);
    A.drag_x = x, A.drag_y = y;
-   if (A.drag_button == GLFW_MOUSE_BUTTON_LEFT) {
+   mouse_drag(A.drag_button != GLFW_MOUSE_BUTTON_LEFT, dx, dy);
+}
+
+static void mouse_drag(int right, float dx, float dy)
+{
+   if (!right) {
       A.scene.yaw += 0.4f * dx;
       A.scene.pitch = fmaxf(-90.0f, fminf(90.0f, A.scene.pitch + 0.4f * dy));
    } else {
@@ -764,11 +804,16 @@ static void cb_cursor(GLFWwindow *w, double x, double y)
    A.dirty = 1;
 }
 
+static void mouse_wheel(float steps)
+{
+   A.scene.zoom = fmaxf(0.05f, fminf(20.0f, A.scene.zoom * powf(1.1f, steps)));
+   A.dirty = 1;
+}
+
 static void cb_scroll(GLFWwindow *w, double dx, double dy)
 {
    (void)w, (void)dx;
-   A.scene.zoom = fmaxf(0.05f, fminf(20.0f, A.scene.zoom * powf(1.1f, (float)dy)));
-   A.dirty = 1;
+   mouse_wheel((float)dy);
 }
 
 static void cb_refresh(GLFWwindow *w)
