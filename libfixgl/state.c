@@ -607,6 +607,12 @@ void fgl_update_state(struct fgl_context *ctx)
       update_tex_units(ctx, rs);
       rs->phong = phong;
       if (rs->phong) {
+         /* r_fragment_phong writes the colour inputs: the secondary colour
+          * is never interpolated, the vertex colour only when colour
+          * material reads it */
+         rs->fs_inputs &= ~(1u << R_FS_COLOR1);
+         if (!ctx->Light.ColorMaterialEnabled)
+            rs->fs_inputs &= ~(1u << R_FS_COLOR0);
          rs->fs_inputs |= 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
          rs->num_attribs = R_ATTR_EYEPOS + 1;
       }

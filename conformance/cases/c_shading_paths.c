@@ -6,7 +6,8 @@
  * direct path and through draw's pipeline (the diagonal), two-sided
  * lighting while the draw module runs the pipeline for triangles
  * (GL_LINE_SMOOTH), smooth lines and points (draw's aaline/aapoint quads,
- * lit with the quads' own face), and the polygon stipple.
+ * lit with the quads' own face), stippled and wide lines, and the polygon
+ * stipple.
  *
  * Reference cases like c_shading.c's (tag reference, tolerance 1 LSB): on
  * fixgl the case calls glShadeModel(GL_PHONG_WIN); under FC_ORACLE it binds
@@ -360,6 +361,35 @@ static void phong_smooth_points(fc_h *h)
     glDisable(GL_POINT_SMOOTH);
 }
 
+/* Stippled and wide lines: draw's stipple stage cuts a line into
+ * segments whose ends (and their normals and eye positions) it lerps in
+ * window space, 1/w included. */
+static void phong_line_stipple(fc_h *h)
+{
+    sp_scene(h);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    lt_lamp(GL_LIGHT0, k_dim, k_warm, k_white, 0.5f, 0.8f, -2.5f, 1);
+    sp_begin(h);
+    glTranslatef(0, 0, -4);
+    glRotatef(-50, 1, 0, 0);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x3f5a);
+    for (int w = 1; w <= 3; w += 2) {
+        glLineWidth((float)w);
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i <= 10; i++) {
+            const float a = (float)(LT_PI * i / 10);
+            glNormal3f(cosf(a), 0.6f, sinf(a));
+            glVertex3f(1.6f * cosf(a), -0.6f + 0.8f * (float)w / 3.0f, 1.2f * sinf(a) - 0.4f);
+        }
+        glEnd();
+    }
+    glLineWidth(1);
+    glDisable(GL_LINE_STIPPLE);
+    fc_capture(h);
+    sp_end();
+}
+
 /* The polygon stipple's kill before the lighting of every fragment. */
 static void phong_polygon_stipple(fc_h *h)
 {
@@ -388,6 +418,7 @@ const fc_case fc_cases_shading_paths[] = {
     SP_CASE("shading/phong_quads", 64, 64, 1, phong_quads),
     SP_CASE("shading/phong_two_sided_smooth_lines", 64, 64, 1, phong_two_sided_smooth_lines),
     SP_CASE("shading/phong_smooth_points", 64, 48, 3, phong_smooth_points),
+    SP_CASE("shading/phong_line_stipple", 64, 64, 1, phong_line_stipple),
     SP_CASE("shading/phong_polygon_stipple", 48, 48, 1, phong_polygon_stipple),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
 };
