@@ -962,6 +962,36 @@ static void ct_texture_fog(fc_h *h)
     glDisable(GL_TEXTURE_2D);
 }
 
+/* Per-vertex Cook-Torrance with GL_RESCALE_NORMAL under a uniform scale,
+ * then GL_NORMALIZE with normals of length 2.5 under a non-uniform one:
+ * shading.md's n includes either before N = normalize(n). */
+static void ct_rescale_normalize(fc_h *h)
+{
+    struct fcr_face f = sh_ct(0.2f, 0.3f, 0.04f);
+    sh_scene(h);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    lt_lamp(GL_LIGHT0, k_dim, k_warm, k_white, 1, 1.5f, 1, 0);
+    lt_lamp(GL_LIGHT1, k_black, k_cool, k_white, -2, -1, -1, 1);
+    for (int pass = 0; pass < 2; pass++) {
+        glEnable(pass ? GL_NORMALIZE : GL_RESCALE_NORMAL);
+        sh_begin(h, SH_SMOOTH, &f, &f);
+        glLoadIdentity();
+        glTranslatef(0, 0, -4);
+        glRotatef(25, 1, 1, 0);
+        if (pass) {
+            glScalef(1.2f, 0.8f, 1.1f);
+            lt_sphere_n(1.1f, 32, 20, 2.5f);
+        } else {
+            glScalef(0.7f, 0.7f, 0.7f);
+            sh_sphere(1.9f, 32, 20, 0);
+        }
+        fc_capture(h);
+        sh_end();
+        glDisable(pass ? GL_NORMALIZE : GL_RESCALE_NORMAL);
+        lt_clear();
+    }
+}
+
 /* Perspective and a local viewer on a receding plane, rough metal. */
 static void ct_perspective(fc_h *h)
 {
@@ -1197,6 +1227,7 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/ct_flat", 64, 64, 1, "cook-torrance", ct_flat),
     SH_CASE("shading/ct_smooth_rough_005", 64, 64, 1, "cook-torrance", ct_smooth_rough_005),
     SH_CASE("shading/ct_dlist_varray", 64, 64, 1, "cook-torrance", ct_dlist_varray),
+    SH_CASE("shading/ct_rescale_normalize", 64, 64, 2, "cook-torrance", ct_rescale_normalize),
     SH_CASE("shading/ct_wave_clipped", 64, 48, 2, "phong cook-torrance", ct_wave_clipped),
     SH_CASE("shading/random_1", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
     SH_CASE("shading/random_2", 48, 48, 8, "phong cook-torrance random-shading", sh_random),

@@ -264,6 +264,44 @@ static void phong_quads(fc_h *h)
     sp_end();
 }
 
+/* Homogeneous vertices: w near 0 (a point far away, clipped by the view
+ * volume) and w negative, with an orthographic and a perspective
+ * projection; the eye position the lighting uses is the modelview times
+ * the vertex, xyz (its w ignored, shading.md), interpolated like every
+ * varying of the clipped polygon. */
+static void phong_homogeneous_w(fc_h *h)
+{
+    static const float v[3][4][4] = {
+        { { -0.8f, -0.7f, 0, 1 }, { 0.02f, 0.01f, 0, 0.015f }, { -0.6f, 0.8f, 0.1f, 1 }, { 0 } },
+        { { 0.1f, -0.9f, 0, 1 }, { 0.9f, -0.5f, 0.2f, 1 }, { 0.5f, 0.4f, -0.1f, -0.8f }, { 0 } },
+        { { -0.2f, 0.9f, 0, 0.5f }, { 0.9f, 0.9f, 0, 1 }, { 0.4f, 0.1f, 0, 0.05f }, { 0 } },
+    };
+    for (int persp = 0; persp < 2; persp++) {
+        if (persp)
+            sp_scene(h);
+        else {
+            lt_ortho(h, 1.0f);
+            glEnable(GL_LIGHTING);
+            lt_std_material();
+        }
+        glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+        lt_lamp(GL_LIGHT0, k_dim, k_warm, k_white, 0.2f, 0.3f, 0.5f, 1);
+        sp_begin(h);
+        if (persp)
+            glTranslatef(0, 0, -2.5f);
+        glBegin(GL_TRIANGLES);
+        for (int t = 0; t < 3; t++)
+            for (int c = 0; c < 3; c++) {
+                glNormal3f(v[t][c][0] + 0.2f, v[t][c][1] - 0.1f, 1);
+                glVertex4fv(v[t][c]);
+            }
+        glEnd();
+        fc_capture(h);
+        sp_end();
+        lt_clear();
+    }
+}
+
 /* ---- the draw module's stages -------------------------------------------- */
 
 /* Two-sided lighting with GL_LINE_SMOOTH on: fixed-function two-sided
@@ -416,6 +454,7 @@ const fc_case fc_cases_shading_paths[] = {
     SP_CASE("shading/phong_material_in_quads_lines", 64, 64, 1, phong_material_in_quads_lines),
     SP_CASE("shading/phong_color_unclamped", 48, 48, 1, phong_color_unclamped),
     SP_CASE("shading/phong_quads", 64, 64, 1, phong_quads),
+    SP_CASE("shading/phong_homogeneous_w", 64, 64, 2, phong_homogeneous_w),
     SP_CASE("shading/phong_two_sided_smooth_lines", 64, 64, 1, phong_two_sided_smooth_lines),
     SP_CASE("shading/phong_smooth_points", 64, 48, 3, phong_smooth_points),
     SP_CASE("shading/phong_line_stipple", 64, 64, 1, phong_line_stipple),
