@@ -323,16 +323,18 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
    unsigned nstride;
    const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
+   struct t_eye_normal en;
+   t_eye_normal_init(ctx, &en);
 
    for (unsigned i = 0; i < n; i++) {
-      /* the eye-space normal n: the inverse-transpose of the modelview
-       * (gl_NormalMatrix * gl_Normal, column by column); m_shade_point
-       * normalises it, so GL_NORMALIZE and GL_RESCALE_NORMAL, which change
-       * only its length, are left out.  P: the modelview times the vertex,
-       * xyz (its w is ignored, as GL's lighting ignores it). */
-      const float *nin = normal + (size_t)i * nstride;
+      /* the eye-space normal n as GL_PHONG_WIN's vertices have it
+       * (t_phong.c t_eye_normal: the inverse-transpose of the modelview,
+       * then GL_NORMALIZE or GL_RESCALE_NORMAL, whose rounding shows even
+       * though m_shade_point normalises again; shading.md).  P: the
+       * modelview times the vertex, xyz (its w is ignored, as GL's
+       * lighting ignores it). */
       float nrm[3], P[4];
-      fgl_transform_normal(nrm, nin, mv->inv);
+      t_eye_normal(&en, normal + (size_t)i * nstride, nrm);
       t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
 
       for (int s = 0; s < sides; s++) {

@@ -60,13 +60,37 @@ static float eye_normal_scale(const fgl_matrix *mv)
    return 1.0f / sqrtf(f);
 }
 
+void t_eye_normal_init(const struct fgl_context *ctx, struct t_eye_normal *en)
+{
+   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+   en->inv = mv->inv;
+   en->normalize = ctx->Transform.Normalize;
+   en->rescale = !en->normalize && ctx->Transform.RescaleNormals;
+   en->scale = en->rescale ? eye_normal_scale(mv) : 1.0f;
+}
+
+void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3])
+{
+   /* row r of the transposed inverse is column r of the inverse */
+   for (int r = 0; r < 3; r++)
+      n[r] = mat_row3(en->inv + 4 * r, in);
+   if (en->normalize) {
+      /* normalize(v) = v * (1/sqrt(dot(v, v))) */
+      const float k = 1.0f / sqrtf(dot3(n, n));
+      for (int r = 0; r < 3; r++)
+         n[r] *= k;
+   } else if (en->rescale) {
+      for (int r = 0; r < 3; r++)
+         n[r] *= en->scale;
+   }
+}
+
 void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out)
 {
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
-   const bool normalize = ctx->Transform.Normalize;
-   const bool rescale = !normalize && ctx->Transform.RescaleNormals;
-   const float scale = rescale ? eye_normal_scale(mv) : 1.0f;
+   struct t_eye_normal en;
+   t_eye_normal_init(ctx, &en);
    unsigned cstride, nstride;
    const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
    const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
@@ -81,20 +105,8 @@ void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       memcpy(attr[R_ATTR_COLOR0], c, sizeof(attr[0]));
       memcpy(attr[R_ATTR_COLOR1], no_secondary, sizeof(attr[0]));
 
-      const float *nin = normal + (size_t)i * nstride;
       float *nrm = attr[R_ATTR_NORMAL];
-      /* row r of the transposed inverse is column r of the inverse */
-      for (int r = 0; r < 3; r++)
-         nrm[r] = mat_row3(mv->inv + 4 * r, nin);
-      if (normalize) {
-         /* normalize(v) = v * (1/sqrt(dot(v, v))) */
-         const float k = 1.0f / sqrtf(dot3(nrm, nrm));
-         for (int r = 0; r < 3; r++)
-            nrm[r] *= k;
-      } else if (rescale) {
-         for (int r = 0; r < 3; r++)
-            nrm[r] *= scale;
-      }
+      t_eye_normal(&en, normal + (size_t)i * nstride, nrm);
       /* the face: front (the unfilled stage marks a back face's lines and
        * points, t_draw_pipe.c) */
       nrm[3] = 1.0f;

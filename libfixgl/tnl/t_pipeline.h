@@ -70,6 +70,19 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out);
 
+/* The eye-space normal of shading.md (t_phong.c): GL_PHONG_WIN's vertex
+ * normal, and the n of per-vertex Cook-Torrance (t_light.c): the
+ * inverse-transpose modelview times the normal, then GL_NORMALIZE or
+ * GL_RESCALE_NORMAL, in the GLSL reference's arithmetic.  t_eye_normal_init
+ * reads the state once per batch. */
+struct t_eye_normal {
+   const float *inv;          /* the modelview's inverse */
+   bool normalize, rescale;
+   float scale;               /* the eye-space normal scale */
+};
+void t_eye_normal_init(const struct fgl_context *ctx, struct t_eye_normal *en);
+void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3]);
+
 /* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light, the vertex
  * colour (R_ATTR_COLOR0), the
  * eye-space normal (R_ATTR_NORMAL, w = 1: front) and the eye position
