@@ -24,6 +24,19 @@
  *           (GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_MODULATE) on a floor
  *           receding to the horizon plus a GL_LINEAR-textured wall, the
  *           whole screen textured, perspective, depth test
+ *   phong   fixgl's per-fragment lighting (GL_PHONG_WIN, include/fixgl/
+ *           shading.md): the 20,000-triangle sphere seen from close enough
+ *           that its front half covers every pixel (back faces culled, so
+ *           one lit fragment per pixel, 786,432 a frame), Blinn-Phong, a
+ *           white directional light and a warm attenuated point light
+ *   ctphong the same with GL_FIXGL_cook_torrance per fragment (a
+ *           half-metallic material)
+ *   ctsmooth the same Cook-Torrance per vertex (GL_SMOOTH)
+ * OSMesa has neither extension: for the last three scenes its build binds
+ * the GLSL reference of the conformance suite (conformance/reference/
+ * fcr_shading.c, through OSMesaGetProcAddress), which evaluates the same
+ * equations on llvmpipe; the reference cases are bit-exact, so the frames
+ * are the same.
  *
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
@@ -33,6 +46,12 @@
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
+
+#ifdef BENCH_ORACLE
+#include "fcr_shading.h"
+#else
+#include <fixgl/fixgl.h>
+#endif
 
 #include <math.h>
 #include <stdint.h>
@@ -509,6 +528,103 @@ static void draw_texfloor(void)
   glFinish();
 }
 
+/* The shading scenes (phong, ctphong, ctsmooth): lit_large from 1.9 units
+ * with a 0.48 x 0.36 window at 0.5, so that the silhouette (half-angle
+ * tangent 0.619) encloses the screen's corners (0.6); back faces culled. */
+enum shading { SHADE_PHONG, SHADE_CT_PHONG, SHADE_CT_SMOOTH };
+
+#ifdef BENCH_ORACLE
+static struct fcr *reference;
+#endif
+
+static void draw_shading(enum shading mode)
+{
+  static const GLfloat sun_pos[4] = { 1.0f, 1.0f, 2.0f, 0.0f };
+  static const GLfloat lamp_pos[4] = { -1.5f, 0.8f, -0.5f, 1.0f };
+  static const GLfloat white[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+  static const GLfloat black[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
+  static const GLfloat warm[4] = { 1.0f, 0.7f, 0.4f, 1.0f };
+  static const GLfloat diffuse[4] = { 0.9f, 0.5f, 0.2f, 1.0f };
+  static const GLfloat ambient[4] = { 0.3f, 0.15f, 0.05f, 1.0f };
+  const int cook_torrance = mode != SHADE_PHONG;
+  const int per_fragment = mode != SHADE_CT_SMOOTH;
+#ifdef BENCH_ORACLE
+  const struct fcr_face face = { cook_torrance, 0.35f, 0.5f, 0.04f };
+#endif
+
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.24, 0.24, -0.18, 0.18, 0.5, 10.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glLightfv(GL_LIGHT0, GL_POSITION, sun_pos);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, white);
+  glLightfv(GL_LIGHT1, GL_POSITION, lamp_pos);
+  glLightfv(GL_LIGHT1, GL_AMBIENT, black);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, warm);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, warm);
+  glLightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.25f);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, white);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0f);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  glEnable(GL_CULL_FACE);
+  glFrontFace(GL_CW);   /* build_lit_sphere winds clockwise seen from outside */
+  glShadeModel(GL_SMOOTH);
+#ifdef BENCH_ORACLE
+  if (!reference && !(reference = fcr_create((fcr_getproc)OSMesaGetProcAddress))) {
+    fprintf(stderr, "bench: the GLSL reference is not available\n");
+    exit(1);
+  }
+  if (!fcr_bind(reference, per_fragment, &face, &face)) {
+    fprintf(stderr, "bench: the GLSL reference does not bind\n");
+    exit(1);
+  }
+#else
+  glMateriali(GL_FRONT_AND_BACK, GL_REFLECTANCE_MODEL_FIXGL,
+              cook_torrance ? GL_COOK_TORRANCE_FIXGL : GL_BLINN_PHONG_FIXGL);
+  glMaterialf(GL_FRONT_AND_BACK, GL_ROUGHNESS_FIXGL, 0.35f);
+  glMaterialf(GL_FRONT_AND_BACK, GL_METALNESS_FIXGL, 0.5f);
+  glMaterialf(GL_FRONT_AND_BACK, GL_DIELECTRIC_F0_FIXGL, 0.04f);
+  if (per_fragment)
+    glShadeModel(GL_PHONG_WIN);
+#endif
+  glTranslatef(0.0f, 0.0f, -1.9f);
+  glRotatef(30.0f, 1.0f, 1.0f, 0.0f);
+  submit_lit(lit_large, SPHERE_STACKS * SPHERE_SLICES * 6);
+#ifdef BENCH_ORACLE
+  fcr_unbind(reference);
+#else
+  glMateriali(GL_FRONT_AND_BACK, GL_REFLECTANCE_MODEL_FIXGL, GL_BLINN_PHONG_FIXGL);
+#endif
+  glShadeModel(GL_SMOOTH);
+  glFrontFace(GL_CCW);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_LIGHT1);
+  glDisable(GL_LIGHTING);
+  glFinish();
+}
+
+static void draw_phong(void)
+{
+  draw_shading(SHADE_PHONG);
+}
+
+static void draw_ctphong(void)
+{
+  draw_shading(SHADE_CT_PHONG);
+}
+
+static void draw_ctsmooth(void)
+{
+  draw_shading(SHADE_CT_SMOOTH);
+}
+
 static double now(void)
 {
   struct timespec ts;
@@ -599,8 +715,14 @@ int main(int argc, char **argv)
   run_scene("lit20k", draw_lit20k, seconds, buf);
   run_scene("gears", draw_gears, seconds, buf);
   run_scene("texfloor", draw_texfloor, seconds, buf);
+  run_scene("phong", draw_phong, seconds, buf);
+  run_scene("ctphong", draw_ctphong, seconds, buf);
+  run_scene("ctsmooth", draw_ctsmooth, seconds, buf);
 
   GLenum err = glGetError();
+#ifdef BENCH_ORACLE
+  fcr_destroy(reference);
+#endif
   OSMesaDestroyContext(ctx);
   free(buf);
   if (err != GL_NO_ERROR) {

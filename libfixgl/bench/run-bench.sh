@@ -5,6 +5,8 @@
 # number of threads) and OSMesa with LP_NUM_THREADS=1, then prints frames per
 # second per scene and the ratio fixgl/OSMesa for both OSMesa modes.
 # The "same image" column compares the checksums of the last frames.
+# The shading scenes (phong, ctphong, ctsmooth) use fixgl's extensions; the
+# OSMesa build binds the conformance suite's GLSL reference for them.
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 ]]; then
@@ -55,4 +57,7 @@ awk '
 echo
 echo "OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1;"
 echo "same = last frame of fixgl identical to OSMesa's (lit200, lit20k and gears"
-echo "are lit)."
+echo "are lit).  phong, ctphong, ctsmooth: fixgl's GL_PHONG_WIN and"
+echo "GL_FIXGL_cook_torrance (per fragment, per vertex) against llvmpipe running the"
+echo "same equations as GLSL (conformance/reference/fcr_shading.c); 786,432 lit"
+echo "fragments a frame."
