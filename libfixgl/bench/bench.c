@@ -38,7 +38,8 @@
  * equations on llvmpipe; the reference cases are bit-exact, so the frames
  * are the same.
  *
- * Usage: fixgl-bench-* [SECONDS_PER_SCENE]   (default 2)
+ * Usage: fixgl-bench-* [SECONDS_PER_SCENE [SCENE...]]   (default 2, every
+ * scene)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
  * Output, one line per scene:  scene NAME fps X frames N checksum C
  * The checksum (FNV-1a of the last frame) tells whether both libraries drew
@@ -688,7 +689,7 @@ int main(int argc, char **argv)
 {
   double seconds = argc > 1 ? atof(argv[1]) : 2.0;
   if (!(seconds > 0.0)) {
-    fprintf(stderr, "usage: %s [SECONDS_PER_SCENE]\n", argv[0]);
+    fprintf(stderr, "usage: %s [SECONDS_PER_SCENE [SCENE...]]\n", argv[0]);
     return 2;
   }
 
@@ -709,15 +710,21 @@ int main(int argc, char **argv)
   build_lit_sphere(lit_large, SPHERE_STACKS, SPHERE_SLICES);
   build_gears();
   build_texture();
-  run_scene("soup", draw_soup, seconds, buf);
-  run_scene("sphere", draw_sphere, seconds, buf);
-  run_scene("lit200", draw_lit200, seconds, buf);
-  run_scene("lit20k", draw_lit20k, seconds, buf);
-  run_scene("gears", draw_gears, seconds, buf);
-  run_scene("texfloor", draw_texfloor, seconds, buf);
-  run_scene("phong", draw_phong, seconds, buf);
-  run_scene("ctphong", draw_ctphong, seconds, buf);
-  run_scene("ctsmooth", draw_ctsmooth, seconds, buf);
+  static const struct {
+    const char *name;
+    void (*frame)(void);
+  } scenes[] = {
+    { "soup", draw_soup },       { "sphere", draw_sphere },     { "lit200", draw_lit200 },
+    { "lit20k", draw_lit20k },   { "gears", draw_gears },       { "texfloor", draw_texfloor },
+    { "phong", draw_phong },     { "ctphong", draw_ctphong },   { "ctsmooth", draw_ctsmooth },
+  };
+  for (size_t i = 0; i < sizeof(scenes) / sizeof(scenes[0]); i++) {
+    int wanted = argc <= 2;
+    for (int a = 2; a < argc; a++)
+      wanted |= strcmp(argv[a], scenes[i].name) == 0;
+    if (wanted)
+      run_scene(scenes[i].name, scenes[i].frame, seconds, buf);
+  }
 
   GLenum err = glGetError();
 #ifdef BENCH_ORACLE
