@@ -863,4 +863,8 @@ void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env
             env->color_material |= cm[i].bit << M_SHADE_CM_BACK_SHIFT;
       }
    }
+
+   /* the values that are the same at every point, for m_shade_fragment
+    * (t_render.c's per-primitive materials change no input of them) */
+   m_shade_prepare(env);
 }

@@ -7,8 +7,8 @@
  * GL_SMOOTH/GL_FLAT is NOT this code: it is t_light.c's replica of the
  * oracle's fixed-function vertex program.
  *
- * The context fills an m_shade_env at validation time (state.c); the
- * evaluation trusts it.
+ * The context fills an m_shade_env at validation time (main/light.c
+ * fgl_update_shade_env, once per batch); the evaluation trusts it.
  */
 #ifndef FGL_M_SHADE_H
 #define FGL_M_SHADE_H
@@ -51,6 +51,28 @@ enum {
    M_SHADE_CM_BACK_SHIFT = 4,         /* the back face's bits are << 4 */
 };
 
+/* What the equations compute from the lights, the light model and the
+ * reflectance parameters alone, the same at every point (m_shade_prepare):
+ * the same operations as shading.md writes them per point, done once. */
+struct m_shade_light_prep {
+   float L[3];       /* p.w == 0: normalize(p.xyz); else p.xyz / p.w */
+   float H[3];       /* p.w == 0 without local viewer: normalize(L + (0, 0, 1)) */
+   float spot;       /* p.w == 0: the spot factor (1 without a spot) */
+};
+
+struct m_shade_material_prep {   /* Cook-Torrance */
+   float a2;                     /* alpha*alpha, alpha = r*r, r = max(roughness, 1/32) */
+   float a2_minus_1;             /* a2 - 1 */
+   float k, one_minus_k;         /* (r + 1)*(r + 1) / 8, 1 - k */
+   float metal, one_minus_metal; /* m, 1 - m */
+   float f0_dielectric;          /* f0 * (1 - m), F0's first term */
+};
+
+struct m_shade_prep {
+   struct m_shade_light_prep light[M_SHADE_MAX_LIGHTS];
+   struct m_shade_material_prep material[2];
+};
+
 struct m_shade_env {
    unsigned num_lights;       /* the enabled lights, in index order */
    struct m_shade_light light[M_SHADE_MAX_LIGHTS];
@@ -58,6 +80,9 @@ struct m_shade_env {
    bool local_viewer, two_side, separate_specular;
    struct m_shade_material material[2];   /* front, back */
    unsigned color_material;
+   /* filled by m_shade_prepare from the fields above, for
+    * m_shade_fragment; depends on no material colour nor the shininess */
+   struct m_shade_prep prep;
 };
 
 /* Lights one point: n the eye-space normal (normalised here), p the eye
@@ -70,5 +95,16 @@ struct m_shade_env {
  */
 void m_shade_point(const struct m_shade_env *env, const float n[3], const float p[3],
                    bool back, const float color[4], float primary[4], float secondary[4]);
+
+/* Fills env->prep from the lights, the light model and the reflectance
+ * parameters of env.  Call it again after changing any of them; the
+ * material colours and shininess may change without it (they are read per
+ * point). */
+void m_shade_prepare(struct m_shade_env *env);
+
+/* m_shade_point with env->prep (m_shade_prepare) instead of computing it
+ * for the point: the same bits, for the per-fragment path. */
+void m_shade_fragment(const struct m_shade_env *env, const float n[3], const float p[3],
+                      bool back, const float color[4], float primary[4], float secondary[4]);
 
 #endif /* FGL_M_SHADE_H */

@@ -699,12 +699,14 @@ fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs
  * fragment, from its perspective-correctly interpolated normal and eye
  * position; the vertex colour (interpolated like them) is read only for
  * colour material.  The lit colours take the place of the interpolated
- * colour inputs, so texturing, the colour sum and fog follow unchanged. */
+ * colour inputs, so texturing, the colour sum and fog follow unchanged.
+ * The environment's point-independent values were prepared with it, once
+ * per batch (fgl_update_shade_env). */
 void r_fragment_phong(const struct r_state *rs, float in[][4], bool back)
 {
    float primary[4], secondary[4];
-   m_shade_point(&rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
-                 primary, secondary);
+   m_shade_fragment(&rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
+                    primary, secondary);
    for (int c = 0; c < 4; c++) {
       in[R_FS_COLOR0][c] = primary[c];
       in[R_FS_COLOR1][c] = secondary[c];
