@@ -29,7 +29,8 @@
  * (GL_PHONG_WIN) or (25%, Cook-Torrance front face) per vertex under
  * GL_SMOOTH or GL_FLAT.
  *
- * The calls are not traced (FC_TRACE prints only the case header). */
+ * The calls are not traced: FC_TRACE prints the case header and the
+ * scene's structure (describe()). */
 #include "fc_random.h"
 #include "fc_rng.h"
 #include "lt_util.h"
@@ -39,6 +40,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+extern FILE *fc_trace_out;   /* fc_trace.c; its wrappers (fc_trace.h) are not used */
 
 /* ---- the scene's structure (also decides the tags) ---------------------- */
 
@@ -95,6 +98,25 @@ static void make_profile(uint64_t seed, uint32_t index, struct profile *p)
     p->colored = fc_rng_chance(&r, 40);
     p->textured = fc_rng_chance(&r, 25);
     p->fog = fc_rng_chance(&r, 30) ? (int)fogs[fc_rng_below(&r, 3)] : 0;
+}
+
+/* The structure of a scene as a comment of the FC_TRACE output. */
+static void describe(const struct profile *p)
+{
+    static const char *const modes[3] = { "GL_PHONG_WIN", "GL_SMOOTH", "GL_FLAT" };
+    static const char *const shapes[4] = { "sphere", "wave", "quad", "disc" };
+    static const char *const paths[4] = { "immediate", "dlist", "arrays", "elements" };
+    const struct fcr_face *f[2] = { &p->front, &p->back };
+    if (!fc_trace_out)
+        return;
+    fprintf(fc_trace_out, "/* %s", modes[p->mode]);
+    for (int i = 0; i < 2; i++)
+        fprintf(fc_trace_out, ", %s %s roughness %a metalness %a f0 %a", i ? "back" : "front",
+                f[i]->cook_torrance ? "cook-torrance" : "blinn-phong", f[i]->roughness,
+                f[i]->metalness, f[i]->f0);
+    fprintf(fc_trace_out, ", %s%s as 0x%x polygon mode 0x%x, %s%s%s fog 0x%x */\n",
+            shapes[p->shape], p->alt_prim ? " (alt)" : "", p->as, p->polygon_mode, paths[p->path],
+            p->colored ? ", colour material" : "", p->textured ? ", textured" : "", p->fog);
 }
 
 /* ---- the geometry, built once, then emitted by the scene's path ---------- */
@@ -410,6 +432,7 @@ static void shading_scene(fc_h *h)
 
     fc_random_shading_parse(c->name, &seed, &index);
     make_profile(seed, index, &p);
+    describe(&p);
     r = fc_rng_make(seed, index, 22);
 
     /* perspective: camera at the origin looking down -z, the object at
