@@ -20,11 +20,11 @@
  * the near plane, big triangles with a highlight inside one triangle,
  * points and lines, polygon modes, display lists, vertex arrays,
  * GL_NORMALIZE and GL_RESCALE_NORMAL, a clipped height field, texturing,
- * the colour sum and the three fog modes after the lit colour, random
- * scenes of all of it, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
- * and GL_PHONG_WIN without lighting. */
+ * the colour sum and the three fog modes after the lit colour, per-vertex Cook-Torrance under GL_SMOOTH and GL_FLAT,
+ * and GL_PHONG_WIN without lighting.  Random scenes of all of it are the
+ * random-shading family (random/fc_random_shading.c). */
 #include "lt_util.h"
-#include "fcr_shading.h"
+#include "sh_util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -36,8 +36,6 @@
 #endif
 
 /* ---- the shading under test ------------------------------------------- */
-
-enum sh_mode { SH_PHONG, SH_SMOOTH, SH_FLAT };
 
 static const struct fcr_face sh_blinn = { 0, 0.5f, 0.0f, 0.04f };
 
@@ -65,7 +63,7 @@ static void sh_face(GLenum face, const struct fcr_face *f)
  * the reference compiles in (enabled lights, light model, colour material,
  * GL_NORMALIZE / GL_RESCALE_NORMAL; fcr_shading.h); light and material
  * colours may change afterwards.  Records whether the reference bound. */
-static void sh_begin(fc_h *h, enum sh_mode mode, const struct fcr_face *front, const struct fcr_face *back)
+void sh_begin(fc_h *h, enum sh_mode mode, const struct fcr_face *front, const struct fcr_face *back)
 {
 #ifdef FC_ORACLE
     int ok;
@@ -84,7 +82,7 @@ static void sh_begin(fc_h *h, enum sh_mode mode, const struct fcr_face *front, c
 
 /* Back to fixed-function GL_SMOOTH Blinn-Phong (the reference released;
  * every case calls it before it returns). */
-static void sh_end(void)
+void sh_end(void)
 {
 #ifdef FC_ORACLE
     if (sh_ref) {
@@ -107,11 +105,11 @@ static const float k_cool[3] = { 0.4f, 0.6f, 1.0f };
 static const float k_black[3] = { 0, 0, 0 };
 
 /* Texture coordinates on sh_sphere's vertices (longitude, latitude). */
-static int sh_texcoords;
+int sh_texcoords;
 
 /* Sphere with unit normals and, when colored, a hue per vertex (colour
  * material), one triangle strip per stack. */
-static void sh_sphere(float r, int slices, int stacks, int colored)
+void sh_sphere(float r, int slices, int stacks, int colored)
 {
     for (int i = 0; i < stacks; i++) {
         double lat[2] = { LT_PI * i / stacks - LT_PI / 2, LT_PI * (i + 1) / stacks - LT_PI / 2 };
@@ -645,7 +643,7 @@ static void phong_polygon_mode(fc_h *h)
 }
 
 /* A smooth 8x8 RGBA texture (GL_LINEAR, GL_REPEAT, GL_MODULATE). */
-static void sh_texture(void)
+void sh_texture(void)
 {
     static unsigned char img[8 * 8 * 4];
     for (int y = 0; y < 8; y++)
@@ -1030,153 +1028,6 @@ static void ct_wave_clipped(fc_h *h)
     }
 }
 
-/* ---- random scenes -------------------------------------------------------- */
-
-/* splitmix64: a scene is a pure function of its seed */
-static unsigned long long sh_rng;
-
-static float sh_rand(void)
-{
-    unsigned long long z = (sh_rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (float)(z >> 40) / 16777216.0f;
-}
-
-static float sh_range(float a, float b)
-{
-    return a + (b - a) * sh_rand();
-}
-
-static int sh_pick(int n)
-{
-    int k = (int)(sh_rand() * (float)n);
-    return k < n ? k : n - 1;
-}
-
-static struct fcr_face sh_rand_face(void)
-{
-    struct fcr_face f;
-    static const float rough[6] = { 0, 0.05f, 0.25f, 0.5f, 1, -1 };
-    f.cook_torrance = sh_rand() < 0.6f;
-    f.roughness = rough[sh_pick(6)];
-    if (f.roughness < 0)
-        f.roughness = sh_rand();
-    f.metalness = sh_rand() < 0.3f ? 0.0f : sh_rand() < 0.5f ? 1.0f : sh_rand();
-    f.f0 = sh_rand() < 0.5f ? 0.04f : sh_rand();
-    return f;
-}
-
-/* One random lit scene: 1-4 lights of every kind given under random
- * modelviews, the light model, both materials, colour material, normal
- * rescaling, blending, and a sphere, a height field or two big triangles
- * under a random rotation and scale, per fragment or (with a
- * Cook-Torrance face) per vertex. */
-static void sh_random_scene(fc_h *h)
-{
-    struct fcr_face front = sh_rand_face(), back = sh_rand_face();
-    int nl = 1 + sh_pick(4), per_vertex = sh_rand() < 0.25f;
-    enum sh_mode mode = SH_PHONG;
-    if (per_vertex) {
-        front.cook_torrance = 1;
-        mode = sh_rand() < 0.7f ? SH_SMOOTH : SH_FLAT;
-    }
-    lt_clear();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glEnable(GL_LIGHTING);
-    for (int i = 0; i < 8; i++)
-        glDisable(GL_LIGHT0 + i);
-    for (int i = 0; i < nl; i++) {
-        GLenum l = GL_LIGHT0 + (GLenum)sh_pick(8);
-        int kind = sh_pick(3);   /* directional, point, spot */
-        glPushMatrix();
-        glRotatef(sh_range(-90, 90), sh_rand(), sh_rand(), sh_rand() + 0.1f);
-        lt_light(l, GL_AMBIENT, sh_range(0, 0.2f), sh_range(0, 0.2f), sh_range(0, 0.2f), 1);
-        lt_light(l, GL_DIFFUSE, sh_rand(), sh_rand(), sh_rand(), 1);
-        lt_light(l, GL_SPECULAR, sh_range(0.3f, 1.2f), sh_range(0.3f, 1.2f), sh_range(0.3f, 1.2f), 1);
-        if (kind == 0)
-            lt_light(l, GL_POSITION, sh_range(-1, 1), sh_range(-1, 1), sh_range(-0.3f, 1), 0);
-        else
-            lt_light(l, GL_POSITION, sh_range(-2, 2), sh_range(-2, 2), sh_range(-5, 1), sh_range(0.5f, 2));
-        glLightf(l, GL_CONSTANT_ATTENUATION, kind && sh_rand() < 0.5f ? sh_range(0.3f, 1.5f) : 1);
-        glLightf(l, GL_LINEAR_ATTENUATION, kind && sh_rand() < 0.5f ? sh_range(0, 0.5f) : 0);
-        glLightf(l, GL_QUADRATIC_ATTENUATION, kind && sh_rand() < 0.5f ? sh_range(0, 0.3f) : 0);
-        lt_light(l, GL_SPOT_DIRECTION, sh_range(-1, 1), sh_range(-1, 1), sh_range(-1, 0.2f), 0);
-        glLightf(l, GL_SPOT_CUTOFF, kind == 2 ? (sh_rand() < 0.2f ? 90.0f : sh_range(5, 80)) : 180.0f);
-        glLightf(l, GL_SPOT_EXPONENT, sh_rand() < 0.3f ? 0.0f : sh_rand() < 0.2f ? 128.0f : sh_range(0, 40));
-        glPopMatrix();
-        glEnable(l);
-    }
-    lt_model(GL_LIGHT_MODEL_AMBIENT, sh_range(0, 0.3f), sh_range(0, 0.3f), sh_range(0, 0.3f), 1);
-    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, sh_rand() < 0.5f);
-    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, sh_rand() < 0.5f);
-    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, sh_rand() < 0.5f ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
-    for (int f = 0; f < 2; f++) {
-        GLenum face = f ? GL_BACK : GL_FRONT;
-        lt_mat(face, GL_AMBIENT, sh_rand(), sh_rand(), sh_rand(), 1);
-        lt_mat(face, GL_DIFFUSE, sh_rand(), sh_rand(), sh_rand(), sh_range(0.3f, 1));
-        lt_mat(face, GL_SPECULAR, sh_rand(), sh_rand(), sh_rand(), 1);
-        lt_mat(face, GL_EMISSION, sh_range(0, 0.2f), sh_range(0, 0.2f), sh_range(0, 0.2f), 1);
-        glMaterialf(face, GL_SHININESS, sh_rand() < 0.2f ? 0.0f : sh_rand() < 0.2f ? 128.0f : sh_range(1, 100));
-    }
-    int colored = sh_rand() < 0.4f;
-    if (colored) {
-        static const GLenum faces[3] = { GL_FRONT, GL_BACK, GL_FRONT_AND_BACK };
-        static const GLenum params[5] = { GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE };
-        glColorMaterial(faces[sh_pick(3)], params[sh_pick(5)]);
-        glEnable(GL_COLOR_MATERIAL);
-    } else {
-        glDisable(GL_COLOR_MATERIAL);
-    }
-    int nmode = sh_pick(3);
-    if (nmode == 1)
-        glEnable(GL_NORMALIZE);
-    else if (nmode == 2)
-        glEnable(GL_RESCALE_NORMAL);
-    if (sh_rand() < 0.3f) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    }
-    sh_begin(h, mode, &front, &back);
-    glTranslatef(sh_range(-0.5f, 0.5f), sh_range(-0.5f, 0.5f), sh_range(-5, -3.5f));
-    glRotatef(sh_range(0, 360), sh_rand() - 0.5f, sh_rand() - 0.5f, sh_rand() - 0.5f);
-    if (nmode)
-        glScalef(sh_range(0.6f, 1.4f), sh_range(0.6f, 1.4f), sh_range(0.6f, 1.4f));
-    switch (sh_pick(3)) {
-    case 0:
-        sh_sphere(sh_range(0.8f, 1.4f), 16 + sh_pick(12), 10 + sh_pick(8), colored);
-        break;
-    case 1:
-        if (colored)
-            lt_hue(sh_rand(), 1);
-        lt_wave(-1.6f, -1.6f, 1.6f, 1.6f, 10, sh_range(0.1f, 0.4f), sh_range(1, 3));
-        break;
-    default:
-        if (colored)
-            lt_hue(sh_rand(), 0.8f);
-        sh_big_quad(sh_range(1, 1.8f), sh_range(0, 0.6f));
-        break;
-    }
-    fc_capture(h);
-    sh_end();
-    glDisable(GL_BLEND);
-    glDisable(GL_NORMALIZE);
-    glDisable(GL_RESCALE_NORMAL);
-    glDisable(GL_COLOR_MATERIAL);
-}
-
-/* Eight random scenes per case, the seed from the case name's number. */
-static void sh_random(fc_h *h)
-{
-    const char *name = fc_this_case(h)->name;
-    sh_rng = 0x5EED0000ull + (unsigned long long)atoi(strrchr(name, '_') + 1);
-    lt_persp(h);
-    for (int i = 0; i < 8; i++)
-        sh_random_scene(h);
-}
-
 #define SH_CASE(name, w, h, frames, tags, fn) \
     { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference " tags, fn, 0, 0, 1 }
 
@@ -1229,19 +1080,5 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/ct_dlist_varray", 64, 64, 1, "cook-torrance", ct_dlist_varray),
     SH_CASE("shading/ct_rescale_normalize", 64, 64, 2, "cook-torrance", ct_rescale_normalize),
     SH_CASE("shading/ct_wave_clipped", 64, 48, 2, "phong cook-torrance", ct_wave_clipped),
-    SH_CASE("shading/random_1", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    SH_CASE("shading/random_2", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    SH_CASE("shading/random_3", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    SH_CASE("shading/random_4", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    SH_CASE("shading/random_5", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    SH_CASE("shading/random_6", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
-    /* of seeds 1-60 (480 scenes, 1.1M pixels), the only one that is not
-     * bit-exact: one pixel 1 LSB off (frame 0, pixel (17,18), blue), in a
-     * per-vertex Cook-Torrance scene under GL_RESCALE_NORMAL: branch
-     * shade's t_light.c light_shade leaves GL_RESCALE_NORMAL/GL_NORMALIZE
-     * out before m_shade_point's normalize (equal in real arithmetic, not
-     * in float); the reference applies it, as shading.md's n says
-     * (exact with the reference's rescale removed) */
-    SH_CASE("shading/random_21", 48, 48, 8, "phong cook-torrance random-shading", sh_random),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
 };

@@ -31,4 +31,9 @@ void fc_random_raster_case(uint64_t seed, uint32_t index, fc_case *out, char *na
 int fc_random_tex_parse(const char *name, uint64_t *seed, uint32_t *index);
 void fc_random_tex_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
 
+/* The same for the shading-extension scenes (reference scenes: tags and
+ * colour tolerance depend on the scene, see fc_random_shading.c). */
+int fc_random_shading_parse(const char *name, uint64_t *seed, uint32_t *index);
+void fc_random_shading_case(uint64_t seed, uint32_t index, fc_case *out, char *name);
+
 #endif

@@ -3,10 +3,15 @@
  *
  *   fixgl-render-X --list                       case names, tags and (reference
  *                                               cases) the colour tolerance in LSB
+ *   fixgl-render-X --list-random FAMILY SEED INDEX COUNT
+ *                                               the same for scenes INDEX..
+ *                                               INDEX+COUNT-1 of a random family
+ *                                               (the runner asks it for families
+ *                                               whose tags vary by scene)
  *   fixgl-render-X [--perturb] [--crash=NAME] --out FILE NAME...
  *
- * --out runs the named cases (fixed names, random/s<seed>-i<index> or
- * random-lit/s<seed>-i<index>) in order and writes their records to FILE,
+ * --out runs the named cases (fixed names, random/s<seed>-i<index>,
+ * random-lit/..., random-raster/..., random-tex/..., random-shading/...) in order and writes their records to FILE,
  * after two FC_REC_INFO records with GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
  * (SIGALRM ends the process).  Test-only switches for the harness
  * self-test: --perturb alters every captured frame (see fc_harness.h),
@@ -31,16 +36,41 @@ extern FILE *fc_trace_out;   /* fc_trace.c: random scene call trace */
 
 #define FC_CASE_TIMEOUT 60
 
+/* name, tags and (reference cases) the colour tolerance */
+static void print_case(const fc_case *c)
+{
+    if (c->tolerance_lsb)
+        printf("%s\t%s\t%d\n", c->name, c->tags, c->tolerance_lsb);
+    else
+        printf("%s\t%s\n", c->name, c->tags);
+}
+
 static int list_cases(void)
 {
-    for (size_t i = 0; i < fc_case_count(); i++) {
-        const fc_case *c = fc_case_at(i);
-        if (c->tolerance_lsb)
-            printf("%s\t%s\t%d\n", c->name, c->tags, c->tolerance_lsb);
-        else
-            printf("%s\t%s\n", c->name, c->tags);
-    }
+    for (size_t i = 0; i < fc_case_count(); i++)
+        print_case(fc_case_at(i));
     return 0;
+}
+
+static const fc_case *find_case(const char *name, fc_case *scratch, char *namebuf);
+
+/* --list-random: name, tags and tolerance of count scenes of family. */
+static int list_random(const char *family, const char *seed, const char *index, const char *count)
+{
+    const unsigned long long first = strtoull(index, NULL, 10);
+    const long n = strtol(count, NULL, 10);
+    for (long i = 0; i < n; i++) {
+        char name[FC_RANDOM_NAME_MAX + 32], namebuf[FC_RANDOM_NAME_MAX];
+        fc_case scratch;
+        const fc_case *c;
+        snprintf(name, sizeof name, "%s/s%s-i%llu", family, seed, first + (unsigned long long)i);
+        if (!(c = find_case(name, &scratch, namebuf))) {
+            fprintf(stderr, "renderer: unknown case %s\n", name);
+            return 2;
+        }
+        print_case(c);
+    }
+    return fflush(stdout) == 0 ? 0 : 2;
 }
 
 /* Writes the renderer identification; returns 0 if the oracle is wrong. */
@@ -93,6 +123,10 @@ static const fc_case *find_case(const char *name, fc_case *scratch, char *namebu
         fc_random_tex_case(seed, index, scratch, namebuf);
         return scratch;
     }
+    if (fc_random_shading_parse(name, &seed, &index)) {
+        fc_random_shading_case(seed, index, scratch, namebuf);
+        return scratch;
+    }
     for (size_t i = 0; i < fc_case_count(); i++)
         if (strcmp(fc_case_at(i)->name, name) == 0)
             return fc_case_at(i);
@@ -107,6 +141,8 @@ int main(int argc, char **argv)
 
     if (argc == 2 && strcmp(argv[1], "--list") == 0)
         return list_cases();
+    if (argc == 6 && strcmp(argv[1], "--list-random") == 0)
+        return list_random(argv[2], argv[3], argv[4], argv[5]);
     for (; first < argc && argv[first][0] == '-'; first++) {
         if (strcmp(argv[first], "--perturb") == 0)
             perturb = 1;

@@ -24,6 +24,7 @@ struct options {
     long random_lit;            /* number of random lit scenes */
     long random_raster;         /* number of random raster scenes */
     long random_tex;            /* number of random texture scenes */
+    long random_shading;        /* number of random shading-extension scenes */
     uint64_t seed;
     long index;                 /* first scene index; >= 0 replays from there */
     const char *report, *renderer[2], *fixgl_arg;
@@ -92,11 +93,13 @@ static void usage(FILE *f)
         "  --random-tex N       add N random texture scenes, random-tex/s<S>-i<I> (tag\n"
         "                       random-tex; default 0): texture images, filters, wraps,\n"
         "                       mipmaps, environments, coordinates\n"
+        "  --random-shading N   add N random scenes of fixgl's shading extensions,\n"
+        "                       random-shading/s<S>-i<I> (tags reference, random-shading,\n"
+        "                       phong / cook-torrance; default 0), against the GLSL reference\n"
         "  --seed S             random seed of every family (default 1)\n"
         "  --index I            replay random scene I of seed S alone (with --random N,\n"
-        "                       --random-lit N, --random-raster N or --random-tex N:\n"
-        "                       scenes I..I+N-1 of\n"
-        "                       that family)\n"
+        "                       --random-lit N, --random-raster N, --random-tex N or\n"
+        "                       --random-shading N: scenes I..I+N-1 of that family)\n"
         "  --no-random          no plain random scenes\n"
         "  --jobs N             renderer processes at once (default: online CPUs)\n"
         "  --report DIR         report directory (default %s)\n"
@@ -133,6 +136,7 @@ static int parse_args(int argc, char **argv, struct options *o)
         else if (strcmp(a, "--random-lit") == 0) { o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--random-raster") == 0) { o->random_raster = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--random-tex") == 0) { o->random_tex = strtol(v, NULL, 10); explicit_lit = 1; }
+        else if (strcmp(a, "--random-shading") == 0) { o->random_shading = strtol(v, NULL, 10); explicit_lit = 1; }
         else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
         else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
         else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
@@ -149,7 +153,8 @@ static int parse_args(int argc, char **argv, struct options *o)
     else if (o->index >= 0 && !explicit_random)
         o->random = 1;
     o->jobs = o->jobs < 1 ? 1 : o->jobs;
-    return o->random >= 0 && o->random_lit >= 0 && o->random_raster >= 0 && o->random_tex >= 0;
+    return o->random >= 0 && o->random_lit >= 0 && o->random_raster >= 0 && o->random_tex >= 0
+           && o->random_shading >= 0;
 }
 
 static int has_tag(const char *tags, const char *tag)
@@ -216,6 +221,68 @@ static void add_random(const struct options *o, struct fc_item **items, size_t *
     }
 }
 
+/* Adds the cases of a listing ("name\ttags[\ttolerance]" lines, the
+ * renderer's --list and --list-random) that the filters select; replay_prefix
+ * (NULL for fixed cases) gives each a replay command line.  0 on error. */
+static int add_listed(const struct options *o, char *list, struct fc_item **items, size_t *n,
+                      size_t *cap, const char *replay_prefix)
+{
+    char *save = NULL;
+    for (char *line = strtok_r(list, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        char *tab = strchr(line, '\t'), *tol, replay[128];
+        int tolerance = 0;
+        if (!tab)
+            continue;
+        *tab = 0;
+        /* a third field: the colour tolerance of a reference case */
+        if ((tol = strchr(tab + 1, '\t')) != NULL) {
+            *tol = 0;
+            tolerance = atoi(tol + 1);
+            if (tolerance < 0 || tolerance > 255 || !has_tag(tab + 1, "reference")) {
+                fprintf(stderr, "fixgl-conform: case %s declares a colour tolerance of %s LSB "
+                        "without the \"reference\" tag (fc_case.h)\n", line, tol + 1);
+                return 0;
+            }
+        }
+        if (replay_prefix) {
+            uint64_t seed, index;
+            const char *s = strrchr(line, '/');
+            if (!s || sscanf(s, "/s%" SCNu64 "-i%" SCNu64, &seed, &index) != 2) {
+                fprintf(stderr, "fixgl-conform: bad random scene name %s\n", line);
+                return 0;
+            }
+            snprintf(replay, sizeof replay, "%s--seed %" PRIu64 " --index %" PRIu64, replay_prefix,
+                     seed, index);
+        }
+        if (selected(o, line, tab + 1))
+            add_item(items, n, cap, line, tab + 1, replay_prefix ? replay : NULL, tolerance);
+    }
+    return 1;
+}
+
+/* count scenes of a random family whose tags and tolerance vary by scene:
+ * the oracle renderer lists them (--list-random).  0 on error. */
+static int add_random_listed(const struct options *o, struct fc_item **items, size_t *n,
+                             size_t *cap, const char *family, long count, const char *replay_prefix)
+{
+    char seed[32], index[32], cnt[32];
+    const char *argv[7] = { o->renderer[FC_ORACLE], "--list-random", family, seed, index, cnt, NULL };
+    char *list;
+    int ok;
+    if (count == 0)
+        return 1;
+    snprintf(seed, sizeof seed, "%" PRIu64, o->seed);
+    snprintf(index, sizeof index, "%ld", o->index >= 0 ? (long)o->index : 0L);
+    snprintf(cnt, sizeof cnt, "%ld", count);
+    if (!(list = fc_run_capture(argv))) {
+        fprintf(stderr, "fixgl-conform: cannot list the %s scenes with %s\n", family, argv[0]);
+        return 0;
+    }
+    ok = add_listed(o, list, items, n, cap, replay_prefix);
+    free(list);
+    return ok;
+}
+
 /* Fixed cases (from the oracle's --list), then the scenes of each random
  * family; 0 on error. */
 static int build_items(const struct options *o, struct fc_item **out, size_t *n)
@@ -225,38 +292,28 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
     *n = 0;
     if (o->index < 0) {
         const char *argv[3] = { o->renderer[FC_ORACLE], "--list", NULL };
-        char *list = fc_run_capture(argv), *save = NULL;
+        char *list = fc_run_capture(argv);
+        int ok;
         if (!list) {
             fprintf(stderr, "fixgl-conform: cannot list the cases with %s\n", argv[0]);
             return 0;
         }
-        for (char *line = strtok_r(list, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
-            char *tab = strchr(line, '\t'), *tol;
-            int tolerance = 0;
-            if (!tab)
-                continue;
-            *tab = 0;
-            /* a third field: the colour tolerance of a reference case */
-            if ((tol = strchr(tab + 1, '\t')) != NULL) {
-                *tol = 0;
-                tolerance = atoi(tol + 1);
-                if (tolerance < 0 || tolerance > 255 || !has_tag(tab + 1, "reference")) {
-                    fprintf(stderr, "fixgl-conform: case %s declares a colour tolerance of %s LSB "
-                            "without the \"reference\" tag (fc_case.h)\n", line, tol + 1);
-                    free(list);
-                    free(items);
-                    return 0;
-                }
-            }
-            if (selected(o, line, tab + 1))
-                add_item(&items, n, &cap, line, tab + 1, NULL, tolerance);
-        }
+        ok = add_listed(o, list, &items, n, &cap, NULL);
         free(list);
+        if (!ok) {
+            free(items);
+            return 0;
+        }
     }
     add_random(o, &items, n, &cap, "random", o->random, "");
     add_random(o, &items, n, &cap, "random-lit", o->random_lit, "--random-lit 1 ");
     add_random(o, &items, n, &cap, "random-raster", o->random_raster, "--random-raster 1 ");
     add_random(o, &items, n, &cap, "random-tex", o->random_tex, "--random-tex 1 ");
+    if (!add_random_listed(o, &items, n, &cap, "random-shading", o->random_shading,
+                           "--random-shading 1 ")) {
+        free(items);
+        return 0;
+    }
     *out = items;
     return 1;
 }
