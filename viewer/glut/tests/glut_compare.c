@@ -32,6 +32,7 @@
 #include <unistd.h>
 
 #include "fv_png.h"
+#include "fv_xvfb.h"
 
 static const char *out_dir, *events = "", *frame_ms, *fixgl_demo, *oracle_demo,
                   *xvfb;
@@ -205,62 +206,6 @@ static int compare_headless(void)
 
 /* ---- the real window under Xvfb ----------------------------------------- */
 
-static pid_t xvfb_pid;
-
-static void stop_xvfb(void)
-{
-   if (xvfb_pid > 0) {
-      kill(xvfb_pid, SIGTERM);
-      waitpid(xvfb_pid, NULL, 0);
-      xvfb_pid = 0;
-   }
-}
-
-static int start_xvfb(void)
-{
-   for (int n = 97; n < 160; n++) {
-      char lock[64], sock[64];
-      snprintf(lock, sizeof lock, "/tmp/.X%d-lock", n);
-      snprintf(sock, sizeof sock, "/tmp/.X11-unix/X%d", n);
-      if (access(lock, F_OK) == 0 || access(sock, F_OK) == 0)
-         continue;
-      char display[16];
-      snprintf(display, sizeof display, ":%d", n);
-      pid_t pid = fork();
-      if (pid < 0)
-         die("fork failed");
-      if (pid == 0) {
-         int null = open("/dev/null", O_WRONLY);
-         if (null >= 0) {
-            dup2(null, 1);
-            dup2(null, 2);
-         }
-         execl(xvfb, xvfb, display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
-               (char *)NULL);
-         _exit(127);
-      }
-      /* up to 10 s for the socket; an early exit means the number was taken */
-      for (int i = 0; i < 100; i++) {
-         int status;
-         if (waitpid(pid, &status, WNOHANG) == pid) {
-            pid = 0;
-            break;
-         }
-         if (access(sock, F_OK) == 0) {
-            xvfb_pid = pid;
-            usleep(200000);
-            return n;
-         }
-         usleep(100000);
-      }
-      if (pid > 0) {
-         kill(pid, SIGKILL);
-         waitpid(pid, NULL, 0);
-      }
-   }
-   return -1;
-}
-
 static int compare_window(void)
 {
    char hdir[4096], wdir[4096], ddir[4096];
@@ -271,12 +216,11 @@ static int compare_window(void)
 
    run_headless(fixgl_demo, hdir);
 
-   int n = start_xvfb();
+   int n = fv_xvfb_start(xvfb, 97, 160);
    if (n < 0) {
       fprintf(stderr, "glut-compare: cannot start %s on a free display\n", xvfb);
       return 1;
    }
-   atexit(stop_xvfb);
    char e_display[32], e_frames[64], e_shot[4200], e_shot_x11[4200], e_ms[64], e_asan[4200];
    snprintf(e_display, sizeof e_display, "DISPLAY=:%d", n);
    snprintf(e_frames, sizeof e_frames, "FIXGLUT_FRAMES=%d", frames);
@@ -296,7 +240,7 @@ static int compare_window(void)
    printf("running %s in a window on Xvfb :%d (%d frames)\n", fixgl_demo, n, frames);
    fflush(stdout);
    int rc = run(fixgl_demo, env, 120);
-   stop_xvfb();
+   fv_xvfb_stop();
    if (rc != 0) {
       fprintf(stderr, "glut-compare: %s in a window exited with %d\n", fixgl_demo, rc);
       return 1;

@@ -22,8 +22,8 @@
  *       per channel for Phong and Cook-Torrance (GLSL reference); and the
  *       frame's properties: the model is framed (the border is background),
  *       covers a good part of the frame, and is shaded (many colours).
- *       SKIP (77) when the mode needs what this build lacks (fixgl's
- *       extension, the GLSL reference), saying which.
+ *       Fails, saying which, when the mode needs what the build lacks
+ *       (fixgl's extension, the GLSL reference).
  *   view-test differ VIEW DIR MODEL ARGS_A -- ARGS_B
  *       two views that must differ (e.g. flat vs smooth)
  *   view-test same VIEW DIR MODEL ARGS_A -- ARGS_B
@@ -49,8 +49,7 @@
 #include <unistd.h>
 
 #include "fv_png.h"
-
-#define SKIP 77
+#include "fv_xvfb.h"
 
 static const char *view, *dir;
 
@@ -467,16 +466,14 @@ static int cmd_render(const char *model, int argc, char **argv)
       char *s = info(model);
       const char *why = NULL;
       if (phong && !strstr(s, "GL_WIN_phong_shading yes"))
-         why = "this libfixgl lacks GL_WIN_phong_shading (branches shade/frag)";
+         why = "libfixgl does not advertise GL_WIN_phong_shading";
       else if (ct && !strstr(s, "GL_FIXGL_cook_torrance yes"))
-         why = "this libfixgl lacks GL_FIXGL_cook_torrance (branch shade)";
+         why = "libfixgl does not advertise GL_FIXGL_cook_torrance";
       else if (!strstr(s, "GLSL reference yes"))
-         why = "no GLSL reference on the OSMesa side (conformance/reference/fcr_shading.c, branch ref)";
+         why = "the OSMesa side has no GLSL reference (conformance/reference/fcr_shading.c)";
       free(s);
-      if (why) {
-         printf("SKIP: %s\n", why);
-         return SKIP;
-      }
+      if (why)
+         die("%s", why);
    }
    const int tolerance = phong || ct ? 1 : 0;
    const char *fx = path_in("fixgl.png"), *osm = path_in("osmesa.png");
@@ -570,60 +567,6 @@ static int cmd_frames(const char *model)
 
 /* ---- window -------------------------------------------------------------------- */
 
-static pid_t xvfb_pid;
-
-static void stop_xvfb(void)
-{
-   if (xvfb_pid > 0) {
-      kill(xvfb_pid, SIGTERM);
-      waitpid(xvfb_pid, NULL, 0);
-      xvfb_pid = 0;
-   }
-}
-
-/* Starts Xvfb on a free display (as viewer/glut/tests/glut_compare.c). */
-static int start_xvfb(const char *xvfb)
-{
-   for (int n = 160; n < 240; n++) {
-      char lock[64], sock[64];
-      snprintf(lock, sizeof lock, "/tmp/.X%d-lock", n);
-      snprintf(sock, sizeof sock, "/tmp/.X11-unix/X%d", n);
-      if (access(lock, F_OK) == 0 || access(sock, F_OK) == 0)
-         continue;
-      char display[16];
-      snprintf(display, sizeof display, ":%d", n);
-      pid_t pid = fork();
-      if (pid < 0)
-         die("fork failed");
-      if (pid == 0) {
-         int null = open("/dev/null", O_WRONLY);
-         if (null >= 0)
-            dup2(null, 1), dup2(null, 2);
-         execl(xvfb, xvfb, display, "-screen", "0", "640x480x24", "-nolisten", "tcp",
-               (char *)NULL);
-         _exit(127);
-      }
-      for (int i = 0; i < 100; i++) {
-         int status;
-         if (waitpid(pid, &status, WNOHANG) == pid) {
-            pid = 0;
-            break;
-         }
-         if (access(sock, F_OK) == 0) {
-            xvfb_pid = pid;
-            usleep(200000);
-            return n;
-         }
-         usleep(100000);
-      }
-      if (pid > 0) {
-         kill(pid, SIGKILL);
-         waitpid(pid, NULL, 0);
-      }
-   }
-   return -1;
-}
-
 static int cmd_window(const char *xvfb, const char *model, int argc, char **argv)
 {
    const char *head = path_in("headless.png"), *shot = path_in("screenshot.png"),
@@ -637,10 +580,9 @@ static int cmd_window(const char *xvfb, const char *model, int argc, char **argv
    if (run_view("headless", h.v, NULL, 120) != 0)
       die("the headless run failed");
 
-   int n = start_xvfb(xvfb);
+   int n = fv_xvfb_start(xvfb, 160, 240);
    if (n < 0)
       die("cannot start %s on a free display", xvfb);
-   atexit(stop_xvfb);
    char e_display[32], e_asan[4200];
    snprintf(e_display, sizeof e_display, "DISPLAY=:%d", n);
    /* Under AddressSanitizer, as libfixglut's window test: the system GL
@@ -659,7 +601,7 @@ static int cmd_window(const char *xvfb, const char *model, int argc, char **argv
    add(&w, "--screenshot"), add(&w, shot), add(&w, "--screenshot-x11"), add(&w, x11);
    add(&w, model);
    int rc = run_view("window", w.v, env, 120);
-   stop_xvfb();
+   fv_xvfb_stop();
    if (rc != 0)
       die("the viewer in a window on Xvfb :%d exited with %d", n, rc);
 
