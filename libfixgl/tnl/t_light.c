@@ -381,13 +381,12 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
    }
 
-   /* GL_FIXGL_cook_torrance: m_shade_point for both faces.  No oracle
-    * program computed an eye position for the fog coordinate: it is
-    * computed as without lighting. */
+   /* GL_FIXGL_cook_torrance: m_shade_point for both faces; the fog
+    * coordinate is |P.z| of the eye position it lit with (shading.md) */
    if (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
        ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL) {
       light_shade(ctx, in, n, src, out);
-      return false;
+      return true;
    }
 
    /* check_active_shininess: a shininess that varies, or is not 0 (the

@@ -103,11 +103,13 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
       t_texcoord(ctx, in, n, tex_units, out);
 
    bool eye_position = false;
-   if (phong)
-      /* the fog coordinate then comes from its own eye z, as without
-       * lighting (the oracle's vertex program is not involved) */
+   if (phong) {
+      /* shading.md: the fog coordinate of a vertex lit by the shading
+       * extensions is |P.z|, P the eye position they light with (the
+       * column chain) */
       t_phong(ctx, in, n, out);
-   else if (lit)
+      eye_position = true;
+   } else if (lit)
       eye_position = t_light(ctx, in, n, out);
 
    /* draw_llvm.c do_clamp_vertex_color: every colour output; under
