@@ -148,6 +148,19 @@ struct point_material {
    const float *ambient, *diffuse, *specular, *emission;
 };
 
+/* H = normalize(L + V): prepared for a directional light without local
+ * viewer (fixed), else computed at the point. */
+static inline void half_vector(const struct m_shade_light_prep *lp, bool fixed, const float L[3],
+                               const float V[3], float H[3])
+{
+   if (fixed) {
+      H[0] = lp->H[0], H[1] = lp->H[1], H[2] = lp->H[2];
+      return;
+   }
+   H[0] = L[0] + V[0], H[1] = L[1] + V[1], H[2] = L[2] + V[2];
+   normalize3(H);
+}
+
 /* The equations at one point, with the point-independent values of prep. */
 static inline __attribute__((always_inline)) void
 shade(const struct m_shade_env *env, const struct m_shade_prep *prep, const float n[3],
@@ -236,12 +249,7 @@ shade(const struct m_shade_env *env, const struct m_shade_prep *prep, const floa
          const float fd = max0(ndl);
          float fs = 0.0f;
          if (ndl > 0.0f) {
-            if (fixed_h) {
-               H[0] = lp->H[0], H[1] = lp->H[1], H[2] = lp->H[2];
-            } else {
-               H[0] = L[0] + V[0], H[1] = L[1] + V[1], H[2] = L[2] + V[2];
-               normalize3(H);
-            }
+            half_vector(lp, fixed_h, L, V, H);
             fs = spow(max0(dot3(N, H)), mat->shininess);
          }
          for (int i = 0; i < 3; i++) {
@@ -253,12 +261,7 @@ shade(const struct m_shade_env *env, const struct m_shade_prep *prep, const floa
          for (int i = 0; i < 3; i++)
             diffuse[i] = ndl > 0.0f ? mp->one_minus_metal * ndl * (l->diffuse[i] * c[i]) : 0.0f;
          if (ndl > 0.0f && ndv > 0.0f) {
-            if (fixed_h) {
-               H[0] = lp->H[0], H[1] = lp->H[1], H[2] = lp->H[2];
-            } else {
-               H[0] = L[0] + V[0], H[1] = L[1] + V[1], H[2] = L[2] + V[2];
-               normalize3(H);
-            }
+            half_vector(lp, fixed_h, L, V, H);
             const float ndh = max0(dot3(N, H));
             const float vdh = max0(dot3(V, H));
             const float a2 = mp->a2, k = mp->k, one_minus_k = mp->one_minus_k;
@@ -311,7 +314,7 @@ void m_shade_point(const struct m_shade_env *env, const float n[3], const float 
 
 /* Per fragment: env->prep, filled once per batch (fgl_update_shade_env). */
 M_SHADE_FMA_CLONES
-void m_shade_fragment(const struct m_shade_env *env, const float n[3], const float p[3],
+void m_shade_point_prepared(const struct m_shade_env *env, const float n[3], const float p[3],
                       bool back, const float color[4], float primary[4], float secondary[4])
 {
    shade(env, &env->prep, n, p, back, color, primary, secondary);
