@@ -864,7 +864,7 @@ void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env
       }
    }
 
-   /* the values that are the same at every point, for m_shade_fragment
+   /* the values that are the same at every point, for m_shade_point_prepared
     * (t_render.c's per-primitive materials change no input of them) */
    m_shade_prepare(env);
 }

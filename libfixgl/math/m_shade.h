@@ -81,7 +81,7 @@ struct m_shade_env {
    struct m_shade_material material[2];   /* front, back */
    unsigned color_material;
    /* filled by m_shade_prepare from the fields above, for
-    * m_shade_fragment; depends on no material colour nor the shininess */
+    * m_shade_point_prepared; depends on no material colour nor the shininess */
    struct m_shade_prep prep;
 };
 
@@ -102,9 +102,11 @@ void m_shade_point(const struct m_shade_env *env, const float n[3], const float 
  * point). */
 void m_shade_prepare(struct m_shade_env *env);
 
-/* m_shade_point with env->prep (m_shade_prepare) instead of computing it
- * for the point: the same bits, for the per-fragment path. */
-void m_shade_fragment(const struct m_shade_env *env, const float n[3], const float p[3],
+/* m_shade_point with env->prep (m_shade_prepare; fgl_update_shade_env
+ * calls it) instead of computing it for the point: the same bits, for the
+ * per-vertex and per-fragment paths, whose environment is filled once per
+ * batch. */
+void m_shade_point_prepared(const struct m_shade_env *env, const float n[3], const float p[3],
                       bool back, const float color[4], float primary[4], float secondary[4]);
 
 #endif /* FGL_M_SHADE_H */

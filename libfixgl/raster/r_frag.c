@@ -705,7 +705,7 @@ fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs
 void r_fragment_phong(const struct r_state *rs, float in[][4], bool back)
 {
    float primary[4], secondary[4];
-   m_shade_fragment(&rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
+   m_shade_point_prepared(&rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
                     primary, secondary);
    for (int c = 0; c < 4; c++) {
       in[R_FS_COLOR0][c] = primary[c];

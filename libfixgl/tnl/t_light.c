@@ -330,7 +330,7 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
       /* the eye-space normal n as GL_PHONG_WIN's vertices have it
        * (t_phong.c t_eye_normal: the inverse-transpose of the modelview,
        * then GL_NORMALIZE or GL_RESCALE_NORMAL, whose rounding shows even
-       * though m_shade_point normalises again; shading.md).  P: the
+       * though m_shade_point_prepared normalises again; shading.md).  P: the
        * modelview times the vertex, xyz (its w is ignored, as GL's
        * lighting ignores it). */
       float nrm[3], P[4];
@@ -349,8 +349,11 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
 #undef MAT
       }
       float (*col)[4] = out[i].r.attr;
+      /* env's point-independent values were prepared once above
+       * (fgl_update_shade_env); the per-vertex material colours and
+       * shininess are not among them */
       for (int s = 0; s < sides; s++)
-         m_shade_point(&env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
+         m_shade_point_prepared(&env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
    }
 }
 
