@@ -286,14 +286,17 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    if (ctx->Light.Enabled && (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
                               ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL)) {
       /* GL_FIXGL_cook_torrance: the raster position is lit like a vertex
-       * (t_light.c light_shade, include/fixgl/shading.md), front face:
-       * m_shade_point with the eye-space normal and position */
+       * (t_light.c light_shade, include/fixgl/shading.md), front face,
+       * with the vertices' n and P (t_eye_normal, the column chain) */
       struct m_shade_env env;
-      float n[3];
+      struct t_eye_normal en;
+      float n[3], P[4];
       fgl_update_shade_env(ctx, &env);
-      fgl_transform_normal(n, cur->Attrib[FGL_ATTR_NORMAL], ctx->ModelviewStack.Top->inv);
-      m_shade_point(&env, n, eye, false, cur->Attrib[FGL_ATTR_COLOR0], cur->RasterColor,
-                    cur->RasterSecondaryColor);
+      t_eye_normal_init(ctx, &en);
+      t_eye_normal(&en, cur->Attrib[FGL_ATTR_NORMAL], n);
+      t_mul_mad_chain(P, ctx->ModelviewStack.Top->m, obj);
+      m_shade_point_prepared(&env, n, P, false, cur->Attrib[FGL_ATTR_COLOR0], cur->RasterColor,
+                             cur->RasterSecondaryColor);
    } else if (ctx->Light.Enabled) {
       float eye_z_dir[3] = { 0.0f, 0.0f, 1.0f };
       if (!eye_coords) {
