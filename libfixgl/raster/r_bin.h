@@ -23,17 +23,17 @@ struct r_plane {
 /* An attribute's plane equation, a(x, y) = fma(dady, y, fma(dadx, x, a0)),
  * as llvmpipe's interpolation evaluates it at pixel (x, y) for triangles
  * and lines alike (lp_bld_interp.c). */
-struct plane {
+struct r_attr_plane {
    float a0, dadx, dady;
 };
 
-static inline float eval_plane(const struct plane *p, float x, float y)
+static inline float r_eval_plane(const struct r_attr_plane *p, float x, float y)
 {
    return fmaf(p->dady, y, fmaf(p->dadx, x, p->a0));
 }
 
 /* llvmpipe's wrapping 32-bit int addition */
-static inline int32_t add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
+static inline int32_t r_add32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a + (uint32_t)b); }
 
 /* Shades pixel (px, py), which is inside the draw region. */
 struct r_shader {

@@ -44,9 +44,9 @@ struct line_info {
 
 /* lp_setup_line.c:linear_coef (a1, a2 already premultiplied for
  * perspective_coef) */
-static inline struct plane line_coef(const struct line_info *info, float a1, float a2)
+static inline struct r_attr_plane line_coef(const struct line_info *info, float a1, float a2)
 {
-   struct plane p;
+   struct r_attr_plane p;
    const float da21 = a1 - a2;
    p.dadx = da21 * info->dx * info->oneoverarea;
    p.dady = da21 * info->dy * info->oneoverarea;
@@ -76,8 +76,8 @@ static inline int32_t sub32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a
 
 /* The interpolation setup of one line (setup_line_coefficients). */
 struct line_shade {
-   struct plane z, w;
-   struct plane ap[R_FS_NUM_INPUTS][4];
+   struct r_attr_plane z, w;
+   struct r_attr_plane ap[R_FS_NUM_INPUTS][4];
    float flat[R_FS_NUM_INPUTS][4];
    bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;
@@ -91,12 +91,12 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
-   const float rw = ls->need_w ? 1.0f / eval_plane(&ls->w, fx, fy) : 0.0f;
+   const float rw = ls->need_w ? 1.0f / r_eval_plane(&ls->w, fx, fy) : 0.0f;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
       if (!(rs->fs_inputs & (1u << a)))
          continue;
       for (int k = 0; k < 4; k++)
-         in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], fx, fy) * rw;
+         in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : r_eval_plane(&ls->ap[a][k], fx, fy) * rw;
    }
    if (rs->phong)
       r_fragment_phong(rs, in, ls->phong_back);
@@ -111,21 +111,21 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
       for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
          const float qfx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]);
          const float qfy = (float)(qy + dy[i % 3]);
-         const float qrw = 1.0f / eval_plane(&ls->w, qfx, qfy);
+         const float qrw = 1.0f / r_eval_plane(&ls->w, qfx, qfy);
          for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
             if (!(rs->tex_units & (1u << u)))
                continue;
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? quad.tex[u][i] : quad.pair[u][i - 3];
             for (int k = 0; k < 4; k++)
-               d[k] = ls->flat_attr[a] ? ls->flat[a][k] : eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
+               d[k] = ls->flat_attr[a] ? ls->flat[a][k] : r_eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
          }
       }
       r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
    } else {
       r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
    }
-   r_fragment_ops(rs, px, py, eval_plane(&ls->z, fx, fy), color);
+   r_fragment_ops(rs, px, py, r_eval_plane(&ls->z, fx, fy), color);
 }
 
 void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
@@ -224,8 +224,8 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
       x[3] = r_subpixel_snap(a->pos[0] + x_offset - 0.5f);
       y[0] = sub32(r_subpixel_snap(a->pos[1] + y_offset - 0.5f), fixed_width / 2);
       y[1] = sub32(r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f), fixed_width / 2);
-      y[2] = add32(r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f), fixed_width / 2);
-      y[3] = add32(r_subpixel_snap(a->pos[1] + y_offset - 0.5f), fixed_width / 2);
+      y[2] = r_add32(r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f), fixed_width / 2);
+      y[3] = r_add32(r_subpixel_snap(a->pos[1] + y_offset - 0.5f), fixed_width / 2);
    } else {
       /* y-major */
       const float dxdy = dx / dy;
@@ -286,8 +286,8 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
       }
       x[0] = sub32(r_subpixel_snap(a->pos[0] + x_offset - 0.5f), fixed_width / 2);
       x[1] = sub32(r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f), fixed_width / 2);
-      x[2] = add32(r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f), fixed_width / 2);
-      x[3] = add32(r_subpixel_snap(a->pos[0] + x_offset - 0.5f), fixed_width / 2);
+      x[2] = r_add32(r_subpixel_snap(b->pos[0] + x_offset_end - 0.5f), fixed_width / 2);
+      x[3] = r_add32(r_subpixel_snap(a->pos[0] + x_offset - 0.5f), fixed_width / 2);
       y[0] = r_subpixel_snap(a->pos[1] + y_offset - 0.5f);
       y[1] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f);
       y[2] = r_subpixel_snap(b->pos[1] + y_offset_end - 0.5f);
@@ -299,10 +299,10 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    const int adj = 1;
    const int32_t xmin = min4(x[0], x[1], x[2], x[3]), xmax = max4(x[0], x[1], x[2], x[3]);
    const int32_t ymin = min4(y[0], y[1], y[2], y[3]), ymax = max4(y[0], y[1], y[2], y[3]);
-   int32_t bx0 = add32(xmin, 255) >> 8;
-   int32_t bx1 = (add32(xmax, 255) >> 8) - 1;
-   int32_t by0 = add32(ymin, 255 + adj) >> 8;
-   int32_t by1 = (add32(ymax, 255 + adj) >> 8) - 1;
+   int32_t bx0 = r_add32(xmin, 255) >> 8;
+   int32_t bx1 = (r_add32(xmax, 255) >> 8) - 1;
+   int32_t by0 = r_add32(ymin, 255 + adj) >> 8;
+   int32_t by1 = (r_add32(ymax, 255 + adj) >> 8) - 1;
    /* u_rect_test_intersection with the draw region */
    if (rs->x0 >= rs->x1 || rs->y0 >= rs->y1 ||
        bx1 < rs->x0 || bx0 > rs->x1 - 1 || by1 < rs->y0 || by0 > rs->y1 - 1)

@@ -329,6 +329,15 @@ struct r_vertex {
    float attr[R_MAX_ATTRIBS][4];
 };
 
+/* Counters of the raster core, for the benchmark's breakdown of a frame
+ * (fixglGetStats): r_state.stats is NULL unless a program asked for them,
+ * and the primitives then add what they did and the time it took. */
+struct r_stats {
+   uint64_t fragments;          /* pixels shaded: covered, inside the region */
+   uint64_t setup_ns;           /* primitive setup: coverage planes, inputs */
+   uint64_t raster_ns;          /* coverage and fragments after the setup */
+};
+
 struct r_state {
    /* target */
    uint8_t *color;              /* RGBA8 */
@@ -443,6 +452,9 @@ struct r_state {
     * from the face draw's unfilled stage puts into the vertices). */
    bool phong;
    struct m_shade_env shade_env;
+
+   /* the benchmark's counters, or NULL (the usual case) */
+   struct r_stats *stats;
 };
 
 /* The image a pixel rectangle samples (r_pixels.c), NEAREST with

@@ -87,12 +87,12 @@ static inline uint32_t floor_pot(uint32_t n)
 static inline unsigned mask_linear(int32_t c, int32_t dcdx, int32_t dcdy)
 {
    unsigned mask = 0;
-   int32_t row[4] = { c, add32(c, dcdx), add32(c, mul32(dcdx, 2)), add32(c, mul32(dcdx, 3)) };
+   int32_t row[4] = { c, r_add32(c, dcdx), r_add32(c, mul32(dcdx, 2)), r_add32(c, mul32(dcdx, 3)) };
    for (int j = 0; j < 4; j++) {
       for (int i = 0; i < 4; i++)
          mask |= (unsigned)(row[i] < 0) << (4 * j + i);
       for (int i = 0; i < 4; i++)
-         row[i] = add32(row[i], dcdy);
+         row[i] = r_add32(row[i], dcdy);
    }
    return mask;
 }
@@ -103,7 +103,7 @@ static inline void build_masks(int32_t c, int32_t cdiff, int32_t dcdx, int32_t d
                                unsigned *outmask, unsigned *partmask)
 {
    *outmask |= mask_linear(c, dcdx, dcdy);
-   *partmask |= mask_linear(add32(c, cdiff), dcdx, dcdy);
+   *partmask |= mask_linear(r_add32(c, cdiff), dcdx, dcdy);
 }
 
 /* The per-block trivial reject/accept values of lp_rast_tri_tmp.h
@@ -115,10 +115,10 @@ static inline void block_masks(const struct r_plane *p, int64_t c, int log2_sub,
    int32_t dcdx = neg32(p->dcdx) >> 8;
    int32_t dcdy = p->dcdy >> 8;
    const int32_t cox = (int32_t)(p->eo >> 8);
-   const int32_t ei = shl32(add32(add32(dcdy, dcdx), neg32(cox)), log2_sub);
+   const int32_t ei = shl32(r_add32(r_add32(dcdy, dcdx), neg32(cox)), log2_sub);
    const int32_t cox_s = shl32(cox, log2_sub);
-   const int32_t co = add32((int32_t)(c >> 8), cox_s);
-   const int32_t cdiff = add32(add32(ei, neg32(cox_s)),
+   const int32_t co = r_add32((int32_t)(c >> 8), cox_s);
+   const int32_t cdiff = r_add32(r_add32(ei, neg32(cox_s)),
                                (int32_t)((uint32_t)(int32_t)(sub64(c, 1) >> 8) -
                                          (uint32_t)(int32_t)(c >> 8)));
    dcdx = shl32(dcdx, log2_sub);
@@ -134,10 +134,10 @@ struct setup_factors {
    float dx01o, dy01o, dx20o, dy20o;
 };
 
-static inline struct plane make_plane(const struct setup_factors *f,
+static inline struct r_attr_plane make_plane(const struct setup_factors *f,
                                       float a0, float a1, float a2)
 {
-   struct plane p;
+   struct r_attr_plane p;
    const float da01 = a0 - a1;
    const float da20 = a2 - a0;
    p.dadx = da01 * f->dy20o - da20 * f->dy01o;
@@ -148,12 +148,12 @@ static inline struct plane make_plane(const struct setup_factors *f,
 
 /* Interpolation setup of one triangle (the jit setup function's job). */
 struct tri_shade {
-   struct plane z, w;
+   struct r_attr_plane z, w;
    float zoffset;           /* polygon offset, added to every fragment's z */
    /* Perspective-correct attributes are interpolated premultiplied by 1/w
     * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
     * provoking vertex. */
-   struct plane ap[R_FS_NUM_INPUTS][4];
+   struct r_attr_plane ap[R_FS_NUM_INPUTS][4];
    float flat[R_FS_NUM_INPUTS][4];
    bool flat_attr[R_FS_NUM_INPUTS];
    bool need_w;             /* some input is interpolated */
@@ -243,13 +243,13 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
       /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
       for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
          const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
-         const float rw = 1.0f / eval_plane(&ts->w, fx, fy);
+         const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
          for (unsigned m = units; m; m &= m - 1) {
             const int u = __builtin_ctz(m);
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? q->tex[u][i] : q->pair[u][i - 3];
             for (int c = 0; c < 4; c++)
-               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
       for (unsigned m = units; m; m &= m - 1) {
@@ -289,11 +289,11 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
       return;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
-   const float rw = ts->need_w ? 1.0f / eval_plane(&ts->w, fx, fy) : 0.0f;
+   const float rw = ts->need_w ? 1.0f / r_eval_plane(&ts->w, fx, fy) : 0.0f;
    for (unsigned m = ts->inputs; m; m &= m - 1) {
       const int a = __builtin_ctz(m);
       for (int c = 0; c < 4; c++)
-         in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : eval_plane(&ts->ap[a][c], fx, fy) * rw;
+         in[a][c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
    }
    if (rs->pix) {
       /* a pixel rectangle's quad: its own fragment stage (r_pixels.c);
@@ -301,7 +301,7 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
       const bool quad = rs->tex_units && rs->pix->tex_quad;
       if (quad)
          fill_quad(rs, ts, px, py, 1u);
-      r_pixel_fragment(rs, px, py, (const float (*)[4])in, eval_plane(&ts->z, fx, fy),
+      r_pixel_fragment(rs, px, py, (const float (*)[4])in, r_eval_plane(&ts->z, fx, fy),
                        quad ? &ts->quad : NULL);
       return;
    }
@@ -316,7 +316,7 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    if (rs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
       return;
    /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
-   r_fragment_ops(rs, px, py, eval_plane(&ts->z, fx, fy) + ts->zoffset, color);
+   r_fragment_ops(rs, px, py, r_eval_plane(&ts->z, fx, fy) + ts->zoffset, color);
 }
 
 /* Shades the pixels of the 4x4 block at (x, y) selected by mask (bit 4j+i
@@ -483,7 +483,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
     * bottom-left convention */
    int32_t bx0 = min3(X[0], X[1], X[2]) >> 8;
    int32_t bx1 = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
-   int32_t by0 = add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
+   int32_t by0 = r_add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
    int32_t by1 = max3(Y[0], Y[1], Y[2]) >> 8;
    if (bx0 > rx1 || bx1 < rx0 || by0 > ry1 || by1 < ry0)
       return;
