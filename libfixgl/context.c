@@ -105,6 +105,10 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_feedback(ctx);
    init_pending_state(ctx);
    fgl_init_eval(ctx);
+   /* FIXGL_KERNELS=reference: the reference kernels draw everything
+    * (raster/r_kernel.h) */
+   const char *kernels = getenv("FIXGL_KERNELS");
+   ctx->_Raster.reference_kernels = kernels && strcmp(kernels, "reference") == 0;
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }

@@ -708,6 +708,7 @@ void fgl_update_state(struct fgl_context *ctx)
          dp->cull = dp->cull_front || dp->cull_back || unfilled || any_offset || twoside;
          dp->line_stipple = false;
       }
+      r_choose_kernels(rs);
    }
 
    if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {

@@ -179,6 +179,7 @@ void r_pixel_rect(const struct r_state *rs_in, const struct r_pixel_image *pix,
    rs.flat_mask = 0;
    rs.fs_inputs = 1u << R_FS_COLOR0 | 1u << R_FS_TEX0;
    rs.num_attribs = R_ATTR_TEX0 + 1;
+   r_choose_kernels(&rs);
 
    /* [S: st_cb_drawpixels.c:draw_textured_quad] clip coordinates, z from
     * [0,1] to [-1,1] */

@@ -329,6 +329,14 @@ struct r_vertex {
    float attr[R_MAX_ATTRIBS][4];
 };
 
+/* A triangle's block kernel (r_kernel.h): shades every covered pixel of
+ * the triangle's box. */
+struct r_state;
+struct r_tri_setup;
+struct r_tri_cover;
+typedef void (*r_tri_kernel)(const struct r_state *rs, const struct r_tri_setup *ts,
+                             const struct r_tri_cover *cv);
+
 /* Counters of the raster core, for the benchmark's breakdown of a frame
  * (fixglGetStats): r_state.stats is NULL unless a program asked for them,
  * and the primitives then add what they did and the time it took. */
@@ -455,7 +463,16 @@ struct r_state {
 
    /* the benchmark's counters, or NULL (the usual case) */
    struct r_stats *stats;
+
+   /* The kernels (r_kernel.h), chosen by r_choose_kernels from the fields
+    * above: whoever changes those afterwards calls it again.  A NULL
+    * kernel (also in a zeroed r_state) means the reference kernels. */
+   bool reference_kernels;       /* FIXGL_KERNELS=reference: no others */
+   r_tri_kernel tri_kernel[2];   /* triangles, [colour flat] */
 };
+
+/* Chooses the kernels of rs for its current state (r_tri.c). */
+void r_choose_kernels(struct r_state *rs);
 
 /* The image a pixel rectangle samples (r_pixels.c), NEAREST with
  * CLAMP_TO_EDGE, normalized coordinates; row 0 is t = 0. */

@@ -16,7 +16,7 @@
  * pixel centres exactly on a left edge or a horizontal bottom edge are
  * inside; on a right or top edge they are outside.
  */
-#include "r_bin.h"
+#include "r_kernel.h"
 
 #include <limits.h>
 #include <math.h>
@@ -146,33 +146,12 @@ static inline struct r_attr_plane make_plane(const struct setup_factors *f,
    return p;
 }
 
-/* Interpolation setup of one triangle (the jit setup function's job). */
-struct tri_shade {
-   struct r_attr_plane z, w;
-   float zoffset;           /* polygon offset, added to every fragment's z */
-   /* Perspective-correct attributes are interpolated premultiplied by 1/w
-    * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
-    * provoking vertex. */
-   struct r_attr_plane ap[R_FS_NUM_INPUTS][4];
-   float flat[R_FS_NUM_INPUTS][4];
-   bool flat_attr[R_FS_NUM_INPUTS];
-   bool need_w;             /* some input is interpolated */
-   unsigned inputs;         /* R_FS_* inputs the fragment shader reads */
-   /* shade_textured's cache: the texture coordinates of the quad at
-    * (quad_x, quad_y), which the pixels of a quad's row share */
-   int quad_x, quad_y;
-   struct r_fs_quad quad;
-   /* and the fast LOD of the quad for the units without `soa` */
-   struct r_tex_lod lod[R_MAX_TEX_UNITS];
-   /* GL_PHONG_WIN: the face the fragments are lit with */
-   bool phong_back;
-};
 
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
  * the back-face slots for a back-facing two-sided triangle
  * (lp_state_setup.c:lp_twoside). */
 static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
-                        bool back, bool phong_back, struct tri_shade *ts)
+                        bool back, bool phong_back, struct r_tri_setup *ts)
 {
    /* plain float arithmetic in llvmpipe's order */
    const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
@@ -230,14 +209,14 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
  * coordinates), evaluated like every pixel's inputs whether or not they
  * are covered [S: lp_bld_interp.c, lp_bld_quad.c] (llvmpipe-facts.md
  * §5), cached in ts->quad for the pixels of a quad's row. */
-static inline __attribute__((always_inline)) void fill_quad(const struct r_state *rs, const struct tri_shade *ts, int px, int py,
+static inline __attribute__((always_inline)) void fill_quad(const struct r_state *rs, const struct r_tri_setup *ts, int px, int py,
                       unsigned units)
 {
    static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
    const int qx = px & ~1, qy = py & ~1;
    /* the setup object itself is not const (rasterize_ccw's local): the
     * cache is written through it */
-   struct tri_shade *cache = (struct tri_shade *)ts;
+   struct r_tri_setup *cache = (struct r_tri_setup *)ts;
    if (qx != ts->quad_x || qy != ts->quad_y) {
       struct r_fs_quad *q = &cache->quad;
       /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
@@ -272,7 +251,7 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
  * loop keeps its size. */
 R_FMA_CLONES
 static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
-                                                     const struct tri_shade *ts,
+                                                     const struct r_tri_setup *ts,
                                                      const float in[][4], int px, int py,
                                                      float color[4])
 {
@@ -281,7 +260,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
 }
 
 /* Shades pixel (px, py), which is inside the draw region. */
-static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct tri_shade *ts,
+static inline __attribute__((always_inline)) void shade_pixel(const struct r_state *rs, const struct r_tri_setup *ts,
                                int px, int py)
 {
    /* polygon stipple: the pstipple stage's kill, first */
@@ -424,7 +403,7 @@ static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
  * pixels are exactly those whose three edge values are positive.  This
  * evaluates that directly over the box cut to the draw region. */
 R_FMA_CLONES
-static void rasterize_direct(const struct r_state *rs, const struct tri_shade *ts,
+static void rasterize_direct(const struct r_state *rs, const struct r_tri_setup *ts,
                              const struct r_plane *p, int32_t x0, int32_t y0,
                              int32_t x1, int32_t y1)
 {
@@ -445,7 +424,7 @@ static void rasterize_direct(const struct r_state *rs, const struct tri_shade *t
  * cache (each pixel is shaded once whatever the order, and the per-fragment
  * operations of one triangle's pixels are independent). */
 R_FMA_CLONES
-static void rasterize_direct_quads(const struct r_state *rs, const struct tri_shade *ts,
+static void rasterize_direct_quads(const struct r_state *rs, const struct r_tri_setup *ts,
                                    const struct r_plane *p, int32_t x0, int32_t y0,
                                    int32_t x1, int32_t y1)
 {
@@ -464,6 +443,39 @@ static void rasterize_direct_quads(const struct r_state *rs, const struct tri_sh
          }
       }
    }
+}
+
+/* The coverage of the block kernels (r_kernel.h r_tri_cover) for the
+ * edges p of an exact triangle (rasterize_direct's conditions) and its
+ * box x0..x1, y0..y1 cut to the draw region: each 64-bit edge value C at
+ * pixel (x, y) is C(ox, oy) - dcdx * (x - ox) + dcdy * (y - oy) with steps
+ * that are multiples of 256 (FIXED_ORDER), so floor((C - 1) / 256), whose
+ * sign is that of C - 1 >= 0, i.e. C > 0, is the reduced value at the
+ * origin plus the unscaled steps.  False when some reduced value over the
+ * box (and the blocks it touches) might not fit in 32 bits. */
+static bool block_cover(const struct r_plane *p, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                        struct r_tri_cover *cv)
+{
+   cv->ox = x0 & ~3;
+   cv->oy = y0 & ~3;
+   cv->x0 = x0;
+   cv->y0 = y0;
+   cv->x1 = x1;
+   cv->y1 = y1;
+   const int64_t w = (int64_t)x1 - cv->ox + 4, h = (int64_t)y1 - cv->oy + 4;
+   for (int e = 0; e < 3; e++) {
+      const int64_t c = p[e].c - (int64_t)p[e].dcdx * cv->ox + (int64_t)p[e].dcdy * cv->oy;
+      const int64_t cr = (c - 1) >> 8;
+      const int32_t dx = -(p[e].dcdx >> 8), dy = p[e].dcdy >> 8;
+      const int64_t bound = (cr < 0 ? -cr : cr) + (int64_t)(dx < 0 ? -dx : dx) * w +
+                            (int64_t)(dy < 0 ? -dy : dy) * h;
+      if (bound >= (INT64_C(1) << 30))
+         return false;
+      cv->c[e] = (int32_t)cr;
+      cv->dx[e] = dx;
+      cv->dy[e] = dy;
+   }
+   return true;
 }
 
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
@@ -519,8 +531,14 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
                 (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
    }
    if (exact) {
-      struct tri_shade ts;
+      struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
+      const r_tri_kernel kernel = rs->tri_kernel[ts.flat_attr[R_FS_COLOR0]];
+      struct r_tri_cover cv;
+      if (kernel && block_cover(p, tx0, ty0, tx1, ty1, &cv)) {
+         kernel(rs, &ts, &cv);
+         return;
+      }
       if (rs->tex_units)
          rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
       else
@@ -528,7 +546,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       return;
    }
 
-   struct tri_shade ts;
+   struct r_tri_setup ts;
    setup_shade(rs, v, back, phong_back, &ts);
    const struct r_shader sh = { tri_shade_pixel, &ts };
    r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, &sh);
@@ -654,4 +672,16 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
       ti = Y[0]; Y[0] = Y[1]; Y[1] = ti;
    }
    rasterize_ccw(rs, v, X, Y, back, phong_back);
+}
+
+void r_choose_kernels(struct r_state *rs)
+{
+   rs->tri_kernel[0] = rs->tri_kernel[1] = NULL;
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   if (rs->reference_kernels ||
+       !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
+      return;
+   rs->tri_kernel[0] = r_block_choose_tri(rs, false);
+   rs->tri_kernel[1] = r_block_choose_tri(rs, true);
+#endif
 }

@@ -40,6 +40,7 @@ static void aa_state(const struct r_state *rs, struct r_state *aa, enum r_aa_mod
    aa->ccw_is_front = true;
    aa->fs_inputs |= 1u << R_FS_AA;
    aa->aa = mode;
+   r_choose_kernels(aa);
 }
 
 /* draw_pipe_aapoint.c:aapoint_point: a square of half size `radius` with

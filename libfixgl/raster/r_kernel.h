@@ -1,0 +1,70 @@
+/*
+ * Raster kernels: the code that shades a primitive's pixels, chosen once
+ * per state at validation (r_choose_kernels), never per pixel.
+ *
+ * Two kernel sets exist:
+ *  - the reference kernels (r_tri.c rasterize_direct and shade_pixel,
+ *    r_frag.c): portable scalar code, one pixel at a time, which handles
+ *    every state and is the specification of the others;
+ *  - the block kernels (r_block_avx2.c, AVX2 + FMA): a triangle's 4x4
+ *    blocks, each shaded as two 4x2 halves of 8 lanes (lane i is pixel
+ *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
+ *    at compile time for the states real programs spend their time in.
+ *    Every lane performs the reference's float operations in the
+ *    reference's order (fmaf where it fuses, true divides, RNE
+ *    conversions), so they produce the same bytes; the kernel-equivalence
+ *    test (tests/unit/test_kernels.c) checks this on random states.
+ * A state no block kernel covers draws with the reference kernels.
+ * FIXGL_KERNELS=reference in the environment forces the reference kernels
+ * for every context created afterwards.
+ */
+#ifndef FGL_R_KERNEL_H
+#define FGL_R_KERNEL_H
+
+#include "r_bin.h"
+
+/* The interpolation setup of one triangle (the oracle's jit setup
+ * function's job; r_tri.c setup_shade), read by the kernels. */
+struct r_tri_setup {
+   struct r_attr_plane z, w;
+   float zoffset;           /* polygon offset, added to every fragment's z */
+   /* Perspective-correct attributes are interpolated premultiplied by 1/w
+    * (lp_state_setup.c:apply_perspective_corr); flat ones come from the
+    * provoking vertex. */
+   struct r_attr_plane ap[R_FS_NUM_INPUTS][4];
+   float flat[R_FS_NUM_INPUTS][4];
+   bool flat_attr[R_FS_NUM_INPUTS];
+   bool need_w;             /* some input is interpolated */
+   unsigned inputs;         /* R_FS_* inputs the fragment shader reads */
+   /* the reference's per-quad texture cache (r_tri.c fill_quad): the
+    * texture coordinates of the quad at (quad_x, quad_y), which the pixels
+    * of a quad's row share, and the fast LOD of the quad for the units
+    * without `soa` */
+   int quad_x, quad_y;
+   struct r_fs_quad quad;
+   struct r_tex_lod lod[R_MAX_TEX_UNITS];
+   /* GL_PHONG_WIN: the face the fragments are lit with */
+   bool phong_back;
+};
+
+/* Coverage of a triangle for the block kernels: the three edge functions
+ * of r_tri.c reduced by FIXED_ORDER (as lp_rast_tri_tmp.h's 4x4 level
+ * reduces them), relative to the origin (ox, oy), a multiple of 4:
+ *    v_e(x, y) = c[e] + (x - ox) * dx[e] + (y - oy) * dy[e]
+ * is floor((C_e(x, y) - 1) / 256) for the exact 64-bit edge value C_e, so
+ * pixel (x, y) is covered exactly when every v_e >= 0.  r_tri.c builds it
+ * only when every v_e over the box fits in 32 bits. */
+struct r_tri_cover {
+   int32_t ox, oy;
+   int32_t c[3], dx[3], dy[3];
+   int32_t x0, y0, x1, y1;  /* the box cut to the draw region, inclusive */
+};
+
+/* The block kernel for the state rs and a triangle whose colour is flat
+ * or interpolated, or NULL when no block kernel covers the state
+ * (r_block_avx2.c; built where the compiler targets x86-64 AVX2:
+ * FGL_HAVE_BLOCK_KERNELS, and called only on a CPU that runs AVX2 and
+ * FMA). */
+r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color);
+
+#endif
