@@ -1,7 +1,8 @@
 /* p_lines.c - non-antialiased lines: the "diamond exit" parallelogram of
  * llvmpipe's line setup, its snapping, width and attribute planes
- * (ORACLE-NOTES.md "Lines and points").  Coverage and colours of random
- * lines, widths 0.6 to 4, float colour buffer, exact compare. */
+ * (ORACLE-NOTES.md "Line and point rasterization").  Coverage and
+ * colours of random lines, widths 0.6 to 4, float colour buffer, exact
+ * compare. */
 #include "probe.h"
 #define W 40
 #define H 40

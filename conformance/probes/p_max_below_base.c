@@ -3,8 +3,8 @@
  * and GL samples its base level; llvmpipe gets a sampler view with no
  * level and reads stale offsets (zeros in a fresh context): the texel is
  * row 0 of level 0's storage, zeros when level 0 was never specified
- * (ORACLE-NOTES.md "Texture sampling: the float path and the general
- * level of detail").  fixgl samples the base level; this probe shows the
+ * (ORACLE-NOTES.md "Texture sampling: the float SoA path and the
+ * general LOD").  fixgl samples the base level; this probe shows the
  * oracle's defect is still there. */
 #include "probe.h"
 

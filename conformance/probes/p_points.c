@@ -1,6 +1,6 @@
 /* p_points.c - legacy (non-sprite) points: size rounding, snapping, the
- * square's placement for odd and even sizes (ORACLE-NOTES.md "Lines and
- * points"). */
+ * square's placement for odd and even sizes (ORACLE-NOTES.md "Line and
+ * point rasterization"). */
 #include "probe.h"
 int main(void) {
   const int S = 40; probe_init_ub(S, S);

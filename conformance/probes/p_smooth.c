@@ -1,9 +1,9 @@
 /* p_smooth.c - GL_POINT_SMOOTH and GL_LINE_SMOOTH through draw's aapoint
  * and aaline stages: the alpha they write without blending, rows from the
- * top (ORACLE-NOTES.md "Lines and points").  The point's outer ring keeps
- * the colour's alpha (0.5 -> 128) and its inner disc gets more (the
- * stage's inverted selection); the line's alpha is the product of its two
- * coverage ramps. */
+ * top (ORACLE-NOTES.md "Line and point rasterization").  The point's
+ * outer ring keeps the colour's alpha (0.5 -> 128) and its inner disc
+ * gets more (the stage's inverted selection); the line's alpha is the
+ * product of its two coverage ramps. */
 #include "probe.h"
 
 static const unsigned char point_alpha[13][13] = {
