@@ -25,8 +25,9 @@
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
 
-/* Implementation limits, matching the oracle's values (llvmpipe-facts t00
- * and glGet queries on Mesa 22.3). */
+/* Implementation limits, matching the oracle's values (ORACLE-NOTES.md
+ * "The oracle and its host", probe p_limits, and glGet queries on Mesa
+ * 22.3). */
 #define FGL_MAX_MODELVIEW_STACK_DEPTH  32
 #define FGL_MAX_PROJECTION_STACK_DEPTH 32
 #define FGL_MAX_TEXTURE_STACK_DEPTH    10

@@ -1,4 +1,5 @@
-/* c_points_lines.c - points and lines (llvmpipe-facts.md §3): point sizes at
+/* c_points_lines.c - points and lines (libfixgl/ORACLE-NOTES.md "Line and
+ * point rasterization"): point sizes at
  * subpixel positions, every line primitive flat and smooth, wide lines in
  * every octant, the diamond-exit rule at pixel centres and edges, clipping
  * at the frame edges, the near/far planes and w near 0, line stipple across

@@ -1,6 +1,7 @@
 /*
  * Points and lines between primitive assembly and the raster core, as the
- * oracle's draw module runs them (llvmpipe-facts.md §3; [S: draw/
+ * oracle's draw module runs them (ORACLE-NOTES.md "Line and point
+ * rasterization", "Points and lines"; [S: draw/
  * draw_pipe_validate.c:validate_pipeline]): clip, then (when line stipple
  * or smoothing is on) the flatshade and stipple stages, then the aapoint /
  * aaline stages (smooth points and lines become triangle quads with a
