@@ -875,8 +875,8 @@ static void lit_points_lines(fc_h *h)
     }
 }
 
-/* ---- smooth points and lines (no blending yet: the coverage shows in the
- * alpha channel) ------------------------------------------------------------ */
+/* ---- smooth points and lines (no blending: the coverage shows in the
+ * alpha channel; raster/smooth_blend_* blend) ------------------------------- */
 
 static void points_smooth(fc_h *h)
 {

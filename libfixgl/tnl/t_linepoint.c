@@ -14,7 +14,7 @@
  *
  * Wide points and lines are never split by draw (llvmpipe sets the wide
  * thresholds to 10000, above the 255 limit), so they are only cut by the
- * draw region (framebuffer, later the scissor).
+ * draw region (the framebuffer intersected with the scissor box).
  */
 #include "tnl/t_pipeline.h"
 
