@@ -71,7 +71,23 @@ int main(void)
    probe_expect("glColor -0.5 -> 0", px(0, 0)[0], 0);
    probe_expect("glColor 1.5 -> 255", px(0, 0)[1], 255);
 
-   /* The clear colour (float_to_ubyte) equals RNE(c*255f). */
+   /* float_to_ubyte, the clear colour's packing: the low 8 bits of
+    * c * (255/256) + 32768.0f.  The sum rounds c*255 to an integer once
+    * more after the product's rounding, so it can part from RNE(c*255f)
+    * only next to a tie k + 0.5: every float within 2^-10 of one. */
+   long parted = 0, scanned = 0;
+   for (int k = 0; k < 255; k++) {
+      float lo = ((float)k + 0.5f - 0x1p-10f) / 255.0f, hi = ((float)k + 0.5f + 0x1p-10f) / 255.0f;
+      for (float f = lo; f <= hi; f = nextafterf(f, 2.0f)) {
+         union { float f; unsigned u; } m = { .f = f * (255.0f / 256.0f) + 32768.0f };
+         scanned++;
+         if ((int)(m.u & 0xff) != rne255(f)) parted++;
+      }
+   }
+   printf("     %ld floats next to the ties scanned\n", scanned);
+   probe_expect("float_to_ubyte parts from RNE(c*255f) next to a tie", parted, 0);
+
+   /* The oracle's clear colour equals RNE(c*255f). */
    srand(22);
    long badc = 0;
    for (int i = 0; i < 2000; i++) {
