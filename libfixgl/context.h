@@ -698,10 +698,8 @@ struct fgl_client_attrib_node {
 
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit
- * saves which member.  Texture (GL_TEXTURE_BIT), evaluator (GL_EVAL_BIT),
- * pixel transfer (GL_PIXEL_MODE_BIT), accumulation (GL_ACCUM_BUFFER_BIT)
- * and display list (GL_LIST_BIT) state get their member here, and their
- * line in the table, when the feature lands. */
+ * saves which member, GL_TEXTURE_BIT, GL_EVAL_BIT, GL_PIXEL_MODE_BIT,
+ * GL_ACCUM_BUFFER_BIT, GL_LIST_BIT and GL_MULTISAMPLE_BIT included. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
 #define FGL_ENABLE_ATTRIB_CAPS 53          /* caps restored by GL_ENABLE_BIT */
 #define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
