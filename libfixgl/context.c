@@ -27,11 +27,15 @@ void fgl_error(struct fgl_context *ctx, GLenum error)
       ctx->ErrorValue = error;
 }
 
-/* Initial values of the state of features still to come (GL 1.3 state
- * tables 6.5-6.31), so that queries report them [S: main/context.c,
- * main/pixel.c:init_pixelmap, main/eval.c:_mesa_init_eval,
- * main/accum.c:_mesa_init_accum, main/multisample.c:_mesa_init_multisample] */
-static void init_pending_state(struct fgl_context *ctx)
+/* Initial values (GL 1.3 state tables 6.5-6.31) of the state no init
+ * function of its own sets: the raster position, the current secondary
+ * colour and fog coordinate (GL 1.4 values without a setter in fixgl's
+ * API, queried only), pixel transfer, zoom and map sizes, the evaluator
+ * grids, multisample and colour-index state, the draw and read buffers
+ * [S: main/context.c, main/pixel.c:init_pixelmap, main/eval.c:
+ * _mesa_init_eval, main/accum.c:_mesa_init_accum, main/multisample.c:
+ * _mesa_init_multisample] */
+static void init_other_state(struct fgl_context *ctx)
 {
    struct fgl_current_attrib *cur = &ctx->Current;
    for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
@@ -103,7 +107,7 @@ struct fgl_context *fgl_context_create(void)
    fgl_init_line(ctx);
    fgl_init_viewport(ctx);
    fgl_init_feedback(ctx);
-   init_pending_state(ctx);
+   init_other_state(ctx);
    fgl_init_eval(ctx);
    /* FIXGL_KERNELS=reference: the reference kernels draw everything
     * (raster/r_kernel.h) */

@@ -25,8 +25,9 @@
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
 
-/* Implementation limits, matching the oracle's values (llvmpipe-facts t00
- * and glGet queries on Mesa 22.3). */
+/* Implementation limits, matching the oracle's values (ORACLE-NOTES.md
+ * "The oracle and its host", probe p_limits, and glGet queries on Mesa
+ * 22.3). */
 #define FGL_MAX_MODELVIEW_STACK_DEPTH  32
 #define FGL_MAX_PROJECTION_STACK_DEPTH 32
 #define FGL_MAX_TEXTURE_STACK_DEPTH    10
@@ -48,10 +49,10 @@
 #define FGL_MIN_LINE_WIDTH             1.0f
 #define FGL_MAX_LINE_WIDTH             255.0f
 #define FGL_POINT_LINE_GRANULARITY     0.1f
-/* Limits of features still to come, reported as the oracle reports them
- * (its Const values for llvmpipe); the texture and evaluator paths are to
- * support exactly these [S: main/config.h, gallium/drivers/llvmpipe/
- * lp_screen.c, lp_limits.h] */
+/* Texture and evaluator limits, reported as the oracle reports them (its
+ * Const values for llvmpipe; the 3D and cube-map sizes are queried only:
+ * fixgl has no such textures) [S: main/config.h, gallium/drivers/
+ * llvmpipe/lp_screen.c, lp_limits.h] */
 #define FGL_MAX_TEXTURE_SIZE           16384   /* LP_MAX_TEXTURE_2D_LEVELS 15 */
 #define FGL_MAX_3D_TEXTURE_SIZE        2048    /* LP_MAX_TEXTURE_3D_LEVELS 12 */
 #define FGL_MAX_CUBE_MAP_TEXTURE_SIZE  16384   /* LP_MAX_TEXTURE_CUBE_LEVELS 15 */
@@ -90,13 +91,13 @@ struct fgl_current_attrib {
    /* every vbo attribute's value outside the vertex format: normal, colour
     * and the materials (which GL groups with the lighting state) */
    float Attrib[FGL_ATTR_COUNT][4];
-   /* Current values that do not take part in drawing yet, kept outside the
-    * vbo until their setters come with their features (Mesa keeps them as
-    * vbo attributes, VERT_ATTRIB_COLOR1, _FOG). */
+   /* GL 1.4 current values without a setter in fixgl's API, kept outside
+    * the vbo and only queried (Mesa keeps them as vbo attributes,
+    * VERT_ATTRIB_COLOR1, _FOG). */
    float SecondaryColor[4];                      /* (0, 0, 0, 1) */
    float FogCoord;                               /* 0 */
-   /* the current raster position (glRasterPos and glWindowPos come with
-    * the pixel path) [S: main/context.h, gl_current_attrib] */
+   /* the current raster position (glRasterPos, glWindowPos: main/rastpos.c)
+    * [S: main/context.h, gl_current_attrib] */
    float RasterPos[4];                           /* (0, 0, 0, 1) */
    float RasterDistance;                         /* 0 */
    float RasterColor[4];                         /* (1, 1, 1, 1) */
@@ -672,7 +673,7 @@ enum fgl_array_index {
    FGL_ARRAY_NORMAL,
    FGL_ARRAY_COLOR,
    FGL_ARRAY_INDEX,        /* state only: colour index mode does not draw */
-   FGL_ARRAY_TEXCOORD,     /* state only until textures land */
+   FGL_ARRAY_TEXCOORD,     /* unit 0's coordinate array */
    FGL_ARRAY_EDGEFLAG,
    FGL_ARRAY_FOGCOORD,     /* GL 1.4 arrays: enabled, pointed at and */
    FGL_ARRAY_COLOR1,       /* queried as Mesa does; not drawn */
@@ -697,10 +698,8 @@ struct fgl_client_attrib_node {
 
 /* glPushAttrib (main/attrib.c) [S: main/attrib.c, gl_attrib_node]: one
  * copy of each server group; the table in attrib.c says which mask bit
- * saves which member.  Texture (GL_TEXTURE_BIT), evaluator (GL_EVAL_BIT),
- * pixel transfer (GL_PIXEL_MODE_BIT), accumulation (GL_ACCUM_BUFFER_BIT)
- * and display list (GL_LIST_BIT) state get their member here, and their
- * line in the table, when the feature lands. */
+ * saves which member, GL_TEXTURE_BIT, GL_EVAL_BIT, GL_PIXEL_MODE_BIT,
+ * GL_ACCUM_BUFFER_BIT, GL_LIST_BIT and GL_MULTISAMPLE_BIT included. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
 #define FGL_ENABLE_ATTRIB_CAPS 53          /* caps restored by GL_ENABLE_BIT */
 #define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
@@ -767,8 +766,8 @@ struct fgl_context {
                                      * bit 31 = leftmost column */
    struct fgl_pixelstore Pack, Unpack;  /* GL_CLIENT_PIXEL_STORE_BIT */
    struct fgl_array_attrib Array;       /* GL_CLIENT_VERTEX_ARRAY_BIT */
-   /* state of features still to come, with its initial values, so that
-    * glGet answers as the oracle does (main/get.c) */
+   /* accumulation buffer, pixel transfer and maps, evaluators, textures,
+    * multisample (state only: OSMesa has no multisample buffers) */
    struct fgl_accum_attrib Accum;
    struct fgl_pixel_attrib Pixel;
    struct fgl_pixelmaps PixelMaps;

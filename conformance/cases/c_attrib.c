@@ -79,7 +79,8 @@ static void stack_errors(fc_h *h)
     glEnd();
     fc_error(h, "push inside glBegin/glEnd");
     fc_get_integer(h, "0 after push in begin", GL_ATTRIB_STACK_DEPTH, 1);
-    /* masks of bits with no group in fixgl yet, and no bit at all */
+    /* masks of the texture, evaluator, list, pixel, accumulation and
+     * multisample groups, and of no bit at all */
     glPushAttrib(GL_TEXTURE_BIT | GL_EVAL_BIT | GL_LIST_BIT | GL_PIXEL_MODE_BIT |
                  GL_ACCUM_BUFFER_BIT | GL_MULTISAMPLE_BIT);
     glPushAttrib(0);

@@ -1,5 +1,5 @@
-/* c_pixelstate.c - the pixel transfer state entry points (no drawing: the
- * pixel path that uses this state comes later): glPixelTransfer{f,i}
+/* c_pixelstate.c - the pixel transfer state entry points (no drawing:
+ * c_pix_draw.c and c_readpix.c draw and read with it): glPixelTransfer{f,i}
  * through every glGet type, glPixelZoom, the ten pixel maps set with
  * glPixelMap{fv,uiv,usv} and read back with each glGetPixelMap type
  * (sizes 1, 2, 256 and the invalid ones, the oracle's conversions), the

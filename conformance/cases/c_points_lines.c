@@ -1,4 +1,5 @@
-/* c_points_lines.c - points and lines (llvmpipe-facts.md §3): point sizes at
+/* c_points_lines.c - points and lines (libfixgl/ORACLE-NOTES.md "Line and
+ * point rasterization"): point sizes at
  * subpixel positions, every line primitive flat and smooth, wide lines in
  * every octant, the diamond-exit rule at pixel centres and edges, clipping
  * at the frame edges, the near/far planes and w near 0, line stipple across
@@ -874,8 +875,8 @@ static void lit_points_lines(fc_h *h)
     }
 }
 
-/* ---- smooth points and lines (no blending yet: the coverage shows in the
- * alpha channel) ------------------------------------------------------------ */
+/* ---- smooth points and lines (no blending: the coverage shows in the
+ * alpha channel; raster/smooth_blend_* blend) ------------------------------- */
 
 static void points_smooth(fc_h *h)
 {

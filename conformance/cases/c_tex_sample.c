@@ -1,5 +1,6 @@
 /* c_tex_sample.c - texture sampling through llvmpipe's fixed-point AoS
- * path (llvmpipe-facts.md §5): every image filter and wrap mode of that
+ * path (libfixgl/ORACLE-NOTES.md "Texture sampling: the 8-bit path"):
+ * every image filter and wrap mode of that
  * path (REPEAT, CLAMP_TO_EDGE) on power-of-two, non-power-of-two, 1x1 and
  * 1D textures, magnified and minified, with the per-quad level of detail
  * choosing between the magnification and minification filters; mipmap

@@ -863,8 +863,8 @@ static void long_draws(fc_h *h)
     fc_error(h, "final");
 }
 
-/* glInterleavedArrays: every format drawn (texture coordinates are
- * fetched by nobody yet: untextured), the arrays it enables and the
+/* glInterleavedArrays: every format drawn (untextured: the texture
+ * coordinates are fetched but not used), the arrays it enables and the
  * strides it stores; errors. */
 static void interleaved(fc_h *h)
 {

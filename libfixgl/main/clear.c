@@ -1,7 +1,7 @@
 /*
  * Clearing: glClearColor (GL_COLOR_BUFFER_BIT state) and glClear.
  * The clear colour is packed with float_to_ubyte and depth with
- * util_pack_z, as the oracle does (llvmpipe-facts.md §1, §7).
+ * util_pack_z, as the oracle does (ORACLE-NOTES.md "Clears").
  */
 #include <math.h>
 
@@ -56,7 +56,8 @@ static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebu
  * ALWAYS with writes; stencil test ALWAYS with every op REPLACE by the
  * clear value under the stencil write mask.  The quad's depth is
  * (float)(Clear * 2 - 1) in clip space, through the viewport transform of
- * the whole buffer (scale = translate = 0.5, fused: llvmpipe-facts.md §1). */
+ * the whole buffer (scale = translate = 0.5, fused: ORACLE-NOTES.md
+ * "Vertex transformation"). */
 static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil)
 {
    struct r_state rs = ctx->_Raster;

@@ -1,7 +1,8 @@
 /*
  * Number conversions of Mesa's main/macros.h that the entry points share:
  * integer arguments normalized to float (confirmed exhaustively against the
- * oracle for colours, llvmpipe-facts.md §2) and x86 float -> int casts.
+ * oracle for colours, ORACLE-NOTES.md "Colour conversion") and x86
+ * float -> int casts.
  */
 #ifndef FGL_MAIN_CONV_H
 #define FGL_MAIN_CONV_H

@@ -10,10 +10,9 @@
  * Which maps the oracle evaluates [S: vbo_exec_eval.c:vbo_exec_eval_update]:
  * COLOR_4, the highest enabled TEXTURE_COORD_n, NORMAL and VERTEX_4 over
  * VERTEX_3.  GL_MAPn_INDEX maps are stored and queried but never
- * evaluated (vbo_exec_eval_update has no line for them).  fixgl has no
- * texture-coordinate attribute yet: the texture-coordinate maps are
- * stored, queried and enabled exactly, and their evaluated values are
- * dropped until the attribute lands.
+ * evaluated (vbo_exec_eval_update has no line for them).  The highest
+ * enabled texture-coordinate map sets unit 0's coordinate (FGL_ATTR_TEX0,
+ * eval/texcoord_maps).
  */
 #include <math.h>
 #include <string.h>

@@ -393,9 +393,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_READ_BUFFER:
       set_ints(val, V_INT, 1, (int)ctx->Pixel.ReadBuffer, 0, 0, 0);
       return true;
-   /* ---- GL 1.3 state of colour index mode and of features still to come
-    * (context.h: their initial values until their setters land), with
-    * the types of get_hash_params.py ---- */
+   /* ---- GL 1.3 state of colour index mode, buffer bits and GL 1.4
+    * current values, with the types of get_hash_params.py ---- */
    /* colour index (CONST / CONTEXT_INT / CONTEXT_FLOAT) */
    case GL_CURRENT_INDEX:
       /* extra_flush_current */
@@ -421,7 +420,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_SAMPLES:
       set_ints(val, V_INT, 1, 0, 0, 0, 0);
       return true;
-   /* GL 1.4 current values (no setter yet) */
+   /* GL 1.4 current values (no setter in fixgl's API: the initial values) */
    case GL_CURRENT_SECONDARY_COLOR:
       set_floats(val, V_FLOATN, ctx->Current.SecondaryColor, 4);
       return true;

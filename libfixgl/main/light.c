@@ -6,8 +6,8 @@
  * Entry points validate as Mesa's main/light.c does and store what it
  * stores: positions through the modelview and spot directions through its
  * 3x3 part at call time (TRANSFORM_POINT / TRANSFORM_DIRECTION, float, left
- * to right), cos of the cutoff from a double angle (llvmpipe-facts.md §4
- * "State captured at glLight time").
+ * to right), cos of the cutoff from a double angle (ORACLE-NOTES.md
+ * "Lighting order of operations", what glLight stores).
  */
 #include <math.h>
 #include <string.h>
@@ -87,7 +87,8 @@ static void set_light(struct fgl_context *ctx, struct fgl_light *l, GLenum pname
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_LIGHT);
    memcpy(dst, p, (size_t)n * sizeof(float));
    if (pname == GL_SPOT_CUTOFF) {
-      /* cosf of a double angle, clamped to >= 0 (llvmpipe-facts.md §4) */
+      /* cosf of a double angle, clamped to >= 0 (ORACLE-NOTES.md
+       * "Lighting order of operations") */
       l->CosCutoff = cosf((float)(l->SpotCutoff * M_PI / 180.0));
       if (l->CosCutoff < 0)
          l->CosCutoff = 0;
@@ -703,7 +704,7 @@ void fgl_set_color_material_enabled(struct fgl_context *ctx, bool state)
  * prog_statevars.c).  Lighting runs in object space when every enabled
  * light is directional and not a spot, the viewer is infinite, there is no
  * separate specular colour and the modelview preserves lengths
- * (llvmpipe-facts.md §4 "Eye space vs OBJECT space"); the modelview must
+ * (ORACLE-NOTES.md "Lighting order of operations"); the modelview must
  * have been analysed. */
 void fgl_update_lighting(struct fgl_context *ctx)
 {

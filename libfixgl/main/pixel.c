@@ -4,7 +4,8 @@
  * glGetPixelMap{fv,uiv,usv} [S: mesa/main/pixel.c].  The state is read by
  * glGet (main/get.c), saved by glPushAttrib(GL_PIXEL_MODE_BIT)
  * (main/attrib.c; the maps are not part of the group, gl_pixel_attrib),
- * and will be used by glDrawPixels, glCopyPixels and glBitmap.
+ * and used by glDrawPixels, glCopyPixels, glReadPixels and the texture
+ * image paths (main/drawpix.c, main/readpix.c, main/pixelformat.c).
  *
  * Oracle rules:
  *  - glPixelMap checks the size first: outside [1, MAX_PIXEL_MAP_TABLE]

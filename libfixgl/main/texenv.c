@@ -3,8 +3,9 @@
  * glGetTexEnv{f,i}v for GL_TEXTURE_ENV (mode, colour, the combiner state
  * of GL 1.3 with the ATI_texture_env_combine3, NV_texture_env_combine4 and
  * dot3 additions the oracle enables) and GL_TEXTURE_FILTER_CONTROL's LOD
- * bias, per texture unit (the active unit; glActiveTexture comes with
- * multitexture).  State only: nothing samples a texture yet.
+ * bias, per texture unit (the active unit, glActiveTexture).  The
+ * fragment stage applies the environment (raster/r_frag.c); state.c
+ * translates this state for it.
  */
 #include <string.h>
 

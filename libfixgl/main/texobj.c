@@ -795,9 +795,10 @@ void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params)
 
 /* ---- GL_TEXTURE_BIT ---- */
 
-/* [S: attrib.c:_mesa_PushAttrib] the default objects always; for the
- * units that have had a texture bound (NumCurrentTexUsed; only unit 0
- * exists for now) the LOD bias and a copy of each bound named object.
+/* [S: attrib.c:_mesa_PushAttrib] the default objects always; once a
+ * texture has been bound (NumCurrentTexUsed > 0) unit 0's LOD bias and a
+ * copy of each object bound to unit 0 (fixgl keeps unit 0's only; the
+ * other units' bindings are restored by the group's copy).
  * Otherwise the node keeps what an earlier push at the same depth left
  * (the node is allocated zeroed once). */
 void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node)

@@ -11,8 +11,9 @@
  * generic_nop, GL_INVALID_OPERATION without any effect
  * [S: main/context.c:generic_nop, vbo/vbo_exec_api.c:vbo_exec_Begin].
  *
- * glTexCoordPointer and glIndexPointer keep their state, errors and queries
- * only: texturing comes later and colour index mode does not draw.
+ * glIndexPointer keeps its state, errors and queries only: colour index
+ * mode does not draw.  Texture coordinate arrays are fetched per unit
+ * (glClientActiveTexture) by tnl/t_array.c.
  */
 #include <stddef.h>
 

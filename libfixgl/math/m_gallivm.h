@@ -2,7 +2,7 @@
  * gallivm's transcendental approximations, which the oracle's shaders use
  * for POW (LIT's specular term, the spot exponent) and EX2 (the fog
  * factor): not libm
- * (llvmpipe-facts.md §4 "pow / LIT is NOT libm"; Mesa 22.3
+ * (ORACLE-NOTES.md "gallivm's pow, exp2 and log2"; Mesa 22.3
  * gallivm/lp_bld_arit.c: lp_build_pow, lp_build_exp2, lp_build_log2_approx,
  * lp_build_polynomial).  llvm.fmuladd is fused on the oracle's x86 hosts:
  * fmaf() below.

@@ -4,7 +4,8 @@
  * Reproduces Mesa 22.3's src/mesa/math/m_matrix.c: the builders, the 3x4
  * and 4x4 products with their left-to-right sums, and the matrix analysis
  * that decides which product is used.  Order of operations is part of the
- * contract (llvmpipe-facts.md §1); the file is built with -ffp-contract=off.
+ * contract (ORACLE-NOTES.md "Vertex transformation"); the file is built
+ * with -ffp-contract=off.
  */
 #include "m_matrix.h"
 

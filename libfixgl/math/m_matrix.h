@@ -1,8 +1,8 @@
 /*
  * Mesa-exact float matrix arithmetic.
  *
- * Every builder reproduces the oracle's CPU code (llvmpipe-facts.md §1,
- * "Matrix builders, all float"): the same float operations in the same
+ * Every builder reproduces the oracle's CPU code (ORACLE-NOTES.md "Vertex
+ * transformation", its matrix builders): the same float operations in the same
  * order, so that the model-view-projection product handed to the vertex
  * stage is bit-identical.  Matrices are column-major (OpenGL layout):
  * element (row r, column c) is m[c*4 + r].

@@ -1,7 +1,7 @@
 /*
  * The coverage lowering the draw module appends to the fragment shader for
- * its smooth point and line quads (llvmpipe-facts.md §3 "GL_POINT_SMOOTH",
- * "GL_LINE_SMOOTH"; [S: gallium/auxiliary/nir/nir_draw_helpers.c:
+ * its smooth point and line quads (ORACLE-NOTES.md "Line and point
+ * rasterization"; [S: gallium/auxiliary/nir/nir_draw_helpers.c:
  * nir_lower_aapoint_impl, nir_lower_aaline_block]).  It runs on the
  * shader's final colour, so after everything the fixed-function program
  * computes and before the per-fragment operations (alpha test included).

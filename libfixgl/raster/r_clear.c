@@ -1,7 +1,7 @@
 /*
  * Whole-buffer clears.  Values arrive already packed (the oracle packs the
  * clear colour with float_to_ubyte and the depth with util_pack64_z,
- * llvmpipe-facts.md §1, §7).
+ * ORACLE-NOTES.md "Clears").
  */
 #include "r_state.h"
 

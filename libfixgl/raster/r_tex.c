@@ -1,6 +1,8 @@
 /*
  * Texture sampling, bit-exact with llvmpipe's fixed-point AoS path for
- * 8-bit unorm textures (llvmpipe-facts.md §5; probes t13, t15) and its
+ * 8-bit unorm textures (ORACLE-NOTES.md "Texture sampling: the 8-bit
+ * path", "Texture sampling: level of detail per quad"; probes p_tex,
+ * p_mipmap) and its
  * fast level-of-detail selection [S: gallivm/lp_bld_sample_aos.c,
  * lp_bld_sample.c:lp_build_rho, lp_build_lod_selector, lp_bld_arit.c:
  * lp_build_fast_log2, lp_build_ilog2].

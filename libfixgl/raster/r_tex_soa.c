@@ -1,11 +1,11 @@
 /*
  * llvmpipe's float (SoA) texture sampling path and its general level-of-
- * detail selection, bit-exact (probes /work/shared/reference/probes/
- * t30_texsoa.c, the C model, and t31_texsoa_fixgl.c, this file and r_tex.c
- * against the oracle: every wrap mode x filter x size, mipmaps, LOD bias,
+ * detail selection, bit-exact (ORACLE-NOTES.md "Texture sampling: the
+ * float SoA path and the general LOD"; probe conformance/probes/
+ * p_tex_float.c for the wraps and float lerps; cases texture/wrap_*,
+ * texture/lod_*: every wrap mode x filter x size, mipmaps, LOD bias,
  * MIN_LOD/MAX_LOD, BASE/MAX_LEVEL, 1D, border colours of every base
- * format, projective coordinates; 0 mismatches in ~12M samples;
- * ORACLE-NOTES.md "Texture sampling: the float SoA path").
+ * format, projective coordinates).
  *
  * r_tex_sample (r_tex.c) hands a lookup here when state.c set `soa`:
  *  - float_path: the sampler is not one the fixed-point AoS path takes
@@ -64,7 +64,8 @@ static inline float fmax_ps(float a, float b)
 
 /* lp_build_lerp on floats: lp_build_mad(w, v1 - v0, v0), an
  * llvm.fmuladd, fused on the FMA host [S: lp_bld_arit.c:
- * lp_build_lerp_simple, lp_build_fmuladd] (llvmpipe-facts.md §0) */
+ * lp_build_lerp_simple, lp_build_fmuladd] (ORACLE-NOTES.md "The oracle
+ * and its host") */
 static inline float lerp_f(float w, float v0, float v1)
 {
    return fmaf(w, v1 - v0, v0);

@@ -1,6 +1,6 @@
 /*
  * Geometric clipping against the six view-volume planes, as the oracle's
- * draw module does it (llvmpipe-facts.md §1 "Clipping"; Mesa
+ * draw module does it (ORACLE-NOTES.md "Clipping"; Mesa
  * draw_pipe_clip.c: do_clip_tri, interp, emit_poly):
  *  - planes in outcode-bit order, Sutherland-Hodgman, inside iff dp >= 0;
  *  - the new vertex is interpolated from whichever end is inside the plane

@@ -1,7 +1,8 @@
 /*
  * The fog coordinate per vertex, as the oracle's fixed-function vertex
  * program computes it (Mesa 22.3 ffvertex_prog.c build_fog, compiled
- * through prog_to_nir and gallivm; llvmpipe-facts.md §4 "Fog"):
+ * through prog_to_nir and gallivm; ORACLE-NOTES.md "Fog: coordinate and
+ * factor"):
  *
  *   source GL_FRAGMENT_DEPTH, by GL_FOG_DISTANCE_MODE_NV:
  *     GL_EYE_PLANE_ABSOLUTE_NV (default)  |z_eye|

@@ -1,7 +1,8 @@
 /*
  * Per-vertex lighting, as the oracle's fixed-function vertex program
  * computes it (Mesa 22.3 ffvertex_prog.c:build_lighting, compiled through
- * prog_to_nir and gallivm; llvmpipe-facts.md §4):
+ * prog_to_nir and gallivm; ORACLE-NOTES.md "Lighting order of
+ * operations"):
  *
  *   colour = emission + ambient_material * global_ambient
  *          + sum over enabled lights, in index order, of

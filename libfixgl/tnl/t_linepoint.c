@@ -1,6 +1,7 @@
 /*
  * Points and lines between primitive assembly and the raster core, as the
- * oracle's draw module runs them (llvmpipe-facts.md §3; [S: draw/
+ * oracle's draw module runs them (ORACLE-NOTES.md "Line and point
+ * rasterization", "Points and lines"; [S: draw/
  * draw_pipe_validate.c:validate_pipeline]): clip, then (when line stipple
  * or smoothing is on) the flatshade and stipple stages, then the aapoint /
  * aaline stages (smooth points and lines become triangle quads with a
@@ -13,7 +14,7 @@
  *
  * Wide points and lines are never split by draw (llvmpipe sets the wide
  * thresholds to 10000, above the 255 limit), so they are only cut by the
- * draw region (framebuffer, later the scissor).
+ * draw region (the framebuffer intersected with the scissor box).
  */
 #include "tnl/t_pipeline.h"
 

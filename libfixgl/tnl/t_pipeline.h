@@ -13,7 +13,7 @@
 struct fgl_context;
 
 /* A vertex after the vertex "shader": clip-space position, outcode bits
- * (llvmpipe-facts.md §1 "Outcodes"), its edge flag (vertex_header.edgeflag:
+ * (ORACLE-NOTES.md "Clipping"), its edge flag (vertex_header.edgeflag:
  * the glEdgeFlag value == 1.0, or 1 without per-vertex edge flags), window
  * position and varyings. */
 struct t_vertex {
@@ -34,7 +34,7 @@ struct t_vertex {
 #define T_RESET_STIPPLE 0x8u
 
 /* A column-major matrix m times a position p as the oracle's vertex
- * program does it (llvmpipe-facts.md §1 "Vertex path"; ffvertex_prog.c
+ * program does it (ORACLE-NOTES.md "Vertex transformation"; ffvertex_prog.c
  * MUL then MADs, the MADs unfused):
  * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded. */
 static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)

@@ -1,7 +1,8 @@
 /*
  * Primitive assembly: immediate-mode primitives to triangles, in the vertex
- * orders the oracle uses (llvmpipe-facts.md §2 "Flat shading" and "quad
- * diagonal"; Mesa lp_setup_vbuf.c and draw_decompose_tmp.h), with the
+ * orders the oracle uses (ORACLE-NOTES.md "Primitive decomposition and
+ * the provoking vertex"; Mesa lp_setup_vbuf.c and draw_decompose_tmp.h),
+ * with the
  * provoking vertex last in every triangle:
  *   TRIANGLES       (i, i+1, i+2)
  *   TRIANGLE_STRIP  (i, i+1, i+2) for even i, (i+1, i, i+2) for odd i

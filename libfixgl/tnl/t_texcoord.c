@@ -1,7 +1,8 @@
 /*
  * Texture coordinates, as the oracle's fixed-function vertex program
  * computes them (Mesa 22.3 ffvertex_prog.c:build_texture_transform,
- * through prog_to_nir and gallivm; llvmpipe-facts.md §4): for each unit
+ * through prog_to_nir and gallivm; ORACLE-NOTES.md "The fixed-function
+ * vertex program"): for each unit
  * the fragment program reads,
  *   - with coordinate generation, per component: OBJECT_LINEAR and
  *     EYE_LINEAR a DP4 of the object or eye position with the plane,

@@ -5,7 +5,8 @@
  * does, and the batching is reproduced exactly because it is observable:
  * llvmpipe splits a smooth quad along 0-2 or 1-3 depending on whether any
  * vertex in the same 4096-vertex segment of the same draw needs clipping
- * (llvmpipe-facts.md §2 "SURPRISE - quad diagonal").  So the store tracks
+ * (ORACLE-NOTES.md "Primitive decomposition and the provoking vertex").
+ * So the store tracks
  * what decides draw boundaries in Mesa 22.3's vbo_exec:
  *  - the vertex format (each attribute's component count) of the batch;
  *    a larger format "upgrades" the vertex and splits the batch;

@@ -1,6 +1,6 @@
 /*
  * Vertex transform, as the oracle's fixed-function vertex shader computes it
- * (llvmpipe-facts.md §1 "Vertex path", §2 "Vertex colours"):
+ * (ORACLE-NOTES.md "Vertex transformation", "Colour conversion"):
  *   clip = ((x*C0 + y*C1) + z*C2) + w*C3   (MVP columns, every op rounded)
  *   oow  = 1/clip.w,  win = fma(clip*oow, scale, translate)
  * then the colours (the vertex colour, or the lit colours of t_light.c)

@@ -1,7 +1,7 @@
 /*
  * test_convert.c - unit tests of the raster core's float -> unorm
- * conversions (raster/r_tri.c; llvmpipe-facts.md §1 "Depth", §2
- * "Float -> unorm8 colour").
+ * conversions (raster/r_tri.c; ORACLE-NOTES.md "Depth conversion and
+ * polygon offset", "Colour conversion").
  *
  *   colour: RNE(min(c, 1) * 255.0f), negative and NaN give 0
  *   depth:  clamp to [0, 1] (NaN -> 0), then RNE(z * 16777215.0f) for Z24

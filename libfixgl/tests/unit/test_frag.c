@@ -1,8 +1,8 @@
 /*
  * test_frag.c - unit tests of the per-fragment operations
  * (raster/r_frag.c r_fragment_ops) on a one-pixel target, against
- * hand-written models of the oracle's rules (llvmpipe-facts.md §6,
- * libfixgl/ORACLE-NOTES.md "Per-fragment operations"):
+ * hand-written models of the oracle's rules (libfixgl/ORACLE-NOTES.md
+ * "Blending, alpha test, dithering", "Per-fragment operations"):
  *
  *   blend terms     (t + (t >> 8) + 128) >> 8 with t = a * f, for every a, f
  *                   (lp_build_mul_norm; 24 pairs differ from round(t / 255)),

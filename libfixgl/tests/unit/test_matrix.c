@@ -2,7 +2,8 @@
  * test_matrix.c - unit tests of math/m_matrix.c against hand-computed values.
  *
  * Every expected matrix below was worked out by hand from the builder's
- * float formulas (m_matrix.c, llvmpipe-facts.md §1) and is written as a
+ * float formulas (m_matrix.c, ORACLE-NOTES.md "Vertex transformation")
+ * and is written as a
  * literal.  The cases are chosen so that the arithmetic is exact, except
  * for the sine/cosine of 90 and 180 degrees, whose float values are the
  * well-known ones (cosf((float)(pi/2)) = -0x1.777a5cp-25, sinf((float)pi) =

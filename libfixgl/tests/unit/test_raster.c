@@ -2,7 +2,8 @@
  * test_raster.c - unit tests of the raster core's triangle setup
  * (raster/r_tri.c): snapping, edge functions and the fill rule.
  *
- * The rules (llvmpipe-facts.md §1, r_tri.c): window coordinates are y-down;
+ * The rules (ORACLE-NOTES.md "Rasterization: snapping, fill rule, edge
+ * functions", r_tri.c): window coordinates are y-down;
  * a vertex snaps to X = RNE((x - 0.5) * 256), so the centre of pixel
  * (px, py) is (256 px, 256 py); for each edge i->j of a triangle with
  * positive snapped area, dcdx = Yi - Yj, dcdy = Xi - Xj,

@@ -14,9 +14,10 @@
  *
  * A frame that differs fails the test and leaves DIR/diff/frame-NNNN.png
  * (differing pixels red, equal ones dimmed).  --fixgl-has-glbitmap no: the
- * demo draws bitmap text and libfixgl does not export glBitmap yet (known
- * at configure time from libfixgl/main/api_list.h): both runs must still
- * succeed, then the test reports SKIP (exit 77) saying why.
+ * demo draws bitmap text and libfixgl does not export glBitmap (known at
+ * configure time from libfixgl/main/api_list.h, which lists it now): both
+ * runs must still succeed, then the test reports SKIP (exit 77) saying
+ * why.
  */
 #include <dirent.h>
 #include <errno.h>
