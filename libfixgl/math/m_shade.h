@@ -121,7 +121,10 @@ void m_shade_point_prepared(const struct m_shade_env *env, const float n[3], con
  * portable one (math/m_shade8.c, m_shade_point_prepared lane by lane).
  * Both are also callable directly (tests, benchmarks);
  * m_shade_point8_avx2 exists only where M_SHADE_HAVE_AVX2 is defined and
- * may be called only when m_shade_point8_avx2_supported(). */
+ * may be called only when m_shade_point8_avx2_supported().
+ * (ISO C before C2X does not convert float (*)[8] to const float (*)[8]
+ * silently: a caller with non-const arrays casts them,
+ * (const float (*)[M_SHADE_LANES])n, or -Wpedantic warns.) */
 #define M_SHADE_LANES 8
 
 void m_shade_point8(const struct m_shade_env *env, const float n[3][M_SHADE_LANES],

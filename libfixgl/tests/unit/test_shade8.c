@@ -95,7 +95,7 @@ static struct {
    long lights_dir, lights_dir_spot, lights_pos, lights_pos_spot;
    long faces_bp, faces_ct, shin0, shin128, back_calls, cm_calls, sep_calls, lv_calls;
    long lanes_nan_n, lanes_zero_n, lanes_inf_n, lanes_axis_n, lanes_at_light, lanes_at_eye;
-   long lanes_special_p, lanes_special_color;
+   long lanes_special_p, lanes_special_color, lanes_spot_boundary, spot_boundary_envs;
 } cov;
 
 /* ---- environments ---- */
@@ -171,6 +171,39 @@ static void rand_material(struct m_shade_material *m)
    m->f0 = frand(0.0f, 1.0f);
 }
 
+/* A point exactly on the cone of a positional spot light (its cosine
+ * equal to the cutoff, computed with m_shade.c's operations), for the
+ * lanes that test c >= cos(sc) at equality. */
+static bool have_boundary;
+static float boundary_p[3];
+
+static void set_spot_boundary(struct m_shade_env *e)
+{
+   have_boundary = false;
+   if (!chance(0.5f))
+      return;
+   for (unsigned li = 0; li < e->num_lights; li++) {
+      struct m_shade_light *l = &e->light[li];
+      if (l->position[3] == 0.0f || !l->spot)
+         continue;
+      float P[3] = { frand(-2.0f, 2.0f), frand(-2.0f, 2.0f), frand(-6.0f, 0.5f) }, L[3];
+      for (int k = 0; k < 3; k++)
+         L[k] = e->prep.light[li].L[k] - P[k];
+      const float d = sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+      for (int k = 0; k < 3; k++)
+         L[k] = L[k] / d;
+      const float cs = -L[0] * l->spot_direction[0] + -L[1] * l->spot_direction[1] +
+                       -L[2] * l->spot_direction[2];
+      if (!(cs > -1.0f && cs < 1.0f))
+         continue;
+      l->spot_cos_cutoff = cs;   /* m_shade_prepare reads no cutoff of a positional light */
+      memcpy(boundary_p, P, sizeof(P));
+      have_boundary = true;
+      cov.spot_boundary_envs++;
+      return;
+   }
+}
+
 static void rand_env(struct m_shade_env *e)
 {
    memset(e, 0, sizeof(*e));
@@ -187,6 +220,7 @@ static void rand_env(struct m_shade_env *e)
    e->color_material = chance(0.4f) ? 0 : rnd() % 256;
    /* as fgl_update_shade_env does after filling the fields */
    m_shade_prepare(e);
+   set_spot_boundary(e);
 }
 
 /* An environment from a context's GL state (fgl_update_shade_env). */
@@ -326,6 +360,12 @@ static void rand_lane(const struct m_shade_env *e, struct batch *b, int i)
       else
          n[0] = n[1] = 0.0f, n[2] = 1.0f;
       break;
+   case 14: case 15: case 16: /* exactly on a spot cone */
+      if (have_boundary) {
+         memcpy(p, boundary_p, sizeof(p));
+         cov.lanes_spot_boundary++;
+      }
+      break;
    default:
       break;
    }
@@ -447,6 +487,7 @@ static void test_random(void)
    for (int it = 0; it < 1000; it++) {
       struct m_shade_env e;
       gl_env(ctx, &e);
+      have_boundary = false;
       cov.gl_envs++;
       run_env(&e, 12, have_avx2, bad);
    }
@@ -461,9 +502,10 @@ static void test_random(void)
    printf("  calls: %ld back face (two-sided), %ld colour material, %ld separate specular, "
           "%ld local viewer\n", cov.back_calls, cov.cm_calls, cov.sep_calls, cov.lv_calls);
    printf("  lanes: %ld zero n, %ld NaN n, %ld inf n, %ld axis n, %ld at a light, %ld at the "
-          "eye, %ld NaN/inf P, %ld odd colours\n", cov.lanes_zero_n, cov.lanes_nan_n,
-          cov.lanes_inf_n, cov.lanes_axis_n, cov.lanes_at_light, cov.lanes_at_eye,
-          cov.lanes_special_p, cov.lanes_special_color);
+          "eye, %ld NaN/inf P, %ld odd colours, %ld on a spot cone (%ld environments)\n",
+          cov.lanes_zero_n, cov.lanes_nan_n, cov.lanes_inf_n, cov.lanes_axis_n,
+          cov.lanes_at_light, cov.lanes_at_eye, cov.lanes_special_p, cov.lanes_special_color,
+          cov.lanes_spot_boundary, cov.spot_boundary_envs);
    printf("  m_shade_point8 is the %s kernel; differing lanes: dispatched %ld, portable %ld, "
           "avx2 %ld%s\n", have_avx2 ? "AVX2" : "portable", bad[0], bad[1], bad[2],
           have_avx2 ? "" : " (not run: no AVX2/FMA)");
