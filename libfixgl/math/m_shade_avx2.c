@@ -53,6 +53,12 @@ static inline v8 vsel(v8 a, v8 b, v8 mask)
    return _mm256_blendv_ps(a, b, mask);
 }
 
+/* whether any lane of a mask is set */
+static inline bool any(v8 mask)
+{
+   return _mm256_movemask_ps(mask) != 0;
+}
+
 static inline v8 vneg(v8 x)
 {
    return _mm256_xor_ps(x, vset(-0.0f));
@@ -265,8 +271,10 @@ void m_shade_point8_avx2(const struct m_shade_env *env, const float n[3][M_SHADE
             const v8 sd[3] = { vset(l->spot_direction[0]), vset(l->spot_direction[1]),
                                vset(l->spot_direction[2]) };
             const v8 cs = dot3v(negL, sd);
-            spot = vsel(zero, spowv(cs, l->spot_exponent),
-                        _mm256_cmp_ps(cs, vset(l->spot_cos_cutoff), _CMP_GE_OQ));
+            const v8 inside = _mm256_cmp_ps(cs, vset(l->spot_cos_cutoff), _CMP_GE_OQ);
+            /* (no lane inside the cone: every lane's spot is 0, the
+             * power is not needed) */
+            spot = any(inside) ? vsel(zero, spowv(cs, l->spot_exponent), inside) : zero;
          }
       } else {
          L[0] = vset(lp->L[0]);
@@ -285,13 +293,18 @@ void m_shade_point8_avx2(const struct m_shade_env *env, const float n[3][M_SHADE
          ambient[i] = vmul(vset(l->ambient[i]), m_ambient[i]);
       if (!cook_torrance) {
          const v8 fd = max0v(ndl);
-         /* fs where ndl > 0 (the other lanes' value is not used) */
-         half_vector8(lp, fixed_h, L, V, H);
-         const v8 fs = spowv(max0v(dot3v(N, H)), mat->shininess);
          for (int i = 0; i < 3; i++) {
             diffuse[i] = vmul(fd, vmul(vset(l->diffuse[i]), m_diffuse[i]));
-            specular[i] = vsel(zero, vmul(fs, vmul(vset(l->specular[i]), m_specular[i])),
-                               ndl_pos);
+            specular[i] = zero;
+         }
+         /* fs where ndl > 0 (the other lanes' value is not used; no lane
+          * with ndl > 0: every lane's specular is 0) */
+         if (any(ndl_pos)) {
+            half_vector8(lp, fixed_h, L, V, H);
+            const v8 fs = spowv(max0v(dot3v(N, H)), mat->shininess);
+            for (int i = 0; i < 3; i++)
+               specular[i] = vsel(zero, vmul(fs, vmul(vset(l->specular[i]), m_specular[i])),
+                                  ndl_pos);
          }
       } else {
          const v8 ndv = dot3v(N, V);
@@ -300,25 +313,28 @@ void m_shade_point8_avx2(const struct m_shade_env *env, const float n[3][M_SHADE
             diffuse[i] = vsel(zero, vmul(vmul(one_minus_metal, ndl),
                                          vmul(vset(l->diffuse[i]), c[i])), ndl_pos);
          const v8 lobe = _mm256_and_ps(ndl_pos, _mm256_cmp_ps(ndv, zero, _CMP_GT_OQ));
-         half_vector8(lp, fixed_h, L, V, H);
-         const v8 ndh = max0v(dot3v(N, H));
-         const v8 vdh = max0v(dot3v(V, H));
-         const v8 a2 = vset(mp->a2), k = vset(mp->k), one_minus_k = vset(mp->one_minus_k);
-         const v8 pi = vset(M_SHADE_PI);
-         /* t = ndh*ndh*(a2 - 1) + 1;  D = a2 / (PI * t * t) */
-         const v8 t = vadd(vmul(vmul(ndh, ndh), vset(mp->a2_minus_1)), one);
-         const v8 D = vdiv(a2, vmul(vmul(pi, t), t));
-         /* G = (ndl / (ndl*(1 - k) + k)) * (ndv / (ndv*(1 - k) + k)) */
-         const v8 G = vmul(vdiv(ndl, vadd(vmul(ndl, one_minus_k), k)),
-                           vdiv(ndv, vadd(vmul(ndv, one_minus_k), k)));
-         const v8 q = vsub(one, vdh);
-         const v8 qq = vmul(q, q);
-         const v8 q5 = vmul(vmul(qq, qq), q);
-         /* s = PI * D * G / (4 * ndv) */
-         const v8 s = vdiv(vmul(vmul(pi, D), G), vmul(vset(4.0f), ndv));
-         for (int i = 0; i < 3; i++) {
-            const v8 F = vadd(F0[i], vmul(vsub(one, F0[i]), q5));
-            specular[i] = vsel(zero, vmul(vmul(F, s), vset(l->specular[i])), lobe);
+         specular[0] = specular[1] = specular[2] = zero;
+         if (any(lobe)) {   /* else every lane's specular is 0 */
+            half_vector8(lp, fixed_h, L, V, H);
+            const v8 ndh = max0v(dot3v(N, H));
+            const v8 vdh = max0v(dot3v(V, H));
+            const v8 a2 = vset(mp->a2), k = vset(mp->k), one_minus_k = vset(mp->one_minus_k);
+            const v8 pi = vset(M_SHADE_PI);
+            /* t = ndh*ndh*(a2 - 1) + 1;  D = a2 / (PI * t * t) */
+            const v8 t = vadd(vmul(vmul(ndh, ndh), vset(mp->a2_minus_1)), one);
+            const v8 D = vdiv(a2, vmul(vmul(pi, t), t));
+            /* G = (ndl / (ndl*(1 - k) + k)) * (ndv / (ndv*(1 - k) + k)) */
+            const v8 G = vmul(vdiv(ndl, vadd(vmul(ndl, one_minus_k), k)),
+                              vdiv(ndv, vadd(vmul(ndv, one_minus_k), k)));
+            const v8 q = vsub(one, vdh);
+            const v8 qq = vmul(q, q);
+            const v8 q5 = vmul(vmul(qq, qq), q);
+            /* s = PI * D * G / (4 * ndv) */
+            const v8 s = vdiv(vmul(vmul(pi, D), G), vmul(vset(4.0f), ndv));
+            for (int i = 0; i < 3; i++) {
+               const v8 F = vadd(F0[i], vmul(vsub(one, F0[i]), q5));
+               specular[i] = vsel(zero, vmul(vmul(F, s), vset(l->specular[i])), lobe);
+            }
          }
       }
 

@@ -642,7 +642,7 @@ static void bench(void)
       }
       const int reps = 400;
       double best_s = 1e9, best_p = 1e9, best_a = 1e9;
-      for (int t = 0; t < 3; t++) {
+      for (int t = 0; t < 5; t++) {
          best_s = fmin(best_s, bench_scalar(&e, bs, reps));
          best_p = fmin(best_p, bench8(m_shade_point8_portable, &e, bs, reps));
 #if defined(M_SHADE_HAVE_AVX2)
