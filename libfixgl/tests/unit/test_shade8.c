@@ -96,7 +96,32 @@ static struct {
    long faces_bp, faces_ct, shin0, shin128, back_calls, cm_calls, sep_calls, lv_calls;
    long lanes_nan_n, lanes_zero_n, lanes_inf_n, lanes_axis_n, lanes_at_light, lanes_at_eye;
    long lanes_special_p, lanes_special_color, lanes_spot_boundary, spot_boundary_envs;
+   long lanes_ndl_zero;
 } cov;
+
+/* Whether n.l is exactly 0 at a lane for one of the lights (the operations
+ * of m_shade.c), for the coverage report. */
+static bool ndl_zero(const struct m_shade_env *e, const float n[3], const float p[3], bool back)
+{
+   float N[3] = { n[0], n[1], n[2] };
+   const float r = 1.0f / sqrtf(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+   for (int k = 0; k < 3; k++)
+      N[k] = back && e->two_side ? -(N[k] * r) : N[k] * r;
+   for (unsigned li = 0; li < e->num_lights; li++) {
+      float L[3];
+      for (int k = 0; k < 3; k++)
+         L[k] = e->light[li].position[3] != 0.0f ? e->prep.light[li].L[k] - p[k]
+                                                 : e->prep.light[li].L[k];
+      if (e->light[li].position[3] != 0.0f) {
+         const float d = sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+         for (int k = 0; k < 3; k++)
+            L[k] = L[k] / d;
+      }
+      if (N[0] * L[0] + N[1] * L[1] + N[2] * L[2] == 0.0f)
+         return true;
+   }
+   return false;
+}
 
 /* ---- environments ---- */
 
@@ -453,6 +478,7 @@ static void run_env(const struct m_shade_env *e, int batches, bool have_avx2, lo
          const float p[3] = { b.p[0][i], b.p[1][i], b.p[2][i] };
          const float c[4] = { b.color[0][i], b.color[1][i], b.color[2][i], b.color[3][i] };
          m_shade_point_prepared(e, n, p, back, with_color ? c : NULL, ref_p[i], ref_s[i]);
+         cov.lanes_ndl_zero += ndl_zero(e, n, p, back);
       }
       cov.lanes += LANES;
       cov.calls++;
@@ -506,6 +532,7 @@ static void test_random(void)
           cov.lanes_zero_n, cov.lanes_nan_n, cov.lanes_inf_n, cov.lanes_axis_n,
           cov.lanes_at_light, cov.lanes_at_eye, cov.lanes_special_p, cov.lanes_special_color,
           cov.lanes_spot_boundary, cov.spot_boundary_envs);
+   printf("  lanes with n.l exactly 0 for a light: %ld\n", cov.lanes_ndl_zero);
    printf("  m_shade_point8 is the %s kernel; differing lanes: dispatched %ld, portable %ld, "
           "avx2 %ld%s\n", have_avx2 ? "AVX2" : "portable", bad[0], bad[1], bad[2],
           have_avx2 ? "" : " (not run: no AVX2/FMA)");
