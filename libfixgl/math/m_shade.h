@@ -109,4 +109,45 @@ void m_shade_prepare(struct m_shade_env *env);
 void m_shade_point_prepared(const struct m_shade_env *env, const float n[3], const float p[3],
                       bool back, const float color[4], float primary[4], float secondary[4]);
 
+/* Eight points at once, structure of arrays (lane i of n[k], p[k],
+ * color[k], primary[k], secondary[k] is point i's component k): lane i's
+ * outputs are bit for bit m_shade_point_prepared's on lane i's inputs, for
+ * every environment (env->prep filled by m_shade_prepare).  The face is
+ * the call's, for the 8 lanes; color may be NULL when the face tracks no
+ * property (as for m_shade_point_prepared).
+ *
+ * m_shade_point8 is resolved once, when the library is loaded: the AVX2 +
+ * FMA kernel (math/m_shade_avx2.c) on a CPU that has both, else the
+ * portable one (math/m_shade8.c, m_shade_point_prepared lane by lane).
+ * Both are also callable directly (tests, benchmarks);
+ * m_shade_point8_avx2 exists only where M_SHADE_HAVE_AVX2 is defined and
+ * may be called only when m_shade_point8_avx2_supported().
+ * (ISO C before C2X does not convert float (*)[8] to const float (*)[8]
+ * silently: a caller with non-const arrays casts them,
+ * (const float (*)[M_SHADE_LANES])n, or -Wpedantic warns.) */
+#define M_SHADE_LANES 8
+
+void m_shade_point8(const struct m_shade_env *env, const float n[3][M_SHADE_LANES],
+                    const float p[3][M_SHADE_LANES], bool back,
+                    const float color[4][M_SHADE_LANES], float primary[4][M_SHADE_LANES],
+                    float secondary[4][M_SHADE_LANES]);
+
+void m_shade_point8_portable(const struct m_shade_env *env, const float n[3][M_SHADE_LANES],
+                             const float p[3][M_SHADE_LANES], bool back,
+                             const float color[4][M_SHADE_LANES],
+                             float primary[4][M_SHADE_LANES],
+                             float secondary[4][M_SHADE_LANES]);
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define M_SHADE_HAVE_AVX2 1
+void m_shade_point8_avx2(const struct m_shade_env *env, const float n[3][M_SHADE_LANES],
+                         const float p[3][M_SHADE_LANES], bool back,
+                         const float color[4][M_SHADE_LANES], float primary[4][M_SHADE_LANES],
+                         float secondary[4][M_SHADE_LANES]);
+#endif
+
+/* Whether this CPU runs m_shade_point8_avx2 (AVX2 and FMA, with the OS's
+ * YMM state), i.e. whether m_shade_point8 is the AVX2 kernel. */
+bool m_shade_point8_avx2_supported(void);
+
 #endif /* FGL_M_SHADE_H */
