@@ -11,7 +11,8 @@
  * of (f, 0.99999994), the integer wraps, and lerp8's
  * (a + ((w * (b - a) + 128) >> 8)) & 0xff, of which only bits 8..15 of
  * w * (b - a) + 128 matter: 16-bit lanes (pmullw, paddw, psrlw) give them
- * exactly.  The level of detail is r_tex_lod_aos itself, once per quad.
+ * exactly.  The level of detail is r_tex_lod_aos's code (r_tex_lod.h), once
+ * per quad.
  *
  * Lanes run in a quad-major order inside: quad A (lanes 0, 1, 4, 5) in the
  * low 128 bits, quad B (2, 3, 6, 7) in the high ones (one permute of the
@@ -23,6 +24,7 @@
 #include <stdint.h>
 
 #include "r_tex8.h"
+#include "r_tex_lod.h"
 
 void r_tex_sample8_avx2(const struct r_texture *t, const float c[3][8], float out[4][8]);
 
@@ -89,6 +91,22 @@ static inline __m256i fetch(const struct lv8 *v, __m256i idx)
    const __m128i lo = _mm_i32gather_epi32(v->base[0], _mm256_castsi256_si128(idx), 4);
    const __m128i hi = _mm_i32gather_epi32(v->base[1], _mm256_extracti128_si256(idx, 1), 4);
    return _mm256_setr_m128i(lo, hi);
+}
+
+/* the texel pairs at idx and idx + 1 of each lane's level, one 64-bit
+ * load per lane: the first texels in *a, the second ones in *b */
+static inline void fetch_pairs(const struct lv8 *v, __m256i idx, __m256i *a, __m256i *b)
+{
+   const long long *ba = (const long long *)(const void *)v->base[0];
+   const long long *bb = (const long long *)(const void *)v->base[1];
+   /* lanes 0..3: a0 b0 a1 b1 | a2 b2 a3 b3; lanes 4..7 likewise */
+   const __m256 lo = _mm256_castsi256_ps(_mm256_i32gather_epi64(ba, _mm256_castsi256_si128(idx), 4));
+   const __m256 hi = _mm256_castsi256_ps(_mm256_i32gather_epi64(bb, _mm256_extracti128_si256(idx, 1), 4));
+   /* a0 a1 a4 a5 | a2 a3 a6 a7, then the 64-bit pairs in order */
+   const __m256 ea = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0));
+   const __m256 eb = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1));
+   *a = _mm256_permute4x64_epi64(_mm256_castps_si256(ea), 0xD8);
+   *b = _mm256_permute4x64_epi64(_mm256_castps_si256(eb), 0xD8);
 }
 
 /* lp_build_fract_safe: s - floor(s), then min(f, 0.99999994) with minps
@@ -191,13 +209,32 @@ static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 
 {
    __m256i x0, x1, ws;
    linear_axis(s, &v->s, t->pot_s, t->wrap_s, &x0, &x1, &ws);
-   if (t->dims == 1)
-      return lerp_packed(ws, fetch(v, x0), fetch(v, x1));
+   /* every lane's second texel next to its first one in the row (no
+    * wrap, no clamp at the edge): both in one 64-bit fetch */
+   const bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(
+                         _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1))))) == 0xff;
+   __m256i a, b, d, e;
+   if (t->dims == 1) {
+      if (pairs)
+         fetch_pairs(v, x0, &a, &b);
+      else {
+         a = fetch(v, x0);
+         b = fetch(v, x1);
+      }
+      return lerp_packed(ws, a, b);
+   }
    __m256i y0, y1, wt;
    linear_axis(tc, &v->t, t->pot_t, t->wrap_t, &y0, &y1, &wt);
    const __m256i r0 = _mm256_mullo_epi32(y0, v->width), r1 = _mm256_mullo_epi32(y1, v->width);
-   const __m256i a = fetch(v, _mm256_add_epi32(r0, x0)), b = fetch(v, _mm256_add_epi32(r0, x1));
-   const __m256i d = fetch(v, _mm256_add_epi32(r1, x0)), e = fetch(v, _mm256_add_epi32(r1, x1));
+   if (pairs) {
+      fetch_pairs(v, _mm256_add_epi32(r0, x0), &a, &b);
+      fetch_pairs(v, _mm256_add_epi32(r1, x0), &d, &e);
+   } else {
+      a = fetch(v, _mm256_add_epi32(r0, x0));
+      b = fetch(v, _mm256_add_epi32(r0, x1));
+      d = fetch(v, _mm256_add_epi32(r1, x0));
+      e = fetch(v, _mm256_add_epi32(r1, x1));
+   }
    const __m256i z = _mm256_setzero_si256();
    __m256i wsl, wsh, wtl, wth;
    weights16(ws, &wsl, &wsh);
@@ -238,7 +275,7 @@ void r_tex_sample8_avx2(const struct r_texture *t, const float c[3][8], float ou
          { c[0][2 * q + 1], c[1][2 * q + 1], c[2][2 * q + 1] },
          { c[0][2 * q + 4], c[1][2 * q + 4], c[2][2 * q + 4] },
       };
-      r_tex_lod_aos(t, qc, &lod[q]);
+      r_tex_lod_aos_inline(t, qc, &lod[q]);
    }
    /* r_tex_filter_aos's choice per quad: the image filter and level of
     * the first lookup, and the second level's when it is blended in (a
