@@ -16,6 +16,7 @@
  * bottom-left pixels of its quad.
  */
 #include "r_state.h"
+#include "r_tex_lod.h"
 
 #include <math.h>
 #include <string.h>
@@ -178,40 +179,6 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
       out[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, d[k], e[k]));
 }
 
-/* rho of the quad [S: lp_bld_sample.c:lp_build_rho] from the base
- * level's size.  2D (no_rho_approx): the squared length,
- * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2).  1D (the
- * approximation stays on for one dimension): max(|dsdx|, |dsdy|) * W, not
- * squared. */
-float r_tex_rho(const struct r_texture *t, const float q[3][3])
-{
-   const struct r_tex_level *l = &t->level[t->first_level];
-   const float fw = (float)l->width;
-   if (t->dims == 1) {
-      const float dx = fabsf(q[R_QUAD_TR][0] - q[R_QUAD_TL][0]);
-      const float dy = fabsf(q[R_QUAD_TL][0] - q[R_QUAD_BL][0]);
-      const float m = dx > dy ? dx : dy;
-      return m * fw;
-   }
-   const float fh = (float)l->height;
-   float dsdx = (q[R_QUAD_TR][0] - q[R_QUAD_TL][0]) * fw;
-   float dsdy = (q[R_QUAD_BL][0] - q[R_QUAD_TL][0]) * fw;
-   float dtdx = (q[R_QUAD_TR][1] - q[R_QUAD_TL][1]) * fh;
-   float dtdy = (q[R_QUAD_BL][1] - q[R_QUAD_TL][1]) * fh;
-   dsdx = dsdx * dsdx;
-   dsdy = dsdy * dsdy;
-   dtdx = dtdx * dtdx;
-   dtdy = dtdy * dtdy;
-   const float rx = dsdx + dtdx, ry = dsdy + dtdy;
-   return rx > ry ? rx : ry;
-}
-
-/* biased exponent field of a float */
-static inline int float_exp(float x)
-{
-   return (int)((f2u(x) >> 23) & 255u);
-}
-
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
                   const float (*pair)[3], float out[4])
 {
@@ -250,60 +217,12 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
 
 void r_tex_lod_aos(const struct r_texture *t, const float quad[3][3], struct r_tex_lod *lod)
 {
-   const int first = t->first_level, last = t->last_level;
-   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
-      /* no level of detail at all */
-      lod->minify = true;
-      lod->level0 = lod->level1 = first;
-      lod->weight = 0;
-      return;
-   }
-   /* the fast LOD path of lp_build_lod_selector (no bias, no clamps) */
-   const float rho = r_tex_rho(t, quad);
-   const bool squared = t->dims > 1;
-   bool minify;
-   int level0 = first, level1 = first, weight = 0;
-   if (t->mip != R_MIP_LINEAR) {
-      /* lp_build_ilog2_sqrt (2D: rho squared) or lp_build_ilog2 (1D:
-       * log2(rho * sqrt(2)) rounded down), then
-       * lp_build_nearest_mip_level's clamp to the level range */
-      int ipart;
-      if (squared)
-         ipart = (float_exp(rho) - 126) >> 1;
-      else
-         ipart = float_exp(rho * (float)M_SQRT2) - 127;
-      /* lp_build_cmp(GREATER): an unordered compare, NaN (a coordinate
-       * divided by q = 0) minifies */
-      minify = !(rho <= 1.0f);
-      level0 = clampi(first + ipart, first, last);
-   } else {
-      /* lp_build_fast_log2 of rho squared, halved
-       * [S: lp_bld_sample.c:lp_build_lod_selector, ordinary path]; then
-       * lp_build_linear_mip_levels */
-      const float r2 = squared ? rho : rho * rho;
-      const float l2 = (float)(float_exp(r2) - 128) +
-                       u2f((f2u(r2) & 0x7fffffu) | 0x3f800000u);
-      const float lod = l2 * 0.5f;
-      minify = !(lod <= 0.0f);   /* unordered, as above */
-      const float fl = floorf(lod);
-      float fpart = lod - fl;
-      int l0 = first + itrunc(fl);
-      if (l0 < first) {
-         l0 = first;
-         fpart = 0.0f;
-      }
-      if (l0 >= last) {
-         l0 = last;
-         fpart = 0.0f;
-      }
-      level0 = l0;
-      level1 = l0 + 1 <= last ? l0 + 1 : last;
-      weight = itrunc(fpart * 256.0f);
-   }
-   lod->minify = minify;
-   lod->level0 = level0;
-   lod->level1 = level1;
-   lod->weight = weight;
+   r_tex_lod_aos_inline(t, quad, lod);
+}
+
+float r_tex_rho(const struct r_texture *t, const float q[3][3])
+{
+   return r_tex_rho_inline(t, q);
 }
 
 void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float quad[3][3],
