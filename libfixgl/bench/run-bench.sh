@@ -26,7 +26,7 @@ if [[ $# -lt 1 || $# -gt 3 ]]; then
 fi
 dir=$1
 seconds=${2:-2}
-report_dir=${3:-$dir/../../bench}
+report_dir=${3:-$(dirname "$(dirname "$dir")")/bench}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 fixgl_bin=$dir/fixgl-bench-fixgl
 osmesa_bin=$dir/fixgl-bench-osmesa
