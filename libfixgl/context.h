@@ -747,6 +747,24 @@ struct fgl_attrib_node {
    struct fgl_viewport_attrib Viewport;
 };
 
+/* The counters of fixglStats (main/stats.c), per context.  The raster
+ * core adds to `raster` (raster/r_state.h struct r_stats) through
+ * _Raster.stats; t_render_batch times each vertex batch and counts as the
+ * vertex stage whatever of it is not the raster core's setup or raster
+ * time (t_render.c, fgl_stats_batch_end). */
+struct fgl_stats {
+   struct r_stats raster;
+   uint64_t batch_ns;            /* wall time in t_render_batch */
+   uint64_t vertex_ns;           /* batch_ns minus the raster core's time in it */
+   uint64_t batches;
+};
+
+/* Timestamp of fgl_stats_batch_begin: the clock and the raster core's
+ * time at the start of a batch. */
+struct fgl_stats_mark {
+   uint64_t t0, raster0;
+};
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -861,6 +879,9 @@ struct fgl_context {
                                     * made from (all zero at first, as the
                                     * state tracker's copy) */
    struct r_state _Raster;
+   /* fixglStats (main/stats.c): the benchmark's counters; _Raster.stats
+    * points to Stats.raster while they are enabled, else it is NULL */
+   struct fgl_stats Stats;
    /* texture units that texture fragments: enabled, with a complete
     * texture (main/texstate.c) [S: texstate.c:update_ff_texture_state] */
    unsigned _EnabledTexUnits;                     /* bit u: unit u */
@@ -921,6 +942,11 @@ void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env
 void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
+/* fixglStats (main/stats.c): around a vertex batch while the counters are
+ * enabled (ctx->_Raster.stats non-NULL), the batch's time into
+ * ctx->Stats. */
+void fgl_stats_batch_begin(const struct fgl_context *ctx, struct fgl_stats_mark *mark);
+void fgl_stats_batch_end(struct fgl_context *ctx, const struct fgl_stats_mark *mark);
 
 /* the active unit's matrix stack (the scratch stack past unit 7) */
 static inline struct fgl_matrix_stack *fgl_texture_stack(struct fgl_context *ctx)

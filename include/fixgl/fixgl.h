@@ -47,6 +47,41 @@ extern "C" {
 /* The library's version as "major.minor.patch". */
 const char *fixglGetVersion(void);
 
+/* ---- Counters for the benchmark's breakdown of a frame -------------------
+ * Per context (the current one), off by default; while off they cost one
+ * predicted branch per vertex batch and per primitive.  Call them outside
+ * glBegin/glEnd: each first draws the vertices batched so far (under the
+ * setting they were batched with).
+ *
+ *   fixglStats(1)        start counting (the counters keep their values)
+ *   fixglStats(0)        stop counting
+ *   fixglResetStats()    all counters to 0
+ *   fixglGetStats(&s)    read them
+ *
+ * Times are CLOCK_MONOTONIC nanoseconds.  The raster core counts the
+ * fragments it shades (covered pixels inside the draw region: viewport
+ * and scissor box) and its time in primitive setup and in coverage plus
+ * the fragment stage; the vertex stage is everything else in a vertex
+ * batch (state validation, transform, lighting, clipping, primitive
+ * assembly).  glClear and glFinish's copy are in none of them.  So
+ * raster_ns / fragments is the time per shaded fragment, and
+ * vertex_ns + setup_ns + raster_ns = batch_ns, plus the raster core's time
+ * in primitives drawn outside a vertex batch (pixel rectangles), if any. */
+struct fixgl_stats {
+   unsigned long long fragments;   /* fragments shaded */
+   unsigned long long setup_ns;    /* primitive setup (raster core) */
+   unsigned long long raster_ns;   /* coverage and fragments (raster core) */
+   unsigned long long vertex_ns;   /* vertex stage: batch_ns minus the raster
+                                    * core's time inside the batches */
+   unsigned long long batch_ns;    /* vertex batches, all stages */
+   unsigned long long batches;     /* vertex batches drawn */
+   int enabled;                    /* fixglStats' current setting */
+};
+
+void fixglStats(int enable);
+void fixglResetStats(void);
+void fixglGetStats(struct fixgl_stats *out);
+
 #ifdef __cplusplus
 }
 #endif

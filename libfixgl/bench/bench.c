@@ -43,7 +43,10 @@
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
  * Output, one line per scene:  scene NAME fps X frames N checksum C
  * The checksum (FNV-1a of the last frame) tells whether both libraries drew
- * the same image.
+ * the same image.  The fixgl build adds a line per scene with fixgl's own
+ * counters (fixglStats), from extra frames after the timed ones:
+ *   stats NAME frames N frame_ns F fragments X setup_ns S raster_ns R
+ *         vertex_ns V batch_ns B
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -662,6 +665,38 @@ static void dump(const char *name, const unsigned char *buf)
   fclose(f);
 }
 
+#ifndef BENCH_ORACLE
+/* fixgl only: the breakdown of a frame, from more frames drawn with
+ * fixgl's counters on (fixglStats; the timed frames ran with them off, so
+ * the fps are those of the library as applications use it).  At least
+ * STATS_MIN_FRAMES frames, and a quarter of the timed budget.  Prints
+ *   stats NAME frames N frame_ns F fragments X setup_ns S raster_ns R
+ *         vertex_ns V batch_ns B
+ * with totals over the N frames; F is their wall-clock time. */
+#define STATS_MIN_FRAMES 3
+static void stats_frames(const char *name, void (*frame)(void), double seconds)
+{
+  struct fixgl_stats st;
+  long frames = 0;
+  fixglStats(1);
+  fixglResetStats();
+  const double start = now();
+  double elapsed;
+  do {
+    frame();
+    frames++;
+    elapsed = now() - start;
+  } while (frames < STATS_MIN_FRAMES || elapsed < 0.25 * seconds);
+  fixglGetStats(&st);
+  fixglStats(0);
+  printf("stats %s frames %ld frame_ns %.0f fragments %llu setup_ns %llu raster_ns %llu "
+         "vertex_ns %llu batch_ns %llu\n",
+         name, frames, elapsed * 1e9, st.fragments, st.setup_ns, st.raster_ns, st.vertex_ns,
+         st.batch_ns);
+  fflush(stdout);
+}
+#endif
+
 /* Warms up, then counts whole frames until `seconds` have passed. */
 static void run_scene(const char *name, void (*frame)(void), double seconds,
                       const unsigned char *buf)
@@ -683,6 +718,9 @@ static void run_scene(const char *name, void (*frame)(void), double seconds,
          frames, (unsigned)checksum(buf));
   fflush(stdout);
   dump(name, buf);
+#ifndef BENCH_ORACLE
+  stats_frames(name, frame, seconds);
+#endif
 }
 
 int main(int argc, char **argv)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# run-bench.sh BENCH_BUILD_DIR [SECONDS_PER_SCENE]
+# run-bench.sh BENCH_BUILD_DIR [SECONDS_PER_SCENE [REPORT_DIR]]
 #
 # Runs the benchmark in one go: fixgl, OSMesa (llvmpipe with its default
 # number of threads) and OSMesa with LP_NUM_THREADS=1, then prints frames per
@@ -7,14 +7,27 @@
 # The "same image" column compares the checksums of the last frames.
 # The shading scenes (phong, ctphong, ctsmooth) use fixgl's extensions; the
 # OSMesa build binds the conformance suite's GLSL reference for them.
+#
+# A second table breaks fixgl's frames down with its own counters
+# (fixglStats, on only for a few extra frames after the timed ones):
+# nanoseconds per shaded fragment and the shares of the frame time in the
+# vertex stage, primitive setup and fragments (tables.awk says what each
+# column divides).
+#
+# REPORT_DIR (default BENCH_BUILD_DIR/../../bench, i.e. build/bench)
+# receives bench.tsv, the data of the run, and report.html: both tables
+# and the bar chart as inline SVG.  `ninja -C build bench-chart` draws the
+# same chart from bench.tsv into libfixgl/bench/chart.png (make_chart.sh).
 set -euo pipefail
 
-if [[ $# -lt 1 || $# -gt 2 ]]; then
-  echo "usage: $0 BENCH_BUILD_DIR [SECONDS_PER_SCENE]" >&2
+if [[ $# -lt 1 || $# -gt 3 ]]; then
+  echo "usage: $0 BENCH_BUILD_DIR [SECONDS_PER_SCENE [REPORT_DIR]]" >&2
   exit 2
 fi
 dir=$1
 seconds=${2:-2}
+report_dir=${3:-$(dirname "$(dirname "$dir")")/bench}
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 fixgl_bin=$dir/fixgl-bench-fixgl
 osmesa_bin=$dir/fixgl-bench-osmesa
 
@@ -27,6 +40,7 @@ osmesa_bin=$dir/fixgl-bench-osmesa
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
+date=$(date -u '+%Y-%m-%d %H:%M UTC')
 echo "bench: 1024x768, ${seconds}s per scene after warm-up, $(nproc) CPU(s)"
 echo "bench: running fixgl..."
 "$fixgl_bin" "$seconds" >"$out/fixgl"
@@ -36,24 +50,42 @@ echo "bench: running OSMesa (llvmpipe, LP_NUM_THREADS=1)..."
 LP_NUM_THREADS=1 "$osmesa_bin" "$seconds" >"$out/osmesa1"
 echo
 
-# Each file has lines "scene NAME fps X frames N checksum C".
-awk '
-  FNR == 1 { run = FILENAME; sub(/.*\//, "", run) }
-  $1 == "scene" {
-    if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 }
-    fps[run, $2] = $4; sum[run, $2] = $8
-  }
-  END {
-    printf "%-8s %12s %12s %12s %11s %11s %6s\n", "scene", "fixgl fps", "OSMesa fps",
-           "OSMesa-1 fps", "fixgl/OSM", "fixgl/OSM-1", "same"
-    for (i = 1; i <= n; i++) {
-      s = order[i]
-      f = fps["fixgl", s]; o = fps["osmesa", s]; o1 = fps["osmesa1", s]
-      printf "%-8s %12.1f %12.1f %12.1f %10.2fx %10.2fx %6s\n", s, f, o, o1,
-             (o > 0 ? f / o : 0), (o1 > 0 ? f / o1 : 0),
-             (sum["fixgl", s] == sum["osmesa", s] ? "yes" : "no")
+# Each file has lines "scene NAME fps X frames N checksum C"; fixgl's also
+# "stats NAME frames N frame_ns F fragments X setup_ns S raster_ns R
+# vertex_ns V batch_ns B" (bench.c).  bench.tsv: "# key value" lines, a
+# header, one tab-separated line per scene.
+mkdir -p "$report_dir"
+tsv=$report_dir/bench.tsv
+{
+  echo "# date $date"
+  echo "# cpus $(nproc)"
+  echo "# seconds $seconds"
+  awk '
+    FNR == 1 { run = FILENAME; sub(/.*\//, "", run) }
+    $1 == "scene" {
+      if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 }
+      fps[run, $2] = $4; sum[run, $2] = $8
     }
-  }' "$out/fixgl" "$out/osmesa" "$out/osmesa1"
+    $1 == "stats" && run == "fixgl" {
+      for (k = 3; k < NF; k += 2)
+        st[$2, $k] = $(k + 1)
+    }
+    END {
+      OFS = "\t"
+      print "scene", "fixgl_fps", "osmesa_fps", "osmesa1_fps", "same", "stats_frames",
+            "frame_ns", "fragments", "setup_ns", "raster_ns", "vertex_ns", "batch_ns"
+      for (i = 1; i <= n; i++) {
+        s = order[i]
+        print s, fps["fixgl", s] + 0, fps["osmesa", s] + 0, fps["osmesa1", s] + 0,
+              (sum["fixgl", s] == sum["osmesa", s] ? "yes" : "no"),
+              st[s, "frames"] + 0, st[s, "frame_ns"] + 0, st[s, "fragments"] + 0,
+              st[s, "setup_ns"] + 0, st[s, "raster_ns"] + 0, st[s, "vertex_ns"] + 0,
+              st[s, "batch_ns"] + 0
+      }
+    }' "$out/fixgl" "$out/osmesa" "$out/osmesa1"
+} >"$tsv"
+
+awk -v format=text -f "$here/tables.awk" "$tsv"
 echo
 echo "OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1;"
 echo "same = last frame of fixgl identical to OSMesa's (lit200, lit20k and gears"
@@ -61,3 +93,53 @@ echo "are lit).  phong, ctphong, ctsmooth: fixgl's GL_PHONG_WIN and"
 echo "GL_FIXGL_cook_torrance (per fragment, per vertex) against llvmpipe running the"
 echo "same equations as GLSL (conformance/reference/fcr_shading.c); 786,432 lit"
 echo "fragments a frame."
+echo "Breakdown (fixgl's counters, fixglStats, on for a few extra frames only):"
+echo "ns/frag = raster core time after primitive setup / fragments shaded;"
+echo "vertex, setup, frags, other = shares of the frame's wall-clock time (other:"
+echo "glClear, glFinish, state outside vertex batches); n/a = the raster core's"
+echo "counters read 0 (not counted by this libfixgl yet)."
+
+# report.html: the chart (chart.awk: the drawing of chart.png too) and both
+# tables
+{
+  cat <<EOF
+<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>fixgl bench</title>
+<style>
+body { font-family: "DejaVu Sans", Verdana, sans-serif; margin: 2em; color: #1a1a1a; }
+table { border-collapse: collapse; margin: 1em 0; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+th { background: #f0f0f0; }
+p.note { color: #555; max-width: 60em; }
+</style></head><body>
+<h1>fixgl bench</h1>
+<p>$date, $(nproc) CPU(s), 1024&times;768, $seconds s per scene after warm-up.
+OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1.</p>
+EOF
+  awk -v format=svg -f "$here/chart.awk" "$tsv"
+  awk -v format=html -f "$here/tables.awk" "$tsv"
+  cat <<'EOF'
+<p class="note">same: the last frame of fixgl is identical to OSMesa's
+(phong, ctphong, ctsmooth: OSMesa runs the GLSL reference of fixgl's shading
+extensions, conformance/reference/fcr_shading.c).</p>
+<p class="note">Breakdown: fixgl's own counters (fixglStats), on only for a
+few extra frames after the timed ones, so the frames per second are measured
+without them (the timers add a little to the frames they measure).
+ms/frame: wall-clock time of those frames. frags/frame: fragments the raster
+core shaded (covered pixels inside the draw region). ns/frag: the raster
+core's time after primitive setup (coverage and the fragment stage) divided
+by those fragments; setup is not in it. vertex, setup, frags: shares of the
+frame time in the vertex stage (everything in a vertex batch outside the
+raster core: state validation, transform, lighting, clipping, primitive
+assembly), in primitive setup, and in coverage and fragments; other: the
+rest (glClear, glFinish's copy, state changes outside vertex batches).
+n/a: the raster core's counters read 0 (this libfixgl does not count them
+yet), so the vertex stage cannot be told from the raster core either.</p>
+</body></html>
+EOF
+} >"$report_dir/report.html"
+
+echo
+echo "bench: report $report_dir/report.html (data: $tsv)"
+echo "bench: \`ninja -C build bench-chart\` draws libfixgl/bench/chart.png from the data"

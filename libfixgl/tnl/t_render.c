@@ -294,8 +294,8 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
    }
 }
 
-void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
-                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                         unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
 {
    /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
     * the state validated before this draw's */
@@ -420,4 +420,18 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
    _mm_setcsr(mxcsr);
 #endif
    free(tv);
+}
+
+/* fixglStats (main/stats.c): with the counters on, the batch is timed */
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+{
+   if (__builtin_expect(ctx->_Raster.stats != NULL, 0)) {
+      struct fgl_stats_mark mark;
+      fgl_stats_batch_begin(ctx, &mark);
+      render_batch(ctx, verts, nverts, prims, nprims);
+      fgl_stats_batch_end(ctx, &mark);
+      return;
+   }
+   render_batch(ctx, verts, nverts, prims, nprims);
 }
