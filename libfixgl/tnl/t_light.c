@@ -357,6 +357,7 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
    }
 }
 
+T_FMA_CLONES
 bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
              struct t_vertex *out)
 {

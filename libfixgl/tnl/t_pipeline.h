@@ -33,6 +33,23 @@ struct t_vertex {
 #define T_EDGE_ALL      0x7u
 #define T_RESET_STIPPLE 0x8u
 
+/* The per-vertex loops of the vertex stage are compiled twice, with and
+ * without the FMA instruction set, and the loader picks the clone the CPU
+ * runs (GCC's target_clones, an ifunc), as R_FMA_CLONES does for the
+ * raster loops and math/m_shade.c for the shading: with FMA, the fmaf() of
+ * the viewport transform, the user clip distances and m_gallivm_pow (LIT,
+ * the spot exponent) is one vfmadd instruction instead of a libm call
+ * through the PLT.  fmaf is the fused operation either way, and
+ * -ffp-contract=off still forbids any other fusion: the same bits.
+ * flatten: the helpers are inlined into each clone and compiled for its
+ * target (an outlined helper would be a default-target function calling
+ * libm's fmaf). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define T_FMA_CLONES __attribute__((target_clones("fma", "default"), flatten))
+#else
+#define T_FMA_CLONES
+#endif
+
 /* A column-major matrix m times a position p as the oracle's vertex
  * program does it (llvmpipe-facts.md §1 "Vertex path"; ffvertex_prog.c
  * MUL then MADs, the MADs unfused):

@@ -53,6 +53,7 @@ static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float
    return m;
 }
 
+T_FMA_CLONES
 void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                  unsigned n, struct t_vertex *out)
 {
