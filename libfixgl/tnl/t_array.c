@@ -152,12 +152,16 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    if (index_type && !indices)
       return;
 
-   struct fgl_vbo_vertex *verts = malloc((size_t)count * sizeof(*verts));
+   /* the fetched vertices: the context's scratch array, no allocation
+    * per draw */
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   struct fgl_vbo_vertex *verts = fgl_vbo_scratch(vbo->array_verts, &vbo->array_alloc,
+                                                  (unsigned)count, sizeof(*verts));
    if (!verts)
       return;
+   vbo->array_verts = verts;
    /* the batch's vertex format: the enabled arrays (the state tracker's
     * vertex elements; _mesa_set_varying_vp_inputs) */
-   struct fgl_vbo *vbo = &ctx->Vbo;
    static const struct { enum fgl_array_index array; enum fgl_vbo_attr attr; bool norm; }
    map[] = {
       { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
@@ -191,7 +195,6 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    t_render_batch(ctx, verts, (unsigned)count, &prim, 1);
    /* flush_for_draw left the format empty */
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
-   free(verts);
 }
 
 /* Immediate-mode conversions of the NV attribute functions

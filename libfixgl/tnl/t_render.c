@@ -312,9 +312,12 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
       ctx->DrawBuffer->ColorDefined = true;
    fgl_update_stipple(ctx);
 
-   struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
+   /* the transformed vertices: the context's scratch array, no
+    * allocation per batch */
+   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc, nverts, sizeof(*tv));
    if (!tv)
       return;
+   ctx->Vbo.tv = tv;
 
    /* The oracle draws with denormals flushed: draw_vbo sets DAZ and FTZ
     * around the vertex shader, clipping and triangle setup, and the
@@ -418,5 +421,4 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
-   free(tv);
 }

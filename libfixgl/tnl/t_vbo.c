@@ -28,6 +28,25 @@ void fgl_vbo_fini(struct fgl_vbo *vbo)
 {
    free(vbo->verts);
    vbo->verts = NULL;
+   free(vbo->tv);
+   vbo->tv = NULL;
+   vbo->tv_alloc = 0;
+   free(vbo->array_verts);
+   vbo->array_verts = NULL;
+   vbo->array_alloc = 0;
+}
+
+void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
+{
+   if (buf && n <= *alloc)
+      return buf;
+   size_t want = *alloc ? *alloc : 256;
+   while (want < n)
+      want *= 2;
+   void *p = realloc(buf, want * elem_size);
+   if (p)
+      *alloc = (unsigned)want;
+   return p;
 }
 
 /* vbo_compute_max_verts: room left in the buffer, less one vertex kept for

@@ -19,6 +19,7 @@
 
 #include <GL/gl.h>
 #include <stdbool.h>
+#include <stddef.h>
 
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
@@ -128,9 +129,22 @@ struct fgl_vbo {
    float vtx_mem[FGL_ATTR_COUNT * 4];
    unsigned mem_offset[FGL_ATTR_COUNT];
    unsigned size_no_pos;                /* vertex_size_no_pos */
+
+   /* Scratch memory of the vertex stage, kept from draw to draw and only
+    * grown (fgl_vbo_scratch), so that a batch allocates nothing: the
+    * transformed vertices of t_render_batch (struct t_vertex, t_pipeline.h)
+    * and the fetched vertices of an array draw (t_array.c). */
+   struct t_vertex *tv;
+   unsigned tv_alloc;
+   struct fgl_vbo_vertex *array_verts;
+   unsigned array_alloc;
 };
 
 bool fgl_vbo_init(struct fgl_vbo *vbo);
+/* A scratch array buf of *alloc elements of elem_size bytes, grown to at
+ * least n (*alloc updated): the array to use from now on, or NULL when out
+ * of memory (buf is then still the caller's). */
+void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
 void fgl_vbo_fini(struct fgl_vbo *vbo);
 
 /* An attribute call (glColor*, glVertex*) with n components. */
