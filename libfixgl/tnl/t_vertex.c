@@ -70,16 +70,20 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
     * writes the coordinate of each unit enabled with a complete texture
     * (texstate.c:update_ff_texture_state) */
    const unsigned tex_units = ctx->_EnabledTexUnits | (ctx->RenderMode == GL_FEEDBACK ? 1u : 0u);
+   /* the colour slots below the fog slot (and the slots below the Phong
+    * varyings) that this draw does not use are still clipped and
+    * interpolated: give them a value.  Only the draw's varyings, the
+    * slots below num_attribs, are ever read (clipping, flat shading and
+    * the raster core stop there). */
+   const size_t clear_bytes = fog || ctx->_EnabledTexUnits || phong
+                                 ? (size_t)ctx->_Raster.num_attribs * sizeof(out->r.attr[0])
+                                 : 0;
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
       struct t_vertex *v = &out[i];
-      if (fog || ctx->_EnabledTexUnits || phong) {
-         /* the colour slots below the fog slot (and the slots below the
-          * Phong varyings) that this draw does not use are still clipped
-          * and interpolated: give them a value */
-         memset(v->r.attr, 0, sizeof(v->r.attr));
-      }
+      if (clear_bytes)
+         memset(v->r.attr, 0, clear_bytes);
       t_mul_mad_chain(v->clip, m, p);
       v->mask = clip_mask(v->clip);
       if (ctx->Transform.ClipPlanesEnabled)
