@@ -244,6 +244,7 @@ static void reset_all_attr(struct fgl_vbo *vbo)
 {
    sync_vtx_mem(vbo);
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   vbo->format_mask = 0;
    memset(vbo->active_size, 0, sizeof(vbo->active_size));
    vbo->vertex_size = 0;
    vbo->size_no_pos = 0;
@@ -306,6 +307,8 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
       upgrade_layout(vbo, attr, size);
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
+   if (attr != FGL_ATTR_POS)
+      vbo->format_mask |= 1u << attr;
    vbo->active_size[attr] = size;
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
@@ -422,9 +425,10 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
    memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
    /* only the format's attributes are stored; the others are constant for
     * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */
-   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
-      if (vbo->attr_size[a])
-         clean_value(vbo, (enum fgl_vbo_attr)a, dst->attr[a]);
+   for (unsigned m = vbo->format_mask; m; m &= m - 1) {
+      const enum fgl_vbo_attr a = (enum fgl_vbo_attr)__builtin_ctz(m);
+      clean_value(vbo, a, dst->attr[a]);
+   }
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
 }

@@ -89,6 +89,7 @@ enum fgl_vbo_attr {
 };
 
 #define FGL_ATTR_MAT_FIRST FGL_ATTR_MAT_FRONT_AMBIENT
+_Static_assert(FGL_ATTR_COUNT <= 32, "fgl_vbo.format_mask holds a bit per attribute");
 
 /* A stored vertex: the position and the attributes of the batch's vertex
  * format, each as float[4] (slots of attributes outside the format are not
@@ -112,6 +113,11 @@ struct fgl_vbo {
    unsigned attr_size[FGL_ATTR_COUNT];  /* components in the vertex format, 0 = absent */
    unsigned active_size[FGL_ATTR_COUNT];/* components of the last call, as Mesa tracks it */
    unsigned vertex_size;                /* sum of attr_size, in floats */
+   unsigned format_mask;                /* bit a: attribute a (not the
+                                         * position) is in the format,
+                                         * attr_size[a] != 0; what a
+                                         * glVertex stores besides the
+                                         * position */
    unsigned buffer_used;                /* bytes of the emulated buffer consumed */
    unsigned need_flush;                 /* FGL_VBO_FLUSH_* (Mesa's NeedFlush) */
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
