@@ -194,6 +194,13 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);
+/* The same with the primitives' vertices through an element list: vertex
+ * i of the primitives is verts[elts[i]] (an indexed draw's post-transform
+ * vertex cache, t_array.c: each of the nverts vertices is transformed and
+ * lit once however often the primitives use it). */
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                         unsigned nverts, const unsigned *elts,
+                         const struct fgl_vbo_prim *prims, unsigned nprims);
 
 /* t_array.c: glDrawArrays (indices == NULL: vertices first..first+count-1)
  * and glDrawElements (count indices of index_type) of the enabled client

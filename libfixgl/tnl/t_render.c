@@ -40,10 +40,24 @@ struct render {
    struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
    const struct fgl_vbo_vertex *in;   /* the stored vertices */
+   /* an indexed draw's vertex cache: vertex i of the primitives is
+    * v[elts[i]] (NULL: v[i]) */
+   const unsigned *elts;
    /* GL_PHONG_WIN with materials in the batch's vertex format (glMaterial
     * between glBegin and glEnd): bit a - FGL_ATTR_MAT_FIRST for each */
    unsigned phong_mats;
 };
+
+/* Where vertex i of the draw's primitives is. */
+static inline unsigned elt(const struct render *r, unsigned i)
+{
+   return r->elts ? r->elts[i] : i;
+}
+
+static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
+{
+   return &r->v[elt(r, i)];
+}
 
 /* GL_PHONG_WIN (include/fixgl/shading.md): a primitive is lit with the
  * material current at its provoking vertex pv; the properties the batch
@@ -54,7 +68,7 @@ struct render {
 static void phong_material(const struct render *r, unsigned pv)
 {
    struct m_shade_env *env = &r->ctx->_Raster.shade_env;
-   const struct fgl_vbo_vertex *v = &r->in[pv];
+   const struct fgl_vbo_vertex *v = &r->in[elt(r, pv)];
    for (unsigned m = r->phong_mats; m; m &= m - 1) {
       const int a = FGL_ATTR_MAT_FIRST + __builtin_ctz(m);
       struct m_shade_material *mat = &env->material[(a - FGL_ATTR_MAT_FIRST) & 1];
@@ -77,7 +91,7 @@ static inline void tri_pv(const struct render *r, unsigned a, unsigned b, unsign
 {
    if (r->phong_mats)
       phong_material(r, pv);
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
+   t_clip_triangle(r->ctx, vtx(r, a), vtx(r, b), vtx(r, c), pipeline, flags);
 }
 
 /* A triangle whose last vertex is the provoking vertex. */
@@ -97,7 +111,7 @@ static bool segment_clipped(const struct render *r, unsigned start, unsigned cou
 {
    unsigned m = 0;
    for (unsigned i = start; i < start + count; i++)
-      m |= r->v[i].mask;
+      m |= vtx(r, i)->mask;
    return m != 0;
 }
 
@@ -257,7 +271,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
          for (unsigned i = seg; i < seg + cnt; i++) {
             if (r->phong_mats)
                phong_material(r, s + i);
-            t_point(r->ctx, &r->v[s + i], pipeline);
+            t_point(r->ctx, vtx(r, s + i), pipeline);
          }
       }
       break;
@@ -266,7 +280,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       for (unsigned i = 0; i + 1 < n; i += 2) {
          if (r->phong_mats)
             phong_material(r, s + i + 1);
-         t_line(r->ctx, &r->v[s + i], &r->v[s + i + 1], true);
+         t_line(r->ctx, vtx(r, s + i), vtx(r, s + i + 1), true);
       }
       break;
    case GL_LINE_STRIP:
@@ -280,12 +294,12 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       for (unsigned i = 1; i < n; i++) {
          if (r->phong_mats)
             phong_material(r, s + i);
-         t_line(r->ctx, &r->v[s + i - 1], &r->v[s + i], i == 1);
+         t_line(r->ctx, vtx(r, s + i - 1), vtx(r, s + i), i == 1);
       }
       if (p->mode == GL_LINE_LOOP) {
          if (r->phong_mats)
             phong_material(r, s);
-         t_line(r->ctx, &r->v[s + n - 1], &r->v[s], false);
+         t_line(r->ctx, vtx(r, s + n - 1), vtx(r, s), false);
       }
       break;
    default:
@@ -295,6 +309,13 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
 
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+{
+   t_render_batch_elts(ctx, verts, nverts, NULL, prims, nprims);
+}
+
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                         unsigned nverts, const unsigned *elts,
+                         const struct fgl_vbo_prim *prims, unsigned nprims)
 {
    /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
     * the state validated before this draw's */
@@ -366,7 +387,7 @@ void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   const struct render r = { ctx, tv, verts, phong_mats };
+   const struct render r = { ctx, tv, verts, elts, phong_mats };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program

@@ -34,6 +34,9 @@ void fgl_vbo_fini(struct fgl_vbo *vbo)
    free(vbo->array_verts);
    vbo->array_verts = NULL;
    vbo->array_alloc = 0;
+   free(vbo->array_elts);
+   vbo->array_elts = NULL;
+   vbo->array_elts_alloc = 0;
 }
 
 void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)

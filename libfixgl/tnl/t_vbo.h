@@ -139,11 +139,14 @@ struct fgl_vbo {
    /* Scratch memory of the vertex stage, kept from draw to draw and only
     * grown (fgl_vbo_scratch), so that a batch allocates nothing: the
     * transformed vertices of t_render_batch (struct t_vertex, t_pipeline.h)
-    * and the fetched vertices of an array draw (t_array.c). */
+    * and the fetched vertices of an array draw with its element lists
+    * (t_array.c). */
    struct t_vertex *tv;
    unsigned tv_alloc;
    struct fgl_vbo_vertex *array_verts;
    unsigned array_alloc;
+   unsigned *array_elts;        /* an indexed draw's vertex cache lists */
+   unsigned array_elts_alloc;
 };
 
 bool fgl_vbo_init(struct fgl_vbo *vbo);
