@@ -20,7 +20,7 @@
  * t_phong.c instead of t_light; in GL_SELECT / GL_FEEDBACK the vertices
  * are lit here, as under GL_SMOOTH).
  */
-#include "tnl/t_pipeline.h"
+#include "tnl/t_light.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -84,30 +84,7 @@ struct material {
    float shininess;
 };
 
-/* What the vertex program was generated for (ffvertex_prog.c state_key). */
-struct light_key {
-   bool eye;                 /* lighting in eye space: the normal goes
-                              * through the inverse modelview */
-   bool normalize;           /* GL_NORMALIZE */
-   bool rescale;             /* normal times STATE_NORMAL_SCALE */
-   bool local_viewer, twoside, separate;
-   bool shininess_is_zero;   /* no specular pow: the degenerate LIT */
-};
 
-/* The scene colour and the light*material products of a face.  Where the
- * material does not vary per vertex they are uniforms of the oracle's
- * vertex program (STATE_LIGHTMODEL_SCENECOLOR, STATE_LIGHTPROD), which Mesa
- * computes on the CPU before the draw, so without the draw's flush of
- * denormals (t_render.c); t_light computes them once per batch with the
- * flush off.  A varying material's products are computed per vertex, in
- * the vertex program (build_lighting: get_scenecolor, get_lightprod). */
-struct products {
-   bool vary_scene[2], vary_ambient[2], vary_diffuse[2], vary_specular[2];
-   float scene[2][3];
-   float ambient[FGL_MAX_LIGHTS][2][3];
-   float diffuse[FGL_MAX_LIGHTS][2][3];
-   float specular[FGL_MAX_LIGHTS][2][3];
-};
 
 static void scene_colour(const struct fgl_context *ctx, const struct material *m, float c[3])
 {
@@ -123,8 +100,8 @@ static void light_product(const float *light, const float *material, float p[3])
 
 /* One vertex: col[0] front colour, col[1] front secondary, col[2] back
  * colour, col[3] back secondary (R_ATTR_* slots), before the clamp. */
-static void light_vertex(const struct fgl_context *ctx, const struct light_key *key,
-                         const struct products *P, const float n[3], const float V[4],
+static void light_vertex(const struct fgl_context *ctx, const struct t_light_key *key,
+                         const struct t_light_products *P, const float n[3], const float V[4],
                          const struct material mat[2], float col[4][4])
 {
    const struct fgl_light_attrib *la = &ctx->Light;
@@ -152,9 +129,8 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
       normalize3(eye_hat);
    }
 
-   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-      if (!(ld->EnabledLights & (1u << i)))
-         continue;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const int i = __builtin_ctz(lights);   /* in index order */
       const struct fgl_light *l = &la->Light[i];
       const struct fgl_light_derived *d = &ld->Light[i];
 
@@ -264,7 +240,7 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
 }
 
 /* get_transformed_normal */
-static void transform_normal(const struct fgl_context *ctx, const struct light_key *key,
+static void transform_normal(const struct fgl_context *ctx, const struct t_light_key *key,
                              const float *in, float n[3])
 {
    if (key->eye) {
@@ -287,7 +263,7 @@ static void transform_normal(const struct fgl_context *ctx, const struct light_k
  * the same key fields (_NeedEyeCoords, GL_NORMALIZE, the rescale rule) */
 void t_transformed_normal(const struct fgl_context *ctx, const float *in, float n[3])
 {
-   struct light_key key = {
+   struct t_light_key key = {
       .eye = ctx->_Lighting.NeedEyeCoords,
       .normalize = ctx->Transform.Normalize,
    };
@@ -295,38 +271,25 @@ void t_transformed_normal(const struct fgl_context *ctx, const float *in, float 
    transform_normal(ctx, &key, in, n);
 }
 
-/* The material source of each property of each face for this batch: the
- * vertex colour when it tracks the colour and the colour varies
- * (get_material's order), else the vbo attribute (per vertex when it is in
- * the vertex format, the current value otherwise). */
-struct material_source {
-   const float *ptr;
-   unsigned stride;
-};
 
 /* GL_FIXGL_cook_torrance per vertex (GL_SMOOTH, GL_FLAT): m_shade_point
  * in eye space for both faces.  A face left at GL_BLINN_PHONG_FIXGL in
  * such a draw is lit by m_shade_point's Blinn-Phong too (the same
  * equations as the oracle's program, not its rounding); draws where
  * neither face is Cook-Torrance keep the oracle-exact path above.  The
- * material of each vertex comes from src (the vertex colour where it is
- * tracked, per-vertex values where the format has them, else the current
- * ones), the reflectance parameters from the lighting state. */
-static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
-                        unsigned n, const struct material_source *src, struct t_vertex *out)
+ * material of each vertex comes from lb->src (the vertex colour where it
+ * is tracked, per-vertex values where the format has them, else the
+ * current ones), the reflectance parameters from the lighting state. */
+static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
+                        const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                        struct t_vertex *out)
 {
-   struct m_shade_env env;
-   fgl_update_shade_env(ctx, &env);
-   env.color_material = 0;   /* src already reads the tracked colours */
+   struct m_shade_env *env = &lb->env;
+   const struct t_material_source *src = lb->src;
    const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
-
-   unsigned nstride;
-   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
-   struct t_eye_normal en;
-   t_eye_normal_init(ctx, &en);
 
-   for (unsigned i = 0; i < n; i++) {
+   for (unsigned i = first; i < first + n; i++) {
       /* the eye-space normal n as GL_PHONG_WIN's vertices have it
        * (t_phong.c t_eye_normal: the inverse-transpose of the modelview,
        * then GL_NORMALIZE or GL_RESCALE_NORMAL, whose rounding shows even
@@ -334,11 +297,11 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
        * modelview times the vertex, xyz (its w is ignored, as GL's
        * lighting ignores it). */
       float nrm[3], P[4];
-      t_eye_normal(&en, normal + (size_t)i * nstride, nrm);
+      t_eye_normal(&lb->en, lb->normal + (size_t)i * lb->nstride, nrm);
       t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
 
       for (int s = 0; s < sides; s++) {
-         struct m_shade_material *m = &env.material[s];
+         struct m_shade_material *m = &env->material[s];
          /* the face's attribute a + s (front/back attributes alternate) */
 #define MAT(a) (src[(a) + s].ptr + (size_t)i * src[(a) + s].stride)
          memcpy(m->ambient, MAT(FGL_ATTR_MAT_FRONT_AMBIENT), sizeof(m->ambient));
@@ -349,21 +312,20 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
 #undef MAT
       }
       float (*col)[4] = out[i].r.attr;
-      /* env's point-independent values were prepared once above
-       * (fgl_update_shade_env); the per-vertex material colours and
-       * shininess are not among them */
+      /* env's point-independent values were prepared once per batch
+       * (fgl_update_shade_env in t_light_prepare); the per-vertex material
+       * colours and shininess are not among them */
       for (int s = 0; s < sides; s++)
-         m_shade_point_prepared(&env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
+         m_shade_point_prepared(env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
    }
 }
 
-T_FMA_CLONES
-bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
-             struct t_vertex *out)
+void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                     struct t_light_batch *lb)
 {
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
    const struct fgl_vbo *vbo = &ctx->Vbo;
-   struct light_key key = {
+   struct t_light_key key = {
       .eye = ld->NeedEyeCoords,
       .normalize = ctx->Transform.Normalize,
       .local_viewer = ctx->Light.Model.LocalViewer,
@@ -377,20 +339,27 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
    const unsigned color_mats = ctx->Light.ColorMaterialEnabled && color_varying
                                   ? ctx->Light._ColorMaterialBitmask : 0;
 
-   struct material_source src[FGL_ATTR_COUNT];
+   struct t_material_source *src = lb->src;
    for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++) {
       if (color_mats & FGL_MAT_BIT(a))
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &src[a].stride);
       else
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
    }
+   lb->normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &lb->nstride);
 
-   /* GL_FIXGL_cook_torrance: m_shade_point for both faces; the fog
-    * coordinate is |P.z| of the eye position it lit with (shading.md) */
-   if (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
-       ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL) {
-      light_shade(ctx, in, n, src, out);
-      return true;
+   /* GL_FIXGL_cook_torrance: m_shade_point for both faces, with the
+    * batch's lights prepared here once; the fog coordinate is |P.z| of the
+    * eye position it lit with (shading.md) */
+   lb->shade = ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
+               ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL;
+   if (lb->shade) {
+      fgl_update_shade_env(ctx, &lb->env);
+      lb->env.color_material = 0;   /* src already reads the tracked colours */
+      t_eye_normal_init(ctx, &lb->en);
+      lb->key = key;
+      lb->eye_position = true;
+      return;
    }
 
    /* check_active_shininess: a shininess that varies, or is not 0 (the
@@ -401,10 +370,11 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       shininess_active |= src[a].stride != 0 || ctx->Current.Attrib[a][0] != 0.0f;
    }
    key.shininess_is_zero = !shininess_active;
+   lb->key = key;
 
    /* the uniform scene colours and products, with the caller's
     * floating-point environment (no flush of denormals) */
-   struct products P;
+   struct t_light_products *P = &lb->P;
 #if defined(__SSE__) || defined(__x86_64__)
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr & ~0x8040u);
@@ -412,37 +382,56 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
    for (int s = 0; s < (key.twoside ? 2 : 1); s++) {
       const int amb = FGL_ATTR_MAT_FRONT_AMBIENT + s, dif = FGL_ATTR_MAT_FRONT_DIFFUSE + s,
                 spe = FGL_ATTR_MAT_FRONT_SPECULAR + s, emi = FGL_ATTR_MAT_FRONT_EMISSION + s;
-      P.vary_ambient[s] = src[amb].stride != 0;
-      P.vary_diffuse[s] = src[dif].stride != 0;
-      P.vary_specular[s] = src[spe].stride != 0;
-      P.vary_scene[s] = P.vary_ambient[s] || src[emi].stride != 0;
+      P->vary_ambient[s] = src[amb].stride != 0;
+      P->vary_diffuse[s] = src[dif].stride != 0;
+      P->vary_specular[s] = src[spe].stride != 0;
+      P->vary_scene[s] = P->vary_ambient[s] || src[emi].stride != 0;
       const struct material m = { src[amb].ptr, src[dif].ptr, src[spe].ptr, src[emi].ptr, 0 };
-      if (!P.vary_scene[s])
-         scene_colour(ctx, &m, P.scene[s]);
-      for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-         if (!(ld->EnabledLights & (1u << i)))
-            continue;
+      if (!P->vary_scene[s])
+         scene_colour(ctx, &m, P->scene[s]);
+      for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+         const int i = __builtin_ctz(lights);
          const struct fgl_light *l = &ctx->Light.Light[i];
-         if (!P.vary_ambient[s])
-            light_product(l->Ambient, m.ambient, P.ambient[i][s]);
-         if (!P.vary_diffuse[s])
-            light_product(l->Diffuse, m.diffuse, P.diffuse[i][s]);
-         if (!P.vary_specular[s])
-            light_product(l->Specular, m.specular, P.specular[i][s]);
+         if (!P->vary_ambient[s])
+            light_product(l->Ambient, m.ambient, P->ambient[i][s]);
+         if (!P->vary_diffuse[s])
+            light_product(l->Diffuse, m.diffuse, P->diffuse[i][s]);
+         if (!P->vary_specular[s])
+            light_product(l->Specular, m.specular, P->specular[i][s]);
       }
    }
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
 
-   unsigned nstride;
-   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
+   /* build_lighting asks for the eye position (get_eye_position) for a
+    * positional light, or for the local viewer's eye vector when there is a
+    * specular term; both only happen in eye space */
+   bool eye_position = false;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const int i = __builtin_ctz(lights);
+      eye_position |= ld->Light[i].Positional || (key.local_viewer && !key.shininess_is_zero);
+   }
+   lb->eye_position = eye_position;
+}
+
+T_FMA_CLONES
+void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
+                 const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                 struct t_vertex *out)
+{
+   if (lb->shade) {
+      light_shade(ctx, lb, in, first, n, out);
+      return;
+   }
+   const struct t_light_key *key = &lb->key;
+   const struct t_material_source *src = lb->src;
    const float *mv = ctx->ModelviewStack.Top->m;
 
-   for (unsigned i = 0; i < n; i++) {
+   for (unsigned i = first; i < first + n; i++) {
       float nrm[3], V[4] = { 0, 0, 0, 1 };
-      transform_normal(ctx, &key, normal + (size_t)i * nstride, nrm);
-      if (key.eye) {
+      transform_normal(ctx, key, lb->normal + (size_t)i * lb->nstride, nrm);
+      if (key->eye) {
          /* eye position: the modelview's column MUL/MAD chain */
          t_mul_mad_chain(V, mv, in[i].attr[FGL_ATTR_POS]);
       }
@@ -456,17 +445,6 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
            MAT(FGL_ATTR_MAT_BACK_SHININESS)[0] },
       };
 #undef MAT
-      light_vertex(ctx, &key, &P, nrm, V, mat, out[i].r.attr);
+      light_vertex(ctx, key, &lb->P, nrm, V, mat, out[i].r.attr);
    }
-
-   /* build_lighting asks for the eye position (get_eye_position) for a
-    * positional light, or for the local viewer's eye vector when there is a
-    * specular term; both only happen in eye space */
-   bool eye_position = false;
-   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-      if (ld->EnabledLights & (1u << i))
-         eye_position |= ld->Light[i].Positional ||
-                         (key.local_viewer && !key.shininess_is_zero);
-   }
-   return eye_position;
 }

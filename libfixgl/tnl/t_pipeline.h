@@ -77,15 +77,18 @@ static inline void t_copy_flat(const struct r_state *rs, struct r_vertex *dst,
             dst->attr[a][c] = pv->attr[a][c];
 }
 
-/* Transform n stored vertices (positions, colours) into out[]. */
-void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
-                 unsigned n, struct t_vertex *out);
+/* Where the transformed vertices' edge flags (t_vertex.edge) come from:
+ * every vertex has one, each is its glEdgeFlag value == 1.0, or none has
+ * one. */
+enum t_edge_source { T_EDGES_SET, T_EDGES_FROM_DATA, T_EDGES_CLEAR };
 
-/* Light n stored vertices (t_light.c): the R_ATTR_* colour slots of out[],
- * before the clamp.  Returns whether the oracle's lighting code computed
- * the eye position (which the fog coordinate then reuses). */
-bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
-             struct t_vertex *out);
+/* The vertex stage of n stored vertices into out[]: positions, clip codes,
+ * texture coordinates, lighting or the vertex colour, fog and edge
+ * flags. */
+void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                 unsigned n, struct t_vertex *out, enum t_edge_source edges);
+
+/* Lighting (t_light.c): see tnl/t_light.h. */
 
 /* The eye-space normal of shading.md (t_phong.c): GL_PHONG_WIN's vertex
  * normal, and the n of per-vertex Cook-Torrance (t_light.c): the
@@ -100,7 +103,7 @@ struct t_eye_normal {
 void t_eye_normal_init(const struct fgl_context *ctx, struct t_eye_normal *en);
 void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3]);
 
-/* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light, the vertex
+/* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light_run, the vertex
  * colour (R_ATTR_COLOR0), the
  * eye-space normal (R_ATTR_NORMAL, w = 1: front) and the eye position
  * (R_ATTR_EYEPOS) of n stored vertices, for r_fragment_phong. */
@@ -117,7 +120,7 @@ void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, 
                 unsigned units, struct t_vertex *out);
 
 /* The fog coordinate of n stored vertices (t_fog.c) into the R_ATTR_FOG
- * slot of out[]; eye_position_from_lighting is t_light's result. */
+ * slot of out[]; eye_position_from_lighting is t_light_batch.eye_position. */
 void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out);
 

@@ -351,7 +351,6 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
 #endif
-   t_transform(ctx, verts, nverts, tv);
 
    /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
     * GL_FILL, glEdgeFlag values in the batch's vertex format are per-vertex
@@ -370,9 +369,8 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
     * vertex elements st_draw_feedback.c gives the draw module), so unfilled
     * polygons of such a batch give no lines or points. */
    const bool feedback = ctx->RenderMode != GL_RENDER;
-   for (unsigned i = 0; i < nverts; i++)
-      tv[i].edge = !vertdata_edgeflags ||
-                   (!feedback && verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f);
+   t_transform(ctx, verts, nverts, tv,
+               !vertdata_edgeflags ? T_EDGES_SET : feedback ? T_EDGES_CLEAR : T_EDGES_FROM_DATA);
    const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
                                ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
    dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
