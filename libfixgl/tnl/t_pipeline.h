@@ -6,6 +6,9 @@
 #define FGL_T_PIPELINE_H
 
 #include <stdbool.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
@@ -53,9 +56,19 @@ struct t_vertex {
 /* A column-major matrix m times a position p as the oracle's vertex
  * program does it (llvmpipe-facts.md §1 "Vertex path"; ffvertex_prog.c
  * MUL then MADs, the MADs unfused):
- * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded. */
+ * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded.
+ * The four rows are the four lanes of SSE operations, one per column:
+ * each lane does the scalar chain's own multiplies and adds in its order,
+ * so the bits are those of the scalar chain below. */
 static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
 {
+#if defined(__SSE__) || defined(__x86_64__)
+   __m128 acc = _mm_mul_ps(_mm_set1_ps(p[0]), _mm_loadu_ps(m));
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[1]), _mm_loadu_ps(m + 4)), acc);
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[2]), _mm_loadu_ps(m + 8)), acc);
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[3]), _mm_loadu_ps(m + 12)), acc);
+   _mm_storeu_ps(out, acc);
+#else
    for (int r = 0; r < 4; r++) {
       float acc = p[0] * m[r];
       acc = p[1] * m[4 + r] + acc;
@@ -63,6 +76,7 @@ static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
       acc = p[3] * m[12 + r] + acc;
       out[r] = acc;
    }
+#endif
 }
 
 /* The provoking vertex pv's flat attributes (rs->flat_mask) onto dst, as
