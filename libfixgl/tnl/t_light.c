@@ -56,6 +56,14 @@ static inline void normalize3(float *v)
    v[2] *= r;
 }
 
+/* max(x, 0): the same bits as libm's fmaxf(x, 0.0f) and fmaxf(0.0f, x)
+ * (a NaN or either zero gives +0, with or without the flush of
+ * denormals; checked against Debian 12's glibc), without the call. */
+static inline float max0(float x)
+{
+   return x > 0.0f ? x : 0.0f;
+}
+
 /* MAD as the oracle runs it: a separate multiply and add */
 static inline void mad3(float *acc, float s, const float *v)
 {
@@ -68,20 +76,27 @@ struct lit {
    float ambient, diffuse, specular;
 };
 
-/* LIT of (nd, nh, -, shininess) (prog_to_nir.c:ptn_lit): y = max(nd, 0),
- * z = nd <= 0 ? 0 : pow(max(nh, 0), clamp(shininess, -128, 128)). */
-static inline struct lit lit_op(float nd, float nh, float shininess)
+/* LIT's exponent: the shininess clamped to [-128, 128]. */
+static inline float lit_exponent(float shininess)
 {
-   const float exponent = fmaxf(fminf(shininess, 128.0f), -128.0f);
-   struct lit l = { 1.0f, fmaxf(nd, 0.0f), 0.0f };
-   l.specular = 0.0f >= nd ? 0.0f : m_gallivm_pow(fmaxf(nh, 0.0f), exponent);
+   return fmaxf(fminf(shininess, 128.0f), -128.0f);
+}
+
+/* LIT of (nd, nh, -, shininess) (prog_to_nir.c:ptn_lit): y = max(nd, 0),
+ * z = nd <= 0 ? 0 : pow(max(nh, 0), clamp(shininess, -128, 128)), the
+ * exponent already clamped (lit_exponent). */
+static inline struct lit lit_op(float nd, float nh, float exponent)
+{
+   struct lit l = { 1.0f, max0(nd), 0.0f };
+   l.specular = 0.0f >= nd ? 0.0f : m_gallivm_pow(max0(nh), exponent);
    return l;
 }
 
-/* A face's material for one vertex. */
+/* A face's material for one vertex (exponent: its shininess through
+ * lit_exponent). */
 struct material {
    const float *ambient, *diffuse, *specular, *emission;
-   float shininess;
+   float exponent;
 };
 
 
@@ -197,16 +212,16 @@ static void light_vertex(const struct fgl_context *ctx, const struct t_light_key
          struct lit lt;
          if (attenuated) {
             /* with shininess 0 every component of dots is n.VP */
-            lt = lit_op(snd, snh, key->shininess_is_zero ? snd : mat[s].shininess);
+            lt = lit_op(snd, snh, key->shininess_is_zero ? lit_exponent(snd) : mat[s].exponent);
             lt.ambient = att;
             lt.diffuse *= att;
             lt.specular *= att;
          } else if (!key->shininess_is_zero) {
-            lt = lit_op(snd, snh, mat[s].shininess);
+            lt = lit_op(snd, snh, mat[s].exponent);
          } else {
             /* emit_degenerate_lit */
             lt.ambient = 1.0f;
-            lt.diffuse = fmaxf(0.0f, snd);
+            lt.diffuse = max0(snd);   /* fmaxf(0.0f, snd) */
             lt.specular = 0.0f < snd ? 1.0f : 0.0f;
          }
 
@@ -427,6 +442,16 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
    const struct t_light_key *key = &lb->key;
    const struct t_material_source *src = lb->src;
    const float *mv = ctx->ModelviewStack.Top->m;
+   /* the faces' LIT exponents: once here when the shininess does not vary
+    * per vertex */
+   float exponent[2];
+   for (int s = 0; s < 2; s++) {
+      const struct t_material_source *sh = &src[FGL_ATTR_MAT_FRONT_SHININESS + s];
+      exponent[s] = sh->stride ? 0.0f : lit_exponent(sh->ptr[0]);
+   }
+#define EXPONENT(s)                                                             \
+   (src[FGL_ATTR_MAT_FRONT_SHININESS + (s)].stride                              \
+       ? lit_exponent(MAT(FGL_ATTR_MAT_FRONT_SHININESS + (s))[0]) : exponent[s])
 
    for (unsigned i = first; i < first + n; i++) {
       float nrm[3], V[4] = { 0, 0, 0, 1 };
@@ -439,12 +464,13 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
       const struct material mat[2] = {
          { MAT(FGL_ATTR_MAT_FRONT_AMBIENT), MAT(FGL_ATTR_MAT_FRONT_DIFFUSE),
            MAT(FGL_ATTR_MAT_FRONT_SPECULAR), MAT(FGL_ATTR_MAT_FRONT_EMISSION),
-           MAT(FGL_ATTR_MAT_FRONT_SHININESS)[0] },
+           EXPONENT(0) },
          { MAT(FGL_ATTR_MAT_BACK_AMBIENT), MAT(FGL_ATTR_MAT_BACK_DIFFUSE),
            MAT(FGL_ATTR_MAT_BACK_SPECULAR), MAT(FGL_ATTR_MAT_BACK_EMISSION),
-           MAT(FGL_ATTR_MAT_BACK_SHININESS)[0] },
+           EXPONENT(1) },
       };
-#undef MAT
       light_vertex(ctx, key, &lb->P, nrm, V, mat, out[i].r.attr);
    }
+#undef MAT
+#undef EXPONENT
 }
