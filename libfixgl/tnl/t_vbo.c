@@ -310,8 +310,15 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
       upgrade_layout(vbo, attr, size);
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
-   if (attr != FGL_ATTR_POS)
+   if (attr != FGL_ATTR_POS) {
       vbo->format_mask |= 1u << attr;
+      /* the components past the format's size read as the defaults
+       * (COPY_CLEAN): keep them so in current[], which a glVertex then
+       * stores as it is (fgl_vbo_attr); a value left there by an earlier,
+       * larger format is never read */
+      for (unsigned i = size; i < 4; i++)
+         vbo->current[attr][i] = attr_default[i];
+   }
    vbo->active_size[attr] = size;
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
@@ -433,8 +440,10 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
    /* only the format's attributes are stored; the others are constant for
     * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */
    for (unsigned m = vbo->format_mask; m; m &= m - 1) {
-      const enum fgl_vbo_attr a = (enum fgl_vbo_attr)__builtin_ctz(m);
-      clean_value(vbo, a, dst->attr[a]);
+      const int a = __builtin_ctz(m);
+      /* clean_value: current[a] holds the defaults past attr_size[a]
+       * (upgrade_vertex; calls write only the format's components) */
+      memcpy(dst->attr[a], vbo->current[a], sizeof(dst->attr[a]));
    }
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);

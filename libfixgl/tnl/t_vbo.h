@@ -122,7 +122,9 @@ struct fgl_vbo {
    unsigned need_flush;                 /* FGL_VBO_FLUSH_* (Mesa's NeedFlush) */
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
                                          * the format (ctx->Current.Attrib
-                                         * holds the others) */
+                                         * holds the others); its
+                                         * components past attr_size are
+                                         * the defaults */
    /* Mesa's exec->vtx.vertex memory behind the non-position attributes:
     * each attribute's slot (offset, attr_size floats, in the order the
     * attributes joined the format), and what the slots last held when the
