@@ -11,6 +11,9 @@
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "context.h"
 #include "tnl/t_light.h"
@@ -54,8 +57,22 @@ static inline unsigned user_clip_mask(const struct fgl_context *ctx, const float
    return m;
 }
 
-/* Position, clip codes, window position and the unlit colour of the batch's
- * vertices first..first+n-1. */
+/* r_clamp01 of four components: minps(x, 1) then maxps(., 0) are
+ * r_clamp01's two selects lane by lane (x < 1 ? x : 1, NaN -> 1; then
+ * m > 0 ? m : 0), the same bits. */
+static inline void clamp01x4(float *dst, const float *src)
+{
+#if defined(__SSE__) || defined(__x86_64__)
+   const __m128 m = _mm_min_ps(_mm_loadu_ps(src), _mm_set1_ps(1.0f));
+   _mm_storeu_ps(dst, _mm_max_ps(m, _mm_setzero_ps()));
+#else
+   for (int k = 0; k < 4; k++)
+      dst[k] = r_clamp01(src[k]);
+#endif
+}
+
+/* Position, clip codes, window position and the unlit colour (already
+ * clamped) of the batch's vertices first..first+n-1. */
 static inline void transform_positions(const struct fgl_context *ctx,
                                        const struct fgl_vbo_vertex *in, unsigned first,
                                        unsigned n, const float *color, unsigned cstride,
@@ -88,11 +105,8 @@ static inline void transform_positions(const struct fgl_context *ctx,
       v->r.pos[2] = fmaf(v->clip[2] * oow, s[2], t[2]);
       v->r.pos[3] = oow;
 
-      if (!lit) {
-         const float *c = color + (size_t)i * cstride;
-         for (int k = 0; k < 4; k++)
-            v->r.attr[R_ATTR_COLOR0][k] = c[k];
-      }
+      if (!lit)
+         clamp01x4(v->r.attr[R_ATTR_COLOR0], color + (size_t)i * cstride);
    }
 }
 
@@ -129,9 +143,11 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                                  : 0;
    /* draw_llvm.c do_clamp_vertex_color: every colour output; under
     * GL_PHONG_WIN the vertex colour is a material input of the lighting
-    * per fragment, unclamped (as a generic varying of the reference) */
+    * per fragment, unclamped (as a generic varying of the reference).
+    * Unlit, the vertex colour is clamped as it is copied
+    * (transform_positions) and the other colour slots are zeros. */
    const int nattr = ctx->_Raster.num_attribs;
-   const int ncolor = phong ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
+   const int ncolor = phong || !lit ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
 
    /* the lighting's per-batch values (uniforms, material sources, the
     * Cook-Torrance lights), prepared once for all chunks */
@@ -163,8 +179,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 
       for (unsigned i = first; i < first + cnt; i++)
          for (int a = 0; a < ncolor; a++)
-            for (int k = 0; k < 4; k++)
-               out[i].r.attr[a][k] = r_clamp01(out[i].r.attr[a][k]);
+            clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
 
       /* ffvertex_prog.c: build_fog after build_lighting */
       if (fog)
