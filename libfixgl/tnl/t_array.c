@@ -231,6 +231,16 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    t_render_batch_elts(ctx, verts, nverts, elts, &prim, 1);
    /* flush_for_draw left the format empty */
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {
+      free(vbo->array_verts);
+      vbo->array_verts = NULL;
+      vbo->array_alloc = 0;
+   }
+   if (vbo->array_elts_alloc > 2 * FGL_VBO_SCRATCH_KEEP) {
+      free(vbo->array_elts);
+      vbo->array_elts = NULL;
+      vbo->array_elts_alloc = 0;
+   }
 }
 
 /* Immediate-mode conversions of the NV attribute functions

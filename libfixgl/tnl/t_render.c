@@ -440,4 +440,9 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
+   if (ctx->Vbo.tv_alloc > FGL_VBO_SCRATCH_KEEP) {
+      free(ctx->Vbo.tv);
+      ctx->Vbo.tv = NULL;
+      ctx->Vbo.tv_alloc = 0;
+   }
 }

@@ -156,6 +156,11 @@ bool fgl_vbo_init(struct fgl_vbo *vbo);
  * least n (*alloc updated): the array to use from now on, or NULL when out
  * of memory (buf is then still the caller's). */
 void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
+/* The most elements a scratch array keeps after a draw: enough for any
+ * immediate-mode batch (the 512 KiB buffer holds at most 65535 vertices);
+ * a larger one (a long array draw or display list) is freed after its
+ * draw rather than kept for the context's lifetime. */
+#define FGL_VBO_SCRATCH_KEEP 65536u
 void fgl_vbo_fini(struct fgl_vbo *vbo);
 
 /* An attribute call (glColor*, glVertex*) with n components. */
