@@ -432,10 +432,6 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
    if (!ensure_room(vbo, vbo->vert_count + 1))
       return;
    struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
-   /* the store is memory bound (a new cache line per vertex): ask for the
-    * line of a vertex a few calls ahead now, for writing */
-   if (vbo->vert_count + 8 < vbo->vert_alloc)
-      __builtin_prefetch(dst + 8, 1, 3);
    memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
    /* only the format's attributes are stored; the others are constant for
     * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */

@@ -85,13 +85,6 @@ static inline void transform_positions(const struct fgl_context *ctx,
    for (unsigned i = first; i < first + n; i++) {
       const float *p = in[i].attr[FGL_ATTR_POS];
       struct t_vertex *v = &out[i];
-      /* memory bound: the lines of a vertex a few iterations ahead, the
-       * stored one for reading, the transformed one for writing */
-      if (i + 4 < first + n) {
-         __builtin_prefetch(&in[i + 4], 0, 3);
-         __builtin_prefetch(&out[i + 4], 1, 3);
-         __builtin_prefetch(&out[i + 4].r.attr[R_ATTR_COLOR0][3], 1, 3);
-      }
       if (clear_bytes)
          memset(v->r.attr, 0, clear_bytes);
       t_mul_mad_chain(v->clip, m, p);
