@@ -335,6 +335,238 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
    }
 }
 
+/* ---- Eight vertices at a time ----
+ * The common case -- directional lights only (no spot, so no
+ * attenuation), an infinite viewer, materials that do not vary per
+ * vertex -- is lit in structure-of-arrays form with AVX2: the eight lanes
+ * of each operation are eight vertices, each lane doing light_vertex's
+ * operations for its vertex in light_vertex's order (separate multiplies
+ * and adds, DP3 from the last component, RSQ as 1/sqrt(|x|), LIT's pow as
+ * m_gallivm_pow: pow8 below), so the bits are those of the scalar path,
+ * which lights every other batch (and all of them on a CPU without AVX2
+ * and FMA).  light_simd_eligible decides per batch. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define T_LIGHT_SIMD 1
+#include <immintrin.h>
+
+#define T_AVX2 __attribute__((target("avx2,fma")))
+
+T_AVX2 static inline __m256 sel8(__m256 mask, __m256 if_true, __m256 if_false)
+{
+   return _mm256_blendv_ps(if_false, if_true, mask);
+}
+
+/* m_gallivm_pow(x, y) lane by lane: lp_build_pow, lp_build_log2_approx
+ * and lp_build_exp2 with their polynomials (math/m_gallivm.h, whose
+ * coefficients, double constants converted to float, are repeated here):
+ * the same operations in the same order, vfmadd for its fmaf, vroundps to
+ * -inf for its floorf, its special cases as selects. */
+T_AVX2 static inline __m256 pow8(__m256 x, __m256 y)
+{
+   const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+   const __m256 inf = _mm256_set1_ps(INFINITY);
+
+   /* m_gallivm_log2(x) */
+   const __m256i i = _mm256_castps_si256(x);
+   const __m256 exponent = _mm256_cvtepi32_ps(_mm256_sub_epi32(
+      _mm256_srli_epi32(_mm256_and_si256(i, _mm256_set1_epi32(0x7f800000)), 23),
+      _mm256_set1_epi32(127)));
+   const __m256 mant = _mm256_castsi256_ps(_mm256_or_si256(
+      _mm256_and_si256(i, _mm256_set1_epi32(0x007fffff)), _mm256_set1_epi32(0x3f800000)));
+   const __m256 ly = _mm256_div_ps(_mm256_sub_ps(mant, one), _mm256_add_ps(mant, one));
+   /* m_gallivm_polynomial(ly * ly, c, 5) */
+   const __m256 lz = _mm256_mul_ps(ly, ly);
+   const __m256 lz2 = _mm256_mul_ps(lz, lz);
+   __m256 leven = _mm256_fmadd_ps(lz2, _mm256_set1_ps((float)0.406718052498846252698),
+                                  _mm256_set1_ps((float)0.577440339438736392009));
+   const __m256 lodd = _mm256_fmadd_ps(lz2, _mm256_set1_ps((float)0.403343858251329912514),
+                                       _mm256_set1_ps((float)0.961791550404184197881));
+   leven = _mm256_fmadd_ps(lz2, leven, _mm256_set1_ps((float)2.88539009343309178325));
+   __m256 lg = _mm256_fmadd_ps(ly, _mm256_fmadd_ps(lodd, lz, leven), exponent);
+   lg = sel8(_mm256_cmp_ps(x, inf, _CMP_GE_OQ), inf, lg);
+   lg = sel8(_mm256_cmp_ps(x, zero, _CMP_EQ_OQ), _mm256_set1_ps(-INFINITY), lg);
+   lg = sel8(_mm256_or_ps(_mm256_cmp_ps(x, zero, _CMP_LT_OQ), _mm256_cmp_ps(x, x, _CMP_UNORD_Q)),
+             _mm256_set1_ps(NAN), lg);
+
+   /* m_gallivm_exp2(log2(x) * y) */
+   const __m256 t = _mm256_mul_ps(lg, y);
+   __m256 tc = sel8(_mm256_cmp_ps(t, _mm256_set1_ps(128.0f), _CMP_GT_OQ),
+                    _mm256_set1_ps(128.0f), t);
+   tc = sel8(_mm256_cmp_ps(tc, _mm256_set1_ps(-126.99999f), _CMP_LT_OQ),
+             _mm256_set1_ps(-126.99999f), tc);
+   const __m256 ipart = _mm256_round_ps(tc, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+   const __m256 fpart = _mm256_sub_ps(tc, ipart);
+   const __m256 scale = _mm256_castsi256_ps(_mm256_slli_epi32(
+      _mm256_add_epi32(_mm256_cvttps_epi32(ipart), _mm256_set1_epi32(127)), 23));
+   /* m_gallivm_polynomial(fpart, c, 6) */
+   const __m256 f2 = _mm256_mul_ps(fpart, fpart);
+   __m256 eodd = _mm256_fmadd_ps(f2, _mm256_set1_ps((float)0.00187757667519147912699),
+                                 _mm256_set1_ps((float)0.0558263180532956664775));
+   __m256 eeven = _mm256_fmadd_ps(f2, _mm256_set1_ps((float)0.00898934009049466391101),
+                                  _mm256_set1_ps((float)0.240153617044375388211));
+   eodd = _mm256_fmadd_ps(f2, eodd, _mm256_set1_ps((float)0.693153073200168932794));
+   eeven = _mm256_fmadd_ps(f2, eeven, _mm256_set1_ps((float)1.000000000000000000000));
+   __m256 r = _mm256_mul_ps(scale, _mm256_fmadd_ps(eodd, fpart, eeven));
+   r = sel8(_mm256_cmp_ps(t, t, _CMP_UNORD_Q), t, r);   /* NaN passes */
+   /* lp_build_pow: 0 for x == 0 */
+   return sel8(_mm256_cmp_ps(x, zero, _CMP_EQ_OQ), zero, r);
+}
+
+/* DP3 = (z*z' + y*y') + x*x' of three lanes-of-eight against a constant */
+T_AVX2 static inline __m256 dp3_8(const __m256 v[3], const float *c)
+{
+   return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[2], _mm256_set1_ps(c[2])),
+                                      _mm256_mul_ps(v[1], _mm256_set1_ps(c[1]))),
+                        _mm256_mul_ps(v[0], _mm256_set1_ps(c[0])));
+}
+
+/* max(x, 0) as max0: x > 0 ? x : +0 */
+T_AVX2 static inline __m256 max0_8(__m256 x)
+{
+   const __m256 zero = _mm256_setzero_ps();
+   return sel8(_mm256_cmp_ps(x, zero, _CMP_GT_OQ), x, zero);
+}
+
+/* light_vertex for the batch's vertices first..first+n-1, eight at a time
+ * (a last group of fewer repeats its last vertex in the unused lanes). */
+T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                              unsigned first, unsigned n, struct t_vertex *out)
+{
+   const struct t_light_key *key = &lb->key;
+   const struct t_light_products *P = &lb->P;
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   const struct t_material_source *src = lb->src;
+   const int sides = key->twoside ? 2 : 1;
+   const float *inv = ctx->ModelviewStack.Top->inv;
+   const __m256 sign = _mm256_set1_ps(-0.0f);
+
+   for (unsigned g = first; g < first + n; g += 8) {
+      const unsigned cnt = first + n - g < 8 ? first + n - g : 8;
+      /* the normals, structure of arrays */
+      float in[3][8];
+      for (unsigned l = 0; l < 8; l++) {
+         const float *p = lb->normal + (size_t)(g + (l < cnt ? l : cnt - 1)) * lb->nstride;
+         in[0][l] = p[0], in[1][l] = p[1], in[2][l] = p[2];
+      }
+      __m256 nv[3];
+      const __m256 iv[3] = { _mm256_loadu_ps(in[0]), _mm256_loadu_ps(in[1]),
+                             _mm256_loadu_ps(in[2]) };
+      /* transform_normal */
+      if (key->eye) {
+         for (int r = 0; r < 3; r++)
+            nv[r] = dp3_8(iv, inv + 4 * r);
+      } else {
+         for (int k = 0; k < 3; k++)
+            nv[k] = iv[k];
+      }
+      if (key->normalize) {
+         /* normalize3: n * rsq(dp3(n, n)), rsq = 1/sqrt(|x|) */
+         const __m256 d = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(nv[2], nv[2]),
+                                                      _mm256_mul_ps(nv[1], nv[1])),
+                                        _mm256_mul_ps(nv[0], nv[0]));
+         const __m256 r = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                        _mm256_sqrt_ps(_mm256_andnot_ps(sign, d)));
+         for (int k = 0; k < 3; k++)
+            nv[k] = _mm256_mul_ps(nv[k], r);
+      } else if (key->rescale) {
+         const __m256 s = _mm256_set1_ps(ld->NormalScale);
+         for (int k = 0; k < 3; k++)
+            nv[k] = _mm256_mul_ps(nv[k], s);
+      }
+
+      /* the colours: c[face][0 primary, 1 secondary][component] */
+      __m256 c[2][2][3];
+      for (int s = 0; s < sides; s++)
+         for (int k = 0; k < 3; k++) {
+            c[s][0][k] = _mm256_set1_ps(P->scene[s][k]);
+            c[s][1][k] = _mm256_setzero_ps();
+         }
+      for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+         const int i = __builtin_ctz(lights);   /* in index order */
+         const struct fgl_light_derived *d = &ld->Light[i];
+         /* directional: VP is the light's direction, H its half vector */
+         const __m256 nd = dp3_8(nv, d->Position);
+         const __m256 nh = key->shininess_is_zero ? nd : dp3_8(nv, d->HalfVector);
+         for (int s = 0; s < sides; s++) {
+            const __m256 snd = s ? _mm256_xor_ps(nd, sign) : nd;
+            const __m256 diffuse = max0_8(snd);
+            __m256 specular;
+            if (!key->shininess_is_zero) {
+               /* LIT: z = nd <= 0 ? 0 : pow(max(nh, 0), exponent) */
+               const __m256 snh = s ? _mm256_xor_ps(nh, sign) : nh;
+               const __m256 pw = pow8(max0_8(snh), _mm256_set1_ps(lb->exponent[s]));
+               specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_GE_OQ),
+                               _mm256_setzero_ps(), pw);
+            } else {
+               /* emit_degenerate_lit: 0 < nd ? 1 : 0 */
+               specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_LT_OQ),
+                               _mm256_set1_ps(1.0f), _mm256_setzero_ps());
+            }
+            __m256 *c0 = c[s][0], *c1 = key->separate ? c[s][1] : c[s][0];
+            for (int k = 0; k < 3; k++)
+               c0[k] = _mm256_add_ps(_mm256_set1_ps(P->ambient[i][s][k]), c0[k]);
+            for (int k = 0; k < 3; k++)
+               c0[k] = _mm256_add_ps(_mm256_mul_ps(diffuse, _mm256_set1_ps(P->diffuse[i][s][k])),
+                                     c0[k]);
+            for (int k = 0; k < 3; k++)
+               c1[k] = _mm256_add_ps(_mm256_mul_ps(specular,
+                                                   _mm256_set1_ps(P->specular[i][s][k])),
+                                     c1[k]);
+         }
+      }
+
+      /* back into the vertices: alpha the diffuse alpha, the secondary's 1 */
+      for (int s = 0; s < sides; s++) {
+         float lanes[2][3][8];
+         for (int k = 0; k < 3; k++) {
+            _mm256_storeu_ps(lanes[0][k], c[s][0][k]);
+            _mm256_storeu_ps(lanes[1][k], c[s][1][k]);
+         }
+         const float alpha = src[FGL_ATTR_MAT_FRONT_DIFFUSE + s].ptr[3];
+         for (unsigned l = 0; l < cnt; l++) {
+            float (*col)[4] = out[g + l].r.attr;
+            col[2 * s][0] = lanes[0][0][l];
+            col[2 * s][1] = lanes[0][1][l];
+            col[2 * s][2] = lanes[0][2][l];
+            col[2 * s][3] = alpha;
+            col[2 * s + 1][0] = lanes[1][0][l];
+            col[2 * s + 1][1] = lanes[1][1][l];
+            col[2 * s + 1][2] = lanes[1][2][l];
+            col[2 * s + 1][3] = 1.0f;
+         }
+      }
+   }
+}
+#endif
+
+/* Whether light_simd lights this batch (t_light_prepare, after the
+ * products): directional lights only, an infinite viewer, no material
+ * varying per vertex, and a CPU with AVX2 and FMA. */
+static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_light_batch *lb)
+{
+#ifdef T_LIGHT_SIMD
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   const struct t_light_products *P = &lb->P;
+   if (lb->key.local_viewer || !ld->EnabledLights)
+      return false;
+   for (int s = 0; s < (lb->key.twoside ? 2 : 1); s++)
+      if (P->vary_scene[s] || P->vary_ambient[s] || P->vary_diffuse[s] ||
+          P->vary_specular[s] || lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
+         return false;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const struct fgl_light_derived *d = &ld->Light[__builtin_ctz(lights)];
+      if (d->Positional || d->Spot)
+         return false;
+   }
+   __builtin_cpu_init();
+   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+   (void)ctx;
+   (void)lb;
+   return false;
+#endif
+}
+
 void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
                      struct t_light_batch *lb)
 {
@@ -362,6 +594,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
    }
    lb->normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &lb->nstride);
+   lb->simd = false;
 
    /* GL_FIXGL_cook_torrance: m_shade_point for both faces, with the
     * batch's lights prepared here once; the fog coordinate is |P.z| of the
@@ -419,6 +652,14 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
    _mm_setcsr(mxcsr);
 #endif
 
+   /* the faces' LIT exponents, when the shininess does not vary per
+    * vertex (in the draw's floating-point environment, as per vertex) */
+   for (int s = 0; s < 2; s++) {
+      const struct t_material_source *sh = &src[FGL_ATTR_MAT_FRONT_SHININESS + s];
+      lb->exponent[s] = sh->stride ? 0.0f : lit_exponent(sh->ptr[0]);
+   }
+   lb->simd = light_simd_eligible(ctx, lb);
+
    /* build_lighting asks for the eye position (get_eye_position) for a
     * positional light, or for the local viewer's eye vector when there is a
     * specular term; both only happen in eye space */
@@ -442,16 +683,17 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
    const struct t_light_key *key = &lb->key;
    const struct t_material_source *src = lb->src;
    const float *mv = ctx->ModelviewStack.Top->m;
-   /* the faces' LIT exponents: once here when the shininess does not vary
-    * per vertex */
-   float exponent[2];
-   for (int s = 0; s < 2; s++) {
-      const struct t_material_source *sh = &src[FGL_ATTR_MAT_FRONT_SHININESS + s];
-      exponent[s] = sh->stride ? 0.0f : lit_exponent(sh->ptr[0]);
+#ifdef T_LIGHT_SIMD
+   if (lb->simd) {
+      light_simd(ctx, lb, first, n, out);
+      return;
    }
+#endif
+   /* the faces' LIT exponents: from the batch when the shininess does not
+    * vary per vertex */
 #define EXPONENT(s)                                                             \
    (src[FGL_ATTR_MAT_FRONT_SHININESS + (s)].stride                              \
-       ? lit_exponent(MAT(FGL_ATTR_MAT_FRONT_SHININESS + (s))[0]) : exponent[s])
+       ? lit_exponent(MAT(FGL_ATTR_MAT_FRONT_SHININESS + (s))[0]) : lb->exponent[s])
 
    for (unsigned i = first; i < first + n; i++) {
       float nrm[3], V[4] = { 0, 0, 0, 1 };

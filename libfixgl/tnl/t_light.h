@@ -63,6 +63,10 @@ struct t_light_batch {
     * en; else the oracle's program with the products P */
    bool shade;
    struct t_light_products P;
+   float exponent[2];         /* the faces' LIT exponents, where the
+                               * shininess does not vary per vertex */
+   bool simd;                 /* lit eight vertices at a time (t_light.c
+                               * light_simd) */
    struct m_shade_env env;
    struct t_eye_normal en;
 };
