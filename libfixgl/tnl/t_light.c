@@ -412,6 +412,11 @@ T_AVX2 static inline __m256 pow8(__m256 x, __m256 y)
    return sel8(_mm256_cmp_ps(x, zero, _CMP_EQ_OQ), zero, r);
 }
 
+T_AVX2 static void t_lit_pows8(const float *x, const float *y, float *out)
+{
+   _mm256_storeu_ps(out, pow8(_mm256_loadu_ps(x), _mm256_loadu_ps(y)));
+}
+
 /* DP3 = (z*z' + y*y') + x*x' of three lanes-of-eight against a constant */
 T_AVX2 static inline __m256 dp3_8(const __m256 v[3], const float *c)
 {
@@ -538,6 +543,19 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
    }
 }
 #endif
+
+void t_lit_pows(const float *x, const float *y, float *out, unsigned n)
+{
+   unsigned k = 0;
+#ifdef T_LIGHT_SIMD
+   __builtin_cpu_init();
+   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+      for (; k + 8 <= n; k += 8)
+         t_lit_pows8(x + k, y + k, out + k);
+#endif
+   for (; k < n; k++)
+      out[k] = m_gallivm_pow(x[k], y[k]);
+}
 
 /* Whether light_simd lights this batch (t_light_prepare, after the
  * products): directional lights only, an infinite viewer, no material

@@ -81,4 +81,9 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
                  const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
                  struct t_vertex *out);
 
+/* LIT's pow of n argument pairs, out[k] = m_gallivm_pow(x[k], y[k]),
+ * through light_simd's eight-lane pow where the CPU has AVX2 and FMA (for
+ * the unit test that checks they are the same bits). */
+void t_lit_pows(const float *x, const float *y, float *out, unsigned n);
+
 #endif
