@@ -337,7 +337,7 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
 
 /* ---- Eight vertices at a time ----
  * The common case -- directional lights only (no spot, so no
- * attenuation), an infinite viewer, materials that do not vary per
+ * attenuation), an infinite viewer, a shininess that does not vary per
  * vertex -- is lit in structure-of-arrays form with AVX2: the eight lanes
  * of each operation are eight vertices, each lane doing light_vertex's
  * operations for its vertex in light_vertex's order (separate multiplies
@@ -479,11 +479,36 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
             nv[k] = _mm256_mul_ps(nv[k], s);
       }
 
-      /* the colours: c[face][0 primary, 1 secondary][component] */
+      /* the faces' materials where they vary per vertex (the colour
+       * tracked by glColorMaterial): m[face][property][component], the
+       * properties ambient, diffuse, specular, emission */
+      __m256 m[2][4][4];
+      for (int s = 0; s < sides; s++) {
+         if (!(P->vary_scene[s] || P->vary_diffuse[s] || P->vary_specular[s]))
+            continue;
+         for (int prop = 0; prop < 4; prop++) {
+            const struct t_material_source *ms = &src[FGL_ATTR_MAT_FRONT_AMBIENT + 2 * prop + s];
+            float lanes[4][8];
+            for (unsigned l = 0; l < 8; l++) {
+               const float *v = ms->ptr + (size_t)(g + (l < cnt ? l : cnt - 1)) * ms->stride;
+               for (int k = 0; k < 4; k++)
+                  lanes[k][l] = v[k];
+            }
+            for (int k = 0; k < 4; k++)
+               m[s][prop][k] = _mm256_loadu_ps(lanes[k]);
+         }
+      }
+
+      /* the colours: c[face][0 primary, 1 secondary][component]; the
+       * scene colour emission + ambient * global ambient (scene_colour) */
       __m256 c[2][2][3];
       for (int s = 0; s < sides; s++)
          for (int k = 0; k < 3; k++) {
-            c[s][0][k] = _mm256_set1_ps(P->scene[s][k]);
+            c[s][0][k] = P->vary_scene[s]
+                            ? _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(ctx->Light.Model.Ambient[k]),
+                                                          m[s][0][k]),
+                                            m[s][3][k])
+                            : _mm256_set1_ps(P->scene[s][k]);
             c[s][1][k] = _mm256_setzero_ps();
          }
       for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
@@ -507,16 +532,28 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
                specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_LT_OQ),
                                _mm256_set1_ps(1.0f), _mm256_setzero_ps());
             }
+            /* the light products, uniform or per vertex (light_product:
+             * light * material) */
+            const struct fgl_light *lt = &ctx->Light.Light[i];
+            __m256 amb[3], dif[3], spe[3];
+            for (int k = 0; k < 3; k++) {
+               amb[k] = P->vary_ambient[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Ambient[k]), m[s][0][k])
+                           : _mm256_set1_ps(P->ambient[i][s][k]);
+               dif[k] = P->vary_diffuse[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Diffuse[k]), m[s][1][k])
+                           : _mm256_set1_ps(P->diffuse[i][s][k]);
+               spe[k] = P->vary_specular[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Specular[k]), m[s][2][k])
+                           : _mm256_set1_ps(P->specular[i][s][k]);
+            }
             __m256 *c0 = c[s][0], *c1 = key->separate ? c[s][1] : c[s][0];
             for (int k = 0; k < 3; k++)
-               c0[k] = _mm256_add_ps(_mm256_set1_ps(P->ambient[i][s][k]), c0[k]);
+               c0[k] = _mm256_add_ps(amb[k], c0[k]);
             for (int k = 0; k < 3; k++)
-               c0[k] = _mm256_add_ps(_mm256_mul_ps(diffuse, _mm256_set1_ps(P->diffuse[i][s][k])),
-                                     c0[k]);
+               c0[k] = _mm256_add_ps(_mm256_mul_ps(diffuse, dif[k]), c0[k]);
             for (int k = 0; k < 3; k++)
-               c1[k] = _mm256_add_ps(_mm256_mul_ps(specular,
-                                                   _mm256_set1_ps(P->specular[i][s][k])),
-                                     c1[k]);
+               c1[k] = _mm256_add_ps(_mm256_mul_ps(specular, spe[k]), c1[k]);
          }
       }
 
@@ -527,13 +564,13 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
             _mm256_storeu_ps(lanes[0][k], c[s][0][k]);
             _mm256_storeu_ps(lanes[1][k], c[s][1][k]);
          }
-         const float alpha = src[FGL_ATTR_MAT_FRONT_DIFFUSE + s].ptr[3];
+         const struct t_material_source *dsrc = &src[FGL_ATTR_MAT_FRONT_DIFFUSE + s];
          for (unsigned l = 0; l < cnt; l++) {
             float (*col)[4] = out[g + l].r.attr;
             col[2 * s][0] = lanes[0][0][l];
             col[2 * s][1] = lanes[0][1][l];
             col[2 * s][2] = lanes[0][2][l];
-            col[2 * s][3] = alpha;
+            col[2 * s][3] = dsrc->ptr[(size_t)(g + l) * dsrc->stride + 3];
             col[2 * s + 1][0] = lanes[1][0][l];
             col[2 * s + 1][1] = lanes[1][1][l];
             col[2 * s + 1][2] = lanes[1][2][l];
@@ -558,18 +595,16 @@ void t_lit_pows(const float *x, const float *y, float *out, unsigned n)
 }
 
 /* Whether light_simd lights this batch (t_light_prepare, after the
- * products): directional lights only, an infinite viewer, no material
- * varying per vertex, and a CPU with AVX2 and FMA. */
+ * products): directional lights only, an infinite viewer, a shininess
+ * that does not vary per vertex, and a CPU with AVX2 and FMA. */
 static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_light_batch *lb)
 {
 #ifdef T_LIGHT_SIMD
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
-   const struct t_light_products *P = &lb->P;
    if (lb->key.local_viewer || !ld->EnabledLights)
       return false;
    for (int s = 0; s < (lb->key.twoside ? 2 : 1); s++)
-      if (P->vary_scene[s] || P->vary_ambient[s] || P->vary_diffuse[s] ||
-          P->vary_specular[s] || lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
+      if (lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
          return false;
    for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
       const struct fgl_light_derived *d = &ld->Light[__builtin_ctz(lights)];
