@@ -336,9 +336,9 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
 }
 
 /* ---- Eight vertices at a time ----
- * The common case -- directional lights only (no spot, so no
- * attenuation), an infinite viewer, a shininess that does not vary per
- * vertex -- is lit in structure-of-arrays form with AVX2: the eight lanes
+ * The common case -- directional and positional lights without spot, a
+ * shininess that does not vary per vertex -- is lit in
+ * structure-of-arrays form with AVX2: the eight lanes
  * of each operation are eight vertices, each lane doing light_vertex's
  * operations for its vertex in light_vertex's order (separate multiplies
  * and adds, DP3 from the last component, RSQ as 1/sqrt(|x|), LIT's pow as
@@ -425,6 +425,13 @@ T_AVX2 static inline __m256 dp3_8(const __m256 v[3], const float *c)
                         _mm256_mul_ps(v[0], _mm256_set1_ps(c[0])));
 }
 
+/* DP3 of two lane vectors */
+T_AVX2 static inline __m256 dp3_8v(const __m256 a[3], const __m256 b[3])
+{
+   return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[2], b[2]), _mm256_mul_ps(a[1], b[1])),
+                        _mm256_mul_ps(a[0], b[0]));
+}
+
 /* max(x, 0) as max0: x > 0 ? x : +0 */
 T_AVX2 static inline __m256 max0_8(__m256 x)
 {
@@ -434,8 +441,21 @@ T_AVX2 static inline __m256 max0_8(__m256 x)
 
 /* light_vertex for the batch's vertices first..first+n-1, eight at a time
  * (a last group of fewer repeats its last vertex in the unused lanes). */
+/* normalize3 of three lanes-of-eight: v * rsq(dp3(v, v)), rsq = 1/sqrt(|x|) */
+T_AVX2 static inline void normalize3_8(__m256 v[3])
+{
+   const __m256 d = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[2], v[2]),
+                                                _mm256_mul_ps(v[1], v[1])),
+                                  _mm256_mul_ps(v[0], v[0]));
+   const __m256 r = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                  _mm256_sqrt_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), d)));
+   for (int k = 0; k < 3; k++)
+      v[k] = _mm256_mul_ps(v[k], r);
+}
+
 T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                              unsigned first, unsigned n, struct t_vertex *out)
+                              const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                              struct t_vertex *out)
 {
    const struct t_light_key *key = &lb->key;
    const struct t_light_products *P = &lb->P;
@@ -443,19 +463,20 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
    const struct t_material_source *src = lb->src;
    const int sides = key->twoside ? 2 : 1;
    const float *inv = ctx->ModelviewStack.Top->inv;
+   const float *mv = ctx->ModelviewStack.Top->m;
    const __m256 sign = _mm256_set1_ps(-0.0f);
 
    for (unsigned g = first; g < first + n; g += 8) {
       const unsigned cnt = first + n - g < 8 ? first + n - g : 8;
       /* the normals, structure of arrays */
-      float in[3][8];
+      float nin[3][8];
       for (unsigned l = 0; l < 8; l++) {
          const float *p = lb->normal + (size_t)(g + (l < cnt ? l : cnt - 1)) * lb->nstride;
-         in[0][l] = p[0], in[1][l] = p[1], in[2][l] = p[2];
+         nin[0][l] = p[0], nin[1][l] = p[1], nin[2][l] = p[2];
       }
       __m256 nv[3];
-      const __m256 iv[3] = { _mm256_loadu_ps(in[0]), _mm256_loadu_ps(in[1]),
-                             _mm256_loadu_ps(in[2]) };
+      const __m256 iv[3] = { _mm256_loadu_ps(nin[0]), _mm256_loadu_ps(nin[1]),
+                             _mm256_loadu_ps(nin[2]) };
       /* transform_normal */
       if (key->eye) {
          for (int r = 0; r < 3; r++)
@@ -477,6 +498,33 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
          const __m256 s = _mm256_set1_ps(ld->NormalScale);
          for (int k = 0; k < 3; k++)
             nv[k] = _mm256_mul_ps(nv[k], s);
+      }
+
+      /* the eye position V (t_mul_mad_chain, xyz), in eye space only
+       * (else 0), and the local viewer's normalised eye vector */
+      __m256 V[3] = { _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps() };
+      if (key->eye) {
+         float p[4][8];
+         for (unsigned l = 0; l < 8; l++) {
+            const float *q = in[g + (l < cnt ? l : cnt - 1)].attr[FGL_ATTR_POS];
+            for (int k = 0; k < 4; k++)
+               p[k][l] = q[k];
+         }
+         const __m256 px = _mm256_loadu_ps(p[0]), py = _mm256_loadu_ps(p[1]),
+                      pz = _mm256_loadu_ps(p[2]), pw = _mm256_loadu_ps(p[3]);
+         for (int r = 0; r < 3; r++) {
+            __m256 acc = _mm256_mul_ps(px, _mm256_set1_ps(mv[r]));
+            acc = _mm256_add_ps(_mm256_mul_ps(py, _mm256_set1_ps(mv[4 + r])), acc);
+            acc = _mm256_add_ps(_mm256_mul_ps(pz, _mm256_set1_ps(mv[8 + r])), acc);
+            acc = _mm256_add_ps(_mm256_mul_ps(pw, _mm256_set1_ps(mv[12 + r])), acc);
+            V[r] = acc;
+         }
+      }
+      __m256 eye_hat[3];
+      if (key->local_viewer && !key->shininess_is_zero) {
+         for (int k = 0; k < 3; k++)
+            eye_hat[k] = V[k];
+         normalize3_8(eye_hat);
       }
 
       /* the faces' materials where they vary per vertex (the colour
@@ -514,12 +562,61 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
       for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
          const int i = __builtin_ctz(lights);   /* in index order */
          const struct fgl_light_derived *d = &ld->Light[i];
-         /* directional: VP is the light's direction, H its half vector */
-         const __m256 nd = dp3_8(nv, d->Position);
-         const __m256 nh = key->shininess_is_zero ? nd : dp3_8(nv, d->HalfVector);
+         const struct fgl_light *lt = &ctx->Light.Light[i];
+
+         /* the direction to the light VP (normalised, from the vertex for a
+          * positional light), its squared distance and the distance
+          * attenuation (no spot lights here) */
+         __m256 VP[3], dist2 = _mm256_setzero_ps(), inv_dist = _mm256_setzero_ps();
+         if (d->Positional) {
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_sub_ps(_mm256_set1_ps(d->Position[k]), V[k]);
+            dist2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(VP[2], VP[2]),
+                                                _mm256_mul_ps(VP[1], VP[1])),
+                                  _mm256_mul_ps(VP[0], VP[0]));
+            inv_dist = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                     _mm256_sqrt_ps(_mm256_andnot_ps(sign, dist2)));
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_mul_ps(VP[k], inv_dist);
+         } else {
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_set1_ps(d->Position[k]);
+         }
+         const bool attenuated = d->Attenuated && d->Positional;
+         __m256 att = _mm256_set1_ps(1.0f);
+         if (attenuated) {
+            const __m256 dist = _mm256_sqrt_ps(_mm256_andnot_ps(sign, dist2));
+            const __m256 k = _mm256_add_ps(
+               _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(lt->QuadraticAttenuation), dist2),
+                             _mm256_mul_ps(_mm256_set1_ps(lt->LinearAttenuation), dist)),
+               _mm256_mul_ps(_mm256_set1_ps(lt->ConstantAttenuation),
+                             _mm256_mul_ps(inv_dist, dist)));
+            att = _mm256_div_ps(_mm256_set1_ps(1.0f), k);
+         }
+
+         /* the half vector */
+         __m256 H[3];
+         if (!key->shininess_is_zero) {
+            if (key->local_viewer) {
+               for (int k = 0; k < 3; k++)
+                  H[k] = _mm256_sub_ps(VP[k], eye_hat[k]);
+               normalize3_8(H);
+            } else if (!d->Positional) {
+               for (int k = 0; k < 3; k++)
+                  H[k] = _mm256_set1_ps(d->HalfVector[k]);
+            } else {
+               H[0] = VP[0];
+               H[1] = VP[1];
+               H[2] = _mm256_add_ps(VP[2], _mm256_set1_ps(1.0f));
+               normalize3_8(H);
+            }
+         }
+
+         const __m256 nd = dp3_8v(nv, VP);
+         const __m256 nh = key->shininess_is_zero ? nd : dp3_8v(nv, H);
          for (int s = 0; s < sides; s++) {
             const __m256 snd = s ? _mm256_xor_ps(nd, sign) : nd;
-            const __m256 diffuse = max0_8(snd);
+            __m256 diffuse = max0_8(snd);
             __m256 specular;
             if (!key->shininess_is_zero) {
                /* LIT: z = nd <= 0 ? 0 : pow(max(nh, 0), exponent) */
@@ -528,13 +625,18 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
                specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_GE_OQ),
                                _mm256_setzero_ps(), pw);
             } else {
-               /* emit_degenerate_lit: 0 < nd ? 1 : 0 */
+               /* emit_degenerate_lit: 0 < nd ? 1 : 0 (never attenuated
+                * here: light_simd_eligible) */
                specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_LT_OQ),
                                _mm256_set1_ps(1.0f), _mm256_setzero_ps());
             }
+            if (attenuated) {
+               /* lt.ambient = att; lt.diffuse *= att; lt.specular *= att */
+               diffuse = _mm256_mul_ps(diffuse, att);
+               specular = _mm256_mul_ps(specular, att);
+            }
             /* the light products, uniform or per vertex (light_product:
              * light * material) */
-            const struct fgl_light *lt = &ctx->Light.Light[i];
             __m256 amb[3], dif[3], spe[3];
             for (int k = 0; k < 3; k++) {
                amb[k] = P->vary_ambient[s]
@@ -549,7 +651,8 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
             }
             __m256 *c0 = c[s][0], *c1 = key->separate ? c[s][1] : c[s][0];
             for (int k = 0; k < 3; k++)
-               c0[k] = _mm256_add_ps(amb[k], c0[k]);
+               c0[k] = attenuated ? _mm256_add_ps(_mm256_mul_ps(att, amb[k]), c0[k])
+                                  : _mm256_add_ps(amb[k], c0[k]);
             for (int k = 0; k < 3; k++)
                c0[k] = _mm256_add_ps(_mm256_mul_ps(diffuse, dif[k]), c0[k]);
             for (int k = 0; k < 3; k++)
@@ -595,20 +698,22 @@ void t_lit_pows(const float *x, const float *y, float *out, unsigned n)
 }
 
 /* Whether light_simd lights this batch (t_light_prepare, after the
- * products): directional lights only, an infinite viewer, a shininess
- * that does not vary per vertex, and a CPU with AVX2 and FMA. */
+ * products): no spot light, a shininess that does not vary per vertex
+ * (and is not 0 with an attenuated light), and a CPU with AVX2 and FMA. */
 static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_light_batch *lb)
 {
 #ifdef T_LIGHT_SIMD
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
-   if (lb->key.local_viewer || !ld->EnabledLights)
+   if (!ld->EnabledLights)
       return false;
    for (int s = 0; s < (lb->key.twoside ? 2 : 1); s++)
       if (lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
          return false;
    for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
       const struct fgl_light_derived *d = &ld->Light[__builtin_ctz(lights)];
-      if (d->Positional || d->Spot)
+      /* no spot light; no attenuated light with the degenerate shininess
+       * (whose LIT exponent is the clamped n.VP of each vertex) */
+      if (d->Spot || (d->Attenuated && d->Positional && lb->key.shininess_is_zero))
          return false;
    }
    __builtin_cpu_init();
@@ -738,7 +843,7 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
    const float *mv = ctx->ModelviewStack.Top->m;
 #ifdef T_LIGHT_SIMD
    if (lb->simd) {
-      light_simd(ctx, lb, first, n, out);
+      light_simd(ctx, lb, in, first, n, out);
       return;
    }
 #endif
