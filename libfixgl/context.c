@@ -9,7 +9,17 @@
 #include "main/dlist.h"
 #include "main/groups.h"
 
-static _Thread_local struct fgl_context *current_context;
+/* initial-exec: read at a fixed offset from the thread pointer, without a
+ * __tls_get_addr call in every GL entry point (the general model of a
+ * shared library's TLS); the library's few bytes come from the static TLS
+ * block, or its reserve when it is dlopen()ed, as Mesa's current context
+ * and dispatch do. */
+#if defined(__GNUC__) && defined(__ELF__)
+#define FGL_TLS_INITIAL_EXEC __attribute__((tls_model("initial-exec")))
+#else
+#define FGL_TLS_INITIAL_EXEC
+#endif
+static _Thread_local struct fgl_context *current_context FGL_TLS_INITIAL_EXEC;
 
 struct fgl_context *fgl_get_current(void)
 {

@@ -22,6 +22,7 @@
  * are the current values (stride 0, and a colour that is not a varying
  * of the fragment program), and the draw leaves the current values alone.
  */
+#include <limits.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -152,12 +153,52 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    if (index_type && !indices)
       return;
 
-   struct fgl_vbo_vertex *verts = malloc((size_t)count * sizeof(*verts));
+   /* glDrawElements: a small post-transform vertex cache.  An element that
+    * the primitives use again while it is still in the direct-mapped
+    * cache (slot: its low bits) is fetched, transformed and lit once, and
+    * the primitives read their vertices through elts[].  The vertex stage
+    * is a function of the element's data and of the draw's state only, so
+    * sharing its result gives the same bits; the primitives, their vsplit
+    * segments and their order are still those of the index list. */
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   unsigned nverts = (unsigned)count;
+   unsigned *elts = NULL;       /* the primitives' vertex i is verts[elts[i]] */
+   GLuint *fetch_elt = NULL;    /* the element each stored vertex is */
+   if (index_type) {
+      unsigned *e = fgl_vbo_scratch(vbo->array_elts, &vbo->array_elts_alloc,
+                                    2 * (unsigned)count, sizeof(*e));
+      if (!e)
+         return;
+      vbo->array_elts = e;
+      elts = e;
+      fetch_elt = e + count;
+      enum { CACHE_SIZE = 256 };
+      GLuint tag[CACHE_SIZE];
+      unsigned slot[CACHE_SIZE];
+      for (unsigned c = 0; c < CACHE_SIZE; c++)
+         slot[c] = UINT_MAX;
+      nverts = 0;
+      for (GLsizei i = 0; i < count; i++) {
+         const GLuint el = t_index_at(index_type, indices, i);
+         const unsigned c = el % CACHE_SIZE;
+         if (slot[c] == UINT_MAX || tag[c] != el) {
+            tag[c] = el;
+            slot[c] = nverts;
+            fetch_elt[nverts++] = el;
+         }
+         elts[i] = slot[c];
+      }
+   }
+
+   /* the fetched vertices: the context's scratch array, no allocation
+    * per draw */
+   struct fgl_vbo_vertex *verts = fgl_vbo_scratch(vbo->array_verts, &vbo->array_alloc,
+                                                  nverts, sizeof(*verts));
    if (!verts)
       return;
+   vbo->array_verts = verts;
    /* the batch's vertex format: the enabled arrays (the state tracker's
     * vertex elements; _mesa_set_varying_vp_inputs) */
-   struct fgl_vbo *vbo = &ctx->Vbo;
    static const struct { enum fgl_array_index array; enum fgl_vbo_attr attr; bool norm; }
    map[] = {
       { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
@@ -178,9 +219,8 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       if (!a->Enabled)
          continue;
       vbo->attr_size[map[m].attr] = (unsigned)a->Size;
-      for (GLsizei i = 0; i < count; i++) {
-         const GLuint elt = index_type ? t_index_at(index_type, indices, i)
-                                       : (GLuint)(first + i);
+      for (unsigned i = 0; i < nverts; i++) {
+         const GLuint elt = fetch_elt ? fetch_elt[i] : (GLuint)first + i;
          fetch(a, map[m].norm, elt, verts[i].attr[map[m].attr]);
       }
    }
@@ -188,10 +228,19 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       .mode = mode, .start = 0, .count = (unsigned)count,
       .begin = true, .end = true, .indexed = index_type != 0,
    };
-   t_render_batch(ctx, verts, (unsigned)count, &prim, 1);
+   t_render_batch_elts(ctx, verts, nverts, elts, &prim, 1);
    /* flush_for_draw left the format empty */
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
-   free(verts);
+   if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {
+      free(vbo->array_verts);
+      vbo->array_verts = NULL;
+      vbo->array_alloc = 0;
+   }
+   if (vbo->array_elts_alloc > 2 * FGL_VBO_SCRATCH_KEEP) {
+      free(vbo->array_elts);
+      vbo->array_elts = NULL;
+      vbo->array_elts_alloc = 0;
+   }
 }
 
 /* Immediate-mode conversions of the NV attribute functions

@@ -21,7 +21,7 @@
  * t_phong.c instead of t_light; in GL_SELECT / GL_FEEDBACK the vertices
  * are lit here, as under GL_SMOOTH).
  */
-#include "tnl/t_pipeline.h"
+#include "tnl/t_light.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -57,6 +57,14 @@ static inline void normalize3(float *v)
    v[2] *= r;
 }
 
+/* max(x, 0): the same bits as libm's fmaxf(x, 0.0f) and fmaxf(0.0f, x)
+ * (a NaN or either zero gives +0, with or without the flush of
+ * denormals; checked against Debian 12's glibc), without the call. */
+static inline float max0(float x)
+{
+   return x > 0.0f ? x : 0.0f;
+}
+
 /* MAD as the oracle runs it: a separate multiply and add */
 static inline void mad3(float *acc, float s, const float *v)
 {
@@ -69,46 +77,30 @@ struct lit {
    float ambient, diffuse, specular;
 };
 
-/* LIT of (nd, nh, -, shininess) (prog_to_nir.c:ptn_lit): y = max(nd, 0),
- * z = nd <= 0 ? 0 : pow(max(nh, 0), clamp(shininess, -128, 128)). */
-static inline struct lit lit_op(float nd, float nh, float shininess)
+/* LIT's exponent: the shininess clamped to [-128, 128]. */
+static inline float lit_exponent(float shininess)
 {
-   const float exponent = fmaxf(fminf(shininess, 128.0f), -128.0f);
-   struct lit l = { 1.0f, fmaxf(nd, 0.0f), 0.0f };
-   l.specular = 0.0f >= nd ? 0.0f : m_gallivm_pow(fmaxf(nh, 0.0f), exponent);
+   return fmaxf(fminf(shininess, 128.0f), -128.0f);
+}
+
+/* LIT of (nd, nh, -, shininess) (prog_to_nir.c:ptn_lit): y = max(nd, 0),
+ * z = nd <= 0 ? 0 : pow(max(nh, 0), clamp(shininess, -128, 128)), the
+ * exponent already clamped (lit_exponent). */
+static inline struct lit lit_op(float nd, float nh, float exponent)
+{
+   struct lit l = { 1.0f, max0(nd), 0.0f };
+   l.specular = 0.0f >= nd ? 0.0f : m_gallivm_pow(max0(nh), exponent);
    return l;
 }
 
-/* A face's material for one vertex. */
+/* A face's material for one vertex (exponent: its shininess through
+ * lit_exponent). */
 struct material {
    const float *ambient, *diffuse, *specular, *emission;
-   float shininess;
+   float exponent;
 };
 
-/* What the vertex program was generated for (ffvertex_prog.c state_key). */
-struct light_key {
-   bool eye;                 /* lighting in eye space: the normal goes
-                              * through the inverse modelview */
-   bool normalize;           /* GL_NORMALIZE */
-   bool rescale;             /* normal times STATE_NORMAL_SCALE */
-   bool local_viewer, twoside, separate;
-   bool shininess_is_zero;   /* no specular pow: the degenerate LIT */
-};
 
-/* The scene colour and the light*material products of a face.  Where the
- * material does not vary per vertex they are uniforms of the oracle's
- * vertex program (STATE_LIGHTMODEL_SCENECOLOR, STATE_LIGHTPROD), which Mesa
- * computes on the CPU before the draw, so without the draw's flush of
- * denormals (t_render.c); t_light computes them once per batch with the
- * flush off.  A varying material's products are computed per vertex, in
- * the vertex program (build_lighting: get_scenecolor, get_lightprod). */
-struct products {
-   bool vary_scene[2], vary_ambient[2], vary_diffuse[2], vary_specular[2];
-   float scene[2][3];
-   float ambient[FGL_MAX_LIGHTS][2][3];
-   float diffuse[FGL_MAX_LIGHTS][2][3];
-   float specular[FGL_MAX_LIGHTS][2][3];
-};
 
 static void scene_colour(const struct fgl_context *ctx, const struct material *m, float c[3])
 {
@@ -124,8 +116,8 @@ static void light_product(const float *light, const float *material, float p[3])
 
 /* One vertex: col[0] front colour, col[1] front secondary, col[2] back
  * colour, col[3] back secondary (R_ATTR_* slots), before the clamp. */
-static void light_vertex(const struct fgl_context *ctx, const struct light_key *key,
-                         const struct products *P, const float n[3], const float V[4],
+static void light_vertex(const struct fgl_context *ctx, const struct t_light_key *key,
+                         const struct t_light_products *P, const float n[3], const float V[4],
                          const struct material mat[2], float col[4][4])
 {
    const struct fgl_light_attrib *la = &ctx->Light;
@@ -153,9 +145,8 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
       normalize3(eye_hat);
    }
 
-   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-      if (!(ld->EnabledLights & (1u << i)))
-         continue;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const int i = __builtin_ctz(lights);   /* in index order */
       const struct fgl_light *l = &la->Light[i];
       const struct fgl_light_derived *d = &ld->Light[i];
 
@@ -222,16 +213,16 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
          struct lit lt;
          if (attenuated) {
             /* with shininess 0 every component of dots is n.VP */
-            lt = lit_op(snd, snh, key->shininess_is_zero ? snd : mat[s].shininess);
+            lt = lit_op(snd, snh, key->shininess_is_zero ? lit_exponent(snd) : mat[s].exponent);
             lt.ambient = att;
             lt.diffuse *= att;
             lt.specular *= att;
          } else if (!key->shininess_is_zero) {
-            lt = lit_op(snd, snh, mat[s].shininess);
+            lt = lit_op(snd, snh, mat[s].exponent);
          } else {
             /* emit_degenerate_lit */
             lt.ambient = 1.0f;
-            lt.diffuse = fmaxf(0.0f, snd);
+            lt.diffuse = max0(snd);   /* fmaxf(0.0f, snd) */
             lt.specular = 0.0f < snd ? 1.0f : 0.0f;
          }
 
@@ -265,7 +256,7 @@ static void light_vertex(const struct fgl_context *ctx, const struct light_key *
 }
 
 /* get_transformed_normal */
-static void transform_normal(const struct fgl_context *ctx, const struct light_key *key,
+static void transform_normal(const struct fgl_context *ctx, const struct t_light_key *key,
                              const float *in, float n[3])
 {
    if (key->eye) {
@@ -288,7 +279,7 @@ static void transform_normal(const struct fgl_context *ctx, const struct light_k
  * the same key fields (_NeedEyeCoords, GL_NORMALIZE, the rescale rule) */
 void t_transformed_normal(const struct fgl_context *ctx, const float *in, float n[3])
 {
-   struct light_key key = {
+   struct t_light_key key = {
       .eye = ctx->_Lighting.NeedEyeCoords,
       .normalize = ctx->Transform.Normalize,
    };
@@ -296,38 +287,25 @@ void t_transformed_normal(const struct fgl_context *ctx, const float *in, float 
    transform_normal(ctx, &key, in, n);
 }
 
-/* The material source of each property of each face for this batch: the
- * vertex colour when it tracks the colour and the colour varies
- * (get_material's order), else the vbo attribute (per vertex when it is in
- * the vertex format, the current value otherwise). */
-struct material_source {
-   const float *ptr;
-   unsigned stride;
-};
 
 /* GL_FIXGL_cook_torrance per vertex (GL_SMOOTH, GL_FLAT): m_shade_point
  * in eye space for both faces.  A face left at GL_BLINN_PHONG_FIXGL in
  * such a draw is lit by m_shade_point's Blinn-Phong too (the same
  * equations as the oracle's program, not its rounding); draws where
  * neither face is Cook-Torrance keep the oracle-exact path above.  The
- * material of each vertex comes from src (the vertex colour where it is
- * tracked, per-vertex values where the format has them, else the current
- * ones), the reflectance parameters from the lighting state. */
-static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
-                        unsigned n, const struct material_source *src, struct t_vertex *out)
+ * material of each vertex comes from lb->src (the vertex colour where it
+ * is tracked, per-vertex values where the format has them, else the
+ * current ones), the reflectance parameters from the lighting state. */
+static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
+                        const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                        struct t_vertex *out)
 {
-   struct m_shade_env env;
-   fgl_update_shade_env(ctx, &env);
-   env.color_material = 0;   /* src already reads the tracked colours */
+   struct m_shade_env *env = &lb->env;
+   const struct t_material_source *src = lb->src;
    const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
-
-   unsigned nstride;
-   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
-   struct t_eye_normal en;
-   t_eye_normal_init(ctx, &en);
 
-   for (unsigned i = 0; i < n; i++) {
+   for (unsigned i = first; i < first + n; i++) {
       /* the eye-space normal n as GL_PHONG_WIN's vertices have it
        * (t_phong.c t_eye_normal: the inverse-transpose of the modelview,
        * then GL_NORMALIZE or GL_RESCALE_NORMAL, whose rounding shows even
@@ -335,11 +313,11 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
        * modelview times the vertex, xyz (its w is ignored, as GL's
        * lighting ignores it). */
       float nrm[3], P[4];
-      t_eye_normal(&en, normal + (size_t)i * nstride, nrm);
+      t_eye_normal(&lb->en, lb->normal + (size_t)i * lb->nstride, nrm);
       t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
 
       for (int s = 0; s < sides; s++) {
-         struct m_shade_material *m = &env.material[s];
+         struct m_shade_material *m = &env->material[s];
          /* the face's attribute a + s (front/back attributes alternate) */
 #define MAT(a) (src[(a) + s].ptr + (size_t)i * src[(a) + s].stride)
          memcpy(m->ambient, MAT(FGL_ATTR_MAT_FRONT_AMBIENT), sizeof(m->ambient));
@@ -350,20 +328,410 @@ static void light_shade(const struct fgl_context *ctx, const struct fgl_vbo_vert
 #undef MAT
       }
       float (*col)[4] = out[i].r.attr;
-      /* env's point-independent values were prepared once above
-       * (fgl_update_shade_env); the per-vertex material colours and
-       * shininess are not among them */
+      /* env's point-independent values were prepared once per batch
+       * (fgl_update_shade_env in t_light_prepare); the per-vertex material
+       * colours and shininess are not among them */
       for (int s = 0; s < sides; s++)
-         m_shade_point_prepared(&env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
+         m_shade_point_prepared(env, nrm, P, s == 1, NULL, col[2 * s], col[2 * s + 1]);
    }
 }
 
-bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
-             struct t_vertex *out)
+/* ---- Eight vertices at a time ----
+ * The common case -- directional and positional lights without spot, a
+ * shininess that does not vary per vertex -- is lit in
+ * structure-of-arrays form with AVX2: the eight lanes
+ * of each operation are eight vertices, each lane doing light_vertex's
+ * operations for its vertex in light_vertex's order (separate multiplies
+ * and adds, DP3 from the last component, RSQ as 1/sqrt(|x|), LIT's pow as
+ * m_gallivm_pow: pow8 below), so the bits are those of the scalar path,
+ * which lights every other batch (and all of them on a CPU without AVX2
+ * and FMA).  light_simd_eligible decides per batch. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define T_LIGHT_SIMD 1
+#include <immintrin.h>
+
+#define T_AVX2 __attribute__((target("avx2,fma")))
+
+T_AVX2 static inline __m256 sel8(__m256 mask, __m256 if_true, __m256 if_false)
+{
+   return _mm256_blendv_ps(if_false, if_true, mask);
+}
+
+/* m_gallivm_pow(x, y) lane by lane: lp_build_pow, lp_build_log2_approx
+ * and lp_build_exp2 with their polynomials (math/m_gallivm.h, whose
+ * coefficients, double constants converted to float, are repeated here):
+ * the same operations in the same order, vfmadd for its fmaf, vroundps to
+ * -inf for its floorf, its special cases as selects. */
+T_AVX2 static inline __m256 pow8(__m256 x, __m256 y)
+{
+   const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+   const __m256 inf = _mm256_set1_ps(INFINITY);
+
+   /* m_gallivm_log2(x) */
+   const __m256i i = _mm256_castps_si256(x);
+   const __m256 exponent = _mm256_cvtepi32_ps(_mm256_sub_epi32(
+      _mm256_srli_epi32(_mm256_and_si256(i, _mm256_set1_epi32(0x7f800000)), 23),
+      _mm256_set1_epi32(127)));
+   const __m256 mant = _mm256_castsi256_ps(_mm256_or_si256(
+      _mm256_and_si256(i, _mm256_set1_epi32(0x007fffff)), _mm256_set1_epi32(0x3f800000)));
+   const __m256 ly = _mm256_div_ps(_mm256_sub_ps(mant, one), _mm256_add_ps(mant, one));
+   /* m_gallivm_polynomial(ly * ly, c, 5) */
+   const __m256 lz = _mm256_mul_ps(ly, ly);
+   const __m256 lz2 = _mm256_mul_ps(lz, lz);
+   __m256 leven = _mm256_fmadd_ps(lz2, _mm256_set1_ps((float)0.406718052498846252698),
+                                  _mm256_set1_ps((float)0.577440339438736392009));
+   const __m256 lodd = _mm256_fmadd_ps(lz2, _mm256_set1_ps((float)0.403343858251329912514),
+                                       _mm256_set1_ps((float)0.961791550404184197881));
+   leven = _mm256_fmadd_ps(lz2, leven, _mm256_set1_ps((float)2.88539009343309178325));
+   __m256 lg = _mm256_fmadd_ps(ly, _mm256_fmadd_ps(lodd, lz, leven), exponent);
+   lg = sel8(_mm256_cmp_ps(x, inf, _CMP_GE_OQ), inf, lg);
+   lg = sel8(_mm256_cmp_ps(x, zero, _CMP_EQ_OQ), _mm256_set1_ps(-INFINITY), lg);
+   lg = sel8(_mm256_or_ps(_mm256_cmp_ps(x, zero, _CMP_LT_OQ), _mm256_cmp_ps(x, x, _CMP_UNORD_Q)),
+             _mm256_set1_ps(NAN), lg);
+
+   /* m_gallivm_exp2(log2(x) * y) */
+   const __m256 t = _mm256_mul_ps(lg, y);
+   __m256 tc = sel8(_mm256_cmp_ps(t, _mm256_set1_ps(128.0f), _CMP_GT_OQ),
+                    _mm256_set1_ps(128.0f), t);
+   tc = sel8(_mm256_cmp_ps(tc, _mm256_set1_ps(-126.99999f), _CMP_LT_OQ),
+             _mm256_set1_ps(-126.99999f), tc);
+   const __m256 ipart = _mm256_round_ps(tc, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+   const __m256 fpart = _mm256_sub_ps(tc, ipart);
+   const __m256 scale = _mm256_castsi256_ps(_mm256_slli_epi32(
+      _mm256_add_epi32(_mm256_cvttps_epi32(ipart), _mm256_set1_epi32(127)), 23));
+   /* m_gallivm_polynomial(fpart, c, 6) */
+   const __m256 f2 = _mm256_mul_ps(fpart, fpart);
+   __m256 eodd = _mm256_fmadd_ps(f2, _mm256_set1_ps((float)0.00187757667519147912699),
+                                 _mm256_set1_ps((float)0.0558263180532956664775));
+   __m256 eeven = _mm256_fmadd_ps(f2, _mm256_set1_ps((float)0.00898934009049466391101),
+                                  _mm256_set1_ps((float)0.240153617044375388211));
+   eodd = _mm256_fmadd_ps(f2, eodd, _mm256_set1_ps((float)0.693153073200168932794));
+   eeven = _mm256_fmadd_ps(f2, eeven, _mm256_set1_ps((float)1.000000000000000000000));
+   __m256 r = _mm256_mul_ps(scale, _mm256_fmadd_ps(eodd, fpart, eeven));
+   r = sel8(_mm256_cmp_ps(t, t, _CMP_UNORD_Q), t, r);   /* NaN passes */
+   /* lp_build_pow: 0 for x == 0 */
+   return sel8(_mm256_cmp_ps(x, zero, _CMP_EQ_OQ), zero, r);
+}
+
+T_AVX2 static void t_lit_pows8(const float *x, const float *y, float *out)
+{
+   _mm256_storeu_ps(out, pow8(_mm256_loadu_ps(x), _mm256_loadu_ps(y)));
+}
+
+/* DP3 = (z*z' + y*y') + x*x' of three lanes-of-eight against a constant */
+T_AVX2 static inline __m256 dp3_8(const __m256 v[3], const float *c)
+{
+   return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[2], _mm256_set1_ps(c[2])),
+                                      _mm256_mul_ps(v[1], _mm256_set1_ps(c[1]))),
+                        _mm256_mul_ps(v[0], _mm256_set1_ps(c[0])));
+}
+
+/* DP3 of two lane vectors */
+T_AVX2 static inline __m256 dp3_8v(const __m256 a[3], const __m256 b[3])
+{
+   return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[2], b[2]), _mm256_mul_ps(a[1], b[1])),
+                        _mm256_mul_ps(a[0], b[0]));
+}
+
+/* max(x, 0) as max0: x > 0 ? x : +0 */
+T_AVX2 static inline __m256 max0_8(__m256 x)
+{
+   const __m256 zero = _mm256_setzero_ps();
+   return sel8(_mm256_cmp_ps(x, zero, _CMP_GT_OQ), x, zero);
+}
+
+/* light_vertex for the batch's vertices first..first+n-1, eight at a time
+ * (a last group of fewer repeats its last vertex in the unused lanes). */
+/* normalize3 of three lanes-of-eight: v * rsq(dp3(v, v)), rsq = 1/sqrt(|x|) */
+T_AVX2 static inline void normalize3_8(__m256 v[3])
+{
+   const __m256 d = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(v[2], v[2]),
+                                                _mm256_mul_ps(v[1], v[1])),
+                                  _mm256_mul_ps(v[0], v[0]));
+   const __m256 r = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                  _mm256_sqrt_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), d)));
+   for (int k = 0; k < 3; k++)
+      v[k] = _mm256_mul_ps(v[k], r);
+}
+
+T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                              const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                              struct t_vertex *out)
+{
+   const struct t_light_key *key = &lb->key;
+   const struct t_light_products *P = &lb->P;
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   const struct t_material_source *src = lb->src;
+   const int sides = key->twoside ? 2 : 1;
+   const float *inv = ctx->ModelviewStack.Top->inv;
+   const float *mv = ctx->ModelviewStack.Top->m;
+   const __m256 sign = _mm256_set1_ps(-0.0f);
+
+   for (unsigned g = first; g < first + n; g += 8) {
+      const unsigned cnt = first + n - g < 8 ? first + n - g : 8;
+      /* the normals, structure of arrays */
+      float nin[3][8];
+      for (unsigned l = 0; l < 8; l++) {
+         const float *p = lb->normal + (size_t)(g + (l < cnt ? l : cnt - 1)) * lb->nstride;
+         nin[0][l] = p[0], nin[1][l] = p[1], nin[2][l] = p[2];
+      }
+      __m256 nv[3];
+      const __m256 iv[3] = { _mm256_loadu_ps(nin[0]), _mm256_loadu_ps(nin[1]),
+                             _mm256_loadu_ps(nin[2]) };
+      /* transform_normal */
+      if (key->eye) {
+         for (int r = 0; r < 3; r++)
+            nv[r] = dp3_8(iv, inv + 4 * r);
+      } else {
+         for (int k = 0; k < 3; k++)
+            nv[k] = iv[k];
+      }
+      if (key->normalize) {
+         /* normalize3: n * rsq(dp3(n, n)), rsq = 1/sqrt(|x|) */
+         const __m256 d = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(nv[2], nv[2]),
+                                                      _mm256_mul_ps(nv[1], nv[1])),
+                                        _mm256_mul_ps(nv[0], nv[0]));
+         const __m256 r = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                        _mm256_sqrt_ps(_mm256_andnot_ps(sign, d)));
+         for (int k = 0; k < 3; k++)
+            nv[k] = _mm256_mul_ps(nv[k], r);
+      } else if (key->rescale) {
+         const __m256 s = _mm256_set1_ps(ld->NormalScale);
+         for (int k = 0; k < 3; k++)
+            nv[k] = _mm256_mul_ps(nv[k], s);
+      }
+
+      /* the eye position V (t_mul_mad_chain, xyz), in eye space only
+       * (else 0), and the local viewer's normalised eye vector */
+      __m256 V[3] = { _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps() };
+      if (key->eye) {
+         float p[4][8];
+         for (unsigned l = 0; l < 8; l++) {
+            const float *q = in[g + (l < cnt ? l : cnt - 1)].attr[FGL_ATTR_POS];
+            for (int k = 0; k < 4; k++)
+               p[k][l] = q[k];
+         }
+         const __m256 px = _mm256_loadu_ps(p[0]), py = _mm256_loadu_ps(p[1]),
+                      pz = _mm256_loadu_ps(p[2]), pw = _mm256_loadu_ps(p[3]);
+         for (int r = 0; r < 3; r++) {
+            __m256 acc = _mm256_mul_ps(px, _mm256_set1_ps(mv[r]));
+            acc = _mm256_add_ps(_mm256_mul_ps(py, _mm256_set1_ps(mv[4 + r])), acc);
+            acc = _mm256_add_ps(_mm256_mul_ps(pz, _mm256_set1_ps(mv[8 + r])), acc);
+            acc = _mm256_add_ps(_mm256_mul_ps(pw, _mm256_set1_ps(mv[12 + r])), acc);
+            V[r] = acc;
+         }
+      }
+      __m256 eye_hat[3];
+      if (key->local_viewer && !key->shininess_is_zero) {
+         for (int k = 0; k < 3; k++)
+            eye_hat[k] = V[k];
+         normalize3_8(eye_hat);
+      }
+
+      /* the faces' materials where they vary per vertex (the colour
+       * tracked by glColorMaterial): m[face][property][component], the
+       * properties ambient, diffuse, specular, emission */
+      __m256 m[2][4][4];
+      for (int s = 0; s < sides; s++) {
+         if (!(P->vary_scene[s] || P->vary_diffuse[s] || P->vary_specular[s]))
+            continue;
+         for (int prop = 0; prop < 4; prop++) {
+            const struct t_material_source *ms = &src[FGL_ATTR_MAT_FRONT_AMBIENT + 2 * prop + s];
+            float lanes[4][8];
+            for (unsigned l = 0; l < 8; l++) {
+               const float *v = ms->ptr + (size_t)(g + (l < cnt ? l : cnt - 1)) * ms->stride;
+               for (int k = 0; k < 4; k++)
+                  lanes[k][l] = v[k];
+            }
+            for (int k = 0; k < 4; k++)
+               m[s][prop][k] = _mm256_loadu_ps(lanes[k]);
+         }
+      }
+
+      /* the colours: c[face][0 primary, 1 secondary][component]; the
+       * scene colour emission + ambient * global ambient (scene_colour) */
+      __m256 c[2][2][3];
+      for (int s = 0; s < sides; s++)
+         for (int k = 0; k < 3; k++) {
+            c[s][0][k] = P->vary_scene[s]
+                            ? _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(ctx->Light.Model.Ambient[k]),
+                                                          m[s][0][k]),
+                                            m[s][3][k])
+                            : _mm256_set1_ps(P->scene[s][k]);
+            c[s][1][k] = _mm256_setzero_ps();
+         }
+      for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+         const int i = __builtin_ctz(lights);   /* in index order */
+         const struct fgl_light_derived *d = &ld->Light[i];
+         const struct fgl_light *lt = &ctx->Light.Light[i];
+
+         /* the direction to the light VP (normalised, from the vertex for a
+          * positional light), its squared distance and the distance
+          * attenuation (no spot lights here) */
+         __m256 VP[3], dist2 = _mm256_setzero_ps(), inv_dist = _mm256_setzero_ps();
+         if (d->Positional) {
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_sub_ps(_mm256_set1_ps(d->Position[k]), V[k]);
+            dist2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(VP[2], VP[2]),
+                                                _mm256_mul_ps(VP[1], VP[1])),
+                                  _mm256_mul_ps(VP[0], VP[0]));
+            inv_dist = _mm256_div_ps(_mm256_set1_ps(1.0f),
+                                     _mm256_sqrt_ps(_mm256_andnot_ps(sign, dist2)));
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_mul_ps(VP[k], inv_dist);
+         } else {
+            for (int k = 0; k < 3; k++)
+               VP[k] = _mm256_set1_ps(d->Position[k]);
+         }
+         const bool attenuated = d->Attenuated && d->Positional;
+         __m256 att = _mm256_set1_ps(1.0f);
+         if (attenuated) {
+            const __m256 dist = _mm256_sqrt_ps(_mm256_andnot_ps(sign, dist2));
+            const __m256 k = _mm256_add_ps(
+               _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(lt->QuadraticAttenuation), dist2),
+                             _mm256_mul_ps(_mm256_set1_ps(lt->LinearAttenuation), dist)),
+               _mm256_mul_ps(_mm256_set1_ps(lt->ConstantAttenuation),
+                             _mm256_mul_ps(inv_dist, dist)));
+            att = _mm256_div_ps(_mm256_set1_ps(1.0f), k);
+         }
+
+         /* the half vector */
+         __m256 H[3];
+         if (!key->shininess_is_zero) {
+            if (key->local_viewer) {
+               for (int k = 0; k < 3; k++)
+                  H[k] = _mm256_sub_ps(VP[k], eye_hat[k]);
+               normalize3_8(H);
+            } else if (!d->Positional) {
+               for (int k = 0; k < 3; k++)
+                  H[k] = _mm256_set1_ps(d->HalfVector[k]);
+            } else {
+               H[0] = VP[0];
+               H[1] = VP[1];
+               H[2] = _mm256_add_ps(VP[2], _mm256_set1_ps(1.0f));
+               normalize3_8(H);
+            }
+         }
+
+         const __m256 nd = dp3_8v(nv, VP);
+         const __m256 nh = key->shininess_is_zero ? nd : dp3_8v(nv, H);
+         for (int s = 0; s < sides; s++) {
+            const __m256 snd = s ? _mm256_xor_ps(nd, sign) : nd;
+            __m256 diffuse = max0_8(snd);
+            __m256 specular;
+            if (!key->shininess_is_zero) {
+               /* LIT: z = nd <= 0 ? 0 : pow(max(nh, 0), exponent) */
+               const __m256 snh = s ? _mm256_xor_ps(nh, sign) : nh;
+               const __m256 pw = pow8(max0_8(snh), _mm256_set1_ps(lb->exponent[s]));
+               specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_GE_OQ),
+                               _mm256_setzero_ps(), pw);
+            } else {
+               /* emit_degenerate_lit: 0 < nd ? 1 : 0 (never attenuated
+                * here: light_simd_eligible) */
+               specular = sel8(_mm256_cmp_ps(_mm256_setzero_ps(), snd, _CMP_LT_OQ),
+                               _mm256_set1_ps(1.0f), _mm256_setzero_ps());
+            }
+            if (attenuated) {
+               /* lt.ambient = att; lt.diffuse *= att; lt.specular *= att */
+               diffuse = _mm256_mul_ps(diffuse, att);
+               specular = _mm256_mul_ps(specular, att);
+            }
+            /* the light products, uniform or per vertex (light_product:
+             * light * material) */
+            __m256 amb[3], dif[3], spe[3];
+            for (int k = 0; k < 3; k++) {
+               amb[k] = P->vary_ambient[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Ambient[k]), m[s][0][k])
+                           : _mm256_set1_ps(P->ambient[i][s][k]);
+               dif[k] = P->vary_diffuse[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Diffuse[k]), m[s][1][k])
+                           : _mm256_set1_ps(P->diffuse[i][s][k]);
+               spe[k] = P->vary_specular[s]
+                           ? _mm256_mul_ps(_mm256_set1_ps(lt->Specular[k]), m[s][2][k])
+                           : _mm256_set1_ps(P->specular[i][s][k]);
+            }
+            __m256 *c0 = c[s][0], *c1 = key->separate ? c[s][1] : c[s][0];
+            for (int k = 0; k < 3; k++)
+               c0[k] = attenuated ? _mm256_add_ps(_mm256_mul_ps(att, amb[k]), c0[k])
+                                  : _mm256_add_ps(amb[k], c0[k]);
+            for (int k = 0; k < 3; k++)
+               c0[k] = _mm256_add_ps(_mm256_mul_ps(diffuse, dif[k]), c0[k]);
+            for (int k = 0; k < 3; k++)
+               c1[k] = _mm256_add_ps(_mm256_mul_ps(specular, spe[k]), c1[k]);
+         }
+      }
+
+      /* back into the vertices: alpha the diffuse alpha, the secondary's 1 */
+      for (int s = 0; s < sides; s++) {
+         float lanes[2][3][8];
+         for (int k = 0; k < 3; k++) {
+            _mm256_storeu_ps(lanes[0][k], c[s][0][k]);
+            _mm256_storeu_ps(lanes[1][k], c[s][1][k]);
+         }
+         const struct t_material_source *dsrc = &src[FGL_ATTR_MAT_FRONT_DIFFUSE + s];
+         for (unsigned l = 0; l < cnt; l++) {
+            float (*col)[4] = out[g + l].r.attr;
+            col[2 * s][0] = lanes[0][0][l];
+            col[2 * s][1] = lanes[0][1][l];
+            col[2 * s][2] = lanes[0][2][l];
+            col[2 * s][3] = dsrc->ptr[(size_t)(g + l) * dsrc->stride + 3];
+            col[2 * s + 1][0] = lanes[1][0][l];
+            col[2 * s + 1][1] = lanes[1][1][l];
+            col[2 * s + 1][2] = lanes[1][2][l];
+            col[2 * s + 1][3] = 1.0f;
+         }
+      }
+   }
+}
+#endif
+
+void t_lit_pows(const float *x, const float *y, float *out, unsigned n)
+{
+   unsigned k = 0;
+#ifdef T_LIGHT_SIMD
+   __builtin_cpu_init();
+   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+      for (; k + 8 <= n; k += 8)
+         t_lit_pows8(x + k, y + k, out + k);
+#endif
+   for (; k < n; k++)
+      out[k] = m_gallivm_pow(x[k], y[k]);
+}
+
+/* Whether light_simd lights this batch (t_light_prepare, after the
+ * products): no spot light, a shininess that does not vary per vertex
+ * (and is not 0 with an attenuated light), and a CPU with AVX2 and FMA. */
+static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_light_batch *lb)
+{
+#ifdef T_LIGHT_SIMD
+   const struct fgl_lighting_derived *ld = &ctx->_Lighting;
+   if (!ld->EnabledLights)
+      return false;
+   for (int s = 0; s < (lb->key.twoside ? 2 : 1); s++)
+      if (lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
+         return false;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const struct fgl_light_derived *d = &ld->Light[__builtin_ctz(lights)];
+      /* no spot light; no attenuated light with the degenerate shininess
+       * (whose LIT exponent is the clamped n.VP of each vertex) */
+      if (d->Spot || (d->Attenuated && d->Positional && lb->key.shininess_is_zero))
+         return false;
+   }
+   __builtin_cpu_init();
+   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+   (void)ctx;
+   (void)lb;
+   return false;
+#endif
+}
+
+void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                     struct t_light_batch *lb)
 {
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
    const struct fgl_vbo *vbo = &ctx->Vbo;
-   struct light_key key = {
+   struct t_light_key key = {
       .eye = ld->NeedEyeCoords,
       .normalize = ctx->Transform.Normalize,
       .local_viewer = ctx->Light.Model.LocalViewer,
@@ -377,20 +745,28 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
    const unsigned color_mats = ctx->Light.ColorMaterialEnabled && color_varying
                                   ? ctx->Light._ColorMaterialBitmask : 0;
 
-   struct material_source src[FGL_ATTR_COUNT];
+   struct t_material_source *src = lb->src;
    for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++) {
       if (color_mats & FGL_MAT_BIT(a))
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &src[a].stride);
       else
          src[a].ptr = fgl_vbo_attr_ptr(ctx, in, (enum fgl_vbo_attr)a, &src[a].stride);
    }
+   lb->normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &lb->nstride);
+   lb->simd = false;
 
-   /* GL_FIXGL_cook_torrance: m_shade_point for both faces; the fog
-    * coordinate is |P.z| of the eye position it lit with (shading.md) */
-   if (ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
-       ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL) {
-      light_shade(ctx, in, n, src, out);
-      return true;
+   /* GL_FIXGL_cook_torrance: m_shade_point for both faces, with the
+    * batch's lights prepared here once; the fog coordinate is |P.z| of the
+    * eye position it lit with (shading.md) */
+   lb->shade = ctx->Light.Reflectance[0].Model == GL_COOK_TORRANCE_FIXGL ||
+               ctx->Light.Reflectance[1].Model == GL_COOK_TORRANCE_FIXGL;
+   if (lb->shade) {
+      fgl_update_shade_env(ctx, &lb->env);
+      lb->env.color_material = 0;   /* src already reads the tracked colours */
+      t_eye_normal_init(ctx, &lb->en);
+      lb->key = key;
+      lb->eye_position = true;
+      return;
    }
 
    /* check_active_shininess: a shininess that varies, or is not 0 (the
@@ -401,10 +777,11 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       shininess_active |= src[a].stride != 0 || ctx->Current.Attrib[a][0] != 0.0f;
    }
    key.shininess_is_zero = !shininess_active;
+   lb->key = key;
 
    /* the uniform scene colours and products, with the caller's
     * floating-point environment (no flush of denormals) */
-   struct products P;
+   struct t_light_products *P = &lb->P;
 #if defined(__SSE__) || defined(__x86_64__)
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr & ~0x8040u);
@@ -412,37 +789,75 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
    for (int s = 0; s < (key.twoside ? 2 : 1); s++) {
       const int amb = FGL_ATTR_MAT_FRONT_AMBIENT + s, dif = FGL_ATTR_MAT_FRONT_DIFFUSE + s,
                 spe = FGL_ATTR_MAT_FRONT_SPECULAR + s, emi = FGL_ATTR_MAT_FRONT_EMISSION + s;
-      P.vary_ambient[s] = src[amb].stride != 0;
-      P.vary_diffuse[s] = src[dif].stride != 0;
-      P.vary_specular[s] = src[spe].stride != 0;
-      P.vary_scene[s] = P.vary_ambient[s] || src[emi].stride != 0;
+      P->vary_ambient[s] = src[amb].stride != 0;
+      P->vary_diffuse[s] = src[dif].stride != 0;
+      P->vary_specular[s] = src[spe].stride != 0;
+      P->vary_scene[s] = P->vary_ambient[s] || src[emi].stride != 0;
       const struct material m = { src[amb].ptr, src[dif].ptr, src[spe].ptr, src[emi].ptr, 0 };
-      if (!P.vary_scene[s])
-         scene_colour(ctx, &m, P.scene[s]);
-      for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-         if (!(ld->EnabledLights & (1u << i)))
-            continue;
+      if (!P->vary_scene[s])
+         scene_colour(ctx, &m, P->scene[s]);
+      for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+         const int i = __builtin_ctz(lights);
          const struct fgl_light *l = &ctx->Light.Light[i];
-         if (!P.vary_ambient[s])
-            light_product(l->Ambient, m.ambient, P.ambient[i][s]);
-         if (!P.vary_diffuse[s])
-            light_product(l->Diffuse, m.diffuse, P.diffuse[i][s]);
-         if (!P.vary_specular[s])
-            light_product(l->Specular, m.specular, P.specular[i][s]);
+         if (!P->vary_ambient[s])
+            light_product(l->Ambient, m.ambient, P->ambient[i][s]);
+         if (!P->vary_diffuse[s])
+            light_product(l->Diffuse, m.diffuse, P->diffuse[i][s]);
+         if (!P->vary_specular[s])
+            light_product(l->Specular, m.specular, P->specular[i][s]);
       }
    }
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
 
-   unsigned nstride;
-   const float *normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &nstride);
-   const float *mv = ctx->ModelviewStack.Top->m;
+   /* the faces' LIT exponents, when the shininess does not vary per
+    * vertex (in the draw's floating-point environment, as per vertex) */
+   for (int s = 0; s < 2; s++) {
+      const struct t_material_source *sh = &src[FGL_ATTR_MAT_FRONT_SHININESS + s];
+      lb->exponent[s] = sh->stride ? 0.0f : lit_exponent(sh->ptr[0]);
+   }
+   lb->simd = light_simd_eligible(ctx, lb);
 
-   for (unsigned i = 0; i < n; i++) {
+   /* build_lighting asks for the eye position (get_eye_position) for a
+    * positional light, or for the local viewer's eye vector when there is a
+    * specular term; both only happen in eye space */
+   bool eye_position = false;
+   for (unsigned lights = ld->EnabledLights; lights; lights &= lights - 1) {
+      const int i = __builtin_ctz(lights);
+      eye_position |= ld->Light[i].Positional || (key.local_viewer && !key.shininess_is_zero);
+   }
+   lb->eye_position = eye_position;
+}
+
+T_FMA_CLONES
+void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
+                 const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                 struct t_vertex *out)
+{
+   if (lb->shade) {
+      light_shade(ctx, lb, in, first, n, out);
+      return;
+   }
+   const struct t_light_key *key = &lb->key;
+   const struct t_material_source *src = lb->src;
+   const float *mv = ctx->ModelviewStack.Top->m;
+#ifdef T_LIGHT_SIMD
+   if (lb->simd) {
+      light_simd(ctx, lb, in, first, n, out);
+      return;
+   }
+#endif
+   /* the faces' LIT exponents: from the batch when the shininess does not
+    * vary per vertex */
+#define EXPONENT(s)                                                             \
+   (src[FGL_ATTR_MAT_FRONT_SHININESS + (s)].stride                              \
+       ? lit_exponent(MAT(FGL_ATTR_MAT_FRONT_SHININESS + (s))[0]) : lb->exponent[s])
+
+   for (unsigned i = first; i < first + n; i++) {
       float nrm[3], V[4] = { 0, 0, 0, 1 };
-      transform_normal(ctx, &key, normal + (size_t)i * nstride, nrm);
-      if (key.eye) {
+      transform_normal(ctx, key, lb->normal + (size_t)i * lb->nstride, nrm);
+      if (key->eye) {
          /* eye position: the modelview's column MUL/MAD chain */
          t_mul_mad_chain(V, mv, in[i].attr[FGL_ATTR_POS]);
       }
@@ -450,23 +865,13 @@ bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
       const struct material mat[2] = {
          { MAT(FGL_ATTR_MAT_FRONT_AMBIENT), MAT(FGL_ATTR_MAT_FRONT_DIFFUSE),
            MAT(FGL_ATTR_MAT_FRONT_SPECULAR), MAT(FGL_ATTR_MAT_FRONT_EMISSION),
-           MAT(FGL_ATTR_MAT_FRONT_SHININESS)[0] },
+           EXPONENT(0) },
          { MAT(FGL_ATTR_MAT_BACK_AMBIENT), MAT(FGL_ATTR_MAT_BACK_DIFFUSE),
            MAT(FGL_ATTR_MAT_BACK_SPECULAR), MAT(FGL_ATTR_MAT_BACK_EMISSION),
-           MAT(FGL_ATTR_MAT_BACK_SHININESS)[0] },
+           EXPONENT(1) },
       };
+      light_vertex(ctx, key, &lb->P, nrm, V, mat, out[i].r.attr);
+   }
 #undef MAT
-      light_vertex(ctx, &key, &P, nrm, V, mat, out[i].r.attr);
-   }
-
-   /* build_lighting asks for the eye position (get_eye_position) for a
-    * positional light, or for the local viewer's eye vector when there is a
-    * specular term; both only happen in eye space */
-   bool eye_position = false;
-   for (int i = 0; i < FGL_MAX_LIGHTS; i++) {
-      if (ld->EnabledLights & (1u << i))
-         eye_position |= ld->Light[i].Positional ||
-                         (key.local_viewer && !key.shininess_is_zero);
-   }
-   return eye_position;
+#undef EXPONENT
 }

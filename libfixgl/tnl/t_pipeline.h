@@ -6,6 +6,9 @@
 #define FGL_T_PIPELINE_H
 
 #include <stdbool.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
@@ -33,12 +36,39 @@ struct t_vertex {
 #define T_EDGE_ALL      0x7u
 #define T_RESET_STIPPLE 0x8u
 
+/* The per-vertex loops of the vertex stage are compiled twice, with and
+ * without the FMA instruction set, and the loader picks the clone the CPU
+ * runs (GCC's target_clones, an ifunc), as R_FMA_CLONES does for the
+ * raster loops and math/m_shade.c for the shading: with FMA, the fmaf() of
+ * the viewport transform, the user clip distances and m_gallivm_pow (LIT,
+ * the spot exponent) is one vfmadd instruction instead of a libm call
+ * through the PLT.  fmaf is the fused operation either way, and
+ * -ffp-contract=off still forbids any other fusion: the same bits.
+ * flatten: the helpers are inlined into each clone and compiled for its
+ * target (an outlined helper would be a default-target function calling
+ * libm's fmaf). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define T_FMA_CLONES __attribute__((target_clones("fma", "default"), flatten))
+#else
+#define T_FMA_CLONES
+#endif
+
 /* A column-major matrix m times a position p as the oracle's vertex
  * program does it (ORACLE-NOTES.md "Vertex transformation"; ffvertex_prog.c
  * MUL then MADs, the MADs unfused):
- * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded. */
+ * out = ((x*M0 + y*M1) + z*M2) + w*M3, every operation rounded.
+ * The four rows are the four lanes of SSE operations, one per column:
+ * each lane does the scalar chain's own multiplies and adds in its order,
+ * so the bits are those of the scalar chain below. */
 static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
 {
+#if defined(__SSE__) || defined(__x86_64__)
+   __m128 acc = _mm_mul_ps(_mm_set1_ps(p[0]), _mm_loadu_ps(m));
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[1]), _mm_loadu_ps(m + 4)), acc);
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[2]), _mm_loadu_ps(m + 8)), acc);
+   acc = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(p[3]), _mm_loadu_ps(m + 12)), acc);
+   _mm_storeu_ps(out, acc);
+#else
    for (int r = 0; r < 4; r++) {
       float acc = p[0] * m[r];
       acc = p[1] * m[4 + r] + acc;
@@ -46,6 +76,7 @@ static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
       acc = p[3] * m[12 + r] + acc;
       out[r] = acc;
    }
+#endif
 }
 
 /* The provoking vertex pv's flat attributes (rs->flat_mask) onto dst, as
@@ -60,15 +91,18 @@ static inline void t_copy_flat(const struct r_state *rs, struct r_vertex *dst,
             dst->attr[a][c] = pv->attr[a][c];
 }
 
-/* Transform n stored vertices (positions, colours) into out[]. */
-void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
-                 unsigned n, struct t_vertex *out);
+/* Where the transformed vertices' edge flags (t_vertex.edge) come from:
+ * every vertex has one, each is its glEdgeFlag value == 1.0, or none has
+ * one. */
+enum t_edge_source { T_EDGES_SET, T_EDGES_FROM_DATA, T_EDGES_CLEAR };
 
-/* Light n stored vertices (t_light.c): the R_ATTR_* colour slots of out[],
- * before the clamp.  Returns whether the oracle's lighting code computed
- * the eye position (which the fog coordinate then reuses). */
-bool t_light(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
-             struct t_vertex *out);
+/* The vertex stage of n stored vertices into out[]: positions, clip codes,
+ * texture coordinates, lighting or the vertex colour, fog and edge
+ * flags. */
+void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                 unsigned n, struct t_vertex *out, enum t_edge_source edges);
+
+/* Lighting (t_light.c): see tnl/t_light.h. */
 
 /* The eye-space normal of shading.md (t_phong.c): GL_PHONG_WIN's vertex
  * normal, and the n of per-vertex Cook-Torrance (t_light.c): the
@@ -83,7 +117,7 @@ struct t_eye_normal {
 void t_eye_normal_init(const struct fgl_context *ctx, struct t_eye_normal *en);
 void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3]);
 
-/* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light, the vertex
+/* GL_PHONG_WIN with lighting (t_phong.c): instead of t_light_run, the vertex
  * colour (R_ATTR_COLOR0), the
  * eye-space normal (R_ATTR_NORMAL, w = 1: front) and the eye position
  * (R_ATTR_EYEPOS) of n stored vertices, for r_fragment_phong. */
@@ -100,7 +134,7 @@ void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, 
                 unsigned units, struct t_vertex *out);
 
 /* The fog coordinate of n stored vertices (t_fog.c) into the R_ATTR_FOG
- * slot of out[]; eye_position_from_lighting is t_light's result. */
+ * slot of out[]; eye_position_from_lighting is t_light_batch.eye_position. */
 void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out);
 
@@ -177,6 +211,13 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);
+/* The same with the primitives' vertices through an element list: vertex
+ * i of the primitives is verts[elts[i]] (an indexed draw's post-transform
+ * vertex cache, t_array.c: each of the nverts vertices is transformed and
+ * lit once however often the primitives use it). */
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                         unsigned nverts, const unsigned *elts,
+                         const struct fgl_vbo_prim *prims, unsigned nprims);
 
 /* t_array.c: glDrawArrays (indices == NULL: vertices first..first+count-1)
  * and glDrawElements (count indices of index_type) of the enabled client

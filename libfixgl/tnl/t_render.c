@@ -41,10 +41,24 @@ struct render {
    struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
    const struct fgl_vbo_vertex *in;   /* the stored vertices */
+   /* an indexed draw's vertex cache: vertex i of the primitives is
+    * v[elts[i]] (NULL: v[i]) */
+   const unsigned *elts;
    /* GL_PHONG_WIN with materials in the batch's vertex format (glMaterial
     * between glBegin and glEnd): bit a - FGL_ATTR_MAT_FIRST for each */
    unsigned phong_mats;
 };
+
+/* Where vertex i of the draw's primitives is. */
+static inline unsigned elt(const struct render *r, unsigned i)
+{
+   return r->elts ? r->elts[i] : i;
+}
+
+static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
+{
+   return &r->v[elt(r, i)];
+}
 
 /* GL_PHONG_WIN (include/fixgl/shading.md): a primitive is lit with the
  * material current at its provoking vertex pv; the properties the batch
@@ -55,7 +69,7 @@ struct render {
 static void phong_material(const struct render *r, unsigned pv)
 {
    struct m_shade_env *env = &r->ctx->_Raster.shade_env;
-   const struct fgl_vbo_vertex *v = &r->in[pv];
+   const struct fgl_vbo_vertex *v = &r->in[elt(r, pv)];
    for (unsigned m = r->phong_mats; m; m &= m - 1) {
       const int a = FGL_ATTR_MAT_FIRST + __builtin_ctz(m);
       struct m_shade_material *mat = &env->material[(a - FGL_ATTR_MAT_FIRST) & 1];
@@ -78,7 +92,7 @@ static inline void tri_pv(const struct render *r, unsigned a, unsigned b, unsign
 {
    if (r->phong_mats)
       phong_material(r, pv);
-   t_clip_triangle(r->ctx, &r->v[a], &r->v[b], &r->v[c], pipeline, flags);
+   t_clip_triangle(r->ctx, vtx(r, a), vtx(r, b), vtx(r, c), pipeline, flags);
 }
 
 /* A triangle whose last vertex is the provoking vertex. */
@@ -98,7 +112,7 @@ static bool segment_clipped(const struct render *r, unsigned start, unsigned cou
 {
    unsigned m = 0;
    for (unsigned i = start; i < start + count; i++)
-      m |= r->v[i].mask;
+      m |= vtx(r, i)->mask;
    return m != 0;
 }
 
@@ -258,7 +272,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
          for (unsigned i = seg; i < seg + cnt; i++) {
             if (r->phong_mats)
                phong_material(r, s + i);
-            t_point(r->ctx, &r->v[s + i], pipeline);
+            t_point(r->ctx, vtx(r, s + i), pipeline);
          }
       }
       break;
@@ -267,7 +281,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       for (unsigned i = 0; i + 1 < n; i += 2) {
          if (r->phong_mats)
             phong_material(r, s + i + 1);
-         t_line(r->ctx, &r->v[s + i], &r->v[s + i + 1], true);
+         t_line(r->ctx, vtx(r, s + i), vtx(r, s + i + 1), true);
       }
       break;
    case GL_LINE_STRIP:
@@ -281,12 +295,12 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       for (unsigned i = 1; i < n; i++) {
          if (r->phong_mats)
             phong_material(r, s + i);
-         t_line(r->ctx, &r->v[s + i - 1], &r->v[s + i], i == 1);
+         t_line(r->ctx, vtx(r, s + i - 1), vtx(r, s + i), i == 1);
       }
       if (p->mode == GL_LINE_LOOP) {
          if (r->phong_mats)
             phong_material(r, s);
-         t_line(r->ctx, &r->v[s + n - 1], &r->v[s], false);
+         t_line(r->ctx, vtx(r, s + n - 1), vtx(r, s), false);
       }
       break;
    default:
@@ -295,7 +309,8 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
 }
 
 static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
-                         unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+                         unsigned nverts, const unsigned *elts,
+                         const struct fgl_vbo_prim *prims, unsigned nprims)
 {
    /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
     * the state validated before this draw's */
@@ -313,9 +328,12 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
       ctx->DrawBuffer->ColorDefined = true;
    fgl_update_stipple(ctx);
 
-   struct t_vertex *tv = malloc((size_t)nverts * sizeof(*tv));
+   /* the transformed vertices: the context's scratch array, no
+    * allocation per batch */
+   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc, nverts, sizeof(*tv));
    if (!tv)
       return;
+   ctx->Vbo.tv = tv;
 
    /* The oracle draws with denormals flushed: draw_vbo sets DAZ and FTZ
     * around the vertex shader, clipping and triangle setup, and the
@@ -328,7 +346,6 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
 #endif
-   t_transform(ctx, verts, nverts, tv);
 
    /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
     * GL_FILL, glEdgeFlag values in the batch's vertex format are per-vertex
@@ -347,9 +364,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
     * vertex elements st_draw_feedback.c gives the draw module), so unfilled
     * polygons of such a batch give no lines or points. */
    const bool feedback = ctx->RenderMode != GL_RENDER;
-   for (unsigned i = 0; i < nverts; i++)
-      tv[i].edge = !vertdata_edgeflags ||
-                   (!feedback && verts[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f);
+   t_transform(ctx, verts, nverts, tv,
+               !vertdata_edgeflags ? T_EDGES_SET : feedback ? T_EDGES_CLEAR : T_EDGES_FROM_DATA);
    const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
                                ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
    dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
@@ -364,7 +380,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   const struct render r = { ctx, tv, verts, phong_mats };
+   const struct render r = { ctx, tv, verts, elts, phong_mats };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program
@@ -419,19 +435,30 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
 #if defined(__SSE__) || defined(__x86_64__)
    _mm_setcsr(mxcsr);
 #endif
-   free(tv);
+   if (ctx->Vbo.tv_alloc > FGL_VBO_SCRATCH_KEEP) {
+      free(ctx->Vbo.tv);
+      ctx->Vbo.tv = NULL;
+      ctx->Vbo.tv_alloc = 0;
+   }
 }
 
 /* fixglStats (main/stats.c): with the counters on, the batch is timed */
-void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
-                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                         unsigned nverts, const unsigned *elts,
+                         const struct fgl_vbo_prim *prims, unsigned nprims)
 {
    if (__builtin_expect(ctx->_Raster.stats != NULL, 0)) {
       struct fgl_stats_mark mark;
       fgl_stats_batch_begin(ctx, &mark);
-      render_batch(ctx, verts, nverts, prims, nprims);
+      render_batch(ctx, verts, nverts, elts, prims, nprims);
       fgl_stats_batch_end(ctx, &mark);
       return;
    }
-   render_batch(ctx, verts, nverts, prims, nprims);
+   render_batch(ctx, verts, nverts, elts, prims, nprims);
+}
+
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+                    unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
+{
+   t_render_batch_elts(ctx, verts, nverts, NULL, prims, nprims);
 }

@@ -28,6 +28,28 @@ void fgl_vbo_fini(struct fgl_vbo *vbo)
 {
    free(vbo->verts);
    vbo->verts = NULL;
+   free(vbo->tv);
+   vbo->tv = NULL;
+   vbo->tv_alloc = 0;
+   free(vbo->array_verts);
+   vbo->array_verts = NULL;
+   vbo->array_alloc = 0;
+   free(vbo->array_elts);
+   vbo->array_elts = NULL;
+   vbo->array_elts_alloc = 0;
+}
+
+void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
+{
+   if (buf && n <= *alloc)
+      return buf;
+   size_t want = *alloc ? *alloc : 256;
+   while (want < n)
+      want *= 2;
+   void *p = realloc(buf, want * elem_size);
+   if (p)
+      *alloc = (unsigned)want;
+   return p;
 }
 
 /* vbo_compute_max_verts: room left in the buffer, less one vertex kept for
@@ -225,6 +247,7 @@ static void reset_all_attr(struct fgl_vbo *vbo)
 {
    sync_vtx_mem(vbo);
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   vbo->format_mask = 0;
    memset(vbo->active_size, 0, sizeof(vbo->active_size));
    vbo->vertex_size = 0;
    vbo->size_no_pos = 0;
@@ -287,6 +310,15 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
       upgrade_layout(vbo, attr, size);
    vbo->vertex_size += size - vbo->attr_size[attr];
    vbo->attr_size[attr] = size;
+   if (attr != FGL_ATTR_POS) {
+      vbo->format_mask |= 1u << attr;
+      /* the components past the format's size read as the defaults
+       * (COPY_CLEAN): keep them so in current[], which a glVertex then
+       * stores as it is (fgl_vbo_attr); a value left there by an earlier,
+       * larger format is never read */
+      for (unsigned i = size; i < 4; i++)
+         vbo->current[attr][i] = attr_default[i];
+   }
    vbo->active_size[attr] = size;
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
@@ -403,9 +435,12 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
    memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
    /* only the format's attributes are stored; the others are constant for
     * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */
-   for (int a = FGL_ATTR_POS + 1; a < FGL_ATTR_COUNT; a++)
-      if (vbo->attr_size[a])
-         clean_value(vbo, (enum fgl_vbo_attr)a, dst->attr[a]);
+   for (unsigned m = vbo->format_mask; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
+      /* clean_value: current[a] holds the defaults past attr_size[a]
+       * (upgrade_vertex; calls write only the format's components) */
+      memcpy(dst->attr[a], vbo->current[a], sizeof(dst->attr[a]));
+   }
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
 }

@@ -20,6 +20,7 @@
 
 #include <GL/gl.h>
 #include <stdbool.h>
+#include <stddef.h>
 
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
@@ -89,6 +90,7 @@ enum fgl_vbo_attr {
 };
 
 #define FGL_ATTR_MAT_FIRST FGL_ATTR_MAT_FRONT_AMBIENT
+_Static_assert(FGL_ATTR_COUNT <= 32, "fgl_vbo.format_mask holds a bit per attribute");
 
 /* A stored vertex: the position and the attributes of the batch's vertex
  * format, each as float[4] (slots of attributes outside the format are not
@@ -112,11 +114,18 @@ struct fgl_vbo {
    unsigned attr_size[FGL_ATTR_COUNT];  /* components in the vertex format, 0 = absent */
    unsigned active_size[FGL_ATTR_COUNT];/* components of the last call, as Mesa tracks it */
    unsigned vertex_size;                /* sum of attr_size, in floats */
+   unsigned format_mask;                /* bit a: attribute a (not the
+                                         * position) is in the format,
+                                         * attr_size[a] != 0; what a
+                                         * glVertex stores besides the
+                                         * position */
    unsigned buffer_used;                /* bytes of the emulated buffer consumed */
    unsigned need_flush;                 /* FGL_VBO_FLUSH_* (Mesa's NeedFlush) */
    float current[FGL_ATTR_COUNT][4];    /* latest value of each attribute in
                                          * the format (ctx->Current.Attrib
-                                         * holds the others) */
+                                         * holds the others); its
+                                         * components past attr_size are
+                                         * the defaults */
    /* Mesa's exec->vtx.vertex memory behind the non-position attributes:
     * each attribute's slot (offset, attr_size floats, in the order the
     * attributes joined the format), and what the slots last held when the
@@ -129,9 +138,30 @@ struct fgl_vbo {
    float vtx_mem[FGL_ATTR_COUNT * 4];
    unsigned mem_offset[FGL_ATTR_COUNT];
    unsigned size_no_pos;                /* vertex_size_no_pos */
+
+   /* Scratch memory of the vertex stage, kept from draw to draw and only
+    * grown (fgl_vbo_scratch), so that a batch allocates nothing: the
+    * transformed vertices of t_render_batch (struct t_vertex, t_pipeline.h)
+    * and the fetched vertices of an array draw with its element lists
+    * (t_array.c). */
+   struct t_vertex *tv;
+   unsigned tv_alloc;
+   struct fgl_vbo_vertex *array_verts;
+   unsigned array_alloc;
+   unsigned *array_elts;        /* an indexed draw's vertex cache lists */
+   unsigned array_elts_alloc;
 };
 
 bool fgl_vbo_init(struct fgl_vbo *vbo);
+/* A scratch array buf of *alloc elements of elem_size bytes, grown to at
+ * least n (*alloc updated): the array to use from now on, or NULL when out
+ * of memory (buf is then still the caller's). */
+void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
+/* The most elements a scratch array keeps after a draw: enough for any
+ * immediate-mode batch (the 512 KiB buffer holds at most 65535 vertices);
+ * a larger one (a long array draw or display list) is freed after its
+ * draw rather than kept for the context's lifetime. */
+#define FGL_VBO_SCRATCH_KEEP 65536u
 void fgl_vbo_fini(struct fgl_vbo *vbo);
 
 /* An attribute call (glColor*, glVertex*) with n components. */
