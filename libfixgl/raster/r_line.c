@@ -89,6 +89,8 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
    const struct line_shade *ls = ctx;
    if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
+   if (__builtin_expect(rs->stats != NULL, 0))
+      rs->stats->fragments++;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ls->need_w ? 1.0f / r_eval_plane(&ls->w, fx, fy) : 0.0f;
@@ -128,7 +130,21 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
    r_fragment_ops(rs, px, py, r_eval_plane(&ls->z, fx, fy), color);
 }
 
+static void line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2);
+
+/* under fixglStats a line is raster time (setup included) */
 void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   if (__builtin_expect(rs->stats != NULL, 0)) {
+      const uint64_t t0 = r_stats_now();
+      line(rs, v1, v2);
+      rs->stats->raster_ns += r_stats_now() - t0;
+      return;
+   }
+   line(rs, v1, v2);
+}
+
+static void line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
 {
    /* v2 (the second vertex) is the provoking vertex */
    const struct r_vertex *const pv = v2;

@@ -18,7 +18,21 @@
 
 #include <math.h>
 
+static void point(const struct r_state *rs, const struct r_vertex *v);
+
+/* under fixglStats a point is raster time (setup included) */
 void r_point(const struct r_state *rs, const struct r_vertex *v)
+{
+   if (__builtin_expect(rs->stats != NULL, 0)) {
+      const uint64_t t0 = r_stats_now();
+      point(rs, v);
+      rs->stats->raster_ns += r_stats_now() - t0;
+      return;
+   }
+   point(rs, v);
+}
+
+static void point(const struct r_state *rs, const struct r_vertex *v)
 {
    /* LP_MAX_POINT_WIDTH */
    float size = rs->point_size;
@@ -89,6 +103,8 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
       for (int32_t px = bx0; px <= bx1; px++) {
          if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
             continue;   /* the pstipple shader's kill (t_vbuf_flush) */
+         if (__builtin_expect(rs->stats != NULL, 0))
+            rs->stats->fragments++;
          r_fragment_ops(rs, px, py, v->pos[2], color);
       }
    }

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <time.h>
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
 #endif
@@ -345,6 +346,14 @@ struct r_stats {
    uint64_t setup_ns;           /* primitive setup: coverage planes, inputs */
    uint64_t raster_ns;          /* coverage and fragments after the setup */
 };
+
+/* The clock of the counters (read only when r_state.stats is set). */
+static inline uint64_t r_stats_now(void)
+{
+   struct timespec ts;
+   clock_gettime(CLOCK_MONOTONIC, &ts);
+   return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
+}
 
 struct r_state {
    /* target */

@@ -266,6 +266,8 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    /* polygon stipple: the pstipple stage's kill, first */
    if (rs->stipple && !r_stipple_pass(rs, px, py))
       return;
+   if (__builtin_expect(rs->stats != NULL, 0))
+      rs->stats->fragments++;
    const float fx = (float)px, fy = (float)py;
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ts->need_w ? 1.0f / r_eval_plane(&ts->w, fx, fy) : 0.0f;
@@ -508,6 +510,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
 
+   const uint64_t t0 = rs->stats ? r_stats_now() : 0;
    /* the three edges (lp_setup_tri.c SSE path) */
    struct r_plane p[MAX_PLANES];
    bool exact = true;   /* nothing below wraps: see rasterize_direct */
@@ -535,21 +538,30 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       setup_shade(rs, v, back, phong_back, &ts);
       const r_tri_kernel kernel = rs->tri_kernel[ts.flat_attr[R_FS_COLOR0]];
       struct r_tri_cover cv;
-      if (kernel && block_cover(p, tx0, ty0, tx1, ty1, &cv)) {
+      const bool blocks = kernel && block_cover(p, tx0, ty0, tx1, ty1, &cv);
+      const uint64_t t1 = rs->stats ? r_stats_now() : 0;
+      if (blocks)
          kernel(rs, &ts, &cv);
-         return;
-      }
-      if (rs->tex_units)
+      else if (rs->tex_units)
          rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
       else
          rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
+      if (rs->stats) {
+         rs->stats->setup_ns += t1 - t0;
+         rs->stats->raster_ns += r_stats_now() - t1;
+      }
       return;
    }
 
    struct r_tri_setup ts;
    setup_shade(rs, v, back, phong_back, &ts);
    const struct r_shader sh = { tri_shade_pixel, &ts };
+   const uint64_t t1 = rs->stats ? r_stats_now() : 0;
    r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, &sh);
+   if (rs->stats) {
+      rs->stats->setup_ns += t1 - t0;
+      rs->stats->raster_ns += r_stats_now() - t1;
+   }
 }
 
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
