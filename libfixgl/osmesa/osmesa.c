@@ -83,6 +83,57 @@ static void snapshot_zs(struct osmesa_context *c)
              src + (size_t)y * row, row);
 }
 
+/* One row of the internal RGBA8 image into the user's format: the format
+ * is chosen once per row, and each loop is one the compiler vectorises. */
+static void copy_row(GLenum format, uint8_t *restrict dst, const uint8_t *restrict src, int w)
+{
+   switch (format) {
+   case OSMESA_RGBA:
+      memcpy(dst, src, (size_t)w * 4);
+      return;
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+   case OSMESA_BGRA:
+   case OSMESA_ARGB:
+      for (int x = 0; x < w; x++) {
+         uint32_t v;
+         memcpy(&v, src + 4 * x, 4);   /* bytes r g b a, little endian */
+         v = format == OSMESA_BGRA
+                ? (v & 0xff00ff00u) | ((v >> 16) & 0xffu) | ((v & 0xffu) << 16)
+                : (v << 8) | (v >> 24);
+         memcpy(dst + 4 * x, &v, 4);
+      }
+      return;
+#else
+   case OSMESA_BGRA:
+      for (int x = 0; x < w; x++) {
+         dst[4 * x + 0] = src[4 * x + 2]; dst[4 * x + 1] = src[4 * x + 1];
+         dst[4 * x + 2] = src[4 * x + 0]; dst[4 * x + 3] = src[4 * x + 3];
+      }
+      return;
+   case OSMESA_ARGB:
+      for (int x = 0; x < w; x++) {
+         dst[4 * x + 0] = src[4 * x + 3]; dst[4 * x + 1] = src[4 * x + 0];
+         dst[4 * x + 2] = src[4 * x + 1]; dst[4 * x + 3] = src[4 * x + 2];
+      }
+      return;
+#endif
+   case OSMESA_RGB:
+      for (int x = 0; x < w; x++) {
+         dst[3 * x + 0] = src[4 * x + 0];
+         dst[3 * x + 1] = src[4 * x + 1];
+         dst[3 * x + 2] = src[4 * x + 2];
+      }
+      return;
+   default: /* BGR */
+      for (int x = 0; x < w; x++) {
+         dst[3 * x + 0] = src[4 * x + 2];
+         dst[3 * x + 1] = src[4 * x + 1];
+         dst[3 * x + 2] = src[4 * x + 0];
+      }
+      return;
+   }
+}
+
 /* glFlush/glFinish: copy the image into the application's buffer and
  * refresh the depth snapshot, when the colour buffer was bound to a draw
  * or clear since the last time (st_manager_flush_frontbuffer's
@@ -101,15 +152,7 @@ static void flush_front(struct fgl_framebuffer *fb)
       const uint8_t *src = fb->Color + (size_t)y * (size_t)fb->Width * 4;
       const int dst_row = c->y_up ? fb->Height - 1 - y : y;
       uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride;
-      for (int x = 0; x < fb->Width; x++, src += 4, dst += bpp) {
-         switch (c->format) {
-         case OSMESA_RGBA: dst[0] = src[0]; dst[1] = src[1]; dst[2] = src[2]; dst[3] = src[3]; break;
-         case OSMESA_BGRA: dst[0] = src[2]; dst[1] = src[1]; dst[2] = src[0]; dst[3] = src[3]; break;
-         case OSMESA_ARGB: dst[0] = src[3]; dst[1] = src[0]; dst[2] = src[1]; dst[3] = src[2]; break;
-         case OSMESA_RGB:  dst[0] = src[0]; dst[1] = src[1]; dst[2] = src[2]; break;
-         default:          dst[0] = src[2]; dst[1] = src[1]; dst[2] = src[0]; break; /* BGR */
-         }
-      }
+      copy_row(c->format, dst, src, fb->Width);
    }
    if (c->zs_copy)
       snapshot_zs(c);

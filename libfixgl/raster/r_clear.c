@@ -43,8 +43,14 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
       if (rs->zs_format == R_ZS_Z24S8) {
          if (stencil) set |= (uint32_t)svalue << 24; else keep |= 0xff000000u;
       }
-      for (size_t i = 0; i < n; i++)
-         z[i] = (z[i] & keep) | set;
+      if (keep == 0) {
+         /* a plain fill: no read of the old values */
+         for (size_t i = 0; i < n; i++)
+            z[i] = set;
+      } else {
+         for (size_t i = 0; i < n; i++)
+            z[i] = (z[i] & keep) | set;
+      }
       break;
    }
    case R_ZS_S8:

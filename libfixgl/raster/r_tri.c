@@ -536,7 +536,9 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
-      const r_tri_kernel kernel = rs->tri_kernel[ts.flat_attr[R_FS_COLOR0]];
+      /* (flat_attr is set for the inputs only) */
+      const bool flat0 = (ts.inputs & (1u << R_FS_COLOR0)) && ts.flat_attr[R_FS_COLOR0];
+      const r_tri_kernel kernel = rs->tri_kernel[flat0];
       struct r_tri_cover cv;
       const bool blocks = kernel && block_cover(p, tx0, ty0, tx1, ty1, &cv);
       const uint64_t t1 = rs->stats ? r_stats_now() : 0;
