@@ -6,21 +6,32 @@
 #include "r_state.h"
 
 #include <string.h>
+#include <wchar.h>
+
+/* n 32-bit values v at p: glibc's wmemset (wchar_t is 32 bits on the
+ * targets that have it) is a vectorised fill that never reads the buffer;
+ * memset when the four bytes are equal. */
+static void fill32(void *p, uint32_t v, size_t n)
+{
+   if ((v & 0xffu) * 0x01010101u == v) {
+      memset(p, (int)(v & 0xffu), 4 * n);
+      return;
+   }
+#if __SIZEOF_WCHAR_T__ == 4
+   wmemset(p, (wchar_t)v, n);
+#else
+   uint32_t *q = p;
+   for (size_t i = 0; i < n; i++)
+      q[i] = v;
+#endif
+}
 
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4])
 {
    const size_t n = (size_t)rs->width * (size_t)rs->height;
-   uint8_t *p = rs->color;
-   if (n == 0)
-      return;
-   memcpy(p, rgba, 4);
-   /* double the filled prefix until the buffer is full */
-   size_t done = 1;
-   while (done < n) {
-      const size_t chunk = done < n - done ? done : n - done;
-      memcpy(p + 4 * done, p, 4 * chunk);
-      done += chunk;
-   }
+   uint32_t v;
+   memcpy(&v, rgba, 4);
+   fill32(rs->color, v, n);
 }
 
 void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
@@ -31,8 +42,16 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
    case R_ZS_Z16:
       if (depth) {
          uint16_t *z = rs->zs;
-         for (size_t i = 0; i < n; i++)
-            z[i] = (uint16_t)zvalue;
+         /* pairs of values as 32-bit words, then an odd last one */
+         const uint32_t pair = (zvalue & 0xffffu) * 0x10001u;
+         if (((uintptr_t)z & 3u) == 0) {
+            fill32(z, pair, n / 2);
+            if (n & 1)
+               z[n - 1] = (uint16_t)zvalue;
+         } else {
+            for (size_t i = 0; i < n; i++)
+               z[i] = (uint16_t)zvalue;
+         }
       }
       break;
    case R_ZS_Z24X8:
@@ -44,9 +63,7 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
          if (stencil) set |= (uint32_t)svalue << 24; else keep |= 0xff000000u;
       }
       if (keep == 0) {
-         /* a plain fill: no read of the old values */
-         for (size_t i = 0; i < n; i++)
-            z[i] = set;
+         fill32(z, set, n);   /* a plain fill: no read of the old values */
       } else {
          for (size_t i = 0; i < n; i++)
             z[i] = (z[i] & keep) | set;
