@@ -27,7 +27,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                                      const struct r_tri_cover *cv, const int variant,
                                      const enum zfmt zf, const bool zwrite, const enum blend bl)
 {
-   const int width = rs->width;
+   const int width = rs->width, height = rs->height;
    const size_t stride = (size_t)width;
    const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
    const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
@@ -118,37 +118,35 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
 
             const size_t idx = (size_t)y * stride + (size_t)bx;
             __m256i pass = live;
+            /* both rows of the half are read and written back whole
+             * (uncovered and failing lanes with their old values), without
+             * a branch on the masks, unless the half's second row is past
+             * the buffer */
+            const unsigned rm = y + 1 < height ? 0xffu : lm8;
             if (zf == ZF_24) {
                uint32_t *zp = (uint32_t *)rs->zs + idx;
-               const __m256i zb = load_rows32(zp, stride, lm8);
+               const __m256i zb = load_rows32(zp, stride, rm);
                pass = _mm256_and_si256(
                   pass, depth_pass(&fn, zv, _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff))));
                if (zwrite) {
                   const __m256i nz = _mm256_or_si256(
                      _mm256_and_si256(zb, _mm256_set1_epi32((int)0xff000000u)), zv);
-                  store_rows32(zp, stride, lm8, _mm256_blendv_epi8(zb, nz, pass));
+                  store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nz, pass));
                }
             } else if (zf == ZF_16) {
                uint16_t *zp = (uint16_t *)rs->zs + idx;
-               const __m256i zb = load_rows16(zp, stride, lm8);
+               const __m256i zb = load_rows16(zp, stride, rm);
                pass = _mm256_and_si256(pass, depth_pass(&fn, zv, zb));
                if (zwrite)
-                  store_rows16(zp, stride, lm8, _mm256_blendv_epi8(zb, zv, pass));
+                  store_rows16(zp, stride, rm, _mm256_blendv_epi8(zb, zv, pass));
             }
-            const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(pass));
-            if (!pm)
-               continue;
 
             uint32_t *cp = (uint32_t *)rs->color + idx;
-            if (bl == BL_NONE && pm == 0xffu) {
-               store_rows32(cp, stride, pm, src);
-               continue;
-            }
-            const __m256i dst = load_rows32(cp, stride, pm);
+            const __m256i dst = load_rows32(cp, stride, rm);
             __m256i out = src;
             if (bl == BL_ALPHA)
                out = blend_alpha(src, _mm256_or_si256(dst, dst_or));
-            store_rows32(cp, stride, pm, _mm256_blendv_epi8(dst, out, pass));
+            store_rows32(cp, stride, rm, _mm256_blendv_epi8(dst, out, pass));
          }
       }
       for (int e = 0; e < 3; e++)
