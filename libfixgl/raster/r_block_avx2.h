@@ -67,25 +67,6 @@ static ALWAYS_INLINE void store_rows32(uint32_t *p, size_t stride, unsigned m8, 
       _mm_storeu_si128((__m128i *)(p + stride), _mm256_extracti128_si256(v, 1));
 }
 
-/* The same with the lanes chosen by a lane mask (all bits of a lane set
- * or clear): masked-off lanes are neither read nor written, and cannot
- * fault, so uncovered pixels past the buffer's edges are never touched.
- * No branch: the masks come from coverage and depth tests, which branch
- * predictors guess badly. */
-static ALWAYS_INLINE __m256i load_rows32_m(const uint32_t *p, size_t stride, __m256i lanes)
-{
-   const __m128i r0 = _mm_maskload_epi32((const int *)p, _mm256_castsi256_si128(lanes));
-   const __m128i r1 = _mm_maskload_epi32((const int *)(p + stride), _mm256_extracti128_si256(lanes, 1));
-   return _mm256_set_m128i(r1, r0);
-}
-
-static ALWAYS_INLINE void store_rows32_m(uint32_t *p, size_t stride, __m256i lanes, __m256i v)
-{
-   _mm_maskstore_epi32((int *)p, _mm256_castsi256_si128(lanes), _mm256_castsi256_si128(v));
-   _mm_maskstore_epi32((int *)(p + stride), _mm256_extracti128_si256(lanes, 1),
-                       _mm256_extracti128_si256(v, 1));
-}
-
 /* The same for 16-bit depth: the values widened to 32-bit lanes. */
 static ALWAYS_INLINE __m256i load_rows16(const uint16_t *p, size_t stride, unsigned m8)
 {
