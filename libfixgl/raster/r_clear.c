@@ -65,7 +65,20 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
       if (keep == 0) {
          fill32(z, set, n);   /* a plain fill: no read of the old values */
       } else {
-         for (size_t i = 0; i < n; i++)
+         /* two values per 64-bit word (the loop the compiler vectorises) */
+         const uint64_t keep2 = keep | (uint64_t)keep << 32, set2 = set | (uint64_t)set << 32;
+         size_t i = 0;
+         if (((uintptr_t)z & 7u) != 0 && n) {
+            z[0] = (z[0] & keep) | set;
+            i = 1;
+         }
+         for (; i + 2 <= n; i += 2) {
+            uint64_t w;
+            memcpy(&w, z + i, 8);
+            w = (w & keep2) | set2;
+            memcpy(z + i, &w, 8);
+         }
+         for (; i < n; i++)
             z[i] = (z[i] & keep) | set;
       }
       break;
