@@ -43,7 +43,7 @@
  * batch and requires the comparison to notice.
  *
  *   --seed N      the run's seed (default 1)
- *   --count N     primitives to draw at least (default 100000)
+ *   --count N     primitives to draw at least (default 200000)
  *   --batch N     replay batch N of the seed alone, with its GL calls
  *                 printed
  *   --perturb N   flip a byte of batch N's fast colour buffer (shows the
@@ -365,7 +365,7 @@ static int kernel_index(any_kernel k)
 static long g_calls, g_limit;
 static bool g_record;
 static struct {
-   uint64_t tris, lines, points, pixels, cases, batches;
+   uint64_t tris, lines, points, pixels, cases, batches, fragments;
 } g_count;
 static bool g_count_on;
 
@@ -384,6 +384,13 @@ static struct gen {
     * anything goes, so that every kernel's states come up often */
    float feat;
    float last[2][4];      /* the last two vertices sent (degenerate ones) */
+   /* the last polygon draw's vertices, drawn again by draw_repeat (equal
+    * depths: multi-pass, GL_EQUAL, decals) */
+   GLenum rep_prim;
+   int rep_n, rep_tris;
+   float rep_v[16][4];
+   bool flat_z;           /* this shape's vertices share one z */
+   float flat_zv;
 } G;
 
 static int g_limit_case;   /* the case of the last draw call allowed */
@@ -401,10 +408,11 @@ static bool draw_allowed(void)
 
 static float rnd_color_comp(void)
 {
-   switch (rnd(10)) {
+   switch (rnd(11)) {
    case 0:  return rndr(-0.3f, 1.3f);
    case 1:  return (float)rnd(2);
    case 2:  return (float)rnd(256) / 255.0f;
+   case 3:  return ((float)rnd(255) + 0.5f) / 255.0f;   /* rounding ties */
    default: return rndf();
    }
 }
@@ -516,6 +524,12 @@ static void set_logic_mask(void)
       glDisable(GL_COLOR_LOGIC_OP);
    glLogicOp(op);
    glColorMask(cm & 1, (cm >> 1) & 1, (cm >> 2) & 1, (cm >> 3) & 1);
+   if (chance(0.05f * G.feat)) {
+      static const GLenum bufs[] = { GL_NONE, GL_FRONT, GL_FRONT_AND_BACK };
+      const GLenum db = PICK(bufs);
+      L("draw buffer 0x%x", db);
+      glDrawBuffer(db);
+   }
    if (chance(0.2f)) {
       const bool di = chance(0.5f);
       L("dither %d", di);
@@ -908,6 +922,15 @@ static void set_projection(void)
       glFrustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
    glMatrixMode(GL_MODELVIEW);
    glLoadIdentity();
+   int vx = 0, vy = 0, vw = G.cfg.w, vh = G.cfg.h;
+   if (chance(0.15f)) {
+      vx = rnd(G.cfg.w) - G.cfg.w / 2;
+      vy = rnd(G.cfg.h) - G.cfg.h / 2;
+      vw = 1 + rnd(2 * G.cfg.w);
+      vh = 1 + rnd(2 * G.cfg.h);
+   }
+   L("viewport %d %d %d %d", vx, vy, vw, vh);
+   glViewport(vx, vy, vw, vh);
 }
 
 /* -- primitives -- */
@@ -930,10 +953,12 @@ static float pix_snap(float v)
 static struct shape rnd_shape(void)
 {
    struct shape s;
-   const int size = rnd(20);
-   /* radius in pixels: tiny, small, medium, big */
-   float rp = size < 6 ? rndr(0.2f, 2.5f) : size < 14 ? rndr(2.0f, 10.0f)
-            : size < 19 ? rndr(8.0f, 40.0f) : rndr(40.0f, 200.0f);
+   const int size = rnd(100);
+   /* radius in pixels: tiny, small, medium, big, huge (past the block
+    * kernels' 32-bit coverage and the exact edge functions) */
+   float rp = size < 25 ? rndr(0.2f, 2.5f) : size < 60 ? rndr(2.0f, 10.0f)
+            : size < 88 ? rndr(8.0f, 40.0f) : size < 98 ? rndr(40.0f, 200.0f)
+            : chance(0.5f) ? rndr(1000.0f, 8000.0f) : rndr(8000.0f, 60000.0f);
    const float wp = (float)G.cfg.w, hp = (float)G.cfg.h;
    float px = rndr(-0.15f * wp, 1.15f * wp), py = rndr(-0.15f * hp, 1.15f * hp);
    if (G.proj == 1) {
@@ -985,7 +1010,7 @@ static void emit_vertex(const struct shape *s, int degenerate)
       if (G.proj == 1) {
          v[0] = pix_snap(x);
          v[1] = pix_snap(y);
-         v[2] = z;
+         v[2] = G.flat_z ? G.flat_zv : z;
          v[3] = 1.0f;
       } else if (G.proj == 2) {
          /* eye space: depth 0.5 .. 12 (the near plane at 1), the NDC
@@ -1011,6 +1036,8 @@ static void emit_vertex(const struct shape *s, int degenerate)
    glVertex4fv(v);
 }
 
+static void draw_points(void);
+
 static void draw_polys(void)
 {
    static const GLenum prims[] = { GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP,
@@ -1024,13 +1051,43 @@ static void draw_polys(void)
    }
    const struct shape s = rnd_shape();
    const bool degenerate = chance(0.05f);
+   static const float flat_zs[] = { -1.0f, 0.0f, 0.5f, 1.0f, 0.25f };
+   G.flat_z = chance(0.2f);
+   G.flat_zv = PICK(flat_zs);
    L("  draw 0x%x %d vertices%s (call %ld)", prim, nv, degenerate ? " degenerate" : "", g_calls);
    glBegin(prim);
-   for (int i = 0; i < nv; i++)
+   for (int i = 0; i < nv; i++) {
       emit_vertex(&s, degenerate && i % 3 == 2 ? 1 + rnd(2) : 0);
+      memcpy(G.rep_v[i], G.last[1], sizeof G.rep_v[i]);
+   }
    glEnd();
+   G.flat_z = false;
+   G.rep_prim = prim;
+   G.rep_n = nv;
+   G.rep_tris = ntri;
    if (g_count_on)
       g_count.tris += (uint64_t)ntri;
+   if (G.filled)
+      G.case_tris = true;
+}
+
+/* the last polygon draw again, new colours and coordinates */
+static void draw_repeat(void)
+{
+   if (!G.rep_n) {
+      draw_points();
+      return;
+   }
+   L("  draw 0x%x %d vertices again (call %ld)", G.rep_prim, G.rep_n, g_calls);
+   glBegin(G.rep_prim);
+   for (int i = 0; i < G.rep_n; i++) {
+      send_vertex_attribs();
+      L("    vertex %.9g %.9g %.9g %.9g", G.rep_v[i][0], G.rep_v[i][1], G.rep_v[i][2], G.rep_v[i][3]);
+      glVertex4fv(G.rep_v[i]);
+   }
+   glEnd();
+   if (g_count_on)
+      g_count.tris += (uint64_t)G.rep_tris;
    if (G.filled)
       G.case_tris = true;
 }
@@ -1250,8 +1307,10 @@ static void gen_batch(uint64_t bseed, bool fast)
          const int what = rnd(100);
          if (!draw_allowed())
             break;
-         if (what < 55)
+         if (what < 45)
             draw_polys();
+         else if (what < 55)
+            draw_repeat();
          else if (what < 60)
             draw_rect();
          else if (what < 75)
@@ -1335,7 +1394,11 @@ static bool run_pair(long b, uint64_t bseed, long limit, bool record, struct dif
    OSMesaMakeCurrent(fast.osm, fast.buf, GL_UNSIGNED_BYTE, c.w, c.h);
    g_limit = limit;
    g_record = record;
+   fixglStats(1);
    gen_batch(bseed, true);
+   struct fixgl_stats st;
+   fixglGetStats(&st);
+   g_count.fragments += st.fragments;
    if (fast_rs)
       memcpy(fast_rs, &fast.gl->_Raster, sizeof *fast_rs);
    const bool log = g_log;
@@ -1465,7 +1528,7 @@ static bool self_check(void)
 int main(int argc, char **argv)
 {
    uint64_t seed = 1;
-   long count = 100000, only = -1;
+   long count = 200000, only = -1;
    bool verbose = false;
    for (int i = 1; i < argc; i++) {
       if (!strcmp(argv[i], "--seed") && i + 1 < argc)
@@ -1543,6 +1606,8 @@ int main(int argc, char **argv)
           (unsigned long long)g_count.cases, (unsigned long long)prims,
           (unsigned long long)g_count.tris, (unsigned long long)g_count.lines,
           (unsigned long long)g_count.points, (unsigned long long)g_count.pixels, secs);
+   printf("kernels: %llu fragments shaded in the fast contexts\n",
+          (unsigned long long)g_count.fragments);
    printf("kernels: %zu kernel/state combinations drawn by %d fast kernels; %zu of %zu state keys "
           "fell back to the reference kernels\n",
           g_combos.n, g_nkernels, g_fallback.n, g_keys.n);
