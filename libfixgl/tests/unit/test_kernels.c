@@ -1256,6 +1256,7 @@ static void gen_batch(uint64_t bseed, bool fast)
    rng_state = bseed;
    G.feat = rnd(3) == 0 ? 1.0f : rnd(2) ? 0.4f : 0.1f;
    g_calls = 0;
+   g_limit_case = -1;
    g_log_stopped = false;
    g_count_on = fast;
 
@@ -1482,10 +1483,12 @@ static void report_mismatch(uint64_t seed, long b, const struct diff *whole)
    g_loglen = 0;
    run_pair(b, bseed, first, false, &d, &rs);
    g_log = false;
+   if (first == 0)
+      fprintf(stderr, "  differing before any draw call: ");
+   else
+      fprintf(stderr, "  first differing after draw call %ld (case %d): ", first, g_limit_case);
    fprintf(stderr,
-           "  first differing after draw call %ld (case %d): %s at (%d, %d) (GL window "
-           "coordinates) reference 0x%08x fast 0x%08x\n",
-           first, g_limit_case, d.buffer, d.x, d.y, d.expected, d.got);
+           "%s at (%d, %d) (GL window coordinates) reference 0x%08x fast 0x%08x\n", d.buffer, d.x, d.y, d.expected, d.got);
    fprintf(stderr, "  GL calls of the batch up to it:\n%s", g_logbuf ? g_logbuf : "");
    print_rs(&rs);
 }
