@@ -369,6 +369,10 @@ static struct {
 } g_count;
 static bool g_count_on;
 
+enum { GROUP_STENCIL, GROUP_ALPHA, GROUP_BLEND, GROUP_MASK, GROUP_FOG, GROUP_TEX, GROUP_LIGHT,
+       GROUP_POLY, GROUP_COUNT };
+enum { MODE_OFF, MODE_USUAL, MODE_ANY };
+
 /* state of the generator during a batch */
 static struct gen {
    struct config cfg;
@@ -378,11 +382,12 @@ static struct gen {
    bool case_tris;        /* this case drew filled triangles */
    int case_index;
    bool tex_2d[4];        /* texture i + 1 is 2D (else 1D) */
-   /* the batch's weight of the optional features (stencil, alpha test,
-    * other blends, logic op, colour mask, fog, texturing, lighting,
-    * GL_PHONG_WIN, polygon modes and stipple): from mostly plain states to
-    * anything goes, so that every kernel's states come up often */
-   float feat;
+   /* the batch's mode of each group of optional state (stencil, alpha
+    * test, blending, logic op and colour mask, fog, texturing, lighting
+    * and GL_PHONG_WIN, polygon modes, offsets and stipple): off, the usual
+    * settings of real programs, or anything, so that the states every
+    * kernel covers come up often and alone as well as mixed */
+   int mode[GROUP_COUNT];
    float last[2][4];      /* the last two vertices sent (degenerate ones) */
    /* the last polygon draw's vertices, drawn again by draw_repeat (equal
     * depths: multi-pass, GL_EQUAL, decals) */
@@ -452,11 +457,22 @@ static const GLenum sops[] = { GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR,
 
 static void set_stencil(void)
 {
-   const bool on = chance(0.6f * G.feat);
-   const GLenum f = PICK(funcs), a = PICK(sops), b = PICK(sops), c = PICK(sops);
+   const int mode = G.mode[GROUP_STENCIL];
+   const bool on = mode != MODE_OFF && chance(mode == MODE_ANY ? 0.6f : 0.8f);
+   GLenum f = PICK(funcs), a = PICK(sops), b = PICK(sops), c = PICK(sops);
    const int ref = chance(0.8f) ? rnd(256) : rnd(600) - 100;
-   const unsigned vm = chance(0.6f) ? 0xffu : (unsigned)rnd(256);
-   const unsigned wm = chance(0.6f) ? 0xffu : (unsigned)rnd(256);
+   unsigned vm = chance(0.6f) ? 0xffu : (unsigned)rnd(256);
+   unsigned wm = chance(0.6f) ? 0xffu : (unsigned)rnd(256);
+   if (mode == MODE_USUAL) {
+      /* mark, then draw where marked (or not) */
+      static const GLenum usual_funcs[] = { GL_ALWAYS, GL_EQUAL, GL_NOTEQUAL, GL_LESS };
+      static const GLenum usual_ops[] = { GL_KEEP, GL_KEEP, GL_REPLACE, GL_INCR, GL_ZERO };
+      f = PICK(usual_funcs);
+      a = GL_KEEP;
+      b = chance(0.7f) ? GL_KEEP : PICK(usual_ops);
+      c = PICK(usual_ops);
+      vm = wm = 0xffu;
+   }
    L("stencil test %d func 0x%x ref %d vmask 0x%x ops 0x%x 0x%x 0x%x wmask 0x%x", on, f, ref, vm,
      a, b, c, wm);
    if (on)
@@ -470,9 +486,12 @@ static void set_stencil(void)
 
 static void set_alpha(void)
 {
-   const bool on = chance(0.5f * G.feat);
-   const GLenum f = PICK(funcs);
-   const float ref = chance(0.8f) ? rndf() : rndr(-0.5f, 1.5f);
+   const int mode = G.mode[GROUP_ALPHA];
+   const bool on = mode != MODE_OFF && chance(0.8f);
+   static const GLenum usual_funcs[] = { GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_LESS };
+   const GLenum f = mode == MODE_USUAL ? PICK(usual_funcs) : PICK(funcs);
+   const float ref = mode == MODE_USUAL ? (chance(0.5f) ? 0.0f : rndf())
+                   : chance(0.8f) ? rndf() : rndr(-0.5f, 1.5f);
    L("alpha test %d func 0x%x ref %.9g", on, f, ref);
    if (on)
       glEnable(GL_ALPHA_TEST);
@@ -492,13 +511,24 @@ static void set_blend(void)
 {
    static const GLenum eqs[] = { GL_FUNC_ADD, GL_FUNC_ADD, GL_FUNC_ADD, GL_FUNC_SUBTRACT,
                                  GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX };
-   const bool on = chance(0.6f);
+   static const GLenum usual[][2] = {
+      { GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA }, { GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA },
+      { GL_ONE, GL_ONE }, { GL_SRC_ALPHA, GL_ONE }, { GL_ONE, GL_ONE_MINUS_SRC_ALPHA },
+      { GL_DST_COLOR, GL_ZERO }, { GL_ZERO, GL_SRC_COLOR }, { GL_ONE, GL_ZERO },
+   };
+   const int mode = G.mode[GROUP_BLEND];
+   /* "off": no blending or the standard alpha blend */
+   const bool on = mode != MODE_OFF ? chance(0.8f) : chance(0.4f);
    GLenum src = PICK(bfactors), dst = PICK(bfactors);
-   if (chance(1.0f - 0.65f * G.feat)) {
+   if (mode == MODE_OFF) {
       src = GL_SRC_ALPHA;
       dst = GL_ONE_MINUS_SRC_ALPHA;
+   } else if (mode == MODE_USUAL) {
+      const int u = rnd((int)(sizeof usual / sizeof usual[0]));
+      src = usual[u][0];
+      dst = usual[u][1];
    }
-   const GLenum eq = chance(G.feat) ? PICK(eqs) : GL_FUNC_ADD;
+   const GLenum eq = mode == MODE_ANY ? PICK(eqs) : GL_FUNC_ADD;
    float bc[4];
    rnd_color4(bc);
    L("blend %d eq 0x%x src 0x%x dst 0x%x color %.9g %.9g %.9g %.9g", on, eq, src, dst, bc[0],
@@ -514,9 +544,13 @@ static void set_blend(void)
 
 static void set_logic_mask(void)
 {
-   const bool lo = chance(0.2f * G.feat);
-   const GLenum op = GL_CLEAR + (GLenum)rnd(16);
-   const unsigned cm = chance(1.0f - 0.3f * G.feat) ? 0xfu : (unsigned)rnd(16);
+   const int mode = G.mode[GROUP_MASK];
+   const bool lo = mode == MODE_ANY && chance(0.4f);
+   static const GLenum usual_ops[] = { GL_XOR, GL_INVERT, GL_COPY };
+   const GLenum op = mode == MODE_USUAL ? PICK(usual_ops) : GL_CLEAR + (GLenum)rnd(16);
+   static const unsigned usual_masks[] = { 0xf, 0x7, 0x8, 0x0 };
+   const unsigned cm = mode == MODE_OFF ? 0xfu : mode == MODE_USUAL ? PICK(usual_masks)
+                     : (unsigned)rnd(16);
    L("logic op %d 0x%x colour mask 0x%x", lo, op, cm);
    if (lo)
       glEnable(GL_COLOR_LOGIC_OP);
@@ -524,7 +558,7 @@ static void set_logic_mask(void)
       glDisable(GL_COLOR_LOGIC_OP);
    glLogicOp(op);
    glColorMask(cm & 1, (cm >> 1) & 1, (cm >> 2) & 1, (cm >> 3) & 1);
-   if (chance(0.05f * G.feat)) {
+   if (mode == MODE_ANY && chance(0.1f)) {
       static const GLenum bufs[] = { GL_NONE, GL_FRONT, GL_FRONT_AND_BACK };
       const GLenum db = PICK(bufs);
       L("draw buffer 0x%x", db);
@@ -557,8 +591,8 @@ static void set_scissor(void)
 
 static void set_shade_model(void)
 {
-   static const GLenum models[] = { GL_SMOOTH, GL_SMOOTH, GL_FLAT, GL_FLAT, GL_PHONG_WIN };
-   const GLenum m = models[rnd(chance(G.feat) ? 5 : 4)];
+   static const GLenum models[] = { GL_SMOOTH, GL_SMOOTH, GL_FLAT, GL_PHONG_WIN, GL_PHONG_WIN };
+   const GLenum m = models[rnd(G.mode[GROUP_LIGHT] != MODE_OFF ? 5 : 3)];
    L("shade model 0x%x", m);
    glShadeModel(m);
 }
@@ -571,7 +605,8 @@ static void rnd_vec4(float v[4], float lo, float hi)
 
 static void set_lighting(void)
 {
-   const bool on = chance(0.6f * G.feat);
+   const int mode = G.mode[GROUP_LIGHT];
+   const bool on = mode != MODE_OFF && chance(0.85f);
    L("lighting %d", on);
    if (on)
       glEnable(GL_LIGHTING);
@@ -611,7 +646,8 @@ static void set_lighting(void)
       glLightf(li, GL_LINEAR_ATTENUATION, kl);
       glLightf(li, GL_QUADRATIC_ATTENUATION, kq);
    }
-   const bool two = chance(0.4f), local = chance(0.3f), sep = chance(0.4f * G.feat);
+   const bool two = chance(0.4f), local = chance(0.3f);
+   const bool sep = chance(mode == MODE_USUAL ? 0.15f : 0.4f);
    float ga[4];
    rnd_vec4(ga, 0.0f, 0.4f);
    L("light model two-side %d local viewer %d separate specular %d", two, local, sep);
@@ -664,10 +700,12 @@ static void set_fog(void)
 {
    static const GLenum modes[] = { GL_LINEAR, GL_EXP, GL_EXP2 };
    static const GLenum dmodes[] = { GL_EYE_PLANE_ABSOLUTE_NV, GL_EYE_PLANE, GL_EYE_RADIAL_NV };
-   const bool on = chance(0.4f * G.feat);
-   const GLenum m = PICK(modes), dm = PICK(dmodes);
+   const int mode = G.mode[GROUP_FOG];
+   const bool on = mode != MODE_OFF && chance(0.8f);
+   const GLenum m = PICK(modes);
+   const GLenum dm = mode == MODE_USUAL ? GL_EYE_PLANE_ABSOLUTE_NV : PICK(dmodes);
    const float dens = rndr(0.0f, 3.0f), st = rndr(-1.0f, 1.0f), en = rndr(-0.5f, 3.0f);
-   const bool src_depth = chance(0.8f);
+   const bool src_depth = mode == MODE_USUAL || chance(0.8f);
    float c[4];
    rnd_color4(c);
    L("fog %d mode 0x%x density %.9g start %.9g end %.9g distance 0x%x src %s", on, m, dens, st,
@@ -691,17 +729,20 @@ static void set_fog(void)
 
 static void make_texture(int i)
 {
+   /* the unsized formats (and RGBA8) first: the usual ones */
    static const GLint ifmts[] = { GL_RGBA, GL_RGBA, GL_RGB, GL_RGB, GL_LUMINANCE, GL_ALPHA,
                                   GL_INTENSITY, GL_LUMINANCE_ALPHA, GL_RGBA8, GL_RGB8,
                                   GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2, GL_RGB10_A2,
                                   GL_LUMINANCE16, GL_ALPHA4, GL_RGB16, GL_INTENSITY8 };
-   const bool two_d = chance(0.8f);
+   const bool usual = G.mode[GROUP_TEX] != MODE_ANY;
+   const bool two_d = chance(usual ? 0.95f : 0.7f);
    const GLenum target = two_d ? GL_TEXTURE_2D : GL_TEXTURE_1D;
-   int w = chance(0.6f) ? 1 << rnd(6) : 1 + rnd(40);
-   int h = two_d ? (chance(0.6f) ? 1 << rnd(6) : 1 + rnd(40)) : 1;
-   const GLint ifmt = PICK(ifmts);
+   const float pot = usual ? 0.85f : 0.5f;
+   int w = chance(pot) ? 1 << rnd(6) : 1 + rnd(40);
+   int h = two_d ? (chance(pot) ? 1 << rnd(6) : 1 + rnd(40)) : 1;
+   const GLint ifmt = ifmts[rnd(usual ? 9 : (int)(sizeof ifmts / sizeof ifmts[0]))];
    const bool mip = chance(0.6f);
-   const bool incomplete = chance(0.05f);
+   const bool incomplete = !usual && chance(0.1f);
    G.tex_2d[i] = two_d;
    L("texture %d %dD %dx%d ifmt 0x%x mipmaps %d", i + 1, two_d ? 2 : 1, w, h, ifmt, mip);
    glBindTexture(target, (GLuint)(i + 1));
@@ -734,7 +775,9 @@ static void set_tex_params(GLenum target)
                                    GL_CLAMP, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT,
                                    GL_MIRROR_CLAMP_EXT, GL_MIRROR_CLAMP_TO_EDGE_EXT,
                                    GL_MIRROR_CLAMP_TO_BORDER_EXT };
-   const GLenum mi = PICK(mins), ma = PICK(mags), ws = PICK(wraps), wt = PICK(wraps);
+   const bool usual = G.mode[GROUP_TEX] != MODE_ANY;
+   const GLenum mi = PICK(mins), ma = PICK(mags);
+   const GLenum ws = wraps[rnd(usual ? 4 : 10)], wt = wraps[rnd(usual ? 4 : 10)];
    float bc[4];
    rnd_color4(bc);
    L("  params min 0x%x mag 0x%x wrap 0x%x 0x%x", mi, ma, ws, wt);
@@ -743,7 +786,7 @@ static void set_tex_params(GLenum target)
    glTexParameteri(target, GL_TEXTURE_WRAP_S, (GLint)ws);
    glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)wt);
    glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, bc);
-   if (chance(0.2f)) {
+   if (!usual && chance(0.3f)) {
       const float bias = rndr(-3.0f, 3.0f), mn = rndr(-2.0f, 3.0f), mx = rndr(0.0f, 8.0f);
       const int base = rnd(3);
       L("  params lod bias %.9g min lod %.9g max lod %.9g base level %d", bias, mn, mx, base);
@@ -806,7 +849,9 @@ static void set_texturing(void)
 {
    static const GLenum envs[] = { GL_MODULATE, GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND,
                                   GL_ADD, GL_COMBINE, GL_COMBINE, GL_COMBINE4_NV };
-   const int n = !chance(0.7f * G.feat) ? 0 : chance(0.6f) ? 1 : 1 + rnd(3);
+   const int mode = G.mode[GROUP_TEX];
+   const int n = mode == MODE_OFF || chance(0.1f) ? 0 : mode == MODE_USUAL ? (chance(0.8f) ? 1 : 2)
+               : chance(0.5f) ? 1 : 1 + rnd(3);
    G.nunits = n;
    L("texture units %d", n);
    for (int u = 0; u < 3; u++) {
@@ -823,7 +868,8 @@ static void set_texturing(void)
       glBindTexture(GL_TEXTURE_2D, 0);
       glBindTexture(target, (GLuint)(t + 1));
       glEnable(target);
-      const GLenum env = PICK(envs);
+      static const GLenum usual_envs[] = { GL_MODULATE, GL_MODULATE, GL_REPLACE, GL_DECAL };
+      const GLenum env = mode == MODE_USUAL ? PICK(usual_envs) : PICK(envs);
       float ec[4];
       rnd_color4(ec);
       L(" unit %d texture %d env 0x%x colour %.9g %.9g %.9g %.9g", u, t + 1, env, ec[0], ec[1],
@@ -834,7 +880,7 @@ static void set_texturing(void)
          set_combine(env == GL_COMBINE4_NV);
       if (chance(0.7f))
          set_tex_params(target);
-      if (chance(0.1f)) {
+      if (mode == MODE_ANY && chance(0.1f)) {
          const float p[4] = { rndr(-0.2f, 0.2f), rndr(-0.2f, 0.2f), 0.0f, rndf() };
          L(" unit %d texgen object linear %.9g %.9g 0 %.9g", u, p[0], p[1], p[3]);
          glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
@@ -843,7 +889,7 @@ static void set_texturing(void)
       }
       glMatrixMode(GL_TEXTURE);
       glLoadIdentity();
-      if (chance(0.15f)) {
+      if (mode == MODE_ANY && chance(0.15f)) {
          const float s = rndr(0.25f, 4.0f);
          L(" unit %d texture matrix scale %.9g", u, s);
          glScalef(s, s, 1.0f);
@@ -859,13 +905,15 @@ static void set_polygon(void)
 {
    static const GLenum modes[] = { GL_FILL, GL_FILL, GL_FILL, GL_FILL, GL_LINE, GL_POINT };
    static const GLenum cull[] = { GL_FRONT, GL_BACK, GL_FRONT_AND_BACK };
-   const GLenum mf = chance(G.feat) ? PICK(modes) : GL_FILL;
+   const int mode = G.mode[GROUP_POLY];
+   const GLenum mf = mode == MODE_ANY ? PICK(modes) : GL_FILL;
    const GLenum mb = chance(0.8f) ? mf : PICK(modes);
    const bool cu = chance(0.2f);
    const GLenum cf = PICK(cull), ff = chance(0.5f) ? GL_CCW : GL_CW;
-   const bool of = chance(0.15f), ol = chance(0.05f), op = chance(0.05f);
+   const bool of = mode != MODE_OFF && chance(0.3f);
+   const bool ol = mode == MODE_ANY && chance(0.1f), op = mode == MODE_ANY && chance(0.1f);
    const float factor = rndr(-2.0f, 4.0f), units = rndr(-4.0f, 8.0f);
-   const bool st = chance(0.1f * G.feat);
+   const bool st = mode == MODE_ANY && chance(0.3f);
    L("polygon mode 0x%x 0x%x cull %d 0x%x front 0x%x offset %d %d %d %.9g %.9g stipple %d", mf, mb,
      cu, cf, ff, of, ol, op, factor, units, st);
    glPolygonMode(GL_FRONT, mf);
@@ -986,8 +1034,8 @@ static void send_vertex_attribs(void)
    }
    for (int u = 0; u < G.nunits; u++) {
       const float sc = chance(0.3f) ? 8.0f : 1.5f;
-      float q = chance(0.75f) ? 1.0f : rndr(0.2f, 2.0f);
-      if (chance(0.02f))
+      float q = chance(G.mode[GROUP_TEX] == MODE_ANY ? 0.7f : 0.95f) ? 1.0f : rndr(0.2f, 2.0f);
+      if (G.mode[GROUP_TEX] == MODE_ANY && chance(0.03f))
          q = chance(0.5f) ? 0.0f : -rndr(0.1f, 1.0f);
       glMultiTexCoord4f(GL_TEXTURE0 + (GLenum)u, rndr(-sc, sc), rndr(-sc, sc), rndr(-1.0f, 1.0f), q);
    }
@@ -1254,7 +1302,20 @@ static void gen_batch(uint64_t bseed, bool fast)
    G.cfg = pick_config(bseed);
    G.filled = true;
    rng_state = bseed;
-   G.feat = rnd(3) == 0 ? 1.0f : rnd(2) ? 0.4f : 0.1f;
+   /* how many groups are on: none (the plainest states), one alone, a
+    * few, each independently, or all of them anything */
+   static const int active[] = { 0, 0, 1, 1, 2, 3, -1, -2 };
+   const int k = PICK(active);
+   for (int g = 0; g < GROUP_COUNT; g++) {
+      const int r = rnd(20);
+      G.mode[g] = k == -2 ? MODE_ANY : k >= 0 ? MODE_OFF
+                : r < 8 ? MODE_OFF : r < 15 ? MODE_USUAL : MODE_ANY;
+   }
+   for (int i = 0; i < k; i++)
+      G.mode[rnd(GROUP_COUNT)] = chance(0.6f) ? MODE_USUAL : MODE_ANY;
+   L("groups (0 off, 1 usual, 2 any): stencil %d alpha %d blend %d mask %d fog %d tex %d light %d "
+     "poly %d", G.mode[0], G.mode[1], G.mode[2], G.mode[3], G.mode[4], G.mode[5], G.mode[6],
+     G.mode[7]);
    g_calls = 0;
    g_limit_case = -1;
    g_log_stopped = false;
