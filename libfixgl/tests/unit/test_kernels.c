@@ -365,7 +365,7 @@ static int kernel_index(any_kernel k)
 static long g_calls, g_limit;
 static bool g_record;
 static struct {
-   uint64_t tris, lines, points, pixels, cases, batches, fragments;
+   uint64_t tris, lines, points, pixels, cases, batches, fragments, gl_errors;
 } g_count;
 static bool g_count_on;
 
@@ -1387,8 +1387,14 @@ static void gen_batch(uint64_t bseed, bool fast)
       fgl_flush_vertices(fgl_get_current());
       if (fast && g_record)
          record_case();
-      if (g_count_on)
+      const GLenum err = glGetError();
+      if (g_count_on) {
          g_count.cases++;
+         if (err != GL_NO_ERROR) {
+            g_count.gl_errors++;
+            L("  (GL error 0x%x)", err);
+         }
+      }
    }
    glFinish();
 }
@@ -1670,8 +1676,8 @@ int main(int argc, char **argv)
           (unsigned long long)g_count.cases, (unsigned long long)prims,
           (unsigned long long)g_count.tris, (unsigned long long)g_count.lines,
           (unsigned long long)g_count.points, (unsigned long long)g_count.pixels, secs);
-   printf("kernels: %llu fragments shaded in the fast contexts\n",
-          (unsigned long long)g_count.fragments);
+   printf("kernels: %llu fragments shaded in the fast contexts; %llu cases raised a GL error\n",
+          (unsigned long long)g_count.fragments, (unsigned long long)g_count.gl_errors);
    printf("kernels: %zu kernel/state combinations drawn by %d fast kernels; %zu of %zu state keys "
           "fell back to the reference kernels\n",
           g_combos.n, g_nkernels, g_fallback.n, g_keys.n);
