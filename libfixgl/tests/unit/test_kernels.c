@@ -929,6 +929,15 @@ static void set_polygon(void)
    if (ol) glEnable(GL_POLYGON_OFFSET_LINE); else glDisable(GL_POLYGON_OFFSET_LINE);
    if (op) glEnable(GL_POLYGON_OFFSET_POINT); else glDisable(GL_POLYGON_OFFSET_POINT);
    glPolygonOffset(factor, units);
+   const bool clip = mode == MODE_ANY && chance(0.2f);
+   if (clip) {
+      const double eq[4] = { rndr(-1.0f, 1.0f), rndr(-1.0f, 1.0f), rndr(-0.2f, 0.2f), rndr(-0.5f, 0.5f) };
+      L("clip plane 0: %.17g %.17g %.17g %.17g", eq[0], eq[1], eq[2], eq[3]);
+      glClipPlane(GL_CLIP_PLANE0, eq);
+      glEnable(GL_CLIP_PLANE0);
+   } else {
+      glDisable(GL_CLIP_PLANE0);
+   }
    if (st) {
       GLubyte pat[128];
       for (int i = 0; i < 128; i++)
@@ -1239,17 +1248,27 @@ static void draw_pixels(void)
    glWindowPos2i(x, y);
    const float zoom = chance(0.8f) ? 1.0f : 2.0f;
    glPixelZoom(zoom, zoom);
-   int kind = rnd(4);
+   int kind = rnd(5);
    if (kind == 2 && !G.cfg.depth)
       kind = 0;
    if (kind == 3 && !G.cfg.stencil)
       kind = 1;
-   L("  pixels kind %d at %d %d size %dx%d zoom %g (call %ld)", kind, x, y, w, h, zoom, g_calls);
+   static const GLenum formats[] = { GL_RGBA, GL_RGBA, GL_BGRA, GL_ABGR_EXT, GL_RGB, GL_LUMINANCE,
+                                     GL_LUMINANCE_ALPHA };
+   const GLenum format = PICK(formats);
+   L("  pixels kind %d at %d %d size %dx%d zoom %g format 0x%x (call %ld)", kind, x, y, w, h, zoom,
+     format, g_calls);
    if (kind == 0) {
       GLubyte img[9 * 9 * 4];
       for (int i = 0; i < w * h * 4; i++)
          img[i] = (GLubyte)rnd(256);
-      glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, img);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glDrawPixels(w, h, format, GL_UNSIGNED_BYTE, img);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+   } else if (kind == 4) {
+      const int sx = rnd(G.cfg.w), sy = rnd(G.cfg.h);
+      L("  copy pixels from %d %d", sx, sy);
+      glCopyPixels(sx, sy, w, h, GL_COLOR);
    } else if (kind == 1) {
       GLubyte bm[9 * 2];
       for (int i = 0; i < 18; i++)
