@@ -8,39 +8,52 @@
  * a small buffer whose width is often not a multiple of 4): one as usual,
  * which chooses the fast kernels the CPU runs, and one created under
  * FIXGL_KERNELS=reference.  The same random GL call stream (the batch's
- * seed replayed) is drawn into both: a clear, then cases, each changing a
- * random subset of the whole GL 1.x state (depth function, mask and range,
- * stencil functions, operations and masks, alpha test, blend equation,
- * factors and colour, logic op, colour mask, scissor, shade model
- * including GL_PHONG_WIN, lighting with Blinn-Phong and Cook-Torrance
- * materials, two-sided lighting, colour material, separate specular,
- * fog modes, coordinate source and distance mode, up to three texture
- * units with 1D/2D textures of every base format, filter, wrap, LOD
- * parameter and environment (combine, crossbar, dot3, combine3,
- * combine4), polygon modes, culling, offsets and stipple, line width,
- * stipple and smoothing, point size and smoothing, projections) and then
- * drawing random primitives under it: triangles, strips, fans, quads,
- * polygons and rectangles (small, big, edges on pixel centres, w near 0,
- * perspective, partly off-screen, degenerate), lines, points, and a few
- * glDrawPixels / glBitmap.  The internal colour, depth and stencil
+ * seed replayed) is drawn into both: four random textures, a clear, then
+ * cases, each changing a random subset of the whole GL 1.x state and
+ * drawing random primitives under it.  The state: depth function, mask
+ * and range; stencil function, operations and masks; alpha test; blend
+ * equation, factors and colour; logic op; colour mask; draw buffer;
+ * scissor; viewport; shade model including GL_PHONG_WIN; lighting with
+ * Blinn-Phong and Cook-Torrance materials, spots, attenuation, two-sided
+ * lighting, local viewer, colour material and separate specular; fog
+ * modes, coordinate source and distance mode; up to three texture units
+ * with 1D/2D textures of every base format and several sized ones, every
+ * filter, wrap (mirror and border ones included), LOD bias, min/max LOD
+ * and base level, and every environment (combine, crossbar, dot3,
+ * combine3, combine4), texgen and texture matrices; polygon modes,
+ * culling, front face, offsets, stipple and a user clip plane; line width,
+ * stipple and smoothing; point size and smoothing; projections (clip
+ * coordinates with w near 0 and behind the eye, pixel ortho, frustum).
+ * Each batch draws its groups of optional state (stencil, alpha test,
+ * blending, logic op and masks, fog, texturing, lighting, polygon) as
+ * off, as real programs set them, or anything, with none, one, a few or
+ * all of them on, so that plain states, each feature alone and every mix
+ * come up often.  The primitives: triangles, strips, fans, quads,
+ * polygons, rectangles (tiny to huge, vertices on pixel corners and
+ * centres and the subpixel grid, perspective, partly off-screen,
+ * degenerate, redrawn at equal depths), lines, line strips and loops,
+ * points, vertex arrays, and a few glDrawPixels (colour, depth, stencil),
+ * glBitmap and glCopyPixels.  The internal colour, depth and stencil
  * buffers of the two contexts are then compared byte for byte.
  *
  * Nothing here depends on which kernels exist: the comparison covers any
  * kernel r_choose_kernels picks.  The coverage count reads the kernels
- * the fast context chose (kernels_of below: r_state.tri_kernel today;
- * list new kernel fields there) after each case, with a key of the raster
- * state that matters to kernels (state_key), and prints the distinct
- * (kernel, state key) combinations a fast kernel drew, the state keys
- * that fell back to the reference kernels and the primitives drawn.  On
- * a CPU with AVX2 and FMA it fails when no fast kernel was exercised.
+ * the fast context chose (kernel_of below: r_state.tri_kernel today;
+ * list new kernel fields there) after each case that drew filled
+ * triangles, with a key of the raster state that matters to kernels
+ * (make_key), and prints the distinct (kernel, state key) combinations a
+ * fast kernel drew, the state keys that fell back to the reference
+ * kernels, the primitives and the fragments drawn.  Where fast kernels
+ * can run (the library built with them, a CPU with AVX2 and FMA) it fails
+ * when none was exercised; elsewhere it says so and passes.
  *
- * On a mismatch it replays the batch draw call by draw call to the first
- * call after which the buffers differ, and prints the seed, batch, case,
- * the GL calls of the batch up to it, the raster state and the first
- * differing pixel, then fails.
+ * On a mismatch it replays the batch with fresh contexts, draw call by
+ * draw call, to the first call after which the buffers differ, and prints
+ * the seed, batch, case, the GL calls of the batch up to that call, the
+ * fast context's raster state and the first differing pixel, then fails.
  *
- * Before the run a self-check perturbs one byte of each buffer of a drawn
- * batch and requires the comparison to notice.
+ * Before the run a self-check changes one byte of each buffer of a drawn
+ * pair and requires the comparison to notice it.
  *
  *   --seed N      the run's seed (default 1)
  *   --count N     primitives to draw at least (default 200000)
