@@ -34,6 +34,9 @@ void m_shade_point8_portable(const struct m_shade_env *env, const float n[3][M_S
 
 #if defined(M_SHADE_HAVE_AVX2)
 
+/* Runs inside the ifunc resolver, at relocation time, before a sanitizer's
+ * runtime is set up: not instrumented. */
+__attribute__((no_sanitize("address", "undefined")))
 bool m_shade_point8_avx2_supported(void)
 {
    __builtin_cpu_init();
@@ -47,6 +50,7 @@ typedef void m_shade_point8_fn(const struct m_shade_env *, const float[3][M_SHAD
 
 #if defined(__ELF__) && !defined(__clang__)
 /* an ifunc: the dynamic loader runs the resolver once, at relocation */
+__attribute__((no_sanitize("address", "undefined")))
 static m_shade_point8_fn *resolve_point8(void)
 {
    return m_shade_point8_avx2_supported() ? m_shade_point8_avx2 : m_shade_point8_portable;
