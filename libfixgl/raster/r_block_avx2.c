@@ -65,6 +65,19 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
                      _mm256_mul_ps(eval8(&ap[3], fx, fy), rw));
 }
 
+/* the alpha test's operand: the alpha the colour above converts */
+static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const struct r_tri_setup *ts,
+                                              const struct block_stage *st, int variant,
+                                              __m256 fx, __m256 fy)
+{
+   (void)rs; (void)st;
+   if (variant == FLAT)
+      return _mm256_set1_ps(ts->flat[R_FS_COLOR0][3]);
+   const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
+   return _mm256_mul_ps(eval8(&ts->ap[R_FS_COLOR0][3], fx, fy), rw);
+}
+
+#define BLOCK_STAGE_HAS_ALPHA 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \
@@ -97,6 +110,15 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 
 TRI_KERNELS_BLEND(opaque, BL_NONE)
 TRI_KERNELS_BLEND(alpha, BL_ALPHA)
+TRI_KERNELS_BLEND(blend, BL_BLEND)
+TRI_KERNELS_BLEND(logic, BL_LOGIC)
+TRI_KERNELS_BLEND(blend_at, BL_BLEND_AT)
+TRI_KERNELS_BLEND(logic_at, BL_LOGIC_AT)
+
+/* [enum blend] */
+static const r_tri_kernel(*const tables[])[3][2] = {
+   opaque_table, alpha_table, blend_table, logic_table, blend_at_table, logic_at_table,
+};
 
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
 {
@@ -107,16 +129,26 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
        rs->fog_mode != R_FOG_NONE || rs->phong || rs->pix || rs->aa != R_AA_NONE ||
        rs->stipple || !rs->color)
       return NULL;
-   /* the fragment operations: depth test and store, or with blending
-    * SRC_ALPHA / ONE_MINUS_SRC_ALPHA (r_fragment_ops' order: no alpha
-    * test, stencil test, logic op; every channel written) */
+   /* the fragment operations (r_fragment_ops): the alpha test on the
+    * colour's precision, no stencil test; then the depth test and store,
+    * or blending, a logic op and the colour mask in their general form,
+    * or SRC_ALPHA / ONE_MINUS_SRC_ALPHA / ADD on every channel (the common
+    * case, its own kernels) */
    enum blend bl = BL_NONE;
    if (rs->full_ops) {
-      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
-          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
-          rs->blend_dst != R_BF_INV_SRC_ALPHA)
+      if (rs->stencil_test || (rs->alpha_test && rs->alpha_test_float))
          return NULL;
-      bl = BL_ALPHA;
+      if (rs->logic_op)
+         bl = BL_LOGIC;
+      else if (!rs->blend)
+         bl = BL_LOGIC;   /* COPY under the colour mask */
+      else if (!rs->alpha_test && rs->color_mask == 0xfu && rs->blend_eq == R_BLEND_ADD &&
+               rs->blend_src == R_BF_SRC_ALPHA && rs->blend_dst == R_BF_INV_SRC_ALPHA)
+         bl = BL_ALPHA;
+      else
+         bl = BL_BLEND;
+      if (rs->alpha_test)
+         bl = bl == BL_BLEND ? BL_BLEND_AT : BL_LOGIC_AT;
    }
    enum zfmt zf = ZF_NONE;
    if (rs->depth_test) {
@@ -127,6 +159,5 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
       default:         return NULL;
       }
    }
-   const r_tri_kernel(*t)[3][2] = bl == BL_ALPHA ? alpha_table : opaque_table;
-   return t[!flat_color][zf][rs->depth_write];
+   return tables[bl][!flat_color][zf][rs->depth_write];
 }

@@ -9,12 +9,20 @@
 #define FGL_R_BLOCK_AVX2_H
 
 #include "r_kernel.h"
+#include "r_blend.h"
 
 #include <immintrin.h>
 #include <string.h>
 
 enum zfmt { ZF_NONE, ZF_16, ZF_24 };
-enum blend { BL_NONE, BL_ALPHA };
+/* the colour operations after the depth test:
+ *   BL_NONE   store
+ *   BL_ALPHA  SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD, every channel written
+ *   BL_BLEND  any blend factors and equation, any colour mask (gen_ops)
+ *   BL_LOGIC  a logic op (COPY without GL_COLOR_LOGIC_OP), any colour mask
+ *   BL_BLEND_AT, BL_LOGIC_AT  the same after an alpha test (of a stage
+ *             that defines block_stage_alpha) */
+enum blend { BL_NONE, BL_ALPHA, BL_BLEND, BL_LOGIC, BL_BLEND_AT, BL_LOGIC_AT };
 
 #define ALWAYS_INLINE inline __attribute__((always_inline))
 
@@ -148,7 +156,9 @@ static inline bool compare_u32(enum r_func f, uint32_t a, uint32_t b)
 }
 
 /* The lanes of a half one at a time (a block reaching past the buffer's
- * right edge): the same integer operations as the vector path. */
+ * right edge): the same integer operations as the vector path, the
+ * general colour operations by the reference's own code (r_blend.h).
+ * m8: the lanes covered and passing the alpha test. */
 static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, const uint32_t zv[8],
                          const uint32_t src[8], enum zfmt zf, bool zwrite, enum blend bl)
 {
@@ -171,19 +181,146 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
       uint8_t *dst = rs->color + 4 * idx;
       uint8_t s[4];
       memcpy(s, &src[i], 4);
-      if (bl == BL_ALPHA) {
-         const unsigned a = s[3];
-         uint8_t d[4] = { dst[0], dst[1], dst[2], rs->dst_alpha_one ? 255 : dst[3] };
-         for (int c = 0; c < 4; c++) {
-            const unsigned v = r_block_mul_u8(s[c], a) + r_block_mul_u8(d[c], 255u - a);
-            dst[c] = (uint8_t)(v > 255u ? 255u : v);
-         }
-      } else {
+      if (bl == BL_NONE) {
          memcpy(dst, s, 4);
+         continue;
       }
+      const uint8_t d[4] = { dst[0], dst[1], dst[2], rs->dst_alpha_one ? 255 : dst[3] };
+      uint8_t out[4];
+      for (int c = 0; c < 4; c++) {
+         if (bl == BL_ALPHA) {
+            const unsigned v = r_block_mul_u8(s[c], s[3]) + r_block_mul_u8(d[c], 255u - s[3]);
+            out[c] = (uint8_t)(v > 255u ? 255u : v);
+         } else if (bl == BL_BLEND) {
+            out[c] = blend_channel(rs, c, s, d);
+         } else {
+            out[c] = rs->logic_op ? logic_op(rs->logic_op_mode, s[c], d[c]) : s[c];
+         }
+      }
+      for (int c = 0; c < 4; c++)
+         if (bl == BL_ALPHA || (rs->color_mask & (1u << c)))
+            dst[c] = out[c];
    }
 }
 
+/* The general colour operations in 8 lanes, their state as masks built
+ * once per triangle (gen_ops_init), so no lane loop tests the state:
+ *  - a blend factor is the OR of the candidate vectors (src, src alpha,
+ *    dst, dst alpha, constant, constant alpha, alpha saturate) each ANDed
+ *    with an all-ones or all-zeros mask, XOR 0xff for the ONE_MINUS_
+ *    factors (255 - x == x ^ 255 on bytes); ZERO is no candidate, ONE is
+ *    ZERO inverted (r_blend.h blend_factor);
+ *  - the equation is the OR of the five results ANDed with masks;
+ *  - a logic op is its truth table: (s & d & t1) | (s & ~d & t2) |
+ *    (~s & d & t4) | (~s & ~d & t8), each t all ones or zeros;
+ *  - the colour mask is a byte mask between the result and the buffer;
+ *  - the alpha test compares like the depth test (three masks). */
+struct gen_ops {
+   __m256i fsel[2][7], finv[2];   /* [src, dst factor][candidate] */
+   __m256i konst, konst_a;        /* the blend colour, 16-bit lanes */
+   __m256i eq[5];
+   __m256i lop[4];
+   __m256i cmask;                 /* bytes written */
+   struct depth_fn afn;
+   __m256i aref;
+};
+
+static inline __m256i all_if(bool b)
+{
+   return _mm256_set1_epi32(b ? -1 : 0);
+}
+
+static inline void gen_ops_init(struct gen_ops *g, const struct r_state *rs)
+{
+   const enum r_blend_factor f[2] = { rs->blend_src, rs->blend_dst };
+   for (int k = 0; k < 2; k++) {
+      const enum r_blend_factor x = f[k];
+      g->fsel[k][0] = all_if(x == R_BF_SRC_COLOR || x == R_BF_INV_SRC_COLOR);
+      g->fsel[k][1] = all_if(x == R_BF_SRC_ALPHA || x == R_BF_INV_SRC_ALPHA);
+      g->fsel[k][2] = all_if(x == R_BF_DST_COLOR || x == R_BF_INV_DST_COLOR);
+      g->fsel[k][3] = all_if(x == R_BF_DST_ALPHA || x == R_BF_INV_DST_ALPHA);
+      g->fsel[k][4] = all_if(x == R_BF_CONST_COLOR || x == R_BF_INV_CONST_COLOR);
+      g->fsel[k][5] = all_if(x == R_BF_CONST_ALPHA || x == R_BF_INV_CONST_ALPHA);
+      g->fsel[k][6] = all_if(x == R_BF_SRC_ALPHA_SATURATE);
+      const bool inv = x == R_BF_ONE || x == R_BF_INV_SRC_COLOR || x == R_BF_INV_SRC_ALPHA ||
+                       x == R_BF_INV_DST_COLOR || x == R_BF_INV_DST_ALPHA ||
+                       x == R_BF_INV_CONST_COLOR || x == R_BF_INV_CONST_ALPHA;
+      g->finv[k] = _mm256_set1_epi16(inv ? 0xff : 0);
+   }
+   const uint8_t *bc = rs->blend_color;
+   g->konst = _mm256_setr_epi16(bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3],
+                                bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3]);
+   g->konst_a = _mm256_set1_epi16(bc[3]);
+   for (int e = 0; e < 5; e++)
+      g->eq[e] = all_if((int)rs->blend_eq == e);
+   /* R_BLEND_ADD .. R_BLEND_MAX in enum order; an unknown one adds, as
+    * blend_channel's default */
+   if ((unsigned)rs->blend_eq > R_BLEND_MAX)
+      g->eq[R_BLEND_ADD] = all_if(true);
+   const unsigned mode = rs->logic_op ? rs->logic_op_mode : 0x3u;   /* COPY */
+   for (int t = 0; t < 4; t++)
+      g->lop[t] = all_if(mode & (1u << t));
+   uint32_t cm = 0;
+   for (int c = 0; c < 4; c++)
+      if (rs->color_mask & (1u << c))
+         cm |= 0xffu << (8 * c);
+   g->cmask = _mm256_set1_epi32((int)cm);
+   g->afn = depth_fn(rs->alpha_func);
+   g->aref = _mm256_set1_epi32(rs->alpha_ref);
+}
+
+/* blend_channel on the 4 pixels of one unpacked half (16-bit lanes) */
+static ALWAYS_INLINE __m256i gen_blend16(const struct gen_ops *g, __m256i s, __m256i d)
+{
+   const __m256i amask = _mm256_setr_epi8(6, 7, 6, 7, 6, 7, 6, 7, 14, 15, 14, 15, 14, 15, 14, 15,
+                                          6, 7, 6, 7, 6, 7, 6, 7, 14, 15, 14, 15, 14, 15, 14, 15);
+   const __m256i c255 = _mm256_set1_epi16(0xff);
+   const __m256i alpha_lanes = _mm256_setr_epi16(0, 0, 0, 0xff, 0, 0, 0, 0xff,
+                                                 0, 0, 0, 0xff, 0, 0, 0, 0xff);
+   const __m256i sa = _mm256_shuffle_epi8(s, amask), da = _mm256_shuffle_epi8(d, amask);
+   const __m256i sat = _mm256_or_si256(_mm256_min_epu16(sa, _mm256_xor_si256(da, c255)), alpha_lanes);
+   const __m256i cand[7] = { s, sa, d, da, g->konst, g->konst_a, sat };
+   __m256i f[2];
+   for (int k = 0; k < 2; k++) {
+      __m256i v = _mm256_setzero_si256();
+      for (int j = 0; j < 7; j++)
+         v = _mm256_or_si256(v, _mm256_and_si256(cand[j], g->fsel[k][j]));
+      f[k] = _mm256_xor_si256(v, g->finv[k]);
+   }
+   const __m256i sm = mul_u8x16(s, f[0]), dm = mul_u8x16(d, f[1]);
+   const __m256i r[5] = {
+      _mm256_adds_epu16(sm, dm),   /* at most 510: packus saturates it */
+      _mm256_subs_epu16(sm, dm),
+      _mm256_subs_epu16(dm, sm),
+      _mm256_min_epu16(sm, dm),
+      _mm256_max_epu16(sm, dm),
+   };
+   __m256i out = _mm256_setzero_si256();
+   for (int e = 0; e < 5; e++)
+      out = _mm256_or_si256(out, _mm256_and_si256(r[e], g->eq[e]));
+   return out;
+}
+
+/* the colour written over dst (the buffer's bytes) by BL_BLEND or
+ * BL_LOGIC, the colour mask applied; d is dst with dst_alpha_one */
+static ALWAYS_INLINE __m256i gen_color(const struct gen_ops *g, enum blend bl, __m256i src,
+                                       __m256i d, __m256i dst)
+{
+   __m256i out;
+   if (bl == BL_BLEND) {
+      const __m256i zero = _mm256_setzero_si256();
+      const __m256i lo = gen_blend16(g, _mm256_unpacklo_epi8(src, zero), _mm256_unpacklo_epi8(d, zero));
+      const __m256i hi = gen_blend16(g, _mm256_unpackhi_epi8(src, zero), _mm256_unpackhi_epi8(d, zero));
+      out = _mm256_packus_epi16(lo, hi);
+   } else {
+      out = _mm256_or_si256(
+         _mm256_or_si256(_mm256_and_si256(_mm256_and_si256(src, d), g->lop[0]),
+                         _mm256_and_si256(_mm256_andnot_si256(d, src), g->lop[1])),
+         _mm256_or_si256(_mm256_and_si256(_mm256_andnot_si256(src, d), g->lop[2]),
+                         _mm256_andnot_si256(_mm256_or_si256(src, d), g->lop[3])));
+   }
+   return _mm256_or_si256(_mm256_and_si256(out, g->cmask), _mm256_andnot_si256(g->cmask, dst));
+}
 
 /* four channel vectors (floats) to packed RGBA8 lanes, as r_float_to_unorm8
  * per channel */

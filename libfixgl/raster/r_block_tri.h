@@ -1,6 +1,9 @@
 #ifndef BLOCK_STAGE_KILLS
 #define BLOCK_STAGE_KILLS 0
 #endif
+#ifndef BLOCK_STAGE_HAS_ALPHA
+#define BLOCK_STAGE_HAS_ALPHA 0
+#endif
 
 /*
  * r_block_tri.h: the triangle block walk, a template.  The including file
@@ -14,6 +17,10 @@
  *                                      at (x, y) (lane coordinates fx, fy;
  *                                      m8 the covered lanes) and may clear
  *                                      lanes of live (a kill)
+ * and, with BLOCK_STAGE_HAS_ALPHA 1,
+ *   block_stage_alpha(rs, ts, &stage, variant, fx, fy)
+ *                                      the fragment alpha as a float (the
+ *                                      alpha test's operand, NaN kept)
  * all ALWAYS_INLINE, then instantiates tri_blocks with constant arguments.
  * Fragments are counted as shaded before the stage (its kills included),
  * as the reference counts them.
@@ -22,7 +29,7 @@
  *   variant the stage's variant (block_stage_*)
  *   zf      the depth test's buffer (ZF_NONE: no depth test)
  *   zwrite  depth writes
- *   bl      the blend (BL_ALPHA: SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD) */
+ *   bl      the colour operations (r_block_avx2.h enum blend) */
 static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tri_setup *ts,
                                      const struct r_tri_cover *cv, const int variant,
                                      const enum zfmt zf, const bool zwrite, const enum blend bl)
@@ -46,6 +53,13 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    block_stage_prepare(rs, ts, variant, &stage);
    const struct depth_fn fn = depth_fn(rs->depth_func);
    const __m256i dst_or = _mm256_set1_epi32(rs->dst_alpha_one ? (int)0xff000000u : 0);
+   /* the general colour operations and the alpha test */
+   const bool alpha_test = bl == BL_BLEND_AT || bl == BL_LOGIC_AT;
+   const enum blend cop = bl == BL_BLEND_AT ? BL_BLEND : bl == BL_LOGIC_AT ? BL_LOGIC : bl;
+   (void)alpha_test;   /* (read only for a stage with block_stage_alpha) */
+   struct gen_ops gops;
+   if (cop == BL_BLEND || cop == BL_LOGIC)
+      gen_ops_init(&gops, rs);
    uint64_t fragments = 0;
 
    const int32_t bx0 = cv->x0 & ~3, by0 = cv->y0 & ~3;
@@ -100,6 +114,17 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                if (!lm8)
                   continue;
             }
+#if BLOCK_STAGE_HAS_ALPHA
+            if (alpha_test) {
+               /* r_fragment_ops: round_even(clamp01(a) * 255) (NaN -> 1,
+                * as depth_unorm clamps) against the reference */
+               const __m256 a = block_stage_alpha(rs, ts, &stage, variant, fx, fy);
+               live = _mm256_and_si256(live, depth_pass(&gops.afn, depth_unorm(a, 255.0f), gops.aref));
+               lm8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(live));
+               if (!lm8)
+                  continue;
+            }
+#endif
 
             /* the depth value (lp_bld_interp.c: interpolated z + offset) */
             __m256i zv = _mm256_setzero_si256();
@@ -112,7 +137,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                uint32_t zl[8], sl[8];
                _mm256_storeu_si256((__m256i *)zl, zv);
                _mm256_storeu_si256((__m256i *)sl, src);
-               finish_lanes(rs, bx, y, lm8, zl, sl, zf, zwrite, bl);
+               finish_lanes(rs, bx, y, lm8, zl, sl, zf, zwrite, cop);
                continue;
             }
 
@@ -144,8 +169,10 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             uint32_t *cp = (uint32_t *)rs->color + idx;
             const __m256i dst = load_rows32(cp, stride, rm);
             __m256i out = src;
-            if (bl == BL_ALPHA)
+            if (cop == BL_ALPHA)
                out = blend_alpha(src, _mm256_or_si256(dst, dst_or));
+            else if (cop == BL_BLEND || cop == BL_LOGIC)
+               out = gen_color(&gops, cop, src, _mm256_or_si256(dst, dst_or), dst);
             store_rows32(cp, stride, rm, _mm256_blendv_epi8(dst, out, pass));
          }
       }

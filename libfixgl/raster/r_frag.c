@@ -9,6 +9,7 @@
  * fragment came from.
  */
 #include "r_state.h"
+#include "r_blend.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -115,93 +116,7 @@ static uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op, uint8_
    }
 }
 
-/* gallivm's lp_build_mul for unorm8 [S: gallivm/lp_bld_arit.c:lp_build_mul_norm]:
- * t = a*b, (t + (t >> 8) + 128) >> 8.  This is round(a*b/255) except for
- * 24 of the 65536 pairs, where it is one less (152 * 229 gives 136, not
- * 137; fragment/blend_mul_exhaustive). */
-static inline unsigned mul_u8(unsigned a, unsigned b)
-{
-   const unsigned t = a * b;
-   return (t + (t >> 8) + 0x80u) >> 8;
-}
-
-/* The blend factor for channel c [S: llvmpipe/lp_bld_blend_aos.c:
- * lp_build_blend_factor_unswizzled, lp_build_blend_factor_swizzle]: the
- * *_ALPHA factors broadcast alpha; for the alpha channel, SRC_ALPHA_SATURATE
- * is ONE; for rgb it is min(src.a, 1 - dst.a). */
-static unsigned blend_factor(const struct r_state *rs, enum r_blend_factor f, int c,
-                             const uint8_t src[4], const uint8_t dst[4])
-{
-   switch (f) {
-   case R_BF_ZERO:            return 0;
-   case R_BF_ONE:             return 255;
-   case R_BF_SRC_COLOR:       return src[c];
-   case R_BF_INV_SRC_COLOR:   return 255u - src[c];
-   case R_BF_SRC_ALPHA:       return src[3];
-   case R_BF_INV_SRC_ALPHA:   return 255u - src[3];
-   case R_BF_DST_COLOR:       return dst[c];
-   case R_BF_INV_DST_COLOR:   return 255u - dst[c];
-   case R_BF_DST_ALPHA:       return dst[3];
-   case R_BF_INV_DST_ALPHA:   return 255u - dst[3];
-   case R_BF_SRC_ALPHA_SATURATE: {
-      if (c == 3)
-         return 255;
-      const unsigned inv_da = 255u - dst[3];
-      return src[3] < inv_da ? src[3] : inv_da;
-   }
-   case R_BF_CONST_COLOR:     return rs->blend_color[c];
-   case R_BF_INV_CONST_COLOR: return 255u - rs->blend_color[c];
-   case R_BF_CONST_ALPHA:     return rs->blend_color[3];
-   case R_BF_INV_CONST_ALPHA: return 255u - rs->blend_color[3];
-   default:                   return 0;
-   }
-}
-
-/* [S: llvmpipe/lp_bld_blend.c:lp_build_blend, lp_build_blend_func] on
- * unorm8: each term is a normalized multiply, then a saturating add or
- * subtract, or an unsigned min/max (whose factors the state tracker sets
- * to ONE, st_atom_blend.c).  The lerp shortcut needs equal rgb and alpha
- * factor pairs with complementary src/dst factors, which GL 1.x cannot
- * produce (src == dst then). */
-static uint8_t blend_channel(const struct r_state *rs, int c,
-                             const uint8_t src[4], const uint8_t dst[4])
-{
-   const unsigned s = mul_u8(src[c], blend_factor(rs, rs->blend_src, c, src, dst));
-   const unsigned d = mul_u8(dst[c], blend_factor(rs, rs->blend_dst, c, src, dst));
-   switch (rs->blend_eq) {
-   case R_BLEND_SUBTRACT:         return (uint8_t)(s > d ? s - d : 0);
-   case R_BLEND_REVERSE_SUBTRACT: return (uint8_t)(d > s ? d - s : 0);
-   case R_BLEND_MIN:              return (uint8_t)(s < d ? s : d);
-   case R_BLEND_MAX:              return (uint8_t)(s > d ? s : d);
-   case R_BLEND_ADD:
-   default:                       return (uint8_t)(s + d > 255u ? 255u : s + d);
-   }
-}
-
-/* [S: gallivm/lp_bld_logicop.c:lp_build_logicop], indexed by the GL op
- * minus GL_CLEAR. */
-static uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
-{
-   switch (mode) {
-   case 0x0: return 0;                        /* CLEAR */
-   case 0x1: return s & d;                    /* AND */
-   case 0x2: return s & (uint8_t)~d;          /* AND_REVERSE */
-   case 0x3: return s;                        /* COPY */
-   case 0x4: return (uint8_t)~s & d;          /* AND_INVERTED */
-   case 0x5: return d;                        /* NOOP */
-   case 0x6: return s ^ d;                    /* XOR */
-   case 0x7: return s | d;                    /* OR */
-   case 0x8: return (uint8_t)~(s | d);        /* NOR */
-   case 0x9: return (uint8_t)~(s ^ d);        /* EQUIV */
-   case 0xa: return (uint8_t)~d;              /* INVERT */
-   case 0xb: return s | (uint8_t)~d;          /* OR_REVERSE */
-   case 0xc: return (uint8_t)~s;              /* COPY_INVERTED */
-   case 0xd: return (uint8_t)~s | d;          /* OR_INVERTED */
-   case 0xe: return (uint8_t)~(s & d);        /* NAND */
-   case 0xf:
-   default:  return 0xff;                     /* SET */
-   }
-}
+/* mul_u8, blend_channel, logic_op: r_blend.h (the block kernels share them) */
 
 /* nir fsat as llvmpipe lowers it, fmin(fmax(x, 0), 1) with gallivm's
  * NaN-returns-the-other-operand min/max: NaN gives 0 */
