@@ -299,9 +299,10 @@ struct fgl_pixel_attrib {
    float ZoomX, ZoomY;
 };
 
-/* GL_EVAL_BIT [S: main/mtypes.h, gl_eval_attrib]: the map grids (glMapGrid
- * comes with the evaluators; the GL_MAPn_* and GL_AUTO_NORMAL enables are
- * stored with the pending capabilities, main/enable.c) */
+/* GL_EVAL_BIT [S: main/mtypes.h, gl_eval_attrib]: the map grids of
+ * glMapGrid (main/eval.c); the GL_MAPn_* and GL_AUTO_NORMAL enables are
+ * stored with the maps (struct fgl_eval_maps below, main/eval.c
+ * fgl_eval_cap_flag) */
 struct fgl_eval_attrib {
    GLint MapGrid1un;
    float MapGrid1u1, MapGrid1u2, MapGrid1du;

@@ -542,7 +542,8 @@ void fgl_update_state(struct fgl_context *ctx)
 
    if (dirty & (FGL_NEW_VIEWPORT | FGL_NEW_BUFFERS)) {
       /* _mesa_get_viewport_xform, then the state tracker's flip to the
-       * y-down window buffer (llvmpipe-facts.md §0) */
+       * y-down window buffer (ORACLE-NOTES.md "Window coordinates and the
+       * y-down buffer") */
       const struct fgl_viewport_attrib *vp = &ctx->Viewport;
       const float half_w = 0.5f * (float)vp->Width;
       const float half_h = 0.5f * (float)vp->Height;

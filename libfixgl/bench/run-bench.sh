@@ -96,8 +96,8 @@ echo "fragments a frame."
 echo "Breakdown (fixgl's counters, fixglStats, on for a few extra frames only):"
 echo "ns/frag = raster core time after primitive setup / fragments shaded;"
 echo "vertex, setup, frags, other = shares of the frame's wall-clock time (other:"
-echo "glClear, glFinish, state outside vertex batches); n/a = the raster core's"
-echo "counters read 0 (not counted by this libfixgl yet)."
+echo "glClear, glFinish, state outside vertex batches); n/a = nothing to divide"
+echo "by, or the raster core's counters read 0 (a libfixgl that does not count them)."
 
 # report.html: the chart (chart.awk: the drawing of chart.png too) and both
 # tables
@@ -134,8 +134,9 @@ frame time in the vertex stage (everything in a vertex batch outside the
 raster core: state validation, transform, lighting, clipping, primitive
 assembly), in primitive setup, and in coverage and fragments; other: the
 rest (glClear, glFinish's copy, state changes outside vertex batches).
-n/a: the raster core's counters read 0 (this libfixgl does not count them
-yet), so the vertex stage cannot be told from the raster core either.</p>
+n/a: nothing to divide by, or the raster core's counters read 0 (a libfixgl
+that does not count them), so the vertex stage cannot be told from the raster
+core either.</p>
 </body></html>
 EOF
 } >"$report_dir/report.html"

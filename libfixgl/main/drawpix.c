@@ -412,7 +412,7 @@ static bool color_component(GLenum type, const uint8_t *src, int i, float *out)
 
 /* The client colour image as the RGBA texels the oracle samples
  * (missing channels 0, alpha 1; luminance in r, g, b), rows bottom-up.
- * False for the formats and types fixgl does not draw yet. */
+ * False for the formats and types it leaves to unpack_other_texels. */
 static bool unpack_color_texels(const struct fgl_pixelstore *p, const void *pixels,
                                 int width, int height, GLenum format, GLenum type,
                                 float *dst)

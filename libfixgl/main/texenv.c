@@ -264,7 +264,8 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
       env_flush(ctx);
       *lod_bias = param[0];
    } else {
-      /* GL_POINT_SPRITE's GL_COORD_REPLACE comes with point sprites */
+      /* GL_POINT_SPRITE's GL_COORD_REPLACE: fixgl has no point sprites
+       * (ORACLE-NOTES.md "Textures", not modelled) */
       fgl_error(ctx, GL_INVALID_ENUM);
    }
 }

@@ -2,7 +2,8 @@
  * The fragment stage shared by triangles, lines and points: the
  * fixed-function fragment program (r_fragment_shader) and the per-fragment
  * operations in the specification's order (r_fragment_ops), with the
- * oracle's conversions (llvmpipe-facts.md §1, §2, §6).
+ * oracle's conversions (ORACLE-NOTES.md "Colour conversion", "Depth
+ * conversion and polygon offset", "Blending, alpha test, dithering").
  *
  * Primitives hand every covered pixel here with its interpolated depth and
  * fragment-shader inputs; nothing in this file knows which primitive a
@@ -27,7 +28,8 @@ uint8_t r_float_to_unorm8(float c)
 }
 
 /* The fragment shader restricts depth to [0,1] (lp_build_depth_clamp),
- * then converts with RNE (llvmpipe-facts.md §1). */
+ * then converts with RNE (ORACLE-NOTES.md "Depth conversion and polygon
+ * offset"). */
 uint32_t r_depth_to_z24(float z)
 {
    return (uint32_t)r_round_even(r_clamp01(z) * 16777215.0f);

@@ -1,6 +1,6 @@
 /*
- * Non-antialiased lines, bit-exact with llvmpipe (llvmpipe-facts.md §3
- * "Lines"; [S: llvmpipe/lp_setup_line.c:try_setup_line]).
+ * Non-antialiased lines, bit-exact with llvmpipe (ORACLE-NOTES.md "Line
+ * and point rasterization"; [S: llvmpipe/lp_setup_line.c:try_setup_line]).
  *
  * A line is a parallelogram: its two ends are snapped with util_iround
  * (round half away from zero) after the "diamond exit" emulation moved them
@@ -105,7 +105,7 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
    float color[4];
    if (rs->tex_units) {
       /* the quad's texture coordinates from the line's planes
-       * (llvmpipe-facts.md §5) */
+       * (ORACLE-NOTES.md "Texture sampling: level of detail per quad") */
       static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
       struct r_fs_quad quad;
       const int qx = px & ~1, qy = py & ~1;

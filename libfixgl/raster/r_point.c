@@ -1,7 +1,7 @@
 /*
  * Non-antialiased points, bit-exact with llvmpipe's legacy (non-sprite)
- * point rasterization (llvmpipe-facts.md §3 "Points"; [S: llvmpipe/
- * lp_setup_point.c:try_setup_point, legacy_points path]):
+ * point rasterization (ORACLE-NOTES.md "Line and point rasterization";
+ * [S: llvmpipe/lp_setup_point.c:try_setup_point, legacy_points path]):
  *  - the window position is snapped with util_iround(x*256), y with one
  *    subtracted (bottom_edge_rule);
  *  - the size becomes a whole number of pixels, n = max(1, ((iround(size*256)

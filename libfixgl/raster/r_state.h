@@ -3,8 +3,9 @@
  * context's validation pass (state.c) translates GL state into an r_state,
  * and the vertex stage hands it r_vertex triangles in window coordinates.
  *
- * Coordinates are y-down, as in the oracle (llvmpipe-facts.md §0): row 0 of
- * every buffer is the top row of the image.
+ * Coordinates are y-down, as in the oracle (ORACLE-NOTES.md "Window
+ * coordinates and the y-down buffer"): row 0 of every buffer is the top row
+ * of the image.
  */
 #ifndef FGL_R_STATE_H
 #define FGL_R_STATE_H
@@ -256,7 +257,8 @@ struct r_tex_unit {
  * even y-down coordinates and the derivatives come from the quad's top-left
  * pixel, whether or not the other pixels are covered
  * [S: gallivm/lp_bld_quad.c:lp_build_packed_ddx_ddy_twocoord,
- * lp_bld_sample.c:lp_build_rho] (llvmpipe-facts.md §5). */
+ * lp_bld_sample.c:lp_build_rho] (ORACLE-NOTES.md "Texture sampling: level
+ * of detail per quad"). */
 enum { R_QUAD_TL, R_QUAD_TR, R_QUAD_BL };
 struct r_fs_quad {
    float tex[R_MAX_TEX_UNITS][3][4];   /* [unit][R_QUAD_*][s, t, r, q] */
@@ -281,7 +283,8 @@ void r_tex_sample_aos(const struct r_texture *t, const float c[3], const float q
 /* The fast level-of-detail selection's results (r_tex.c
  * r_tex_lod_aos): they depend on the quad's coordinates alone, so every
  * pixel of a 2x2 quad shares them (llvmpipe computes one LOD per quad,
- * llvmpipe-facts.md §5) and the primitives compute them once per quad. */
+ * ORACLE-NOTES.md "Texture sampling: level of detail per quad") and the
+ * primitives compute them once per quad. */
 struct r_tex_lod {
    bool minify;                  /* the min image filter (else mag) */
    int level0, level1;           /* absolute level indices */
@@ -655,7 +658,8 @@ static inline float r_clamp01(float x)
    return m > 0.0f ? m : 0.0f;
 }
 
-/* Float -> unorm conversions of the oracle (llvmpipe-facts.md §1, §2). */
+/* Float -> unorm conversions of the oracle (ORACLE-NOTES.md "Colour
+ * conversion", "Depth conversion and polygon offset"). */
 uint8_t r_float_to_unorm8(float c);
 uint32_t r_depth_to_z24(float z);
 uint16_t r_depth_to_z16(float z);

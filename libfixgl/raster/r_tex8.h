@@ -8,7 +8,7 @@
  *   quad B = lanes {2, 3, 6, 7}: top-left 2, top-right 3, bottom-left 6
  * Every lane's coordinate is computed, covered or not (as in the oracle),
  * since the level of detail of a quad comes from its TL, TR and BL lanes
- * (llvmpipe-facts.md §5).
+ * (ORACLE-NOTES.md "Texture sampling: level of detail per quad").
  *
  * r_tex_sample8: c[k][i] is coordinate k (s, t, r after the projective
  * divide, exactly as r_tex_project computes it) of lane i; out[k][i] is

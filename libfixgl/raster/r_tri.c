@@ -1,5 +1,6 @@
 /*
- * Triangle rasterization, bit-exact with llvmpipe (llvmpipe-facts.md §1, §2).
+ * Triangle rasterization, bit-exact with llvmpipe (ORACLE-NOTES.md
+ * "Rasterization: snapping, fill rule, edge functions", "Interpolation").
  *
  * Precision note (after s_tritemp.h's): positions are snapped to 8 fractional
  * bits with round-half-even, (x - 0.5) * 256, exactly as llvmpipe's
@@ -61,7 +62,8 @@ static inline int32_t max3(int32_t a, int32_t b, int32_t c)
  * INT32_MIN and the 32-bit parts wrap, and then which pixels the oracle
  * draws depends on every one of those steps.  All 32-bit arithmetic below
  * wraps, as the SSE code does.  (ORACLE-NOTES.md "Coverage of non-finite
- * triangles"; the fact sheet, §1, covers the finite case only.) */
+ * triangles"; "Rasterization: snapping, fill rule, edge functions" covers
+ * the finite case only.) */
 
 #define TILE_SIZE 64
 #define MAX_PLANES R_MAX_PLANES
@@ -207,8 +209,9 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
 /* The texture coordinates of the quad of pixel (px, py) for the units in
  * `units`: its top-left, top-right and bottom-left pixels (even y-down
  * coordinates), evaluated like every pixel's inputs whether or not they
- * are covered [S: lp_bld_interp.c, lp_bld_quad.c] (llvmpipe-facts.md
- * §5), cached in ts->quad for the pixels of a quad's row. */
+ * are covered [S: lp_bld_interp.c, lp_bld_quad.c] (ORACLE-NOTES.md
+ * "Texture sampling: level of detail per quad"), cached in ts->quad for the
+ * pixels of a quad's row. */
 static inline __attribute__((always_inline)) void fill_quad(const struct r_state *rs, const struct r_tri_setup *ts, int px, int py,
                       unsigned units)
 {
@@ -670,7 +673,8 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
       return;
    /* lp_setup_tri.c triangle_both/_ccw/_cw: facing from the area sign,
     * culling, and the facing that chooses two-sided colours
-    * (llvmpipe-facts.md §4 "Two-sided lighting") */
+    * (ORACLE-NOTES.md "Lighting order of operations", its two-sided
+    * lighting) */
    const bool is_back = (area > 0) != rs->ccw_is_front;
    if (is_back ? rs->cull_back : rs->cull_front)
       return;

@@ -8,7 +8,7 @@
 set -euo pipefail
 view=$1 model=$2 out=$3
 if ! "$view" --info "$model" | grep -q "GL_WIN_phong_shading yes"; then
-  echo "make_screenshot.sh: this libfixgl has no GL_WIN_phong_shading yet" >&2
+  echo "make_screenshot.sh: this libfixgl has no GL_WIN_phong_shading" >&2
   exit 1
 fi
 tmp=$(mktemp -d)

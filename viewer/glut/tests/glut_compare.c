@@ -183,9 +183,9 @@ static int compare_headless(void)
    }
    run_headless(fixgl_demo, fdir);
    if (no_bitmap) {
-      printf("SKIP: libfixgl does not export glBitmap yet (pixel drawing, branch pixdraw): "
+      printf("SKIP: this libfixgl does not export glBitmap: "
              "the bitmap-font frames are not compared; Mesa's are in %s, fixgl's "
-             "(without bitmap text) in %s; the comparison runs once glBitmap lands\n",
+             "(without bitmap text) in %s; the comparison needs glBitmap\n",
              odir, fdir);
       return 77;
    }
