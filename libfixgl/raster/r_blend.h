@@ -1,5 +1,6 @@
 /*
- * r_blend.h: the colour operations of the fragment stage on unorm8 values,
+ * r_blend.h: the colour and stencil operations of the fragment stage on
+ * unorm8 values,
  * shared by the reference (r_frag.c r_fragment_ops) and the lanes the
  * block kernels finish one at a time (r_block_avx2.h), so both are the
  * same code.
@@ -94,6 +95,24 @@ static inline uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
    case 0xe: return (uint8_t)~(s & d);        /* NAND */
    case 0xf:
    default:  return 0xff;                     /* SET */
+   }
+}
+
+/* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR
+ * saturate at 0xff/0, the WRAP variants and INVERT keep the low 8 bits;
+ * REPLACE writes the (clamped, unmasked) reference. */
+static inline uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op, uint8_t s)
+{
+   switch (op) {
+   case R_STENCIL_ZERO:      return 0;
+   case R_STENCIL_REPLACE:   return rs->stencil_ref;
+   case R_STENCIL_INCR:      return s == 0xff ? 0xff : (uint8_t)(s + 1);
+   case R_STENCIL_DECR:      return s == 0 ? 0 : (uint8_t)(s - 1);
+   case R_STENCIL_INCR_WRAP: return (uint8_t)(s + 1);
+   case R_STENCIL_DECR_WRAP: return (uint8_t)(s - 1);
+   case R_STENCIL_INVERT:    return (uint8_t)~s;
+   case R_STENCIL_KEEP:
+   default:                  return s;
    }
 }
 

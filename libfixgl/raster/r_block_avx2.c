@@ -87,25 +87,27 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
       tri_blocks(rs, ts, cv, smooth, zf, zwrite, bl);                                      \
    }
 
+#define TRI_KERNELS_SHADE(prefix, var, bl)                                                 \
+   TRI_KERNEL(prefix##_nz, var, ZF_NONE, false, bl)                                        \
+   TRI_KERNEL(prefix##_z16, var, ZF_16, false, bl)                                         \
+   TRI_KERNEL(prefix##_z16w, var, ZF_16, true, bl)                                         \
+   TRI_KERNEL(prefix##_z24, var, ZF_24, false, bl)                                         \
+   TRI_KERNEL(prefix##_z24w, var, ZF_24, true, bl)                                         \
+   TRI_KERNEL(prefix##_z24s, var, ZF_24S, false, bl)                                       \
+   TRI_KERNEL(prefix##_z24sw, var, ZF_24S, true, bl)                                       \
+   TRI_KERNEL(prefix##_s, var, ZF_S, false, bl)
+
+#define TRI_KERNELS_ROW(prefix)                                                            \
+   { { prefix##_nz, prefix##_nz }, { prefix##_z16, prefix##_z16w },                         \
+     { prefix##_z24, prefix##_z24w }, { prefix##_z24s, prefix##_z24sw },                    \
+     { prefix##_s, prefix##_s } }
+
+/* [smooth][zfmt][zwrite] */
 #define TRI_KERNELS_BLEND(prefix, bl)                                                      \
-   TRI_KERNEL(prefix##_flat_nz, FLAT, ZF_NONE, false, bl)                                 \
-   TRI_KERNEL(prefix##_flat_z16, FLAT, ZF_16, false, bl)                                  \
-   TRI_KERNEL(prefix##_flat_z16w, FLAT, ZF_16, true, bl)                                  \
-   TRI_KERNEL(prefix##_flat_z24, FLAT, ZF_24, false, bl)                                  \
-   TRI_KERNEL(prefix##_flat_z24w, FLAT, ZF_24, true, bl)                                  \
-   TRI_KERNEL(prefix##_smooth_nz, SMOOTH, ZF_NONE, false, bl)                                \
-   TRI_KERNEL(prefix##_smooth_z16, SMOOTH, ZF_16, false, bl)                                 \
-   TRI_KERNEL(prefix##_smooth_z16w, SMOOTH, ZF_16, true, bl)                                 \
-   TRI_KERNEL(prefix##_smooth_z24, SMOOTH, ZF_24, false, bl)                                 \
-   TRI_KERNEL(prefix##_smooth_z24w, SMOOTH, ZF_24, true, bl)                                 \
-   /* [smooth][zfmt][zwrite] */                                                            \
-   static const r_tri_kernel prefix##_table[2][3][2] = {                                   \
-      { { prefix##_flat_nz, prefix##_flat_nz },                                            \
-        { prefix##_flat_z16, prefix##_flat_z16w },                                         \
-        { prefix##_flat_z24, prefix##_flat_z24w } },                                       \
-      { { prefix##_smooth_nz, prefix##_smooth_nz },                                        \
-        { prefix##_smooth_z16, prefix##_smooth_z16w },                                     \
-        { prefix##_smooth_z24, prefix##_smooth_z24w } },                                   \
+   TRI_KERNELS_SHADE(prefix##_flat, FLAT, bl)                                              \
+   TRI_KERNELS_SHADE(prefix##_smooth, SMOOTH, bl)                                          \
+   static const r_tri_kernel prefix##_table[2][5][2] = {                                   \
+      TRI_KERNELS_ROW(prefix##_flat), TRI_KERNELS_ROW(prefix##_smooth),                    \
    };
 
 TRI_KERNELS_BLEND(opaque, BL_NONE)
@@ -116,7 +118,7 @@ TRI_KERNELS_BLEND(blend_at, BL_BLEND_AT)
 TRI_KERNELS_BLEND(logic_at, BL_LOGIC_AT)
 
 /* [enum blend] */
-static const r_tri_kernel(*const tables[])[3][2] = {
+static const r_tri_kernel(*const tables[])[5][2] = {
    opaque_table, alpha_table, blend_table, logic_table, blend_at_table, logic_at_table,
 };
 
@@ -136,22 +138,25 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
     * case, its own kernels) */
    enum blend bl = BL_NONE;
    if (rs->full_ops) {
-      if (rs->stencil_test || (rs->alpha_test && rs->alpha_test_float))
+      if ((rs->stencil_test && rs->zs_format != R_ZS_Z24S8) ||
+          (rs->alpha_test && rs->alpha_test_float))
          return NULL;
       if (rs->logic_op)
          bl = BL_LOGIC;
       else if (!rs->blend)
-         bl = BL_LOGIC;   /* COPY under the colour mask */
+         bl = rs->color_mask == 0xfu ? BL_NONE : BL_LOGIC;   /* COPY (under the colour mask) */
       else if (!rs->alpha_test && rs->color_mask == 0xfu && rs->blend_eq == R_BLEND_ADD &&
                rs->blend_src == R_BF_SRC_ALPHA && rs->blend_dst == R_BF_INV_SRC_ALPHA)
          bl = BL_ALPHA;
       else
          bl = BL_BLEND;
       if (rs->alpha_test)
-         bl = bl == BL_BLEND ? BL_BLEND_AT : BL_LOGIC_AT;
+         bl = bl == BL_BLEND ? BL_BLEND_AT : BL_LOGIC_AT;   /* (NONE: as LOGIC's COPY) */
    }
    enum zfmt zf = ZF_NONE;
-   if (rs->depth_test) {
+   if (rs->full_ops && rs->stencil_test) {
+      zf = rs->depth_test ? ZF_24S : ZF_S;
+   } else if (rs->depth_test) {
       switch (rs->zs_format) {
       case R_ZS_Z16:   zf = ZF_16; break;
       case R_ZS_Z24X8:

@@ -14,7 +14,10 @@
 #include <immintrin.h>
 #include <string.h>
 
-enum zfmt { ZF_NONE, ZF_16, ZF_24 };
+/* the depth/stencil buffer and tests: none, Z16 or Z24 (X8 or S8) depth
+ * test, or on a Z24S8 buffer the stencil test with (ZF_24S) or without
+ * (ZF_S) the depth test */
+enum zfmt { ZF_NONE, ZF_16, ZF_24, ZF_24S, ZF_S };
 /* the colour operations after the depth test:
  *   BL_NONE   store
  *   BL_ALPHA  SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD, every channel written
@@ -155,6 +158,56 @@ static inline bool compare_u32(enum r_func f, uint32_t a, uint32_t b)
    return ((f & 1) && a < b) || ((f & 2) && a == b) || ((f & 4) && a > b);
 }
 
+/* The stencil test and ops in 8 lanes (r_frag.c stencil_depth_test), the
+ * state as constants built once per triangle.  A stencil op is
+ *    t = (s & keep) ^ flip;  r = ((min(t + inc, 255) - dec, at least 0) + add) & 0xff
+ * KEEP: keep 0xff; ZERO: keep 0; REPLACE: keep 0, add ref; INCR: inc 1;
+ * DECR: dec 1; INCR_WRAP: add 1; DECR_WRAP: add 0xff; INVERT: keep and
+ * flip 0xff (stencil_op, r_blend.h). */
+struct stencil_ops {
+   struct depth_fn fn;
+   __m256i ref_vm, vm, wm;
+   __m256i keep[3], flip[3], inc[3], dec[3], add[3];   /* [fail, zfail, zpass] */
+};
+
+static inline void stencil_ops_init(struct stencil_ops *st, const struct r_state *rs)
+{
+   st->fn = depth_fn(rs->stencil_func);
+   st->ref_vm = _mm256_set1_epi32(rs->stencil_ref & rs->stencil_valuemask);
+   st->vm = _mm256_set1_epi32(rs->stencil_valuemask);
+   st->wm = _mm256_set1_epi32(rs->stencil_writemask);
+   const enum r_stencil_op ops[3] = { rs->stencil_fail, rs->stencil_zfail, rs->stencil_zpass };
+   for (int k = 0; k < 3; k++) {
+      int keep = 0xff, flip = 0, inc = 0, dec = 0, add = 0;
+      switch (ops[k]) {
+      case R_STENCIL_ZERO:      keep = 0; break;
+      case R_STENCIL_REPLACE:   keep = 0; add = rs->stencil_ref; break;
+      case R_STENCIL_INCR:      inc = 1; break;
+      case R_STENCIL_DECR:      dec = 1; break;
+      case R_STENCIL_INCR_WRAP: add = 1; break;
+      case R_STENCIL_DECR_WRAP: add = 0xff; break;
+      case R_STENCIL_INVERT:    flip = 0xff; break;
+      case R_STENCIL_KEEP:
+      default:                  break;
+      }
+      st->keep[k] = _mm256_set1_epi32(keep);
+      st->flip[k] = _mm256_set1_epi32(flip);
+      st->inc[k] = _mm256_set1_epi32(inc);
+      st->dec[k] = _mm256_set1_epi32(dec);
+      st->add[k] = _mm256_set1_epi32(add);
+   }
+}
+
+static ALWAYS_INLINE __m256i stencil_op8(const struct stencil_ops *st, int k, __m256i s)
+{
+   const __m256i t = _mm256_xor_si256(_mm256_and_si256(s, st->keep[k]), st->flip[k]);
+   const __m256i u = _mm256_max_epi32(
+      _mm256_sub_epi32(_mm256_min_epi32(_mm256_add_epi32(t, st->inc[k]), _mm256_set1_epi32(0xff)),
+                       st->dec[k]),
+      _mm256_setzero_si256());
+   return _mm256_and_si256(_mm256_add_epi32(u, st->add[k]), _mm256_set1_epi32(0xff));
+}
+
 /* The lanes of a half one at a time (a block reaching past the buffer's
  * right edge): the same integer operations as the vector path, the
  * general colour operations by the reference's own code (r_blend.h).
@@ -165,7 +218,28 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
    for (unsigned m = m8; m; m &= m - 1) {
       const int i = __builtin_ctz(m);
       const size_t idx = (size_t)(y + (i >> 2)) * (size_t)rs->width + (size_t)(x + (i & 3));
-      if (zf == ZF_24) {
+      if (zf == ZF_24S || zf == ZF_S) {
+         /* r_frag.c stencil_depth_test on the Z24S8 word */
+         uint32_t *zb = (uint32_t *)rs->zs + idx;
+         const uint8_t s = (uint8_t)(*zb >> 24), vm = rs->stencil_valuemask;
+         enum r_stencil_op op;
+         bool pass = compare_u32(rs->stencil_func, rs->stencil_ref & vm, s & vm);
+         if (!pass) {
+            op = rs->stencil_fail;
+         } else if (zf == ZF_24S) {
+            pass = compare_u32(rs->depth_func, zv[i], *zb & 0xffffffu);
+            op = pass ? rs->stencil_zpass : rs->stencil_zfail;
+            if (pass && zwrite)
+               *zb = (*zb & 0xff000000u) | zv[i];
+         } else {
+            op = rs->stencil_zpass;
+         }
+         const uint8_t wm = rs->stencil_writemask;
+         const uint8_t ns = (uint8_t)((stencil_op(rs, op, s) & wm) | (s & (uint8_t)~wm));
+         *zb = (*zb & 0xffffffu) | (uint32_t)ns << 24;
+         if (!pass)
+            continue;
+      } else if (zf == ZF_24) {
          uint32_t *zb = (uint32_t *)rs->zs + idx;
          if (!compare_u32(rs->depth_func, zv[i], *zb & 0xffffffu))
             continue;

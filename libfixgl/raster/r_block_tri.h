@@ -60,6 +60,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    struct gen_ops gops;
    if (cop == BL_BLEND || cop == BL_LOGIC)
       gen_ops_init(&gops, rs);
+   struct stencil_ops sops;
+   if (zf == ZF_24S || zf == ZF_S)
+      stencil_ops_init(&sops, rs);
    uint64_t fragments = 0;
 
    const int32_t bx0 = cv->x0 & ~3, by0 = cv->y0 & ~3;
@@ -128,9 +131,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
 
             /* the depth value (lp_bld_interp.c: interpolated z + offset) */
             __m256i zv = _mm256_setzero_si256();
-            if (zf != ZF_NONE) {
+            if (zf != ZF_NONE && zf != ZF_S) {
                const __m256 z = _mm256_add_ps(eval8(&ts->z, fx, fy), _mm256_set1_ps(ts->zoffset));
-               zv = depth_unorm(z, zf == ZF_24 ? 16777215.0f : 65535.0f);
+               zv = depth_unorm(z, zf == ZF_16 ? 65535.0f : 16777215.0f);
             }
 
             if (edge) {
@@ -148,7 +151,30 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
              * a branch on the masks, unless the half's second row is past
              * the buffer */
             const unsigned rm = y + 1 < height ? 0xffu : lm8;
-            if (zf == ZF_24) {
+            if (zf == ZF_24S || zf == ZF_S) {
+               /* r_frag.c stencil_depth_test: the stencil test, then the
+                * depth test of its passing lanes, the op of each outcome
+                * under the write mask, the Z24S8 words of the live lanes
+                * rewritten */
+               uint32_t *zp = (uint32_t *)rs->zs + idx;
+               const __m256i zb = load_rows32(zp, stride, rm);
+               const __m256i s8 = _mm256_srli_epi32(zb, 24);
+               const __m256i spass = depth_pass(&sops.fn, sops.ref_vm, _mm256_and_si256(s8, sops.vm));
+               __m256i zpass = spass;
+               __m256i zword = _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff));
+               if (zf == ZF_24S) {
+                  zpass = _mm256_and_si256(spass, depth_pass(&fn, zv, zword));
+                  if (zwrite)
+                     zword = _mm256_blendv_epi8(zword, zv, zpass);
+               }
+               /* fail: !spass; zfail: spass & !zpass; zpass */
+               __m256i ns = _mm256_blendv_epi8(stencil_op8(&sops, 0, s8), stencil_op8(&sops, 1, s8), spass);
+               ns = _mm256_blendv_epi8(ns, stencil_op8(&sops, 2, s8), zpass);
+               ns = _mm256_or_si256(_mm256_and_si256(ns, sops.wm), _mm256_andnot_si256(sops.wm, s8));
+               const __m256i nw = _mm256_or_si256(zword, _mm256_slli_epi32(ns, 24));
+               store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nw, pass));
+               pass = _mm256_and_si256(pass, zpass);
+            } else if (zf == ZF_24) {
                uint32_t *zp = (uint32_t *)rs->zs + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                pass = _mm256_and_si256(

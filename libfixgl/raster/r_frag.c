@@ -100,23 +100,7 @@ static float fog_factor(const struct r_state *rs, float fc)
    return f < 1.0f ? f : 1.0f;
 }
 
-/* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR
- * saturate at 0xff/0, the WRAP variants and INVERT keep the low 8 bits;
- * REPLACE writes the (clamped, unmasked) reference. */
-static uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op, uint8_t s)
-{
-   switch (op) {
-   case R_STENCIL_ZERO:      return 0;
-   case R_STENCIL_REPLACE:   return rs->stencil_ref;
-   case R_STENCIL_INCR:      return s == 0xff ? 0xff : (uint8_t)(s + 1);
-   case R_STENCIL_DECR:      return s == 0 ? 0 : (uint8_t)(s - 1);
-   case R_STENCIL_INCR_WRAP: return (uint8_t)(s + 1);
-   case R_STENCIL_DECR_WRAP: return (uint8_t)(s - 1);
-   case R_STENCIL_INVERT:    return (uint8_t)~s;
-   case R_STENCIL_KEEP:
-   default:                  return s;
-   }
-}
+/* stencil_op: r_blend.h */
 
 /* mul_u8, blend_channel, logic_op: r_blend.h (the block kernels share them) */
 
