@@ -1,0 +1,167 @@
+/*
+ * The block kernels of per-fragment-lit triangles (GL_PHONG_WIN, both
+ * reflectance models), AVX2 + FMA (r_kernel.h): the triangle template
+ * (r_block_tri.h) with a fragment stage that does, in 8 lanes, what the
+ * reference does per pixel (r_tri.c shade_pixel, r_frag.c
+ * r_fragment_phong and r_fragment_shader), in its order:
+ *  - the inputs the lighting reads, R_FS_NORMAL and R_FS_EYEPOS (xyz) and,
+ *    under colour material, R_FS_COLOR0: a flat input is the provoking
+ *    vertex's value, an interpolated one fma(dady, y, fma(dadx, x, a0))
+ *    times 1/w, 1/w a true divide of the w plane's value (shade_pixel);
+ *  - the lighting: m_shade8_eval (math/m_shade_avx2.h), every lane
+ *    m_shade_point_prepared's bits, with the triangle's face
+ *    (ts->phong_back) and the environment of the batch (rs->shade_env,
+ *    read per triangle: the material may change between primitives);
+ *  - the fragment program without texture or fog: the primary colour,
+ *    plus the secondary colour's rgb under the colour sum (an fadd);
+ *  - the colour to unorm8, the depth test and the store or the blend of
+ *    the template (r_block_avx2.h).
+ * Lanes of a half that no pixel covers are lit too and thrown away (their
+ * values may be anything; nothing of them is stored).
+ */
+#include "r_block_avx2.h"
+
+#include "math/m_shade_avx2.h"
+
+/* the stage's variants: bit 0 the vertex colour is an input (colour
+ * material), bit 1 the colour sum */
+enum { PH_COLOR = 1, PH_SUM = 2 };
+
+struct block_stage {
+   int unused;
+};
+
+static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const struct r_tri_setup *ts,
+                                              int variant, struct block_stage *st)
+{
+   (void)rs; (void)ts; (void)variant;
+   st->unused = 0;
+}
+
+/* input a's component c at the lanes, as shade_pixel reads it */
+static ALWAYS_INLINE __m256 input8(const struct r_tri_setup *ts, int a, int c, __m256 fx, __m256 fy,
+                                   __m256 rw)
+{
+   if (ts->flat_attr[a])
+      return _mm256_set1_ps(ts->flat[a][c]);
+   return _mm256_mul_ps(eval8(&ts->ap[a][c], fx, fy), rw);
+}
+
+/* The lit fragment colour of 8 lanes, packed (phong_half_<variant>: out
+ * of line, one copy per variant shared by the depth and blend kernels). */
+static ALWAYS_INLINE __m256i phong_half(const struct r_state *rs, const struct r_tri_setup *ts,
+                                        int variant, __m256 fx, __m256 fy)
+{
+   const __m256 rw = ts->need_w ? _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy))
+                                : _mm256_setzero_ps();
+   __m256 n[3], p[3], col[4];
+   for (int c = 0; c < 3; c++) {
+      n[c] = input8(ts, R_FS_NORMAL, c, fx, fy, rw);
+      p[c] = input8(ts, R_FS_EYEPOS, c, fx, fy, rw);
+   }
+   for (int c = 0; c < 4; c++)
+      col[c] = variant & PH_COLOR ? input8(ts, R_FS_COLOR0, c, fx, fy, rw) : _mm256_setzero_ps();
+   __m256 prim[4], sec[4];
+   m_shade8_eval(&rs->shade_env, n, p, ts->phong_back, col, prim, sec);
+   /* the fragment program: rgb += secondary rgb under the colour sum */
+   if (variant & PH_SUM) {
+      for (int c = 0; c < 3; c++)
+         prim[c] = _mm256_add_ps(prim[c], sec[c]);
+   }
+   return pack_rgba8(prim[0], prim[1], prim[2], prim[3]);
+}
+
+#define PHONG_HALF(v)                                                                      \
+   static __attribute__((noinline)) __m256i phong_half_##v(const struct r_state *rs,      \
+                                                           const struct r_tri_setup *ts,  \
+                                                           __m256 fx, __m256 fy)          \
+   {                                                                                       \
+      return phong_half(rs, ts, v, fx, fy);                                                \
+   }
+PHONG_HALF(0)
+PHONG_HALF(1)
+PHONG_HALF(2)
+PHONG_HALF(3)
+
+static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const struct r_tri_setup *ts,
+                                               const struct block_stage *st, int variant,
+                                               __m256 fx, __m256 fy, int x, int y, unsigned m8,
+                                               __m256i *live)
+{
+   (void)st; (void)x; (void)y; (void)m8; (void)live;
+   switch (variant) {
+   case 0:  return phong_half_0(rs, ts, fx, fy);
+   case 1:  return phong_half_1(rs, ts, fx, fy);
+   case 2:  return phong_half_2(rs, ts, fx, fy);
+   default: return phong_half_3(rs, ts, fx, fy);
+   }
+}
+
+#include "r_block_tri.h"
+
+#define TRI_KERNEL(name, v, zf, zwrite, bl)                                                \
+   static void name(const struct r_state *rs, const struct r_tri_setup *ts,               \
+                    const struct r_tri_cover *cv)                                          \
+   {                                                                                       \
+      tri_blocks(rs, ts, cv, v, zf, zwrite, bl);                                           \
+   }
+
+#define TRI_KERNELS_VARIANT(prefix, v, bl)                                                 \
+   TRI_KERNEL(prefix##_nz, v, ZF_NONE, false, bl)                                         \
+   TRI_KERNEL(prefix##_z16, v, ZF_16, false, bl)                                          \
+   TRI_KERNEL(prefix##_z16w, v, ZF_16, true, bl)                                          \
+   TRI_KERNEL(prefix##_z24, v, ZF_24, false, bl)                                          \
+   TRI_KERNEL(prefix##_z24w, v, ZF_24, true, bl)
+
+#define TRI_KERNELS_BLEND(prefix, bl)                                                      \
+   TRI_KERNELS_VARIANT(prefix##_0, 0, bl)                                                 \
+   TRI_KERNELS_VARIANT(prefix##_1, 1, bl)                                                 \
+   TRI_KERNELS_VARIANT(prefix##_2, 2, bl)                                                 \
+   TRI_KERNELS_VARIANT(prefix##_3, 3, bl)                                                 \
+   /* [variant][zfmt][zwrite] */                                                           \
+   static const r_tri_kernel prefix##_table[4][3][2] = {                                   \
+      { { prefix##_0_nz, prefix##_0_nz }, { prefix##_0_z16, prefix##_0_z16w },             \
+        { prefix##_0_z24, prefix##_0_z24w } },                                             \
+      { { prefix##_1_nz, prefix##_1_nz }, { prefix##_1_z16, prefix##_1_z16w },             \
+        { prefix##_1_z24, prefix##_1_z24w } },                                             \
+      { { prefix##_2_nz, prefix##_2_nz }, { prefix##_2_z16, prefix##_2_z16w },             \
+        { prefix##_2_z24, prefix##_2_z24w } },                                             \
+      { { prefix##_3_nz, prefix##_3_nz }, { prefix##_3_z16, prefix##_3_z16w },             \
+        { prefix##_3_z24, prefix##_3_z24w } },                                             \
+   };
+
+TRI_KERNELS_BLEND(opaque, BL_NONE)
+TRI_KERNELS_BLEND(alpha, BL_ALPHA)
+
+r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color)
+{
+   (void)flat_color;   /* each input's flatness is read per triangle */
+   const unsigned lit = 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
+   /* the fragment program: the lighting inputs (and the vertex colour),
+    * no texture, fog, pixel rectangle, coverage lowering or stipple */
+   if (!rs->phong || (rs->fs_inputs & ~(lit | 1u << R_FS_COLOR0)) || (rs->fs_inputs & lit) != lit ||
+       rs->tex_units || rs->fog_mode != R_FOG_NONE || rs->pix || rs->aa != R_AA_NONE ||
+       rs->stipple || !rs->color)
+      return NULL;
+   /* the fragment operations: as r_block_choose_tri's */
+   enum blend bl = BL_NONE;
+   if (rs->full_ops) {
+      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
+          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
+          rs->blend_dst != R_BF_INV_SRC_ALPHA)
+         return NULL;
+      bl = BL_ALPHA;
+   }
+   enum zfmt zf = ZF_NONE;
+   if (rs->depth_test) {
+      switch (rs->zs_format) {
+      case R_ZS_Z16:   zf = ZF_16; break;
+      case R_ZS_Z24X8:
+      case R_ZS_Z24S8: zf = ZF_24; break;
+      default:         return NULL;
+      }
+   }
+   const int v = ((rs->fs_inputs & (1u << R_FS_COLOR0)) ? PH_COLOR : 0) | (rs->color_sum ? PH_SUM : 0);
+   const r_tri_kernel(*t)[2] = bl == BL_ALPHA ? alpha_table[v] : opaque_table[v];
+   return t[zf][rs->depth_write];
+}
