@@ -97,6 +97,10 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    }
 }
 
+/* a half's lighting takes long enough to hide the next block row's
+ * buffer lines coming in */
+#define BLOCK_STAGE_PREFETCH 1
+#define BLOCK_STAGE_PREFETCH_COLOR 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, v, zf, zwrite, bl)                                                \

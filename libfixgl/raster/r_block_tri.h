@@ -1,6 +1,15 @@
 #ifndef BLOCK_STAGE_KILLS
 #define BLOCK_STAGE_KILLS 0
 #endif
+/* BLOCK_STAGE_PREFETCH: the stage is slow enough for the buffers' lines
+ * of the next block row to be asked for ahead (depth, and colour when
+ * blending, or always with BLOCK_STAGE_PREFETCH_COLOR) */
+#ifndef BLOCK_STAGE_PREFETCH
+#define BLOCK_STAGE_PREFETCH 0
+#endif
+#ifndef BLOCK_STAGE_PREFETCH_COLOR
+#define BLOCK_STAGE_PREFETCH_COLOR 0
+#endif
 
 /*
  * r_block_tri.h: the triangle block walk, a template.  The including file
@@ -53,7 +62,28 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    for (int e = 0; e < 3; e++)
       rowc[e] = cv->c[e] + (bx0 - cv->ox) * cv->dx[e] + (by0 - cv->oy) * cv->dy[e];
 
+   /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
+    * are asked for ahead of their use (a triangle touches a few pixels of
+    * many rows, each row of the buffers its own page): the first block
+    * row's now, each next block row's while this one is shaded */
+   const size_t zbytes = zf == ZF_16 ? 2 : 4;
+#define TRI_PREFETCH_ROWS(ya, yb)                                                          \
+   for (int32_t py_ = (ya); py_ <= (yb) && py_ <= cv->y1; py_++) {                         \
+      const size_t row_ = (size_t)py_ * stride;                                            \
+      for (int32_t px_ = cv->x0 & ~15; px_ <= cv->x1; px_ += 16) {                         \
+         if (bl != BL_NONE || BLOCK_STAGE_PREFETCH_COLOR)                                  \
+            _mm_prefetch((const char *)((const uint32_t *)rs->color + row_ + (size_t)px_), \
+                         _MM_HINT_T0);                                                     \
+         if (zf != ZF_NONE)                                                                \
+            _mm_prefetch((const char *)rs->zs + (row_ + (size_t)px_) * zbytes, _MM_HINT_T0); \
+      }                                                                                    \
+   }
+   if (BLOCK_STAGE_PREFETCH)
+      TRI_PREFETCH_ROWS(cv->y0, by0 + 3)
+
    for (int32_t by = by0; by <= cv->y1; by += 4) {
+      if (BLOCK_STAGE_PREFETCH)
+         TRI_PREFETCH_ROWS(by + 4, by + 7)
       /* the box's rows in this block row, one nibble each */
       unsigned rows = 0;
       for (int j = 0; j < 4; j++)
@@ -156,5 +186,6 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    }
    if (rs->stats)
       rs->stats->fragments += fragments;
+#undef TRI_PREFETCH_ROWS
 }
 
