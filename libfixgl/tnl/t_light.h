@@ -69,6 +69,13 @@ struct t_light_batch {
                                * light_simd) */
    struct m_shade_env env;
    struct t_eye_normal en;
+   /* Cook-Torrance batches lit eight vertices at a time (m_shade_point8,
+    * t_light.c light_shade8): every material property of the lit faces is
+    * the batch's constant (in env) or the vertex colour (env's
+    * color_material bits, read from color, cstride floats apart) */
+   bool shade8;
+   const float *color;
+   unsigned cstride;
 };
 
 /* Prepare the lighting of the batch of stored vertices starting at in. */
