@@ -65,6 +65,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
                      _mm256_mul_ps(eval8(&ap[3], fx, fy), rw));
 }
 
+#define BLOCK_STAGE_PREFETCH 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \
