@@ -101,6 +101,9 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
  * buffer lines coming in */
 #define BLOCK_STAGE_PREFETCH 1
 #define BLOCK_STAGE_PREFETCH_COLOR 1
+/* the lighting has no effect but the colours: a half whose fragments all
+ * fail the depth test is not lit */
+#define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, v, zf, zwrite, bl)                                                \

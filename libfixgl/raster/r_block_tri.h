@@ -1,6 +1,15 @@
 #ifndef BLOCK_STAGE_KILLS
 #define BLOCK_STAGE_KILLS 0
 #endif
+/* BLOCK_STAGE_EARLY_Z: the stage kills no fragment and has no other
+ * effect than its colours, so the depth test (and its write) may come
+ * first and the stage shade only the halves with a fragment that passes
+ * it: the same bytes, since no fragment's colour depends on the depth
+ * buffer nor its depth on the colour.  (Not for a block past the buffer's
+ * right edge, which finish_lanes takes in the reference's order.) */
+#ifndef BLOCK_STAGE_EARLY_Z
+#define BLOCK_STAGE_EARLY_Z 0
+#endif
 /* BLOCK_STAGE_PREFETCH: the stage is slow enough for the buffers' lines
  * of the next block row to be asked for ahead (depth, and colour when
  * blending, or always with BLOCK_STAGE_PREFETCH_COLOR) */
@@ -121,9 +130,12 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)bx), flx);
             const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), fly);
 
-            /* the fragment colour */
+            /* the fragment colour (after the depth test with an early one) */
             __m256i live = lane_mask(m8);
-            const __m256i src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
+            const bool early = BLOCK_STAGE_EARLY_Z && !BLOCK_STAGE_KILLS && zf != ZF_NONE && !edge;
+            __m256i src = _mm256_setzero_si256();
+            if (!early)
+               src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
             unsigned lm8 = m8;
             if (BLOCK_STAGE_KILLS) {
                lm8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(live));
@@ -168,6 +180,8 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(pass));
             if (!pm)
                continue;
+            if (early)
+               src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
 
             uint32_t *cp = (uint32_t *)rs->color + idx;
             if (bl == BL_NONE && pm == 0xffu) {
