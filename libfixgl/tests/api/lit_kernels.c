@@ -17,8 +17,7 @@
  * glMaterial between vertices, GL_NORMALIZE, unnormalised and zero normals,
  * GL_PHONG_WIN mostly (the per-fragment block kernel) and GL_SMOOTH /
  * GL_FLAT (per-vertex lighting), culling, both windings, depth functions
- * and masks, alpha blending, and now and then fog (a state the per-fragment
- * kernel leaves to the reference).
+ * and masks, alpha blending, and now and then fog of every mode.
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -179,11 +178,16 @@ static void draw_scene(uint32_t seed)
   } else {
     glDisable(GL_BLEND);
   }
-  if (chance(8)) {
+  if (chance(15)) {
+    static const GLenum fog_modes[] = { GL_LINEAR, GL_EXP, GL_EXP2 };
+    float fc[4];
+    rand4(fc, 0.0f, 1.0f);
     glEnable(GL_FOG);
-    glFogi(GL_FOG_MODE, GL_LINEAR);
-    glFogf(GL_FOG_START, 2.0f);
-    glFogf(GL_FOG_END, 6.0f);
+    glFogi(GL_FOG_MODE, pick(fog_modes, 3));
+    glFogf(GL_FOG_START, frand(0.0f, 3.0f));
+    glFogf(GL_FOG_END, frand(3.5f, 7.0f));
+    glFogf(GL_FOG_DENSITY, frand(0.0f, 0.6f));
+    glFogfv(GL_FOG_COLOR, fc);
   } else {
     glDisable(GL_FOG);
   }
