@@ -66,6 +66,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 }
 
 #define BLOCK_STAGE_PREFETCH 1
+#define BLOCK_STAGE_PREFETCH_COLOR 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \
