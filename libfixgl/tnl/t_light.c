@@ -382,11 +382,16 @@ static bool shade8_prepare(const struct fgl_context *ctx, const struct fgl_vbo_v
 /* light_shade eight vertices at a time (shade8_prepare): the normals and
  * eye positions as light_shade computes them, lit by m_shade_point8 per
  * face (each lane m_shade_point_prepared's bits); a last group of fewer
- * than eight fills its other lanes with its first vertex. */
+ * than eight fills its other lanes with its first vertex.  Where the
+ * AVX2 archive is built, t_light_avx2.c does it all in registers. */
 static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb,
                          const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
                          struct t_vertex *out)
 {
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   /* the same in registers: gathered inputs, the lighting inline */
+   t_light_shade8_avx2(ctx, lb, in, first, n, out);
+#else
    const struct m_shade_env *env = &lb->env;
    const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
@@ -423,6 +428,7 @@ static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb
          }
       }
    }
+#endif
 }
 
 /* ---- Eight vertices at a time ----

@@ -88,6 +88,14 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
                  const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
                  struct t_vertex *out);
 
+#ifdef FGL_HAVE_BLOCK_KERNELS
+/* t_light_run of a batch with lb->shade8, AVX2 + FMA (t_light_avx2.c):
+ * only where m_shade_point8_avx2_supported(). */
+void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         struct t_vertex *out);
+#endif
+
 /* LIT's pow of n argument pairs, out[k] = m_gallivm_pow(x[k], y[k]),
  * through light_simd's eight-lane pow where the CPU has AVX2 and FMA (for
  * the unit test that checks they are the same bits). */
