@@ -14,7 +14,8 @@
  * eight), light models (two-sided, local viewer, separate specular),
  * materials per face with both reflectance models (Blinn-Phong and
  * GL_FIXGL_cook_torrance), colour material of every mode and face,
- * glMaterial between vertices, GL_NORMALIZE, unnormalised and zero normals,
+ * glMaterial between vertices, GL_NORMALIZE, GL_RESCALE_NORMAL under a
+ * scaled modelview, unnormalised and zero normals,
  * GL_PHONG_WIN mostly (the per-fragment block kernel) and GL_SMOOTH /
  * GL_FLAT (per-vertex lighting), culling, both windings, depth functions
  * and masks, alpha blending, and now and then fog of every mode.
@@ -108,6 +109,10 @@ static void draw_scene(uint32_t seed)
   glLoadIdentity();
   glTranslatef(0.0f, 0.0f, -3.5f);
   glRotatef(frand(0, 360), frand(-1, 1), frand(-1, 1), frand(0.1f, 1));
+  if (chance(30)) {
+    const float k = frand(0.5f, 1.5f);
+    glScalef(k, k, k);
+  }
 
   /* lights, in the rotated eye space */
   const int nlights = chance(60) ? 1 + (int)(next() % 3u) : 1 + (int)(next() % 8u);
@@ -157,6 +162,10 @@ static void draw_scene(uint32_t seed)
     glEnable(GL_NORMALIZE);
   else
     glDisable(GL_NORMALIZE);
+  if (chance(40))
+    glEnable(GL_RESCALE_NORMAL);
+  else
+    glDisable(GL_RESCALE_NORMAL);
 
   if (chance(30)) {
     glEnable(GL_CULL_FACE);
