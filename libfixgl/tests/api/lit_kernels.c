@@ -255,8 +255,10 @@ static void render(OSMesaContext ctx, unsigned char *buf, uint32_t seed, unsigne
 static unsigned char fb[2][2][W * H * 4];
 static unsigned char depth[2][W * H * 4];
 
-int main(void)
+int main(int argc, char **argv)
 {
+  /* argv[1]: the number of scenes (default SCENES) */
+  const uint32_t scenes = argc > 1 ? (uint32_t)strtoul(argv[1], NULL, 10) : SCENES;
   /* [kernels][depth 16, 24] */
   OSMesaContext ctx[2][2];
   for (int k = 0; k < 2; k++) {
@@ -272,7 +274,7 @@ int main(void)
     return check_report("lit_kernels");
 
   int bad = 0;
-  for (uint32_t s = 0; s < SCENES && bad < 10; s++) {
+  for (uint32_t s = 0; s < scenes && bad < 10; s++) {
     const int z = (int)(s & 1);
     size_t nb[2];
     for (int k = 0; k < 2; k++)
