@@ -4,6 +4,24 @@
 #ifndef BLOCK_STAGE_HAS_ALPHA
 #define BLOCK_STAGE_HAS_ALPHA 0
 #endif
+/* BLOCK_STAGE_EARLY_Z: the stage kills no fragment and has no other
+ * effect than its colours, so the depth test (and its write) may come
+ * first and the stage shade only the halves with a fragment that passes
+ * it: the same bytes, since no fragment's colour depends on the depth
+ * buffer nor its depth on the colour.  (Not for a block past the buffer's
+ * right edge, which finish_lanes takes in the reference's order.) */
+#ifndef BLOCK_STAGE_EARLY_Z
+#define BLOCK_STAGE_EARLY_Z 0
+#endif
+/* BLOCK_STAGE_PREFETCH: the stage is slow enough for the buffers' lines
+ * of the next block row to be asked for ahead (depth, and colour when
+ * blending, or always with BLOCK_STAGE_PREFETCH_COLOR) */
+#ifndef BLOCK_STAGE_PREFETCH
+#define BLOCK_STAGE_PREFETCH 0
+#endif
+#ifndef BLOCK_STAGE_PREFETCH_COLOR
+#define BLOCK_STAGE_PREFETCH_COLOR 0
+#endif
 
 /*
  * r_block_tri.h: the triangle block walk, a template.  The including file
@@ -70,7 +88,28 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    for (int e = 0; e < 3; e++)
       rowc[e] = cv->c[e] + (bx0 - cv->ox) * cv->dx[e] + (by0 - cv->oy) * cv->dy[e];
 
+   /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
+    * are asked for ahead of their use (a triangle touches a few pixels of
+    * many rows, each row of the buffers its own page): the first block
+    * row's now, each next block row's while this one is shaded */
+   const size_t zbytes = zf == ZF_16 ? 2 : 4;
+#define TRI_PREFETCH_ROWS(ya, yb)                                                          \
+   for (int32_t py_ = (ya); py_ <= (yb) && py_ <= cv->y1; py_++) {                         \
+      const size_t row_ = (size_t)py_ * stride;                                            \
+      for (int32_t px_ = cv->x0 & ~15; px_ <= cv->x1; px_ += 16) {                         \
+         if (bl != BL_NONE || BLOCK_STAGE_PREFETCH_COLOR)                                  \
+            _mm_prefetch((const char *)((const uint32_t *)rs->color + row_ + (size_t)px_), \
+                         _MM_HINT_T0);                                                     \
+         if (zf != ZF_NONE)                                                                \
+            _mm_prefetch((const char *)rs->zs + (row_ + (size_t)px_) * zbytes, _MM_HINT_T0); \
+      }                                                                                    \
+   }
+   if (BLOCK_STAGE_PREFETCH)
+      TRI_PREFETCH_ROWS(cv->y0, by0 + 3)
+
    for (int32_t by = by0; by <= cv->y1; by += 4) {
+      if (BLOCK_STAGE_PREFETCH)
+         TRI_PREFETCH_ROWS(by + 4, by + 7)
       /* the box's rows in this block row, one nibble each */
       unsigned rows = 0;
       for (int j = 0; j < 4; j++)
@@ -108,9 +147,13 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)bx), flx);
             const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), fly);
 
-            /* the fragment colour */
+            /* the fragment colour (after the depth test with an early one) */
             __m256i live = lane_mask(m8);
-            const __m256i src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
+            const bool early = BLOCK_STAGE_EARLY_Z && !BLOCK_STAGE_KILLS && !alpha_test &&
+                               zf != ZF_NONE && !edge;
+            __m256i src = _mm256_setzero_si256();
+            if (!early)
+               src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
             unsigned lm8 = m8;
             if (BLOCK_STAGE_KILLS) {
                lm8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(live));
@@ -191,6 +234,12 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                if (zwrite)
                   store_rows16(zp, stride, rm, _mm256_blendv_epi8(zb, zv, pass));
             }
+            if (early) {
+               /* shade only a half with a fragment that passed */
+               if (!_mm256_movemask_ps(_mm256_castsi256_ps(pass)))
+                  continue;
+               src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
+            }
 
             uint32_t *cp = (uint32_t *)rs->color + idx;
             const __m256i dst = load_rows32(cp, stride, rm);
@@ -207,5 +256,6 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    }
    if (rs->stats)
       rs->stats->fragments += fragments;
+#undef TRI_PREFETCH_ROWS
 }
 

@@ -6,17 +6,20 @@
  *  - the reference kernels (r_tri.c rasterize_direct and shade_pixel,
  *    r_frag.c): portable scalar code, one pixel at a time, which handles
  *    every state and is the specification of the others;
- *  - the block kernels (r_block_avx2.c, AVX2 + FMA): a triangle's 4x4
+ *  - the block kernels (r_block_avx2.c untextured, r_block_phong_avx2.c
+ *    per-fragment lit; AVX2 + FMA): a triangle's 4x4
  *    blocks, each shaded as two 4x2 halves of 8 lanes (lane i is pixel
  *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
  *    at compile time for the states real programs spend their time in.
  *    Every lane performs the reference's float operations in the
  *    reference's order (fmaf where it fuses, true divides, RNE
  *    conversions), so they produce the same bytes; the kernel-equivalence
- *    test (tests/unit/test_kernels.c) checks this on random states.
+ *    tests (tests/unit/test_kernels.c, tests/api/lit_kernels.c for lit
+ *    scenes) check this on random states.
  * A state no block kernel covers draws with the reference kernels.
  * FIXGL_KERNELS=reference in the environment forces the reference kernels
- * for every context created afterwards.
+ * for every context created afterwards (and the scalar per-vertex
+ * Cook-Torrance lighting, tnl/t_light.c, instead of its eight-lane form).
  */
 #ifndef FGL_R_KERNEL_H
 #define FGL_R_KERNEL_H
@@ -66,5 +69,9 @@ struct r_tri_cover {
  * FGL_HAVE_BLOCK_KERNELS, and called only on a CPU that runs AVX2 and
  * FMA). */
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color);
+
+/* The same for per-fragment-lit triangles (rs->phong; r_block_phong_avx2.c):
+ * NULL for a state it does not cover. */
+r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color);
 
 #endif

@@ -699,7 +699,8 @@ void r_choose_kernels(struct r_state *rs)
    if (rs->reference_kernels ||
        !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
       return;
-   rs->tri_kernel[0] = r_block_choose_tri(rs, false);
-   rs->tri_kernel[1] = r_block_choose_tri(rs, true);
+   for (int flat = 0; flat < 2; flat++)
+      rs->tri_kernel[flat] = rs->phong ? r_block_choose_tri_phong(rs, flat)
+                                       : r_block_choose_tri(rs, flat);
 #endif
 }

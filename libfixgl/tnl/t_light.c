@@ -336,6 +336,101 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
    }
 }
 
+/* Whether light_shade8 lights this Cook-Torrance batch, and its
+ * environment then (t_light_prepare): the shininess of the lit faces does
+ * not vary per vertex, and every other property either does not vary (set
+ * in env once, the value light_shade copies per vertex) or is the vertex
+ * colour (a color_material bit: m_shade_point8 reads the colour of the
+ * lane, light_shade copies the same floats); not under
+ * FIXGL_KERNELS=reference (the scalar path alone, which the tests compare
+ * with), and on a CPU with AVX2 and FMA. */
+static bool shade8_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+                           struct t_light_batch *lb)
+{
+   if (ctx->_Raster.reference_kernels || !m_shade_point8_avx2_supported())
+      return false;
+   const struct t_material_source *src = lb->src;
+   lb->color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &lb->cstride);
+   struct m_shade_env *env = &lb->env;
+   unsigned cm = 0;
+   for (int s = 0; s < (ctx->Light.Model.TwoSide ? 2 : 1); s++) {
+      if (src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
+         return false;
+      for (int k = 0; k < 4; k++) {
+         /* ambient, diffuse, specular, emission: front/back alternate */
+         const struct t_material_source *ms = &src[FGL_ATTR_MAT_FRONT_AMBIENT + 2 * k + s];
+         if (ms->stride != 0 && (ms->ptr != lb->color || ms->stride != lb->cstride))
+            return false;
+         if (ms->stride != 0)
+            cm |= (M_SHADE_CM_AMBIENT << k) << (s ? M_SHADE_CM_BACK_SHIFT : 0);
+      }
+   }
+   for (int s = 0; s < (ctx->Light.Model.TwoSide ? 2 : 1); s++) {
+      struct m_shade_material *m = &env->material[s];
+#define MAT(a) (src[(a) + s].ptr)
+      memcpy(m->ambient, MAT(FGL_ATTR_MAT_FRONT_AMBIENT), sizeof(m->ambient));
+      memcpy(m->diffuse, MAT(FGL_ATTR_MAT_FRONT_DIFFUSE), sizeof(m->diffuse));
+      memcpy(m->specular, MAT(FGL_ATTR_MAT_FRONT_SPECULAR), sizeof(m->specular));
+      memcpy(m->emission, MAT(FGL_ATTR_MAT_FRONT_EMISSION), sizeof(m->emission));
+      m->shininess = MAT(FGL_ATTR_MAT_FRONT_SHININESS)[0];
+#undef MAT
+   }
+   env->color_material = cm;
+   return true;
+}
+
+/* light_shade eight vertices at a time (shade8_prepare): the normals and
+ * eye positions as light_shade computes them, lit by m_shade_point8 per
+ * face (each lane m_shade_point_prepared's bits); a last group of fewer
+ * than eight fills its other lanes with its first vertex.  Where the
+ * AVX2 archive is built, t_light_avx2.c does it all in registers. */
+static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb,
+                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         struct t_vertex *out)
+{
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   /* the same in registers: gathered inputs, the lighting inline */
+   t_light_shade8_avx2(ctx, lb, in, first, n, out);
+#else
+   const struct m_shade_env *env = &lb->env;
+   const int sides = ctx->Light.Model.TwoSide ? 2 : 1;
+   const fgl_matrix *mv = ctx->ModelviewStack.Top;
+   const bool colour = env->color_material != 0;
+
+   for (unsigned i = first; i < first + n; i += M_SHADE_LANES) {
+      const unsigned cnt = first + n - i < M_SHADE_LANES ? first + n - i : M_SHADE_LANES;
+      float N[3][M_SHADE_LANES], P[3][M_SHADE_LANES], C[4][M_SHADE_LANES];
+      float prim[4][M_SHADE_LANES], sec[4][M_SHADE_LANES];
+      for (unsigned l = 0; l < M_SHADE_LANES; l++) {
+         const unsigned v = i + (l < cnt ? l : 0);
+         float nrm[3], p[4];
+         t_eye_normal(&lb->en, lb->normal + (size_t)v * lb->nstride, nrm);
+         t_mul_mad_chain(p, mv->m, in[v].attr[FGL_ATTR_POS]);
+         for (int k = 0; k < 3; k++) {
+            N[k][l] = nrm[k];
+            P[k][l] = p[k];
+         }
+         if (colour) {
+            const float *c = lb->color + (size_t)v * lb->cstride;
+            for (int k = 0; k < 4; k++)
+               C[k][l] = c[k];
+         }
+      }
+      for (int s = 0; s < sides; s++) {
+         m_shade_point8(env, (const float (*)[M_SHADE_LANES])N, (const float (*)[M_SHADE_LANES])P,
+                        s == 1, colour ? (const float (*)[M_SHADE_LANES])C : NULL, prim, sec);
+         for (unsigned l = 0; l < cnt; l++) {
+            float (*col)[4] = out[i + l].r.attr;
+            for (int k = 0; k < 4; k++) {
+               col[2 * s][k] = prim[k][l];
+               col[2 * s + 1][k] = sec[k][l];
+            }
+         }
+      }
+   }
+#endif
+}
+
 /* ---- Eight vertices at a time ----
  * The common case -- directional and positional lights without spot, a
  * shininess that does not vary per vertex -- is lit in
@@ -754,6 +849,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
    }
    lb->normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &lb->nstride);
    lb->simd = false;
+   lb->shade8 = false;
 
    /* GL_FIXGL_cook_torrance: m_shade_point for both faces, with the
     * batch's lights prepared here once; the fog coordinate is |P.z| of the
@@ -766,6 +862,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
       t_eye_normal_init(ctx, &lb->en);
       lb->key = key;
       lb->eye_position = true;
+      lb->shade8 = shade8_prepare(ctx, in, lb);
       return;
    }
 
@@ -836,7 +933,10 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
                  struct t_vertex *out)
 {
    if (lb->shade) {
-      light_shade(ctx, lb, in, first, n, out);
+      if (lb->shade8)
+         light_shade8(ctx, lb, in, first, n, out);
+      else
+         light_shade(ctx, lb, in, first, n, out);
       return;
    }
    const struct t_light_key *key = &lb->key;

@@ -69,6 +69,13 @@ struct t_light_batch {
                                * light_simd) */
    struct m_shade_env env;
    struct t_eye_normal en;
+   /* Cook-Torrance batches lit eight vertices at a time (m_shade_point8,
+    * t_light.c light_shade8): every material property of the lit faces is
+    * the batch's constant (in env) or the vertex colour (env's
+    * color_material bits, read from color, cstride floats apart) */
+   bool shade8;
+   const float *color;
+   unsigned cstride;
 };
 
 /* Prepare the lighting of the batch of stored vertices starting at in. */
@@ -80,6 +87,14 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
 void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
                  const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
                  struct t_vertex *out);
+
+#ifdef FGL_HAVE_BLOCK_KERNELS
+/* t_light_run of a batch with lb->shade8, AVX2 + FMA (t_light_avx2.c):
+ * only where m_shade_point8_avx2_supported(). */
+void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         struct t_vertex *out);
+#endif
 
 /* LIT's pow of n argument pairs, out[k] = m_gallivm_pow(x[k], y[k]),
  * through light_simd's eight-lane pow where the CPU has AVX2 and FMA (for
