@@ -30,7 +30,26 @@
  */
 #include "r_block_avx2.h"
 
-enum { FLAT = 0, SMOOTH = 1 };
+/* FLAT, SMOOTH: the colour input alone; EXTRA: with the colour sum or fog
+ * (either flat or smooth inputs, one out-of-line stage per half) */
+enum { FLAT = 0, SMOOTH = 1, EXTRA = 2 };
+
+/* The colour, the colour sum and fog of 8 lanes (shade_pixel's inputs,
+ * r_frag.c fragment_shader), packed.  Out of line: the kernels of every
+ * fragment-operation variant share it; the state it reads is per
+ * triangle. */
+static __attribute__((noinline)) __m256i extra_half(const struct r_state *rs,
+                                                    const struct r_tri_setup *ts, __m256 fx,
+                                                    __m256 fy)
+{
+   const __m256 rw = ts->need_w ? _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy))
+                                : _mm256_setzero_ps();
+   __m256 out[4];
+   for (int c = 0; c < 4; c++)
+      out[c] = input8(ts, R_FS_COLOR0, c, fx, fy, rw);
+   color_sum_fog8(rs, ts, fx, fy, rw, out);
+   return pack_rgba8(out[0], out[1], out[2], out[3]);
+}
 
 struct block_stage {
    uint32_t flat_rgba;   /* a flat colour is the same bytes at every pixel */
@@ -57,6 +76,8 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    (void)rs; (void)x; (void)y; (void)m8; (void)live;
    if (variant == FLAT)
       return _mm256_set1_epi32((int)st->flat_rgba);
+   if (variant == EXTRA)
+      return extra_half(rs, ts, fx, fy);
    const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
    const struct r_attr_plane *ap = ts->ap[R_FS_COLOR0];
    return pack_rgba8(_mm256_mul_ps(eval8(&ap[0], fx, fy), rw),
@@ -73,6 +94,12 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
    (void)rs; (void)st;
    if (variant == FLAT)
       return _mm256_set1_ps(ts->flat[R_FS_COLOR0][3]);
+   if (variant == EXTRA) {
+      /* the colour sum and fog leave alpha alone */
+      const __m256 rw = ts->need_w ? _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy))
+                                   : _mm256_setzero_ps();
+      return input8(ts, R_FS_COLOR0, 3, fx, fy, rw);
+   }
    const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
    return _mm256_mul_ps(eval8(&ts->ap[R_FS_COLOR0][3], fx, fy), rw);
 }
@@ -102,12 +129,14 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
      { prefix##_z24, prefix##_z24w }, { prefix##_z24s, prefix##_z24sw },                    \
      { prefix##_s, prefix##_s } }
 
-/* [smooth][zfmt][zwrite] */
+/* [FLAT, SMOOTH, EXTRA][zfmt][zwrite] */
 #define TRI_KERNELS_BLEND(prefix, bl)                                                      \
    TRI_KERNELS_SHADE(prefix##_flat, FLAT, bl)                                              \
    TRI_KERNELS_SHADE(prefix##_smooth, SMOOTH, bl)                                          \
-   static const r_tri_kernel prefix##_table[2][5][2] = {                                   \
+   TRI_KERNELS_SHADE(prefix##_extra, EXTRA, bl)                                            \
+   static const r_tri_kernel prefix##_table[3][5][2] = {                                   \
       TRI_KERNELS_ROW(prefix##_flat), TRI_KERNELS_ROW(prefix##_smooth),                    \
+      TRI_KERNELS_ROW(prefix##_extra),                                                     \
    };
 
 TRI_KERNELS_BLEND(opaque, BL_NONE)
@@ -124,12 +153,15 @@ static const r_tri_kernel(*const tables[])[5][2] = {
 
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
 {
-   /* the fragment program: the colour input alone, no texture, colour
-    * sum, fog, GL_PHONG_WIN, pixel rectangle, coverage lowering or
-    * stipple */
-   if (rs->fs_inputs != 1u << R_FS_COLOR0 || rs->tex_units || rs->color_sum ||
-       rs->fog_mode != R_FOG_NONE || rs->phong || rs->pix || rs->aa != R_AA_NONE ||
-       rs->stipple || !rs->color)
+   /* the fragment program: the colour input, with the secondary colour
+    * under the colour sum and the fog coordinate under fog, and nothing
+    * else: no texture, GL_PHONG_WIN, pixel rectangle, coverage lowering
+    * or stipple */
+   const bool extra = rs->color_sum || rs->fog_mode != R_FOG_NONE;
+   const unsigned inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u) |
+                           (rs->fog_mode != R_FOG_NONE ? 1u << R_FS_FOG : 0u);
+   if (rs->fs_inputs != inputs || rs->tex_units || rs->phong || rs->pix ||
+       rs->aa != R_AA_NONE || rs->stipple || !rs->color)
       return NULL;
    /* the fragment operations (r_fragment_ops): the alpha test on the
     * colour's precision, no stencil test; then the depth test and store,
@@ -164,5 +196,5 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
       default:         return NULL;
       }
    }
-   return tables[bl][!flat_color][zf][rs->depth_write];
+   return tables[bl][extra ? EXTRA : flat_color ? FLAT : SMOOTH][zf][rs->depth_write];
 }

@@ -10,6 +10,7 @@
 
 #include "r_kernel.h"
 #include "r_blend.h"
+#include "math/m_shade_avx2.h"
 
 #include <immintrin.h>
 #include <string.h>
@@ -403,6 +404,58 @@ static ALWAYS_INLINE __m256i pack_rgba8(__m256 r, __m256 g, __m256 b, __m256 a)
    return _mm256_or_si256(_mm256_or_si256(unorm8(r), _mm256_slli_epi32(unorm8(g), 8)),
                           _mm256_or_si256(_mm256_slli_epi32(unorm8(b), 16),
                                           _mm256_slli_epi32(unorm8(a), 24)));
+}
+
+/* input a's component c at the lanes, as shade_pixel reads it */
+static ALWAYS_INLINE __m256 input8(const struct r_tri_setup *ts, int a, int c, __m256 fx, __m256 fy,
+                                   __m256 rw)
+{
+   if (ts->flat_attr[a])
+      return _mm256_set1_ps(ts->flat[a][c]);
+   return _mm256_mul_ps(eval8(&ts->ap[a][c], fx, fy), rw);
+}
+
+/* r_frag.c fog_factor in 8 lanes: LINEAR fc * p0 + p1, EXP
+ * exp2(-(fc * p2)), EXP2 exp2(-(t * t)) with t = fc * p3 (exp2v is
+ * m_gallivm_exp2 lane-wise), then max(f, 0) (NaN -> 0) and min(., 1) */
+static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)
+{
+   const float *p = rs->fog_params;
+   __m256 f;
+   switch (rs->fog_mode) {
+   case R_FOG_LINEAR:
+      f = _mm256_add_ps(_mm256_mul_ps(fc, _mm256_set1_ps(p[0])), _mm256_set1_ps(p[1]));
+      break;
+   case R_FOG_EXP:
+      f = exp2v(vneg(_mm256_mul_ps(fc, _mm256_set1_ps(p[2]))));
+      break;
+   case R_FOG_EXP2:
+   default: {
+      const __m256 t = _mm256_mul_ps(fc, _mm256_set1_ps(p[3]));
+      f = exp2v(vneg(_mm256_mul_ps(t, t)));
+      break;
+   }
+   }
+   f = _mm256_max_ps(f, _mm256_setzero_ps());
+   return _mm256_min_ps(f, _mm256_set1_ps(1.0f));
+}
+
+/* the fragment program's colour sum and fog (r_frag.c fragment_shader):
+ * rgb += secondary rgb, then fogcolor * (1 + -f) + rgb * f on rgb */
+static ALWAYS_INLINE void color_sum_fog8(const struct r_state *rs, const struct r_tri_setup *ts,
+                                         __m256 fx, __m256 fy, __m256 rw, __m256 out[4])
+{
+   if (rs->color_sum) {
+      for (int c = 0; c < 3; c++)
+         out[c] = _mm256_add_ps(out[c], input8(ts, R_FS_COLOR1, c, fx, fy, rw));
+   }
+   if (rs->fog_mode != R_FOG_NONE) {
+      const __m256 f = fog_factor8(rs, input8(ts, R_FS_FOG, 0, fx, fy, rw));
+      const __m256 g = _mm256_add_ps(_mm256_set1_ps(1.0f), vneg(f));
+      for (int c = 0; c < 3; c++)
+         out[c] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(rs->fog_color[c]), g),
+                                _mm256_mul_ps(out[c], f));
+   }
 }
 
 #endif

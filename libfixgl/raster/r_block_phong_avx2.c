@@ -38,39 +38,7 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
    st->unused = 0;
 }
 
-/* input a's component c at the lanes, as shade_pixel reads it */
-static ALWAYS_INLINE __m256 input8(const struct r_tri_setup *ts, int a, int c, __m256 fx, __m256 fy,
-                                   __m256 rw)
-{
-   if (ts->flat_attr[a])
-      return _mm256_set1_ps(ts->flat[a][c]);
-   return _mm256_mul_ps(eval8(&ts->ap[a][c], fx, fy), rw);
-}
-
-/* r_frag.c fog_factor in 8 lanes: LINEAR fc * p0 + p1, EXP
- * exp2(-(fc * p2)), EXP2 exp2(-(t * t)) with t = fc * p3 (exp2v is
- * m_gallivm_exp2 lane-wise), then max(f, 0) (NaN -> 0) and min(., 1) */
-static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)
-{
-   const float *p = rs->fog_params;
-   __m256 f;
-   switch (rs->fog_mode) {
-   case R_FOG_LINEAR:
-      f = _mm256_add_ps(_mm256_mul_ps(fc, _mm256_set1_ps(p[0])), _mm256_set1_ps(p[1]));
-      break;
-   case R_FOG_EXP:
-      f = exp2v(vneg(_mm256_mul_ps(fc, _mm256_set1_ps(p[2]))));
-      break;
-   case R_FOG_EXP2:
-   default: {
-      const __m256 t = _mm256_mul_ps(fc, _mm256_set1_ps(p[3]));
-      f = exp2v(vneg(_mm256_mul_ps(t, t)));
-      break;
-   }
-   }
-   f = _mm256_max_ps(f, _mm256_setzero_ps());
-   return _mm256_min_ps(f, _mm256_set1_ps(1.0f));
-}
+/* input8, fog_factor8: r_block_avx2.h */
 
 /* The lit fragment colour of 8 lanes, packed.  One copy, out of line,
  * shared by the depth and blend kernels: the state it reads (the vertex
