@@ -2280,7 +2280,8 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
       unsigned exec_attr_size[FGL_ATTR_COUNT];
       memcpy(exec_attr_size, ctx->Vbo.attr_size, sizeof(exec_attr_size));
       memcpy(ctx->Vbo.attr_size, vl->attrsz, sizeof(vl->attrsz));
-      t_render_batch(ctx, vl->verts, vl->nverts, vl->draws, vl->ndraws);
+      const struct fgl_vertex_view view = fgl_vertex_view_full(vl->verts);
+      t_render_batch(ctx, &view, vl->nverts, vl->draws, vl->ndraws);
       memcpy(ctx->Vbo.attr_size, exec_attr_size, sizeof(exec_attr_size));
    }
    if (vl->kind == VL_COPY_CURRENT)

@@ -228,7 +228,8 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       .mode = mode, .start = 0, .count = (unsigned)count,
       .begin = true, .end = true, .indexed = index_type != 0,
    };
-   t_render_batch_elts(ctx, verts, nverts, elts, &prim, 1);
+   const struct fgl_vertex_view view = fgl_vertex_view_full(verts);
+   t_render_batch_elts(ctx, &view, nverts, elts, &prim, 1);
    /* flush_for_draw left the format empty */
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
    if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {

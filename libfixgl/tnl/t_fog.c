@@ -30,7 +30,7 @@
  * only with GL_GLEXT_PROTOTYPES), so it keeps Mesa's initial value. */
 #define CURRENT_FOG_COORDINATE 0.0f
 
-void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_fog(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out)
 {
    const struct fgl_fog_attrib *fog = &ctx->Fog;
@@ -40,7 +40,7 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsig
    const bool chain = radial || eye_position_from_lighting;
 
    for (unsigned i = 0; i < n; i++) {
-      const float *p = in[i].attr[FGL_ATTR_POS];
+      const float *p = fgl_vv_attr(in, i, FGL_ATTR_POS);
       float fc;
       if (from_array) {
          fc = fabsf(CURRENT_FOG_COORDINATE);

@@ -297,7 +297,7 @@ void t_transformed_normal(const struct fgl_context *ctx, const float *in, float 
  * is tracked, per-vertex values where the format has them, else the
  * current ones), the reflectance parameters from the lighting state. */
 static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
-                        const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                        const struct fgl_vertex_view *in, unsigned first, unsigned n,
                         struct t_vertex *out)
 {
    struct m_shade_env *env = &lb->env;
@@ -314,7 +314,7 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
        * lighting ignores it). */
       float nrm[3], P[4];
       t_eye_normal(&lb->en, lb->normal + (size_t)i * lb->nstride, nrm);
-      t_mul_mad_chain(P, mv->m, in[i].attr[FGL_ATTR_POS]);
+      t_mul_mad_chain(P, mv->m, fgl_vv_attr(in, i, FGL_ATTR_POS));
 
       for (int s = 0; s < sides; s++) {
          struct m_shade_material *m = &env->material[s];
@@ -344,7 +344,7 @@ static void light_shade(const struct fgl_context *ctx, struct t_light_batch *lb,
  * lane, light_shade copies the same floats); not under
  * FIXGL_KERNELS=reference (the scalar path alone, which the tests compare
  * with), and on a CPU with AVX2 and FMA. */
-static bool shade8_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+static bool shade8_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                            struct t_light_batch *lb)
 {
    if (ctx->_Raster.reference_kernels || !m_shade_point8_avx2_supported())
@@ -385,7 +385,7 @@ static bool shade8_prepare(const struct fgl_context *ctx, const struct fgl_vbo_v
  * than eight fills its other lanes with its first vertex.  Where the
  * AVX2 archive is built, t_light_avx2.c does it all in registers. */
 static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb,
-                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         const struct fgl_vertex_view *in, unsigned first, unsigned n,
                          struct t_vertex *out)
 {
 #ifdef FGL_HAVE_BLOCK_KERNELS
@@ -405,7 +405,7 @@ static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb
          const unsigned v = i + (l < cnt ? l : 0);
          float nrm[3], p[4];
          t_eye_normal(&lb->en, lb->normal + (size_t)v * lb->nstride, nrm);
-         t_mul_mad_chain(p, mv->m, in[v].attr[FGL_ATTR_POS]);
+         t_mul_mad_chain(p, mv->m, fgl_vv_attr(in, v, FGL_ATTR_POS));
          for (int k = 0; k < 3; k++) {
             N[k][l] = nrm[k];
             P[k][l] = p[k];
@@ -550,7 +550,7 @@ T_AVX2 static inline void normalize3_8(__m256 v[3])
 }
 
 T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                              const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                              const struct fgl_vertex_view *in, unsigned first, unsigned n,
                               struct t_vertex *out)
 {
    const struct t_light_key *key = &lb->key;
@@ -602,7 +602,7 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
       if (key->eye) {
          float p[4][8];
          for (unsigned l = 0; l < 8; l++) {
-            const float *q = in[g + (l < cnt ? l : cnt - 1)].attr[FGL_ATTR_POS];
+            const float *q = fgl_vv_attr(in, g + (l < cnt ? l : cnt - 1), FGL_ATTR_POS);
             for (int k = 0; k < 4; k++)
                p[k][l] = q[k];
          }
@@ -821,7 +821,7 @@ static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_li
 #endif
 }
 
-void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                      struct t_light_batch *lb)
 {
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
@@ -929,7 +929,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex 
 
 T_FMA_CLONES
 void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
-                 const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                 const struct fgl_vertex_view *in, unsigned first, unsigned n,
                  struct t_vertex *out)
 {
    if (lb->shade) {
@@ -959,7 +959,7 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
       transform_normal(ctx, key, lb->normal + (size_t)i * lb->nstride, nrm);
       if (key->eye) {
          /* eye position: the modelview's column MUL/MAD chain */
-         t_mul_mad_chain(V, mv, in[i].attr[FGL_ATTR_POS]);
+         t_mul_mad_chain(V, mv, fgl_vv_attr(in, i, FGL_ATTR_POS));
       }
 #define MAT(a) (src[a].ptr + (size_t)i * src[a].stride)
       const struct material mat[2] = {

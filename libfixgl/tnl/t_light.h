@@ -79,20 +79,20 @@ struct t_light_batch {
 };
 
 /* Prepare the lighting of the batch of stored vertices starting at in. */
-void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                      struct t_light_batch *lb);
 
 /* Light the batch's vertices first..first+n-1 (in and out index the
  * whole batch): the R_ATTR_* colour slots of out[], before the clamp. */
 void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
-                 const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                 const struct fgl_vertex_view *in, unsigned first, unsigned n,
                  struct t_vertex *out);
 
 #ifdef FGL_HAVE_BLOCK_KERNELS
 /* t_light_run of a batch with lb->shade8, AVX2 + FMA (t_light_avx2.c):
  * only where m_shade_point8_avx2_supported(). */
 void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         const struct fgl_vertex_view *in, unsigned first, unsigned n,
                          struct t_vertex *out);
 #endif
 

@@ -35,7 +35,7 @@ static inline void store_rgba8(const v8 c[4], struct t_vertex *out, unsigned cnt
 }
 
 void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                         const struct fgl_vbo_vertex *in, unsigned first, unsigned n,
+                         const struct fgl_vertex_view *in, unsigned first, unsigned n,
                          struct t_vertex *out)
 {
    const struct m_shade_env *env = &lb->env;
@@ -44,7 +44,7 @@ void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_bat
    const float *m = ctx->ModelviewStack.Top->m;
    const float *inv = en->inv;
    const bool colour = env->color_material != 0;
-   const int vstride = (int)(sizeof(struct fgl_vbo_vertex) / sizeof(float));
+   const int vstride = (int)in->stride;
    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
 
    for (unsigned i = first; i < first + n; i += M_SHADE_LANES) {
@@ -73,7 +73,7 @@ void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_bat
       }
 
       /* P = t_mul_mad_chain(modelview, position), xyz */
-      const float *pb = in[i].attr[FGL_ATTR_POS];
+      const float *pb = fgl_vv_attr(in, i, FGL_ATTR_POS);
       const __m256i pi = _mm256_mullo_epi32(l, _mm256_set1_epi32(vstride));
       v8 pin[4], P[3];
       for (int k = 0; k < 4; k++)

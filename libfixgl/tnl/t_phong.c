@@ -85,7 +85,7 @@ void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3])
    }
 }
 
-void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_phong(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
              struct t_vertex *out)
 {
    const fgl_matrix *mv = ctx->ModelviewStack.Top;
@@ -111,6 +111,6 @@ void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, uns
        * points, t_draw_pipe.c) */
       nrm[3] = 1.0f;
 
-      t_mul_mad_chain(attr[R_ATTR_EYEPOS], mv->m, in[i].attr[FGL_ATTR_POS]);
+      t_mul_mad_chain(attr[R_ATTR_EYEPOS], mv->m, fgl_vv_attr(in, i, FGL_ATTR_POS));
    }
 }

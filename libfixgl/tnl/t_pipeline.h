@@ -99,7 +99,7 @@ enum t_edge_source { T_EDGES_SET, T_EDGES_FROM_DATA, T_EDGES_CLEAR };
 /* The vertex stage of n stored vertices into out[]: positions, clip codes,
  * texture coordinates, lighting or the vertex colour, fog and edge
  * flags. */
-void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                  unsigned n, struct t_vertex *out, enum t_edge_source edges);
 
 /* Lighting (t_light.c): see tnl/t_light.h. */
@@ -121,7 +121,7 @@ void t_eye_normal(const struct t_eye_normal *en, const float *in, float n[3]);
  * colour (R_ATTR_COLOR0), the
  * eye-space normal (R_ATTR_NORMAL, w = 1: front) and the eye position
  * (R_ATTR_EYEPOS) of n stored vertices, for r_fragment_phong. */
-void t_phong(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_phong(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
              struct t_vertex *out);
 
 /* The oracle's transformed normal (get_transformed_normal) of one vertex's
@@ -130,12 +130,12 @@ void t_transformed_normal(const struct fgl_context *ctx, const float *in, float 
 
 /* The texture coordinates of n stored vertices (t_texcoord.c) into the
  * R_ATTR_TEX0 + u slots of out[], for the units in `units`. */
-void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_texcoord(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
                 unsigned units, struct t_vertex *out);
 
 /* The fog coordinate of n stored vertices (t_fog.c) into the R_ATTR_FOG
  * slot of out[]; eye_position_from_lighting is t_light_batch.eye_position. */
-void t_fog(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_fog(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out);
 
 /* Clip planes in the oracle's order (outcode bit order): 0-5 the view
@@ -209,13 +209,13 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
                           bool stale_flat);
 
 /* Draw a batch of immediate-mode primitives. */
-void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims);
 /* The same with the primitives' vertices through an element list: vertex
  * i of the primitives is verts[elts[i]] (an indexed draw's post-transform
  * vertex cache, t_array.c: each of the nverts vertices is transformed and
  * lit once however often the primitives use it). */
-void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                          unsigned nverts, const unsigned *elts,
                          const struct fgl_vbo_prim *prims, unsigned nprims);
 

@@ -40,7 +40,7 @@
 struct render {
    struct fgl_context *ctx;
    const struct t_vertex *v;     /* transformed vertices of the draw */
-   const struct fgl_vbo_vertex *in;   /* the stored vertices */
+   const struct fgl_vertex_view *in;   /* the stored vertices */
    /* an indexed draw's vertex cache: vertex i of the primitives is
     * v[elts[i]] (NULL: v[i]) */
    const unsigned *elts;
@@ -69,16 +69,16 @@ static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
 static void phong_material(const struct render *r, unsigned pv)
 {
    struct m_shade_env *env = &r->ctx->_Raster.shade_env;
-   const struct fgl_vbo_vertex *v = &r->in[elt(r, pv)];
+   const unsigned vi = elt(r, pv);
    for (unsigned m = r->phong_mats; m; m &= m - 1) {
       const int a = FGL_ATTR_MAT_FIRST + __builtin_ctz(m);
       struct m_shade_material *mat = &env->material[(a - FGL_ATTR_MAT_FIRST) & 1];
       switch ((a - FGL_ATTR_MAT_FIRST) >> 1) {
-      case 0: memcpy(mat->ambient, v->attr[a], sizeof(mat->ambient)); break;
-      case 1: memcpy(mat->diffuse, v->attr[a], sizeof(mat->diffuse)); break;
-      case 2: memcpy(mat->specular, v->attr[a], sizeof(mat->specular)); break;
-      case 3: memcpy(mat->emission, v->attr[a], sizeof(mat->emission)); break;
-      case 4: mat->shininess = v->attr[a][0]; break;
+      case 0: memcpy(mat->ambient, fgl_vv_attr(r->in, vi, a), sizeof(mat->ambient)); break;
+      case 1: memcpy(mat->diffuse, fgl_vv_attr(r->in, vi, a), sizeof(mat->diffuse)); break;
+      case 2: memcpy(mat->specular, fgl_vv_attr(r->in, vi, a), sizeof(mat->specular)); break;
+      case 3: memcpy(mat->emission, fgl_vv_attr(r->in, vi, a), sizeof(mat->emission)); break;
+      case 4: mat->shininess = fgl_vv_attr(r->in, vi, a)[0]; break;
       default: break;   /* colour indexes */
       }
    }
@@ -308,7 +308,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
    }
 }
 
-static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                          unsigned nverts, const unsigned *elts,
                          const struct fgl_vbo_prim *prims, unsigned nprims)
 {
@@ -443,7 +443,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
 }
 
 /* fixglStats (main/stats.c): with the counters on, the batch is timed */
-void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                          unsigned nverts, const unsigned *elts,
                          const struct fgl_vbo_prim *prims, unsigned nprims)
 {
@@ -457,7 +457,7 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vbo_vertex *v
    render_batch(ctx, verts, nverts, elts, prims, nprims);
 }
 
-void t_render_batch(struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+void t_render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                     unsigned nverts, const struct fgl_vbo_prim *prims, unsigned nprims)
 {
    t_render_batch_elts(ctx, verts, nverts, NULL, prims, nprims);

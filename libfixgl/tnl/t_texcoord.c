@@ -48,7 +48,7 @@ static unsigned component_mode(const struct fgl_texture_unit *t, int c)
    }
 }
 
-void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, unsigned n,
+void t_texcoord(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
                 unsigned units, struct t_vertex *out)
 {
    /* whether the program computes a reflection map's R anywhere (the
@@ -98,7 +98,7 @@ void t_texcoord(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in, 
          }
          float g[4] = { tc[0], tc[1], tc[2], tc[3] };
          if (texgen) {
-            const float *obj = in[i].attr[FGL_ATTR_POS];
+            const float *obj = fgl_vv_attr(in, i, FGL_ATTR_POS);
             float eye[4] = { 0 }, nrm[3] = { 0 }, eye_hat[3] = { 0 }, r[3] = { 0 };
             float neg_nu_n[3] = { 0 };
             if (need_eye)

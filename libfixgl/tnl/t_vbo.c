@@ -14,10 +14,41 @@
 
 static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
 
+/* The packed layout of the stored vertices for the current format: the
+ * position in slot 0, then each attribute of the format in attribute
+ * order.  Only changed with no vertex stored (after a flush or wrap). */
+static void relayout(struct fgl_vbo *vbo)
+{
+   int k = 1;
+   for (int a = 0; a < FGL_ATTR_COUNT; a++)
+      vbo->slot[a] = a == FGL_ATTR_POS ? 0 : (vbo->format_mask >> a) & 1u ? (int8_t)k++ : -1;
+   vbo->vstride = 4u * (unsigned)k;
+}
+
+/* the view of the stored vertices (t_render_batch) */
+static struct fgl_vertex_view stored_view(const struct fgl_vbo *vbo)
+{
+   struct fgl_vertex_view v;
+   v.base = vbo->verts;
+   v.stride = vbo->vstride;
+   memcpy(v.slot, vbo->slot, sizeof(v.slot));
+   return v;
+}
+
+/* stored vertex i into the whole vertex d (its format's attributes) */
+static void unpack_vertex(const struct fgl_vbo *vbo, unsigned i, struct fgl_vbo_vertex *d)
+{
+   const float *src = vbo->verts + (size_t)i * vbo->vstride;
+   for (int a = 0; a < FGL_ATTR_COUNT; a++)
+      if (vbo->slot[a] >= 0)
+         memcpy(d->attr[a], src + 4 * vbo->slot[a], sizeof(d->attr[a]));
+}
+
 bool fgl_vbo_init(struct fgl_vbo *vbo)
 {
    memset(vbo, 0, sizeof(*vbo));
-   vbo->vert_alloc = 1024;
+   relayout(vbo);
+   vbo->vert_alloc = 1024 * 8;
    vbo->verts = malloc(vbo->vert_alloc * sizeof(*vbo->verts));
    for (int a = 0; a < FGL_ATTR_COUNT; a++)
       memcpy(vbo->current[a], attr_default, sizeof(attr_default));
@@ -69,7 +100,7 @@ static unsigned compute_max_verts(const struct fgl_vbo *vbo)
 static unsigned copy_vertices(struct fgl_vbo *vbo, GLenum mode, struct fgl_vbo_vertex *dst)
 {
    struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
-   const struct fgl_vbo_vertex *src = vbo->verts + last->start;
+   unsigned src = last->start;   /* stored vertex index */
    const unsigned count = last->count;
    unsigned copy;
 
@@ -101,10 +132,10 @@ static unsigned copy_vertices(struct fgl_vbo *vbo, GLenum mode, struct fgl_vbo_v
    case GL_POLYGON:
       if (count == 0)
          return 0;
-      dst[0] = src[0];
+      unpack_vertex(vbo, src, &dst[0]);
       if (count == 1)
          return 1;
-      dst[1] = src[count - 1];
+      unpack_vertex(vbo, src + count - 1, &dst[1]);
       return 2;
    case GL_TRIANGLE_STRIP:
       /* keep an even number of triangles in each draw so that windings
@@ -118,7 +149,8 @@ static unsigned copy_vertices(struct fgl_vbo *vbo, GLenum mode, struct fgl_vbo_v
    default:
       return 0;
    }
-   memcpy(dst, src + count - copy, copy * sizeof(*dst));
+   for (unsigned k = 0; k < copy; k++)
+      unpack_vertex(vbo, src + count - copy + k, &dst[k]);
    return copy;
 }
 
@@ -136,8 +168,10 @@ static void vtx_flush(struct fgl_context *ctx, struct fgl_vbo_vertex *copied,
    if (vbo->prim_count && vbo->vert_count) {
       if (fgl_inside_begin_end(ctx))
          nc = copy_vertices(vbo, ctx->BeginMode, copied);
-      if (nc != vbo->vert_count)
-         t_render_batch(ctx, vbo->verts, vbo->vert_count, vbo->prims, vbo->prim_count);
+      if (nc != vbo->vert_count) {
+         const struct fgl_vertex_view view = stored_view(vbo);
+         t_render_batch(ctx, &view, vbo->vert_count, vbo->prims, vbo->prim_count);
+      }
    }
    /* the emulated buffer advances; with 1 KiB or less left a new one is used */
    vbo->buffer_used += vbo->vert_count * vbo->vertex_size * (unsigned)sizeof(float);
@@ -198,25 +232,35 @@ static unsigned wrap_buffers(struct fgl_context *ctx, struct fgl_vbo_vertex *cop
    return ncopied;
 }
 
+/* room for n stored vertices of the current layout */
 static bool ensure_room(struct fgl_vbo *vbo, unsigned n)
 {
-   if (n <= vbo->vert_alloc)
+   const size_t want = (size_t)n * vbo->vstride;
+   if (want <= vbo->vert_alloc)
       return true;
-   unsigned alloc = vbo->vert_alloc;
-   while (alloc < n)
+   size_t alloc = vbo->vert_alloc;
+   while (alloc < want)
       alloc *= 2;
-   struct fgl_vbo_vertex *v = realloc(vbo->verts, alloc * sizeof(*v));
+   if (alloc > UINT32_MAX)
+      return false;
+   float *v = realloc(vbo->verts, alloc * sizeof(*v));
    if (!v)
       return false;
    vbo->verts = v;
-   vbo->vert_alloc = alloc;
+   vbo->vert_alloc = (unsigned)alloc;
    return true;
 }
 
+/* the copied vertices stored again, in the current layout */
 static void put_back(struct fgl_vbo *vbo, const struct fgl_vbo_vertex *copied, unsigned n)
 {
    if (n && ensure_room(vbo, vbo->vert_count + n)) {
-      memcpy(vbo->verts + vbo->vert_count, copied, n * sizeof(*copied));
+      for (unsigned k = 0; k < n; k++) {
+         float *dst = vbo->verts + (size_t)(vbo->vert_count + k) * vbo->vstride;
+         for (int a = 0; a < FGL_ATTR_COUNT; a++)
+            if (vbo->slot[a] >= 0)
+               memcpy(dst + 4 * vbo->slot[a], copied[k].attr[a], sizeof(copied[k].attr[a]));
+      }
       vbo->vert_count += n;
    }
 }
@@ -251,6 +295,7 @@ static void reset_all_attr(struct fgl_vbo *vbo)
    memset(vbo->active_size, 0, sizeof(vbo->active_size));
    vbo->vertex_size = 0;
    vbo->size_no_pos = 0;
+   relayout(vbo);
 }
 
 /* the slot layout of vbo_exec_wrap_upgrade_vertex: a new attribute is
@@ -322,6 +367,7 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
    vbo->active_size[attr] = size;
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
+   relayout(vbo);
    put_back(vbo, copied, n);
 }
 
@@ -332,12 +378,12 @@ static void clean_value(const struct fgl_vbo *vbo, enum fgl_vbo_attr attr, float
       out[i] = i < vbo->attr_size[attr] ? vbo->current[attr][i] : attr_default[i];
 }
 
-const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                               enum fgl_vbo_attr attr, unsigned *stride)
 {
-   if (ctx->Vbo.attr_size[attr]) {
-      *stride = sizeof(struct fgl_vbo_vertex) / sizeof(float);
-      return verts->attr[attr];
+   if (ctx->Vbo.attr_size[attr] && verts->slot[attr] >= 0) {
+      *stride = verts->stride;
+      return verts->base + 4 * verts->slot[attr];
    }
    *stride = 0;
    return ctx->Current.Attrib[attr];
@@ -431,15 +477,16 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
     * but belongs to no primitive, as in Mesa) */
    if (!ensure_room(vbo, vbo->vert_count + 1))
       return;
-   struct fgl_vbo_vertex *dst = &vbo->verts[vbo->vert_count];
-   memcpy(dst->attr[FGL_ATTR_POS], cur, sizeof(dst->attr[FGL_ATTR_POS]));
-   /* only the format's attributes are stored; the others are constant for
-    * the batch and read from ctx->Current.Attrib (fgl_vbo_attr_ptr) */
+   float *dst = vbo->verts + (size_t)vbo->vert_count * vbo->vstride;
+   memcpy(dst, cur, 4 * sizeof(float));
+   /* only the format's attributes are stored, packed; the others are
+    * constant for the batch and read from ctx->Current.Attrib
+    * (fgl_vbo_attr_ptr) */
    for (unsigned m = vbo->format_mask; m; m &= m - 1) {
       const int a = __builtin_ctz(m);
       /* clean_value: current[a] holds the defaults past attr_size[a]
        * (upgrade_vertex; calls write only the format's components) */
-      memcpy(dst->attr[a], vbo->current[a], sizeof(dst->attr[a]));
+      memcpy(dst + 4 * vbo->slot[a], vbo->current[a], 4 * sizeof(float));
    }
    if (++vbo->vert_count >= vbo->max_vert)
       vtx_wrap(ctx);
@@ -488,7 +535,8 @@ void fgl_vbo_end(struct fgl_context *ctx)
     * second vertex, which closes the loop (the count stays the same) */
    if (last->mode == GL_LINE_LOOP && !last->begin &&
        ensure_room(vbo, vbo->vert_count + 1)) {
-      vbo->verts[vbo->vert_count] = vbo->verts[last->start];
+      memcpy(vbo->verts + (size_t)vbo->vert_count * vbo->vstride,
+             vbo->verts + (size_t)last->start * vbo->vstride, vbo->vstride * sizeof(float));
       last->start++;
       last->mode = GL_LINE_STRIP;
       vbo->vert_count++;

@@ -21,6 +21,7 @@
 #include <GL/gl.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
@@ -99,6 +100,41 @@ struct fgl_vbo_vertex {
    float attr[FGL_ATTR_COUNT][4];
 };
 
+/* A batch's vertices as the vertex stage reads them: vertex i's attribute
+ * a is the float[4] at base + i * stride + 4 * slot[a] (slot -1: not
+ * stored).  Immediate mode stores the position and the format's
+ * attributes only, packed (t_vbo.c); display lists and vertex arrays
+ * store whole struct fgl_vbo_vertex (fgl_vertex_view_full). */
+struct fgl_vertex_view {
+   const float *base;
+   unsigned stride;                     /* floats */
+   int8_t slot[FGL_ATTR_COUNT];
+};
+
+static inline const float *fgl_vv_attr(const struct fgl_vertex_view *v, unsigned i, int a)
+{
+   return v->base + (size_t)i * v->stride + 4u * (unsigned)v->slot[a];
+}
+
+/* the view of v from vertex `first` on */
+static inline struct fgl_vertex_view fgl_vv_from(const struct fgl_vertex_view *v, unsigned first)
+{
+   struct fgl_vertex_view r = *v;
+   r.base += (size_t)first * v->stride;
+   return r;
+}
+
+/* the view of whole stored vertices */
+static inline struct fgl_vertex_view fgl_vertex_view_full(const struct fgl_vbo_vertex *verts)
+{
+   struct fgl_vertex_view v;
+   v.base = verts->attr[0];
+   v.stride = sizeof(struct fgl_vbo_vertex) / sizeof(float);
+   for (int a = 0; a < FGL_ATTR_COUNT; a++)
+      v.slot[a] = (int8_t)a;
+   return v;
+}
+
 struct fgl_vbo_prim {
    GLenum mode;
    unsigned start, count;
@@ -107,8 +143,12 @@ struct fgl_vbo_prim {
 };
 
 struct fgl_vbo {
-   struct fgl_vbo_vertex *verts;
-   unsigned vert_count, max_vert, vert_alloc;
+   /* the stored vertices, packed: the position, then the format's
+    * attributes in attribute order, float[4] each (the view's slots) */
+   float *verts;
+   unsigned vert_count, max_vert, vert_alloc;   /* vert_alloc: floats */
+   unsigned vstride;                    /* floats per stored vertex */
+   int8_t slot[FGL_ATTR_COUNT];
    struct fgl_vbo_prim prims[FGL_VBO_MAX_PRIM];
    unsigned prim_count;
    unsigned attr_size[FGL_ATTR_COUNT];  /* components in the vertex format, 0 = absent */
@@ -175,7 +215,7 @@ void fgl_vbo_end(struct fgl_context *ctx);
 /* While a batch is drawn: where attribute attr of vertex verts[i] is, as
  * ptr + i * stride floats.  Attributes outside the batch's format are the
  * same for every vertex (Mesa's stride-0 current values): stride 0. */
-const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vbo_vertex *verts,
+const float *fgl_vbo_attr_ptr(const struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                               enum fgl_vbo_attr attr, unsigned *stride);
 
 /* vbo_exec_FlushVertices(FLUSH_STORED_VERTICES): draw what is stored,

@@ -74,7 +74,7 @@ static inline void clamp01x4(float *dst, const float *src)
 /* Position, clip codes, window position and the unlit colour (already
  * clamped) of the batch's vertices first..first+n-1. */
 static inline void transform_positions(const struct fgl_context *ctx,
-                                       const struct fgl_vbo_vertex *in, unsigned first,
+                                       const struct fgl_vertex_view *in, unsigned first,
                                        unsigned n, const float *color, unsigned cstride,
                                        size_t clear_bytes, struct t_vertex *out)
 {
@@ -83,7 +83,7 @@ static inline void transform_positions(const struct fgl_context *ctx,
    const bool lit = ctx->Light.Enabled;
 
    for (unsigned i = first; i < first + n; i++) {
-      const float *p = in[i].attr[FGL_ATTR_POS];
+      const float *p = fgl_vv_attr(in, i, FGL_ATTR_POS);
       struct t_vertex *v = &out[i];
       if (clear_bytes)
          memset(v->r.attr, 0, clear_bytes);
@@ -112,7 +112,7 @@ static inline void transform_positions(const struct fgl_context *ctx,
 #define T_CHUNK 128
 
 T_FMA_CLONES
-void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
+void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                  unsigned n, struct t_vertex *out, enum t_edge_source edges)
 {
    unsigned cstride;
@@ -159,14 +159,15 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
    for (unsigned first = 0; first < n; first += T_CHUNK) {
       const unsigned cnt = n - first < T_CHUNK ? n - first : T_CHUNK;
       transform_positions(ctx, in, first, cnt, color, cstride, clear_bytes, out);
+      const struct fgl_vertex_view inf = fgl_vv_from(in, first);
 
       /* ffvertex_prog.c: build_texture_transform (after build_lighting,
        * independent of it) */
       if (tex_units)
-         t_texcoord(ctx, in + first, cnt, tex_units, out + first);
+         t_texcoord(ctx, &inf, cnt, tex_units, out + first);
 
       if (phong)
-         t_phong(ctx, in + first, cnt, out + first);
+         t_phong(ctx, &inf, cnt, out + first);
       else if (lit)
          t_light_run(ctx, &lb, in, first, cnt, out);
 
@@ -176,10 +177,10 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vbo_vertex *in,
 
       /* ffvertex_prog.c: build_fog after build_lighting */
       if (fog)
-         t_fog(ctx, in + first, cnt, eye_position, out + first);
+         t_fog(ctx, &inf, cnt, eye_position, out + first);
 
       for (unsigned i = first; i < first + cnt; i++)
          out[i].edge = edges == T_EDGES_SET ||
-                       (edges == T_EDGES_FROM_DATA && in[i].attr[FGL_ATTR_EDGEFLAG][0] == 1.0f);
+                       (edges == T_EDGES_FROM_DATA && fgl_vv_attr(in, i, FGL_ATTR_EDGEFLAG)[0] == 1.0f);
    }
 }
