@@ -100,6 +100,8 @@ TRI_KERNELS_BLEND(alpha, BL_ALPHA)
 
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
 {
+   if (rs->tex_units)
+      return r_block_choose_tri_tex(rs, flat_color);
    /* the fragment program: the colour input alone, no texture, colour
     * sum, fog, GL_PHONG_WIN, pixel rectangle, coverage lowering or
     * stipple */

@@ -67,4 +67,8 @@ struct r_tri_cover {
  * FMA). */
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color);
 
+/* The same for the textured states (r_block_tex_avx2.c), which
+ * r_block_choose_tri asks first when a texture unit is on. */
+r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color);
+
 #endif

@@ -1,0 +1,320 @@
+/*
+ * r_tex_avx2.h: the 8-lane texture lookup's AVX2 code, shared by the
+ * r_tex_sample8 kernel (r_tex_avx2.c) and the textured block kernels
+ * (r_block_tex_avx2.c), which sample lanes already in the quad-major order
+ * below.  Include only from files compiled with -mavx2 -mfma.
+ *
+ * Texture lookups 8 fragments at a time with AVX2 (r_tex8.h): llvmpipe's
+ * fixed-point AoS filtering of r_tex.c (sample_level, r_tex_filter_aos)
+ * on the 8 lanes of a fragment vector at once, four 8-bit channels
+ * together.  Compiled with -mavx2 -mfma (and -ffp-contract=off, like the
+ * rest): r_tex8.c calls it only on a CPU with both.
+ *
+ * Every step is the scalar one on each lane: the same float products and
+ * floors (floorf, cvttss2si / cvtss2si, which give INT32_MIN out of range
+ * or for NaN as cvttps2dq / cvtps2dq do), fract_safe's compare the minps
+ * of (f, 0.99999994), the integer wraps, and lerp8's
+ * (a + ((w * (b - a) + 128) >> 8)) & 0xff, of which only bits 8..15 of
+ * w * (b - a) + 128 matter: 16-bit lanes (pmullw, paddw, psrlw) give them
+ * exactly.  The level of detail is r_tex_lod_aos's code (r_tex_lod.h), once
+ * per quad.
+ *
+ * Lanes run in a quad-major order inside: quad A (lanes 0, 1, 4, 5) in the
+ * low 128 bits, quad B (2, 3, 6, 7) in the high ones (one permute of the
+ * 64-bit pairs, its own inverse), so the per-quad values (level size,
+ * mip weight, texel base address) are a broadcast per 128-bit half and two
+ * levels are fetched with one 4-lane gather each.  LINEAR reads both texels
+ * of a row with one 64-bit gather per lane when every lane's second texel
+ * follows its first (no wrap or edge clamp in the vector), else four
+ * 32-bit gathers.  (Gathers measured a little faster than scalar loads on
+ * the reference machine, an AMD Zen 4; on Intel parts with the Downfall
+ * microcode mitigation, scalar loads may be the better choice.)
+ *
+ * The quads choose their branch of r_tex_filter_aos separately: when one
+ * is magnified and the other minified with different filters, both image
+ * filters run on all lanes and each quad keeps its own; a quad without a
+ * second mip level takes part in the other's second lookup with weight 0
+ * (lerp8(0, a, b) = a, exactly).
+ */
+#ifndef FGL_R_TEX_AVX2_H
+#define FGL_R_TEX_AVX2_H
+
+#include <immintrin.h>
+#include <stdint.h>
+
+#include "r_tex8.h"
+#include "r_tex_lod.h"
+
+/* lanes (0 1 2 3 4 5 6 7) <-> (0 1 4 5 2 3 6 7) */
+#define QUAD_ORDER 0xD8
+
+static inline __m256 load_quads(const float *v)
+{
+   return _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(_mm256_loadu_ps(v)), QUAD_ORDER));
+}
+
+static inline void store_lanes(float *v, __m256 x)
+{
+   _mm256_storeu_ps(v, _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(x), QUAD_ORDER)));
+}
+
+/* a for the lanes of quad A, b for those of quad B */
+static inline __m256i halves_i(int a, int b)
+{
+   return _mm256_setr_m128i(_mm_set1_epi32(a), _mm_set1_epi32(b));
+}
+
+static inline __m256 halves_f(float a, float b)
+{
+   return _mm256_setr_m128(_mm_set1_ps(a), _mm_set1_ps(b));
+}
+
+/* one axis of the lanes' levels */
+struct axis {
+   __m256 fn;        /* (float)n */
+   __m256 fn256;     /* (float)(n << 8) */
+   __m256i nm1;      /* n - 1 */
+};
+
+/* the level each lane samples (one per quad) */
+struct lv8 {
+   const int *base[2];   /* level data of quad A, quad B */
+   __m256i width;
+   struct axis s, t;
+};
+
+static inline void axis_init(struct axis *a, int na, int nb)
+{
+   a->fn = halves_f((float)na, (float)nb);
+   a->fn256 = halves_f((float)(na << 8), (float)(nb << 8));
+   a->nm1 = halves_i(na - 1, nb - 1);
+}
+
+static inline void lv8_init(const struct r_texture *t, int la, int lb, struct lv8 *v)
+{
+   const struct r_tex_level *A = &t->level[la], *B = &t->level[lb];
+   v->base[0] = (const int *)(const void *)A->data;
+   v->base[1] = (const int *)(const void *)B->data;
+   v->width = halves_i(A->width, B->width);
+   axis_init(&v->s, A->width, B->width);
+   axis_init(&v->t, A->height, B->height);
+}
+
+/* the RGBA8 texels at texel index idx of each lane's level */
+static inline __m256i fetch(const struct lv8 *v, __m256i idx)
+{
+   if (v->base[0] == v->base[1])
+      return _mm256_i32gather_epi32(v->base[0], idx, 4);
+   const __m128i lo = _mm_i32gather_epi32(v->base[0], _mm256_castsi256_si128(idx), 4);
+   const __m128i hi = _mm_i32gather_epi32(v->base[1], _mm256_extracti128_si256(idx, 1), 4);
+   return _mm256_setr_m128i(lo, hi);
+}
+
+/* the texel pairs at idx and idx + 1 of each lane's level, one 64-bit
+ * load per lane: the first texels in *a, the second ones in *b */
+static inline void fetch_pairs(const struct lv8 *v, __m256i idx, __m256i *a, __m256i *b)
+{
+   const long long *ba = (const long long *)(const void *)v->base[0];
+   const long long *bb = (const long long *)(const void *)v->base[1];
+   /* lanes 0..3: a0 b0 a1 b1 | a2 b2 a3 b3; lanes 4..7 likewise */
+   const __m256 lo = _mm256_castsi256_ps(_mm256_i32gather_epi64(ba, _mm256_castsi256_si128(idx), 4));
+   const __m256 hi = _mm256_castsi256_ps(_mm256_i32gather_epi64(bb, _mm256_extracti128_si256(idx, 1), 4));
+   /* a0 a1 a4 a5 | a2 a3 a6 a7, then the 64-bit pairs in order */
+   const __m256 ea = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0));
+   const __m256 eb = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1));
+   *a = _mm256_permute4x64_epi64(_mm256_castps_si256(ea), 0xD8);
+   *b = _mm256_permute4x64_epi64(_mm256_castps_si256(eb), 0xD8);
+}
+
+/* lp_build_fract_safe: s - floor(s), then min(f, 0.99999994) with minps
+ * (f < k ? f : k, so NaN gives k, as the scalar compare) */
+static inline __m256 fract_safe(__m256 s)
+{
+   const __m256 f = _mm256_sub_ps(s, _mm256_floor_ps(s));
+   return _mm256_min_ps(f, _mm256_set1_ps(0.99999994f));
+}
+
+/* r_tex.c wrap_nearest */
+static inline __m256i nearest_axis(__m256 s, const struct axis *a, bool pot, enum r_tex_wrap wrap)
+{
+   if (wrap == R_WRAP_REPEAT) {
+      if (pot)
+         return _mm256_and_si256(_mm256_cvttps_epi32(_mm256_floor_ps(_mm256_mul_ps(s, a->fn))),
+                                 a->nm1);
+      return _mm256_cvttps_epi32(_mm256_mul_ps(fract_safe(s), a->fn));
+   }
+   /* CLAMP_TO_EDGE */
+   const __m256i i = _mm256_cvttps_epi32(_mm256_floor_ps(_mm256_mul_ps(s, a->fn)));
+   return _mm256_max_epi32(_mm256_min_epi32(i, a->nm1), _mm256_setzero_si256());
+}
+
+/* r_tex.c wrap_linear */
+static inline void linear_axis(__m256 s, const struct axis *a, bool pot, enum r_tex_wrap wrap,
+                               __m256i *i0, __m256i *i1, __m256i *w)
+{
+   const __m256i zero = _mm256_setzero_si256(), one = _mm256_set1_epi32(1);
+   const __m256i m255 = _mm256_set1_epi32(255), k128 = _mm256_set1_epi32(128);
+   if (wrap == R_WRAP_REPEAT && !pot) {
+      const __m256 v = _mm256_mul_ps(_mm256_mul_ps(fract_safe(s), a->fn), _mm256_set1_ps(256.0f));
+      __m256i i = _mm256_sub_epi32(_mm256_cvtps_epi32(v), k128);
+      *w = _mm256_and_si256(i, m255);
+      i = _mm256_srai_epi32(i, 8);
+      const __m256i out = _mm256_or_si256(_mm256_cmpgt_epi32(zero, i), _mm256_cmpgt_epi32(i, a->nm1));
+      i = _mm256_blendv_epi8(i, a->nm1, out);
+      *i0 = i;
+      *i1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(i, a->nm1), _mm256_add_epi32(i, one));
+      return;
+   }
+   const __m256i u = _mm256_sub_epi32(_mm256_cvtps_epi32(_mm256_mul_ps(s, a->fn256)), k128);
+   *w = _mm256_and_si256(u, m255);
+   const __m256i i = _mm256_srai_epi32(u, 8);
+   if (wrap == R_WRAP_REPEAT) {
+      *i0 = _mm256_and_si256(i, a->nm1);
+      *i1 = _mm256_and_si256(_mm256_add_epi32(i, one), a->nm1);
+   } else {
+      *i0 = _mm256_max_epi32(_mm256_min_epi32(i, a->nm1), zero);
+      /* i + 1 when 0 <= i < n - 1, else i0 */
+      const __m256i inner = _mm256_andnot_si256(_mm256_cmpgt_epi32(zero, i),
+                                                _mm256_cmpgt_epi32(a->nm1, i));
+      *i1 = _mm256_blendv_epi8(*i0, _mm256_add_epi32(i, one), inner);
+   }
+}
+
+/* lerp8 on 16-bit channels: bits 8..15 of w * (b - a) + 128 are those of
+ * the 32-bit product's, so the wrapped 16-bit arithmetic is exact */
+static inline __m256i lerp16(__m256i w, __m256i a, __m256i b)
+{
+   __m256i p = _mm256_mullo_epi16(w, _mm256_sub_epi16(b, a));
+   p = _mm256_srli_epi16(_mm256_add_epi16(p, _mm256_set1_epi16(128)), 8);
+   return _mm256_and_si256(_mm256_add_epi16(a, p), _mm256_set1_epi16(0xff));
+}
+
+/* the lanes' 32-bit weights as 16-bit channel weights of the low
+ * (unpacklo: lanes 0, 1 of each half) and high (lanes 2, 3) texels */
+static inline void weights16(__m256i w32, __m256i *lo, __m256i *hi)
+{
+   const __m256i w16 = _mm256_blend_epi16(w32, _mm256_slli_epi32(w32, 16), 0xaa);
+   *lo = _mm256_unpacklo_epi32(w16, w16);
+   *hi = _mm256_unpackhi_epi32(w16, w16);
+}
+
+/* lerp8 of packed RGBA8 texels, one weight per lane */
+static inline __m256i lerp_packed(__m256i w32, __m256i a, __m256i b)
+{
+   const __m256i z = _mm256_setzero_si256();
+   __m256i wl, wh;
+   weights16(w32, &wl, &wh);
+   const __m256i rl = lerp16(wl, _mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z));
+   const __m256i rh = lerp16(wh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z));
+   return _mm256_packus_epi16(rl, rh);
+}
+
+/* sample_level's NEAREST */
+static inline __m256i sample_nearest(const struct r_texture *t, const struct lv8 *v, __m256 s,
+                                     __m256 tc)
+{
+   const __m256i x = nearest_axis(s, &v->s, t->pot_s, t->wrap_s);
+   if (t->dims == 1)
+      return fetch(v, x);
+   const __m256i y = nearest_axis(tc, &v->t, t->pot_t, t->wrap_t);
+   return fetch(v, _mm256_add_epi32(_mm256_mullo_epi32(y, v->width), x));
+}
+
+/* sample_level's LINEAR: along s on rows t0 and t1, then along t */
+static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 *v, __m256 s,
+                                    __m256 tc)
+{
+   __m256i x0, x1, ws;
+   linear_axis(s, &v->s, t->pot_s, t->wrap_s, &x0, &x1, &ws);
+   /* every lane's second texel next to its first one in the row (no
+    * wrap, no clamp at the edge): both in one 64-bit fetch */
+   const bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(
+                         _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1))))) == 0xff;
+   __m256i a, b, d, e;
+   if (t->dims == 1) {
+      if (pairs)
+         fetch_pairs(v, x0, &a, &b);
+      else {
+         a = fetch(v, x0);
+         b = fetch(v, x1);
+      }
+      return lerp_packed(ws, a, b);
+   }
+   __m256i y0, y1, wt;
+   linear_axis(tc, &v->t, t->pot_t, t->wrap_t, &y0, &y1, &wt);
+   const __m256i r0 = _mm256_mullo_epi32(y0, v->width), r1 = _mm256_mullo_epi32(y1, v->width);
+   if (pairs) {
+      fetch_pairs(v, _mm256_add_epi32(r0, x0), &a, &b);
+      fetch_pairs(v, _mm256_add_epi32(r1, x0), &d, &e);
+   } else {
+      a = fetch(v, _mm256_add_epi32(r0, x0));
+      b = fetch(v, _mm256_add_epi32(r0, x1));
+      d = fetch(v, _mm256_add_epi32(r1, x0));
+      e = fetch(v, _mm256_add_epi32(r1, x1));
+   }
+   const __m256i z = _mm256_setzero_si256();
+   __m256i wsl, wsh, wtl, wth;
+   weights16(ws, &wsl, &wsh);
+   weights16(wt, &wtl, &wth);
+   const __m256i lo = lerp16(wtl, lerp16(wsl, _mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z)),
+                             lerp16(wsl, _mm256_unpacklo_epi8(d, z), _mm256_unpacklo_epi8(e, z)));
+   const __m256i hi = lerp16(wth, lerp16(wsh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z)),
+                             lerp16(wsh, _mm256_unpackhi_epi8(d, z), _mm256_unpackhi_epi8(e, z)));
+   return _mm256_packus_epi16(lo, hi);
+}
+
+/* one level per quad with image filter f[q] for quad q */
+static inline __m256i sample_levels(const struct r_texture *t, const enum r_tex_filter f[2],
+                                    int la, int lb, __m256 s, __m256 tc)
+{
+   struct lv8 v;
+   lv8_init(t, la, lb, &v);
+   if (f[0] == f[1]) {
+      return f[0] == R_TEX_LINEAR ? sample_linear(t, &v, s, tc) : sample_nearest(t, &v, s, tc);
+   }
+   /* a quad magnified next to a minified one: both filters, each quad
+    * keeps its own */
+   const __m256i n = sample_nearest(t, &v, s, tc), l = sample_linear(t, &v, s, tc);
+   return f[0] == R_TEX_NEAREST ? _mm256_blend_epi32(n, l, 0xf0) : _mm256_blend_epi32(l, n, 0xf0);
+}
+
+/* r_tex_filter_aos on the lanes, in quad-major order (s, tc: the
+ * projected coordinates; lod: the level of detail of quad A and of quad
+ * B): the texels as packed RGBA8, in the same order. */
+static inline __attribute__((always_inline)) __m256i
+tex8_filter_quads(const struct r_texture *t, const struct r_tex_lod lod[2], __m256 s, __m256 tc)
+{
+   /* r_tex_filter_aos's choice per quad: the image filter and level of
+    * the first lookup, and the second level's when it is blended in (a
+    * weight of 0 leaves the first lookup as it is: lerp8(0, a, b) = a) */
+   enum r_tex_filter f0[2];
+   int l0[2], l1[2], w1[2];
+   bool two = false;
+   for (int q = 0; q < 2; q++) {
+      const struct r_tex_lod *l = &lod[q];
+      l1[q] = l0[q] = l->level0;
+      w1[q] = 0;
+      if (!l->minify && t->mag_img != t->min_img) {
+         f0[q] = t->mag_img;
+      } else if (t->mip == R_MIP_NONE) {
+         f0[q] = l->minify ? t->min_img : t->mag_img;
+         l1[q] = l0[q] = t->first_level;
+      } else {
+         f0[q] = t->min_img;
+         if (t->mip == R_MIP_LINEAR && l->weight > 0) {
+            l1[q] = l->level1;
+            w1[q] = l->weight;
+            two = true;
+         }
+      }
+   }
+   __m256i tex = sample_levels(t, f0, l0[0], l0[1], s, tc);
+   if (two) {
+      const enum r_tex_filter fm[2] = { t->min_img, t->min_img };
+      const __m256i tex1 = sample_levels(t, fm, l1[0], l1[1], s, tc);
+      tex = lerp_packed(halves_i(w1[0], w1[1]), tex, tex1);
+   }
+   return tex;
+}
+
+#endif
