@@ -124,16 +124,8 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 
    /* the level of detail of quads A and B (fill_quad) */
    const struct r_texture *tex = st->tex;
-   float sa[8], ta[8];
-   _mm256_storeu_ps(sa, s);
-   _mm256_storeu_ps(ta, t);
    struct r_tex_lod lod[2];
-   for (int k = 0; k < 2; k++) {
-      const float qc[3][3] = { { sa[4 * k], ta[4 * k], 0.0f },
-                               { sa[4 * k + 1], ta[4 * k + 1], 0.0f },
-                               { sa[4 * k + 2], ta[4 * k + 2], 0.0f } };
-      r_tex_lod_aos_inline(tex, qc, &lod[k]);
-   }
+   tex8_lod_quads(tex, s, t, lod);
    const __m256i texel = tex8_filter_quads(tex, lod, s, t);
 
    __m256i out;

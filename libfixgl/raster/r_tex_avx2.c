@@ -13,16 +13,10 @@ void r_tex_sample8_avx2(const struct r_texture *t, const float c[3][8], float ou
       return;
    }
    /* the level of detail of each quad (r_tri.c fill_quad) */
+   const __m256 s = load_quads(c[0]), tc = load_quads(c[1]);
    struct r_tex_lod lod[2];
-   for (int q = 0; q < 2; q++) {
-      const float qc[3][3] = {
-         { c[0][2 * q], c[1][2 * q], c[2][2 * q] },
-         { c[0][2 * q + 1], c[1][2 * q + 1], c[2][2 * q + 1] },
-         { c[0][2 * q + 4], c[1][2 * q + 4], c[2][2 * q + 4] },
-      };
-      r_tex_lod_aos_inline(t, qc, &lod[q]);
-   }
-   const __m256i tex = tex8_filter_quads(t, lod, load_quads(c[0]), load_quads(c[1]));
+   tex8_lod_quads(t, s, tc, lod);
+   const __m256i tex = tex8_filter_quads(t, lod, s, tc);
    /* unorm8 to float: (float)texel * (float)(1.0 / 255.0) */
    const __m256 scale = _mm256_set1_ps((float)(1.0 / 255.0));
    const __m256i m255 = _mm256_set1_epi32(255);

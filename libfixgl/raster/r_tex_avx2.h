@@ -40,6 +40,7 @@
 #define FGL_R_TEX_AVX2_H
 
 #include <immintrin.h>
+#include <math.h>
 #include <stdint.h>
 
 #include "r_tex8.h"
@@ -276,6 +277,107 @@ static inline __m256i sample_levels(const struct r_texture *t, const enum r_tex_
     * keeps its own */
    const __m256i n = sample_nearest(t, &v, s, tc), l = sample_linear(t, &v, s, tc);
    return f[0] == R_TEX_NEAREST ? _mm256_blend_epi32(n, l, 0xf0) : _mm256_blend_epi32(l, n, 0xf0);
+}
+
+/* r_tex_lod_aos_inline (r_tex_lod.h) of quads A and B at once, from their
+ * lanes in quad-major order (TL, TR, BL = lanes 0, 1, 2 of each 128-bit
+ * half): the same float operations on every lane of a half (the half's
+ * TL, TR, BL broadcast), the float compares as minps/maxps/cmpps with the
+ * scalar code's operand order, the exponent and mantissa as integer bit
+ * operations, floorf as roundps, the truncations as cvttps2dq (INT32_MIN
+ * for NaN, as r_lod_itrunc). */
+static inline __attribute__((always_inline)) void
+tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod lod[2])
+{
+   const int first = t->first_level, last = t->last_level;
+   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
+      for (int q = 0; q < 2; q++) {
+         lod[q].minify = true;
+         lod[q].level0 = lod[q].level1 = first;
+         lod[q].weight = 0;
+      }
+      return;
+   }
+   const struct r_tex_level *l = &t->level[first];
+   const __m256 fw = _mm256_set1_ps((float)l->width);
+   const __m256 s_tl = _mm256_permute_ps(s, 0x00), s_tr = _mm256_permute_ps(s, 0x55);
+   const __m256 s_bl = _mm256_permute_ps(s, 0xaa);
+   __m256 rho;
+   if (t->dims == 1) {
+      const __m256 abs = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+      const __m256 dx = _mm256_and_ps(_mm256_sub_ps(s_tr, s_tl), abs);
+      const __m256 dy = _mm256_and_ps(_mm256_sub_ps(s_tl, s_bl), abs);
+      /* dx > dy ? dx : dy */
+      rho = _mm256_mul_ps(_mm256_max_ps(dx, dy), fw);
+   } else {
+      const __m256 fh = _mm256_set1_ps((float)l->height);
+      const __m256 t_tl = _mm256_permute_ps(tc, 0x00), t_tr = _mm256_permute_ps(tc, 0x55);
+      const __m256 t_bl = _mm256_permute_ps(tc, 0xaa);
+      __m256 dsdx = _mm256_mul_ps(_mm256_sub_ps(s_tr, s_tl), fw);
+      __m256 dsdy = _mm256_mul_ps(_mm256_sub_ps(s_bl, s_tl), fw);
+      __m256 dtdx = _mm256_mul_ps(_mm256_sub_ps(t_tr, t_tl), fh);
+      __m256 dtdy = _mm256_mul_ps(_mm256_sub_ps(t_bl, t_tl), fh);
+      dsdx = _mm256_mul_ps(dsdx, dsdx);
+      dsdy = _mm256_mul_ps(dsdy, dsdy);
+      dtdx = _mm256_mul_ps(dtdx, dtdx);
+      dtdy = _mm256_mul_ps(dtdy, dtdy);
+      /* rx > ry ? rx : ry */
+      rho = _mm256_max_ps(_mm256_add_ps(dsdx, dtdx), _mm256_add_ps(dsdy, dtdy));
+   }
+   const __m256i vfirst = _mm256_set1_epi32(first), vlast = _mm256_set1_epi32(last);
+   const __m256i m255 = _mm256_set1_epi32(255);
+   __m256i minify, level0, level1 = vfirst, weight = _mm256_setzero_si256();
+   if (t->mip != R_MIP_LINEAR) {
+      __m256i ipart;
+      if (t->dims > 1) {
+         const __m256i e = _mm256_and_si256(_mm256_srli_epi32(_mm256_castps_si256(rho), 23), m255);
+         ipart = _mm256_srai_epi32(_mm256_sub_epi32(e, _mm256_set1_epi32(126)), 1);
+      } else {
+         const __m256 r2 = _mm256_mul_ps(rho, _mm256_set1_ps((float)M_SQRT2));
+         const __m256i e = _mm256_and_si256(_mm256_srli_epi32(_mm256_castps_si256(r2), 23), m255);
+         ipart = _mm256_sub_epi32(e, _mm256_set1_epi32(127));
+      }
+      /* !(rho <= 1) */
+      minify = _mm256_castps_si256(_mm256_cmp_ps(rho, _mm256_set1_ps(1.0f), _CMP_NLE_UQ));
+      level0 = _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(vfirst, ipart), vfirst), vlast);
+      level1 = level0;
+   } else {
+      const __m256 r2 = t->dims > 1 ? rho : _mm256_mul_ps(rho, rho);
+      const __m256i bits = _mm256_castps_si256(r2);
+      const __m256i e = _mm256_and_si256(_mm256_srli_epi32(bits, 23), m255);
+      const __m256 mant = _mm256_castsi256_ps(
+         _mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(0x7fffff)),
+                         _mm256_set1_epi32(0x3f800000)));
+      const __m256 l2 = _mm256_add_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(128))),
+                                      mant);
+      const __m256 lodf = _mm256_mul_ps(l2, _mm256_set1_ps(0.5f));
+      /* !(lod <= 0) */
+      minify = _mm256_castps_si256(_mm256_cmp_ps(lodf, _mm256_setzero_ps(), _CMP_NLE_UQ));
+      const __m256 fl = _mm256_floor_ps(lodf);
+      __m256 fpart = _mm256_sub_ps(lodf, fl);
+      __m256i l0 = _mm256_add_epi32(vfirst, _mm256_cvttps_epi32(fl));
+      /* l0 < first or l0 >= last: clamped, fpart 0 */
+      const __m256i below = _mm256_cmpgt_epi32(vfirst, l0);
+      const __m256i above = _mm256_cmpgt_epi32(l0, _mm256_sub_epi32(vlast, _mm256_set1_epi32(1)));
+      l0 = _mm256_blendv_epi8(l0, vfirst, below);
+      l0 = _mm256_blendv_epi8(l0, vlast, above);
+      fpart = _mm256_andnot_ps(_mm256_castsi256_ps(_mm256_or_si256(below, above)), fpart);
+      level0 = l0;
+      level1 = _mm256_min_epi32(_mm256_add_epi32(l0, _mm256_set1_epi32(1)), vlast);
+      weight = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0f)));
+   }
+   const __m128i mlo = _mm256_castsi256_si128(minify), mhi = _mm256_extracti128_si256(minify, 1);
+   const __m128i l0lo = _mm256_castsi256_si128(level0), l0hi = _mm256_extracti128_si256(level0, 1);
+   const __m128i l1lo = _mm256_castsi256_si128(level1), l1hi = _mm256_extracti128_si256(level1, 1);
+   const __m128i wlo = _mm256_castsi256_si128(weight), whi = _mm256_extracti128_si256(weight, 1);
+   lod[0].minify = _mm_cvtsi128_si32(mlo) != 0;
+   lod[1].minify = _mm_cvtsi128_si32(mhi) != 0;
+   lod[0].level0 = _mm_cvtsi128_si32(l0lo);
+   lod[1].level0 = _mm_cvtsi128_si32(l0hi);
+   lod[0].level1 = _mm_cvtsi128_si32(l1lo);
+   lod[1].level1 = _mm_cvtsi128_si32(l1hi);
+   lod[0].weight = _mm_cvtsi128_si32(wlo);
+   lod[1].weight = _mm_cvtsi128_si32(whi);
 }
 
 /* r_tex_filter_aos on the lanes, in quad-major order (s, tc: the
