@@ -50,6 +50,7 @@ struct block_stage {
    __m256 tc[4];      /* flat texture coordinates, broadcast */
    __m256 konst[4];   /* the unit's constant colour */
    uint8_t nargs[4], arg[4][2];   /* ENV_ARGS: r_tex_combine.simple_* */
+   struct tex8_level levels[R_MAX_TEX_LEVELS];   /* first_level .. last_level */
 };
 
 static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const struct r_tri_setup *ts,
@@ -59,6 +60,8 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
    st->tex = &rs->tex[0].tex;
    st->flat_color = ts->flat_attr[R_FS_COLOR0];
    st->flat_tex = ts->flat_attr[R_FS_TEX0];
+   for (int l = st->tex->first_level; l <= st->tex->last_level; l++)
+      tex8_level_init(st->tex, l, &st->levels[l]);
    const struct r_tex_combine *k = &rs->tex[0].comb;
    for (int c = 0; c < 4; c++) {
       st->color[c] = _mm256_set1_ps(ts->flat[R_FS_COLOR0][c]);
@@ -126,7 +129,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    const struct r_texture *tex = st->tex;
    struct r_tex_lod lod[2];
    tex8_lod_quads(tex, s, t, lod);
-   const __m256i texel = tex8_filter_quads(tex, lod, s, t);
+   const __m256i texel = tex8_filter_quads(tex, st->levels, lod, s, t);
 
    __m256i out;
    if (variant == ENV_T_T) {

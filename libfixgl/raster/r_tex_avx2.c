@@ -16,7 +16,7 @@ void r_tex_sample8_avx2(const struct r_texture *t, const float c[3][8], float ou
    const __m256 s = load_quads(c[0]), tc = load_quads(c[1]);
    struct r_tex_lod lod[2];
    tex8_lod_quads(t, s, tc, lod);
-   const __m256i tex = tex8_filter_quads(t, lod, s, tc);
+   const __m256i tex = tex8_filter_quads(t, NULL, lod, s, tc);
    /* unorm8 to float: (float)texel * (float)(1.0 / 255.0) */
    const __m256 scale = _mm256_set1_ps((float)(1.0 / 255.0));
    const __m256i m255 = _mm256_set1_epi32(255);

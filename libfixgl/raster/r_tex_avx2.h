@@ -101,6 +101,43 @@ static inline void lv8_init(const struct r_texture *t, int la, int lb, struct lv
    axis_init(&v->t, A->height, B->height);
 }
 
+/* A level's part of struct lv8, precomputed (a block kernel's table of a
+ * texture's levels, filled once per triangle). */
+struct tex8_level {
+   __m128 fs, fs256, ft, ft256;   /* (float)n, (float)(n << 8) per axis */
+   __m128i nm1s, nm1t, width;
+   const int *base;
+};
+
+static inline void tex8_level_init(const struct r_texture *t, int l, struct tex8_level *o)
+{
+   const struct r_tex_level *L = &t->level[l];
+   o->fs = _mm_set1_ps((float)L->width);
+   o->fs256 = _mm_set1_ps((float)(L->width << 8));
+   o->ft = _mm_set1_ps((float)L->height);
+   o->ft256 = _mm_set1_ps((float)(L->height << 8));
+   o->nm1s = _mm_set1_epi32(L->width - 1);
+   o->nm1t = _mm_set1_epi32(L->height - 1);
+   o->width = _mm_set1_epi32(L->width);
+   o->base = (const int *)(const void *)L->data;
+}
+
+/* lv8_init from the table: the same values */
+static inline __attribute__((always_inline)) void lv8_from(const struct tex8_level *A,
+                                                           const struct tex8_level *B,
+                                                           struct lv8 *v)
+{
+   v->base[0] = A->base;
+   v->base[1] = B->base;
+   v->width = _mm256_setr_m128i(A->width, B->width);
+   v->s.fn = _mm256_setr_m128(A->fs, B->fs);
+   v->s.fn256 = _mm256_setr_m128(A->fs256, B->fs256);
+   v->s.nm1 = _mm256_setr_m128i(A->nm1s, B->nm1s);
+   v->t.fn = _mm256_setr_m128(A->ft, B->ft);
+   v->t.fn256 = _mm256_setr_m128(A->ft256, B->ft256);
+   v->t.nm1 = _mm256_setr_m128i(A->nm1t, B->nm1t);
+}
+
 /* the RGBA8 texels at texel index idx of each lane's level */
 static inline __m256i fetch(const struct lv8 *v, __m256i idx)
 {
@@ -266,16 +303,14 @@ static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 
 
 /* one level per quad with image filter f[q] for quad q */
 static inline __m256i sample_levels(const struct r_texture *t, const enum r_tex_filter f[2],
-                                    int la, int lb, __m256 s, __m256 tc)
+                                    const struct lv8 *v, __m256 s, __m256 tc)
 {
-   struct lv8 v;
-   lv8_init(t, la, lb, &v);
    if (f[0] == f[1]) {
-      return f[0] == R_TEX_LINEAR ? sample_linear(t, &v, s, tc) : sample_nearest(t, &v, s, tc);
+      return f[0] == R_TEX_LINEAR ? sample_linear(t, v, s, tc) : sample_nearest(t, v, s, tc);
    }
    /* a quad magnified next to a minified one: both filters, each quad
     * keeps its own */
-   const __m256i n = sample_nearest(t, &v, s, tc), l = sample_linear(t, &v, s, tc);
+   const __m256i n = sample_nearest(t, v, s, tc), l = sample_linear(t, v, s, tc);
    return f[0] == R_TEX_NEAREST ? _mm256_blend_epi32(n, l, 0xf0) : _mm256_blend_epi32(l, n, 0xf0);
 }
 
@@ -382,9 +417,11 @@ tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod 
 
 /* r_tex_filter_aos on the lanes, in quad-major order (s, tc: the
  * projected coordinates; lod: the level of detail of quad A and of quad
- * B): the texels as packed RGBA8, in the same order. */
+ * B; tab: the texture's levels by tex8_level_init, or NULL): the texels
+ * as packed RGBA8, in the same order. */
 static inline __attribute__((always_inline)) __m256i
-tex8_filter_quads(const struct r_texture *t, const struct r_tex_lod lod[2], __m256 s, __m256 tc)
+tex8_filter_quads(const struct r_texture *t, const struct tex8_level *tab,
+                  const struct r_tex_lod lod[2], __m256 s, __m256 tc)
 {
    /* r_tex_filter_aos's choice per quad: the image filter and level of
     * the first lookup, and the second level's when it is blended in (a
@@ -410,10 +447,19 @@ tex8_filter_quads(const struct r_texture *t, const struct r_tex_lod lod[2], __m2
          }
       }
    }
-   __m256i tex = sample_levels(t, f0, l0[0], l0[1], s, tc);
+   struct lv8 v;
+   if (tab)
+      lv8_from(&tab[l0[0]], &tab[l0[1]], &v);
+   else
+      lv8_init(t, l0[0], l0[1], &v);
+   __m256i tex = sample_levels(t, f0, &v, s, tc);
    if (two) {
       const enum r_tex_filter fm[2] = { t->min_img, t->min_img };
-      const __m256i tex1 = sample_levels(t, fm, l1[0], l1[1], s, tc);
+      if (tab)
+         lv8_from(&tab[l1[0]], &tab[l1[1]], &v);
+      else
+         lv8_init(t, l1[0], l1[1], &v);
+      const __m256i tex1 = sample_levels(t, fm, &v, s, tc);
       tex = lerp_packed(halves_i(w1[0], w1[1]), tex, tex1);
    }
    return tex;
