@@ -42,6 +42,10 @@
  * the primary colour (P) or their product (TP); ENV_ARGS: any simple
  * environment, by its arguments */
 enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P, ENV_P_TP, ENV_P_T };
+/* the variant: an env, plus VAR_TRILINEAR for a texture of
+ * tex8_is_trilinear_repeat (its lookup's properties constants) */
+#define VAR_ENV(v) ((v) & 15)
+#define VAR_TRILINEAR 16
 
 struct block_stage {
    const struct r_texture *tex;
@@ -104,7 +108,8 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    (void)rs; (void)fx_rows; (void)fy_rows; (void)m8; (void)live;
    const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
    const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
-   const bool need_color = variant != ENV_T_T;
+   const int env = VAR_ENV(variant);
+   const bool need_color = env != ENV_T_T;
    __m256 rw = _mm256_setzero_ps();
    if (!st->flat_tex || (need_color && !st->flat_color))
       rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
@@ -129,10 +134,11 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    const struct r_texture *tex = st->tex;
    struct r_tex_lod lod[2];
    tex8_lod_quads(tex, s, t, lod);
-   const __m256i texel = tex8_filter_quads(tex, st->levels, lod, s, t);
+   const __m256i texel = variant & VAR_TRILINEAR ? tex8_filter_trilinear_repeat(st->levels, lod, s, t)
+                                                 : tex8_filter_quads(tex, st->levels, lod, s, t);
 
    __m256i out;
-   if (variant == ENV_T_T) {
+   if (env == ENV_T_T) {
       out = texel;
    } else {
       __m256 pc[4];
@@ -150,7 +156,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       for (int c = 0; c < 4; c++)
          tf[c] = _mm256_mul_ps(
             _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(texel, 8 * c), m255)), scale);
-      if (variant == ENV_ARGS) {
+      if (env == ENV_ARGS) {
          __m256 res[4];
          for (int c = 0; c < 4; c++) {
             const __m256 v0 = env_arg(st, st->arg[c][0], tf, pc);
@@ -159,10 +165,10 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
          out = pack_rgba8(res[0], res[1], res[2], res[3]);
       } else {
          /* the RGB channels, then alpha */
-         const bool rgb_t = variant == ENV_T_T || variant == ENV_T_P;
-         const bool rgb_p = variant == ENV_P_TP || variant == ENV_P_T;
-         const bool a_t = variant == ENV_P_T;
-         const bool a_p = variant == ENV_T_P || variant == ENV_TP_P;
+         const bool rgb_t = env == ENV_T_T || env == ENV_T_P;
+         const bool rgb_p = env == ENV_P_TP || env == ENV_P_T;
+         const bool a_t = env == ENV_P_T;
+         const bool a_p = env == ENV_T_P || env == ENV_TP_P;
          __m256i rgb, a;
          if (rgb_t)
             rgb = _mm256_and_si256(texel, _mm256_set1_epi32(0xffffff));
@@ -213,17 +219,32 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    TEX_KERNELS_ENV(p##_p_tp, ENV_P_TP, bl)                                                \
    TEX_KERNELS_ENV(p##_p_t, ENV_P_T, bl)
 
+/* the trilinear REPEAT lookup with the texture environments of REPLACE
+ * and MODULATE on RGB and RGBA textures */
+#define TEX_KERNELS_BLEND_TRI(p, bl)                                                       \
+   TEX_KERNELS_ENV(p##_tri_t_t, ENV_T_T | VAR_TRILINEAR, bl)                              \
+   TEX_KERNELS_ENV(p##_tri_t_p, ENV_T_P | VAR_TRILINEAR, bl)                              \
+   TEX_KERNELS_ENV(p##_tri_tp_tp, ENV_TP_TP | VAR_TRILINEAR, bl)                          \
+   TEX_KERNELS_ENV(p##_tri_tp_p, ENV_TP_P | VAR_TRILINEAR, bl)
+
 TEX_KERNELS_BLEND(opaque, BL_NONE)
 TEX_KERNELS_BLEND(alpha, BL_ALPHA)
+TEX_KERNELS_BLEND_TRI(opaque, BL_NONE)
+TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
 
 #define ROW(p)                                                                             \
    { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
-/* [blend][env][zfmt][zwrite] */
-static const r_tri_kernel tex_table[2][7][3][2] = {
-   { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
-     ROW(opaque_p_tp), ROW(opaque_p_t) },
-   { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
-     ROW(alpha_p_tp), ROW(alpha_p_t) },
+/* [trilinear][blend][env][zfmt][zwrite] (the trilinear lookup for the
+ * envs of TEX_KERNELS_BLEND_TRI, the general one for the others) */
+static const r_tri_kernel tex_table[2][2][7][3][2] = {
+   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
+       ROW(opaque_p_tp), ROW(opaque_p_t) },
+     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
+       ROW(alpha_p_tp), ROW(alpha_p_t) } },
+   { { ROW(opaque_args), ROW(opaque_tri_t_t), ROW(opaque_tri_t_p), ROW(opaque_tri_tp_tp),
+       ROW(opaque_tri_tp_p), ROW(opaque_p_tp), ROW(opaque_p_t) },
+     { ROW(alpha_args), ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp),
+       ROW(alpha_tri_tp_p), ROW(alpha_p_tp), ROW(alpha_p_t) } },
 };
 
 /* the form of a group of channels (r_tex_combine.simple_fn_*): 0 T,
@@ -281,5 +302,5 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
    int env = ENV_ARGS;
    if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
       env = forms[fr][fa];
-   return tex_table[bl][env][zf][rs->depth_write];
+   return tex_table[tex8_is_trilinear_repeat(t)][bl][env][zf][rs->depth_write];
 }

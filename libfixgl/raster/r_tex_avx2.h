@@ -60,12 +60,12 @@ static inline void store_lanes(float *v, __m256 x)
 }
 
 /* a for the lanes of quad A, b for those of quad B */
-static inline __m256i halves_i(int a, int b)
+static inline __attribute__((always_inline)) __m256i halves_i(int a, int b)
 {
    return _mm256_setr_m128i(_mm_set1_epi32(a), _mm_set1_epi32(b));
 }
 
-static inline __m256 halves_f(float a, float b)
+static inline __attribute__((always_inline)) __m256 halves_f(float a, float b)
 {
    return _mm256_setr_m128(_mm_set1_ps(a), _mm_set1_ps(b));
 }
@@ -139,7 +139,7 @@ static inline __attribute__((always_inline)) void lv8_from(const struct tex8_lev
 }
 
 /* the RGBA8 texels at texel index idx of each lane's level */
-static inline __m256i fetch(const struct lv8 *v, __m256i idx)
+static inline __attribute__((always_inline)) __m256i fetch(const struct lv8 *v, __m256i idx)
 {
    if (v->base[0] == v->base[1])
       return _mm256_i32gather_epi32(v->base[0], idx, 4);
@@ -150,7 +150,7 @@ static inline __m256i fetch(const struct lv8 *v, __m256i idx)
 
 /* the texel pairs at idx and idx + 1 of each lane's level, one 64-bit
  * load per lane: the first texels in *a, the second ones in *b */
-static inline void fetch_pairs(const struct lv8 *v, __m256i idx, __m256i *a, __m256i *b)
+static inline __attribute__((always_inline)) void fetch_pairs(const struct lv8 *v, __m256i idx, __m256i *a, __m256i *b)
 {
    const long long *ba = (const long long *)(const void *)v->base[0];
    const long long *bb = (const long long *)(const void *)v->base[1];
@@ -166,7 +166,7 @@ static inline void fetch_pairs(const struct lv8 *v, __m256i idx, __m256i *a, __m
 
 /* lp_build_fract_safe: s - floor(s), then min(f, 0.99999994) with minps
  * (f < k ? f : k, so NaN gives k, as the scalar compare) */
-static inline __m256 fract_safe(__m256 s)
+static inline __attribute__((always_inline)) __m256 fract_safe(__m256 s)
 {
    const __m256 f = _mm256_sub_ps(s, _mm256_floor_ps(s));
    return _mm256_min_ps(f, _mm256_set1_ps(0.99999994f));
@@ -187,7 +187,7 @@ static inline __m256i nearest_axis(__m256 s, const struct axis *a, bool pot, enu
 }
 
 /* r_tex.c wrap_linear */
-static inline void linear_axis(__m256 s, const struct axis *a, bool pot, enum r_tex_wrap wrap,
+static inline __attribute__((always_inline)) void linear_axis(__m256 s, const struct axis *a, bool pot, enum r_tex_wrap wrap,
                                __m256i *i0, __m256i *i1, __m256i *w)
 {
    const __m256i zero = _mm256_setzero_si256(), one = _mm256_set1_epi32(1);
@@ -220,7 +220,7 @@ static inline void linear_axis(__m256 s, const struct axis *a, bool pot, enum r_
 
 /* lerp8 on 16-bit channels: bits 8..15 of w * (b - a) + 128 are those of
  * the 32-bit product's, so the wrapped 16-bit arithmetic is exact */
-static inline __m256i lerp16(__m256i w, __m256i a, __m256i b)
+static inline __attribute__((always_inline)) __m256i lerp16(__m256i w, __m256i a, __m256i b)
 {
    __m256i p = _mm256_mullo_epi16(w, _mm256_sub_epi16(b, a));
    p = _mm256_srli_epi16(_mm256_add_epi16(p, _mm256_set1_epi16(128)), 8);
@@ -229,7 +229,7 @@ static inline __m256i lerp16(__m256i w, __m256i a, __m256i b)
 
 /* the lanes' 32-bit weights as 16-bit channel weights of the low
  * (unpacklo: lanes 0, 1 of each half) and high (lanes 2, 3) texels */
-static inline void weights16(__m256i w32, __m256i *lo, __m256i *hi)
+static inline __attribute__((always_inline)) void weights16(__m256i w32, __m256i *lo, __m256i *hi)
 {
    const __m256i w16 = _mm256_blend_epi16(w32, _mm256_slli_epi32(w32, 16), 0xaa);
    *lo = _mm256_unpacklo_epi32(w16, w16);
@@ -237,7 +237,7 @@ static inline void weights16(__m256i w32, __m256i *lo, __m256i *hi)
 }
 
 /* lerp8 of packed RGBA8 texels, one weight per lane */
-static inline __m256i lerp_packed(__m256i w32, __m256i a, __m256i b)
+static inline __attribute__((always_inline)) __m256i lerp_packed(__m256i w32, __m256i a, __m256i b)
 {
    const __m256i z = _mm256_setzero_si256();
    __m256i wl, wh;
@@ -259,17 +259,18 @@ static inline __m256i sample_nearest(const struct r_texture *t, const struct lv8
 }
 
 /* sample_level's LINEAR: along s on rows t0 and t1, then along t */
-static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 *v, __m256 s,
-                                    __m256 tc)
+static inline __attribute__((always_inline)) __m256i
+sample_linear_k(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r_tex_wrap wrap_t,
+                const struct lv8 *v, __m256 s, __m256 tc)
 {
    __m256i x0, x1, ws;
-   linear_axis(s, &v->s, t->pot_s, t->wrap_s, &x0, &x1, &ws);
+   linear_axis(s, &v->s, pot_s, wrap_s, &x0, &x1, &ws);
    /* every lane's second texel next to its first one in the row (no
     * wrap, no clamp at the edge): both in one 64-bit fetch */
    const bool pairs = _mm256_movemask_ps(_mm256_castsi256_ps(
                          _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1))))) == 0xff;
    __m256i a, b, d, e;
-   if (t->dims == 1) {
+   if (dims == 1) {
       if (pairs)
          fetch_pairs(v, x0, &a, &b);
       else {
@@ -279,7 +280,7 @@ static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 
       return lerp_packed(ws, a, b);
    }
    __m256i y0, y1, wt;
-   linear_axis(tc, &v->t, t->pot_t, t->wrap_t, &y0, &y1, &wt);
+   linear_axis(tc, &v->t, pot_t, wrap_t, &y0, &y1, &wt);
    const __m256i r0 = _mm256_mullo_epi32(y0, v->width), r1 = _mm256_mullo_epi32(y1, v->width);
    if (pairs) {
       fetch_pairs(v, _mm256_add_epi32(r0, x0), &a, &b);
@@ -299,6 +300,14 @@ static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 
    const __m256i hi = lerp16(wth, lerp16(wsh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z)),
                              lerp16(wsh, _mm256_unpackhi_epi8(d, z), _mm256_unpackhi_epi8(e, z)));
    return _mm256_packus_epi16(lo, hi);
+}
+
+/* sample_linear_k on the texture's own properties (the constant ones of
+ * a specialised kernel give its code alone) */
+static inline __m256i sample_linear(const struct r_texture *t, const struct lv8 *v, __m256 s,
+                                    __m256 tc)
+{
+   return sample_linear_k(t->dims, t->pot_s, t->wrap_s, t->pot_t, t->wrap_t, v, s, tc);
 }
 
 /* one level per quad with image filter f[q] for quad q */
@@ -461,6 +470,37 @@ tex8_filter_quads(const struct r_texture *t, const struct tex8_level *tab,
          lv8_init(t, l1[0], l1[1], &v);
       const __m256i tex1 = sample_levels(t, fm, &v, s, tc);
       tex = lerp_packed(halves_i(w1[0], w1[1]), tex, tex1);
+   }
+   return tex;
+}
+
+/* Whether tex8_filter_trilinear_repeat samples t: 2D, power-of-two sizes,
+ * REPEAT on both axes, LINEAR_MIPMAP_LINEAR and LINEAR (with
+ * r_tex8_fast). */
+static inline bool tex8_is_trilinear_repeat(const struct r_texture *t)
+{
+   return t->dims == 2 && t->pot_s && t->pot_t && t->wrap_s == R_WRAP_REPEAT &&
+          t->wrap_t == R_WRAP_REPEAT && t->min_img == R_TEX_LINEAR &&
+          t->mag_img == R_TEX_LINEAR && t->mip == R_MIP_LINEAR;
+}
+
+/* tex8_filter_quads for such a texture, with its table: the branches of
+ * r_tex_filter_aos it takes (min_img == mag_img, a mip filter: the
+ * minified branch, LINEAR on level0, blended with level1 by a positive
+ * weight), with every property a constant. */
+static inline __attribute__((always_inline)) __m256i
+tex8_filter_trilinear_repeat(const struct tex8_level *tab, const struct r_tex_lod lod[2],
+                             __m256 s, __m256 tc)
+{
+   struct lv8 v;
+   lv8_from(&tab[lod[0].level0], &tab[lod[1].level0], &v);
+   __m256i tex = sample_linear_k(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc);
+   const bool two0 = lod[0].weight > 0, two1 = lod[1].weight > 0;
+   if (two0 || two1) {
+      lv8_from(&tab[two0 ? lod[0].level1 : lod[0].level0], &tab[two1 ? lod[1].level1 : lod[1].level0],
+               &v);
+      const __m256i tex1 = sample_linear_k(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc);
+      tex = lerp_packed(halves_i(two0 ? lod[0].weight : 0, two1 ? lod[1].weight : 0), tex, tex1);
    }
    return tex;
 }
