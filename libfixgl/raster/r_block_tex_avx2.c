@@ -133,7 +133,10 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    /* the level of detail of quads A and B (fill_quad) */
    const struct r_texture *tex = st->tex;
    struct r_tex_lod lod[2];
-   tex8_lod_quads(tex, s, t, lod);
+   if (variant & VAR_TRILINEAR)
+      tex8_lod_quads_k(tex, 2, R_MIP_LINEAR, false, s, t, lod);
+   else
+      tex8_lod_quads(tex, s, t, lod);
    const __m256i texel = variant & VAR_TRILINEAR ? tex8_filter_trilinear_repeat(st->levels, lod, s, t)
                                                  : tex8_filter_quads(tex, st->levels, lod, s, t);
 

@@ -331,10 +331,11 @@ static inline __m256i sample_levels(const struct r_texture *t, const enum r_tex_
  * operations, floorf as roundps, the truncations as cvttps2dq (INT32_MIN
  * for NaN, as r_lod_itrunc). */
 static inline __attribute__((always_inline)) void
-tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod lod[2])
+tex8_lod_quads_k(const struct r_texture *t, int dims, enum r_tex_mip mip, bool no_lod, __m256 s,
+                 __m256 tc, struct r_tex_lod lod[2])
 {
    const int first = t->first_level, last = t->last_level;
-   if (t->mip == R_MIP_NONE && t->min_img == t->mag_img) {
+   if (no_lod) {
       for (int q = 0; q < 2; q++) {
          lod[q].minify = true;
          lod[q].level0 = lod[q].level1 = first;
@@ -347,7 +348,7 @@ tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod 
    const __m256 s_tl = _mm256_permute_ps(s, 0x00), s_tr = _mm256_permute_ps(s, 0x55);
    const __m256 s_bl = _mm256_permute_ps(s, 0xaa);
    __m256 rho;
-   if (t->dims == 1) {
+   if (dims == 1) {
       const __m256 abs = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
       const __m256 dx = _mm256_and_ps(_mm256_sub_ps(s_tr, s_tl), abs);
       const __m256 dy = _mm256_and_ps(_mm256_sub_ps(s_tl, s_bl), abs);
@@ -371,9 +372,9 @@ tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod 
    const __m256i vfirst = _mm256_set1_epi32(first), vlast = _mm256_set1_epi32(last);
    const __m256i m255 = _mm256_set1_epi32(255);
    __m256i minify, level0, level1 = vfirst, weight = _mm256_setzero_si256();
-   if (t->mip != R_MIP_LINEAR) {
+   if (mip != R_MIP_LINEAR) {
       __m256i ipart;
-      if (t->dims > 1) {
+      if (dims > 1) {
          const __m256i e = _mm256_and_si256(_mm256_srli_epi32(_mm256_castps_si256(rho), 23), m255);
          ipart = _mm256_srai_epi32(_mm256_sub_epi32(e, _mm256_set1_epi32(126)), 1);
       } else {
@@ -386,7 +387,7 @@ tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod 
       level0 = _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(vfirst, ipart), vfirst), vlast);
       level1 = level0;
    } else {
-      const __m256 r2 = t->dims > 1 ? rho : _mm256_mul_ps(rho, rho);
+      const __m256 r2 = dims > 1 ? rho : _mm256_mul_ps(rho, rho);
       const __m256i bits = _mm256_castps_si256(r2);
       const __m256i e = _mm256_and_si256(_mm256_srli_epi32(bits, 23), m255);
       const __m256 mant = _mm256_castsi256_ps(
@@ -422,6 +423,14 @@ tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod 
    lod[1].level1 = _mm_cvtsi128_si32(l1hi);
    lod[0].weight = _mm_cvtsi128_si32(wlo);
    lod[1].weight = _mm_cvtsi128_si32(whi);
+}
+
+/* tex8_lod_quads_k on the texture's own properties */
+static inline __attribute__((always_inline)) void
+tex8_lod_quads(const struct r_texture *t, __m256 s, __m256 tc, struct r_tex_lod lod[2])
+{
+   tex8_lod_quads_k(t, t->dims, t->mip, t->mip == R_MIP_NONE && t->min_img == t->mag_img, s, tc,
+                    lod);
 }
 
 /* r_tex_filter_aos on the lanes, in quad-major order (s, tc: the
