@@ -14,7 +14,7 @@
  * colour, depth test, function and mask, alpha blending (or another
  * blend), perspective (clip w) and projective (q) coordinates, tiny and
  * huge triangles, vertices on pixel centres, scales that magnify and
- * minify -- and compares the colour and depth buffers byte for byte.
+ * minify, a projective texture matrix, scissor box, polygon offset -- and compares the colour and depth buffers byte for byte.
  * A state the block kernels don't cover draws with the reference kernels
  * in both contexts, so every case must match.
  *
@@ -266,6 +266,29 @@ static void draw_case(uint64_t seed)
   } else {
     glDisable(GL_CULL_FACE);
   }
+  if (irand(4) == 0) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(irand(W) - 5, irand(H) - 5, irand(W), irand(H));
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
+  if (irand(5) == 0) {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(frand(-2.0f, 2.0f), frand(-4.0f, 4.0f));
+  } else {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+  glMatrixMode(GL_TEXTURE);
+  glLoadIdentity();
+  if (irand(6) == 0) {
+    /* a projective texture matrix: q varies across the triangle */
+    const GLfloat m[16] = { frand(-2, 2), frand(-1, 1), 0, frand(-0.5f, 0.5f),
+                            frand(-1, 1), frand(-2, 2), 0, frand(-0.5f, 0.5f),
+                            0, 0, 1, 0,
+                            frand(-1, 1), frand(-1, 1), 0, frand(0.8f, 2.0f) };
+    glLoadMatrixf(m);
+  }
+  glMatrixMode(GL_MODELVIEW);
   const int batches = 1 + irand(3);
   for (int b = 0; b < batches; b++)
     random_triangles();
@@ -280,7 +303,7 @@ struct pair {
 
 int main(int argc, char **argv)
 {
-  const int cases = argc > 1 ? atoi(argv[1]) : 1500;
+  const int cases = argc > 1 ? atoi(argv[1]) : 3000;
   const uint64_t seed0 = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
   static struct pair pairs[3];
   for (int p = 0; p < 3; p++) {
