@@ -6,14 +6,16 @@
  *  - the reference kernels (r_tri.c rasterize_direct and shade_pixel,
  *    r_frag.c): portable scalar code, one pixel at a time, which handles
  *    every state and is the specification of the others;
- *  - the block kernels (r_block_avx2.c, AVX2 + FMA): a triangle's 4x4
+ *  - the block kernels (r_block_avx2.c untextured, r_block_tex_avx2.c
+ *    with one texture unit; AVX2 + FMA): a triangle's 4x4
  *    blocks, each shaded as two 4x2 halves of 8 lanes (lane i is pixel
  *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
  *    at compile time for the states real programs spend their time in.
  *    Every lane performs the reference's float operations in the
  *    reference's order (fmaf where it fuses, true divides, RNE
- *    conversions), so they produce the same bytes; the kernel-equivalence
- *    test (tests/unit/test_kernels.c) checks this on random states.
+ *    conversions), so they produce the same bytes; tests/api/tex_kernels.c
+ *    checks this for the textured ones on random states and triangles,
+ *    against a context with FIXGL_KERNELS=reference.
  * A state no block kernel covers draws with the reference kernels.
  * FIXGL_KERNELS=reference in the environment forces the reference kernels
  * for every context created afterwards.
