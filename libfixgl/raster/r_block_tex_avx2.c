@@ -41,7 +41,7 @@
 /* the environment's form: RGB channels then alpha, each the texel (T),
  * the primary colour (P) or their product (TP); ENV_ARGS: any simple
  * environment, by its arguments */
-enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P, ENV_P_TP, ENV_P_T };
+enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P };
 /* the variant: an env, plus VAR_TRILINEAR for a texture of
  * tex8_is_trilinear_repeat (its lookup's properties constants) */
 #define VAR_ENV(v) ((v) & 15)
@@ -167,25 +167,19 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
          }
          out = pack_rgba8(res[0], res[1], res[2], res[3]);
       } else {
-         /* the RGB channels, then alpha */
-         const bool rgb_t = env == ENV_T_T || env == ENV_T_P;
-         const bool rgb_p = env == ENV_P_TP || env == ENV_P_T;
-         const bool a_t = env == ENV_P_T;
+         /* the RGB channels (T or TP), then alpha (P or TP); T_T was the
+          * texel itself */
+         const bool rgb_t = env == ENV_T_P;
          const bool a_p = env == ENV_T_P || env == ENV_TP_P;
          __m256i rgb, a;
          if (rgb_t)
             rgb = _mm256_and_si256(texel, _mm256_set1_epi32(0xffffff));
-         else if (rgb_p)
-            rgb = _mm256_or_si256(_mm256_or_si256(unorm8(pc[0]), _mm256_slli_epi32(unorm8(pc[1]), 8)),
-                                  _mm256_slli_epi32(unorm8(pc[2]), 16));
          else
             rgb = _mm256_or_si256(
                _mm256_or_si256(unorm8(_mm256_mul_ps(tf[0], pc[0])),
                                _mm256_slli_epi32(unorm8(_mm256_mul_ps(tf[1], pc[1])), 8)),
                _mm256_slli_epi32(unorm8(_mm256_mul_ps(tf[2], pc[2])), 16));
-         if (a_t)
-            a = _mm256_andnot_si256(_mm256_set1_epi32(0xffffff), texel);
-         else if (a_p)
+         if (a_p)
             a = _mm256_slli_epi32(unorm8(pc[3]), 24);
          else
             a = _mm256_slli_epi32(unorm8(_mm256_mul_ps(tf[3], pc[3])), 24);
@@ -218,9 +212,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    TEX_KERNELS_ENV(p##_t_t, ENV_T_T, bl)                                                  \
    TEX_KERNELS_ENV(p##_t_p, ENV_T_P, bl)                                                  \
    TEX_KERNELS_ENV(p##_tp_tp, ENV_TP_TP, bl)                                              \
-   TEX_KERNELS_ENV(p##_tp_p, ENV_TP_P, bl)                                                \
-   TEX_KERNELS_ENV(p##_p_tp, ENV_P_TP, bl)                                                \
-   TEX_KERNELS_ENV(p##_p_t, ENV_P_T, bl)
+   TEX_KERNELS_ENV(p##_tp_p, ENV_TP_P, bl)
 
 /* the trilinear REPEAT lookup with the texture environments of REPLACE
  * and MODULATE on RGB and RGBA textures */
@@ -239,15 +231,13 @@ TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
    { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
 /* [trilinear][blend][env][zfmt][zwrite] (the trilinear lookup for the
  * envs of TEX_KERNELS_BLEND_TRI, the general one for the others) */
-static const r_tri_kernel tex_table[2][2][7][3][2] = {
-   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
-       ROW(opaque_p_tp), ROW(opaque_p_t) },
-     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
-       ROW(alpha_p_tp), ROW(alpha_p_t) } },
+static const r_tri_kernel tex_table[2][2][5][3][2] = {
+   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p) },
+     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p) } },
    { { ROW(opaque_args), ROW(opaque_tri_t_t), ROW(opaque_tri_t_p), ROW(opaque_tri_tp_tp),
-       ROW(opaque_tri_tp_p), ROW(opaque_p_tp), ROW(opaque_p_t) },
+       ROW(opaque_tri_tp_p) },
      { ROW(alpha_args), ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp),
-       ROW(alpha_tri_tp_p), ROW(alpha_p_tp), ROW(alpha_p_t) } },
+       ROW(alpha_tri_tp_p) } },
 };
 
 /* the form of a group of channels (r_tex_combine.simple_fn_*): 0 T,
@@ -298,7 +288,7 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
    /* the forms with a kernel of their own, else by the arguments */
    static const int8_t forms[3][3] = {
       /* rgb T */  { ENV_T_T, ENV_T_P, -1 },
-      /* rgb P */  { ENV_P_T, -1, ENV_P_TP },
+      /* rgb P */  { -1, -1, -1 },   /* (ALPHA textures: by the arguments) */
       /* rgb TP */ { -1, ENV_TP_P, ENV_TP_TP },
    };
    const int fr = env_form(k->simple_fn_rgb), fa = env_form(k->simple_fn_a);
