@@ -47,6 +47,12 @@ enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P };
 #define VAR_ENV(v) ((v) & 15)
 #define VAR_TRILINEAR 16
 
+/* what stage_front computes for a half */
+struct stage_front {
+   __m256 rw, s, t;
+   struct r_tex_lod lod[2];
+};
+
 struct block_stage {
    const struct r_texture *tex;
    bool flat_color, flat_tex;
@@ -55,6 +61,9 @@ struct block_stage {
    __m256 konst[4];   /* the unit's constant colour */
    uint8_t nargs[4], arg[4][2];   /* ENV_ARGS: r_tex_combine.simple_* */
    struct tex8_level levels[R_MAX_TEX_LEVELS];   /* first_level .. last_level */
+   /* the front of the lower half of the last block (next_x, next_y) */
+   int next_x, next_y;
+   struct stage_front next;
 };
 
 static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const struct r_tri_setup *ts,
@@ -64,6 +73,7 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
    st->tex = &rs->tex[0].tex;
    st->flat_color = ts->flat_attr[R_FS_COLOR0];
    st->flat_tex = ts->flat_attr[R_FS_TEX0];
+   st->next_x = st->next_y = INT32_MIN;   /* (y is even) */
    for (int l = st->tex->first_level; l <= st->tex->last_level; l++)
       tex8_level_init(st->tex, l, &st->levels[l]);
    const struct r_tex_combine *k = &rs->tex[0].comb;
@@ -100,16 +110,15 @@ static ALWAYS_INLINE __m256 env_arg(const struct block_stage *st, unsigned a, co
    return v;
 }
 
-static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const struct r_tri_setup *ts,
-                                               const struct block_stage *st, int variant,
-                                               __m256 fx_rows, __m256 fy_rows, int x, int y,
-                                               unsigned m8, __m256i *live)
+/* The front of the stage for the half at (x, y): 1/w, the projected
+ * coordinates and the quads' level of detail -- the chain of two divides
+ * the lookup waits for. */
+static ALWAYS_INLINE void stage_front(const struct r_tri_setup *ts, const struct block_stage *st,
+                                      int variant, int x, int y, struct stage_front *f)
 {
-   (void)rs; (void)fx_rows; (void)fy_rows; (void)m8; (void)live;
    const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
    const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
-   const int env = VAR_ENV(variant);
-   const bool need_color = env != ENV_T_T;
+   const bool need_color = VAR_ENV(variant) != ENV_T_T;
    __m256 rw = _mm256_setzero_ps();
    if (!st->flat_tex || (need_color && !st->flat_color))
       rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
@@ -127,18 +136,47 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       q = _mm256_mul_ps(eval8(&ap[3], fx, fy), rw);
    }
    const __m256 rq = _mm256_div_ps(_mm256_set1_ps(1.0f), q);
-   s = _mm256_mul_ps(s, rq);
-   t = _mm256_mul_ps(t, rq);
+   f->rw = rw;
+   f->s = _mm256_mul_ps(s, rq);
+   f->t = _mm256_mul_ps(t, rq);
 
    /* the level of detail of quads A and B (fill_quad) */
-   const struct r_texture *tex = st->tex;
-   struct r_tex_lod lod[2];
    if (variant & VAR_TRILINEAR)
-      tex8_lod_quads_k(tex, 2, R_MIP_LINEAR, false, s, t, lod);
+      tex8_lod_quads_k(st->tex, 2, R_MIP_LINEAR, false, f->s, f->t, f->lod);
    else
-      tex8_lod_quads(tex, s, t, lod);
-   const __m256i texel = variant & VAR_TRILINEAR ? tex8_filter_trilinear_repeat(st->levels, lod, s, t)
-                                                 : tex8_filter_quads(tex, st->levels, lod, s, t);
+      tex8_lod_quads(st->tex, f->s, f->t, f->lod);
+}
+
+static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const struct r_tri_setup *ts,
+                                               const struct block_stage *st, int variant,
+                                               __m256 fx_rows, __m256 fy_rows, int x, int y,
+                                               unsigned m8, __m256i *live)
+{
+   (void)rs; (void)fx_rows; (void)fy_rows; (void)m8; (void)live;
+   const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
+   const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
+   const int env = VAR_ENV(variant);
+   /* The front of both halves of a block at its top half, the lower
+    * half's kept for it (the two divide chains overlap); the stage is the
+    * walk's local object (tri_blocks), written through its pointer as
+    * r_tri.c fill_quad writes its cache. */
+   struct block_stage *mst = (struct block_stage *)st;
+   struct stage_front f;
+   if ((y & 3) == 0) {
+      stage_front(ts, st, variant, x, y, &f);
+      stage_front(ts, st, variant, x, y + 2, &mst->next);
+      mst->next_x = x;
+      mst->next_y = y + 2;
+   } else if (st->next_x == x && st->next_y == y) {
+      f = st->next;
+   } else {
+      stage_front(ts, st, variant, x, y, &f);
+   }
+   const __m256 rw = f.rw;
+   const struct r_texture *tex = st->tex;
+   const __m256i texel = variant & VAR_TRILINEAR
+                            ? tex8_filter_trilinear_repeat(st->levels, f.lod, f.s, f.t)
+                            : tex8_filter_quads(tex, st->levels, f.lod, f.s, f.t);
 
    __m256i out;
    if (env == ENV_T_T) {
