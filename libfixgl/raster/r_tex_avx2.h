@@ -259,9 +259,9 @@ static inline __m256i sample_nearest(const struct r_texture *t, const struct lv8
 }
 
 /* sample_level's LINEAR: along s on rows t0 and t1, then along t */
-static inline __attribute__((always_inline)) __m256i
-sample_linear_k(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r_tex_wrap wrap_t,
-                const struct lv8 *v, __m256 s, __m256 tc)
+static inline __attribute__((always_inline)) void
+sample_linear_k16(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r_tex_wrap wrap_t,
+                  const struct lv8 *v, __m256 s, __m256 tc, __m256i *lo16, __m256i *hi16)
 {
    __m256i x0, x1, ws;
    linear_axis(s, &v->s, pot_s, wrap_s, &x0, &x1, &ws);
@@ -277,7 +277,12 @@ sample_linear_k(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r
          a = fetch(v, x0);
          b = fetch(v, x1);
       }
-      return lerp_packed(ws, a, b);
+      const __m256i z = _mm256_setzero_si256();
+      __m256i wl, wh;
+      weights16(ws, &wl, &wh);
+      *lo16 = lerp16(wl, _mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z));
+      *hi16 = lerp16(wh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z));
+      return;
    }
    __m256i y0, y1, wt;
    linear_axis(tc, &v->t, pot_t, wrap_t, &y0, &y1, &wt);
@@ -295,10 +300,20 @@ sample_linear_k(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r
    __m256i wsl, wsh, wtl, wth;
    weights16(ws, &wsl, &wsh);
    weights16(wt, &wtl, &wth);
-   const __m256i lo = lerp16(wtl, lerp16(wsl, _mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z)),
-                             lerp16(wsl, _mm256_unpacklo_epi8(d, z), _mm256_unpacklo_epi8(e, z)));
-   const __m256i hi = lerp16(wth, lerp16(wsh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z)),
-                             lerp16(wsh, _mm256_unpackhi_epi8(d, z), _mm256_unpackhi_epi8(e, z)));
+   *lo16 = lerp16(wtl, lerp16(wsl, _mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z)),
+                  lerp16(wsl, _mm256_unpacklo_epi8(d, z), _mm256_unpacklo_epi8(e, z)));
+   *hi16 = lerp16(wth, lerp16(wsh, _mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z)),
+                  lerp16(wsh, _mm256_unpackhi_epi8(d, z), _mm256_unpackhi_epi8(e, z)));
+}
+
+/* the same, packed: RGBA8 per lane (the 16-bit channels are below 256:
+ * packus keeps them, and unpacking gives them back) */
+static inline __attribute__((always_inline)) __m256i
+sample_linear_k(int dims, bool pot_s, enum r_tex_wrap wrap_s, bool pot_t, enum r_tex_wrap wrap_t,
+                const struct lv8 *v, __m256 s, __m256 tc)
+{
+   __m256i lo, hi;
+   sample_linear_k16(dims, pot_s, wrap_s, pot_t, wrap_t, v, s, tc, &lo, &hi);
    return _mm256_packus_epi16(lo, hi);
 }
 
@@ -503,15 +518,21 @@ tex8_filter_trilinear_repeat(const struct tex8_level *tab, const struct r_tex_lo
 {
    struct lv8 v;
    lv8_from(&tab[lod[0].level0], &tab[lod[1].level0], &v);
-   __m256i tex = sample_linear_k(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc);
+   __m256i lo, hi;
+   sample_linear_k16(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc, &lo, &hi);
    const bool two0 = lod[0].weight > 0, two1 = lod[1].weight > 0;
    if (two0 || two1) {
       lv8_from(&tab[two0 ? lod[0].level1 : lod[0].level0], &tab[two1 ? lod[1].level1 : lod[1].level0],
                &v);
-      const __m256i tex1 = sample_linear_k(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc);
-      tex = lerp_packed(halves_i(two0 ? lod[0].weight : 0, two1 ? lod[1].weight : 0), tex, tex1);
+      __m256i lo1, hi1;
+      sample_linear_k16(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc, &lo1, &hi1);
+      /* lerp_packed on the unpacked channels */
+      __m256i wl, wh;
+      weights16(halves_i(two0 ? lod[0].weight : 0, two1 ? lod[1].weight : 0), &wl, &wh);
+      lo = lerp16(wl, lo, lo1);
+      hi = lerp16(wh, hi, hi1);
    }
-   return tex;
+   return _mm256_packus_epi16(lo, hi);
 }
 
 #endif
