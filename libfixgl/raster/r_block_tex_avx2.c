@@ -4,7 +4,8 @@
  * (r_tex8_fast: 1D or 2D, no `soa`, REPEAT or CLAMP_TO_EDGE, any image
  * and mip filter), an environment of the simple form (r_frag.c
  * r_tex_combine_simplify: REPLACE, MODULATE, and every combine made of one
- * argument or the product of two per channel), the colour smooth or flat,
+ * argument or the product of two per channel) or GL_DECAL on an RGBA
+ * texture, the colour smooth or flat,
  * through the triangle template (r_block_tri.h).
  *
  * Every lane does what the reference does for its pixel (r_tri.c
@@ -40,8 +41,10 @@
 
 /* the environment's form: RGB channels then alpha, each the texel (T),
  * the primary colour (P) or their product (TP); ENV_ARGS: any simple
- * environment, by its arguments */
-enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P };
+ * environment, by its arguments; ENV_DECAL: GL_DECAL on an RGBA texture
+ * (r_frag.c emit_texenv: INTERPOLATE of T, PREVIOUS by T.a unsaturated,
+ * so rgb = T.c * T.a + P.c * (1 - T.a); alpha REPLACE by P.a) */
+enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P, ENV_DECAL };
 /* the variant: an env, plus VAR_TRILINEAR for a texture of
  * tex8_is_trilinear_repeat (its lookup's properties constants) */
 #define VAR_ENV(v) ((v) & 15)
@@ -197,7 +200,13 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       for (int c = 0; c < 4; c++)
          tf[c] = _mm256_mul_ps(
             _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(texel, 8 * c), m255)), scale);
-      if (env == ENV_ARGS) {
+      if (env == ENV_DECAL) {
+         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), tf[3]);
+         __m256 res[3];
+         for (int c = 0; c < 3; c++)
+            res[c] = _mm256_add_ps(_mm256_mul_ps(tf[c], tf[3]), _mm256_mul_ps(pc[c], b));
+         out = pack_rgba8(res[0], res[1], res[2], pc[3]);
+      } else if (env == ENV_ARGS) {
          __m256 res[4];
          for (int c = 0; c < 4; c++) {
             const __m256 v0 = env_arg(st, st->arg[c][0], tf, pc);
@@ -250,7 +259,8 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    TEX_KERNELS_ENV(p##_t_t, ENV_T_T, bl)                                                  \
    TEX_KERNELS_ENV(p##_t_p, ENV_T_P, bl)                                                  \
    TEX_KERNELS_ENV(p##_tp_tp, ENV_TP_TP, bl)                                              \
-   TEX_KERNELS_ENV(p##_tp_p, ENV_TP_P, bl)
+   TEX_KERNELS_ENV(p##_tp_p, ENV_TP_P, bl)                                                \
+   TEX_KERNELS_ENV(p##_decal, ENV_DECAL, bl)
 
 /* the trilinear REPEAT lookup with the texture environments of REPLACE
  * and MODULATE on RGB and RGBA textures */
@@ -269,13 +279,15 @@ TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
    { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
 /* [trilinear][blend][env][zfmt][zwrite] (the trilinear lookup for the
  * envs of TEX_KERNELS_BLEND_TRI, the general one for the others) */
-static const r_tri_kernel tex_table[2][2][5][3][2] = {
-   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p) },
-     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p) } },
+static const r_tri_kernel tex_table[2][2][6][3][2] = {
+   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
+       ROW(opaque_decal) },
+     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
+       ROW(alpha_decal) } },
    { { ROW(opaque_args), ROW(opaque_tri_t_t), ROW(opaque_tri_t_p), ROW(opaque_tri_tp_tp),
-       ROW(opaque_tri_tp_p) },
+       ROW(opaque_tri_tp_p), ROW(opaque_decal) },
      { ROW(alpha_args), ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp),
-       ROW(alpha_tri_tp_p) } },
+       ROW(alpha_tri_tp_p), ROW(alpha_decal) } },
 };
 
 /* the form of a group of channels (r_tex_combine.simple_fn_*): 0 T,
@@ -291,6 +303,17 @@ static int env_form(int fn)
    }
 }
 
+/* GL_DECAL's combiner on an RGBA texture (state.c update_combine) */
+static bool is_decal_rgba(const struct r_tex_combine *k)
+{
+   return k->mode_rgb == R_COMB_INTERPOLATE && k->mode_a == R_COMB_REPLACE && k->shift_rgb == 0 &&
+          k->shift_a == 0 && k->nargs_rgb == 3 && k->src_rgb[0] == R_SRC_TEXTURE &&
+          k->opr_rgb[0] == R_OPR_COLOR && k->src_rgb[1] == R_SRC_PREVIOUS &&
+          k->opr_rgb[1] == R_OPR_COLOR && k->src_rgb[2] == R_SRC_TEXTURE &&
+          k->opr_rgb[2] == R_OPR_ALPHA && k->nargs_a == 1 && k->src_a[0] == R_SRC_PREVIOUS &&
+          k->opr_a[0] == R_OPR_ALPHA;
+}
+
 r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
 {
    (void)flat_color;   /* read per triangle */
@@ -304,7 +327,7 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
       return NULL;
    const struct r_texture *t = &rs->tex[0].tex;
    const struct r_tex_combine *k = &rs->tex[0].comb;
-   if (!r_tex8_fast(t) || !k->simple)
+   if (!r_tex8_fast(t) || !(k->simple || is_decal_rgba(k)))
       return NULL;
    enum blend bl = BL_NONE;
    if (rs->full_ops) {
@@ -331,7 +354,9 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
    };
    const int fr = env_form(k->simple_fn_rgb), fa = env_form(k->simple_fn_a);
    int env = ENV_ARGS;
-   if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
+   if (!k->simple)
+      env = ENV_DECAL;
+   else if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
       env = forms[fr][fa];
    return tex_table[tex8_is_trilinear_repeat(t)][bl][env][zf][rs->depth_write];
 }
