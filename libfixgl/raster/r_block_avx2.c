@@ -153,6 +153,8 @@ static const r_tri_kernel(*const tables[])[5][2] = {
 
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
 {
+   if (rs->tex_units)
+      return r_block_choose_tri_tex(rs, flat_color);
    /* the fragment program: the colour input, with the secondary colour
     * under the colour sum and the fog coordinate under fog, and nothing
     * else: no texture, GL_PHONG_WIN, pixel rectangle, coverage lowering

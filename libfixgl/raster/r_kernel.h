@@ -6,16 +6,19 @@
  *  - the reference kernels (r_tri.c rasterize_direct and shade_pixel,
  *    r_frag.c): portable scalar code, one pixel at a time, which handles
  *    every state and is the specification of the others;
- *  - the block kernels (r_block_avx2.c untextured, r_block_phong_avx2.c
- *    per-fragment lit; AVX2 + FMA): a triangle's 4x4
+ *  - the block kernels (r_block_avx2.c untextured, r_block_tex_avx2.c
+ *    with one texture unit, r_block_phong_avx2.c per-fragment lit; AVX2 +
+ *    FMA): a triangle's 4x4
  *    blocks, each shaded as two 4x2 halves of 8 lanes (lane i is pixel
  *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
  *    at compile time for the states real programs spend their time in.
  *    Every lane performs the reference's float operations in the
  *    reference's order (fmaf where it fuses, true divides, RNE
  *    conversions), so they produce the same bytes; the kernel-equivalence
- *    tests (tests/unit/test_kernels.c, tests/api/lit_kernels.c for lit
- *    scenes) check this on random states.
+ *    tests check this on random states against a context with
+ *    FIXGL_KERNELS=reference (tests/unit/test_kernels.c over the whole
+ *    state space, tests/api/lit_kernels.c for lit scenes,
+ *    tests/api/tex_kernels.c for textured triangles).
  * A state no block kernel covers draws with the reference kernels.
  * FIXGL_KERNELS=reference in the environment forces the reference kernels
  * for every context created afterwards (and the scalar per-vertex
@@ -73,5 +76,9 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color);
 /* The same for per-fragment-lit triangles (rs->phong; r_block_phong_avx2.c):
  * NULL for a state it does not cover. */
 r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color);
+
+/* The same for the textured states (r_block_tex_avx2.c), which
+ * r_block_choose_tri asks first when a texture unit is on. */
+r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color);
 
 #endif

@@ -20,6 +20,8 @@
  *               derivatives from deep magnification to heavy minification,
  *               and lanes replaced by NaN, +-inf, q = 0, huge and negative
  *               values, exact texel centres and edges of every level
+ *   round trip  r_float_to_unorm8((float)b * (1/255)) == b for every byte
+ *               (what the textured block kernels rely on)
  *   implementations  r_tex_sample8_portable, the AVX2 kernel (when built
  *               and the CPU has it) and the dispatching r_tex_sample8
  *
@@ -497,8 +499,21 @@ static void bench(void)
    free_texture(&x);
 }
 
+/* The textured block kernels (r_block_tex_avx2.c) store a channel that is
+ * the texel itself as the texel's byte: r_float_to_unorm8 of the lookup's
+ * float, (float)b * (float)(1.0 / 255.0), must give b back. */
+static void test_unorm8_round_trip(void)
+{
+   for (unsigned b = 0; b < 256; b++) {
+      const float f = (float)b * (float)(1.0 / 255.0);
+      CHECK(r_float_to_unorm8(f) == b, "texel byte %u round trip gives %u", b,
+            (unsigned)r_float_to_unorm8(f));
+   }
+}
+
 int main(int argc, char **argv)
 {
+   test_unorm8_round_trip();
    int nstates = 3000, blocks = 200;
    const char *e = getenv("FIXGL_TEX8_STATES");
    if (e)
