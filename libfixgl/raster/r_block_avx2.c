@@ -122,19 +122,24 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
    TRI_KERNEL(prefix##_z24w, var, ZF_24, true, bl)                                         \
    TRI_KERNEL(prefix##_z24s, var, ZF_24S, false, bl)                                       \
    TRI_KERNEL(prefix##_z24sw, var, ZF_24S, true, bl)                                       \
-   TRI_KERNEL(prefix##_s, var, ZF_S, false, bl)
+   TRI_KERNEL(prefix##_s, var, ZF_S, false, bl)                                            \
+   TRI_KERNEL(prefix##_z24l, var, ZF_24_LESS, false, bl)                                   \
+   TRI_KERNEL(prefix##_z24lw, var, ZF_24_LESS, true, bl)                                   \
+   TRI_KERNEL(prefix##_z24le, var, ZF_24_LEQUAL, false, bl)                                \
+   TRI_KERNEL(prefix##_z24lew, var, ZF_24_LEQUAL, true, bl)
 
 #define TRI_KERNELS_ROW(prefix)                                                            \
    { { prefix##_nz, prefix##_nz }, { prefix##_z16, prefix##_z16w },                         \
      { prefix##_z24, prefix##_z24w }, { prefix##_z24s, prefix##_z24sw },                    \
-     { prefix##_s, prefix##_s } }
+     { prefix##_s, prefix##_s }, { prefix##_z24l, prefix##_z24lw },                         \
+     { prefix##_z24le, prefix##_z24lew } }
 
 /* [FLAT, SMOOTH, EXTRA][zfmt][zwrite] */
 #define TRI_KERNELS_BLEND(prefix, bl)                                                      \
    TRI_KERNELS_SHADE(prefix##_flat, FLAT, bl)                                              \
    TRI_KERNELS_SHADE(prefix##_smooth, SMOOTH, bl)                                          \
    TRI_KERNELS_SHADE(prefix##_extra, EXTRA, bl)                                            \
-   static const r_tri_kernel prefix##_table[3][5][2] = {                                   \
+   static const r_tri_kernel prefix##_table[3][7][2] = {                                   \
       TRI_KERNELS_ROW(prefix##_flat), TRI_KERNELS_ROW(prefix##_smooth),                    \
       TRI_KERNELS_ROW(prefix##_extra),                                                     \
    };
@@ -147,7 +152,7 @@ TRI_KERNELS_BLEND(blend_at, BL_BLEND_AT)
 TRI_KERNELS_BLEND(logic_at, BL_LOGIC_AT)
 
 /* [enum blend] */
-static const r_tri_kernel(*const tables[])[5][2] = {
+static const r_tri_kernel(*const tables[])[7][2] = {
    opaque_table, alpha_table, blend_table, logic_table, blend_at_table, logic_at_table,
 };
 
@@ -197,6 +202,10 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
       case R_ZS_Z24S8: zf = ZF_24; break;
       default:         return NULL;
       }
+      if (zf == ZF_24 && rs->depth_func == R_LESS)
+         zf = ZF_24_LESS;
+      else if (zf == ZF_24 && rs->depth_func == R_LEQUAL)
+         zf = ZF_24_LEQUAL;
    }
    return tables[bl][extra ? EXTRA : flat_color ? FLAT : SMOOTH][zf][rs->depth_write];
 }

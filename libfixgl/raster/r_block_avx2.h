@@ -17,8 +17,9 @@
 
 /* the depth/stencil buffer and tests: none, Z16 or Z24 (X8 or S8) depth
  * test, or on a Z24S8 buffer the stencil test with (ZF_24S) or without
- * (ZF_S) the depth test */
-enum zfmt { ZF_NONE, ZF_16, ZF_24, ZF_24S, ZF_S };
+ * (ZF_S) the depth test; ZF_24_LESS and ZF_24_LEQUAL are ZF_24 with the
+ * usual depth functions compiled in (one compare instead of depth_pass) */
+enum zfmt { ZF_NONE, ZF_16, ZF_24, ZF_24S, ZF_S, ZF_24_LESS, ZF_24_LEQUAL };
 /* the colour operations after the depth test:
  *   BL_NONE   store
  *   BL_ALPHA  SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD, every channel written
@@ -118,6 +119,22 @@ static ALWAYS_INLINE __m256i depth_pass(const struct depth_fn *fn, __m256i zv, _
    const __m256i eq = _mm256_cmpeq_epi32(zv, zb);
    return _mm256_or_si256(_mm256_or_si256(_mm256_and_si256(lt, fn->lt), _mm256_and_si256(eq, fn->eq)),
                           _mm256_and_si256(gt, fn->gt));
+}
+
+static ALWAYS_INLINE bool zf_z24(enum zfmt zf)
+{
+   return zf == ZF_24 || zf == ZF_24_LESS || zf == ZF_24_LEQUAL;
+}
+
+/* the depth test of the lanes: compare(func, zv, zb) */
+static ALWAYS_INLINE __m256i depth_test8(enum zfmt zf, const struct depth_fn *fn, __m256i zv,
+                                         __m256i zb)
+{
+   if (zf == ZF_24_LESS)
+      return _mm256_cmpgt_epi32(zb, zv);
+   if (zf == ZF_24_LEQUAL)
+      return _mm256_xor_si256(_mm256_cmpgt_epi32(zv, zb), _mm256_set1_epi32(-1));
+   return depth_pass(fn, zv, zb);
 }
 
 /* r_frag.c mul_u8 on 16-bit lanes: t = a*b, (t + (t >> 8) + 128) >> 8
@@ -240,7 +257,7 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
          *zb = (*zb & 0xffffffu) | (uint32_t)ns << 24;
          if (!pass)
             continue;
-      } else if (zf == ZF_24) {
+      } else if (zf_z24(zf)) {
          uint32_t *zb = (uint32_t *)rs->zs + idx;
          if (!compare_u32(rs->depth_func, zv[i], *zb & 0xffffffu))
             continue;

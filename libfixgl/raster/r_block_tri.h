@@ -217,11 +217,11 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                const __m256i nw = _mm256_or_si256(zword, _mm256_slli_epi32(ns, 24));
                store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nw, pass));
                pass = _mm256_and_si256(pass, zpass);
-            } else if (zf == ZF_24) {
+            } else if (zf_z24(zf)) {
                uint32_t *zp = (uint32_t *)rs->zs + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                pass = _mm256_and_si256(
-                  pass, depth_pass(&fn, zv, _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff))));
+                  pass, depth_test8(zf, &fn, zv, _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff))));
                if (zwrite) {
                   const __m256i nz = _mm256_or_si256(
                      _mm256_and_si256(zb, _mm256_set1_epi32((int)0xff000000u)), zv);
