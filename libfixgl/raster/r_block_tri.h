@@ -129,11 +129,15 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
          }
          for (int e = 0; e < 3; e++)
             c[e] += 4 * cv->dx[e];
-         /* cut to the box's columns and rows */
-         const int lo = cv->x0 - bx > 0 ? cv->x0 - bx : 0;
-         const int hi = cv->x1 - bx + 1 < 4 ? cv->x1 - bx + 1 : 4;
-         const unsigned cols = (0xfu >> (4 - hi)) & (0xfu << lo) & 0xfu;
-         mask &= rows & (cols * 0x1111u);
+         /* cut to the box's rows and, in its first and last block
+          * columns, its columns */
+         mask &= rows;
+         if (bx < cv->x0 || bx + 3 > cv->x1) {
+            const int lo = cv->x0 - bx > 0 ? cv->x0 - bx : 0;
+            const int hi = cv->x1 - bx + 1 < 4 ? cv->x1 - bx + 1 : 4;
+            const unsigned cols = (0xfu >> (4 - hi)) & (0xfu << lo) & 0xfu;
+            mask &= cols * 0x1111u;
+         }
          if (!mask)
             continue;
          fragments += (unsigned)__builtin_popcount(mask);
