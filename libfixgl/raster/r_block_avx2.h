@@ -457,15 +457,11 @@ static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)
    return _mm256_min_ps(f, _mm256_set1_ps(1.0f));
 }
 
-/* the fragment program's colour sum and fog (r_frag.c fragment_shader):
- * rgb += secondary rgb, then fogcolor * (1 + -f) + rgb * f on rgb */
-static ALWAYS_INLINE void color_sum_fog8(const struct r_state *rs, const struct r_tri_setup *ts,
-                                         __m256 fx, __m256 fy, __m256 rw, __m256 out[4])
+/* the fragment program's fog (r_frag.c fragment_shader): on rgb,
+ * fogcolor * (1 + -f) + rgb * f */
+static ALWAYS_INLINE void fog8(const struct r_state *rs, const struct r_tri_setup *ts, __m256 fx,
+                               __m256 fy, __m256 rw, __m256 out[4])
 {
-   if (rs->color_sum) {
-      for (int c = 0; c < 3; c++)
-         out[c] = _mm256_add_ps(out[c], input8(ts, R_FS_COLOR1, c, fx, fy, rw));
-   }
    if (rs->fog_mode != R_FOG_NONE) {
       const __m256 f = fog_factor8(rs, input8(ts, R_FS_FOG, 0, fx, fy, rw));
       const __m256 g = _mm256_add_ps(_mm256_set1_ps(1.0f), vneg(f));
@@ -473,6 +469,44 @@ static ALWAYS_INLINE void color_sum_fog8(const struct r_state *rs, const struct 
          out[c] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(rs->fog_color[c]), g),
                                 _mm256_mul_ps(out[c], f));
    }
+}
+
+/* the colour sum (rgb += the secondary colour input's rgb), then fog */
+static ALWAYS_INLINE void color_sum_fog8(const struct r_state *rs, const struct r_tri_setup *ts,
+                                         __m256 fx, __m256 fy, __m256 rw, __m256 out[4])
+{
+   if (rs->color_sum) {
+      for (int c = 0; c < 3; c++)
+         out[c] = _mm256_add_ps(out[c], input8(ts, R_FS_COLOR1, c, fx, fy, rw));
+   }
+   fog8(rs, ts, fx, fy, rw, out);
+}
+
+/* The fragment operations the simple stages' kernels cover (the
+ * textured and per-fragment-lit ones): the depth test (any function,
+ * 16 or 24 bits, written or not) and a store, or SRC_ALPHA /
+ * ONE_MINUS_SRC_ALPHA / ADD on every channel; false for anything else
+ * (alpha or stencil test, logic op, colour mask, other blends). */
+static inline bool block_simple_ops(const struct r_state *rs, enum blend *bl, enum zfmt *zf)
+{
+   *bl = BL_NONE;
+   if (rs->full_ops) {
+      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
+          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
+          rs->blend_dst != R_BF_INV_SRC_ALPHA)
+         return false;
+      *bl = BL_ALPHA;
+   }
+   *zf = ZF_NONE;
+   if (rs->depth_test) {
+      switch (rs->zs_format) {
+      case R_ZS_Z16:   *zf = ZF_16; break;
+      case R_ZS_Z24X8:
+      case R_ZS_Z24S8: *zf = ZF_24; break;
+      default:         return false;
+      }
+   }
+   return true;
 }
 
 #endif

@@ -70,13 +70,7 @@ static __attribute__((noinline)) __m256i phong_half(const struct r_state *rs,
       for (int c = 0; c < 3; c++)
          out[c] = _mm256_add_ps(out[c], sec[c]);
    }
-   if (rs->fog_mode != R_FOG_NONE) {
-      const __m256 f = fog_factor8(rs, input8(ts, R_FS_FOG, 0, fx, fy, rw));
-      const __m256 g = _mm256_add_ps(_mm256_set1_ps(1.0f), vneg(f));
-      for (int c = 0; c < 3; c++)
-         out[c] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(rs->fog_color[c]), g),
-                                _mm256_mul_ps(out[c], f));
-   }
+   fog8(rs, ts, fx, fy, rw, out);
    return pack_rgba8(out[0], out[1], out[2], out[3]);
 }
 
@@ -134,23 +128,10 @@ r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color)
       return NULL;
    if (rs->fog_mode != R_FOG_NONE && !(rs->fs_inputs & (1u << R_FS_FOG)))
       return NULL;
-   /* the fragment operations: as r_block_choose_tri's */
-   enum blend bl = BL_NONE;
-   if (rs->full_ops) {
-      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
-          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
-          rs->blend_dst != R_BF_INV_SRC_ALPHA)
-         return NULL;
-      bl = BL_ALPHA;
-   }
-   enum zfmt zf = ZF_NONE;
-   if (rs->depth_test) {
-      switch (rs->zs_format) {
-      case R_ZS_Z16:   zf = ZF_16; break;
-      case R_ZS_Z24X8:
-      case R_ZS_Z24S8: zf = ZF_24; break;
-      default:         return NULL;
-      }
-   }
+   /* the fragment operations */
+   enum blend bl;
+   enum zfmt zf;
+   if (!block_simple_ops(rs, &bl, &zf))
+      return NULL;
    return (bl == BL_ALPHA ? alpha_table : opaque_table)[zf][rs->depth_write];
 }

@@ -329,23 +329,10 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
    const struct r_tex_combine *k = &rs->tex[0].comb;
    if (!r_tex8_fast(t) || !(k->simple || is_decal_rgba(k)))
       return NULL;
-   enum blend bl = BL_NONE;
-   if (rs->full_ops) {
-      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
-          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
-          rs->blend_dst != R_BF_INV_SRC_ALPHA)
-         return NULL;
-      bl = BL_ALPHA;
-   }
-   enum zfmt zf = ZF_NONE;
-   if (rs->depth_test) {
-      switch (rs->zs_format) {
-      case R_ZS_Z16:   zf = ZF_16; break;
-      case R_ZS_Z24X8:
-      case R_ZS_Z24S8: zf = ZF_24; break;
-      default:         return NULL;
-      }
-   }
+   enum blend bl;
+   enum zfmt zf;
+   if (!block_simple_ops(rs, &bl, &zf))
+      return NULL;
    /* the forms with a kernel of their own, else by the arguments */
    static const int8_t forms[3][3] = {
       /* rgb T */  { ENV_T_T, ENV_T_P, -1 },
