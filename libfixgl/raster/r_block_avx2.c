@@ -53,6 +53,7 @@ static __attribute__((noinline)) __m256i extra_half(const struct r_state *rs,
 
 struct block_stage {
    uint32_t flat_rgba;   /* a flat colour is the same bytes at every pixel */
+   __m256 wx, cx[4];     /* SMOOTH: the block's x terms of w and the colour */
 };
 
 static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const struct r_tri_setup *ts,
@@ -78,12 +79,24 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       return _mm256_set1_epi32((int)st->flat_rgba);
    if (variant == EXTRA)
       return extra_half(rs, ts, fx, fy);
-   const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
+   const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8_y(&ts->w, st->wx, fy));
    const struct r_attr_plane *ap = ts->ap[R_FS_COLOR0];
-   return pack_rgba8(_mm256_mul_ps(eval8(&ap[0], fx, fy), rw),
-                     _mm256_mul_ps(eval8(&ap[1], fx, fy), rw),
-                     _mm256_mul_ps(eval8(&ap[2], fx, fy), rw),
-                     _mm256_mul_ps(eval8(&ap[3], fx, fy), rw));
+   return pack_rgba8(_mm256_mul_ps(eval8_y(&ap[0], st->cx[0], fy), rw),
+                     _mm256_mul_ps(eval8_y(&ap[1], st->cx[1], fy), rw),
+                     _mm256_mul_ps(eval8_y(&ap[2], st->cx[2], fy), rw),
+                     _mm256_mul_ps(eval8_y(&ap[3], st->cx[3], fy), rw));
+}
+
+/* SMOOTH: the x terms both halves of the block share */
+static ALWAYS_INLINE void block_stage_block(const struct r_state *rs, const struct r_tri_setup *ts,
+                                            struct block_stage *st, int variant, __m256 fx)
+{
+   (void)rs;
+   if (variant != SMOOTH)
+      return;
+   st->wx = eval8_x(&ts->w, fx);
+   for (int c = 0; c < 4; c++)
+      st->cx[c] = eval8_x(&ts->ap[R_FS_COLOR0][c], fx);
 }
 
 /* the alpha test's operand: the alpha the colour above converts */
@@ -105,6 +118,7 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
 }
 
 #define BLOCK_STAGE_HAS_ALPHA 1
+#define BLOCK_STAGE_PER_BLOCK 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \

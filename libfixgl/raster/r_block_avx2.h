@@ -32,6 +32,19 @@ enum blend { BL_NONE, BL_ALPHA, BL_BLEND, BL_LOGIC, BL_BLEND_AT, BL_LOGIC_AT };
 #define ALWAYS_INLINE inline __attribute__((always_inline))
 
 /* r_eval_plane in 8 lanes */
+/* r_eval_plane's inner term, fma(dadx, x, a0): the same for both halves
+ * of a block (their lanes share the columns) */
+static ALWAYS_INLINE __m256 eval8_x(const struct r_attr_plane *p, __m256 fx)
+{
+   return _mm256_fmadd_ps(_mm256_set1_ps(p->dadx), fx, _mm256_set1_ps(p->a0));
+}
+
+/* ... and the outer one: eval8(p, fx, fy) == eval8_y(p, eval8_x(p, fx), fy) */
+static ALWAYS_INLINE __m256 eval8_y(const struct r_attr_plane *p, __m256 inner, __m256 fy)
+{
+   return _mm256_fmadd_ps(_mm256_set1_ps(p->dady), fy, inner);
+}
+
 static ALWAYS_INLINE __m256 eval8(const struct r_attr_plane *p, __m256 fx, __m256 fy)
 {
    return _mm256_fmadd_ps(_mm256_set1_ps(p->dady), fy,

@@ -1,6 +1,13 @@
 #ifndef BLOCK_STAGE_KILLS
 #define BLOCK_STAGE_KILLS 0
 #endif
+/* BLOCK_STAGE_PER_BLOCK: the stage defines
+ *   block_stage_block(rs, ts, &stage, variant, fx)
+ * which computes into the stage what both halves of the block at lane
+ * columns fx share (the planes' x terms), before either is shaded */
+#ifndef BLOCK_STAGE_PER_BLOCK
+#define BLOCK_STAGE_PER_BLOCK 0
+#endif
 #ifndef BLOCK_STAGE_HAS_ALPHA
 #define BLOCK_STAGE_HAS_ALPHA 0
 #endif
@@ -143,12 +150,18 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
          fragments += (unsigned)__builtin_popcount(mask);
          const bool edge = bx + 4 > width;
 
+         /* what both halves share: the lanes' columns and the planes'
+          * x terms */
+         const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)bx), flx);
+         const __m256 zx = eval8_x(&ts->z, fx);
+#if BLOCK_STAGE_PER_BLOCK
+         block_stage_block(rs, ts, &stage, variant, fx);
+#endif
          for (int h = 0; h < 2; h++) {
             const unsigned m8 = (mask >> (8 * h)) & 0xffu;
             if (!m8)
                continue;
             const int y = by + 2 * h;
-            const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)bx), flx);
             const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), fly);
 
             /* the fragment colour (after the depth test with an early one) */
@@ -179,7 +192,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             /* the depth value (lp_bld_interp.c: interpolated z + offset) */
             __m256i zv = _mm256_setzero_si256();
             if (zf != ZF_NONE && zf != ZF_S) {
-               const __m256 z = _mm256_add_ps(eval8(&ts->z, fx, fy), _mm256_set1_ps(ts->zoffset));
+               const __m256 z = _mm256_add_ps(eval8_y(&ts->z, zx, fy), _mm256_set1_ps(ts->zoffset));
                zv = depth_unorm(z, zf == ZF_16 ? 65535.0f : 16777215.0f);
             }
 
