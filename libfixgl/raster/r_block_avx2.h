@@ -431,9 +431,14 @@ static ALWAYS_INLINE __m256i gen_color(const struct gen_ops *g, enum blend bl, _
  * per channel */
 static ALWAYS_INLINE __m256i pack_rgba8(__m256 r, __m256 g, __m256 b, __m256 a)
 {
-   return _mm256_or_si256(_mm256_or_si256(unorm8(r), _mm256_slli_epi32(unorm8(g), 8)),
-                          _mm256_or_si256(_mm256_slli_epi32(unorm8(b), 16),
-                                          _mm256_slli_epi32(unorm8(a), 24)));
+   /* the values are 0..255, so the saturating packs keep them: per
+    * 128-bit lane, bytes r0..r3 g0..g3 b0..b3 a0..a3, then interleaved */
+   const __m256i rg = _mm256_packus_epi32(unorm8(r), unorm8(g));
+   const __m256i ba = _mm256_packus_epi32(unorm8(b), unorm8(a));
+   const __m256i planar = _mm256_packus_epi16(rg, ba);
+   const __m256i idx = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
+                                        0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+   return _mm256_shuffle_epi8(planar, idx);
 }
 
 /* input a's component c at the lanes, as shade_pixel reads it */
