@@ -148,7 +148,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
          if (!mask)
             continue;
          fragments += (unsigned)__builtin_popcount(mask);
-         const bool edge = bx + 4 > width;
+         const bool edge_x = bx + 4 > width;
 
          /* what both halves share: the lanes' columns and the planes'
           * x terms */
@@ -163,6 +163,11 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                continue;
             const int y = by + 2 * h;
             const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), fly);
+            /* a half reaching past the buffer's right edge or, in a buffer
+             * of odd height, past its last row takes its lanes one at a
+             * time (finish_lanes); every other half reads and writes both
+             * of its rows whole */
+            const bool edge = edge_x || y + 1 >= height;
 
             /* the fragment colour (after the depth test with an early one) */
             __m256i live = lane_mask(m8);
@@ -208,9 +213,8 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             __m256i pass = live;
             /* both rows of the half are read and written back whole
              * (uncovered and failing lanes with their old values), without
-             * a branch on the masks, unless the half's second row is past
-             * the buffer */
-            const unsigned rm = y + 1 < height ? 0xffu : lm8;
+             * a branch on the masks */
+            const unsigned rm = 0xffu;
             if (zf == ZF_24S || zf == ZF_S) {
                /* r_frag.c stencil_depth_test: the stencil test, then the
                 * depth test of its passing lanes, the op of each outcome
