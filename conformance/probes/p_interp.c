@@ -122,20 +122,8 @@ static void texcoords(long *tot, long *bad)
    glEnable(GL_FRAGMENT_PROGRAM_ARB);
    srand(1);
    for (int iter = 0; iter < 60; iter++) {
-      float vx[3], vy[3], st[2][3], gx[3], gy[3];
-      for (int i = 0; i < 3; i++) {
-         vx[i] = (rand() % (W * 16)) / 16.0f;
-         vy[i] = (rand() % (H * 16)) / 16.0f;
-         st[0][i] = (rand() % 4000) / 1000.0f - 1.5f;
-         st[1][i] = (rand() % 4000) / 1000.0f - 1.5f;
-         win_from_ortho(vx[i], vy[i], W, H, &gx[i], &gy[i]);
-      }
-      glClearColor(-9, -9, -9, -9);
-      glClear(GL_COLOR_BUFFER_BIT);
-      glBegin(GL_TRIANGLES);
-      for (int i = 0; i < 3; i++) { glTexCoord2f(st[0][i], st[1][i]); glVertex2f(vx[i], vy[i]); }
-      glEnd();
-      glFinish();
+      float st[2][3], gx[3], gy[3];
+      draw_random_tex_tri(W, H, -9.0f, gx, gy, st);
       int o[3];
       if (setup_order(gx, gy, o) == 0) continue;
       struct plane_setup s = plane_init(gx, gy, o);

@@ -166,20 +166,8 @@ int main(void)
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wraps[wi][1]);
             glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
             for (int iter = 0; iter < 8; iter++) {
-               float vx[3], vy[3], st[2][3], gx[3], gy[3];
-               for (int i = 0; i < 3; i++) {
-                  vx[i] = (rand() % (W * 16)) / 16.0f;
-                  vy[i] = (rand() % (H * 16)) / 16.0f;
-                  st[0][i] = (rand() % 4000) / 1000.0f - 1.5f;
-                  st[1][i] = (rand() % 4000) / 1000.0f - 1.5f;
-                  win_from_ortho(vx[i], vy[i], W, H, &gx[i], &gy[i]);
-               }
-               glClearColor(-1, -1, -1, -1);
-               glClear(GL_COLOR_BUFFER_BIT);
-               glBegin(GL_TRIANGLES);
-               for (int i = 0; i < 3; i++) { glTexCoord2f(st[0][i], st[1][i]); glVertex2f(vx[i], vy[i]); }
-               glEnd();
-               glFinish();
+               float st[2][3], gx[3], gy[3];
+               draw_random_tex_tri(W, H, -1.0f, gx, gy, st);
                int o[3];
                if (setup_order(gx, gy, o) == 0) continue;
                struct plane_setup ps = plane_init(gx, gy, o);

@@ -174,4 +174,30 @@ static float plane_eval(const float r[3], int x, int y)
    return fmaf(r[2], (float)y, fmaf(r[1], (float)x, r[0]));
 }
 
+/* A random triangle with texture coordinates in [-1.5, 2.5) drawn on a
+ * buffer cleared to `clear` (vertices on the 1/16-pixel grid of a W x H
+ * orthographic view): its window positions in gx, gy, its coordinates in
+ * st (rand() must be seeded by the caller). */
+static void draw_random_tex_tri(int Wd, int Hd, float clear, float gx[3], float gy[3],
+                                float st[2][3])
+{
+   float vx[3], vy[3];
+   for (int i = 0; i < 3; i++) {
+      vx[i] = (rand() % (Wd * 16)) / 16.0f;
+      vy[i] = (rand() % (Hd * 16)) / 16.0f;
+      st[0][i] = (rand() % 4000) / 1000.0f - 1.5f;
+      st[1][i] = (rand() % 4000) / 1000.0f - 1.5f;
+      win_from_ortho(vx[i], vy[i], Wd, Hd, &gx[i], &gy[i]);
+   }
+   glClearColor(clear, clear, clear, clear);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glBegin(GL_TRIANGLES);
+   for (int i = 0; i < 3; i++) {
+      glTexCoord2f(st[0][i], st[1][i]);
+      glVertex2f(vx[i], vy[i]);
+   }
+   glEnd();
+   glFinish();
+}
+
 #endif
