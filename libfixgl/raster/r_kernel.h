@@ -7,9 +7,10 @@
  *    r_frag.c): portable scalar code, one pixel at a time, which handles
  *    every state and is the specification of the others;
  *  - the block kernels (r_block_avx2.c untextured, r_block_tex_avx2.c
- *    with one texture unit, r_block_phong_avx2.c per-fragment lit; AVX2 +
- *    FMA): a triangle's 4x4
- *    blocks, each shaded as two 4x2 halves of 8 lanes (lane i is pixel
+ *    with one texture unit, r_block_phong_avx2.c per-fragment lit; the
+ *    walk r_block_tri.h and the shared operations r_block_avx2.h; AVX2 +
+ *    FMA): a triangle's 4x4 blocks, each shaded as two 4x2 halves of 8
+ *    lanes (lane i is pixel
  *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
  *    at compile time for the states real programs spend their time in.
  *    Every lane performs the reference's float operations in the
