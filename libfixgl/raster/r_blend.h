@@ -1,6 +1,6 @@
 /*
- * r_blend.h: the colour and stencil operations of the fragment stage on
- * unorm8 values,
+ * r_blend.h: the compares and the colour and stencil operations of the
+ * fragment stage on unorm8 values,
  * shared by the reference (r_frag.c r_fragment_ops) and the lanes the
  * block kernels finish one at a time (r_block_avx2.h), so both are the
  * same code.
@@ -9,6 +9,28 @@
 #define FGL_R_BLEND_H
 
 #include "r_state.h"
+
+/* lp_build_cmp(func, a, b): on unsigned integers (depth, stencil, the
+ * unorm8 alpha test) and on floats (the alpha test of formats that are not
+ * rgba8 variants; C's ordered comparisons, the caller adds lp_build_cmp's
+ * unordered treatment of a NaN reference). */
+#define R_COMPARE(func, a, b)                      \
+   switch (func) {                                 \
+   case R_NEVER:    return false;                  \
+   case R_LESS:     return (a) < (b);              \
+   case R_EQUAL:    return (a) == (b);             \
+   case R_LEQUAL:   return (a) <= (b);             \
+   case R_GREATER:  return (a) > (b);              \
+   case R_NOTEQUAL: return (a) != (b);             \
+   case R_GEQUAL:   return (a) >= (b);             \
+   case R_ALWAYS:                                  \
+   default:         return true;                   \
+   }
+
+static inline bool compare(enum r_func func, uint32_t a, uint32_t b)
+{
+   R_COMPARE(func, a, b)
+}
 
 /* gallivm's lp_build_mul for unorm8 [S: gallivm/lp_bld_arit.c:lp_build_mul_norm]:
  * t = a*b, (t + (t >> 8) + 128) >> 8.  This is round(a*b/255) except for

@@ -17,7 +17,7 @@
  *  - depth: z + offset (an fadd), clamped by minps/maxps (NaN -> 1, as
  *    r_clamp01), * (2^n - 1), RNE; compared as integers;
  *  - blending on unorm8 in 16-bit lanes with the oracle's normalized
- *    multiply (r_frag.c mul_u8) and a saturating add.
+ *    multiply (r_blend.h mul_u8) and a saturating add.
  * So the bytes written are the reference's.  Which state each kernel
  * covers is decided once, by r_block_choose_tri; the loops test no state:
  * the kernel's variant is fixed at compile time (the constant arguments

@@ -150,7 +150,7 @@ static ALWAYS_INLINE __m256i depth_test8(enum zfmt zf, const struct depth_fn *fn
    return depth_pass(fn, zv, zb);
 }
 
-/* r_frag.c mul_u8 on 16-bit lanes: t = a*b, (t + (t >> 8) + 128) >> 8
+/* r_blend.h mul_u8 on 16-bit lanes: t = a*b, (t + (t >> 8) + 128) >> 8
  * (t <= 65025, the sum below 2^16) */
 static ALWAYS_INLINE __m256i mul_u8x16(__m256i a, __m256i b)
 {
@@ -176,17 +176,6 @@ static ALWAYS_INLINE __m256i blend_alpha(__m256i src, __m256i dst)
       out[h] = _mm256_adds_epu16(mul_u8x16(s, a), mul_u8x16(d, _mm256_sub_epi16(c255, a)));
    }
    return _mm256_packus_epi16(out[0], out[1]);   /* sums up to 510: saturated */
-}
-
-static inline unsigned r_block_mul_u8(unsigned a, unsigned b)
-{
-   const unsigned t = a * b;
-   return (t + (t >> 8) + 0x80u) >> 8;
-}
-
-static inline bool compare_u32(enum r_func f, uint32_t a, uint32_t b)
-{
-   return ((f & 1) && a < b) || ((f & 2) && a == b) || ((f & 4) && a > b);
 }
 
 /* The stencil test and ops in 8 lanes (r_frag.c stencil_depth_test), the
@@ -239,9 +228,9 @@ static ALWAYS_INLINE __m256i stencil_op8(const struct stencil_ops *st, int k, __
    return _mm256_and_si256(_mm256_add_epi32(u, st->add[k]), _mm256_set1_epi32(0xff));
 }
 
-/* The lanes of a half one at a time (a block reaching past the buffer's
- * right edge): the same integer operations as the vector path, the
- * general colour operations by the reference's own code (r_blend.h).
+/* The lanes of a half one at a time (a half reaching past the buffer's
+ * right edge or last row): the reference's own compares, stencil ops and
+ * colour operations (r_blend.h) on the lanes' depth and colour values.
  * m8: the lanes covered and passing the alpha test. */
 static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, const uint32_t zv[8],
                          const uint32_t src[8], enum zfmt zf, bool zwrite, enum blend bl)
@@ -254,11 +243,11 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
          uint32_t *zb = (uint32_t *)rs->zs + idx;
          const uint8_t s = (uint8_t)(*zb >> 24), vm = rs->stencil_valuemask;
          enum r_stencil_op op;
-         bool pass = compare_u32(rs->stencil_func, rs->stencil_ref & vm, s & vm);
+         bool pass = compare(rs->stencil_func, rs->stencil_ref & vm, s & vm);
          if (!pass) {
             op = rs->stencil_fail;
          } else if (zf == ZF_24S) {
-            pass = compare_u32(rs->depth_func, zv[i], *zb & 0xffffffu);
+            pass = compare(rs->depth_func, zv[i], *zb & 0xffffffu);
             op = pass ? rs->stencil_zpass : rs->stencil_zfail;
             if (pass && zwrite)
                *zb = (*zb & 0xff000000u) | zv[i];
@@ -272,13 +261,13 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
             continue;
       } else if (zf_z24(zf)) {
          uint32_t *zb = (uint32_t *)rs->zs + idx;
-         if (!compare_u32(rs->depth_func, zv[i], *zb & 0xffffffu))
+         if (!compare(rs->depth_func, zv[i], *zb & 0xffffffu))
             continue;
          if (zwrite)
             *zb = (*zb & 0xff000000u) | zv[i];
       } else if (zf == ZF_16) {
          uint16_t *zb = (uint16_t *)rs->zs + idx;
-         if (!compare_u32(rs->depth_func, zv[i], *zb))
+         if (!compare(rs->depth_func, zv[i], *zb))
             continue;
          if (zwrite)
             *zb = (uint16_t)zv[i];
@@ -293,17 +282,14 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
       const uint8_t d[4] = { dst[0], dst[1], dst[2], rs->dst_alpha_one ? 255 : dst[3] };
       uint8_t out[4];
       for (int c = 0; c < 4; c++) {
-         if (bl == BL_ALPHA) {
-            const unsigned v = r_block_mul_u8(s[c], s[3]) + r_block_mul_u8(d[c], 255u - s[3]);
-            out[c] = (uint8_t)(v > 255u ? 255u : v);
-         } else if (bl == BL_BLEND) {
+         if (bl == BL_ALPHA || bl == BL_BLEND) {
             out[c] = blend_channel(rs, c, s, d);
          } else {
             out[c] = rs->logic_op ? logic_op(rs->logic_op_mode, s[c], d[c]) : s[c];
          }
       }
       for (int c = 0; c < 4; c++)
-         if (bl == BL_ALPHA || (rs->color_mask & (1u << c)))
+         if (rs->color_mask & (1u << c))
             dst[c] = out[c];
    }
 }

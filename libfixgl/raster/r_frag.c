@@ -40,27 +40,7 @@ uint16_t r_depth_to_z16(float z)
    return (uint16_t)r_round_even(r_clamp01(z) * 65535.0f);
 }
 
-/* lp_build_cmp(func, a, b): on unsigned integers (depth, stencil, the
- * unorm8 alpha test) and on floats (the alpha test of formats that are not
- * rgba8 variants; C's ordered comparisons, the caller adds lp_build_cmp's
- * unordered treatment of a NaN reference). */
-#define R_COMPARE(func, a, b)                      \
-   switch (func) {                                 \
-   case R_NEVER:    return false;                  \
-   case R_LESS:     return (a) < (b);              \
-   case R_EQUAL:    return (a) == (b);             \
-   case R_LEQUAL:   return (a) <= (b);             \
-   case R_GREATER:  return (a) > (b);              \
-   case R_NOTEQUAL: return (a) != (b);             \
-   case R_GEQUAL:   return (a) >= (b);             \
-   case R_ALWAYS:                                  \
-   default:         return true;                   \
-   }
-
-static bool compare(enum r_func func, uint32_t a, uint32_t b)
-{
-   R_COMPARE(func, a, b)
-}
+/* R_COMPARE, compare: r_blend.h */
 
 static bool compare_float(enum r_func func, float a, float b)
 {
