@@ -46,25 +46,15 @@ int main(void) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filt[fi]); glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filt[fi]);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wraps[wi]); glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wraps[wi]);
     for (int iter = 0; iter < 10; iter++) {
-      float vx[3], vy[3], s[3], t[3];
-      for (int i = 0; i < 3; i++) { vx[i] = (rand() % (W*16)) / 16.0f; vy[i] = (rand() % (H*16)) / 16.0f;
-        s[i] = (rand() % 4000) / 1000.0f - 1.5f; t[i] = (rand() % 4000) / 1000.0f - 1.5f; }
-      glClearColor(-1,-1,-1,-1); glClear(GL_COLOR_BUFFER_BIT);
-      glBegin(GL_TRIANGLES); for (int i = 0; i < 3; i++) { glTexCoord2f(s[i], t[i]); glVertex2f(vx[i], vy[i]); } glEnd(); glFinish();
-      /* setup model */
-      float gx[3], gy[3]; for (int i = 0; i < 3; i++) win_from_ortho(vx[i], vy[i], W, H, &gx[i], &gy[i]);
-      int X[3], Y[3]; for (int i=0;i<3;i++){ X[i]=snap_rne(gx[i]-0.5f); Y[i]=snap_rne(gy[i]-0.5f); }
-      long long area = (long long)(X[0]-X[1])*(Y[2]-Y[0]) - (long long)(X[2]-X[0])*(Y[0]-Y[1]);
-      if (area == 0) continue;
-      int o[3] = {0,1,2}; if (area < 0) { o[0] = 1; o[1] = 0; }
-      float x0c = gx[o[0]] - 0.5f, y0c = gy[o[0]] - 0.5f;
-      float dx01 = gx[o[0]] - gx[o[1]], dy01 = gy[o[0]] - gy[o[1]], dx20 = gx[o[2]] - gx[o[0]], dy20 = gy[o[2]] - gy[o[0]];
-      float e = dx01*dy20, f = dy01*dx20; float ooa = 1.0f/(e - f);
-      float dx20o = dx20*ooa, dy20o = dy20*ooa, dx01o = dx01*ooa, dy01o = dy01*ooa;
-      float cs[3], ct[3]; /* coefs */
-#define COEF(A,R) { float a0=A[o[0]], a1=A[o[1]], a2=A[o[2]]; float da01=a0-a1, da20=a2-a0; float t1=da01*dy20o, t2=da20*dy01o; R[1]=t1-t2; \
-        float t3=da20*dx01o, t4=da01*dx20o; R[2]=t3-t4; float s1=R[1]*x0c, s2=R[2]*y0c; float sm=s1+s2; R[0]=a0-sm; }
-      COEF(s, cs); COEF(t, ct);
+      float st[2][3], gx[3], gy[3];
+      draw_random_tex_tri(W, H, -1.0f, gx, gy, st);
+      const float *s = st[0], *t = st[1];
+      int o[3];
+      if (setup_order(gx, gy, o) == 0) continue;
+      const struct plane_setup ps = plane_init(gx, gy, o);
+      float cs[3], ct[3];
+      plane_coef(&ps, s[o[0]], s[o[1]], s[o[2]], cs);
+      plane_coef(&ps, t[o[0]], t[o[1]], t[o[2]], ct);
       for (int py = 0; py < H; py++) for (int px = 0; px < W; px++) {
         float *p = &buf[4*((H-1-py)*W + px)]; if (p[0] == -1.0f) continue;
         float ss = fmaf(cs[2], (float)py, fmaf(cs[1], (float)px, cs[0])) * 1.0f;
