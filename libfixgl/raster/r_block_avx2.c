@@ -4,7 +4,8 @@
  * (r_block_tri.h) and the shared operations (r_block_avx2.h).
  *
  * The walk: a triangle's box in 4x4 blocks aligned to the buffer, as the
- * oracle's rasterizer walks it (lp_rast_tri_tmp.h): per block, the three
+ * oracle's rasterizer walks it (lp_rast_tri_tmp.h; ORACLE-NOTES.md
+ * "Rasterization: snapping, fill rule, edge functions"): per block, the three
  * reduced edge functions of r_tri_cover give a 16-bit coverage mask, cut
  * to the box; each half of a covered block (4x2 pixels, lane i at
  * (x + (i & 3), y + (i >> 2))) is then shaded in 8 lanes.  Every lane does

@@ -31,7 +31,8 @@ enum blend { BL_NONE, BL_ALPHA, BL_BLEND, BL_LOGIC, BL_BLEND_AT, BL_LOGIC_AT };
 
 #define ALWAYS_INLINE inline __attribute__((always_inline))
 
-/* r_eval_plane in 8 lanes */
+/* r_eval_plane in 8 lanes: fma(dady, y, fma(dadx, x, a0)) (ORACLE-NOTES.md
+ * "Interpolation") */
 /* r_eval_plane's inner term, fma(dadx, x, a0): the same for both halves
  * of a block (their lanes share the columns) */
 static ALWAYS_INLINE __m256 eval8_x(const struct r_attr_plane *p, __m256 fx)
@@ -51,7 +52,7 @@ static ALWAYS_INLINE __m256 eval8(const struct r_attr_plane *p, __m256 fx, __m25
                           _mm256_fmadd_ps(_mm256_set1_ps(p->dadx), fx, _mm256_set1_ps(p->a0)));
 }
 
-/* r_float_to_unorm8 in 8 lanes (maxps returns its second operand for NaN:
+/* r_float_to_unorm8 in 8 lanes (ORACLE-NOTES.md "Colour conversion"; maxps returns its second operand for NaN:
  * NaN -> 0, as !(c > 0)) */
 static ALWAYS_INLINE __m256i unorm8(__m256 c)
 {
@@ -60,7 +61,8 @@ static ALWAYS_INLINE __m256i unorm8(__m256 c)
    return _mm256_cvtps_epi32(_mm256_mul_ps(c, _mm256_set1_ps(255.0f)));
 }
 
-/* r_clamp01(z) * scale, RNE */
+/* r_clamp01(z) * scale, RNE (ORACLE-NOTES.md "Depth conversion and polygon
+ * offset") */
 static ALWAYS_INLINE __m256i depth_unorm(__m256 z, float scale)
 {
    const __m256 m = _mm256_min_ps(z, _mm256_set1_ps(1.0f));   /* NaN -> 1 */
@@ -125,7 +127,7 @@ static ALWAYS_INLINE struct depth_fn depth_fn(enum r_func f)
                              _mm256_set1_epi32(f & 4 ? -1 : 0) };
 }
 
-/* compare(func, zv, zb) of r_frag.c; both operands below 2^24 */
+/* compare(func, zv, zb) of r_blend.h; both operands below 2^24 */
 static ALWAYS_INLINE __m256i depth_pass(const struct depth_fn *fn, __m256i zv, __m256i zb)
 {
    const __m256i lt = _mm256_cmpgt_epi32(zb, zv), gt = _mm256_cmpgt_epi32(zv, zb);
@@ -159,7 +161,8 @@ static ALWAYS_INLINE __m256i mul_u8x16(__m256i a, __m256i b)
       _mm256_add_epi16(_mm256_add_epi16(t, _mm256_srli_epi16(t, 8)), _mm256_set1_epi16(0x80)), 8);
 }
 
-/* SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD on 8 RGBA8 pixels (r_frag.c
+/* SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD on 8 RGBA8 pixels (ORACLE-NOTES.md
+ * "Blending, alpha test, dithering"; r_blend.h
  * blend_channel): s*a + d*(255 - a), each a normalized multiply, summed
  * with saturation. */
 static ALWAYS_INLINE __m256i blend_alpha(__m256i src, __m256i dst)
@@ -294,7 +297,8 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
    }
 }
 
-/* The general colour operations in 8 lanes, their state as masks built
+/* The general colour operations in 8 lanes (ORACLE-NOTES.md "Blending,
+ * alpha test, dithering"), their state as masks built
  * once per triangle (gen_ops_init), so no lane loop tests the state:
  *  - a blend factor is the OR of the candidate vectors (src, src alpha,
  *    dst, dst alpha, constant, constant alpha, alpha saturate) each ANDed
@@ -436,7 +440,8 @@ static ALWAYS_INLINE __m256 input8(const struct r_tri_setup *ts, int a, int c, _
    return _mm256_mul_ps(eval8(&ts->ap[a][c], fx, fy), rw);
 }
 
-/* r_frag.c fog_factor in 8 lanes: LINEAR fc * p0 + p1, EXP
+/* r_frag.c fog_factor in 8 lanes (ORACLE-NOTES.md "Fog: coordinate and
+ * factor", "gallivm's pow, exp2 and log2"): LINEAR fc * p0 + p1, EXP
  * exp2(-(fc * p2)), EXP2 exp2(-(t * t)) with t = fc * p3 (exp2v is
  * m_gallivm_exp2 lane-wise), then max(f, 0) (NaN -> 0) and min(., 1) */
 static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)

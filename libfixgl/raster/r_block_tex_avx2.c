@@ -14,7 +14,8 @@
  *  - the inputs: fma(dady, y, fma(dadx, x, a0)) times 1/w (a true divide),
  *    or the provoking vertex's value for a flat input;
  *  - the projection: s, t times 1/q (a true divide);
- *  - the level of detail of each 2x2 quad from its top-left, top-right and
+ *  - the level of detail of each 2x2 quad (ORACLE-NOTES.md "Texture
+ *    sampling: level of detail per quad") from its top-left, top-right and
  *    bottom-left pixels' projected coordinates (r_tex_lod.h, the code of
  *    fill_quad's r_tex_lod_aos), whether those pixels are covered or not:
  *    a 4x2 half holds two whole quads (x a multiple of 4, y even), and its
@@ -23,7 +24,8 @@
  *    and its coordinates are the same float operations, so the cached
  *    quad of the reference and the lanes here agree;
  *  - the lookup: r_tex_avx2.h, r_tex_filter_aos's code on 8 lanes, bit for
- *    bit (tests/unit/test_tex8.c); texels to float as (float)b * (1/255);
+ *    bit (tests/unit/test_tex8.c; ORACLE-NOTES.md "Texture sampling: the
+ *    8-bit path"); texels to float as (float)b * (1/255);
  *  - the environment per channel: the argument, 1 - x, or a product, on
  *    floats, then r_float_to_unorm8 (unorm8).  A channel that is the
  *    texel itself is the texel's byte: unorm8((float)b * (float)(1/255))
