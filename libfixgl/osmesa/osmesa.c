@@ -84,27 +84,14 @@ static void snapshot_zs(struct osmesa_context *c)
              src + (size_t)y * row, row);
 }
 
-/* One row of the internal RGBA8 image into the user's format: the format
- * is chosen once per row, and each loop is one the compiler vectorises. */
+/* One row of the internal RGBA8 image into the user's format, the format
+ * chosen once per row. */
 static void copy_row(GLenum format, uint8_t *restrict dst, const uint8_t *restrict src, int w)
 {
    switch (format) {
    case OSMESA_RGBA:
       memcpy(dst, src, (size_t)w * 4);
       return;
-#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-   case OSMESA_BGRA:
-   case OSMESA_ARGB:
-      for (int x = 0; x < w; x++) {
-         uint32_t v;
-         memcpy(&v, src + 4 * x, 4);   /* bytes r g b a, little endian */
-         v = format == OSMESA_BGRA
-                ? (v & 0xff00ff00u) | ((v >> 16) & 0xffu) | ((v & 0xffu) << 16)
-                : (v << 8) | (v >> 24);
-         memcpy(dst + 4 * x, &v, 4);
-      }
-      return;
-#else
    case OSMESA_BGRA:
       for (int x = 0; x < w; x++) {
          dst[4 * x + 0] = src[4 * x + 2]; dst[4 * x + 1] = src[4 * x + 1];
@@ -117,7 +104,6 @@ static void copy_row(GLenum format, uint8_t *restrict dst, const uint8_t *restri
          dst[4 * x + 2] = src[4 * x + 1]; dst[4 * x + 3] = src[4 * x + 2];
       }
       return;
-#endif
    case OSMESA_RGB:
       for (int x = 0; x < w; x++) {
          dst[3 * x + 0] = src[4 * x + 0];
