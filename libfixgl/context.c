@@ -123,6 +123,15 @@ struct fgl_context *fgl_context_create(void)
     * (raster/r_kernel.h) */
    const char *kernels = getenv("FIXGL_KERNELS");
    ctx->_Raster.reference_kernels = kernels && strcmp(kernels, "reference") == 0;
+   /* the state objects of the initial state, so that every r_state
+    * field points to one from now on */
+   ctx->NewState = FGL_NEW_ALL;
+   fgl_update_state(ctx);
+   if (ctx->NewState != 0) {
+      fgl_context_destroy(ctx);
+      return NULL;
+   }
+   ctx->ErrorValue = GL_NO_ERROR;
    ctx->NewState = FGL_NEW_ALL;
    return ctx;
 }
@@ -137,6 +146,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
    fgl_free_texobj(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    free(ctx->_DrawVbuf.queue);
+   r_cso_cache_fini(&ctx->_StateCache);
    free(ctx);
 }
 

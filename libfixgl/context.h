@@ -876,10 +876,21 @@ struct fgl_context {
    struct fgl_draw_pipeline _DrawPipeline;
    struct fgl_draw_offset_latch _DrawOffset;
    struct fgl_draw_vbuf _DrawVbuf;
-   uint32_t _StipplePattern[32];   /* the pattern _Raster.stipple_rows was
-                                    * made from (all zero at first, as the
+   uint32_t _StipplePattern[32];   /* the pattern _StippleRows was made
+                                    * from (all zero at first, as the
                                     * state tracker's copy) */
+   uint32_t _StippleRows[32];      /* its rows for the rasterizer object */
+   /* The raster state of the draws (the variant: state objects, draw
+    * region, kernels; raster/r_state.h), its objects held, and the cache
+    * of state objects they come from (state.c builds them) */
    struct r_state _Raster;
+   /* the raster state of the smooth point [0] and line [1] quads (each
+    * zero while its smoothing is off), validated with _Raster */
+   struct r_state _RasterAA[2];
+   struct r_cso_cache _StateCache;
+   /* GL_PHONG_WIN: the shading environment of the batch being drawn, as
+    * built before it becomes _Raster.shade_env (tnl/t_render.c) */
+   struct m_shade_env _ShadeEnv;
    /* fixglStats (main/stats.c): the benchmark's counters; _Raster.stats
     * points to Stats.raster while they are enabled, else it is NULL */
    struct fgl_stats Stats;
@@ -939,8 +950,15 @@ void fgl_update_state(struct fgl_context *ctx);
 struct m_shade_env;
 void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env);
 /* The fog uniforms of the fragment program (STATE_FOG_PARAMS_OPTIMIZED,
- * STATE_FOG_COLOR) from the current fog state into rs (state.c) */
-void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs);
+ * STATE_FOG_COLOR) from the current fog state into fs (state.c) */
+void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
+/* _Raster.shade_env := the object equal to _ShadeEnv (state.c); false
+ * when there is none (out of memory, GL_OUT_OF_MEMORY raised). */
+bool fgl_set_shade_env(struct fgl_context *ctx);
+/* The state object equal to obj (size bytes) from the context's cache
+ * (state.c); old, and *ok set to false, when out of memory. */
+const void *fgl_state_object(struct fgl_context *ctx, const void *old, const void *obj,
+                             size_t size, bool *ok);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
 /* fixglStats (main/stats.c): around a vertex batch while the counters are

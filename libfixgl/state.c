@@ -19,32 +19,32 @@
  * fixed-point colour buffer) and the fog coordinate as an input of the
  * fragment program (ff_fragment_shader.cpp: key->fog_mode from
  * _PackedEnabledMode). */
-void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_state *rs)
+void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs)
 {
    const struct fgl_fog_attrib *fog = &ctx->Fog;
    /* start == end gives val = 1, so f = c - end */
    const float val = fog->End == fog->Start ? 1.0f : -1.0f / (fog->End - fog->Start);
-   rs->fog_params[0] = val;
-   rs->fog_params[1] = fog->End * -val;
+   fs->fog_params[0] = val;
+   fs->fog_params[1] = fog->End * -val;
    /* density times double constants (M_LOG2E, 1/sqrt(ln 2)), then float */
-   rs->fog_params[2] = (float)(fog->Density * 1.4426950408889634074);
-   rs->fog_params[3] = (float)(fog->Density * 1.201122408786449815);
+   fs->fog_params[2] = (float)(fog->Density * 1.4426950408889634074);
+   fs->fog_params[3] = (float)(fog->Density * 1.201122408786449815);
    for (int c = 0; c < 3; c++)
-      rs->fog_color[c] = fog->Color[c];
+      fs->fog_color[c] = fog->Color[c];
 }
 
-static void update_fog(const struct fgl_context *ctx, struct r_state *rs)
+static void update_fog(const struct fgl_context *ctx, struct r_fs_state *fs)
 {
    const struct fgl_fog_attrib *fog = &ctx->Fog;
    if (!fog->Enabled) {
-      rs->fog_mode = R_FOG_NONE;
+      fs->fog_mode = R_FOG_NONE;
       return;
    }
-   rs->fog_mode = fog->Mode == GL_LINEAR ? R_FOG_LINEAR
+   fs->fog_mode = fog->Mode == GL_LINEAR ? R_FOG_LINEAR
                 : fog->Mode == GL_EXP    ? R_FOG_EXP : R_FOG_EXP2;
-   fgl_fog_uniforms(ctx, rs);
-   rs->fs_inputs |= 1u << R_FS_FOG;
-   rs->num_attribs = R_ATTR_FOG + 1;
+   fgl_fog_uniforms(ctx, fs);
+   fs->fs_inputs |= 1u << R_FS_FOG;
+   fs->num_attribs = R_ATTR_FOG + 1;
 }
 
 /* ---- texturing ---------------------------------------------------------- */
@@ -365,29 +365,34 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
    }
 }
 
-/* The texture units of the fixed-function fragment program
- * (ff_fragment_shader.cpp make_state_key): every unit with a complete
- * texture, walked up to the last one. */
-static void update_tex_units(const struct fgl_context *ctx, struct r_state *rs)
+/* The state objects of every enabled texture unit
+ * (ff_fragment_shader.cpp make_state_key: every unit with a complete
+ * texture, walked up to the last one): the image and sampler, the
+ * combiner, the environment colour.  False when out of memory. */
+static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
 {
-   rs->tex_units = 0;
-   rs->tex_nr = 0;
-   rs->tex_pair = false;
-   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS && u < R_MAX_TEX_UNITS; u++) {
-      if (!(ctx->_EnabledTexUnits & (1u << u)))
-         continue;
-      const struct fgl_texture_object *t = ctx->_CurrentTex[u];
-      struct r_tex_unit *ru = &rs->tex[u];
-      update_texture(ctx, u, t, ctx->_CurrentTexTarget[u], &ru->tex);
-      rs->tex_pair |= r_tex_need_pair(&ru->tex);
-      const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
-      update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru->comb);
-      r_tex_combine_simplify(&ru->comb, (int)u);
-      for (int c = 0; c < 4; c++)
-         ru->env_color[c] = tu->EnvColor[c];
-      rs->tex_units |= 1u << u;
-      rs->tex_nr = (int)u + 1;
+   bool ok = true;
+   for (unsigned u = 0; u < R_MAX_TEX_UNITS; u++) {
+      const struct r_tex_unit *obj = NULL;
+      if (u < FGL_MAX_TEXTURE_UNITS && (ctx->_EnabledTexUnits & (1u << u))) {
+         const struct fgl_texture_object *t = ctx->_CurrentTex[u];
+         struct r_tex_unit ru;
+         memset(&ru, 0, sizeof(ru));
+         update_texture(ctx, u, t, ctx->_CurrentTexTarget[u], &ru.tex);
+         const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
+         update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru.comb);
+         r_tex_combine_simplify(&ru.comb, (int)u);
+         for (int c = 0; c < 4; c++)
+            ru.env_color[c] = tu->EnvColor[c];
+         obj = fgl_state_object(ctx, rs->tex[u], &ru, sizeof(ru), &ok);
+      }
+      if (obj != rs->tex[u]) {
+         r_cso_hold(obj);
+         r_cso_release(rs->tex[u]);
+         rs->tex[u] = obj;
+      }
    }
+   return ok;
 }
 
 /* GL comparison, stencil op, blend factor and equation enums to the raster
@@ -448,70 +453,399 @@ static enum r_blend_eq blend_eq(GLenum mode)
    }
 }
 
-/* The per-fragment operations of the raster state: scissor (the draw
- * region), alpha test, stencil, depth, blending, logic op, colour mask. */
-static void update_fragment_ops(struct fgl_context *ctx, struct r_state *rs)
+/* The depth, stencil and alpha test object. */
+static void build_dsa(const struct fgl_context *ctx, struct r_dsa_state *o)
 {
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
-
-   /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;
-    * lp_setup.c try_update_scene_state draw_regions] */
-   int region[4];
-   fgl_scissor_draw_region(ctx, region);
-   rs->x0 = region[0];
-   rs->y0 = region[1];
-   rs->x1 = region[2];
-   rs->y1 = region[3];
 
    /* depth and stencil only with their buffers [S: st_atom_depth.c] */
    const bool has_depth = fb && fb->DepthBits > 0;
    const bool has_stencil = fb && fb->StencilBits > 0;
-   rs->depth_test = ctx->Depth.Test && has_depth;
-   rs->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
-   rs->depth_write = ctx->Depth.Mask;
+   o->depth_test = ctx->Depth.Test && has_depth;
+   o->depth_func = (enum r_func)(ctx->Depth.Func - GL_NEVER);
+   o->depth_write = ctx->Depth.Mask;
 
    const struct fgl_stencil_attrib *st = &ctx->Stencil;
-   rs->stencil_test = st->Enabled && has_stencil;
-   rs->stencil_func = (enum r_func)(st->Func - GL_NEVER);
-   rs->stencil_ref = (uint8_t)fgl_stencil_ref(ctx);
-   rs->stencil_valuemask = (uint8_t)(st->ValueMask & 0xffu);
-   rs->stencil_writemask = (uint8_t)(st->WriteMask & 0xffu);
-   rs->stencil_fail = stencil_op(st->FailFunc);
-   rs->stencil_zfail = stencil_op(st->ZFailFunc);
-   rs->stencil_zpass = stencil_op(st->ZPassFunc);
+   o->stencil_test = st->Enabled && has_stencil;
+   o->stencil_func = (enum r_func)(st->Func - GL_NEVER);
+   o->stencil_ref = (uint8_t)fgl_stencil_ref(ctx);
+   o->stencil_valuemask = (uint8_t)(st->ValueMask & 0xffu);
+   o->stencil_writemask = (uint8_t)(st->WriteMask & 0xffu);
+   o->stencil_fail = stencil_op(st->FailFunc);
+   o->stencil_zfail = stencil_op(st->ZFailFunc);
+   o->stencil_zpass = stencil_op(st->ZPassFunc);
 
    /* alpha test: the reference clamped (lp_build_clamp: NaN -> 1) and
     * converted to unorm8 [S: lp_bld_alpha.c:lp_build_alpha_test] */
    const struct fgl_colorbuffer_attrib *c = &ctx->Color;
-   rs->alpha_test = c->AlphaEnabled;
-   rs->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
-   rs->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
+   o->alpha_test = c->AlphaEnabled;
+   o->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
+   o->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
    /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare */
-   rs->alpha_test_float = fb && fb->AlphaBits == 0;
-   rs->alpha_ref_float = c->AlphaRef;
+   o->alpha_test_float = fb && fb->AlphaBits == 0;
+   o->alpha_ref_float = c->AlphaRef;
+}
 
+/* The blend object: blending, logic op, colour mask. */
+static void build_blend(const struct fgl_context *ctx, struct r_blend_state *o)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const struct fgl_colorbuffer_attrib *c = &ctx->Color;
    /* blending [S: st_atom_blend.c:st_update_blend]: the logic op wins;
     * MIN and MAX use factors ONE; blend colour by float_to_ubyte
     * (lp_setup.c:try_update_scene_state) */
-   rs->logic_op = c->LogicOpEnabled;
-   rs->logic_op_mode = c->LogicOp - GL_CLEAR;
+   o->logic_op = c->LogicOpEnabled;
+   o->logic_op_mode = c->LogicOp - GL_CLEAR;
    /* glDrawBuffer(GL_NONE): no colour buffer is bound (Mesa's
     * _NumColorDrawBuffers 0, [S: main/buffers.c:_mesa_drawbuffers],
     * st_atom_framebuffer.c:st_update_framebuffer_state binds no cbuf), the
     * fragments still reach depth and stencil (ORACLE-NOTES.md "Queries,
     * strings, buffers") */
-   rs->color_mask = c->DrawBuffer == GL_NONE ? 0u : c->ColorMask & 0xfu;
-   rs->blend = !c->LogicOpEnabled && c->BlendEnabled && rs->color_mask != 0;
-   rs->blend_eq = blend_eq(c->BlendEquation);
-   const bool minmax = rs->blend_eq == R_BLEND_MIN || rs->blend_eq == R_BLEND_MAX;
-   rs->blend_src = minmax ? R_BF_ONE : blend_factor(c->BlendSrc);
-   rs->blend_dst = minmax ? R_BF_ONE : blend_factor(c->BlendDst);
+   o->color_mask = c->DrawBuffer == GL_NONE ? 0u : c->ColorMask & 0xfu;
+   o->enable = !c->LogicOpEnabled && c->BlendEnabled && o->color_mask != 0;
+   o->blend_eq = blend_eq(c->BlendEquation);
+   const bool minmax = o->blend_eq == R_BLEND_MIN || o->blend_eq == R_BLEND_MAX;
+   o->blend_src = minmax ? R_BF_ONE : blend_factor(c->BlendSrc);
+   o->blend_dst = minmax ? R_BF_ONE : blend_factor(c->BlendDst);
    for (int i = 0; i < 4; i++)
-      rs->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
-   rs->dst_alpha_one = fb && fb->AlphaBits == 0;
+      o->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
+   o->dst_alpha_one = fb && fb->AlphaBits == 0;
+}
 
-   rs->full_ops = rs->alpha_test || rs->stencil_test || rs->blend ||
-                  rs->logic_op || rs->color_mask != 0xfu;
+/* GL_PHONG_WIN with lighting (include/fixgl/shading.md): the fragments
+ * are lit from the interpolated eye-space normal and eye position, two
+ * varyings after the texture coordinates (t_phong.c, r_fragment_phong).
+ * Not in GL_SELECT / GL_FEEDBACK, whose vertices carry the per-vertex lit
+ * colours, as under GL_SMOOTH.  The environment is an object of its own,
+ * looked up per batch (t_render.c).  The colour slots then hold the vertex
+ * colour for both faces, and the face is the fragment's (gl_FrontFacing's):
+ * no two-sided colours, neither llvmpipe's nor draw's, as for a shader on
+ * the oracle (the state tracker's light_twoside is
+ * GL_VERTEX_PROGRAM_TWO_SIDE's then
+ * [S: main/state.h:_mesa_vertex_program_two_side_enabled]) */
+static bool phong_on(const struct fgl_context *ctx)
+{
+   return ctx->Light.Enabled && ctx->Light.ShadeModel == GL_PHONG_WIN &&
+          ctx->RenderMode == GL_RENDER;
+}
+
+/* two-sided lit colours (by llvmpipe or by draw) */
+static bool twoside_on(const struct fgl_context *ctx)
+{
+   return ctx->Light.Enabled && ctx->Light.Model.TwoSide && !phong_on(ctx);
+}
+
+/* The fragment program object: its inputs, colour sum, fog, units. */
+static void build_fs(const struct fgl_context *ctx, struct r_fs_state *o)
+{
+   /* colours: the lit front (and back, and secondary) colours, or the
+    * vertex colour */
+   const bool lit = ctx->Light.Enabled;
+   o->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
+   o->num_attribs = twoside_on(ctx) ? 4 : o->color_sum ? 2 : 1;
+   o->fs_inputs = 1u << R_FS_COLOR0 | (o->color_sum ? 1u << R_FS_COLOR1 : 0u);
+   /* fog: the fragment program reads the fog coordinate, which the
+    * vertex stage writes to its own slot after the colours */
+   update_fog(ctx, o);
+   /* texture coordinates: a slot per unit up to the last enabled one
+    * (ffvertex_prog.c writes the coordinate of every enabled unit) */
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS && u < R_MAX_TEX_UNITS; u++) {
+      if (ctx->_EnabledTexUnits & (1u << u)) {
+         o->fs_inputs |= 1u << (R_FS_TEX0 + u);
+         o->num_attribs = R_ATTR_TEX0 + (int)u + 1;
+         o->tex_units |= 1u << u;
+         o->tex_nr = (int)u + 1;
+      }
+   }
+   o->phong = phong_on(ctx);
+   if (o->phong) {
+      /* r_fragment_phong writes the colour inputs: the secondary colour
+       * is never interpolated, the vertex colour only when colour
+       * material reads it */
+      o->fs_inputs &= ~(1u << R_FS_COLOR1);
+      if (!ctx->Light.ColorMaterialEnabled)
+         o->fs_inputs &= ~(1u << R_FS_COLOR0);
+      o->fs_inputs |= 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
+      o->num_attribs = R_ATTR_EYEPOS + 1;
+   }
+}
+
+/* The rasterizer object and the draw module's pipeline stages. */
+static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const bool twoside = twoside_on(ctx);
+   /* GL's counter-clockwise is a positive snapped area in the y-down
+    * window buffer (the state tracker's front_ccw for OSMesa) */
+   o->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;
+   const GLenum cull = ctx->Polygon.CullFlag ? ctx->Polygon.CullFaceMode : GL_NONE;
+   o->cull_front = cull == GL_FRONT || cull == GL_FRONT_AND_BACK;
+   o->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
+   /* flat_mask is set per batch by t_render_batch */
+
+   /* [S: lp_state_rasterizer.c:llvmpipe_create_rasterizer_state] with
+    * unfilled polygons, smooth points or lines, line stipple or the
+    * polygon stipple (need_pipeline) the draw module does two-sided
+    * colours and polygon offset (clear_flags on llvmpipe's copy), else
+    * llvmpipe's setup does them; facing and culling are decided by both
+    * (draw's cull stage, then the setup's area sign).  The state
+    * tracker turns an all-ones line stipple pattern off
+    * (st_atom_rasterizer.c). */
+   const struct fgl_polygon_attrib *pg = &ctx->Polygon;
+   /* [S: st_atom_rasterizer.c] the fill modes, simplified when culling
+    * is on: a culled front face takes the back mode and a culled back
+    * face the front mode (both the back mode with GL_FRONT_AND_BACK) */
+   GLenum fill_front = pg->FrontMode, fill_back = pg->BackMode;
+   if (o->cull_front)
+      fill_front = fill_back;
+   if (o->cull_back)
+      fill_back = fill_front;
+   const bool unfilled = fill_front != GL_FILL || fill_back != GL_FILL;
+   const bool line_stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
+   const bool need_pipeline = unfilled || pg->StippleFlag || ctx->Point.SmoothFlag ||
+                              ctx->Line.SmoothFlag || line_stipple;
+   const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
+   /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
+    * depth buffer; units scaled in double, then stored as float */
+   const double mrd = fb && fb->DepthBits == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
+   const float units = (float)((double)pg->OffsetUnits * mrd * 2.0);
+   const bool lp_offset = any_offset && !need_pipeline;
+   o->offset_units = lp_offset ? units : 0.0f;
+   o->offset_scale = lp_offset ? pg->OffsetFactor : 0.0f;
+   o->twoside = twoside && !need_pipeline;
+
+   /* the rows: inverted at draw time (fgl_update_stipple) */
+   o->stipple = pg->StippleFlag;
+   memcpy(o->stipple_rows, ctx->_StippleRows, sizeof(o->stipple_rows));
+
+   /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
+    * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),
+    * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
+    * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
+   const float size = ctx->Point.Size, width = ctx->Line.Width;
+   o->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
+   o->line_width = width > FGL_MIN_LINE_WIDTH
+                 ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
+                 : FGL_MIN_LINE_WIDTH;
+
+   struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
+   /* draw_pipe_validate.c:draw_need_pipeline for triangles: stipple,
+    * unfilled, or an offset enable or two-sided lighting left to draw */
+   dp->always = unfilled || pg->StippleFlag || (need_pipeline && (any_offset || twoside));
+   dp->twoside = twoside && need_pipeline;
+   /* draw_pipe_offset.c:offset_first_tri: the enable of the fill mode
+    * of the first triangle's face (t_clip.c) */
+   dp->offset = need_pipeline && any_offset;
+   dp->offset_fill = pg->OffsetFill;
+   dp->offset_line = pg->OffsetLine;
+   dp->offset_point = pg->OffsetPoint;
+   dp->offset_units = units;
+   dp->offset_scale = pg->OffsetFactor;
+   /* draw_pipe_validate.c: precalc_flat (wide lines never: llvmpipe's
+    * threshold is 10000) */
+   dp->flatshade = unfilled || line_stipple || ctx->Line.SmoothFlag;
+   dp->unfilled = unfilled;
+   dp->fill_front = fill_front;
+   dp->fill_back = fill_back;
+   dp->front_ccw = o->ccw_is_front;
+   dp->cull_front = o->cull_front;
+   dp->cull_back = o->cull_back;
+   /* draw_pipe_validate.c: the cull stage runs when a stage needs the
+    * determinant or culling is on */
+   dp->cull = dp->cull_front || dp->cull_back || unfilled ||
+              (need_pipeline && (any_offset || twoside));
+   /* the line stipple stage: triangles and points that reach it restart
+    * the counter (draw_pipe_stipple.c) */
+   dp->line_stipple = line_stipple;
+
+   if (ctx->RenderMode != GL_RENDER) {
+      /* GL_SELECT and GL_FEEDBACK draw with the state tracker's own
+       * draw context (st_draw_feedback.c, st_draw.c:st_get_draw_context),
+       * given the full rasterizer state: it has no vbuf backend, so
+       * every primitive takes the pipeline (draw_pt.c: PT_PIPELINE when
+       * !draw->render); draw_pipe_validate.c:validate_pipeline then
+       * inserts twoside and offset whenever enabled, flatshade only for
+       * unfilled polygons (line stipple, aaline and wide lines are
+       * disabled or not installed there), the cull stage for unfilled,
+       * offset, two-sided or culling.  Its mrd is never set
+       * (draw_set_zs_format is llvmpipe's), so the offset units are 0:
+       * units * 0.0 * 2 in double (draw_pipe_offset.c:offset_first_tri) */
+      dp->always = true;
+      dp->twoside = twoside;
+      dp->offset = any_offset;
+      dp->offset_units = (float)((double)pg->OffsetUnits * 0.0 * 2.0);
+      dp->flatshade = unfilled;
+      dp->cull = dp->cull_front || dp->cull_back || unfilled || any_offset || twoside;
+      dp->line_stipple = false;
+   }
+}
+
+/* The raster state of the smooth point and line quads: the draw module
+ * binds its rasterizer "no cull" state for them (draw_context.c:
+ * draw_get_rasterizer_no_cull: no culling, no two-sided colours, no offset,
+ * front_ccw) and a fragment shader that also reads the aa coordinates; the
+ * polygon stipple shader is not bound for them (the pstipple stage passes
+ * points and lines through). */
+static bool update_aa_states(struct fgl_context *ctx)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   bool ok = true;
+   for (int m = 0; m < 2; m++) {
+      struct r_state *aa = &ctx->_RasterAA[m];
+      const bool on = m == 0 ? ctx->Point.SmoothFlag : ctx->Line.SmoothFlag;
+      r_state_release(aa);
+      memset(aa, 0, sizeof(*aa));
+      if (!on)
+         continue;
+      struct r_rast_state rast = *rs->rast;
+      rast.cull_front = false;
+      rast.cull_back = false;
+      rast.twoside = false;
+      rast.offset_units = 0.0f;
+      rast.offset_scale = 0.0f;
+      rast.stipple = false;
+      rast.ccw_is_front = true;
+      struct r_fs_state fs = *rs->fs;
+      fs.fs_inputs |= 1u << R_FS_AA;
+      fs.aa = m == 0 ? R_AA_POINT : R_AA_LINE;
+      *aa = *rs;
+      aa->rast = NULL;
+      aa->fs = NULL;
+      r_state_hold(aa);
+      aa->rast = fgl_state_object(ctx, NULL, &rast, sizeof(rast), &ok);
+      r_cso_hold(aa->rast);
+      aa->fs = fgl_state_object(ctx, NULL, &fs, sizeof(fs), &ok);
+      r_cso_hold(aa->fs);
+      if (!ok) {
+         r_state_release(aa);
+         memset(aa, 0, sizeof(*aa));
+         return false;
+      }
+      r_choose_kernels(aa);
+   }
+   return true;
+}
+
+const void *fgl_state_object(struct fgl_context *ctx, const void *old, const void *obj,
+                             size_t size, bool *ok)
+{
+   const void *o = r_cso_lookup(&ctx->_StateCache, obj, size);
+   if (!o) {
+      *ok = false;
+      return old;
+   }
+   return o;
+}
+
+bool fgl_set_shade_env(struct fgl_context *ctx)
+{
+   struct r_state *rs = &ctx->_Raster;
+   bool ok = true;
+   const struct m_shade_env *o = fgl_state_object(ctx, rs->shade_env, &ctx->_ShadeEnv,
+                                                  sizeof(ctx->_ShadeEnv), &ok);
+   if (o != rs->shade_env) {
+      r_cso_hold(o);
+      r_cso_release(rs->shade_env);
+      rs->shade_env = o;
+   }
+   if (!ok)
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+   return rs->shade_env != NULL;
+}
+
+/* Points slot (an object of the r_state, held by it) to the object equal
+ * to obj: the new one is held, the old one released. */
+#define SET_OBJECT(ctx, slot, obj, ok)                                       \
+   do {                                                                      \
+      const void *o_ = fgl_state_object(ctx, slot, &(obj), sizeof(obj), ok); \
+      if (o_ != (const void *)(slot)) {                                      \
+         r_cso_hold(o_);                                                     \
+         r_cso_release(slot);                                                \
+         (slot) = o_;                                                        \
+      }                                                                      \
+   } while (0)
+
+/* The raster state: each object whose groups are dirty, then the
+ * variant's kernels.  Returns the groups not done (out of memory). */
+static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
+{
+   struct r_state *rs = &ctx->_Raster;
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   unsigned failed = 0;
+   bool ok;
+
+   if (dirty & FGL_NEW_BUFFERS) {
+      struct r_fb_state o;
+      memset(&o, 0, sizeof(o));
+      if (fb) {
+         o.color = fb->Color;
+         o.zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
+         o.zs_format = fb->ZSFormat;
+         o.width = fb->Width;
+         o.height = fb->Height;
+      }
+      ok = true;
+      SET_OBJECT(ctx, rs->fb, o, &ok);
+      failed |= ok ? 0u : FGL_NEW_BUFFERS;
+   }
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_SCISSOR)) {
+      /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;
+       * lp_setup.c try_update_scene_state draw_regions] */
+      int region[4];
+      fgl_scissor_draw_region(ctx, region);
+      rs->x0 = region[0];
+      rs->y0 = region[1];
+      rs->x1 = region[2];
+      rs->y1 = region[3];
+   }
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_STENCIL | FGL_NEW_COLOR)) {
+      struct r_dsa_state o;
+      memset(&o, 0, sizeof(o));
+      build_dsa(ctx, &o);
+      ok = true;
+      SET_OBJECT(ctx, rs->dsa, o, &ok);
+      failed |= ok ? 0u : FGL_NEW_DEPTH;
+   }
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_COLOR)) {
+      struct r_blend_state o;
+      memset(&o, 0, sizeof(o));
+      build_blend(ctx, &o);
+      ok = true;
+      SET_OBJECT(ctx, rs->blend, o, &ok);
+      failed |= ok ? 0u : FGL_NEW_COLOR;
+   }
+   if (dirty & FGL_NEW_TEXTURE) {
+      if (!update_tex_units(ctx, rs))
+         failed |= FGL_NEW_TEXTURE;
+   }
+   if (dirty & (FGL_NEW_LIGHT | FGL_NEW_FOG | FGL_NEW_TEXTURE | FGL_NEW_RENDERMODE)) {
+      struct r_fs_state o;
+      memset(&o, 0, sizeof(o));
+      build_fs(ctx, &o);
+      for (int u = 0; u < o.tex_nr; u++)
+         if (rs->tex[u])
+            o.tex_pair |= r_tex_need_pair(&rs->tex[u]->tex);
+      ok = true;
+      SET_OBJECT(ctx, rs->fs, o, &ok);
+      failed |= ok ? 0u : FGL_NEW_FOG;
+      if (!rs->fs->phong && rs->shade_env) {
+         r_cso_release(rs->shade_env);
+         rs->shade_env = NULL;
+      }
+   }
+   if (dirty & (FGL_NEW_POLYGON | FGL_NEW_LIGHT | FGL_NEW_POINT | FGL_NEW_LINE |
+                FGL_NEW_RENDERMODE | FGL_NEW_BUFFERS)) {
+      struct r_rast_state o;
+      memset(&o, 0, sizeof(o));
+      build_rast(ctx, &o);
+      ok = true;
+      SET_OBJECT(ctx, rs->rast, o, &ok);
+      failed |= ok ? 0u : FGL_NEW_POLYGON;
+   }
+   r_choose_kernels(rs);
+   if (!update_aa_states(ctx))
+      failed |= FGL_NEW_POINT;
+   return failed;
 }
 
 void fgl_update_state(struct fgl_context *ctx)
@@ -560,172 +894,17 @@ void fgl_update_state(struct fgl_context *ctx)
    if (dirty & (FGL_NEW_CLIP | FGL_NEW_PROJECTION))
       fgl_update_clip_planes(ctx);
 
+   unsigned failed = 0;
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_LIGHT | FGL_NEW_POLYGON |
                 FGL_NEW_FOG | FGL_NEW_SCISSOR | FGL_NEW_STENCIL | FGL_NEW_COLOR |
                 FGL_NEW_POINT | FGL_NEW_LINE | FGL_NEW_RENDERMODE | FGL_NEW_TEXTURE)) {
-      struct r_state *rs = &ctx->_Raster;
-      const struct fgl_framebuffer *fb = ctx->DrawBuffer;
-      if (fb) {
-         rs->color = fb->Color;
-         rs->zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
-         rs->zs_format = fb->ZSFormat;
-         rs->width = fb->Width;
-         rs->height = fb->Height;
-      }
-      update_fragment_ops(ctx, rs);
-      /* colours: the lit front (and back, and secondary) colours, or the
-       * vertex colour */
-      const bool lit = ctx->Light.Enabled;
-      /* GL_PHONG_WIN with lighting (include/fixgl/shading.md): the
-       * fragments are lit from the interpolated eye-space normal and eye
-       * position, two varyings after the texture coordinates (t_phong.c,
-       * r_fragment_phong).  Not in GL_SELECT / GL_FEEDBACK, whose vertices
-       * carry the per-vertex lit colours, as under GL_SMOOTH.  The
-       * environment is filled per batch (t_render.c).  The colour slots
-       * then hold the vertex colour for both faces, and the face is the
-       * fragment's (gl_FrontFacing's): no two-sided colours, neither
-       * llvmpipe's nor draw's, as for a shader on the oracle (the state
-       * tracker's light_twoside is GL_VERTEX_PROGRAM_TWO_SIDE's then
-       * [S: main/state.h:_mesa_vertex_program_two_side_enabled]) */
-      const bool phong = lit && ctx->Light.ShadeModel == GL_PHONG_WIN &&
-                         ctx->RenderMode == GL_RENDER;
-      const bool twoside = lit && ctx->Light.Model.TwoSide && !phong;
-      rs->twoside = twoside;
-      rs->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
-      rs->num_attribs = twoside ? 4 : rs->color_sum ? 2 : 1;
-      rs->fs_inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u);
-      /* fog: the fragment program reads the fog coordinate, which the
-       * vertex stage writes to its own slot after the colours */
-      update_fog(ctx, rs);
-      /* texture coordinates: a slot per unit up to the last enabled one
-       * (ffvertex_prog.c writes the coordinate of every enabled unit) */
-      for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
-         if (ctx->_EnabledTexUnits & (1u << u)) {
-            rs->fs_inputs |= 1u << (R_FS_TEX0 + u);
-            rs->num_attribs = R_ATTR_TEX0 + (int)u + 1;
-         }
-      }
-      update_tex_units(ctx, rs);
-      rs->phong = phong;
-      if (rs->phong) {
-         /* r_fragment_phong writes the colour inputs: the secondary colour
-          * is never interpolated, the vertex colour only when colour
-          * material reads it */
-         rs->fs_inputs &= ~(1u << R_FS_COLOR1);
-         if (!ctx->Light.ColorMaterialEnabled)
-            rs->fs_inputs &= ~(1u << R_FS_COLOR0);
-         rs->fs_inputs |= 1u << R_FS_NORMAL | 1u << R_FS_EYEPOS;
-         rs->num_attribs = R_ATTR_EYEPOS + 1;
-      }
-      /* GL's counter-clockwise is a positive snapped area in the y-down
-       * window buffer (the state tracker's front_ccw for OSMesa) */
-      rs->ccw_is_front = ctx->Polygon.FrontFace == GL_CCW;
-      const GLenum cull = ctx->Polygon.CullFlag ? ctx->Polygon.CullFaceMode : GL_NONE;
-      rs->cull_front = cull == GL_FRONT || cull == GL_FRONT_AND_BACK;
-      rs->cull_back = cull == GL_BACK || cull == GL_FRONT_AND_BACK;
-      /* flat_mask is set per batch by t_render_batch */
-
-      /* [S: lp_state_rasterizer.c:llvmpipe_create_rasterizer_state] with
-       * unfilled polygons, smooth points or lines, line stipple or the
-       * polygon stipple (need_pipeline) the draw module does two-sided
-       * colours and polygon offset (clear_flags on llvmpipe's copy), else
-       * llvmpipe's setup does them; facing and culling are decided by both
-       * (draw's cull stage, then the setup's area sign).  The state
-       * tracker turns an all-ones line stipple pattern off
-       * (st_atom_rasterizer.c). */
-      const struct fgl_polygon_attrib *pg = &ctx->Polygon;
-      /* [S: st_atom_rasterizer.c] the fill modes, simplified when culling
-       * is on: a culled front face takes the back mode and a culled back
-       * face the front mode (both the back mode with GL_FRONT_AND_BACK) */
-      GLenum fill_front = pg->FrontMode, fill_back = pg->BackMode;
-      if (rs->cull_front)
-         fill_front = fill_back;
-      if (rs->cull_back)
-         fill_back = fill_front;
-      const bool unfilled = fill_front != GL_FILL || fill_back != GL_FILL;
-      const bool line_stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
-      const bool need_pipeline = unfilled || pg->StippleFlag || ctx->Point.SmoothFlag ||
-                                 ctx->Line.SmoothFlag || line_stipple;
-      const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
-      /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
-       * depth buffer; units scaled in double, then stored as float */
-      const double mrd = fb && fb->DepthBits == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
-      const float units = (float)((double)pg->OffsetUnits * mrd * 2.0);
-      const bool lp_offset = any_offset && !need_pipeline;
-      rs->offset_units = lp_offset ? units : 0.0f;
-      rs->offset_scale = lp_offset ? pg->OffsetFactor : 0.0f;
-      rs->twoside = twoside && !need_pipeline;
-
-      /* the rows themselves: fgl_update_stipple, at draw time */
-      rs->stipple = pg->StippleFlag;
-
-      struct fgl_draw_pipeline *dp = &ctx->_DrawPipeline;
-      /* draw_pipe_validate.c:draw_need_pipeline for triangles: stipple,
-       * unfilled, or an offset enable or two-sided lighting left to draw */
-      dp->always = unfilled || pg->StippleFlag || (need_pipeline && (any_offset || twoside));
-      dp->twoside = twoside && need_pipeline;
-      /* draw_pipe_offset.c:offset_first_tri: the enable of the fill mode
-       * of the first triangle's face (t_clip.c) */
-      dp->offset = need_pipeline && any_offset;
-      dp->offset_fill = pg->OffsetFill;
-      dp->offset_line = pg->OffsetLine;
-      dp->offset_point = pg->OffsetPoint;
-      dp->offset_units = units;
-      dp->offset_scale = pg->OffsetFactor;
-      /* draw_pipe_validate.c: precalc_flat (wide lines never: llvmpipe's
-       * threshold is 10000) */
-      dp->flatshade = unfilled || line_stipple || ctx->Line.SmoothFlag;
-      dp->unfilled = unfilled;
-      dp->fill_front = fill_front;
-      dp->fill_back = fill_back;
-      dp->front_ccw = rs->ccw_is_front;
-      dp->cull_front = rs->cull_front;
-      dp->cull_back = rs->cull_back;
-      /* draw_pipe_validate.c: the cull stage runs when a stage needs the
-       * determinant or culling is on */
-      dp->cull = dp->cull_front || dp->cull_back || unfilled ||
-                 (need_pipeline && (any_offset || twoside));
-      /* the line stipple stage: triangles and points that reach it restart
-       * the counter (draw_pipe_stipple.c) */
-      dp->line_stipple = line_stipple;
-
-      if (ctx->RenderMode != GL_RENDER) {
-         /* GL_SELECT and GL_FEEDBACK draw with the state tracker's own
-          * draw context (st_draw_feedback.c, st_draw.c:st_get_draw_context),
-          * given the full rasterizer state: it has no vbuf backend, so
-          * every primitive takes the pipeline (draw_pt.c: PT_PIPELINE when
-          * !draw->render); draw_pipe_validate.c:validate_pipeline then
-          * inserts twoside and offset whenever enabled, flatshade only for
-          * unfilled polygons (line stipple, aaline and wide lines are
-          * disabled or not installed there), the cull stage for unfilled,
-          * offset, two-sided or culling.  Its mrd is never set
-          * (draw_set_zs_format is llvmpipe's), so the offset units are 0:
-          * units * 0.0 * 2 in double (draw_pipe_offset.c:offset_first_tri) */
-         dp->always = true;
-         dp->twoside = twoside;
-         dp->offset = any_offset;
-         dp->offset_units = (float)((double)pg->OffsetUnits * 0.0 * 2.0);
-         dp->flatshade = unfilled;
-         dp->cull = dp->cull_front || dp->cull_back || unfilled || any_offset || twoside;
-         dp->line_stipple = false;
-      }
-      r_choose_kernels(rs);
+      failed = update_raster(ctx, dirty);
+      if (failed)
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
    }
 
-   if (dirty & (FGL_NEW_POINT | FGL_NEW_LINE)) {
-      /* st_atom_rasterizer.c: the size clamped to [Point.MinSize,
-       * Point.MaxSize] = [0, 255], the width to [MinLineWidth(AA),
-       * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
-       * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
-      struct r_state *rs = &ctx->_Raster;
-      const float size = ctx->Point.Size, width = ctx->Line.Width;
-      rs->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
-      rs->line_width = width > FGL_MIN_LINE_WIDTH
-                     ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
-                     : FGL_MIN_LINE_WIDTH;
-   }
-
-   ctx->NewState = 0;
+   /* a group whose object could not be made is validated again */
+   ctx->NewState = failed;
 }
 
 /* [S: st_atom_stipple.c:st_update_polygon_stipple] At each draw, when the
@@ -741,5 +920,7 @@ void fgl_update_stipple(struct fgl_context *ctx)
    memcpy(ctx->_StipplePattern, ctx->PolygonStipple, sizeof(ctx->_StipplePattern));
    const unsigned h = ctx->DrawBuffer ? (unsigned)ctx->DrawBuffer->Height : 0u;
    for (unsigned i = 0; i < 32; i++)
-      ctx->_Raster.stipple_rows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
+      ctx->_StippleRows[i] = ctx->PolygonStipple[(h - 1 - i) & 0x1f];
+   ctx->NewState |= FGL_NEW_POLYGON;
+   fgl_update_state(ctx);
 }

@@ -60,20 +60,26 @@ static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebu
  * "Vertex transformation"). */
 static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil)
 {
+   /* the clear's own depth-stencil-alpha and blend objects, for this
+    * draw only */
    struct r_state rs = ctx->_Raster;
-   rs.alpha_test = false;
-   rs.blend = false;
-   rs.logic_op = false;
-   rs.color_mask = color ? ctx->Color.ColorMask & 0xfu : 0u;
-   rs.depth_test = depth;
-   rs.depth_func = R_ALWAYS;
-   rs.depth_write = true;
-   rs.stencil_test = stencil;
-   rs.stencil_func = R_ALWAYS;
-   rs.stencil_ref = (uint8_t)ctx->Stencil.Clear;   /* pipe_stencil_ref is a ubyte */
-   rs.stencil_valuemask = 0xff;
-   rs.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
-   rs.stencil_fail = rs.stencil_zfail = rs.stencil_zpass = R_STENCIL_REPLACE;
+   struct r_dsa_state dsa = *rs.dsa;
+   struct r_blend_state blend = *rs.blend;
+   dsa.alpha_test = false;
+   blend.enable = false;
+   blend.logic_op = false;
+   blend.color_mask = color ? ctx->Color.ColorMask & 0xfu : 0u;
+   dsa.depth_test = depth;
+   dsa.depth_func = R_ALWAYS;
+   dsa.depth_write = true;
+   dsa.stencil_test = stencil;
+   dsa.stencil_func = R_ALWAYS;
+   dsa.stencil_ref = (uint8_t)ctx->Stencil.Clear;   /* pipe_stencil_ref is a ubyte */
+   dsa.stencil_valuemask = 0xff;
+   dsa.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
+   dsa.stencil_fail = dsa.stencil_zfail = dsa.stencil_zpass = R_STENCIL_REPLACE;
+   rs.dsa = &dsa;
+   rs.blend = &blend;
    rs.full_ops = true;
    /* the quad spans Mesa's scissored bounds (_Xmin.._Ymax, int arithmetic);
     * the clear's rasterizer state has no scissor */

@@ -170,7 +170,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
                              unsigned varying, int fb_w, int fb_h, int x, int y,
                              float z, int w, int h, const uint8_t *texels, const float color[4])
 {
-   if (!rs->color && !rs->zs)
+   if (!rs->fb->color && !rs->fb->zs)
       return;
    struct r_pixel_image img = {
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
@@ -205,15 +205,17 @@ void fgl_flush_bitmap_cache(struct fgl_context *ctx)
     * replaced since (a rebind to another size reallocates the buffers)
     * is gone, and so is the drawing */
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   if (!fb || fb->Color != c->Raster.color || fb->Width != c->Raster.width ||
-       fb->Height != c->Raster.height)
+   if (!fb || fb->Color != c->Raster.fb->color || fb->Width != c->Raster.fb->width ||
+       fb->Height != c->Raster.fb->height)
       return;
    /* [S: st_cb_bitmap.c:setup_render_state] the shader variant is the
     * last validated one, but its constants are uploaded now
     * (st_upload_constants): the fog parameters and colour are the
     * current ones */
    struct r_state rs = c->Raster;
-   fgl_fog_uniforms(ctx, &rs);
+   struct r_fs_state fs = *rs.fs;
+   fgl_fog_uniforms(ctx, &fs);
+   rs.fs = &fs;
    draw_bitmap_quad(ctx, &rs, c->TexVarying, c->FbWidth, c->FbHeight, c->XPos, c->YPos, c->ZPos,
                     BITMAP_CACHE_WIDTH, BITMAP_CACHE_HEIGHT, c->Buffer, c->Color);
 }
@@ -291,7 +293,9 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
          if (tex)
             fgl_flush_bitmap_cache(ctx);
          /* the cache is drawn with the state validated last: this call's */
+         r_state_release(&ctx->BitmapCache.Raster);
          ctx->BitmapCache.Raster = ctx->_Raster;
+         r_state_hold(&ctx->BitmapCache.Raster);
          ctx->BitmapCache.TexVarying = tex_varying(ctx);
          if (tex) {
             draw_bitmap_quad(ctx, &ctx->_Raster, tex_varying(ctx), fb->Width, fb->Height, x, y,
@@ -743,22 +747,31 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
  * with the exported value under the stencil write mask, depth ALWAYS with
  * the depth mask when depth is written too, else off; no colour, alpha
  * test or blending. */
+struct stencil_quad_objects {
+   struct r_dsa_state dsa;
+   struct r_blend_state blend;
+};
+
 static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs,
-                               bool write_depth)
+                               struct stencil_quad_objects *o, bool write_depth)
 {
-   rs->stencil_test = true;
-   rs->stencil_func = R_ALWAYS;
-   rs->stencil_valuemask = 0;
-   rs->stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
-   rs->stencil_fail = rs->stencil_zfail = R_STENCIL_KEEP;
-   rs->stencil_zpass = R_STENCIL_REPLACE;
-   rs->depth_test = write_depth;
-   rs->depth_func = R_ALWAYS;
-   rs->depth_write = ctx->Depth.Mask;
-   rs->alpha_test = false;
-   rs->blend = false;
-   rs->logic_op = false;
-   rs->color_mask = 0;
+   o->dsa = *rs->dsa;
+   o->blend = *rs->blend;
+   o->dsa.stencil_test = true;
+   o->dsa.stencil_func = R_ALWAYS;
+   o->dsa.stencil_valuemask = 0;
+   o->dsa.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
+   o->dsa.stencil_fail = o->dsa.stencil_zfail = R_STENCIL_KEEP;
+   o->dsa.stencil_zpass = R_STENCIL_REPLACE;
+   o->dsa.depth_test = write_depth;
+   o->dsa.depth_func = R_ALWAYS;
+   o->dsa.depth_write = ctx->Depth.Mask;
+   o->dsa.alpha_test = false;
+   o->blend.enable = false;
+   o->blend.logic_op = false;
+   o->blend.color_mask = 0;
+   rs->dsa = &o->dsa;
+   rs->blend = &o->blend;
    rs->full_ops = true;
 }
 
@@ -994,13 +1007,14 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
    quad_init(&q, fb, ctx->Current.RasterPos[2], ctx->Current.RasterColor);
    textured_quad(ctx, &q, x, y, width, height, false);
    struct r_state rs = ctx->_Raster;
+   struct stencil_quad_objects qo;
    if (format == GL_STENCIL_INDEX) {
       img.kind = R_PIX_STENCIL;
-      stencil_quad_state(ctx, &rs, false);
+      stencil_quad_state(ctx, &rs, &qo, false);
    } else if (format == GL_DEPTH_STENCIL) {
       img.kind = R_PIX_DEPTH;
       img.with_stencil = true;
-      stencil_quad_state(ctx, &rs, true);
+      stencil_quad_state(ctx, &rs, &qo, true);
    } else if (format == GL_DEPTH_COMPONENT) {
       img.kind = R_PIX_DEPTH;
    } else {
@@ -1273,6 +1287,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    quad_init(&q, fb, ctx->Current.RasterPos[2], ctx->Current.Attrib[FGL_ATTR_COLOR0]);
    textured_quad(ctx, &q, dstx, dsty, width, height, true);
    struct r_state rs = ctx->_Raster;
+   struct stencil_quad_objects qo;
    if (to_color) {
       /* the shader's colour goes straight to the fragment operations */
       img.kind = R_PIX_COLOR;
@@ -1287,7 +1302,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    } else if (stencil) {
       img.kind = depth ? R_PIX_DEPTH : R_PIX_STENCIL;
       img.with_stencil = depth;
-      stencil_quad_state(ctx, &rs, depth);
+      stencil_quad_state(ctx, &rs, &qo, depth);
    } else {
       img.kind = R_PIX_DEPTH;
       if (ctx->Color.DrawBuffer != GL_NONE)

@@ -19,7 +19,7 @@ static inline float fsat(float x)
 bool r_fragment_aa(const struct r_state *rs, const float in[][4], float color[4])
 {
    const float *aa = in[R_FS_AA];
-   switch (rs->aa) {
+   switch (rs->fs->aa) {
    case R_AA_POINT: {
       /* aa = (x, y, k, 1) across the quad: discard outside the unit disc;
        * the coverage (1 - d) / (1 - k) is selected where k >= d, i.e. in

@@ -66,10 +66,10 @@ static inline unsigned blend_factor(const struct r_state *rs, enum r_blend_facto
       const unsigned inv_da = 255u - dst[3];
       return src[3] < inv_da ? src[3] : inv_da;
    }
-   case R_BF_CONST_COLOR:     return rs->blend_color[c];
-   case R_BF_INV_CONST_COLOR: return 255u - rs->blend_color[c];
-   case R_BF_CONST_ALPHA:     return rs->blend_color[3];
-   case R_BF_INV_CONST_ALPHA: return 255u - rs->blend_color[3];
+   case R_BF_CONST_COLOR:     return rs->blend->blend_color[c];
+   case R_BF_INV_CONST_COLOR: return 255u - rs->blend->blend_color[c];
+   case R_BF_CONST_ALPHA:     return rs->blend->blend_color[3];
+   case R_BF_INV_CONST_ALPHA: return 255u - rs->blend->blend_color[3];
    default:                   return 0;
    }
 }
@@ -83,9 +83,9 @@ static inline unsigned blend_factor(const struct r_state *rs, enum r_blend_facto
 static inline uint8_t blend_channel(const struct r_state *rs, int c,
                              const uint8_t src[4], const uint8_t dst[4])
 {
-   const unsigned s = mul_u8(src[c], blend_factor(rs, rs->blend_src, c, src, dst));
-   const unsigned d = mul_u8(dst[c], blend_factor(rs, rs->blend_dst, c, src, dst));
-   switch (rs->blend_eq) {
+   const unsigned s = mul_u8(src[c], blend_factor(rs, rs->blend->blend_src, c, src, dst));
+   const unsigned d = mul_u8(dst[c], blend_factor(rs, rs->blend->blend_dst, c, src, dst));
+   switch (rs->blend->blend_eq) {
    case R_BLEND_SUBTRACT:         return (uint8_t)(s > d ? s - d : 0);
    case R_BLEND_REVERSE_SUBTRACT: return (uint8_t)(d > s ? d - s : 0);
    case R_BLEND_MIN:              return (uint8_t)(s < d ? s : d);
@@ -127,7 +127,7 @@ static inline uint8_t stencil_op(const struct r_state *rs, enum r_stencil_op op,
 {
    switch (op) {
    case R_STENCIL_ZERO:      return 0;
-   case R_STENCIL_REPLACE:   return rs->stencil_ref;
+   case R_STENCIL_REPLACE:   return rs->dsa->stencil_ref;
    case R_STENCIL_INCR:      return s == 0xff ? 0xff : (uint8_t)(s + 1);
    case R_STENCIL_DECR:      return s == 0 ? 0 : (uint8_t)(s - 1);
    case R_STENCIL_INCR_WRAP: return (uint8_t)(s + 1);

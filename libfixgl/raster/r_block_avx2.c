@@ -173,17 +173,17 @@ static const r_tri_kernel(*const tables[])[7][2] = {
 
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
 {
-   if (rs->tex_units)
+   if (rs->fs->tex_units)
       return r_block_choose_tri_tex(rs, flat_color);
    /* the fragment program: the colour input, with the secondary colour
     * under the colour sum and the fog coordinate under fog, and nothing
     * else: no texture, GL_PHONG_WIN, pixel rectangle, coverage lowering
     * or stipple */
-   const bool extra = rs->color_sum || rs->fog_mode != R_FOG_NONE;
-   const unsigned inputs = 1u << R_FS_COLOR0 | (rs->color_sum ? 1u << R_FS_COLOR1 : 0u) |
-                           (rs->fog_mode != R_FOG_NONE ? 1u << R_FS_FOG : 0u);
-   if (rs->fs_inputs != inputs || rs->tex_units || rs->phong || rs->pix ||
-       rs->aa != R_AA_NONE || rs->stipple || !rs->color)
+   const bool extra = rs->fs->color_sum || rs->fs->fog_mode != R_FOG_NONE;
+   const unsigned inputs = 1u << R_FS_COLOR0 | (rs->fs->color_sum ? 1u << R_FS_COLOR1 : 0u) |
+                           (rs->fs->fog_mode != R_FOG_NONE ? 1u << R_FS_FOG : 0u);
+   if (rs->fs->fs_inputs != inputs || rs->fs->tex_units || rs->fs->phong || rs->pix ||
+       rs->fs->aa != R_AA_NONE || rs->rast->stipple || !rs->fb->color)
       return NULL;
    /* the fragment operations (r_fragment_ops): the alpha test on the
     * colour's precision, no stencil test; then the depth test and store,
@@ -192,35 +192,35 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
     * case, its own kernels) */
    enum blend bl = BL_NONE;
    if (rs->full_ops) {
-      if ((rs->stencil_test && rs->zs_format != R_ZS_Z24S8) ||
-          (rs->alpha_test && rs->alpha_test_float))
+      if ((rs->dsa->stencil_test && rs->fb->zs_format != R_ZS_Z24S8) ||
+          (rs->dsa->alpha_test && rs->dsa->alpha_test_float))
          return NULL;
-      if (rs->logic_op)
+      if (rs->blend->logic_op)
          bl = BL_LOGIC;
-      else if (!rs->blend)
-         bl = rs->color_mask == 0xfu ? BL_NONE : BL_LOGIC;   /* COPY (under the colour mask) */
-      else if (!rs->alpha_test && rs->color_mask == 0xfu && rs->blend_eq == R_BLEND_ADD &&
-               rs->blend_src == R_BF_SRC_ALPHA && rs->blend_dst == R_BF_INV_SRC_ALPHA)
+      else if (!rs->blend->enable)
+         bl = rs->blend->color_mask == 0xfu ? BL_NONE : BL_LOGIC;   /* COPY (under the colour mask) */
+      else if (!rs->dsa->alpha_test && rs->blend->color_mask == 0xfu && rs->blend->blend_eq == R_BLEND_ADD &&
+               rs->blend->blend_src == R_BF_SRC_ALPHA && rs->blend->blend_dst == R_BF_INV_SRC_ALPHA)
          bl = BL_ALPHA;
       else
          bl = BL_BLEND;
-      if (rs->alpha_test)
+      if (rs->dsa->alpha_test)
          bl = bl == BL_BLEND ? BL_BLEND_AT : BL_LOGIC_AT;   /* (NONE: as LOGIC's COPY) */
    }
    enum zfmt zf = ZF_NONE;
-   if (rs->full_ops && rs->stencil_test) {
-      zf = rs->depth_test ? ZF_24S : ZF_S;
-   } else if (rs->depth_test) {
-      switch (rs->zs_format) {
+   if (rs->full_ops && rs->dsa->stencil_test) {
+      zf = rs->dsa->depth_test ? ZF_24S : ZF_S;
+   } else if (rs->dsa->depth_test) {
+      switch (rs->fb->zs_format) {
       case R_ZS_Z16:   zf = ZF_16; break;
       case R_ZS_Z24X8:
       case R_ZS_Z24S8: zf = ZF_24; break;
       default:         return NULL;
       }
-      if (zf == ZF_24 && rs->depth_func == R_LESS)
+      if (zf == ZF_24 && rs->dsa->depth_func == R_LESS)
          zf = ZF_24_LESS;
-      else if (zf == ZF_24 && rs->depth_func == R_LEQUAL)
+      else if (zf == ZF_24 && rs->dsa->depth_func == R_LEQUAL)
          zf = ZF_24_LEQUAL;
    }
-   return tables[bl][extra ? EXTRA : flat_color ? FLAT : SMOOTH][zf][rs->depth_write];
+   return tables[bl][extra ? EXTRA : flat_color ? FLAT : SMOOTH][zf][rs->dsa->depth_write];
 }

@@ -195,16 +195,16 @@ struct stencil_ops {
 
 static inline void stencil_ops_init(struct stencil_ops *st, const struct r_state *rs)
 {
-   st->fn = depth_fn(rs->stencil_func);
-   st->ref_vm = _mm256_set1_epi32(rs->stencil_ref & rs->stencil_valuemask);
-   st->vm = _mm256_set1_epi32(rs->stencil_valuemask);
-   st->wm = _mm256_set1_epi32(rs->stencil_writemask);
-   const enum r_stencil_op ops[3] = { rs->stencil_fail, rs->stencil_zfail, rs->stencil_zpass };
+   st->fn = depth_fn(rs->dsa->stencil_func);
+   st->ref_vm = _mm256_set1_epi32(rs->dsa->stencil_ref & rs->dsa->stencil_valuemask);
+   st->vm = _mm256_set1_epi32(rs->dsa->stencil_valuemask);
+   st->wm = _mm256_set1_epi32(rs->dsa->stencil_writemask);
+   const enum r_stencil_op ops[3] = { rs->dsa->stencil_fail, rs->dsa->stencil_zfail, rs->dsa->stencil_zpass };
    for (int k = 0; k < 3; k++) {
       int keep = 0xff, flip = 0, inc = 0, dec = 0, add = 0;
       switch (ops[k]) {
       case R_STENCIL_ZERO:      keep = 0; break;
-      case R_STENCIL_REPLACE:   keep = 0; add = rs->stencil_ref; break;
+      case R_STENCIL_REPLACE:   keep = 0; add = rs->dsa->stencil_ref; break;
       case R_STENCIL_INCR:      inc = 1; break;
       case R_STENCIL_DECR:      dec = 1; break;
       case R_STENCIL_INCR_WRAP: add = 1; break;
@@ -240,59 +240,59 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
 {
    for (unsigned m = m8; m; m &= m - 1) {
       const int i = __builtin_ctz(m);
-      const size_t idx = (size_t)(y + (i >> 2)) * (size_t)rs->width + (size_t)(x + (i & 3));
+      const size_t idx = (size_t)(y + (i >> 2)) * (size_t)rs->fb->width + (size_t)(x + (i & 3));
       if (zf == ZF_24S || zf == ZF_S) {
          /* r_frag.c stencil_depth_test on the Z24S8 word */
-         uint32_t *zb = (uint32_t *)rs->zs + idx;
-         const uint8_t s = (uint8_t)(*zb >> 24), vm = rs->stencil_valuemask;
+         uint32_t *zb = (uint32_t *)rs->fb->zs + idx;
+         const uint8_t s = (uint8_t)(*zb >> 24), vm = rs->dsa->stencil_valuemask;
          enum r_stencil_op op;
-         bool pass = compare(rs->stencil_func, rs->stencil_ref & vm, s & vm);
+         bool pass = compare(rs->dsa->stencil_func, rs->dsa->stencil_ref & vm, s & vm);
          if (!pass) {
-            op = rs->stencil_fail;
+            op = rs->dsa->stencil_fail;
          } else if (zf == ZF_24S) {
-            pass = compare(rs->depth_func, zv[i], *zb & 0xffffffu);
-            op = pass ? rs->stencil_zpass : rs->stencil_zfail;
+            pass = compare(rs->dsa->depth_func, zv[i], *zb & 0xffffffu);
+            op = pass ? rs->dsa->stencil_zpass : rs->dsa->stencil_zfail;
             if (pass && zwrite)
                *zb = (*zb & 0xff000000u) | zv[i];
          } else {
-            op = rs->stencil_zpass;
+            op = rs->dsa->stencil_zpass;
          }
-         const uint8_t wm = rs->stencil_writemask;
+         const uint8_t wm = rs->dsa->stencil_writemask;
          const uint8_t ns = (uint8_t)((stencil_op(rs, op, s) & wm) | (s & (uint8_t)~wm));
          *zb = (*zb & 0xffffffu) | (uint32_t)ns << 24;
          if (!pass)
             continue;
       } else if (zf_z24(zf)) {
-         uint32_t *zb = (uint32_t *)rs->zs + idx;
-         if (!compare(rs->depth_func, zv[i], *zb & 0xffffffu))
+         uint32_t *zb = (uint32_t *)rs->fb->zs + idx;
+         if (!compare(rs->dsa->depth_func, zv[i], *zb & 0xffffffu))
             continue;
          if (zwrite)
             *zb = (*zb & 0xff000000u) | zv[i];
       } else if (zf == ZF_16) {
-         uint16_t *zb = (uint16_t *)rs->zs + idx;
-         if (!compare(rs->depth_func, zv[i], *zb))
+         uint16_t *zb = (uint16_t *)rs->fb->zs + idx;
+         if (!compare(rs->dsa->depth_func, zv[i], *zb))
             continue;
          if (zwrite)
             *zb = (uint16_t)zv[i];
       }
-      uint8_t *dst = rs->color + 4 * idx;
+      uint8_t *dst = rs->fb->color + 4 * idx;
       uint8_t s[4];
       memcpy(s, &src[i], 4);
       if (bl == BL_NONE) {
          memcpy(dst, s, 4);
          continue;
       }
-      const uint8_t d[4] = { dst[0], dst[1], dst[2], rs->dst_alpha_one ? 255 : dst[3] };
+      const uint8_t d[4] = { dst[0], dst[1], dst[2], rs->blend->dst_alpha_one ? 255 : dst[3] };
       uint8_t out[4];
       for (int c = 0; c < 4; c++) {
          if (bl == BL_ALPHA || bl == BL_BLEND) {
             out[c] = blend_channel(rs, c, s, d);
          } else {
-            out[c] = rs->logic_op ? logic_op(rs->logic_op_mode, s[c], d[c]) : s[c];
+            out[c] = rs->blend->logic_op ? logic_op(rs->blend->logic_op_mode, s[c], d[c]) : s[c];
          }
       }
       for (int c = 0; c < 4; c++)
-         if (rs->color_mask & (1u << c))
+         if (rs->blend->color_mask & (1u << c))
             dst[c] = out[c];
    }
 }
@@ -327,7 +327,7 @@ static inline __m256i all_if(bool b)
 
 static inline void gen_ops_init(struct gen_ops *g, const struct r_state *rs)
 {
-   const enum r_blend_factor f[2] = { rs->blend_src, rs->blend_dst };
+   const enum r_blend_factor f[2] = { rs->blend->blend_src, rs->blend->blend_dst };
    for (int k = 0; k < 2; k++) {
       const enum r_blend_factor x = f[k];
       g->fsel[k][0] = all_if(x == R_BF_SRC_COLOR || x == R_BF_INV_SRC_COLOR);
@@ -342,26 +342,26 @@ static inline void gen_ops_init(struct gen_ops *g, const struct r_state *rs)
                        x == R_BF_INV_CONST_COLOR || x == R_BF_INV_CONST_ALPHA;
       g->finv[k] = _mm256_set1_epi16(inv ? 0xff : 0);
    }
-   const uint8_t *bc = rs->blend_color;
+   const uint8_t *bc = rs->blend->blend_color;
    g->konst = _mm256_setr_epi16(bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3],
                                 bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3]);
    g->konst_a = _mm256_set1_epi16(bc[3]);
    for (int e = 0; e < 5; e++)
-      g->eq[e] = all_if((int)rs->blend_eq == e);
+      g->eq[e] = all_if((int)rs->blend->blend_eq == e);
    /* R_BLEND_ADD .. R_BLEND_MAX in enum order; an unknown one adds, as
     * blend_channel's default */
-   if ((unsigned)rs->blend_eq > R_BLEND_MAX)
+   if ((unsigned)rs->blend->blend_eq > R_BLEND_MAX)
       g->eq[R_BLEND_ADD] = all_if(true);
-   const unsigned mode = rs->logic_op ? rs->logic_op_mode : 0x3u;   /* COPY */
+   const unsigned mode = rs->blend->logic_op ? rs->blend->logic_op_mode : 0x3u;   /* COPY */
    for (int t = 0; t < 4; t++)
       g->lop[t] = all_if(mode & (1u << t));
    uint32_t cm = 0;
    for (int c = 0; c < 4; c++)
-      if (rs->color_mask & (1u << c))
+      if (rs->blend->color_mask & (1u << c))
          cm |= 0xffu << (8 * c);
    g->cmask = _mm256_set1_epi32((int)cm);
-   g->afn = depth_fn(rs->alpha_func);
-   g->aref = _mm256_set1_epi32(rs->alpha_ref);
+   g->afn = depth_fn(rs->dsa->alpha_func);
+   g->aref = _mm256_set1_epi32(rs->dsa->alpha_ref);
 }
 
 /* blend_channel on the 4 pixels of one unpacked half (16-bit lanes) */
@@ -446,9 +446,9 @@ static ALWAYS_INLINE __m256 input8(const struct r_tri_setup *ts, int a, int c, _
  * m_gallivm_exp2 lane-wise), then max(f, 0) (NaN -> 0) and min(., 1) */
 static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)
 {
-   const float *p = rs->fog_params;
+   const float *p = rs->fs->fog_params;
    __m256 f;
-   switch (rs->fog_mode) {
+   switch (rs->fs->fog_mode) {
    case R_FOG_LINEAR:
       f = _mm256_add_ps(_mm256_mul_ps(fc, _mm256_set1_ps(p[0])), _mm256_set1_ps(p[1]));
       break;
@@ -471,11 +471,11 @@ static ALWAYS_INLINE __m256 fog_factor8(const struct r_state *rs, __m256 fc)
 static ALWAYS_INLINE void fog8(const struct r_state *rs, const struct r_tri_setup *ts, __m256 fx,
                                __m256 fy, __m256 rw, __m256 out[4])
 {
-   if (rs->fog_mode != R_FOG_NONE) {
+   if (rs->fs->fog_mode != R_FOG_NONE) {
       const __m256 f = fog_factor8(rs, input8(ts, R_FS_FOG, 0, fx, fy, rw));
       const __m256 g = _mm256_add_ps(_mm256_set1_ps(1.0f), vneg(f));
       for (int c = 0; c < 3; c++)
-         out[c] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(rs->fog_color[c]), g),
+         out[c] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(rs->fs->fog_color[c]), g),
                                 _mm256_mul_ps(out[c], f));
    }
 }
@@ -484,7 +484,7 @@ static ALWAYS_INLINE void fog8(const struct r_state *rs, const struct r_tri_setu
 static ALWAYS_INLINE void color_sum_fog8(const struct r_state *rs, const struct r_tri_setup *ts,
                                          __m256 fx, __m256 fy, __m256 rw, __m256 out[4])
 {
-   if (rs->color_sum) {
+   if (rs->fs->color_sum) {
       for (int c = 0; c < 3; c++)
          out[c] = _mm256_add_ps(out[c], input8(ts, R_FS_COLOR1, c, fx, fy, rw));
    }
@@ -500,15 +500,15 @@ static inline bool block_simple_ops(const struct r_state *rs, enum blend *bl, en
 {
    *bl = BL_NONE;
    if (rs->full_ops) {
-      if (rs->alpha_test || rs->stencil_test || rs->logic_op || rs->color_mask != 0xfu ||
-          !rs->blend || rs->blend_eq != R_BLEND_ADD || rs->blend_src != R_BF_SRC_ALPHA ||
-          rs->blend_dst != R_BF_INV_SRC_ALPHA)
+      if (rs->dsa->alpha_test || rs->dsa->stencil_test || rs->blend->logic_op || rs->blend->color_mask != 0xfu ||
+          !rs->blend->enable || rs->blend->blend_eq != R_BLEND_ADD || rs->blend->blend_src != R_BF_SRC_ALPHA ||
+          rs->blend->blend_dst != R_BF_INV_SRC_ALPHA)
          return false;
       *bl = BL_ALPHA;
    }
    *zf = ZF_NONE;
-   if (rs->depth_test) {
-      switch (rs->zs_format) {
+   if (rs->dsa->depth_test) {
+      switch (rs->fb->zs_format) {
       case R_ZS_Z16:   *zf = ZF_16; break;
       case R_ZS_Z24X8:
       case R_ZS_Z24S8: *zf = ZF_24; break;

@@ -63,10 +63,10 @@ static __attribute__((noinline)) __m256i phong_half(const struct r_state *rs,
       col[0] = col[1] = col[2] = col[3] = _mm256_setzero_ps();
    }
    __m256 out[4], sec[4];
-   m_shade8_eval(&rs->shade_env, n, p, ts->phong_back, col, out, sec);
+   m_shade8_eval(rs->shade_env, n, p, ts->phong_back, col, out, sec);
    /* the fragment program: rgb += secondary rgb under the colour sum, then
     * fog on rgb, fogcolor * (1 + -f) + rgb * f */
-   if (rs->color_sum) {
+   if (rs->fs->color_sum) {
       for (int c = 0; c < 3; c++)
          out[c] = _mm256_add_ps(out[c], sec[c]);
    }
@@ -122,16 +122,16 @@ r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color)
    /* the fragment program: the lighting inputs (and the vertex colour, and
     * the fog coordinate), no texture, pixel rectangle, coverage lowering
     * or stipple */
-   if (!rs->phong || (rs->fs_inputs & ~(lit | 1u << R_FS_COLOR0 | 1u << R_FS_FOG)) ||
-       (rs->fs_inputs & lit) != lit || rs->tex_units || rs->pix || rs->aa != R_AA_NONE ||
-       rs->stipple || !rs->color)
+   if (!rs->fs->phong || (rs->fs->fs_inputs & ~(lit | 1u << R_FS_COLOR0 | 1u << R_FS_FOG)) ||
+       (rs->fs->fs_inputs & lit) != lit || rs->fs->tex_units || rs->pix || rs->fs->aa != R_AA_NONE ||
+       rs->rast->stipple || !rs->fb->color)
       return NULL;
-   if (rs->fog_mode != R_FOG_NONE && !(rs->fs_inputs & (1u << R_FS_FOG)))
+   if (rs->fs->fog_mode != R_FOG_NONE && !(rs->fs->fs_inputs & (1u << R_FS_FOG)))
       return NULL;
    /* the fragment operations */
    enum blend bl;
    enum zfmt zf;
    if (!block_simple_ops(rs, &bl, &zf))
       return NULL;
-   return (bl == BL_ALPHA ? alpha_table : opaque_table)[zf][rs->depth_write];
+   return (bl == BL_ALPHA ? alpha_table : opaque_table)[zf][rs->dsa->depth_write];
 }

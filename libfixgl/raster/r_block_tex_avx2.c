@@ -75,17 +75,17 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
                                               int variant, struct block_stage *st)
 {
    (void)variant;
-   st->tex = &rs->tex[0].tex;
+   st->tex = &rs->tex[0]->tex;
    st->flat_color = ts->flat_attr[R_FS_COLOR0];
    st->flat_tex = ts->flat_attr[R_FS_TEX0];
    st->next_x = st->next_y = INT32_MIN;   /* (y is even) */
    for (int l = st->tex->first_level; l <= st->tex->last_level; l++)
       tex8_level_init(st->tex, l, &st->levels[l]);
-   const struct r_tex_combine *k = &rs->tex[0].comb;
+   const struct r_tex_combine *k = &rs->tex[0]->comb;
    for (int c = 0; c < 4; c++) {
       st->color[c] = _mm256_set1_ps(ts->flat[R_FS_COLOR0][c]);
       st->tc[c] = _mm256_set1_ps(ts->flat[R_FS_TEX0][c]);
-      st->konst[c] = _mm256_set1_ps(rs->tex[0].env_color[c]);
+      st->konst[c] = _mm256_set1_ps(rs->tex[0]->env_color[c]);
       st->nargs[c] = k->simple_nargs[c];
       st->arg[c][0] = k->simple_arg[c][0];
       st->arg[c][1] = k->simple_arg[c][1];
@@ -323,12 +323,12 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
     * alone, its lookup in r_tex_avx2.h, a simple environment; no colour
     * sum, fog, GL_PHONG_WIN, pixel rectangle, coverage lowering or
     * stipple */
-   if (rs->fs_inputs != (1u << R_FS_COLOR0 | 1u << R_FS_TEX0) || rs->tex_units != 1u ||
-       rs->tex_nr != 1 || rs->color_sum || rs->fog_mode != R_FOG_NONE || rs->phong || rs->pix ||
-       rs->aa != R_AA_NONE || rs->stipple || !rs->color)
+   if (rs->fs->fs_inputs != (1u << R_FS_COLOR0 | 1u << R_FS_TEX0) || rs->fs->tex_units != 1u ||
+       rs->fs->tex_nr != 1 || rs->fs->color_sum || rs->fs->fog_mode != R_FOG_NONE || rs->fs->phong || rs->pix ||
+       rs->fs->aa != R_AA_NONE || rs->rast->stipple || !rs->fb->color)
       return NULL;
-   const struct r_texture *t = &rs->tex[0].tex;
-   const struct r_tex_combine *k = &rs->tex[0].comb;
+   const struct r_texture *t = &rs->tex[0]->tex;
+   const struct r_tex_combine *k = &rs->tex[0]->comb;
    if (!r_tex8_fast(t) || !(k->simple || is_decal_rgba(k)))
       return NULL;
    enum blend bl;
@@ -347,5 +347,5 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
       env = ENV_DECAL;
    else if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
       env = forms[fr][fa];
-   return tex_table[tex8_is_trilinear_repeat(t)][bl][env][zf][rs->depth_write];
+   return tex_table[tex8_is_trilinear_repeat(t)][bl][env][zf][rs->dsa->depth_write];
 }

@@ -59,7 +59,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                                      const struct r_tri_cover *cv, const int variant,
                                      const enum zfmt zf, const bool zwrite, const enum blend bl)
 {
-   const int width = rs->width, height = rs->height;
+   const int width = rs->fb->width, height = rs->fb->height;
    const size_t stride = (size_t)width;
    const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
    const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
@@ -76,8 +76,8 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
 
    struct block_stage stage;
    block_stage_prepare(rs, ts, variant, &stage);
-   const struct depth_fn fn = depth_fn(rs->depth_func);
-   const __m256i dst_or = _mm256_set1_epi32(rs->dst_alpha_one ? (int)0xff000000u : 0);
+   const struct depth_fn fn = depth_fn(rs->dsa->depth_func);
+   const __m256i dst_or = _mm256_set1_epi32(rs->blend->dst_alpha_one ? (int)0xff000000u : 0);
    /* the general colour operations and the alpha test */
    const bool alpha_test = bl == BL_BLEND_AT || bl == BL_LOGIC_AT;
    const enum blend cop = bl == BL_BLEND_AT ? BL_BLEND : bl == BL_LOGIC_AT ? BL_LOGIC : bl;
@@ -105,10 +105,10 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
       const size_t row_ = (size_t)py_ * stride;                                            \
       for (int32_t px_ = cv->x0 & ~15; px_ <= cv->x1; px_ += 16) {                         \
          if (bl != BL_NONE || BLOCK_STAGE_PREFETCH_COLOR)                                  \
-            _mm_prefetch((const char *)((const uint32_t *)rs->color + row_ + (size_t)px_), \
+            _mm_prefetch((const char *)((const uint32_t *)rs->fb->color + row_ + (size_t)px_), \
                          _MM_HINT_T0);                                                     \
          if (zf != ZF_NONE)                                                                \
-            _mm_prefetch((const char *)rs->zs + (row_ + (size_t)px_) * zbytes, _MM_HINT_T0); \
+            _mm_prefetch((const char *)rs->fb->zs + (row_ + (size_t)px_) * zbytes, _MM_HINT_T0); \
       }                                                                                    \
    }
    if (BLOCK_STAGE_PREFETCH)
@@ -220,7 +220,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                 * depth test of its passing lanes, the op of each outcome
                 * under the write mask, the Z24S8 words of the live lanes
                 * rewritten */
-               uint32_t *zp = (uint32_t *)rs->zs + idx;
+               uint32_t *zp = (uint32_t *)rs->fb->zs + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                const __m256i s8 = _mm256_srli_epi32(zb, 24);
                const __m256i spass = depth_pass(&sops.fn, sops.ref_vm, _mm256_and_si256(s8, sops.vm));
@@ -239,7 +239,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nw, pass));
                pass = _mm256_and_si256(pass, zpass);
             } else if (zf_z24(zf)) {
-               uint32_t *zp = (uint32_t *)rs->zs + idx;
+               uint32_t *zp = (uint32_t *)rs->fb->zs + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                pass = _mm256_and_si256(
                   pass, depth_test8(zf, &fn, zv, _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff))));
@@ -249,7 +249,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                   store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nz, pass));
                }
             } else if (zf == ZF_16) {
-               uint16_t *zp = (uint16_t *)rs->zs + idx;
+               uint16_t *zp = (uint16_t *)rs->fb->zs + idx;
                const __m256i zb = load_rows16(zp, stride, rm);
                pass = _mm256_and_si256(pass, depth_pass(&fn, zv, zb));
                if (zwrite)
@@ -262,7 +262,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
             }
 
-            uint32_t *cp = (uint32_t *)rs->color + idx;
+            uint32_t *cp = (uint32_t *)rs->fb->color + idx;
             const __m256i dst = load_rows32(cp, stride, rm);
             __m256i out = src;
             if (cop == BL_ALPHA)

@@ -28,20 +28,20 @@ static void fill32(void *p, uint32_t v, size_t n)
 
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4])
 {
-   const size_t n = (size_t)rs->width * (size_t)rs->height;
+   const size_t n = (size_t)rs->fb->width * (size_t)rs->fb->height;
    uint32_t v;
    memcpy(&v, rgba, 4);
-   fill32(rs->color, v, n);
+   fill32(rs->fb->color, v, n);
 }
 
 void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
                            bool stencil, uint8_t svalue)
 {
-   const size_t n = (size_t)rs->width * (size_t)rs->height;
-   switch (rs->zs_format) {
+   const size_t n = (size_t)rs->fb->width * (size_t)rs->fb->height;
+   switch (rs->fb->zs_format) {
    case R_ZS_Z16:
       if (depth) {
-         uint16_t *z = rs->zs;
+         uint16_t *z = rs->fb->zs;
          /* pairs of values as 32-bit words, then an odd last one */
          const uint32_t pair = (zvalue & 0xffffu) * 0x10001u;
          if (((uintptr_t)z & 3u) == 0) {
@@ -56,10 +56,10 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
       break;
    case R_ZS_Z24X8:
    case R_ZS_Z24S8: {
-      uint32_t *z = rs->zs;
+      uint32_t *z = rs->fb->zs;
       uint32_t keep = 0, set = 0;
       if (depth) set |= zvalue & 0xffffffu; else keep |= 0xffffffu;
-      if (rs->zs_format == R_ZS_Z24S8) {
+      if (rs->fb->zs_format == R_ZS_Z24S8) {
          if (stencil) set |= (uint32_t)svalue << 24; else keep |= 0xff000000u;
       }
       if (keep == 0) {
@@ -85,7 +85,7 @@ void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue
    }
    case R_ZS_S8:
       if (stencil)
-         memset(rs->zs, svalue, n);
+         memset(rs->fb->zs, svalue, n);
       break;
    case R_ZS_NONE:
    default:

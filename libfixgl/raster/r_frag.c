@@ -60,9 +60,9 @@ static bool compare_float(enum r_func func, float a, float b)
  * NaN (lp_bld_nir.c: GALLIVM_NAN_RETURN_OTHER): a NaN factor is 0. */
 static float fog_factor(const struct r_state *rs, float fc)
 {
-   const float *p = rs->fog_params;
+   const float *p = rs->fs->fog_params;
    float f;
-   switch (rs->fog_mode) {
+   switch (rs->fs->fog_mode) {
    case R_FOG_LINEAR:
       f = fc * p[0] + p[1];
       break;
@@ -108,11 +108,11 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
    if (tc->have & (1u << u))
       return tc->c[u];
    tc->have |= 1u << u;
-   if (!(rs->tex_units & (1u << u))) {
+   if (!(rs->fs->tex_units & (1u << u))) {
       tc->c[u][0] = tc->c[u][1] = tc->c[u][2] = tc->c[u][3] = 0.0f;   /* dummy_tex */
       return tc->c[u];
    }
-   const struct r_texture *t = &rs->tex[u].tex;
+   const struct r_texture *t = &rs->tex[u]->tex;
    const float *tcin = in[R_FS_TEX0 + u];
    /* vec2 coord * frcp(q): the reciprocal is a true divide in gallivm */
    const float rq = 1.0f / tcin[3];
@@ -157,7 +157,7 @@ static void comb_arg(const struct r_state *rs, const float in[][4], const struct
    case R_SRC_TEXTURE:        s = tex_color(rs, in, quad, tc, unit); break;
    case R_SRC_PREVIOUS:       s = prev; break;
    case R_SRC_PRIMARY_COLOR:  s = in[R_FS_COLOR0]; break;
-   case R_SRC_CONSTANT:       s = rs->tex[unit].env_color; break;
+   case R_SRC_CONSTANT:       s = rs->tex[unit]->env_color; break;
    case R_SRC_ZERO:
    case R_SRC_ONE:
       konst[0] = konst[1] = konst[2] = konst[3] = src == R_SRC_ONE ? 1.0f : 0.0f;
@@ -364,7 +364,7 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
                         const struct r_fs_quad *quad, struct tex_cache *tc, int unit,
                         const float prev[4], bool first, float res[4])
 {
-   const struct r_tex_combine *k = &rs->tex[unit].comb;
+   const struct r_tex_combine *k = &rs->tex[unit]->comb;
    unsigned rgb_shift = k->shift_rgb, alpha_shift = k->shift_a;
    if (k->mode_rgb == R_COMB_DOT3_RGB_EXT) {
       rgb_shift = 0;
@@ -497,14 +497,14 @@ static void simple_texenv(const struct r_state *rs, const float in[][4],
 {
    static const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
    static const float one[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
-   const struct r_tex_combine *k = &rs->tex[unit].comb;
+   const struct r_tex_combine *k = &rs->tex[unit]->comb;
    if (k->simple_fn_rgb != R_SIMPLE_FN_ARGS && k->simple_fn_a != R_SIMPLE_FN_ARGS) {
       const float *t = tex_color(rs, in, quad, tc, unit);
       simple_fn(k->simple_fn_rgb, t, prev, 0, 3, res);
       simple_fn(k->simple_fn_a, t, prev, 3, 4, res);
       return;
    }
-   const float *srcs[6] = { NULL, prev, in[R_FS_COLOR0], rs->tex[unit].env_color, zero, one };
+   const float *srcs[6] = { NULL, prev, in[R_FS_COLOR0], rs->tex[unit]->env_color, zero, one };
    for (int c = 0; c < 4; c++) {
       float v[2];
       for (int i = 0; i < k->simple_nargs[c]; i++) {
@@ -534,10 +534,10 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
    bool first = true;   /* PREVIOUS is still the primary colour */
    for (int c = 0; c < 4; c++)
       prev[c] = in[R_FS_COLOR0][c];
-   for (int u = 0; u < rs->tex_nr; u++) {
-      if (!(rs->tex_units & (1u << u)))
+   for (int u = 0; u < rs->fs->tex_nr; u++) {
+      if (!(rs->fs->tex_units & (1u << u)))
          continue;
-      if (rs->tex[u].comb.simple)
+      if (rs->tex[u]->comb.simple)
          simple_texenv(rs, in, quad, &tc, u, prev, res);
       else
          emit_texenv(rs, in, quad, &tc, u, prev, first, res);
@@ -553,7 +553,7 @@ static inline __attribute__((always_inline)) void
 fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs_quad *quad,
                 const struct r_tex_lod *lod, float out[4])
 {
-   if (rs->tex_units) {
+   if (rs->fs->tex_units) {
       texture_units(rs, in, quad, lod, out);
    } else {
       for (int c = 0; c < 4; c++)
@@ -561,18 +561,18 @@ fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs
    }
    /* the secondary colour's rgb with separate specular
     * (ff_fragment_shader.cpp emit_instructions: rgb += spec.rgb) */
-   if (rs->color_sum) {
+   if (rs->fs->color_sum) {
       for (int c = 0; c < 3; c++)
          out[c] = out[c] + in[R_FS_COLOR1][c];
    }
    /* then fog on rgb (emit_fog_instructions): fogcolor * (1 - f) + rgb * f,
     * two fmuls and an fadd (lower_flrp keeps NIR from forming a lerp);
     * alpha passes */
-   if (rs->fog_mode != R_FOG_NONE) {
+   if (rs->fs->fog_mode != R_FOG_NONE) {
       const float f = fog_factor(rs, in[R_FS_FOG][0]);
       const float g = 1.0f + -f;
       for (int c = 0; c < 3; c++)
-         out[c] = rs->fog_color[c] * g + out[c] * f;
+         out[c] = rs->fs->fog_color[c] * g + out[c] * f;
    }
 }
 
@@ -586,7 +586,7 @@ fragment_shader(const struct r_state *rs, const float in[][4], const struct r_fs
 void r_fragment_phong(const struct r_state *rs, float in[][4], bool back)
 {
    float primary[4], secondary[4];
-   m_shade_point_prepared(&rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
+   m_shade_point_prepared(rs->shade_env, in[R_FS_NORMAL], in[R_FS_EYEPOS], back, in[R_FS_COLOR0],
                     primary, secondary);
    for (int c = 0; c < 4; c++) {
       in[R_FS_COLOR0][c] = primary[c];
@@ -610,23 +610,23 @@ void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
 /* The depth test alone, with its write: the common path. */
 static bool depth_test_write(const struct r_state *rs, size_t idx, float z)
 {
-   switch (rs->zs_format) {
+   switch (rs->fb->zs_format) {
    case R_ZS_Z16: {
-      uint16_t *zb = (uint16_t *)rs->zs + idx;
+      uint16_t *zb = (uint16_t *)rs->fb->zs + idx;
       const uint16_t zv = r_depth_to_z16(z);
-      if (!compare(rs->depth_func, zv, *zb))
+      if (!compare(rs->dsa->depth_func, zv, *zb))
          return false;
-      if (rs->depth_write)
+      if (rs->dsa->depth_write)
          *zb = zv;
       return true;
    }
    case R_ZS_Z24X8:
    case R_ZS_Z24S8: {
-      uint32_t *zb = (uint32_t *)rs->zs + idx;
+      uint32_t *zb = (uint32_t *)rs->fb->zs + idx;
       const uint32_t zv = r_depth_to_z24(z);
-      if (!compare(rs->depth_func, zv, *zb & 0xffffffu))
+      if (!compare(rs->dsa->depth_func, zv, *zb & 0xffffffu))
          return false;
-      if (rs->depth_write)
+      if (rs->dsa->depth_write)
          *zb = (*zb & 0xff000000u) | zv;
       return true;
    }
@@ -645,45 +645,45 @@ static bool stencil_depth_test(const struct r_state *rs, size_t idx, float z)
 {
    uint8_t s;
    uint32_t *zs32 = NULL;
-   if (rs->zs_format == R_ZS_S8) {
-      s = ((uint8_t *)rs->zs)[idx];
+   if (rs->fb->zs_format == R_ZS_S8) {
+      s = ((uint8_t *)rs->fb->zs)[idx];
    } else {
-      zs32 = (uint32_t *)rs->zs + idx;
+      zs32 = (uint32_t *)rs->fb->zs + idx;
       s = (uint8_t)(*zs32 >> 24);
    }
 
-   const uint8_t vm = rs->stencil_valuemask;
+   const uint8_t vm = rs->dsa->stencil_valuemask;
    enum r_stencil_op op;
-   bool pass = compare(rs->stencil_func, rs->stencil_ref & vm, s & vm);
+   bool pass = compare(rs->dsa->stencil_func, rs->dsa->stencil_ref & vm, s & vm);
    if (!pass) {
-      op = rs->stencil_fail;
-   } else if (rs->depth_test) {
+      op = rs->dsa->stencil_fail;
+   } else if (rs->dsa->depth_test) {
       /* the depth buffer is this Z24S8 word */
       const uint32_t zv = r_depth_to_z24(z);
-      pass = compare(rs->depth_func, zv, *zs32 & 0xffffffu);
-      op = pass ? rs->stencil_zpass : rs->stencil_zfail;
-      if (pass && rs->depth_write)
+      pass = compare(rs->dsa->depth_func, zv, *zs32 & 0xffffffu);
+      op = pass ? rs->dsa->stencil_zpass : rs->dsa->stencil_zfail;
+      if (pass && rs->dsa->depth_write)
          *zs32 = (*zs32 & 0xff000000u) | zv;
    } else {
-      op = rs->stencil_zpass;
+      op = rs->dsa->stencil_zpass;
    }
 
-   const uint8_t wm = rs->stencil_writemask;
+   const uint8_t wm = rs->dsa->stencil_writemask;
    const uint8_t ns = (uint8_t)((stencil_op(rs, op, s) & wm) | (s & (uint8_t)~wm));
    if (zs32)
       *zs32 = (*zs32 & 0xffffffu) | (uint32_t)ns << 24;
    else
-      ((uint8_t *)rs->zs)[idx] = ns;
+      ((uint8_t *)rs->fb->zs)[idx] = ns;
    return pass;
 }
 
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4])
 {
-   const size_t idx = (size_t)py * (size_t)rs->width + (size_t)px;
-   uint8_t *dst = rs->color + 4 * idx;
+   const size_t idx = (size_t)py * (size_t)rs->fb->width + (size_t)px;
+   uint8_t *dst = rs->fb->color + 4 * idx;
 
    if (!rs->full_ops) {
-      if (rs->depth_test && !depth_test_write(rs, idx, z))
+      if (rs->dsa->depth_test && !depth_test_write(rs, idx, z))
          return;
       dst[0] = r_float_to_unorm8(color[0]);
       dst[1] = r_float_to_unorm8(color[1]);
@@ -699,23 +699,23 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
     * colour clamp (st_program.c nir_lower_clamp_color_outputs) and the
     * reference as given, with lp_build_cmp's unordered compares (NaN
     * passes every function but NEVER) */
-   if (rs->alpha_test) {
-      if (rs->alpha_test_float) {
-         const float a = r_clamp01(color[3]), ref = rs->alpha_ref_float;
-         if (rs->alpha_func == R_NEVER ||
-             (!isnan(ref) && !compare_float(rs->alpha_func, a, ref)))
+   if (rs->dsa->alpha_test) {
+      if (rs->dsa->alpha_test_float) {
+         const float a = r_clamp01(color[3]), ref = rs->dsa->alpha_ref_float;
+         if (rs->dsa->alpha_func == R_NEVER ||
+             (!isnan(ref) && !compare_float(rs->dsa->alpha_func, a, ref)))
             return;
       } else {
          const uint8_t a = (uint8_t)r_round_even(r_clamp01(color[3]) * 255.0f);
-         if (!compare(rs->alpha_func, a, rs->alpha_ref))
+         if (!compare(rs->dsa->alpha_func, a, rs->dsa->alpha_ref))
             return;
       }
    }
 
-   if (rs->stencil_test) {
+   if (rs->dsa->stencil_test) {
       if (!stencil_depth_test(rs, idx, z))
          return;
-   } else if (rs->depth_test && !depth_test_write(rs, idx, z)) {
+   } else if (rs->dsa->depth_test && !depth_test_write(rs, idx, z)) {
       return;
    }
 
@@ -730,11 +730,11 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
    d[2] = dst[2];
    /* without alpha bits the destination alpha reads as one
     * (lp_state_fs.c make_variant_key: force_dst_alpha_one) */
-   d[3] = rs->dst_alpha_one ? 255 : dst[3];
-   if (rs->logic_op) {
+   d[3] = rs->blend->dst_alpha_one ? 255 : dst[3];
+   if (rs->blend->logic_op) {
       for (int c = 0; c < 4; c++)
-         out[c] = logic_op(rs->logic_op_mode, src[c], d[c]);
-   } else if (rs->blend) {
+         out[c] = logic_op(rs->blend->logic_op_mode, src[c], d[c]);
+   } else if (rs->blend->enable) {
       for (int c = 0; c < 4; c++)
          out[c] = blend_channel(rs, c, src, d);
    } else {
@@ -743,7 +743,7 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
    }
    /* colour mask: a select between the result and the buffer */
    for (int c = 0; c < 4; c++) {
-      if (rs->color_mask & (1u << c))
+      if (rs->blend->color_mask & (1u << c))
          dst[c] = out[c];
    }
 }

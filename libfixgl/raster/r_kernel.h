@@ -74,7 +74,7 @@ struct r_tri_cover {
  * FMA). */
 r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color);
 
-/* The same for per-fragment-lit triangles (rs->phong; r_block_phong_avx2.c):
+/* The same for per-fragment-lit triangles (rs->fs->phong; r_block_phong_avx2.c):
  * NULL for a state it does not cover. */
 r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color);
 

@@ -95,27 +95,27 @@ static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, 
    float in[R_FS_NUM_INPUTS][4];
    const float rw = ls->need_w ? 1.0f / r_eval_plane(&ls->w, fx, fy) : 0.0f;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs_inputs & (1u << a)))
+      if (!(rs->fs->fs_inputs & (1u << a)))
          continue;
       for (int k = 0; k < 4; k++)
          in[a][k] = ls->flat_attr[a] ? ls->flat[a][k] : r_eval_plane(&ls->ap[a][k], fx, fy) * rw;
    }
-   if (rs->phong)
+   if (rs->fs->phong)
       r_fragment_phong(rs, in, ls->phong_back);
    float color[4];
-   if (rs->tex_units) {
+   if (rs->fs->tex_units) {
       /* the quad's texture coordinates from the line's planes
        * (ORACLE-NOTES.md "Texture sampling: level of detail per quad") */
       static const int dx[3] = { 0, 1, 0 }, dy[3] = { 0, 0, 1 };
       struct r_fs_quad quad;
       const int qx = px & ~1, qy = py & ~1;
       /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
-      for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
+      for (int i = 0; i < (rs->fs->tex_pair ? 6 : 3); i++) {
          const float qfx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]);
          const float qfy = (float)(qy + dy[i % 3]);
          const float qrw = 1.0f / r_eval_plane(&ls->w, qfx, qfy);
          for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-            if (!(rs->tex_units & (1u << u)))
+            if (!(rs->fs->tex_units & (1u << u)))
                continue;
             const int a = R_FS_TEX0 + u;
             float *d = i < 3 ? quad.tex[u][i] : quad.pair[u][i - 3];
@@ -149,7 +149,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    /* v2 (the second vertex) is the provoking vertex */
    const struct r_vertex *const pv = v2;
    /* MAX2(1.0, line_width) */
-   const float width = 1.0f > rs->line_width ? 1.0f : rs->line_width;
+   const float width = 1.0f > rs->rast->line_width ? 1.0f : rs->rast->line_width;
 
    float dx = v1->pos[0] - v2->pos[0];
    float dy = v1->pos[1] - v2->pos[1];
@@ -335,9 +335,9 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
     * unfilled back face, whose face the vertices carry (draw's
     * inject_front_face_info [S: draw_pipe_unfilled.c], read by
     * lp_setup_line.c from the provoking vertex) */
-   ls.phong_back = rs->phong && rs->shade_env.two_side && pv->attr[R_ATTR_NORMAL][3] == 0.0f;
+   ls.phong_back = rs->fs->phong && rs->shade_env->two_side && pv->attr[R_ATTR_NORMAL][3] == 0.0f;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs_inputs & (1u << a)))
+      if (!(rs->fs->fs_inputs & (1u << a)))
          continue;
       const int slot = r_fs_slot(a, false);
       ls.flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;

@@ -169,16 +169,20 @@ void r_pixel_rect(const struct r_state *rs_in, const struct r_pixel_image *pix,
     * of the user's; no stipple, offset, culling, two-sided colours; every
     * input smooth (the colour is the same at every corner) */
    struct r_state rs = *rs_in;
+   struct r_rast_state rast = *rs.rast;
+   struct r_fs_state fs = *rs.fs;
    rs.pix = pix;
-   rs.stipple = false;
-   rs.aa = R_AA_NONE;
-   rs.offset_units = rs.offset_scale = 0.0f;
-   rs.cull_front = rs.cull_back = false;
-   rs.twoside = false;
-   rs.phong = false;
+   rast.stipple = false;
+   fs.aa = R_AA_NONE;
+   rast.offset_units = rast.offset_scale = 0.0f;
+   rast.cull_front = rast.cull_back = false;
+   rast.twoside = false;
+   fs.phong = false;
    rs.flat_mask = 0;
-   rs.fs_inputs = 1u << R_FS_COLOR0 | 1u << R_FS_TEX0;
-   rs.num_attribs = R_ATTR_TEX0 + 1;
+   fs.fs_inputs = 1u << R_FS_COLOR0 | 1u << R_FS_TEX0;
+   fs.num_attribs = R_ATTR_TEX0 + 1;
+   rs.rast = &rast;
+   rs.fs = &fs;
    r_choose_kernels(&rs);
 
    /* [S: st_cb_drawpixels.c:draw_textured_quad] clip coordinates, z from
@@ -258,7 +262,7 @@ static int nearest(float s, int size)
 static void pixel_shader(const struct r_state *rs, const float fin_in[][4],
                          const float *quad_tc, const struct r_fs_quad *quad, float color[4])
 {
-   if (!rs->tex_units) {
+   if (!rs->fs->tex_units) {
       r_fragment_shader(rs, fin_in, NULL, color);
       return;
    }
@@ -356,8 +360,10 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
       /* [S: st_cb_drawpixels.c:make_drawpix_z_stencil_program_nir] depth
        * from the texture, the vertex colour as is */
       if (pix->with_stencil) {
+         struct r_dsa_state dsa = *rs->dsa;
          struct r_state s = *rs;
-         s.stencil_ref = pix->mask[idx];
+         dsa.stencil_ref = pix->mask[idx];
+         s.dsa = &dsa;
          r_fragment_ops(&s, px, py, pix->texels[idx], in[R_FS_COLOR0]);
       } else {
          r_fragment_ops(rs, px, py, pix->texels[idx], in[R_FS_COLOR0]);
@@ -367,8 +373,10 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
    default: {
       /* the exported stencil value is the reference of the state set up
        * by the caller (func ALWAYS, zpass REPLACE) */
+      struct r_dsa_state dsa = *rs->dsa;
       struct r_state s = *rs;
-      s.stencil_ref = pix->mask[idx];
+      dsa.stencil_ref = pix->mask[idx];
+      s.dsa = &dsa;
       r_fragment_ops(&s, px, py, z, in[R_FS_COLOR0]);
       return;
    }

@@ -35,7 +35,7 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
 static void point(const struct r_state *rs, const struct r_vertex *v)
 {
    /* LP_MAX_POINT_WIDTH */
-   float size = rs->point_size;
+   float size = rs->rast->point_size;
    if (size > 255.0f)
       size = 255.0f;
    if (!isfinite(v->pos[0]) || !isfinite(v->pos[1]))
@@ -74,7 +74,7 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
    float in[R_FS_NUM_INPUTS][4];
    const float w = v->pos[3];
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs_inputs & (1u << a)))
+      if (!(rs->fs->fs_inputs & (1u << a)))
          continue;
       const int slot = r_fs_slot(a, false);
       const bool flat = (rs->flat_mask & (1u << slot)) != 0;
@@ -85,20 +85,20 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
     * point is front facing, unless it is a vertex of an unfilled back
     * face, whose face the vertex carries (draw's inject_front_face_info
     * [S: draw_pipe_unfilled.c], read by lp_setup_point.c) */
-   if (rs->phong)
-      r_fragment_phong(rs, in, rs->shade_env.two_side && v->attr[R_ATTR_NORMAL][3] == 0.0f);
+   if (rs->fs->phong)
+      r_fragment_phong(rs, in, rs->shade_env->two_side && v->attr[R_ATTR_NORMAL][3] == 0.0f);
    /* the quad's texture coordinates are the vertex's too: zero
     * derivatives, so the texture is magnified */
    struct r_fs_quad quad;
    for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
-      if (!(rs->tex_units & (1u << u)))
+      if (!(rs->fs->tex_units & (1u << u)))
          continue;
       for (int i = 0; i < 3; i++)
          for (int c = 0; c < 4; c++)
             quad.tex[u][i][c] = quad.pair[u][i][c] = in[R_FS_TEX0 + u][c];
    }
    float color[4];
-   r_fragment_shader(rs, (const float (*)[4])in, rs->tex_units ? &quad : NULL, color);
+   r_fragment_shader(rs, (const float (*)[4])in, rs->fs->tex_units ? &quad : NULL, color);
    for (int32_t py = by0; py <= by1; py++) {
       for (int32_t px = bx0; px <= bx1; px++) {
          if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))

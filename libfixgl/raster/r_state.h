@@ -358,19 +358,52 @@ static inline uint64_t r_stats_now(void)
    return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
 }
 
-struct r_state {
-   /* target */
-   uint8_t *color;              /* RGBA8 */
+/* ---- the state objects ------------------------------------------------
+ *
+ * What the raster core needs of the GL state, in immutable objects in the
+ * manner of gallium's constant state objects (CSOs), one per group that
+ * changes together.  The validation pass (state.c) builds each from the
+ * GL state of its dirty groups only and looks it up in the context's
+ * cache (r_cso_lookup, keyed by the object's bytes), so a scene that
+ * switches between a few states builds each once; a draw's r_state
+ * (below) points to one object of each kind.  An object is never written
+ * after the cache returns it: any number of r_states, and threads, may
+ * read it.  The builders zero an object before filling it, so equal
+ * states are equal bytes, padding included. */
+
+/* The framebuffer target. */
+struct r_fb_state {
+   uint8_t *color;              /* RGBA8 (NULL: no colour buffer) */
    void *zs;
    enum r_zs_format zs_format;
    int width, height;
+};
 
-   /* pixels outside [x0,x1) x [y0,y1) are never touched (framebuffer,
-    * later intersected with the scissor box) */
-   int x0, y0, x1, y1;
+/* The rasterizer: facing, culling, offset, stipple, point and line size
+ * (st_atom_rasterizer.c, llvmpipe_create_rasterizer_state). */
+struct r_rast_state {
+   bool twoside;                /* back-facing triangles use the BCOLOR slots */
+   bool ccw_is_front;           /* a positive snapped area is front-facing */
+   bool cull_front, cull_back;  /* faces not drawn */
+   /* polygon offset of llvmpipe's triangle setup (lp_do_offset_tri): added
+    * to every fragment's depth; both 0 when the draw pipeline applies the
+    * offset instead, or no GL_POLYGON_OFFSET_* is enabled */
+   float offset_units;          /* GL units * mrd * 2 */
+   float offset_scale;          /* GL factor */
+   /* polygon stipple (draw's pstipple stage: a fragment kill before any
+    * per-fragment operation); row i applies to y-down pixel rows i mod 32,
+    * bit 31 - (x mod 32) to columns x mod 32 */
+   bool stipple;
+   uint32_t stipple_rows[32];
+   /* points and lines, as the state tracker clamps them
+    * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
+   float point_size;
+   float line_width;
+};
 
-   /* per-fragment operations, in the order r_fragment_ops applies them
-    * (scissor is the draw region above) */
+/* Depth, stencil and alpha test, in the order r_fragment_ops applies
+ * them. */
+struct r_dsa_state {
    bool alpha_test;
    enum r_func alpha_func;
    uint8_t alpha_ref;           /* clamped, RNE(ref * 255) */
@@ -387,8 +420,11 @@ struct r_state {
    bool depth_test;             /* only with a depth buffer */
    enum r_func depth_func;
    bool depth_write;
+};
 
-   bool blend;                  /* off when the logic op is on */
+/* Blending, logic op and colour mask. */
+struct r_blend_state {
+   bool enable;                 /* blending; off when the logic op is on */
    enum r_blend_eq blend_eq;
    enum r_blend_factor blend_src, blend_dst;  /* ONE for MIN/MAX */
    uint8_t blend_color[4];
@@ -396,20 +432,16 @@ struct r_state {
    unsigned logic_op_mode;      /* GL op - GL_CLEAR (0..15) */
    unsigned color_mask;         /* bit 0 red .. bit 3 alpha */
    bool dst_alpha_one;          /* colour buffer without alpha bits */
+};
 
-   /* an alpha test, stencil test, blending, logic op or colour mask is
-    * active; when false (also in a zeroed r_state) fragments take the
-    * depth test and a plain store only (state.c decides once per draw) */
-   bool full_ops;
-
-   /* varyings (R_ATTR_* slots); the vertex stage fills num_attribs */
+/* The fragment program: the varyings it reads, colour sum, fog, the
+ * texture units it walks, the coverage lowering of smooth points and
+ * lines, per-fragment lighting. */
+struct r_fs_state {
+   /* varyings (R_ATTR_* slots) the vertex stage writes */
    int num_attribs;
    unsigned fs_inputs;          /* bit R_FS_*: inputs the fragment shader reads */
-   uint32_t flat_mask;          /* bit i: attribute i uses the provoking vertex */
    bool color_sum;              /* colour += secondary colour (rgb) */
-   bool twoside;                /* back-facing triangles use the BCOLOR slots */
-   bool ccw_is_front;           /* a positive snapped area is front-facing */
-   bool cull_front, cull_back;  /* faces not drawn */
 
    /* fog, applied to the colour (after the colour sum) from the
     * interpolated R_FS_FOG input */
@@ -418,27 +450,6 @@ struct r_state {
                                  * end/(end-start), density/ln 2,
                                  * density/sqrt(ln 2) */
    float fog_color[3];          /* clamped to [0,1] */
-   /* polygon offset of llvmpipe's triangle setup (lp_do_offset_tri): added
-    * to every fragment's depth; both 0 when the draw pipeline applies the
-    * offset instead, or no GL_POLYGON_OFFSET_* is enabled */
-   float offset_units;          /* GL units * mrd * 2 */
-   float offset_scale;          /* GL factor */
-
-   /* polygon stipple (draw's pstipple stage: a fragment kill before any
-    * per-fragment operation); row i applies to y-down pixel rows i mod 32,
-    * bit 31 - (x mod 32) to columns x mod 32 */
-   bool stipple;
-   uint32_t stipple_rows[32];
-   /* the pstipple fragment shader is bound for points and lines too: tnl
-    * sets it while it hands llvmpipe a vbuf batch of points or lines that
-    * is flushed after the first filled triangle of a draw (t_linepoint.c
-    * t_vbuf_flush); the same kill as triangles' */
-   bool stipple_points_lines;
-
-   /* points and lines, as the state tracker clamps them
-    * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
-   float point_size;
-   float line_width;
 
    /* smooth point/line quads: the fragment shader's coverage lowering
     * (R_FS_AA is then one of fs_inputs) */
@@ -450,41 +461,97 @@ struct r_state {
     * program is untouched (no per-pixel cost) when tex_units is 0 */
    unsigned tex_units;
    int tex_nr;
-   struct r_tex_unit tex[R_MAX_TEX_UNITS];
    /* some unit's lookup needs the pair quad (r_tex_need_pair): the
     * primitives fill r_fs_quad.pair */
    bool tex_pair;
-   /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c): the state
-    * tracker's textured quad replaces the fragment shader; NULL for every
-    * other primitive */
-   const struct r_pixel_image *pix;
 
    /* GL_PHONG_WIN with lighting (include/fixgl/shading.md): every
     * fragment is lit by r_fragment_phong from the interpolated R_FS_NORMAL
-    * and R_FS_EYEPOS inputs (then among fs_inputs) with this environment;
+    * and R_FS_EYEPOS inputs (then among fs_inputs) with r_state.shade_env;
     * the lit colours replace the R_FS_COLOR0/COLOR1 inputs, whose
     * interpolated value is the vertex colour (for colour material).  The
-    * face is the rasterizer's (shade_env.two_side: a back-facing triangle,
+    * face is the rasterizer's (shade_env->two_side: a back-facing triangle,
     * or an unfilled back face's lines and points, use the back material);
     * the smooth point and line quads are triangles of their own, with the
     * face their winding gives them under the aa stages' front_ccw (as
     * llvmpipe's triangle setup decides gl_FrontFacing: from the area, never
     * from the face draw's unfilled stage puts into the vertices). */
    bool phong;
-   struct m_shade_env shade_env;
+};
 
+/* A draw's raster state (the raster variant): one object of each kind,
+ * what is the draw's own (the draw region, the interpolation of the
+ * batch, the pixel image, the counters), and the kernels chosen for the
+ * combination.  Small, copied freely; the objects it points to are
+ * shared and never written. */
+struct r_state {
+   const struct r_fb_state *fb;
+   const struct r_rast_state *rast;
+   const struct r_dsa_state *dsa;
+   const struct r_blend_state *blend;
+   const struct r_fs_state *fs;
+   /* unit u's image, sampler and environment, for the units in
+    * fs->tex_units (else NULL) */
+   const struct r_tex_unit *tex[R_MAX_TEX_UNITS];
+   /* fs->phong's lighting environment (else NULL) */
+   const struct m_shade_env *shade_env;
+
+   /* pixels outside [x0,x1) x [y0,y1) are never touched (framebuffer,
+    * intersected with the scissor box) */
+   int x0, y0, x1, y1;
+
+   /* bit i: attribute i uses the provoking vertex (the vertex stage sets
+    * it per batch) */
+   uint32_t flat_mask;
+   /* the pstipple fragment shader is bound for points and lines too: tnl
+    * sets it while it hands llvmpipe a vbuf batch of points or lines that
+    * is flushed after the first filled triangle of a draw (t_linepoint.c
+    * t_vbuf_flush); the same kill as triangles' */
+   bool stipple_points_lines;
+   /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c): the state
+    * tracker's textured quad replaces the fragment shader; NULL for every
+    * other primitive */
+   const struct r_pixel_image *pix;
    /* the benchmark's counters, or NULL (the usual case) */
    struct r_stats *stats;
 
-   /* The kernels (r_kernel.h), chosen by r_choose_kernels from the fields
-    * above: whoever changes those afterwards calls it again.  A NULL
-    * kernel (also in a zeroed r_state) means the reference kernels. */
+   /* Chosen by r_choose_kernels from the objects: whoever points the
+    * r_state to other objects calls it again. */
+   /* an alpha test, stencil test, blending, logic op or colour mask is
+    * active; when false, fragments take the depth test and a plain store
+    * only */
+   bool full_ops;
    bool reference_kernels;       /* FIXGL_KERNELS=reference: no others */
-   r_tri_kernel tri_kernel[2];   /* triangles, [colour flat] */
+   /* triangles' block kernels (r_kernel.h), [colour flat]; NULL means the
+    * reference kernels */
+   r_tri_kernel tri_kernel[2];
 };
 
-/* Chooses the kernels of rs for its current state (r_tri.c). */
+/* Sets full_ops and chooses the kernels of rs for its objects (r_tri.c). */
 void r_choose_kernels(struct r_state *rs);
+
+/* The cache of state objects (r_cso.c), one per context: r_cso_lookup
+ * returns the cached object whose bytes equal obj's size bytes (a copy
+ * made now if there is none), or NULL when out of memory.  The cache
+ * holds every object it returned until r_cso_cache_fini, or until it
+ * evicts it: it keeps at most R_CSO_CACHE_MAX objects that nobody holds,
+ * dropping the least recently looked-up one.  Whoever keeps an object
+ * beyond the next lookup holds it (r_cso_hold) and releases it after
+ * (r_cso_release); r_state_hold/r_state_release do it for every object
+ * of an r_state. */
+#define R_CSO_CACHE_MAX 64
+struct r_cso_entry;
+struct r_cso_cache {
+   struct r_cso_entry **entry;
+   unsigned count, capacity;
+   uint64_t clock;
+};
+const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size);
+void r_cso_hold(const void *obj);
+void r_cso_release(const void *obj);
+void r_state_hold(const struct r_state *rs);
+void r_state_release(const struct r_state *rs);
+void r_cso_cache_fini(struct r_cso_cache *c);
 
 /* The image a pixel rectangle samples (r_pixels.c), NEAREST with
  * CLAMP_TO_EDGE, normalized coordinates; row 0 is t = 0. */
@@ -543,7 +610,7 @@ void r_pixel_rect(const struct r_state *rs, const struct r_pixel_image *pix,
  * interpolated inputs and depth (r_tri.c calls it instead of the
  * fragment shader when rs->pix is set); quad: the quad coordinate
  * (R_FS_TEX0) at the fragment's quad in tex[0] (and pair[0]), given when
- * the image's tex_quad and rs->tex_units are not 0. */
+ * the image's tex_quad and rs->fs->tex_units are not 0. */
 void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[][4], float z,
                       const struct r_fs_quad *quad);
 
@@ -570,7 +637,7 @@ void r_fragment_shader_lod(const struct r_state *rs, const float in[][4],
  * R_FS_COLOR0 (and R_FS_COLOR1) with m_shade_point's primary (and
  * secondary) colour for the normal in[R_FS_NORMAL], the eye position
  * in[R_FS_EYEPOS], the face `back` and the vertex colour in[R_FS_COLOR0].
- * Called by the primitives before r_fragment_shader when rs->phong. */
+ * Called by the primitives before r_fragment_shader when rs->fs->phong. */
 void r_fragment_phong(const struct r_state *rs, float in[][4], bool back);
 
 /* The smooth point/line lowering appended to the fragment shader
@@ -613,7 +680,7 @@ static inline int32_t r_subpixel_snap(float a)
  * util/u_pstipple.c]). */
 static inline bool r_stipple_pass(const struct r_state *rs, int px, int py)
 {
-   return (rs->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u;
+   return (rs->rast->stipple_rows[py & 31] >> (31 - (px & 31))) & 1u;
 }
 
 /* Clear whole buffers. */

@@ -173,19 +173,19 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
     * of the setup-order edges; the larger slope is picked with an
     * unordered compare (NaN picks dzdx); offset = units + max * factor */
    ts->zoffset = 0.0f;
-   if (rs->offset_scale != 0.0f || rs->offset_units != 0.0f) {
+   if (rs->rast->offset_scale != 0.0f || rs->rast->offset_units != 0.0f) {
       const float dz01 = v[0]->pos[2] - v[1]->pos[2];
       const float dz20 = v[2]->pos[2] - v[0]->pos[2];
       const float res1 = dz20 * dy01 - dy20 * dz01;
       const float res2 = dx20 * dz01 - dz20 * dx01;
       const float dzdx = fabsf(res1 * ooa), dzdy = fabsf(res2 * ooa);
       const float max = !(dzdx <= dzdy) ? dzdx : dzdy;
-      ts->zoffset = rs->offset_units + max * rs->offset_scale;
+      ts->zoffset = rs->rast->offset_units + max * rs->rast->offset_scale;
    }
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
    ts->quad_x = INT_MIN;   /* no quad cached */
    ts->quad_y = INT_MIN;
-   ts->inputs = rs->fs_inputs;
+   ts->inputs = rs->fs->fs_inputs;
    ts->phong_back = phong_back;
    ts->need_w = false;
    for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
@@ -223,7 +223,7 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
    if (qx != ts->quad_x || qy != ts->quad_y) {
       struct r_fs_quad *q = &cache->quad;
       /* i >= 3: the pair quad (qx ^ 2) when a lookup needs it */
-      for (int i = 0; i < (rs->tex_pair ? 6 : 3); i++) {
+      for (int i = 0; i < (rs->fs->tex_pair ? 6 : 3); i++) {
          const float fx = (float)((i < 3 ? qx : qx ^ 2) + dx[i % 3]), fy = (float)(qy + dy[i % 3]);
          const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
          for (unsigned m = units; m; m &= m - 1) {
@@ -234,9 +234,11 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
-      for (unsigned m = units; m; m &= m - 1) {
+      /* the LOD of the units that texture (a pixel rectangle's quad
+       * coordinate is unit 0's, whether or not it textures) */
+      for (unsigned m = units & rs->fs->tex_units; m; m &= m - 1) {
          const int u = __builtin_ctz(m);
-         const struct r_texture *t = &rs->tex[u].tex;
+         const struct r_texture *t = &rs->tex[u]->tex;
          if (t->soa)
             continue;
          float qc[3][3];
@@ -258,7 +260,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      const float in[][4], int px, int py,
                                                      float color[4])
 {
-   fill_quad(rs, ts, px, py, rs->tex_units);
+   fill_quad(rs, ts, px, py, rs->fs->tex_units);
    r_fragment_shader_lod(rs, in, &ts->quad, ts->lod, color);
 }
 
@@ -267,7 +269,7 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
                                int px, int py)
 {
    /* polygon stipple: the pstipple stage's kill, first */
-   if (rs->stipple && !r_stipple_pass(rs, px, py))
+   if (rs->rast->stipple && !r_stipple_pass(rs, px, py))
       return;
    if (__builtin_expect(rs->stats != NULL, 0))
       rs->stats->fragments++;
@@ -282,22 +284,22 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
    if (rs->pix) {
       /* a pixel rectangle's quad: its own fragment stage (r_pixels.c);
        * a unit reading the quad's coordinate (R_FS_TEX0) needs its quad */
-      const bool quad = rs->tex_units && rs->pix->tex_quad;
+      const bool quad = rs->fs->tex_units && rs->pix->tex_quad;
       if (quad)
          fill_quad(rs, ts, px, py, 1u);
       r_pixel_fragment(rs, px, py, (const float (*)[4])in, r_eval_plane(&ts->z, fx, fy),
                        quad ? &ts->quad : NULL);
       return;
    }
-   if (rs->phong)
+   if (rs->fs->phong)
       r_fragment_phong(rs, in, ts->phong_back);
    float color[4];
-   if (rs->tex_units) {
+   if (rs->fs->tex_units) {
       shade_textured(rs, ts, (const float (*)[4])in, px, py, color);
    } else {
       r_fragment_shader(rs, (const float (*)[4])in, NULL, color);
    }
-   if (rs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
+   if (rs->fs->aa != R_AA_NONE && !r_fragment_aa(rs, (const float (*)[4])in, color))
       return;
    /* lp_bld_interp.c: z = interpolated z + polygon offset (an fadd) */
    r_fragment_ops(rs, px, py, r_eval_plane(&ts->z, fx, fy) + ts->zoffset, color);
@@ -316,11 +318,11 @@ static void shade_block(const struct r_state *rs, const struct r_shader *sh,
 {
    for (int j = 0; j < 4; j++) {
       const int py = y + j;
-      if (py < 0 || py >= rs->height)
+      if (py < 0 || py >= rs->fb->height)
          continue;
       for (int i = 0; i < 4; i++) {
          const int px = x + i;
-         if ((mask & (1u << (4 * j + i))) && px >= 0 && px < rs->width)
+         if ((mask & (1u << (4 * j + i))) && px >= 0 && px < rs->fb->width)
             sh->pixel(rs, sh->ctx, px, py);
       }
    }
@@ -547,7 +549,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       const uint64_t t1 = rs->stats ? r_stats_now() : 0;
       if (blocks)
          kernel(rs, &ts, &cv);
-      else if (rs->tex_units)
+      else if (rs->fs->tex_units)
          rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
       else
          rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
@@ -644,8 +646,8 @@ void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
             in = true;
             /* lp_rast_shade_tile: the whole tile, cut to the framebuffer */
             const int tx = x * TILE_SIZE, ty = y * TILE_SIZE;
-            shade_area(rs, sh, tx, ty, rs->width - tx < TILE_SIZE ? rs->width - tx : TILE_SIZE,
-                       rs->height - ty < TILE_SIZE ? rs->height - ty : TILE_SIZE);
+            shade_area(rs, sh, tx, ty, rs->fb->width - tx < TILE_SIZE ? rs->fb->width - tx : TILE_SIZE,
+                       rs->fb->height - ty < TILE_SIZE ? rs->fb->height - ty : TILE_SIZE);
          }
          for (int i = 0; i < n; i++)
             cx[i] = add64(cx[i], xstep[i]);
@@ -675,14 +677,14 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
     * culling, and the facing that chooses two-sided colours
     * (ORACLE-NOTES.md "Lighting order of operations", its two-sided
     * lighting) */
-   const bool is_back = (area > 0) != rs->ccw_is_front;
-   if (is_back ? rs->cull_back : rs->cull_front)
+   const bool is_back = (area > 0) != rs->rast->ccw_is_front;
+   if (is_back ? rs->rast->cull_back : rs->rast->cull_front)
       return;
-   const bool back = rs->twoside && is_back;
+   const bool back = rs->rast->twoside && is_back;
    /* GL_PHONG_WIN lights a two-sided back face with the back material, by
     * this facing (gl_FrontFacing's [S: lp_setup_tri.c: the area sign]),
     * smooth point and line quads included */
-   const bool phong_back = rs->phong && rs->shade_env.two_side && is_back;
+   const bool phong_back = rs->fs->phong && rs->shade_env->two_side && is_back;
    if (area < 0) {
       /* clockwise: processed as (v1, v0, v2), keeping the provoking vertex */
       const struct r_vertex *t = v[0]; v[0] = v[1]; v[1] = t;
@@ -694,13 +696,15 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
 
 void r_choose_kernels(struct r_state *rs)
 {
+   rs->full_ops = rs->dsa->alpha_test || rs->dsa->stencil_test || rs->blend->enable ||
+                  rs->blend->logic_op || rs->blend->color_mask != 0xfu;
    rs->tri_kernel[0] = rs->tri_kernel[1] = NULL;
 #ifdef FGL_HAVE_BLOCK_KERNELS
    if (rs->reference_kernels ||
        !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
       return;
    for (int flat = 0; flat < 2; flat++)
-      rs->tri_kernel[flat] = rs->phong ? r_block_choose_tri_phong(rs, flat)
+      rs->tri_kernel[flat] = rs->fs->phong ? r_block_choose_tri_phong(rs, flat)
                                        : r_block_choose_tri(rs, flat);
 #endif
 }

@@ -102,7 +102,7 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
                           bool stale_flat)
 {
    float (*held)[4] = ctx->Feedback.ClipTmp[slot];
-   const int nattr = ctx->_Raster.num_attribs;
+   const int nattr = ctx->_Raster.fs->num_attribs;
    for (int a = 0; a < R_ATTR_FOG && a < nattr; a++) {
       if (stale_flat && (ctx->_Raster.flat_mask & (1u << a)))
          memcpy(v->r.attr[a], held[a], sizeof(held[a]));
@@ -202,9 +202,9 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
             if (dp < 0.0f) {
                /* going out */
                if (-dp < dp_prev)
-                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->num_attribs);
+                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->fs->num_attribs);
                else
-                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->num_attribs);
+                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->fs->num_attribs);
                /* an edge along a user plane is drawn, one along a frustum
                 * plane is not (NVIDIA's behaviour, says Mesa) */
                if (user_plane) {
@@ -217,9 +217,9 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
             } else {
                /* coming back in: the starting vertex's edge flag */
                if (-dp_prev < dp)
-                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->num_attribs);
+                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->fs->num_attribs);
                else
-                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->num_attribs);
+                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->fs->num_attribs);
                nv->edge = vert_prev->edge;
                *new_edge = edge_prev;
             }
@@ -307,11 +307,11 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
    /* new ends interpolated from the end they replace towards the other,
     * with the provoking (second) vertex's flat attributes */
    if (v0->mask) {
-      interp(ctx, &out[0], t0, v0, v1, rs->num_attribs);
+      interp(ctx, &out[0], t0, v0, v1, rs->fs->num_attribs);
       t_copy_flat(rs, &out[0].r, &v1->r);
    }
    if (v1->mask) {
-      interp(ctx, &out[1], t1, v1, v0, rs->num_attribs);
+      interp(ctx, &out[1], t1, v1, v0, rs->fs->num_attribs);
       t_copy_flat(rs, &out[1].r, &v1->r);
    }
    return true;

@@ -113,7 +113,7 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
       }
    }
 
-   if (dp->unfilled && mode != GL_FILL && rs->phong) {
+   if (dp->unfilled && mode != GL_FILL && rs->fs->phong) {
       /* GL_PHONG_WIN: the lines and points of an unfilled face are lit
        * with its face, which the vertices carry in R_ATTR_NORMAL's w (the
        * front-face input that draw injects for them when the fragment

@@ -23,36 +23,31 @@
 
 #include "context.h"
 
-/* The raster state of the smooth point and line quads: the draw module
- * binds its rasterizer "no cull" state for them (draw_context.c:
- * draw_get_rasterizer_no_cull: no culling, no two-sided colours, no offset,
- * front_ccw) and a fragment shader that also reads the aa coordinates; the
- * polygon stipple shader is not bound for them (the pstipple stage passes
- * points and lines through). */
-static void aa_state(const struct r_state *rs, struct r_state *aa, enum r_aa_mode mode)
+/* The raster state of the smooth point and line quads (validated with
+ * the draw's, state.c update_aa_states: the draw module's "no cull"
+ * rasterizer, the fragment shader with the coverage lowering), with what
+ * the draw's r_state has of the batch. */
+static bool aa_state(const struct fgl_context *ctx, struct r_state *aa, enum r_aa_mode mode)
 {
-   *aa = *rs;
-   aa->cull_front = false;
-   aa->cull_back = false;
-   aa->twoside = false;
-   aa->offset_units = 0.0f;
-   aa->offset_scale = 0.0f;
-   aa->stipple = false;
-   aa->ccw_is_front = true;
-   aa->fs_inputs |= 1u << R_FS_AA;
-   aa->aa = mode;
-   r_choose_kernels(aa);
+   const struct r_state *rs = &ctx->_Raster;
+   *aa = ctx->_RasterAA[mode == R_AA_POINT ? 0 : 1];
+   aa->flat_mask = rs->flat_mask;
+   aa->shade_env = rs->shade_env;
+   aa->stats = rs->stats;
+   return aa->fs != NULL;   /* else out of memory at validation */
 }
 
 /* draw_pipe_aapoint.c:aapoint_point: a square of half size `radius` with
  * coordinates (+-1, +-1, k, 1), drawn as two triangles. */
-static void aapoint_point(const struct r_state *rs, const struct r_vertex *v)
+static void aapoint_point(const struct fgl_context *ctx, const struct r_vertex *v)
 {
+   const struct r_state *rs = &ctx->_Raster;
    struct r_state aa;
-   aa_state(rs, &aa, R_AA_POINT);
+   if (!aa_state(ctx, &aa, R_AA_POINT))
+      return;
 
    /* aapoint_first_point */
-   const float radius = rs->point_size <= 2.0f ? 1.0f : 0.5f * rs->point_size;
+   const float radius = rs->rast->point_size <= 2.0f ? 1.0f : 0.5f * rs->rast->point_size;
    float k = 1.0f / radius;
    k = 1.0f - 2.0f * k + k * k;
 
@@ -115,7 +110,7 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
                      const struct r_vertex *v1)
 {
    struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
-   if (!ctx->_Raster.stipple) {
+   if (!ctx->_Raster.rast->stipple) {
       if (prim == T_VBUF_POINTS)
          r_point(&ctx->_Raster, v0);
       else
@@ -150,7 +145,7 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
 
 void t_vbuf_filled_tri(struct fgl_context *ctx)
 {
-   if (!ctx->_Raster.stipple)
+   if (!ctx->_Raster.rast->stipple)
       return;
    /* pstip_first_tri binds the stipple shader, then vbuf_first_tri flushes
     * the queued points or lines */
@@ -170,7 +165,7 @@ static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
 {
    if (ctx->Point.SmoothFlag) {
       vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
-      aapoint_point(&ctx->_Raster, v);
+      aapoint_point(ctx, v);
    } else
       vbuf_add(ctx, T_VBUF_POINTS, v, NULL);
 }
@@ -207,14 +202,16 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
  * pixel at each end and widened to the half width, with coordinates
  * (u, half width, v, half length), drawn as two triangles. */
-static void aaline_line(const struct r_state *rs, const struct r_vertex *v0,
+static void aaline_line(const struct fgl_context *ctx, const struct r_vertex *v0,
                         const struct r_vertex *v1)
 {
+   const struct r_state *rs = &ctx->_Raster;
    struct r_state aa;
-   aa_state(rs, &aa, R_AA_LINE);
+   if (!aa_state(ctx, &aa, R_AA_LINE))
+      return;
 
    /* aaline_first_line */
-   const float half_width = rs->line_width <= 1.0f ? 1.0f : 0.5f * rs->line_width + 0.5f;
+   const float half_width = rs->rast->line_width <= 1.0f ? 1.0f : 0.5f * rs->rast->line_width + 0.5f;
 
    const float dx = v1->pos[0] - v0->pos[0];
    const float dy = v1->pos[1] - v0->pos[1];
@@ -256,7 +253,7 @@ static void line_raster(struct fgl_context *ctx, const struct r_vertex *v0,
 {
    if (ctx->Line.SmoothFlag) {
       vbuf_flush(ctx);   /* vbuf_first_tri: the aaline quad is triangles */
-      aaline_line(&ctx->_Raster, v0, v1);
+      aaline_line(ctx, v0, v1);
    } else
       vbuf_add(ctx, T_VBUF_LINES, v0, v1);
 }
@@ -268,7 +265,7 @@ static void screen_interp(const struct r_state *rs, struct r_vertex *dst, float 
 {
    for (int i = 0; i < 4; i++)
       dst->pos[i] = v0->pos[i] + t * (v1->pos[i] - v0->pos[i]);
-   for (int a = 0; a < rs->num_attribs; a++)
+   for (int a = 0; a < rs->fs->num_attribs; a++)
       for (int c = 0; c < 4; c++)
          dst->attr[a][c] = v0->attr[a][c] + t * (v1->attr[a][c] - v0->attr[a][c]);
 }

@@ -85,7 +85,7 @@ static inline void t_mul_mad_chain(float out[4], const float *m, const float *p)
 static inline void t_copy_flat(const struct r_state *rs, struct r_vertex *dst,
                                const struct r_vertex *pv)
 {
-   for (int a = 0; a < rs->num_attribs; a++)
+   for (int a = 0; a < rs->fs->num_attribs; a++)
       if (rs->flat_mask & (1u << a))
          for (int c = 0; c < 4; c++)
             dst->attr[a][c] = pv->attr[a][c];

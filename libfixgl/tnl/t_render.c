@@ -68,7 +68,8 @@ static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
  * drawn with the material of the primitive that flushes them.) */
 static void phong_material(const struct render *r, unsigned pv)
 {
-   struct m_shade_env *env = &r->ctx->_Raster.shade_env;
+   struct fgl_context *ctx = r->ctx;
+   struct m_shade_env *env = &ctx->_ShadeEnv;
    const unsigned vi = elt(r, pv);
    for (unsigned m = r->phong_mats; m; m &= m - 1) {
       const int a = FGL_ATTR_MAT_FIRST + __builtin_ctz(m);
@@ -82,6 +83,7 @@ static void phong_material(const struct render *r, unsigned pv)
       default: break;   /* colour indexes */
       }
    }
+   fgl_set_shade_env(ctx);   /* out of memory: the last environment */
 }
 
 /* A triangle with provoking vertex pv; `pipeline`: its vsplit segment
@@ -374,8 +376,11 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    /* GL_PHONG_WIN: the shading environment of the batch, with the current
     * material (the materials in the vertex format, per primitive) */
    unsigned phong_mats = 0;
-   if (ctx->_Raster.phong) {
-      fgl_update_shade_env(ctx, &ctx->_Raster.shade_env);
+   if (ctx->_Raster.fs->phong) {
+      memset(&ctx->_ShadeEnv, 0, sizeof(ctx->_ShadeEnv));
+      fgl_update_shade_env(ctx, &ctx->_ShadeEnv);
+      if (!fgl_set_shade_env(ctx))
+         return;
       for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++)
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);

@@ -119,8 +119,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
    const float *color = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR0, &cstride);
    const bool lit = ctx->Light.Enabled;
    /* GL_PHONG_WIN: lit per fragment, from t_phong's varyings */
-   const bool phong = ctx->_Raster.phong;
-   const bool fog = (ctx->_Raster.fs_inputs & (1u << R_FS_FOG)) != 0;
+   const bool phong = ctx->_Raster.fs->phong;
+   const bool fog = (ctx->_Raster.fs->fs_inputs & (1u << R_FS_FOG)) != 0;
    /* [S: ffvertex_prog.c:make_state_key] in GL_FEEDBACK the vertex
     * program always writes TEX0 (for the feedback records); otherwise it
     * writes the coordinate of each unit enabled with a complete texture
@@ -132,14 +132,14 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
     * slots below num_attribs, are ever read (clipping, flat shading and
     * the raster core stop there). */
    const size_t clear_bytes = fog || ctx->_EnabledTexUnits || phong
-                                 ? (size_t)ctx->_Raster.num_attribs * sizeof(out->r.attr[0])
+                                 ? (size_t)ctx->_Raster.fs->num_attribs * sizeof(out->r.attr[0])
                                  : 0;
    /* draw_llvm.c do_clamp_vertex_color: every colour output; under
     * GL_PHONG_WIN the vertex colour is a material input of the lighting
     * per fragment, unclamped (as a generic varying of the reference).
     * Unlit, the vertex colour is clamped as it is copied
     * (transform_positions) and the other colour slots are zeros. */
-   const int nattr = ctx->_Raster.num_attribs;
+   const int nattr = ctx->_Raster.fs->num_attribs;
    const int ncolor = phong || !lit ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
 
    /* the lighting's per-batch values (uniforms, material sources, the

@@ -25,17 +25,34 @@ static uint8_t pixel[4];
 static uint32_t zs32;
 static uint8_t zs8;
 
+/* The state objects of the tests' r_state, which each test edits. */
+static struct r_fb_state t_fb;
+static struct r_rast_state t_rast;
+static struct r_dsa_state t_dsa;
+static struct r_blend_state t_blend;
+static struct r_fs_state t_fs;
+
 /* A 1x1 target with a Z24S8 buffer and every op off. */
 static struct r_state target(void)
 {
    struct r_state rs;
    memset(&rs, 0, sizeof rs);
-   rs.color = pixel;
-   rs.zs = &zs32;
-   rs.zs_format = R_ZS_Z24S8;
-   rs.width = rs.height = 1;
+   memset(&t_fb, 0, sizeof t_fb);
+   memset(&t_rast, 0, sizeof t_rast);
+   memset(&t_dsa, 0, sizeof t_dsa);
+   memset(&t_blend, 0, sizeof t_blend);
+   memset(&t_fs, 0, sizeof t_fs);
+   rs.fb = &t_fb;
+   rs.rast = &t_rast;
+   rs.dsa = &t_dsa;
+   rs.blend = &t_blend;
+   rs.fs = &t_fs;
+   t_fb.color = pixel;
+   t_fb.zs = &zs32;
+   t_fb.zs_format = R_ZS_Z24S8;
+   t_fb.width = t_fb.height = 1;
    rs.x1 = rs.y1 = 1;
-   rs.color_mask = 0xf;
+   t_blend.color_mask = 0xf;
    rs.full_ops = true;
    return rs;
 }
@@ -50,7 +67,7 @@ static void test_plain_store(void)
 {
    struct r_state rs = target();
    rs.full_ops = false;
-   rs.color_mask = 0;            /* ignored on the plain path */
+   t_blend.color_mask = 0;            /* ignored on the plain path */
    const float c[4] = { 1.0f, 0.5f, 0.0f, unorm(77) };
    r_fragment_ops(&rs, 0, 0, 0.5f, c);
    CHECK(pixel[0] == 255 && pixel[1] == 128 && pixel[2] == 0 && pixel[3] == 77,
@@ -63,10 +80,10 @@ static void test_plain_store(void)
 static void test_blend_mul(void)
 {
    struct r_state rs = target();
-   rs.blend = true;
-   rs.blend_eq = R_BLEND_ADD;
-   rs.blend_src = R_BF_SRC_ALPHA;
-   rs.blend_dst = R_BF_ZERO;
+   t_blend.enable = true;
+   t_blend.blend_eq = R_BLEND_ADD;
+   t_blend.blend_src = R_BF_SRC_ALPHA;
+   t_blend.blend_dst = R_BF_ZERO;
    int bad = 0;
    for (unsigned a = 0; a < 256; a++) {
       for (unsigned f = 0; f < 256; f++) {
@@ -89,10 +106,10 @@ static void test_blend_equations(void)
 {
    static const unsigned vals[] = { 0, 1, 100, 128, 200, 254, 255 };
    struct r_state rs = target();
-   rs.blend = true;
-   rs.blend_src = rs.blend_dst = R_BF_ONE;
+   t_blend.enable = true;
+   t_blend.blend_src = t_blend.blend_dst = R_BF_ONE;
    for (int e = R_BLEND_ADD; e <= R_BLEND_MAX; e++) {
-      rs.blend_eq = (enum r_blend_eq)e;
+      t_blend.blend_eq = (enum r_blend_eq)e;
       for (unsigned i = 0; i < sizeof vals / sizeof vals[0]; i++) {
          for (unsigned j = 0; j < sizeof vals / sizeof vals[0]; j++) {
             const unsigned s = vals[i], d = vals[j];
@@ -119,15 +136,15 @@ static void test_blend_equations(void)
 static void test_saturate(void)
 {
    struct r_state rs = target();
-   rs.blend = true;
-   rs.blend_eq = R_BLEND_ADD;
-   rs.blend_src = R_BF_SRC_ALPHA_SATURATE;
-   rs.blend_dst = R_BF_ZERO;
+   t_blend.enable = true;
+   t_blend.blend_eq = R_BLEND_ADD;
+   t_blend.blend_src = R_BF_SRC_ALPHA_SATURATE;
+   t_blend.blend_dst = R_BF_ZERO;
    pixel[3] = 200;                       /* 1 - dst.a = 55 */
    const float c[4] = { 1, 1, 1, unorm(100) };
    r_fragment_ops(&rs, 0, 0, 0, c);
    CHECK(pixel[0] == 55 && pixel[3] == 100, "saturate gave rgb %u alpha %u", pixel[0], pixel[3]);
-   rs.dst_alpha_one = true;
+   t_blend.dst_alpha_one = true;
    pixel[3] = 0;
    r_fragment_ops(&rs, 0, 0, 0, c);
    CHECK(pixel[0] == 0, "saturate without dst alpha gave %u", pixel[0]);
@@ -150,10 +167,10 @@ static bool func_model(enum r_func f, unsigned a, unsigned b)
 static void test_alpha(void)
 {
    struct r_state rs = target();
-   rs.alpha_test = true;
-   rs.alpha_ref = 128;
+   t_dsa.alpha_test = true;
+   t_dsa.alpha_ref = 128;
    for (int f = R_NEVER; f <= R_ALWAYS; f++) {
-      rs.alpha_func = (enum r_func)f;
+      t_dsa.alpha_func = (enum r_func)f;
       for (unsigned a = 120; a < 136; a++) {
          memset(pixel, 0, sizeof pixel);
          const float c[4] = { 1, 0, 0, unorm(a) };
@@ -163,8 +180,8 @@ static void test_alpha(void)
       }
    }
    /* alpha above 1 clamps to 1 (255) */
-   rs.alpha_func = R_EQUAL;
-   rs.alpha_ref = 255;
+   t_dsa.alpha_func = R_EQUAL;
+   t_dsa.alpha_ref = 255;
    const float hi[4] = { 0, 1, 0, 7.0f };
    memset(pixel, 0, sizeof pixel);
    r_fragment_ops(&rs, 0, 0, 0, hi);
@@ -181,10 +198,10 @@ static void test_alpha(void)
       { R_NEVER, 0.25f, NAN, false },
       { R_LEQUAL, 3.0f, 1.0f, true },         /* alpha clamped to 1 */
    };
-   rs.alpha_test_float = true;
+   t_dsa.alpha_test_float = true;
    for (unsigned i = 0; i < sizeof fl / sizeof fl[0]; i++) {
-      rs.alpha_func = fl[i].f;
-      rs.alpha_ref_float = fl[i].ref;
+      t_dsa.alpha_func = fl[i].f;
+      t_dsa.alpha_ref_float = fl[i].ref;
       memset(pixel, 0, sizeof pixel);
       const float c[4] = { 1, 0, 0, fl[i].alpha };
       r_fragment_ops(&rs, 0, 0, 0, c);
@@ -215,25 +232,25 @@ static void test_stencil(void)
    for (int fmt = 0; fmt < 2; fmt++) {
       struct r_state rs = target();
       if (fmt) {
-         rs.zs = &zs8;
-         rs.zs_format = R_ZS_S8;
+         t_fb.zs = &zs8;
+         t_fb.zs_format = R_ZS_S8;
       }
-      rs.stencil_test = true;
-      rs.stencil_ref = 0x5a;
-      rs.stencil_valuemask = 0xff;
-      rs.depth_test = fmt == 0;
-      rs.depth_func = R_LESS;
+      t_dsa.stencil_test = true;
+      t_dsa.stencil_ref = 0x5a;
+      t_dsa.stencil_valuemask = 0xff;
+      t_dsa.depth_test = fmt == 0;
+      t_dsa.depth_func = R_LESS;
       for (int op = R_STENCIL_KEEP; op <= R_STENCIL_INVERT; op++) {
          for (int which = 0; which < 3; which++) {      /* fail, zfail, zpass */
             if (fmt == 1 && which == 1)
                continue;                                /* no depth buffer */
-            rs.stencil_fail = which == 0 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
-            rs.stencil_zfail = which == 1 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
-            rs.stencil_zpass = which == 2 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
-            rs.stencil_func = which == 0 ? R_NEVER : R_ALWAYS;
+            t_dsa.stencil_fail = which == 0 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
+            t_dsa.stencil_zfail = which == 1 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
+            t_dsa.stencil_zpass = which == 2 ? (enum r_stencil_op)op : R_STENCIL_KEEP;
+            t_dsa.stencil_func = which == 0 ? R_NEVER : R_ALWAYS;
             for (unsigned k = 0; k < sizeof starts; k++) {
                for (unsigned m = 0; m < sizeof wmasks; m++) {
-                  rs.stencil_writemask = wmasks[m];
+                  t_dsa.stencil_writemask = wmasks[m];
                   /* depth 0x800000 in the word; z 0.75 fails LESS, 0.25 passes */
                   zs32 = (uint32_t)starts[k] << 24 | 0x800000u;
                   zs8 = starts[k];
@@ -254,12 +271,12 @@ static void test_stencil(void)
    }
    /* the test: (ref & vm) func (s & vm) */
    struct r_state rs = target();
-   rs.stencil_test = true;
-   rs.stencil_writemask = 0xff;
-   rs.stencil_ref = 0x4f;
-   rs.stencil_valuemask = 0x70;
+   t_dsa.stencil_test = true;
+   t_dsa.stencil_writemask = 0xff;
+   t_dsa.stencil_ref = 0x4f;
+   t_dsa.stencil_valuemask = 0x70;
    for (int f = R_NEVER; f <= R_ALWAYS; f++) {
-      rs.stencil_func = (enum r_func)f;
+      t_dsa.stencil_func = (enum r_func)f;
       for (unsigned s = 0x30; s <= 0x50; s += 0x08) {
          zs32 = (uint32_t)s << 24;
          memset(pixel, 0, sizeof pixel);
@@ -274,13 +291,13 @@ static void test_stencil(void)
 static void test_logic_ops(void)
 {
    struct r_state rs = target();
-   rs.logic_op = true;
-   rs.blend = true;                      /* the logic op wins */
-   rs.blend_src = R_BF_ZERO;
-   rs.blend_dst = R_BF_ZERO;
+   t_blend.logic_op = true;
+   t_blend.enable = true;                      /* the logic op wins */
+   t_blend.blend_src = R_BF_ZERO;
+   t_blend.blend_dst = R_BF_ZERO;
    const unsigned s = 0xcc, d = 0xaa;
    for (unsigned op = 0; op < 16; op++) {
-      rs.logic_op_mode = op;
+      t_blend.logic_op_mode = op;
       pixel[0] = (uint8_t)d;
       const float c[4] = { unorm(s), 0, 0, 1 };
       r_fragment_ops(&rs, 0, 0, 0, c);
@@ -297,7 +314,7 @@ static void test_color_mask(void)
 {
    struct r_state rs = target();
    for (unsigned m = 0; m < 16; m++) {
-      rs.color_mask = m;
+      t_blend.color_mask = m;
       memset(pixel, 9, sizeof pixel);
       const float c[4] = { 1, 1, 1, 1 };
       r_fragment_ops(&rs, 0, 0, 0, c);

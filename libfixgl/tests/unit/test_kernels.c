@@ -270,47 +270,47 @@ static void make_key(const struct r_state *rs, int kind, struct state_key *k)
 {
    memset(k, 0, sizeof *k);
    k->kind = (uint8_t)kind;
-   k->zs_format = (uint8_t)rs->zs_format;
-   if (rs->depth_test) {
-      k->depth_func = (uint8_t)(rs->depth_func + 1);
-      k->depth_write = rs->depth_write;
+   k->zs_format = (uint8_t)rs->fb->zs_format;
+   if (rs->dsa->depth_test) {
+      k->depth_func = (uint8_t)(rs->dsa->depth_func + 1);
+      k->depth_write = rs->dsa->depth_write;
    }
    if (rs->full_ops) {
-      if (rs->stencil_test) {
-         k->stencil_func = (uint8_t)(rs->stencil_func + 1);
-         k->sfail = (uint8_t)rs->stencil_fail;
-         k->szfail = (uint8_t)rs->stencil_zfail;
-         k->szpass = (uint8_t)rs->stencil_zpass;
+      if (rs->dsa->stencil_test) {
+         k->stencil_func = (uint8_t)(rs->dsa->stencil_func + 1);
+         k->sfail = (uint8_t)rs->dsa->stencil_fail;
+         k->szfail = (uint8_t)rs->dsa->stencil_zfail;
+         k->szpass = (uint8_t)rs->dsa->stencil_zpass;
       }
-      if (rs->alpha_test)
-         k->alpha_func = (uint8_t)(rs->alpha_func + 1);
-      if (rs->blend) {
-         k->blend_eq = (uint8_t)(rs->blend_eq + 1);
-         k->blend_src = (uint8_t)rs->blend_src;
-         k->blend_dst = (uint8_t)rs->blend_dst;
+      if (rs->dsa->alpha_test)
+         k->alpha_func = (uint8_t)(rs->dsa->alpha_func + 1);
+      if (rs->blend->enable) {
+         k->blend_eq = (uint8_t)(rs->blend->blend_eq + 1);
+         k->blend_src = (uint8_t)rs->blend->blend_src;
+         k->blend_dst = (uint8_t)rs->blend->blend_dst;
       }
-      if (rs->logic_op)
-         k->logic_op = (uint8_t)(rs->logic_op_mode + 1);
-      k->color_mask = (uint8_t)rs->color_mask;
-      k->dst_alpha_one = rs->dst_alpha_one;
+      if (rs->blend->logic_op)
+         k->logic_op = (uint8_t)(rs->blend->logic_op_mode + 1);
+      k->color_mask = (uint8_t)rs->blend->color_mask;
+      k->dst_alpha_one = rs->blend->dst_alpha_one;
    }
-   k->flags = (uint8_t)(rs->full_ops | rs->color_sum << 1 | rs->twoside << 2 | rs->stipple << 3 |
-                        rs->alpha_test_float << 4);
-   k->fog_mode = (uint8_t)rs->fog_mode;
-   k->aa = (uint8_t)rs->aa;
-   k->phong = rs->phong;
-   if (rs->phong) {
-      k->model[0] = (uint8_t)(rs->shade_env.material[0].model + 1);
-      k->model[1] = (uint8_t)(rs->shade_env.material[1].model + 1);
+   k->flags = (uint8_t)(rs->full_ops | rs->fs->color_sum << 1 | rs->rast->twoside << 2 | rs->rast->stipple << 3 |
+                        rs->dsa->alpha_test_float << 4);
+   k->fog_mode = (uint8_t)rs->fs->fog_mode;
+   k->aa = (uint8_t)rs->fs->aa;
+   k->phong = rs->fs->phong;
+   if (rs->fs->phong) {
+      k->model[0] = (uint8_t)(rs->shade_env->material[0].model + 1);
+      k->model[1] = (uint8_t)(rs->shade_env->material[1].model + 1);
    }
    k->pix = rs->pix ? (uint8_t)(rs->pix->kind + 1) : 0;
-   k->fs_inputs = rs->fs_inputs;
-   k->tex_units = rs->tex_units;
-   k->tex_nr = (uint8_t)rs->tex_nr;
-   for (int u = 0; u < 4 && u < rs->tex_nr; u++) {
-      if (!(rs->tex_units & (1u << u)))
+   k->fs_inputs = rs->fs->fs_inputs;
+   k->tex_units = rs->fs->tex_units;
+   k->tex_nr = (uint8_t)rs->fs->tex_nr;
+   for (int u = 0; u < 4 && u < rs->fs->tex_nr; u++) {
+      if (!(rs->fs->tex_units & (1u << u)))
          continue;
-      const struct r_tex_unit *tu = &rs->tex[u];
+      const struct r_tex_unit *tu = rs->tex[u];
       k->tex[u].dims = (uint8_t)tu->tex.dims;
       k->tex[u].min = (uint8_t)tu->tex.min_img;
       k->tex[u].mag = (uint8_t)tu->tex.mag_img;
@@ -1477,10 +1477,48 @@ static bool compare_buffers(const struct config *c, const struct side *fast,
 
 static long g_perturb = -1;
 
+/* A copy of a context's raster state with its objects, which outlives
+ * the context (for the failure report). */
+struct rs_snapshot {
+   struct r_state rs;
+   struct r_fb_state fb;
+   struct r_rast_state rast;
+   struct r_dsa_state dsa;
+   struct r_blend_state blend;
+   struct r_fs_state fs;
+   struct r_tex_unit tex[R_MAX_TEX_UNITS];
+   struct m_shade_env shade_env;
+};
+
+static void snapshot(struct rs_snapshot *s, const struct r_state *rs)
+{
+   s->rs = *rs;
+   s->fb = *rs->fb;
+   s->rast = *rs->rast;
+   s->dsa = *rs->dsa;
+   s->blend = *rs->blend;
+   s->fs = *rs->fs;
+   s->rs.fb = &s->fb;
+   s->rs.rast = &s->rast;
+   s->rs.dsa = &s->dsa;
+   s->rs.blend = &s->blend;
+   s->rs.fs = &s->fs;
+   for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+      if (rs->tex[u]) {
+         s->tex[u] = *rs->tex[u];
+         s->rs.tex[u] = &s->tex[u];
+      }
+   }
+   if (rs->shade_env) {
+      s->shade_env = *rs->shade_env;
+      s->rs.shade_env = &s->shade_env;
+   }
+}
+
 /* Draws batch `b` (its seed bseed) into a fresh pair of contexts, the
  * draw calls up to `limit`; false with *d filled when they differ. */
 static bool run_pair(long b, uint64_t bseed, long limit, bool record, struct diff *d,
-                     struct r_state *fast_rs)
+                     struct rs_snapshot *fast_rs)
 {
    const struct config c = pick_config(bseed);
    struct side fast = { 0 }, ref = { 0 };
@@ -1506,7 +1544,7 @@ static bool run_pair(long b, uint64_t bseed, long limit, bool record, struct dif
       g_count.stats_batches++;
    }
    if (fast_rs)
-      memcpy(fast_rs, &fast.gl->_Raster, sizeof *fast_rs);
+      snapshot(fast_rs, &fast.gl->_Raster);
    const bool log = g_log;
    g_log = false;
    OSMesaMakeCurrent(ref.osm, ref.buf, GL_UNSIGNED_BYTE, c.w, c.h);
@@ -1536,26 +1574,27 @@ static void print_rs(const struct r_state *rs)
            "  fs_inputs 0x%x flat_mask 0x%x colour sum %d twoside %d fog %d aa %d stipple %d "
            "phong %d (models %d %d) tex_units 0x%x tex_nr %d pix %d | offset %.9g %.9g | "
            "tri kernels %p %p\n",
-           rs->zs_format, rs->depth_test, rs->depth_func, rs->depth_write, rs->full_ops,
-           rs->alpha_test, rs->alpha_func, rs->alpha_ref, rs->stencil_test, rs->stencil_func,
-           rs->stencil_ref, rs->stencil_valuemask, rs->stencil_writemask, rs->stencil_fail,
-           rs->stencil_zfail, rs->stencil_zpass, rs->blend, rs->blend_eq, rs->blend_src,
-           rs->blend_dst, rs->blend_color[0], rs->blend_color[1], rs->blend_color[2],
-           rs->blend_color[3], rs->logic_op, rs->logic_op_mode, rs->color_mask, rs->dst_alpha_one,
-           rs->fs_inputs, rs->flat_mask, rs->color_sum, rs->twoside, rs->fog_mode, rs->aa,
-           rs->stipple, rs->phong, rs->shade_env.material[0].model, rs->shade_env.material[1].model,
-           rs->tex_units, rs->tex_nr, rs->pix != NULL, rs->offset_units, rs->offset_scale,
+           rs->fb->zs_format, rs->dsa->depth_test, rs->dsa->depth_func, rs->dsa->depth_write, rs->full_ops,
+           rs->dsa->alpha_test, rs->dsa->alpha_func, rs->dsa->alpha_ref, rs->dsa->stencil_test, rs->dsa->stencil_func,
+           rs->dsa->stencil_ref, rs->dsa->stencil_valuemask, rs->dsa->stencil_writemask, rs->dsa->stencil_fail,
+           rs->dsa->stencil_zfail, rs->dsa->stencil_zpass, rs->blend->enable, rs->blend->blend_eq, rs->blend->blend_src,
+           rs->blend->blend_dst, rs->blend->blend_color[0], rs->blend->blend_color[1], rs->blend->blend_color[2],
+           rs->blend->blend_color[3], rs->blend->logic_op, rs->blend->logic_op_mode, rs->blend->color_mask, rs->blend->dst_alpha_one,
+           rs->fs->fs_inputs, rs->flat_mask, rs->fs->color_sum, rs->rast->twoside, rs->fs->fog_mode, rs->fs->aa,
+           rs->rast->stipple, rs->fs->phong, rs->shade_env ? (int)rs->shade_env->material[0].model : -1,
+           rs->shade_env ? (int)rs->shade_env->material[1].model : -1,
+           rs->fs->tex_units, rs->fs->tex_nr, rs->pix != NULL, rs->rast->offset_units, rs->rast->offset_scale,
            (void *)(uintptr_t)rs->tri_kernel[0], (void *)(uintptr_t)rs->tri_kernel[1]);
-   for (int u = 0; u < rs->tex_nr; u++)
-      if (rs->tex_units & (1u << u))
+   for (int u = 0; u < rs->fs->tex_nr; u++)
+      if (rs->fs->tex_units & (1u << u))
          fprintf(stderr,
                  "  unit %d: %dD min %d mag %d mip %d wrap %d %d soa %d float %d comb %d %d "
                  "simple %d fn %d %d\n",
-                 u, rs->tex[u].tex.dims, rs->tex[u].tex.min_img, rs->tex[u].tex.mag_img,
-                 rs->tex[u].tex.mip, rs->tex[u].tex.wrap_s, rs->tex[u].tex.wrap_t,
-                 rs->tex[u].tex.soa, rs->tex[u].tex.float_path, rs->tex[u].comb.mode_rgb,
-                 rs->tex[u].comb.mode_a, rs->tex[u].comb.simple, rs->tex[u].comb.simple_fn_rgb,
-                 rs->tex[u].comb.simple_fn_a);
+                 u, rs->tex[u]->tex.dims, rs->tex[u]->tex.min_img, rs->tex[u]->tex.mag_img,
+                 rs->tex[u]->tex.mip, rs->tex[u]->tex.wrap_s, rs->tex[u]->tex.wrap_t,
+                 rs->tex[u]->tex.soa, rs->tex[u]->tex.float_path, rs->tex[u]->comb.mode_rgb,
+                 rs->tex[u]->comb.mode_a, rs->tex[u]->comb.simple, rs->tex[u]->comb.simple_fn_rgb,
+                 rs->tex[u]->comb.simple_fn_a);
 }
 
 /* A batch whose buffers differ: the first draw call after which they do,
@@ -1583,7 +1622,7 @@ static void report_mismatch(uint64_t seed, long b, const struct diff *whole)
       fprintf(stderr, "  (no prefix of the draw calls differs: only the whole batch)\n");
       return;
    }
-   static struct r_state rs;
+   static struct rs_snapshot rs;
    g_log = true;
    g_loglen = 0;
    run_pair(b, bseed, first, false, &d, &rs);
@@ -1595,7 +1634,7 @@ static void report_mismatch(uint64_t seed, long b, const struct diff *whole)
    fprintf(stderr,
            "%s at (%d, %d) (GL window coordinates) reference 0x%08x fast 0x%08x\n", d.buffer, d.x, d.y, d.expected, d.got);
    fprintf(stderr, "  GL calls of the batch up to it:\n%s", g_logbuf ? g_logbuf : "");
-   print_rs(&rs);
+   print_rs(&rs.rs);
 }
 
 /* ---- main ---------------------------------------------------------------- */

@@ -42,24 +42,41 @@ struct tri {
    float x[3], y[3];
 };
 
+/* The state objects of make_state's r_state, which the tests edit. */
+static struct r_fb_state t_fb;
+static struct r_rast_state t_rast;
+static struct r_dsa_state t_dsa;
+static struct r_blend_state t_blend;
+static struct r_fs_state t_fs;
+
 static struct r_state make_state(uint8_t *color, int w, int h)
 {
    struct r_state rs;
    memset(&rs, 0, sizeof rs);
-   rs.color = color;
-   rs.zs = NULL;
-   rs.zs_format = R_ZS_NONE;
-   rs.width = w;
-   rs.height = h;
+   memset(&t_fb, 0, sizeof t_fb);
+   memset(&t_rast, 0, sizeof t_rast);
+   memset(&t_dsa, 0, sizeof t_dsa);
+   memset(&t_blend, 0, sizeof t_blend);
+   memset(&t_fs, 0, sizeof t_fs);
+   rs.fb = &t_fb;
+   rs.rast = &t_rast;
+   rs.dsa = &t_dsa;
+   rs.blend = &t_blend;
+   rs.fs = &t_fs;
+   t_fb.color = color;
+   t_fb.zs = NULL;
+   t_fb.zs_format = R_ZS_NONE;
+   t_fb.width = w;
+   t_fb.height = h;
    rs.x0 = 0;
    rs.y0 = 0;
    rs.x1 = w;
    rs.y1 = h;
-   rs.depth_test = false;
-   rs.depth_func = R_LESS;
-   rs.depth_write = false;
-   rs.num_attribs = 1;
-   rs.fs_inputs = 1u << R_FS_COLOR0;
+   t_dsa.depth_test = false;
+   t_dsa.depth_func = R_LESS;
+   t_dsa.depth_write = false;
+   t_fs.num_attribs = 1;
+   t_fs.fs_inputs = 1u << R_FS_COLOR0;
    rs.flat_mask = 1u; /* colour from the provoking vertex */
    return rs;
 }
@@ -93,9 +110,11 @@ static void draw_and_count(const char *file, int line, const char *what,
       return;
    }
    struct r_state rs = *proto;
-   rs.color = buf;
-   rs.width = w;
-   rs.height = h;
+   struct r_fb_state fb = *proto->fb;
+   fb.color = buf;
+   fb.width = w;
+   fb.height = h;
+   rs.fb = &fb;
    struct r_vertex v[3];
    for (int i = 0; i < 3; i++)
       v[i] = make_vertex(t->x[o[i]], t->y[o[i]], white);
@@ -669,11 +688,11 @@ static void test_depth(void)
    uint8_t buf[W * H * 4];
    uint32_t zs[W * H];
    struct r_state rs = make_state(buf, W, H);
-   rs.zs = zs;
-   rs.zs_format = R_ZS_Z24S8;
-   rs.depth_test = true;
-   rs.depth_func = R_LESS;
-   rs.depth_write = true;
+   t_fb.zs = zs;
+   t_fb.zs_format = R_ZS_Z24S8;
+   t_dsa.depth_test = true;
+   t_dsa.depth_func = R_LESS;
+   t_dsa.depth_write = true;
    memset(buf, 0, sizeof buf);
    for (int i = 0; i < W * H; i++)
       zs[i] = 0xab000000u | 0xffffffu;
@@ -711,10 +730,10 @@ static void test_depth(void)
    /* Z16, GL_LEQUAL, no depth write: 0.5 -> 32767.5 -> 32768 passes
     * against 32768 and fails against 32767 */
    uint16_t z16[W * H];
-   rs.zs = z16;
-   rs.zs_format = R_ZS_Z16;
-   rs.depth_func = R_LEQUAL;
-   rs.depth_write = false;
+   t_fb.zs = z16;
+   t_fb.zs_format = R_ZS_Z16;
+   t_dsa.depth_func = R_LEQUAL;
+   t_dsa.depth_write = false;
    memset(buf, 0, sizeof buf);
    for (int i = 0; i < W * H; i++)
       z16[i] = (i % 2) ? 32768 : 32767;
