@@ -2,6 +2,7 @@
  * Context lifetime, the thread-local current context and GL errors.
  */
 #include "context.h"
+#include "raster/r_pool.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -123,6 +124,8 @@ struct fgl_context *fgl_context_create(void)
     * (raster/r_kernel.h) */
    const char *kernels = getenv("FIXGL_KERNELS");
    ctx->_Raster.reference_kernels = kernels && strcmp(kernels, "reference") == 0;
+   ctx->_NumThreads = fgl_num_threads();
+   r_pool_ref();
    /* the state objects of the initial state, so that every r_state
     * field points to one from now on */
    ctx->NewState = FGL_NEW_ALL;
@@ -140,6 +143,12 @@ void fgl_context_destroy(struct fgl_context *ctx)
 {
    if (!ctx)
       return;
+   /* what is binned reaches the buffers, which the caller may still read
+    * (OSMesa's internal ones are freed after) */
+   fgl_scene_flush(ctx);
+   r_scene_fini(&ctx->_Scene);
+   if (ctx->_NumThreads)
+      r_pool_unref();
    fgl_free_matrix(ctx);
    fgl_free_dlist(ctx);
    fgl_free_drawpix_cache(ctx);

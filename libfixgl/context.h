@@ -22,6 +22,7 @@
 #include <stdint.h>
 
 #include "math/m_matrix.h"
+#include "raster/r_scene.h"
 #include "raster/r_state.h"
 #include "tnl/t_vbo.h"
 
@@ -754,16 +755,20 @@ struct fgl_attrib_node {
  * vertex stage whatever of it is not the raster core's setup or raster
  * time (t_render.c, fgl_stats_batch_end). */
 struct fgl_stats {
-   struct r_stats raster;
-   uint64_t batch_ns;            /* wall time in t_render_batch */
-   uint64_t vertex_ns;           /* batch_ns minus the raster core's time in it */
+   struct r_stats raster;        /* summed over the threads */
+   uint64_t batch_ns;            /* wall time in t_render_batch and in the
+                                  * scene's rasterization */
+   uint64_t vertex_ns;           /* t_render_batch's time minus the
+                                  * rasterization inside it */
+   uint64_t flush_ns;            /* wall time of the scene's rasterization */
    uint64_t batches;
+   bool in_batch;                /* inside t_render_batch */
 };
 
-/* Timestamp of fgl_stats_batch_begin: the clock and the raster core's
+/* Timestamp of fgl_stats_batch_begin: the clock and the rasterization
  * time at the start of a batch. */
 struct fgl_stats_mark {
-   uint64_t t0, raster0;
+   uint64_t t0, flush0;
 };
 
 struct fgl_context {
@@ -891,6 +896,10 @@ struct fgl_context {
    /* GL_PHONG_WIN: the shading environment of the batch being drawn, as
     * built before it becomes _Raster.shade_env (tnl/t_render.c) */
    struct m_shade_env _ShadeEnv;
+   /* the primitives and clears binned since the last flush (scene.c),
+    * rasterized by _NumThreads threads (FIXGL_NUM_THREADS) */
+   struct r_scene _Scene;
+   unsigned _NumThreads;
    /* fixglStats (main/stats.c): the benchmark's counters; _Raster.stats
     * points to Stats.raster while they are enabled, else it is NULL */
    struct fgl_stats Stats;
@@ -952,6 +961,22 @@ void fgl_update_shade_env(const struct fgl_context *ctx, struct m_shade_env *env
 /* The fog uniforms of the fragment program (STATE_FOG_PARAMS_OPTIMIZED,
  * STATE_FOG_COLOR) from the current fog state into fs (state.c) */
 void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
+/* The scene (scene.c): primitives and whole-buffer clears go to the
+ * scene of the context; fgl_scene_flush rasterizes them, and must run
+ * before anything reads or replaces the framebuffer, or changes a
+ * texture image. */
+#define FGL_MAX_THREADS 64
+unsigned fgl_num_threads(void);
+void fgl_scene_flush(struct fgl_context *ctx);
+void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
+                         const struct r_vertex *v0, const struct r_vertex *v1,
+                         const struct r_vertex *v2);
+void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
+                     const struct r_vertex *v0, const struct r_vertex *v1);
+void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
+                      const struct r_vertex *v);
+void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4], bool depth,
+                      uint32_t zvalue, bool stencil, uint8_t svalue);
 /* _Raster.shade_env := the object equal to _ShadeEnv (state.c); false
  * when there is none (out of memory, GL_OUT_OF_MEMORY raised). */
 bool fgl_set_shade_env(struct fgl_context *ctx);
@@ -964,8 +989,10 @@ void fgl_update_stipple(struct fgl_context *ctx);
 /* fixglStats (main/stats.c): around a vertex batch while the counters are
  * enabled (ctx->_Raster.stats non-NULL), the batch's time into
  * ctx->Stats. */
-void fgl_stats_batch_begin(const struct fgl_context *ctx, struct fgl_stats_mark *mark);
+void fgl_stats_batch_begin(struct fgl_context *ctx, struct fgl_stats_mark *mark);
 void fgl_stats_batch_end(struct fgl_context *ctx, const struct fgl_stats_mark *mark);
+/* fgl_scene_flush while counting: a rasterization of ns wall time */
+void fgl_stats_flush(struct fgl_context *ctx, uint64_t ns);
 
 /* the active unit's matrix stack (the scratch stack past unit 7) */
 static inline struct fgl_matrix_stack *fgl_texture_stack(struct fgl_context *ctx)

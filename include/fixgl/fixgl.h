@@ -69,11 +69,14 @@ const char *fixglGetVersion(void);
  * in primitives drawn outside a vertex batch (pixel rectangles), if any. */
 struct fixgl_stats {
    unsigned long long fragments;   /* fragments shaded */
-   unsigned long long setup_ns;    /* primitive setup (raster core) */
-   unsigned long long raster_ns;   /* coverage and fragments (raster core) */
-   unsigned long long vertex_ns;   /* vertex stage: batch_ns minus the raster
-                                    * core's time inside the batches */
-   unsigned long long batch_ns;    /* vertex batches, all stages */
+   unsigned long long setup_ns;    /* primitive setup (raster core; summed
+                                    * over the rasterizing threads) */
+   unsigned long long raster_ns;   /* coverage and fragments (raster core;
+                                    * summed over the threads) */
+   unsigned long long vertex_ns;   /* vertex stage: the vertex batches' wall
+                                    * time minus the rasterization in them */
+   unsigned long long batch_ns;    /* wall time of the vertex batches and of
+                                    * the rasterization of their primitives */
    unsigned long long batches;     /* vertex batches drawn */
    int enabled;                    /* fixglStats' current setting */
 };

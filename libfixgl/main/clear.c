@@ -115,7 +115,6 @@ void GLAPIENTRY glClear(GLbitfield mask)
    /* [S: st_cb_clear.c:st_Clear] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
    fgl_update_state(ctx);
-   const struct r_state *rs = &ctx->_Raster;
    if (ctx->Color.DrawBuffer != GL_NONE)
       ctx->DrawBuffer->ColorDefined = true;
 
@@ -159,17 +158,22 @@ void GLAPIENTRY glClear(GLbitfield mask)
       depth_clear = stencil_clear = false;
    }
 
-   if (color_clear) {
-      uint8_t rgba[4];
-      for (int i = 0; i < 4; i++)
-         rgba[i] = r_float_to_unorm8(ctx->Color.ClearColor[i]);
-      r_clear_color(rs, rgba);
+   /* whole-buffer clears: a command of the scene (each tile cleared by
+    * the thread that then draws it) */
+   if (color_clear || depth_clear || stencil_clear) {
+      uint8_t rgba[4] = { 0, 0, 0, 0 };
+      if (color_clear)
+         for (int i = 0; i < 4; i++)
+            rgba[i] = r_float_to_unorm8(ctx->Color.ClearColor[i]);
+      fgl_raster_clear(ctx, color_clear, rgba, depth_clear,
+                       depth_clear ? pack_z(ctx->Depth.Clear, fb->DepthBits) : 0u,
+                       stencil_clear, (uint8_t)ctx->Stencil.Clear);
    }
-   if (depth_clear || stencil_clear)
-      r_clear_depth_stencil(rs, depth_clear, pack_z(ctx->Depth.Clear, fb->DepthBits),
-                            stencil_clear, (uint8_t)ctx->Stencil.Clear);
-   if (color_quad || depth_quad || stencil_quad)
+   if (color_quad || depth_quad || stencil_quad) {
+      /* drawn at once, after what the scene holds */
+      fgl_scene_flush(ctx);
       clear_with_quad(ctx, color_quad, depth_quad, stencil_quad);
+   }
    /* the accumulation buffer last, in software [S: state_tracker/
     * st_cb_clear.c:st_Clear; main/accum.c:_mesa_clear_accum_buffer]; only
     * in GL_RENDER mode [S: main/clear.c:clear] */

@@ -172,6 +172,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
 {
    if (!rs->fb->color && !rs->fb->zs)
       return;
+   fgl_scene_flush(ctx);   /* drawn now, after what the scene holds */
    struct r_pixel_image img = {
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
    };
@@ -970,6 +971,7 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
 static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int height,
                         GLenum format, GLenum type, const void *pixels)
 {
+   fgl_scene_flush(ctx);   /* drawn now, after what the scene holds */
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    struct fgl_pixelstore unpack = ctx->Unpack;
 
@@ -1209,6 +1211,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
 {
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    fgl_flush_bitmap_cache(ctx);
+   fgl_scene_flush(ctx);   /* reads and draws the framebuffer now */
    if (blit_copy_pixels(ctx, srcx, srcy, width, height, dstx, dsty, type))
       return;
 

@@ -246,6 +246,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       return;
    ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
+   fgl_scene_flush(ctx);
    if (width < 0 || height < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;

@@ -615,6 +615,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    /* legal_teximage_target (cube faces, rectangle and 1D array targets
     * are not modelled) */
    if (dims == 1 ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
@@ -761,6 +762,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
@@ -889,6 +891,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    /* legal_texsubimage_target: no proxies */
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -982,6 +985,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;

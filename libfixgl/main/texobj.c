@@ -326,6 +326,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
       return;
    }
    fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (n < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;

@@ -446,8 +446,10 @@ OSMesaGetDepthBuffer(OSMesaContext c, GLint *width, GLint *height,
       bpv = c->zs_bpv;
       if (!c->zs_copy) {
          c->zs_copy = calloc((size_t)w * (size_t)h, (size_t)bpv);
-         if (c->zs_copy)
+         if (c->zs_copy) {
+            fgl_scene_flush(c->gl);   /* the depth drawn so far */
             snapshot_zs(c);
+         }
       }
       buf = c->zs_copy;
       ok = buf ? GL_TRUE : GL_FALSE;

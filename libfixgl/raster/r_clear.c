@@ -1,9 +1,9 @@
 /*
- * Whole-buffer clears.  Values arrive already packed (the oracle packs the
+ * Whole-buffer clears, of the whole buffer or of a tile of it.  Values arrive already packed (the oracle packs the
  * clear colour with float_to_ubyte and the depth with util_pack64_z,
  * ORACLE-NOTES.md "Clears").
  */
-#include "r_state.h"
+#include "r_scene.h"
 
 #include <string.h>
 #include <wchar.h>
@@ -26,71 +26,119 @@ static void fill32(void *p, uint32_t v, size_t n)
 #endif
 }
 
-void r_clear_color(const struct r_state *rs, const uint8_t rgba[4])
+/* The rectangle as runs of n contiguous values: one run when it spans
+ * whole rows, else one per row; run(i, p0, n) gets the index of the
+ * run's first value. */
+#define FOR_RUNS(fb, x0, y0, x1, y1, first, n, body)                          \
+   do {                                                                       \
+      const size_t w_ = (size_t)(fb)->width;                                  \
+      if ((x0) == 0 && (x1) == (fb)->width) {                                 \
+         const size_t first = (size_t)(y0) * w_;                              \
+         const size_t n = (size_t)((y1) - (y0)) * w_;                         \
+         body;                                                                \
+      } else {                                                                \
+         for (int y_ = (y0); y_ < (y1); y_++) {                               \
+            const size_t first = (size_t)y_ * w_ + (size_t)(x0);              \
+            const size_t n = (size_t)((x1) - (x0));                           \
+            body;                                                             \
+         }                                                                    \
+      }                                                                       \
+   } while (0)
+
+void r_clear_color_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                        const uint8_t rgba[4])
 {
-   const size_t n = (size_t)rs->fb->width * (size_t)rs->fb->height;
+   if (!fb->color || x0 >= x1 || y0 >= y1)
+      return;
    uint32_t v;
    memcpy(&v, rgba, 4);
-   fill32(rs->fb->color, v, n);
+   uint32_t *c = (uint32_t *)(void *)fb->color;
+   FOR_RUNS(fb, x0, y0, x1, y1, first, n, fill32(c + first, v, n));
 }
 
-void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
-                           bool stencil, uint8_t svalue)
+/* n depth/stencil values from index `first` keep the bits `keep` and take
+ * `set` (Z24X8 / Z24S8) */
+static void zs32_runs(uint32_t *z, uint32_t keep, uint32_t set, size_t n)
 {
-   const size_t n = (size_t)rs->fb->width * (size_t)rs->fb->height;
-   switch (rs->fb->zs_format) {
+   if (keep == 0) {
+      fill32(z, set, n);   /* a plain fill: no read of the old values */
+      return;
+   }
+   /* two values per 64-bit word (the loop the compiler vectorises) */
+   const uint64_t keep2 = keep | (uint64_t)keep << 32, set2 = set | (uint64_t)set << 32;
+   size_t i = 0;
+   if (((uintptr_t)z & 7u) != 0 && n) {
+      z[0] = (z[0] & keep) | set;
+      i = 1;
+   }
+   for (; i + 2 <= n; i += 2) {
+      uint64_t w;
+      memcpy(&w, z + i, 8);
+      w = (w & keep2) | set2;
+      memcpy(z + i, &w, 8);
+   }
+   for (; i < n; i++)
+      z[i] = (z[i] & keep) | set;
+}
+
+/* n Z16 values: pairs as 32-bit words when aligned */
+static void z16_run(uint16_t *z, uint16_t v, size_t n)
+{
+   size_t i = 0;
+   if (((uintptr_t)z & 3u) != 0 && n) {
+      z[0] = v;
+      i = 1;
+   }
+   fill32(z + i, (uint32_t)v * 0x10001u, (n - i) / 2);
+   if ((n - i) & 1)
+      z[n - 1] = v;
+}
+
+void r_clear_depth_stencil_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                                bool depth, uint32_t zvalue, bool stencil, uint8_t svalue)
+{
+   if (!fb->zs || x0 >= x1 || y0 >= y1)
+      return;
+   switch (fb->zs_format) {
    case R_ZS_Z16:
       if (depth) {
-         uint16_t *z = rs->fb->zs;
-         /* pairs of values as 32-bit words, then an odd last one */
-         const uint32_t pair = (zvalue & 0xffffu) * 0x10001u;
-         if (((uintptr_t)z & 3u) == 0) {
-            fill32(z, pair, n / 2);
-            if (n & 1)
-               z[n - 1] = (uint16_t)zvalue;
-         } else {
-            for (size_t i = 0; i < n; i++)
-               z[i] = (uint16_t)zvalue;
-         }
+         uint16_t *z = fb->zs;
+         FOR_RUNS(fb, x0, y0, x1, y1, first, n, z16_run(z + first, (uint16_t)zvalue, n));
       }
       break;
    case R_ZS_Z24X8:
    case R_ZS_Z24S8: {
-      uint32_t *z = rs->fb->zs;
+      uint32_t *z = fb->zs;
       uint32_t keep = 0, set = 0;
       if (depth) set |= zvalue & 0xffffffu; else keep |= 0xffffffu;
-      if (rs->fb->zs_format == R_ZS_Z24S8) {
+      if (fb->zs_format == R_ZS_Z24S8) {
          if (stencil) set |= (uint32_t)svalue << 24; else keep |= 0xff000000u;
       }
-      if (keep == 0) {
-         fill32(z, set, n);   /* a plain fill: no read of the old values */
-      } else {
-         /* two values per 64-bit word (the loop the compiler vectorises) */
-         const uint64_t keep2 = keep | (uint64_t)keep << 32, set2 = set | (uint64_t)set << 32;
-         size_t i = 0;
-         if (((uintptr_t)z & 7u) != 0 && n) {
-            z[0] = (z[0] & keep) | set;
-            i = 1;
-         }
-         for (; i + 2 <= n; i += 2) {
-            uint64_t w;
-            memcpy(&w, z + i, 8);
-            w = (w & keep2) | set2;
-            memcpy(z + i, &w, 8);
-         }
-         for (; i < n; i++)
-            z[i] = (z[i] & keep) | set;
-      }
+      FOR_RUNS(fb, x0, y0, x1, y1, first, n, zs32_runs(z + first, keep, set, n));
       break;
    }
    case R_ZS_S8:
-      if (stencil)
-         memset(rs->fb->zs, svalue, n);
+      if (stencil) {
+         uint8_t *z = fb->zs;
+         FOR_RUNS(fb, x0, y0, x1, y1, first, n, memset(z + first, svalue, n));
+      }
       break;
    case R_ZS_NONE:
    default:
       break;
    }
+}
+
+void r_clear_color(const struct r_state *rs, const uint8_t rgba[4])
+{
+   r_clear_color_rect(rs->fb, 0, 0, rs->fb->width, rs->fb->height, rgba);
+}
+
+void r_clear_depth_stencil(const struct r_state *rs, bool depth, uint32_t zvalue,
+                           bool stencil, uint8_t svalue)
+{
+   r_clear_depth_stencil_rect(rs->fb, 0, 0, rs->fb->width, rs->fb->height, depth, zvalue,
+                              stencil, svalue);
 }
 
 void r_clear_quad(const struct r_state *rs, float z, const float color[4])

@@ -133,7 +133,7 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
 
    if (!pipeline) {
       /* straight to llvmpipe (nothing in the segment needs clipping) */
-      r_triangle(rs, &v0->r, &v1->r, &v2->r);
+      fgl_raster_triangle(ctx, rs, &v0->r, &v1->r, &v2->r);
       return;
    }
    if (clipmask == 0) {

@@ -168,5 +168,5 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
       ctx->StippleCounter = 0;
    /* the pstipple stage's first filled triangle of the draw */
    t_vbuf_filled_tri(ctx);
-   r_triangle(rs, v[0], v[1], v[2]);
+   fgl_raster_triangle(ctx, rs, v[0], v[1], v[2]);
 }

@@ -39,7 +39,7 @@ static bool aa_state(const struct fgl_context *ctx, struct r_state *aa, enum r_a
 
 /* draw_pipe_aapoint.c:aapoint_point: a square of half size `radius` with
  * coordinates (+-1, +-1, k, 1), drawn as two triangles. */
-static void aapoint_point(const struct fgl_context *ctx, const struct r_vertex *v)
+static void aapoint_point(struct fgl_context *ctx, const struct r_vertex *v)
 {
    const struct r_state *rs = &ctx->_Raster;
    struct r_state aa;
@@ -68,8 +68,8 @@ static void aapoint_point(const struct fgl_context *ctx, const struct r_vertex *
       q[i].attr[R_ATTR_AA][2] = k;
       q[i].attr[R_ATTR_AA][3] = 1.0f;
    }
-   r_triangle(&aa, &q[0], &q[1], &q[2]);
-   r_triangle(&aa, &q[0], &q[2], &q[3]);
+   fgl_raster_triangle(ctx, &aa, &q[0], &q[1], &q[2]);
+   fgl_raster_triangle(ctx, &aa, &q[0], &q[2], &q[3]);
 }
 
 /* ---- the vbuf batch under the polygon stipple ----
@@ -95,9 +95,9 @@ static void vbuf_flush(struct fgl_context *ctx)
    rs->stipple_points_lines = vb->pstipple_bound;
    for (unsigned i = 0; i < vb->count; i++) {
       if (vb->prim == T_VBUF_POINTS)
-         r_point(rs, &vb->queue[i][0]);
+         fgl_raster_point(ctx, rs, &vb->queue[i][0]);
       else
-         r_line(rs, &vb->queue[i][0], &vb->queue[i][1]);
+         fgl_raster_line(ctx, rs, &vb->queue[i][0], &vb->queue[i][1]);
    }
    rs->stipple_points_lines = false;
    vb->count = 0;
@@ -112,9 +112,9 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
    struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
    if (!ctx->_Raster.rast->stipple) {
       if (prim == T_VBUF_POINTS)
-         r_point(&ctx->_Raster, v0);
+         fgl_raster_point(ctx, &ctx->_Raster, v0);
       else
-         r_line(&ctx->_Raster, v0, v1);
+         fgl_raster_line(ctx, &ctx->_Raster, v0, v1);
       return;
    }
    if (vb->prim != prim)
@@ -127,9 +127,9 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
          vb->prim = prim;
          ctx->_Raster.stipple_points_lines = vb->pstipple_bound;
          if (prim == T_VBUF_POINTS)
-            r_point(&ctx->_Raster, v0);
+            fgl_raster_point(ctx, &ctx->_Raster, v0);
          else
-            r_line(&ctx->_Raster, v0, v1);
+            fgl_raster_line(ctx, &ctx->_Raster, v0, v1);
          ctx->_Raster.stipple_points_lines = false;
          return;
       }
@@ -202,7 +202,7 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
  * pixel at each end and widened to the half width, with coordinates
  * (u, half width, v, half length), drawn as two triangles. */
-static void aaline_line(const struct fgl_context *ctx, const struct r_vertex *v0,
+static void aaline_line(struct fgl_context *ctx, const struct r_vertex *v0,
                         const struct r_vertex *v1)
 {
    const struct r_state *rs = &ctx->_Raster;
@@ -243,8 +243,8 @@ static void aaline_line(const struct fgl_context *ctx, const struct r_vertex *v0
       q[i].attr[R_ATTR_AA][2] = sv[i] < 0 ? -half_length : half_length;
       q[i].attr[R_ATTR_AA][3] = half_length;
    }
-   r_triangle(&aa, &q[2], &q[1], &q[0]);
-   r_triangle(&aa, &q[3], &q[1], &q[2]);
+   fgl_raster_triangle(ctx, &aa, &q[2], &q[1], &q[0]);
+   fgl_raster_triangle(ctx, &aa, &q[3], &q[1], &q[2]);
 }
 
 /* The stage after stipple: the aaline quad or llvmpipe's line. */

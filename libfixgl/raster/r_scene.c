@@ -1,0 +1,403 @@
+/*
+ * The scene (r_scene.h): binning on the submitting thread, the replay of
+ * one tile on any thread.
+ */
+#include "r_scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* vertex storage */
+struct r_scene_chunk {
+   struct r_scene_chunk *next;
+   size_t size;
+   _Alignas(16) unsigned char data[];
+};
+
+#define CHUNK_SIZE (256u << 10)
+
+static void *scene_alloc(struct r_scene *s, size_t size)
+{
+   size = (size + 15u) & ~(size_t)15u;
+   if (s->chunk && s->chunk_used + size <= s->chunk->size) {
+      void *p = s->chunk->data + s->chunk_used;
+      s->chunk_used += size;
+      s->bytes += size;
+      return p;
+   }
+   /* the next chunk of the list (kept from an earlier scene), or a new one */
+   struct r_scene_chunk *next = s->chunk ? s->chunk->next : s->chunks;
+   if (!next || next->size < size) {
+      const size_t csize = size > CHUNK_SIZE ? size : CHUNK_SIZE;
+      struct r_scene_chunk *c = malloc(sizeof(*c) + csize);
+      if (!c)
+         return NULL;
+      c->size = csize;
+      /* inserted after the current chunk (an oversized one in front of a
+       * reusable one is fine: both stay on the list) */
+      if (s->chunk) {
+         c->next = s->chunk->next;
+         s->chunk->next = c;
+      } else {
+         c->next = s->chunks;
+         s->chunks = c;
+      }
+      next = c;
+   }
+   s->chunk = next;
+   s->chunk_used = size;
+   s->bytes += size;
+   return next->data;
+}
+
+/* The vertex attribute slots r_triangle, r_line and r_point read for
+ * state rs: those of the fragment-shader inputs, for both faces when
+ * colours are two-sided, and the normal's (its w is the face) with
+ * GL_PHONG_WIN. */
+static int vertex_slots(const struct r_state *rs)
+{
+   int n = 0;
+   for (unsigned m = rs->fs->fs_inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
+      int slot = r_fs_slot(a, false) + 1;
+      if (slot > n)
+         n = slot;
+      if (rs->rast->twoside) {
+         slot = r_fs_slot(a, true) + 1;
+         if (slot > n)
+            n = slot;
+      }
+   }
+   if (rs->fs->phong && n < R_ATTR_NORMAL + 1)
+      n = R_ATTR_NORMAL + 1;
+   return n;
+}
+
+static const struct r_vertex *copy_vertex(struct r_scene *s, const struct r_vertex *v, int slots)
+{
+   const size_t size = offsetof(struct r_vertex, attr) + (size_t)slots * sizeof(v->attr[0]);
+   struct r_vertex *d = scene_alloc(s, size);
+   if (d)
+      memcpy(d, v, size);
+   return d;
+}
+
+static bool grow(void **p, uint32_t *capacity, uint32_t need, size_t elem)
+{
+   if (need <= *capacity)
+      return true;
+   uint32_t cap = *capacity ? *capacity : 16;
+   while (cap < need)
+      cap *= 2;
+   void *n = realloc(*p, (size_t)cap * elem);
+   if (!n)
+      return false;
+   *p = n;
+   *capacity = cap;
+   return true;
+}
+
+/* The scene's index of state rs: the last one when equal, else a new
+ * copy that holds rs's objects.  UINT32_MAX when out of memory. */
+static uint32_t state_index(struct r_scene *s, const struct r_state *rs)
+{
+   if (s->nstates && memcmp(&s->states[s->nstates - 1], rs, sizeof(*rs)) == 0)
+      return s->nstates - 1;
+   if (!grow((void **)&s->states, &s->states_capacity, s->nstates + 1, sizeof(*s->states)))
+      return UINT32_MAX;
+   /* a member-wise copy of rs would leave padding that never compares
+    * equal: copy the bytes */
+   memcpy(&s->states[s->nstates], rs, sizeof(*rs));
+   r_state_hold(rs);
+   s->stats |= rs->stats != NULL;
+   s->bytes += sizeof(*rs);
+   return s->nstates++;
+}
+
+/* Starts the scene on rs's framebuffer, or false when it has commands
+ * for another. */
+static bool begin(struct r_scene *s, const struct r_state *rs)
+{
+   if (s->fb == rs->fb)
+      return true;
+   if (!r_scene_empty(s))
+      return false;
+   const int tx = (rs->fb->width + R_TILE_SIZE - 1) >> R_TILE_LOG2;
+   const int ty = (rs->fb->height + R_TILE_SIZE - 1) >> R_TILE_LOG2;
+   const unsigned n = (unsigned)(tx * ty);
+   if (n > s->bins_capacity) {
+      struct r_bin *b = realloc(s->bins, n * sizeof(*b));
+      if (!b)
+         return false;
+      memset(b + s->bins_capacity, 0, (n - s->bins_capacity) * sizeof(*b));
+      s->bins = b;
+      s->bins_capacity = n;
+   }
+   s->fb = rs->fb;
+   s->tiles_x = tx;
+   s->tiles_y = ty;
+   return true;
+}
+
+/* A new command of state rs (its index), or UINT32_MAX. */
+static uint32_t new_cmd(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind)
+{
+   if (s->bytes > R_SCENE_MAX_BYTES)
+      return UINT32_MAX;
+   const uint32_t st = state_index(s, rs);
+   if (st == UINT32_MAX)
+      return UINT32_MAX;
+   if (!grow((void **)&s->cmds, &s->cmds_capacity, s->ncmds + 1, sizeof(*s->cmds)))
+      return UINT32_MAX;
+   s->bytes += sizeof(struct r_cmd);
+   struct r_cmd *c = &s->cmds[s->ncmds];
+   memset(c, 0, sizeof(*c));
+   c->kind = (uint8_t)kind;
+   c->state = st;
+   return s->ncmds;
+}
+
+/* Appends command `ci` to the bins of the tiles that the pixel box
+ * [x0,x1) x [y0,y1) touches (already inside the framebuffer). */
+static bool bin_box(struct r_scene *s, uint32_t ci, int x0, int y0, int x1, int y1)
+{
+   const int tx0 = x0 >> R_TILE_LOG2, tx1 = (x1 - 1) >> R_TILE_LOG2;
+   const int ty0 = y0 >> R_TILE_LOG2, ty1 = (y1 - 1) >> R_TILE_LOG2;
+   for (int ty = ty0; ty <= ty1; ty++) {
+      for (int tx = tx0; tx <= tx1; tx++) {
+         struct r_bin *b = &s->bins[ty * s->tiles_x + tx];
+         if (!grow((void **)&b->cmd, &b->capacity, b->count + 1, sizeof(*b->cmd)))
+            return false;
+         b->cmd[b->count++] = ci;
+         s->bytes += sizeof(*b->cmd);
+      }
+   }
+   return true;
+}
+
+/* Removes command `ci` from every bin again (out of memory while binning
+ * it), so that the scene stays as it was. */
+static void unbin(struct r_scene *s, uint32_t ci)
+{
+   for (unsigned t = 0; t < r_scene_tiles(s); t++) {
+      struct r_bin *b = &s->bins[t];
+      if (b->count && b->cmd[b->count - 1] == ci)
+         b->count--;
+   }
+}
+
+/* The pixel box of a primitive whose window positions span
+ * [minx, maxx] x [miny, maxy] widened by `pad` pixels, cut to the draw
+ * region of rs; false when empty.  Non-finite positions take the whole
+ * region (the rasterizers decide what, if anything, they cover). */
+static bool prim_box(const struct r_state *rs, float minx, float miny, float maxx, float maxy,
+                     float pad, int box[4])
+{
+   int x0 = rs->x0, y0 = rs->y0, x1 = rs->x1, y1 = rs->y1;
+   if (x0 < 0) x0 = 0;
+   if (y0 < 0) y0 = 0;
+   if (x1 > rs->fb->width) x1 = rs->fb->width;
+   if (y1 > rs->fb->height) y1 = rs->fb->height;
+   if (isfinite(minx) && isfinite(maxx) && isfinite(miny) && isfinite(maxy) && isfinite(pad)) {
+      /* pixel centres x + 0.5 inside [minx - pad, maxx + pad], with a
+       * pixel of slack for the snapping to 1/256 and the fill rules */
+      const float fx0 = floorf(minx - pad) - 1.0f, fx1 = ceilf(maxx + pad) + 2.0f;
+      const float fy0 = floorf(miny - pad) - 1.0f, fy1 = ceilf(maxy + pad) + 2.0f;
+      if (fx0 > (float)x0) x0 = fx0 >= (float)x1 ? x1 : (int)fx0;
+      if (fy0 > (float)y0) y0 = fy0 >= (float)y1 ? y1 : (int)fy0;
+      if (fx1 < (float)x1) x1 = fx1 <= (float)x0 ? x0 : (int)fx1;
+      if (fy1 < (float)y1) y1 = fy1 <= (float)y0 ? y0 : (int)fy1;
+   }
+   box[0] = x0;
+   box[1] = y0;
+   box[2] = x1;
+   box[3] = y1;
+   return x0 < x1 && y0 < y1;
+}
+
+static inline float min2(float a, float b) { return a < b ? a : b; }
+static inline float max2(float a, float b) { return a > b ? a : b; }
+
+/* Appends a primitive of n vertices with the box padding `pad`. */
+static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
+                     const struct r_vertex *const *v, int n, float pad)
+{
+   if (!begin(s, rs))
+      return false;
+   float minx = v[0]->pos[0], maxx = minx, miny = v[0]->pos[1], maxy = miny;
+   for (int i = 1; i < n; i++) {
+      minx = min2(minx, v[i]->pos[0]);
+      maxx = max2(maxx, v[i]->pos[0]);
+      miny = min2(miny, v[i]->pos[1]);
+      maxy = max2(maxy, v[i]->pos[1]);
+   }
+   for (int i = 0; i < n; i++) {
+      if (isnan(v[i]->pos[0]) || isnan(v[i]->pos[1]))
+         minx = NAN;   /* the whole region */
+   }
+   int box[4];
+   if (!prim_box(rs, minx, miny, maxx, maxy, pad, box))
+      return true;   /* no pixel of the region: nothing to draw */
+   const size_t mark_used = s->chunk_used, mark_bytes = s->bytes;
+   struct r_scene_chunk *const mark_chunk = s->chunk;
+   const uint32_t mark_states = s->nstates;
+   const uint32_t ci = new_cmd(s, rs, kind);
+   if (ci == UINT32_MAX)
+      goto fail;
+   const int slots = vertex_slots(rs);
+   for (int i = 0; i < n; i++) {
+      s->cmds[ci].v[i] = copy_vertex(s, v[i], slots);
+      if (!s->cmds[ci].v[i])
+         goto fail;
+   }
+   if (!bin_box(s, ci, box[0], box[1], box[2], box[3])) {
+      unbin(s, ci);
+      goto fail;
+   }
+   s->ncmds++;
+   return true;
+fail:
+   /* as it was: the vertices and a state this command added dropped */
+   s->chunk = mark_chunk;
+   s->chunk_used = mark_used;
+   s->bytes = mark_bytes;
+   if (s->nstates > mark_states) {
+      s->nstates--;
+      r_state_release(&s->states[s->nstates]);
+   }
+   return false;
+}
+
+bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                      const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   const struct r_vertex *v[3] = { v0, v1, v2 };
+   return add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f);
+}
+
+bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                  const struct r_vertex *v1)
+{
+   /* a line covers at most half its width (at most 255/2) beside its
+    * ends and the segment between them, plus its diamond-exit pixels */
+   const struct r_vertex *v[2] = { v0, v1 };
+   return add_prim(s, rs, R_CMD_LINE, v, 2, 0.5f * rs->rast->line_width + 1.0f);
+}
+
+bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v)
+{
+   /* a square of at most the size rounded up, around the snapped centre */
+   const struct r_vertex *vv[1] = { v };
+   return add_prim(s, rs, R_CMD_POINT, vv, 1, 0.5f * rs->rast->point_size + 1.0f);
+}
+
+bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
+                   const uint8_t rgba[4], bool depth, uint32_t zvalue, bool stencil,
+                   uint8_t svalue)
+{
+   if (!begin(s, rs))
+      return false;
+   const uint32_t mark_states = s->nstates;
+   const uint32_t ci = new_cmd(s, rs, R_CMD_CLEAR);
+   if (ci == UINT32_MAX)
+      goto fail;
+   struct r_cmd *c = &s->cmds[ci];
+   c->clear_color = color;
+   if (color)
+      memcpy(c->rgba, rgba, 4);
+   c->clear_depth = depth;
+   c->zvalue = zvalue;
+   c->clear_stencil = stencil;
+   c->svalue = svalue;
+   if (!bin_box(s, ci, 0, 0, rs->fb->width, rs->fb->height)) {
+      unbin(s, ci);
+      goto fail;
+   }
+   s->ncmds++;
+   return true;
+fail:
+   if (s->nstates > mark_states) {
+      s->nstates--;
+      r_state_release(&s->states[s->nstates]);
+   }
+   return false;
+}
+
+void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats)
+{
+   const struct r_bin *b = &s->bins[tile];
+   const int tx0 = (int)(tile % (unsigned)s->tiles_x) << R_TILE_LOG2;
+   const int ty0 = (int)(tile / (unsigned)s->tiles_x) << R_TILE_LOG2;
+   const int tx1 = tx0 + R_TILE_SIZE, ty1 = ty0 + R_TILE_SIZE;
+   uint32_t cur = UINT32_MAX;
+   struct r_state rs;
+   for (uint32_t i = 0; i < b->count; i++) {
+      const struct r_cmd *c = &s->cmds[b->cmd[i]];
+      if (c->kind == R_CMD_CLEAR) {
+         const struct r_fb_state *fb = s->states[c->state].fb;
+         const int x1 = tx1 < fb->width ? tx1 : fb->width;
+         const int y1 = ty1 < fb->height ? ty1 : fb->height;
+         if (c->clear_color)
+            r_clear_color_rect(fb, tx0, ty0, x1, y1, c->rgba);
+         if (c->clear_depth || c->clear_stencil)
+            r_clear_depth_stencil_rect(fb, tx0, ty0, x1, y1, c->clear_depth, c->zvalue,
+                                       c->clear_stencil, c->svalue);
+         continue;
+      }
+      if (c->state != cur) {
+         /* the state with its draw region cut to the tile */
+         cur = c->state;
+         rs = s->states[cur];
+         if (rs.x0 < tx0) rs.x0 = tx0;
+         if (rs.y0 < ty0) rs.y0 = ty0;
+         if (rs.x1 > tx1) rs.x1 = tx1;
+         if (rs.y1 > ty1) rs.y1 = ty1;
+         if (rs.stats)
+            rs.stats = stats;
+      }
+      switch (c->kind) {
+      case R_CMD_TRIANGLE:
+         r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
+         break;
+      case R_CMD_LINE:
+         r_line(&rs, c->v[0], c->v[1]);
+         break;
+      case R_CMD_POINT:
+      default:
+         r_point(&rs, c->v[0]);
+         break;
+      }
+   }
+}
+
+void r_scene_reset(struct r_scene *s)
+{
+   for (uint32_t i = 0; i < s->nstates; i++)
+      r_state_release(&s->states[i]);
+   s->nstates = 0;
+   s->ncmds = 0;
+   for (unsigned t = 0; t < s->bins_capacity; t++)
+      s->bins[t].count = 0;
+   s->fb = NULL;
+   s->chunk = NULL;
+   s->chunk_used = 0;
+   s->stats = false;
+   /* what stays allocated counts toward the bound again as it is used */
+   s->bytes = 0;
+}
+
+void r_scene_fini(struct r_scene *s)
+{
+   r_scene_reset(s);
+   for (unsigned t = 0; t < s->bins_capacity; t++)
+      free(s->bins[t].cmd);
+   free(s->bins);
+   free(s->cmds);
+   free(s->states);
+   for (struct r_scene_chunk *c = s->chunks, *n; c; c = n) {
+      n = c->next;
+      free(c);
+   }
+   memset(s, 0, sizeof(*s));
+}

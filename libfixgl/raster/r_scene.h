@@ -1,0 +1,132 @@
+/*
+ * The scene: the primitives of a frame binned into 64x64 tiles of the
+ * framebuffer, rasterized later tile by tile, on any number of threads
+ * (llvmpipe's lp_scene and lp_rast in the same roles).
+ *
+ * The vertex stage hands the scene what it would hand the raster core
+ * (r_triangle, r_line, r_point with a draw's r_state, and whole-buffer
+ * clears), in submission order.  The scene copies the vertices (the
+ * attribute slots the state reads), keeps one copy of each distinct
+ * r_state (holding its state objects, r_state_hold), and appends the
+ * command to the bin of every tile its bounding box touches.
+ * r_scene_run_tile then replays one tile's commands in order with the
+ * draw region cut to the tile.
+ *
+ * Why the result is the same bits for every thread count and every tile
+ * order: a primitive's pixels depend on the primitive and the pixel alone
+ * (the coverage, the planes, the per-quad level of detail are functions of
+ * the vertices and of pixel positions; quads and 4x4 blocks are aligned
+ * and never straddle a 64-aligned tile), the draw region only selects
+ * which pixels are written, and the pixels of one tile are written by
+ * one thread in submission order.  So a tile's pixels go through exactly
+ * the operations, in the order, they would go through without the scene.
+ *
+ * Nothing here knows GL, and a tile's replay reads only the scene, the
+ * state objects and the framebuffer: any thread may run it.
+ */
+#ifndef FGL_R_SCENE_H
+#define FGL_R_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "r_state.h"
+
+#define R_TILE_SIZE 64
+#define R_TILE_LOG2 6
+
+/* Past this many bytes of commands, vertices and bins the scene asks to
+ * be rasterized before it takes more (r_scene_* return false). */
+#define R_SCENE_MAX_BYTES (48u << 20)
+
+enum r_cmd_kind {
+   R_CMD_TRIANGLE,
+   R_CMD_LINE,
+   R_CMD_POINT,
+   R_CMD_CLEAR,
+};
+
+struct r_cmd {
+   uint8_t kind;
+   /* R_CMD_CLEAR: which buffers, and the packed values (r_clear_color,
+    * r_clear_depth_stencil) */
+   bool clear_color, clear_depth, clear_stencil;
+   uint8_t rgba[4];
+   uint8_t svalue;
+   uint32_t zvalue;
+   uint32_t state;                  /* index into r_scene.states */
+   const struct r_vertex *v[3];
+};
+
+struct r_bin {
+   uint32_t *cmd;                   /* indices into r_scene.cmds */
+   uint32_t count, capacity;
+};
+
+struct r_scene_chunk;
+
+struct r_scene {
+   /* the framebuffer the commands draw into (NULL: empty scene) */
+   const struct r_fb_state *fb;
+   int tiles_x, tiles_y;
+   struct r_bin *bins;              /* tiles_x * tiles_y */
+   unsigned bins_capacity;
+
+   struct r_cmd *cmds;
+   uint32_t ncmds, cmds_capacity;
+
+   struct r_state *states;          /* each holds its objects */
+   uint32_t nstates, states_capacity;
+
+   /* vertex storage: chunks, reused across scenes */
+   struct r_scene_chunk *chunks, *chunk;
+   size_t chunk_used;
+
+   size_t bytes;                    /* what the scene holds, for the bound */
+   bool stats;                      /* some state counts (r_state.stats) */
+};
+
+/* Append a primitive or a clear of the whole framebuffer of rs (its
+ * values packed as r_clear_color / r_clear_depth_stencil take them).
+ * False, with nothing appended, when the scene must be rasterized and
+ * reset first: it is full, out of memory, or draws into another
+ * framebuffer (rs->fb differs); an empty scene that still says false is
+ * out of memory. */
+bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                      const struct r_vertex *v1, const struct r_vertex *v2);
+bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                  const struct r_vertex *v1);
+bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v);
+bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
+                   const uint8_t rgba[4], bool depth, uint32_t zvalue, bool stencil,
+                   uint8_t svalue);
+
+static inline bool r_scene_empty(const struct r_scene *s)
+{
+   return s->ncmds == 0;
+}
+
+static inline unsigned r_scene_tiles(const struct r_scene *s)
+{
+   return (unsigned)(s->tiles_x * s->tiles_y);
+}
+
+/* Replays tile `tile`'s commands in order; the states that count
+ * (r_state.stats) count into `stats` instead. */
+void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats);
+
+/* Empties the scene (releasing its states' objects), keeping its memory
+ * for the next. */
+void r_scene_reset(struct r_scene *s);
+
+/* Frees everything. */
+void r_scene_fini(struct r_scene *s);
+
+/* Whole-buffer clears restricted to the rectangle [x0,x1) x [y0,y1)
+ * (r_clear.c). */
+void r_clear_color_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                        const uint8_t rgba[4]);
+void r_clear_depth_stencil_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                                bool depth, uint32_t zvalue, bool stencil, uint8_t svalue);
+
+#endif

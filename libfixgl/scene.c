@@ -1,0 +1,120 @@
+/*
+ * The context's scene (raster/r_scene.h): the vertex stage bins its
+ * primitives and glClear its whole-buffer clears; fgl_scene_flush
+ * rasterizes them, tile by tile on FIXGL_NUM_THREADS threads (the calling
+ * thread and workers of raster/r_pool.c), before anything reads or
+ * replaces the framebuffer or the textures the scene samples:
+ * glFlush/glFinish (and so OSMesaMakeCurrent's change of binding),
+ * glReadPixels, glCopyPixels, glDrawPixels and glBitmap (drawn at once),
+ * glAccum, glCopyTex(Sub)Image, any change of a texture image, scissored
+ * or masked clears, OSMesaGetDepthBuffer, context destruction; or when the
+ * scene is full (R_SCENE_MAX_BYTES).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "context.h"
+#include "raster/r_pool.h"
+
+/* FIXGL_NUM_THREADS: a positive number, else the online CPUs (at most
+ * FGL_MAX_THREADS) */
+unsigned fgl_num_threads(void)
+{
+   const char *e = getenv("FIXGL_NUM_THREADS");
+   unsigned n = 0;
+   if (e && *e) {
+      char *end;
+      const long v = strtol(e, &end, 10);
+      if (*end == '\0' && v > 0)
+         n = v > FGL_MAX_THREADS ? FGL_MAX_THREADS : (unsigned)v;
+   }
+   if (n == 0)
+      n = r_pool_cpus();
+   return n > FGL_MAX_THREADS ? FGL_MAX_THREADS : n;
+}
+
+struct tile_job {
+   const struct r_scene *scene;
+   struct r_stats stats[FGL_MAX_THREADS];
+};
+
+static void run_tile(void *arg, unsigned item, unsigned slot)
+{
+   struct tile_job *j = arg;
+   r_scene_run_tile(j->scene, item, &j->stats[slot]);
+}
+
+void fgl_scene_flush(struct fgl_context *ctx)
+{
+   struct r_scene *s = &ctx->_Scene;
+   if (r_scene_empty(s)) {
+      r_scene_reset(s);
+      return;
+   }
+   struct tile_job j;
+   j.scene = s;
+   memset(j.stats, 0, sizeof(j.stats));
+   struct r_job job = {
+      .run = run_tile,
+      .arg = &j,
+      .count = r_scene_tiles(s),
+      .threads = ctx->_NumThreads,
+   };
+   const uint64_t t0 = s->stats ? r_stats_now() : 0;
+   r_pool_run(&job);
+   if (s->stats) {
+      fgl_stats_flush(ctx, r_stats_now() - t0);
+      for (unsigned t = 0; t < ctx->_NumThreads; t++) {
+         ctx->Stats.raster.fragments += j.stats[t].fragments;
+         ctx->Stats.raster.setup_ns += j.stats[t].setup_ns;
+         ctx->Stats.raster.raster_ns += j.stats[t].raster_ns;
+      }
+   }
+   r_scene_reset(s);
+}
+
+void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
+                         const struct r_vertex *v0, const struct r_vertex *v1,
+                         const struct r_vertex *v2)
+{
+   if (r_scene_triangle(&ctx->_Scene, rs, v0, v1, v2))
+      return;
+   fgl_scene_flush(ctx);
+   if (!r_scene_triangle(&ctx->_Scene, rs, v0, v1, v2))
+      r_triangle(rs, v0, v1, v2);   /* out of memory: drawn now, in order */
+}
+
+void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
+                     const struct r_vertex *v0, const struct r_vertex *v1)
+{
+   if (r_scene_line(&ctx->_Scene, rs, v0, v1))
+      return;
+   fgl_scene_flush(ctx);
+   if (!r_scene_line(&ctx->_Scene, rs, v0, v1))
+      r_line(rs, v0, v1);
+}
+
+void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
+                      const struct r_vertex *v)
+{
+   if (r_scene_point(&ctx->_Scene, rs, v))
+      return;
+   fgl_scene_flush(ctx);
+   if (!r_scene_point(&ctx->_Scene, rs, v))
+      r_point(rs, v);
+}
+
+void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4], bool depth,
+                      uint32_t zvalue, bool stencil, uint8_t svalue)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
+      return;
+   fgl_scene_flush(ctx);
+   if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
+      return;
+   if (color)
+      r_clear_color(rs, rgba);
+   if (depth || stencil)
+      r_clear_depth_stencil(rs, depth, zvalue, stencil, svalue);
+}
