@@ -32,6 +32,10 @@
  *   ctphong the same with GL_FIXGL_cook_torrance per fragment (a
  *           half-metallic material)
  *   ctsmooth the same Cook-Torrance per vertex (GL_SMOOTH)
+ *   manydraws a legacy demo's frame: 240 small lit, textured cubes, each
+ *           its own glBegin/glEnd after a glPushMatrix, glTranslatef,
+ *           glRotatef, glScalef, glMaterialfv and glBindTexture (two
+ *           textures: the texfloor one, mipmapped, and a 64x64 LINEAR one)
  * OSMesa has neither extension: for the last three scenes its build binds
  * the GLSL reference of the conformance suite (conformance/reference/
  * fcr_shading.c, through OSMesaGetProcAddress), which evaluates the same
@@ -532,6 +536,90 @@ static void draw_texfloor(void)
   glFinish();
 }
 
+/* The manydraws scene: a legacy demo's frame of many small objects, each
+ * its own glBegin/glEnd with the matrix, the material and the texture
+ * changed before it.  MANY_X * MANY_Y textured, lit cubes. */
+#define MANY_X 20
+#define MANY_Y 12
+static GLuint tex_small;
+static void build_small_texture(void)
+{
+  static unsigned char t[64 * 64 * 4];
+  for (int y = 0; y < 64; y++)
+    for (int x = 0; x < 64; x++) {
+      unsigned char *p = &t[(y * 64 + x) * 4];
+      const int on = ((x / 8) ^ (y / 8)) & 1;
+      p[0] = (unsigned char)(on ? 255 : 4 * x);
+      p[1] = (unsigned char)(on ? 240 : 60);
+      p[2] = (unsigned char)(on ? 200 : 4 * y);
+      p[3] = 255;
+    }
+  glGenTextures(1, &tex_small);
+  glBindTexture(GL_TEXTURE_2D, tex_small);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+static void draw_manydraws(void)
+{
+  static const GLfloat pos[4] = { -2.0f, 3.0f, 4.0f, 0.0f };
+  static const GLfloat palette[4][4] = {
+    { 0.9f, 0.3f, 0.2f, 1.0f }, { 0.3f, 0.8f, 0.3f, 1.0f },
+    { 0.3f, 0.4f, 0.9f, 1.0f }, { 0.9f, 0.8f, 0.3f, 1.0f },
+  };
+  static const GLfloat spec[4] = { 0.6f, 0.6f, 0.6f, 1.0f };
+  /* the faces of a unit cube: normal, then 4 corners */
+  static const float face[6][5][3] = {
+    { { 0, 0, 1 }, { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } },
+    { { 0, 0, -1 }, { 1, -1, -1 }, { -1, -1, -1 }, { -1, 1, -1 }, { 1, 1, -1 } },
+    { { 1, 0, 0 }, { 1, -1, 1 }, { 1, -1, -1 }, { 1, 1, -1 }, { 1, 1, 1 } },
+    { { -1, 0, 0 }, { -1, -1, -1 }, { -1, -1, 1 }, { -1, 1, 1 }, { -1, 1, -1 } },
+    { { 0, 1, 0 }, { -1, 1, 1 }, { 1, 1, 1 }, { 1, 1, -1 }, { -1, 1, -1 } },
+    { { 0, -1, 0 }, { -1, -1, -1 }, { 1, -1, -1 }, { 1, -1, 1 }, { -1, -1, 1 } },
+  };
+  static const float st[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 100.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glLightfv(GL_LIGHT0, GL_POSITION, pos);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
+  glMaterialf(GL_FRONT, GL_SHININESS, 24.0f);
+  glTranslatef(0.0f, 0.0f, -24.0f);
+  for (int j = 0; j < MANY_Y; j++)
+    for (int i = 0; i < MANY_X; i++) {
+      const int n = j * MANY_X + i;
+      glPushMatrix();
+      glTranslatef(-19.0f + 2.0f * (float)i, -11.0f + 2.0f * (float)j, 0.0f);
+      glRotatef(17.0f * (float)n, 0.4f, 1.0f, 0.2f);
+      glScalef(0.7f, 0.7f, 0.7f);
+      glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, palette[n & 3]);
+      glBindTexture(GL_TEXTURE_2D, (n % 3) ? tex_small : tex_name);
+      glBegin(GL_QUADS);
+      for (int f = 0; f < 6; f++) {
+        glNormal3fv(face[f][0]);
+        for (int k = 0; k < 4; k++) {
+          glTexCoord2fv(st[k]);
+          glVertex3fv(face[f][1 + k]);
+        }
+      }
+      glEnd();
+      glPopMatrix();
+    }
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_LIGHTING);
+  glFinish();
+}
+
 /* The shading scenes (phong, ctphong, ctsmooth): lit_large from 1.9 units
  * with a 0.48 x 0.36 window at 0.5, so that the silhouette (half-angle
  * tangent 0.619) encloses the screen's corners (0.6); back faces culled. */
@@ -748,6 +836,7 @@ int main(int argc, char **argv)
   build_lit_sphere(lit_large, SPHERE_STACKS, SPHERE_SLICES);
   build_gears();
   build_texture();
+  build_small_texture();
   static const struct {
     const char *name;
     void (*frame)(void);
@@ -755,6 +844,7 @@ int main(int argc, char **argv)
     { "soup", draw_soup },       { "sphere", draw_sphere },     { "lit200", draw_lit200 },
     { "lit20k", draw_lit20k },   { "gears", draw_gears },       { "texfloor", draw_texfloor },
     { "phong", draw_phong },     { "ctphong", draw_ctphong },   { "ctsmooth", draw_ctsmooth },
+    { "manydraws", draw_manydraws },
   };
   for (size_t i = 0; i < sizeof(scenes) / sizeof(scenes[0]); i++) {
     int wanted = argc <= 2;

@@ -35,7 +35,10 @@
  * R_FMA_CLONES does for the raster loops): with FMA, m_gallivm_pow's
  * fmaf() is one vfmadd instead of a libm call (and floorf one vroundss).
  * fmaf is the fused operation either way: the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+/* (Not under ThreadSanitizer, which instruments the clones' resolver, run
+ * by the loader before its runtime exists.) */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__)
 /* flatten: m_gallivm_pow and the helpers are inlined into each clone and
  * compiled for its target (an outlined helper would be a default-target
  * function calling libm's fmaf) */

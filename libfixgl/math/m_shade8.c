@@ -36,7 +36,7 @@ void m_shade_point8_portable(const struct m_shade_env *env, const float n[3][M_S
 
 /* Runs inside the ifunc resolver, at relocation time, before a sanitizer's
  * runtime is set up: not instrumented. */
-__attribute__((no_sanitize("address", "undefined")))
+__attribute__((no_sanitize("address", "undefined", "thread")))
 bool m_shade_point8_avx2_supported(void)
 {
    __builtin_cpu_init();
@@ -50,7 +50,7 @@ typedef void m_shade_point8_fn(const struct m_shade_env *, const float[3][M_SHAD
 
 #if defined(__ELF__) && !defined(__clang__)
 /* an ifunc: the dynamic loader runs the resolver once, at relocation */
-__attribute__((no_sanitize("address", "undefined")))
+__attribute__((no_sanitize("address", "undefined", "thread")))
 static m_shade_point8_fn *resolve_point8(void)
 {
    return m_shade_point8_avx2_supported() ? m_shade_point8_avx2 : m_shade_point8_portable;

@@ -697,7 +697,10 @@ void r_clear_quad(const struct r_state *rs, float z, const float color[4]);
  * target_clones, an ifunc): with FMA, fmaf() becomes one vfmadd
  * instruction instead of a libm call.  The result is the same either way
  * (fmaf is always the fused operation); only the speed differs. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+/* (Not under ThreadSanitizer, which instruments the clones' resolver, run
+ * by the loader before its runtime exists.) */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__)
 #define R_FMA_CLONES __attribute__((target_clones("fma", "default")))
 #else
 #define R_FMA_CLONES

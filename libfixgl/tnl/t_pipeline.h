@@ -47,7 +47,10 @@ struct t_vertex {
  * flatten: the helpers are inlined into each clone and compiled for its
  * target (an outlined helper would be a default-target function calling
  * libm's fmaf). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+/* (Not under ThreadSanitizer, which instruments the clones' resolver, run
+ * by the loader before its runtime exists.) */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__)
 #define T_FMA_CLONES __attribute__((target_clones("fma", "default"), flatten))
 #else
 #define T_FMA_CLONES
