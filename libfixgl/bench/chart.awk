@@ -10,13 +10,16 @@
 #                                               that size (make_chart.sh ->
 #                                               chart.png)
 #
-# Top: frames per second per scene, log scale, fixgl, OSMesa (llvmpipe,
-# default threads) and OSMesa-1 (LP_NUM_THREADS=1).  Bottom: fixgl's fps
-# over OSMesa's and over OSMesa-1's (1 = as fast).
+# Top: frames per second per scene, log scale: fixgl with its default
+# threads (one per CPU), fixgl on one thread (FIXGL_NUM_THREADS=1), OSMesa
+# (llvmpipe, default threads) and OSMesa-1 (LP_NUM_THREADS=1).  Bottom:
+# fixgl's fps over OSMesa's, like for like: default threads over default
+# threads, one thread over one thread (1 = as fast).
 #
 # The data file: "# key value" lines (date, seconds, cpus), a header line
-# starting with "scene", then one tab-separated line per scene whose first
-# columns are scene, fixgl fps, OSMesa fps, OSMesa-1 fps.
+# starting with "scene", then one tab-separated line per scene whose
+# columns named fixgl_fps, fixgl1_fps, osmesa_fps, osmesa1_fps are read
+# (by the header's names; a file without fixgl1_fps draws three series).
 
 BEGIN {
   FS = "\t"
@@ -24,18 +27,25 @@ BEGIN {
   X0 = 70; X1 = W - 20
   FPS_TOP = 70; FPS_BOT = 330
   RAT_TOP = 420; RAT_BOT = 560
-  split("0.122 0.467 0.706,1.000 0.498 0.055,0.173 0.627 0.173", colour, ",")
-  split("fixgl,OSMesa,OSMesa-1", series, ",")
+  split("0.122 0.467 0.706,0.553 0.745 0.894,1.000 0.498 0.055,0.173 0.627 0.173", colour, ",")
+  split("fixgl,fixgl-1,OSMesa,OSMesa-1", series, ",")
+  split("fixgl_fps,fixgl1_fps,osmesa_fps,osmesa1_fps", column, ",")
+  NS = 4
   GRID = "0.85 0.85 0.85"; AXIS = "0.2 0.2 0.2"; INK = "0.1 0.1 0.1"; MUTED = "0.4 0.4 0.4"
 }
 
 /^# / { meta[$0 ~ /^# [a-z]+ / ? substr($0, 3, index(substr($0, 3), " ") - 1) : ""] = substr($0, 3 + index(substr($0, 3), " ")); next }
-$1 == "scene" || NF < 4 { next }
+$1 == "scene" {
+  for (c = 1; c <= NF; c++)
+    col[$c] = c
+  next
+}
+NF < 4 { next }
 {
   n++
   name[n] = $1
-  for (k = 1; k <= 3; k++)
-    fps[n, k] = $(k + 1) + 0
+  for (k = 1; k <= NS; k++)
+    fps[n, k] = (column[k] in col) ? $(col[column[k]]) + 0 : 0
 }
 
 # ---- the two output forms ------------------------------------------------
@@ -102,11 +112,11 @@ END {
   # ---- frames per second, log scale ----
   text(X0, 26, 17, "start", INK, "Frames per second at 1024x768 (log scale)", 1)
   x = X0
-  for (k = 1; k <= 3; k++)
-    x = legend(x, 50, k, series[k] (k == 2 ? " (llvmpipe, default threads)" : k == 3 ? " (LP_NUM_THREADS=1)" : ""))
+  for (k = 1; k <= NS; k++)
+    x = legend(x, 50, k, series[k] (k == 1 ? " (" (meta["cpus"] != "" ? meta["cpus"] : "all") " threads)" : k == 2 ? " (1 thread)" : k == 3 ? " (llvmpipe)" : " (1 thread)"))
   lo = 1e30; hi = 0
   for (i = 1; i <= n; i++)
-    for (k = 1; k <= 3; k++)
+    for (k = 1; k <= NS; k++)
       if (fps[i, k] > 0) {
         if (fps[i, k] < lo) lo = fps[i, k]
         if (fps[i, k] > hi) hi = fps[i, k]
@@ -120,10 +130,10 @@ END {
     line(X0, y, X1, y, GRID)
     text(X0 - 8, y + 4, 12, "end", MUTED, 10 ^ d >= 1 ? sprintf("%d", 10 ^ d) : sprintf("%g", 10 ^ d))
   }
-  bw = gw * 0.24
+  bw = gw * 0.2
   for (i = 1; i <= n; i++) {
-    gx = X0 + (i - 1) * gw + (gw - 3 * bw) / 2
-    for (k = 1; k <= 3; k++) {
+    gx = X0 + (i - 1) * gw + (gw - NS * bw) / 2
+    for (k = 1; k <= NS; k++) {
       v = fps[i, k]
       if (v <= 0)
         continue
@@ -140,14 +150,15 @@ END {
   line(X0, FPS_TOP, X0, FPS_BOT, AXIS)
 
   # ---- ratios ----
-  text(X0, 376, 17, "start", INK, "fixgl fps / OSMesa fps (1 = as fast)", 1)
-  x = legend(X0, 400, 2, "fixgl / OSMesa")
-  legend(x, 400, 3, "fixgl / OSMesa-1")
+  # ratio j: fixgl series j over OSMesa series j + 2
+  text(X0, 376, 17, "start", INK, "fixgl fps / OSMesa fps, like for like (1 = as fast)", 1)
+  x = legend(X0, 400, 1, "fixgl / OSMesa (default threads)")
+  legend(x, 400, 2, "fixgl-1 / OSMesa-1 (one thread)")
   rmax = 1
   for (i = 1; i <= n; i++)
-    for (k = 2; k <= 3; k++)
-      if (fps[i, k] > 0 && fps[i, 1] / fps[i, k] > rmax)
-        rmax = fps[i, 1] / fps[i, k]
+    for (j = 1; j <= 2; j++)
+      if (fps[i, j + 2] > 0 && fps[i, j] / fps[i, j + 2] > rmax)
+        rmax = fps[i, j] / fps[i, j + 2]
   step = rmax <= 1.5 ? 0.25 : rmax <= 3 ? 0.5 : 1
   rtop = step * int(rmax * 1.12 / step + 0.999)
   for (r = 0; r <= rtop + 1e-9; r += step) {
@@ -158,13 +169,13 @@ END {
   rw = gw * 0.3
   for (i = 1; i <= n; i++) {
     gx = X0 + (i - 1) * gw + (gw - 2 * rw) / 2
-    for (k = 2; k <= 3; k++) {
-      if (!(fps[i, k] > 0))
+    for (j = 1; j <= 2; j++) {
+      if (!(fps[i, j + 2] > 0 && fps[i, j] > 0))
         continue
-      r = fps[i, 1] / fps[i, k]
+      r = fps[i, j] / fps[i, j + 2]
       top = RAT_BOT - r / rtop * (RAT_BOT - RAT_TOP)
-      rect(gx + (k - 2) * rw, top, rw - 1, RAT_BOT - top, colour[k])
-      text(gx + (k - 2) * rw + rw / 2, top - 4, 10, "middle", INK, sprintf("%.2f", r))
+      rect(gx + (j - 1) * rw, top, rw - 1, RAT_BOT - top, colour[j])
+      text(gx + (j - 1) * rw + rw / 2, top - 4, 10, "middle", INK, sprintf("%.2f", r))
     }
     text(X0 + (i - 0.5) * gw, RAT_BOT + 18, 13, "middle", INK, name[i])
   }

@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # run-bench.sh BENCH_BUILD_DIR [SECONDS_PER_SCENE [REPORT_DIR]]
 #
-# Runs the benchmark in one go: fixgl, OSMesa (llvmpipe with its default
-# number of threads) and OSMesa with LP_NUM_THREADS=1, then prints frames per
-# second per scene and the ratio fixgl/OSMesa for both OSMesa modes.
-# The "same image" column compares the checksums of the last frames.
+# Runs the benchmark in one go: fixgl with its default threads (one per
+# CPU) and with FIXGL_NUM_THREADS=1, OSMesa (llvmpipe with its default
+# number of threads) and OSMesa with LP_NUM_THREADS=1, then prints frames
+# per second per scene and the ratios like for like (default threads over
+# default threads, one thread over one thread), and a scaling table: fixgl
+# with 1, 2 and 4 threads.  The "same" column compares the checksums of the
+# last frames of every fixgl run with OSMesa's.
 # The shading scenes (phong, ctphong, ctsmooth) use fixgl's extensions; the
 # OSMesa build binds the conformance suite's GLSL reference for them.
 #
-# A second table breaks fixgl's frames down with its own counters
+# Another table breaks fixgl's one-thread frames down with its own counters
 # (fixglStats, on only for a few extra frames after the timed ones):
 # nanoseconds per shaded fragment and the shares of the frame time in the
 # vertex stage, primitive setup and fragments (tables.awk says what each
@@ -42,8 +45,12 @@ trap 'rm -rf "$out"' EXIT
 
 date=$(date -u '+%Y-%m-%d %H:%M UTC')
 echo "bench: 1024x768, ${seconds}s per scene after warm-up, $(nproc) CPU(s)"
-echo "bench: running fixgl..."
-"$fixgl_bin" "$seconds" >"$out/fixgl"
+echo "bench: running fixgl (default threads: $(nproc))..."
+env -u FIXGL_NUM_THREADS "$fixgl_bin" "$seconds" >"$out/fixgl"
+for t in 1 2 4; do
+  echo "bench: running fixgl (FIXGL_NUM_THREADS=$t)..."
+  FIXGL_NUM_THREADS=$t "$fixgl_bin" "$seconds" >"$out/fixgl$t"
+done
 echo "bench: running OSMesa (llvmpipe, default threads)..."
 env -u LP_NUM_THREADS "$osmesa_bin" "$seconds" >"$out/osmesa"
 echo "bench: running OSMesa (llvmpipe, LP_NUM_THREADS=1)..."
@@ -66,34 +73,40 @@ tsv=$report_dir/bench.tsv
       if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 }
       fps[run, $2] = $4; sum[run, $2] = $8
     }
-    $1 == "stats" && run == "fixgl" {
+    $1 == "stats" && run == "fixgl1" {
       for (k = 3; k < NF; k += 2)
         st[$2, $k] = $(k + 1)
     }
     END {
       OFS = "\t"
       print "scene", "fixgl_fps", "osmesa_fps", "osmesa1_fps", "same", "stats_frames",
-            "frame_ns", "fragments", "setup_ns", "raster_ns", "vertex_ns", "batch_ns"
+            "frame_ns", "fragments", "setup_ns", "raster_ns", "vertex_ns", "batch_ns",
+            "fixgl1_fps", "fixgl2_fps", "fixgl4_fps"
       for (i = 1; i <= n; i++) {
         s = order[i]
+        same = sum["fixgl", s] == sum["osmesa", s] && sum["fixgl1", s] == sum["osmesa", s] &&
+               sum["fixgl2", s] == sum["osmesa", s] && sum["fixgl4", s] == sum["osmesa", s]
         print s, fps["fixgl", s] + 0, fps["osmesa", s] + 0, fps["osmesa1", s] + 0,
-              (sum["fixgl", s] == sum["osmesa", s] ? "yes" : "no"),
+              (same ? "yes" : "no"),
               st[s, "frames"] + 0, st[s, "frame_ns"] + 0, st[s, "fragments"] + 0,
               st[s, "setup_ns"] + 0, st[s, "raster_ns"] + 0, st[s, "vertex_ns"] + 0,
-              st[s, "batch_ns"] + 0
+              st[s, "batch_ns"] + 0, fps["fixgl1", s] + 0, fps["fixgl2", s] + 0,
+              fps["fixgl4", s] + 0
       }
-    }' "$out/fixgl" "$out/osmesa" "$out/osmesa1"
+    }' "$out/fixgl" "$out/fixgl1" "$out/fixgl2" "$out/fixgl4" "$out/osmesa" "$out/osmesa1"
 } >"$tsv"
 
 awk -v format=text -f "$here/tables.awk" "$tsv"
 echo
+echo "fixgl = FIXGL_NUM_THREADS unset (one thread per CPU); fixgl-1 = FIXGL_NUM_THREADS=1;"
 echo "OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1;"
-echo "same = last frame of fixgl identical to OSMesa's (lit200, lit20k and gears"
-echo "are lit).  phong, ctphong, ctsmooth: fixgl's GL_PHONG_WIN and"
+echo "same = last frame of every fixgl run identical to OSMesa's (lit200, lit20k,"
+echo "gears and manydraws are lit).  phong, ctphong, ctsmooth: fixgl's GL_PHONG_WIN and"
 echo "GL_FIXGL_cook_torrance (per fragment, per vertex) against llvmpipe running the"
 echo "same equations as GLSL (conformance/reference/fcr_shading.c); 786,432 lit"
 echo "fragments a frame."
-echo "Breakdown (fixgl's counters, fixglStats, on for a few extra frames only):"
+echo "Breakdown of fixgl-1's frames (fixgl's counters, fixglStats, on for a few extra"
+echo "frames only):"
 echo "ns/frag = raster core time after primitive setup / fragments shaded;"
 echo "vertex, setup, frags, other = shares of the frame's wall-clock time (other:"
 echo "glClear, glFinish, state outside vertex batches); n/a = nothing to divide"
@@ -115,7 +128,9 @@ p.note { color: #555; max-width: 60em; }
 </style></head><body>
 <h1>fixgl bench</h1>
 <p>$date, $(nproc) CPU(s), 1024&times;768, $seconds s per scene after warm-up.
-OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1.</p>
+fixgl = one rasterizing thread per CPU (FIXGL_NUM_THREADS unset); fixgl-1 =
+FIXGL_NUM_THREADS=1; OSMesa = llvmpipe with its default threads; OSMesa-1 =
+LP_NUM_THREADS=1.</p>
 EOF
   awk -v format=svg -f "$here/chart.awk" "$tsv"
   awk -v format=html -f "$here/tables.awk" "$tsv"
@@ -123,8 +138,8 @@ EOF
 <p class="note">same: the last frame of fixgl is identical to OSMesa's
 (phong, ctphong, ctsmooth: OSMesa runs the GLSL reference of fixgl's shading
 extensions, conformance/reference/fcr_shading.c).</p>
-<p class="note">Breakdown: fixgl's own counters (fixglStats), on only for a
-few extra frames after the timed ones, so the frames per second are measured
+<p class="note">Breakdown: fixgl's own counters (fixglStats) in the
+one-thread run, on only for a few extra frames after the timed ones, so the frames per second are measured
 without them (the timers add a little to the frames they measure).
 ms/frame: wall-clock time of those frames. frags/frame: fragments the raster
 core shaded (covered pixels inside the draw region). ns/frag: the raster
