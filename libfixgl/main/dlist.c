@@ -1265,6 +1265,10 @@ static void compile_vertex_list(struct fgl_context *ctx)
 static void wrap_buffers(struct fgl_context *ctx)
 {
    struct save_context *save = &ctx->ListState->save;
+   if (save->prim_used == 0) {   /* no open primitive (Mesa asserts) */
+      compile_vertex_list(ctx);
+      return;
+   }
    const unsigned i = save->prim_used - 1;
    save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
    const GLenum mode = save->prims[i].mode;
@@ -1610,7 +1614,7 @@ static unsigned material_bitmask(GLenum face, GLenum pname)
 
 /* glMaterialfv while compiling: inside glBegin/glEnd the material
  * attributes of the vertex [S: vbo_save_api.c:_save_Materialfv], outside
- * a MATERIAL node [S: dlist.c:save_Materialfv], which executes first and
+ * (or after dlist_fallback) a MATERIAL node [S: dlist.c:save_Materialfv], which executes first and
  * is left out when it sets what the compiler knows to be set. */
 void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
                        const GLfloat *params)
@@ -1639,7 +1643,9 @@ void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
       fgl_dl_put_Materialfv(ctx, face, pname, params, 1);
       return;
    }
-   if (inside_save_begin_end(ls)) {
+   /* after a glEvalCoord or glCallList ended the vertex list
+    * (opcode_fallback), the vertex format is gone: a MATERIAL node */
+   if (inside_save_begin_end(ls) && !ls->opcode_fallback) {
       /* MAT(): front, then back, each with its size */
       static const struct { GLenum pname; enum fgl_vbo_attr front; unsigned n; } mats[] = {
          { GL_EMISSION, FGL_ATTR_MAT_FRONT_EMISSION, 4 },
@@ -1751,8 +1757,8 @@ void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLs
    }
    grow_vertex_storage(ctx, (unsigned)count);
    notify_begin(ctx, mode, true);
-   for (GLsizei i = 0; i < count; i++)
-      t_array_element(ctx, first + i);
+   for (GLsizei i = 0; i < count; i++)   /* start + i, wrapping */
+      t_array_element(ctx, (GLint)((GLuint)first + (GLuint)i));
    fgl_save_end(ctx);
 }
 
