@@ -32,10 +32,28 @@
 
 /* ---- helpers ---- */
 
-/* util_ifloor (u_math.h) */
+/* util_ifloor (u_math.h, not x86-32): floor through the bits of two
+ * floats, exact for |f| < 2^22; beyond, and for NaN, the same
+ * deterministic values as the oracle's (NaN gives 0) */
 static int ifloor(float f)
 {
-   return (int)floorf(f);
+   const float af = (float)((3 << 22) + 0.5 + (double)f);
+   const float bf = (float)((3 << 22) + 0.5 - (double)f);
+   uint32_t ai, bi;
+   memcpy(&ai, &af, sizeof(ai));
+   memcpy(&bi, &bf, sizeof(bi));
+   return (int32_t)(ai - bi) >> 1;
+}
+
+/* a + b and a - b with the int wrap-around of the oracle's arithmetic */
+static int add_wrap(int a, int b)
+{
+   return (int)((unsigned)a + (unsigned)b);
+}
+
+static int sub_wrap(int a, int b)
+{
+   return (int)((unsigned)a - (unsigned)b);
 }
 
 /* The window-buffer orientation: the oracle renders y-down; the quads
@@ -183,9 +201,9 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
    q.z = z;
    memcpy(q.color, color, sizeof(q.color));
    q.x0 = (float)x;
-   q.x1 = (float)(x + w);
+   q.x1 = (float)add_wrap(x, w);
    q.y0 = (float)y;
-   q.y1 = (float)(y + h);
+   q.y1 = (float)add_wrap(y, h);
    q.s0 = 0.0f;
    q.s1 = 1.0f;
    /* st_draw_quad(..., sLeft, tBot = 1, sRight, tTop = 0): t0 = 1 goes to
@@ -237,10 +255,10 @@ static bool accum_bitmap(struct fgl_context *ctx, int x, int y, int width, int h
    if (width > BITMAP_CACHE_WIDTH || height > BITMAP_CACHE_HEIGHT)
       return false;
    if (c->Pending) {
-      px = x - c->XPos;
-      py = y - c->YPos;
-      if (px < 0 || px + width > BITMAP_CACHE_WIDTH || py < 0 ||
-          py + height > BITMAP_CACHE_HEIGHT || !same_color(ctx->Current.RasterColor, c->Color) ||
+      px = sub_wrap(x, c->XPos);
+      py = sub_wrap(y, c->YPos);
+      if (px < 0 || px > BITMAP_CACHE_WIDTH - width || py < 0 ||
+          py > BITMAP_CACHE_HEIGHT - height || !same_color(ctx->Current.RasterColor, c->Color) ||
           fabsf(z - c->ZPos) > 1e-06)
          fgl_flush_bitmap_cache(ctx);
    }
@@ -249,7 +267,7 @@ static bool accum_bitmap(struct fgl_context *ctx, int x, int y, int width, int h
       px = 0;
       py = (BITMAP_CACHE_HEIGHT - height) / 2;
       c->XPos = x;
-      c->YPos = y - py;
+      c->YPos = sub_wrap(y, py);
       c->ZPos = z;
       c->Pending = true;
       memcpy(c->Color, ctx->Current.RasterColor, sizeof(c->Color));
