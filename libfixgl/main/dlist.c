@@ -2813,10 +2813,16 @@ bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLf
 {
    if (!save_prologue(ctx))
       return false;
-   uint8_t *tex = fgl_make_bitmap_texture(ctx, width, height, bits);
-   if (!tex) {
-      fgl_error(ctx, GL_OUT_OF_MEMORY);
-      return false;
+   /* [S: dlist.c:save_Bitmap] a texture only for a bitmap with pixels:
+    * a negative size is compiled as it is, GL_INVALID_VALUE when the
+    * node executes */
+   uint8_t *tex = NULL;
+   if (width > 0 && height > 0) {
+      tex = fgl_make_bitmap_texture(ctx, width, height, bits);
+      if (!tex) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return false;
+      }
    }
    union dl_node *n = alloc_node(ctx, DL_OP_BITMAP, 6 + PTR_NODES);
    if (!n) {
