@@ -19,6 +19,7 @@
  *  - glCopyPixels: a blit when nothing per-fragment applies (no zoom, no
  *    overlap), otherwise the source copied into a texture and drawn.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -810,6 +811,28 @@ static void color_transfer(const struct fgl_context *ctx, struct r_pixel_image *
    }
 }
 
+/* One axis of a clip: [*pos, *pos + *size) against [lo, hi), the cut
+ * start added to *skip (wrapping, as the oracle's int); false if nothing
+ * is left.  64-bit arithmetic, so no position or size overflows. */
+static bool clip_span(int *pos, int *size, int lo, int hi, int *skip)
+{
+   long long p = *pos, n = *size;
+   long long cut = 0;
+   if (p < lo) {
+      cut = lo - p;
+      n -= cut;
+      p = lo;
+   }
+   if (p + n > hi)
+      n = hi - p;
+   if (n <= 0)
+      return false;
+   *skip = (int)((unsigned)*skip + (unsigned)cut);
+   *pos = (int)p;
+   *size = (int)n;
+   return true;
+}
+
 /* [S: image.c:_mesa_clip_drawpixels] with zoom (1, 1): the destination
  * against the scissored draw bounds, skipping what is left out */
 static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *w, int *h,
@@ -819,23 +842,11 @@ static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *
    fgl_scissor_bounds(ctx, b);   /* xmin, xmax, ymin, ymax */
    if (unpack->RowLength == 0)
       unpack->RowLength = *w;
-   if (*x < b[0]) {
-      unpack->SkipPixels += b[0] - *x;
-      *w -= b[0] - *x;
-      *x = b[0];
-   }
-   if (*x + *w > b[1])
-      *w -= *x + *w - b[1];
-   if (*w <= 0)
+   /* in 64 bits: a position or size near the int limits clips as it
+    * should instead of overflowing */
+   if (!clip_span(x, w, b[0], b[1], &unpack->SkipPixels))
       return false;
-   if (*y < b[2]) {
-      unpack->SkipRows += b[2] - *y;
-      *h -= b[2] - *y;
-      *y = b[2];
-   }
-   if (*y + *h > b[3])
-      *h -= *y + *h - b[3];
-   return *h > 0;
+   return clip_span(y, h, b[2], b[3], &unpack->SkipRows);
 }
 
 /* The quad of a glDrawPixels or glCopyPixels texture [S: st_cb_drawpixels.c:
@@ -1117,23 +1128,8 @@ GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsize
 static bool clip_readpixels(const struct fgl_framebuffer *fb, int *x, int *y, int *w, int *h,
                             int *skip_pixels, int *skip_rows)
 {
-   if (*x < 0) {
-      *skip_pixels += -*x;
-      *w -= -*x;
-      *x = 0;
-   }
-   if (*x + *w > fb->Width)
-      *w -= *x + *w - fb->Width;
-   if (*w <= 0)
-      return false;
-   if (*y < 0) {
-      *skip_rows += -*y;
-      *h -= -*y;
-      *y = 0;
-   }
-   if (*y + *h > fb->Height)
-      *h -= *y + *h - fb->Height;
-   return *h > 0;
+   return clip_span(x, w, 0, fb->Width, skip_pixels) &&
+          clip_span(y, h, 0, fb->Height, skip_rows);
 }
 
 /* The _ImageTransferState of the colour path (_mesa_update_pixel):
@@ -1186,7 +1182,11 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
    int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
    if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
       return true;
-   int drx = dstx + skip_px, dry = dsty + skip_rows;
+   /* a destination past the int range is nowhere in the window */
+   const long long drx64 = (long long)dstx + skip_px, dry64 = (long long)dsty + skip_rows;
+   if (drx64 > INT_MAX || dry64 > INT_MAX)
+      return true;
+   int drx = (int)drx64, dry = (int)dry64;
    struct fgl_pixelstore unpack = { .Alignment = 1, .RowLength = width,
                                     .SkipPixels = skip_px, .SkipRows = skip_rows };
    if (!clip_drawpixels(ctx, &drx, &dry, &rw, &rh, &unpack))
@@ -1218,12 +1218,25 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
 
    /* the source, y-down, into a width x height texture whose row 0 is
     * the top row; the part outside the framebuffer stays uninitialised
-    * in the oracle (zero here) */
-   const int H = fb->Height;
-   int rx = srcx, ry = H - srcy - height, rw = width, rh = height;
+    * in the oracle (zero here).  A source wholly outside draws nothing. */
+   const long long ry64 = (long long)fb->Height - srcy - height;
+   if (ry64 < INT_MIN || ry64 > INT_MAX)
+      return;
+   int rx = srcx, ry = (int)ry64, rw = width, rh = height;
    int skip_px = 0, skip_rows = 0;
    if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
       return;
+   if (width > FGL_MAX_TEXTURE_SIZE || height > FGL_MAX_TEXTURE_SIZE) {
+      /* larger than any texture: only the part of the source inside the
+       * window is defined, and only that is copied (to where it goes),
+       * without a texture of the whole source */
+      const long long cx = (long long)srcx < 0 ? 0 : srcx;
+      const long long cy = (long long)srcy < 0 ? 0 : srcy;
+      const long long dx = (long long)dstx + (cx - srcx), dy = (long long)dsty + (cy - srcy);
+      if (dx <= INT_MAX && dy <= INT_MAX)
+         copy_pixels(ctx, (int)cx, (int)cy, rw, rh, (int)dx, (int)dy, type);
+      return;
+   }
    const size_t n = (size_t)width * (size_t)height;
    float *t = NULL;
    uint8_t *s = NULL;
