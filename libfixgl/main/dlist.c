@@ -2296,8 +2296,20 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
 
 static void execute_list(struct fgl_context *ctx, GLuint list);
 
+/* OPCODE_POLYGON_STIPPLE: the list's own 32x32 copy, unpacked with the
+ * default pixel-store state whatever the current one [S: dlist.c:
+ * execute_list] */
+static void list_polygon_stipple(struct fgl_context *ctx, const GLubyte *pattern)
+{
+   const struct fgl_pixelstore save = ctx->Unpack;
+   ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 4 };
+   glPolygonStipple(pattern);
+   ctx->Unpack = save;
+}
+
 /* commands whose replay is not an exported gl* function */
 #define glWindowPos4fMESA fgl_window_pos4f
+#define glPolygonStipple(pattern) list_polygon_stipple(ctx, pattern)
 
 static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl)
 {
