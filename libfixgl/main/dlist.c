@@ -1873,10 +1873,15 @@ bool fgl_save_map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u
       n[4].i = k;            /* stride */
       n[5].i = order;
       n[6].u = cnt;
+      /* a negative stride (an error when the call executes, but the
+       * node has its own stride) would read before the caller's points,
+       * as the oracle does: zeros instead */
       float *p = &n[7].f;
       for (int i = 0; cnt && i < order; i++)
          for (int c = 0; c < k; c++)
-            *p++ = pf ? pf[(size_t)i * stride + c] : (float)pd[(size_t)i * stride + c];
+            *p++ = stride < 0 ? 0.0f
+                   : pf ? pf[(size_t)i * (size_t)stride + (size_t)c]
+                        : (float)pd[(size_t)i * (size_t)stride + (size_t)c];
    }
    return ctx->ExecuteFlag;
 }
@@ -1905,12 +1910,14 @@ bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u
       n[8].i = uorder;
       n[9].i = vorder;
       n[10].u = cnt;
+      /* negative strides: zeros, as in fgl_save_map1 */
+      const bool before = ustride < 0 || vstride < 0;
       float *p = &n[11].f;
       for (int i = 0; cnt && i < uorder; i++)
          for (int j = 0; j < vorder; j++) {
-            const size_t o = (size_t)i * ustride + (size_t)j * vstride;
+            const size_t o = before ? 0 : (size_t)i * (size_t)ustride + (size_t)j * (size_t)vstride;
             for (int c = 0; c < k; c++)
-               *p++ = pf ? pf[o + c] : (float)pd[o + c];
+               *p++ = before ? 0.0f : pf ? pf[o + (size_t)c] : (float)pd[o + (size_t)c];
          }
    }
    return ctx->ExecuteFlag;
