@@ -34,6 +34,7 @@
 #include "main/dlist.h"
 
 #include <assert.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -2735,6 +2736,43 @@ static GLuint find_free_block(const struct dlist_shared *ls, GLuint range)
    return max_key - free_start >= range ? free_start : 0;
 }
 
+/* The names base .. base + n - 1, all free, reserved by empty lists,
+ * inserted into the table at once (one move of the names after them). */
+static bool insert_empty_lists(struct dlist_shared *sh, GLuint base, unsigned n)
+{
+   if (n > UINT_MAX - sh->table_count)
+      return false;
+   const unsigned count = sh->table_count + n;
+   if (count > sh->table_cap) {
+      unsigned cap = sh->table_cap ? sh->table_cap : 64;
+      while (cap < count)
+         cap = cap > UINT_MAX / 2 ? count : cap * 2;
+      void *t = realloc(sh->table, (size_t)cap * sizeof(*sh->table));
+      if (!t)
+         return false;
+      sh->table = t;
+      sh->table_cap = cap;
+   }
+   const unsigned at = table_find(sh, base);
+   memmove(&sh->table[at + n], &sh->table[at], (sh->table_count - at) * sizeof(*sh->table));
+   for (unsigned k = 0; k < n; k++) {
+      struct display_list *dl = make_list(base + k);
+      if (!dl) {   /* undo: the names after them move back */
+         for (unsigned j = 0; j < k; j++)
+            delete_list(sh->table[at + j].dl);
+         memmove(&sh->table[at], &sh->table[at + n],
+                 (sh->table_count - at) * sizeof(*sh->table));
+         return false;
+      }
+      sh->table[at + k].name = base + k;
+      sh->table[at + k].dl = dl;
+   }
+   sh->table_count = count;
+   if (base + (n - 1) > sh->max_key)
+      sh->max_key = base + (n - 1);
+   return true;
+}
+
 GLuint GLAPIENTRY glGenLists(GLsizei range)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -2750,17 +2788,10 @@ GLuint GLAPIENTRY glGenLists(GLsizei range)
       return 0;
    struct dlist_shared *sh = ctx->ListState->shared;
    pthread_mutex_lock(&sh->lock);
-   const GLuint base = find_free_block(sh, (GLuint)range);
-   if (base) {
-      /* the names are reserved by empty lists */
-      for (GLuint i = 0; i < (GLuint)range; i++) {
-         struct display_list *dl = make_list(base + i);
-         if (!dl || !insert_list(ctx, dl)) {
-            delete_list(dl);
-            fgl_error(ctx, GL_OUT_OF_MEMORY);
-            break;
-         }
-      }
+   GLuint base = find_free_block(sh, (GLuint)range);
+   if (base && !insert_empty_lists(sh, base, (unsigned)range)) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      base = 0;
    }
    pthread_mutex_unlock(&sh->lock);
    return base;
@@ -2782,8 +2813,13 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    const GLuint end = list + (GLuint)range;
    struct dlist_shared *sh = ctx->ListState->shared;
    pthread_mutex_lock(&sh->lock);
-   for (unsigned i = table_find(sh, list); i < sh->table_count && sh->table[i].name < end;)
-      remove_list(ctx, sh->table[i].name);
+   const unsigned first = table_find(sh, list);
+   unsigned last = first;
+   for (; last < sh->table_count && sh->table[last].name < end; last++)
+      delete_list(sh->table[last].dl);
+   /* the names after them move once */
+   memmove(&sh->table[first], &sh->table[last], (sh->table_count - last) * sizeof(*sh->table));
+   sh->table_count -= last - first;
    pthread_mutex_unlock(&sh->lock);
 }
 
