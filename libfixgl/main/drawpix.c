@@ -1097,6 +1097,12 @@ void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenu
 void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
                               GLenum format, GLenum type, const GLvoid *pixels)
 {
+   /* glDrawPixels is not allowed between glBegin and glEnd there either
+    * (a list called inside them) */
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
    const struct fgl_pixelstore saved = ctx->Unpack;
    ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
    drawpixels(ctx, width, height, format, type, pixels);
