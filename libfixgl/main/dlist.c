@@ -2021,6 +2021,30 @@ static void *copy_client_image(struct fgl_context *ctx, GLsizei width, GLsizei h
 {
    if (!pixels || width <= 0 || height <= 0)
       return NULL;
+   if (type == GL_BITMAP) {
+      /* [S: pack.c:_mesa_unpack_bitmap] rows of whole bytes, most
+       * significant bit first, skips and bit order applied */
+      const size_t row_bytes = ((size_t)width + 7) / 8;
+      uint8_t *image = calloc(row_bytes * (size_t)height, 1);
+      if (!image) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return NULL;
+      }
+      const unsigned skip = (unsigned)ctx->Unpack.SkipPixels & 7u;
+      for (GLsizei row = 0; row < height; row++) {
+         const uint8_t *src = fgl_image_address(&ctx->Unpack, pixels, width, format, type,
+                                                row, 0);
+         uint8_t *dst = image + (size_t)row * row_bytes;
+         for (GLsizei col = 0; col < width; col++) {
+            const size_t bit = skip + (size_t)col;
+            const unsigned b = ctx->Unpack.LsbFirst ? (src[bit / 8] >> (bit % 8)) & 1u
+                                                    : (src[bit / 8] >> (7 - bit % 8)) & 1u;
+            if (b)
+               dst[col / 8] |= (uint8_t)(0x80u >> (col % 8));
+         }
+      }
+      return image;
+   }
    const size_t bpp = fgl_pixel_bytes(format, type);
    if (bpp == 0)
       return NULL;
