@@ -29,6 +29,7 @@ extern const fc_case fc_cases_readpix[];
 extern const fc_case fc_cases_pix_format[];
 extern const fc_case fc_cases_pix_format_tex[];
 extern const fc_case fc_cases_errors[];
+extern const fc_case fc_cases_robust[];
 extern const fc_case fc_cases_light[];
 extern const fc_case fc_cases_light_space[];
 extern const fc_case fc_cases_light_normal[];

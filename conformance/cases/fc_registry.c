@@ -7,6 +7,7 @@ static const fc_case *const groups[] = {
     fc_cases_format, fc_cases_viewport, fc_cases_matrix, fc_cases_query,
     fc_cases_vertex, fc_cases_readpix, fc_cases_pix_format, fc_cases_pix_format_tex,
     fc_cases_errors,
+    fc_cases_robust,
     fc_cases_light, fc_cases_light_space, fc_cases_light_normal,
     fc_cases_light_mat, fc_cases_light_prim, fc_cases_light_api,
     fc_cases_fog,

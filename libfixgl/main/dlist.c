@@ -34,6 +34,7 @@
 #include "main/dlist.h"
 
 #include <assert.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -1265,6 +1266,10 @@ static void compile_vertex_list(struct fgl_context *ctx)
 static void wrap_buffers(struct fgl_context *ctx)
 {
    struct save_context *save = &ctx->ListState->save;
+   if (save->prim_used == 0) {   /* no open primitive (Mesa asserts) */
+      compile_vertex_list(ctx);
+      return;
+   }
    const unsigned i = save->prim_used - 1;
    save->prims[i].count = get_vertex_count(save) - save->prims[i].start;
    const GLenum mode = save->prims[i].mode;
@@ -1610,7 +1615,7 @@ static unsigned material_bitmask(GLenum face, GLenum pname)
 
 /* glMaterialfv while compiling: inside glBegin/glEnd the material
  * attributes of the vertex [S: vbo_save_api.c:_save_Materialfv], outside
- * a MATERIAL node [S: dlist.c:save_Materialfv], which executes first and
+ * (or after dlist_fallback) a MATERIAL node [S: dlist.c:save_Materialfv], which executes first and
  * is left out when it sets what the compiler knows to be set. */
 void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
                        const GLfloat *params)
@@ -1639,7 +1644,9 @@ void fgl_save_material(struct fgl_context *ctx, GLenum face, GLenum pname,
       fgl_dl_put_Materialfv(ctx, face, pname, params, 1);
       return;
    }
-   if (inside_save_begin_end(ls)) {
+   /* after a glEvalCoord or glCallList ended the vertex list
+    * (opcode_fallback), the vertex format is gone: a MATERIAL node */
+   if (inside_save_begin_end(ls) && !ls->opcode_fallback) {
       /* MAT(): front, then back, each with its size */
       static const struct { GLenum pname; enum fgl_vbo_attr front; unsigned n; } mats[] = {
          { GL_EMISSION, FGL_ATTR_MAT_FRONT_EMISSION, 4 },
@@ -1751,8 +1758,8 @@ void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLs
    }
    grow_vertex_storage(ctx, (unsigned)count);
    notify_begin(ctx, mode, true);
-   for (GLsizei i = 0; i < count; i++)
-      t_array_element(ctx, first + i);
+   for (GLsizei i = 0; i < count; i++)   /* start + i, wrapping */
+      t_array_element(ctx, (GLint)((GLuint)first + (GLuint)i));
    fgl_save_end(ctx);
 }
 
@@ -1867,10 +1874,15 @@ bool fgl_save_map1(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u
       n[4].i = k;            /* stride */
       n[5].i = order;
       n[6].u = cnt;
+      /* a negative stride (an error when the call executes, but the
+       * node has its own stride) would read before the caller's points,
+       * as the oracle does: zeros instead */
       float *p = &n[7].f;
       for (int i = 0; cnt && i < order; i++)
          for (int c = 0; c < k; c++)
-            *p++ = pf ? pf[(size_t)i * stride + c] : (float)pd[(size_t)i * stride + c];
+            *p++ = stride < 0 ? 0.0f
+                   : pf ? pf[(size_t)i * (size_t)stride + (size_t)c]
+                        : (float)pd[(size_t)i * (size_t)stride + (size_t)c];
    }
    return ctx->ExecuteFlag;
 }
@@ -1899,12 +1911,14 @@ bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u
       n[8].i = uorder;
       n[9].i = vorder;
       n[10].u = cnt;
+      /* negative strides: zeros, as in fgl_save_map1 */
+      const bool before = ustride < 0 || vstride < 0;
       float *p = &n[11].f;
       for (int i = 0; cnt && i < uorder; i++)
          for (int j = 0; j < vorder; j++) {
-            const size_t o = (size_t)i * ustride + (size_t)j * vstride;
+            const size_t o = before ? 0 : (size_t)i * (size_t)ustride + (size_t)j * (size_t)vstride;
             for (int c = 0; c < k; c++)
-               *p++ = pf ? pf[o + c] : (float)pd[o + c];
+               *p++ = before ? 0.0f : pf ? pf[o + (size_t)c] : (float)pd[o + (size_t)c];
          }
    }
    return ctx->ExecuteFlag;
@@ -2007,6 +2021,30 @@ static void *copy_client_image(struct fgl_context *ctx, GLsizei width, GLsizei h
 {
    if (!pixels || width <= 0 || height <= 0)
       return NULL;
+   if (type == GL_BITMAP) {
+      /* [S: pack.c:_mesa_unpack_bitmap] rows of whole bytes, most
+       * significant bit first, skips and bit order applied */
+      const size_t row_bytes = ((size_t)width + 7) / 8;
+      uint8_t *image = calloc(row_bytes * (size_t)height, 1);
+      if (!image) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return NULL;
+      }
+      const unsigned skip = (unsigned)ctx->Unpack.SkipPixels & 7u;
+      for (GLsizei row = 0; row < height; row++) {
+         const uint8_t *src = fgl_image_address(&ctx->Unpack, pixels, width, format, type,
+                                                row, 0);
+         uint8_t *dst = image + (size_t)row * row_bytes;
+         for (GLsizei col = 0; col < width; col++) {
+            const size_t bit = skip + (size_t)col;
+            const unsigned b = ctx->Unpack.LsbFirst ? (src[bit / 8] >> (bit % 8)) & 1u
+                                                    : (src[bit / 8] >> (7 - bit % 8)) & 1u;
+            if (b)
+               dst[col / 8] |= (uint8_t)(0x80u >> (col % 8));
+         }
+      }
+      return image;
+   }
    const size_t bpp = fgl_pixel_bytes(format, type);
    if (bpp == 0)
       return NULL;
@@ -2290,8 +2328,20 @@ static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_li
 
 static void execute_list(struct fgl_context *ctx, GLuint list);
 
+/* OPCODE_POLYGON_STIPPLE: the list's own 32x32 copy, unpacked with the
+ * default pixel-store state whatever the current one [S: dlist.c:
+ * execute_list] */
+static void list_polygon_stipple(struct fgl_context *ctx, const GLubyte *pattern)
+{
+   const struct fgl_pixelstore save = ctx->Unpack;
+   ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 4 };
+   glPolygonStipple(pattern);
+   ctx->Unpack = save;
+}
+
 /* commands whose replay is not an exported gl* function */
 #define glWindowPos4fMESA fgl_window_pos4f
+#define glPolygonStipple(pattern) list_polygon_stipple(ctx, pattern)
 
 static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl)
 {
@@ -2710,6 +2760,43 @@ static GLuint find_free_block(const struct dlist_shared *ls, GLuint range)
    return max_key - free_start >= range ? free_start : 0;
 }
 
+/* The names base .. base + n - 1, all free, reserved by empty lists,
+ * inserted into the table at once (one move of the names after them). */
+static bool insert_empty_lists(struct dlist_shared *sh, GLuint base, unsigned n)
+{
+   if (n > UINT_MAX - sh->table_count)
+      return false;
+   const unsigned count = sh->table_count + n;
+   if (count > sh->table_cap) {
+      unsigned cap = sh->table_cap ? sh->table_cap : 64;
+      while (cap < count)
+         cap = cap > UINT_MAX / 2 ? count : cap * 2;
+      void *t = realloc(sh->table, (size_t)cap * sizeof(*sh->table));
+      if (!t)
+         return false;
+      sh->table = t;
+      sh->table_cap = cap;
+   }
+   const unsigned at = table_find(sh, base);
+   memmove(&sh->table[at + n], &sh->table[at], (sh->table_count - at) * sizeof(*sh->table));
+   for (unsigned k = 0; k < n; k++) {
+      struct display_list *dl = make_list(base + k);
+      if (!dl) {   /* undo: the names after them move back */
+         for (unsigned j = 0; j < k; j++)
+            delete_list(sh->table[at + j].dl);
+         memmove(&sh->table[at], &sh->table[at + n],
+                 (sh->table_count - at) * sizeof(*sh->table));
+         return false;
+      }
+      sh->table[at + k].name = base + k;
+      sh->table[at + k].dl = dl;
+   }
+   sh->table_count = count;
+   if (base + (n - 1) > sh->max_key)
+      sh->max_key = base + (n - 1);
+   return true;
+}
+
 GLuint GLAPIENTRY glGenLists(GLsizei range)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -2725,17 +2812,10 @@ GLuint GLAPIENTRY glGenLists(GLsizei range)
       return 0;
    struct dlist_shared *sh = ctx->ListState->shared;
    pthread_mutex_lock(&sh->lock);
-   const GLuint base = find_free_block(sh, (GLuint)range);
-   if (base) {
-      /* the names are reserved by empty lists */
-      for (GLuint i = 0; i < (GLuint)range; i++) {
-         struct display_list *dl = make_list(base + i);
-         if (!dl || !insert_list(ctx, dl)) {
-            delete_list(dl);
-            fgl_error(ctx, GL_OUT_OF_MEMORY);
-            break;
-         }
-      }
+   GLuint base = find_free_block(sh, (GLuint)range);
+   if (base && !insert_empty_lists(sh, base, (unsigned)range)) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      base = 0;
    }
    pthread_mutex_unlock(&sh->lock);
    return base;
@@ -2757,8 +2837,13 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    const GLuint end = list + (GLuint)range;
    struct dlist_shared *sh = ctx->ListState->shared;
    pthread_mutex_lock(&sh->lock);
-   for (unsigned i = table_find(sh, list); i < sh->table_count && sh->table[i].name < end;)
-      remove_list(ctx, sh->table[i].name);
+   const unsigned first = table_find(sh, list);
+   unsigned last = first;
+   for (; last < sh->table_count && sh->table[last].name < end; last++)
+      delete_list(sh->table[last].dl);
+   /* the names after them move once */
+   memmove(&sh->table[first], &sh->table[last], (sh->table_count - last) * sizeof(*sh->table));
+   sh->table_count -= last - first;
    pthread_mutex_unlock(&sh->lock);
 }
 
@@ -2807,10 +2892,16 @@ bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLf
 {
    if (!save_prologue(ctx))
       return false;
-   uint8_t *tex = fgl_make_bitmap_texture(ctx, width, height, bits);
-   if (!tex) {
-      fgl_error(ctx, GL_OUT_OF_MEMORY);
-      return false;
+   /* [S: dlist.c:save_Bitmap] a texture only for a bitmap with pixels:
+    * a negative size is compiled as it is, GL_INVALID_VALUE when the
+    * node executes */
+   uint8_t *tex = NULL;
+   if (width > 0 && height > 0) {
+      tex = fgl_make_bitmap_texture(ctx, width, height, bits);
+      if (!tex) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return false;
+      }
    }
    union dl_node *n = alloc_node(ctx, DL_OP_BITMAP, 6 + PTR_NODES);
    if (!n) {

@@ -19,6 +19,7 @@
  *  - glCopyPixels: a blit when nothing per-fragment applies (no zoom, no
  *    overlap), otherwise the source copied into a texture and drawn.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,10 +33,28 @@
 
 /* ---- helpers ---- */
 
-/* util_ifloor (u_math.h) */
+/* util_ifloor (u_math.h, not x86-32): floor through the bits of two
+ * floats, exact for |f| < 2^22; beyond, and for NaN, the same
+ * deterministic values as the oracle's (NaN gives 0) */
 static int ifloor(float f)
 {
-   return (int)floorf(f);
+   const float af = (float)((3 << 22) + 0.5 + (double)f);
+   const float bf = (float)((3 << 22) + 0.5 - (double)f);
+   uint32_t ai, bi;
+   memcpy(&ai, &af, sizeof(ai));
+   memcpy(&bi, &bf, sizeof(bi));
+   return (int32_t)(ai - bi) >> 1;
+}
+
+/* a + b and a - b with the int wrap-around of the oracle's arithmetic */
+static int add_wrap(int a, int b)
+{
+   return (int)((unsigned)a + (unsigned)b);
+}
+
+static int sub_wrap(int a, int b)
+{
+   return (int)((unsigned)a - (unsigned)b);
 }
 
 /* The window-buffer orientation: the oracle renders y-down; the quads
@@ -184,9 +203,9 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
    q.z = z;
    memcpy(q.color, color, sizeof(q.color));
    q.x0 = (float)x;
-   q.x1 = (float)(x + w);
+   q.x1 = (float)add_wrap(x, w);
    q.y0 = (float)y;
-   q.y1 = (float)(y + h);
+   q.y1 = (float)add_wrap(y, h);
    q.s0 = 0.0f;
    q.s1 = 1.0f;
    /* st_draw_quad(..., sLeft, tBot = 1, sRight, tTop = 0): t0 = 1 goes to
@@ -240,10 +259,10 @@ static bool accum_bitmap(struct fgl_context *ctx, int x, int y, int width, int h
    if (width > BITMAP_CACHE_WIDTH || height > BITMAP_CACHE_HEIGHT)
       return false;
    if (c->Pending) {
-      px = x - c->XPos;
-      py = y - c->YPos;
-      if (px < 0 || px + width > BITMAP_CACHE_WIDTH || py < 0 ||
-          py + height > BITMAP_CACHE_HEIGHT || !same_color(ctx->Current.RasterColor, c->Color) ||
+      px = sub_wrap(x, c->XPos);
+      py = sub_wrap(y, c->YPos);
+      if (px < 0 || px > BITMAP_CACHE_WIDTH - width || py < 0 ||
+          py > BITMAP_CACHE_HEIGHT - height || !same_color(ctx->Current.RasterColor, c->Color) ||
           fabsf(z - c->ZPos) > 1e-06)
          fgl_flush_bitmap_cache(ctx);
    }
@@ -252,7 +271,7 @@ static bool accum_bitmap(struct fgl_context *ctx, int x, int y, int width, int h
       px = 0;
       py = (BITMAP_CACHE_HEIGHT - height) / 2;
       c->XPos = x;
-      c->YPos = y - py;
+      c->YPos = sub_wrap(y, py);
       c->ZPos = z;
       c->Pending = true;
       memcpy(c->Color, ctx->Current.RasterColor, sizeof(c->Color));
@@ -806,6 +825,28 @@ static void color_transfer(const struct fgl_context *ctx, struct r_pixel_image *
    }
 }
 
+/* One axis of a clip: [*pos, *pos + *size) against [lo, hi), the cut
+ * start added to *skip (wrapping, as the oracle's int); false if nothing
+ * is left.  64-bit arithmetic, so no position or size overflows. */
+static bool clip_span(int *pos, int *size, int lo, int hi, int *skip)
+{
+   long long p = *pos, n = *size;
+   long long cut = 0;
+   if (p < lo) {
+      cut = lo - p;
+      n -= cut;
+      p = lo;
+   }
+   if (p + n > hi)
+      n = hi - p;
+   if (n <= 0)
+      return false;
+   *skip = (int)((unsigned)*skip + (unsigned)cut);
+   *pos = (int)p;
+   *size = (int)n;
+   return true;
+}
+
 /* [S: image.c:_mesa_clip_drawpixels] with zoom (1, 1): the destination
  * against the scissored draw bounds, skipping what is left out */
 static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *w, int *h,
@@ -815,23 +856,11 @@ static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *
    fgl_scissor_bounds(ctx, b);   /* xmin, xmax, ymin, ymax */
    if (unpack->RowLength == 0)
       unpack->RowLength = *w;
-   if (*x < b[0]) {
-      unpack->SkipPixels += b[0] - *x;
-      *w -= b[0] - *x;
-      *x = b[0];
-   }
-   if (*x + *w > b[1])
-      *w -= *x + *w - b[1];
-   if (*w <= 0)
+   /* in 64 bits: a position or size near the int limits clips as it
+    * should instead of overflowing */
+   if (!clip_span(x, w, b[0], b[1], &unpack->SkipPixels))
       return false;
-   if (*y < b[2]) {
-      unpack->SkipRows += b[2] - *y;
-      *h -= b[2] - *y;
-      *y = b[2];
-   }
-   if (*y + *h > b[3])
-      *h -= *y + *h - b[3];
-   return *h > 0;
+   return clip_span(y, h, b[2], b[3], &unpack->SkipRows);
 }
 
 /* The quad of a glDrawPixels or glCopyPixels texture [S: st_cb_drawpixels.c:
@@ -1084,6 +1113,12 @@ void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenu
 void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height,
                               GLenum format, GLenum type, const GLvoid *pixels)
 {
+   /* glDrawPixels is not allowed between glBegin and glEnd there either
+    * (a list called inside them) */
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
    const struct fgl_pixelstore saved = ctx->Unpack;
    ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
    drawpixels(ctx, width, height, format, type, pixels);
@@ -1115,23 +1150,8 @@ GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsize
 static bool clip_readpixels(const struct fgl_framebuffer *fb, int *x, int *y, int *w, int *h,
                             int *skip_pixels, int *skip_rows)
 {
-   if (*x < 0) {
-      *skip_pixels += -*x;
-      *w -= -*x;
-      *x = 0;
-   }
-   if (*x + *w > fb->Width)
-      *w -= *x + *w - fb->Width;
-   if (*w <= 0)
-      return false;
-   if (*y < 0) {
-      *skip_rows += -*y;
-      *h -= -*y;
-      *y = 0;
-   }
-   if (*y + *h > fb->Height)
-      *h -= *y + *h - fb->Height;
-   return *h > 0;
+   return clip_span(x, w, 0, fb->Width, skip_pixels) &&
+          clip_span(y, h, 0, fb->Height, skip_rows);
 }
 
 /* The _ImageTransferState of the colour path (_mesa_update_pixel):
@@ -1184,7 +1204,11 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
    int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
    if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
       return true;
-   int drx = dstx + skip_px, dry = dsty + skip_rows;
+   /* a destination past the int range is nowhere in the window */
+   const long long drx64 = (long long)dstx + skip_px, dry64 = (long long)dsty + skip_rows;
+   if (drx64 > INT_MAX || dry64 > INT_MAX)
+      return true;
+   int drx = (int)drx64, dry = (int)dry64;
    struct fgl_pixelstore unpack = { .Alignment = 1, .RowLength = width,
                                     .SkipPixels = skip_px, .SkipRows = skip_rows };
    if (!clip_drawpixels(ctx, &drx, &dry, &rw, &rh, &unpack))
@@ -1217,12 +1241,25 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
 
    /* the source, y-down, into a width x height texture whose row 0 is
     * the top row; the part outside the framebuffer stays uninitialised
-    * in the oracle (zero here) */
-   const int H = fb->Height;
-   int rx = srcx, ry = H - srcy - height, rw = width, rh = height;
+    * in the oracle (zero here).  A source wholly outside draws nothing. */
+   const long long ry64 = (long long)fb->Height - srcy - height;
+   if (ry64 < INT_MIN || ry64 > INT_MAX)
+      return;
+   int rx = srcx, ry = (int)ry64, rw = width, rh = height;
    int skip_px = 0, skip_rows = 0;
    if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
       return;
+   if (width > FGL_MAX_TEXTURE_SIZE || height > FGL_MAX_TEXTURE_SIZE) {
+      /* larger than any texture: only the part of the source inside the
+       * window is defined, and only that is copied (to where it goes),
+       * without a texture of the whole source */
+      const long long cx = (long long)srcx < 0 ? 0 : srcx;
+      const long long cy = (long long)srcy < 0 ? 0 : srcy;
+      const long long dx = (long long)dstx + (cx - srcx), dy = (long long)dsty + (cy - srcy);
+      if (dx <= INT_MAX && dy <= INT_MAX)
+         copy_pixels(ctx, (int)cx, (int)cy, rw, rh, (int)dx, (int)dy, type);
+      return;
+   }
    const size_t n = (size_t)width * (size_t)height;
    float *t = NULL;
    uint8_t *s = NULL;

@@ -610,6 +610,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
          set_ints(val, V_INT, 1, feedback_value, 0, 0, 0);
          return true;
       }
+      /* [S: get.c:find_value] a LOC_TEXUNIT value (the coordinate
+       * generation enables) of a unit past the fixed-function ones:
+       * GL_INVALID_VALUE (kept before the GL_INVALID_ENUM that follows) */
+      if (pname >= GL_TEXTURE_GEN_S && pname <= GL_TEXTURE_GEN_Q &&
+          ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return false;
+      }
       /* every capability is also a boolean state value */
       if (fgl_is_cap(ctx, pname, &val->v[0])) {
          val->type = V_BOOL;

@@ -75,6 +75,11 @@ void GLAPIENTRY glMatrixMode(GLenum mode)
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (ctx->Transform.MatrixMode == mode && mode != GL_TEXTURE)
       return;
+   /* [S: matrix.c:_mesa_MatrixMode] GL_TEXTURE0 + i of a coordinate
+    * unit (a name of EXT_direct_state_access's matrix calls) selects no
+    * stack and raises no error: nothing changes */
+   if (mode >= GL_TEXTURE0 && mode < GL_TEXTURE0 + FGL_MAX_TEXTURE_UNITS)
+      return;
    struct fgl_matrix_stack *stack = fgl_matrix_stack_for_mode(ctx, mode);
    if (!stack) {
       fgl_error(ctx, GL_INVALID_ENUM);

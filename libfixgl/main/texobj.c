@@ -10,6 +10,7 @@
  * object without a target until it is first bound (glIsTexture false), and
  * binding a name never generated creates it (compatibility profile).
  */
+#include <limits.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
@@ -225,11 +226,51 @@ static void tex_flush(struct fgl_context *ctx)
 /* ---- objects ---- */
 
 /* [S: texobj.c:create_textures] */
+static int cmp_name(const void *a, const void *b)
+{
+   const GLuint x = *(const GLuint *)a, y = *(const GLuint *)b;
+   return x < y ? -1 : x > y;
+}
+
+/* The slow search of _mesa_HashFindFreeKeyBlock: the first n consecutive
+ * unused names from 1, below ~0 - 1; 0 if there are none (or no memory
+ * to look). */
+static GLuint find_free_block(const struct fgl_texture_objects *to, GLuint n)
+{
+   GLuint *names = malloc((to->Count ? to->Count : 1) * sizeof(*names));
+   if (!names)
+      return 0;
+   for (unsigned i = 0; i < to->Count; i++)
+      names[i] = to->Objs[i]->Name;
+   qsort(names, to->Count, sizeof(*names), cmp_name);
+   const GLuint max_key = 0xFFFFFFFEu;
+   GLuint start = 1, found = 0;
+   for (unsigned i = 0; i <= to->Count; i++) {
+      const GLuint next = i < to->Count && names[i] < max_key ? names[i] : max_key;
+      if (next >= start && next - start >= n) {
+         found = start;
+         break;
+      }
+      if (next == max_key)
+         break;
+      if (next >= start)
+         start = next + 1;
+   }
+   free(names);
+   return found;
+}
+
 void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
+   /* not allowed between glBegin and glEnd (the oracle's begin/end
+    * dispatch), before anything else */
+   if (fgl_inside_begin_end(ctx)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
    if (n < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -237,16 +278,16 @@ void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures)
    if (!textures || n == 0)
       return;
    /* [S: hash.c:_mesa_HashFindFreeKeyBlock] past the largest key while
-    * that does not overflow (a search for a free block after that is not
-    * modelled: 4 billion names) */
+    * that stays below ~0 - 1, else the first block of free names from 1 */
    struct fgl_texture_objects *to = ctx->TexObjects;
    pthread_mutex_lock(&to->Lock);
-   if ((GLuint)n > ~0u - to->MaxName) {
+   const GLuint first = to->MaxName < 0xFFFFFFFEu && (GLuint)n <= 0xFFFFFFFEu - to->MaxName
+                        ? to->MaxName + 1 : find_free_block(to, (GLuint)n);
+   if (first == 0) {
       pthread_mutex_unlock(&to->Lock);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   const GLuint first = to->MaxName + 1;
    for (GLsizei i = 0; i < n; i++) {
       if (!insert(ctx, first + (GLuint)i, 0)) {
          pthread_mutex_unlock(&to->Lock);
@@ -618,13 +659,17 @@ static void tex_parameterfv(struct fgl_context *ctx, GLenum target, GLenum pname
       return;
    if (int_pname(pname)) {
       GLint v;
+      const float p = params[0];
       if (scalar) {
          /* [S: texparam.c:_mesa_texture_parameterf] (param > 0) ?
-          * floor(param + 0.5) : ceil(param - 0.5) */
-         const float p = params[0];
-         v = p > 0 ? (GLint)floor(p + 0.5) : (GLint)ceil(p - 0.5);
+          * floor(param + 0.5) : ceil(param - 0.5), clamped to the int
+          * range */
+         v = p > 0 ? (p > INT_MAX ? INT_MAX : (GLint)floor(p + 0.5))
+                   : (p < INT_MIN ? INT_MIN : (GLint)ceil(p - 0.5));
       } else {
-         v = (GLint)params[0];
+         /* (GLint)params[0]: the x86 conversion, INT_MIN when out of
+          * range or NaN */
+         v = p > -2147483649.0f && p < 2147483648.0f ? (GLint)p : INT_MIN;
       }
       set_parameteri(ctx, t, pname, v);
       return;
@@ -672,7 +717,9 @@ static void tex_parameteriv(struct fgl_context *ctx, GLenum target, GLenum pname
 /* While compiling, every variant is stored as glTexParameterfv with
  * params[0] converted to float and the rest 0 (dlist.c:save_TexParameteri,
  * save_TexParameteriv: an integer border colour loses three components);
- * glTexParameterfv keeps four values. */
+ * glTexParameterfv keeps four values.  Under GL_COMPILE_AND_EXECUTE
+ * that glTexParameterfv is what executes (save_TexParameterfv), so the
+ * scalar calls take a border colour there. */
 void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -680,7 +727,7 @@ void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param)
       return;
    const GLfloat p[4] = { param, 0.0f, 0.0f, 0.0f };
    FGL_SAVE(ctx, TexParameterfv, target, pname, p, 4);
-   tex_parameterfv(ctx, target, pname, p, true);
+   tex_parameterfv(ctx, target, pname, p, !ctx->CompileFlag);
 }
 
 void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params)
@@ -700,7 +747,10 @@ void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint param)
       return;
    const GLfloat f[4] = { (GLfloat)param, 0.0f, 0.0f, 0.0f };
    FGL_SAVE(ctx, TexParameterfv, target, pname, f, 4);
-   tex_parameteriv(ctx, target, pname, &param, true);
+   if (ctx->CompileFlag)
+      tex_parameterfv(ctx, target, pname, f, false);
+   else
+      tex_parameteriv(ctx, target, pname, &param, true);
 }
 
 void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *params)
@@ -710,7 +760,10 @@ void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *param
       return;
    const GLfloat f[4] = { (GLfloat)params[0], 0.0f, 0.0f, 0.0f };
    FGL_SAVE(ctx, TexParameterfv, target, pname, f, 4);
-   tex_parameteriv(ctx, target, pname, params, false);
+   if (ctx->CompileFlag)
+      tex_parameterfv(ctx, target, pname, f, false);
+   else
+      tex_parameteriv(ctx, target, pname, params, false);
 }
 
 /* [S: texparam.c:get_tex_parameterfv, get_tex_parameteriv] the GL 1.3

@@ -117,6 +117,27 @@ static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
    }
 }
 
+/* Bytes of one element of an array. */
+static uint64_t element_bytes(const struct fgl_client_array *a)
+{
+   switch (a->Type) {
+   case GL_BYTE:
+   case GL_UNSIGNED_BYTE:
+      return (uint64_t)a->Size;
+   case GL_SHORT:
+   case GL_UNSIGNED_SHORT:
+   case GL_HALF_FLOAT:
+      return 2u * (uint64_t)a->Size;
+   case GL_DOUBLE:
+      return 8u * (uint64_t)a->Size;
+   case GL_INT_2_10_10_10_REV:
+   case GL_UNSIGNED_INT_2_10_10_10_REV:
+      return 4u;
+   default:
+      return 4u * (uint64_t)a->Size;
+   }
+}
+
 static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt, float out[4])
 {
    out[0] = 0.0f, out[1] = 0.0f, out[2] = 0.0f, out[3] = 1.0f;
@@ -124,13 +145,18 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
     * (lp_draw_arrays.c: a NULL user buffer is skipped) and draw's fetch
     * of an empty buffer gives zeros in the format's channels
     * (draw_llvm.c:fetch_vector, out-of-bound elements): a default 4-component
-    * colour array is (0, 0, 0, 0) */
-   if (!a->Ptr) {
+    * colour array is (0, 0, 0, 0).  The element's offset there is
+    * stride * index in 32 bits (wrapping), and a user array's size is
+    * ~0u: an element that ends past 2^32 - 1 bytes is out of bounds too
+    * (glDrawArrays with first -1 fetches index 2^32 - 1), one whose
+    * offset wraps is read there (first INT_MIN draws from element 0). */
+   const uint32_t offset = (uint32_t)((uint64_t)elt * (uint64_t)a->EffStride);
+   if (!a->Ptr || (uint64_t)offset + element_bytes(a) > UINT32_MAX) {
       if (a->Size == 4)
          out[3] = 0.0f;
       return;
    }
-   const GLubyte *p = (const GLubyte *)a->Ptr + (size_t)elt * (size_t)a->EffStride;
+   const GLubyte *p = (const GLubyte *)a->Ptr + offset;
    for (int c = 0; c < a->Size; c++)
       out[c] = fetch_comp(p, a->Type, normalized, c);
    if (a->Format == GL_BGRA) {

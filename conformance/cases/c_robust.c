@@ -1,0 +1,817 @@
+/* c_robust.c - hostile input found by the differential API fuzzer of
+ * issue 18: calls that crashed fixgl, read or wrote out of bounds, hit
+ * undefined behaviour under UBSan, ran far slower than the oracle, or
+ * raised another GL error than Mesa 22.3.  Each case records the error
+ * after every hostile call, draws something afterwards (so corrupt state
+ * shows) and captures the frame.
+ *
+ * Where GL leaves a result undefined (pixels copied from outside the
+ * window), the case restricts what it compares to the defined part with
+ * the scissor test and says so. */
+#define GL_GLEXT_PROTOTYPES 1
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+#include <time.h>
+
+#include "cases.h"
+
+/* A stipple/bitmap pattern with no symmetry, so a wrong row length or
+ * row order shows. */
+static void pattern_bits(GLubyte *b, int n)
+{
+    for (int i = 0; i < n; i++)
+        b[i] = (GLubyte)(i * 37 + (i >> 2) * 11 + 5);
+}
+
+/* A frame with something in it: four coloured quads at four depths, and
+ * stencil values 1-4 where they are (stencil buffer needed for the last). */
+static void scene_quads(int w, int hgt)
+{
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    for (int i = 0; i < 4; i++) {
+        const float x0 = (float)(i % 2) * (float)w / 2, y0 = (float)(i / 2) * (float)hgt / 2;
+        glStencilFunc(GL_ALWAYS, i + 1, 0xff);
+        fcu_color(i);
+        fcu_rect(x0 + 1, y0 + 2, x0 + (float)w / 2 - 3, y0 + (float)hgt / 2 - 1,
+                 -0.75f + 0.5f * (float)i);
+    }
+    glDisable(GL_STENCIL_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+}
+
+/* ---- crashes ---- */
+
+/* glMaterial inside glBegin/glEnd while compiling, after a glEvalCoord
+ * (or glEvalPoint, glCallList) ended the list's vertices: Mesa stores it
+ * as a MATERIAL node; fixgl wrapped a vertex list with no primitive. */
+static void dlist_material_after_fallback(fc_h *h)
+{
+    static const GLfloat amb[4] = { 0.2f, 0.4f, 0.6f, 1.0f };
+    static const GLfloat dif[4] = { 0.9f, 0.5f, 0.1f, 1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(5, GL_COMPILE);
+    glColor3f(0, 1, 0);
+    glEndList();
+
+    glNewList(4, GL_COMPILE);
+    glBegin(GL_LINE_STRIP);
+    glVertex4s(1, 1, 0, 1);
+    glEvalCoord1f(-0.8846f);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
+    glVertex2f(30, 20);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile after glEvalCoord1f");
+
+    glNewList(6, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(2, 30);
+    glEvalPoint1(3);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, dif);
+    glMaterialf(GL_BACK, GL_SHININESS, 12.0f);
+    glVertex2f(30, 40);
+    glVertex2f(10, 60);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile and execute after glEvalPoint1");
+
+    glNewList(7, GL_COMPILE);
+    glBegin(GL_QUADS);
+    glVertex2f(40, 2);
+    glCallList(5);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, amb);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, dif);
+    glVertex2f(60, 2);
+    glVertex2f(60, 30);
+    glVertex2f(40, 30);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile after glCallList");
+
+    glCallList(4);
+    fc_error(h, "call 4");
+    glCallList(6);
+    fc_error(h, "call 6");
+    glCallList(7);
+    fc_error(h, "call 7");
+    glFinish();
+    fc_get_float(h, "front ambient", GL_CURRENT_COLOR, 4);
+    GLfloat m[4] = { -1, -1, -1, -1 };
+    glGetMaterialfv(GL_FRONT, GL_AMBIENT, m);
+    fc_blob(h, "GL_FRONT GL_AMBIENT", m, sizeof m);
+    glGetMaterialfv(GL_BACK, GL_DIFFUSE, m);
+    fc_blob(h, "GL_BACK GL_DIFFUSE", m, sizeof m);
+    glGetMaterialfv(GL_FRONT, GL_EMISSION, m);
+    fc_blob(h, "GL_FRONT GL_EMISSION", m, sizeof m);
+    fc_capture(h);
+}
+
+/* The part of a glCopyPixels destination whose source lies in the window:
+ * the rest reads pixels outside it, undefined in GL (Mesa draws nothing
+ * there), so the copy is scissored to this part (an empty scissor when
+ * nothing of the source is inside). */
+static void scissor_defined(int W, int H, int rx, int ry, long long x, long long y,
+                            long long w, long long hh)
+{
+    long long i0 = x < 0 ? -x : 0, j0 = y < 0 ? -y : 0;
+    long long i1 = W - x < w ? W - x : w, j1 = H - y < hh ? H - y : hh;
+    long long dx0 = rx + i0, dy0 = ry + j0, dx1 = rx + i1, dy1 = ry + j1;
+    if (dx0 < 0) dx0 = 0;
+    if (dy0 < 0) dy0 = 0;
+    if (dx1 > W) dx1 = W;
+    if (dy1 > H) dy1 = H;
+    glEnable(GL_SCISSOR_TEST);
+    if (dx1 <= dx0 || dy1 <= dy0)
+        glScissor(0, 0, 0, 0);
+    else
+        glScissor((GLint)dx0, (GLint)dy0, (GLsizei)(dx1 - dx0), (GLsizei)(dy1 - dy0));
+}
+
+/* glCopyPixels with coordinates and sizes near INT_MAX/INT_MIN: Mesa clips
+ * the source to the window; fixgl overflowed, crashed or tried to
+ * allocate the unclipped size.  A copy larger than the largest texture
+ * goes through a texture of the whole source in the oracle, sampled with
+ * float coordinates that cannot address its rows: the depth and stencil
+ * values it writes are not the copied ones, so those copies keep the
+ * depth and stencil masks off (their colour, the raster colour, still
+ * shows where fragments are).  Colour copies take the blit, exact, but for
+ * a rectangle whose end passes INT_MAX: Mesa's _mesa_clip_readpixels and
+ * _mesa_clip_drawpixels overflow then and blit other pixels, so those
+ * are scissored away entirely (still called: no crash, same error). */
+static void copypixels_huge(fc_h *h)
+{
+    static const struct { int rx, ry; GLint x, y; GLsizei w, hh; GLenum type; } c[] = {
+        { 3, 5, INT_MAX, 57, 17, 128, GL_DEPTH },
+        { 0, 0, -7, INT_MIN, 64, 65, GL_STENCIL },
+        { 0, 0, -3, 40, 128, INT_MAX, GL_DEPTH },
+        { 10, 4, -3, 40, 128, INT_MAX, GL_COLOR },
+        { 1, 30, INT_MIN, INT_MIN, INT_MAX, INT_MAX, GL_COLOR },
+        { 0, 0, 5, -2147483600, 20, INT_MAX, GL_STENCIL },
+        { 33, 1, 2, 3, INT_MAX, INT_MAX, GL_DEPTH },
+        { 40, 40, INT_MAX - 3, INT_MAX - 3, 8, 8, GL_COLOR },
+        { 20, 20, -2147483000, 2, INT_MAX, 20, GL_COLOR },
+        { 20, 0, -3, 40, 128, 16384, GL_DEPTH },
+        { 0, 30, -3, 40, 128, 16385, GL_DEPTH },
+        { 0, 50, 0, 40, 300, 2, GL_STENCIL },
+    };
+    const int W = 64, H = 64;
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    scene_quads(W, H);
+    fc_capture(h);
+    for (unsigned k = 0; k < sizeof c / sizeof c[0]; k++) {
+        glDisable(GL_SCISSOR_TEST);
+        fcu_color((int)k + 5);
+        glRasterPos2i(c[k].rx, c[k].ry);
+        /* depth copies write depth (and the raster colour) */
+        if (c[k].type == GL_DEPTH) {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+        }
+        scissor_defined(W, H, c[k].rx, c[k].ry, c[k].x, c[k].y, c[k].w, c[k].hh);
+        const int huge = c[k].w > 16384 || c[k].hh > 16384;
+        const int overflow = (long long)c[k].x + c[k].w > INT_MAX ||
+                             (long long)c[k].y + c[k].hh > INT_MAX;
+        if (overflow && c[k].type == GL_COLOR)
+            glScissor(0, 0, 0, 0);
+        if (huge) {
+            glDepthMask(GL_FALSE);
+            glStencilMask(0);
+        }
+        glCopyPixels(c[k].x, c[k].y, c[k].w, c[k].hh, c[k].type);
+        fc_error(h, "glCopyPixels");
+        glDepthMask(GL_TRUE);
+        glStencilMask(0xff);
+        glDisable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        fc_capture(h);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    fc_capture(h);
+    /* stencil as colour, to compare it */
+    GLubyte s[64 * 64];
+    glReadPixels(0, 0, W, H, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    fc_blob(h, "stencil", s, sizeof s);
+    fc_error(h, "read stencil");
+}
+
+/* glBitmap with a huge or NaN origin or move: the raster position leaves
+ * every integer range. */
+static void bitmap_huge(fc_h *h)
+{
+    static const GLint wp[3] = { 7, 20, 27 };
+    GLubyte b[32 * 40];
+    pattern_bits(b, (int)sizeof b);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glColor3f(1, 1, 0);
+    glWindowPos3iv(wp);
+    glBitmap(65, 17, 0.26f, 1.39f, 18.5f, 255.0f, b);
+    fc_error(h, "first bitmap");
+    fc_get_float(h, "raster pos 1", GL_CURRENT_RASTER_POSITION, 4);
+    glBitmap(39, 32, -6.3f, -1e20f, -8.96f, 9.35f, b);
+    fc_error(h, "second bitmap");
+    fc_get_float(h, "raster pos 2", GL_CURRENT_RASTER_POSITION, 4);
+    fc_get_boolean(h, "valid 2", GL_CURRENT_RASTER_POSITION_VALID, 1);
+
+    static const float vals[] = { 1e20f, -1e20f, 3e9f, -3e9f, 2147483520.0f, -2147483648.0f };
+    const float nan = nanf("");
+    for (unsigned i = 0; i < sizeof vals / sizeof vals[0]; i++) {
+        glWindowPos2i(10, 10);
+        glBitmap(8, 8, vals[i], 0, 0, 0, b);
+        glBitmap(8, 8, 0, vals[i], 0, 0, b);
+        glBitmap(8, 8, 0, 0, vals[i], 0, b);
+        glBitmap(8, 8, 0, 0, 0, 0, b);
+        glBitmap(8, 8, 0, 0, -vals[i], vals[i], b);
+        glBitmap(8, 8, 0, 0, 0, 0, b);
+        fc_error(h, "huge");
+    }
+    glWindowPos2i(20, 20);
+    glBitmap(8, 8, nan, 0, 0, 0, b);
+    glBitmap(8, 8, 0, nan, 0, 0, b);
+    glBitmap(8, 8, 0, 0, 0, 0, b);
+    fc_error(h, "nan origin");
+    glBitmap(8, 8, 0, 0, nan, nan, b);
+    glBitmap(8, 8, 0, 0, 0, 0, b);
+    fc_error(h, "nan move");
+    fc_get_boolean(h, "valid nan", GL_CURRENT_RASTER_POSITION_VALID, 1);
+    glWindowPos2i(30, 3);
+    glBitmap(16, 8, 0, 0, 0, 0, b);
+    fc_capture(h);
+}
+
+/* glDrawArrays with a negative first: no error in Mesa (GL 1.x does not
+ * define it); llvmpipe fetches the elements whose 32-bit offset overflows
+ * as zeros, and a list compiles the vertices at their addresses (the
+ * array starts three vertices into v, so those are v's). */
+static void drawarrays_negative_first(fc_h *h)
+{
+    static const GLfloat v[] = { 1, 50, 20, 62, 3, 40,
+                                 2, 2, 30, 4, 10, 29, 40, 40, 60, 40, 50, 60 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v + 6);
+    glColor3f(1, 0, 0);
+    glDrawArrays(GL_TRIANGLES, -1, 3);
+    fc_error(h, "first -1");
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_TRIANGLES, INT_MIN, 3);
+    fc_error(h, "first INT_MIN");
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glDrawArrays(GL_TRIANGLES, -3, 0);
+    fc_error(h, "first -3 count 0");
+    glDrawArrays(GL_TRIANGLES, -1, -1);
+    fc_error(h, "first -1 count -1");
+    glDrawArrays(0x7777, -1, 3);
+    fc_error(h, "bad mode, first -1");
+    glDrawArrays(GL_PATCHES, -1, 3);
+    fc_error(h, "GL_PATCHES, first -1");
+    glNewList(1, GL_COMPILE);
+    glDrawArrays(GL_TRIANGLES, -2, 3);
+    glDrawArrays(0x7777, -2, 3);
+    glEndList();
+    fc_error(h, "compiled first -2");
+    glCallList(1);
+    fc_error(h, "called first -2");
+    fc_capture(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glDrawArrays(GL_TRIANGLES, -1, 3);
+    glEnd();
+    fc_error(h, "inside begin/end");
+    glDrawArrays(GL_TRIANGLES, 3, 3);
+    fc_error(h, "valid");
+    static const GLuint idx[] = { 0x20000003u, 4, 0xFFFFFFFFu, 0x20000002u, 1, 0 };
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, idx);
+    fc_error(h, "huge indices");
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
+/* ---- AddressSanitizer faults ---- */
+
+/* A compiled glPolygonStipple replays its own 32x32 copy with the default
+ * unpack state, whatever the unpack state when the list is called. */
+static void dlist_polygon_stipple(fc_h *h)
+{
+    GLubyte p[128];
+    pattern_bits(p, 128);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(6, GL_COMPILE_AND_EXECUTE);
+    glPolygonStipple(p);
+    glEndList();
+    fc_error(h, "compile");
+    glPixelStoref(GL_UNPACK_ROW_LENGTH, 200.4f);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 7);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, GL_TRUE);
+    glCallList(6);
+    fc_error(h, "call");
+    GLubyte q[128];
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetPolygonStipple(q);
+    fc_blob(h, "stipple (packed with the default state)", q, sizeof q);
+    glEnable(GL_POLYGON_STIPPLE);
+    glColor3f(0, 1, 1);
+    fcu_rect(0, 0, 48, 40, 0);
+    glDisable(GL_POLYGON_STIPPLE);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+    fc_capture(h);
+}
+
+/* glMap1f/glMap2f with a negative stride (or one below the component
+ * count) while compiling: the node keeps its own packed stride, so Mesa
+ * raises no error when it executes, and reads before the caller's points
+ * (the first list here: before pts) where fixgl reads nothing.  The
+ * values of such a map are not compared: only a valid map is drawn. */
+static void dlist_map_bad_stride(fc_h *h)
+{
+    GLfloat pts[64];
+    for (int i = 0; i < 64; i++)
+        pts[i] = (float)(i % 7) * 4.0f;
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, -1, 4, pts);
+    glEndList();
+    fc_error(h, "compile map1 stride -1");
+    glCallList(1);
+    fc_error(h, "call map1 stride -1");
+    glNewList(2, GL_COMPILE);
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, -4, 4, pts + 32);
+    glMap1d(GL_MAP1_VERTEX_4, 0, 1, -2, 2, (const GLdouble *)(const void *)(pts + 32));
+    glEndList();
+    fc_error(h, "compile map1 stride -4");
+    glCallList(2);
+    fc_error(h, "call map1 stride -4");
+    glNewList(3, GL_COMPILE_AND_EXECUTE);
+    glMap2f(GL_MAP2_VERTEX_3, 0, 1, -3, 2, 0, 1, 6, 2, pts + 32);
+    glEndList();
+    fc_error(h, "compile and execute map2 ustride -3");
+    glNewList(4, GL_COMPILE);
+    glMap2f(GL_MAP2_VERTEX_3, 0, 1, 3, 2, 0, 1, -5, 2, pts + 32);
+    glMap2f(GL_MAP2_COLOR_4, 0, 1, 2, 2, 0, 1, 4, 2, pts + 32);
+    glEndList();
+    fc_error(h, "compile map2 vstride -5");
+    glCallList(4);
+    fc_error(h, "call map2");
+    /* a valid map still works */
+    static const GLfloat line[6] = { 4, 4, 0, 60, 50, 0 };
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, line);
+    glEnable(GL_MAP1_VERTEX_3);
+    glColor3f(1, 1, 1);
+    glBegin(GL_LINE_STRIP);
+    for (int i = 0; i <= 8; i++)
+        glEvalCoord1f((float)i / 8.0f);
+    glEnd();
+    fc_error(h, "valid map");
+    fc_capture(h);
+}
+
+/* ---- a slow path ---- */
+
+/* glGenLists(95134) then glDeleteLists(1, 65536): Mesa takes a few ms.
+ * The case records whether the pair took under half a second of CPU
+ * time (fixgl took 1.4 s), three times over. */
+static void genlists_delete_many(fc_h *h)
+{
+    for (int r = 0; r < 3; r++) {
+        struct timespec t0, t1;
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0);
+        GLuint base = glGenLists(95134);
+        glDeleteLists(base, 65536);
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
+        const double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+        fc_value(h, "base", base);
+        fc_value(h, "under 0.5 s", s < 0.5);
+        fc_error(h, "gen/delete");
+        fc_value(h, "glIsList(base + 65535)", glIsList(base + 65535));
+        fc_value(h, "glIsList(base + 65536)", glIsList(base + 65536));
+        fc_value(h, "glIsList(base + 95133)", glIsList(base + 95133));
+        fc_value(h, "glIsList(base + 95134)", glIsList(base + 95134));
+    }
+    GLuint l = glGenLists(4);
+    fc_value(h, "next", l);
+    glDeleteLists(1, 300000);
+    fc_error(h, "delete all");
+    fc_value(h, "after delete all", glGenLists(2));
+}
+
+/* ---- GL errors that differed from the oracle ---- */
+
+/* glGenTextures after glBindTexture(GL_TEXTURE_2D, 0xFFFFFFFF): Mesa's
+ * quick path hands out the names after the largest one, wrapping. */
+static void gentextures_after_max_name(fc_h *h)
+{
+    GLuint t[3] = { 77, 77, 77 };
+    glBindTexture(GL_TEXTURE_2D, 0xFFFFFFFFu);
+    fc_error(h, "bind max");
+    glGenTextures(3, t);
+    fc_error(h, "gen");
+    fc_value(h, "names 0", t[0]);
+    fc_value(h, "names 1", t[1]);
+    fc_value(h, "names 2", t[2]);
+    fc_value(h, "is max", glIsTexture(0xFFFFFFFFu));
+    glBindTexture(GL_TEXTURE_2D, 2);
+    glGenTextures(3, t);
+    fc_error(h, "gen again");
+    fc_value(h, "again 0", t[0]);
+    fc_value(h, "again 1", t[1]);
+    fc_value(h, "again 2", t[2]);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    fc_error(h, "unbind");
+}
+
+/* glGenTextures between glBegin and glEnd: GL_INVALID_OPERATION, no name. */
+static void gentextures_inside_begin_end(fc_h *h)
+{
+    GLuint t[2] = { 77, 77 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(1, 0, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(1, 1);
+    glGenTextures(2, t);
+    glVertex2f(30, 2);
+    glVertex2f(12, 30);
+    glEnd();
+    fc_error(h, "after glEnd");
+    fc_value(h, "name 0", t[0]);
+    fc_value(h, "name 1", t[1]);
+    glGenTextures(2, t);
+    fc_value(h, "then 0", t[0]);
+    fc_value(h, "then 1", t[1]);
+    fc_capture(h);
+}
+
+/* glBitmap with a negative size: compiled as is by glNewList(GL_COMPILE),
+ * GL_INVALID_VALUE when it executes. */
+static void bitmap_negative_compile(fc_h *h)
+{
+    GLubyte b[64];
+    pattern_bits(b, 64);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(1, 1, 1);
+    glRasterPos2i(4, 4);
+    glNewList(1, GL_COMPILE);
+    glBitmap(-8, 8, 0, 0, 3, 3, b);
+    glBitmap(-3, -2, 0, 0, 3, 3, b);
+    glBitmap(8, 8, 0, 0, 10, 1, b);
+    glEndList();
+    fc_error(h, "compile");
+    glCallList(1);
+    fc_error(h, "call");
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glBitmap(-5, 8, 0, 0, 3, 3, b);
+    glBitmap(8, 8, 0, 0, 10, 1, b);
+    glEndList();
+    fc_error(h, "compile and execute");
+    glCallList(2);
+    fc_error(h, "call 2");
+    fc_get_float(h, "raster pos", GL_CURRENT_RASTER_POSITION, 4);
+    fc_capture(h);
+}
+
+/* GL_TEXTURE_BORDER_COLOR through the scalar glTexParameter calls and
+ * glTexParameteriv, outside a list, compiled and compiled-and-executed. */
+static void texparam_border_color(fc_h *h)
+{
+    static const GLint iv[4] = { INT_MAX, INT_MAX / 2, 0, INT_MAX };
+    GLfloat c[4];
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+    fc_error(h, "glTexParameterf");
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1);
+    fc_error(h, "glTexParameteri");
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, iv);
+    fc_error(h, "glTexParameteriv");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border", c, sizeof c);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.25f);
+    fc_error(h, "cae glTexParameterf");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border cae f", c, sizeof c);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 3);
+    fc_error(h, "cae glTexParameteri");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border cae i", c, sizeof c);
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, iv);
+    fc_error(h, "cae glTexParameteriv");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border cae iv", c, sizeof c);
+    glEndList();
+    fc_error(h, "end list");
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+    glNewList(2, GL_COMPILE);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.75f);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, -2);
+    glEndList();
+    fc_error(h, "compile");
+    glCallList(2);
+    fc_error(h, "call");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border called", c, sizeof c);
+    glCallList(1);
+    fc_error(h, "call 1");
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c);
+    fc_blob(h, "border called 1", c, sizeof c);
+}
+
+/* glGet of a texture unit's fixed-function state (GL_TEXTURE_GEN_S, ...)
+ * with an active unit past the coordinate units. */
+static void texgen_query_beyond_units(fc_h *h)
+{
+    static const GLenum pn[] = {
+        GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+        GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_ENV_COLOR, GL_TEXTURE_ENV_MODE,
+        GL_TEXTURE_MATRIX, GL_TEXTURE_STACK_DEPTH, GL_CURRENT_TEXTURE_COORDS,
+        GL_TEXTURE_BINDING_2D,
+    };
+    static const GLenum units[] = { GL_TEXTURE7, GL_TEXTURE8, GL_TEXTURE31, GL_TEXTURE0 + 100 };
+    for (unsigned u = 0; u < sizeof units / sizeof units[0]; u++) {
+        glActiveTexture(units[u]);
+        fc_error(h, "glActiveTexture");
+        for (unsigned i = 0; i < sizeof pn / sizeof pn[0]; i++) {
+            GLfloat f[16];
+            GLboolean b[16];
+            GLint iv[16];
+            GLdouble d[16];
+            glGetFloatv(pn[i], f);
+            fc_error(h, "glGetFloatv");
+            glGetBooleanv(pn[i], b);
+            fc_error(h, "glGetBooleanv");
+            glGetIntegerv(pn[i], iv);
+            fc_error(h, "glGetIntegerv");
+            glGetDoublev(pn[i], d);
+            fc_error(h, "glGetDoublev");
+            glIsEnabled(pn[i]);
+            fc_error(h, "glIsEnabled");
+        }
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+/* glMatrixMode(GL_TEXTUREi): Mesa takes a texture unit's stack, up to the
+ * coordinate units. */
+static void matrixmode_texture_unit(fc_h *h)
+{
+    static const GLenum modes[] = { GL_TEXTURE0, GL_TEXTURE3, GL_TEXTURE4, GL_TEXTURE7,
+                                    GL_TEXTURE8, GL_TEXTURE31 };
+    for (unsigned i = 0; i < sizeof modes / sizeof modes[0]; i++) {
+        glMatrixMode(modes[i]);
+        fc_error(h, "glMatrixMode");
+        fc_get_integer(h, "GL_MATRIX_MODE", GL_MATRIX_MODE, 1);
+        glLoadIdentity();
+        glTranslatef((float)i + 1, 2, 3);
+        glPushMatrix();
+        fc_error(h, "load, translate, push");
+    }
+    glMatrixMode(GL_TEXTURE);
+    fc_error(h, "GL_TEXTURE");
+    for (int u = 0; u < 8; u++) {
+        glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        fc_get_float(h, "GL_TEXTURE_MATRIX", GL_TEXTURE_MATRIX, 16);
+        fc_get_integer(h, "GL_TEXTURE_STACK_DEPTH", GL_TEXTURE_STACK_DEPTH, 1);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_TEXTURE3);
+    glPushAttrib(GL_TRANSFORM_BIT);
+    glMatrixMode(GL_MODELVIEW);
+    glPopAttrib();
+    fc_get_integer(h, "GL_MATRIX_MODE popped", GL_MATRIX_MODE, 1);
+    glPopMatrix();
+    fc_error(h, "pop");
+    glActiveTexture(GL_TEXTURE3);
+    fc_get_integer(h, "GL_TEXTURE_STACK_DEPTH 3", GL_TEXTURE_STACK_DEPTH, 1);
+    glActiveTexture(GL_TEXTURE0);
+    glNewList(1, GL_COMPILE);
+    glMatrixMode(GL_TEXTURE5);
+    glLoadIdentity();
+    glScalef(2, 2, 2);
+    glEndList();
+    glCallList(1);
+    fc_error(h, "list");
+    fc_get_integer(h, "GL_MATRIX_MODE list", GL_MATRIX_MODE, 1);
+    glActiveTexture(GL_TEXTURE5);
+    fc_get_float(h, "GL_TEXTURE_MATRIX 5", GL_TEXTURE_MATRIX, 16);
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_MODELVIEW);
+}
+
+/* glCallList inside glBegin/glEnd of a list that begins a primitive, and
+ * of a list holding a glDrawPixels. */
+static void calllist_inside_begin_end(fc_h *h)
+{
+    GLubyte px[4 * 4 * 4];
+    memset(px, 200, sizeof px);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_LINES);
+    glColor3f(1, 0, 0);
+    glVertex2f(2, 2);
+    glVertex2f(30, 30);
+    glEnd();
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(40, 2);
+    glVertex2f(60, 2);
+    glVertex2f(50, 20);
+    glEnd();
+    glEndList();
+    glNewList(3, GL_COMPILE);
+    glRasterPos2i(5, 40);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    glEndList();
+    glNewList(4, GL_COMPILE);
+    glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    glEndList();
+    fc_error(h, "compile");
+
+    glColor3f(0, 1, 0);
+    glBegin(GL_LINES);
+    glCallList(1);
+    glEnd();
+    fc_error(h, "lines list inside GL_LINES");
+    glBegin(GL_LINES);
+    glVertex2f(2, 30);
+    glCallList(1);
+    glVertex2f(30, 2);
+    glEnd();
+    fc_error(h, "lines list after a vertex");
+    glBegin(GL_LINES);
+    glCallList(2);
+    glEnd();
+    fc_error(h, "triangles list inside GL_LINES");
+    glBegin(GL_TRIANGLES);
+    glCallList(3);
+    glEnd();
+    fc_error(h, "drawpixels list inside GL_TRIANGLES");
+    glRasterPos2i(20, 40);
+    glBegin(GL_POINTS);
+    glCallList(4);
+    glEnd();
+    fc_error(h, "drawpixels only inside GL_POINTS");
+    glNewList(5, GL_COMPILE);
+    glBegin(GL_LINES);
+    glCallList(1);
+    glCallList(4);
+    glEnd();
+    glEndList();
+    fc_error(h, "compile nested");
+    glCallList(5);
+    fc_error(h, "call nested");
+    fc_capture(h);
+}
+
+/* glTexParameter level values out of range or fractional, directly and
+ * through a list; glPushMatrix at each stack's limit. */
+static void texparam_levels_and_push_limit(fc_h *h)
+{
+    static const GLint imax = INT_MAX;
+    GLint v[2];
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &imax);
+    fc_error(h, "max level INT_MAX");
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -0.74f);
+    fc_error(h, "base level -0.74");
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3e9f);
+    fc_error(h, "max level 3e9");
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 2.9f);
+    fc_error(h, "base level 2.9");
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, v);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, v + 1);
+    fc_blob(h, "levels", v, sizeof v);
+    glNewList(1, GL_COMPILE);
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &imax);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, INT_MAX - 64);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -0.74f);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 5);
+    glEndList();
+    glCallList(1);
+    fc_error(h, "list");
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, v);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, v + 1);
+    fc_blob(h, "levels list", v, sizeof v);
+
+    static const GLenum modes[] = { GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE };
+    for (unsigned m = 0; m < 3; m++) {
+        glMatrixMode(modes[m]);
+        for (int i = 0; i < 40; i++)
+            glPushMatrix();
+        fc_error(h, "push to the limit");
+        glPushMatrix();
+        fc_error(h, "push past");
+        glNewList(2, GL_COMPILE_AND_EXECUTE);
+        glPushMatrix();
+        glEndList();
+        fc_error(h, "push past in a list");
+        glCallList(2);
+        fc_error(h, "push past calling it");
+        glBegin(GL_POINTS);
+        glPushMatrix();
+        glEnd();
+        fc_error(h, "push inside begin/end");
+        for (int i = 0; i < 40; i++)
+            glPopMatrix();
+        fc_error(h, "pop");
+    }
+    glActiveTexture(GL_TEXTURE9);
+    glMatrixMode(GL_TEXTURE);
+    for (int i = 0; i < 12; i++)
+        glPushMatrix();
+    fc_error(h, "unit 9 push");
+    for (int i = 0; i < 12; i++)
+        glPopMatrix();
+    fc_error(h, "unit 9 pop");
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_MODELVIEW);
+}
+
+/* ---- display list content ---- */
+
+/* glTexImage2D of GL_COLOR_INDEX and GL_BITMAP data compiled into a list:
+ * replayed, the texture holds the same texels as the first execution. */
+static void dlist_teximage_color_index(fc_h *h)
+{
+    static const GLfloat rmap[4] = { 0.0f, 1.0f, 0.2f, 0.6f };
+    static const GLfloat gmap[4] = { 1.0f, 0.0f, 0.8f, 0.3f };
+    static const GLfloat bmap[4] = { 0.5f, 0.25f, 1.0f, 0.0f };
+    static const GLfloat amap[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+    GLubyte idx[8 * 8], bits[8];
+    for (int i = 0; i < 64; i++)
+        idx[i] = (GLubyte)((i * 5 + i / 8) & 3);
+    pattern_bits(bits, 8);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, rmap);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, gmap);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 4, bmap);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 4, amap);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glEnable(GL_TEXTURE_2D);
+    GLubyte tex[8 * 8 * 4];
+    for (int k = 0; k < 2; k++) {
+        const GLenum type = k ? GL_BITMAP : GL_UNSIGNED_BYTE;
+        const void *data = k ? (const void *)bits : (const void *)idx;
+        glNewList(1 + (GLuint)k, GL_COMPILE_AND_EXECUTE);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_COLOR_INDEX, type, data);
+        glEndList();
+        fc_error(h, "compile and execute");
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, tex);
+        fc_blob(h, "first execution", tex, sizeof tex);
+        fcu_rect(2 + 30.0f * (float)k, 2, 26 + 30.0f * (float)k, 26, 0);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+        glCallList(1 + (GLuint)k);
+        fc_error(h, "replay");
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, tex);
+        fc_blob(h, "replayed", tex, sizeof tex);
+        fcu_rect(2 + 30.0f * (float)k, 32, 26 + 30.0f * (float)k, 58, 0);
+    }
+    glDisable(GL_TEXTURE_2D);
+    fc_capture(h);
+}
+
+#define ROBUST(name, w, h, frames, fn) \
+    FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
+
+const fc_case fc_cases_robust[] = {
+    ROBUST("dlist_material_after_fallback", 64, 64, 1, dlist_material_after_fallback),
+    ROBUST("copypixels_huge", 64, 64, 14, copypixels_huge),
+    ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
+    ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
+    ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
+    ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
+    ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
+    ROBUST("gentextures_after_max_name", 8, 8, 0, gentextures_after_max_name),
+    ROBUST("gentextures_inside_begin_end", 32, 32, 1, gentextures_inside_begin_end),
+    ROBUST("bitmap_negative_compile", 64, 64, 1, bitmap_negative_compile),
+    ROBUST("texparam_border_color", 8, 8, 0, texparam_border_color),
+    ROBUST("texgen_query_beyond_units", 8, 8, 0, texgen_query_beyond_units),
+    ROBUST("matrixmode_texture_unit", 8, 8, 0, matrixmode_texture_unit),
+    ROBUST("calllist_inside_begin_end", 64, 64, 1, calllist_inside_begin_end),
+    ROBUST("texparam_levels_and_push_limit", 8, 8, 0, texparam_levels_and_push_limit),
+    ROBUST("dlist_teximage_color_index", 64, 64, 1, dlist_teximage_color_index),
+    { 0 }
+};
