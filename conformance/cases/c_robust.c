@@ -385,20 +385,17 @@ static void dlist_map_bad_stride(fc_h *h)
 
 /* ---- a slow path ---- */
 
-/* glGenLists(95134) then glDeleteLists(1, 65536): Mesa takes a few ms.
- * The case records whether the pair took under half a second of CPU
- * time (fixgl took 1.4 s), three times over. */
+/* glGenLists(95134) then glDeleteLists(1, 65536): Mesa takes a few ms,
+ * fixgl took 1.4 s (a move of the name table per name).  The case checks
+ * the names each pair leaves, three times over; its time is not asserted
+ * here (tests assert no timing: the slow path is for the fuzzer's
+ * per-stream time limit, issue 18 section 2). */
 static void genlists_delete_many(fc_h *h)
 {
     for (int r = 0; r < 3; r++) {
-        struct timespec t0, t1;
-        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0);
         GLuint base = glGenLists(95134);
         glDeleteLists(base, 65536);
-        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
-        const double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
         fc_value(h, "base", base);
-        fc_value(h, "under 0.5 s", s < 0.5);
         fc_error(h, "gen/delete");
         fc_value(h, "glIsList(base + 65535)", glIsList(base + 65535));
         fc_value(h, "glIsList(base + 65536)", glIsList(base + 65536));
