@@ -554,6 +554,12 @@ struct fgl_framebuffer {
    int AccumBits;
    /* called by glFlush/glFinish to make the image visible to the owner */
    void (*FlushFront)(struct fgl_framebuffer *fb);
+   /* the same in parts, when set: FlushFrontRect for every rectangle of a
+    * partition of the buffer (any thread, any order, each rectangle once;
+    * the scene's tiles), then FlushFrontEnd; the caller tests and clears
+    * ColorDefined */
+   void (*FlushFrontRect)(struct fgl_framebuffer *fb, int x0, int y0, int x1, int y1);
+   void (*FlushFrontEnd)(struct fgl_framebuffer *fb);
    /* Mesa's rb->defined of the front colour buffer: set when a draw or a
     * clear is validated with the colour buffer bound (not under
     * glDrawBuffer(GL_NONE)) [S: state_tracker/st_atom_framebuffer.c];
@@ -968,6 +974,10 @@ void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
 #define FGL_MAX_THREADS 64
 unsigned fgl_num_threads(void);
 void fgl_scene_flush(struct fgl_context *ctx);
+/* fgl_scene_flush, then the framebuffer's FlushFront (glFlush, glFinish):
+ * by tiles, each copied by the thread that drew it, when the framebuffer
+ * can (FlushFrontRect) */
+void fgl_scene_flush_front(struct fgl_context *ctx);
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2);

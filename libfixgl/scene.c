@@ -34,30 +34,55 @@ unsigned fgl_num_threads(void)
 }
 
 struct tile_job {
-   const struct r_scene *scene;
+   const struct r_scene *scene;   /* NULL: no commands */
    struct r_stats stats[FGL_MAX_THREADS];
+   /* the copy of each tile to the owner's buffer after it is drawn, or
+    * NULL: tiles_x columns of 64x64 tiles of the framebuffer */
+   struct fgl_framebuffer *front;
+   int tiles_x;
 };
 
 static void run_tile(void *arg, unsigned item, unsigned slot)
 {
    struct tile_job *j = arg;
-   r_scene_run_tile(j->scene, item, &j->stats[slot]);
+   if (j->scene)
+      r_scene_run_tile(j->scene, item, &j->stats[slot]);
+   if (j->front) {
+      struct fgl_framebuffer *fb = j->front;
+      const int x0 = (int)(item % (unsigned)j->tiles_x) * R_TILE_SIZE;
+      const int y0 = (int)(item / (unsigned)j->tiles_x) * R_TILE_SIZE;
+      const int x1 = x0 + R_TILE_SIZE < fb->Width ? x0 + R_TILE_SIZE : fb->Width;
+      const int y1 = y0 + R_TILE_SIZE < fb->Height ? y0 + R_TILE_SIZE : fb->Height;
+      fb->FlushFrontRect(fb, x0, y0, x1, y1);
+   }
 }
 
-void fgl_scene_flush(struct fgl_context *ctx)
+/* Runs the scene's tiles (when it has commands) and the copy of the tiles
+ * of `front` (when not NULL), then empties the scene. */
+static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
 {
    struct r_scene *s = &ctx->_Scene;
-   if (r_scene_empty(s)) {
+   const bool draw = !r_scene_empty(s);
+   if (!draw && !front) {
       r_scene_reset(s);
       return;
    }
    struct tile_job j;
-   j.scene = s;
+   j.scene = draw ? s : NULL;
    memset(j.stats, 0, sizeof(j.stats));
+   j.front = front;
+   unsigned count;
+   if (draw) {
+      j.tiles_x = s->tiles_x;
+      count = r_scene_tiles(s);
+   } else {
+      j.tiles_x = (front->Width + R_TILE_SIZE - 1) / R_TILE_SIZE;
+      count = (unsigned)(j.tiles_x * ((front->Height + R_TILE_SIZE - 1) / R_TILE_SIZE));
+   }
    struct r_job job = {
       .run = run_tile,
       .arg = &j,
-      .count = r_scene_tiles(s),
+      .count = count,
       .threads = ctx->_NumThreads,
    };
    const uint64_t t0 = s->stats ? r_stats_now() : 0;
@@ -71,6 +96,31 @@ void fgl_scene_flush(struct fgl_context *ctx)
       }
    }
    r_scene_reset(s);
+}
+
+void fgl_scene_flush(struct fgl_context *ctx)
+{
+   run_scene(ctx, NULL);
+}
+
+void fgl_scene_flush_front(struct fgl_context *ctx)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   struct r_scene *s = &ctx->_Scene;
+   /* by tiles when the scene's tiles are the framebuffer's (a scene for
+    * other buffers, if any, is drawn first) */
+   if (fb && fb->FlushFrontRect && fb->ColorDefined &&
+       (r_scene_empty(s) || (s->fb->color == fb->Color && s->fb->width == fb->Width &&
+                             s->fb->height == fb->Height))) {
+      fb->ColorDefined = false;
+      run_scene(ctx, fb);
+      if (fb->FlushFrontEnd)
+         fb->FlushFrontEnd(fb);
+      return;
+   }
+   fgl_scene_flush(ctx);
+   if (fb && fb->FlushFront)
+      fb->FlushFront(fb);
 }
 
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,

@@ -14,9 +14,7 @@ void fgl_flush_front(struct fgl_context *ctx)
    FGL_FLUSH_VERTICES(ctx, 0);
    /* [S: st_cb_flush.c:st_flush] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
-   fgl_scene_flush(ctx);
-   if (ctx->DrawBuffer && ctx->DrawBuffer->FlushFront)
-      ctx->DrawBuffer->FlushFront(ctx->DrawBuffer);
+   fgl_scene_flush_front(ctx);
 }
 
 void GLAPIENTRY glFlush(void)

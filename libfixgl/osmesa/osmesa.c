@@ -125,24 +125,42 @@ static void copy_row(GLenum format, uint8_t *restrict dst, const uint8_t *restri
  * refresh the depth snapshot, when the colour buffer was bound to a draw
  * or clear since the last time (st_manager_flush_frontbuffer's
  * rb->defined): after drawing only under glDrawBuffer(GL_NONE) neither
- * happens, as in the oracle (api/draw_buffer_render). */
+ * happens, as in the oracle (api/draw_buffer_render).  The copy is done by
+ * rectangles (flush_front_rect), which the scene's tiles call each for
+ * itself after drawing it (scene.c), then flush_front_end; flush_front does
+ * all of it at once. */
+static struct osmesa_context *osmesa_of(struct fgl_framebuffer *fb)
+{
+   return (struct osmesa_context *)((char *)fb - offsetof(struct osmesa_context, fb));
+}
+
+static void flush_front_rect(struct fgl_framebuffer *fb, int x0, int y0, int x1, int y1)
+{
+   struct osmesa_context *c = osmesa_of(fb);
+   const int bpp = bytes_per_pixel(c->format);
+   const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
+   for (int y = y0; y < y1; y++) {
+      const uint8_t *src = fb->Color + ((size_t)y * (size_t)fb->Width + (size_t)x0) * 4;
+      const int dst_row = c->y_up ? fb->Height - 1 - y : y;
+      uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride + (size_t)x0 * (size_t)bpp;
+      copy_row(c->format, dst, src, x1 - x0);
+   }
+}
+
+static void flush_front_end(struct fgl_framebuffer *fb)
+{
+   struct osmesa_context *c = osmesa_of(fb);
+   if (c->zs_copy)
+      snapshot_zs(c);
+}
+
 static void flush_front(struct fgl_framebuffer *fb)
 {
    if (!fb->ColorDefined)
       return;
    fb->ColorDefined = false;
-   struct osmesa_context *c = (struct osmesa_context *)((char *)fb - offsetof(struct osmesa_context, fb));
-   const int bpp = bytes_per_pixel(c->format);
-   const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
-
-   for (int y = 0; y < fb->Height; y++) {
-      const uint8_t *src = fb->Color + (size_t)y * (size_t)fb->Width * 4;
-      const int dst_row = c->y_up ? fb->Height - 1 - y : y;
-      uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride;
-      copy_row(c->format, dst, src, fb->Width);
-   }
-   if (c->zs_copy)
-      snapshot_zs(c);
+   flush_front_rect(fb, 0, 0, fb->Width, fb->Height);
+   flush_front_end(fb);
 }
 
 GLAPI OSMesaContext GLAPIENTRY
@@ -292,6 +310,8 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->ColorR8G8B8A8 = c->format == OSMESA_RGBA;
    fb->ZSFormat = c->zs_format;
    fb->FlushFront = flush_front;
+   fb->FlushFrontRect = flush_front_rect;
+   fb->FlushFrontEnd = flush_front_end;
    fb->AccumBits = c->accum_bits;
    fb->Color = calloc(n, 4);
    if (c->zs_format == R_ZS_S8)
@@ -343,6 +363,8 @@ OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
       fgl_flush_front(cur);
 
    if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height) {
+      /* what c's scene holds is drawn before its buffers go */
+      fgl_scene_flush(c->gl);
       if (!alloc_buffers(c, width, height))
          return GL_FALSE;
       /* Mesa destroys the osmesa_buffer of another size and makes a new
