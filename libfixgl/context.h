@@ -774,7 +774,7 @@ struct fgl_stats {
 /* Timestamp of fgl_stats_batch_begin: the clock and the rasterization
  * time at the start of a batch. */
 struct fgl_stats_mark {
-   uint64_t t0, flush0;
+   uint64_t t0, flush0, raster0;
 };
 
 struct fgl_context {

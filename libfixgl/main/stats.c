@@ -11,7 +11,9 @@
  * summed, scene.c), t_render_batch times each vertex batch and
  * fgl_scene_flush each rasterization of the scene.  batch_ns is the wall
  * time of both, vertex_ns the batches' time minus the rasterization inside
- * them; with one thread setup_ns + raster_ns fits in batch_ns - vertex_ns.
+ * them (with one thread, which rasterizes each primitive as it comes, the
+ * raster core's own time); with one thread setup_ns + raster_ns fits in
+ * batch_ns - vertex_ns.
  */
 #include <fixgl/fixgl.h>
 
@@ -30,6 +32,7 @@ static uint64_t now_ns(void)
 void fgl_stats_batch_begin(struct fgl_context *ctx, struct fgl_stats_mark *mark)
 {
    mark->flush0 = ctx->Stats.flush_ns;
+   mark->raster0 = ctx->Stats.raster.setup_ns + ctx->Stats.raster.raster_ns;
    mark->t0 = now_ns();
    ctx->Stats.in_batch = true;
 }
@@ -39,7 +42,11 @@ void fgl_stats_batch_end(struct fgl_context *ctx, const struct fgl_stats_mark *m
    const uint64_t t1 = now_ns();
    struct fgl_stats *st = &ctx->Stats;
    const uint64_t batch = t1 - mark->t0;
-   const uint64_t flush = st->flush_ns - mark->flush0;
+   uint64_t flush = st->flush_ns - mark->flush0;
+   /* with one thread the primitives are rasterized as they come (scene.c):
+    * the raster core's time inside the batch is not the vertex stage's */
+   if (ctx->_NumThreads == 1)
+      flush += st->raster.setup_ns + st->raster.raster_ns - mark->raster0;
    st->batch_ns += batch;
    /* the rasterization is timed inside the batch: it cannot exceed the
     * batch's time, but clamp rather than wrap */
