@@ -165,13 +165,20 @@ static uint32_t new_cmd(struct r_scene *s, const struct r_state *rs, enum r_cmd_
 }
 
 /* Appends command `ci` to the bins of the tiles that the pixel box
- * [x0,x1) x [y0,y1) touches (already inside the framebuffer). */
-static bool bin_box(struct r_scene *s, uint32_t ci, int x0, int y0, int x1, int y1)
+ * [x0,x1) x [y0,y1) touches (already inside the framebuffer), but those
+ * that a triangle's `edges` (or NULL) exclude. */
+static bool bin_box(struct r_scene *s, uint32_t ci, int x0, int y0, int x1, int y1,
+                    const struct r_tri_edges *edges)
 {
    const int tx0 = x0 >> R_TILE_LOG2, tx1 = (x1 - 1) >> R_TILE_LOG2;
    const int ty0 = y0 >> R_TILE_LOG2, ty1 = (y1 - 1) >> R_TILE_LOG2;
+   /* a box of one tile needs no test */
+   if (tx0 == tx1 && ty0 == ty1)
+      edges = NULL;
    for (int ty = ty0; ty <= ty1; ty++) {
       for (int tx = tx0; tx <= tx1; tx++) {
+         if (edges && r_tri_edges_miss_tile(edges, tx << R_TILE_LOG2, ty << R_TILE_LOG2))
+            continue;
          struct r_bin *b = &s->bins[ty * s->tiles_x + tx];
          if (!grow((void **)&b->cmd, &b->capacity, b->count + 1, sizeof(*b->cmd)))
             return false;
@@ -225,12 +232,11 @@ static bool prim_box(const struct r_state *rs, float minx, float miny, float max
 static inline float min2(float a, float b) { return a < b ? a : b; }
 static inline float max2(float a, float b) { return a > b ? a : b; }
 
-/* Appends a primitive of n vertices with the box padding `pad`. */
-static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
-                     const struct r_vertex *const *v, int n, float pad)
+/* The pixel box of n vertices' window positions widened by `pad` (see
+ * prim_box); false when it is empty. */
+static bool vertex_box(const struct r_state *rs, const struct r_vertex *const *v, int n,
+                       float pad, int box[4])
 {
-   if (!begin(s, rs))
-      return false;
    float minx = v[0]->pos[0], maxx = minx, miny = v[0]->pos[1], maxy = miny;
    for (int i = 1; i < n; i++) {
       minx = min2(minx, v[i]->pos[0]);
@@ -242,8 +248,22 @@ static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kin
       if (isnan(v[i]->pos[0]) || isnan(v[i]->pos[1]))
          minx = NAN;   /* the whole region */
    }
+   return prim_box(rs, minx, miny, maxx, maxy, pad, box);
+}
+
+/* Appends a primitive of n vertices whose pixels lie in `known_box`
+ * inside `edges` (NULL: no edges) or, when it is NULL, in their vertex_box
+ * widened by `pad`. */
+static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
+                     const struct r_vertex *const *v, int n, float pad, const int *known_box,
+                     const struct r_tri_edges *edges)
+{
+   if (!begin(s, rs))
+      return false;
    int box[4];
-   if (!prim_box(rs, minx, miny, maxx, maxy, pad, box))
+   if (known_box)
+      memcpy(box, known_box, sizeof(box));
+   else if (!vertex_box(rs, v, n, pad, box))
       return true;   /* no pixel of the region: nothing to draw */
    const size_t mark_used = s->chunk_used, mark_bytes = s->bytes;
    struct r_scene_chunk *const mark_chunk = s->chunk;
@@ -257,7 +277,7 @@ static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kin
       if (!s->cmds[ci].v[i])
          goto fail;
    }
-   if (!bin_box(s, ci, box[0], box[1], box[2], box[3])) {
+   if (!bin_box(s, ci, box[0], box[1], box[2], box[3], edges)) {
       unbin(s, ci);
       goto fail;
    }
@@ -278,8 +298,16 @@ fail:
 bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                       const struct r_vertex *v1, const struct r_vertex *v2)
 {
+   /* binned into the tiles of the box r_triangle draws in, or not at all
+    * when it draws nothing (culled, empty) */
+   int box[4];
+   struct r_tri_edges edges;
+   const int known = r_triangle_box(rs, v0, v1, v2, box, &edges);
+   if (known == 0)
+      return true;
    const struct r_vertex *v[3] = { v0, v1, v2 };
-   return add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f);
+   return known == 1 ? add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, box, &edges)
+                     : add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL);
 }
 
 bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
@@ -288,14 +316,14 @@ bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_ve
    /* a line covers at most half its width (at most 255/2) beside its
     * ends and the segment between them, plus its diamond-exit pixels */
    const struct r_vertex *v[2] = { v0, v1 };
-   return add_prim(s, rs, R_CMD_LINE, v, 2, 0.5f * rs->rast->line_width + 1.0f);
+   return add_prim(s, rs, R_CMD_LINE, v, 2, 0.5f * rs->rast->line_width + 1.0f, NULL, NULL);
 }
 
 bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v)
 {
    /* a square of at most the size rounded up, around the snapped centre */
    const struct r_vertex *vv[1] = { v };
-   return add_prim(s, rs, R_CMD_POINT, vv, 1, 0.5f * rs->rast->point_size + 1.0f);
+   return add_prim(s, rs, R_CMD_POINT, vv, 1, 0.5f * rs->rast->point_size + 1.0f, NULL, NULL);
 }
 
 bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
@@ -316,7 +344,7 @@ bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
    c->zvalue = zvalue;
    c->clear_stencil = stencil;
    c->svalue = svalue;
-   if (!bin_box(s, ci, 0, 0, rs->fb->width, rs->fb->height)) {
+   if (!bin_box(s, ci, 0, 0, rs->fb->width, rs->fb->height, NULL)) {
       unbin(s, ci);
       goto fail;
    }

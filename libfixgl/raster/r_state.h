@@ -649,6 +649,24 @@ bool r_fragment_aa(const struct r_state *rs, const float in[][4], float color[4]
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2);
 
+/* What r_triangle can cover of a triangle, for the scene's binning: 0
+ * nothing (its snapped area is zero, its facing is culled, or its box
+ * misses the draw region and the framebuffer); 1 at most the pixels of
+ * box = [x0, x1) x [y0, y1) (the box of its snapped positions, cut to
+ * them) that `edges` does not exclude (r_tri_edges_miss_tile); 2
+ * unknown (non-finite or huge positions: any pixel of the region). */
+struct r_tri_edges {
+   int64_t c[3], dcdx[3], dcdy[3], eo[3];
+};
+int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
+                   const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
+                   struct r_tri_edges *edges);
+
+/* For a box of kind 1: true when the triangle of `edges` covers no pixel
+ * of the 64x64 tile whose top-left pixel is (x, y) (a multiple of 64):
+ * llvmpipe's trivial reject, conservative. */
+bool r_tri_edges_miss_tile(const struct r_tri_edges *edges, int x, int y);
+
 /* Rasterize one non-antialiased point (r_point.c; llvmpipe's legacy
  * points, lp_setup_point.c). */
 void r_point(const struct r_state *rs, const struct r_vertex *v);

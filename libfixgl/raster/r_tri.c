@@ -487,6 +487,33 @@ static bool block_cover(const struct r_plane *p, int32_t x0, int32_t y0, int32_t
 
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
+/* The three edges of a counter-clockwise triangle (lp_setup_tri.c SSE
+ * path); true when nothing in them wraps (see rasterize_direct). */
+static inline bool edge_planes(const int32_t X[3], const int32_t Y[3], struct r_plane p[3])
+{
+   bool exact = true;
+   for (int i = 0; i < 3; i++) {
+      const int k = (i + 1) % 3;
+      const int32_t dcdx = sub_wrap(Y[i], Y[k]);
+      const int32_t dcdy = sub_wrap(X[i], X[k]);
+      if (X[i] == INT32_MIN || Y[i] == INT32_MIN ||
+          dcdx <= -(1 << 22) || dcdx >= (1 << 22) || dcdy <= -(1 << 22) || dcdy >= (1 << 22))
+         exact = false;
+      int64_t c = (int64_t)((uint64_t)imul64(dcdx, X[i]) - (uint64_t)imul64(dcdy, Y[i]));
+      /* bottom-left fill convention (window buffers are y-down) */
+      if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+         c = add64(c, 1);
+      p[i].c = c;
+      p[i].dcdx = shl32(dcdx, 8);
+      p[i].dcdy = shl32(dcdy, 8);
+      /* trivial reject offset, 32 bits: the signs come from the unscaled
+       * steps, the values from the scaled ones */
+      p[i].eo = (uint32_t)(dcdy >= 0 ? p[i].dcdy : 0) -
+                (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
+   }
+   return exact;
+}
+
 /* Triangle setup and binning of a triangle whose snapped area is positive
  * (lp_setup_tri.c: do_triangle_ccw, lp_setup_bin_triangle).  v[2] is the
  * provoking vertex. */
@@ -516,28 +543,8 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
 
    const uint64_t t0 = rs->stats ? r_stats_now() : 0;
-   /* the three edges (lp_setup_tri.c SSE path) */
    struct r_plane p[MAX_PLANES];
-   bool exact = true;   /* nothing below wraps: see rasterize_direct */
-   for (int i = 0; i < 3; i++) {
-      const int k = (i + 1) % 3;
-      const int32_t dcdx = sub_wrap(Y[i], Y[k]);
-      const int32_t dcdy = sub_wrap(X[i], X[k]);
-      if (X[i] == INT32_MIN || Y[i] == INT32_MIN ||
-          dcdx <= -(1 << 22) || dcdx >= (1 << 22) || dcdy <= -(1 << 22) || dcdy >= (1 << 22))
-         exact = false;
-      int64_t c = (int64_t)((uint64_t)imul64(dcdx, X[i]) - (uint64_t)imul64(dcdy, Y[i]));
-      /* bottom-left fill convention (window buffers are y-down) */
-      if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
-         c = add64(c, 1);
-      p[i].c = c;
-      p[i].dcdx = shl32(dcdx, 8);
-      p[i].dcdy = shl32(dcdy, 8);
-      /* trivial reject offset, 32 bits: the signs come from the unscaled
-       * steps, the values from the scaled ones */
-      p[i].eo = (uint32_t)(dcdy >= 0 ? p[i].dcdy : 0) -
-                (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
-   }
+   const bool exact = edge_planes(X, Y, p);
    if (exact) {
       struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
@@ -657,29 +664,99 @@ void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
    }
 }
 
+/* The positions snapped to 8 sub-pixel bits and the fixed-point area
+ * (twice the signed area, positive for a clockwise triangle in y-down
+ * window coordinates). */
+static inline int64_t snap_area(const struct r_vertex *const v[3], int32_t X[3], int32_t Y[3])
+{
+   for (int i = 0; i < 3; i++) {
+      X[i] = cvt_rne_i32((v[i]->pos[0] - 0.5f) * 256.0f);
+      Y[i] = cvt_rne_i32((v[i]->pos[1] - 0.5f) * 256.0f);
+   }
+   const int32_t dx01 = sub_wrap(X[0], X[1]), dy01 = sub_wrap(Y[0], Y[1]);
+   const int32_t dx20 = sub_wrap(X[2], X[0]), dy20 = sub_wrap(Y[2], Y[0]);
+   return (int64_t)((uint64_t)((int64_t)dx01 * dy20) - (uint64_t)((int64_t)dx20 * dy01));
+}
+
+/* lp_setup_tri.c triangle_both/_ccw/_cw: facing from the area sign and
+ * culling: whether the triangle of snapped area `area` is discarded. */
+static inline bool area_culled(const struct r_state *rs, int64_t area)
+{
+   if (area == 0)
+      return true;
+   const bool is_back = (area > 0) != rs->rast->ccw_is_front;
+   return is_back ? rs->rast->cull_back : rs->rast->cull_front;
+}
+
+int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
+                   const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
+                   struct r_tri_edges *edges)
+{
+   const struct r_vertex *v[3] = { v0, v1, v2 };
+   int32_t X[3], Y[3];
+   const int64_t area = snap_area(v, X, Y);
+   if (area_culled(rs, area))
+      return 0;
+   if (area < 0) {
+      /* r_triangle's order */
+      int32_t t = X[0]; X[0] = X[1]; X[1] = t;
+      t = Y[0]; Y[0] = Y[1]; Y[1] = t;
+   }
+   struct r_plane p[3];
+   if (!edge_planes(X, Y, p))
+      return 2;   /* the planes may wrap */
+   for (int i = 0; i < 3; i++) {
+      edges->c[i] = p[i].c;
+      edges->dcdx[i] = p[i].dcdx;
+      edges->dcdy[i] = p[i].dcdy;
+      edges->eo[i] = (int64_t)p[i].eo * TILE_SIZE;
+   }
+   /* rasterize_ccw's box, cut to the draw region: no pixel outside it is
+    * covered */
+   int32_t bx0 = min3(X[0], X[1], X[2]) >> 8;
+   int32_t bx1 = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
+   int32_t by0 = r_add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
+   int32_t by1 = max3(Y[0], Y[1], Y[2]) >> 8;
+   if (bx0 < rs->x0) bx0 = rs->x0;
+   if (by0 < rs->y0) by0 = rs->y0;
+   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
+   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   if (bx0 < 0) bx0 = 0;
+   if (by0 < 0) by0 = 0;
+   if (bx1 > rs->fb->width - 1) bx1 = rs->fb->width - 1;
+   if (by1 > rs->fb->height - 1) by1 = rs->fb->height - 1;
+   if (bx0 > bx1 || by0 > by1)
+      return 0;
+   box[0] = bx0;
+   box[1] = by0;
+   box[2] = bx1 + 1;
+   box[3] = by1 + 1;
+   return 1;
+}
+
+bool r_tri_edges_miss_tile(const struct r_tri_edges *e, int x, int y)
+{
+   /* r_bin_planes' trivial reject of the 64x64 tile at (x, y) */
+   for (int i = 0; i < 3; i++) {
+      const int64_t c = sub64(add64(e->c[i], imul64(e->dcdy[i], y)), imul64(e->dcdx[i], x));
+      if (add64(c, e->eo[i]) < 0)
+         return true;
+   }
+   return false;
+}
+
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
                 const struct r_vertex *v1, const struct r_vertex *v2)
 {
    const struct r_vertex *v[3] = { v0, v1, v2 };
    int32_t X[3], Y[3];
-   for (int i = 0; i < 3; i++) {
-      X[i] = cvt_rne_i32((v[i]->pos[0] - 0.5f) * 256.0f);
-      Y[i] = cvt_rne_i32((v[i]->pos[1] - 0.5f) * 256.0f);
-   }
-
-   const int32_t dx01 = sub_wrap(X[0], X[1]), dy01 = sub_wrap(Y[0], Y[1]);
-   const int32_t dx20 = sub_wrap(X[2], X[0]), dy20 = sub_wrap(Y[2], Y[0]);
-   const int64_t area = (int64_t)((uint64_t)((int64_t)dx01 * dy20) -
-                                  (uint64_t)((int64_t)dx20 * dy01));
-   if (area == 0)
-      return;
-   /* lp_setup_tri.c triangle_both/_ccw/_cw: facing from the area sign,
-    * culling, and the facing that chooses two-sided colours
+   const int64_t area = snap_area(v, X, Y);
+   /* facing and culling; the facing also chooses two-sided colours
     * (ORACLE-NOTES.md "Lighting order of operations", its two-sided
     * lighting) */
-   const bool is_back = (area > 0) != rs->rast->ccw_is_front;
-   if (is_back ? rs->rast->cull_back : rs->rast->cull_front)
+   if (area_culled(rs, area))
       return;
+   const bool is_back = (area > 0) != rs->rast->ccw_is_front;
    const bool back = rs->rast->twoside && is_back;
    /* GL_PHONG_WIN lights a two-sided back face with the back material, by
     * this facing (gl_FrontFacing's [S: lp_setup_tri.c: the area sign]),
