@@ -146,7 +146,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
    /* what is binned reaches the buffers, which the caller may still read
     * (OSMesa's internal ones are freed after) */
    fgl_scene_flush(ctx);
-   r_scene_fini(&ctx->_Scene);
+   fgl_scene_fini(ctx);
    if (ctx->_NumThreads)
       r_pool_unref();
    fgl_free_matrix(ctx);

@@ -777,6 +777,8 @@ struct fgl_stats_mark {
    uint64_t t0, flush0, raster0;
 };
 
+struct fgl_scene_async;
+
 struct fgl_context {
    /* ---- GL state, one struct per attribute group ---- */
    struct fgl_current_attrib Current;
@@ -905,6 +907,8 @@ struct fgl_context {
    /* the primitives and clears binned since the last flush (scene.c),
     * rasterized by _NumThreads threads (FIXGL_NUM_THREADS) */
    struct r_scene _Scene;
+   /* the earlier scene the workers rasterize meanwhile (scene.c), or NULL */
+   struct fgl_scene_async *_SceneAsync;
    unsigned _NumThreads;
    /* fixglStats (main/stats.c): the benchmark's counters; _Raster.stats
     * points to Stats.raster while they are enabled, else it is NULL */
@@ -974,6 +978,8 @@ void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
 #define FGL_MAX_THREADS 64
 unsigned fgl_num_threads(void);
 void fgl_scene_flush(struct fgl_context *ctx);
+/* Frees the scenes (after a flush). */
+void fgl_scene_fini(struct fgl_context *ctx);
 /* fgl_scene_flush, then the framebuffer's FlushFront (glFlush, glFinish):
  * by tiles, each copied by the thread that drew it, when the framebuffer
  * can (FlushFrontRect) */

@@ -64,10 +64,104 @@ static void run_tile(void *arg, unsigned item, unsigned slot)
    }
 }
 
+/* The scene rasterized by the workers while the context bins the next
+ * one (ctx->_SceneAsync): the vertex stage and the binning of a frame's
+ * later primitives overlap with the rasterization of its earlier ones.
+ * A scene is handed over only when the previous one has finished, and
+ * every flush waits for it first, so each tile still sees its commands
+ * in submission order, whatever the threads. */
+struct fgl_scene_async {
+   struct r_scene scene;
+   struct tile_job tiles;
+   struct r_job job;
+   bool busy;                     /* submitted, not yet waited for */
+};
+
+/* Past this many commands, a scene is handed to the workers when they
+ * are idle: a job costs a wake-up and a pass over the tiles, which a few
+ * hundred primitives pay for. */
+#define ASYNC_MIN_CMDS 512u
+
+static void add_stats(struct fgl_context *ctx, const struct tile_job *j, uint64_t ns)
+{
+   fgl_stats_flush(ctx, ns);
+   for (unsigned t = 0; t < ctx->_NumThreads; t++) {
+      ctx->Stats.raster.fragments += j->stats[t].fragments;
+      ctx->Stats.raster.setup_ns += j->stats[t].setup_ns;
+      ctx->Stats.raster.raster_ns += j->stats[t].raster_ns;
+   }
+}
+
+/* Waits for the scene in the workers' hands, if any (the calling thread
+ * takes the tiles they have not started), and empties it. */
+static void wait_async(struct fgl_context *ctx)
+{
+   struct fgl_scene_async *a = ctx->_SceneAsync;
+   if (!a || !a->busy)
+      return;
+   const bool stats = a->scene.stats;
+   const uint64_t t0 = stats ? r_stats_now() : 0;
+   r_pool_wait(&a->job);
+   a->busy = false;
+   if (stats)
+      add_stats(ctx, &a->tiles, r_stats_now() - t0);
+   r_scene_reset(&a->scene);
+}
+
+/* After a primitive was binned: hands the scene to the workers when it is
+ * big enough and they have finished the previous one. */
+static void maybe_hand_over(struct fgl_context *ctx)
+{
+   struct r_scene *s = &ctx->_Scene;
+   if (s->ncmds < ASYNC_MIN_CMDS)
+      return;
+   struct fgl_scene_async *a = ctx->_SceneAsync;
+   if (!a) {
+      a = calloc(1, sizeof(*a));
+      if (!a)
+         return;   /* drawn at the next flush, as without it */
+      ctx->_SceneAsync = a;
+   }
+   if (a->busy) {
+      if (!r_pool_finished(&a->job))
+         return;
+      wait_async(ctx);
+   }
+   /* the binned scene goes to the workers, the emptied one takes its
+    * place (each keeps its memory) */
+   const struct r_scene t = a->scene;
+   a->scene = *s;
+   *s = t;
+   a->tiles.scene = &a->scene;
+   memset(a->tiles.stats, 0, sizeof(a->tiles.stats));
+   a->tiles.front = NULL;
+   a->tiles.tiles_x = a->scene.tiles_x;
+   a->job = (struct r_job){
+      .run = run_tile,
+      .arg = &a->tiles,
+      .count = r_scene_tiles(&a->scene),
+      .threads = ctx->_NumThreads,
+   };
+   a->busy = true;
+   r_pool_submit(&a->job);
+}
+
+void fgl_scene_fini(struct fgl_context *ctx)
+{
+   wait_async(ctx);
+   r_scene_fini(&ctx->_Scene);
+   if (ctx->_SceneAsync) {
+      r_scene_fini(&ctx->_SceneAsync->scene);
+      free(ctx->_SceneAsync);
+      ctx->_SceneAsync = NULL;
+   }
+}
+
 /* Runs the scene's tiles (when it has commands) and the copy of the tiles
  * of `front` (when not NULL), then empties the scene. */
 static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
 {
+   wait_async(ctx);
    struct r_scene *s = &ctx->_Scene;
    const bool draw = !r_scene_empty(s);
    if (!draw && !front) {
@@ -94,14 +188,8 @@ static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
    };
    const uint64_t t0 = s->stats ? r_stats_now() : 0;
    r_pool_run(&job);
-   if (s->stats) {
-      fgl_stats_flush(ctx, r_stats_now() - t0);
-      for (unsigned t = 0; t < ctx->_NumThreads; t++) {
-         ctx->Stats.raster.fragments += j.stats[t].fragments;
-         ctx->Stats.raster.setup_ns += j.stats[t].setup_ns;
-         ctx->Stats.raster.raster_ns += j.stats[t].raster_ns;
-      }
-   }
+   if (s->stats)
+      add_stats(ctx, &j, r_stats_now() - t0);
    r_scene_reset(s);
 }
 
@@ -114,6 +202,7 @@ void fgl_scene_flush_front(struct fgl_context *ctx)
 {
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    struct r_scene *s = &ctx->_Scene;
+   wait_async(ctx);
    /* by tiles when the scene's tiles are the framebuffer's (a scene for
     * other buffers, if any, is drawn first); with one thread the
     * buffer was drawn directly, and the copy row by row of the whole
@@ -140,8 +229,10 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
       r_triangle(rs, v0, v1, v2);
       return;
    }
-   if (r_scene_triangle(&ctx->_Scene, rs, v0, v1, v2))
+   if (r_scene_triangle(&ctx->_Scene, rs, v0, v1, v2)) {
+      maybe_hand_over(ctx);
       return;
+   }
    fgl_scene_flush(ctx);
    if (!r_scene_triangle(&ctx->_Scene, rs, v0, v1, v2))
       r_triangle(rs, v0, v1, v2);   /* out of memory: drawn now, in order */
@@ -154,8 +245,10 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
       r_line(rs, v0, v1);
       return;
    }
-   if (r_scene_line(&ctx->_Scene, rs, v0, v1))
+   if (r_scene_line(&ctx->_Scene, rs, v0, v1)) {
+      maybe_hand_over(ctx);
       return;
+   }
    fgl_scene_flush(ctx);
    if (!r_scene_line(&ctx->_Scene, rs, v0, v1))
       r_line(rs, v0, v1);
@@ -168,8 +261,10 @@ void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
       r_point(rs, v);
       return;
    }
-   if (r_scene_point(&ctx->_Scene, rs, v))
+   if (r_scene_point(&ctx->_Scene, rs, v)) {
+      maybe_hand_over(ctx);
       return;
+   }
    fgl_scene_flush(ctx);
    if (!r_scene_point(&ctx->_Scene, rs, v))
       r_point(rs, v);

@@ -121,14 +121,14 @@ static void ensure_workers(unsigned want)
    }
 }
 
-void r_pool_run(struct r_job *job)
+void r_pool_submit(struct r_job *job)
 {
    job->next = 0;
    job->done = 0;
    job->helpers = 0;
    job->active = 0;
    job->prev_job = job->next_job = NULL;
-   if (job->threads > 1 && job->count > 1) {
+   if (job->threads > 1 && job->count > 0) {
       pthread_mutex_lock(&pool.lock);
       ensure_workers(job->threads - 1);
       if (pool.nthreads > 0) {
@@ -137,10 +137,18 @@ void r_pool_run(struct r_job *job)
       }
       pthread_mutex_unlock(&pool.lock);
    }
+}
 
+bool r_pool_finished(const struct r_job *job)
+{
+   return __atomic_load_n(&job->done, __ATOMIC_ACQUIRE) == job->count;
+}
+
+void r_pool_wait(struct r_job *job)
+{
    run_items(job, 0);
 
-   if (job->threads > 1 && job->count > 1) {
+   if (job->threads > 1 && job->count > 0) {
       pthread_mutex_lock(&pool.lock);
       if (job->prev_job || job->next_job || pool.head == job)
          unlink_job(job);
@@ -153,6 +161,12 @@ void r_pool_run(struct r_job *job)
    /* pairs with the workers' release increments: their writes are
     * visible to the caller now */
    (void)__atomic_load_n(&job->done, __ATOMIC_ACQUIRE);
+}
+
+void r_pool_run(struct r_job *job)
+{
+   r_pool_submit(job);
+   r_pool_wait(job);
 }
 
 void r_pool_shutdown(void)

@@ -33,8 +33,23 @@ struct r_job {
 };
 
 /* Runs every item of job (threads > 1 may use workers); returns when all
- * are done.  Any thread may call it, for different jobs at once. */
+ * are done.  Any thread may call it, for different jobs at once.  It is
+ * r_pool_submit then r_pool_wait. */
 void r_pool_run(struct r_job *job);
+
+/* Hands job to the workers (threads > 1: up to threads - 1 of them) and
+ * returns at once; the job and what it reads must stay alive and
+ * unchanged until r_pool_wait(job) returns, which must be called once. */
+void r_pool_submit(struct r_job *job);
+
+/* Whether every item of a submitted job has finished (then r_pool_wait
+ * does not block for long: it only waits for the workers to leave). */
+bool r_pool_finished(const struct r_job *job);
+
+/* The caller runs the items of a submitted job that no worker took, then
+ * waits until every item has finished and every worker has left the job;
+ * the items' writes are visible to the caller afterwards. */
+void r_pool_wait(struct r_job *job);
 
 /* Joins every worker (no job may be running).  The next job with
  * threads > 1 creates them again. */

@@ -239,18 +239,29 @@ static void scene_small(int f)
   glOrtho(0.0, W, 0.0, H, -1.0, 1.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  glBegin(GL_TRIANGLES);
+  /* enough triangles (five blocks of 600, blending on in every other)
+   * that the scene goes to the workers several times while the next
+   * primitives are binned (scene.c ASYNC_MIN_CMDS) */
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   uint32_t r = 12345u + (uint32_t)f;
-  for (int i = 0; i < 600; i++) {
-    r = r * 1664525u + 1013904223u;
-    const float x = (float)(r >> 8 & 0xff) * 1.2f, y = (float)(r >> 16 & 0xff) * 0.8f;
-    const float z = (float)(r & 0xff) / 255.0f - 0.5f;
-    glColor3ub((GLubyte)r, (GLubyte)(r >> 5), (GLubyte)(r >> 11));
-    glVertex3f(x, y, z);
-    glVertex3f(x + 9.5f, y + 1.25f, z);
-    glVertex3f(x + 3.0f, y + 8.75f, -z);
+  for (int b = 0; b < 5; b++) {
+    if (b & 1)
+      glEnable(GL_BLEND);
+    else
+      glDisable(GL_BLEND);
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < 600; i++) {
+      r = r * 1664525u + 1013904223u;
+      const float x = (float)(r >> 8 & 0xff) * 1.2f, y = (float)(r >> 16 & 0xff) * 0.8f;
+      const float z = (float)(r & 0xff) / 255.0f - 0.5f;
+      glColor4ub((GLubyte)r, (GLubyte)(r >> 5), (GLubyte)(r >> 11), (GLubyte)(r >> 3));
+      glVertex3f(x, y, z);
+      glVertex3f(x + 9.5f, y + 1.25f, z);
+      glVertex3f(x + 3.0f, y + 8.75f, -z);
+    }
+    glEnd();
   }
-  glEnd();
+  glDisable(GL_BLEND);
   glRasterPos2i(150, 100);
   glCopyPixels(10 + f, 10, 80, 60, GL_COLOR);
   glAccum(GL_LOAD, 0.5f);
