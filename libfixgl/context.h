@@ -1017,6 +1017,21 @@ static inline struct fgl_matrix_stack *fgl_texture_stack(struct fgl_context *ctx
    return &ctx->TextureStack[u < FGL_MAX_TEXTURE_UNITS ? u : FGL_MAX_TEXTURE_UNITS];
 }
 
+/* The units whose gl_TexCoord[u] the fixed-function fragment program
+ * reads as a varying: the last draw's vertex format had the coordinate,
+ * or texgen or the texture matrix compute it per vertex; it reads the
+ * other units' current coordinates as constants
+ * [S: ff_fragment_shader.cpp:filter_fp_input_mask, load_texture] */
+static inline unsigned fgl_tex_varying_units(const struct fgl_context *ctx)
+{
+   return ctx->_VaryingTexUnits | ctx->_TexGenEnabled | ctx->_TexMatEnabled;
+}
+
+static inline unsigned fgl_tex_constant_units(const struct fgl_context *ctx)
+{
+   return ~fgl_tex_varying_units(ctx) & ((1u << FGL_MAX_TEXTURE_UNITS) - 1u);
+}
+
 static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 {
    return ctx->BeginMode != FGL_OUTSIDE_BEGIN_END;

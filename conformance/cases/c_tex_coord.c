@@ -1556,6 +1556,112 @@ static void multi_active_image_units(fc_h *h)
     fc_error(h, "end");
 }
 
+/* A coordinate that cannot vary (set outside glBegin/glEnd, no texgen, an
+ * identity texture matrix) is a constant of the fragment program: the
+ * oracle reads the current coordinate, never interpolates it.  A triangle
+ * with the w = 0 origin as a vertex shows it: interpolating the constant
+ * gives NaN there (texel 0 of a NEAREST REPEAT lookup), the constant
+ * gives its own texel.  Frames: unit 0 constant (smooth, flat, LINEAR),
+ * unit 1 constant beside a varying unit 0, the coordinate per vertex
+ * (varying), a texture matrix and texgen (varying again), and a line
+ * strip and points through the same units. */
+static void draw_w_zero(void)
+{
+    static const float tri[3][4] = {
+        { -0.8f, -0.8f, 0.7f, -0.6f },
+        { 0.9f, 0.9f, -0.9f, 0.95f },
+        { -0.2f, 0.5f, 0.1f, -0.9f },
+    };
+    for (int t = 0; t < 3; t++) {
+        glBegin(GL_TRIANGLES);
+        glVertex4f(tri[t][0], tri[t][1], 0.1f, 1.0f);
+        glVertex4f(tri[t][2], tri[t][3], 0.1f, 1.0f);
+        glVertex4f(0, 0, 0, 0);
+        glEnd();
+    }
+}
+
+static void draw_w_zero_varying(void)
+{
+    glBegin(GL_TRIANGLES);
+    glMultiTexCoord2f(GL_TEXTURE0, 0.8f, 0.5f);
+    glVertex4f(-0.8f, -0.8f, 0.1f, 1.0f);
+    glVertex4f(0.7f, -0.6f, 0.1f, 1.0f);
+    glVertex4f(0, 0, 0, 0);
+    glEnd();
+}
+
+static void draw_w_zero_lines(void)
+{
+    glBegin(GL_LINE_STRIP);
+    glVertex4f(-0.8f, -0.8f, 0.1f, 1.0f);
+    glVertex4f(0.7f, -0.6f, 0.1f, 1.0f);
+    glVertex4f(0.9f, 0.9f, 0.1f, 1.0f);
+    glEnd();
+    glPointSize(3.0f);
+    glBegin(GL_POINTS);
+    glVertex4f(-0.5f, 0.5f, 0.1f, 1.0f);
+    glVertex4f(0.5f, 0.5f, 0.3f, 2.0f);
+    glEnd();
+    glPointSize(1.0f);
+}
+
+static void strip_texture(GLenum filter)
+{
+    static const GLubyte texels[32] = {
+        0, 14, 255, 128, 55, 0, 78, 77, 0, 0, 60, 0, 0, 255, 128, 255,
+        255, 64, 127, 191, 127, 0, 70, 126, 128, 71, 44, 0, 0, 149, 128, 128,
+    };
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)filter);
+    glEnable(GL_TEXTURE_2D);
+}
+
+static void coord_constant_w_zero(fc_h *h)
+{
+    glViewport(0, 0, 17, 54);
+    glColor4f(0.2f, 0.4f, 0.6f, 1.0f);
+    glActiveTexture(GL_TEXTURE0);
+    strip_texture(GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glMultiTexCoord2f(GL_TEXTURE0, 0.826f, 0.8f);
+    render_frame(h, draw_w_zero);                 /* constant, smooth */
+    glShadeModel(GL_FLAT);
+    render_frame(h, draw_w_zero);                 /* constant, flat */
+    glShadeModel(GL_SMOOTH);
+    strip_texture(GL_LINEAR);
+    render_frame(h, draw_w_zero);                 /* constant, LINEAR */
+    strip_texture(GL_NEAREST);
+    /* unit 1 constant beside a varying unit 0 */
+    glActiveTexture(GL_TEXTURE1);
+    strip_texture(GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glMultiTexCoord2f(GL_TEXTURE1, 0.3f, 0.2f);
+    render_frame(h, draw_w_zero_varying);
+    glDisable(GL_TEXTURE_2D);
+    glActiveTexture(GL_TEXTURE0);
+    render_frame(h, draw_w_zero_varying);         /* unit 0 varying */
+    /* a texture matrix computes the coordinate per vertex: varying */
+    glMatrixMode(GL_TEXTURE);
+    glTranslatef(0.125f, 0.0f, 0.0f);
+    render_frame(h, draw_w_zero);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    /* texgen on s: varying */
+    static const GLfloat sp[4] = { 0.25f, 0.5f, 0.0f, 0.5f };
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glTexGenfv(GL_S, GL_OBJECT_PLANE, sp);
+    glEnable(GL_TEXTURE_GEN_S);
+    render_frame(h, draw_w_zero);
+    glDisable(GL_TEXTURE_GEN_S);
+    /* the same again after the generation is off: constant */
+    render_frame(h, draw_w_zero);
+    render_frame(h, draw_w_zero_lines);
+    glDisable(GL_TEXTURE_2D);
+    fc_error(h, "end");
+}
+
 const fc_case fc_cases_tex_coord[] = {
     FC_CASE_RGBA("texture/gen_object_linear", 32, 32, 0, "texture feedback", gen_object_linear),
     FC_CASE_RGBA("texture/gen_eye_linear", 32, 32, 0, "texture feedback lighting", gen_eye_linear),
@@ -1588,5 +1694,7 @@ const fc_case fc_cases_tex_coord[] = {
                  multi_render_arrays),
     FC_CASE_RGBA("texture/multi_render_clipped", 48, 48, 4, "texture render clip",
                  multi_render_clipped),
+    FC_CASE_RGBA("texture/coord_constant_w_zero", 17, 54, 9, "texture render clip robust",
+                 coord_constant_w_zero),
     { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
 };

@@ -146,7 +146,7 @@ static void expand_bitmap(const struct fgl_pixelstore *p, const uint8_t *bitmap,
  * [S: ff_fragment_shader.cpp:filter_fp_input_mask, load_texture]. */
 static unsigned tex_varying(const struct fgl_context *ctx)
 {
-   return ctx->_VaryingTexUnits | ctx->_TexGenEnabled | ctx->_TexMatEnabled;
+   return fgl_tex_varying_units(ctx);
 }
 
 /* What each unit sees (r_pixel_image.tex_quad, tex_const), for the

@@ -406,6 +406,16 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
       ctx->_Raster.flat_mask = flat ? 0xfu : 0u;
    else
       ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
+   /* Likewise a texture coordinate that cannot vary (not in the batch's
+    * vertex format, no texgen, no texture matrix) is read by the fragment
+    * program as the current coordinate, a constant (filter_fp_input_mask,
+    * load_texture: gl_CurrentAttribFragMESA), never interpolated: every
+    * vertex carries that value (t_texcoord), so the provoking vertex's is
+    * it, also where interpolation is not exact (w = 0; ORACLE-NOTES.md
+    * "Texture coordinates and multitexture"). */
+   if (!feedback)
+      ctx->_Raster.flat_mask |= (fgl_tex_constant_units(ctx) & ctx->_Raster.fs->tex_units)
+                                << R_ATTR_TEX0;
    /* llvmpipe's direct path draws a quad as (0,1,2)+(0,2,3) unless its
     * setup variant has a constant-interpolated input
     * (lp_setup_vbuf.c:lp_setup_draw_arrays, rect() when
