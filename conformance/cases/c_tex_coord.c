@@ -1588,5 +1588,5 @@ const fc_case fc_cases_tex_coord[] = {
                  multi_render_arrays),
     FC_CASE_RGBA("texture/multi_render_clipped", 48, 48, 4, "texture render clip",
                  multi_render_clipped),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };
