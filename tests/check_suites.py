@@ -30,7 +30,8 @@ FEATURES = ("conformance", "viewer")
 
 # What each option, when enabled, must put into `meson test`.
 REQUIRED = {
-    None: {"suites": {"unit", "api", "threads", "guard"}, "tests": {"exports", "osmesa_api"}},
+    None: {"suites": {"unit", "api", "threads", "guard", "robust"},
+           "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws"}},
     "conformance": {
         "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle"},
         "tests": {"conformance-core", "conformance-random", "conformance-random-lit",
