@@ -173,7 +173,7 @@ static void w_textures(void)
 static void w_dlists(void)
 {
    struct ctx c;
-   static GLubyte stipple[128], bitmap[16], px[16 * 16 * 4];
+   static GLubyte stipple[128], bitmap[32], px[16 * 16 * 4];   /* bitmap: 8 rows of 4 bytes (GL_UNPACK_ALIGNMENT 4) */
    static const GLfloat amb[4] = { 0.2f, 0.3f, 0.4f, 1 };
    static const GLfloat pts[4][3] = { { 0, 0, 0 }, { 10, 30, 0 }, { 40, 5, 0 }, { 60, 60, 0 } };
    if (begin(&c, OSMESA_RGBA, 24, 0, 0, 64, 64)) {
