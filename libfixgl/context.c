@@ -9,6 +9,7 @@
 
 #include "main/dlist.h"
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 /* initial-exec: read at a fixed offset from the thread pointer, without a
  * __tls_get_addr call in every GL entry point (the general model of a
@@ -36,6 +37,30 @@ void fgl_error(struct fgl_context *ctx, GLenum error)
 {
    if (ctx->ErrorValue == GL_NO_ERROR)
       ctx->ErrorValue = error;
+}
+
+void *fgl_malloc_gl(const struct fgl_context *ctx, size_t size)
+{
+   void *p = fgl_malloc(size);
+   if (!p)
+      fgl_error((struct fgl_context *)ctx, GL_OUT_OF_MEMORY);
+   return p;
+}
+
+void *fgl_realloc_gl(const struct fgl_context *ctx, void *p, size_t size)
+{
+   void *q = fgl_realloc(p, size);
+   if (!q && size)
+      fgl_error((struct fgl_context *)ctx, GL_OUT_OF_MEMORY);
+   return q;
+}
+
+void *fgl_calloc_gl(const struct fgl_context *ctx, size_t n, size_t size)
+{
+   void *p = fgl_calloc(n, size);
+   if (!p)
+      fgl_error((struct fgl_context *)ctx, GL_OUT_OF_MEMORY);
+   return p;
 }
 
 /* Initial values (GL 1.3 state tables 6.5-6.31) of the state no init
@@ -89,7 +114,7 @@ static void init_other_state(struct fgl_context *ctx)
 
 struct fgl_context *fgl_context_create(void)
 {
-   struct fgl_context *ctx = calloc(1, sizeof(*ctx));
+   struct fgl_context *ctx = fgl_calloc(1, sizeof(*ctx));
    if (!ctx)
       return NULL;
    if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx) || !fgl_init_dlist(ctx) ||
@@ -154,9 +179,9 @@ void fgl_context_destroy(struct fgl_context *ctx)
    fgl_free_drawpix_cache(ctx);
    fgl_free_texobj(ctx);
    fgl_vbo_fini(&ctx->Vbo);
-   free(ctx->_DrawVbuf.queue);
+   fgl_free(ctx->_DrawVbuf.queue);
    r_cso_cache_fini(&ctx->_StateCache);
-   free(ctx);
+   fgl_free(ctx);
 }
 
 void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb)

@@ -950,6 +950,12 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
 
 /* Record a GL error; the first one since the last glGetError wins. */
 void fgl_error(struct fgl_context *ctx, GLenum error);
+/* fgl_malloc/fgl_calloc that raise GL_OUT_OF_MEMORY when they fail (the
+ * first error wins, so a later error of the failing path does not hide
+ * it); for the entry points' temporary buffers (fgl_alloc.h). */
+void *fgl_malloc_gl(const struct fgl_context *ctx, size_t size);
+void *fgl_calloc_gl(const struct fgl_context *ctx, size_t n, size_t size);
+void *fgl_realloc_gl(const struct fgl_context *ctx, void *p, size_t size);
 
 /* Mesa's FLUSH_VERTICES: draw whatever the immediate-mode store has
  * batched (if a primitive was stored since the last flush) and reset the

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "context.h"
+#include "fgl_alloc.h"
 #include "raster/r_pool.h"
 
 /* FIXGL_NUM_THREADS: a positive number, else the online CPUs (at most
@@ -117,7 +118,7 @@ static void maybe_hand_over(struct fgl_context *ctx)
       return;
    struct fgl_scene_async *a = ctx->_SceneAsync;
    if (!a) {
-      a = calloc(1, sizeof(*a));
+      a = fgl_calloc(1, sizeof(*a));
       if (!a)
          return;   /* drawn at the next flush, as without it */
       ctx->_SceneAsync = a;
@@ -152,7 +153,7 @@ void fgl_scene_fini(struct fgl_context *ctx)
    r_scene_fini(&ctx->_Scene);
    if (ctx->_SceneAsync) {
       r_scene_fini(&ctx->_SceneAsync->scene);
-      free(ctx->_SceneAsync);
+      fgl_free(ctx->_SceneAsync);
       ctx->_SceneAsync = NULL;
    }
 }

@@ -822,13 +822,19 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
       struct r_fs_state o;
       memset(&o, 0, sizeof(o));
       build_fs(ctx, &o);
+      /* out of memory (update_tex_units): a unit whose first object could
+       * not be made does not texture */
+      for (int u = 0; u < o.tex_nr; u++)
+         if (!rs->tex[u])
+            o.tex_units &= ~(1u << u);
+      o.tex_nr = o.tex_units ? 32 - __builtin_clz(o.tex_units) : 0;
       for (int u = 0; u < o.tex_nr; u++)
          if (rs->tex[u])
             o.tex_pair |= r_tex_need_pair(&rs->tex[u]->tex);
       ok = true;
       SET_OBJECT(ctx, rs->fs, o, &ok);
       failed |= ok ? 0u : FGL_NEW_FOG;
-      if (!rs->fs->phong && rs->shade_env) {
+      if (rs->fs && !rs->fs->phong && rs->shade_env) {
          r_cso_release(rs->shade_env);
          rs->shade_env = NULL;
       }
@@ -842,6 +848,10 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
       SET_OBJECT(ctx, rs->rast, o, &ok);
       failed |= ok ? 0u : FGL_NEW_POLYGON;
    }
+   /* an object that could never be made (the first validation of a
+    * context, out of memory): no kernel to choose, the draw stays off */
+   if (!rs->fb || !rs->rast || !rs->dsa || !rs->blend || !rs->fs)
+      return failed;
    r_choose_kernels(rs);
    if (!update_aa_states(ctx))
       failed |= FGL_NEW_POINT;

@@ -244,7 +244,8 @@ static void w_zero_vertex(fc_h *h)
 }
 
 /* A triangle clipped at the far plane whose other vertices are the w = 0
- * origin and a normal vertex: the clipped polygon has NaN corners. */
+ * origin and a normal vertex: the clipped polygon has NaN corners, and
+ * neither side draws any of it (draws_nothing). */
 static void w_zero_clipped(fc_h *h)
 {
     glViewport(0, 0, 17, 54);
@@ -313,7 +314,7 @@ const fc_case fc_cases_clip[] = {
     FC_CASE_RGBA("core/degenerate_primitives", 32, 32, 1, "core fill", degenerate),
     FC_CASE_RGBA("core/non_finite_coordinates", 32, 32, 1, "core clip robust", non_finite),
     FC_CASE_RGBA("core/w_zero_vertex", 17, 54, 4, "core clip robust", w_zero_vertex),
-    FC_CASE_RGBA("core/w_zero_clipped", 17, 54, 1, "core clip robust", w_zero_clipped),
+    FC_CASE_NODRAW("core/w_zero_clipped", 17, 54, OSMESA_RGBA, 24, 0, 1, "core clip robust", w_zero_clipped),
     FC_CASE("core/w_zero_scissor", 90, 115, OSMESA_RGBA, 24, 0, 8, "core clip robust scissor", w_zero_scissor),
     FC_CASE("core/w_zero_scissor_bgra", 65, 119, OSMESA_BGRA, 16, 8, 8, "core clip robust scissor", w_zero_scissor),
     { 0 }

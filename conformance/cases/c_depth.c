@@ -154,7 +154,8 @@ const fc_case fc_cases_depth[] = {
     FC_CASE_RGBA("core/depth_func_sloped_ties", 64, 32, 1, "core depth", depth_func_sloped_ties),
     FC_CASE_RGBA("core/depth_mask", 32, 32, 2, "core depth", depth_mask),
     FC_CASE_RGBA("core/depth_range", 32, 32, 5, "core depth", depth_range),
-    FC_CASE_RGBA("core/clear_depth_values", 16, 16, 7, "core depth", clear_depth),
+    /* frames of cleared buffers: the clear depth values (draws_nothing) */
+    FC_CASE_NODRAW("core/clear_depth_values", 16, 16, OSMESA_RGBA, 24, 0, 7, "core depth", clear_depth),
     FC_CASE("core/depth_bits_16", 32, 32, OSMESA_RGBA, 16, 0, 1, "core depth", depth_bits),
     FC_CASE("core/depth_bits_24", 32, 32, OSMESA_RGBA, 24, 0, 1, "core depth", depth_bits),
     FC_CASE("core/depth_bits_32", 32, 32, OSMESA_RGBA, 32, 0, 1, "core depth", depth_bits),

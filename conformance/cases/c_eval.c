@@ -739,5 +739,5 @@ const fc_case fc_cases_eval[] = {
     FC_CASE_RGBA("eval/stale_slots", 32, 32, 1, "eval", stale_slots),
     FC_CASE_RGBA("eval/dlist_compile_execute", 48, 48, 1, "eval dlist", dlist_compile_execute),
     FC_CASE_RGBA("eval/texcoord_maps", 48, 48, 1, "eval feedback texture", texcoord_maps),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

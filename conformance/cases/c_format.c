@@ -190,10 +190,11 @@ const fc_case fc_cases_format[] = {
     FC_CASE("core/format_rgb_odd_width", 13, 7, OSMESA_RGB, 16, 0, 1, "core format", format_basic),
     /* The oracle's own OSMESA_RGB buffer, not the RGBA substitute (fc_case.h):
      * kept to show the oracle defect; a known difference. */
-    { "core/format_rgb_raw_oracle", 24, 20, OSMESA_RGB, 24, 0, 1, "core format", format_basic, 0, 1, 0 },
+    { "core/format_rgb_raw_oracle", 24, 20, OSMESA_RGB, 24, 0, 1, "core format", format_basic, 0, 1, 0, 0 },
     FC_CASE("core/format_y_up_false", 24, 20, OSMESA_RGBA, 24, 0, 2, "core format", format_y_down),
-    { "core/format_row_length", 24, 20, OSMESA_RGBA, 24, 0, 2, "core format", format_row_length, 40, 0, 0 },
-    FC_CASE_RGBA("core/osmesa_queries", 16, 16, 1, "core format query", osmesa_queries),
+    { "core/format_row_length", 24, 20, OSMESA_RGBA, 24, 0, 2, "core format", format_row_length, 40, 0, 0, 0 },
+    /* queries, then a clear through OSMesaGetProcAddress (draws_nothing) */
+    FC_CASE_NODRAW("core/osmesa_queries", 16, 16, OSMESA_RGBA, 24, 0, 1, "core format query", osmesa_queries),
     FC_CASE_RGBA("core/osmesa_second_context", 32, 32, 2, "core format", second_context),
     FC_CASE_RGBA("core/osmesa_create_context_legacy", 16, 16, 1, "core format", legacy_create),
     FC_CASE_RGBA("core/osmesa_rebind_smaller", 32, 32, 1, "core format viewport", rebind_size),

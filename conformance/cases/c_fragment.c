@@ -1342,5 +1342,5 @@ const fc_case fc_cases_fragment[] = {
     FC_CASE("fragment/query_defaults", 16, 16, OSMESA_RGBA, 24, 8, 0, "fragment query", query_defaults),
     FC_CASE("fragment/query_set", 16, 16, OSMESA_RGBA, 24, 8, 0, "fragment query", query_set),
     FC_CASE("fragment/query_set_no_stencil", 16, 16, OSMESA_RGBA, 24, 0, 0, "fragment query", query_set),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

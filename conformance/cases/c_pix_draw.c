@@ -417,7 +417,10 @@ static void bitmap_feedback_select(fc_h *h)
     fc_value(h, "select hits", glRenderMode(GL_RENDER));
     fc_blob(h, "select", sel, sizeof sel);
     raster_query(h, "after select");
+    /* back in GL_RENDER: the glyph at the raster position the selected
+     * glBitmap moved */
     fcu_clear(0, 0, 0, 1, 1.0);
+    glBitmap(8, 10, 0, 0, 0, 0, rows);
     fc_capture(h);
 }
 

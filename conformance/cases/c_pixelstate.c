@@ -507,5 +507,5 @@ const fc_case fc_cases_pixelstate[] = {
     FC_CASE_RGBA("pixelstate/pushpop", 8, 8, 0, "pixel api attrib", pushpop),
     FC_CASE_RGBA("pixelstate/pushpop_flush", 32, 16, 1, "pixel api attrib", pushpop_flush),
     FC_CASE_RGBA("pixelstate/dlist", 8, 8, 0, "pixel api dlist", dlist),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

@@ -1498,7 +1498,7 @@ const fc_case fc_cases_query_walk[] = {
     FC_CASE("api/query_walk_popped_nested", 16, 16, OSMESA_RGBA, 24, 8, 0, "api query",
             query_walk_popped_nested),
     /* the oracle's own OSMESA_RGB context (its buffer bits), nothing drawn */
-    { "api/query_walk_rgb_nodepth", 16, 16, OSMESA_RGB, 0, 0, 0, "api query", query_walk, 0, 1, 0 },
+    { "api/query_walk_rgb_nodepth", 16, 16, OSMESA_RGB, 0, 0, 0, "api query", query_walk, 0, 1, 0, 0 },
     FC_CASE_RGBA("api/query_in_begin_end", 8, 8, 0, "api query", query_in_begin_end),
     FC_CASE_RGBA("api/query_bad_pnames", 8, 8, 0, "api query", query_bad_pnames),
     FC_CASE_RGBA("api/query_conversions", 8, 8, 0, "api query", query_conversions),

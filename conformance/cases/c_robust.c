@@ -790,6 +790,110 @@ static void dlist_teximage_color_index(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- huge but legal requests (issue 18 §4): they complete, or raise the
+ * oracle's error, in bounded time and memory ---- */
+
+/* The largest texture the limits allow: the proxy at GL_MAX_TEXTURE_SIZE
+ * squared (no storage), and one past it; real images of the largest width
+ * by 1 and 1 by the largest height, drawn. */
+static void huge_texture(fc_h *h)
+{
+    GLint max = 0, w = -1;
+    static GLubyte row[4 * 16384];
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+    fc_value(h, "GL_MAX_TEXTURE_SIZE", max);
+    if (max <= 0 || max > 16384)
+        return;
+    for (int i = 0; i < 4 * max; i++)
+        row[i] = (GLubyte)(i * 7 + (i >> 9));
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, max, max, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "proxy max x max");
+    glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    fc_value(h, "proxy width", w);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 2 * max, max, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "proxy 2 max x max");
+    glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    fc_value(h, "proxy width past the limit", w);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnable(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    for (int k = 0; k < 2; k++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, k ? 1 : max, k ? max : 1, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, row);
+        fc_error(h, k ? "1 x max" : "max x 1");
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(2, 2 + 30.0f * (float)k);
+        glTexCoord2f(1, 0); glVertex2f(62, 2 + 30.0f * (float)k);
+        glTexCoord2f(1, 1); glVertex2f(62, 28 + 30.0f * (float)k);
+        glTexCoord2f(0, 1); glVertex2f(2, 28 + 30.0f * (float)k);
+        glEnd();
+    }
+    glDisable(GL_TEXTURE_2D);
+    fc_capture(h);
+}
+
+/* The largest viewport (GL_MAX_VIEWPORT_DIMS) and beyond it (clamped), a
+ * triangle drawn through each: the part inside the window shows. */
+static void huge_viewport(fc_h *h)
+{
+    GLint dims[2] = { 0, 0 };
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    fc_value(h, "max viewport w", dims[0]);
+    fc_value(h, "max viewport h", dims[1]);
+    fcu_clear(0, 0, 0, 1, 1);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    for (int k = 0; k < 3; k++) {
+        const GLint x = k == 2 ? -dims[0] + 40 : 0, y = k == 1 ? -dims[1] / 2 : 0;
+        glViewport(x, y, k == 2 ? INT_MAX : dims[0], k == 2 ? INT_MAX : dims[1]);
+        fc_error(h, "glViewport");
+        fc_get_integer(h, "GL_VIEWPORT", GL_VIEWPORT, 4);
+        fcu_color(k);
+        glBegin(GL_TRIANGLES);
+        glVertex2f(-1, -1);
+        glVertex2f(-1.0f + 40.0f / (float)dims[0], -1);
+        glVertex2f(-1, -1.0f + 50.0f / (float)dims[1]);
+        glEnd();
+        fc_error(h, "draw");
+    }
+    fc_capture(h);
+}
+
+/* glCallLists of a million names: most name no list, every 1000th one of
+ * three lists that draw; GL_UNSIGNED_INT and GL_2_BYTES. */
+static void calllists_million(fc_h *h)
+{
+    enum { N = 1000000 };
+    static GLuint names[N];
+    static GLubyte two[2 * N];
+    GLuint base = glGenLists(3);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    for (GLuint k = 0; k < 3; k++) {
+        glNewList(base + k, GL_COMPILE);
+        fcu_color((int)k);
+        glTranslatef(1, 0.5f, 0);
+        fcu_rect(0, 0, 3, 2, 0);
+        glEndList();
+    }
+    for (int i = 0; i < N; i++) {
+        names[i] = i % 1000 == 0 ? base + (GLuint)(i / 1000 % 3) : 100000u + (GLuint)i;
+        two[2 * i] = (GLubyte)(names[i] >> 8), two[2 * i + 1] = (GLubyte)names[i];
+    }
+    glCallLists(N, GL_UNSIGNED_INT, names);
+    fc_error(h, "GL_UNSIGNED_INT");
+    glLoadIdentity();
+    glTranslatef(0, 30, 0);
+    glScalef(0.05f, 1, 1);
+    glCallLists(N, GL_2_BYTES, two);
+    fc_error(h, "GL_2_BYTES");
+    fc_capture(h);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -810,5 +914,8 @@ const fc_case fc_cases_robust[] = {
     ROBUST("calllist_inside_begin_end", 64, 64, 1, calllist_inside_begin_end),
     ROBUST("texparam_levels_and_push_limit", 8, 8, 0, texparam_levels_and_push_limit),
     ROBUST("dlist_teximage_color_index", 64, 64, 1, dlist_teximage_color_index),
+    ROBUST("huge_texture", 64, 64, 1, huge_texture),
+    ROBUST("huge_viewport", 64, 64, 1, huge_viewport),
+    ROBUST("calllists_million", 64, 64, 1, calllists_million),
     { 0 }
 };

@@ -1029,7 +1029,7 @@ static void ct_wave_clipped(fc_h *h)
 }
 
 #define SH_CASE(name, w, h, frames, tags, fn) \
-    { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference " tags, fn, 0, 0, 1 }
+    { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference " tags, fn, 0, 0, 1, 0 }
 
 const fc_case fc_cases_shading[] = {
     SH_CASE("shading/phong_directional", 64, 64, 2, "phong", phong_directional),
@@ -1080,5 +1080,5 @@ const fc_case fc_cases_shading[] = {
     SH_CASE("shading/ct_dlist_varray", 64, 64, 1, "cook-torrance", ct_dlist_varray),
     SH_CASE("shading/ct_rescale_normalize", 64, 64, 2, "cook-torrance", ct_rescale_normalize),
     SH_CASE("shading/ct_wave_clipped", 64, 48, 2, "phong cook-torrance", ct_wave_clipped),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

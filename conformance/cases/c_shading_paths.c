@@ -447,7 +447,7 @@ static void phong_polygon_stipple(fc_h *h)
 }
 
 #define SP_CASE(name, w, h, frames, fn) \
-    { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference phong", fn, 0, 0, 1 }
+    { name, w, h, OSMESA_RGBA, 24, 0, frames, "shading reference phong", fn, 0, 0, 1, 0 }
 
 const fc_case fc_cases_shading_paths[] = {
     SP_CASE("shading/phong_material_in_begin", 64, 64, 1, phong_material_in_begin),
@@ -459,5 +459,5 @@ const fc_case fc_cases_shading_paths[] = {
     SP_CASE("shading/phong_smooth_points", 64, 48, 3, phong_smooth_points),
     SP_CASE("shading/phong_line_stipple", 64, 64, 1, phong_line_stipple),
     SP_CASE("shading/phong_polygon_stipple", 48, 48, 1, phong_polygon_stipple),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

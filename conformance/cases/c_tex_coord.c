@@ -1696,5 +1696,5 @@ const fc_case fc_cases_tex_coord[] = {
                  multi_render_clipped),
     FC_CASE_RGBA("texture/coord_constant_w_zero", 17, 54, 9, "texture render clip robust",
                  coord_constant_w_zero),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

@@ -459,5 +459,5 @@ const fc_case fc_cases_tex_env[] = {
     FC_CASE_RGBA("texture/env_combine_random_4", 48, 48, 12, "texture", random_combine),
     FC_CASE_RGBA("texture/env_color_range", 48, 48, 2, "texture", env_color_range),
     FC_CASE_RGBA("texture/env_fragment_ops", 48, 48, 3, "texture", env_fragment_ops),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 }
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 }
 };

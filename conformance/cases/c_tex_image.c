@@ -1413,5 +1413,5 @@ const fc_case fc_cases_tex_image[] = {
                  completeness_max_below_base),
     FC_CASE_RGBA("texture/image_sharing_delete_bound", 8, 8, 0, "texture api",
                  sharing_delete_bound),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

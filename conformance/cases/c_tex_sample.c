@@ -632,5 +632,5 @@ const fc_case fc_cases_tex_sample[] = {
     FC_CASE_RGBA("texture/sample_random_4", 96, 96, 8, "texture", random_scenes),
     FC_CASE_RGBA("texture/sample_lines_points", 64, 64, 2, "texture", lines_points),
     FC_CASE_RGBA("texture/sample_rebind_incomplete", 48, 48, 4, "texture", rebind_incomplete),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 }
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 }
 };

@@ -733,5 +733,5 @@ const fc_case fc_cases_tex_wrap[] = {
     FC_CASE_RGBA("texture/lod_1d", 64, 32, 4, "texture", lod_case),
     FC_CASE_RGBA("texture/lod_1d_clamp", 64, 32, 3, "texture", lod_case),
     FC_CASE_RGBA("texture/lod_queries", 8, 8, 0, "texture query", lod_queries),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

@@ -1213,5 +1213,5 @@ const fc_case fc_cases_texstate[] = {
     FC_CASE_RGBA("texstate/environment", 16, 16, 0, "texture api", environment),
     FC_CASE_RGBA("texstate/texgen", 16, 16, 0, "texture api", texgen),
     FC_CASE_RGBA("texstate/clamp_nan", 8, 8, 0, "texture api query", clamp_nan),
-    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0 },
+    { NULL, 0, 0, 0, 0, 0, 0, NULL, NULL, 0, 0, 0, 0 },
 };

@@ -1230,7 +1230,8 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/client_attrib", 64, 64, 2, "api varray errors query", client_attrib),
     FC_CASE_RGBA("varray/null_pointer", 64, 64, 2, "api varray", null_pointer),
     FC_CASE_RGBA("varray/pointer_errors", 32, 32, 0, "api varray errors query", pointer_errors),
-    FC_CASE_RGBA("varray/draw_errors", 64, 64, 1, "api varray errors", draw_errors),
+    /* every draw is an error: nothing may show (draws_nothing) */
+    FC_CASE_NODRAW("varray/draw_errors", 64, 64, OSMESA_RGBA, 24, 0, 1, "api varray errors", draw_errors),
     FC_CASE_RGBA("varray/queries", 32, 32, 0, "api varray query", queries),
     { 0 }
 };

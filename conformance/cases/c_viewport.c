@@ -91,7 +91,8 @@ const fc_case fc_cases_viewport[] = {
     FC_CASE_RGBA("core/viewport_negative_offset", 32, 32, 1, "core viewport", vp_negative),
     FC_CASE_RGBA("core/viewport_partially_outside", 32, 32, 1, "core viewport", vp_partial),
     FC_CASE_RGBA("core/viewport_1x1", 32, 32, 1, "core viewport", vp_tiny),
-    FC_CASE_RGBA("core/viewport_zero_size", 32, 32, 1, "core viewport", vp_zero),
+    /* a viewport of zero width or height draws nothing (draws_nothing) */
+    FC_CASE_NODRAW("core/viewport_zero_size", 32, 32, OSMESA_RGBA, 24, 0, 1, "core viewport", vp_zero),
     FC_CASE_RGBA("core/viewport_negative_size_error", 32, 32, 1, "core viewport error", vp_invalid),
     FC_CASE_RGBA("core/viewport_odd_size", 48, 40, 1, "core viewport", vp_odd),
     FC_CASE_RGBA("core/viewport_beyond_max", 32, 32, 1, "core viewport", vp_huge),

@@ -133,7 +133,8 @@ const fc_case fc_cases_windowpos[] = {
     FC_CASE_RGBA("pixel/windowpos_variants", 48, 40, 0, "pixel rasterpos windowpos", wp_variants),
     FC_CASE_RGBA("pixel/windowpos_valid", 32, 32, 0, "pixel rasterpos windowpos", wp_valid),
     FC_CASE_RGBA("pixel/windowpos_dlist", 32, 32, 0, "pixel rasterpos windowpos dlist", wp_dlist),
-    FC_CASE_RGBA("pixel/windowpos_select_errors", 16, 16, 1, "pixel rasterpos windowpos select",
-                 wp_select_errors),
+    /* glWindowPos draws nothing by itself (draws_nothing) */
+    FC_CASE_NODRAW("pixel/windowpos_select_errors", 16, 16, OSMESA_RGBA, 24, 0, 1,
+                   "pixel rasterpos windowpos select", wp_select_errors),
     { 0 }
 };

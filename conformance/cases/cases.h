@@ -6,7 +6,11 @@
 
 /* Table entry with the default buffer row length. */
 #define FC_CASE(name, w, h, fmt, depth, stencil, frames, tags, fn) \
-    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0, 0 }
+    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0, 0, 0 }
+/* The same for a case whose frames show a cleared buffer on purpose: it
+ * checks errors, queries or a clear value (draws_nothing, fc_case.h). */
+#define FC_CASE_NODRAW(name, w, h, fmt, depth, stencil, frames, tags, fn) \
+    { name, w, h, fmt, depth, stencil, frames, tags, fn, 0, 0, 0, FC_DRAWS_NOTHING }
 /* RGBA, depth 24, no stencil. */
 #define FC_CASE_RGBA(name, w, h, frames, tags, fn) \
     FC_CASE(name, w, h, OSMESA_RGBA, 24, 0, frames, tags, fn)

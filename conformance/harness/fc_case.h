@@ -13,6 +13,8 @@
 #ifndef FC_CASE_H
 #define FC_CASE_H
 
+#include "fc_record.h"
+
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <stddef.h>
@@ -33,7 +35,28 @@ typedef struct fc_case {
                              * its own OSMESA_RGB buffer (see below) */
     int tolerance_lsb;      /* 0 = colours exact; N > 0: only for a case tagged
                              * "reference" (see below) */
+    int draws_nothing;      /* FC_DRAWS_NOTHING: every frame the case
+                             * captures shows a cleared buffer on purpose;
+                             * FC_MAY_DRAW_NOTHING: a generated scene (see
+                             * below); 0: the case draws */
 } fc_case;
+
+/* Cases that compare nothing.  A frame whose colour pixels are all alike
+ * and whose depth values are all alike shows a cleared (or untouched)
+ * buffer: nothing drawn shows in it.  A case that captures frames, all of
+ * them such on both sides, compares no drawing at all, which is what a
+ * broken case looks like (geometry outside the view, a wrong projection,
+ * a draw the state discards): the runner reports it as "blank", which
+ * fails like a difference.  A case that checks only errors, queries or a
+ * clear value, and captures frames of a cleared buffer on purpose, sets
+ * draws_nothing; the runner then requires that none of its frames shows
+ * anything drawn (the declaration is stale otherwise, and fails too).
+ * Cases that capture no frame (frames = 0) compare records only and are
+ * not concerned.  The random families' scenes set FC_MAY_DRAW_NOTHING: a
+ * generated state (a depth function, a matrix, clip coordinates) may
+ * discard everything, which no single scene can declare; the runner counts
+ * and lists those scenes per family ("blank, allowed") without failing. */
+/* (FC_DRAWS_NOTHING and FC_MAY_DRAW_NOTHING: fc_record.h) */
 
 /* Reference cases.  A case that exercises something the oracle does not
  * have (fixgl's shading extensions) draws its reference differently: the

@@ -200,6 +200,10 @@ void fc_run_case(const fc_case *c, FILE *out, int perturb)
     GLboolean made = GL_FALSE;
 
     fc_rec_write(out, FC_REC_CASE, c->name, NULL, 0, NULL, 0, NULL, 0);
+    if (c->draws_nothing) {
+        int32_t how = c->draws_nothing;
+        fc_rec_write(out, FC_REC_DRAWS_NOTHING, "draws nothing", &how, sizeof how, NULL, 0, NULL, 0);
+    }
     h.buf = malloc(size ? size : 1);
     memset(h.buf, FC_FILL, size ? size : 1);
     target = h.buf;

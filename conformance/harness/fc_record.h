@@ -23,8 +23,11 @@ enum fc_rec_kind {
     FC_REC_BLOB,      /* payload: raw bytes */
     FC_REC_FRAME,     /* payload: struct fc_frame_hdr fields, colour, depth */
     FC_REC_END,       /* payload: int32 status, then a text message */
-    FC_REC_DOCUMENTED /* label: a record label, payload: the reason text
-                       * (fc_documented_difference) */
+    FC_REC_DOCUMENTED, /* label: a record label, payload: the reason text
+                        * (fc_documented_difference) */
+    FC_REC_DRAWS_NOTHING /* right after FC_REC_CASE, label: "draws nothing",
+                          * payload: int32 the case's draws_nothing
+                          * (fc_case.h), when not 0 */
 };
 
 /* Fill byte of fresh colour buffers and of glGet output arrays (values a
@@ -33,6 +36,10 @@ enum fc_rec_kind {
 
 /* FC_REC_QUERY value types (element sizes 4, 4, 8, 1). */
 enum fc_query_type { FC_Q_INT = 1, FC_Q_FLOAT, FC_Q_DOUBLE, FC_Q_BOOL };
+
+/* fc_case.draws_nothing values (fc_case.h), the payload of
+ * FC_REC_DRAWS_NOTHING. */
+enum fc_draws_nothing { FC_DRAWS_NOTHING = 1, FC_MAY_DRAW_NOTHING = 2 };
 
 /* FC_REC_END statuses. */
 enum fc_end_status { FC_END_OK = 0, FC_END_HARNESS = 1 };

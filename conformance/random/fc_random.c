@@ -490,6 +490,7 @@ void fc_random_case(uint64_t seed, uint32_t index, fc_case *out, char *name)
 
     snprintf(name, FC_RANDOM_NAME_MAX, "random/s%" PRIu64 "-i%" PRIu32, seed, index);
     memset(out, 0, sizeof *out);
+    out->draws_nothing = FC_MAY_DRAW_NOTHING;   /* a generated scene (fc_case.h) */
     out->name = name;
     if (size < 88) {
         out->width = fc_rng_range(&r, 16, 128);

@@ -515,6 +515,7 @@ void fc_random_shading_case(uint64_t seed, uint32_t index, fc_case *out, char *n
     ct = p.front.cook_torrance || p.back.cook_torrance;
     snprintf(name, FC_RANDOM_NAME_MAX, "random-shading/s%" PRIu64 "-i%" PRIu32, seed, index);
     memset(out, 0, sizeof *out);
+    out->draws_nothing = FC_MAY_DRAW_NOTHING;   /* a generated scene (fc_case.h) */
     out->name = name;
     out->width = fc_rng_range(&r, 24, 64);
     out->height = fc_rng_range(&r, 24, 64);

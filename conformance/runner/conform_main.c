@@ -3,7 +3,8 @@
  * plus the recorded error/query/blob/value sequences, prints one line per
  * case and a per-tag summary, and writes the HTML/JSON report.
  * Exit status: 0 all exact (reference cases: within their tolerance), 1 some
- * case differs or failed, 2 usage/setup. */
+ * case differs, failed or is blank (compares nothing: fc_case.h), 2
+ * usage/setup. */
 #include "fc_compare.h"
 #include "fc_report.h"
 #include "fc_run.h"
@@ -354,6 +355,9 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
                res.tolerance, res.mismatched_pixels, res.max_channel_diff, res.pixels_at_1);
     else if (res.crashed)
         printf("  (%s)", res.notes[0]);
+    else if (res.blank)
+        printf("  (compares nothing: %d frame%s, each a cleared buffer on both sides; "
+               "draws_nothing is not declared)", res.frames, res.frames > 1 ? "s" : "");
     if (res.ndocumented)
         printf("  (%d documented difference%s)", res.ndocumented, res.ndocumented > 1 ? "s" : "");
     if (item->replay && strcmp(status, "exact") != 0)

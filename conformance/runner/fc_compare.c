@@ -35,9 +35,11 @@ const char *fc_result_status(const struct fc_case_result *res)
         res->structure_mismatches)
         return "differs";
     /* colours within a reference case's tolerance (fc_case.h) */
-    if (res->mismatched_pixels)
-        return res->tolerance > 0 ? "agrees" : "differs";
-    return "exact";
+    if (res->mismatched_pixels && res->tolerance <= 0)
+        return "differs";
+    if (res->blank)
+        return "blank";
+    return res->mismatched_pixels ? "agrees" : "exact";
 }
 
 int fc_status_passes(const char *status)
@@ -46,6 +48,25 @@ int fc_status_passes(const char *status)
 }
 
 static uint64_t umax(uint64_t a, uint64_t b) { return a > b ? a : b; }
+
+int fc_frame_blank(const struct fc_frame_view *f)
+{
+    const struct fc_frame_hdr *h = &f->hdr;
+    uint64_t bpp = h->bpp > 0 ? (uint64_t)h->bpp : 0, row = (uint64_t)(h->row_length > 0 ? h->row_length : 0);
+    uint64_t w = (uint64_t)(h->width > 0 ? h->width : 0), hh = (uint64_t)(h->height > 0 ? h->height : 0);
+    uint64_t dbpv = h->depth_bpv > 0 ? (uint64_t)h->depth_bpv : 0;
+
+    if (bpp && w && hh && row >= w && f->color_len >= row * hh * bpp)
+        for (uint64_t y = 0; y < hh; y++)
+            for (uint64_t x = 0; x < w; x++)
+                if (memcmp(f->color + (y * row + x) * bpp, f->color, (size_t)bpp) != 0)
+                    return 0;
+    if (dbpv && f->depth_len >= dbpv)
+        for (uint64_t i = dbpv; i + dbpv <= f->depth_len; i += dbpv)
+            if (memcmp(f->depth + i, f->depth, (size_t)dbpv) != 0)
+                return 0;
+    return 1;
+}
 
 void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
                       struct fc_frame_stats *st)
@@ -106,6 +127,7 @@ static const char *kind_name(uint32_t kind)
     case FC_REC_BLOB: return "blob";
     case FC_REC_FRAME: return "frame";
     case FC_REC_DOCUMENTED: return "documented difference";
+    case FC_REC_DRAWS_NOTHING: return "draws_nothing";
     default: return "record";
     }
 }
@@ -114,7 +136,8 @@ static const char *kind_name(uint32_t kind)
 static int next_rec(const unsigned char *buf, size_t len, size_t *pos, struct fc_rec *r)
 {
     while (fc_rec_next(buf, len, pos, r))
-        if ((r->kind >= FC_REC_VALUE && r->kind <= FC_REC_FRAME) || r->kind == FC_REC_DOCUMENTED)
+        if ((r->kind >= FC_REC_VALUE && r->kind <= FC_REC_FRAME) || r->kind == FC_REC_DOCUMENTED ||
+            r->kind == FC_REC_DRAWS_NOTHING)
             return 1;
     return 0;
 }
@@ -167,12 +190,16 @@ static void format_query(const struct fc_rec *r, char *out, size_t size)
         snprintf(out + n, size - n, " +%" PRIu32 " unwritten", unwritten);
 }
 
-/* The documented differences a case declared so far (fc_documented_difference). */
+/* What a case declared so far: documented differences
+ * (fc_documented_difference) and draws_nothing; and its frames. */
 #define FC_MAX_DECLARED 64
 struct declared {
     struct fc_rec store[FC_MAX_DECLARED];       /* the oracle's declaration records */
     int hits[FC_MAX_DECLARED];
     int n;
+    int draws_nothing;
+    int frames, blank_frames;                   /* blank: on both sides */
+    int first_drawn;                            /* index of the first frame that is not */
 };
 
 static int find_declared(const struct declared *d, const struct fc_rec *r)
@@ -269,6 +296,12 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
             break;
         }
         fc_compare_frame_tol(&a, &b, res->tolerance, &st);
+        st.blank = fc_frame_blank(&a) && fc_frame_blank(&b);
+        if (st.blank)
+            d->blank_frames++;
+        else if (d->frames == d->blank_frames)
+            d->first_drawn = *frame;
+        d->frames++;
         res->frames++;
         res->pixels += st.pixels;
         res->mismatched_pixels += st.mismatched;
@@ -314,6 +347,16 @@ static void compare_pair(const struct fc_rec *ra, const struct fc_rec *rb, int *
             }
         }
         break;
+    case FC_REC_DRAWS_NOTHING: {
+        int32_t how = 1;
+        memcpy(&how, ra->payload, ra->payload_len >= 4 ? 4 : 0);
+        if (!same) {
+            res->structure_mismatches++;
+            fc_result_note(res, "the sides declare draws_nothing differently");
+        }
+        d->draws_nothing = how;
+        break;
+    }
     case FC_REC_VALUE: {
         int64_t va = 0, vb = 0;
         memcpy(&va, ra->payload, ra->payload_len >= 8 ? 8 : 0);
@@ -393,6 +436,32 @@ void fc_compare_case(const unsigned char *a, size_t alen, const unsigned char *b
         else
             fc_result_note(res, "only fixgl recorded %s \"%.*s\"", kind_name(rb.kind),
                            (int)(rb.label_len < 60 ? rb.label_len : 60), rb.label);
+    }
+    /* A case whose frames all show a cleared buffer on both sides compares
+     * no drawing; unless it declares draws_nothing, which is stale when a
+     * frame shows something drawn (fc_case.h).  Only meaningful when both
+     * sides recorded the whole case. */
+    if (!res->crashed && !res->structure_mismatches) {
+        if (d->draws_nothing == FC_MAY_DRAW_NOTHING) {
+            if (d->frames > 0 && d->blank_frames == d->frames) {
+                res->blank_allowed = 1;
+                fc_result_note(res, "a generated scene that compares nothing: each of its %d frame%s "
+                               "shows a cleared buffer on both sides", d->frames, d->frames > 1 ? "s" : "");
+            }
+        } else if (!d->draws_nothing && d->frames > 0 && d->blank_frames == d->frames) {
+            res->blank = 1;
+            fc_result_note(res, "compares nothing: each of the %d frame%s shows a cleared buffer "
+                           "(every pixel alike, every depth value alike) on both sides; fix the case, "
+                           "or set draws_nothing in its table entry if it draws nothing on purpose",
+                           d->frames, d->frames > 1 ? "s" : "");
+        } else if (d->draws_nothing && d->blank_frames < d->frames) {
+            res->structure_mismatches++;
+            fc_result_note(res, "declares draws_nothing, but frame %d shows something drawn: "
+                           "remove the declaration", d->first_drawn);
+        } else if (d->draws_nothing && d->frames == 0) {
+            res->structure_mismatches++;
+            fc_result_note(res, "declares draws_nothing, but captures no frame: remove the declaration");
+        }
     }
     /* a declaration whose records all compared equal is stale (only
      * meaningful when both sides recorded the whole case) */

@@ -25,6 +25,9 @@ struct fc_frame_stats {
                                  * (= mismatched when the tolerance is 0) */
     uint64_t depth_values, depth_mismatches;
     int layout_differs;         /* sizes / formats / depth presence differ */
+    int blank;                  /* both frames show a cleared buffer: every
+                                 * colour pixel alike, every depth value alike
+                                 * (fc_frame_blank) */
 };
 
 #define FC_MAX_NOTES 24
@@ -55,6 +58,12 @@ struct fc_case_result {
     int error_mismatches, query_mismatches, blob_mismatches, value_mismatches;
     int structure_mismatches;   /* records of different kind/label/count */
     int crashed;                /* a side did not finish the case */
+    int blank;                  /* the case captured frames, every one blank
+                                 * on both sides, and does not declare
+                                 * draws_nothing (fc_case.h): it compares no
+                                 * drawing */
+    int blank_allowed;          /* the same for a generated scene
+                                 * (FC_MAY_DRAW_NOTHING): counted, not failed */
     int nnotes, dropped_notes;
     char notes[FC_MAX_NOTES][FC_NOTE_LEN];
     /* differing records allowed by a documented difference (malloc'd,
@@ -70,6 +79,11 @@ struct fc_case_result {
 /* Called for every frame pair, before the case result is final. */
 typedef void (*fc_frame_cb)(void *ud, int index, const struct fc_frame_view *oracle,
                             const struct fc_frame_view *fixgl, const struct fc_frame_stats *st);
+
+/* 1 when the frame shows a cleared or untouched buffer: the colour bytes
+ * of every pixel (the first width of each row) equal those of the first
+ * pixel and every depth value equals the first. */
+int fc_frame_blank(const struct fc_frame_view *f);
 
 void fc_compare_frame(const struct fc_frame_view *a, const struct fc_frame_view *b,
                       struct fc_frame_stats *st);
@@ -94,7 +108,8 @@ void fc_result_note(struct fc_case_result *res, const char *fmt, ...)
 void fc_result_free(struct fc_case_result *res);
 
 /* "exact", "agrees" (a reference case: colours differ, none by more than
- * its tolerance, everything else exact), "differs" or "error". */
+ * its tolerance, everything else exact), "differs", "blank" (exact, but
+ * every frame shows a cleared buffer: res->blank) or "error". */
 const char *fc_result_status(const struct fc_case_result *res);
 
 /* 1 for the statuses that pass: "exact" and "agrees". */

@@ -270,7 +270,11 @@ static void print_agreement(const struct fc_report *r, FILE *out)
 
 /* ---- summary table ---------------------------------------------------- */
 
-struct tag_count { char tag[48]; int cases, exact, agrees, differs, error; };
+struct tag_count {
+    char tag[48];
+    int cases, exact, agrees, differs, blank, error;
+    int blank_allowed;          /* generated scenes that compare nothing */
+};
 
 static int has_tag_word(const char *tags, const char *tag, size_t n)
 {
@@ -287,9 +291,11 @@ static int has_tag_word(const char *tags, const char *tag, size_t n)
 static void count_into(struct tag_count *t, const struct fc_report_entry *e)
 {
     t->cases++;
+    t->blank_allowed += e->res.blank_allowed;
     if (strcmp(e->status, "exact") == 0) t->exact++;
     else if (strcmp(e->status, "agrees") == 0) t->agrees++;
     else if (strcmp(e->status, "differs") == 0) t->differs++;
+    else if (strcmp(e->status, "blank") == 0) t->blank++;
     else t->error++;
 }
 
@@ -319,6 +325,34 @@ static size_t collect_tags(const struct fc_report *r, struct tag_count *t, size_
     return nt;
 }
 
+/* Per random family (the part of the name before '/'), the generated
+ * scenes that compare nothing (FC_MAY_DRAW_NOTHING, fc_case.h). */
+static void print_blank_allowed(const struct fc_report *r, FILE *out)
+{
+    struct { char family[32]; int scenes, blank; } f[16];
+    size_t nf = 0;
+    for (size_t i = 0; i < r->n; i++) {
+        const struct fc_report_entry *e = r->entries[i];
+        size_t k = strcspn(e->name, "/"), j;
+        if (!e->replay || k >= sizeof f[0].family)     /* generated scenes have a replay line */
+            continue;
+        for (j = 0; j < nf; j++)
+            if (strlen(f[j].family) == k && strncmp(f[j].family, e->name, k) == 0)
+                break;
+        if (j == nf) {
+            if (nf == sizeof f / sizeof f[0])
+                continue;
+            memset(&f[nf], 0, sizeof f[nf]);
+            memcpy(f[nf++].family, e->name, k);
+        }
+        f[j].scenes++;
+        f[j].blank += e->res.blank_allowed;
+    }
+    for (size_t j = 0; j < nf; j++)
+        fprintf(out, "%s: %d of %d generated scenes compare nothing (every frame a cleared buffer; "
+                "allowed)\n", f[j].family, f[j].blank, f[j].scenes);
+}
+
 void fc_report_print_summary(const struct fc_report *r, FILE *out)
 {
     struct tag_count t[64], total;
@@ -335,12 +369,17 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
         mism += r->entries[i]->res.mismatched_pixels;
         dmism += r->entries[i]->res.depth_mismatches;
     }
-    fprintf(out, "\n%-16s %7s %7s %7s %7s %7s\n", "tag", "cases", "exact", "agrees", "differs", "error");
+    fprintf(out, "\n%-16s %7s %7s %7s %7s %7s %7s\n", "tag", "cases", "exact", "agrees", "differs",
+            "blank", "error");
     for (size_t j = 0; j < nt; j++)
-        fprintf(out, "%-16s %7d %7d %7d %7d %7d\n", t[j].tag, t[j].cases, t[j].exact, t[j].agrees,
-                t[j].differs, t[j].error);
-    fprintf(out, "%-16s %7d %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.agrees,
-            total.differs, total.error);
+        fprintf(out, "%-16s %7d %7d %7d %7d %7d %7d\n", t[j].tag, t[j].cases, t[j].exact, t[j].agrees,
+                t[j].differs, t[j].blank, t[j].error);
+    fprintf(out, "%-16s %7d %7d %7d %7d %7d %7d\n", "TOTAL", total.cases, total.exact, total.agrees,
+            total.differs, total.blank, total.error);
+    if (total.blank)
+        fprintf(out, "blank cases: %d compare nothing (every frame a cleared buffer on both sides, "
+                "no draws_nothing declaration): they fail like differences\n", total.blank);
+    print_blank_allowed(r, out);
     fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
             mism, px, dmism);
     if (ndoc)
@@ -423,10 +462,12 @@ static int write_json(const struct fc_report *r)
         fprintf(f, ", \"frames\": %d, \"pixels\": %" PRIu64 ", \"mismatched_pixels\": %" PRIu64
                 ", \"max_channel_diff\": %d, \"depth_mismatches\": %" PRIu64
                 ", \"error_mismatches\": %d, \"query_mismatches\": %d, \"blob_mismatches\": %d"
-                ", \"value_mismatches\": %d, \"structure_mismatches\": %d, \"status\": \"%s\"",
+                ", \"value_mismatches\": %d, \"structure_mismatches\": %d, \"blank\": %s"
+                ", \"blank_allowed\": %s, \"status\": \"%s\"",
                 c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
                 c->error_mismatches, c->query_mismatches, c->blob_mismatches, c->value_mismatches,
-                c->structure_mismatches, e->status);
+                c->structure_mismatches, c->blank ? "true" : "false",
+                c->blank_allowed ? "true" : "false", e->status);
         if (c->tolerance)
             fprintf(f, ", \"tolerance_lsb\": %d, \"pixels_at_1\": %" PRIu64 ", \"pixels_beyond_1\": %" PRIu64
                     ", \"pixels_beyond_tolerance\": %" PRIu64, c->tolerance, c->pixels_at_1,
@@ -556,7 +597,7 @@ static int write_html(const struct fc_report *r)
           "border:1px solid #888;background:#222}figure{display:inline-block;margin:0 1em 1em 0}"
           "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
           "td:first-child{text-align:left}.differs{color:#b60}.error{color:#c00}.exact{color:#080}"
-          ".agrees{color:#06a}"
+          ".agrees{color:#06a}.blank{color:#a0a}"
           "section{border-top:1px solid #ccc}.notes{font-family:monospace}</style></head><body>\n"
           "<h1>fixgl conformance report</h1>\n<p>oracle: <b>", f);
     html_str(f, r->renderer[0] ? r->renderer[0] : "?");
@@ -569,11 +610,16 @@ static int write_html(const struct fc_report *r)
     fputs("</p>\n<p>Heat maps: matching pixels are the oracle image dimmed; differing pixels go from "
           "yellow (difference 1) through red to magenta (255), log scale. Depth heat maps use a "
           "24-bit scale.</p>\n<table><tr><th>tag</th><th>cases</th><th>exact</th><th>agrees</th>"
-          "<th>differs</th><th>error</th></tr>\n", f);
+          "<th>differs</th><th>blank</th><th>error</th><th>blank, allowed</th></tr>\n", f);
     for (size_t j = 0; j < nt; j++)
-        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td></tr>\n",
-                t[j].tag, t[j].cases, t[j].exact, t[j].agrees, t[j].differs, t[j].error);
-    fputs("</table>\n", f);
+        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td>"
+                "<td>%d</td></tr>\n", t[j].tag, t[j].cases, t[j].exact, t[j].agrees, t[j].differs,
+                t[j].blank, t[j].error, t[j].blank_allowed);
+    fputs("</table>\n<p><span class=\"blank\">blank</span>: a case whose every frame shows a cleared "
+          "buffer (every pixel alike, every depth value alike) on both sides compares no drawing; "
+          "it fails like a difference unless its table entry declares <code>draws_nothing</code> "
+          "(conformance/harness/fc_case.h). <i>blank, allowed</i>: generated scenes "
+          "(FC_MAY_DRAW_NOTHING) that compare nothing; counted, not failed.</p>\n", f);
     {
         struct agreement a[MAX_AGREEMENT];
         size_t na = collect_agreement(r, a, MAX_AGREEMENT);

@@ -371,6 +371,71 @@ int main(int argc, char **argv)
         CHECK(rgb[3 * 3 + 0] == 100 && rgb[3 * 3 + 2] == 90);  /* (3,0): B<->R swapped */
     }
 
+    /* 9. cases that compare nothing (fc_case.h draws_nothing): frames of a
+     * cleared buffer on both sides make a case "blank" unless it declares
+     * FC_DRAWS_NOTHING; a declaration with a drawn frame (or no frame) is
+     * stale; a generated scene (FC_MAY_DRAW_NOTHING) is counted, not failed;
+     * the padding of a row longer than the width does not count */
+    {
+        unsigned char flat[W * H * 4], padded[(W + 2) * H * 4], drawn[W * H * 4];
+        unsigned int zflat[W * H];
+        struct { const char *name; int declare; int frames; int drawn; int row; const char *status;
+                 int allowed; } t[] = {
+            { "unit/blank", 0, 2, 0, W, "blank", 0 },
+            { "unit/blank_declared", FC_DRAWS_NOTHING, 2, 0, W, "exact", 0 },
+            { "unit/blank_stale", FC_DRAWS_NOTHING, 2, 1, W, "differs", 0 },
+            { "unit/blank_no_frame", FC_DRAWS_NOTHING, 0, 0, W, "differs", 0 },
+            { "unit/drawn", 0, 2, 1, W, "exact", 0 },
+            { "unit/no_frame", 0, 0, 0, W, "exact", 0 },
+            { "unit/generated_blank", FC_MAY_DRAW_NOTHING, 1, 0, W, "exact", 1 },
+            { "unit/generated_drawn", FC_MAY_DRAW_NOTHING, 1, 1, W, "exact", 0 },
+            { "unit/blank_padded_rows", 0, 1, 0, W + 2, "blank", 0 },
+        };
+        for (size_t i = 0; i < sizeof padded / 4; i++) {
+            int pad = (int)(i % (W + 2)) >= W;
+            padded[4 * i + 0] = pad ? 0xCD : 10;
+            padded[4 * i + 1] = 20, padded[4 * i + 2] = 30, padded[4 * i + 3] = 40;
+        }
+        for (size_t i = 0; i < sizeof flat / 4; i++)
+            flat[4 * i + 0] = 10, flat[4 * i + 1] = 20, flat[4 * i + 2] = 30, flat[4 * i + 3] = 40;
+        for (int i = 0; i < W * H; i++)
+            zflat[i] = 0xffffff;
+        memcpy(drawn, flat, sizeof drawn);
+        drawn[4 * 9 + 1] = 21;                  /* one pixel drawn */
+        for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
+            int32_t how = t[k].declare;
+            open_stream(&a);
+            open_stream(&b);
+            for (int side = 0; side < 2; side++) {
+                FILE *f = side ? b.f : a.f;
+                fc_rec_write(f, FC_REC_CASE, t[k].name, NULL, 0, NULL, 0, NULL, 0);
+                if (how)
+                    fc_rec_write(f, FC_REC_DRAWS_NOTHING, "draws nothing", &how, sizeof how,
+                                 NULL, 0, NULL, 0);
+                for (int fr = 0; fr < t[k].frames; fr++) {
+                    int32_t hdr[FC_FRAME_HDR_FIELDS] = { W, H, t[k].row, FMT_RGBA, 4, 1, 1, W, H, 4 };
+                    const unsigned char *c = t[k].drawn && fr == 1 % t[k].frames ? drawn : flat;
+                    if (t[k].row != W)          /* padding bytes that differ */
+                        c = padded;
+                    fc_rec_write(f, FC_REC_FRAME, "frame", hdr, sizeof hdr, c,
+                                 (uint64_t)t[k].row * H * 4, zflat, sizeof zflat);
+                }
+                end_case(f);
+            }
+            memset(&res, 0, sizeof res);
+            fc_compare_case((unsigned char *)a.buf, a.len, (unsigned char *)b.buf, b.len, &res, NULL, NULL);
+            if (strcmp(fc_result_status(&res), t[k].status) != 0 || res.blank_allowed != t[k].allowed) {
+                fprintf(stderr, "%s: status %s (expected %s), blank_allowed %d\n", t[k].name,
+                        fc_result_status(&res), t[k].status, res.blank_allowed);
+                failures++;
+            }
+            CHECK(!fc_status_passes("blank"));
+            fc_result_free(&res);
+            free(a.buf);
+            free(b.buf);
+        }
+    }
+
     fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", "fixgl-v");
     CHECK(fc_report_finish(rep) == 8);      /* + tol_2, tol_0, tol_depth */
     json = slurp(dir, "summary.json");

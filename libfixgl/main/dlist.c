@@ -45,6 +45,7 @@
 #include "main/groups.h"
 #include "main/pixelformat.h"
 #include "tnl/t_pipeline.h"
+#include "fgl_alloc.h"
 
 /* ------------------------------------------------------------------ */
 /* Nodes and opcodes                                                   */
@@ -207,8 +208,8 @@ static struct bo_image *bo_ref(struct bo_image *bo)
 static void bo_unref(struct bo_image *bo)
 {
    if (bo && --bo->refs == 0) {
-      free(bo->data);
-      free(bo);
+      fgl_free(bo->data);
+      fgl_free(bo);
    }
 }
 
@@ -285,14 +286,14 @@ static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
 
 static struct display_list *make_list(GLuint name)
 {
-   struct display_list *dl = calloc(1, sizeof(*dl));
+   struct display_list *dl = fgl_calloc(1, sizeof(*dl));
    if (!dl)
       return NULL;
    dl->name = name;
    dl->cap = 8;
-   dl->nodes = malloc(dl->cap * sizeof(*dl->nodes));
+   dl->nodes = fgl_malloc(dl->cap * sizeof(*dl->nodes));
    if (!dl->nodes) {
-      free(dl);
+      fgl_free(dl);
       return NULL;
    }
    dl->nodes[0].h.op = DL_OP_END_OF_LIST;
@@ -304,12 +305,12 @@ static struct display_list *make_list(GLuint name)
 static void free_vertex_list(struct vertex_list *vl)
 {
    bo_unref(vl->bo);
-   free(vl->buffer);
-   free(vl->prims);
-   free(vl->current_data);
-   free(vl->verts);
-   free(vl->draws);
-   free(vl);
+   fgl_free(vl->buffer);
+   fgl_free(vl->prims);
+   fgl_free(vl->current_data);
+   fgl_free(vl->verts);
+   fgl_free(vl->draws);
+   fgl_free(vl);
 }
 
 static void delete_list(struct display_list *dl)
@@ -321,16 +322,16 @@ static void delete_list(struct display_list *dl)
       if (n->h.op == DL_OP_VERTEX_LIST)
          free_vertex_list(get_pointer(&n[1]));
       else if (n->h.op == DL_OP_CALL_LISTS)
-         free(get_pointer(&n[3]));
+         fgl_free(get_pointer(&n[3]));
       else if (n->h.op == DL_OP_BITMAP)
-         free(get_pointer(&n[7]));
+         fgl_free(get_pointer(&n[7]));
       else if (n->h.op == DL_OP_DRAW_PIXELS)
-         free(get_pointer(&n[5]));
+         fgl_free(get_pointer(&n[5]));
       else if (n->h.op == DL_OP_TEX_IMAGE || n->h.op == DL_OP_TEX_SUB_IMAGE)
-         free(get_pointer(&n[10]));
+         fgl_free(get_pointer(&n[10]));
    }
-   free(dl->nodes);
-   free(dl);
+   fgl_free(dl->nodes);
+   fgl_free(dl);
 }
 
 /* index of the first entry with a name >= name */
@@ -368,7 +369,7 @@ static bool insert_list(struct fgl_context *ctx, struct display_list *dl)
    }
    if (ls->table_count == ls->table_cap) {
       const unsigned cap = ls->table_cap ? ls->table_cap * 2 : 64;
-      void *t = realloc(ls->table, cap * sizeof(*ls->table));
+      void *t = fgl_realloc_gl(ctx, ls->table, cap * sizeof(*ls->table));
       if (!t)
          return false;
       ls->table = t;
@@ -407,7 +408,7 @@ static union dl_node *alloc_node(struct fgl_context *ctx, enum dl_opcode op, uns
       unsigned cap = dl->cap;
       while (cap < dl->count + size)
          cap *= 2;
-      union dl_node *nodes = realloc(dl->nodes, cap * sizeof(*nodes));
+      union dl_node *nodes = fgl_realloc_gl(ctx, dl->nodes, cap * sizeof(*nodes));
       if (!nodes) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return NULL;
@@ -428,12 +429,12 @@ static union dl_node *alloc_node(struct fgl_context *ctx, enum dl_opcode op, uns
 
 bool fgl_init_dlist(struct fgl_context *ctx)
 {
-   ctx->ListState = calloc(1, sizeof(*ctx->ListState));
+   ctx->ListState = fgl_calloc_gl(ctx, 1, sizeof(*ctx->ListState));
    if (!ctx->ListState)
       return false;
-   ctx->ListState->shared = calloc(1, sizeof(*ctx->ListState->shared));
+   ctx->ListState->shared = fgl_calloc_gl(ctx, 1, sizeof(*ctx->ListState->shared));
    if (!ctx->ListState->shared) {
-      free(ctx->ListState);
+      fgl_free(ctx->ListState);
       ctx->ListState = NULL;
       return false;
    }
@@ -455,9 +456,9 @@ static void unref_shared(struct dlist_shared *sh)
       return;
    for (unsigned i = 0; i < sh->table_count; i++)
       delete_list(sh->table[i].dl);
-   free(sh->table);
+   fgl_free(sh->table);
    pthread_mutex_destroy(&sh->lock);
-   free(sh);
+   fgl_free(sh);
 }
 
 void fgl_share_dlists(struct fgl_context *ctx, struct fgl_context *share)
@@ -483,11 +484,11 @@ void fgl_free_dlist(struct fgl_context *ctx)
    if (last)
       unref_shared(ls->shared);
    delete_list(ls->current_list);
-   free(ls->save.buffer);
-   free(ls->save.prims);
-   free(ls->save.copied);
+   fgl_free(ls->save.buffer);
+   fgl_free(ls->save.prims);
+   fgl_free(ls->save.copied);
    bo_unref(ls->save.bo);
-   free(ls);
+   fgl_free(ls);
    ctx->ListState = NULL;
 }
 
@@ -801,7 +802,7 @@ static bool ensure_alloc(struct save_context *save, unsigned floats)
    unsigned alloc = save->alloc ? save->alloc : 1024;
    while (alloc < floats)
       alloc *= 2;
-   float *b = realloc(save->buffer, alloc * sizeof(float));
+   float *b = fgl_realloc(save->buffer, alloc * sizeof(float));
    if (!b)
       return false;
    memset(b + save->alloc, 0, (alloc - save->alloc) * sizeof(float));
@@ -875,14 +876,14 @@ static unsigned save_copy_vertices(struct save_context *save, struct save_prim *
       return 0;
    /* a copy no later list consumed (glEndList or glCallList inside
     * glBegin/glEnd) is dropped */
-   free(save->copied);
-   save->copied = malloc(sizeof(float) * sz * prim->count);
+   fgl_free(save->copied);
+   save->copied = fgl_malloc(sizeof(float) * sz * prim->count);
    if (!save->copied)
       return 0;
    const unsigned r = copy_vertices_mode(prim->mode, &prim->count, sz, save->copied,
                                          save->buffer + prim->start * sz);
    if (!r) {
-      free(save->copied);
+      fgl_free(save->copied);
       save->copied = NULL;
    }
    return r;
@@ -991,11 +992,11 @@ static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsign
    /* at most 2 indices per vertex for strips turned into lines, plus the
     * padding and the strip joins */
    unsigned max_idx = 2 * total + 8 * prim_count + 8;
-   unsigned *indices = malloc(max_idx * sizeof(*indices));
-   struct fgl_vbo_prim *merged = calloc(prim_count ? prim_count : 1, sizeof(*merged));
+   unsigned *indices = fgl_malloc(max_idx * sizeof(*indices));
+   struct fgl_vbo_prim *merged = fgl_calloc(prim_count ? prim_count : 1, sizeof(*merged));
    if (!indices || !merged) {
-      free(indices);
-      free(merged);
+      fgl_free(indices);
+      fgl_free(merged);
       return NULL;
    }
    unsigned idx = 0;
@@ -1056,10 +1057,10 @@ static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsign
       merged[last].mode = mode;
    }
 
-   vl->verts = malloc((idx ? idx : 1) * sizeof(*vl->verts));
+   vl->verts = fgl_malloc((idx ? idx : 1) * sizeof(*vl->verts));
    if (!vl->verts) {
-      free(indices);
-      free(merged);
+      fgl_free(indices);
+      fgl_free(merged);
       return NULL;
    }
    for (unsigned k = 0; k < idx; k++)
@@ -1073,12 +1074,12 @@ static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsign
 
 static struct bo_image *bo_new(unsigned size)
 {
-   struct bo_image *bo = calloc(1, sizeof(*bo));
+   struct bo_image *bo = fgl_calloc(1, sizeof(*bo));
    if (!bo)
       return NULL;
-   bo->data = calloc(size, 1);
+   bo->data = fgl_calloc(size, 1);
    if (!bo->data) {
-      free(bo);
+      fgl_free(bo);
       return NULL;
    }
    bo->size = size;
@@ -1105,11 +1106,11 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       unsigned hsize = 16;
       while (hsize < 2 * idx)
          hsize *= 2;
-      temp = malloc((size_t)(idx ? idx : 1) * vsize * sizeof(float));
-      unsigned *hash = calloc(hsize, sizeof(*hash));   /* unique index + 1 */
+      temp = fgl_malloc_gl(ctx, (size_t)(idx ? idx : 1) * vsize * sizeof(float));
+      unsigned *hash = fgl_calloc_gl(ctx, hsize, sizeof(*hash));   /* unique index + 1 */
       if (!temp || !hash) {
-         free(temp);
-         free(hash);
+         fgl_free(temp);
+         fgl_free(hash);
          return;
       }
       for (unsigned k = 0; k < idx; k++) {
@@ -1128,7 +1129,7 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
          }
          indices[k] = hash[slot] - 1;
       }
-      free(hash);
+      fgl_free(hash);
    }
    /* max_index starts at 0: with no index at all (primitives without
     * vertices) Mesa still uploads one vertex of its (uninitialized) merge
@@ -1172,7 +1173,7 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       save->bo_used = (save->bo_used + 3u) & ~3u;
    bo_write(save->bo, save->bo_used, indices, (size_t)idx * 4u);
    save->bo_used += idx * 4u;
-   free(temp);
+   fgl_free(temp);
    vl->start_offset = start_offset;
    *buffer_offset_out = buffer_offset;
 }
@@ -1186,10 +1187,10 @@ static void compile_vertex_list(struct fgl_context *ctx)
    struct fgl_dlist_state *ls = ctx->ListState;
    struct save_context *save = &ls->save;
 
-   struct vertex_list *vl = calloc(1, sizeof(*vl));
+   struct vertex_list *vl = fgl_calloc_gl(ctx, 1, sizeof(*vl));
    union dl_node *n = vl ? alloc_node(ctx, DL_OP_VERTEX_LIST, PTR_NODES) : NULL;
    if (!n) {
-      free(vl);
+      fgl_free(vl);
       reset_counters(ctx);
       return;
    }
@@ -1200,7 +1201,7 @@ static void compile_vertex_list(struct fgl_context *ctx)
    vl->vertex_count = get_vertex_count(save);
    vl->wrap_count = save->copied_nr;
    vl->prim_count = save->prim_used;
-   vl->prims = malloc((save->prim_used ? save->prim_used : 1) * sizeof(*vl->prims));
+   vl->prims = fgl_malloc_gl(ctx, (save->prim_used ? save->prim_used : 1) * sizeof(*vl->prims));
    if (vl->prims)
       memcpy(vl->prims, save->prims, save->prim_used * sizeof(*vl->prims));
    else
@@ -1211,7 +1212,7 @@ static void compile_vertex_list(struct fgl_context *ctx)
    if (!save->no_current_update) {
       const unsigned current_size = save->vertex_size - save->attrsz[FGL_ATTR_POS];
       if (current_size) {
-         vl->current_data = malloc(current_size * sizeof(float));
+         vl->current_data = fgl_malloc_gl(ctx, current_size * sizeof(float));
          const unsigned vertex_offset =
             vl->vertex_count ? (vl->vertex_count - 1) * save->vertex_size : 0;
          if (vl->current_data && ensure_alloc(save, vertex_offset + save->vertex_size))
@@ -1233,7 +1234,7 @@ static void compile_vertex_list(struct fgl_context *ctx)
    }
 
    const size_t bytes = (size_t)vl->vertex_count * vl->vertex_size * sizeof(float);
-   vl->buffer = malloc(bytes ? bytes : 1);
+   vl->buffer = fgl_malloc_gl(ctx, bytes ? bytes : 1);
    if (vl->buffer && bytes)
       memcpy(vl->buffer, save->buffer, bytes);
 
@@ -1243,19 +1244,22 @@ static void compile_vertex_list(struct fgl_context *ctx)
       unsigned *indices = build_draws(vl, vl->buffer, &nidx);
       if (indices) {
          upload_vertex_list(ctx, vl, indices, nidx, &buffer_offset);
-         free(indices);
+         fgl_free(indices);
+      } else {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
       }
    }
    vl->draw_begins = vl->prim_count ? vl->prims[0].begin : save->prim_used && save->prims[0].begin;
-   if (!save->bo)
-      save->bo = bo_new(SAVE_BO_MIN_SIZE);
+   if (!save->bo && !(save->bo = bo_new(SAVE_BO_MIN_SIZE)))
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
    /* update_vao: the next list's old_offset */
    save->vao_offset = buffer_offset;
    vl->bo = bo_ref(save->bo);
    vl->vao_offset = buffer_offset;
 
-   /* GL_COMPILE_AND_EXECUTE: through the immediate-mode calls */
-   if (ctx->ExecuteFlag)
+   /* GL_COMPILE_AND_EXECUTE: through the immediate-mode calls (not when
+    * the copy could not be made: out of memory, raised above) */
+   if (ctx->ExecuteFlag && vl->buffer)
       loopback_vertex_list(ctx, vl, (const uint8_t *)vl->buffer,
                            (size_t)vl->vertex_count * vl->vertex_size * sizeof(float));
 
@@ -1286,7 +1290,7 @@ static void wrap_filled_vertex(struct fgl_context *ctx)
    const unsigned num = save->copied_nr * save->vertex_size;
    if (num && save->copied && ensure_alloc(save, num))
       memcpy(save->buffer, save->copied, num * sizeof(float));
-   free(save->copied);
+   fgl_free(save->copied);
    save->copied = NULL;
    save->used = num;
 }
@@ -1384,7 +1388,7 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
          }
       }
       save->used += save->vertex_size * save->copied_nr;
-      free(save->copied);
+      fgl_free(save->copied);
       save->copied = NULL;
    }
 }
@@ -1441,7 +1445,7 @@ static void notify_begin(struct fgl_context *ctx, GLenum mode, bool no_current_u
    struct save_context *save = &ls->save;
    if (save->prim_used >= save->prim_size) {
       const unsigned size = save->prim_size ? save->prim_size * 2 : 8;
-      struct save_prim *p = realloc(save->prims, size * sizeof(*p));
+      struct save_prim *p = fgl_realloc_gl(ctx, save->prims, size * sizeof(*p));
       if (!p)
          return;
       save->prims = p;
@@ -1974,7 +1978,7 @@ void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, cons
    const unsigned type_size = call_lists_type_size(type);
    void *copy = NULL;
    if (num > 0 && type_size > 0 && lists) {
-      copy = malloc((size_t)num * type_size);
+      copy = fgl_malloc_gl(ctx, (size_t)num * type_size);
       if (copy)
          memcpy(copy, lists, (size_t)num * type_size);
    }
@@ -1984,7 +1988,7 @@ void fgl_save_call_lists(struct fgl_context *ctx, GLsizei num, GLenum type, cons
       n[2].e = type;
       put_pointer(&n[3], copy);
    } else {
-      free(copy);
+      fgl_free(copy);
    }
    invalidate_saved_current_state(ctx);
    if (ctx->ExecuteFlag)
@@ -2025,7 +2029,7 @@ static void *copy_client_image(struct fgl_context *ctx, GLsizei width, GLsizei h
       /* [S: pack.c:_mesa_unpack_bitmap] rows of whole bytes, most
        * significant bit first, skips and bit order applied */
       const size_t row_bytes = ((size_t)width + 7) / 8;
-      uint8_t *image = calloc(row_bytes * (size_t)height, 1);
+      uint8_t *image = fgl_calloc_gl(ctx, row_bytes * (size_t)height, 1);
       if (!image) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return NULL;
@@ -2049,7 +2053,7 @@ static void *copy_client_image(struct fgl_context *ctx, GLsizei width, GLsizei h
    if (bpp == 0)
       return NULL;
    const size_t row_bytes = bpp * (size_t)width;
-   uint8_t *image = malloc(row_bytes * (size_t)height);
+   uint8_t *image = fgl_malloc_gl(ctx, row_bytes * (size_t)height);
    if (!image) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return NULL;
@@ -2230,7 +2234,7 @@ static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_li
       order[nr] = FGL_ATTR_POS, offset[nr++] = off[FGL_ATTR_POS];
 
    const size_t stride = (size_t)vl->vertex_size * sizeof(float);
-   float *data = malloc(stride ? stride : 1);
+   float *data = fgl_malloc_gl(ctx, stride ? stride : 1);
    if (!data)
       return;
    for (unsigned p = 0; p < vl->prim_count; p++) {
@@ -2257,7 +2261,7 @@ static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_li
       if (prim->end)
          fgl_exec_end(ctx);
    }
-   free(data);
+   fgl_free(data);
 }
 
 /* playback_copy_to_current */
@@ -2771,7 +2775,7 @@ static bool insert_empty_lists(struct dlist_shared *sh, GLuint base, unsigned n)
       unsigned cap = sh->table_cap ? sh->table_cap : 64;
       while (cap < count)
          cap = cap > UINT_MAX / 2 ? count : cap * 2;
-      void *t = realloc(sh->table, (size_t)cap * sizeof(*sh->table));
+      void *t = fgl_realloc(sh->table, (size_t)cap * sizeof(*sh->table));
       if (!t)
          return false;
       sh->table = t;
@@ -2905,7 +2909,7 @@ bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLf
    }
    union dl_node *n = alloc_node(ctx, DL_OP_BITMAP, 6 + PTR_NODES);
    if (!n) {
-      free(tex);
+      fgl_free(tex);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return false;
    }

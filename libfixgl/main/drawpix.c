@@ -27,6 +27,7 @@
 #include "main/dlist.h"
 #include "main/pixelformat.h"
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 #define BITMAP_CACHE_WIDTH  512
 #define BITMAP_CACHE_HEIGHT 32
@@ -323,7 +324,7 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
                              ctx->Current.RasterColor);
          } else if (!accum_bitmap(ctx, x, y, width, height, bits) && bits) {
             /* too big: a texture of its own, drawn at once */
-            uint8_t *t = malloc((size_t)width * (size_t)height);
+            uint8_t *t = fgl_malloc_gl(ctx, (size_t)width * (size_t)height);
             if (!t) {
                fgl_error(ctx, GL_OUT_OF_MEMORY);
                return;
@@ -333,7 +334,7 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
             draw_bitmap_quad(ctx, &ctx->_Raster, tex_varying(ctx), fb->Width, fb->Height, x, y,
                              ctx->Current.RasterPos[2], width, height, t,
                              ctx->Current.RasterColor);
-            free(t);
+            fgl_free(t);
          }
       }
    } else if (ctx->RenderMode == GL_FEEDBACK) {
@@ -369,7 +370,7 @@ uint8_t *fgl_make_bitmap_texture(const struct fgl_context *ctx, GLsizei width,
    if (!bits || width < 0 || height < 0)
       return NULL;
    const size_t n = (size_t)width * (size_t)height;
-   uint8_t *t = malloc(n ? n : 1);
+   uint8_t *t = fgl_malloc_gl(ctx, n ? n : 1);
    if (!t)
       return NULL;
    memset(t, 0xff, n ? n : 1);
@@ -743,7 +744,7 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
    /* unsigned bytes match S8: _mesa_texstore_can_use_memcpy (stencil
     * needs no transfer operations, it says), so no map either */
    const bool map = ctx->Pixel.MapStencilFlag && type != GL_UNSIGNED_BYTE;
-   GLuint *idx = malloc((size_t)width * sizeof(GLuint));
+   GLuint *idx = fgl_malloc_gl(ctx, (size_t)width * sizeof(GLuint));
    if (!idx)
       return false;
    for (int y = 0; y < height; y++) {
@@ -758,7 +759,7 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
          dst[(size_t)y * (size_t)width + (size_t)x] = (uint8_t)(v & 0xffu);
       }
    }
-   free(idx);
+   fgl_free(idx);
    return true;
 }
 
@@ -924,11 +925,11 @@ static bool cache_image(struct fgl_context *ctx, int width, int height, GLenum f
    for (int i = 1; i < 4; i++)
       if (c->Entries[i].Age < e->Age)
          e = &c->Entries[i];
-   free(e->Image);
-   free(e->Texels);
-   free(e->Mask);
+   fgl_free(e->Image);
+   fgl_free(e->Texels);
+   fgl_free(e->Mask);
    memset(e, 0, sizeof(*e));
-   e->Image = malloc(bytes ? bytes : 1);
+   e->Image = fgl_malloc_gl(ctx, bytes ? bytes : 1);
    if (!e->Image)
       return false;
    memcpy(e->Image, pixels, bytes);
@@ -947,9 +948,9 @@ void fgl_free_drawpix_cache(struct fgl_context *ctx)
 {
    for (int i = 0; i < 4; i++) {
       struct fgl_drawpix_cache_entry *e = &ctx->DrawpixCache.Entries[i];
-      free(e->Image);
-      free(e->Texels);
-      free(e->Mask);
+      fgl_free(e->Image);
+      fgl_free(e->Texels);
+      fgl_free(e->Mask);
       memset(e, 0, sizeof(*e));
    }
 }
@@ -965,32 +966,32 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
    *texels = NULL;
    *mask = NULL;
    if (format == GL_STENCIL_INDEX) {
-      *mask = malloc(n);
+      *mask = fgl_malloc_gl(ctx, n);
       if (*mask && unpack_stencil_texels(ctx, unpack, pixels, width, height, type, *mask))
          return true;
    } else if (format == GL_DEPTH_STENCIL) {
-      *mask = malloc(n);
-      *texels = malloc(n * sizeof(float));
+      *mask = fgl_malloc_gl(ctx, n);
+      *texels = fgl_malloc_gl(ctx, n * sizeof(float));
       if (*mask && *texels &&
           unpack_depth_stencil_texels(ctx, unpack, pixels, width, height, type, *texels,
                                       *mask))
          return true;
    } else if (format == GL_DEPTH_COMPONENT) {
-      *texels = malloc(n * sizeof(float));
+      *texels = fgl_malloc_gl(ctx, n * sizeof(float));
       if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
                       unpack_depth_texels_z24(ctx, unpack, pixels, width, height, type,
                                               *texels)))
          return true;
    } else {
-      *texels = malloc(4 * n * sizeof(float));
+      *texels = fgl_malloc_gl(ctx, 4 * n * sizeof(float));
       if (*texels && (unpack_color_texels(unpack, pixels, width, height, format, type,
                                           *texels) ||
                       unpack_other_texels(ctx, unpack, pixels, width, height, format, type,
                                           *texels)))
          return true;
    }
-   free(*texels);
-   free(*mask);
+   fgl_free(*texels);
+   fgl_free(*mask);
    *texels = NULL;
    *mask = NULL;
    return false;
@@ -1055,8 +1056,8 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
    r_pixel_rect(&rs, &img, &q);
    if (owned) {
-      free(texels);
-      free(mask);
+      fgl_free(texels);
+      fgl_free(mask);
    }
 }
 
@@ -1134,7 +1135,7 @@ GLvoid *fgl_pack_list_image(const struct fgl_context *ctx, GLsizei width, GLsize
    const size_t bpp = fgl_pixel_bytes(format, type);
    if (!pixels || width <= 0 || height <= 0 || bpp == 0)
       return NULL;
-   uint8_t *out = malloc(bpp * (size_t)width * (size_t)height);
+   uint8_t *out = fgl_malloc_gl(ctx, bpp * (size_t)width * (size_t)height);
    if (!out)
       return NULL;
    for (int y = 0; y < height; y++)
@@ -1269,12 +1270,12 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL;
    const bool stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
    if (color || depth)
-      t = calloc(color ? 4 * n : n, sizeof(float));
+      t = fgl_calloc_gl(ctx, color ? 4 * n : n, sizeof(float));
    if (stencil)
-      s = calloc(n, 1);
+      s = fgl_calloc_gl(ctx, n, 1);
    if ((!t && (color || depth)) || (!s && stencil)) {
-      free(t);
-      free(s);
+      fgl_free(t);
+      fgl_free(s);
       return;
    }
    for (int j = 0; j < rh; j++) {
@@ -1350,8 +1351,8 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    }
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
    r_pixel_rect(&rs, &img, &q);
-   free(t);
-   free(s);
+   fgl_free(t);
+   fgl_free(s);
 }
 
 void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type)

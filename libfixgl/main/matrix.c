@@ -7,10 +7,11 @@
 
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "fgl_alloc.h"
 
 static bool init_stack(struct fgl_matrix_stack *stack, unsigned max_depth, unsigned dirty)
 {
-   stack->Stack = calloc(max_depth, sizeof(fgl_matrix));
+   stack->Stack = fgl_calloc(max_depth, sizeof(fgl_matrix));
    if (!stack->Stack)
       return false;
    stack->MaxDepth = max_depth;
@@ -37,12 +38,12 @@ bool fgl_init_matrix(struct fgl_context *ctx)
 
 void fgl_free_matrix(struct fgl_context *ctx)
 {
-   free(ctx->ModelviewStack.Stack);
-   free(ctx->ProjectionStack.Stack);
+   fgl_free(ctx->ModelviewStack.Stack);
+   fgl_free(ctx->ProjectionStack.Stack);
    for (int i = 0; i <= FGL_MAX_TEXTURE_UNITS; i++)
-      free(ctx->TextureStack[i].Stack);
+      fgl_free(ctx->TextureStack[i].Stack);
    for (int i = 0; i < FGL_MAX_PROGRAM_MATRICES; i++)
-      free(ctx->ProgramStack[i].Stack);
+      fgl_free(ctx->ProgramStack[i].Stack);
 }
 
 /* The stack glMatrixMode(mode) selects, or NULL for an invalid mode.

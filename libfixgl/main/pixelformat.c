@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 /* ------------------------------------------------------------------ */
 /* Mesa's scalar conversions [S: util/format/format_utils.h]           */
@@ -1177,7 +1178,7 @@ void fgl_pack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore 
                            GLenum type, const uint8_t *stencil, void *dstv)
 {
    uint8_t *dst = dstv;
-   uint8_t *s = malloc(n ? n : 1);
+   uint8_t *s = fgl_malloc_gl(ctx, n ? n : 1);
    if (!s)
       return;
    memcpy(s, stencil, n);
@@ -1233,7 +1234,7 @@ void fgl_pack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore 
          }
       }
    }
-   free(s);
+   fgl_free(s);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1279,24 +1280,24 @@ bool fgl_unpack_rgba_float(struct fgl_context *ctx, const struct fgl_pixelstore 
       return true;
    const size_t count = (size_t)width * (size_t)height;
    if (format == GL_COLOR_INDEX) {
-      GLuint *index = malloc(count * sizeof(*index));
+      GLuint *index = fgl_malloc_gl(ctx, count * sizeof(*index));
       if (!index)
          return false;
       unpack_ci_float(ctx, p, width, height, type, pixels, ops, (float (*)[4])rgba, index);
-      free(index);
+      fgl_free(index);
       return true;
    }
    struct layout l;
    if (!get_layout(format, type, &l))
       return false;
-   uint8_t *tmp = p->SwapBytes ? malloc((size_t)width * l.bytes) : NULL;
+   uint8_t *tmp = p->SwapBytes ? fgl_malloc_gl(ctx, (size_t)width * l.bytes) : NULL;
    if (p->SwapBytes && !tmp)
       return false;
    for (int y = 0; y < height; y++) {
       const uint8_t *src = image_row(p, &l, width, format, type, pixels, y, tmp);
       unpack_row_float(&l, src, (size_t)width, (float (*)[4])(rgba + 4 * (size_t)y * width));
    }
-   free(tmp);
+   fgl_free(tmp);
    if (ops)
       fgl_apply_rgba_transfer_ops(ctx, ops, count, (float (*)[4])rgba);
    return true;
@@ -1339,13 +1340,13 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
    const size_t count = (size_t)width * (size_t)height;
    const unsigned ops = fgl_image_transfer_state(ctx);
    if (format == GL_COLOR_INDEX) {
-      float (*rgba)[4] = malloc(count * sizeof(*rgba));
-      GLuint *index = malloc(count * sizeof(*index));
-      uint8_t (*temp)[4] = malloc(count * sizeof(*temp));
+      float (*rgba)[4] = fgl_malloc_gl(ctx, count * sizeof(*rgba));
+      GLuint *index = fgl_malloc_gl(ctx, count * sizeof(*index));
+      uint8_t (*temp)[4] = fgl_malloc_gl(ctx, count * sizeof(*temp));
       if (!rgba || !index || !temp) {
-         free(rgba);
-         free(index);
-         free(temp);
+         fgl_free(rgba);
+         fgl_free(index);
+         fgl_free(temp);
          return false;
       }
       unpack_ci_float(ctx, p, width, height, type, pixels, ops | FGL_IMAGE_CLAMP_BIT, rgba,
@@ -1370,9 +1371,9 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
             store_texel(base, c, dst + 4 * ((size_t)y * (size_t)width + (size_t)x));
          }
       }
-      free(rgba);
-      free(index);
-      free(temp);
+      fgl_free(rgba);
+      fgl_free(index);
+      fgl_free(temp);
       return true;
    }
    struct layout l;
@@ -1385,12 +1386,12 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
       struct fgl_pixelstore noskip = *p;
       noskip.SkipPixels = 0;
       noskip.SkipRows = 0;
-      float (*rgba)[4] = malloc(count * sizeof(*rgba));
+      float (*rgba)[4] = fgl_malloc_gl(ctx, count * sizeof(*rgba));
       if (!rgba)
          return false;
       if (!fgl_unpack_rgba_float(ctx, &noskip, width, height, format, type, pixels, ops,
                                  (float *)rgba)) {
-         free(rgba);
+         fgl_free(rgba);
          return false;
       }
       for (size_t i = 0; i < count; i++) {
@@ -1399,14 +1400,14 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
             c[k] = (uint8_t)float_to_unorm(rgba[i][k], 8);
          store_texel(base, c, dst + 4 * i);
       }
-      free(rgba);
+      fgl_free(rgba);
       return true;
    }
-   uint8_t *tmp = p->SwapBytes ? malloc((size_t)width * l.bytes) : NULL;
-   uint8_t (*row)[4] = malloc((size_t)width * sizeof(*row));
+   uint8_t *tmp = p->SwapBytes ? fgl_malloc_gl(ctx, (size_t)width * l.bytes) : NULL;
+   uint8_t (*row)[4] = fgl_malloc_gl(ctx, (size_t)width * sizeof(*row));
    if ((p->SwapBytes && !tmp) || !row) {
-      free(tmp);
-      free(row);
+      fgl_free(tmp);
+      fgl_free(row);
       return false;
    }
    for (int y = 0; y < height; y++) {
@@ -1415,8 +1416,8 @@ bool fgl_unpack_texels_rgba8(struct fgl_context *ctx, const struct fgl_pixelstor
       for (int x = 0; x < width; x++)
          store_texel(base, row[x], dst + 4 * ((size_t)y * (size_t)width + (size_t)x));
    }
-   free(tmp);
-   free(row);
+   fgl_free(tmp);
+   fgl_free(row);
    return true;
 }
 
@@ -1497,22 +1498,22 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
       path = VIA_FLOAT;
 
    if (path == VIA_UBYTE) {
-      uint8_t *t = malloc(count * 4);
+      uint8_t *t = fgl_malloc_gl(ctx, count * 4);
       if (!t)
          return false;
       if (!fgl_unpack_texels_rgba8(ctx, p, width, height, format, type, pixels, base, t)) {
-         free(t);
+         fgl_free(t);
          return false;
       }
       for (size_t i = 0; i < 4 * count; i++) {
          const unsigned b = bits[i & 3];
          dst[i] = (uint16_t)(b == 0 ? (t[i] ? 1 : 0) : unorm_to_unorm(t[i], 8, b));
       }
-      free(t);
+      fgl_free(t);
       return true;
    }
    if (path == DIRECT16) {
-      uint8_t *tmp = p->SwapBytes ? malloc((size_t)width * l.bytes) : NULL;
+      uint8_t *tmp = p->SwapBytes ? fgl_malloc_gl(ctx, (size_t)width * l.bytes) : NULL;
       if (p->SwapBytes && !tmp)
          return false;
       for (int y = 0; y < height; y++) {
@@ -1529,7 +1530,7 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
                o[k] = (uint16_t)(map[k] < 0 ? (map[k] == -2) : bits[k] ? c[map[k]] : 0);
          }
       }
-      free(tmp);
+      fgl_free(tmp);
       return true;
    }
    /* VIA_FLOAT; a transfer state converts from the base address (the
@@ -1539,12 +1540,12 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
       noskip.SkipPixels = 0;
       noskip.SkipRows = 0;
    }
-   float (*rgba)[4] = malloc(count * sizeof(*rgba));
+   float (*rgba)[4] = fgl_malloc_gl(ctx, count * sizeof(*rgba));
    if (!rgba)
       return false;
    if (!fgl_unpack_rgba_float(ctx, &noskip, width, height, format, type, pixels, ops,
                               (float *)rgba)) {
-      free(rgba);
+      fgl_free(rgba);
       return false;
    }
    for (size_t i = 0; i < count; i++) {
@@ -1564,7 +1565,7 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
          dst[4 * i + (size_t)k] = (uint16_t)v;
       }
    }
-   free(rgba);
+   fgl_free(rgba);
    return true;
 }
 
@@ -1618,7 +1619,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    /* the source with Mesa's rebase (readpix.c / texgetimage.c:
     * teximage_needs_rebase: L and I read as (L, 0, 0, 1), LA as
     * (L, 0, 0, A); RGB has alpha 1) */
-   uint8_t (*src)[4] = malloc(count * sizeof(*src));
+   uint8_t (*src)[4] = fgl_malloc_gl(ctx, count * sizeof(*src));
    if (!src)
       return false;
    for (size_t i = 0; i < count; i++) {
@@ -1640,9 +1641,9 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
 
    if (ops || rgb_to_lum) {
-      float (*f)[4] = malloc(count * sizeof(*f));
+      float (*f)[4] = fgl_malloc_gl(ctx, count * sizeof(*f));
       if (!f) {
-         free(src);
+         fgl_free(src);
          return false;
       }
       for (size_t i = 0; i < count; i++)
@@ -1659,16 +1660,16 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
       for (int y = 0; y < height; y++)
          pack_row_float(&l, (const float (*)[4])(f + (size_t)y * width), (size_t)width,
                         dst0 + (size_t)y * stride);
-      free(f);
+      fgl_free(f);
    } else if (l.packed && !exact_rgba8) {
       int maxbits = 0;
       for (int c = 0; c < 4; c++)
          if (l.bits[c] > maxbits)
             maxbits = l.bits[c];
       if (maxbits > 8) {
-         float (*f)[4] = malloc((size_t)width * sizeof(*f));
+         float (*f)[4] = fgl_malloc_gl(ctx, (size_t)width * sizeof(*f));
          if (!f) {
-            free(src);
+            fgl_free(src);
             return false;
          }
          for (int y = 0; y < height; y++) {
@@ -1677,7 +1678,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
                   f[x][c] = unorm_to_float(src[(size_t)y * width + x][c], 8);
             pack_row_float(&l, (const float (*)[4])f, (size_t)width, dst0 + (size_t)y * stride);
          }
-         free(f);
+         fgl_free(f);
       } else {
          for (int y = 0; y < height; y++)
             pack_row_ubyte(&l, (const uint8_t (*)[4])(src + (size_t)y * width), (size_t)width,
@@ -1691,7 +1692,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    if (p->SwapBytes)
       for (int y = 0; y < height; y++)
          swap_row(&l, type, dst0 + (size_t)y * stride, (size_t)width);
-   free(src);
+   fgl_free(src);
    return true;
 }
 
@@ -1743,11 +1744,11 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
 
    /* the rebase (teximage_needs_rebase): L and I read as (L, 0, 0, 1), LA
     * as (L, 0, 0, A), A as (0, 0, 0, A), RGB with alpha 1 */
-   uint32_t (*v)[4] = malloc(count * sizeof(*v));
-   uint8_t (*b)[4] = malloc(count * sizeof(*b));
+   uint32_t (*v)[4] = fgl_malloc_gl(ctx, count * sizeof(*v));
+   uint8_t (*b)[4] = fgl_malloc_gl(ctx, count * sizeof(*b));
    if (!v || !b) {
-      free(v);
-      free(b);
+      fgl_free(v);
+      fgl_free(b);
       return false;
    }
    for (size_t i = 0; i < count; i++) {
@@ -1826,7 +1827,7 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
          }
       }
    } else if (clamp || via_float) {
-      float (*f)[4] = malloc((size_t)width * sizeof(*f));
+      float (*f)[4] = fgl_malloc_gl(ctx, (size_t)width * sizeof(*f));
       if (!f) {
          ok = false;
       } else {
@@ -1841,10 +1842,10 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
             }
             pack_row_float(&l, (const float (*)[4])f, (size_t)width, dst0 + (size_t)y * stride);
          }
-         free(f);
+         fgl_free(f);
       }
    } else {
-      uint8_t (*u)[4] = malloc((size_t)width * sizeof(*u));
+      uint8_t (*u)[4] = fgl_malloc_gl(ctx, (size_t)width * sizeof(*u));
       if (!u) {
          ok = false;
       } else {
@@ -1856,14 +1857,14 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
             }
             pack_row_ubyte(&l, (const uint8_t (*)[4])u, (size_t)width, dst0 + (size_t)y * stride);
          }
-         free(u);
+         fgl_free(u);
       }
    }
    if (ok && p->SwapBytes)
       for (int y = 0; y < height; y++)
          swap_row(&l, type, dst0 + (size_t)y * stride, (size_t)width);
-   free(v);
-   free(b);
+   fgl_free(v);
+   fgl_free(b);
    return ok;
 }
 

@@ -14,6 +14,7 @@
 
 #include "main/groups.h"
 #include "main/pixelformat.h"
+#include "fgl_alloc.h"
 
 /* depth value at internal (y-down) pixel idx, as 24- or 16-bit integer */
 static uint32_t depth_at(const struct fgl_framebuffer *fb, size_t idx)
@@ -96,7 +97,7 @@ static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb
                        GLenum format, GLenum type, void *pixels)
 {
    const size_t n = (size_t)r->width * (size_t)r->height;
-   uint8_t *rgba = malloc(n * 4);
+   uint8_t *rgba = fgl_malloc_gl(ctx, n * 4);
    if (!rgba) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
@@ -114,14 +115,14 @@ static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb
    if (!fgl_pack_rgba8(ctx, pack, source, r->width, r->height, base, rgba, format, type,
                        pixels))
       fgl_error(ctx, GL_INVALID_OPERATION);   /* not reached: validated */
-   free(rgba);
+   fgl_free(rgba);
 }
 
 static void read_depth(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
                        const struct read_rect *r, const struct fgl_pixelstore *pack,
                        GLenum type, void *pixels)
 {
-   float *z = malloc((size_t)r->width * sizeof(float));
+   float *z = fgl_malloc_gl(ctx, (size_t)r->width * sizeof(float));
    if (!z) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
@@ -147,14 +148,14 @@ static void read_depth(struct fgl_context *ctx, const struct fgl_framebuffer *fb
          z[i] = depth_float_at(fb, idx0 + (size_t)i);
       fgl_pack_depth_span(ctx, pack, (size_t)r->width, type, z, dst);
    }
-   free(z);
+   fgl_free(z);
 }
 
 static void read_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
                          const struct read_rect *r, const struct fgl_pixelstore *pack,
                          GLenum type, void *pixels)
 {
-   uint8_t *s = malloc((size_t)r->width);
+   uint8_t *s = fgl_malloc_gl(ctx, (size_t)r->width);
    if (!s) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
@@ -168,7 +169,7 @@ static void read_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *
       void *dst = (void *)fgl_image_address(pack, pixels, r->width, GL_STENCIL_INDEX, type, j, 0);
       fgl_pack_stencil_span(ctx, pack, (size_t)r->width, type, s, dst);
    }
-   free(s);
+   fgl_free(s);
 }
 
 static void read_depth_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
@@ -182,11 +183,11 @@ static void read_depth_stencil(struct fgl_context *ctx, const struct fgl_framebu
    const bool fast = type == GL_UNSIGNED_INT_24_8 && !scale_bias && !stencil_transfer &&
                      !pack->SwapBytes;
    const size_t n = (size_t)r->width;
-   float *z = malloc(n * sizeof(float));
-   uint8_t *s = malloc(n);
+   float *z = fgl_malloc_gl(ctx, n * sizeof(float));
+   uint8_t *s = fgl_malloc_gl(ctx, n);
    if (!z || !s) {
-      free(z);
-      free(s);
+      fgl_free(z);
+      fgl_free(s);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -234,8 +235,8 @@ static void read_depth_stencil(struct fgl_context *ctx, const struct fgl_framebu
          }
       }
    }
-   free(z);
-   free(s);
+   fgl_free(z);
+   fgl_free(s);
 }
 
 void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,

@@ -20,14 +20,15 @@
 #include "main/dlist.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
+#include "fgl_alloc.h"
 
 void fgl_free_tex_images(struct fgl_texture_object *t)
 {
    for (int l = 0; l < FGL_MAX_TEXTURE_LEVELS; l++) {
       if (t->Image[l]) {
-         free(t->Image[l]->Data);
-         free(t->Image[l]->Store);
-         free(t->Image[l]);
+         fgl_free(t->Image[l]->Data);
+         fgl_free(t->Image[l]->Store);
+         fgl_free(t->Image[l]);
          t->Image[l] = NULL;
       }
    }
@@ -430,7 +431,7 @@ static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, 
 static struct fgl_texture_image *new_image(int w, int h, int border, GLint internal,
                                            GLenum base, const struct fgl_tex_pipe_format *pf)
 {
-   struct fgl_texture_image *img = calloc(1, sizeof(*img));
+   struct fgl_texture_image *img = fgl_calloc(1, sizeof(*img));
    if (!img)
       return NULL;
    img->Width = w;
@@ -446,9 +447,9 @@ static void set_image(struct fgl_texture_object *t, GLint level,
                       struct fgl_texture_image *img)
 {
    if (t->Image[level]) {
-      free(t->Image[level]->Data);
-      free(t->Image[level]->Store);
-      free(t->Image[level]);
+      fgl_free(t->Image[level]->Data);
+      fgl_free(t->Image[level]->Store);
+      fgl_free(t->Image[level]);
    }
    t->Image[level] = img;
 }
@@ -459,14 +460,14 @@ static void set_image(struct fgl_texture_object *t, GLint level,
 static bool alloc_texels(struct fgl_texture_image *img)
 {
    const size_t n = (size_t)img->Width * (size_t)img->Height;
-   img->Data = malloc(n ? n * 4 : 4);
+   img->Data = fgl_malloc(n ? n * 4 : 4);
    if (needs_store(img->Format)) {
       channel_bits(img->Format, img->BaseFormat, img->StoreBits);
-      img->Store = malloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t));
+      img->Store = fgl_malloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t));
    }
    if (!img->Data || (needs_store(img->Format) && !img->Store)) {
-      free(img->Data);
-      free(img->Store);
+      fgl_free(img->Data);
+      fgl_free(img->Store);
       img->Data = NULL;
       img->Store = NULL;
       return false;
@@ -488,24 +489,24 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
    if (img->Store) {
       /* the stored values straight from the client data: a float or
        * 16-bit source reaches a wide format without an 8-bit step */
-      uint16_t *q = malloc((size_t)w * (size_t)h * 4 * sizeof(uint16_t));
+      uint16_t *q = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4 * sizeof(uint16_t));
       if (!q) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return false;
       }
       if (!fgl_unpack_texels_stored(ctx, unpack, w, h, format, type, pixels, img->BaseFormat,
                                     img->StoreBits, max_bits(img->Format) == 16, q)) {
-         free(q);
+         fgl_free(q);
          fgl_error(ctx, GL_INVALID_ENUM);
          return false;
       }
       for (int j = 0; j < h; j++)
          put_stored(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
                     q + 4 * (size_t)j * (size_t)w, (size_t)w);
-      free(q);
+      fgl_free(q);
       return true;
    }
-   uint8_t *tmp = malloc((size_t)w * (size_t)h * 4);
+   uint8_t *tmp = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4);
    if (!tmp) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return false;
@@ -513,14 +514,14 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
    if (!fgl_unpack_texels_rgba8(ctx, unpack, w, h, format, type, pixels,
                                 img->BaseFormat, tmp)) {
       /* a legal format/type pair the unpacker does not convert yet */
-      free(tmp);
+      fgl_free(tmp);
       fgl_error(ctx, GL_INVALID_ENUM);
       return false;
    }
    for (int j = 0; j < h; j++)
       put_texels(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
                  tmp + 4 * (size_t)j * (size_t)w, (size_t)w, false);
-   free(tmp);
+   fgl_free(tmp);
    return true;
 }
 
@@ -565,7 +566,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
       struct fgl_texture_image *img = new_image(w, h, 0, (GLint)base->InternalFormat,
                                                 base->BaseFormat, base->Format);
       if (!img || !alloc_texels(img)) {
-         free(img);
+         fgl_free(img);
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
@@ -694,7 +695,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    struct fgl_texture_image *img = new_image(width, height, 0, internal, tf->base, pf);
    if (!img || !alloc_texels(img)) {
-      free(img);
+      fgl_free(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -703,9 +704,9 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    if (width && height)
       fgl_flush_bitmap_cache(ctx);
    if (!store_texels(ctx, img, &unpack, 0, 0, width, height, format, type, pixels)) {
-      free(img->Data);
-      free(img->Store);
-      free(img);
+      fgl_free(img->Data);
+      fgl_free(img->Store);
+      fgl_free(img);
       return;
    }
    set_image(t, level, img);
@@ -950,7 +951,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    }
    struct fgl_texture_image *img = new_image(width, height, 0, (GLint)internal, tf->base, pf);
    if (!img || !alloc_texels(img)) {
-      free(img);
+      fgl_free(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }

@@ -19,6 +19,7 @@
 #include "main/conv.h"
 #include "main/dlist.h"
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 /* [S: texobj.c:_mesa_initialize_texture_object] */
 static void init_object(struct fgl_texture_object *t, GLuint name, GLenum target)
@@ -47,7 +48,7 @@ static const GLenum index_target[FGL_TEX_TARGETS] = {
  * default objects of a new context; false when out of memory */
 bool fgl_init_texobj(struct fgl_context *ctx)
 {
-   struct fgl_texture_objects *to = calloc(1, sizeof(*to));
+   struct fgl_texture_objects *to = fgl_calloc_gl(ctx, 1, sizeof(*to));
    if (!to)
       return false;
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
@@ -68,7 +69,7 @@ static void unref_object_locked(struct fgl_texture_object *t)
    if (--t->RefCount != 0)
       return;
    fgl_free_tex_images(t);
-   free(t);
+   fgl_free(t);
 }
 
 /* [S: shared.c:free_shared_state] the last context drops the table's
@@ -82,11 +83,11 @@ static void unref_shared(struct fgl_texture_objects *to)
       return;
    for (unsigned i = 0; i < to->Count; i++)
       unref_object_locked(to->Objs[i]);
-   free(to->Objs);
+   fgl_free(to->Objs);
    for (int i = 0; i < FGL_TEX_TARGETS; i++)
       fgl_free_tex_images(&to->Default[i]);
    pthread_mutex_destroy(&to->Lock);
-   free(to);
+   fgl_free(to);
 }
 
 /* [S: texstate.c:_mesa_free_texture_data] the context's bindings drop
@@ -154,13 +155,13 @@ static struct fgl_texture_object *insert(struct fgl_context *ctx, GLuint name, G
    struct fgl_texture_objects *to = ctx->TexObjects;
    if (to->Count == to->Alloc) {
       const unsigned alloc = to->Alloc ? to->Alloc * 2 : 16;
-      struct fgl_texture_object **objs = realloc(to->Objs, alloc * sizeof(*objs));
+      struct fgl_texture_object **objs = fgl_realloc_gl(ctx, to->Objs, alloc * sizeof(*objs));
       if (!objs)
          return NULL;
       to->Objs = objs;
       to->Alloc = alloc;
    }
-   struct fgl_texture_object *t = malloc(sizeof(*t));
+   struct fgl_texture_object *t = fgl_malloc_gl(ctx, sizeof(*t));
    if (!t)
       return NULL;
    init_object(t, name, target);
@@ -237,7 +238,7 @@ static int cmp_name(const void *a, const void *b)
  * to look). */
 static GLuint find_free_block(const struct fgl_texture_objects *to, GLuint n)
 {
-   GLuint *names = malloc((to->Count ? to->Count : 1) * sizeof(*names));
+   GLuint *names = fgl_malloc((to->Count ? to->Count : 1) * sizeof(*names));
    if (!names)
       return 0;
    for (unsigned i = 0; i < to->Count; i++)
@@ -256,7 +257,7 @@ static GLuint find_free_block(const struct fgl_texture_objects *to, GLuint n)
       if (next >= start)
          start = next + 1;
    }
-   free(names);
+   fgl_free(names);
    return found;
 }
 

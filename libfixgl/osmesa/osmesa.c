@@ -28,6 +28,7 @@
 #include "context.h"
 #include "main/dlist.h"
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 #define OSMESA_MAX_SIZE 16384
 
@@ -234,12 +235,12 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       }
    }
 
-   struct osmesa_context *c = calloc(1, sizeof(*c));
+   struct osmesa_context *c = fgl_calloc(1, sizeof(*c));
    if (!c)
       return NULL;
    c->gl = fgl_context_create();
    if (!c->gl) {
-      free(c);
+      fgl_free(c);
       return NULL;
    }
    /* display lists and texture objects are shared with sharelist's
@@ -268,12 +269,12 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 
 static void free_buffers(struct osmesa_context *c)
 {
-   free(c->fb.Color);
-   free(c->depth_mem);
+   fgl_free(c->fb.Color);
+   fgl_free(c->depth_mem);
    c->depth_mem = NULL;
-   free(c->fb.Stencil);
-   free(c->fb.Accum);
-   free(c->zs_copy);
+   fgl_free(c->fb.Stencil);
+   fgl_free(c->fb.Accum);
+   fgl_free(c->zs_copy);
    c->fb.Accum = NULL;
    c->fb.Color = NULL;
    c->fb.Depth = NULL;
@@ -293,7 +294,7 @@ OSMesaDestroyContext(OSMesaContext c)
    }
    fgl_context_destroy(c->gl);
    free_buffers(c);
-   free(c);
+   fgl_free(c);
 }
 
 /* (Re)allocate the internal buffers for a width x height image. */
@@ -313,20 +314,20 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->FlushFrontRect = flush_front_rect;
    fb->FlushFrontEnd = flush_front_end;
    fb->AccumBits = c->accum_bits;
-   fb->Color = calloc(n, 4);
+   fb->Color = fgl_calloc(n, 4);
    if (c->zs_format == R_ZS_S8)
-      fb->Stencil = calloc(n, 1);
+      fb->Stencil = fgl_calloc(n, 1);
    else if (c->zs_format != R_ZS_NONE) {
       /* the depth buffer starts 2112 bytes past a page boundary, so that
        * a pixel's depth and colour never share their address bits 11:0:
        * the block kernels load one while storing the other, which the CPU
        * would otherwise check against each other as if they aliased
        * (4K aliasing; 3-4% of lit200's frame) */
-      c->depth_mem = calloc(n * (size_t)c->zs_bpv + 4096, 1);
+      c->depth_mem = fgl_calloc(n * (size_t)c->zs_bpv + 4096, 1);
       fb->Depth = c->depth_mem ? (uint8_t *)c->depth_mem + 2048 + 64 : NULL;
    }
    if (c->accum_bits > 0)
-      fb->Accum = calloc(n, 4 * sizeof(int16_t));
+      fb->Accum = fgl_calloc(n, 4 * sizeof(int16_t));
    if (!fb->Color || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil) ||
        (c->accum_bits > 0 && !fb->Accum)) {
       free_buffers(c);
@@ -467,7 +468,7 @@ OSMesaGetDepthBuffer(OSMesaContext c, GLint *width, GLint *height,
       h = c->fb.Height;
       bpv = c->zs_bpv;
       if (!c->zs_copy) {
-         c->zs_copy = calloc((size_t)w * (size_t)h, (size_t)bpv);
+         c->zs_copy = fgl_calloc((size_t)w * (size_t)h, (size_t)bpv);
          if (c->zs_copy) {
             fgl_scene_flush(c->gl);   /* the depth drawn so far */
             snapshot_zs(c);

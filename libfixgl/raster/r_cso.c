@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include "fgl_alloc.h"
 
 struct r_cso_entry {
    uint64_t hash;
@@ -54,7 +55,7 @@ static void evict_one(struct r_cso_cache *c)
          victim = i;
    if (victim == c->count)
       return;
-   free(c->entry[victim]);
+   fgl_free(c->entry[victim]);
    c->entry[victim] = c->entry[--c->count];
 }
 
@@ -73,13 +74,13 @@ const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size)
       evict_one(c);
    if (c->count == c->capacity) {
       const unsigned cap = c->capacity ? 2 * c->capacity : 16;
-      struct r_cso_entry **n = realloc(c->entry, cap * sizeof(*n));
+      struct r_cso_entry **n = fgl_realloc(c->entry, cap * sizeof(*n));
       if (!n)
          return NULL;
       c->entry = n;
       c->capacity = cap;
    }
-   struct r_cso_entry *e = malloc(sizeof(*e) + size);
+   struct r_cso_entry *e = fgl_malloc(sizeof(*e) + size);
    if (!e)
       return NULL;
    e->hash = h;
@@ -130,7 +131,7 @@ void r_state_release(const struct r_state *rs)
 void r_cso_cache_fini(struct r_cso_cache *c)
 {
    for (unsigned i = 0; i < c->count; i++)
-      free(c->entry[i]);
-   free(c->entry);
+      fgl_free(c->entry[i]);
+   fgl_free(c->entry);
    memset(c, 0, sizeof(*c));
 }

@@ -8,6 +8,7 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <unistd.h>
+#include "fgl_alloc.h"
 
 /* the pool itself: the one piece of process-wide mutable state besides
  * the current context, and it holds no GL state */
@@ -110,7 +111,7 @@ static void ensure_workers(unsigned want)
 {
    if (pool.nthreads >= want || pool.quit)
       return;
-   pthread_t *t = realloc(pool.threads, want * sizeof(*t));
+   pthread_t *t = fgl_realloc(pool.threads, want * sizeof(*t));
    if (!t)
       return;
    pool.threads = t;
@@ -181,7 +182,7 @@ void r_pool_shutdown(void)
    pthread_mutex_unlock(&pool.lock);
    for (unsigned i = 0; i < n; i++)
       pthread_join(t[i], NULL);
-   free(t);
+   fgl_free(t);
    pthread_mutex_lock(&pool.lock);
    pool.quit = false;
    pthread_mutex_unlock(&pool.lock);

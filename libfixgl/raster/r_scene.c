@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "fgl_alloc.h"
 
 /* vertex storage */
 struct r_scene_chunk {
@@ -30,7 +31,7 @@ static void *scene_alloc(struct r_scene *s, size_t size)
    struct r_scene_chunk *next = s->chunk ? s->chunk->next : s->chunks;
    if (!next || next->size < size) {
       const size_t csize = size > CHUNK_SIZE ? size : CHUNK_SIZE;
-      struct r_scene_chunk *c = malloc(sizeof(*c) + csize);
+      struct r_scene_chunk *c = fgl_malloc(sizeof(*c) + csize);
       if (!c)
          return NULL;
       c->size = csize;
@@ -96,7 +97,7 @@ static bool grow(void **p, uint32_t *capacity, uint32_t need, size_t elem)
    uint32_t cap = *capacity ? *capacity : 16;
    while (cap < need)
       cap *= 2;
-   void *n = realloc(*p, (size_t)cap * elem);
+   void *n = fgl_realloc(*p, (size_t)cap * elem);
    if (!n)
       return false;
    *p = n;
@@ -133,7 +134,7 @@ static bool begin(struct r_scene *s, const struct r_state *rs)
    const int ty = (rs->fb->height + R_TILE_SIZE - 1) >> R_TILE_LOG2;
    const unsigned n = (unsigned)(tx * ty);
    if (n > s->bins_capacity) {
-      struct r_bin *b = realloc(s->bins, n * sizeof(*b));
+      struct r_bin *b = fgl_realloc(s->bins, n * sizeof(*b));
       if (!b)
          return false;
       memset(b + s->bins_capacity, 0, (n - s->bins_capacity) * sizeof(*b));
@@ -425,13 +426,13 @@ void r_scene_fini(struct r_scene *s)
 {
    r_scene_reset(s);
    for (unsigned t = 0; t < s->bins_capacity; t++)
-      free(s->bins[t].cmd);
-   free(s->bins);
-   free(s->cmds);
-   free(s->states);
+      fgl_free(s->bins[t].cmd);
+   fgl_free(s->bins);
+   fgl_free(s->cmds);
+   fgl_free(s->states);
    for (struct r_scene_chunk *c = s->chunks, *n; c; c = n) {
       n = c->next;
-      free(c);
+      fgl_free(c);
    }
    memset(s, 0, sizeof(*s));
 }

@@ -32,6 +32,7 @@
 #include "main/conv.h"
 #include "main/dlist.h"
 #include "tnl/t_pipeline.h"
+#include "fgl_alloc.h"
 
 /* util_format half -> float, exact */
 static float half_to_float(uint16_t h)
@@ -193,8 +194,10 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    if (index_type) {
       unsigned *e = fgl_vbo_scratch(vbo->array_elts, &vbo->array_elts_alloc,
                                     2 * (unsigned)count, sizeof(*e));
-      if (!e)
+      if (!e) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
+      }
       vbo->array_elts = e;
       elts = e;
       fetch_elt = e + count;
@@ -220,8 +223,10 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
     * per draw */
    struct fgl_vbo_vertex *verts = fgl_vbo_scratch(vbo->array_verts, &vbo->array_alloc,
                                                   nverts, sizeof(*verts));
-   if (!verts)
+   if (!verts) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
+   }
    vbo->array_verts = verts;
    /* the batch's vertex format: the enabled arrays (the state tracker's
     * vertex elements; _mesa_set_varying_vp_inputs) */
@@ -259,12 +264,12 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    /* flush_for_draw left the format empty */
    memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
    if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {
-      free(vbo->array_verts);
+      fgl_free(vbo->array_verts);
       vbo->array_verts = NULL;
       vbo->array_alloc = 0;
    }
    if (vbo->array_elts_alloc > 2 * FGL_VBO_SCRATCH_KEEP) {
-      free(vbo->array_elts);
+      fgl_free(vbo->array_elts);
       vbo->array_elts = NULL;
       vbo->array_elts_alloc = 0;
    }

@@ -22,6 +22,7 @@
 #include <stdlib.h>
 
 #include "context.h"
+#include "fgl_alloc.h"
 
 /* The raster state of the smooth point and line quads (validated with
  * the draw's, state.c update_aa_states: the draw module's "no cull"
@@ -121,7 +122,7 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
       vbuf_flush(ctx);   /* vbuf_first_point / vbuf_first_line */
    if (vb->count == vb->cap) {
       const unsigned cap = vb->cap ? 2 * vb->cap : 64;
-      struct r_vertex (*q)[2] = realloc(vb->queue, cap * sizeof(*q));
+      struct r_vertex (*q)[2] = fgl_realloc(vb->queue, cap * sizeof(*q));
       if (!q) {
          vbuf_flush(ctx);   /* out of memory: draw what is queued now */
          vb->prim = prim;

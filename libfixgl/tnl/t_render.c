@@ -34,6 +34,7 @@
 
 #include "context.h"
 #include "main/groups.h"
+#include "fgl_alloc.h"
 
 #define SEGMENT_SIZE 4096
 
@@ -333,8 +334,10 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    /* the transformed vertices: the context's scratch array, no
     * allocation per batch */
    struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc, nverts, sizeof(*tv));
-   if (!tv)
+   if (!tv) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
+   }
    ctx->Vbo.tv = tv;
 
    /* The oracle draws with denormals flushed: draw_vbo sets DAZ and FTZ
@@ -451,7 +454,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    _mm_setcsr(mxcsr);
 #endif
    if (ctx->Vbo.tv_alloc > FGL_VBO_SCRATCH_KEEP) {
-      free(ctx->Vbo.tv);
+      fgl_free(ctx->Vbo.tv);
       ctx->Vbo.tv = NULL;
       ctx->Vbo.tv_alloc = 0;
    }

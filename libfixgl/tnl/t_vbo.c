@@ -11,6 +11,7 @@
 #include "context.h"
 #include "main/groups.h"
 #include "tnl/t_pipeline.h"
+#include "fgl_alloc.h"
 
 static const float attr_default[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
 
@@ -49,7 +50,7 @@ bool fgl_vbo_init(struct fgl_vbo *vbo)
    memset(vbo, 0, sizeof(*vbo));
    relayout(vbo);
    vbo->vert_alloc = 1024 * 8;
-   vbo->verts = malloc(vbo->vert_alloc * sizeof(*vbo->verts));
+   vbo->verts = fgl_malloc(vbo->vert_alloc * sizeof(*vbo->verts));
    for (int a = 0; a < FGL_ATTR_COUNT; a++)
       memcpy(vbo->current[a], attr_default, sizeof(attr_default));
    return vbo->verts != NULL;
@@ -57,15 +58,15 @@ bool fgl_vbo_init(struct fgl_vbo *vbo)
 
 void fgl_vbo_fini(struct fgl_vbo *vbo)
 {
-   free(vbo->verts);
+   fgl_free(vbo->verts);
    vbo->verts = NULL;
-   free(vbo->tv);
+   fgl_free(vbo->tv);
    vbo->tv = NULL;
    vbo->tv_alloc = 0;
-   free(vbo->array_verts);
+   fgl_free(vbo->array_verts);
    vbo->array_verts = NULL;
    vbo->array_alloc = 0;
-   free(vbo->array_elts);
+   fgl_free(vbo->array_elts);
    vbo->array_elts = NULL;
    vbo->array_elts_alloc = 0;
 }
@@ -77,7 +78,7 @@ void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
    size_t want = *alloc ? *alloc : 256;
    while (want < n)
       want *= 2;
-   void *p = realloc(buf, want * elem_size);
+   void *p = fgl_realloc(buf, want * elem_size);
    if (p)
       *alloc = (unsigned)want;
    return p;
@@ -233,7 +234,7 @@ static unsigned wrap_buffers(struct fgl_context *ctx, struct fgl_vbo_vertex *cop
 }
 
 /* room for n stored vertices of the current layout */
-static bool ensure_room(struct fgl_vbo *vbo, unsigned n)
+static bool ensure_room(struct fgl_context *ctx, struct fgl_vbo *vbo, unsigned n)
 {
    const size_t want = (size_t)n * vbo->vstride;
    if (want <= vbo->vert_alloc)
@@ -243,18 +244,20 @@ static bool ensure_room(struct fgl_vbo *vbo, unsigned n)
       alloc *= 2;
    if (alloc > UINT32_MAX)
       return false;
-   float *v = realloc(vbo->verts, alloc * sizeof(*v));
-   if (!v)
+   float *v = fgl_realloc(vbo->verts, alloc * sizeof(*v));
+   if (!v) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
       return false;
+   }
    vbo->verts = v;
    vbo->vert_alloc = (unsigned)alloc;
    return true;
 }
 
 /* the copied vertices stored again, in the current layout */
-static void put_back(struct fgl_vbo *vbo, const struct fgl_vbo_vertex *copied, unsigned n)
+static void put_back(struct fgl_context *ctx, struct fgl_vbo *vbo, const struct fgl_vbo_vertex *copied, unsigned n)
 {
-   if (n && ensure_room(vbo, vbo->vert_count + n)) {
+   if (n && ensure_room(ctx, vbo, vbo->vert_count + n)) {
       for (unsigned k = 0; k < n; k++) {
          float *dst = vbo->verts + (size_t)(vbo->vert_count + k) * vbo->vstride;
          for (int a = 0; a < FGL_ATTR_COUNT; a++)
@@ -270,7 +273,7 @@ static void vtx_wrap(struct fgl_context *ctx)
 {
    struct fgl_vbo_vertex copied[3];
    const unsigned n = wrap_buffers(ctx, copied);
-   put_back(&ctx->Vbo, copied, n);
+   put_back(ctx, &ctx->Vbo, copied, n);
 }
 
 /* vbo_exec_wrap_upgrade_vertex: a larger vertex format splits the batch. */
@@ -368,7 +371,7 @@ static void upgrade_vertex(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsi
    vbo->max_vert = compute_max_verts(vbo);
    vbo->vert_count = 0;
    relayout(vbo);
-   put_back(vbo, copied, n);
+   put_back(ctx, vbo, copied, n);
 }
 
 /* COPY_CLEAN: the attribute's stored components, then defaults. */
@@ -475,7 +478,7 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
 
    /* glVertex: store a vertex (outside glBegin/glEnd it takes buffer room
     * but belongs to no primitive, as in Mesa) */
-   if (!ensure_room(vbo, vbo->vert_count + 1))
+   if (!ensure_room(ctx, vbo, vbo->vert_count + 1))
       return;
    float *dst = vbo->verts + (size_t)vbo->vert_count * vbo->vstride;
    memcpy(dst, cur, 4 * sizeof(float));
@@ -534,7 +537,7 @@ void fgl_vbo_end(struct fgl_context *ctx)
     * first vertex) is appended and the section drawn as a strip from its
     * second vertex, which closes the loop (the count stays the same) */
    if (last->mode == GL_LINE_LOOP && !last->begin &&
-       ensure_room(vbo, vbo->vert_count + 1)) {
+       ensure_room(ctx, vbo, vbo->vert_count + 1)) {
       memcpy(vbo->verts + (size_t)vbo->vert_count * vbo->vstride,
              vbo->verts + (size_t)last->start * vbo->vstride, vbo->vstride * sizeof(float));
       last->start++;

@@ -5,7 +5,7 @@
  * Xvfb and compares the window's screenshot with the headless frame.
  *
  *   glut-compare --out DIR --frames N [--events LIST] [--frame-ms M]
- *                --fixgl DEMO --oracle DEMO [--fixgl-has-glbitmap yes|no]
+ *                --fixgl DEMO --oracle DEMO
  *   glut-compare --window --out DIR --frames N --fixgl DEMO --xvfb XVFB
  *
  * The window run writes two screenshots of the last frame: the system GL's
@@ -13,11 +13,8 @@
  * window after the swap (XGetImage); both must equal the headless frame.
  *
  * A frame that differs fails the test and leaves DIR/diff/frame-NNNN.png
- * (differing pixels red, equal ones dimmed).  --fixgl-has-glbitmap no: the
- * demo draws bitmap text and libfixgl does not export glBitmap (known at
- * configure time from libfixgl/main/api_list.h, which lists it now): both
- * runs must still succeed, then the test reports SKIP (exit 77) saying
- * why.
+ * (differing pixels red, equal ones dimmed).  There is no skip: a frame
+ * that cannot be compared fails.
  */
 #include <dirent.h>
 #include <errno.h>
@@ -38,7 +35,7 @@
 static const char *out_dir, *events = "", *frame_ms, *fixgl_demo, *oracle_demo,
                   *xvfb;
 static int frames = 1;
-static bool window_mode, no_bitmap;
+static bool window_mode;
 
 static void die(const char *msg)
 {
@@ -182,13 +179,6 @@ static int compare_headless(void)
       return 1;
    }
    run_headless(fixgl_demo, fdir);
-   if (no_bitmap) {
-      printf("SKIP: this libfixgl does not export glBitmap: "
-             "the bitmap-font frames are not compared; Mesa's are in %s, fixgl's "
-             "(without bitmap text) in %s; the comparison needs glBitmap\n",
-             odir, fdir);
-      return 77;
-   }
 
    int failed = 0;
    for (int f = 0; f < frames; f++) {
@@ -288,7 +278,6 @@ int main(int argc, char **argv)
       else if (!strcmp(a, "--frame-ms")) frame_ms = v;
       else if (!strcmp(a, "--fixgl")) fixgl_demo = v;
       else if (!strcmp(a, "--oracle")) oracle_demo = v;
-      else if (!strcmp(a, "--fixgl-has-glbitmap")) no_bitmap = !strcmp(v, "no");
       else if (!strcmp(a, "--xvfb")) xvfb = v;
       else die("unknown option");
       i++;

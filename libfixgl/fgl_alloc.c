@@ -1,0 +1,61 @@
+/*
+ * fgl_alloc.c - the allocation wrappers and, in test builds, failure
+ * injection (fgl_alloc.h).
+ */
+#include "fgl_alloc.h"
+
+#include <stdlib.h>
+
+#ifdef FGL_ALLOC_FAIL_INJECTION
+#include <stdatomic.h>
+
+/* Test builds only (the objects of the suite `robust`): the allocation
+ * counter and the one that is to fail. */
+static atomic_long alloc_count;
+static atomic_long fail_at;
+static atomic_int failed;
+
+void fgl_alloc_fail_at(long n)
+{
+   atomic_store(&failed, 0);
+   atomic_store(&fail_at, n > 0 ? atomic_load(&alloc_count) + n : 0);
+}
+
+long fgl_alloc_count(void) { return atomic_load(&alloc_count); }
+int fgl_alloc_failed(void) { return atomic_load(&failed); }
+
+/* 1 when this allocation is the one to fail */
+static int inject(void)
+{
+   long k = atomic_fetch_add(&alloc_count, 1) + 1;
+   if (k == atomic_load(&fail_at)) {
+      atomic_store(&failed, 1);
+      return 1;
+   }
+   return 0;
+}
+#else
+static inline int inject(void) { return 0; }
+#endif
+
+void *fgl_malloc(size_t size)
+{
+   return inject() ? NULL : malloc(size);
+}
+
+void *fgl_calloc(size_t n, size_t size)
+{
+   return inject() ? NULL : calloc(n, size);
+}
+
+void *fgl_realloc(void *p, size_t size)
+{
+   if (size == 0 || !inject())
+      return realloc(p, size);
+   return NULL;
+}
+
+void fgl_free(void *p)
+{
+   free(p);
+}
