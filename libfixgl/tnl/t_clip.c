@@ -19,8 +19,11 @@
  * emit_poly): new edges along a frustum plane are hidden, along a user
  * plane drawn.
  *
- * Then every triangle goes on to t_draw_pipe_tri (t_draw_pipe.c), the
- * draw stages after clipping.
+ * The polygon clipper itself, t_clip_polygon, knows no GL: it takes what
+ * it needs of the draw in a struct t_clipper (the user planes, the
+ * viewport, the varyings to interpolate).  t_clip_triangle builds one
+ * from the context and sends every resulting triangle on to
+ * t_draw_pipe_tri (t_draw_pipe.c), the draw stages after clipping.
  *
  * Lines are clipped parametrically (do_clip_line): each end that is outside
  * moves to the largest exit parameter over the planes (user planes
@@ -35,17 +38,15 @@
 
 #include "context.h"
 
-#define MAX_CLIPPED_VERTICES (2 * (6 + 8) + 1)   /* as Mesa, with 8 user planes */
-
 /* draw_context.c:draw_create: the view-volume planes */
 static const float clip_planes[6][4] = {
    { -1, 0, 0, 1 }, { 1, 0, 0, 1 }, { 0, -1, 0, 1 },
    { 0, 1, 0, 1 },  { 0, 0, 1, 1 }, { 0, 0, -1, 1 },
 };
 
-const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx)
+static inline const float *clipper_plane(const struct t_clipper *c, unsigned plane_idx)
 {
-   return plane_idx < 6 ? clip_planes[plane_idx] : ctx->_ClipUserPlane[plane_idx - 6];
+   return plane_idx < 6 ? clip_planes[plane_idx] : c->user_planes[plane_idx - 6];
 }
 
 static inline float dot4(const float *a, const float *b)
@@ -55,7 +56,9 @@ static inline float dot4(const float *a, const float *b)
 
 float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx)
 {
-   return dot4(clip, t_clip_plane(ctx, plane_idx));
+   const float *plane =
+      plane_idx < 6 ? clip_planes[plane_idx] : ctx->_ClipUserPlane[plane_idx - 6];
+   return dot4(clip, plane);
 }
 
 static inline float lerp(float t, float out, float in)
@@ -63,28 +66,138 @@ static inline float lerp(float t, float out, float in)
    return out + t * (in - out);
 }
 
-static void interp(const struct fgl_context *ctx, struct t_vertex *dst, float t,
-                   const struct t_vertex *out, const struct t_vertex *in, int nattr)
+static void interp(const struct t_clipper *c, struct t_vertex *dst, float t,
+                   const struct t_vertex *out, const struct t_vertex *in)
 {
    for (int i = 0; i < 4; i++)
       dst->clip[i] = lerp(t, out->clip[i], in->clip[i]);
    dst->mask = 0;
 
-   const float *s = ctx->_ViewportScale, *tr = ctx->_ViewportTranslate;
+   const float *s = c->scale, *tr = c->translate;
    const float oow = 1.0f / dst->clip[3];
    for (int i = 0; i < 3; i++)
       dst->r.pos[i] = dst->clip[i] * oow * s[i] + tr[i];
    dst->r.pos[3] = oow;
 
-   for (int a = 0; a < nattr; a++)
-      for (int c = 0; c < 4; c++)
-         dst->r.attr[a][c] = lerp(t, out->r.attr[a][c], in->r.attr[a][c]);
-   /* the feedback vertex's texture coordinate (t_vertex.c), a perspective
-    * attribute like the colours */
-   if (ctx->RenderMode == GL_FEEDBACK)
-      for (int c = 0; c < 4; c++)
-         dst->r.attr[R_ATTR_TEX0][c] = lerp(t, out->r.attr[R_ATTR_TEX0][c],
-                                            in->r.attr[R_ATTR_TEX0][c]);
+   for (uint32_t attrs = c->attrs; attrs; attrs &= attrs - 1) {
+      const int a = __builtin_ctz(attrs);
+      for (int k = 0; k < 4; k++)
+         dst->r.attr[a][k] = lerp(t, out->r.attr[a][k], in->r.attr[a][k]);
+   }
+}
+
+void t_clip_polygon(const struct t_clipper *c, struct t_clip_poly *p)
+{
+   const struct t_vertex *v0 = p->v[0], *v1 = p->v[1], *v2 = p->v[2];
+   unsigned clipmask = v0->mask | v1->mask | v2->mask;
+
+   if (v0->mask & v1->mask & v2->mask) {
+      p->n = 0;   /* entirely outside one plane */
+      return;
+   }
+
+   const struct t_vertex *other[T_MAX_CLIPPED_VERTICES + 1];
+   const struct t_vertex **inlist = p->v, **outlist = other;
+   /* [S: draw_pipe_clip.c:do_clip_tri] the header's edge bits follow the
+    * polygon as it is clipped: edge k starts at vertex k */
+   bool other_edges[T_MAX_CLIPPED_VERTICES + 1];
+   bool *in_edges = p->edge, *out_edges = other_edges;
+   unsigned n = 3;
+
+   while (clipmask && n >= 3) {
+      const int plane_idx = __builtin_ctz(clipmask);
+      const bool user_plane = plane_idx >= 6;
+      const float *plane = clipper_plane(c, (unsigned)plane_idx);
+      const struct t_vertex *vert_prev = inlist[0];
+      bool edge_prev = in_edges[0];
+      float dp_prev = dot4(vert_prev->clip, plane);
+      unsigned outcount = 0;
+
+      clipmask &= ~(1u << plane_idx);
+      if (!isfinite(dp_prev) || n >= T_MAX_CLIPPED_VERTICES) {
+         p->n = 0;
+         return;
+      }
+      inlist[n] = inlist[0];
+      in_edges[n] = in_edges[0];
+
+      for (unsigned i = 1; i <= n; i++) {
+         const struct t_vertex *vert = inlist[i];
+         const bool edge = in_edges[i];
+         const float dp = dot4(vert->clip, plane);
+         bool different_sign;
+
+         if (!isfinite(dp)) {
+            p->n = 0;
+            return;
+         }
+         if (dp_prev >= 0.0f) {
+            if (outcount >= T_MAX_CLIPPED_VERTICES) {
+               p->n = 0;
+               return;
+            }
+            out_edges[outcount] = edge_prev;
+            outlist[outcount++] = vert_prev;
+            different_sign = dp < 0.0f;
+         } else {
+            different_sign = !(dp < 0.0f);
+         }
+
+         if (different_sign) {
+            if (p->ntmp >= T_MAX_CLIPPED_VERTICES + 1 || outcount >= T_MAX_CLIPPED_VERTICES) {
+               p->n = 0;
+               return;
+            }
+            struct t_vertex *nv = &p->tmp[p->ntmp++];
+            bool *new_edge = &out_edges[outcount];
+            outlist[outcount++] = nv;
+            const float denom = dp - dp_prev;
+            if (dp < 0.0f) {
+               /* going out */
+               if (-dp < dp_prev)
+                  interp(c, nv, dp / denom, vert, vert_prev);
+               else
+                  interp(c, nv, -dp_prev / denom, vert_prev, vert);
+               /* an edge along a user plane is drawn, one along a frustum
+                * plane is not (NVIDIA's behaviour, says Mesa) */
+               if (user_plane) {
+                  *new_edge = true;
+                  nv->edge = true;
+               } else {
+                  *new_edge = edge_prev;
+                  nv->edge = false;
+               }
+            } else {
+               /* coming back in: the starting vertex's edge flag */
+               if (-dp_prev < dp)
+                  interp(c, nv, -dp_prev / denom, vert_prev, vert);
+               else
+                  interp(c, nv, dp / denom, vert, vert_prev);
+               nv->edge = vert_prev->edge;
+               *new_edge = edge_prev;
+            }
+            if (c->new_vertex)
+               c->new_vertex(c->data, nv, p->ntmp - 1);
+         }
+         vert_prev = vert;
+         edge_prev = edge;
+         dp_prev = dp;
+      }
+
+      const struct t_vertex **t = inlist;
+      inlist = outlist;
+      outlist = t;
+      bool *te = in_edges;
+      in_edges = out_edges;
+      out_edges = te;
+      n = outcount;
+   }
+
+   if (inlist != p->v) {
+      memcpy(p->v, inlist, n * sizeof(p->v[0]));
+      memcpy(p->edge, in_edges, n * sizeof(p->edge[0]));
+   }
+   p->n = n;
 }
 
 /* GL_SELECT, GL_FEEDBACK: the feedback draw context's clip stage
@@ -115,6 +228,27 @@ void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned 
    }
 }
 
+static void feedback_new_vertex(void *data, struct t_vertex *v, unsigned slot)
+{
+   t_feedback_clip_slot(data, v, slot, true);
+}
+
+/* The vertex stage's clipper: the context's user planes and viewport and
+ * the draw's varyings, with the feedback vertex's texture coordinate
+ * (t_vertex.c), a perspective attribute like the colours. */
+static void clipper_init(const struct fgl_context *ctx, struct t_clipper *c)
+{
+   const int nattr = ctx->_Raster.fs->num_attribs;
+   c->user_planes = (const float (*)[4])ctx->_ClipUserPlane;
+   c->scale = ctx->_ViewportScale;
+   c->translate = ctx->_ViewportTranslate;
+   c->attrs = (1u << nattr) - 1u;
+   if (ctx->RenderMode == GL_FEEDBACK)
+      c->attrs |= 1u << R_ATTR_TEX0;
+   c->new_vertex = NULL;
+   c->data = NULL;
+}
+
 /* The unclipped triangle's flags with the edges of vertices whose edge
  * flag is off removed (unfilled draws an edge when both are set). */
 static inline unsigned edge_flags(unsigned flags, const struct t_vertex *v0,
@@ -129,143 +263,60 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
                      unsigned flags)
 {
    const struct r_state *rs = &ctx->_Raster;
-   unsigned clipmask = v0->mask | v1->mask | v2->mask;
 
    if (!pipeline) {
       /* straight to llvmpipe (nothing in the segment needs clipping) */
       fgl_raster_triangle(ctx, rs, &v0->r, &v1->r, &v2->r);
       return;
    }
-   if (clipmask == 0) {
+   if ((v0->mask | v1->mask | v2->mask) == 0) {
       t_draw_pipe_tri(ctx, &v0->r, &v1->r, &v2->r, edge_flags(flags, v0, v1, v2));
       return;
    }
-   if (v0->mask & v1->mask & v2->mask)
-      return; /* entirely outside one plane */
 
-   struct t_vertex tmp[MAX_CLIPPED_VERTICES + 2];
-   unsigned tmpnr = 0;
-   const struct t_vertex *a[MAX_CLIPPED_VERTICES + 1], *b[MAX_CLIPPED_VERTICES + 1];
-   const struct t_vertex **inlist = a, **outlist = b;
-   /* [S: draw_pipe_clip.c:do_clip_tri] the header's edge bits follow the
-    * polygon as it is clipped: edge k starts at vertex k */
-   bool ea[MAX_CLIPPED_VERTICES + 1], eb[MAX_CLIPPED_VERTICES + 1];
-   bool *in_edges = ea, *out_edges = eb;
-   unsigned n = 3;
-   inlist[0] = v0;
-   inlist[1] = v1;
-   inlist[2] = v2;
-   in_edges[0] = (flags & T_EDGE_0) != 0;
-   in_edges[1] = (flags & T_EDGE_1) != 0;
-   in_edges[2] = (flags & T_EDGE_2) != 0;
-
-   while (clipmask && n >= 3) {
-      const int plane_idx = __builtin_ctz(clipmask);
-      const bool user_plane = plane_idx >= 6;
-      const float *plane = t_clip_plane(ctx, plane_idx);
-      const struct t_vertex *vert_prev = inlist[0];
-      bool edge_prev = in_edges[0];
-      float dp_prev = dot4(vert_prev->clip, plane);
-      unsigned outcount = 0;
-
-      clipmask &= ~(1u << plane_idx);
-      if (!isfinite(dp_prev) || n >= MAX_CLIPPED_VERTICES)
-         return;
-      inlist[n] = inlist[0];
-      in_edges[n] = in_edges[0];
-
-      for (unsigned i = 1; i <= n; i++) {
-         const struct t_vertex *vert = inlist[i];
-         const bool edge = in_edges[i];
-         const float dp = dot4(vert->clip, plane);
-         bool different_sign;
-
-         if (!isfinite(dp))
-            return;
-         if (dp_prev >= 0.0f) {
-            if (outcount >= MAX_CLIPPED_VERTICES)
-               return;
-            out_edges[outcount] = edge_prev;
-            outlist[outcount++] = vert_prev;
-            different_sign = dp < 0.0f;
-         } else {
-            different_sign = !(dp < 0.0f);
-         }
-
-         if (different_sign) {
-            if (tmpnr >= MAX_CLIPPED_VERTICES + 1 || outcount >= MAX_CLIPPED_VERTICES)
-               return;
-            struct t_vertex *nv = &tmp[tmpnr++];
-            bool *new_edge = &out_edges[outcount];
-            outlist[outcount++] = nv;
-            const float denom = dp - dp_prev;
-            if (dp < 0.0f) {
-               /* going out */
-               if (-dp < dp_prev)
-                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->fs->num_attribs);
-               else
-                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->fs->num_attribs);
-               /* an edge along a user plane is drawn, one along a frustum
-                * plane is not (NVIDIA's behaviour, says Mesa) */
-               if (user_plane) {
-                  *new_edge = true;
-                  nv->edge = true;
-               } else {
-                  *new_edge = edge_prev;
-                  nv->edge = false;
-               }
-            } else {
-               /* coming back in: the starting vertex's edge flag */
-               if (-dp_prev < dp)
-                  interp(ctx, nv, -dp_prev / denom, vert_prev, vert, rs->fs->num_attribs);
-               else
-                  interp(ctx, nv, dp / denom, vert, vert_prev, rs->fs->num_attribs);
-               nv->edge = vert_prev->edge;
-               *new_edge = edge_prev;
-            }
-            if (ctx->RenderMode != GL_RENDER)
-               t_feedback_clip_slot(ctx, nv, tmpnr - 1, true);
-         }
-         vert_prev = vert;
-         edge_prev = edge;
-         dp_prev = dp;
-      }
-
-      const struct t_vertex **t = inlist;
-      inlist = outlist;
-      outlist = t;
-      bool *te = in_edges;
-      in_edges = out_edges;
-      out_edges = te;
-      n = outcount;
+   struct t_clipper c;
+   clipper_init(ctx, &c);
+   if (ctx->RenderMode != GL_RENDER) {
+      c.new_vertex = feedback_new_vertex;
+      c.data = ctx;
    }
-
+   struct t_clip_poly p;
+   p.n = 3;
+   p.v[0] = v0;
+   p.v[1] = v1;
+   p.v[2] = v2;
+   p.edge[0] = (flags & T_EDGE_0) != 0;
+   p.edge[1] = (flags & T_EDGE_1) != 0;
+   p.edge[2] = (flags & T_EDGE_2) != 0;
+   p.ntmp = 0;
+   t_clip_polygon(&c, &p);
+   const unsigned n = p.n;
    if (n < 3)
       return;
 
    /* flat attributes of the provoking vertex go to P[0] */
-   if (rs->flat_mask && inlist[0] != v2) {
-      struct t_vertex *p0 = &tmp[tmpnr++];
-      *p0 = *inlist[0];
+   if (rs->flat_mask && p.v[0] != v2) {
+      struct t_vertex *p0 = &p.tmp[p.ntmp++];
+      *p0 = *p.v[0];
       t_copy_flat(rs, &p0->r, &v2->r);
-      inlist[0] = p0;
+      p.v[0] = p0;
       if (ctx->RenderMode != GL_RENDER)
-         t_feedback_clip_slot(ctx, p0, tmpnr - 1, false);   /* dup_vert */
+         t_feedback_clip_slot(ctx, p0, p.ntmp - 1, false);   /* dup_vert */
    }
 
    /* [S: draw_pipe_clip.c:emit_poly] the fan (P[i-1], P[i], P[0]): the
     * first triangle restarts the stipple and carries the edge P[0]->P[1]
     * (its edge 2), each the edge P[i-1]->P[i] (edge 0), the last also
     * P[n-1]->P[0] (edge 1) */
-   const unsigned edge_first = in_edges[0] ? T_EDGE_2 : 0u;
+   const unsigned edge_first = p.edge[0] ? T_EDGE_2 : 0u;
    unsigned tri_flags = T_RESET_STIPPLE | edge_first | T_EDGE_0;
    for (unsigned i = 2; i < n; i++, tri_flags = T_EDGE_0) {
-      if (!in_edges[i - 1])
+      if (!p.edge[i - 1])
          tri_flags &= ~T_EDGE_0;
-      if (i == n - 1 && in_edges[i])
+      if (i == n - 1 && p.edge[i])
          tri_flags |= T_EDGE_1;
-      t_draw_pipe_tri(ctx, &inlist[i - 1]->r, &inlist[i]->r, &inlist[0]->r,
-                   edge_flags(tri_flags, inlist[i - 1], inlist[i], inlist[0]));
+      t_draw_pipe_tri(ctx, &p.v[i - 1]->r, &p.v[i]->r, &p.v[0]->r,
+                      edge_flags(tri_flags, p.v[i - 1], p.v[i], p.v[0]));
    }
 }
 
@@ -306,12 +357,14 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
 
    /* new ends interpolated from the end they replace towards the other,
     * with the provoking (second) vertex's flat attributes */
+   struct t_clipper c;
+   clipper_init(ctx, &c);
    if (v0->mask) {
-      interp(ctx, &out[0], t0, v0, v1, rs->fs->num_attribs);
+      interp(&c, &out[0], t0, v0, v1);
       t_copy_flat(rs, &out[0].r, &v1->r);
    }
    if (v1->mask) {
-      interp(ctx, &out[1], t1, v1, v0, rs->fs->num_attribs);
+      interp(&c, &out[1], t1, v1, v0);
       t_copy_flat(rs, &out[1].r, &v1->r);
    }
    return true;

@@ -145,8 +145,70 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsi
  * volume (x > w, x < -w, y > w, y < -w, z < -w, z > w), 6 + i the enabled
  * user plane i in clip space.  t_clip_dist is the clip stage's distance
  * (a C dot product, left to right; inside iff >= 0). */
-const float *t_clip_plane(const struct fgl_context *ctx, unsigned plane_idx);
 float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned plane_idx);
+
+/* The view-volume outcodes of a clip-space position: bit 0 x > w, 1
+ * x + w < 0, 2 y > w, 3 y + w < 0, 4 z + w < 0, 5 z > w.  A point on a
+ * boundary is inside.  The comparisons are unordered
+ * [S: draw_llvm.c:generate_clipmask, lp_build_compare: LLVMRealUGT], so a
+ * NaN coordinate sets the bits of the planes it enters (a point there is
+ * dropped, a line or triangle discarded by the clip stage's NaN test).
+ * User planes add bits 6 + i (t_vertex.c). */
+static inline unsigned t_clip_mask(const float p[4])
+{
+   unsigned m = 0;
+   if (!(p[0] <= p[3]))        m |= 1u << 0;
+   if (!(0.0f <= p[0] + p[3])) m |= 1u << 1;
+   if (!(p[1] <= p[3]))        m |= 1u << 2;
+   if (!(0.0f <= p[1] + p[3])) m |= 1u << 3;
+   if (!(0.0f <= p[2] + p[3])) m |= 1u << 4;
+   if (!(p[2] <= p[3]))        m |= 1u << 5;
+   return m;
+}
+
+/* The polygon clipper of draw's clip stage (t_clip.c; draw_pipe_clip.c
+ * do_clip_tri, interp), free of GL: what it needs of the draw is here. */
+struct t_clipper {
+   /* planes 6 + i: user plane i in clip space (read only for the outcode
+    * bits 6 + i the vertices carry) */
+   const float (*user_planes)[4];
+   /* the viewport of a new vertex's window position */
+   const float *scale, *translate;
+   /* bit a: varying slot a is interpolated into a new vertex */
+   uint32_t attrs;
+   /* called with each new vertex and its index in t_clip_poly.tmp, or
+    * NULL */
+   void (*new_vertex)(void *data, struct t_vertex *v, unsigned slot);
+   void *data;
+};
+
+/* As Mesa's clipper, with 8 user planes. */
+#define T_MAX_CLIPPED_VERTICES (2 * (6 + 8) + 1)
+
+/* A polygon being clipped: its n vertices (v[0..n-1], the first three
+ * set by the caller), the polygon edges that start at each (edge[k]: the
+ * edge v[k] -> v[k+1], the prim_header's flags), and the storage of the
+ * vertices the clipper makes (tmp[0..ntmp-1]; the caller may append). */
+struct t_clip_poly {
+   unsigned n;
+   const struct t_vertex *v[T_MAX_CLIPPED_VERTICES + 1];
+   bool edge[T_MAX_CLIPPED_VERTICES + 1];
+   unsigned ntmp;
+   struct t_vertex tmp[T_MAX_CLIPPED_VERTICES + 2];
+};
+
+/* Clips the triangle p->v[0..2] (p->n = 3, p->edge set) against every
+ * plane some vertex's outcode (t_vertex.mask) names, in bit order
+ * (Sutherland-Hodgman, inside iff the distance is >= 0): a new vertex is
+ * interpolated from whichever end is inside the plane by the larger
+ * margin, as out + t * (in - out) for the clip position and the `attrs`
+ * slots, gets its window position in plain C without FMA and outcode 0;
+ * a new edge along a view-volume plane is hidden, along a user plane
+ * drawn.  Afterwards p->v[0..p->n-1] is the polygon, to be fanned as
+ * (P[i-1], P[i], P[0]); p->n < 3 when nothing is left: every vertex
+ * outside one plane, a NaN or infinite plane distance, or too many
+ * vertices.  A triangle inside every plane comes back as it went in. */
+void t_clip_polygon(const struct t_clipper *c, struct t_clip_poly *p);
 
 /* The draw stages after clipping for one triangle in window coordinates
  * (t_draw_pipe.c): cull, twoside, offset, flatshade, unfilled, the line

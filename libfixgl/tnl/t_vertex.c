@@ -18,23 +18,6 @@
 #include "context.h"
 #include "tnl/t_light.h"
 
-/* Outcodes: bit0 x>w, bit1 x+w<0, bit2 y>w, bit3 y+w<0, bit4 z+w<0, bit5 z>w.
- * A point on a boundary is inside.  The comparisons are unordered
- * [S: draw_llvm.c:generate_clipmask, lp_build_compare: LLVMRealUGT], so a
- * NaN coordinate sets the bits of the planes it enters (a point there is
- * dropped, a line or triangle discarded by the clip stage's NaN test). */
-static inline unsigned clip_mask(const float *p)
-{
-   unsigned m = 0;
-   if (!(p[0] <= p[3]))        m |= 1u << 0;
-   if (!(0.0f <= p[0] + p[3])) m |= 1u << 1;
-   if (!(p[1] <= p[3]))        m |= 1u << 2;
-   if (!(0.0f <= p[1] + p[3])) m |= 1u << 3;
-   if (!(0.0f <= p[2] + p[3])) m |= 1u << 4;
-   if (!(p[2] <= p[3]))        m |= 1u << 5;
-   return m;
-}
-
 /* User planes: bit 6 + i when the plane distance is negative, the distance
  * computed as a chain of fused multiply-adds in component order
  * [S: draw/draw_llvm.c:generate_clipmask (lp_build_fmuladd)]; unordered
@@ -88,7 +71,7 @@ static inline void transform_positions(const struct fgl_context *ctx,
       if (clear_bytes)
          memset(v->r.attr, 0, clear_bytes);
       t_mul_mad_chain(v->clip, m, p);
-      v->mask = clip_mask(v->clip);
+      v->mask = t_clip_mask(v->clip);
       if (ctx->Transform.ClipPlanesEnabled)
          v->mask |= user_clip_mask(ctx, v->clip);
 
