@@ -3,9 +3,9 @@
  * state_tracker/st_cb_bitmap.c, st_cb_drawpixels.c].
  *
  * The oracle draws each as a texture plus a screen-aligned quad whose
- * fragment shader samples it (raster/r_pixels.c).  This file validates,
- * builds the texture exactly as the state tracker fills it, and places
- * the quad:
+ * fragment shader samples it (the quad: tnl/t_pixels.c; its fragments:
+ * raster/r_pixels.c).  This file validates, builds the texture exactly
+ * as the state tracker fills it, and places the quad:
  *  - glBitmap: the bitmap is expanded into the state tracker's 512x32
  *    bitmap cache (0 where a bit is set, 0xff elsewhere), which is drawn
  *    later, as one quad, with the raster colour and depth of its first
@@ -28,6 +28,7 @@
 #include "main/pixelformat.h"
 #include "main/groups.h"
 #include "fgl_alloc.h"
+#include "tnl/t_pipeline.h"
 
 #define BITMAP_CACHE_WIDTH  512
 #define BITMAP_CACHE_HEIGHT 32
@@ -60,8 +61,8 @@ static int sub_wrap(int a, int b)
 
 /* The window-buffer orientation: the oracle renders y-down; the quads
  * are placed in GL's y-up window coordinates and the viewport flips
- * them (r_pixels.c). */
-static void quad_init(struct r_pixel_quad *q, const struct fgl_framebuffer *fb, float z,
+ * them (t_pixels.c). */
+static void quad_init(struct t_pixel_quad *q, const struct fgl_framebuffer *fb, float z,
                       const float color[4])
 {
    memset(q, 0, sizeof(*q));
@@ -197,7 +198,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
    };
    pixel_texcoords(ctx, &img, varying, true);
-   struct r_pixel_quad q;
+   struct t_pixel_quad q;
    memset(&q, 0, sizeof(q));
    q.fb_width = fb_w;
    q.fb_height = fb_h;
@@ -213,7 +214,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
     * the y1 corners */
    q.t_y1 = 1.0f;
    q.t_y0 = 0.0f;
-   r_pixel_rect(rs, &img, &q);
+   t_pixel_rect(rs, &img, &q);
 }
 
 void fgl_flush_bitmap_cache(struct fgl_context *ctx)
@@ -868,7 +869,7 @@ static bool clip_drawpixels(const struct fgl_context *ctx, int *x, int *y, int *
  * draw_textured_quad]: x1 = x + width * zoomX, y1 = y + height * zoomY
  * (float), texture coordinates 0..1; `invert` (glCopyPixels, whose
  * texture is y-down): t = 0 at the y1 edge. */
-static void textured_quad(const struct fgl_context *ctx, struct r_pixel_quad *q, int x, int y,
+static void textured_quad(const struct fgl_context *ctx, struct t_pixel_quad *q, int x, int y,
                           int width, int height, bool invert)
 {
    q->x0 = (float)x;
@@ -1035,7 +1036,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
 
    struct r_pixel_image img = { .width = width, .height = height, .texels = texels,
                                 .mask = mask };
-   struct r_pixel_quad q;
+   struct t_pixel_quad q;
    quad_init(&q, fb, ctx->Current.RasterPos[2], ctx->Current.RasterColor);
    textured_quad(ctx, &q, x, y, width, height, false);
    struct r_state rs = ctx->_Raster;
@@ -1054,7 +1055,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
       color_transfer(ctx, &img);
    }
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
-   r_pixel_rect(&rs, &img, &q);
+   t_pixel_rect(&rs, &img, &q);
    if (owned) {
       fgl_free(texels);
       fgl_free(mask);
@@ -1321,7 +1322,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    }
 
    struct r_pixel_image img = { .width = width, .height = height, .texels = t, .mask = s };
-   struct r_pixel_quad q;
+   struct t_pixel_quad q;
    /* the quad's colour is the current colour, which the depth and
     * stencil shaders pass on */
    fgl_flush_current(ctx);
@@ -1350,7 +1351,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
          fb->ColorDefined = true;
    }
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
-   r_pixel_rect(&rs, &img, &q);
+   t_pixel_rect(&rs, &img, &q);
    fgl_free(t);
    fgl_free(s);
 }

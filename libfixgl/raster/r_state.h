@@ -508,9 +508,9 @@ struct r_state {
     * is flushed after the first filled triangle of a draw (t_linepoint.c
     * t_vbuf_flush); the same kill as triangles' */
    bool stipple_points_lines;
-   /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c): the state
-    * tracker's textured quad replaces the fragment shader; NULL for every
-    * other primitive */
+   /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c, drawn by
+    * tnl/t_pixels.c): the state tracker's textured quad replaces the
+    * fragment shader; NULL for every other primitive */
    const struct r_pixel_image *pix;
    /* the benchmark's counters, or NULL (the usual case) */
    struct r_stats *stats;
@@ -588,23 +588,6 @@ struct r_pixel_image {
    unsigned tex_quad;
    float tex_const[R_MAX_TEX_UNITS][4];
 };
-
-/* A pixel rectangle drawn as the state tracker's textured quad
- * (st_draw_quad through the passthrough vertex shader): corners x0..x1,
- * y0..y1 in GL window coordinates (y up) of a fb_width x fb_height
- * buffer, window depth z, a constant colour, texture coordinates s0..s1
- * and t at y0 (t_y0) and y1 (t_y1). */
-struct r_pixel_quad {
-   float x0, y0, x1, y1, z;
-   int fb_width, fb_height;
-   float color[4];
-   float s0, s1, t_y0, t_y1;
-};
-
-/* Draws the quad with `pix` sampled per fragment, through the triangle
- * rasterizer and r_fragment_ops (r_pixels.c). */
-void r_pixel_rect(const struct r_state *rs, const struct r_pixel_image *pix,
-                  const struct r_pixel_quad *q);
 
 /* The fragment stage of a pixel rectangle: fragment (px, py) with the
  * interpolated inputs and depth (r_tri.c calls it instead of the

@@ -23,7 +23,8 @@
  * it needs of the draw in a struct t_clipper (the user planes, the
  * viewport, the varyings to interpolate).  t_clip_triangle builds one
  * from the context and sends every resulting triangle on to
- * t_draw_pipe_tri (t_draw_pipe.c), the draw stages after clipping.
+ * t_draw_pipe_tri (t_draw_pipe.c), the draw stages after clipping; the
+ * pixel rectangles' quads (t_pixels.c) build their own.
  *
  * Lines are clipped parametrically (do_clip_line): each end that is outside
  * moves to the largest exit parameter over the planes (user planes

@@ -167,7 +167,9 @@ static inline unsigned t_clip_mask(const float p[4])
 }
 
 /* The polygon clipper of draw's clip stage (t_clip.c; draw_pipe_clip.c
- * do_clip_tri, interp), free of GL: what it needs of the draw is here. */
+ * do_clip_tri, interp), free of GL: what it needs of the draw is here.
+ * Triangles of the vertex stage and the quads of pixel rectangles
+ * (t_pixels.c) go through it. */
 struct t_clipper {
    /* planes 6 + i: user plane i in clip space (read only for the outcode
     * bits 6 + i the vertices carry) */
@@ -272,6 +274,27 @@ void t_feedback_reset_stipple(struct fgl_context *ctx);
  * slot held, when stale_flat: a vertex made by interpolation). */
 void t_feedback_clip_slot(struct fgl_context *ctx, struct t_vertex *v, unsigned slot,
                           bool stale_flat);
+
+/* A pixel rectangle (glBitmap, glDrawPixels, glCopyPixels) as the state
+ * tracker's textured quad (st_draw_quad through the passthrough vertex
+ * shader): corners x0..x1, y0..y1 in GL window coordinates (y up) of a
+ * fb_width x fb_height buffer, window depth z, a constant colour,
+ * texture coordinates s0..s1 and t at y0 (t_y0) and y1 (t_y1). */
+struct t_pixel_quad {
+   float x0, y0, x1, y1, z;
+   int fb_width, fb_height;
+   float color[4];
+   float s0, s1, t_y0, t_y1;
+};
+
+/* Draws the quad q with `pix` sampled per fragment (t_pixels.c): its
+ * corners in clip space, clipped by t_clip_polygon when one is outside
+ * the view volume, the triangles to r_triangle under the quad's own
+ * rasterizer state (rs's scissor, framebuffer and fragment operations),
+ * each fragment shaded by r_pixel_fragment.  Draws directly: the caller
+ * flushes the tile scene first. */
+void t_pixel_rect(const struct r_state *rs, const struct r_pixel_image *pix,
+                  const struct t_pixel_quad *q);
 
 /* Draw a batch of immediate-mode primitives. */
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
