@@ -274,6 +274,8 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
       t_draw_pipe_tri(ctx, &v0->r, &v1->r, &v2->r, edge_flags(flags, v0, v1, v2));
       return;
    }
+   if (v0->mask & v1->mask & v2->mask)
+      return; /* entirely outside one plane: not worth a clipper */
 
    struct t_clipper c;
    clipper_init(ctx, &c);
