@@ -757,11 +757,11 @@ static void upload_1d(fc_h *h)
             glPixelStorei(GL_UNPACK_ROW_LENGTH, 9);
         }
         for (size_t k = 0; k < sizeof(src) / sizeof(src[0]); k++) {
+            if (s == 1 && src[k].format == GL_COLOR_INDEX)
+                continue;   /* the colour-index image addressed twice reads past it */
             const size_t size = 8 * 4 * 48 * 24;
             unsigned char *img = client_image(size, src[k].type, 1300u + (unsigned)k);
             unsigned char back[TW * 4 + 64];
-            if (s == 1 && src[k].format == GL_COLOR_INDEX)
-                continue;   /* the colour-index image addressed twice reads past it */
             memset(back, FILL, sizeof(back));
             snprintf(label, sizeof(label), "1D %d format %#x type %#x", s, src[k].format,
                      src[k].type);
