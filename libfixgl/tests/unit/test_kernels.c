@@ -34,8 +34,9 @@
  * degenerate, redrawn at equal depths), lines, line strips and loops
  * (widths 1 to 8, whole and fractional; anywhere, or from pixel centre to
  * pixel centre in every orientation, axis-aligned and diagonal ones
- * included), points (sizes 1 to 16, whole and fractional), vertex arrays, and a few glDrawPixels (colour, depth, stencil),
- * glBitmap and glCopyPixels.  The internal colour, depth and stencil
+ * included), points (sizes 1 to 16, whole and fractional), vertex arrays,
+ * and a few glDrawPixels (colour, depth, stencil), glBitmap and
+ * glCopyPixels.  The internal colour, depth and stencil
  * buffers of the two contexts are then compared byte for byte.
  *
  * Nothing here depends on which kernels exist: the comparison covers any
@@ -246,7 +247,8 @@ static any_kernel kernel_of(const struct r_state *rs, int kind)
    case KIND_LINE_SMOOTH: return (any_kernel)rs->line_kernel[0];
    case KIND_LINE_FLAT:   return (any_kernel)rs->line_kernel[1];
    /* a point's inputs are all flat (r_point.c) */
-   case KIND_POINT:       return (any_kernel)rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
+   case KIND_POINT:
+      return (any_kernel)rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
    default:               return NULL;
    }
 }
@@ -1667,7 +1669,7 @@ static void print_rs(const struct r_state *rs)
            "%d %d colour %u %u %u %u | logic %d %u | colour mask 0x%x dst_alpha_one %d\n"
            "  fs_inputs 0x%x flat_mask 0x%x colour sum %d twoside %d fog %d aa %d stipple %d "
            "phong %d (models %d %d) tex_units 0x%x tex_nr %d pix %d | offset %.9g %.9g | "
-           "tri kernels %p %p\n",
+           "tri kernels %p %p line kernels %p %p\n",
            rs->fb->zs_format, rs->dsa->depth_test, rs->dsa->depth_func, rs->dsa->depth_write, rs->full_ops,
            rs->dsa->alpha_test, rs->dsa->alpha_func, rs->dsa->alpha_ref, rs->dsa->stencil_test, rs->dsa->stencil_func,
            rs->dsa->stencil_ref, rs->dsa->stencil_valuemask, rs->dsa->stencil_writemask, rs->dsa->stencil_fail,
@@ -1678,7 +1680,8 @@ static void print_rs(const struct r_state *rs)
            rs->rast->stipple, rs->fs->phong, rs->shade_env ? (int)rs->shade_env->material[0].model : -1,
            rs->shade_env ? (int)rs->shade_env->material[1].model : -1,
            rs->fs->tex_units, rs->fs->tex_nr, rs->pix != NULL, rs->rast->offset_units, rs->rast->offset_scale,
-           (void *)(uintptr_t)rs->tri_kernel[0], (void *)(uintptr_t)rs->tri_kernel[1]);
+           (void *)(uintptr_t)rs->tri_kernel[0], (void *)(uintptr_t)rs->tri_kernel[1],
+           (void *)(uintptr_t)rs->line_kernel[0], (void *)(uintptr_t)rs->line_kernel[1]);
    for (int u = 0; u < rs->fs->tex_nr; u++)
       if (rs->fs->tex_units & (1u << u))
          fprintf(stderr,
