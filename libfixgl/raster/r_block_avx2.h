@@ -71,15 +71,16 @@ static ALWAYS_INLINE void block_cover_offsets(const struct r_tri_cover *cv,
 /* The coverage mask of a 4x4 block, shared by triangles, lines and points:
  * bit 4j + i set when pixel (x + i, y + j) has every edge value >= 0, c[e]
  * the edge values at (x, y) (the edges past r_tri_cover.n are 0 with zero
- * steps: always inside). */
+ * steps: always inside).  four: the fourth edge is tested (a line's; a
+ * triangle's three, and a point's none, leave it out). */
 static ALWAYS_INLINE unsigned r_block_cover(const int32_t c[R_COVER_EDGES],
-                                            __m256i eoff[R_COVER_EDGES][2])
+                                            __m256i eoff[R_COVER_EDGES][2], bool four)
 {
    const __m256i minus1 = _mm256_set1_epi32(-1);
    unsigned mask = 0;
    for (int h = 0; h < 2; h++) {
       __m256i in = minus1;
-      for (int e = 0; e < R_COVER_EDGES; e++) {
+      for (int e = 0; e < (four ? R_COVER_EDGES : 3); e++) {
          const __m256i v = _mm256_add_epi32(_mm256_set1_epi32(c[e]), eoff[e][h]);
          in = _mm256_and_si256(in, _mm256_cmpgt_epi32(v, minus1));
       }

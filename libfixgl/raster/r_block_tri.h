@@ -69,6 +69,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    /* the edge functions' offsets of the lanes of the two halves */
    __m256i eoff[R_COVER_EDGES][2];
    block_cover_offsets(cv, eoff);
+   const bool four = cv->n > 3;
 
    struct block_stage stage;
    block_stage_prepare(rs, ts, variant, &stage);
@@ -130,7 +131,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
          c[e] = rowc[e] + (first - bx0) * cv->dx[e];
       for (int32_t bx = first; bx <= last; bx += 4) {
          /* coverage */
-         unsigned mask = r_block_cover(c, eoff);
+         unsigned mask = r_block_cover(c, eoff, four);
          for (int e = 0; e < R_COVER_EDGES; e++)
             c[e] += 4 * cv->dx[e];
          /* cut to the box's rows and, in its first and last block
