@@ -71,16 +71,15 @@ static ALWAYS_INLINE void block_cover_offsets(const struct r_tri_cover *cv,
 /* The coverage mask of a 4x4 block, shared by triangles, lines and points:
  * bit 4j + i set when pixel (x + i, y + j) has every edge value >= 0, c[e]
  * the edge values at (x, y) (the edges past r_tri_cover.n are 0 with zero
- * steps: always inside).  four: the fourth edge is tested (a line's; a
- * triangle's three, and a point's none, leave it out). */
+ * steps: always inside). */
 static ALWAYS_INLINE unsigned r_block_cover(const int32_t c[R_COVER_EDGES],
-                                            __m256i eoff[R_COVER_EDGES][2], bool four)
+                                            __m256i eoff[R_COVER_EDGES][2])
 {
    const __m256i minus1 = _mm256_set1_epi32(-1);
    unsigned mask = 0;
    for (int h = 0; h < 2; h++) {
       __m256i in = minus1;
-      for (int e = 0; e < (four ? R_COVER_EDGES : 3); e++) {
+      for (int e = 0; e < R_COVER_EDGES; e++) {
          const __m256i v = _mm256_add_epi32(_mm256_set1_epi32(c[e]), eoff[e][h]);
          in = _mm256_and_si256(in, _mm256_cmpgt_epi32(v, minus1));
       }
@@ -97,7 +96,8 @@ static ALWAYS_INLINE int64_t block_floor_div(int64_t a, int64_t b)
 
 /* The blocks of one block row that may hold a covered pixel: those at
  * *first .. *last (block x, multiples of 4 from bx0, the row's first),
- * narrowed from the whole row, false when there is none.  rowc[e]: the
+ * narrowed from the whole row (of five blocks or more), false when there
+ * is none.  rowc[e]: the
  * edge values at the row's first block.  An edge's largest value over
  * the block k blocks along is rowc + 4k dx + max(0, 3 dx) + max(0, 3 dy)
  * (the values are linear over the block and fit in 32 bits: r_cover_planes),
@@ -110,8 +110,6 @@ static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
                                          int32_t *first, int32_t *last)
 {
    int64_t kmax = (cv->x1 - bx0) >> 2;
-   if (kmax < 4)
-      return true;
    int64_t kmin = 0;
    for (int e = 0; e < R_COVER_EDGES; e++) {
       const int64_t dx = cv->dx[e], dy = cv->dy[e];

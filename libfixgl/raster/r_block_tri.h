@@ -32,7 +32,7 @@
 
 /*
  * r_block_tri.h: the block walk of triangles, lines and points (their
- * r_tri_cover: up to four edges over a box), a template.  The including file
+ * r_tri_cover: up to three edges over a box), a template.  The including file
  * defines, before including it:
  *   struct block_stage                 per-triangle constants of its stage
  *   block_stage_prepare(rs, ts, variant, &stage)
@@ -69,7 +69,6 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    /* the edge functions' offsets of the lanes of the two halves */
    __m256i eoff[R_COVER_EDGES][2];
    block_cover_offsets(cv, eoff);
-   const bool four = cv->n > 3;
 
    struct block_stage stage;
    block_stage_prepare(rs, ts, variant, &stage);
@@ -91,6 +90,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    int32_t rowc[R_COVER_EDGES];
    for (int e = 0; e < R_COVER_EDGES; e++)
       rowc[e] = cv->c[e] + (bx0 - cv->ox) * cv->dx[e] + (by0 - cv->oy) * cv->dy[e];
+   /* rows of five blocks or more are narrowed to the blocks the edges
+    * allow (block_row_span) */
+   const bool wide = cv->x1 - bx0 >= 16;
 
    /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
     * are asked for ahead of their use (a triangle touches a few pixels of
@@ -121,7 +123,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             rows |= 0xfu << (4 * j);
       /* the row's blocks that may hold a covered pixel */
       int32_t first = bx0, last = cv->x1;
-      if (!block_row_span(cv, rowc, bx0, &first, &last)) {
+      if (wide && !block_row_span(cv, rowc, bx0, &first, &last)) {
          for (int e = 0; e < R_COVER_EDGES; e++)
             rowc[e] += 4 * cv->dy[e];
          continue;
@@ -131,7 +133,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
          c[e] = rowc[e] + (first - bx0) * cv->dx[e];
       for (int32_t bx = first; bx <= last; bx += 4) {
          /* coverage */
-         unsigned mask = r_block_cover(c, eoff, four);
+         unsigned mask = r_block_cover(c, eoff);
          for (int e = 0; e < R_COVER_EDGES; e++)
             c[e] += 4 * cv->dx[e];
          /* cut to the box's rows and, in its first and last block

@@ -56,19 +56,20 @@ struct r_tri_setup {
    bool phong_back;
 };
 
-/* Coverage of a primitive for the block kernels: up to four edge
- * functions (n of them: 3 for a triangle, the 4 sides of a line's
- * parallelogram, none for a point, whose square is its box), each the
+/* Coverage of a primitive for the block kernels: up to three edge
+ * functions (n of them: 3 for a triangle, the two long sides of a line's
+ * parallelogram, whose ends are sides of its box (r_line.c), none for a
+ * point, whose square is its box), each the
  * primitive's exact 64-bit edge function reduced by FIXED_ORDER (as
  * lp_rast_tri_tmp.h's 4x4 level reduces them), relative to the origin
  * (ox, oy), a multiple of 4:
  *    v_e(x, y) = c[e] + (x - ox) * dx[e] + (y - oy) * dy[e]
  * is floor((C_e(x, y) - 1) / 256) for the exact 64-bit edge value C_e, so
  * pixel (x, y) of the box is covered exactly when every v_e >= 0.  The
- * edges past n are (0, 0, 0), always inside, so that the walk tests four
+ * edges past n are (0, 0, 0), always inside, so that the walk tests three
  * (r_block_cover).  r_cover_planes builds it only when every v_e over the
  * box fits in 32 bits. */
-#define R_COVER_EDGES 4
+#define R_COVER_EDGES 3
 struct r_tri_cover {
    int32_t ox, oy;
    int n;                   /* edges of the primitive, 0..R_COVER_EDGES */

@@ -170,7 +170,8 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    bool draw_start, draw_end;
    int32_t x[4], y[4];
 
-   if (fabsf(dx) >= fabsf(dy)) {
+   const bool x_major = fabsf(dx) >= fabsf(dy);
+   if (x_major) {
       /* x-major */
       const float dydx = dy / dx;
       if (y2diff == -0.5f && dy < 0)
@@ -415,15 +416,31 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
       p[i] = (struct r_plane){ .c = c[i], .dcdx = (int32_t)dcdx[i], .dcdy = (int32_t)dcdy[i] };
    }
 
-   /* the block kernel of the state, which covers exactly these pixels
-    * (r_tri.c, above rasterize_direct), unless the pstipple shader is
-    * bound: it kills per pixel */
+   /* The block kernel of the state, unless the pstipple shader is bound
+    * (it kills per pixel), with the two long sides (edges 0 and 2) for
+    * edges: the ends (edges 1 and 3) are sides of the box.  With F the
+    * width times 256 and X_a = x[0] = x[3], X_b = x[1] = x[2] of an
+    * x-major line, edge 3 is F * (X_a - 256 px) > 0, i.e.
+    * px < X_a / 256, and edge 1, -F * X_b + 1 + 256 F px > 0 (F >= 256),
+    * px >= X_b / 256; the box is ceil(xmin / 256) <= px <=
+    * ceil(xmax / 256) - 1, the same when X_b < X_a, and when X_b >= X_a
+    * the ends leave no pixel.  Of a y-major line (Y_a = y[0] = y[3],
+    * Y_b = y[1] = y[2]) edge 3 is py > Y_a / 256, edge 1 (its bias for a
+    * negative dcdy) py <= Y_b / 256, the box floor(ymin / 256) + 1 <= py
+    * <= floor(ymax / 256), the same when Y_a < Y_b.  So the pixels of the
+    * box with the two long sides positive are the line's (r_tri.c, above
+    * rasterize_direct). */
    const bool flat0 = (ls.inputs & (1u << R_FS_COLOR0)) && ls.flat_attr[R_FS_COLOR0];
    const r_tri_kernel kernel = rs->stipple_points_lines ? NULL : rs->line_kernel[flat0];
-   struct r_tri_cover cv;
-   if (kernel && r_cover_planes(p, 4, bx0, by0, bx1, by1, &cv)) {
-      kernel(rs, &ls, &cv);
-      return;
+   if (kernel) {
+      if (x_major ? x[1] >= x[0] : y[0] >= y[1])
+         return;   /* the ends cross: no pixel */
+      const struct r_plane sides[2] = { p[0], p[2] };
+      struct r_tri_cover cv;
+      if (r_cover_planes(sides, 2, bx0, by0, bx1, by1, &cv)) {
+         kernel(rs, &ls, &cv);
+         return;
+      }
    }
 
    for (int32_t py = by0; py <= by1; py++) {

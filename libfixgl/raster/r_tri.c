@@ -423,8 +423,10 @@ static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
  *    differences stay below 2^22) covers the pixels of its box whose four
  *    parallelogram edge values, built with the conventions above (constant
  *    dcdx * x - dcdy * y, the same fill bias, steps times 256), are all
- *    positive -- r_line.c's reference solves that set row by row -- so its
- *    r_cover_planes of the four edges is the same set; its attribute planes
+ *    positive -- r_line.c's reference solves that set row by row; its two
+ *    ends are axis-aligned and their tests are the box's bounds (shown in
+ *    r_line.c), so r_cover_planes of the two long sides over the box is the
+ *    same set; its attribute planes
  *    (line_coef) fill r_tri_setup as a triangle's would, evaluated by the
  *    same fma(dady, y, fma(dadx, x, a0)), and its texture quads are those
  *    planes at the quad's pixels, as r_line.c evaluates them;
