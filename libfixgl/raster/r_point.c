@@ -13,7 +13,7 @@
  *    for perspective-interpolated inputs, the vertex value premultiplied by
  *    its 1/w and divided by the (constant) interpolated 1/w again in the
  *    fragment shader ([S: lp_setup_point.c:point_persp_coeff]).
- * A point of more than one pixel is shaded by the state's block kernel
+ * A point of three pixels or more is shaded by the state's block kernel
  * (r_state.line_kernel, r_kernel.h) unless the pstipple shader is bound;
  * else, and for the reference kernels, pixel by pixel here.
  */
@@ -88,7 +88,7 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
    const bool phong_back = rs->fs->phong && rs->shade_env->two_side &&
                            v->attr[R_ATTR_NORMAL][3] == 0.0f;
 
-   /* A point wider than a pixel goes to the block kernel of the state
+   /* A point of three pixels or more goes to the block kernel of the state
     * (unless the pstipple shader is bound: it kills per pixel) as a
     * triangle whose inputs are all flat, each the value `in` holds, and
     * whose coverage is its box (r_cover_box): the kernel shades every
@@ -97,10 +97,9 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
     * derivatives, as `quad` below, so the same level of detail; lighting
     * the same inputs gives the same colour in every lane), and its depth
     * fma(0, y, fma(0, x, z)) + 0 is z but for the sign of a zero, which
-    * the depth conversion does not see.  (One-pixel points stay here: the
-    * kernel's setup costs more than the pixel.) */
-   const bool one_pixel = bx0 == bx1 && by0 == by1;
-   const r_tri_kernel kernel = one_pixel || rs->stipple_points_lines
+    * the depth conversion does not see.  (Points of one or two pixels stay
+    * here: for them the kernel's setup costs as much as it saves.) */
+   const r_tri_kernel kernel = n < 3 || rs->stipple_points_lines
                                   ? NULL
                                   : rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
    if (kernel) {

@@ -436,7 +436,7 @@ static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
  *    computes once for the whole point.
  * What a kernel cannot do stays with the reference: the pstipple kill of
  * points and lines (stipple_points_lines), lines and triangles that are
- * not exact, and one-pixel points (for speed). */
+ * not exact, and points of one or two pixels (for speed). */
 R_FMA_CLONES
 static void rasterize_direct(const struct r_state *rs, const struct r_tri_setup *ts,
                              const struct r_plane *p, int32_t x0, int32_t y0,

@@ -44,7 +44,7 @@
  * the fast context chose (kernel_of below: r_state.tri_kernel and
  * line_kernel today; list new kernel fields there) after each case that
  * drew filled triangles, (non-smooth) lines, or (non-smooth) points
- * wider than a pixel, per kind of primitive, with a key of the raster state that matters to kernels
+ * of three pixels or more, per kind of primitive, with a key of the raster state that matters to kernels
  * (make_key), and prints the distinct (kernel, state key) combinations a
  * fast kernel drew, the state keys that fell back to the reference
  * kernels, the primitives and the fragments drawn.  Where fast kernels
@@ -406,7 +406,7 @@ static struct gen {
    bool filled;           /* both polygon modes GL_FILL */
    bool case_tris;        /* this case drew filled triangles */
    bool case_lines;       /* ... non-smooth lines */
-   bool case_points;      /* ... non-smooth points wider than a pixel */
+   bool case_points;      /* ... non-smooth points of 3 pixels or more */
    bool line_smooth, point_smooth;
    float point_size;
    int case_index;
@@ -1284,8 +1284,8 @@ static void draw_points(void)
    glEnd();
    if (g_count_on)
       g_count.points += (uint64_t)nv;
-   /* (r_point.c: a point of a size above 1.5 covers more than a pixel) */
-   if (!G.point_smooth && G.point_size >= 2.0f)
+   /* (r_point.c: a point of size 3 or more is 3 pixels wide or more) */
+   if (!G.point_smooth && G.point_size >= 3.0f)
       G.case_points = true;
 }
 
@@ -1334,7 +1334,7 @@ static void draw_arrays(void)
       G.case_tris = true;
    if (prim == GL_LINES && !G.line_smooth)
       G.case_lines = true;
-   if (prim == GL_POINTS && !G.point_smooth && G.point_size >= 2.0f)
+   if (prim == GL_POINTS && !G.point_smooth && G.point_size >= 3.0f)
       G.case_points = true;
 }
 
