@@ -15,7 +15,7 @@
  * the same fma plane evaluation as triangles.
  *
  * In the exact case (below) a line is shaded by the state's block kernel
- * (r_state.line_kernel, r_kernel.h: its four edges and its planes as a
+ * (r_state.line_kernel, r_kernel.h: its two long sides and its planes as a
  * r_tri_setup) unless the pstipple shader is bound; else, and for the
  * reference kernels, pixel by pixel here.
  *
