@@ -36,6 +36,10 @@
  *           its own glBegin/glEnd after a glPushMatrix, glTranslatef,
  *           glRotatef, glScalef, glMaterialfv and glBindTexture (two
  *           textures: the texfloor one, mipmapped, and a 64x64 LINEAR one)
+ *   lines   2,000 random smooth-coloured lines 3 pixels wide (up to ~300 px
+ *           long, every orientation), orthographic, depth test
+ *   points  10,000 random points of size 8, one colour each,
+ *           orthographic, depth test
  * OSMesa has neither extension: for the last three scenes its build binds
  * the GLSL reference of the conformance suite (conformance/reference/
  * fcr_shading.c, through OSMesaGetProcAddress), which evaluates the same
@@ -84,6 +88,10 @@ struct vertex {
 };
 
 static struct vertex soup[SOUP_TRIANGLES * 3];
+#define LINES 2000
+#define POINTS 10000
+static struct vertex lines[LINES * 2];
+static struct vertex points[POINTS];
 static struct vertex sphere[SPHERE_STACKS * SPHERE_SLICES * 6];
 
 /* Vertex with normal, for the lit scenes. */
@@ -121,6 +129,36 @@ static void build_soup(void)
       p->color[1] = g;
       p->color[2] = b;
     }
+  }
+}
+
+/* Lines of every orientation and length up to ~300 px, a colour per end,
+ * and points, a colour each, scattered over the screen in window
+ * coordinates. */
+static void build_lines_points(void)
+{
+  for (int l = 0; l < LINES; l++) {
+    const float cx = rand01() * WIDTH, cy = rand01() * HEIGHT;
+    const float a = rand01() * 6.2831853f, len = 4.0f + rand01() * 300.0f;
+    for (int v = 0; v < 2; v++) {
+      struct vertex *p = &lines[2 * l + v];
+      const float s = v ? 0.5f : -0.5f;
+      p->pos[0] = cx + s * len * cosf(a);
+      p->pos[1] = cy + s * len * sinf(a);
+      p->pos[2] = rand01() * 2.0f - 1.0f;
+      p->color[0] = rand01();
+      p->color[1] = rand01();
+      p->color[2] = rand01();
+    }
+  }
+  for (int i = 0; i < POINTS; i++) {
+    struct vertex *p = &points[i];
+    p->pos[0] = rand01() * WIDTH;
+    p->pos[1] = rand01() * HEIGHT;
+    p->pos[2] = rand01() * 2.0f - 1.0f;
+    p->color[0] = rand01();
+    p->color[1] = rand01();
+    p->color[2] = rand01();
   }
 }
 
@@ -342,6 +380,47 @@ static void draw_soup(void)
   glShadeModel(GL_FLAT);
   submit(soup, SOUP_TRIANGLES * 3);
   glFinish();
+}
+
+static void submit_prims(GLenum mode, const struct vertex *v, int count)
+{
+  glBegin(mode);
+  for (int i = 0; i < count; i++) {
+    glColor3fv(v[i].color);
+    glVertex3fv(v[i].pos);
+  }
+  glEnd();
+}
+
+static void draw_lines_points(GLenum mode)
+{
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0.0, WIDTH, 0.0, HEIGHT, -1.0, 1.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glShadeModel(GL_SMOOTH);
+  if (mode == GL_LINES) {
+    glLineWidth(3.0f);
+    submit_prims(GL_LINES, lines, LINES * 2);
+    glLineWidth(1.0f);
+  } else {
+    glPointSize(8.0f);
+    submit_prims(GL_POINTS, points, POINTS);
+    glPointSize(1.0f);
+  }
+  glFinish();
+}
+
+static void draw_lines(void)
+{
+  draw_lines_points(GL_LINES);
+}
+
+static void draw_points(void)
+{
+  draw_lines_points(GL_POINTS);
 }
 
 static void draw_sphere(void)
@@ -837,6 +916,7 @@ int main(int argc, char **argv)
   build_gears();
   build_texture();
   build_small_texture();
+  build_lines_points();
   static const struct {
     const char *name;
     void (*frame)(void);
@@ -844,7 +924,7 @@ int main(int argc, char **argv)
     { "soup", draw_soup },       { "sphere", draw_sphere },     { "lit200", draw_lit200 },
     { "lit20k", draw_lit20k },   { "gears", draw_gears },       { "texfloor", draw_texfloor },
     { "phong", draw_phong },     { "ctphong", draw_ctphong },   { "ctsmooth", draw_ctsmooth },
-    { "manydraws", draw_manydraws },
+    { "manydraws", draw_manydraws }, { "lines", draw_lines },   { "points", draw_points },
   };
   for (size_t i = 0; i < sizeof(scenes) / sizeof(scenes[0]); i++) {
     int wanted = argc <= 2;

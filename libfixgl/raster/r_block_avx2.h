@@ -52,6 +52,87 @@ static ALWAYS_INLINE __m256 eval8(const struct r_attr_plane *p, __m256 fx, __m25
                           _mm256_fmadd_ps(_mm256_set1_ps(p->dadx), fx, _mm256_set1_ps(p->a0)));
 }
 
+/* ---- coverage (r_kernel.h r_tri_cover) ----
+ * Lane i of half h of a 4x4 block is pixel (x + (i & 3), y + 2h + (i >> 2)),
+ * so its edge value is the block's top-left value plus the lane offset
+ * (i & 3) * dx + ((i >> 2) + 2h) * dy. */
+static ALWAYS_INLINE void block_cover_offsets(const struct r_tri_cover *cv,
+                                              __m256i eoff[R_COVER_EDGES][2])
+{
+   const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+   const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+   for (int e = 0; e < R_COVER_EDGES; e++) {
+      eoff[e][0] = _mm256_add_epi32(_mm256_mullo_epi32(lx, _mm256_set1_epi32(cv->dx[e])),
+                                    _mm256_mullo_epi32(ly, _mm256_set1_epi32(cv->dy[e])));
+      eoff[e][1] = _mm256_add_epi32(eoff[e][0], _mm256_set1_epi32(2 * cv->dy[e]));
+   }
+}
+
+/* The coverage mask of a 4x4 block, shared by triangles, lines and points:
+ * bit 4j + i set when pixel (x + i, y + j) has every edge value >= 0, c[e]
+ * the edge values at (x, y) (the edges past r_tri_cover.n are 0 with zero
+ * steps: always inside). */
+static ALWAYS_INLINE unsigned r_block_cover(const int32_t c[R_COVER_EDGES],
+                                            __m256i eoff[R_COVER_EDGES][2])
+{
+   const __m256i minus1 = _mm256_set1_epi32(-1);
+   unsigned mask = 0;
+   for (int h = 0; h < 2; h++) {
+      __m256i in = minus1;
+      for (int e = 0; e < R_COVER_EDGES; e++) {
+         const __m256i v = _mm256_add_epi32(_mm256_set1_epi32(c[e]), eoff[e][h]);
+         in = _mm256_and_si256(in, _mm256_cmpgt_epi32(v, minus1));
+      }
+      mask |= (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(in)) << (8 * h);
+   }
+   return mask;
+}
+
+/* floor(a / b), b > 0 */
+static ALWAYS_INLINE int64_t block_floor_div(int64_t a, int64_t b)
+{
+   return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+/* The blocks of one block row that may hold a covered pixel: those at
+ * *first .. *last (block x, multiples of 4 from bx0, the row's first),
+ * narrowed from the whole row (of five blocks or more), false when there
+ * is none.  rowc[e]: the
+ * edge values at the row's first block.  An edge's largest value over
+ * the block k blocks along is rowc + 4k dx + max(0, 3 dx) + max(0, 3 dy)
+ * (the values are linear over the block and fit in 32 bits: r_cover_planes),
+ * so a block where that is negative for some edge covers no pixel and
+ * r_block_cover would give it an empty mask: skipping it changes nothing
+ * but the time (a line's or a thin triangle's box is mostly empty).  Only
+ * worth its divides on a row of many blocks. */
+static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
+                                         const int32_t rowc[R_COVER_EDGES], int32_t bx0,
+                                         int32_t *first, int32_t *last)
+{
+   int64_t kmax = (cv->x1 - bx0) >> 2;
+   int64_t kmin = 0;
+   for (int e = 0; e < R_COVER_EDGES; e++) {
+      const int64_t dx = cv->dx[e], dy = cv->dy[e];
+      const int64_t m = (int64_t)rowc[e] + (dx > 0 ? 3 * dx : 0) + (dy > 0 ? 3 * dy : 0);
+      if (dx > 0) {
+         /* m + 4k dx >= 0: k >= ceil(-m / 4dx) */
+         const int64_t k = -block_floor_div(m, 4 * dx);
+         kmin = k > kmin ? k : kmin;
+      } else if (dx < 0) {
+         /* k <= floor(m / -4dx) */
+         const int64_t k = block_floor_div(m, -4 * dx);
+         kmax = k < kmax ? k : kmax;
+      } else if (m < 0) {
+         return false;
+      }
+   }
+   if (kmin > kmax)
+      return false;
+   *first = bx0 + 4 * (int32_t)kmin;
+   *last = bx0 + 4 * (int32_t)kmax + 3 < cv->x1 ? bx0 + 4 * (int32_t)kmax + 3 : cv->x1;
+   return true;
+}
+
 /* r_float_to_unorm8 in 8 lanes (ORACLE-NOTES.md "Colour conversion"; maxps returns its second operand for NaN:
  * NaN -> 0, as !(c > 0)) */
 static ALWAYS_INLINE __m256i unorm8(__m256 c)

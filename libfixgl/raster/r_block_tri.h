@@ -31,7 +31,8 @@
 #endif
 
 /*
- * r_block_tri.h: the triangle block walk, a template.  The including file
+ * r_block_tri.h: the block walk of triangles, lines and points (their
+ * r_tri_cover: up to three edges over a box), a template.  The including file
  * defines, before including it:
  *   struct block_stage                 per-triangle constants of its stage
  *   block_stage_prepare(rs, ts, variant, &stage)
@@ -64,15 +65,10 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
    const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
    const __m256 flx = _mm256_cvtepi32_ps(lx), fly = _mm256_cvtepi32_ps(ly);
-   const __m256i minus1 = _mm256_set1_epi32(-1);
 
    /* the edge functions' offsets of the lanes of the two halves */
-   __m256i eoff[3][2];
-   for (int e = 0; e < 3; e++) {
-      eoff[e][0] = _mm256_add_epi32(_mm256_mullo_epi32(lx, _mm256_set1_epi32(cv->dx[e])),
-                                    _mm256_mullo_epi32(ly, _mm256_set1_epi32(cv->dy[e])));
-      eoff[e][1] = _mm256_add_epi32(eoff[e][0], _mm256_set1_epi32(2 * cv->dy[e]));
-   }
+   __m256i eoff[R_COVER_EDGES][2];
+   block_cover_offsets(cv, eoff);
 
    struct block_stage stage;
    block_stage_prepare(rs, ts, variant, &stage);
@@ -91,9 +87,12 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    uint64_t fragments = 0;
 
    const int32_t bx0 = cv->x0 & ~3, by0 = cv->y0 & ~3;
-   int32_t rowc[3];
-   for (int e = 0; e < 3; e++)
+   int32_t rowc[R_COVER_EDGES];
+   for (int e = 0; e < R_COVER_EDGES; e++)
       rowc[e] = cv->c[e] + (bx0 - cv->ox) * cv->dx[e] + (by0 - cv->oy) * cv->dy[e];
+   /* rows of five blocks or more are narrowed to the blocks the edges
+    * allow (block_row_span) */
+   const bool wide = cv->x1 - bx0 >= 16;
 
    /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
     * are asked for ahead of their use (a triangle touches a few pixels of
@@ -122,19 +121,20 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
       for (int j = 0; j < 4; j++)
          if (by + j >= cv->y0 && by + j <= cv->y1)
             rows |= 0xfu << (4 * j);
-      int32_t c[3] = { rowc[0], rowc[1], rowc[2] };
-      for (int32_t bx = bx0; bx <= cv->x1; bx += 4) {
+      /* the row's blocks that may hold a covered pixel */
+      int32_t first = bx0, last = cv->x1;
+      if (wide && !block_row_span(cv, rowc, bx0, &first, &last)) {
+         for (int e = 0; e < R_COVER_EDGES; e++)
+            rowc[e] += 4 * cv->dy[e];
+         continue;
+      }
+      int32_t c[R_COVER_EDGES];
+      for (int e = 0; e < R_COVER_EDGES; e++)
+         c[e] = rowc[e] + (first - bx0) * cv->dx[e];
+      for (int32_t bx = first; bx <= last; bx += 4) {
          /* coverage */
-         unsigned mask = 0;
-         for (int h = 0; h < 2; h++) {
-            __m256i in = minus1;
-            for (int e = 0; e < 3; e++) {
-               const __m256i v = _mm256_add_epi32(_mm256_set1_epi32(c[e]), eoff[e][h]);
-               in = _mm256_and_si256(in, _mm256_cmpgt_epi32(v, minus1));
-            }
-            mask |= (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(in)) << (8 * h);
-         }
-         for (int e = 0; e < 3; e++)
+         unsigned mask = r_block_cover(c, eoff);
+         for (int e = 0; e < R_COVER_EDGES; e++)
             c[e] += 4 * cv->dx[e];
          /* cut to the box's rows and, in its first and last block
           * columns, its columns */
@@ -272,7 +272,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             store_rows32(cp, stride, rm, _mm256_blendv_epi8(dst, out, pass));
          }
       }
-      for (int e = 0; e < 3; e++)
+      for (int e = 0; e < R_COVER_EDGES; e++)
          rowc[e] += 4 * cv->dy[e];
    }
    if (rs->stats)

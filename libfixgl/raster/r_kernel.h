@@ -9,7 +9,9 @@
  *  - the block kernels (r_block_avx2.c untextured, r_block_tex_avx2.c
  *    with one texture unit, r_block_phong_avx2.c per-fragment lit; the
  *    walk r_block_tri.h and the shared operations r_block_avx2.h; AVX2 +
- *    FMA): a triangle's 4x4 blocks, each shaded as two 4x2 halves of 8
+ *    FMA): a triangle's, a line's or a point's 4x4 blocks (r_tri.c,
+ *    r_line.c, r_point.c; the proof that they cover the same pixels is
+ *    above r_tri.c rasterize_direct), each shaded as two 4x2 halves of 8
  *    lanes (lane i is pixel
  *    (x + (i & 3), y + (i >> 2)), llvmpipe's 8-wide vector), specialised
  *    at compile time for the states real programs spend their time in.
@@ -54,18 +56,49 @@ struct r_tri_setup {
    bool phong_back;
 };
 
-/* Coverage of a triangle for the block kernels: the three edge functions
- * of r_tri.c reduced by FIXED_ORDER (as lp_rast_tri_tmp.h's 4x4 level
- * reduces them), relative to the origin (ox, oy), a multiple of 4:
+/* Coverage of a primitive for the block kernels: up to three edge
+ * functions (n of them: 3 for a triangle, the two long sides of a line's
+ * parallelogram, whose ends are sides of its box (r_line.c), none for a
+ * point, whose square is its box), each the
+ * primitive's exact 64-bit edge function reduced by FIXED_ORDER (as
+ * lp_rast_tri_tmp.h's 4x4 level reduces them), relative to the origin
+ * (ox, oy), a multiple of 4:
  *    v_e(x, y) = c[e] + (x - ox) * dx[e] + (y - oy) * dy[e]
  * is floor((C_e(x, y) - 1) / 256) for the exact 64-bit edge value C_e, so
- * pixel (x, y) is covered exactly when every v_e >= 0.  r_tri.c builds it
- * only when every v_e over the box fits in 32 bits. */
+ * pixel (x, y) of the box is covered exactly when every v_e >= 0.  The
+ * edges past n are (0, 0, 0), always inside, so that the walk tests three
+ * (r_block_cover).  r_cover_planes builds it only when every v_e over the
+ * box fits in 32 bits. */
+#define R_COVER_EDGES 3
 struct r_tri_cover {
    int32_t ox, oy;
-   int32_t c[3], dx[3], dy[3];
+   int n;                   /* edges of the primitive, 0..R_COVER_EDGES */
+   int32_t c[R_COVER_EDGES], dx[R_COVER_EDGES], dy[R_COVER_EDGES];
    int32_t x0, y0, x1, y1;  /* the box cut to the draw region, inclusive */
 };
+
+/* The block coverage of the n (<= R_COVER_EDGES) exact edge planes p
+ * (r_bin.h: C(x, y) = c - dcdx * x + dcdy * y, steps multiples of 256;
+ * r_tri.c rasterize_direct's conditions) over the box x0..x1, y0..y1
+ * already cut to the draw region (r_tri.c); false when some reduced value
+ * over the box might not fit in 32 bits. */
+bool r_cover_planes(const struct r_plane *p, int n, int32_t x0, int32_t y0, int32_t x1,
+                    int32_t y1, struct r_tri_cover *cv);
+
+/* The coverage of a box, every pixel of it (a point's square): no edge. */
+static inline void r_cover_box(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                               struct r_tri_cover *cv)
+{
+   cv->ox = x0 & ~3;
+   cv->oy = y0 & ~3;
+   cv->n = 0;
+   for (int e = 0; e < R_COVER_EDGES; e++)
+      cv->c[e] = cv->dx[e] = cv->dy[e] = 0;
+   cv->x0 = x0;
+   cv->y0 = y0;
+   cv->x1 = x1;
+   cv->y1 = y1;
+}
 
 /* The block kernel for the state rs and a triangle whose colour is flat
  * or interpolated, or NULL when no block kernel covers the state

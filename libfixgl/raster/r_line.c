@@ -14,6 +14,11 @@
  * x-major line (dady = 0), from the vertices in their original order, and
  * the same fma plane evaluation as triangles.
  *
+ * In the exact case (below) a line is shaded by the state's block kernel
+ * (r_state.line_kernel, r_kernel.h: its two long sides and its planes as a
+ * r_tri_setup) unless the pstipple shader is bound; else, and for the
+ * reference kernels, pixel by pixel here.
+ *
  * A line with a non-finite end (a vertex at w = 0 on the clip volume
  * projects to NaN or infinity) is still set up: its corners snap to
  * INT32_MIN, the 32-bit corner, bounding box and step arithmetic wraps,
@@ -21,8 +26,9 @@
  * with the triangles (r_bin_planes; ORACLE-NOTES.md "Coverage of
  * non-finite triangles" and "Lines with a non-finite end").
  */
-#include "r_bin.h"
+#include "r_kernel.h"
 
+#include <limits.h>
 #include <math.h>
 
 /* lp_setup_line.c sign(): x >= 0 */
@@ -74,19 +80,10 @@ static inline int32_t max4(int32_t a, int32_t b, int32_t c, int32_t d)
 
 static inline int32_t sub32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a - (uint32_t)b); }
 
-/* The interpolation setup of one line (setup_line_coefficients). */
-struct line_shade {
-   struct r_attr_plane z, w;
-   struct r_attr_plane ap[R_FS_NUM_INPUTS][4];
-   float flat[R_FS_NUM_INPUTS][4];
-   bool flat_attr[R_FS_NUM_INPUTS];
-   bool need_w;
-   bool phong_back;         /* GL_PHONG_WIN: lit as a back face */
-};
-
 static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
 {
-   const struct line_shade *ls = ctx;
+   /* the line's setup (setup_line_coefficients) */
+   const struct r_tri_setup *ls = ctx;
    if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
    if (__builtin_expect(rs->stats != NULL, 0))
@@ -173,7 +170,8 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    bool draw_start, draw_end;
    int32_t x[4], y[4];
 
-   if (fabsf(dx) >= fabsf(dy)) {
+   const bool x_major = fabsf(dx) >= fabsf(dy);
+   if (x_major) {
       /* x-major */
       const float dydx = dy / dx;
       if (y2diff == -0.5f && dy < 0)
@@ -327,9 +325,12 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    /* setup_line_coefficients: depth and 1/w are linear, the inputs
     * perspective (premultiplied by 1/w) or constant from the provoking
     * vertex */
-   struct line_shade ls;
+   struct r_tri_setup ls;
    ls.z = line_coef(&info, v1->pos[2], v2->pos[2]);
    ls.w = line_coef(&info, v1->pos[3], v2->pos[3]);
+   ls.zoffset = 0.0f;
+   ls.quad_x = ls.quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read for lines) */
+   ls.inputs = rs->fs->fs_inputs;
    ls.need_w = false;
    /* GL_PHONG_WIN: a line is front facing, unless it is the edge of an
     * unfilled back face, whose face the vertices carry (draw's
@@ -401,6 +402,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
 
    /* the four edges, as the triangles' (lp_setup_tri.c conventions) */
    int64_t c[4], dcdx[4], dcdy[4];
+   struct r_plane p[4];
    for (int i = 0; i < 4; i++) {
       const int j = (i + 1) & 3;
       dcdy[i] = (int64_t)x[i] - x[j];
@@ -410,6 +412,35 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
          c[i]++;
       dcdx[i] *= 256;
       dcdy[i] *= 256;
+      /* (below 2^30: the corners' differences are below 2^22) */
+      p[i] = (struct r_plane){ .c = c[i], .dcdx = (int32_t)dcdx[i], .dcdy = (int32_t)dcdy[i] };
+   }
+
+   /* The block kernel of the state, unless the pstipple shader is bound
+    * (it kills per pixel), with the two long sides (edges 0 and 2) for
+    * edges: the ends (edges 1 and 3) are sides of the box.  With F the
+    * width times 256 and X_a = x[0] = x[3], X_b = x[1] = x[2] of an
+    * x-major line, edge 3 is F * (X_a - 256 px) > 0, i.e.
+    * px < X_a / 256, and edge 1, -F * X_b + 1 + 256 F px > 0 (F >= 256),
+    * px >= X_b / 256; the box is ceil(xmin / 256) <= px <=
+    * ceil(xmax / 256) - 1, the same when X_b < X_a, and when X_b >= X_a
+    * the ends leave no pixel.  Of a y-major line (Y_a = y[0] = y[3],
+    * Y_b = y[1] = y[2]) edge 3 is py > Y_a / 256, edge 1 (its bias for a
+    * negative dcdy) py <= Y_b / 256, the box floor(ymin / 256) + 1 <= py
+    * <= floor(ymax / 256), the same when Y_a < Y_b.  So the pixels of the
+    * box with the two long sides positive are the line's (r_tri.c, above
+    * rasterize_direct). */
+   const bool flat0 = (ls.inputs & (1u << R_FS_COLOR0)) && ls.flat_attr[R_FS_COLOR0];
+   const r_tri_kernel kernel = rs->stipple_points_lines ? NULL : rs->line_kernel[flat0];
+   if (kernel) {
+      if (x_major ? x[1] >= x[0] : y[0] >= y[1])
+         return;   /* the ends cross: no pixel */
+      const struct r_plane sides[2] = { p[0], p[2] };
+      struct r_tri_cover cv;
+      if (r_cover_planes(sides, 2, bx0, by0, bx1, by1, &cv)) {
+         kernel(rs, &ls, &cv);
+         return;
+      }
    }
 
    for (int32_t py = by0; py <= by1; py++) {

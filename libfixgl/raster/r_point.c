@@ -13,9 +13,13 @@
  *    for perspective-interpolated inputs, the vertex value premultiplied by
  *    its 1/w and divided by the (constant) interpolated 1/w again in the
  *    fragment shader ([S: lp_setup_point.c:point_persp_coeff]).
+ * A point of three pixels or more is shaded by the state's block kernel
+ * (r_state.line_kernel, r_kernel.h) unless the pstipple shader is bound;
+ * else, and for the reference kernels, pixel by pixel here.
  */
-#include "r_state.h"
+#include "r_kernel.h"
 
+#include <limits.h>
 #include <math.h>
 
 static void point(const struct r_state *rs, const struct r_vertex *v);
@@ -81,12 +85,51 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
       for (int c = 0; c < 4; c++)
          in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
    }
+   const bool phong_back = rs->fs->phong && rs->shade_env->two_side &&
+                           v->attr[R_ATTR_NORMAL][3] == 0.0f;
+
+   /* A point of three pixels or more goes to the block kernel of the state
+    * (unless the pstipple shader is bound: it kills per pixel) as a
+    * triangle whose inputs are all flat, each the value `in` holds, and
+    * whose coverage is its box (r_cover_box): the kernel shades every
+    * pixel of the square with the same inputs, so with the same colour
+    * (texture coordinates equal at every pixel of a quad give zero
+    * derivatives, as `quad` below, so the same level of detail; lighting
+    * the same inputs gives the same colour in every lane), and its depth
+    * fma(0, y, fma(0, x, z)) + 0 is z but for the sign of a zero, which
+    * the depth conversion does not see.  (Points of one or two pixels stay
+    * here: for them the kernel's setup costs as much as it saves.) */
+   const r_tri_kernel kernel = n < 3 || rs->stipple_points_lines
+                                  ? NULL
+                                  : rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
+   if (kernel) {
+      struct r_tri_setup ts;
+      ts.z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
+      ts.w = (struct r_attr_plane){ w, 0.0f, 0.0f };
+      ts.zoffset = 0.0f;
+      ts.need_w = false;
+      ts.inputs = rs->fs->fs_inputs;
+      ts.quad_x = ts.quad_y = INT_MIN;
+      ts.phong_back = phong_back;
+      for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+         if (!(ts.inputs & (1u << a)))
+            continue;
+         ts.flat_attr[a] = true;
+         for (int c = 0; c < 4; c++)
+            ts.flat[a][c] = in[a][c];
+      }
+      struct r_tri_cover cv;
+      r_cover_box(bx0, by0, bx1, by1, &cv);
+      kernel(rs, &ts, &cv);
+      return;
+   }
+
    /* GL_PHONG_WIN: lit once, as every pixel's inputs are the vertex's; a
     * point is front facing, unless it is a vertex of an unfilled back
     * face, whose face the vertex carries (draw's inject_front_face_info
     * [S: draw_pipe_unfilled.c], read by lp_setup_point.c) */
    if (rs->fs->phong)
-      r_fragment_phong(rs, in, rs->shade_env->two_side && v->attr[R_ATTR_NORMAL][3] == 0.0f);
+      r_fragment_phong(rs, in, phong_back);
    /* the quad's texture coordinates are the vertex's too: zero
     * derivatives, so the texture is magnified */
    struct r_fs_quad quad;

@@ -525,6 +525,11 @@ struct r_state {
    /* triangles' block kernels (r_kernel.h), [colour flat]; NULL means the
     * reference kernels */
    r_tri_kernel tri_kernel[2];
+   /* the same for lines and points (r_line.c, r_point.c): chosen as if
+    * the polygon stipple were off, which lines and points ignore unless
+    * the pstipple shader is bound (stipple_points_lines, set per batch:
+    * they then take the reference kernels) */
+   r_tri_kernel line_kernel[2];
 };
 
 /* Sets full_ops and chooses the kernels of rs for its objects (r_tri.c). */

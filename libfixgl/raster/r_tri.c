@@ -408,7 +408,35 @@ static void rast_tile(const struct r_state *rs, const struct r_shader *sh,
  * 32-bit arithmetic of the binned path wraps, and its tile and block tests
  * are exact, conservative versions of the per-pixel test: the covered
  * pixels are exactly those whose three edge values are positive.  This
- * evaluates that directly over the box cut to the draw region. */
+ * evaluates that directly over the box cut to the draw region.
+ *
+ * The block kernels (r_kernel.h) take the same pixels: r_cover_planes
+ * reduces each edge C (an integer) to v = floor((C - 1) / 256), and
+ * v >= 0 exactly when C - 1 >= 0, i.e. C > 0; the steps of C are
+ * multiples of 256, so v at any pixel is v at the origin plus the unscaled
+ * steps times the offsets, exactly, and r_cover_planes makes sure all of
+ * it fits in 32 bits.  The walk (r_block_tri.h) tests every pixel of the
+ * box's blocks that way and keeps those inside the box.
+ *
+ * Lines and points go to the same kernels:
+ *  - a line (r_line.c) in the exact case (finite corners whose
+ *    differences stay below 2^22) covers the pixels of its box whose four
+ *    parallelogram edge values, built with the conventions above (constant
+ *    dcdx * x - dcdy * y, the same fill bias, steps times 256), are all
+ *    positive -- r_line.c's reference solves that set row by row; its two
+ *    ends are axis-aligned and their tests are the box's bounds (shown in
+ *    r_line.c), so r_cover_planes of the two long sides over the box is the
+ *    same set; its attribute planes
+ *    (line_coef) fill r_tri_setup as a triangle's would, evaluated by the
+ *    same fma(dady, y, fma(dadx, x, a0)), and its texture quads are those
+ *    planes at the quad's pixels, as r_line.c evaluates them;
+ *  - a point (r_point.c) covers its whole square, cut to the draw region
+ *    (lp_setup_bin_rectangle): that box is the kernel's box, with no edge
+ *    (r_cover_box), and every input is flat, the value the reference
+ *    computes once for the whole point.
+ * What a kernel cannot do stays with the reference: the pstipple kill of
+ * points and lines (stipple_points_lines), lines and triangles that are
+ * not exact, and points of one or two pixels (for speed). */
 R_FMA_CLONES
 static void rasterize_direct(const struct r_state *rs, const struct r_tri_setup *ts,
                              const struct r_plane *p, int32_t x0, int32_t y0,
@@ -452,25 +480,22 @@ static void rasterize_direct_quads(const struct r_state *rs, const struct r_tri_
    }
 }
 
-/* The coverage of the block kernels (r_kernel.h r_tri_cover) for the
- * edges p of an exact triangle (rasterize_direct's conditions) and its
- * box x0..x1, y0..y1 cut to the draw region: each 64-bit edge value C at
- * pixel (x, y) is C(ox, oy) - dcdx * (x - ox) + dcdy * (y - oy) with steps
- * that are multiples of 256 (FIXED_ORDER), so floor((C - 1) / 256), whose
- * sign is that of C - 1 >= 0, i.e. C > 0, is the reduced value at the
- * origin plus the unscaled steps.  False when some reduced value over the
- * box (and the blocks it touches) might not fit in 32 bits. */
-static bool block_cover(const struct r_plane *p, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
-                        struct r_tri_cover *cv)
+/* The coverage of the block kernels (r_kernel.h r_tri_cover) for the n
+ * exact edges p of a triangle or a line (rasterize_direct's conditions)
+ * and its box x0..x1, y0..y1 cut to the draw region: each 64-bit edge
+ * value C at pixel (x, y) is C(ox, oy) - dcdx * (x - ox) + dcdy * (y - oy)
+ * with steps that are multiples of 256 (FIXED_ORDER), so
+ * floor((C - 1) / 256), whose sign is that of C - 1 >= 0, i.e. C > 0, is
+ * the reduced value at the origin plus the unscaled steps.  False when
+ * some reduced value over the box (and the blocks it touches) might not
+ * fit in 32 bits. */
+bool r_cover_planes(const struct r_plane *p, int n, int32_t x0, int32_t y0, int32_t x1,
+                    int32_t y1, struct r_tri_cover *cv)
 {
-   cv->ox = x0 & ~3;
-   cv->oy = y0 & ~3;
-   cv->x0 = x0;
-   cv->y0 = y0;
-   cv->x1 = x1;
-   cv->y1 = y1;
+   r_cover_box(x0, y0, x1, y1, cv);
+   cv->n = n;
    const int64_t w = (int64_t)x1 - cv->ox + 4, h = (int64_t)y1 - cv->oy + 4;
-   for (int e = 0; e < 3; e++) {
+   for (int e = 0; e < n; e++) {
       const int64_t c = p[e].c - (int64_t)p[e].dcdx * cv->ox + (int64_t)p[e].dcdy * cv->oy;
       const int64_t cr = (c - 1) >> 8;
       const int32_t dx = -(p[e].dcdx >> 8), dy = p[e].dcdy >> 8;
@@ -552,7 +577,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
       const bool flat0 = (ts.inputs & (1u << R_FS_COLOR0)) && ts.flat_attr[R_FS_COLOR0];
       const r_tri_kernel kernel = rs->tri_kernel[flat0];
       struct r_tri_cover cv;
-      const bool blocks = kernel && block_cover(p, tx0, ty0, tx1, ty1, &cv);
+      const bool blocks = kernel && r_cover_planes(p, 3, tx0, ty0, tx1, ty1, &cv);
       const uint64_t t1 = rs->stats ? r_stats_now() : 0;
       if (blocks)
          kernel(rs, &ts, &cv);
@@ -776,6 +801,7 @@ void r_choose_kernels(struct r_state *rs)
    rs->full_ops = rs->dsa->alpha_test || rs->dsa->stencil_test || rs->blend->enable ||
                   rs->blend->logic_op || rs->blend->color_mask != 0xfu;
    rs->tri_kernel[0] = rs->tri_kernel[1] = NULL;
+   rs->line_kernel[0] = rs->line_kernel[1] = NULL;
 #ifdef FGL_HAVE_BLOCK_KERNELS
    if (rs->reference_kernels ||
        !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
@@ -783,5 +809,19 @@ void r_choose_kernels(struct r_state *rs)
    for (int flat = 0; flat < 2; flat++)
       rs->tri_kernel[flat] = rs->fs->phong ? r_block_choose_tri_phong(rs, flat)
                                        : r_block_choose_tri(rs, flat);
+   /* lines and points: the same choice without the polygon stipple (a
+    * kernel reads the state it is called with, never the stipple) */
+   if (!rs->rast->stipple) {
+      rs->line_kernel[0] = rs->tri_kernel[0];
+      rs->line_kernel[1] = rs->tri_kernel[1];
+      return;
+   }
+   struct r_rast_state rast = *rs->rast;
+   rast.stipple = false;
+   struct r_state ls = *rs;
+   ls.rast = &rast;
+   for (int flat = 0; flat < 2; flat++)
+      rs->line_kernel[flat] = rs->fs->phong ? r_block_choose_tri_phong(&ls, flat)
+                                            : r_block_choose_tri(&ls, flat);
 #endif
 }

@@ -31,16 +31,20 @@
  * come up often.  The primitives: triangles, strips, fans, quads,
  * polygons, rectangles (tiny to huge, vertices on pixel corners and
  * centres and the subpixel grid, perspective, partly off-screen,
- * degenerate, redrawn at equal depths), lines, line strips and loops,
- * points, vertex arrays, and a few glDrawPixels (colour, depth, stencil),
- * glBitmap and glCopyPixels.  The internal colour, depth and stencil
+ * degenerate, redrawn at equal depths), lines, line strips and loops
+ * (widths 1 to 8, whole and fractional; anywhere, or from pixel centre to
+ * pixel centre in every orientation, axis-aligned and diagonal ones
+ * included), points (sizes 1 to 16, whole and fractional), vertex arrays,
+ * and a few glDrawPixels (colour, depth, stencil), glBitmap and
+ * glCopyPixels.  The internal colour, depth and stencil
  * buffers of the two contexts are then compared byte for byte.
  *
  * Nothing here depends on which kernels exist: the comparison covers any
  * kernel r_choose_kernels picks.  The coverage count reads the kernels
- * the fast context chose (kernel_of below: r_state.tri_kernel today;
- * list new kernel fields there) after each case that drew filled
- * triangles, with a key of the raster state that matters to kernels
+ * the fast context chose (kernel_of below: r_state.tri_kernel and
+ * line_kernel today; list new kernel fields there) after each case that
+ * drew filled triangles, (non-smooth) lines, or (non-smooth) points
+ * of three pixels or more, per kind of primitive, with a key of the raster state that matters to kernels
  * (make_key), and prints the distinct (kernel, state key) combinations a
  * fast kernel drew, the state keys that fell back to the reference
  * kernels, the primitives and the fragments drawn.  Where fast kernels
@@ -233,14 +237,19 @@ static void free_side(struct side *sd)
  * with a flat or interpolated colour uses.  List new kernel fields of
  * r_state here. */
 typedef void (*any_kernel)(void);
-enum { KIND_TRI_SMOOTH, KIND_TRI_FLAT, KIND_COUNT };
+enum { KIND_TRI_SMOOTH, KIND_TRI_FLAT, KIND_LINE_SMOOTH, KIND_LINE_FLAT, KIND_POINT, KIND_COUNT };
 
 static any_kernel kernel_of(const struct r_state *rs, int kind)
 {
    switch (kind) {
-   case KIND_TRI_SMOOTH: return (any_kernel)rs->tri_kernel[0];
-   case KIND_TRI_FLAT:   return (any_kernel)rs->tri_kernel[1];
-   default:              return NULL;
+   case KIND_TRI_SMOOTH:  return (any_kernel)rs->tri_kernel[0];
+   case KIND_TRI_FLAT:    return (any_kernel)rs->tri_kernel[1];
+   case KIND_LINE_SMOOTH: return (any_kernel)rs->line_kernel[0];
+   case KIND_LINE_FLAT:   return (any_kernel)rs->line_kernel[1];
+   /* a point's inputs are all flat (r_point.c) */
+   case KIND_POINT:
+      return (any_kernel)rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
+   default:               return NULL;
    }
 }
 
@@ -359,6 +368,9 @@ static struct set g_combos;      /* (kernel, state key) drawn by a fast kernel *
 static struct set g_fallback;    /* state keys the reference drew */
 static struct set g_keys;        /* every state key */
 static any_kernel g_kernels[256];
+/* the combinations of g_combos per kind of primitive (the kind is part
+ * of the state key) */
+static unsigned long g_kind_combos[KIND_COUNT];
 static int g_nkernels;
 
 static int kernel_index(any_kernel k)
@@ -393,6 +405,10 @@ static struct gen {
    int nunits;            /* texture units whose coordinates are sent */
    bool filled;           /* both polygon modes GL_FILL */
    bool case_tris;        /* this case drew filled triangles */
+   bool case_lines;       /* ... non-smooth lines */
+   bool case_points;      /* ... non-smooth points of 3 pixels or more */
+   bool line_smooth, point_smooth;
+   float point_size;
    int case_index;
    bool tex_2d[4];        /* texture i + 1 is 2D (else 1D) */
    /* the batch's mode of each group of optional state (stencil, alpha
@@ -964,12 +980,20 @@ static void set_polygon(void)
 
 static void set_lines_points(void)
 {
-   const float lw = chance(0.6f) ? 1.0f : rndr(0.5f, 6.0f);
-   const bool ls = chance(0.2f), lst = chance(0.15f);
+   /* widths 1 to 8 and sizes 1 to 16, whole or fractional (and a few
+    * below 1) */
+   const int lr = rnd(10), pr = rnd(10);
+   const float lw = lr < 3 ? 1.0f : lr < 6 ? (float)(1 + rnd(8)) : lr < 9 ? rndr(1.0f, 8.0f)
+                                                                            : rndr(0.5f, 1.0f);
+   const bool ls = chance(0.15f), lst = chance(0.12f);
    const int factor = 1 + rnd(3);
    const unsigned pattern = (unsigned)rnd(65536);
-   const float ps = chance(0.5f) ? 1.0f : rndr(0.2f, 9.0f);
-   const bool psm = chance(0.2f);
+   const float ps = pr < 2 ? 1.0f : pr < 5 ? (float)(1 + rnd(16)) : pr < 9 ? rndr(1.0f, 16.0f)
+                                                                        : rndr(0.2f, 1.0f);
+   const bool psm = chance(0.15f);
+   G.line_smooth = ls;
+   G.point_smooth = psm;
+   G.point_size = ps;
    L("line width %.9g smooth %d stipple %d %d 0x%x point size %.9g smooth %d", lw, ls, lst, factor,
      pattern, ps, psm);
    glLineWidth(lw);
@@ -1063,6 +1087,8 @@ static void send_vertex_attribs(void)
    }
 }
 
+static void place_vertex(float v[4], float x, float y, float z, bool snap);
+
 /* a vertex near the shape, or (degenerate) the last one again or the
  * midpoint of the last two; logged */
 static void emit_vertex(const struct shape *s, int degenerate)
@@ -1077,33 +1103,42 @@ static void emit_vertex(const struct shape *s, int degenerate)
    } else {
       float x = s->cx + rndr(-s->r, s->r), y = s->cy + rndr(-s->r, s->r);
       const float z = s->cz + rndr(-0.3f, 0.3f);
-      if (G.proj == 1) {
-         v[0] = pix_snap(x);
-         v[1] = pix_snap(y);
-         v[2] = G.flat_z ? G.flat_zv : z;
-         v[3] = 1.0f;
-      } else if (G.proj == 2) {
-         /* eye space: depth 0.5 .. 12 (the near plane at 1), the NDC
-          * position kept */
-         const float d = chance(0.1f) ? rndr(0.5f, 1.2f) : rndr(1.0f, 12.0f);
-         v[0] = x * d;
-         v[1] = y * d;
-         v[2] = -d;
-         v[3] = 1.0f;
-      } else {
-         float w = chance(0.7f) ? 1.0f : rndr(0.2f, 3.0f);
-         if (chance(0.03f))
-            w = rndr(-0.01f, 0.01f);   /* near 0 (and behind) */
-         v[0] = x * w;
-         v[1] = y * w;
-         v[2] = z * w;
-         v[3] = w;
-      }
+      place_vertex(v, x, y, z, true);
    }
    memcpy(G.last[0], G.last[1], sizeof v);
    memcpy(G.last[1], v, sizeof v);
    L("    vertex %.9g %.9g %.9g %.9g", v[0], v[1], v[2], v[3]);
    glVertex4fv(v);
+}
+
+/* the vertex at (x, y) (the projection's units) and depth z: snapped to
+ * the pixel grid in some way (pix_snap) under the pixel projection when
+ * `snap`, at a random eye depth under the frustum (the same NDC
+ * position), and with a random w (a few near 0) in clip coordinates */
+static void place_vertex(float v[4], float x, float y, float z, bool snap)
+{
+   if (G.proj == 1) {
+      v[0] = snap ? pix_snap(x) : x;
+      v[1] = snap ? pix_snap(y) : y;
+      v[2] = G.flat_z ? G.flat_zv : z;
+      v[3] = 1.0f;
+   } else if (G.proj == 2) {
+      /* eye space: depth 0.5 .. 12 (the near plane at 1), the NDC
+       * position kept */
+      const float d = chance(0.1f) ? rndr(0.5f, 1.2f) : rndr(1.0f, 12.0f);
+      v[0] = x * d;
+      v[1] = y * d;
+      v[2] = -d;
+      v[3] = 1.0f;
+   } else {
+      float w = chance(0.7f) ? 1.0f : rndr(0.2f, 3.0f);
+      if (chance(0.03f))
+         w = rndr(-0.01f, 0.01f);   /* near 0 (and behind) */
+      v[0] = x * w;
+      v[1] = y * w;
+      v[2] = z * w;
+      v[3] = w;
+   }
 }
 
 static void draw_points(void);
@@ -1176,6 +1211,26 @@ static void draw_rect(void)
       G.case_tris = true;
 }
 
+/* a vertex at the centre of pixel (i, j) of the buffer (in the
+ * projection's units: exactly under the pixel projection with the whole
+ * buffer's viewport), the shape's depth; logged */
+static void emit_pixel_centre(const struct shape *s, int i, int j)
+{
+   send_vertex_attribs();
+   const float px = (float)i + 0.5f, py = (float)j + 0.5f;
+   float x = px, y = py;
+   if (G.proj != 1) {
+      x = 2.0f * px / (float)G.cfg.w - 1.0f;
+      y = 2.0f * py / (float)G.cfg.h - 1.0f;
+   }
+   float v[4];
+   place_vertex(v, x, y, s->cz + rndr(-0.3f, 0.3f), false);
+   memcpy(G.last[0], G.last[1], sizeof v);
+   memcpy(G.last[1], v, sizeof v);
+   L("    vertex %.9g %.9g %.9g %.9g (pixel centre %d %d)", v[0], v[1], v[2], v[3], i, j);
+   glVertex4fv(v);
+}
+
 static void draw_lines(void)
 {
    static const GLenum prims[] = { GL_LINES, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP };
@@ -1183,13 +1238,38 @@ static void draw_lines(void)
    const int nv = prim == GL_LINES ? 2 * (1 + rnd(4)) : 2 + rnd(4);
    const int nl = prim == GL_LINES ? nv / 2 : prim == GL_LINE_STRIP ? nv - 1 : nv;
    const struct shape s = rnd_shape();
-   L("  draw 0x%x %d vertices (call %ld)", prim, nv, g_calls);
+   /* half of them from pixel centre to pixel centre: horizontal,
+    * vertical, diagonal, or any direction, short to long */
+   const bool centres = chance(0.5f);
+   L("  draw 0x%x %d vertices%s (call %ld)", prim, nv, centres ? " on pixel centres" : "",
+     g_calls);
    glBegin(prim);
-   for (int i = 0; i < nv; i++)
-      emit_vertex(&s, 0);
+   int i = rnd(G.cfg.w + 8) - 4, j = rnd(G.cfg.h + 8) - 4;
+   for (int k = 0; k < nv; k++) {
+      if (!centres) {
+         emit_vertex(&s, 0);
+         continue;
+      }
+      if (prim != GL_LINES || k % 2 == 1) {
+         const int len = chance(0.8f) ? 1 + rnd(24) : 1 + rnd(120);
+         const int sx = chance(0.5f) ? 1 : -1, sy = chance(0.5f) ? 1 : -1;
+         switch (rnd(5)) {
+         case 0:  i += sx * len; break;
+         case 1:  j += sy * len; break;
+         case 2:  i += sx * len; j += sy * len; break;
+         default: i += sx * rnd(len + 1); j += sy * rnd(len + 1); break;
+         }
+      } else {
+         i = rnd(G.cfg.w + 8) - 4;
+         j = rnd(G.cfg.h + 8) - 4;
+      }
+      emit_pixel_centre(&s, i, j);
+   }
    glEnd();
    if (g_count_on)
       g_count.lines += (uint64_t)nl;
+   if (!G.line_smooth)
+      G.case_lines = true;
 }
 
 static void draw_points(void)
@@ -1204,6 +1284,9 @@ static void draw_points(void)
    glEnd();
    if (g_count_on)
       g_count.points += (uint64_t)nv;
+   /* (r_point.c: a point of size 3 or more is 3 pixels wide or more) */
+   if (!G.point_smooth && G.point_size >= 3.0f)
+      G.case_points = true;
 }
 
 static void draw_arrays(void)
@@ -1249,6 +1332,10 @@ static void draw_arrays(void)
    }
    if (G.filled && (prim == GL_TRIANGLES || prim == GL_TRIANGLE_STRIP))
       G.case_tris = true;
+   if (prim == GL_LINES && !G.line_smooth)
+      G.case_lines = true;
+   if (prim == GL_POINTS && !G.point_smooth && G.point_size >= 3.0f)
+      G.case_points = true;
 }
 
 static void draw_pixels(void)
@@ -1309,12 +1396,8 @@ static void draw_pixels(void)
 
 /* -- a batch -- */
 
-static void record_case(void)
+static void record_kind(const struct r_state *rs, int kind)
 {
-   const struct r_state *rs = &fgl_get_current()->_Raster;
-   if (!G.case_tris)
-      return;
-   const int kind = (rs->flat_mask >> R_ATTR_COLOR0) & 1 ? KIND_TRI_FLAT : KIND_TRI_SMOOTH;
    struct state_key k;
    make_key(rs, kind, &k);
    const uint64_t h = key_hash(&k);
@@ -1325,7 +1408,20 @@ static void record_case(void)
       return;
    }
    const int ki = kernel_index(kern);
-   set_add(&g_combos, mix64(h ^ ((uint64_t)(ki + 1) << 32)) | 1);
+   if (set_add(&g_combos, mix64(h ^ ((uint64_t)(ki + 1) << 32)) | 1))
+      g_kind_combos[kind]++;
+}
+
+static void record_case(void)
+{
+   const struct r_state *rs = &fgl_get_current()->_Raster;
+   const bool flat = (rs->flat_mask >> R_ATTR_COLOR0) & 1;
+   if (G.case_tris)
+      record_kind(rs, flat ? KIND_TRI_FLAT : KIND_TRI_SMOOTH);
+   if (G.case_lines)
+      record_kind(rs, flat ? KIND_LINE_FLAT : KIND_LINE_SMOOTH);
+   if (G.case_points)
+      record_kind(rs, KIND_POINT);
 }
 
 static void gen_batch(uint64_t bseed, bool fast)
@@ -1375,7 +1471,7 @@ static void gen_batch(uint64_t bseed, bool fast)
    const int ncases = 4 + rnd(6);
    for (int c = 0; c < ncases; c++) {
       G.case_index = c;
-      G.case_tris = false;
+      G.case_tris = G.case_lines = G.case_points = false;
       L("case %d:", c);
       /* a random subset of the state, the first case all of it */
       const float p = c == 0 ? 1.0f : 0.35f;
@@ -1573,7 +1669,7 @@ static void print_rs(const struct r_state *rs)
            "%d %d colour %u %u %u %u | logic %d %u | colour mask 0x%x dst_alpha_one %d\n"
            "  fs_inputs 0x%x flat_mask 0x%x colour sum %d twoside %d fog %d aa %d stipple %d "
            "phong %d (models %d %d) tex_units 0x%x tex_nr %d pix %d | offset %.9g %.9g | "
-           "tri kernels %p %p\n",
+           "tri kernels %p %p line kernels %p %p\n",
            rs->fb->zs_format, rs->dsa->depth_test, rs->dsa->depth_func, rs->dsa->depth_write, rs->full_ops,
            rs->dsa->alpha_test, rs->dsa->alpha_func, rs->dsa->alpha_ref, rs->dsa->stencil_test, rs->dsa->stencil_func,
            rs->dsa->stencil_ref, rs->dsa->stencil_valuemask, rs->dsa->stencil_writemask, rs->dsa->stencil_fail,
@@ -1584,7 +1680,8 @@ static void print_rs(const struct r_state *rs)
            rs->rast->stipple, rs->fs->phong, rs->shade_env ? (int)rs->shade_env->material[0].model : -1,
            rs->shade_env ? (int)rs->shade_env->material[1].model : -1,
            rs->fs->tex_units, rs->fs->tex_nr, rs->pix != NULL, rs->rast->offset_units, rs->rast->offset_scale,
-           (void *)(uintptr_t)rs->tri_kernel[0], (void *)(uintptr_t)rs->tri_kernel[1]);
+           (void *)(uintptr_t)rs->tri_kernel[0], (void *)(uintptr_t)rs->tri_kernel[1],
+           (void *)(uintptr_t)rs->line_kernel[0], (void *)(uintptr_t)rs->line_kernel[1]);
    for (int u = 0; u < rs->fs->tex_nr; u++)
       if (rs->fs->tex_units & (1u << u))
          fprintf(stderr,
@@ -1760,6 +1857,10 @@ int main(int argc, char **argv)
    printf("kernels: %zu kernel/state combinations drawn by %d fast kernels; %zu of %zu state keys "
           "fell back to the reference kernels\n",
           g_combos.n, g_nkernels, g_fallback.n, g_keys.n);
+   printf("kernels: combinations by primitive: %lu triangles, %lu lines, %lu points\n",
+          g_kind_combos[KIND_TRI_SMOOTH] + g_kind_combos[KIND_TRI_FLAT],
+          g_kind_combos[KIND_LINE_SMOOTH] + g_kind_combos[KIND_LINE_FLAT],
+          g_kind_combos[KIND_POINT]);
    if (!have_fast) {
       printf("kernels: NOTE: no fast kernel can run here (the CPU lacks AVX2+FMA, or the library "
              "was built without its AVX2 kernels): both contexts drew with the reference "
