@@ -301,6 +301,53 @@ static void drawarrays_negative_first(fc_h *h)
     fc_capture(h);
 }
 
+/* The draw module fetches only the vertices of whole primitives
+ * (draw_pt_trim_count): a one-vertex line strip, the fourth vertex of
+ * GL_TRIANGLES, a quad strip's odd vertex are never read, whatever the
+ * array.  fixgl fetched all of them, and with a negative stride (raised as
+ * GL_INVALID_VALUE, but Mesa sets the array anyway) read 4 GB past the
+ * array (found by the API fuzzer: glColorPointer(4, GL_FLOAT, -1, p);
+ * glDrawArrays(GL_LINE_STRIP, 80, 1)).  The partial primitives below read
+ * an array whose stride is negative at elements where the offset wraps
+ * to below 4 GB; an in-bounds read there would leave the process. */
+static void drawarrays_partial_primitive(fc_h *h)
+{
+    static const GLfloat v[] = { 4, 4, 60, 8, 30, 60, 10, 40, 50, 30, 40, 58,
+                                 2, 20, 62, 2, 20, 50, 5, 60, 60, 62, 35, 2 };
+    static GLfloat col[16 * 4];
+    for (int i = 0; i < 16 * 4; i++)
+        col[i] = (float)((i * 7) % 11) / 10.0f;
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_FLOAT, -1, col + 8 * 4);
+    fc_error(h, "glColorPointer stride -1");
+    glDrawArrays(GL_LINE_STRIP, 80, 1);
+    glDrawArrays(GL_LINES, 80, 1);
+    glDrawArrays(GL_LINE_LOOP, 80, 1);
+    glDrawArrays(GL_TRIANGLES, 80, 2);
+    glDrawArrays(GL_TRIANGLE_FAN, 80, 2);
+    glDrawArrays(GL_QUADS, 80, 3);
+    glDrawArrays(GL_POLYGON, 80, 2);
+    fc_error(h, "partial primitives, stride -1");
+    static const GLuint idx[] = { 90, 91, 92, 93 };
+    glDrawElements(GL_LINE_STRIP, 1, GL_UNSIGNED_INT, idx);
+    glDrawElements(GL_QUAD_STRIP, 3, GL_UNSIGNED_INT, idx);
+    fc_error(h, "partial indexed primitives, stride -1");
+    /* whole primitives with the extra vertices past them */
+    glColorPointer(4, GL_FLOAT, 0, col);
+    glDrawArrays(GL_TRIANGLES, 0, 5);
+    glDrawArrays(GL_QUAD_STRIP, 6, 5);
+    glDrawArrays(GL_LINES, 8, 3);
+    fc_error(h, "whole primitives and a partial one");
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -798,6 +845,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("copypixels_huge", 64, 64, 14, copypixels_huge),
     ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
+    ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

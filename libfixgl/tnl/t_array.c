@@ -166,6 +166,17 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
    }
 }
 
+/* The vertices of mode's first primitive and of each next one
+ * (u_prim.h u_prim_vertex_count), count trimmed to whole primitives. */
+static GLsizei trim_count(GLenum mode, GLsizei count)
+{
+   static const GLsizei first[] = { 1, 2, 2, 2, 3, 3, 3, 4, 4, 3 };
+   static const GLsizei incr[] = { 1, 2, 1, 1, 3, 1, 1, 4, 2, 1 };
+   if (count < first[mode])
+      return 0;
+   return count - (count - first[mode]) % incr[mode];
+}
+
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices)
 {
@@ -177,6 +188,13 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    if (mode > GL_POLYGON)
       return;   /* adjacency modes: not drawn yet (as glBegin) */
    if (index_type && !indices)
+      return;
+   /* draw_pt_trim_count [S: gallium/auxiliary/draw/draw_pt.c]: the draw
+    * module runs whole primitives only and fetches no vertex of a partial
+    * one (GL_TRIANGLES of 4 vertices fetches 3, a one-vertex line strip
+    * none): the elements past the last whole primitive are never read */
+   count = trim_count(mode, count);
+   if (count == 0)
       return;
 
    /* glDrawElements: a small post-transform vertex cache.  An element that
