@@ -348,6 +348,36 @@ static void drawarrays_partial_primitive(fc_h *h)
     fc_capture(h);
 }
 
+/* glArrayElement's element offset is elt * stride in int arithmetic, as
+ * Mesa's _mesa_array_element adds it to the pointer: it wraps in 32 bits.
+ * fixgl multiplied in 64 bits and read 32 GB before the array for
+ * glArrayElement(INT_MIN) with a 16-byte stride (found by the API
+ * fuzzer), where the oracle reads element 0. */
+static void arrayelement_wrapping_index(fc_h *h)
+{
+    static const GLfloat v[] = { 8, 8, 0, 1, 56, 12, 0, 1, 30, 58, 0, 1, 4, 50, 0, 1 };
+    static const GLfloat c[] = { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 0, 1 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(4, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_FLOAT, 0, c);
+    glBegin(GL_TRIANGLES);
+    glArrayElement(INT_MIN);          /* 16 * INT_MIN wraps to 0: element 0 */
+    glArrayElement(INT_MIN + 1);      /* element 1 */
+    glArrayElement(2);
+    glArrayElement(INT_MIN + 3);
+    glArrayElement(INT_MIN + 2);
+    glArrayElement(1);
+    glEnd();
+    fc_error(h, "glArrayElement(INT_MIN + i)");
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -846,6 +876,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
+    ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

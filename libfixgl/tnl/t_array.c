@@ -345,7 +345,13 @@ static float immediate_comp(const GLubyte *p, GLenum type, bool normalized, int 
 static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
                  enum fgl_vbo_attr attr, bool normalized, GLint elt)
 {
-   const GLubyte *p = (const GLubyte *)a->Ptr + (ptrdiff_t)elt * a->EffStride;
+   /* elt * stride in int arithmetic, then added to the pointer
+    * (_mesa_array_element: _mesa_vertex_attrib_address(...) +
+    * elt * binding->Stride): the product wraps in 32 bits, glArrayElement
+    * (INT_MIN) of a 16-byte stride reads element 0 */
+   const uint32_t off = (uint32_t)elt * (uint32_t)a->EffStride;
+   const GLubyte *p = (const GLubyte *)a->Ptr +
+                      (off > INT32_MAX ? (ptrdiff_t)off - ((ptrdiff_t)1 << 32) : (ptrdiff_t)off);
    float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
    for (int c = 0; c < a->Size; c++)
       v[c] = immediate_comp(p, a->Type, normalized, c);
