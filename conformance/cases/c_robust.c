@@ -378,6 +378,33 @@ static void arrayelement_wrapping_index(fc_h *h)
     fc_capture(h);
 }
 
+/* glDepthMask keeps the byte it is given (_mesa_DepthMask: Depth.Mask =
+ * flag): glGetIntegerv, glGetBooleanv and glGetDoublev return 255 after
+ * glDepthMask(255), glGetFloatv 1; a list and glPopAttrib restore it.
+ * fixgl normalized it to 1 (found by the API fuzzer's state walk). */
+static void depthmask_byte(fc_h *h)
+{
+    static const GLboolean flags[] = { 255, 2, 0, 1, 128 };
+    for (size_t i = 0; i < sizeof flags; i++) {
+        glDepthMask(flags[i]);
+        fc_get_integer(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_boolean(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_float(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_double(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_error(h, "glDepthMask");
+    }
+    glNewList(1, GL_COMPILE);
+    glDepthMask(7);
+    glEndList();
+    glPushAttrib(GL_DEPTH_BUFFER_BIT);
+    glCallList(1);
+    fc_get_integer(h, "GL_DEPTH_WRITEMASK after the list", GL_DEPTH_WRITEMASK, 1);
+    glDepthMask(GL_FALSE);
+    glPopAttrib();
+    fc_get_integer(h, "GL_DEPTH_WRITEMASK after glPopAttrib", GL_DEPTH_WRITEMASK, 1);
+    fc_error(h, "list, push and pop");
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -877,6 +904,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
+    ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
