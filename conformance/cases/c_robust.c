@@ -560,6 +560,46 @@ static void gentextures_inside_begin_end(fc_h *h)
     fc_capture(h);
 }
 
+/* While a list is compiled, glGenTextures goes through the save dispatch
+ * straight to _mesa_GenTextures, which never checks for glBegin/glEnd: a
+ * GL_COMPILE_AND_EXECUTE list with an open glBegin (and a texture
+ * coordinate after its vertex, which made fixgl execute the glBegin)
+ * still generates names.  fixgl raised GL_INVALID_OPERATION (found by the
+ * API fuzzer). */
+static void gentextures_compiling_begin_end(fc_h *h)
+{
+    GLuint t[2] = { 77, 77 }, u[2] = { 77, 77 };
+    static const GLdouble tc[2] = { 0.5, 0.25 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(0, 1, 1);
+    glNewList(3, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(1, 1);
+    glTexCoord2dv(tc);
+    glGenTextures(2, t);
+    glVertex2f(40, 4);
+    glVertex2f(12, 50);
+    glEnd();
+    glEndList();
+    fc_error(h, "GL_COMPILE_AND_EXECUTE");
+    fc_value(h, "name 0", t[0]);
+    fc_value(h, "name 1", t[1]);
+    glNewList(4, GL_COMPILE);
+    glBegin(GL_LINES);
+    glVertex2f(3, 60);
+    glGenTextures(2, u);
+    glVertex2f(60, 30);
+    glEnd();
+    glEndList();
+    fc_error(h, "GL_COMPILE");
+    fc_value(h, "compiled 0", u[0]);
+    fc_value(h, "compiled 1", u[1]);
+    glCallList(4);
+    fc_error(h, "called");
+    fc_capture(h);
+}
+
 /* glBitmap with a negative size: compiled as is by glNewList(GL_COMPILE),
  * GL_INVALID_VALUE when it executes. */
 static void bitmap_negative_compile(fc_h *h)
@@ -910,6 +950,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
     ROBUST("gentextures_after_max_name", 8, 8, 0, gentextures_after_max_name),
     ROBUST("gentextures_inside_begin_end", 32, 32, 1, gentextures_inside_begin_end),
+    ROBUST("gentextures_compiling_begin_end", 64, 64, 1, gentextures_compiling_begin_end),
     ROBUST("bitmap_negative_compile", 64, 64, 1, bitmap_negative_compile),
     ROBUST("texparam_border_color", 8, 8, 0, texparam_border_color),
     ROBUST("texgen_query_beyond_units", 8, 8, 0, texgen_query_beyond_units),
