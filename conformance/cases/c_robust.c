@@ -405,6 +405,45 @@ static void depthmask_byte(fc_h *h)
     fc_error(h, "list, push and pop");
 }
 
+/* glDrawArrays/glDrawElements with GL_VERTEX_ARRAY disabled still draw
+ * in the compatibility profile: every vertex at the current value of the
+ * position attribute, (0, 0, 0, 1), with the enabled arrays' colours.
+ * fixgl drew nothing (found by the API fuzzer through glRenderMode's
+ * feedback count). */
+static void drawarrays_no_position_array(fc_h *h)
+{
+    static const GLfloat c[] = { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1 };
+    static const GLubyte idx[] = { 2, 1, 0 };
+    GLfloat fb[64];
+    GLuint sel[16];
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(5);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glColorPointer(4, GL_FLOAT, 0, c);
+    glDrawArrays(GL_POINTS, 0, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDrawElements(GL_LINES, 2, GL_UNSIGNED_BYTE, idx);
+    fc_error(h, "drawn");
+    fc_capture(h);
+    glFeedbackBuffer(64, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glDrawArrays(GL_POINTS, 1, 2);
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, idx);
+    fc_value(h, "feedback values", glRenderMode(GL_RENDER));
+    for (int i = 0; i < 12; i++)
+        fc_value(h, "feedback", (int)(fb[i] * 1000.0f));
+    glSelectBuffer(16, sel);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(7);
+    glDrawArrays(GL_LINE_STRIP, 0, 3);
+    fc_value(h, "select hits", glRenderMode(GL_RENDER));
+    fc_value(h, "select name", (int)sel[3]);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glPointSize(1);
+    fc_error(h, "feedback and select");
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -945,6 +984,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
+    ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

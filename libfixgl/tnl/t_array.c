@@ -183,7 +183,7 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    const struct fgl_client_array *A = ctx->Array.Array;
    /* skip_validated_draw [S: main/draw.c]: nothing to draw without
     * vertices or a position array */
-   if (count == 0 || !A[FGL_ARRAY_VERTEX].Enabled)
+   if (count == 0)
       return;
    if (mode > GL_POLYGON)
       return;   /* adjacency modes: not drawn yet (as glBegin) */
@@ -258,6 +258,18 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
       { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
    };
+   /* No position array: the compatibility profile draws all the same,
+    * every vertex at the position attribute's current value, which no
+    * glVertex changes: (0, 0, 0, 1) (st_atom_array.c feeds a disabled
+    * attribute from the current values; vbo_exec_copy_to_current skips
+    * the position) */
+   if (!A[FGL_ARRAY_VERTEX].Enabled) {
+      vbo->attr_size[FGL_ATTR_POS] = 4;
+      for (unsigned i = 0; i < nverts; i++) {
+         float *p = verts[i].attr[FGL_ATTR_POS];
+         p[0] = 0.0f, p[1] = 0.0f, p[2] = 0.0f, p[3] = 1.0f;
+      }
+   }
    for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
       const struct fgl_client_array *a = &A[map[m].array];
       if (!a->Enabled)
