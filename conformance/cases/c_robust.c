@@ -444,6 +444,23 @@ static void drawarrays_no_position_array(fc_h *h)
     fc_error(h, "feedback and select");
 }
 
+/* glDeleteLists before any list exists: fixgl passed its table's NULL
+ * pointer to memmove (undefined behaviour that UBSan reports; found by
+ * the libFuzzer target). */
+static void deletelists_before_any(fc_h *h)
+{
+    glDeleteLists(1, 5);
+    fc_error(h, "glDeleteLists(1, 5), no lists");
+    glDeleteLists(0, 0);
+    glDeleteLists(0xFFFFFFFFu, 2);
+    fc_error(h, "glDeleteLists(0, 0), (~0, 2)");
+    fc_value(h, "glIsList(1)", glIsList(1));
+    fc_value(h, "glGenLists(3)", (int)glGenLists(3));
+    glDeleteLists(2, 1);
+    fc_value(h, "glIsList(3)", glIsList(3));
+    fc_error(h, "then");
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -985,6 +1002,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
+    ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

@@ -2841,9 +2841,13 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    unsigned last = first;
    for (; last < sh->table_count && sh->table[last].name < end; last++)
       delete_list(sh->table[last].dl);
-   /* the names after them move once */
-   memmove(&sh->table[first], &sh->table[last], (sh->table_count - last) * sizeof(*sh->table));
-   sh->table_count -= last - first;
+   /* the names after them move once (nothing to move, and maybe no
+    * table yet, when none was deleted) */
+   if (last > first) {
+      memmove(&sh->table[first], &sh->table[last],
+              (sh->table_count - last) * sizeof(*sh->table));
+      sh->table_count -= last - first;
+   }
    pthread_mutex_unlock(&sh->lock);
 }
 
