@@ -461,6 +461,32 @@ static void deletelists_before_any(fc_h *h)
     fc_error(h, "then");
 }
 
+/* glCallLists(GL_FLOAT) of names past the int range or NaN: the oracle's
+ * (GLint) cast is x86's cvttss2si, INT_MIN (no such list).  fixgl's C
+ * cast was undefined behaviour (clang's UBSan, found by the libFuzzer
+ * target). */
+static void calllists_float_names(fc_h *h)
+{
+    const GLfloat names[] = { 1e20f, NAN, -3e9f, 2.0f, 2147483648.0f, 1.5f, -1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glColor3f(1, 0, 0);
+    glRectf(2, 2, 20, 20);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glColor3f(0, 1, 0);
+    glRectf(30, 30, 60, 50);
+    glEndList();
+    glCallLists(7, GL_FLOAT, names);
+    fc_error(h, "glCallLists(GL_FLOAT)");
+    glListBase(0x80000001u);
+    glCallLists(1, GL_FLOAT, names);   /* INT_MIN + base: list 1 */
+    fc_error(h, "with a base");
+    glListBase(0);
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1003,6 +1029,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
     ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
+    ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

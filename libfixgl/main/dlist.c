@@ -42,6 +42,7 @@
 
 #include <fixgl/fixgl.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
 #include "tnl/t_pipeline.h"
@@ -2537,8 +2538,8 @@ static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, con
       case GL_UNSIGNED_INT:
          id = (int)((const GLuint *)lists)[i];
          break;
-      case GL_FLOAT:
-         id = (int)((const GLfloat *)lists)[i];
+      case GL_FLOAT:   /* (GLint) cast as x86 does it: INT_MIN past the range */
+         id = fgl_double_to_int_trunc(((const GLfloat *)lists)[i]);
          break;
       case GL_2_BYTES:
          id = ub[2 * i] * 256 + ub[2 * i + 1];
