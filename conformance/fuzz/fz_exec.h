@@ -28,8 +28,8 @@ int fz_exec_setup(uint8_t *missing);
 OSMesaContext fz_exec_context(void);
 /* Runs the calls; res (may be NULL) receives one result per call. */
 void fz_exec_run(const fz_call *calls, size_t n, fz_result *res);
-/* Ends an open list, render mode and glBegin, then digests the state walk
- * and the buffers. */
+/* Ends an open list, render mode and glBegin, walks the state and reads
+ * the buffers back, and (f not NULL) digests them into f. */
 void fz_exec_final(fz_final *f);
 
 #endif

@@ -14,8 +14,8 @@
  * (bound_call): every size and count of a call with a pointer, the pixel
  * store values, the draws that read the client arrays, the evaluator
  * meshes.  Negative and enormous values stay where the GL validates them
- * against a limit before touching memory (texture images and copies) or
- * where no memory is involved (glCopyPixels, glViewport...). */
+ * against a limit before touching memory (framebuffer copies into
+ * textures) or where no memory is involved (glCopyPixels, glViewport...). */
 #include "fz_gen.h"
 
 #include <GL/gl.h>
@@ -63,9 +63,12 @@ static int classify_bound(const fz_entry *e)
         "glDrawRangeElements", "glArrayElement", NULL };
     static const char *const mesh[] = { "glEvalMesh1", "glEvalMesh2", "glEvalPoint1",
         "glEvalPoint2", NULL };
-    static const char *const textures[] = { "glTexImage1D", "glTexImage2D", "glTexSubImage1D",
-        "glTexSubImage2D", "glCopyTexImage1D", "glCopyTexImage2D", "glCopyTexSubImage1D",
-        "glCopyTexSubImage2D", NULL };
+    /* copies from the framebuffer: enormous sizes stay (the GL checks
+     * them against its limits); glTexImage's read client memory, and a
+     * compiled one copies all of it before any check, as the oracle's
+     * save_TexImage2D does, so they are bounded like every pointer call */
+    static const char *const textures[] = { "glCopyTexImage1D", "glCopyTexImage2D",
+        "glCopyTexSubImage1D", "glCopyTexSubImage2D", NULL };
     for (int i = 0; arrays[i]; i++)
         if (strcmp(e->name, arrays[i]) == 0)
             return B_ARRAYS;
@@ -219,11 +222,12 @@ static uint32_t bits_value(fz_src *s, int cls, unsigned valid)
     return chance(s, 50) ? 0xffffffffu : next32(s);
 }
 
-static int64_t in_offset(fz_src *s, const char *ctype_hint)
+/* An input pointer: a region of the arena (floats, doubles, small
+ * integers, random bytes), 8-byte aligned (a GLdouble * must be). */
+static int64_t in_offset(fz_src *s)
 {
-    (void)ctype_hint;
     static const uint32_t regions[] = { FZ_IN_FLOATS, FZ_IN_DOUBLES, FZ_IN_SMALL, FZ_IN_RANDOM };
-    return regions[below(s, 4)] + (int64_t)below(s, 1u << 20) * 4;
+    return regions[below(s, 4)] + (int64_t)below(s, 1u << 19) * 8;
 }
 
 static void gen_args(fz_src *s, int fn, fz_call *c, unsigned valid)
@@ -259,7 +263,7 @@ static void gen_args(fz_src *s, int fn, fz_call *c, unsigned valid)
             if (p->kind == FZ_F32)
                 a->d = (float)a->d;
             break;
-        case FZ_PTR_IN: a->i = in_offset(s, p->name); break;
+        case FZ_PTR_IN: a->i = in_offset(s); break;
         case FZ_PTR_OUT: a->i = (int64_t)below(s, FZ_OUT_WINDOW / 16) * 16; break;
         case FZ_CTX: a->i = 0; break;
         }
@@ -303,7 +307,7 @@ static void bound_call(fz_call *c)
         else if (k == FZ_U32 && b != B_POINTER)
             a->i = (uint32_t)cap((uint32_t)a->i, max, enormous);
         else if ((k == FZ_F32 || k == FZ_F64) && b == B_PIXELSTORE && a->d > (double)max)
-            a->d = fmod(a->d, (double)max) + (isinf(a->d) ? 0.0 : 0.0);
+            a->d = fmod(a->d, (double)max);
         else if (k == FZ_PTR_OUT && b == B_SELECT)
             a->i = FZ_OUT_PERSIST + (a->i % (4 << 20));
         else if (k == FZ_PTR_OUT && b == B_OSMESA && strcmp(e->name, "OSMesaMakeCurrent") == 0)
@@ -432,12 +436,12 @@ static void vertex_arrays(gen *g)
                 if (chance(g->s, 60))
                     c->a[1].i = GL_FLOAT;
                 c->a[2].i = chance(g->s, 70) ? 0 : c->a[2].i % 65;
-                c->a[3].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 18) * 4;
+                c->a[3].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 17) * 8;
             } else if (c) {         /* glNormalPointer: type, stride */
                 if (chance(g->s, 60))
                     c->a[0].i = GL_FLOAT;
                 c->a[1].i = chance(g->s, 70) ? 0 : c->a[1].i % 65;
-                c->a[2].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 18) * 4;
+                c->a[2].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 17) * 8;
             }
             c = emit(g, special[E_ENABLECLIENT], 100);
             set_int(c, 0, arrays[k]);
@@ -455,7 +459,7 @@ static void vertex_arrays(gen *g)
         case 1: c = emit(g, special[E_DRAWELEMENTS], 92);
             if (c && chance(g->s, 80)) {
                 c->a[1].i = below(g->s, 40);
-                c->a[3].i = FZ_IN_SMALL + (int64_t)below(g->s, 1u << 18) * 4;
+                c->a[3].i = FZ_IN_SMALL + (int64_t)below(g->s, 1u << 17) * 8;
             }
             break;
         case 2: begin_end(g); break;
@@ -496,11 +500,11 @@ static void evaluators(gen *g)
             c->a[4].i = 1 + below(g->s, 5);
             c->a[7].i = c->a[3].i * c->a[4].i;
             c->a[8].i = 1 + below(g->s, 5);
-            c->a[9].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 18) * 4;
+            c->a[9].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 17) * 8;
         } else {            /* target u1 u2 stride order points */
             c->a[3].i = 4 + below(g->s, 2);
             c->a[4].i = 1 + below(g->s, 6);
-            c->a[5].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 18) * 4;
+            c->a[5].i = FZ_IN_FLOATS + (int64_t)below(g->s, 1u << 17) * 8;
         }
     }
     if (c) {
