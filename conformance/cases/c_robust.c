@@ -487,6 +487,36 @@ static void calllists_float_names(fc_h *h)
     fc_capture(h);
 }
 
+/* Enum parameters given as floats out of the int range or NaN: the
+ * oracle's (GLint) cast is x86's, INT_MIN, an invalid enum.  fixgl's C
+ * casts were undefined behaviour (clang's UBSan, found by the libFuzzer
+ * target): glTexGenf, glTexEnvf, and a compiled glCallLists(GL_FLOAT). */
+static void float_enum_params(fc_h *h)
+{
+    const GLfloat names[] = { 3e26f, -3e26f, NAN, 1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glTexGenf(GL_S, GL_TEXTURE_GEN_MODE, INFINITY);
+    fc_error(h, "glTexGenf(GL_TEXTURE_GEN_MODE, inf)");
+    glTexGenf(GL_T, GL_TEXTURE_GEN_MODE, 3e9f);
+    fc_error(h, "glTexGenf(GL_TEXTURE_GEN_MODE, 3e9)");
+    glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, NAN);
+    fc_error(h, "glTexEnvf(GL_TEXTURE_ENV_MODE, NaN)");
+    glTexEnvf(GL_TEXTURE_ENV, GL_COMBINE_RGB, -1e30f);
+    fc_error(h, "glTexEnvf(GL_COMBINE_RGB, -1e30)");
+    glNewList(1, GL_COMPILE);
+    glColor3f(0, 0, 1);
+    glRectf(5, 5, 40, 30);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glCallLists(4, GL_FLOAT, names);
+    glEndList();
+    fc_error(h, "compiled glCallLists(GL_FLOAT)");
+    glCallList(2);
+    fc_error(h, "called");
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1030,6 +1060,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
     ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
     ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
+    ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

@@ -2648,7 +2648,7 @@ static void replace_vertex_lists(struct fgl_context *ctx, struct display_list *d
             case GL_UNSIGNED_SHORT: id = ((const GLushort *)ub)[i]; break;
             case GL_INT: id = (GLuint)((const GLint *)ub)[i]; break;
             case GL_UNSIGNED_INT: id = ((const GLuint *)ub)[i]; break;
-            case GL_FLOAT: id = (GLuint)(int)((const GLfloat *)ub)[i]; break;
+            case GL_FLOAT: id = (GLuint)fgl_double_to_int_trunc(((const GLfloat *)ub)[i]); break;
             case GL_2_BYTES: id = ub[2 * i] * 256u + ub[2 * i + 1]; break;
             case GL_3_BYTES: id = ub[3 * i] * 65536u + ub[3 * i + 1] * 256u + ub[3 * i + 2]; break;
             case GL_4_BYTES:
