@@ -27,7 +27,7 @@ static const uint8_t *gen_disabled;
 
 /* Entries the structured pieces use (-1 when not exported). */
 enum {
-    E_BEGIN, E_END, E_NEWLIST, E_ENDLIST, E_CALLLIST, E_GENLISTS, E_VERTEXPOINTER,
+    E_BEGIN, E_END, E_NEWLIST, E_ENDLIST, E_CALLLIST, E_CALLLISTS, E_GENLISTS, E_VERTEXPOINTER,
     E_COLORPOINTER, E_NORMALPOINTER, E_TEXCOORDPOINTER, E_INTERLEAVED, E_ENABLECLIENT,
     E_DRAWARRAYS, E_DRAWELEMENTS, E_ARRAYELEMENT, E_SELECTBUFFER, E_FEEDBACKBUFFER,
     E_RENDERMODE, E_INITNAMES, E_PUSHNAME, E_LOADNAME, E_MAP1F, E_MAP2F, E_ENABLE,
@@ -36,7 +36,7 @@ enum {
     E_COUNT
 };
 static const char *const special_names[E_COUNT] = {
-    "glBegin", "glEnd", "glNewList", "glEndList", "glCallList", "glGenLists", "glVertexPointer",
+    "glBegin", "glEnd", "glNewList", "glEndList", "glCallList", "glCallLists", "glGenLists", "glVertexPointer",
     "glColorPointer", "glNormalPointer", "glTexCoordPointer", "glInterleavedArrays",
     "glEnableClientState", "glDrawArrays", "glDrawElements", "glArrayElement",
     "glSelectBuffer", "glFeedbackBuffer", "glRenderMode", "glInitNames", "glPushName",
@@ -330,6 +330,7 @@ typedef struct {
     size_t n, max;
     int depth;
     uint32_t compiling;   /* the list being compiled, or 0 */
+    unsigned list_calls;  /* glCallList calls compiled into it */
 } gen;
 
 static int room(const gen *g) { return g->n < g->max && !exhausted(g->s); }
@@ -367,10 +368,21 @@ static fz_call *emit(gen *g, int fn, unsigned valid)
                 break;
             }
     }
-    /* The oracle crashes when a list being compiled calls itself inside
-     * glBegin/glEnd (glNewList(n); glBegin; glCallList(n)): not asked. */
-    if (g->compiling && fn == special[E_CALLLIST] && (uint32_t)c->a[0].i == g->compiling)
-        c->a[0].i = g->compiling + 8;
+    /* Lists call only lists of lower names, at most twice each (a list
+     * compiled while list n is compiled calls below n): with cycles or
+     * a large fan-out, nesting to 64 levels is exponential work in both
+     * libraries, a hang of the stream's own making.  (The oracle also
+     * crashes when a list being compiled calls itself inside glBegin.) */
+    if (fn == special[E_NEWLIST]) {
+        g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
+        g->list_calls = 0;
+    } else if (fn == special[E_ENDLIST]) {
+        g->compiling = 0;
+    } else if (g->compiling && fn == special[E_CALLLIST]) {
+        c->a[0].i = g->list_calls++ < 2 ? below(g->s, g->compiling) : 0;
+    } else if (g->compiling && fn == special[E_CALLLISTS]) {
+        c->a[0].i = 0;   /* no names: the call and its errors only */
+    }
     return c;
 }
 
@@ -402,12 +414,10 @@ static void display_list(gen *g)
     fz_call *c = emit(g, special[E_NEWLIST], 90);
     const uint32_t name = 1 + below(g->s, 8);
     set_int(c, 0, chance(g->s, 90) ? name : c ? c->a[0].i : 0);
-    g->compiling = c ? (uint32_t)c->a[0].i : 0;
     g->depth++;
     for (uint32_t i = 0, n = 1 + below(g->s, 6); i < n && room(g); i++)
         piece(g);
     g->depth--;
-    g->compiling = 0;
     emit(g, special[E_ENDLIST], 100);
     if (chance(g->s, 60)) {
         c = emit(g, special[E_CALLLIST], 100);
@@ -574,7 +584,7 @@ static void piece(gen *g)
 
 static size_t generate(fz_src *s, fz_call *out, size_t max)
 {
-    gen g = { s, out, 0, max, 0, 0 };
+    gen g = { s, out, 0, max, 0, 0, 0 };
     /* a visible scene to start from */
     fz_call *c;
     while (room(&g)) {
