@@ -517,6 +517,38 @@ static void float_enum_params(fc_h *h)
     fc_capture(h);
 }
 
+/* glClear under GL_SELECT or GL_FEEDBACK clears nothing (main/clear.c
+ * clears in GL_RENDER mode only); fixgl cleared (found by the API
+ * fuzzer). */
+static void clear_in_select_feedback(fc_h *h)
+{
+    GLuint sel[8];
+    GLfloat fb[8];
+    fc_pixel_ortho(h);
+    fcu_clear(0.25f, 0.5f, 0.75f, 1, 0.5f);
+    glClearAccum(0.5f, 0.25f, 0, 1);
+    glAccum(GL_LOAD, 1.0f);
+    glColor3f(1, 0, 0);
+    glRectf(4, 4, 40, 30);
+    glClearColor(0, 1, 0, 1);
+    glClearDepth(1.0);
+    glClearStencil(3);
+    glSelectBuffer(8, sel);
+    glRenderMode(GL_SELECT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
+            GL_ACCUM_BUFFER_BIT);
+    fc_value(h, "select", glRenderMode(GL_RENDER));
+    glFeedbackBuffer(8, GL_2D, fb);
+    glRenderMode(GL_FEEDBACK);
+    glClear(GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    fc_value(h, "feedback", glRenderMode(GL_RENDER));
+    fc_error(h, "glClear in select and feedback");
+    fc_capture(h);
+    glAccum(GL_RETURN, 1.0f);   /* the accumulation buffer kept its load */
+    fc_error(h, "glAccum(GL_RETURN)");
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1061,6 +1093,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
     ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
     ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
+    ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
