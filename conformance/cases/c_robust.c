@@ -549,6 +549,34 @@ static void clear_in_select_feedback(fc_h *h)
     fc_capture(h);
 }
 
+/* glDrawPixels of GL_STENCIL_INDEX / GL_COLOR_INDEX floats past the
+ * 64-bit range or NaN: the oracle's (GLuint) cast is x86-64's (0 there);
+ * fixgl's C cast was undefined behaviour (clang's UBSan, found by the
+ * libFuzzer target). */
+static void drawpixels_float_indices(fc_h *h)
+{
+    const GLfloat idx[8] = { 1.72774e27f, NAN, -1e30f, 3.0f, 255.0f, 4294967296.0f,
+                             -2.0f, 1e19f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glWindowPos2i(4, 4);
+    glPixelZoom(4, 4);
+    glDrawPixels(8, 1, GL_STENCIL_INDEX, GL_FLOAT, idx);
+    fc_error(h, "stencil indices");
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glColor3f(1, 1, 0);
+    glRectf(0, 0, 64, 64);
+    glDisable(GL_STENCIL_TEST);
+    glWindowPos2i(4, 30);
+    glDrawPixels(8, 1, GL_COLOR_INDEX, GL_FLOAT, idx);
+    fc_error(h, "colour indices");
+    glPixelZoom(1, 1);
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1094,6 +1122,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
     ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
     ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),
+    ROBUST("drawpixels_float_indices", 64, 64, 1, drawpixels_float_indices),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
