@@ -23,6 +23,7 @@
  * status is 1 on any crash, hang or unlisted difference. */
 #include "fz_gen.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <fnmatch.h>
@@ -520,6 +521,17 @@ int main(int argc, char **argv)
     mkdir(opt.out, 0755);
     snprintf(dir, sizeof dir, "%s/tmp", opt.out);
     mkdir(dir, 0755);
+    /* a new campaign: the signatures seen by an earlier one are forgotten */
+    DIR *d = opendir(dir);
+    for (struct dirent *ent; d && (ent = readdir(d));) {
+        if (strncmp(ent->d_name, "sig-", 4) == 0) {
+            char path[1200];
+            snprintf(path, sizeof path, "%s/%s", dir, ent->d_name);
+            unlink(path);
+        }
+    }
+    if (d)
+        closedir(d);
     printf("fixgl-fuzz: %zu entry points (%zu lacking in either library, not called), "
            "seed %llu, %u calls a stream, %u jobs, %g s%s\n",
            fz_table_count - n_missing, n_missing, seed, opt.calls, opt.jobs, seconds,
