@@ -577,6 +577,35 @@ static void drawpixels_float_indices(fc_h *h)
     fc_capture(h);
 }
 
+/* A compiled glBegin/glEnd whose only commands are glEvalCoord (stored
+ * as evaluator nodes, so the vertex list has no attribute and no buffer):
+ * closing a line loop copied zero bytes from a NULL buffer (undefined
+ * behaviour under UBSan; found by the libFuzzer target). */
+static void dlist_loop_without_vertices(fc_h *h)
+{
+    static const GLfloat pts[2][3] = { { 4, 4, 0 }, { 60, 50, 0 } };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_LINE_LOOP);
+    glEvalCoord1f(0.5f);
+    glEvalCoord1f(0.25f);
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    glEnd();
+    glEndList();
+    fc_error(h, "compiled");
+    glCallList(1);
+    fc_error(h, "called, no map");
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, &pts[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glColor3f(1, 1, 1);
+    glCallList(1);
+    glDisable(GL_MAP1_VERTEX_3);
+    fc_error(h, "called with a map");
+    fc_capture(h);
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1123,6 +1152,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
     ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),
     ROBUST("drawpixels_float_indices", 64, 64, 1, drawpixels_float_indices),
+    ROBUST("dlist_loop_without_vertices", 64, 64, 1, dlist_loop_without_vertices),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),

@@ -215,7 +215,7 @@ static void bo_unref(struct bo_image *bo)
 
 static void bo_write(struct bo_image *bo, unsigned offset, const void *src, size_t bytes)
 {
-   if (!bo || offset >= bo->size)
+   if (!bo || offset >= bo->size || bytes == 0)
       return;
    if (bytes > bo->size - offset)
       bytes = bo->size - offset;
@@ -935,8 +935,9 @@ static void convert_line_loop_to_strip(struct save_context *save, struct vertex_
        * the buffer) closes it */
       const unsigned sz = save->vertex_size;
       if (ensure_alloc(save, (prim->start + prim->count + 1) * sz)) {
-         memcpy(save->buffer + (prim->start + prim->count) * sz,
-                save->buffer + prim->start * sz, sz * sizeof(float));
+         if (sz)   /* no attributes (no buffer yet): nothing to copy */
+            memcpy(save->buffer + (prim->start + prim->count) * sz,
+                   save->buffer + prim->start * sz, sz * sizeof(float));
          prim->count++;
          vl->vertex_count++;
          save->used += sz;
