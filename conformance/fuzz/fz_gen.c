@@ -292,7 +292,7 @@ static void bound_call(fz_call *c)
     case B_POINTER: max = 512; break;
     case B_TEXTURE: max = 512; enormous = 1; break;
     case B_ARRAYS: max = 4096; break;
-    case B_MESH: max = 64; break;   /* a 64x64 mesh: 8192 lines */
+    case B_MESH: max = 16; break;   /* meshes of at most 17x17 points: a list may replay them many times */
     case B_LISTS: max = 100000; break;
     case B_PIXELSTORE: max = 64; break;
     case B_SELECT: max = 1 << 20; break;
