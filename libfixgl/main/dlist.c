@@ -1187,6 +1187,11 @@ static void compile_vertex_list(struct fgl_context *ctx)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
    struct save_context *save = &ls->save;
+   /* a list without attributes (glEvalCoord alone between glBegin and
+    * glEnd) has vertices of no size and, so far, no buffer: give it one,
+    * so that its offsets and copies of zero bytes have a base */
+   if (!save->buffer)
+      ensure_alloc(save, 1);
 
    struct vertex_list *vl = calloc(1, sizeof(*vl));
    union dl_node *n = vl ? alloc_node(ctx, DL_OP_VERTEX_LIST, PTR_NODES) : NULL;
