@@ -302,7 +302,9 @@ static void bound_call(fz_call *c)
     for (int j = 0; j < e->nparams; j++) {
         const int k = e->params[j].kind;
         fz_arg *a = &c->a[j];
-        if (k == FZ_I32 || k == FZ_SIZE)
+        if ((k == FZ_I32 || k == FZ_SIZE) && b == B_MESH && (int32_t)a->i < -max)
+            a->i = (int32_t)a->i % (max + 1);   /* a mesh from INT_MIN: 2^31 steps */
+        else if (k == FZ_I32 || k == FZ_SIZE)
             a->i = cap((int32_t)a->i, max, enormous);
         else if (k == FZ_U32 && b != B_POINTER)
             a->i = (uint32_t)cap((uint32_t)a->i, max, enormous);
