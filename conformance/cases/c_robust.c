@@ -606,6 +606,23 @@ static void dlist_loop_without_vertices(fc_h *h)
     fc_capture(h);
 }
 
+/* glReadPixels at x or y INT_MIN: clipped in wrapping int arithmetic,
+ * the size becomes negative and nothing is read.  fixgl negated INT_MIN
+ * (undefined behaviour under UBSan; found by the libFuzzer target). */
+static void readpixels_int_min(fc_h *h)
+{
+    GLubyte px[4 * 4 * 4];
+    fcu_clear(0.5f, 0.25f, 1, 1, 1);
+    for (int i = 0; i < 3; i++) {
+        memset(px, 0x5a, sizeof px);
+        glReadPixels(i == 1 ? INT_MIN : 0, i == 0 ? INT_MIN : 0, 4, 4, GL_RGBA,
+                     GL_UNSIGNED_BYTE, px);
+        fc_error(h, "glReadPixels at INT_MIN");
+        fc_value(h, "first byte", px[0]);
+        fc_value(h, "last byte", px[sizeof px - 1]);
+    }
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -1153,6 +1170,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),
     ROBUST("drawpixels_float_indices", 64, 64, 1, drawpixels_float_indices),
     ROBUST("dlist_loop_without_vertices", 64, 64, 1, dlist_loop_without_vertices),
+    ROBUST("readpixels_int_min", 8, 8, 0, readpixels_int_min),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
