@@ -155,7 +155,7 @@ struct fgl_depth_attrib {
    GLenum Func;
    double Clear;            /* clamped to [0,1] */
    bool Test;
-   bool Mask;
+   GLboolean Mask;          /* as given (Mesa stores the byte: 255 queries as 255) */
 };
 
 /* GL_FOG_BIT, as Mesa's main/fog.c stores it */

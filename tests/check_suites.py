@@ -33,11 +33,13 @@ REQUIRED = {
     None: {"suites": {"unit", "api", "threads", "guard", "robust"},
            "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws"}},
     "conformance": {
-        "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle"},
+        "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle",
+                   "fuzz"},
         "tests": {"conformance-core", "conformance-random", "conformance-random-lit",
                   "conformance-random-raster", "conformance-random-tex",
                   "conformance-random-shading", "conform-harness-selftest",
-                  "dropin", "osmesa_api_vs_mesa", "threads (oracle)"},
+                  "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
+                  "fuzz-differential-short"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},

@@ -301,6 +301,328 @@ static void drawarrays_negative_first(fc_h *h)
     fc_capture(h);
 }
 
+/* The draw module fetches only the vertices of whole primitives
+ * (draw_pt_trim_count): a one-vertex line strip, the fourth vertex of
+ * GL_TRIANGLES, a quad strip's odd vertex are never read, whatever the
+ * array.  fixgl fetched all of them, and with a negative stride (raised as
+ * GL_INVALID_VALUE, but Mesa sets the array anyway) read 4 GB past the
+ * array (found by the API fuzzer: glColorPointer(4, GL_FLOAT, -1, p);
+ * glDrawArrays(GL_LINE_STRIP, 80, 1)).  The partial primitives below read
+ * an array whose stride is negative at elements where the offset wraps
+ * to below 4 GB; an in-bounds read there would leave the process. */
+static void drawarrays_partial_primitive(fc_h *h)
+{
+    static const GLfloat v[] = { 4, 4, 60, 8, 30, 60, 10, 40, 50, 30, 40, 58,
+                                 2, 20, 62, 2, 20, 50, 5, 60, 60, 62, 35, 2 };
+    static GLfloat col[16 * 4];
+    for (int i = 0; i < 16 * 4; i++)
+        col[i] = (float)((i * 7) % 11) / 10.0f;
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_FLOAT, -1, col + 8 * 4);
+    fc_error(h, "glColorPointer stride -1");
+    glDrawArrays(GL_LINE_STRIP, 80, 1);
+    glDrawArrays(GL_LINES, 80, 1);
+    glDrawArrays(GL_LINE_LOOP, 80, 1);
+    glDrawArrays(GL_TRIANGLES, 80, 2);
+    glDrawArrays(GL_TRIANGLE_FAN, 80, 2);
+    glDrawArrays(GL_QUADS, 80, 3);
+    glDrawArrays(GL_POLYGON, 80, 2);
+    fc_error(h, "partial primitives, stride -1");
+    static const GLuint idx[] = { 90, 91, 92, 93 };
+    glDrawElements(GL_LINE_STRIP, 1, GL_UNSIGNED_INT, idx);
+    glDrawElements(GL_QUAD_STRIP, 3, GL_UNSIGNED_INT, idx);
+    fc_error(h, "partial indexed primitives, stride -1");
+    /* whole primitives with the extra vertices past them */
+    glColorPointer(4, GL_FLOAT, 0, col);
+    glDrawArrays(GL_TRIANGLES, 0, 5);
+    glDrawArrays(GL_QUAD_STRIP, 6, 5);
+    glDrawArrays(GL_LINES, 8, 3);
+    fc_error(h, "whole primitives and a partial one");
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
+/* glArrayElement's element offset is elt * stride in int arithmetic, as
+ * Mesa's _mesa_array_element adds it to the pointer: it wraps in 32 bits.
+ * fixgl multiplied in 64 bits and read 32 GB before the array for
+ * glArrayElement(INT_MIN) with a 16-byte stride (found by the API
+ * fuzzer), where the oracle reads element 0. */
+static void arrayelement_wrapping_index(fc_h *h)
+{
+    static const GLfloat v[] = { 8, 8, 0, 1, 56, 12, 0, 1, 30, 58, 0, 1, 4, 50, 0, 1 };
+    static const GLfloat c[] = { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 0, 1 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(4, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_FLOAT, 0, c);
+    glBegin(GL_TRIANGLES);
+    glArrayElement(INT_MIN);          /* 16 * INT_MIN wraps to 0: element 0 */
+    glArrayElement(INT_MIN + 1);      /* element 1 */
+    glArrayElement(2);
+    glArrayElement(INT_MIN + 3);
+    glArrayElement(INT_MIN + 2);
+    glArrayElement(1);
+    glEnd();
+    fc_error(h, "glArrayElement(INT_MIN + i)");
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
+/* glDepthMask keeps the byte it is given (_mesa_DepthMask: Depth.Mask =
+ * flag): glGetIntegerv, glGetBooleanv and glGetDoublev return 255 after
+ * glDepthMask(255), glGetFloatv 1; a list and glPopAttrib restore it.
+ * fixgl normalized it to 1 (found by the API fuzzer's state walk). */
+static void depthmask_byte(fc_h *h)
+{
+    static const GLboolean flags[] = { 255, 2, 0, 1, 128 };
+    for (size_t i = 0; i < sizeof flags; i++) {
+        glDepthMask(flags[i]);
+        fc_get_integer(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_boolean(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_float(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_get_double(h, "GL_DEPTH_WRITEMASK", GL_DEPTH_WRITEMASK, 1);
+        fc_error(h, "glDepthMask");
+    }
+    glNewList(1, GL_COMPILE);
+    glDepthMask(7);
+    glEndList();
+    glPushAttrib(GL_DEPTH_BUFFER_BIT);
+    glCallList(1);
+    fc_get_integer(h, "GL_DEPTH_WRITEMASK after the list", GL_DEPTH_WRITEMASK, 1);
+    glDepthMask(GL_FALSE);
+    glPopAttrib();
+    fc_get_integer(h, "GL_DEPTH_WRITEMASK after glPopAttrib", GL_DEPTH_WRITEMASK, 1);
+    fc_error(h, "list, push and pop");
+}
+
+/* glDrawArrays/glDrawElements with GL_VERTEX_ARRAY disabled still draw
+ * in the compatibility profile: every vertex at the current value of the
+ * position attribute, (0, 0, 0, 1), with the enabled arrays' colours.
+ * fixgl drew nothing (found by the API fuzzer through glRenderMode's
+ * feedback count). */
+static void drawarrays_no_position_array(fc_h *h)
+{
+    static const GLfloat c[] = { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1 };
+    static const GLubyte idx[] = { 2, 1, 0 };
+    GLfloat fb[64];
+    GLuint sel[16];
+    fcu_clear(0, 0, 0, 0, 1);
+    glPointSize(5);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glColorPointer(4, GL_FLOAT, 0, c);
+    glDrawArrays(GL_POINTS, 0, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDrawElements(GL_LINES, 2, GL_UNSIGNED_BYTE, idx);
+    fc_error(h, "drawn");
+    fc_capture(h);
+    glFeedbackBuffer(64, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glDrawArrays(GL_POINTS, 1, 2);
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, idx);
+    fc_value(h, "feedback values", glRenderMode(GL_RENDER));
+    for (int i = 0; i < 12; i++)
+        fc_value(h, "feedback", (int)(fb[i] * 1000.0f));
+    glSelectBuffer(16, sel);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(7);
+    glDrawArrays(GL_LINE_STRIP, 0, 3);
+    fc_value(h, "select hits", glRenderMode(GL_RENDER));
+    fc_value(h, "select name", (int)sel[3]);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glPointSize(1);
+    fc_error(h, "feedback and select");
+}
+
+/* glDeleteLists before any list exists: fixgl passed its table's NULL
+ * pointer to memmove (undefined behaviour that UBSan reports; found by
+ * the libFuzzer target). */
+static void deletelists_before_any(fc_h *h)
+{
+    glDeleteLists(1, 5);
+    fc_error(h, "glDeleteLists(1, 5), no lists");
+    glDeleteLists(0, 0);
+    glDeleteLists(0xFFFFFFFFu, 2);
+    fc_error(h, "glDeleteLists(0, 0), (~0, 2)");
+    fc_value(h, "glIsList(1)", glIsList(1));
+    fc_value(h, "glGenLists(3)", (int)glGenLists(3));
+    glDeleteLists(2, 1);
+    fc_value(h, "glIsList(3)", glIsList(3));
+    fc_error(h, "then");
+}
+
+/* glCallLists(GL_FLOAT) of names past the int range or NaN: the oracle's
+ * (GLint) cast is x86's cvttss2si, INT_MIN (no such list).  fixgl's C
+ * cast was undefined behaviour (clang's UBSan, found by the libFuzzer
+ * target). */
+static void calllists_float_names(fc_h *h)
+{
+    const GLfloat names[] = { 1e20f, NAN, -3e9f, 2.0f, 2147483648.0f, 1.5f, -1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glColor3f(1, 0, 0);
+    glRectf(2, 2, 20, 20);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glColor3f(0, 1, 0);
+    glRectf(30, 30, 60, 50);
+    glEndList();
+    glCallLists(7, GL_FLOAT, names);
+    fc_error(h, "glCallLists(GL_FLOAT)");
+    glListBase(0x80000001u);
+    glCallLists(1, GL_FLOAT, names);   /* INT_MIN + base: list 1 */
+    fc_error(h, "with a base");
+    glListBase(0);
+    fc_capture(h);
+}
+
+/* Enum parameters given as floats out of the int range or NaN: the
+ * oracle's (GLint) cast is x86's, INT_MIN, an invalid enum.  fixgl's C
+ * casts were undefined behaviour (clang's UBSan, found by the libFuzzer
+ * target): glTexGenf, glTexEnvf, and a compiled glCallLists(GL_FLOAT). */
+static void float_enum_params(fc_h *h)
+{
+    const GLfloat names[] = { 3e26f, -3e26f, NAN, 1.0f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glTexGenf(GL_S, GL_TEXTURE_GEN_MODE, INFINITY);
+    fc_error(h, "glTexGenf(GL_TEXTURE_GEN_MODE, inf)");
+    glTexGenf(GL_T, GL_TEXTURE_GEN_MODE, 3e9f);
+    fc_error(h, "glTexGenf(GL_TEXTURE_GEN_MODE, 3e9)");
+    glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, NAN);
+    fc_error(h, "glTexEnvf(GL_TEXTURE_ENV_MODE, NaN)");
+    glTexEnvf(GL_TEXTURE_ENV, GL_COMBINE_RGB, -1e30f);
+    fc_error(h, "glTexEnvf(GL_COMBINE_RGB, -1e30)");
+    glNewList(1, GL_COMPILE);
+    glColor3f(0, 0, 1);
+    glRectf(5, 5, 40, 30);
+    glEndList();
+    glNewList(2, GL_COMPILE);
+    glCallLists(4, GL_FLOAT, names);
+    glEndList();
+    fc_error(h, "compiled glCallLists(GL_FLOAT)");
+    glCallList(2);
+    fc_error(h, "called");
+    fc_capture(h);
+}
+
+/* glClear under GL_SELECT or GL_FEEDBACK clears nothing (main/clear.c
+ * clears in GL_RENDER mode only); fixgl cleared (found by the API
+ * fuzzer). */
+static void clear_in_select_feedback(fc_h *h)
+{
+    GLuint sel[8];
+    GLfloat fb[8];
+    fc_pixel_ortho(h);
+    fcu_clear(0.25f, 0.5f, 0.75f, 1, 0.5f);
+    glClearAccum(0.5f, 0.25f, 0, 1);
+    glAccum(GL_LOAD, 1.0f);
+    glColor3f(1, 0, 0);
+    glRectf(4, 4, 40, 30);
+    glClearColor(0, 1, 0, 1);
+    glClearDepth(1.0);
+    glClearStencil(3);
+    glSelectBuffer(8, sel);
+    glRenderMode(GL_SELECT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
+            GL_ACCUM_BUFFER_BIT);
+    fc_value(h, "select", glRenderMode(GL_RENDER));
+    glFeedbackBuffer(8, GL_2D, fb);
+    glRenderMode(GL_FEEDBACK);
+    glClear(GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    fc_value(h, "feedback", glRenderMode(GL_RENDER));
+    fc_error(h, "glClear in select and feedback");
+    fc_capture(h);
+    glAccum(GL_RETURN, 1.0f);   /* the accumulation buffer kept its load */
+    fc_error(h, "glAccum(GL_RETURN)");
+    fc_capture(h);
+}
+
+/* glDrawPixels of GL_STENCIL_INDEX / GL_COLOR_INDEX floats past the
+ * 64-bit range or NaN: the oracle's (GLuint) cast is x86-64's (0 there);
+ * fixgl's C cast was undefined behaviour (clang's UBSan, found by the
+ * libFuzzer target). */
+static void drawpixels_float_indices(fc_h *h)
+{
+    const GLfloat idx[8] = { 1.72774e27f, NAN, -1e30f, 3.0f, 255.0f, 4294967296.0f,
+                             -2.0f, 1e19f };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glWindowPos2i(4, 4);
+    glPixelZoom(4, 4);
+    glDrawPixels(8, 1, GL_STENCIL_INDEX, GL_FLOAT, idx);
+    fc_error(h, "stencil indices");
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glColor3f(1, 1, 0);
+    glRectf(0, 0, 64, 64);
+    glDisable(GL_STENCIL_TEST);
+    glWindowPos2i(4, 30);
+    glDrawPixels(8, 1, GL_COLOR_INDEX, GL_FLOAT, idx);
+    fc_error(h, "colour indices");
+    glPixelZoom(1, 1);
+    fc_capture(h);
+}
+
+/* A compiled glBegin/glEnd whose only commands are glEvalCoord (stored
+ * as evaluator nodes, so the vertex list has no attribute and no buffer):
+ * closing a line loop copied zero bytes from a NULL buffer (undefined
+ * behaviour under UBSan; found by the libFuzzer target). */
+static void dlist_loop_without_vertices(fc_h *h)
+{
+    static const GLfloat pts[2][3] = { { 4, 4, 0 }, { 60, 50, 0 } };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_LINE_LOOP);
+    glEvalCoord1f(0.5f);
+    glEvalCoord1f(0.25f);
+    glEnd();
+    glBegin(GL_LINE_LOOP);
+    glEnd();
+    glEndList();
+    fc_error(h, "compiled");
+    glCallList(1);
+    fc_error(h, "called, no map");
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, &pts[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glColor3f(1, 1, 1);
+    glCallList(1);
+    glDisable(GL_MAP1_VERTEX_3);
+    fc_error(h, "called with a map");
+    fc_capture(h);
+}
+
+/* glReadPixels at x or y INT_MIN: clipped in wrapping int arithmetic,
+ * the size becomes negative and nothing is read.  fixgl negated INT_MIN
+ * (undefined behaviour under UBSan; found by the libFuzzer target). */
+static void readpixels_int_min(fc_h *h)
+{
+    GLubyte px[4 * 4 * 4];
+    fcu_clear(0.5f, 0.25f, 1, 1, 1);
+    for (int i = 0; i < 3; i++) {
+        memset(px, 0x5a, sizeof px);
+        glReadPixels(i == 1 ? INT_MIN : 0, i == 0 ? INT_MIN : 0, 4, 4, GL_RGBA,
+                     GL_UNSIGNED_BYTE, px);
+        fc_error(h, "glReadPixels at INT_MIN");
+        fc_value(h, "first byte", px[0]);
+        fc_value(h, "last byte", px[sizeof px - 1]);
+    }
+}
+
 /* ---- AddressSanitizer faults ---- */
 
 /* A compiled glPolygonStipple replays its own 32x32 copy with the default
@@ -453,6 +775,46 @@ static void gentextures_inside_begin_end(fc_h *h)
     glGenTextures(2, t);
     fc_value(h, "then 0", t[0]);
     fc_value(h, "then 1", t[1]);
+    fc_capture(h);
+}
+
+/* While a list is compiled, glGenTextures goes through the save dispatch
+ * straight to _mesa_GenTextures, which never checks for glBegin/glEnd: a
+ * GL_COMPILE_AND_EXECUTE list with an open glBegin (and a texture
+ * coordinate after its vertex, which made fixgl execute the glBegin)
+ * still generates names.  fixgl raised GL_INVALID_OPERATION (found by the
+ * API fuzzer). */
+static void gentextures_compiling_begin_end(fc_h *h)
+{
+    GLuint t[2] = { 77, 77 }, u[2] = { 77, 77 };
+    static const GLdouble tc[2] = { 0.5, 0.25 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(0, 1, 1);
+    glNewList(3, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(1, 1);
+    glTexCoord2dv(tc);
+    glGenTextures(2, t);
+    glVertex2f(40, 4);
+    glVertex2f(12, 50);
+    glEnd();
+    glEndList();
+    fc_error(h, "GL_COMPILE_AND_EXECUTE");
+    fc_value(h, "name 0", t[0]);
+    fc_value(h, "name 1", t[1]);
+    glNewList(4, GL_COMPILE);
+    glBegin(GL_LINES);
+    glVertex2f(3, 60);
+    glGenTextures(2, u);
+    glVertex2f(60, 30);
+    glEnd();
+    glEndList();
+    fc_error(h, "GL_COMPILE");
+    fc_value(h, "compiled 0", u[0]);
+    fc_value(h, "compiled 1", u[1]);
+    glCallList(4);
+    fc_error(h, "called");
     fc_capture(h);
 }
 
@@ -902,11 +1264,23 @@ const fc_case fc_cases_robust[] = {
     ROBUST("copypixels_huge", 64, 64, 14, copypixels_huge),
     ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
+    ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
+    ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
+    ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
+    ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
+    ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
+    ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
+    ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
+    ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),
+    ROBUST("drawpixels_float_indices", 64, 64, 1, drawpixels_float_indices),
+    ROBUST("dlist_loop_without_vertices", 64, 64, 1, dlist_loop_without_vertices),
+    ROBUST("readpixels_int_min", 8, 8, 0, readpixels_int_min),
     ROBUST("dlist_polygon_stipple", 64, 64, 1, dlist_polygon_stipple),
     ROBUST("dlist_map_bad_stride", 64, 64, 1, dlist_map_bad_stride),
     ROBUST("genlists_delete_many", 8, 8, 0, genlists_delete_many),
     ROBUST("gentextures_after_max_name", 8, 8, 0, gentextures_after_max_name),
     ROBUST("gentextures_inside_begin_end", 32, 32, 1, gentextures_inside_begin_end),
+    ROBUST("gentextures_compiling_begin_end", 64, 64, 1, gentextures_compiling_begin_end),
     ROBUST("bitmap_negative_compile", 64, 64, 1, bitmap_negative_compile),
     ROBUST("texparam_border_color", 8, 8, 0, texparam_border_color),
     ROBUST("texgen_query_beyond_units", 8, 8, 0, texgen_query_beyond_units),

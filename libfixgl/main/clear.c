@@ -112,6 +112,10 @@ void GLAPIENTRY glClear(GLbitfield mask)
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb)
       return;
+   /* [S: main/clear.c:clear] buffers are cleared in GL_RENDER mode only:
+    * under GL_SELECT and GL_FEEDBACK glClear changes nothing */
+   if (ctx->RenderMode != GL_RENDER)
+      return;
    /* [S: st_cb_clear.c:st_Clear] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
    fgl_update_state(ctx);

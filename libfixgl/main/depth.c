@@ -37,11 +37,12 @@ void GLAPIENTRY glDepthMask(GLboolean flag)
       return;
    FGL_SAVE(ctx, DepthMask, flag);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   const bool mask = flag != GL_FALSE;
-   if (ctx->Depth.Mask == mask)
+   /* the byte itself, not normalized [S: main/depth.c:_mesa_DepthMask]:
+    * glGetIntegerv, glGetBooleanv and glGetDoublev return it as given */
+   if (ctx->Depth.Mask == flag)
       return;
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_DEPTH);
-   ctx->Depth.Mask = mask;
+   ctx->Depth.Mask = flag;
 }
 
 void GLAPIENTRY glClearDepth(GLclampd depth)

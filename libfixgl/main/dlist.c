@@ -42,6 +42,7 @@
 
 #include <fixgl/fixgl.h>
 
+#include "main/conv.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
 #include "tnl/t_pipeline.h"
@@ -215,7 +216,7 @@ static void bo_unref(struct bo_image *bo)
 
 static void bo_write(struct bo_image *bo, unsigned offset, const void *src, size_t bytes)
 {
-   if (!bo || offset >= bo->size)
+   if (!bo || offset >= bo->size || bytes == 0)
       return;
    if (bytes > bo->size - offset)
       bytes = bo->size - offset;
@@ -935,8 +936,9 @@ static void convert_line_loop_to_strip(struct save_context *save, struct vertex_
        * the buffer) closes it */
       const unsigned sz = save->vertex_size;
       if (ensure_alloc(save, (prim->start + prim->count + 1) * sz)) {
-         memcpy(save->buffer + (prim->start + prim->count) * sz,
-                save->buffer + prim->start * sz, sz * sizeof(float));
+         if (sz)   /* no attributes (no buffer yet): nothing to copy */
+            memcpy(save->buffer + (prim->start + prim->count) * sz,
+                   save->buffer + prim->start * sz, sz * sizeof(float));
          prim->count++;
          vl->vertex_count++;
          save->used += sz;
@@ -1186,6 +1188,11 @@ static void compile_vertex_list(struct fgl_context *ctx)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
    struct save_context *save = &ls->save;
+   /* a list without attributes (glEvalCoord alone between glBegin and
+    * glEnd) has vertices of no size and, so far, no buffer: give it one,
+    * so that its offsets and copies of zero bytes have a base */
+   if (!save->buffer)
+      ensure_alloc(save, 1);
 
    struct vertex_list *vl = fgl_calloc_gl(ctx, 1, sizeof(*vl));
    union dl_node *n = vl ? alloc_node(ctx, DL_OP_VERTEX_LIST, PTR_NODES) : NULL;
@@ -2541,8 +2548,8 @@ static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, con
       case GL_UNSIGNED_INT:
          id = (int)((const GLuint *)lists)[i];
          break;
-      case GL_FLOAT:
-         id = (int)((const GLfloat *)lists)[i];
+      case GL_FLOAT:   /* (GLint) cast as x86 does it: INT_MIN past the range */
+         id = fgl_double_to_int_trunc(((const GLfloat *)lists)[i]);
          break;
       case GL_2_BYTES:
          id = ub[2 * i] * 256 + ub[2 * i + 1];
@@ -2651,7 +2658,7 @@ static void replace_vertex_lists(struct fgl_context *ctx, struct display_list *d
             case GL_UNSIGNED_SHORT: id = ((const GLushort *)ub)[i]; break;
             case GL_INT: id = (GLuint)((const GLint *)ub)[i]; break;
             case GL_UNSIGNED_INT: id = ((const GLuint *)ub)[i]; break;
-            case GL_FLOAT: id = (GLuint)(int)((const GLfloat *)ub)[i]; break;
+            case GL_FLOAT: id = (GLuint)fgl_double_to_int_trunc(((const GLfloat *)ub)[i]); break;
             case GL_2_BYTES: id = ub[2 * i] * 256u + ub[2 * i + 1]; break;
             case GL_3_BYTES: id = ub[3 * i] * 65536u + ub[3 * i + 1] * 256u + ub[3 * i + 2]; break;
             case GL_4_BYTES:
@@ -2845,9 +2852,13 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    unsigned last = first;
    for (; last < sh->table_count && sh->table[last].name < end; last++)
       delete_list(sh->table[last].dl);
-   /* the names after them move once */
-   memmove(&sh->table[first], &sh->table[last], (sh->table_count - last) * sizeof(*sh->table));
-   sh->table_count -= last - first;
+   /* the names after them move once (nothing to move, and maybe no
+    * table yet, when none was deleted) */
+   if (last > first) {
+      memmove(&sh->table[first], &sh->table[last],
+              (sh->table_count - last) * sizeof(*sh->table));
+      sh->table_count -= last - first;
+   }
    pthread_mutex_unlock(&sh->lock);
 }
 

@@ -22,6 +22,8 @@
 
 enum value_type {
    V_BOOL,      /* GLboolean state */
+   V_RAWBOOL,   /* a GLboolean stored as given (TYPE_BOOLEAN of a raw byte):
+                   booleans, integers and doubles get the byte, floats 0/1 */
    V_INT,       /* integers and enums */
    V_UINT,      /* unsigned integers: int queries saturate at INT_MAX */
    V_FLOAT,     /* floats converted with lroundf (low 32 bits kept) */
@@ -218,7 +220,7 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)ctx->Depth.Func, 0, 0, 0);
       return true;
    case GL_DEPTH_WRITEMASK:
-      set_ints(val, V_BOOL, 1, ctx->Depth.Mask, 0, 0, 0);
+      set_ints(val, V_RAWBOOL, 1, ctx->Depth.Mask, 0, 0, 0);
       return true;
    /* GL_LIGHTING_BIT */
    case GL_SHADE_MODEL:
@@ -649,7 +651,9 @@ void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean *params)
    if (!get_value(pname, params, &val))
       return;
    for (int i = 0; i < val.n; i++) {
-      if (val.type == V_BOOL || val.type == V_INT || val.type == V_UINT)
+      if (val.type == V_RAWBOOL)
+         params[i] = (GLboolean)val.v[i];
+      else if (val.type == V_BOOL || val.type == V_INT || val.type == V_UINT)
          params[i] = val.v[i] != 0.0 ? GL_TRUE : GL_FALSE;
       else
          params[i] = (float)val.v[i] != 0.0f ? GL_TRUE : GL_FALSE; /* NaN is true */
@@ -664,6 +668,7 @@ void GLAPIENTRY glGetIntegerv(GLenum pname, GLint *params)
    for (int i = 0; i < val.n; i++) {
       switch (val.type) {
       case V_BOOL:
+      case V_RAWBOOL:
       case V_INT:
          params[i] = (GLint)val.v[i];
          break;
@@ -686,7 +691,7 @@ void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat *params)
    if (!get_value(pname, params, &val))
       return;
    for (int i = 0; i < val.n; i++)
-      params[i] = (GLfloat)val.v[i];
+      params[i] = val.type == V_RAWBOOL ? (val.v[i] != 0.0 ? 1.0f : 0.0f) : (GLfloat)val.v[i];
 }
 
 void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble *params)

@@ -985,7 +985,10 @@ void fgl_extract_uint_indexes(const struct fgl_pixelstore *p, size_t n, GLenum t
          if (type == GL_FLOAT) {
             float f;
             memcpy(&f, &v, 4);
-            index[i] = (GLuint)(int64_t)f;
+            /* (GLuint) of a float on x86-64: cvttss2si to 64 bits,
+             * INT64_MIN past the range or NaN, then the low 32 bits */
+            index[i] = f >= -9223372036854775808.0f && f < 9223372036854775808.0f
+                          ? (GLuint)(int64_t)f : 0u;
          } else if (type == GL_UNSIGNED_INT_24_8) {
             index[i] = v & 0xff;
          } else {

@@ -287,8 +287,10 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    struct read_rect r = {x, y, width, height};
    if (pack.RowLength == 0)
       pack.RowLength = r.width;
+   /* _mesa_clip_readpixels in int arithmetic, which wraps on x86 (x or y
+    * INT_MIN: the size becomes negative and nothing is read) */
    if (r.x < 0) {
-      pack.SkipPixels += -r.x;
+      pack.SkipPixels = (GLint)((unsigned)pack.SkipPixels - (unsigned)r.x);
       r.width += r.x;
       r.x = 0;
    }
@@ -297,7 +299,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
    if (r.width <= 0)
       return;
    if (r.y < 0) {
-      pack.SkipRows += -r.y;
+      pack.SkipRows = (GLint)((unsigned)pack.SkipRows - (unsigned)r.y);
       r.height += r.y;
       r.y = 0;
    }

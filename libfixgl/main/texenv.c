@@ -203,7 +203,7 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
    }
    struct fgl_texture_unit *t = unit < FGL_MAX_TEXTURE_UNITS ? &ctx->Texture.Unit[unit] : NULL;
    float *lod_bias = t ? &t->LodBias : &ctx->TexLocal.ImageLodBias[unit - FGL_MAX_TEXTURE_UNITS];
-   const GLint iparam0 = (GLint)param[0];
+   const GLint iparam0 = fgl_double_to_int_trunc(param[0]);   /* (GLint) on x86 */
    if (target == GL_TEXTURE_ENV) {
       if (!t)
          return;

@@ -7,6 +7,7 @@
  */
 #include <string.h>
 
+#include "main/conv.h"
 #include "main/dlist.h"
 #include "main/groups.h"
 
@@ -72,7 +73,7 @@ static void tex_genfv(struct fgl_context *ctx, GLenum coord, GLenum pname, const
    struct fgl_texture_unit *t = &ctx->Texture.Unit[ctx->Texture.CurrentUnit];
    switch (pname) {
    case GL_TEXTURE_GEN_MODE: {
-      const GLenum mode = (GLenum)(GLint)params[0];
+      const GLenum mode = (GLenum)fgl_double_to_int_trunc(params[0]);   /* (GLint) on x86 */
       if (t->GenMode[i] == mode)
          return;
       bool legal;

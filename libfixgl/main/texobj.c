@@ -267,11 +267,9 @@ void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures)
    if (!ctx)
       return;
    /* not allowed between glBegin and glEnd (the oracle's begin/end
-    * dispatch), before anything else */
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+    * dispatch), before anything else; while a list is compiled the save
+    * dispatch calls _mesa_GenTextures itself, which has no such check */
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    if (n < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;

@@ -167,17 +167,35 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
    }
 }
 
+/* The vertices of mode's first primitive and of each next one
+ * (u_prim.h u_prim_vertex_count), count trimmed to whole primitives. */
+static GLsizei trim_count(GLenum mode, GLsizei count)
+{
+   static const GLsizei first[] = { 1, 2, 2, 2, 3, 3, 3, 4, 4, 3 };
+   static const GLsizei incr[] = { 1, 2, 1, 1, 3, 1, 1, 4, 2, 1 };
+   if (count < first[mode])
+      return 0;
+   return count - (count - first[mode]) % incr[mode];
+}
+
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices)
 {
    const struct fgl_client_array *A = ctx->Array.Array;
    /* skip_validated_draw [S: main/draw.c]: nothing to draw without
     * vertices or a position array */
-   if (count == 0 || !A[FGL_ARRAY_VERTEX].Enabled)
+   if (count == 0)
       return;
    if (mode > GL_POLYGON)
       return;   /* adjacency modes: not drawn yet (as glBegin) */
    if (index_type && !indices)
+      return;
+   /* draw_pt_trim_count [S: gallium/auxiliary/draw/draw_pt.c]: the draw
+    * module runs whole primitives only and fetches no vertex of a partial
+    * one (GL_TRIANGLES of 4 vertices fetches 3, a one-vertex line strip
+    * none): the elements past the last whole primitive are never read */
+   count = trim_count(mode, count);
+   if (count == 0)
       return;
 
    /* glDrawElements: a small post-transform vertex cache.  An element that
@@ -245,6 +263,18 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
       { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
    };
+   /* No position array: the compatibility profile draws all the same,
+    * every vertex at the position attribute's current value, which no
+    * glVertex changes: (0, 0, 0, 1) (st_atom_array.c feeds a disabled
+    * attribute from the current values; vbo_exec_copy_to_current skips
+    * the position) */
+   if (!A[FGL_ARRAY_VERTEX].Enabled) {
+      vbo->attr_size[FGL_ATTR_POS] = 4;
+      for (unsigned i = 0; i < nverts; i++) {
+         float *p = verts[i].attr[FGL_ATTR_POS];
+         p[0] = 0.0f, p[1] = 0.0f, p[2] = 0.0f, p[3] = 1.0f;
+      }
+   }
    for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
       const struct fgl_client_array *a = &A[map[m].array];
       if (!a->Enabled)
@@ -332,7 +362,13 @@ static float immediate_comp(const GLubyte *p, GLenum type, bool normalized, int 
 static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
                  enum fgl_vbo_attr attr, bool normalized, GLint elt)
 {
-   const GLubyte *p = (const GLubyte *)a->Ptr + (ptrdiff_t)elt * a->EffStride;
+   /* elt * stride in int arithmetic, then added to the pointer
+    * (_mesa_array_element: _mesa_vertex_attrib_address(...) +
+    * elt * binding->Stride): the product wraps in 32 bits, glArrayElement
+    * (INT_MIN) of a 16-byte stride reads element 0 */
+   const uint32_t off = (uint32_t)elt * (uint32_t)a->EffStride;
+   const GLubyte *p = (const GLubyte *)a->Ptr +
+                      (off > INT32_MAX ? (ptrdiff_t)off - ((ptrdiff_t)1 << 32) : (ptrdiff_t)off);
    float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
    for (int c = 0; c < a->Size; c++)
       v[c] = immediate_comp(p, a->Type, normalized, c);
