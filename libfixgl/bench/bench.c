@@ -369,7 +369,8 @@ static void submit(const struct vertex *v, int count)
   glEnd();
 }
 
-static void draw_soup(void)
+/* A cleared frame with window-sized orthographic coordinates. */
+static void begin_ortho_frame(GLenum shade_model)
 {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glMatrixMode(GL_PROJECTION);
@@ -377,7 +378,12 @@ static void draw_soup(void)
   glOrtho(0.0, WIDTH, 0.0, HEIGHT, -1.0, 1.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  glShadeModel(GL_FLAT);
+  glShadeModel(shade_model);
+}
+
+static void draw_soup(void)
+{
+  begin_ortho_frame(GL_FLAT);
   submit(soup, SOUP_TRIANGLES * 3);
   glFinish();
 }
@@ -394,13 +400,7 @@ static void submit_prims(GLenum mode, const struct vertex *v, int count)
 
 static void draw_lines_points(GLenum mode)
 {
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0.0, WIDTH, 0.0, HEIGHT, -1.0, 1.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glShadeModel(GL_SMOOTH);
+  begin_ortho_frame(GL_SMOOTH);
   if (mode == GL_LINES) {
     glLineWidth(3.0f);
     submit_prims(GL_LINES, lines, LINES * 2);
