@@ -420,6 +420,7 @@ static void bitmap_feedback_select(fc_h *h)
     /* back in GL_RENDER: the glyph at the raster position the selected
      * glBitmap moved */
     fcu_clear(0, 0, 0, 1, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);   /* rows: one byte a row */
     glBitmap(8, 10, 0, 0, 0, 0, rows);
     fc_capture(h);
 }

@@ -452,6 +452,10 @@ static void usage(FILE *f, const char *argv0)
         "       %s --write-stream FILE --seed S [--calls L]\n", argv0, argv0, argv0);
 }
 
+/* the entry points an executor lacks, one flag each (file scope: it lives
+ * as long as the process, on every return path) */
+static uint8_t *missing;
+
 int main(int argc, char **argv)
 {
     static const struct option longopts[] = {
@@ -466,7 +470,7 @@ int main(int argc, char **argv)
     unsigned long long seed = 1, max_streams = 0, print_seed = 0;
     int print = 0, ch;
     const char *stream_file = NULL;
-    uint8_t *missing = calloc(fz_table_count, 1);
+    missing = calloc(fz_table_count, 1);
     unsigned long long counts[C_NCAT] = { 0 }, unknown[C_NCAT] = { 0 };
     unsigned long long calls_total = 0, streams = 0, next_seed;
     unsigned running = 0;

@@ -78,6 +78,12 @@ void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
    size_t want = *alloc ? *alloc : 256;
    while (want < n)
       want *= 2;
+   /* a draw of billions of vertices (glDrawArrays(mode, 0, INT_MAX)) asks
+    * for hundreds of gigabytes at once: refused as out of memory rather
+    * than attempted (the oracle draws it in segments; fixgl fetches a
+    * draw's vertices at once) */
+   if (want > FGL_VBO_SCRATCH_MAX_BYTES / elem_size)
+      return NULL;
    void *p = fgl_realloc(buf, want * elem_size);
    if (p)
       *alloc = (unsigned)want;

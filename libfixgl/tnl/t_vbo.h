@@ -202,6 +202,9 @@ void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
  * a larger one (a long array draw or display list) is freed after its
  * draw rather than kept for the context's lifetime. */
 #define FGL_VBO_SCRATCH_KEEP 65536u
+/* The largest scratch array fgl_vbo_scratch allocates (8 GiB): a larger
+ * request fails, and the draw raises GL_OUT_OF_MEMORY. */
+#define FGL_VBO_SCRATCH_MAX_BYTES ((size_t)8 << 30)
 void fgl_vbo_fini(struct fgl_vbo *vbo);
 
 /* An attribute call (glColor*, glVertex*) with n components. */
