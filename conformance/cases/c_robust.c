@@ -301,6 +301,52 @@ static void drawarrays_negative_first(fc_h *h)
     fc_capture(h);
 }
 
+/* glDrawArrays with a negative first reads the elements below the array's
+ * pointer: llvmpipe adds the wrapped 32-bit offset (first * stride) to the
+ * pointer as a signed index, so element -2 of a 16-byte stride is 32 bytes
+ * before the pointer; only an element whose offset ends at 4 GB or past
+ * it is out of bounds (element -1 above).  fixgl added the offset unsigned
+ * and read 4 GB past the pointer: zeros in the fuzzer's arena, a crash
+ * here (found by the API fuzzer, seed 20: glInterleavedArrays(GL_C4UB_V3F),
+ * glDrawArrays(GL_POLYGON, -2, 4096)).  Separate arrays, then interleaved
+ * ones with elements below -1 only (element -1 of an interleaved set is
+ * the attribute's bounds check against its offset in the merged binding,
+ * conformance/fuzz/known-differences.txt). */
+static void drawarrays_negative_first_before_pointer(fc_h *h)
+{
+    static const GLfloat v[] = { 4, 4, 40, 8, 10, 44, 1, 1,
+                                 30, 30, 60, 34, 34, 60 };
+    static const GLubyte c[] = { 255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9,
+                                 255, 255, 0, 255, 0, 255, 255, 255, 255, 0, 255, 255 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v + 8);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c + 16);
+    glDrawArrays(GL_TRIANGLES, -4, 3);
+    fc_error(h, "separate arrays, first -4");
+    glDrawArrays(GL_TRIANGLES, -1, 4);
+    fc_error(h, "separate arrays, first -1");
+    fc_capture(h);
+    struct { GLubyte c[4]; GLfloat p[3]; } iv[8] = {
+        { { 255, 128, 0, 255 }, { 2, 60, 0 } },  { { 0, 128, 255, 255 }, { 62, 50, 0 } },
+        { { 128, 255, 0, 255 }, { 20, 2, 0 } },  { { 1, 2, 3, 4 }, { 5, 6, 0 } },
+        { { 5, 6, 7, 8 }, { 9, 10, 0 } },        { { 255, 255, 255, 255 }, { 40, 40, 0 } },
+        { { 0, 0, 0, 255 }, { 50, 40, 0 } },     { { 0, 0, 0, 255 }, { 50, 50, 0 } },
+    };
+    fcu_clear(0, 0, 0, 0, 1);
+    glInterleavedArrays(GL_C4UB_V3F, 0, &iv[5]);
+    glDrawArrays(GL_POLYGON, -5, 3);
+    fc_error(h, "interleaved, first -5");
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_error(h, "interleaved, first 0");
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    fc_capture(h);
+}
+
 /* The draw module fetches only the vertices of whole primitives
  * (draw_pt_trim_count): a one-vertex line strip, the fourth vertex of
  * GL_TRIANGLES, a quad strip's odd vertex are never read, whatever the
@@ -1264,6 +1310,8 @@ const fc_case fc_cases_robust[] = {
     ROBUST("copypixels_huge", 64, 64, 14, copypixels_huge),
     ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
+    ROBUST("drawarrays_negative_first_before_pointer", 64, 64, 2,
+           drawarrays_negative_first_before_pointer),
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
