@@ -347,6 +347,41 @@ static void drawarrays_negative_first_before_pointer(fc_h *h)
     fc_capture(h);
 }
 
+/* A texture image call that fails validation leaves the vertex format
+ * alone.  Mesa checks glCopyTexSubImage's target (no proxies) before
+ * copy_texture_sub_image_err's FLUSH_VERTICES, and glTexSubImage flushes
+ * in texture_sub_image, after every check; glCopyTexImage flushes first.
+ * The format decides whether a shorter glTexCoord resets q: after
+ * glMultiTexCoord1d, glTexCoord4f the active size stays 1, so a
+ * glTexCoord3f keeps q = 4, unless a flush in between reset the format
+ * (then q = 1).  glCallList of an unused name makes the next
+ * FLUSH_VERTICES flush.  fixgl flushed before the checks (found by the API
+ * fuzzer, seed 150: glCallList, glCopyTexSubImage1D(GL_PROXY_TEXTURE_1D),
+ * glMultiTexCoord3dvARB). */
+static void teximage_error_keeps_vertex_format(fc_h *h)
+{
+    static const GLubyte texel[4] = { 1, 2, 3, 4 };
+    for (int k = 0; k < 7; k++) {
+        glTexCoord4f(1, 2, 3, 4);
+        glCallList(4321);
+        switch (k) {
+        case 0: glCopyTexSubImage1D(GL_PROXY_TEXTURE_1D, 0, 0, 0, 0, 1); break;
+        case 1: glCopyTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1); break;
+        case 2: glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 0, 0, 0, 1); break;
+        case 3: glTexSubImage1D(GL_PROXY_TEXTURE_1D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel); break;
+        case 4: glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel); break;
+        case 5: glCopyTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 0); break;
+        default: glCopyTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 0, 0, 4, 4, 0); break;
+        }
+        fc_error(h, "texture image call");
+        glMultiTexCoord1d(GL_TEXTURE0, 1.5);
+        glTexCoord4f(1, 2, 3, 4);
+        glMultiTexCoord3f(GL_TEXTURE8, 0.25f, 0.5f, 0.75f);   /* unit 8 & 7 */
+        fc_error(h, "texture coordinates");
+        fc_get_float(h, "current texture coordinates", GL_CURRENT_TEXTURE_COORDS, 4);
+    }
+}
+
 /* The draw module fetches only the vertices of whole primitives
  * (draw_pt_trim_count): a one-vertex line strip, the fourth vertex of
  * GL_TRIANGLES, a quad strip's odd vertex are never read, whatever the
@@ -1313,6 +1348,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("drawarrays_negative_first_before_pointer", 64, 64, 2,
            drawarrays_negative_first_before_pointer),
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
+    ROBUST("teximage_error_keeps_vertex_format", 8, 8, 0, teximage_error_keeps_vertex_format),
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
