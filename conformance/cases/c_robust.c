@@ -301,6 +301,87 @@ static void drawarrays_negative_first(fc_h *h)
     fc_capture(h);
 }
 
+/* glDrawArrays with a negative first reads the elements below the array's
+ * pointer: llvmpipe adds the wrapped 32-bit offset (first * stride) to the
+ * pointer as a signed index, so element -2 of a 16-byte stride is 32 bytes
+ * before the pointer; only an element whose offset ends at 4 GB or past
+ * it is out of bounds (element -1 above).  fixgl added the offset unsigned
+ * and read 4 GB past the pointer: zeros in the fuzzer's arena, a crash
+ * here (found by the API fuzzer, seed 20: glInterleavedArrays(GL_C4UB_V3F),
+ * glDrawArrays(GL_POLYGON, -2, 4096)).  Separate arrays, then interleaved
+ * ones with elements below -1 only (element -1 of an interleaved set is
+ * the attribute's bounds check against its offset in the merged binding,
+ * conformance/fuzz/known-differences.txt). */
+static void drawarrays_negative_first_before_pointer(fc_h *h)
+{
+    static const GLfloat v[] = { 4, 4, 40, 8, 10, 44, 1, 1,
+                                 30, 30, 60, 34, 34, 60 };
+    static const GLubyte c[] = { 255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 9,
+                                 255, 255, 0, 255, 0, 255, 255, 255, 255, 0, 255, 255 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glShadeModel(GL_SMOOTH);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v + 8);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c + 16);
+    glDrawArrays(GL_TRIANGLES, -4, 3);
+    fc_error(h, "separate arrays, first -4");
+    glDrawArrays(GL_TRIANGLES, -1, 4);
+    fc_error(h, "separate arrays, first -1");
+    fc_capture(h);
+    struct { GLubyte c[4]; GLfloat p[3]; } iv[8] = {
+        { { 255, 128, 0, 255 }, { 2, 60, 0 } },  { { 0, 128, 255, 255 }, { 62, 50, 0 } },
+        { { 128, 255, 0, 255 }, { 20, 2, 0 } },  { { 1, 2, 3, 4 }, { 5, 6, 0 } },
+        { { 5, 6, 7, 8 }, { 9, 10, 0 } },        { { 255, 255, 255, 255 }, { 40, 40, 0 } },
+        { { 0, 0, 0, 255 }, { 50, 40, 0 } },     { { 0, 0, 0, 255 }, { 50, 50, 0 } },
+    };
+    fcu_clear(0, 0, 0, 0, 1);
+    glInterleavedArrays(GL_C4UB_V3F, 0, &iv[5]);
+    glDrawArrays(GL_POLYGON, -5, 3);
+    fc_error(h, "interleaved, first -5");
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    fc_error(h, "interleaved, first 0");
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    fc_capture(h);
+}
+
+/* A texture image call that fails validation leaves the vertex format
+ * alone.  Mesa checks glCopyTexSubImage's target (no proxies) before
+ * copy_texture_sub_image_err's FLUSH_VERTICES, and glTexSubImage flushes
+ * in texture_sub_image, after every check; glCopyTexImage flushes first.
+ * The format decides whether a shorter glTexCoord resets q: after
+ * glMultiTexCoord1d, glTexCoord4f the active size stays 1, so a
+ * glTexCoord3f keeps q = 4, unless a flush in between reset the format
+ * (then q = 1).  glCallList of an unused name makes the next
+ * FLUSH_VERTICES flush.  fixgl flushed before the checks (found by the API
+ * fuzzer, seed 150: glCallList, glCopyTexSubImage1D(GL_PROXY_TEXTURE_1D),
+ * glMultiTexCoord3dvARB). */
+static void teximage_error_keeps_vertex_format(fc_h *h)
+{
+    static const GLubyte texel[4] = { 1, 2, 3, 4 };
+    for (int k = 0; k < 7; k++) {
+        glTexCoord4f(1, 2, 3, 4);
+        glCallList(4321);
+        switch (k) {
+        case 0: glCopyTexSubImage1D(GL_PROXY_TEXTURE_1D, 0, 0, 0, 0, 1); break;
+        case 1: glCopyTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1); break;
+        case 2: glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 0, 0, 0, 1); break;
+        case 3: glTexSubImage1D(GL_PROXY_TEXTURE_1D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel); break;
+        case 4: glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel); break;
+        case 5: glCopyTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 0); break;
+        default: glCopyTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 0, 0, 4, 4, 0); break;
+        }
+        fc_error(h, "texture image call");
+        glMultiTexCoord1d(GL_TEXTURE0, 1.5);
+        glTexCoord4f(1, 2, 3, 4);
+        glMultiTexCoord3f(GL_TEXTURE8, 0.25f, 0.5f, 0.75f);   /* unit 8 & 7 */
+        fc_error(h, "texture coordinates");
+        fc_get_float(h, "current texture coordinates", GL_CURRENT_TEXTURE_COORDS, 4);
+    }
+}
+
 /* The draw module fetches only the vertices of whole primitives
  * (draw_pt_trim_count): a one-vertex line strip, the fourth vertex of
  * GL_TRIANGLES, a quad strip's odd vertex are never read, whatever the
@@ -1264,7 +1345,10 @@ const fc_case fc_cases_robust[] = {
     ROBUST("copypixels_huge", 64, 64, 14, copypixels_huge),
     ROBUST("bitmap_huge", 64, 64, 1, bitmap_huge),
     ROBUST("drawarrays_negative_first", 64, 64, 4, drawarrays_negative_first),
+    ROBUST("drawarrays_negative_first_before_pointer", 64, 64, 2,
+           drawarrays_negative_first_before_pointer),
     ROBUST("drawarrays_partial_primitive", 64, 64, 1, drawarrays_partial_primitive),
+    ROBUST("teximage_error_keeps_vertex_format", 8, 8, 0, teximage_error_keeps_vertex_format),
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),

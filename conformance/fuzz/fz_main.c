@@ -294,11 +294,12 @@ static int is_known(const char *sig)
     return 0;
 }
 
-/* Pixel, state and select/feedback signatures name the entry points of the
- * reduced stream (sorted, without repeats). */
+/* Every signature ends with the entry points of the reduced stream (sorted,
+ * without repeats), so that a known difference can name the call sequence
+ * that causes it, not only the call where results first differ. */
 static void name_calls(outcome *o, const fz_call *calls, size_t n)
 {
-    if (o->cat < C_PIXELS && !strstr(o->sig, ":glCallList"))
+    if (o->cat < C_ERRORS)
         return;
     char buf[sizeof o->sig];
     size_t len = (size_t)snprintf(buf, sizeof buf, "%s:", o->sig);

@@ -762,8 +762,6 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
                                                    width, height, format, type, pixels))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   fgl_flush_vertices(ctx);
-   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
@@ -798,8 +796,12 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   /* [S: teximage.c:texture_sub_image] nothing to store for an empty
+   /* [S: teximage.c:texture_sub_image] FLUSH_VERTICES after every check
+    * (an erroneous call leaves the vertex format alone: a glTexCoord4f,
+    * glTexCoord3f after it keeps q), then nothing to store for an empty
     * region; offsets are biased by the (stripped, 0) border */
+   fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (width == 0 || height == 0)
       return;
    /* [S: st_cb_texture.c:st_TexSubImage] glBitmap's cache is drawn first */
@@ -985,12 +987,16 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
                                                         x, y, width, height))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   fgl_flush_vertices(ctx);
-   fgl_scene_flush(ctx);   /* the scene may sample the images */
+   /* _mesa_CopyTexSubImage{1,2}D check the target (no proxies) before
+    * copy_texture_sub_image_err's FLUSH_VERTICES: a bad target raises
+    * GL_INVALID_ENUM with the vertex format untouched (a glTexCoord4f,
+    * glTexCoord3f after it keeps q; the API fuzzer's seed 150) */
    if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
+   fgl_flush_vertices(ctx);
+   fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;

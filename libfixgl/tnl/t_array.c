@@ -150,14 +150,18 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
     * stride * index in 32 bits (wrapping), and a user array's size is
     * ~0u: an element that ends past 2^32 - 1 bytes is out of bounds too
     * (glDrawArrays with first -1 fetches index 2^32 - 1), one whose
-    * offset wraps is read there (first INT_MIN draws from element 0). */
+    * offset wraps is read there (first INT_MIN draws from element 0).
+    * The 32-bit offset is a signed GEP index added to the buffer's
+    * pointer (lp_build_gather): an element of a negative first below the
+    * 4 GB bound is read before the array's pointer (first -2 of a 16-byte
+    * stride: offset 0xffffffe0, 32 bytes before Ptr), not 4 GB after it. */
    const uint32_t offset = (uint32_t)((uint64_t)elt * (uint64_t)a->EffStride);
    if (!a->Ptr || (uint64_t)offset + element_bytes(a) > UINT32_MAX) {
       if (a->Size == 4)
          out[3] = 0.0f;
       return;
    }
-   const GLubyte *p = (const GLubyte *)a->Ptr + offset;
+   const GLubyte *p = (const GLubyte *)a->Ptr + (ptrdiff_t)(int32_t)offset;
    for (int c = 0; c < a->Size; c++)
       out[c] = fetch_comp(p, a->Type, normalized, c);
    if (a->Format == GL_BGRA) {
