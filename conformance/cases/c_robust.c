@@ -542,6 +542,27 @@ static void deletelists_before_any(fc_h *h)
     fc_error(h, "then");
 }
 
+/* glMap2f compiled with a huge vorder: the list stores ustride =
+ * components * vorder, which wraps in the oracle's int product; fixgl's
+ * signed product was undefined behaviour (clang's UBSan, found by the
+ * libFuzzer target in CI).  The replay raises the order's error again. */
+static void map2_huge_order_compiled(fc_h *h)
+{
+    static const GLfloat pts[64] = { 0 };
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glMap2f(GL_MAP2_VERTEX_3, 0, 1, 3, 2, 0, 1, 6, -2016688392, pts);
+    glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 2147483647, 0, 1, 8, 1431655766, pts);
+    glEndList();
+    fc_error(h, "compiled and executed");
+    glCallList(1);
+    fc_error(h, "replayed");
+    GLint order[2] = { -1, -1 };
+    glGetMapiv(GL_MAP2_VERTEX_3, GL_ORDER, order);
+    fc_value(h, "MAP2_VERTEX_3 order u", order[0]);
+    fc_value(h, "MAP2_VERTEX_3 order v", order[1]);
+    fc_error(h, "after the query");
+}
+
 /* glCallLists(GL_FLOAT) of names past the int range or NaN: the oracle's
  * (GLint) cast is x86's cvttss2si, INT_MIN (no such list).  fixgl's C
  * cast was undefined behaviour (clang's UBSan, found by the libFuzzer
@@ -1353,6 +1374,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
     ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
+    ROBUST("map2_huge_order_compiled", 8, 8, 0, map2_huge_order_compiled),
     ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),
     ROBUST("float_enum_params", 64, 64, 1, float_enum_params),
     ROBUST("clear_in_select_feedback", 64, 64, 2, clear_in_select_feedback),

@@ -1917,7 +1917,9 @@ bool fgl_save_map2(struct fgl_context *ctx, GLenum target, GLfloat u1, GLfloat u
       n[3].f = u2;
       n[4].f = v1;
       n[5].f = v2;
-      n[6].i = k * vorder;   /* ustride */
+      /* ustride; k * vorder wraps as Mesa's int product does on x86 for
+       * an order the replay rejects again */
+      n[6].i = (GLint)((unsigned)k * (unsigned)vorder);
       n[7].i = k;            /* vstride */
       n[8].i = uorder;
       n[9].i = vorder;
