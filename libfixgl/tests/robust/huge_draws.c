@@ -45,7 +45,10 @@ int main(void)
    enum { W = 32, H = 32 };
    static unsigned char buf[W * H * 4];
    static const GLfloat v[3][2] = { { -0.9f, -0.9f }, { 0.9f, -0.8f }, { 0.0f, 0.9f } };
-   static const GLubyte col[4] = { 10, 20, 30, 255 };
+   /* one colour for each of the three elements the small element draws
+    * fetch (a draw without a position array still fetches its colours) */
+   static const GLubyte col[3][4] = { { 10, 20, 30, 255 }, { 10, 20, 30, 255 },
+                                      { 10, 20, 30, 255 } };
    static const GLuint idx[3] = { 0, 1, 2 };
    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
    if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) {
