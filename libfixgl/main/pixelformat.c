@@ -35,10 +35,13 @@ static int64_t int_max(unsigned bits)
    return (int64_t)((1ull << (bits - 1)) - 1);
 }
 
-/* _mesa_i64roundevenf / _mesa_lroundevenf: rint under the default mode */
+/* _mesa_i64roundevenf / _mesa_lroundevenf: lrintf (round to nearest
+ * even; NaN and out-of-range values give LONG_MIN on x86-64, as cvtss2si
+ * does, where a cast of rintf's result was undefined behaviour: clang
+ * UBSan, found by the libFuzzer run in CI) */
 static int64_t round_even(float x)
 {
-   return (int64_t)rintf(x);
+   return (int64_t)lrintf(x);
 }
 
 static float unorm_to_float(uint32_t x, unsigned src_bits)
