@@ -512,6 +512,17 @@ bool r_cover_planes(const struct r_plane *p, int n, int32_t x0, int32_t y0, int3
 
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
+/* The bounding box in pixels of snapped positions X, Y: x inclusive /
+ * exclusive, y adjusted for the bottom-left convention
+ * (lp_setup_tri.c do_triangle_ccw); b = x0, x1, y0, y1, inclusive. */
+static inline void snapped_box(const int32_t X[3], const int32_t Y[3], int32_t b[4])
+{
+   b[0] = min3(X[0], X[1], X[2]) >> 8;
+   b[1] = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
+   b[2] = r_add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
+   b[3] = max3(Y[0], Y[1], Y[2]) >> 8;
+}
+
 /* The three edges of a counter-clockwise triangle (lp_setup_tri.c SSE
  * path); true when nothing in them wraps (see rasterize_direct). */
 static inline bool edge_planes(const int32_t X[3], const int32_t Y[3], struct r_plane p[3])
@@ -550,12 +561,10 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (rx0 > rx1 || ry0 > ry1)
       return;
 
-   /* bounding box in pixels: x inclusive/exclusive, y adjusted for the
-    * bottom-left convention */
-   int32_t bx0 = min3(X[0], X[1], X[2]) >> 8;
-   int32_t bx1 = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
-   int32_t by0 = r_add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
-   int32_t by1 = max3(Y[0], Y[1], Y[2]) >> 8;
+   /* bounding box in pixels */
+   int32_t b[4];
+   snapped_box(X, Y, b);
+   int32_t bx0 = b[0], bx1 = b[1], by0 = b[2], by1 = b[3];
    if (bx0 > rx1 || bx1 < rx0 || by0 > ry1 || by1 < ry0)
       return;
 
@@ -738,10 +747,9 @@ int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
    }
    /* rasterize_ccw's box, cut to the draw region: no pixel outside it is
     * covered */
-   int32_t bx0 = min3(X[0], X[1], X[2]) >> 8;
-   int32_t bx1 = sub_wrap(max3(X[0], X[1], X[2]), 1) >> 8;
-   int32_t by0 = r_add32(min3(Y[0], Y[1], Y[2]), 1) >> 8;
-   int32_t by1 = max3(Y[0], Y[1], Y[2]) >> 8;
+   int32_t b[4];
+   snapped_box(X, Y, b);
+   int32_t bx0 = b[0], bx1 = b[1], by0 = b[2], by1 = b[3];
    if (bx0 < rs->x0) bx0 = rs->x0;
    if (by0 < rs->y0) by0 = rs->y0;
    if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
