@@ -49,6 +49,8 @@
  * Usage: fixgl-bench-* [SECONDS_PER_SCENE [SCENE...]]   (default 2, every
  * scene)
  * FIXGL_BENCH_DUMP=DIR writes the last frame of each scene to DIR/NAME.ppm.
+ * FIXGL_BENCH_FRAMES=N draws exactly N frames of each scene, without warm-up
+ * or stats frames (a fixed amount of work for callgrind or perf).
  * Output, one line per scene:  scene NAME fps X frames N checksum C
  * The checksum (FNV-1a of the last frame) tells whether both libraries drew
  * the same image.  The fixgl build adds a line per scene with fixgl's own
@@ -868,6 +870,22 @@ static void stats_frames(const char *name, void (*frame)(void), double seconds)
 static void run_scene(const char *name, void (*frame)(void), double seconds,
                       const unsigned char *buf)
 {
+  /* FIXGL_BENCH_FRAMES=N: exactly N frames, no warm-up and no stats
+   * frames (for instruction counts under callgrind, or perf on a fixed
+   * amount of work) */
+  const char *fixed = getenv("FIXGL_BENCH_FRAMES");
+  if (fixed && atol(fixed) > 0) {
+    const long n = atol(fixed);
+    const double t0 = now();
+    for (long i = 0; i < n; i++)
+      frame();
+    const double el = now() - t0;
+    printf("scene %s fps %.2f frames %ld checksum %08x\n", name, (double)n / el, n,
+           (unsigned)checksum(buf));
+    fflush(stdout);
+    dump(name, buf);
+    return;
+  }
   double start = now();
   do
     frame();

@@ -148,10 +148,13 @@ bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum ta
 static inline void fgl_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
                             float x, float y, float z, float w)
 {
+   bool wrap = false;
    if (ctx->CompileFlag)
       fgl_save_attr(ctx, attr, n, x, y, z, w);
-   else
+   else if (!fgl_vbo_attr_fast(&ctx->Vbo, attr, n, x, y, z, w, &wrap))
       fgl_vbo_attr(ctx, attr, n, x, y, z, w);
+   else if (wrap)
+      fgl_vbo_wrap(ctx);
 }
 
 /* Executing glBegin/glEnd without the hooks (main/begin_end.c), for the

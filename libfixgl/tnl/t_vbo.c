@@ -501,6 +501,11 @@ void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
       vtx_wrap(ctx);
 }
 
+void fgl_vbo_wrap(struct fgl_context *ctx)
+{
+   vtx_wrap(ctx);
+}
+
 void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;

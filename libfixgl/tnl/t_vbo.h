@@ -22,6 +22,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
@@ -210,6 +211,49 @@ void fgl_vbo_fini(struct fgl_vbo *vbo);
 /* An attribute call (glColor*, glVertex*) with n components. */
 void fgl_vbo_attr(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n,
                   float x, float y, float z, float w);
+/* The common cases of fgl_vbo_attr, inline in the entry points (as
+ * Mesa's vbo_attrib_tmp.h ATTR macros): an attribute whose last call had
+ * as many components (fgl_vbo_fixup would change nothing), and a glVertex
+ * whose format holds its components and whose vertex fits the buffer
+ * (neither upgrade_vertex nor ensure_room would act); the vertex stored
+ * exactly as fgl_vbo_attr stores it.  Returns false, having done nothing,
+ * in every other case: the caller then calls fgl_vbo_attr. */
+static inline bool fgl_vbo_attr_fast(struct fgl_vbo *vbo, enum fgl_vbo_attr attr, unsigned n,
+                                     float x, float y, float z, float w, bool *wrap)
+{
+   float *cur = vbo->current[attr];
+   if (attr != FGL_ATTR_POS) {
+      if (__builtin_expect(vbo->active_size[attr] != n, 0))
+         return false;
+      cur[0] = x;
+      if (n > 1)
+         cur[1] = y;
+      if (n > 2)
+         cur[2] = z;
+      if (n > 3)
+         cur[3] = w;
+      vbo->need_flush |= FGL_VBO_FLUSH_CURRENT;
+      return true;
+   }
+   if (__builtin_expect(vbo->attr_size[FGL_ATTR_POS] < n ||
+                        (size_t)(vbo->vert_count + 1) * vbo->vstride > vbo->vert_alloc, 0))
+      return false;
+   cur[0] = x;
+   cur[1] = y;
+   cur[2] = z;
+   cur[3] = w;
+   float *dst = vbo->verts + (size_t)vbo->vert_count * vbo->vstride;
+   memcpy(dst, cur, 4 * sizeof(float));
+   for (unsigned m = vbo->format_mask; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
+      memcpy(dst + 4 * vbo->slot[a], vbo->current[a], 4 * sizeof(float));
+   }
+   *wrap = ++vbo->vert_count >= vbo->max_vert;
+   return true;
+}
+/* vbo_exec_vtx_wrap: the buffer is full in the middle of a primitive
+ * (after fgl_vbo_attr_fast set *wrap) */
+void fgl_vbo_wrap(struct fgl_context *ctx);
 /* vbo_exec_fixup_vertex: make attr's vertex-format size fit n components */
 void fgl_vbo_fixup(struct fgl_context *ctx, enum fgl_vbo_attr attr, unsigned n);
 void fgl_vbo_begin(struct fgl_context *ctx, GLenum mode);
