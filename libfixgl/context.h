@@ -566,7 +566,22 @@ struct fgl_framebuffer {
     * FlushFront does its work only when set, and clears it
     * [S: state_tracker/st_manager.c:st_manager_flush_frontbuffer] */
    bool ColorDefined;
+   /* With FIXGL_NUM_THREADS=1, whole-buffer clears not written yet
+    * (scene.c "Lazy clears"): per 64x64 tile, FGL_LAZY_COLOR and
+    * FGL_LAZY_ZS when the tile still holds, logically, the clear value
+    * that its memory does not; `pending` is set while some tile may */
+   struct fgl_lazy_clear {
+      uint8_t *tiles;
+      int tiles_x, tiles_y;
+      unsigned pending;
+      uint8_t rgba[4];
+      bool depth, stencil;
+      uint32_t zvalue;
+      uint8_t svalue;
+   } Lazy;
 };
+#define FGL_LAZY_COLOR 1u
+#define FGL_LAZY_ZS    2u
 
 /* The oracle's draw pipeline (draw_pipe_validate.c:validate_pipeline), as
  * llvmpipe splits the rasterizer state between draw and its own setup
@@ -999,6 +1014,10 @@ void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
                       const struct r_vertex *v);
 void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4], bool depth,
                       uint32_t zvalue, bool stencil, uint8_t svalue);
+/* Lazy clears (scene.c): writes the pending clears of `what`
+ * (FGL_LAZY_*) into fb's memory; frees fb's tiles (its buffers go). */
+void fgl_lazy_resolve(struct fgl_framebuffer *fb, unsigned what);
+void fgl_lazy_fini(struct fgl_framebuffer *fb);
 /* _Raster.shade_env := the object equal to _ShadeEnv (state.c); false
  * when there is none (out of memory, GL_OUT_OF_MEMORY raised). */
 bool fgl_set_shade_env(struct fgl_context *ctx);

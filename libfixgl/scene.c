@@ -11,12 +11,24 @@
  * scene is full (R_SCENE_MAX_BYTES).
  *
  * With one thread (FIXGL_NUM_THREADS=1) nothing is binned: the primitives
- * and clears are drawn at once on the calling thread, as the tiles would
- * draw them (the same code, the region not cut).  Binning, and replaying
- * a primitive's setup in every tile it touches, only pays when other
+ * are drawn at once on the calling thread, as the tiles would draw them
+ * (the same code, the region not cut).  Binning, and replaying a
+ * primitive's setup in every tile it touches, only pays when other
  * threads share the tiles: on one thread it cost 25-45% more CPU time a
  * frame (gears, sphere, lit200) than drawing directly.
+ *
+ * Lazy clears (one thread): a whole-buffer clear only marks the
+ * framebuffer's 64x64 tiles as holding its value (fb->Lazy); a tile's
+ * memory is written with it just before something draws there (a
+ * triangle: the tiles of its box; a line or a point: all), and every
+ * other reader or writer of the buffers goes through fgl_scene_flush,
+ * which writes all of them.  glFlush/glFinish copies a tile still
+ * pending as the clear colour straight into the owner's buffer
+ * (osmesa.c), so the pixels no primitive touched are written once a
+ * frame instead of three times (clear, read, copy).  The bytes that
+ * anyone can see are the same.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -194,9 +206,145 @@ static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
    r_scene_reset(s);
 }
 
+/* ---- Lazy clears ---- */
+
+static struct r_fb_state lazy_fb_state(const struct fgl_framebuffer *fb)
+{
+   struct r_fb_state o;
+   memset(&o, 0, sizeof(o));
+   o.color = fb->Color;
+   o.zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
+   o.zs_format = fb->ZSFormat;
+   o.width = fb->Width;
+   o.height = fb->Height;
+   return o;
+}
+
+/* writes `what` of the tiles tx0..tx1, ty0..ty1 (inclusive, in range) */
+static void lazy_resolve_tiles(struct fgl_framebuffer *fb, unsigned what, int tx0, int ty0,
+                               int tx1, int ty1)
+{
+   struct fgl_lazy_clear *lz = &fb->Lazy;
+   const struct r_fb_state fbs = lazy_fb_state(fb);
+   for (int ty = ty0; ty <= ty1; ty++) {
+      for (int tx = tx0; tx <= tx1; tx++) {
+         uint8_t *t = &lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx];
+         const unsigned b = *t & what;
+         if (!b)
+            continue;
+         const int x0 = tx * R_TILE_SIZE, y0 = ty * R_TILE_SIZE;
+         const int x1 = x0 + R_TILE_SIZE < fb->Width ? x0 + R_TILE_SIZE : fb->Width;
+         const int y1 = y0 + R_TILE_SIZE < fb->Height ? y0 + R_TILE_SIZE : fb->Height;
+         if (b & FGL_LAZY_COLOR)
+            r_clear_color_rect(&fbs, x0, y0, x1, y1, lz->rgba);
+         if (b & FGL_LAZY_ZS)
+            r_clear_depth_stencil_rect(&fbs, x0, y0, x1, y1, lz->depth, lz->zvalue, lz->stencil,
+                                       lz->svalue);
+         *t = (uint8_t)(*t & ~b);
+      }
+   }
+}
+
+void fgl_lazy_resolve(struct fgl_framebuffer *fb, unsigned what)
+{
+   if (!fb || !(fb->Lazy.pending & what))
+      return;
+   lazy_resolve_tiles(fb, what, 0, 0, fb->Lazy.tiles_x - 1, fb->Lazy.tiles_y - 1);
+   fb->Lazy.pending &= ~what;
+}
+
+void fgl_lazy_fini(struct fgl_framebuffer *fb)
+{
+   fgl_free(fb->Lazy.tiles);
+   memset(&fb->Lazy, 0, sizeof(fb->Lazy));
+}
+
+/* Records a whole-buffer clear of fb; false when it must be done now
+ * (no memory for the tiles) */
+static bool lazy_clear(struct fgl_framebuffer *fb, bool color, const uint8_t rgba[4], bool depth,
+                       uint32_t zvalue, bool stencil, uint8_t svalue)
+{
+   struct fgl_lazy_clear *lz = &fb->Lazy;
+   const int tx = (fb->Width + R_TILE_SIZE - 1) / R_TILE_SIZE;
+   const int ty = (fb->Height + R_TILE_SIZE - 1) / R_TILE_SIZE;
+   if (!lz->tiles || lz->tiles_x != tx || lz->tiles_y != ty) {
+      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
+      fgl_free(lz->tiles);
+      lz->tiles = fgl_calloc((size_t)tx * (size_t)ty, 1);
+      lz->pending = 0;
+      if (!lz->tiles)
+         return false;
+      lz->tiles_x = tx;
+      lz->tiles_y = ty;
+   }
+   /* a depth/stencil clear of other buffers than the pending one (depth
+    * alone, then stencil alone) writes the pending one first */
+   if ((depth || stencil) && (lz->pending & FGL_LAZY_ZS) &&
+       (lz->depth != depth || lz->stencil != stencil))
+      fgl_lazy_resolve(fb, FGL_LAZY_ZS);
+   unsigned bits = 0;
+   if (color) {
+      memcpy(lz->rgba, rgba, 4);
+      bits |= FGL_LAZY_COLOR;
+   }
+   if (depth || stencil) {
+      lz->depth = depth;
+      lz->stencil = stencil;
+      lz->zvalue = zvalue;
+      lz->svalue = svalue;
+      bits |= FGL_LAZY_ZS;
+   }
+   const size_t n = (size_t)tx * (size_t)ty;
+   for (size_t i = 0; i < n; i++)
+      lz->tiles[i] |= (uint8_t)bits;
+   lz->pending |= bits;
+   return true;
+}
+
+/* before a triangle is drawn directly: its tiles hold their clears */
+static void lazy_resolve_triangle(struct fgl_context *ctx, const struct r_state *rs,
+                                  const struct r_vertex *v0, const struct r_vertex *v1,
+                                  const struct r_vertex *v2)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || !fb->Lazy.pending)
+      return;
+   if (rs->fb->color != fb->Color || rs->fb->width != fb->Width || rs->fb->height != fb->Height) {
+      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
+      return;
+   }
+   /* the box of the window positions, a pixel wider on every side (the
+    * snapped box lies inside it); a NaN or an infinite coordinate: all */
+   float xmin = v0->pos[0], xmax = v0->pos[0], ymin = v0->pos[1], ymax = v0->pos[1];
+   const struct r_vertex *const v[2] = { v1, v2 };
+   for (int i = 0; i < 2; i++) {
+      xmin = fminf(xmin, v[i]->pos[0]);
+      xmax = fmaxf(xmax, v[i]->pos[0]);
+      ymin = fminf(ymin, v[i]->pos[1]);
+      ymax = fmaxf(ymax, v[i]->pos[1]);
+   }
+   const float lim = 1e9f;
+   if (!(xmin > -lim && xmax < lim && ymin > -lim && ymax < lim) ||
+       isnan(v0->pos[0] + v0->pos[1] + v1->pos[0] + v1->pos[1] + v2->pos[0] + v2->pos[1])) {
+      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
+      return;
+   }
+   int x0 = (int)floorf(xmin) - 1, x1 = (int)ceilf(xmax) + 1;
+   int y0 = (int)floorf(ymin) - 1, y1 = (int)ceilf(ymax) + 1;
+   if (x0 < rs->x0) x0 = rs->x0;
+   if (y0 < rs->y0) y0 = rs->y0;
+   if (x1 > rs->x1 - 1) x1 = rs->x1 - 1;
+   if (y1 > rs->y1 - 1) y1 = rs->y1 - 1;
+   if (x0 > x1 || y0 > y1)
+      return;
+   lazy_resolve_tiles(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS, x0 >> R_TILE_LOG2, y0 >> R_TILE_LOG2,
+                      x1 >> R_TILE_LOG2, y1 >> R_TILE_LOG2);
+}
+
 void fgl_scene_flush(struct fgl_context *ctx)
 {
    run_scene(ctx, NULL);
+   fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
 }
 
 void fgl_scene_flush_front(struct fgl_context *ctx)
@@ -217,7 +365,8 @@ void fgl_scene_flush_front(struct fgl_context *ctx)
          fb->FlushFrontEnd(fb);
       return;
    }
-   fgl_scene_flush(ctx);
+   /* (pending clears stay pending: FlushFront copies them) */
+   run_scene(ctx, NULL);
    if (fb && fb->FlushFront)
       fb->FlushFront(fb);
 }
@@ -227,6 +376,7 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v2)
 {
    if (ctx->_NumThreads == 1) {
+      lazy_resolve_triangle(ctx, rs, v0, v1, v2);
       r_triangle(rs, v0, v1, v2);
       return;
    }
@@ -243,6 +393,7 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
                      const struct r_vertex *v0, const struct r_vertex *v1)
 {
    if (ctx->_NumThreads == 1) {
+      fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_line(rs, v0, v1);
       return;
    }
@@ -259,6 +410,7 @@ void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
                       const struct r_vertex *v)
 {
    if (ctx->_NumThreads == 1) {
+      fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_point(rs, v);
       return;
    }
@@ -282,6 +434,11 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
       if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
          return;
    }
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (ctx->_NumThreads == 1 && fb && rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
+       rs->fb->height == fb->Height &&
+       lazy_clear(fb, color, rgba, depth, zvalue, stencil, svalue))
+      return;
    if (color)
       r_clear_color(rs, rgba);
    if (depth || stencil)

@@ -151,8 +151,51 @@ static void flush_front_rect(struct fgl_framebuffer *fb, int x0, int y0, int x1,
 static void flush_front_end(struct fgl_framebuffer *fb)
 {
    struct osmesa_context *c = osmesa_of(fb);
-   if (c->zs_copy)
+   if (c->zs_copy) {
+      fgl_lazy_resolve(fb, FGL_LAZY_ZS);
       snapshot_zs(c);
+   }
+}
+
+/* The copy while some tiles still hold a lazy clear (scene.c): those
+ * tiles' pixels are the clear colour, copied into the application's
+ * buffer from a row of it, the context's buffer left as it is. */
+static void flush_front_lazy(struct fgl_framebuffer *fb)
+{
+   struct osmesa_context *c = osmesa_of(fb);
+   const struct fgl_lazy_clear *lz = &fb->Lazy;
+   const int bpp = bytes_per_pixel(c->format);
+   const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
+   uint8_t fill[4 * R_TILE_SIZE];
+   for (int i = 0; i < R_TILE_SIZE; i++)
+      memcpy(fill + 4 * i, lz->rgba, 4);
+   for (int ty = 0; ty < lz->tiles_y; ty++) {
+      const uint8_t *tiles = lz->tiles + (size_t)ty * (size_t)lz->tiles_x;
+      const int y0 = ty * R_TILE_SIZE;
+      const int y1 = y0 + R_TILE_SIZE < fb->Height ? y0 + R_TILE_SIZE : fb->Height;
+      for (int y = y0; y < y1; y++) {
+         const int dst_row = c->y_up ? fb->Height - 1 - y : y;
+         uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride;
+         /* runs of tiles of one kind */
+         for (int tx = 0; tx < lz->tiles_x;) {
+            const bool lazy = (tiles[tx] & FGL_LAZY_COLOR) != 0;
+            int te = tx + 1;
+            while (te < lz->tiles_x && ((tiles[te] & FGL_LAZY_COLOR) != 0) == lazy)
+               te++;
+            const int x0 = tx * R_TILE_SIZE;
+            const int x1 = te * R_TILE_SIZE < fb->Width ? te * R_TILE_SIZE : fb->Width;
+            if (lazy) {
+               for (int x = x0; x < x1; x += R_TILE_SIZE)
+                  copy_row(c->format, dst + (size_t)x * (size_t)bpp, fill,
+                           x1 - x < R_TILE_SIZE ? x1 - x : R_TILE_SIZE);
+            } else {
+               copy_row(c->format, dst + (size_t)x0 * (size_t)bpp,
+                        fb->Color + ((size_t)y * (size_t)fb->Width + (size_t)x0) * 4, x1 - x0);
+            }
+            tx = te;
+         }
+      }
+   }
 }
 
 static void flush_front(struct fgl_framebuffer *fb)
@@ -160,7 +203,10 @@ static void flush_front(struct fgl_framebuffer *fb)
    if (!fb->ColorDefined)
       return;
    fb->ColorDefined = false;
-   flush_front_rect(fb, 0, 0, fb->Width, fb->Height);
+   if (fb->Lazy.pending & FGL_LAZY_COLOR)
+      flush_front_lazy(fb);
+   else
+      flush_front_rect(fb, 0, 0, fb->Width, fb->Height);
    flush_front_end(fb);
 }
 
@@ -269,6 +315,7 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 
 static void free_buffers(struct osmesa_context *c)
 {
+   fgl_lazy_fini(&c->fb);
    fgl_free(c->fb.Color);
    fgl_free(c->depth_mem);
    c->depth_mem = NULL;
