@@ -17,12 +17,14 @@
  * threads share the tiles: on one thread it cost 25-45% more CPU time a
  * frame (gears, sphere, lit200) than drawing directly.
  *
- * Lazy clears (one thread): a whole-buffer clear only marks the
- * framebuffer's 64x64 tiles as holding its value (fb->Lazy); a tile's
- * memory is written with it just before something draws there (a
- * triangle: the tiles of its box; a line or a point: all), and every
- * other reader or writer of the buffers goes through fgl_scene_flush,
- * which writes all of them.  glFlush/glFinish copies a tile still
+ * Lazy clears: a whole-buffer clear only marks the framebuffer's 64x64
+ * tiles as holding its value (fb->Lazy); a tile's memory is written with
+ * it just before something draws there (one thread: the tiles of a
+ * triangle's box, all of them for a line or a point; more threads: a
+ * clear with nothing binned before it is lazy, and each tile with
+ * commands writes it first, on the thread that then draws the tile),
+ * and every other reader or writer of the buffers goes through
+ * fgl_scene_flush, which writes all of them.  glFlush/glFinish copies a tile still
  * pending as the clear colour straight into the owner's buffer
  * (osmesa.c), so the pixels no primitive touched are written once a
  * frame instead of three times (clear, read, copy).  The bytes that
@@ -60,13 +62,27 @@ struct tile_job {
     * NULL: tiles_x columns of 64x64 tiles of the framebuffer */
    struct fgl_framebuffer *front;
    int tiles_x;
+   /* the framebuffer whose lazy clears (fb->Lazy) a tile with commands
+    * writes first, or NULL */
+   struct fgl_framebuffer *lazy;
 };
+
+static void lazy_resolve_tiles(struct fgl_framebuffer *fb, unsigned what, int tx0, int ty0,
+                               int tx1, int ty1);
 
 static void run_tile(void *arg, unsigned item, unsigned slot)
 {
    struct tile_job *j = arg;
-   if (j->scene)
+   if (j->scene) {
+      /* a tile that is drawn holds its lazy clears first (each tile's
+       * byte is this thread's alone during the job) */
+      if (j->lazy && j->scene->bins[item].count) {
+         const int tx = (int)(item % (unsigned)j->scene->tiles_x);
+         const int ty = (int)(item / (unsigned)j->scene->tiles_x);
+         lazy_resolve_tiles(j->lazy, FGL_LAZY_COLOR | FGL_LAZY_ZS, tx, ty, tx, ty);
+      }
       r_scene_run_tile(j->scene, item, &j->stats[slot]);
+   }
    if (j->front) {
       struct fgl_framebuffer *fb = j->front;
       const int x0 = (int)(item % (unsigned)j->tiles_x) * R_TILE_SIZE;
@@ -121,6 +137,22 @@ static void wait_async(struct fgl_context *ctx)
    r_scene_reset(&a->scene);
 }
 
+/* The framebuffer whose pending lazy clears the tiles of scene s write
+ * before drawing (tile_job.lazy): the context's, when s draws into it;
+ * when s draws elsewhere, they are all written now. */
+static struct fgl_framebuffer *scene_lazy_fb(struct fgl_context *ctx, const struct r_scene *s)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || !fb->Lazy.pending)
+      return NULL;
+   if (!r_scene_empty(s) &&
+       (s->fb->color != fb->Color || s->fb->width != fb->Width || s->fb->height != fb->Height)) {
+      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
+      return NULL;
+   }
+   return fb;
+}
+
 /* After a primitive was binned: hands the scene to the workers when it is
  * big enough and they have finished the previous one. */
 static void maybe_hand_over(struct fgl_context *ctx)
@@ -149,6 +181,7 @@ static void maybe_hand_over(struct fgl_context *ctx)
    memset(a->tiles.stats, 0, sizeof(a->tiles.stats));
    a->tiles.front = NULL;
    a->tiles.tiles_x = a->scene.tiles_x;
+   a->tiles.lazy = scene_lazy_fb(ctx, &a->scene);
    a->job = (struct r_job){
       .run = run_tile,
       .arg = &a->tiles,
@@ -185,6 +218,7 @@ static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
    j.scene = draw ? s : NULL;
    memset(j.stats, 0, sizeof(j.stats));
    j.front = front;
+   j.lazy = draw ? scene_lazy_fb(ctx, s) : NULL;
    unsigned count;
    if (draw) {
       j.tiles_x = s->tiles_x;
@@ -427,16 +461,25 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
                       uint32_t zvalue, bool stencil, uint8_t svalue)
 {
    const struct r_state *rs = &ctx->_Raster;
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const bool fb_match = fb && rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
+                         rs->fb->height == fb->Height;
    if (ctx->_NumThreads > 1) {
+      /* a clear with nothing binned before it (a frame's first) is lazy
+       * too: the tiles that the scene then draws write it first
+       * (run_tile), the others are copied as its colour */
+      if (fb_match && r_scene_empty(&ctx->_Scene)) {
+         wait_async(ctx);   /* no worker reads the tiles' bytes now */
+         if (lazy_clear(fb, color, rgba, depth, zvalue, stencil, svalue))
+            return;
+      }
       if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
          return;
       fgl_scene_flush(ctx);
       if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
          return;
    }
-   struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   if (ctx->_NumThreads == 1 && fb && rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
-       rs->fb->height == fb->Height &&
+   if (ctx->_NumThreads == 1 && fb_match &&
        lazy_clear(fb, color, rgba, depth, zvalue, stencil, svalue))
       return;
    if (color)

@@ -135,9 +135,15 @@ static struct osmesa_context *osmesa_of(struct fgl_framebuffer *fb)
    return (struct osmesa_context *)((char *)fb - offsetof(struct osmesa_context, fb));
 }
 
+static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, int rx1, int ry1);
+
 static void flush_front_rect(struct fgl_framebuffer *fb, int x0, int y0, int x1, int y1)
 {
    struct osmesa_context *c = osmesa_of(fb);
+   if (fb->Lazy.pending & FGL_LAZY_COLOR) {
+      flush_front_lazy_rect(fb, x0, y0, x1, y1);
+      return;
+   }
    const int bpp = bytes_per_pixel(c->format);
    const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
    for (int y = y0; y < y1; y++) {
@@ -157,10 +163,10 @@ static void flush_front_end(struct fgl_framebuffer *fb)
    }
 }
 
-/* The copy while some tiles still hold a lazy clear (scene.c): those
- * tiles' pixels are the clear colour, copied into the application's
+/* flush_front_rect while some tiles still hold a lazy clear (scene.c):
+ * those tiles' pixels are the clear colour, copied into the application's
  * buffer from a row of it, the context's buffer left as it is. */
-static void flush_front_lazy(struct fgl_framebuffer *fb)
+static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, int rx1, int ry1)
 {
    struct osmesa_context *c = osmesa_of(fb);
    const struct fgl_lazy_clear *lz = &fb->Lazy;
@@ -169,21 +175,22 @@ static void flush_front_lazy(struct fgl_framebuffer *fb)
    uint8_t fill[4 * R_TILE_SIZE];
    for (int i = 0; i < R_TILE_SIZE; i++)
       memcpy(fill + 4 * i, lz->rgba, 4);
-   for (int ty = 0; ty < lz->tiles_y; ty++) {
+   const int tx0 = rx0 / R_TILE_SIZE, tx1 = (rx1 + R_TILE_SIZE - 1) / R_TILE_SIZE;
+   for (int ty = ry0 / R_TILE_SIZE; ty * R_TILE_SIZE < ry1; ty++) {
       const uint8_t *tiles = lz->tiles + (size_t)ty * (size_t)lz->tiles_x;
-      const int y0 = ty * R_TILE_SIZE;
-      const int y1 = y0 + R_TILE_SIZE < fb->Height ? y0 + R_TILE_SIZE : fb->Height;
+      const int y0 = ty * R_TILE_SIZE > ry0 ? ty * R_TILE_SIZE : ry0;
+      const int y1 = (ty + 1) * R_TILE_SIZE < ry1 ? (ty + 1) * R_TILE_SIZE : ry1;
       for (int y = y0; y < y1; y++) {
          const int dst_row = c->y_up ? fb->Height - 1 - y : y;
          uint8_t *dst = (uint8_t *)c->user_buffer + (size_t)dst_row * stride;
          /* runs of tiles of one kind */
-         for (int tx = 0; tx < lz->tiles_x;) {
+         for (int tx = tx0; tx < tx1;) {
             const bool lazy = (tiles[tx] & FGL_LAZY_COLOR) != 0;
             int te = tx + 1;
-            while (te < lz->tiles_x && ((tiles[te] & FGL_LAZY_COLOR) != 0) == lazy)
+            while (te < tx1 && ((tiles[te] & FGL_LAZY_COLOR) != 0) == lazy)
                te++;
-            const int x0 = tx * R_TILE_SIZE;
-            const int x1 = te * R_TILE_SIZE < fb->Width ? te * R_TILE_SIZE : fb->Width;
+            const int x0 = tx * R_TILE_SIZE > rx0 ? tx * R_TILE_SIZE : rx0;
+            const int x1 = te * R_TILE_SIZE < rx1 ? te * R_TILE_SIZE : rx1;
             if (lazy) {
                for (int x = x0; x < x1; x += R_TILE_SIZE)
                   copy_row(c->format, dst + (size_t)x * (size_t)bpp, fill,
@@ -203,10 +210,7 @@ static void flush_front(struct fgl_framebuffer *fb)
    if (!fb->ColorDefined)
       return;
    fb->ColorDefined = false;
-   if (fb->Lazy.pending & FGL_LAZY_COLOR)
-      flush_front_lazy(fb);
-   else
-      flush_front_rect(fb, 0, 0, fb->Width, fb->Height);
+   flush_front_rect(fb, 0, 0, fb->Width, fb->Height);
    flush_front_end(fb);
 }
 
