@@ -335,44 +335,52 @@ static bool lazy_clear(struct fgl_framebuffer *fb, bool color, const uint8_t rgb
    return true;
 }
 
-/* before a triangle is drawn directly: its tiles hold their clears */
-static void lazy_resolve_triangle(struct fgl_context *ctx, const struct r_state *rs,
-                                  const struct r_vertex *v0, const struct r_vertex *v1,
-                                  const struct r_vertex *v2)
+/* before a triangle is drawn directly: its tiles hold their clears.  Per
+ * triangle, so cheap when they already do: the box of the window
+ * positions, a pixel or two wider on every side (the snapped box lies
+ * inside it), its tiles' bytes tested, lazy_resolve_tiles called only
+ * when one is set.  A coordinate outside +-1e9 or NaN: all tiles. */
+static inline void lazy_resolve_triangle(struct fgl_context *ctx, const struct r_state *rs,
+                                         const struct r_vertex *v0, const struct r_vertex *v1,
+                                         const struct r_vertex *v2)
 {
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb || !fb->Lazy.pending)
       return;
-   if (rs->fb->color != fb->Color || rs->fb->width != fb->Width || rs->fb->height != fb->Height) {
-      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
-      return;
-   }
-   /* the box of the window positions, a pixel wider on every side (the
-    * snapped box lies inside it); a NaN or an infinite coordinate: all */
-   float xmin = v0->pos[0], xmax = v0->pos[0], ymin = v0->pos[1], ymax = v0->pos[1];
-   const struct r_vertex *const v[2] = { v1, v2 };
-   for (int i = 0; i < 2; i++) {
-      xmin = fminf(xmin, v[i]->pos[0]);
-      xmax = fmaxf(xmax, v[i]->pos[0]);
-      ymin = fminf(ymin, v[i]->pos[1]);
-      ymax = fmaxf(ymax, v[i]->pos[1]);
-   }
+   const struct r_vertex *const v[3] = { v0, v1, v2 };
    const float lim = 1e9f;
-   if (!(xmin > -lim && xmax < lim && ymin > -lim && ymax < lim) ||
-       isnan(v0->pos[0] + v0->pos[1] + v1->pos[0] + v1->pos[1] + v2->pos[0] + v2->pos[1])) {
+   float xmin = lim, xmax = -lim, ymin = lim, ymax = -lim;
+   bool ok = rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
+             rs->fb->height == fb->Height;
+   for (int i = 0; i < 3; i++) {
+      const float x = v[i]->pos[0], y = v[i]->pos[1];
+      ok &= x > -lim && x < lim && y > -lim && y < lim;   /* false for NaN */
+      xmin = x < xmin ? x : xmin;
+      xmax = x > xmax ? x : xmax;
+      ymin = y < ymin ? y : ymin;
+      ymax = y > ymax ? y : ymax;
+   }
+   if (!ok) {
       fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       return;
    }
-   int x0 = (int)floorf(xmin) - 1, x1 = (int)ceilf(xmax) + 1;
-   int y0 = (int)floorf(ymin) - 1, y1 = (int)ceilf(ymax) + 1;
+   /* (int) truncates toward zero: at most one above floor, one below ceil */
+   int x0 = (int)xmin - 2, x1 = (int)xmax + 2, y0 = (int)ymin - 2, y1 = (int)ymax + 2;
    if (x0 < rs->x0) x0 = rs->x0;
    if (y0 < rs->y0) y0 = rs->y0;
    if (x1 > rs->x1 - 1) x1 = rs->x1 - 1;
    if (y1 > rs->y1 - 1) y1 = rs->y1 - 1;
    if (x0 > x1 || y0 > y1)
       return;
-   lazy_resolve_tiles(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS, x0 >> R_TILE_LOG2, y0 >> R_TILE_LOG2,
-                      x1 >> R_TILE_LOG2, y1 >> R_TILE_LOG2);
+   const struct fgl_lazy_clear *lz = &fb->Lazy;
+   const int tx0 = x0 >> R_TILE_LOG2, tx1 = x1 >> R_TILE_LOG2;
+   const int ty0 = y0 >> R_TILE_LOG2, ty1 = y1 >> R_TILE_LOG2;
+   for (int ty = ty0; ty <= ty1; ty++)
+      for (int tx = tx0; tx <= tx1; tx++)
+         if (lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx]) {
+            lazy_resolve_tiles(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS, tx0, ty0, tx1, ty1);
+            return;
+         }
 }
 
 void fgl_scene_flush(struct fgl_context *ctx)

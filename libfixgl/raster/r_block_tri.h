@@ -116,11 +116,13 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    for (int32_t by = by0; by <= cv->y1; by += 4) {
       if (BLOCK_STAGE_PREFETCH)
          TRI_PREFETCH_ROWS(by + 4, by + 7)
-      /* the box's rows in this block row, one nibble each */
-      unsigned rows = 0;
-      for (int j = 0; j < 4; j++)
-         if (by + j >= cv->y0 && by + j <= cv->y1)
-            rows |= 0xfu << (4 * j);
+      /* the box's rows in this block row, one nibble each (by <= y1,
+       * by + 3 >= y0: only the first and the last block rows lose some) */
+      unsigned rows = 0xffffu;
+      if (by < cv->y0)
+         rows &= 0xffffu << (4 * (cv->y0 - by));
+      if (by + 3 > cv->y1)
+         rows &= 0xffffu >> (4 * (by + 3 - cv->y1));
       /* the row's blocks that may hold a covered pixel */
       int32_t first = bx0, last = cv->x1;
       if (wide && !block_row_span(cv, rowc, bx0, &first, &last)) {
