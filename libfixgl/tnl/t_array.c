@@ -267,6 +267,12 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
       { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
    };
+   /* The immediate-mode format stays as FLUSH_FOR_DRAW left it (with only
+    * attributes set it is not reset: fgl_flush_for_draw); the batch's
+    * format replaces it while the draw runs. */
+   unsigned imm_size[FGL_ATTR_COUNT];
+   memcpy(imm_size, vbo->attr_size, sizeof(imm_size));
+   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
    /* No position array: the compatibility profile draws all the same,
     * every vertex at the position attribute's current value, which no
     * glVertex changes: (0, 0, 0, 1) (st_atom_array.c feeds a disabled
@@ -295,8 +301,7 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    };
    const struct fgl_vertex_view view = fgl_vertex_view_full(verts);
    t_render_batch_elts(ctx, &view, nverts, elts, &prim, 1);
-   /* flush_for_draw left the format empty */
-   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   memcpy(vbo->attr_size, imm_size, sizeof(imm_size));
    if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {
       fgl_free(vbo->array_verts);
       vbo->array_verts = NULL;
