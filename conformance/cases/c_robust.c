@@ -1479,6 +1479,72 @@ static void compile_execute_inside_begin(fc_h *h)
     fc_capture(h);
 }
 
+/* Array draws longer than 65536 vertices are fetched and transformed
+ * window by window (libfixgl/tnl/t_array.c, t_render.c t_render_source:
+ * bounded memory, so that a draw of 2^31 - 1 vertices completes); the
+ * result must be the draw of all the vertices at once: the vsplit segments
+ * (4096, 4095 for triangles, 1024 for long fans and polygons) with their
+ * clipping decisions, strip parity, a fan's and a polygon's vertex 0 and
+ * edge flags, a loop's closing line and the line stipple counter across
+ * segments.  Each mode draws 70001 vertices, some of its segments clipped
+ * at the window's sides; unfilled polygons and line stipple in part. */
+static void long_array_draws(fc_h *h)
+{
+    enum { N = 70001 };
+    static GLfloat v[N][3];
+    static GLubyte c[N][4];
+    static GLboolean ef[N];
+    uint32_t seed = 12345u;
+    for (int i = 0; i < N; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        const int seg = i / 4096;
+        /* every third segment reaches past the window (clipped) */
+        const float span = seg % 3 == 1 ? 90.0f : 56.0f;
+        v[i][0] = 4.0f + (float)((seed >> 8) % 1000) * span / 1000.0f - (seg % 3 == 1 ? 16.0f : 0.0f);
+        v[i][1] = 4.0f + (float)((seed >> 18) % 1000) * 56.0f / 1000.0f;
+        v[i][2] = (float)((seed >> 4) % 255) / 256.0f - 0.5f;
+        c[i][0] = (GLubyte)(seed >> 3), c[i][1] = (GLubyte)(seed >> 11);
+        c[i][2] = (GLubyte)(seed >> 19), c[i][3] = 255;
+        ef[i] = (seed >> 27) % 3 != 0;
+    }
+    fc_pixel_ortho(h);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glDrawArrays(modes[m], 0, N);
+        fc_error(h, "draw");
+        fc_capture(h);
+    }
+    /* unfilled with edge flags, line stipple, an odd first */
+    glEnableClientState(GL_EDGE_FLAG_ARRAY);
+    glEdgeFlagPointer(0, ef);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(3, 0x3c5f);
+    static const GLenum unfilled[] = { GL_TRIANGLE_FAN, GL_POLYGON, GL_QUAD_STRIP,
+                                       GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLE_STRIP };
+    for (size_t m = 0; m < sizeof unfilled / sizeof unfilled[0]; m++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glDrawArrays(unfilled[m], 3, N - 3);
+        fc_error(h, "unfilled draw");
+        fc_capture(h);
+    }
+    glDisable(GL_LINE_STIPPLE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisableClientState(GL_EDGE_FLAG_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisable(GL_DEPTH_TEST);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -1520,5 +1586,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("calllists_million", 64, 64, 1, calllists_million),
     ROBUST("draw_keeps_vertex_format", 32, 32, 1, draw_keeps_vertex_format),
     ROBUST("compile_execute_inside_begin", 64, 64, 1, compile_execute_inside_begin),
+    ROBUST("long_array_draws", 64, 64, 16, long_array_draws),
     { 0 }
 };
