@@ -162,6 +162,14 @@ void fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
         if (trace)
             fprintf(stderr, "%zu %s\n", i, e->name);
         ret = fz_call_entry(c->fn, c->a);
+        /* OSMesaGetDepthBuffer's last output is the buffer's address, which
+         * differs from run to run: not compared, also where another
+         * output's hashed bytes reach it (seed 453) */
+        if ((int)c->fn == fn_depthbuffer) {
+            const int64_t off = c->a[e->nparams - 1].i;
+            if (off >= 0 && off < FZ_OUT_PERSIST)
+                memset(out_arena + off, 0xa5, sizeof(void *));
+        }
         for (int j = 0; j < e->nparams; j++)
             if (e->params[j].kind == FZ_PTR_OUT && c->a[j].i >= 0 && c->a[j].i < FZ_OUT_PERSIST
                 && !((int)c->fn == fn_depthbuffer && j == e->nparams - 1))
