@@ -209,3 +209,13 @@ void fgl_flush_current(struct fgl_context *ctx)
    if ((ctx->Vbo.need_flush & FGL_VBO_FLUSH_CURRENT) && !fgl_inside_begin_end(ctx))
       fgl_vbo_flush_current(ctx);
 }
+
+void fgl_flush_for_draw(struct fgl_context *ctx)
+{
+   if (!ctx->Vbo.need_flush || fgl_inside_begin_end(ctx))
+      return;
+   if (ctx->Vbo.need_flush & FGL_VBO_FLUSH_STORED)
+      fgl_vbo_flush_vertices(ctx);
+   else
+      fgl_vbo_flush_current(ctx);
+}

@@ -981,6 +981,16 @@ void fgl_flush_vertices(struct fgl_context *ctx);
  * to ctx->Current (colour material included), keeping the format. */
 void fgl_flush_current(struct fgl_context *ctx);
 
+/* Mesa's FLUSH_FOR_DRAW (main/context.h), which an array draw and the
+ * replay of a display list's vertex list do first:
+ * vbo_exec_FlushVertices(ctx, NeedFlush).  With a primitive stored since
+ * the last flush it is FLUSH_VERTICES; with only attributes set (NeedFlush
+ * is FLUSH_UPDATE_CURRENT) their values are copied to ctx->Current and
+ * *stay in the immediate-mode vertex format* (the format is not reset, so
+ * sizes and active sizes carry over to the next attribute calls), and the
+ * next FLUSH_VERTICES flushes; inside glBegin/glEnd nothing. */
+void fgl_flush_for_draw(struct fgl_context *ctx);
+
 /* Recompute derived state for the dirty groups, in dependency order. */
 void fgl_update_state(struct fgl_context *ctx);
 /* The shading environment of m_shade_point (math/m_shade.h) from the
@@ -1075,11 +1085,15 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
    } while (0)
 #define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
 
-/* The same for the commands whose only check is the BeginEnd dispatch
- * table's generic_nop: while a list is compiled the dispatch is the save
- * table, whose entries for commands executed at once are the plain
- * _mesa_ functions (main/dlist.c:_mesa_init_dispatch_save), so they run
- * even when a GL_COMPILE_AND_EXECUTE list has left a glBegin open. */
+/* The same for the commands executed at once while compiling (not
+ * compiled into lists) whose only check is the BeginEnd dispatch table's
+ * generic_nop: while a list is compiled the dispatch is the save table,
+ * whose entries for them are the plain _mesa_ functions
+ * (main/dlist.c:_mesa_init_dispatch_save), so they run even when a
+ * GL_COMPILE_AND_EXECUTE list has left a glBegin open.  A compiled command
+ * is executed under GL_COMPILE_AND_EXECUTE through ctx->Exec, which is the
+ * BeginEnd table while a glBegin is open (vbo_exec_Begin), so it takes
+ * ASSERT_OUTSIDE_BEGIN_END after its FGL_SAVE (`robust/compile_execute_inside_begin`). */
 #define ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, ret)    \
    do {                                                    \
       if (!(ctx)->CompileFlag)                             \

@@ -1358,6 +1358,193 @@ static void calllists_million(fc_h *h)
     fc_capture(h);
 }
 
+/* An array draw after current-value calls only (no vertex stored since the
+ * last flush) is FLUSH_FOR_DRAW with FLUSH_UPDATE_CURRENT: the values are
+ * copied to the current ones and the immediate-mode vertex format stays,
+ * with its sizes and the sizes of the last calls.  glTexCoord4f,
+ * glMultiTexCoord1d, glTexCoord4f, a draw, glMultiTexCoord3f keeps q = 4
+ * (fixgl reset the format at the draw and gave q = 1; the API fuzzer's
+ * seed 150).  And glEvalPoint2 with GL_MAP2_NORMAL enabled after such a
+ * draw evaluates the normal into that vertex format (seed 224). */
+static void draw_keeps_vertex_format(fc_h *h)
+{
+    static const GLfloat v[] = { 4, 4, 28, 6, 14, 28 };
+    static const GLuint idx[] = { 0, 1, 2 };
+    fc_pixel_ortho(h);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    for (int k = 0; k < 6; k++) {
+        if (k & 1)
+            glEnableClientState(GL_VERTEX_ARRAY);
+        else
+            glDisableClientState(GL_VERTEX_ARRAY);
+        glTexCoord4f(-0.5f, -0.75f, 5, 2);
+        glMultiTexCoord1d(GL_TEXTURE0, 1.99);
+        glTexCoord4f(-0.5f, -0.75f, 5, 4);
+        if (k < 2)
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        else if (k < 4)
+            glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, idx);
+        else
+            glDrawRangeElements(GL_LINE_LOOP, 0, 2, 3, GL_UNSIGNED_INT, idx);
+        glMultiTexCoord3f(GL_TEXTURE0, 0.25f, 0.5f, 0.75f);
+        fc_error(h, "draw");
+        fc_get_float(h, "texture coordinates after the draw", GL_CURRENT_TEXTURE_COORDS, 4);
+        glFinish();
+        fc_get_float(h, "texture coordinates after a flush", GL_CURRENT_TEXTURE_COORDS, 4);
+    }
+    glDisableClientState(GL_VERTEX_ARRAY);
+    /* seed 224: GL_MAP2_NORMAL on, no map given: the default normal map */
+    glEnable(GL_MAP2_NORMAL);
+    glNormal3f(0.5f, 0.25f, 0);
+    glMultiTexCoord2d(GL_TEXTURE5, 6, 1.03);
+    glDrawElements(GL_TRIANGLE_STRIP, 3, GL_UNSIGNED_INT, idx);
+    glEvalPoint2(0, 5);
+    fc_error(h, "eval point");
+    fc_get_float(h, "normal after glEvalPoint2", GL_CURRENT_NORMAL, 3);
+    glDisable(GL_MAP2_NORMAL);
+    fc_capture(h);
+}
+
+/* Under GL_COMPILE_AND_EXECUTE a vertex list wrapped inside glBegin/glEnd
+ * executes its glBegin (vbo_save's loopback), and the dispatch stays the
+ * save table: the state queries executed at once while compiling run
+ * through it without the glBegin/glEnd check, the texture environment,
+ * texgen and texture parameter queries too (fixgl refused these three
+ * with GL_INVALID_OPERATION and wrote nothing; the API fuzzer's seeds 171
+ * and 281).  A compiled command is executed through ctx->Exec, the
+ * BeginEnd table while the glBegin is open: after glCallLists inside the
+ * compiled glBegin (the compiler forgets that it is inside), glRasterPos,
+ * glWindowPos, glClearAccum and glAccum are compiled and refused
+ * (fixgl executed them; seed 261). */
+static void compile_execute_inside_begin(fc_h *h)
+{
+    GLuint tex = 0;
+    static const GLubyte texel[4 * 4] = { 10, 20, 30, 40 };
+    static const GLubyte names[1] = { 0 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glRasterPos2f(3, 5);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(2, 2);
+    glVertex2f(30, 4);
+    glVertex4i(16, 30, 0, 1);    /* a larger position: wraps, glBegin executed */
+    GLfloat f[4] = { -1, -1, -1, -1 };
+    GLint iv[4] = { -1, -1, -1, -1 };
+    GLdouble d[4] = { -1, -1, -1, -1 };
+    glGetTexGenfv(GL_T, GL_OBJECT_PLANE, f);
+    fc_blob(h, "glGetTexGenfv", f, sizeof f);
+    glGetTexGeniv(GL_T, GL_TEXTURE_GEN_MODE, iv);
+    fc_blob(h, "glGetTexGeniv", iv, sizeof iv);
+    glGetTexGendv(GL_S, GL_EYE_PLANE, d);
+    fc_blob(h, "glGetTexGendv", d, sizeof d);
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, f);
+    fc_blob(h, "glGetTexEnvfv", f, sizeof f);
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, iv);
+    fc_blob(h, "glGetTexEnviv", iv, sizeof iv);
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, f);
+    fc_blob(h, "glGetTexParameterfv", f, sizeof f);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, iv);
+    fc_blob(h, "glGetTexParameteriv", iv, sizeof iv);
+    glEnd();
+    glEndList();
+    fc_error(h, "list 1");
+    glNewList(2, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_POLYGON);
+    glVertex2f(40, 40);
+    glCallLists(0, GL_UNSIGNED_BYTE, names);   /* glBegin executed */
+    glRasterPos2f(20, 20);
+    glWindowPos2i(30, 30);
+    glClearAccum(0.5f, 0.5f, 0.5f, 0.5f);
+    glAccum(GL_LOAD, 1.0f);
+    glGetFloatv(GL_CURRENT_RASTER_POSITION, f);
+    fc_blob(h, "raster position inside", f, sizeof f);
+    glEnd();
+    glEndList();
+    fc_error(h, "list 2");
+    fc_get_float(h, "raster position", GL_CURRENT_RASTER_POSITION, 4);
+    fc_get_float(h, "accum clear value", GL_ACCUM_CLEAR_VALUE, 4);
+    glCallList(2);
+    fc_error(h, "list 2 called");
+    fc_get_float(h, "raster position after the call", GL_CURRENT_RASTER_POSITION, 4);
+    fc_get_float(h, "accum clear value after the call", GL_ACCUM_CLEAR_VALUE, 4);
+    glDisable(GL_TEXTURE_GEN_T);
+    glDeleteTextures(1, &tex);
+    fc_capture(h);
+}
+
+/* Array draws longer than 65536 vertices are fetched and transformed
+ * window by window (libfixgl/tnl/t_array.c, t_render.c t_render_source:
+ * bounded memory, so that a draw of 2^31 - 1 vertices completes); the
+ * result must be the draw of all the vertices at once: the vsplit segments
+ * (4096, 4095 for triangles, 1024 for long fans and polygons) with their
+ * clipping decisions, strip parity, a fan's and a polygon's vertex 0 and
+ * edge flags, a loop's closing line and the line stipple counter across
+ * segments.  Each mode draws 70001 vertices, some of its segments clipped
+ * at the window's sides; unfilled polygons and line stipple in part. */
+static void long_array_draws(fc_h *h)
+{
+    enum { N = 70001 };
+    static GLfloat v[N][3];
+    static GLubyte c[N][4];
+    static GLboolean ef[N];
+    uint32_t seed = 12345u;
+    for (int i = 0; i < N; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        const int seg = i / 4096;
+        /* every third segment reaches past the window (clipped) */
+        const float span = seg % 3 == 1 ? 90.0f : 56.0f;
+        v[i][0] = 4.0f + (float)((seed >> 8) % 1000) * span / 1000.0f - (seg % 3 == 1 ? 16.0f : 0.0f);
+        v[i][1] = 4.0f + (float)((seed >> 18) % 1000) * 56.0f / 1000.0f;
+        v[i][2] = (float)((seed >> 4) % 255) / 256.0f - 0.5f;
+        c[i][0] = (GLubyte)(seed >> 3), c[i][1] = (GLubyte)(seed >> 11);
+        c[i][2] = (GLubyte)(seed >> 19), c[i][3] = 255;
+        ef[i] = (seed >> 27) % 3 != 0;
+    }
+    fc_pixel_ortho(h);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    static const GLenum modes[] = { GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP,
+                                    GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glDrawArrays(modes[m], 0, N);
+        fc_error(h, "draw");
+        fc_capture(h);
+    }
+    /* unfilled with edge flags, line stipple, an odd first */
+    glEnableClientState(GL_EDGE_FLAG_ARRAY);
+    glEdgeFlagPointer(0, ef);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(3, 0x3c5f);
+    static const GLenum unfilled[] = { GL_TRIANGLE_FAN, GL_POLYGON, GL_QUAD_STRIP,
+                                       GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLE_STRIP };
+    for (size_t m = 0; m < sizeof unfilled / sizeof unfilled[0]; m++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glDrawArrays(unfilled[m], 3, N - 3);
+        fc_error(h, "unfilled draw");
+        fc_capture(h);
+    }
+    glDisable(GL_LINE_STIPPLE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisableClientState(GL_EDGE_FLAG_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisable(GL_DEPTH_TEST);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -1397,5 +1584,8 @@ const fc_case fc_cases_robust[] = {
     ROBUST("huge_texture", 64, 64, 1, huge_texture),
     ROBUST("huge_viewport", 64, 64, 1, huge_viewport),
     ROBUST("calllists_million", 64, 64, 1, calllists_million),
+    ROBUST("draw_keeps_vertex_format", 32, 32, 1, draw_keeps_vertex_format),
+    ROBUST("compile_execute_inside_begin", 64, 64, 1, compile_execute_inside_begin),
+    ROBUST("long_array_draws", 64, 64, 16, long_array_draws),
     { 0 }
 };

@@ -406,6 +406,10 @@ static int worker(uint64_t seed, const char *resfile)
                 fz_print_c(c, calls, n, comment);
                 fclose(c);
             }
+            /* the reduced stream too, for the executors (FZ_TRACE, FZ_WALK) */
+            char stream_path[sizeof repro + 4];
+            snprintf(stream_path, sizeof stream_path, "%.*s.fzs", (int)strlen(repro) - 2, repro);
+            fz_write_stream(stream_path, calls, n);
         }
     }
     unlink(tmp_stream);

@@ -12,8 +12,15 @@
  *
  * --out runs the named cases (fixed names, random/s<seed>-i<index>,
  * random-lit/..., random-raster/..., random-tex/..., random-shading/...) in order and writes their records to FILE,
- * after two FC_REC_INFO records with GL_RENDERER and GL_VERSION.  Each case gets FC_CASE_TIMEOUT seconds
- * (SIGALRM ends the process).  Test-only switches for the harness
+ * after two FC_REC_INFO records with GL_RENDERER and GL_VERSION.  Each case gets
+ * FC_CASE_CPU_SECONDS of CPU time (SIGPROF ends the process: a case that
+ * spins) and FC_CASE_WALL_SECONDS of wall-clock time (SIGALRM: a case that
+ * blocks).  The limit that catches a spinning case counts CPU time, not
+ * wall time, so that it does not depend on the load of the machine: on a
+ * shared 2-core machine running the conformance suites with 2 jobs, the
+ * oracle's texture/image_rendered (24 s alone) once passed the former
+ * 60-second wall-clock limit.  The wall-clock limit only has to catch a
+ * process that waits forever, so it is generous.  Test-only switches for the harness
  * self-test: --perturb alters every captured frame (see fc_harness.h),
  * FC_TRACE=FILE prints the GL calls of random scenes to FILE (fc_trace.h).
  * --crash=NAME dies with SIGSEGV right after starting case NAME.
@@ -30,11 +37,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 extern FILE *fc_trace_out;   /* fc_trace.c: random scene call trace */
 
-#define FC_CASE_TIMEOUT 60
+/* Per case: CPU seconds of the whole process (every thread: fixgl's
+ * workers and llvmpipe's rasterizer thread count) and wall-clock seconds
+ * (below meson's test timeouts, so that the runner names the case). */
+#define FC_CASE_CPU_SECONDS 60
+#define FC_CASE_WALL_SECONDS 400
 
 /* name, tags and (reference cases) the colour tolerance */
 static void print_case(const fc_case *c)
@@ -177,7 +189,9 @@ int main(int argc, char **argv)
             fprintf(stderr, "renderer: unknown case %s\n", argv[i]);
             return 2;
         }
-        alarm(FC_CASE_TIMEOUT);
+        const struct itimerval cpu_limit = { .it_value = { .tv_sec = FC_CASE_CPU_SECONDS } };
+        setitimer(ITIMER_PROF, &cpu_limit, NULL);
+        alarm(FC_CASE_WALL_SECONDS);
         if (crash && strcmp(crash, c->name) == 0) {
             fc_rec_write(out, FC_REC_CASE, c->name, NULL, 0, NULL, 0, NULL, 0);
             raise(SIGSEGV);

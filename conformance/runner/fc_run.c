@@ -120,8 +120,10 @@ static unsigned char *read_file(const char *path, size_t *len)
 
 static void describe_exit(int status, const char *log, char *out, size_t size)
 {
-    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
-        snprintf(out, size, "timed out (log %s)", log);
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGPROF)
+        snprintf(out, size, "timed out: CPU time limit (log %s)", log);
+    else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+        snprintf(out, size, "timed out: wall-clock limit (log %s)", log);
     else if (WIFSIGNALED(status))
         snprintf(out, size, "crashed: signal %d (%s) (log %s)", WTERMSIG(status),
                  strsignal(WTERMSIG(status)), log);

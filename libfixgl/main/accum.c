@@ -88,7 +88,7 @@ void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat a
       return;
    FGL_SAVE(ctx, ClearAccum, red, green, blue, alpha);
    /* no check of its own: only the BeginEnd dispatch's */
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: main/accum.c:_mesa_ClearAccum]: CLAMP to [-1, 1] (NaN gives -1),
     * no flush, and an unchanged value is not marked for
     * glPopAttrib */
@@ -229,7 +229,7 @@ void GLAPIENTRY glAccum(GLenum op, GLfloat value)
    if (!ctx)
       return;
    FGL_SAVE(ctx, Accum, op, value);
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: main/accum.c:_mesa_Accum] */
    FGL_FLUSH_VERTICES(ctx, 0);
    switch (op) {

@@ -2204,21 +2204,6 @@ static void exec_tex_image_node(struct fgl_context *ctx, const union dl_node *n)
 /* Execution                                                           */
 /* ------------------------------------------------------------------ */
 
-/* FLUSH_FOR_DRAW: vbo_exec_FlushVertices(ctx, NeedFlush).  With only
- * attributes set since the last flush (FLUSH_UPDATE_CURRENT), their values
- * are copied to the current ones and stay in the immediate-mode vertex
- * format: the next full flush copies them again, over what the list's
- * vertices made current (`dlist/current_values`). */
-static void flush_for_draw(struct fgl_context *ctx)
-{
-   if (!ctx->Vbo.need_flush || fgl_inside_begin_end(ctx))
-      return;
-   if (ctx->Vbo.need_flush & FGL_VBO_FLUSH_STORED)
-      fgl_vbo_flush_vertices(ctx);
-   else
-      fgl_vbo_flush_current(ctx);
-}
-
 /* _vbo_loopback_vertex_list: the primitives as immediate-mode calls, the
  * materials first, then the other attributes, the position last; a
  * continued primitive skips its copied vertices.  base: vertex 0 of the
@@ -2310,7 +2295,12 @@ static void playback_copy_to_current(struct fgl_context *ctx, const struct verte
 /* vbo_save_playback_vertex_list(_loopback) */
 static void playback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl)
 {
-   flush_for_draw(ctx);
+   /* FLUSH_FOR_DRAW: attributes set outside glBegin/glEnd since the last
+    * flush (a list's glColor, replayed through the immediate-mode
+    * functions) are copied to the current values and stay in the vertex
+    * format, so the next full flush copies them again over what the
+    * list's last vertex made current (`dlist/current_values`) */
+   fgl_flush_for_draw(ctx);
    if (fgl_inside_begin_end(ctx) && vl->draw_begins) {
       /* "draw operation inside glBegin/End" */
       fgl_error(ctx, GL_INVALID_OPERATION);

@@ -357,7 +357,7 @@ void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat y
    if (ctx->CompileFlag && !fgl_save_bitmap(ctx, width, height, xorig, yorig, xmove, ymove,
                                             bits))
       return;
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    bitmap(ctx, width, height, xorig, yorig, xmove, ymove, bits, NULL);
 }
@@ -1107,7 +1107,7 @@ void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenu
       return;
    if (ctx->CompileFlag && !fgl_save_drawpixels(ctx, width, height, format, type, pixels))
       return;
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    drawpixels(ctx, width, height, format, type, pixels);
 }
 
@@ -1362,7 +1362,7 @@ void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GL
    if (!ctx)
       return;
    FGL_SAVE(ctx, CopyPixels, x, y, width, height, type);
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    if (width < 0 || height < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);

@@ -339,7 +339,7 @@ static void rasterpos(GLfloat x, GLfloat y, GLfloat z, GLfloat w)
       return;
    FGL_SAVE(ctx, RasterPos4f, x, y, z, w);
    /* only the BeginEnd dispatch's generic_nop checks for glBegin/glEnd */
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    fgl_flush_current(ctx);
    fgl_update_state(ctx);
@@ -411,7 +411,7 @@ static void window_pos(GLfloat x, GLfloat y, GLfloat z)
    if (!ctx)
       return;
    FGL_SAVE(ctx, WindowPos4fMESA, x, y, z, 1.0f);
-   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    fgl_flush_current(ctx);
    struct fgl_current_attrib *cur = &ctx->Current;

@@ -358,10 +358,7 @@ static void get_tex_env(GLenum target, GLenum pname, GLfloat *fv, GLint *iv)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    /* [S: texenv.c:_mesa_gettexenvfv_indexed] units 8..191 as glTexEnv */
    const unsigned unit = ctx->Texture.CurrentUnit;
    if (unit >= FGL_MAX_TEXTURE_UNITS && target == GL_POINT_SPRITE &&

@@ -210,10 +210,7 @@ static void get_tex_gen(GLenum coord, GLenum pname, GLfloat *fv, GLint *iv, GLdo
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
    /* [S: texgen.c:get_texgen] units past MaxTextureCoordUnits first */
    if (ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS) {
       fgl_error(ctx, GL_INVALID_OPERATION);

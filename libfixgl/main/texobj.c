@@ -770,10 +770,7 @@ void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *param
 static bool get_parameter(struct fgl_context *ctx, GLenum target, GLenum pname,
                           float f[4], GLint i[4], bool *is_float, int *count)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return false;
-   }
+   ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, false);
    struct fgl_texture_object *t = param_object(ctx, target);
    if (!t)
       return false;

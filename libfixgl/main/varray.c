@@ -395,14 +395,6 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
 
 /* ---- drawing ---- */
 
-/* FLUSH_FOR_DRAW [S: main/context.h]: any pending vbo work is flushed with
- * FLUSH_STORED_VERTICES, before validation. */
-static void flush_for_draw(struct fgl_context *ctx)
-{
-   if (ctx->Vbo.need_flush)
-      fgl_vbo_flush_vertices(ctx);
-}
-
 /* valid_prim_mode_custom [S: main/draw.c]: the oracle's compatibility
  * context supports the adjacency modes and patches too
  * (SupportedPrimMask); patches are not in ValidPrimMask without a
@@ -436,7 +428,7 @@ void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count)
       return;
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   flush_for_draw(ctx);
+   fgl_flush_for_draw(ctx);
    GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    if (err) {
       fgl_error(ctx, err);
@@ -455,7 +447,7 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
       return;
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   flush_for_draw(ctx);
+   fgl_flush_for_draw(ctx);
    const GLenum err = validate_draw_elements(mode, count, type);
    if (err) {
       fgl_error(ctx, err);
@@ -475,7 +467,7 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
       return;
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   flush_for_draw(ctx);
+   fgl_flush_for_draw(ctx);
    /* _mesa_validate_DrawRangeElements: end < start first */
    const GLenum err = end < start ? GL_INVALID_VALUE
                                   : validate_draw_elements(mode, count, type);

@@ -182,10 +182,84 @@ static GLsizei trim_count(GLenum mode, GLsizei count)
    return count - (count - first[mode]) % incr[mode];
 }
 
+/* the batch's vertex format of an array draw: the enabled arrays (the
+ * state tracker's vertex elements; _mesa_set_varying_vp_inputs) */
+static const struct { enum fgl_array_index array; enum fgl_vbo_attr attr; bool norm; }
+array_map[] = {
+   { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
+   { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
+   { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
+   { FGL_ARRAY_TEXCOORD, FGL_ATTR_TEX0, false },
+   { FGL_ARRAY_TEXCOORD1 + 0, FGL_ATTR_TEX1, false },
+   { FGL_ARRAY_TEXCOORD1 + 1, FGL_ATTR_TEX2, false },
+   { FGL_ARRAY_TEXCOORD1 + 2, FGL_ATTR_TEX3, false },
+   { FGL_ARRAY_TEXCOORD1 + 3, FGL_ATTR_TEX4, false },
+   { FGL_ARRAY_TEXCOORD1 + 4, FGL_ATTR_TEX5, false },
+   { FGL_ARRAY_TEXCOORD1 + 5, FGL_ATTR_TEX6, false },
+   { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
+   { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
+};
+
+/* ctx->Vbo.attr_size for an array draw.  No position array: the
+ * compatibility profile draws all the same, every vertex at the position
+ * attribute's current value, which no glVertex changes: (0, 0, 0, 1)
+ * (st_atom_array.c feeds a disabled attribute from the current values;
+ * vbo_exec_copy_to_current skips the position). */
+static void set_array_format(struct fgl_context *ctx)
+{
+   const struct fgl_client_array *A = ctx->Array.Array;
+   struct fgl_vbo *vbo = &ctx->Vbo;
+   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   if (!A[FGL_ARRAY_VERTEX].Enabled)
+      vbo->attr_size[FGL_ATTR_POS] = 4;
+   for (unsigned m = 0; m < sizeof(array_map) / sizeof(array_map[0]); m++)
+      if (A[array_map[m].array].Enabled)
+         vbo->attr_size[array_map[m].attr] = (unsigned)A[array_map[m].array].Size;
+}
+
+/* n vertices of the enabled arrays into verts: elements fetch_elt[i], or
+ * first + i without an element list */
+static void fetch_vertices(const struct fgl_context *ctx, const GLuint *fetch_elt, GLuint first,
+                           unsigned n, struct fgl_vbo_vertex *verts)
+{
+   const struct fgl_client_array *A = ctx->Array.Array;
+   if (!A[FGL_ARRAY_VERTEX].Enabled) {
+      for (unsigned i = 0; i < n; i++) {
+         float *p = verts[i].attr[FGL_ATTR_POS];
+         p[0] = 0.0f, p[1] = 0.0f, p[2] = 0.0f, p[3] = 1.0f;
+      }
+   }
+   for (unsigned m = 0; m < sizeof(array_map) / sizeof(array_map[0]); m++) {
+      const struct fgl_client_array *a = &A[array_map[m].array];
+      if (!a->Enabled)
+         continue;
+      for (unsigned i = 0; i < n; i++) {
+         const GLuint elt = fetch_elt ? fetch_elt[i] : first + i;
+         fetch(a, array_map[m].norm, elt, verts[i].attr[array_map[m].attr]);
+      }
+   }
+}
+
+/* Non-indexed draws longer than this are drawn window by window
+ * (t_render_source): their memory does not grow with the count, so a
+ * draw of 2^31 - 1 vertices completes as the oracle's does (draw's vsplit
+ * runs it in segments too); shorter ones fetch every vertex at once. */
+#define ARRAY_WINDOW_MIN FGL_VBO_SCRATCH_KEEP
+
+struct window_fetch {
+   const struct fgl_context *ctx;
+   GLuint first;                /* the draw's first element */
+};
+
+static void fetch_window(void *ud, unsigned first, unsigned n, struct fgl_vbo_vertex *out)
+{
+   const struct window_fetch *wf = ud;
+   fetch_vertices(wf->ctx, NULL, wf->first + first, n, out);
+}
+
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices)
 {
-   const struct fgl_client_array *A = ctx->Array.Array;
    /* skip_validated_draw [S: main/draw.c]: nothing to draw without
     * vertices or a position array */
    if (count == 0)
@@ -241,62 +315,41 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       }
    }
 
-   /* the fetched vertices: the context's scratch array, no allocation
-    * per draw */
-   struct fgl_vbo_vertex *verts = fgl_vbo_scratch(vbo->array_verts, &vbo->array_alloc,
-                                                  nverts, sizeof(*verts));
-   if (!verts) {
-      fgl_error(ctx, GL_OUT_OF_MEMORY);
-      return;
-   }
-   vbo->array_verts = verts;
-   /* the batch's vertex format: the enabled arrays (the state tracker's
-    * vertex elements; _mesa_set_varying_vp_inputs) */
-   static const struct { enum fgl_array_index array; enum fgl_vbo_attr attr; bool norm; }
-   map[] = {
-      { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
-      { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
-      { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
-      { FGL_ARRAY_TEXCOORD, FGL_ATTR_TEX0, false },
-      { FGL_ARRAY_TEXCOORD1 + 0, FGL_ATTR_TEX1, false },
-      { FGL_ARRAY_TEXCOORD1 + 1, FGL_ATTR_TEX2, false },
-      { FGL_ARRAY_TEXCOORD1 + 2, FGL_ATTR_TEX3, false },
-      { FGL_ARRAY_TEXCOORD1 + 3, FGL_ATTR_TEX4, false },
-      { FGL_ARRAY_TEXCOORD1 + 4, FGL_ATTR_TEX5, false },
-      { FGL_ARRAY_TEXCOORD1 + 5, FGL_ATTR_TEX6, false },
-      { FGL_ARRAY_TEXCOORD1 + 6, FGL_ATTR_TEX7, false },
-      { FGL_ARRAY_EDGEFLAG, FGL_ATTR_EDGEFLAG, false },
-   };
-   /* No position array: the compatibility profile draws all the same,
-    * every vertex at the position attribute's current value, which no
-    * glVertex changes: (0, 0, 0, 1) (st_atom_array.c feeds a disabled
-    * attribute from the current values; vbo_exec_copy_to_current skips
-    * the position) */
-   if (!A[FGL_ARRAY_VERTEX].Enabled) {
-      vbo->attr_size[FGL_ATTR_POS] = 4;
-      for (unsigned i = 0; i < nverts; i++) {
-         float *p = verts[i].attr[FGL_ATTR_POS];
-         p[0] = 0.0f, p[1] = 0.0f, p[2] = 0.0f, p[3] = 1.0f;
-      }
-   }
-   for (unsigned m = 0; m < sizeof(map) / sizeof(map[0]); m++) {
-      const struct fgl_client_array *a = &A[map[m].array];
-      if (!a->Enabled)
-         continue;
-      vbo->attr_size[map[m].attr] = (unsigned)a->Size;
-      for (unsigned i = 0; i < nverts; i++) {
-         const GLuint elt = fetch_elt ? fetch_elt[i] : (GLuint)first + i;
-         fetch(a, map[m].norm, elt, verts[i].attr[map[m].attr]);
-      }
-   }
+   /* The immediate-mode format stays as FLUSH_FOR_DRAW left it (with only
+    * attributes set it is not reset: fgl_flush_for_draw); the batch's
+    * format, the enabled arrays, replaces it while the draw runs. */
+   unsigned imm_size[FGL_ATTR_COUNT];
+   memcpy(imm_size, vbo->attr_size, sizeof(imm_size));
+   set_array_format(ctx);
    const struct fgl_vbo_prim prim = {
       .mode = mode, .start = 0, .count = (unsigned)count,
       .begin = true, .end = true, .indexed = index_type != 0,
    };
-   const struct fgl_vertex_view view = fgl_vertex_view_full(verts);
-   t_render_batch_elts(ctx, &view, nverts, elts, &prim, 1);
-   /* flush_for_draw left the format empty */
-   memset(vbo->attr_size, 0, sizeof(vbo->attr_size));
+   if (!index_type && (unsigned)count > ARRAY_WINDOW_MIN) {
+      /* a long draw: fetched window by window, in bounded memory */
+      struct window_fetch wf = { ctx, (GLuint)first };
+      /* with no array enabled every vertex is the current values */
+      bool uniform = true;
+      for (unsigned a = 0; a < FGL_ATTR_COUNT; a++)
+         uniform &= a == FGL_ATTR_POS || vbo->attr_size[a] == 0;
+      uniform &= !ctx->Array.Array[FGL_ARRAY_VERTEX].Enabled;
+      const struct t_vertex_source src = { fetch_window, &wf, uniform };
+      t_render_source(ctx, &src, &prim);
+   } else {
+      /* the fetched vertices: the context's scratch array, no allocation
+       * per draw */
+      struct fgl_vbo_vertex *verts = fgl_vbo_scratch(vbo->array_verts, &vbo->array_alloc,
+                                                     nverts, sizeof(*verts));
+      if (verts) {
+         vbo->array_verts = verts;
+         fetch_vertices(ctx, fetch_elt, (GLuint)first, nverts, verts);
+         const struct fgl_vertex_view view = fgl_vertex_view_full(verts);
+         t_render_batch_elts(ctx, &view, nverts, elts, &prim, 1);
+      } else {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+      }
+   }
+   memcpy(vbo->attr_size, imm_size, sizeof(imm_size));
    if (vbo->array_alloc > FGL_VBO_SCRATCH_KEEP) {
       fgl_free(vbo->array_verts);
       vbo->array_verts = NULL;

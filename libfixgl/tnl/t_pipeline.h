@@ -307,6 +307,25 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vertex_view *
                          unsigned nverts, const unsigned *elts,
                          const struct fgl_vbo_prim *prims, unsigned nprims);
 
+/* The vertices of a long array draw, fetched window by window so that its
+ * memory does not grow with its count (t_array.c): fetch writes vertices
+ * first..first+n-1 of the draw (whole struct fgl_vbo_vertex, the format
+ * in ctx->Vbo.attr_size) to out. */
+struct t_vertex_source {
+   void (*fetch)(void *ud, unsigned first, unsigned n, struct fgl_vbo_vertex *out);
+   void *ud;
+   bool uniform;     /* every vertex is vertex 0 (no array enabled: all
+                      * are the current values), transformed once */
+};
+/* Draw the one primitive prim (start 0, count vertices from src) as
+ * t_render_batch would with all its vertices at once: the same vsplit
+ * segments, strip, fan and loop continuity, the same bytes; each segment's
+ * vertices are fetched and transformed when it is drawn, a window of
+ * SEGMENT_SIZE (4096) at a time, and vertex 0 is kept for fans, polygons
+ * and loops. */
+void t_render_source(struct fgl_context *ctx, const struct t_vertex_source *src,
+                     const struct fgl_vbo_prim *prim);
+
 /* t_array.c: glDrawArrays (indices == NULL: vertices first..first+count-1)
  * and glDrawElements (count indices of index_type) of the enabled client
  * arrays, validated by the caller. */

@@ -38,8 +38,23 @@
 
 #define SEGMENT_SIZE 4096
 
+/* A draw whose vertices are fetched window by window (t_render_source):
+ * vertices [first, first + n) of the draw are in[] and, transformed, tv[];
+ * vertex 0 is v0 as well (the first vertex of fans, polygons and loops,
+ * which every segment uses). */
+struct render_window {
+   const struct t_vertex_source *src;
+   enum t_edge_source edges;
+   unsigned count;               /* vertices of the draw */
+   unsigned first, n;
+   struct fgl_vbo_vertex *in;    /* SEGMENT_SIZE fetched vertices */
+   struct t_vertex *tv;          /* SEGMENT_SIZE transformed vertices */
+   struct t_vertex v0;
+};
+
 struct render {
    struct fgl_context *ctx;
+   struct render_window *win;    /* NULL: every vertex is in v */
    const struct t_vertex *v;     /* transformed vertices of the draw */
    const struct fgl_vertex_view *in;   /* the stored vertices */
    /* an indexed draw's vertex cache: vertex i of the primitives is
@@ -58,7 +73,30 @@ static inline unsigned elt(const struct render *r, unsigned i)
 
 static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
 {
+   if (__builtin_expect(r->win != NULL, 0)) {
+      const struct render_window *w = r->win;
+      /* need() made every vertex but vertex 0 resident (none of a
+       * uniform draw's) */
+      return i - w->first < w->n ? &w->tv[i - w->first] : &w->v0;
+   }
    return &r->v[elt(r, i)];
+}
+
+/* Vertices [start, start + count) of a windowed draw fetched and
+ * transformed (count <= SEGMENT_SIZE): the window moves to start, as many
+ * vertices as it holds.  A vertex is transformed the same wherever its
+ * window starts, so the bytes are those of a whole draw. */
+static void need(const struct render *r, unsigned start, unsigned count)
+{
+   struct render_window *w = r->win;
+   if (!w || w->src->uniform || (start >= w->first && start - w->first + count <= w->n))
+      return;
+   const unsigned n = w->count - start < SEGMENT_SIZE ? w->count - start : SEGMENT_SIZE;
+   w->src->fetch(w->src->ud, start, n, w->in);
+   const struct fgl_vertex_view view = fgl_vertex_view_full(w->in);
+   t_transform(r->ctx, &view, n, w->tv, w->edges);
+   w->first = start;
+   w->n = n;
 }
 
 /* GL_PHONG_WIN (include/fixgl/shading.md): a primitive is lit with the
@@ -134,6 +172,7 @@ static void render_triangles(const struct render *r, unsigned s, unsigned n)
    n -= n % 3;
    for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE - 1) {
       const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
+      need(r, s + seg, cnt);
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
       for (unsigned i = seg; i < seg + cnt; i += 3)
          tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
@@ -146,6 +185,7 @@ static void render_triangle_strip(const struct render *r, unsigned s, unsigned n
 {
    for (unsigned seg = 0; seg + 2 < n; seg += SEGMENT_SIZE - 2) {
       const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+      need(r, s + seg, cnt);
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
       for (unsigned i = seg; i + 2 < seg + cnt; i++) {
          if (i & 1)
@@ -170,6 +210,11 @@ static void render_fan(const struct render *r, unsigned s, unsigned n, bool poly
    const unsigned seg_max = n <= SEGMENT_SIZE ? SEGMENT_SIZE : FAN_SEGMENT_SIZE;
    for (unsigned seg = 0; seg + 2 < n; seg += seg_max - 2) {
       const unsigned cnt = n - seg < seg_max ? n - seg : seg_max;
+      /* vertex 0 and the segment's others (vertex 0 stays in v0) */
+      if (seg == 0)
+         need(r, s, cnt);
+      else
+         need(r, s + seg + 1, cnt - 1);
       const bool pipeline = seg == 0 ? segment_pipeline(r, s, cnt)
                                      : segment_pipeline(r, s, 1) ||
                                        segment_clipped(r, s + seg + 1, cnt - 1);
@@ -201,6 +246,7 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
    count &= ~3u;
    for (unsigned seg = 0; seg < count; seg += SEGMENT_SIZE) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
+      need(r, start + seg, n);
       const bool pipeline = segment_pipeline(r, start + seg, n);
       /* llvmpipe's lp_setup_draw_elements always emits (i-3,i-2,i) +
        * (i-2,i-1,i) (lp_setup_vbuf.c), and draw emits an indexed draw's
@@ -228,6 +274,7 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
    /* vsplit: segments of SEGMENT_SIZE vertices overlapping by one pair */
    for (unsigned seg = 0; seg + 2 < count; seg += SEGMENT_SIZE - 2) {
       const unsigned n = count - seg < SEGMENT_SIZE ? count - seg : SEGMENT_SIZE;
+      need(r, start + seg, n);
       const bool pipeline = segment_pipeline(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
          /* [S: draw_decompose_tmp.h PIPE_PRIM_QUAD_STRIP, last vertex
@@ -271,6 +318,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
        * pipeline (which matters to the line stipple counter only) */
       for (unsigned seg = 0; seg < n; seg += SEGMENT_SIZE) {
          const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+         need(r, s + seg, cnt);
          const bool pipeline = segment_clipped(r, s + seg, cnt);
          for (unsigned i = seg; i < seg + cnt; i++) {
             if (r->phong_mats)
@@ -282,6 +330,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
    case GL_LINES:
       /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
       for (unsigned i = 0; i + 1 < n; i += 2) {
+         need(r, s + i, 2);
          if (r->phong_mats)
             phong_material(r, s + i + 1);
          t_line(r->ctx, vtx(r, s + i), vtx(r, s + i + 1), true);
@@ -296,11 +345,13 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       if (n < 2)
          break;
       for (unsigned i = 1; i < n; i++) {
+         need(r, s + i - 1, 2);
          if (r->phong_mats)
             phong_material(r, s + i);
          t_line(r->ctx, vtx(r, s + i - 1), vtx(r, s + i), i == 1);
       }
       if (p->mode == GL_LINE_LOOP) {
+         need(r, s + n - 1, 1);
          if (r->phong_mats)
             phong_material(r, s);
          t_line(r->ctx, vtx(r, s + n - 1), vtx(r, s), false);
@@ -311,9 +362,12 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
    }
 }
 
+/* src: the vertices come window by window from src (one primitive,
+ * nverts its count, verts and elts unused), else all are in verts. */
 static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
                          unsigned nverts, const unsigned *elts,
-                         const struct fgl_vbo_prim *prims, unsigned nprims)
+                         const struct fgl_vbo_prim *prims, unsigned nprims,
+                         const struct t_vertex_source *src)
 {
    /* [S: st_draw.c:prepare_draw] glBitmap's cache is drawn first, with
     * the state validated before this draw's */
@@ -333,12 +387,24 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
 
    /* the transformed vertices: the context's scratch array, no
     * allocation per batch */
-   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc, nverts, sizeof(*tv));
+   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc,
+                                         src ? SEGMENT_SIZE : nverts, sizeof(*tv));
    if (!tv) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
    ctx->Vbo.tv = tv;
+   /* a windowed draw's fetched vertices: the array draws' scratch */
+   struct render_window win = { .src = src, .count = nverts, .tv = tv };
+   if (src) {
+      win.in = fgl_vbo_scratch(ctx->Vbo.array_verts, &ctx->Vbo.array_alloc, SEGMENT_SIZE,
+                               sizeof(*win.in));
+      if (!win.in) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      ctx->Vbo.array_verts = win.in;
+   }
 
    /* The oracle draws with denormals flushed: draw_vbo sets DAZ and FTZ
     * around the vertex shader, clipping and triangle setup, and the
@@ -369,8 +435,18 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
     * vertex elements st_draw_feedback.c gives the draw module), so unfilled
     * polygons of such a batch give no lines or points. */
    const bool feedback = ctx->RenderMode != GL_RENDER;
-   t_transform(ctx, verts, nverts, tv,
-               !vertdata_edgeflags ? T_EDGES_SET : feedback ? T_EDGES_CLEAR : T_EDGES_FROM_DATA);
+   const enum t_edge_source edges = !vertdata_edgeflags ? T_EDGES_SET
+                                    : feedback          ? T_EDGES_CLEAR
+                                                        : T_EDGES_FROM_DATA;
+   if (src) {
+      /* vertex 0, kept for the whole draw; the segments load the rest */
+      win.edges = edges;
+      src->fetch(src->ud, 0, 1, win.in);
+      const struct fgl_vertex_view view0 = fgl_vertex_view_full(win.in);
+      t_transform(ctx, &view0, 1, &win.v0, edges);
+   } else {
+      t_transform(ctx, verts, nverts, tv, edges);
+   }
    const bool edgeflag_culls = edgeflags_enabled && !vertdata_edgeflags &&
                                ctx->Current.Attrib[FGL_ATTR_EDGEFLAG][0] == 0.0f;
    dp->edge_cull_front = edgeflag_culls && dp->fill_front != GL_FILL;
@@ -388,7 +464,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   const struct render r = { ctx, tv, verts, elts, phong_mats };
+   const struct render r = { ctx, src ? &win : NULL, tv, verts, elts, phong_mats };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program
@@ -468,11 +544,24 @@ void t_render_batch_elts(struct fgl_context *ctx, const struct fgl_vertex_view *
    if (__builtin_expect(ctx->_Raster.stats != NULL, 0)) {
       struct fgl_stats_mark mark;
       fgl_stats_batch_begin(ctx, &mark);
-      render_batch(ctx, verts, nverts, elts, prims, nprims);
+      render_batch(ctx, verts, nverts, elts, prims, nprims, NULL);
       fgl_stats_batch_end(ctx, &mark);
       return;
    }
-   render_batch(ctx, verts, nverts, elts, prims, nprims);
+   render_batch(ctx, verts, nverts, elts, prims, nprims, NULL);
+}
+
+void t_render_source(struct fgl_context *ctx, const struct t_vertex_source *src,
+                     const struct fgl_vbo_prim *prim)
+{
+   if (__builtin_expect(ctx->_Raster.stats != NULL, 0)) {
+      struct fgl_stats_mark mark;
+      fgl_stats_batch_begin(ctx, &mark);
+      render_batch(ctx, NULL, prim->count, NULL, prim, 1, src);
+      fgl_stats_batch_end(ctx, &mark);
+      return;
+   }
+   render_batch(ctx, NULL, prim->count, NULL, prim, 1, src);
 }
 
 void t_render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
