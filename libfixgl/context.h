@@ -566,22 +566,11 @@ struct fgl_framebuffer {
     * FlushFront does its work only when set, and clears it
     * [S: state_tracker/st_manager.c:st_manager_flush_frontbuffer] */
    bool ColorDefined;
-   /* With FIXGL_NUM_THREADS=1, whole-buffer clears not written yet
-    * (scene.c "Lazy clears"): per 64x64 tile, FGL_LAZY_COLOR and
-    * FGL_LAZY_ZS when the tile still holds, logically, the clear value
-    * that its memory does not; `pending` is set while some tile may */
-   struct fgl_lazy_clear {
-      uint8_t *tiles;
-      int tiles_x, tiles_y;
-      unsigned pending;
-      uint8_t rgba[4];
-      bool depth, stencil;
-      uint32_t zvalue;
-      uint8_t svalue;
-   } Lazy;
+   /* whole-buffer clears not written yet (scene.c "Lazy clears") */
+   struct r_lazy_clear Lazy;
 };
-#define FGL_LAZY_COLOR 1u
-#define FGL_LAZY_ZS    2u
+#define FGL_LAZY_COLOR R_LAZY_COLOR
+#define FGL_LAZY_ZS    R_LAZY_ZS
 
 /* The oracle's draw pipeline (draw_pipe_validate.c:validate_pipeline), as
  * llvmpipe splits the rasterizer state between draw and its own setup

@@ -20,7 +20,8 @@
  * Lazy clears: a whole-buffer clear only marks the framebuffer's 64x64
  * tiles as holding its value (fb->Lazy); a tile's memory is written with
  * it just before something draws there (one thread: the tiles of a
- * triangle's box, all of them for a line or a point; more threads: a
+ * triangle's box, by the raster core through r_state.lazy, all of them
+ * for a line or a point; more threads: a
  * clear with nothing binned before it is lazy, and each tile with
  * commands writes it first, on the thread that then draws the tile),
  * and every other reader or writer of the buffers goes through
@@ -258,25 +259,8 @@ static struct r_fb_state lazy_fb_state(const struct fgl_framebuffer *fb)
 static void lazy_resolve_tiles(struct fgl_framebuffer *fb, unsigned what, int tx0, int ty0,
                                int tx1, int ty1)
 {
-   struct fgl_lazy_clear *lz = &fb->Lazy;
    const struct r_fb_state fbs = lazy_fb_state(fb);
-   for (int ty = ty0; ty <= ty1; ty++) {
-      for (int tx = tx0; tx <= tx1; tx++) {
-         uint8_t *t = &lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx];
-         const unsigned b = *t & what;
-         if (!b)
-            continue;
-         const int x0 = tx * R_TILE_SIZE, y0 = ty * R_TILE_SIZE;
-         const int x1 = x0 + R_TILE_SIZE < fb->Width ? x0 + R_TILE_SIZE : fb->Width;
-         const int y1 = y0 + R_TILE_SIZE < fb->Height ? y0 + R_TILE_SIZE : fb->Height;
-         if (b & FGL_LAZY_COLOR)
-            r_clear_color_rect(&fbs, x0, y0, x1, y1, lz->rgba);
-         if (b & FGL_LAZY_ZS)
-            r_clear_depth_stencil_rect(&fbs, x0, y0, x1, y1, lz->depth, lz->zvalue, lz->stencil,
-                                       lz->svalue);
-         *t = (uint8_t)(*t & ~b);
-      }
-   }
+   r_lazy_resolve_tiles(&fb->Lazy, &fbs, what, tx0, ty0, tx1, ty1);
 }
 
 void fgl_lazy_resolve(struct fgl_framebuffer *fb, unsigned what)
@@ -298,7 +282,7 @@ void fgl_lazy_fini(struct fgl_framebuffer *fb)
 static bool lazy_clear(struct fgl_framebuffer *fb, bool color, const uint8_t rgba[4], bool depth,
                        uint32_t zvalue, bool stencil, uint8_t svalue)
 {
-   struct fgl_lazy_clear *lz = &fb->Lazy;
+   struct r_lazy_clear *lz = &fb->Lazy;
    const int tx = (fb->Width + R_TILE_SIZE - 1) / R_TILE_SIZE;
    const int ty = (fb->Height + R_TILE_SIZE - 1) / R_TILE_SIZE;
    if (!lz->tiles || lz->tiles_x != tx || lz->tiles_y != ty) {
@@ -333,54 +317,6 @@ static bool lazy_clear(struct fgl_framebuffer *fb, bool color, const uint8_t rgb
       lz->tiles[i] |= (uint8_t)bits;
    lz->pending |= bits;
    return true;
-}
-
-/* before a triangle is drawn directly: its tiles hold their clears.  Per
- * triangle, so cheap when they already do: the box of the window
- * positions, a pixel or two wider on every side (the snapped box lies
- * inside it), its tiles' bytes tested, lazy_resolve_tiles called only
- * when one is set.  A coordinate outside +-1e9 or NaN: all tiles. */
-static inline void lazy_resolve_triangle(struct fgl_context *ctx, const struct r_state *rs,
-                                         const struct r_vertex *v0, const struct r_vertex *v1,
-                                         const struct r_vertex *v2)
-{
-   struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   if (!fb || !fb->Lazy.pending)
-      return;
-   const struct r_vertex *const v[3] = { v0, v1, v2 };
-   const float lim = 1e9f;
-   float xmin = lim, xmax = -lim, ymin = lim, ymax = -lim;
-   bool ok = rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
-             rs->fb->height == fb->Height;
-   for (int i = 0; i < 3; i++) {
-      const float x = v[i]->pos[0], y = v[i]->pos[1];
-      ok &= x > -lim && x < lim && y > -lim && y < lim;   /* false for NaN */
-      xmin = x < xmin ? x : xmin;
-      xmax = x > xmax ? x : xmax;
-      ymin = y < ymin ? y : ymin;
-      ymax = y > ymax ? y : ymax;
-   }
-   if (!ok) {
-      fgl_lazy_resolve(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS);
-      return;
-   }
-   /* (int) truncates toward zero: at most one above floor, one below ceil */
-   int x0 = (int)xmin - 2, x1 = (int)xmax + 2, y0 = (int)ymin - 2, y1 = (int)ymax + 2;
-   if (x0 < rs->x0) x0 = rs->x0;
-   if (y0 < rs->y0) y0 = rs->y0;
-   if (x1 > rs->x1 - 1) x1 = rs->x1 - 1;
-   if (y1 > rs->y1 - 1) y1 = rs->y1 - 1;
-   if (x0 > x1 || y0 > y1)
-      return;
-   const struct fgl_lazy_clear *lz = &fb->Lazy;
-   const int tx0 = x0 >> R_TILE_LOG2, tx1 = x1 >> R_TILE_LOG2;
-   const int ty0 = y0 >> R_TILE_LOG2, ty1 = y1 >> R_TILE_LOG2;
-   for (int ty = ty0; ty <= ty1; ty++)
-      for (int tx = tx0; tx <= tx1; tx++)
-         if (lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx]) {
-            lazy_resolve_tiles(fb, FGL_LAZY_COLOR | FGL_LAZY_ZS, tx0, ty0, tx1, ty1);
-            return;
-         }
 }
 
 void fgl_scene_flush(struct fgl_context *ctx)
@@ -418,7 +354,7 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v2)
 {
    if (ctx->_NumThreads == 1) {
-      lazy_resolve_triangle(ctx, rs, v0, v1, v2);
+      /* (its box's lazy clears are written by rasterize_ccw: rs->lazy) */
       r_triangle(rs, v0, v1, v2);
       return;
    }

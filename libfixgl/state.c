@@ -787,6 +787,9 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
       ok = true;
       SET_OBJECT(ctx, rs->fb, o, &ok);
       failed |= ok ? 0u : FGL_NEW_BUFFERS;
+      /* drawing directly (one thread), a triangle writes the lazy clears
+       * of its box (scene.c); the scene's tiles write their own */
+      rs->lazy = fb && ctx->_NumThreads == 1 ? &ctx->DrawBuffer->Lazy : NULL;
    }
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_SCISSOR)) {
       /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;

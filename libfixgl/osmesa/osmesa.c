@@ -169,7 +169,7 @@ static void flush_front_end(struct fgl_framebuffer *fb)
 static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, int rx1, int ry1)
 {
    struct osmesa_context *c = osmesa_of(fb);
-   const struct fgl_lazy_clear *lz = &fb->Lazy;
+   const struct r_lazy_clear *lz = &fb->Lazy;
    const int bpp = bytes_per_pixel(c->format);
    const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
    uint8_t fill[4 * R_TILE_SIZE];

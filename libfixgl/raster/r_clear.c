@@ -129,6 +129,30 @@ void r_clear_depth_stencil_rect(const struct r_fb_state *fb, int x0, int y0, int
    }
 }
 
+_Static_assert(R_TILE_LOG2 == R_LAZY_TILE_LOG2, "the lazy clears' tiles are the scene's");
+
+void r_lazy_resolve_tiles(struct r_lazy_clear *lz, const struct r_fb_state *fb, unsigned what,
+                          int tx0, int ty0, int tx1, int ty1)
+{
+   for (int ty = ty0; ty <= ty1; ty++) {
+      for (int tx = tx0; tx <= tx1; tx++) {
+         uint8_t *t = &lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx];
+         const unsigned b = *t & what;
+         if (!b)
+            continue;
+         const int x0 = tx * R_TILE_SIZE, y0 = ty * R_TILE_SIZE;
+         const int x1 = x0 + R_TILE_SIZE < fb->width ? x0 + R_TILE_SIZE : fb->width;
+         const int y1 = y0 + R_TILE_SIZE < fb->height ? y0 + R_TILE_SIZE : fb->height;
+         if (b & R_LAZY_COLOR)
+            r_clear_color_rect(fb, x0, y0, x1, y1, lz->rgba);
+         if (b & R_LAZY_ZS)
+            r_clear_depth_stencil_rect(fb, x0, y0, x1, y1, lz->depth, lz->zvalue, lz->stencil,
+                                       lz->svalue);
+         *t = (uint8_t)(*t & ~b);
+      }
+   }
+}
+
 void r_clear_color(const struct r_state *rs, const uint8_t rgba[4])
 {
    r_clear_color_rect(rs->fb, 0, 0, rs->fb->width, rs->fb->height, rgba);

@@ -484,6 +484,27 @@ struct r_fs_state {
  * batch, the pixel image, the counters), and the kernels chosen for the
  * combination.  Small, copied freely; the objects it points to are
  * shared and never written. */
+/* Whole-buffer clears not yet written into the buffers' memory, by 64x64
+ * tiles (the context's lazy clears, scene.c "Lazy clears"): per tile,
+ * R_LAZY_COLOR and R_LAZY_ZS while the tile holds, logically, the clear
+ * value that its memory does not; `pending` is set while some tile may. */
+struct r_lazy_clear {
+   uint8_t *tiles;
+   int tiles_x, tiles_y;
+   unsigned pending;
+   uint8_t rgba[4];
+   bool depth, stencil;
+   uint32_t zvalue;
+   uint8_t svalue;
+};
+#define R_LAZY_COLOR 1u
+#define R_LAZY_ZS    2u
+#define R_LAZY_TILE_LOG2 6   /* the scene's tiles (r_scene.h R_TILE_LOG2) */
+/* Writes the lazy clears `what` of the tiles tx0..tx1, ty0..ty1 (inclusive,
+ * in range) into fb's memory (r_clear.c). */
+void r_lazy_resolve_tiles(struct r_lazy_clear *lz, const struct r_fb_state *fb, unsigned what,
+                          int tx0, int ty0, int tx1, int ty1);
+
 struct r_state {
    const struct r_fb_state *fb;
    const struct r_rast_state *rast;
@@ -514,6 +535,10 @@ struct r_state {
    const struct r_pixel_image *pix;
    /* the benchmark's counters, or NULL (the usual case) */
    struct r_stats *stats;
+   /* the lazy clears of fb, written by a triangle's box before it is
+    * drawn (r_lazy_touch), or NULL: a context drawing directly (one
+    * thread) points it to its framebuffer's */
+   struct r_lazy_clear *lazy;
 
    /* Chosen by r_choose_kernels from the objects: whoever points the
     * r_state to other objects calls it again. */
@@ -531,6 +556,24 @@ struct r_state {
     * they then take the reference kernels) */
    r_tri_kernel line_kernel[2];
 };
+
+/* Before the pixels of the box x0..x1, y0..y1 (inclusive, inside the
+ * buffer) are drawn: its tiles' lazy clears are written.  Per primitive,
+ * so cheap when there is nothing to write. */
+static inline void r_lazy_touch(const struct r_state *rs, int x0, int y0, int x1, int y1)
+{
+   struct r_lazy_clear *lz = rs->lazy;
+   if (!lz || !lz->pending)
+      return;
+   const int tx0 = x0 >> R_LAZY_TILE_LOG2, tx1 = x1 >> R_LAZY_TILE_LOG2;
+   const int ty0 = y0 >> R_LAZY_TILE_LOG2, ty1 = y1 >> R_LAZY_TILE_LOG2;
+   for (int ty = ty0; ty <= ty1; ty++)
+      for (int tx = tx0; tx <= tx1; tx++)
+         if (lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx]) {
+            r_lazy_resolve_tiles(lz, rs->fb, R_LAZY_COLOR | R_LAZY_ZS, tx0, ty0, tx1, ty1);
+            return;
+         }
+}
 
 /* Sets full_ops and chooses the kernels of rs for its objects (r_tri.c). */
 void r_choose_kernels(struct r_state *rs);

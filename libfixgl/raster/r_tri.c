@@ -575,6 +575,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    /* trimmed box: the box intersected with the draw region */
    const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
+   r_lazy_touch(rs, tx0, ty0, tx1, ty1);
 
    const uint64_t t0 = rs->stats ? r_stats_now() : 0;
    struct r_plane p[MAX_PLANES];
