@@ -137,18 +137,20 @@ void r_lazy_resolve_tiles(struct r_lazy_clear *lz, const struct r_fb_state *fb, 
    for (int ty = ty0; ty <= ty1; ty++) {
       for (int tx = tx0; tx <= tx1; tx++) {
          uint8_t *t = &lz->tiles[(size_t)ty * (size_t)lz->tiles_x + (size_t)tx];
-         const unsigned b = *t & what;
-         if (!b)
+         /* (a buffer fb lacks keeps its bit: nothing was written) */
+         const unsigned b = *t & what & (fb->color ? R_LAZY_COLOR : 0u);
+         const unsigned bz = *t & what & (fb->zs ? R_LAZY_ZS : 0u);
+         if (!(b | bz))
             continue;
          const int x0 = tx * R_TILE_SIZE, y0 = ty * R_TILE_SIZE;
          const int x1 = x0 + R_TILE_SIZE < fb->width ? x0 + R_TILE_SIZE : fb->width;
          const int y1 = y0 + R_TILE_SIZE < fb->height ? y0 + R_TILE_SIZE : fb->height;
-         if (b & R_LAZY_COLOR)
+         if (b)
             r_clear_color_rect(fb, x0, y0, x1, y1, lz->rgba);
-         if (b & R_LAZY_ZS)
+         if (bz)
             r_clear_depth_stencil_rect(fb, x0, y0, x1, y1, lz->depth, lz->zvalue, lz->stencil,
                                        lz->svalue);
-         *t = (uint8_t)(*t & ~b);
+         *t = (uint8_t)(*t & ~(b | bz));
       }
    }
 }
