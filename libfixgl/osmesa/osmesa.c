@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <wchar.h>
 
 #include "context.h"
 #include "main/dlist.h"
@@ -175,6 +176,10 @@ static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, 
    uint8_t fill[4 * R_TILE_SIZE];
    for (int i = 0; i < R_TILE_SIZE; i++)
       memcpy(fill + 4 * i, lz->rgba, 4);
+   /* a 4-byte format: the clear colour's pixel in it, stored along the run */
+   uint32_t px = 0;
+   if (bpp == 4)
+      copy_row(c->format, (uint8_t *)&px, fill, 1);
    const int tx0 = rx0 / R_TILE_SIZE, tx1 = (rx1 + R_TILE_SIZE - 1) / R_TILE_SIZE;
    for (int ty = ry0 / R_TILE_SIZE; ty * R_TILE_SIZE < ry1; ty++) {
       const uint8_t *tiles = lz->tiles + (size_t)ty * (size_t)lz->tiles_x;
@@ -191,7 +196,11 @@ static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, 
                te++;
             const int x0 = tx * R_TILE_SIZE > rx0 ? tx * R_TILE_SIZE : rx0;
             const int x1 = te * R_TILE_SIZE < rx1 ? te * R_TILE_SIZE : rx1;
-            if (lazy) {
+            uint8_t *d = dst + (size_t)x0 * (size_t)bpp;
+            if (lazy && bpp == 4 && ((uintptr_t)d & 3u) == 0) {
+               /* glibc's wmemset stores 32-bit values (wchar_t) */
+               wmemset((wchar_t *)(void *)d, (wchar_t)px, (size_t)(x1 - x0));
+            } else if (lazy) {
                for (int x = x0; x < x1; x += R_TILE_SIZE)
                   copy_row(c->format, dst + (size_t)x * (size_t)bpp, fill,
                            x1 - x < R_TILE_SIZE ? x1 - x : R_TILE_SIZE);
