@@ -108,17 +108,25 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       f[0] = fgl_clamp01(ctx->Color.AlphaRef);
       set_floats(val, V_FLOATN, f, 1);
       return true;
-   case GL_BLEND_SRC:              /* = GL_BLEND_SRC_RGB */
-   case GL_BLEND_SRC_ALPHA:
+   case GL_BLEND_SRC:
+   case GL_BLEND_SRC_RGB:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendSrc, 0, 0, 0);
       return true;
-   case GL_BLEND_DST:              /* = GL_BLEND_DST_RGB */
-   case GL_BLEND_DST_ALPHA:
+   case GL_BLEND_SRC_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendSrcA, 0, 0, 0);
+      return true;
+   case GL_BLEND_DST:
+   case GL_BLEND_DST_RGB:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendDst, 0, 0, 0);
       return true;
+   case GL_BLEND_DST_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendDstA, 0, 0, 0);
+      return true;
    case GL_BLEND_EQUATION:         /* = GL_BLEND_EQUATION_RGB */
-   case GL_BLEND_EQUATION_ALPHA:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendEquation, 0, 0, 0);
+      return true;
+   case GL_BLEND_EQUATION_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendEquationA, 0, 0, 0);
       return true;
    case GL_BLEND_COLOR:
       for (int i = 0; i < 4; i++)
@@ -422,12 +430,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_SAMPLES:
       set_ints(val, V_INT, 1, 0, 0, 0, 0);
       return true;
-   /* GL 1.4 current values (no setter in fixgl's API: the initial values) */
+   /* GL 1.4 current values (extra_flush_current) */
    case GL_CURRENT_SECONDARY_COLOR:
-      set_floats(val, V_FLOATN, ctx->Current.SecondaryColor, 4);
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_COLOR1], 4);
       return true;
    case GL_CURRENT_FOG_COORD:
-      set_floats(val, V_FLOAT, &ctx->Current.FogCoord, 1);
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_FOG], 1);
       return true;
    /* current texture coordinates and raster position */
    case GL_CURRENT_TEXTURE_COORDS:
@@ -580,7 +590,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOAT, &ctx->Multisample.SampleCoverageValue, 1);
       return true;
    case GL_SAMPLE_COVERAGE_INVERT:
-      set_ints(val, V_BOOL, 1, ctx->Multisample.SampleCoverageInvert, 0, 0, 0);
+      /* TYPE_BOOLEAN of the byte glSampleCoverage stored */
+      set_ints(val, V_RAWBOOL, 1, ctx->Multisample.SampleCoverageInvert, 0, 0, 0);
       return true;
    case GL_MAX_ELEMENTS_VERTICES:
    case GL_MAX_ELEMENTS_INDICES:

@@ -427,6 +427,12 @@ struct r_blend_state {
    bool enable;                 /* blending; off when the logic op is on */
    enum r_blend_eq blend_eq;
    enum r_blend_factor blend_src, blend_dst;  /* ONE for MIN/MAX */
+   /* glBlendFuncSeparate / glBlendEquationSeparate: the alpha channel's
+    * equation and factors differ from the rgb ones above (set only then:
+    * else they are zero and the alpha channel takes the rgb ones) */
+   bool separate_alpha;
+   enum r_blend_eq blend_eq_a;
+   enum r_blend_factor blend_src_a, blend_dst_a;
    uint8_t blend_color[4];
    bool logic_op;               /* GL_COLOR_LOGIC_OP */
    unsigned logic_op_mode;      /* GL op - GL_CLEAR (0..15) */

@@ -124,6 +124,12 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
     * (transform_positions) and the other colour slots are zeros. */
    const int nattr = ctx->_Raster.fs->num_attribs;
    const int ncolor = phong || !lit ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
+   const bool color_sum = !phong && ctx->_Raster.fs->color_sum;
+   unsigned c1stride = 0;
+   const float *color1 = color_sum && !lit
+                       ? fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR1, &c1stride) : NULL;
+   const bool no_col1 = color_sum && lit &&
+                        ctx->Light.Model.ColorControl != GL_SEPARATE_SPECULAR_COLOR;
 
    /* the lighting's per-batch values (uniforms, material sources, the
     * Cook-Torrance lights), prepared once for all chunks */
@@ -157,6 +163,19 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       for (unsigned i = first; i < first + cnt; i++)
          for (int a = 0; a < ncolor; a++)
             clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
+
+      /* GL_COLOR_SUM: unlit, the vertex program passes the secondary
+       * colour through (clamped as every colour output); lit with a
+       * single colour it writes no COL1, which the fragment program then
+       * reads as 0 (ORACLE-NOTES.md "Secondary colour and fog
+       * coordinate") */
+      if (color1)
+         for (unsigned i = first; i < first + cnt; i++)
+            clamp01x4(out[i].r.attr[R_ATTR_COLOR1], color1 + (size_t)i * c1stride);
+      else if (no_col1)
+         for (unsigned i = first; i < first + cnt; i++)
+            for (int a = R_ATTR_COLOR1; a < ncolor; a += 2)
+               memset(out[i].r.attr[a], 0, sizeof(out[i].r.attr[a]));
 
       /* ffvertex_prog.c: build_fog after build_lighting */
       if (fog)
