@@ -491,6 +491,17 @@ struct fgl_multisample_attrib {
 struct fgl_point_attrib {
    float Size;              /* as given (> 0); clamped when drawn */
    bool SmoothFlag;         /* GL_POINT_SMOOTH */
+   /* glPointParameter (GL 1.4) */
+   float MinSize, MaxSize;  /* GL_POINT_SIZE_MIN (0), _MAX (255) */
+   float Threshold;         /* GL_POINT_FADE_THRESHOLD_SIZE (1): stored
+                             * only, the oracle fades nothing */
+   float Params[3];         /* GL_POINT_DISTANCE_ATTENUATION (1, 0, 0) */
+   /* GL_POINT_SPRITE, glTexEnv's GL_COORD_REPLACE per unit (bit u),
+    * GL_POINT_SPRITE_COORD_ORIGIN (the oracle has no NV_point_sprite:
+    * no R mode) */
+   bool PointSprite;
+   unsigned CoordReplace;
+   GLenum SpriteOrigin;
 };
 
 /* GL_LINE_BIT (main/lines.c) */
@@ -724,7 +735,7 @@ struct fgl_client_attrib_node {
  * saves which member, GL_TEXTURE_BIT, GL_EVAL_BIT, GL_PIXEL_MODE_BIT,
  * GL_ACCUM_BUFFER_BIT, GL_LIST_BIT and GL_MULTISAMPLE_BIT included. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
-#define FGL_ENABLE_ATTRIB_CAPS 53          /* caps restored by GL_ENABLE_BIT */
+#define FGL_ENABLE_ATTRIB_CAPS 54          /* caps restored by GL_ENABLE_BIT */
 #define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
 struct fgl_attrib_node {
    GLbitfield Mask;
@@ -1120,6 +1131,13 @@ static inline void fgl_feedback_token(struct fgl_context *ctx, GLfloat token)
    if (ctx->Feedback.Count < ctx->Feedback.BufferSize)
       ctx->Feedback.Buffer[ctx->Feedback.Count] = token;
    ctx->Feedback.Count++;
+}
+
+/* ctx->Point._Attenuated [S: main/points.c] */
+static inline bool fgl_point_attenuated(const struct fgl_context *ctx)
+{
+   const float *p = ctx->Point.Params;
+   return p[0] != 1.0f || p[1] != 0.0f || p[2] != 0.0f;
 }
 
 /* Public API symbols; everything else is hidden by default. */

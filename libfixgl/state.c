@@ -638,7 +638,12 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
     * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
     * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
    const float size = ctx->Point.Size, width = ctx->Line.Width;
-   o->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
+   const float pmin = ctx->Point.MinSize, pmax = ctx->Point.MaxSize;
+   o->point_size = size > pmin ? (size > pmax ? pmax : size) : pmin;
+   /* a distance attenuation other than (1, 0, 0): the vertex program
+    * writes each point's size (st_atom_rasterizer.c point_size_per_vertex,
+    * ffvertex_prog.c build_atten_pointsize) */
+   o->point_size_per_vertex = fgl_point_attenuated(ctx);
    o->line_width = width > FGL_MIN_LINE_WIDTH
                  ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
                  : FGL_MIN_LINE_WIDTH;

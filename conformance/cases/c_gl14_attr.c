@@ -676,6 +676,134 @@ static void fogcoord_api(fc_h *h)
     fc_error(h, "pointer inside begin");
 }
 
+/* Quads and a quad strip, flat and smooth, with the secondary colour a
+ * varying of its own (the quad's split and the provoking vertex). */
+static void seccolor_quads(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glEnable(GL_COLOR_SUM);
+    for (int f = 0; f < 2; f++) {
+        glShadeModel(f ? GL_FLAT : GL_SMOOTH);
+        fcu_clear(0, 0, 0, 1, 1);
+        glColor3f(0.2f, 0.2f, 0.2f);
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 8; i++) {
+            glSecondaryColor3fv(sc_sec[i]);
+            const float x = (i & 4) ? 24.0f : 0.0f;
+            static const float qx[4] = { 2, 22, 20, 3 }, qy[4] = { 3, 2, 21, 22 };
+            glVertex2f(x + qx[i & 3], qy[i & 3]);
+        }
+        glEnd();
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i < 8; i++) {
+            glColor3fv(sc_col[i]);
+            glSecondaryColor3fv(sc_sec[8 - i]);
+            glVertex2f(2.0f + 6.5f * (float)(i / 2), (i & 1) ? 46.0f : 26.0f);
+        }
+        glEnd();
+        fc_capture(h);
+    }
+}
+
+/* Fog coordinates on clipped triangles (the clipper interpolates them),
+ * lines and points. */
+static void fogcoord_clip_prims(fc_h *h)
+{
+    fog_view(h);
+    glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 0);
+    glFogf(GL_FOG_END, 20);
+    fcu_clear(0.1f, 0.1f, 0.15f, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0.3f, 0.1f); glFogCoordf(0.0f); glVertex3f(-4, -1, -0.5f);
+    glColor3f(0.2f, 1, 0.1f); glFogCoordf(20.0f); glVertex3f(3, -1, -3);
+    glColor3f(0.1f, 0.3f, 1); glFogCoordf(10.0f); glVertex3f(0, 3, -8);
+    glEnd();
+    glLineWidth(2);
+    glBegin(GL_LINES);
+    glColor3f(1, 1, 0); glFogCoordf(-2.0f); glVertex3f(-2, 1, -2);
+    glColor3f(0, 1, 1); glFogCoordf(19.0f); glVertex3f(2, 1.5f, -2.5f);
+    glEnd();
+    glPointSize(3);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 8; i++) {
+        glColor3f(1, 1, 1);
+        glFogCoordf(2.5f * (float)i);
+        glVertex3f(-1.5f + 0.4f * (float)i, -0.3f, -2);
+    }
+    glEnd();
+    fc_capture(h);
+}
+
+/* Secondary colour and fog coordinate arrays with glArrayElement inside a
+ * display list, BGRA secondary colours. */
+static void gl14_arrays_dlist(fc_h *h)
+{
+    static GLfloat pos[6][3];
+    static GLubyte sec[6][4];
+    static GLdouble fcd[6];
+    for (int i = 0; i < 6; i++) {
+        for (int k = 0; k < 3; k++)
+            pos[i][k] = fog_v[i][k];
+        sec[i][0] = (GLubyte)(40 * i);
+        sec[i][1] = (GLubyte)(255 - 30 * i);
+        sec[i][2] = (GLubyte)(i & 1 ? 200 : 10);
+        sec[i][3] = 99;
+        fcd[i] = fog_fc[(i + 2) % 6];
+    }
+    fog_view(h);
+    glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+    glFogi(GL_FOG_MODE, GL_EXP2);
+    glFogf(GL_FOG_DENSITY, 0.06f);
+    glEnable(GL_COLOR_SUM);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+    glEnableClientState(GL_FOG_COORD_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, pos);
+    glSecondaryColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, sec);
+    glFogCoordPointer(GL_DOUBLE, 0, fcd);
+    glColor3f(0.3f, 0.1f, 0.1f);
+    const GLuint l = glGenLists(1);
+    glNewList(l, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < 6; i++)
+        glArrayElement(i);
+    glEnd();
+    glEndList();
+    glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
+    fcu_clear(0.1f, 0.1f, 0.15f, 1, 1);
+    glCallList(l);
+    fc_capture(h);
+    fcu_clear(0.1f, 0.1f, 0.15f, 1, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    fc_capture(h);
+    glDeleteLists(l, 1);
+}
+
+/* GL_FOG_COORD as the source ignores GL_FOG_DISTANCE_MODE_NV; switching
+ * the source between draws of one frame. */
+static void fogcoord_distance_modes(fc_h *h)
+{
+    static const GLenum modes[3] = { GL_EYE_RADIAL_NV, GL_EYE_PLANE, GL_EYE_PLANE_ABSOLUTE_NV };
+    fog_view(h);
+    glFogi(GL_FOG_MODE, GL_EXP);
+    glFogf(GL_FOG_DENSITY, 0.08f);
+    for (int f = 0; f < 3; f++) {
+        glFogi(GL_FOG_DISTANCE_MODE_NV, (GLint)modes[f]);
+        fcu_clear(0.1f, 0.1f, 0.15f, 1, 1);
+        glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+        fog_floor(1);
+        glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH);
+        glBegin(GL_TRIANGLES);
+        glColor3f(0.9f, 0.9f, 0.2f); glFogCoordf(1.0f); glVertex3f(-1, 0.5f, -2);
+        glColor3f(0.2f, 0.9f, 0.9f); glFogCoordf(2.0f); glVertex3f(1, 0.6f, -9);
+        glColor3f(0.9f, 0.2f, 0.9f); glFogCoordf(3.0f); glVertex3f(0, 2, -4);
+        glEnd();
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_gl14_attr[] = {
     FC_CASE_RGBA("gl14/seccolor_unlit", 48, 48, 3, "gl14 seccolor", seccolor_unlit),
     FC_CASE_RGBA("gl14/seccolor_current", 48, 48, 4, "gl14 seccolor", seccolor_current),
@@ -693,5 +821,9 @@ const fc_case fc_cases_gl14_attr[] = {
     FC_CASE_RGBA("gl14/fogcoord_arrays", 48, 48, 5, "gl14 fogcoord fog varray dlist", fogcoord_arrays),
     FC_CASE_RGBA("gl14/fogcoord_lit", 48, 48, 2, "gl14 fogcoord fog lighting", fogcoord_lit),
     FC_CASE_RGBA("gl14/fogcoord_api", 8, 8, 0, "gl14 fogcoord api error", fogcoord_api),
+    FC_CASE_RGBA("gl14/fogcoord_distance_modes", 48, 48, 3, "gl14 fogcoord fog", fogcoord_distance_modes),
+    FC_CASE_RGBA("gl14/seccolor_quads", 48, 48, 2, "gl14 seccolor", seccolor_quads),
+    FC_CASE_RGBA("gl14/fogcoord_clip_prims", 48, 48, 1, "gl14 fogcoord fog clip", fogcoord_clip_prims),
+    FC_CASE_RGBA("gl14/arrays_dlist", 48, 48, 2, "gl14 seccolor fogcoord varray dlist", gl14_arrays_dlist),
     { 0 },
 };

@@ -605,6 +605,76 @@ static void multisample_state(fc_h *h)
     fc_capture(h);
 }
 
+/* The logic op wins over separate blending; the colour mask over it. */
+static void blendsep_logicop_mask(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    bs_background();
+    glBlendFuncSeparate(GL_SRC_COLOR, GL_ONE, GL_ZERO, GL_DST_ALPHA);
+    glBlendEquationSeparate(GL_FUNC_SUBTRACT, GL_MAX);
+    for (int i = 0; i < 16; i++) {
+        if (i == 4)
+            glEnable(GL_COLOR_LOGIC_OP);
+        if (i == 8) {
+            glDisable(GL_COLOR_LOGIC_OP);
+            glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+        }
+        if (i == 12)
+            glColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
+        glLogicOp(GL_XOR + (GLenum)(i % 3));
+        bs_cell(i % 8, i / 8 + 2 * (i / 8));
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    fc_capture(h);
+}
+
+/* Points, line strips and quads in multi-draws; a draw whose count
+ * leaves a partial primitive. */
+static void multidraw_modes(fc_h *h)
+{
+    md_arrays(h);
+    static const GLint first[3] = { 0, 20, 41 };
+    static const GLsizei count[3] = { 9, 11, 7 };
+    static const GLenum modes[4] = { GL_POINTS, GL_LINE_LOOP, GL_QUADS, GL_QUAD_STRIP };
+    glPointSize(3);
+    for (int f = 0; f < 4; f++) {
+        fcu_clear(0, 0, 0, 1, 1);
+        glMultiDrawArrays(modes[f], first, count, 3);
+        fc_capture(h);
+    }
+}
+
+/* The wrap operations under a value mask and a partial write mask, and
+ * on the depth-fail path. */
+static void stencil_wrap_masks(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilMask(0x3f);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    fcu_rect(2, 2, 40, 40, 0);           /* 0 -> 255 masked to 0x3f */
+    glStencilMask(0xff);
+    glStencilOp(GL_KEEP, GL_INCR_WRAP, GL_DECR_WRAP);
+    glDepthFunc(GL_LESS);
+    fcu_rect(10, 10, 46, 30, 0.5f);      /* depth fails over the first: INCR_WRAP */
+    fcu_rect(20, 0, 30, 46, -0.5f);      /* passes: DECR_WRAP */
+    glDepthFunc(GL_ALWAYS);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    static const GLint vals[6] = { 0x3f, 0x40, 0x3e, 0xff, 0x00, 0x3d };
+    for (int i = 0; i < 6; i++) {
+        glStencilFunc(GL_EQUAL, vals[i], i == 5 ? 0x0f : 0xff);
+        fcu_color(i + 2);
+        fcu_rect(0, 0, 48, 48, 0);
+    }
+    fc_capture(h);
+}
+
 const fc_case fc_cases_gl14_ops[] = {
     FC_CASE_RGBA("gl14/blendsep_factors", 64, 64, 4, "gl14 blendsep fragment", blendsep_factors),
     FC_CASE_RGBA("gl14/blendsep_equations", 64, 64, 2, "gl14 blendsep fragment", blendsep_equations),
@@ -620,6 +690,11 @@ const fc_case fc_cases_gl14_ops[] = {
     FC_CASE("gl14/stencil_wrap", 48, 48, OSMESA_RGBA, 24, 8, 1, "gl14 stencilwrap fragment",
             stencil_wrap),
     FC_CASE_RGBA("gl13/transpose", 48, 48, 2, "gl13 transpose matrix dlist", transpose),
+    FC_CASE_RGBA("gl14/blendsep_logicop_mask", 64, 64, 1, "gl14 blendsep fragment",
+                 blendsep_logicop_mask),
+    FC_CASE_RGBA("gl14/multidraw_modes", 64, 64, 4, "gl14 multidraw varray", multidraw_modes),
+    FC_CASE("gl14/stencil_wrap_masks", 48, 48, OSMESA_RGBA, 24, 8, 1, "gl14 stencilwrap fragment",
+            stencil_wrap_masks),
     FC_CASE_RGBA("gl13/multisample_state", 32, 32, 1, "gl13 multisample api attrib dlist",
                  multisample_state),
     { 0 },

@@ -79,6 +79,7 @@ DL_OP2(PolygonMode, E, E)
 DL_OP2(PolygonOffset, F, F)
 DL_OPV0(PolygonStipple, UB, 128)   /* unpacked at compile time (hook) */
 DL_OP1(PointSize, F)
+DL_OPV1(PointParameterfv, E, F, 3)  /* every glPointParameter form, as 3 floats */
 DL_OP2(SampleCoverage, F, B)
 DL_OP1(LineWidth, F)
 DL_OP2(LineStipple, I, US)

@@ -125,6 +125,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_POINT_SMOOTH:
       *dirty = FGL_NEW_POINT;
       return &ctx->Point.SmoothFlag;
+   case GL_POINT_SPRITE:
+      *dirty = FGL_NEW_POINT;
+      return &ctx->Point.PointSprite;
    case GL_LINE_SMOOTH:
       *dirty = FGL_NEW_LINE;
       return &ctx->Line.SmoothFlag;

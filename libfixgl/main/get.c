@@ -360,6 +360,22 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_POINT_SIZE:
       set_floats(val, V_FLOAT, &ctx->Point.Size, 1);
       return true;
+   /* glPointParameter (main/points.c) */
+   case GL_POINT_SIZE_MIN:
+      set_floats(val, V_FLOAT, &ctx->Point.MinSize, 1);
+      return true;
+   case GL_POINT_SIZE_MAX:
+      set_floats(val, V_FLOAT, &ctx->Point.MaxSize, 1);
+      return true;
+   case GL_POINT_FADE_THRESHOLD_SIZE:
+      set_floats(val, V_FLOAT, &ctx->Point.Threshold, 1);
+      return true;
+   case GL_POINT_DISTANCE_ATTENUATION:
+      set_floats(val, V_FLOAT, ctx->Point.Params, 3);
+      return true;
+   case GL_POINT_SPRITE_COORD_ORIGIN:
+      set_ints(val, V_INT, 1, (int)ctx->Point.SpriteOrigin, 0, 0, 0);
+      return true;
    case GL_POINT_SIZE_RANGE:        /* = GL_SMOOTH_POINT_SIZE_RANGE */
    case GL_ALIASED_POINT_SIZE_RANGE:
       f[0] = FGL_MIN_POINT_SIZE;
@@ -768,6 +784,11 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_rescale_normal     GL_RESCALE_NORMAL
        *   EXT_separate_specular_color GL_LIGHT_MODEL_COLOR_CONTROL
        *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
+       *   ARB_multisample        glSampleCoverage and its state (no samples)
+       *   ARB/EXT_point_parameters glPointParameter (no point sprites)
+       *   ARB_transpose_matrix   glLoad/MultTransposeMatrix
+       *   EXT_blend_equation_separate, EXT_blend_func_separate
+       *   EXT_fog_coord, EXT_secondary_color, EXT_multi_draw_arrays
        *   EXT/SGIS_texture_edge_clamp GL_CLAMP_TO_EDGE
        *   EXT_texture_lod_bias   GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
        *   SGIS_generate_mipmap   GL_GENERATE_MIPMAP, GL_GENERATE_MIPMAP_HINT
@@ -785,6 +806,10 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
                               "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
+                              "GL_ARB_multisample GL_ARB_point_parameters GL_ARB_transpose_matrix "
+                              "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate "
+                              "GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_point_parameters "
+                              "GL_EXT_secondary_color "
                               "GL_FIXGL_cook_torrance "
                               "GL_EXT_abgr GL_EXT_bgra "
                               "GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
