@@ -675,6 +675,62 @@ static void stencil_wrap_masks(fc_h *h)
     fc_capture(h);
 }
 
+/* Found by the fuzzer (seeds 5 and 50 of the campaign with the GL 1.4
+ * table): queries between a compiled glBegin and glEnd run (the save
+ * dispatch has no begin/end check), so their own errors show. */
+static void get_in_compiled_begin(fc_h *h)
+{
+    GLfloat f[16];
+    GLdouble d[16];
+    const GLuint l = glGenLists(1);
+    for (int mode = 0; mode < 2; mode++) {
+        glNewList(l, mode ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+        glBegin(GL_TRIANGLES);
+        glVertex2i(2, 12);
+        glGetTexParameterfv(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WRAP_R, f);
+        fc_error(h, mode ? "tex parameter, compile and execute" : "tex parameter, compile");
+        glGetTexGendv(GL_S + 0x1000, GL_OBJECT_PLANE, d);
+        fc_error(h, mode ? "texgen, compile and execute" : "texgen, compile");
+        glGetTexGendv(GL_S, GL_OBJECT_PLANE, d);
+        fc_error(h, "texgen valid");
+        glEnd();
+        glEndList();
+        fc_error(h, "end");
+    }
+    glBegin(GL_TRIANGLES);
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, f);
+    fc_error(h, "tex parameter inside begin");
+    glGetTexGendv(GL_S, GL_OBJECT_PLANE, d);
+    fc_error(h, "texgen inside begin");
+    glEnd();
+    glDeleteLists(l, 1);
+}
+
+/* Found by the fuzzer (seed 43): glEvalCoord outside glBegin/glEnd puts
+ * the evaluated attributes in the immediate-mode vertex format, which a
+ * query's flush keeps; an array draw after it must not read it. */
+static void draw_after_eval_format(fc_h *h)
+{
+    md_arrays(h);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glColor3f(0.9f, 0.8f, 0.2f);
+    static const GLfloat cp[4][4] = { { 1, 0, 0, 1 }, { 0, 1, 0, 1 }, { 0, 0, 1, 1 }, { 1, 1, 1, 1 } };
+    glMap2f(GL_MAP2_COLOR_4, 0, 1, 4, 2, 0, 1, 8, 2, &cp[0][0]);
+    glEnable(GL_MAP2_COLOR_4);
+    static const GLushort idx[8] = { 0, 9, 18, 27, 36, 45, 54, 63 };
+    for (int f = 0; f < 2; f++) {
+        fcu_clear(0, 0, 0, 1, 1);
+        glEvalCoord2f(0.25f, 0.75f);
+        if (f) {
+            GLfloat c[4];
+            glGetFloatv(GL_CURRENT_COLOR, c);
+        }
+        glDrawElements(GL_LINES, 8, GL_UNSIGNED_SHORT, idx);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_gl14_ops[] = {
     FC_CASE_RGBA("gl14/blendsep_factors", 64, 64, 4, "gl14 blendsep fragment", blendsep_factors),
     FC_CASE_RGBA("gl14/blendsep_equations", 64, 64, 2, "gl14 blendsep fragment", blendsep_equations),
@@ -692,6 +748,8 @@ const fc_case fc_cases_gl14_ops[] = {
     FC_CASE_RGBA("gl13/transpose", 48, 48, 2, "gl13 transpose matrix dlist", transpose),
     FC_CASE_RGBA("gl14/blendsep_logicop_mask", 64, 64, 1, "gl14 blendsep fragment",
                  blendsep_logicop_mask),
+    FC_CASE_RGBA("dlist/get_in_compiled_begin", 8, 8, 0, "dlist error texture", get_in_compiled_begin),
+    FC_CASE_RGBA("varray/draw_after_eval_format", 64, 64, 2, "varray eval", draw_after_eval_format),
     FC_CASE_RGBA("gl14/multidraw_modes", 64, 64, 4, "gl14 multidraw varray", multidraw_modes),
     FC_CASE("gl14/stencil_wrap_masks", 48, 48, OSMESA_RGBA, 24, 8, 1, "gl14 stencilwrap fragment",
             stencil_wrap_masks),
