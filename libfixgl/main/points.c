@@ -150,8 +150,14 @@ void GLAPIENTRY glPointParameteriv(GLenum pname, const GLint *params)
    point_parameter(pname, p);
 }
 
-void GLAPIENTRY glPointParameterfARB(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
-void GLAPIENTRY glPointParameterfEXT(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
+void GLAPIENTRY glPointParameterfARB(GLenum pname, GLfloat param)
+{
+   glPointParameterf(pname, param);
+}
+void GLAPIENTRY glPointParameterfEXT(GLenum pname, GLfloat param)
+{
+   glPointParameterf(pname, param);
+}
 void GLAPIENTRY glPointParameterfvARB(GLenum pname, const GLfloat *params)
 {
    glPointParameterfv(pname, params);

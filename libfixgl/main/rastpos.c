@@ -422,7 +422,8 @@ static void window_pos(GLfloat x, GLfloat y, GLfloat z)
    cur->RasterPos[2] = fgl_clamp01(z) * (f - n) + n;
    cur->RasterPos[3] = 1.0f;
    cur->RasterPosValid = true;
-   cur->RasterDistance = ctx->Fog.CoordinateSource == GL_FOG_COORDINATE ? cur->Attrib[FGL_ATTR_FOG][0] : 0.0f;
+   cur->RasterDistance = ctx->Fog.CoordinateSource == GL_FOG_COORDINATE
+                       ? cur->Attrib[FGL_ATTR_FOG][0] : 0.0f;
    for (int k = 0; k < 4; k++) {
       cur->RasterColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR0][k]);
       cur->RasterSecondaryColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR1][k]);

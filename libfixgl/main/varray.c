@@ -513,10 +513,10 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
 /* glMultiDrawArrays (GL 1.4) and its EXT alias [S: main/draw.c:
  * _mesa_MultiDrawArrays, main/api_validate.c:
  * _mesa_validate_MultiDrawArrays]: the draw count, the mode, then each
- * count (gl14/multidraw_dlist_errors); every draw then goes to the driver in one call, which llvmpipe
- * skips whole when the first draw is empty (llvmpipe_draw_vbo:
- * !draws[0].count; ORACLE-NOTES.md "Multi-draws").  fixgl draws them one
- * after the other. */
+ * count (gl14/multidraw_dlist_errors); every draw then goes to the driver
+ * in one call, which llvmpipe skips whole when the first draw is empty
+ * (llvmpipe_draw_vbo: !draws[0].count; ORACLE-NOTES.md "GL 1.4 vertex
+ * attributes and operations").  fixgl draws them one after the other. */
 void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
                                   GLsizei n)
 {
