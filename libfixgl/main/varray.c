@@ -528,7 +528,7 @@ void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei
       return;
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   flush_for_draw(ctx);
+   fgl_flush_for_draw(ctx);
    GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    for (GLsizei i = 0; !err && i < n; i++)
       if (count[i] < 0)
@@ -569,7 +569,7 @@ void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum ty
       return;
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   flush_for_draw(ctx);
+   fgl_flush_for_draw(ctx);
    GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    if (!err && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT &&
        type != GL_UNSIGNED_INT)
