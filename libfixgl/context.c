@@ -76,7 +76,6 @@ static void init_other_state(struct fgl_context *ctx)
    struct fgl_current_attrib *cur = &ctx->Current;
    for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
       cur->RasterTexCoords[u][3] = 1.0f;
-   cur->SecondaryColor[3] = 1.0f;
    cur->RasterPos[3] = 1.0f;
    for (int i = 0; i < 4; i++)
       cur->RasterColor[i] = 1.0f;

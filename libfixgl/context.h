@@ -92,11 +92,6 @@ struct fgl_current_attrib {
    /* every vbo attribute's value outside the vertex format: normal, colour
     * and the materials (which GL groups with the lighting state) */
    float Attrib[FGL_ATTR_COUNT][4];
-   /* GL 1.4 current values without a setter in fixgl's API, kept outside
-    * the vbo and only queried (Mesa keeps them as vbo attributes,
-    * VERT_ATTRIB_COLOR1, _FOG). */
-   float SecondaryColor[4];                      /* (0, 0, 0, 1) */
-   float FogCoord;                               /* 0 */
    /* the current raster position (glRasterPos, glWindowPos: main/rastpos.c)
     * [S: main/context.h, gl_current_attrib] */
    float RasterPos[4];                           /* (0, 0, 0, 1) */
@@ -115,10 +110,13 @@ struct fgl_colorbuffer_attrib {
    bool AlphaEnabled;
    GLenum AlphaFunc;
    float AlphaRef;          /* as given (Mesa's AlphaRefUnclamped) */
-   /* blending: one factor pair and equation for rgb and alpha */
+   /* blending: the factor pair and equation for rgb, and for alpha
+    * (glBlendFuncSeparate, glBlendEquationSeparate) */
    bool BlendEnabled;
    GLenum BlendSrc, BlendDst;
    GLenum BlendEquation;
+   GLenum BlendSrcA, BlendDstA;
+   GLenum BlendEquationA;
    float BlendColor[4];     /* as given (Mesa's BlendColorUnclamped) */
    /* logic op */
    bool LogicOpEnabled;     /* GL_COLOR_LOGIC_OP */
@@ -169,6 +167,7 @@ struct fgl_fog_attrib {
    GLenum CoordinateSource;     /* GL_FRAGMENT_DEPTH or GL_FOG_COORDINATE */
    GLenum DistanceMode;         /* GL_NV_fog_distance: GL_EYE_RADIAL_NV,
                                  * GL_EYE_PLANE, GL_EYE_PLANE_ABSOLUTE_NV */
+   bool ColorSumEnabled;        /* GL_COLOR_SUM (Mesa keeps it here too) */
 };
 
 /* GL_HINT_BIT: stored and reported; none of them changes the oracle's
@@ -484,13 +483,25 @@ struct fgl_multisample_attrib {
    bool Enabled;            /* GL_MULTISAMPLE: true */
    bool SampleAlphaToCoverage, SampleAlphaToOne, SampleCoverage;
    float SampleCoverageValue;   /* 1 */
-   bool SampleCoverageInvert;
+   GLboolean SampleCoverageInvert;  /* as glSampleCoverage gave it (a
+                                     * capability too: main/enable.c) */
 };
 
 /* GL_POINT_BIT (main/points.c) */
 struct fgl_point_attrib {
    float Size;              /* as given (> 0); clamped when drawn */
    bool SmoothFlag;         /* GL_POINT_SMOOTH */
+   /* glPointParameter (GL 1.4) */
+   float MinSize, MaxSize;  /* GL_POINT_SIZE_MIN (0), _MAX (255) */
+   float Threshold;         /* GL_POINT_FADE_THRESHOLD_SIZE (1): stored
+                             * only, the oracle fades nothing */
+   float Params[3];         /* GL_POINT_DISTANCE_ATTENUATION (1, 0, 0) */
+   /* GL_POINT_SPRITE, glTexEnv's GL_COORD_REPLACE per unit (bit u),
+    * GL_POINT_SPRITE_COORD_ORIGIN (the oracle has no NV_point_sprite:
+    * no R mode) */
+   bool PointSprite;
+   unsigned CoordReplace;
+   GLenum SpriteOrigin;
 };
 
 /* GL_LINE_BIT (main/lines.c) */
@@ -687,8 +698,8 @@ enum fgl_array_index {
    FGL_ARRAY_INDEX,        /* state only: colour index mode does not draw */
    FGL_ARRAY_TEXCOORD,     /* unit 0's coordinate array */
    FGL_ARRAY_EDGEFLAG,
-   FGL_ARRAY_FOGCOORD,     /* GL 1.4 arrays: enabled, pointed at and */
-   FGL_ARRAY_COLOR1,       /* queried as Mesa does; not drawn */
+   FGL_ARRAY_FOGCOORD,     /* GL 1.4 arrays: glFogCoordPointer and */
+   FGL_ARRAY_COLOR1,       /* glSecondaryColorPointer */
    FGL_ARRAY_TEXCOORD1,    /* units 1..7's coordinate arrays: */
    FGL_ARRAY_COUNT = FGL_ARRAY_TEXCOORD1 + FGL_MAX_TEXTURE_UNITS - 1,
 };
@@ -713,16 +724,16 @@ struct fgl_client_attrib_node {
  * saves which member, GL_TEXTURE_BIT, GL_EVAL_BIT, GL_PIXEL_MODE_BIT,
  * GL_ACCUM_BUFFER_BIT, GL_LIST_BIT and GL_MULTISAMPLE_BIT included. */
 #define FGL_MAX_ATTRIB_STACK_DEPTH 16      /* MAX_ATTRIB_STACK_DEPTH */
-#define FGL_ENABLE_ATTRIB_CAPS 53          /* caps restored by GL_ENABLE_BIT */
+#define FGL_ENABLE_ATTRIB_CAPS 54          /* caps restored by GL_ENABLE_BIT */
 #define FGL_EVAL_ATTRIB_CAPS 19            /* ... by GL_EVAL_BIT */
 struct fgl_attrib_node {
    GLbitfield Mask;
    GLbitfield OldPopAttribState;           /* ctx->PopAttribState at the push */
    struct fgl_colorbuffer_attrib Color;
    float Current[FGL_ATTR_MAT_FIRST][4];   /* ctx->Current, materials excluded */
-   /* the rest of ctx->Current: SecondaryColor .. RasterPosValid */
+   /* the rest of ctx->Current: RasterPos .. RasterPosValid */
    unsigned char CurrentExtra[sizeof(struct fgl_current_attrib) -
-                              offsetof(struct fgl_current_attrib, SecondaryColor)];
+                              offsetof(struct fgl_current_attrib, RasterPos)];
    struct fgl_multisample_attrib Multisample;
    struct fgl_accum_attrib Accum;
    struct fgl_pixel_attrib Pixel;
@@ -1109,6 +1120,13 @@ static inline void fgl_feedback_token(struct fgl_context *ctx, GLfloat token)
    if (ctx->Feedback.Count < ctx->Feedback.BufferSize)
       ctx->Feedback.Buffer[ctx->Feedback.Count] = token;
    ctx->Feedback.Count++;
+}
+
+/* ctx->Point._Attenuated [S: main/points.c] */
+static inline bool fgl_point_attenuated(const struct fgl_context *ctx)
+{
+   const float *p = ctx->Point.Params;
+   return p[0] != 1.0f || p[1] != 0.0f || p[2] != 0.0f;
 }
 
 /* Public API symbols; everything else is hidden by default. */

@@ -507,6 +507,18 @@ static void build_blend(const struct fgl_context *ctx, struct r_blend_state *o)
    const bool minmax = o->blend_eq == R_BLEND_MIN || o->blend_eq == R_BLEND_MAX;
    o->blend_src = minmax ? R_BF_ONE : blend_factor(c->BlendSrc);
    o->blend_dst = minmax ? R_BF_ONE : blend_factor(c->BlendDst);
+   /* the alpha channel's own equation and factors, kept only when they
+    * differ from the rgb ones (equal states stay equal bytes) */
+   const enum r_blend_eq eq_a = blend_eq(c->BlendEquationA);
+   const bool minmax_a = eq_a == R_BLEND_MIN || eq_a == R_BLEND_MAX;
+   const enum r_blend_factor src_a = minmax_a ? R_BF_ONE : blend_factor(c->BlendSrcA);
+   const enum r_blend_factor dst_a = minmax_a ? R_BF_ONE : blend_factor(c->BlendDstA);
+   if (eq_a != o->blend_eq || src_a != o->blend_src || dst_a != o->blend_dst) {
+      o->separate_alpha = true;
+      o->blend_eq_a = eq_a;
+      o->blend_src_a = src_a;
+      o->blend_dst_a = dst_a;
+   }
    for (int i = 0; i < 4; i++)
       o->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
    o->dst_alpha_one = fb && fb->AlphaBits == 0;
@@ -541,7 +553,10 @@ static void build_fs(const struct fgl_context *ctx, struct r_fs_state *o)
    /* colours: the lit front (and back, and secondary) colours, or the
     * vertex colour */
    const bool lit = ctx->Light.Enabled;
-   o->color_sum = lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR;
+   /* ff_fragment_shader.cpp texenv_doing_secondary_color: separate
+    * specular, or GL_COLOR_SUM */
+   o->color_sum = (lit && ctx->Light.Model.ColorControl == GL_SEPARATE_SPECULAR_COLOR) ||
+                  ctx->Fog.ColorSumEnabled;
    o->num_attribs = twoside_on(ctx) ? 4 : o->color_sum ? 2 : 1;
    o->fs_inputs = 1u << R_FS_COLOR0 | (o->color_sum ? 1u << R_FS_COLOR1 : 0u);
    /* fog: the fragment program reads the fog coordinate, which the
@@ -623,7 +638,12 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
     * MaxLineWidth(AA)] = [1, 255], with Mesa's CLAMP(X, MIN, MAX) =
     * X > MIN ? (X > MAX ? MAX : X) : MIN, so NaN becomes MIN */
    const float size = ctx->Point.Size, width = ctx->Line.Width;
-   o->point_size = size > 0.0f ? (size > FGL_MAX_POINT_SIZE ? FGL_MAX_POINT_SIZE : size) : 0.0f;
+   const float pmin = ctx->Point.MinSize, pmax = ctx->Point.MaxSize;
+   o->point_size = size > pmin ? (size > pmax ? pmax : size) : pmin;
+   /* a distance attenuation other than (1, 0, 0): the vertex program
+    * writes each point's size (st_atom_rasterizer.c point_size_per_vertex,
+    * ffvertex_prog.c build_atten_pointsize) */
+   o->point_size_per_vertex = fgl_point_attenuated(ctx);
    o->line_width = width > FGL_MIN_LINE_WIDTH
                  ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
                  : FGL_MIN_LINE_WIDTH;

@@ -502,6 +502,9 @@ static void query_extensions(fc_h *h)
         "GL_EXT_texture_lod_bias", "GL_EXT_texture_mirror_clamp",
         "GL_IBM_texture_mirrored_repeat", "GL_NV_texture_env_combine4",
         "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod", "GL_SGIS_generate_mipmap",
+        "GL_ARB_multisample", "GL_ARB_point_parameters", "GL_ARB_transpose_matrix",
+        "GL_EXT_blend_equation_separate", "GL_EXT_blend_func_separate", "GL_EXT_fog_coord",
+        "GL_EXT_multi_draw_arrays", "GL_EXT_point_parameters", "GL_EXT_secondary_color",
     };
     /* fixgl's own extensions (include/fixgl/shading.md), which the oracle
      * does not have: not counted among the others; libfixgl's api tests

@@ -62,6 +62,9 @@ extern const fc_case fc_cases_tex_wrap[];
 extern const fc_case fc_cases_pix_draw[];
 extern const fc_case fc_cases_shading[];
 extern const fc_case fc_cases_shading_paths[];
+extern const fc_case fc_cases_gl14_attr[];
+extern const fc_case fc_cases_gl14_ops[];
+extern const fc_case fc_cases_gl14_points[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -36,6 +36,9 @@ static const fc_case *const groups[] = {
     fc_cases_demo_tex,
     fc_cases_shading,
     fc_cases_shading_paths,
+    fc_cases_gl14_attr,
+    fc_cases_gl14_ops,
+    fc_cases_gl14_points,
 };
 
 size_t fc_case_count(void)

@@ -60,7 +60,8 @@ static int starts_with(const char *s, const char *p) { return strncmp(s, p, strl
 static int classify_bound(const fz_entry *e)
 {
     static const char *const arrays[] = { "glDrawArrays", "glDrawElements",
-        "glDrawRangeElements", "glArrayElement", NULL };
+        "glDrawRangeElements", "glArrayElement", "glMultiDrawArrays", "glMultiDrawArraysEXT",
+        "glMultiDrawElements", "glMultiDrawElementsEXT", NULL };
     static const char *const mesh[] = { "glEvalMesh1", "glEvalMesh2", "glEvalPoint1",
         "glEvalPoint2", NULL };
     /* copies from the framebuffer: enormous sizes stay (the GL checks
@@ -99,7 +100,8 @@ static int vertex_call(const char *n)
         "glEdgeFlag", "glIndex", "glArrayElement", "glCallList", "glSecondaryColor",
         "glFogCoord", NULL };
     if (strcmp(n, "glIndexMask") == 0 || strcmp(n, "glIndexPointer") == 0 ||
-        strcmp(n, "glEdgeFlagPointer") == 0 || strcmp(n, "glColorPointer") == 0)
+        strcmp(n, "glEdgeFlagPointer") == 0 || strcmp(n, "glColorPointer") == 0 ||
+        starts_with(n, "glSecondaryColorPointer") || starts_with(n, "glFogCoordPointer"))
         return 0;
     for (int i = 0; prefixes[i]; i++)
         if (starts_with(n, prefixes[i]))
@@ -321,6 +323,16 @@ static void bound_call(fz_call *c)
         for (int j = 0; j < e->nparams; j++)
             if (e->params[j].kind == FZ_PTR_IN)
                 c->a[j].i = FZ_IN_SMALL + c->a[j].i % (1 << 20);
+    /* the multi-draws: at most 16 draws (their counts and firsts are the
+     * small values above), glMultiDrawElements' index lists from the
+     * pointer table */
+    if (b == B_ARRAYS && starts_with(e->name, "glMultiDraw"))
+        for (int j = 0; j < e->nparams; j++) {
+            if (e->params[j].kind == FZ_SIZE && strcmp(e->params[j].name, "drawcount") == 0)
+                c->a[j].i = (int32_t)c->a[j].i % 17;
+            else if (e->params[j].kind == FZ_PTR_IN && strcmp(e->params[j].name, "indices") == 0)
+                c->a[j].i = FZ_IN_PTRS + 8 * (c->a[j].i % 8000);
+        }
     /* +Inf pixel-store values: fmod gives NaN, which converts to INT_MIN
      * (invalid) on both sides, as -Inf does. */
 }
@@ -647,6 +659,9 @@ void fz_fill_input_arena(uint8_t *arena, size_t size)
         } else if (off >= FZ_IN_SMALL && off < FZ_IN_RANDOM) {
             uint32_t u[2] = { (uint32_t)(r & 0xff), (uint32_t)((r >> 8) & 0xff) };
             memcpy(p, u, 8);
+        } else if (off >= FZ_IN_PTRS) {
+            const uint64_t v = FZ_IN_BASE + FZ_IN_SMALL + (r & 0xfffff);
+            memcpy(p, &v, 8);
         } else if (off >= FZ_IN_RANDOM) {
             /* no signalling NaNs, as floats or doubles: GL leaves NaN input
              * unspecified (2.1.1) and the oracle keeps a payload that
@@ -782,6 +797,9 @@ void fz_print_c(FILE *f, const fz_call *calls, size_t n, const char *comment)
         "            uint32_t u[2] = { (uint32_t)(r & 0xff), (uint32_t)((r >> 8) & 0xff) };\n"
         "            memcpy(p, u, 8);\n"
         "        } else if (off >= 0x%xu) {\n"
+        "            const uint64_t v = 0x%llxull + (r & 0xfffff);\n"
+        "            memcpy(p, &v, 8);\n"
+        "        } else if (off >= 0x%xu) {\n"
         "            uint64_t q = r;\n"
         "            if ((q & 0x7ff0000000000000ull) == 0x7ff0000000000000ull && (q & 0x000fffffffffffffull))\n"
         "                q |= 0x0008000000000000ull;\n"
@@ -796,7 +814,7 @@ void fz_print_c(FILE *f, const fz_call *calls, size_t n, const char *comment)
         "        }\n    }\n}\n\n",
         comment, (unsigned long long)FZ_IN_BASE, (unsigned long long)FZ_OUT_BASE,
         FZ_COLOR_OFF, FZ_OUT_HASHED, FZ_IN_FLOATS, FZ_IN_DOUBLES, FZ_IN_DOUBLES, FZ_IN_SMALL, FZ_IN_SMALL,
-        FZ_IN_RANDOM, FZ_IN_RANDOM);
+        FZ_IN_RANDOM, FZ_IN_PTRS, (unsigned long long)(FZ_IN_BASE + FZ_IN_SMALL), FZ_IN_RANDOM);
     fprintf(f,
         "int main(void)\n{\n"
         "    uint8_t *in = mmap((uint8_t *)IN(0) - 0x%llxull, 0x%llxull, PROT_READ | PROT_WRITE,\n"

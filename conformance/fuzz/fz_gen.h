@@ -51,6 +51,9 @@ fz_call *fz_read_stream(const char *path, size_t *n);
 #define FZ_IN_DOUBLES  (20u << 20)   /* doubles in [-2, 2) */
 #define FZ_IN_SMALL    (24u << 20)   /* uint32 in [0, 256) */
 #define FZ_IN_RANDOM   (28u << 20)   /* random bytes (and beyond 32 MB) */
+/* the last 64 KB: pointers into FZ_IN_SMALL at any alignment (the index
+ * lists of glMultiDrawElements read an array of pointers) */
+#define FZ_IN_PTRS     (FZ_IN_SIZE - (64u << 10))
 #define FZ_COLOR_OFF   (40u << 20)   /* the colour buffer, in the output arena */
 #define FZ_COLOR_MAX   256           /* its largest width and height */
 #define FZ_PTR_COLOR   (-1)          /* argument: the colour buffer */

@@ -311,6 +311,11 @@ def expand(names, enums):
 
 def classify_param(fname, p):
     p = p.strip()
+    # glMultiDrawElements' index lists: an array of input pointers (the
+    # generator points it at the arena's pointer table, fz_gen.c)
+    m = re.match(r'^const\s+(?:void|GLvoid)\s*\*\s*const\s*\*\s*(\w+)$', p)
+    if m:
+        return ('FZ_PTR_IN', 'const void *const *', m.group(1), 'p')
     m = re.match(r'^(const\s+)?(\w+)\s*(\*\s*\*|\*)?\s*(\w+)?\s*(\[\s*\d*\s*\])?$', p)
     if not m:
         return None

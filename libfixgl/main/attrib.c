@@ -50,7 +50,7 @@ static const GLenum enable_caps[FGL_ENABLE_ATTRIB_CAPS] = {
    GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL,
    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
-   GL_SAMPLE_COVERAGE,
+   GL_SAMPLE_COVERAGE, GL_POINT_SPRITE,
 };
 
 static void save_enable(struct fgl_context *ctx, struct fgl_attrib_node *node)
@@ -215,12 +215,15 @@ static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *n
    if (memcmp(&ctx->Fog, &node->Fog, sizeof(node->Fog)) == 0)
       return;
    /* _mesa_PopAttrib sets the enable, colour, density, start, end, index
-    * and mode only: GL_FOG_COORDINATE_SOURCE and GL_FOG_DISTANCE_MODE_NV
-    * keep their current values (api/query_walk_popped) */
+    * and mode only: GL_FOG_COORDINATE_SOURCE, GL_FOG_DISTANCE_MODE_NV and
+    * GL_COLOR_SUM (which GL_ENABLE_BIT does not restore either) keep their
+    * current values (api/query_walk_popped, gl14/seccolor_attrib) */
    const GLenum source = ctx->Fog.CoordinateSource, distance = ctx->Fog.DistanceMode;
+   const bool color_sum = ctx->Fog.ColorSumEnabled;
    memcpy(&ctx->Fog, &node->Fog, sizeof(ctx->Fog));   /* padding too: changed_groups */
    ctx->Fog.CoordinateSource = source;
    ctx->Fog.DistanceMode = distance;
+   ctx->Fog.ColorSumEnabled = color_sum;
    memcpy(ctx->Fog.ColorUnclamped, node->Fog.Color, sizeof(node->Fog.Color));
    ctx->NewState |= FGL_NEW_FOG;
 }
@@ -278,8 +281,8 @@ struct attrib_group {
 #define HOOKS(bit, save, restore) { bit, 0, 0, 0, 0, save, restore }
 
 /* In _mesa_PopAttrib's order (the enable group's GL_COLOR_MATERIAL before
- * the lighting group's materials).  The secondary colour, fog coordinate
- * and raster position are in Current.SecondaryColor and after. */
+ * the lighting group's materials).  The raster position is in
+ * Current.RasterPos and after. */
 static const struct attrib_group groups[] = {
    /* copied back as Mesa does (_mesa_ClearAccum of the stored value,
     * memcpy of Eval and Pixel then _mesa_ReadBuffer, the texture bindings
@@ -288,7 +291,7 @@ static const struct attrib_group groups[] = {
    GROUP(GL_COLOR_BUFFER_BIT, Color, Color, FGL_NEW_COLOR, NULL, restore_color),
    GROUP(GL_CURRENT_BIT, Current.Attrib, Current, 0, save_flush_current, restore_current),
    /* the current values outside the vbo (raster position...) */
-   GROUP(GL_CURRENT_BIT, Current.SecondaryColor, CurrentExtra, 0, NULL, NULL),
+   GROUP(GL_CURRENT_BIT, Current.RasterPos, CurrentExtra, 0, NULL, NULL),
    GROUP(GL_DEPTH_BUFFER_BIT, Depth, Depth, FGL_NEW_DEPTH, NULL, NULL),
    HOOKS(GL_ENABLE_BIT, save_enable, restore_enable),
    GROUP(GL_EVAL_BIT, Eval, Eval, 0, NULL, NULL),

@@ -6,6 +6,10 @@
  * unsigned bytes use i/255.0f, other unsigned types multiply by the
  * reciprocal.  Double arguments are converted to float first.
  */
+/* the GL 1.4 calls are declared by <GL/glext.h> only with
+ * GL_GLEXT_PROTOTYPES: asking for the prototypes checks the definitions
+ * below against them (and exports them: GLAPI) */
+#define GL_GLEXT_PROTOTYPES 1
 #include <string.h>
 
 #include "main/conv.h"
@@ -17,6 +21,8 @@ void fgl_init_current(struct fgl_context *ctx)
    static const float init[FGL_ATTR_COUNT][4] = {
       [FGL_ATTR_NORMAL] = { 0, 0, 1, 1 },
       [FGL_ATTR_COLOR0] = { 1, 1, 1, 1 },
+      [FGL_ATTR_COLOR1] = { 0, 0, 0, 1 },
+      [FGL_ATTR_FOG] = { 0, 0, 0, 1 },
       [FGL_ATTR_COLOR_INDEX] = { 1, 0, 0, 1 },
       [FGL_ATTR_TEX0] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX1] = { 0, 0, 0, 1 },
       [FGL_ATTR_TEX2] = { 0, 0, 0, 1 }, [FGL_ATTR_TEX3] = { 0, 0, 0, 1 },
@@ -254,6 +260,60 @@ MULTI_TEXCOORD_FUNCS(s, GLshort, ARB)
 MULTI_TEXCOORD_FUNCS(i, GLint, ARB)
 MULTI_TEXCOORD_FUNCS(f, GLfloat, ARB)
 MULTI_TEXCOORD_FUNCS(d, GLdouble, ARB)
+
+/* glSecondaryColor3* (GL 1.4) and their EXT aliases: the vbo attribute
+ * COLOR1, always three components (alpha keeps its current 1), integers
+ * normalized as glColor's [S: main/api_loopback.c:_mesa_SecondaryColor3b..
+ * call SecondaryColor3fEXT; vbo/vbo_attrib_tmp.h:TAG(SecondaryColor3fEXT):
+ * ATTR3F(VBO_ATTRIB_COLOR1)]. */
+static inline void secondary_color3(float r, float g, float b)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_attr(ctx, FGL_ATTR_COLOR1, 3, r, g, b, 1.0f);
+}
+
+#define SECONDARY_COLOR_FUNCS(suffix, type, CONV, EXT)                          \
+   void GLAPIENTRY glSecondaryColor3##suffix##EXT(type r, type g, type b)       \
+   { secondary_color3(CONV(r), CONV(g), CONV(b)); }                             \
+   void GLAPIENTRY glSecondaryColor3##suffix##v##EXT(const type *v)             \
+   { if (v) secondary_color3(CONV(v[0]), CONV(v[1]), CONV(v[2])); }
+
+#define SECONDARY_COLOR_ALL(EXT)                                                \
+   SECONDARY_COLOR_FUNCS(b, GLbyte, BYTE_TO_FLOAT, EXT)                         \
+   SECONDARY_COLOR_FUNCS(ub, GLubyte, UBYTE_TO_FLOAT, EXT)                      \
+   SECONDARY_COLOR_FUNCS(s, GLshort, SHORT_TO_FLOAT, EXT)                       \
+   SECONDARY_COLOR_FUNCS(us, GLushort, USHORT_TO_FLOAT, EXT)                    \
+   SECONDARY_COLOR_FUNCS(i, GLint, INT_TO_FLOAT, EXT)                           \
+   SECONDARY_COLOR_FUNCS(ui, GLuint, UINT_TO_FLOAT, EXT)                        \
+   SECONDARY_COLOR_FUNCS(f, GLfloat, IDENT, EXT)                                \
+   SECONDARY_COLOR_FUNCS(d, GLdouble, IDENT, EXT)
+
+SECONDARY_COLOR_ALL()
+SECONDARY_COLOR_ALL(EXT)
+
+/* glFogCoord{f,d}[v] (GL 1.4) and their EXT aliases: the one-component vbo
+ * attribute FOG, doubles cast to float [S: vbo/vbo_attrib_tmp.h:
+ * TAG(FogCoordfEXT): ATTR1F(VBO_ATTRIB_FOG); api_loopback.c:
+ * _mesa_FogCoordd]. */
+static inline void fog_coord(float f)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   fgl_attr(ctx, FGL_ATTR_FOG, 1, f, 0.0f, 0.0f, 1.0f);
+}
+
+#define FOG_COORD_FUNCS(suffix, type, EXT)                                      \
+   void GLAPIENTRY glFogCoord##suffix##EXT(type f) { fog_coord((GLfloat)f); }   \
+   void GLAPIENTRY glFogCoord##suffix##v##EXT(const type *v)                    \
+   { if (v) fog_coord((GLfloat)v[0]); }
+
+FOG_COORD_FUNCS(f, GLfloat, )
+FOG_COORD_FUNCS(d, GLdouble, )
+FOG_COORD_FUNCS(f, GLfloat, EXT)
+FOG_COORD_FUNCS(d, GLdouble, EXT)
 
 /* glEdgeFlag: a one-component vbo attribute, 1.0 or 0.0 (any non-zero
  * GLboolean converts as its value) [S: vbo/vbo_attrib_tmp.h:EdgeFlag].  It

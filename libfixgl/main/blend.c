@@ -5,6 +5,9 @@
  * clear colour and dither in main/clear.c.  Validation follows Mesa's
  * main/blend.c.
  */
+/* glBlendFuncSeparate and glBlendEquationSeparate are declared by
+ * <GL/glext.h> only with GL_GLEXT_PROTOTYPES (which exports them: GLAPI) */
+#define GL_GLEXT_PROTOTYPES 1
 #include "main/groups.h"
 #include "main/dlist.h"
 
@@ -19,6 +22,9 @@ void fgl_init_blend(struct fgl_context *ctx)
    c->BlendSrc = GL_ONE;
    c->BlendDst = GL_ZERO;
    c->BlendEquation = GL_FUNC_ADD;
+   c->BlendSrcA = GL_ONE;
+   c->BlendDstA = GL_ZERO;
+   c->BlendEquationA = GL_FUNC_ADD;
    for (int i = 0; i < 4; i++)
       c->BlendColor[i] = 0.0f;
    c->LogicOpEnabled = false;
@@ -76,6 +82,27 @@ static bool legal_factor(GLenum factor)
    }
 }
 
+/* blend_func_separate's store, after the checks [S: main/blend.c] */
+static void blend_func(struct fgl_context *ctx, GLenum src, GLenum dst, GLenum src_a,
+                       GLenum dst_a)
+{
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.BlendSrc = src;
+   ctx->Color.BlendDst = dst;
+   ctx->Color.BlendSrcA = src_a;
+   ctx->Color.BlendDstA = dst_a;
+}
+
+/* skip_blend_state_update [S: main/blend.c]: nothing, not even the
+ * checks, when the four factors are the current ones */
+static bool blend_func_same(const struct fgl_context *ctx, GLenum src, GLenum dst,
+                            GLenum src_a, GLenum dst_a)
+{
+   const struct fgl_colorbuffer_attrib *c = &ctx->Color;
+   return c->BlendSrc == src && c->BlendDst == dst && c->BlendSrcA == src_a &&
+          c->BlendDstA == dst_a;
+}
+
 void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor)
 {
    GET_CURRENT_CONTEXT(ctx);
@@ -83,15 +110,52 @@ void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor)
       return;
    FGL_SAVE(ctx, BlendFunc, sfactor, dfactor);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   if (ctx->Color.BlendSrc == sfactor && ctx->Color.BlendDst == dfactor)
-      return; /* skip_blend_state_update */
+   if (blend_func_same(ctx, sfactor, dfactor, sfactor, dfactor))
+      return;
    if (!legal_factor(sfactor) || !legal_factor(dfactor)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
-   ctx->Color.BlendSrc = sfactor;
-   ctx->Color.BlendDst = dfactor;
+   blend_func(ctx, sfactor, dfactor, sfactor, dfactor);
+}
+
+/* glBlendFuncSeparate (GL 1.4) and its EXT alias [S: main/blend.c:
+ * _mesa_BlendFuncSeparate, validate_blend_factors] */
+void GLAPIENTRY glBlendFuncSeparate(GLenum src, GLenum dst, GLenum src_a, GLenum dst_a)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, BlendFuncSeparate, src, dst, src_a, dst_a);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (blend_func_same(ctx, src, dst, src_a, dst_a))
+      return;
+   if (!legal_factor(src) || !legal_factor(dst) || !legal_factor(src_a) ||
+       !legal_factor(dst_a)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   blend_func(ctx, src, dst, src_a, dst_a);
+}
+
+void GLAPIENTRY glBlendFuncSeparateEXT(GLenum src, GLenum dst, GLenum src_a, GLenum dst_a)
+{
+   glBlendFuncSeparate(src, dst, src_a, dst_a);
+}
+
+/* legal_simple_blend_equation [S: main/blend.c] */
+static bool legal_equation(GLenum mode)
+{
+   switch (mode) {
+   case GL_FUNC_ADD:
+   case GL_FUNC_SUBTRACT:
+   case GL_FUNC_REVERSE_SUBTRACT:
+   case GL_MIN:
+   case GL_MAX:
+      return true;
+   default:
+      return false;
+   }
 }
 
 void GLAPIENTRY glBlendEquation(GLenum mode)
@@ -101,21 +165,41 @@ void GLAPIENTRY glBlendEquation(GLenum mode)
       return;
    FGL_SAVE(ctx, BlendEquation, mode);
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   if (ctx->Color.BlendEquation == mode)
+   if (ctx->Color.BlendEquation == mode && ctx->Color.BlendEquationA == mode)
       return;
-   switch (mode) {
-   case GL_FUNC_ADD:
-   case GL_FUNC_SUBTRACT:
-   case GL_FUNC_REVERSE_SUBTRACT:
-   case GL_MIN:
-   case GL_MAX:
-      break;
-   default:
+   if (!legal_equation(mode)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
    ctx->Color.BlendEquation = mode;
+   ctx->Color.BlendEquationA = mode;
+}
+
+/* glBlendEquationSeparate (GL 2.0, and GL_EXT_blend_equation_separate's
+ * name) [S: main/blend.c:_mesa_BlendEquationSeparate]: the rgb mode is
+ * checked first */
+void GLAPIENTRY glBlendEquationSeparate(GLenum mode_rgb, GLenum mode_a)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   FGL_SAVE(ctx, BlendEquationSeparate, mode_rgb, mode_a);
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   if (ctx->Color.BlendEquation == mode_rgb && ctx->Color.BlendEquationA == mode_a)
+      return;
+   if (!legal_equation(mode_rgb) || !legal_equation(mode_a)) {
+      fgl_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   FGL_FLUSH_VERTICES(ctx, FGL_NEW_COLOR);
+   ctx->Color.BlendEquation = mode_rgb;
+   ctx->Color.BlendEquationA = mode_a;
+}
+
+void GLAPIENTRY glBlendEquationSeparateEXT(GLenum mode_rgb, GLenum mode_a)
+{
+   glBlendEquationSeparate(mode_rgb, mode_a);
 }
 
 void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha)

@@ -31,6 +31,9 @@
  *    when the list executes (and at once under GL_COMPILE_AND_EXECUTE);
  *    everything else is validated by the command when it executes.
  */
+/* the replay calls GL 1.4 entry points declared by <GL/glext.h> only with
+ * GL_GLEXT_PROTOTYPES */
+#define GL_GLEXT_PROTOTYPES 1
 #include "main/dlist.h"
 
 #include <assert.h>
@@ -1772,6 +1775,61 @@ void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLs
    for (GLsizei i = 0; i < count; i++)   /* start + i, wrapping */
       t_array_element(ctx, (GLint)((GLuint)first + (GLuint)i));
    fgl_save_end(ctx);
+}
+
+/* The sum of a multi-draw's counts as Mesa's int accumulates it (wrapping),
+ * and the vertex storage grown for it when it is not negative
+ * [S: vbo/vbo_save_api.c:_save_OBE_MultiDrawArrays, grow_vertex_storage's
+ * int arithmetic] */
+static void grow_for_counts(struct fgl_context *ctx, const GLsizei *count, GLsizei n)
+{
+   uint32_t sum = 0;
+   for (GLsizei i = 0; i < n; i++)
+      sum += (uint32_t)count[i];
+   if ((int32_t)sum >= 0)
+      grow_vertex_storage(ctx, sum);
+}
+
+/* glMultiDrawArrays while compiling [S: vbo/vbo_save_api.c:
+ * _save_OBE_MultiDrawArrays]: the storage for every count, then the mode,
+ * the draw count and each count checked, then a glDrawArrays of each
+ * non-empty draw */
+void fgl_save_multi_draw_arrays(struct fgl_context *ctx, GLenum mode, const GLint *first,
+                                const GLsizei *count, GLsizei n)
+{
+   if (n > 0)
+      grow_for_counts(ctx, count, n);
+   if (mode > GL_PATCHES) {
+      compile_error(ctx, GL_INVALID_ENUM);
+      return;
+   }
+   if (n < 0) {
+      compile_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   for (GLsizei i = 0; i < n; i++) {
+      if (count[i] < 0) {
+         compile_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+   }
+   for (GLsizei i = 0; i < n; i++)
+      if (count[i] > 0)
+         fgl_save_draw_arrays(ctx, mode, first[i], count[i]);
+}
+
+/* glMultiDrawElements while compiling [S: vbo/vbo_save_api.c:
+ * _save_OBE_MultiDrawElements]: no checks of its own, a compiled
+ * glDrawElements of each non-empty draw */
+void fgl_save_multi_draw_elements(struct fgl_context *ctx, GLenum mode, const GLsizei *count,
+                                  GLenum type, const GLvoid *const *indices, GLsizei n)
+{
+   if (n <= 0)
+      return;
+   grow_for_counts(ctx, count, n);
+   for (GLsizei i = 0; i < n; i++)
+      if (count[i] > 0)
+         fgl_save_draw_elements(ctx, mode, count[i], type, indices[i]);
 }
 
 void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,

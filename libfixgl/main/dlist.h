@@ -101,6 +101,10 @@ void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
 void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint start,
                                   GLuint end, GLsizei count, GLenum type,
                                   const GLvoid *indices);
+void fgl_save_multi_draw_arrays(struct fgl_context *ctx, GLenum mode, const GLint *first,
+                                const GLsizei *count, GLsizei n);
+void fgl_save_multi_draw_elements(struct fgl_context *ctx, GLenum mode, const GLsizei *count,
+                                  GLenum type, const GLvoid *const *indices, GLsizei n);
 void fgl_save_call_list(struct fgl_context *ctx, GLuint list);
 /* the evaluator commands (main/eval.c); these return whether the entry
  * point goes on to execute, as the FGL_SAVE functions do */

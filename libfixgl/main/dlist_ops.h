@@ -42,6 +42,8 @@
 DL_OP2(AlphaFunc, E, F)
 DL_OP2(BlendFunc, E, E)      /* Mesa: BLEND_FUNC_SEPARATE(s, d, s, d) */
 DL_OP1(BlendEquation, E)
+DL_OP4(BlendFuncSeparate, E, E, E, E)
+DL_OP2(BlendEquationSeparate, E, E)
 DL_OP4(BlendColor, F, F, F, F)
 DL_OP1(LogicOp, E)
 DL_OP4(ColorMask, B, B, B, B)
@@ -77,6 +79,8 @@ DL_OP2(PolygonMode, E, E)
 DL_OP2(PolygonOffset, F, F)
 DL_OPV0(PolygonStipple, UB, 128)   /* unpacked at compile time (hook) */
 DL_OP1(PointSize, F)
+DL_OPV1(PointParameterfv, E, F, 3)  /* every glPointParameter form, as 3 floats */
+DL_OP2(SampleCoverage, F, B)
 DL_OP1(LineWidth, F)
 DL_OP2(LineStipple, I, US)
 DL_OP2(Hint, E, E)

@@ -125,6 +125,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_POINT_SMOOTH:
       *dirty = FGL_NEW_POINT;
       return &ctx->Point.SmoothFlag;
+   case GL_POINT_SPRITE:
+      *dirty = FGL_NEW_POINT;
+      return &ctx->Point.PointSprite;
    case GL_LINE_SMOOTH:
       *dirty = FGL_NEW_LINE;
       return &ctx->Line.SmoothFlag;
@@ -137,6 +140,9 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_FOG:
       *dirty = FGL_NEW_FOG;
       return &ctx->Fog.Enabled;
+   case GL_COLOR_SUM:
+      *dirty = FGL_NEW_FOG;
+      return &ctx->Fog.ColorSumEnabled;
    case GL_DITHER:
       *dirty = 0;
       return &ctx->Color.Dither;
@@ -173,10 +179,6 @@ static bool *cap_flag(struct fgl_context *ctx, GLenum cap, unsigned *dirty)
    case GL_SAMPLE_COVERAGE:
       *dirty = 0;
       return &ctx->Multisample.SampleCoverage;
-   case GL_SAMPLE_COVERAGE_INVERT:
-      /* a capability too in Mesa's compatibility context (enable.c) */
-      *dirty = 0;
-      return &ctx->Multisample.SampleCoverageInvert;
    default:
       return NULL;
    }
@@ -231,6 +233,12 @@ bool fgl_set_enable(struct fgl_context *ctx, GLenum cap, bool state)
          FGL_FLUSH_VERTICES(ctx, FGL_NEW_TEXTURE);
          *tex = now;
       }
+      return true;
+   }
+   /* GL_SAMPLE_COVERAGE_INVERT: a capability too in Mesa's compatibility
+    * context (enable.c), over the byte glSampleCoverage stores */
+   if (cap == GL_SAMPLE_COVERAGE_INVERT) {
+      ctx->Multisample.SampleCoverageInvert = state ? GL_TRUE : GL_FALSE;
       return true;
    }
    unsigned dirty = 0;
@@ -295,6 +303,8 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    }
    if (tex)
       return (*tex & bit) ? GL_TRUE : GL_FALSE;
+   if (cap == GL_SAMPLE_COVERAGE_INVERT)
+      return ctx->Multisample.SampleCoverageInvert;   /* the byte stored */
    const bool *flag = cap_flag(ctx, cap, &dirty);
    if (!flag) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -320,6 +330,10 @@ bool fgl_is_cap(struct fgl_context *ctx, GLenum pname, double *value)
       return false;
    if (tex) {
       *value = (*tex & bit) ? 1.0 : 0.0;
+      return true;
+   }
+   if (pname == GL_SAMPLE_COVERAGE_INVERT) {
+      *value = ctx->Multisample.SampleCoverageInvert;
       return true;
    }
    const bool *flag = cap_flag(ctx, pname, &dirty);

@@ -108,17 +108,25 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       f[0] = fgl_clamp01(ctx->Color.AlphaRef);
       set_floats(val, V_FLOATN, f, 1);
       return true;
-   case GL_BLEND_SRC:              /* = GL_BLEND_SRC_RGB */
-   case GL_BLEND_SRC_ALPHA:
+   case GL_BLEND_SRC:
+   case GL_BLEND_SRC_RGB:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendSrc, 0, 0, 0);
       return true;
-   case GL_BLEND_DST:              /* = GL_BLEND_DST_RGB */
-   case GL_BLEND_DST_ALPHA:
+   case GL_BLEND_SRC_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendSrcA, 0, 0, 0);
+      return true;
+   case GL_BLEND_DST:
+   case GL_BLEND_DST_RGB:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendDst, 0, 0, 0);
       return true;
+   case GL_BLEND_DST_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendDstA, 0, 0, 0);
+      return true;
    case GL_BLEND_EQUATION:         /* = GL_BLEND_EQUATION_RGB */
-   case GL_BLEND_EQUATION_ALPHA:
       set_ints(val, V_INT, 1, (int)ctx->Color.BlendEquation, 0, 0, 0);
+      return true;
+   case GL_BLEND_EQUATION_ALPHA:
+      set_ints(val, V_INT, 1, (int)ctx->Color.BlendEquationA, 0, 0, 0);
       return true;
    case GL_BLEND_COLOR:
       for (int i = 0; i < 4; i++)
@@ -352,6 +360,22 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_POINT_SIZE:
       set_floats(val, V_FLOAT, &ctx->Point.Size, 1);
       return true;
+   /* glPointParameter (main/points.c) */
+   case GL_POINT_SIZE_MIN:
+      set_floats(val, V_FLOAT, &ctx->Point.MinSize, 1);
+      return true;
+   case GL_POINT_SIZE_MAX:
+      set_floats(val, V_FLOAT, &ctx->Point.MaxSize, 1);
+      return true;
+   case GL_POINT_FADE_THRESHOLD_SIZE:
+      set_floats(val, V_FLOAT, &ctx->Point.Threshold, 1);
+      return true;
+   case GL_POINT_DISTANCE_ATTENUATION:
+      set_floats(val, V_FLOAT, ctx->Point.Params, 3);
+      return true;
+   case GL_POINT_SPRITE_COORD_ORIGIN:
+      set_ints(val, V_INT, 1, (int)ctx->Point.SpriteOrigin, 0, 0, 0);
+      return true;
    case GL_POINT_SIZE_RANGE:        /* = GL_SMOOTH_POINT_SIZE_RANGE */
    case GL_ALIASED_POINT_SIZE_RANGE:
       f[0] = FGL_MIN_POINT_SIZE;
@@ -422,12 +446,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_SAMPLES:
       set_ints(val, V_INT, 1, 0, 0, 0, 0);
       return true;
-   /* GL 1.4 current values (no setter in fixgl's API: the initial values) */
+   /* GL 1.4 current values (extra_flush_current) */
    case GL_CURRENT_SECONDARY_COLOR:
-      set_floats(val, V_FLOATN, ctx->Current.SecondaryColor, 4);
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOATN, ctx->Current.Attrib[FGL_ATTR_COLOR1], 4);
       return true;
    case GL_CURRENT_FOG_COORD:
-      set_floats(val, V_FLOAT, &ctx->Current.FogCoord, 1);
+      fgl_flush_current(ctx);
+      set_floats(val, V_FLOAT, ctx->Current.Attrib[FGL_ATTR_FOG], 1);
       return true;
    /* current texture coordinates and raster position */
    case GL_CURRENT_TEXTURE_COORDS:
@@ -580,7 +606,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOAT, &ctx->Multisample.SampleCoverageValue, 1);
       return true;
    case GL_SAMPLE_COVERAGE_INVERT:
-      set_ints(val, V_BOOL, 1, ctx->Multisample.SampleCoverageInvert, 0, 0, 0);
+      /* TYPE_BOOLEAN of the byte glSampleCoverage stored */
+      set_ints(val, V_RAWBOOL, 1, ctx->Multisample.SampleCoverageInvert, 0, 0, 0);
       return true;
    case GL_MAX_ELEMENTS_VERTICES:
    case GL_MAX_ELEMENTS_INDICES:
@@ -757,6 +784,11 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_rescale_normal     GL_RESCALE_NORMAL
        *   EXT_separate_specular_color GL_LIGHT_MODEL_COLOR_CONTROL
        *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
+       *   ARB_multisample        glSampleCoverage and its state (no samples)
+       *   ARB/EXT_point_parameters glPointParameter (no point sprites)
+       *   ARB_transpose_matrix   glLoad/MultTransposeMatrix
+       *   EXT_blend_equation_separate, EXT_blend_func_separate
+       *   EXT_fog_coord, EXT_secondary_color, EXT_multi_draw_arrays
        *   EXT/SGIS_texture_edge_clamp GL_CLAMP_TO_EDGE
        *   EXT_texture_lod_bias   GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
        *   SGIS_generate_mipmap   GL_GENERATE_MIPMAP, GL_GENERATE_MIPMAP_HINT
@@ -774,6 +806,10 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
                               "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
+                              "GL_ARB_multisample GL_ARB_point_parameters GL_ARB_transpose_matrix "
+                              "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate "
+                              "GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_point_parameters "
+                              "GL_EXT_secondary_color "
                               "GL_FIXGL_cook_torrance "
                               "GL_EXT_abgr GL_EXT_bgra "
                               "GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "

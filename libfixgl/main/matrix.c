@@ -2,6 +2,9 @@
  * Matrix stacks and the matrix entry points (GL 1.x §2.10.2; Mesa
  * main/matrix.c for stack depths, errors and when vertices are flushed).
  */
+/* the ARB transpose-matrix names are declared by <GL/glext.h> only with
+ * GL_GLEXT_PROTOTYPES (which exports them: GLAPI) */
+#define GL_GLEXT_PROTOTYPES 1
 #include <stdlib.h>
 #include <string.h>
 
@@ -199,6 +202,60 @@ void GLAPIENTRY glMultMatrixd(const GLdouble *m)
    GLfloat f[16];
    glMultMatrixf(to_floats(m, f));
 }
+
+/* glLoadTransposeMatrix{f,d} and glMultTransposeMatrix{f,d} (GL 1.3)
+ * and their ARB aliases: the transpose, as floats, through glLoadMatrixf
+ * and glMultMatrixf, compiled as those too [S: main/matrix.c:
+ * _mesa_LoadTransposeMatrixf, _math_transposefd; main/dlist.c:
+ * save_LoadTransposeMatrixf] */
+static const GLfloat *transposef(const GLfloat *m, GLfloat t[16])
+{
+   for (int i = 0; i < 4; i++)
+      for (int j = 0; j < 4; j++)
+         t[4 * i + j] = m[4 * j + i];
+   return t;
+}
+
+static const GLfloat *transposed(const GLdouble *m, GLfloat t[16])
+{
+   for (int i = 0; i < 4; i++)
+      for (int j = 0; j < 4; j++)
+         t[4 * i + j] = (GLfloat)m[4 * j + i];
+   return t;
+}
+
+void GLAPIENTRY glLoadTransposeMatrixf(const GLfloat m[16])
+{
+   GLfloat t[16];
+   if (m)
+      glLoadMatrixf(transposef(m, t));
+}
+
+void GLAPIENTRY glLoadTransposeMatrixd(const GLdouble m[16])
+{
+   GLfloat t[16];
+   if (m)
+      glLoadMatrixf(transposed(m, t));
+}
+
+void GLAPIENTRY glMultTransposeMatrixf(const GLfloat m[16])
+{
+   GLfloat t[16];
+   if (m)
+      glMultMatrixf(transposef(m, t));
+}
+
+void GLAPIENTRY glMultTransposeMatrixd(const GLdouble m[16])
+{
+   GLfloat t[16];
+   if (m)
+      glMultMatrixf(transposed(m, t));
+}
+
+void GLAPIENTRY glLoadTransposeMatrixfARB(const GLfloat *m) { glLoadTransposeMatrixf(m); }
+void GLAPIENTRY glLoadTransposeMatrixdARB(const GLdouble *m) { glLoadTransposeMatrixd(m); }
+void GLAPIENTRY glMultTransposeMatrixfARB(const GLfloat *m) { glMultTransposeMatrixf(m); }
+void GLAPIENTRY glMultTransposeMatrixdARB(const GLdouble *m) { glMultTransposeMatrixd(m); }
 
 void GLAPIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top,
                         GLdouble nearval, GLdouble farval)

@@ -268,7 +268,7 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    cur->RasterPos[3] = clip[3];
 
    if (ctx->Fog.CoordinateSource == GL_FOG_COORDINATE)
-      cur->RasterDistance = cur->FogCoord;
+      cur->RasterDistance = cur->Attrib[FGL_ATTR_FOG][0];
    else
       cur->RasterDistance = sqrtf(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
 
@@ -309,7 +309,7 @@ static void raster_pos(struct fgl_context *ctx, const float obj[4])
    } else {
       for (int k = 0; k < 4; k++) {
          cur->RasterColor[k] = cur->Attrib[FGL_ATTR_COLOR0][k];
-         cur->RasterSecondaryColor[k] = cur->SecondaryColor[k];
+         cur->RasterSecondaryColor[k] = cur->Attrib[FGL_ATTR_COLOR1][k];
       }
    }
 
@@ -422,10 +422,11 @@ static void window_pos(GLfloat x, GLfloat y, GLfloat z)
    cur->RasterPos[2] = fgl_clamp01(z) * (f - n) + n;
    cur->RasterPos[3] = 1.0f;
    cur->RasterPosValid = true;
-   cur->RasterDistance = ctx->Fog.CoordinateSource == GL_FOG_COORDINATE ? cur->FogCoord : 0.0f;
+   cur->RasterDistance = ctx->Fog.CoordinateSource == GL_FOG_COORDINATE
+                       ? cur->Attrib[FGL_ATTR_FOG][0] : 0.0f;
    for (int k = 0; k < 4; k++) {
       cur->RasterColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR0][k]);
-      cur->RasterSecondaryColor[k] = fgl_clamp01(cur->SecondaryColor[k]);
+      cur->RasterSecondaryColor[k] = fgl_clamp01(cur->Attrib[FGL_ATTR_COLOR1][k]);
    }
    for (int u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
       for (int k = 0; k < 4; k++)

@@ -263,9 +263,25 @@ static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, cons
          return;
       env_flush(ctx);
       *lod_bias = param[0];
+   } else if (target == GL_POINT_SPRITE) {
+      /* GL_COORD_REPLACE of the active unit: point state (GL_POINT_BIT)
+       * set through glTexEnv [S: texenv.c:_mesa_TexEnvfv] */
+      if (pname != GL_COORD_REPLACE) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      const unsigned bit = 1u << unit;
+      if (iparam0 != GL_TRUE && iparam0 != GL_FALSE) {
+         fgl_error(ctx, GL_INVALID_VALUE);
+         return;
+      }
+      const unsigned now = iparam0 == GL_TRUE ? ctx->Point.CoordReplace | bit
+                                              : ctx->Point.CoordReplace & ~bit;
+      if (now == ctx->Point.CoordReplace)
+         return;
+      FGL_FLUSH_VERTICES(ctx, FGL_NEW_POINT);
+      ctx->Point.CoordReplace = now;
    } else {
-      /* GL_POINT_SPRITE's GL_COORD_REPLACE: fixgl has no point sprites
-       * (ORACLE-NOTES.md "Textures", not modelled) */
       fgl_error(ctx, GL_INVALID_ENUM);
    }
 }
@@ -397,6 +413,16 @@ static void get_tex_env(GLenum target, GLenum pname, GLfloat *fv, GLint *iv)
          *fv = lod_bias;
       else
          *iv = (GLint)lod_bias;
+   } else if (target == GL_POINT_SPRITE) {
+      if (pname != GL_COORD_REPLACE) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      const GLint v = (ctx->Point.CoordReplace >> unit) & 1u;
+      if (fv)
+         *fv = (GLfloat)v;
+      else
+         *iv = v;
    } else {
       fgl_error(ctx, GL_INVALID_ENUM);
    }

@@ -15,6 +15,9 @@
  * mode does not draw.  Texture coordinate arrays are fetched per unit
  * (glClientActiveTexture) by tnl/t_array.c.
  */
+/* the GL 1.4 pointer and multi-draw calls are declared by <GL/glext.h>
+ * only with GL_GLEXT_PROTOTYPES (which also exports them: GLAPI) */
+#define GL_GLEXT_PROTOTYPES 1
 #include <stddef.h>
 
 #include "main/dlist.h"
@@ -198,6 +201,35 @@ void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
    pointer(FGL_ARRAY_EDGEFLAG, B_UBYTE, 1, 1, false, 1, GL_UNSIGNED_BYTE, stride, ptr);
 }
 
+/* glSecondaryColorPointer (GL 1.4, EXT alias): three or four components
+ * or GL_BGRA [S: main/varray.c:_mesa_SecondaryColorPointer: sizes 3 to
+ * BGRA_OR_4, normalized] */
+void GLAPIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                        const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_COLOR1, B_BYTE | B_UBYTE | B_SHORT | B_USHORT | B_INT | B_UINT |
+           B_HALF | B_FLOAT | B_DOUBLE | B_UI2101010 | B_I2101010, 3, 4, true,
+           size, type, stride, ptr);
+}
+
+void GLAPIENTRY glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride,
+                                           const GLvoid *ptr)
+{
+   glSecondaryColorPointer(size, type, stride, ptr);
+}
+
+/* glFogCoordPointer (GL 1.4, EXT alias): one float component
+ * [S: main/varray.c:_mesa_FogCoordPointer] */
+void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   pointer(FGL_ARRAY_FOGCOORD, B_HALF | B_FLOAT | B_DOUBLE, 1, 1, false, 1, type, stride, ptr);
+}
+
+void GLAPIENTRY glFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
+{
+   glFogCoordPointer(type, stride, ptr);
+}
+
 /* glInterleavedArrays [S: main/varray.c:_mesa_InterleavedArrays,
  * _mesa_get_interleaved_layout]: the arrays of the format enabled with
  * their pointers (a stride of 0 becomes the format's stride, which the
@@ -281,9 +313,7 @@ struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
    case GL_TEXTURE_COORD_ARRAY:
       return &ctx->Array.Array[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)];
    case GL_EDGE_FLAG_ARRAY: return &ctx->Array.Array[FGL_ARRAY_EDGEFLAG];
-   /* GL 1.4 arrays: accepted as the oracle's compatibility context does
-    * (main/enable.c:_mesa_set_enable); fixgl has no pointer call for them
-    * yet and does not draw them */
+   /* GL 1.4 arrays (tnl/t_array.c fetches them) */
    case GL_FOG_COORD_ARRAY: return &ctx->Array.Array[FGL_ARRAY_FOGCOORD];
    case GL_SECONDARY_COLOR_ARRAY: return &ctx->Array.Array[FGL_ARRAY_COLOR1];
    default: return NULL;
@@ -478,6 +508,106 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    /* the range only bounds what the driver uploads; callers must keep
     * their indices inside it (out-of-range fetches are undefined) */
    t_draw_arrays(ctx, mode, 0, count, type, indices);
+}
+
+/* glMultiDrawArrays (GL 1.4) and its EXT alias [S: main/draw.c:
+ * _mesa_MultiDrawArrays, main/api_validate.c:
+ * _mesa_validate_MultiDrawArrays]: the draw count, the mode, then each
+ * count (gl14/multidraw_dlist_errors); every draw then goes to the driver
+ * in one call, which llvmpipe skips whole when the first draw is empty
+ * (llvmpipe_draw_vbo: !draws[0].count; ORACLE-NOTES.md "GL 1.4 vertex
+ * attributes and operations").  fixgl draws them one after the other. */
+void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
+                                  GLsizei n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_multi_draw_arrays(ctx, mode, first, count, n);
+      return;
+   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_for_draw(ctx);
+   GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+   for (GLsizei i = 0; !err && i < n; i++)
+      if (count[i] < 0)
+         err = GL_INVALID_VALUE;
+   if (err) {
+      fgl_error(ctx, err);
+      return;
+   }
+   if (n == 0 || count[0] == 0)
+      return;
+   for (GLsizei i = 0; i < n; i++)
+      t_draw_arrays(ctx, mode, first[i], count[i], 0, NULL);
+}
+
+void GLAPIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count,
+                                     GLsizei n)
+{
+   glMultiDrawArrays(mode, first, count, n);
+}
+
+/* glMultiDrawElements (GL 1.4) and its EXT alias [S: main/draw.c:
+ * _mesa_MultiDrawElementsEXT, _mesa_validated_multidrawelements;
+ * main/api_validate.c:_mesa_validate_MultiDrawElements]: the draw count,
+ * the mode, the index type, then each count are checked; a NULL index
+ * pointer (client indices) cancels the whole call without an error.  The
+ * draws whose index pointers are a whole number of indices apart are one
+ * driver call (skipped whole when the first is empty, as
+ * glMultiDrawArrays); otherwise each non-empty draw is a call of its
+ * own. */
+void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type,
+                                    const GLvoid *const *indices, GLsizei n)
+{
+   GET_CURRENT_CONTEXT(ctx);
+   if (!ctx)
+      return;
+   if (ctx->CompileFlag) {
+      fgl_save_multi_draw_elements(ctx, mode, count, type, indices, n);
+      return;
+   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   fgl_flush_for_draw(ctx);
+   GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
+   if (!err && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT &&
+       type != GL_UNSIGNED_INT)
+      err = GL_INVALID_ENUM;
+   for (GLsizei i = 0; !err && i < n; i++)
+      if (count[i] < 0)
+         err = GL_INVALID_VALUE;
+   if (err) {
+      fgl_error(ctx, err);
+      return;
+   }
+   for (GLsizei i = 0; i < n; i++)
+      if (!indices[i])
+         return;
+   if (n == 0)
+      return;
+   /* one driver call when every pointer is a whole number of indices from
+    * the lowest one */
+   const uintptr_t size = type == GL_UNSIGNED_BYTE ? 1u : type == GL_UNSIGNED_SHORT ? 2u : 4u;
+   uintptr_t min_ptr = (uintptr_t)indices[0];
+   for (GLsizei i = 1; i < n; i++)
+      if ((uintptr_t)indices[i] < min_ptr)
+         min_ptr = (uintptr_t)indices[i];
+   bool one_call = true;
+   for (GLsizei i = 0; i < n; i++)
+      if (((uintptr_t)indices[i] - min_ptr) % size != 0)
+         one_call = false;
+   if (one_call && count[0] == 0)
+      return;
+   for (GLsizei i = 0; i < n; i++)
+      if (count[i] > 0)
+         t_draw_arrays(ctx, mode, 0, count[i], type, indices[i]);
+}
+
+void GLAPIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type,
+                                       const GLvoid *const *indices, GLsizei n)
+{
+   glMultiDrawElements(mode, count, type, indices, n);
 }
 
 void GLAPIENTRY glArrayElement(GLint i)

@@ -83,9 +83,16 @@ static inline unsigned blend_factor(const struct r_state *rs, enum r_blend_facto
 static inline uint8_t blend_channel(const struct r_state *rs, int c,
                              const uint8_t src[4], const uint8_t dst[4])
 {
-   const unsigned s = mul_u8(src[c], blend_factor(rs, rs->blend->blend_src, c, src, dst));
-   const unsigned d = mul_u8(dst[c], blend_factor(rs, rs->blend->blend_dst, c, src, dst));
-   switch (rs->blend->blend_eq) {
+   /* separate alpha: lp_build_blend_aos blends rgb and alpha apart with
+    * the same per-channel arithmetic (no lerp: not_alpha_dependent is
+    * false) */
+   const struct r_blend_state *b = rs->blend;
+   const bool a = c == 3 && b->separate_alpha;
+   const enum r_blend_factor fs = a ? b->blend_src_a : b->blend_src;
+   const enum r_blend_factor fd = a ? b->blend_dst_a : b->blend_dst;
+   const unsigned s = mul_u8(src[c], blend_factor(rs, fs, c, src, dst));
+   const unsigned d = mul_u8(dst[c], blend_factor(rs, fd, c, src, dst));
+   switch (a ? b->blend_eq_a : b->blend_eq) {
    case R_BLEND_SUBTRACT:         return (uint8_t)(s > d ? s - d : 0);
    case R_BLEND_REVERSE_SUBTRACT: return (uint8_t)(d > s ? d - s : 0);
    case R_BLEND_MIN:              return (uint8_t)(s < d ? s : d);

@@ -200,7 +200,8 @@ r_tri_kernel r_block_choose_tri(const struct r_state *rs, bool flat_color)
       else if (!rs->blend->enable)
          bl = rs->blend->color_mask == 0xfu ? BL_NONE : BL_LOGIC;   /* COPY (under the colour mask) */
       else if (!rs->dsa->alpha_test && rs->blend->color_mask == 0xfu && rs->blend->blend_eq == R_BLEND_ADD &&
-               rs->blend->blend_src == R_BF_SRC_ALPHA && rs->blend->blend_dst == R_BF_INV_SRC_ALPHA)
+               rs->blend->blend_src == R_BF_SRC_ALPHA &&
+               rs->blend->blend_dst == R_BF_INV_SRC_ALPHA && !rs->blend->separate_alpha)
          bl = BL_ALPHA;
       else
          bl = BL_BLEND;

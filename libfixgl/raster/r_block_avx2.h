@@ -406,33 +406,64 @@ static inline __m256i all_if(bool b)
    return _mm256_set1_epi32(b ? -1 : 0);
 }
 
+/* a mask of the 16-bit channel lanes of gen_blend16 (r, g, b, a per
+ * pixel): the rgb lanes set when rgb, the alpha lanes when a */
+static inline __m256i lanes_if(bool rgb, bool a)
+{
+   const short r = rgb ? -1 : 0, x = a ? -1 : 0;
+   return _mm256_setr_epi16(r, r, r, x, r, r, r, x, r, r, r, x, r, r, r, x);
+}
+
+/* blend_channel's factor selection for factor x (r_blend.h blend_factor):
+ * the candidate of gen_blend16 it takes, and whether it is inverted */
+static inline bool factor_is(enum r_blend_factor x, int j)
+{
+   switch (j) {
+   case 0: return x == R_BF_SRC_COLOR || x == R_BF_INV_SRC_COLOR;
+   case 1: return x == R_BF_SRC_ALPHA || x == R_BF_INV_SRC_ALPHA;
+   case 2: return x == R_BF_DST_COLOR || x == R_BF_INV_DST_COLOR;
+   case 3: return x == R_BF_DST_ALPHA || x == R_BF_INV_DST_ALPHA;
+   case 4: return x == R_BF_CONST_COLOR || x == R_BF_INV_CONST_COLOR;
+   case 5: return x == R_BF_CONST_ALPHA || x == R_BF_INV_CONST_ALPHA;
+   default: return x == R_BF_SRC_ALPHA_SATURATE;
+   }
+}
+
+static inline bool factor_inv(enum r_blend_factor x)
+{
+   return x == R_BF_ONE || x == R_BF_INV_SRC_COLOR || x == R_BF_INV_SRC_ALPHA ||
+          x == R_BF_INV_DST_COLOR || x == R_BF_INV_DST_ALPHA ||
+          x == R_BF_INV_CONST_COLOR || x == R_BF_INV_CONST_ALPHA;
+}
+
 static inline void gen_ops_init(struct gen_ops *g, const struct r_state *rs)
 {
-   const enum r_blend_factor f[2] = { rs->blend->blend_src, rs->blend->blend_dst };
+   /* the rgb lanes take the rgb equation and factors, the alpha lanes the
+    * alpha ones (the same unless separate_alpha), decided here once */
+   const struct r_blend_state *b = rs->blend;
+   const bool sep = b->separate_alpha;
+   const enum r_blend_factor f[2] = { b->blend_src, b->blend_dst };
+   const enum r_blend_factor fa[2] = { sep ? b->blend_src_a : b->blend_src,
+                                       sep ? b->blend_dst_a : b->blend_dst };
    for (int k = 0; k < 2; k++) {
-      const enum r_blend_factor x = f[k];
-      g->fsel[k][0] = all_if(x == R_BF_SRC_COLOR || x == R_BF_INV_SRC_COLOR);
-      g->fsel[k][1] = all_if(x == R_BF_SRC_ALPHA || x == R_BF_INV_SRC_ALPHA);
-      g->fsel[k][2] = all_if(x == R_BF_DST_COLOR || x == R_BF_INV_DST_COLOR);
-      g->fsel[k][3] = all_if(x == R_BF_DST_ALPHA || x == R_BF_INV_DST_ALPHA);
-      g->fsel[k][4] = all_if(x == R_BF_CONST_COLOR || x == R_BF_INV_CONST_COLOR);
-      g->fsel[k][5] = all_if(x == R_BF_CONST_ALPHA || x == R_BF_INV_CONST_ALPHA);
-      g->fsel[k][6] = all_if(x == R_BF_SRC_ALPHA_SATURATE);
-      const bool inv = x == R_BF_ONE || x == R_BF_INV_SRC_COLOR || x == R_BF_INV_SRC_ALPHA ||
-                       x == R_BF_INV_DST_COLOR || x == R_BF_INV_DST_ALPHA ||
-                       x == R_BF_INV_CONST_COLOR || x == R_BF_INV_CONST_ALPHA;
-      g->finv[k] = _mm256_set1_epi16(inv ? 0xff : 0);
+      for (int j = 0; j < 7; j++)
+         g->fsel[k][j] = lanes_if(factor_is(f[k], j), factor_is(fa[k], j));
+      g->finv[k] = _mm256_and_si256(lanes_if(factor_inv(f[k]), factor_inv(fa[k])),
+                                    _mm256_set1_epi16(0xff));
    }
-   const uint8_t *bc = rs->blend->blend_color;
+   const uint8_t *bc = b->blend_color;
    g->konst = _mm256_setr_epi16(bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3],
                                 bc[0], bc[1], bc[2], bc[3], bc[0], bc[1], bc[2], bc[3]);
    g->konst_a = _mm256_set1_epi16(bc[3]);
-   for (int e = 0; e < 5; e++)
-      g->eq[e] = all_if((int)rs->blend->blend_eq == e);
    /* R_BLEND_ADD .. R_BLEND_MAX in enum order; an unknown one adds, as
     * blend_channel's default */
-   if ((unsigned)rs->blend->blend_eq > R_BLEND_MAX)
-      g->eq[R_BLEND_ADD] = all_if(true);
+   unsigned eq = (unsigned)b->blend_eq, eq_a = sep ? (unsigned)b->blend_eq_a : eq;
+   if (eq > R_BLEND_MAX)
+      eq = R_BLEND_ADD;
+   if (eq_a > R_BLEND_MAX)
+      eq_a = R_BLEND_ADD;
+   for (unsigned e = 0; e < 5; e++)
+      g->eq[e] = lanes_if(eq == e, eq_a == e);
    const unsigned mode = rs->blend->logic_op ? rs->blend->logic_op_mode : 0x3u;   /* COPY */
    for (int t = 0; t < 4; t++)
       g->lop[t] = all_if(mode & (1u << t));
@@ -583,7 +614,7 @@ static inline bool block_simple_ops(const struct r_state *rs, enum blend *bl, en
    if (rs->full_ops) {
       if (rs->dsa->alpha_test || rs->dsa->stencil_test || rs->blend->logic_op || rs->blend->color_mask != 0xfu ||
           !rs->blend->enable || rs->blend->blend_eq != R_BLEND_ADD || rs->blend->blend_src != R_BF_SRC_ALPHA ||
-          rs->blend->blend_dst != R_BF_INV_SRC_ALPHA)
+          rs->blend->blend_dst != R_BF_INV_SRC_ALPHA || rs->blend->separate_alpha)
          return false;
       *bl = BL_ALPHA;
    }

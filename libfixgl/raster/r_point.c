@@ -39,7 +39,7 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
 static void point(const struct r_state *rs, const struct r_vertex *v)
 {
    /* LP_MAX_POINT_WIDTH */
-   float size = rs->rast->point_size;
+   float size = r_point_size(rs->rast, v->attr[R_ATTR_PSIZE]);
    if (size > 255.0f)
       size = 255.0f;
    if (!isfinite(v->pos[0]) || !isfinite(v->pos[1]))

@@ -72,6 +72,8 @@ static int vertex_slots(const struct r_state *rs)
    }
    if (rs->fs->phong && n < R_ATTR_NORMAL + 1)
       n = R_ATTR_NORMAL + 1;
+   if (rs->rast->point_size_per_vertex)
+      n = R_ATTR_PSIZE + 1;
    return n;
 }
 
@@ -324,7 +326,10 @@ bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_v
 {
    /* a square of at most the size rounded up, around the snapped centre */
    const struct r_vertex *vv[1] = { v };
-   return add_prim(s, rs, R_CMD_POINT, vv, 1, 0.5f * rs->rast->point_size + 1.0f, NULL, NULL);
+   float size = r_point_size(rs->rast, v->attr[R_ATTR_PSIZE]);
+   if (!(size <= 255.0f))
+      size = 255.0f;   /* LP_MAX_POINT_WIDTH (and a NaN: one pixel) */
+   return add_prim(s, rs, R_CMD_POINT, vv, 1, 0.5f * size + 1.0f, NULL, NULL);
 }
 
 bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,

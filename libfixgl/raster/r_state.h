@@ -46,7 +46,12 @@ enum {
    R_ATTR_TEX0,      /* R_ATTR_TEX0 + u: texture unit u */
    R_ATTR_NORMAL = R_ATTR_TEX0 + R_MAX_TEX_UNITS,
    R_ATTR_EYEPOS,
+   /* a point's size per vertex (x; r_rast_state.point_size_per_vertex):
+    * the vertex program's PSIZ output under distance attenuation, read by
+    * the point rasterizers only, never interpolated */
+   R_ATTR_PSIZE,
 };
+_Static_assert(R_ATTR_PSIZE < R_MAX_ATTRIBS, "the point size has a slot");
 
 /* Inputs of the fragment shader, after the back-face colours have been
  * chosen: the colour, the secondary colour, the fog coordinate, the
@@ -399,7 +404,17 @@ struct r_rast_state {
     * (st_atom_rasterizer.c): size in [0, 255], width in [1, 255] */
    float point_size;
    float line_width;
+   /* each point's size is its vertex's R_ATTR_PSIZE (the vertex program
+    * computes it: glPointParameter's distance attenuation), point_size
+    * unused */
+   bool point_size_per_vertex;
 };
+
+/* A point's size: its vertex's or the rasterizer's */
+static inline float r_point_size(const struct r_rast_state *rast, const float psize[4])
+{
+   return rast->point_size_per_vertex ? psize[0] : rast->point_size;
+}
 
 /* Depth, stencil and alpha test, in the order r_fragment_ops applies
  * them. */
@@ -427,6 +442,12 @@ struct r_blend_state {
    bool enable;                 /* blending; off when the logic op is on */
    enum r_blend_eq blend_eq;
    enum r_blend_factor blend_src, blend_dst;  /* ONE for MIN/MAX */
+   /* glBlendFuncSeparate / glBlendEquationSeparate: the alpha channel's
+    * equation and factors differ from the rgb ones above (set only then:
+    * else they are zero and the alpha channel takes the rgb ones) */
+   bool separate_alpha;
+   enum r_blend_eq blend_eq_a;
+   enum r_blend_factor blend_src_a, blend_dst_a;
    uint8_t blend_color[4];
    bool logic_op;               /* GL_COLOR_LOGIC_OP */
    unsigned logic_op_mode;      /* GL op - GL_CLEAR (0..15) */

@@ -189,6 +189,8 @@ array_map[] = {
    { FGL_ARRAY_VERTEX, FGL_ATTR_POS, false },
    { FGL_ARRAY_NORMAL, FGL_ATTR_NORMAL, true },
    { FGL_ARRAY_COLOR, FGL_ATTR_COLOR0, true },
+   { FGL_ARRAY_COLOR1, FGL_ATTR_COLOR1, true },
+   { FGL_ARRAY_FOGCOORD, FGL_ATTR_FOG, false },
    { FGL_ARRAY_TEXCOORD, FGL_ATTR_TEX0, false },
    { FGL_ARRAY_TEXCOORD1 + 0, FGL_ATTR_TEX1, false },
    { FGL_ARRAY_TEXCOORD1 + 1, FGL_ATTR_TEX2, false },
@@ -437,7 +439,8 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
 void t_array_element(struct fgl_context *ctx, GLint elt)
 {
    /* _mesa_array_element: the enabled non-position arrays in attribute
-    * order (normal, colour, colour index, the units' texture coordinates,
+    * order (normal, colour, secondary colour, fog coordinate, colour
+    * index, the units' texture coordinates,
     * edge flag),
     * then the position; texture coordinates are not normalized
     * [S: main/api_arrayelt.c:_mesa_array_element] */
@@ -446,6 +449,10 @@ void t_array_element(struct fgl_context *ctx, GLint elt)
       emit(ctx, &A[FGL_ARRAY_NORMAL], FGL_ATTR_NORMAL, true, elt);
    if (A[FGL_ARRAY_COLOR].Enabled)
       emit(ctx, &A[FGL_ARRAY_COLOR], FGL_ATTR_COLOR0, true, elt);
+   if (A[FGL_ARRAY_COLOR1].Enabled)
+      emit(ctx, &A[FGL_ARRAY_COLOR1], FGL_ATTR_COLOR1, true, elt);
+   if (A[FGL_ARRAY_FOGCOORD].Enabled)
+      emit(ctx, &A[FGL_ARRAY_FOGCOORD], FGL_ATTR_FOG, false, elt);
    if (A[FGL_ARRAY_INDEX].Enabled)
       emit(ctx, &A[FGL_ARRAY_INDEX], FGL_ATTR_COLOR_INDEX, false, elt);
    for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)

@@ -25,11 +25,6 @@
 
 #include "context.h"
 
-/* The current fog coordinate: glFogCoord* and fog coordinate arrays are
- * not part of the API fixgl offers (the system <GL/gl.h> declares them
- * only with GL_GLEXT_PROTOTYPES), so it keeps Mesa's initial value. */
-#define CURRENT_FOG_COORDINATE 0.0f
-
 void t_fog(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsigned n,
            bool eye_position_from_lighting, struct t_vertex *out)
 {
@@ -38,12 +33,16 @@ void t_fog(const struct fgl_context *ctx, const struct fgl_vertex_view *in, unsi
    const bool from_array = fog->CoordinateSource == GL_FOG_COORDINATE;
    const bool radial = fog->DistanceMode == GL_EYE_RADIAL_NV;
    const bool chain = radial || eye_position_from_lighting;
+   /* the fog coordinate of each vertex (glFogCoord, arrays), or the current
+    * one for all (stride 0) */
+   unsigned fstride = 0;
+   const float *fcoord = from_array ? fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_FOG, &fstride) : NULL;
 
    for (unsigned i = 0; i < n; i++) {
       const float *p = fgl_vv_attr(in, i, FGL_ATTR_POS);
       float fc;
       if (from_array) {
-         fc = fabsf(CURRENT_FOG_COORDINATE);
+         fc = fabsf(fcoord[(size_t)i * fstride]);
       } else {
          float eye[4];
          if (chain) {

@@ -48,7 +48,10 @@ static void aapoint_point(struct fgl_context *ctx, const struct r_vertex *v)
       return;
 
    /* aapoint_first_point */
-   const float radius = rs->rast->point_size <= 2.0f ? 1.0f : 0.5f * rs->rast->point_size;
+   /* aapoint_first_point: 1 for a size of 2 or less; a size per vertex:
+    * half of it, always (aapoint_point's psize_slot) */
+   const float radius = rs->rast->point_size_per_vertex ? 0.5f * v->attr[R_ATTR_PSIZE][0]
+                      : rs->rast->point_size <= 2.0f ? 1.0f : 0.5f * rs->rast->point_size;
    float k = 1.0f / radius;
    k = 1.0f - 2.0f * k + k * k;
 

@@ -473,6 +473,10 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
     * is exact even where interpolation is not (w = 0, NaN positions;
     * ORACLE-NOTES.md "Vertex batching"). */
    const bool color_varying = ctx->Vbo.attr_size[FGL_ATTR_COLOR0] != 0;
+   /* the same for the secondary colour of GL_COLOR_SUM, unlit
+    * (filter_fp_input_mask: VERT_BIT_COLOR1 among the varying inputs) */
+   const bool color1_varying = ctx->_Raster.fs->color_sum &&
+                               ctx->Vbo.attr_size[FGL_ATTR_COLOR1] != 0;
    if (feedback)
       /* [S: draw_pipe_clip.c:clip_init_state] the feedback draw context
        * has no fragment shader bound: the colours are flat exactly with
@@ -484,7 +488,9 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
        * lighting is on), so only flat shading makes them constant */
       ctx->_Raster.flat_mask = flat ? 0xfu : 0u;
    else
-      ctx->_Raster.flat_mask = flat || !color_varying ? 1u : 0u;
+      ctx->_Raster.flat_mask = (flat || !color_varying ? 1u : 0u) |
+                               (ctx->_Raster.fs->color_sum && (flat || !color1_varying)
+                                   ? 2u : 0u);
    /* Likewise a texture coordinate that cannot vary (not in the batch's
     * vertex format, no texgen, no texture matrix) is read by the fragment
     * program as the current coordinate, a constant (filter_fp_input_mask,
@@ -504,7 +510,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
     * colour is not a fragment-shader input (unlit, colour outside the
     * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
     * "Vertex batching"). */
-   const bool constant_interp = flat && (ctx->Light.Enabled || color_varying);
+   const bool constant_interp = flat && (ctx->Light.Enabled || color_varying ||
+                                         color1_varying);
    bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {
       /* consecutive primitives of one mode are one llvmpipe draw

@@ -66,6 +66,8 @@ enum fgl_vbo_attr {
    FGL_ATTR_POS,
    FGL_ATTR_NORMAL,
    FGL_ATTR_COLOR0,
+   FGL_ATTR_COLOR1,         /* glSecondaryColor (VBO_ATTRIB_COLOR1) */
+   FGL_ATTR_FOG,            /* glFogCoord (VBO_ATTRIB_FOG) */
    FGL_ATTR_COLOR_INDEX,    /* glIndex: stored and queried; nothing reads it
                              * in RGBA, but it is part of the vertex format
                              * (VBO_ATTRIB_COLOR_INDEX) */

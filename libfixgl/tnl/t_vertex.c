@@ -86,6 +86,66 @@ static inline void transform_positions(const struct fgl_context *ctx,
    }
 }
 
+/* Whether the vertex program computed the whole eye position (the
+ * column MUL/MAD chain, get_eye_position) before the point size: for the
+ * lighting, radial fog, or the texture coordinates of a unit the
+ * fragment program reads with eye-linear, sphere-map or reflection-map
+ * generation (ffvertex_prog.c: build_lighting, build_fog,
+ * build_texture_transform run first) */
+static bool eye_chain_before_psize(const struct fgl_context *ctx, bool eye_position, bool fog)
+{
+   if (eye_position || (fog && ctx->Fog.DistanceMode == GL_EYE_RADIAL_NV &&
+                        ctx->Fog.CoordinateSource != GL_FOG_COORDINATE))
+      return true;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
+      if (!(ctx->_EnabledTexUnits & (1u << u)))
+         continue;
+      const struct fgl_texture_unit *t = &ctx->Texture.Unit[u];
+      for (int c = 0; c < 4; c++)
+         if ((t->TexGenEnabled & (1u << c)) &&
+             (t->GenMode[c] == GL_EYE_LINEAR || t->GenMode[c] == GL_SPHERE_MAP ||
+              t->GenMode[c] == GL_REFLECTION_MAP))
+            return true;
+   }
+   return false;
+}
+
+/* glPointParameter's distance attenuation, per vertex, as the oracle's
+ * vertex program computes it (ffvertex_prog.c build_atten_pointsize;
+ * ORACLE-NOTES.md "Point parameters"):
+ *   d = |z_eye|, t = d*a2 + a1, t = d*t + a0 (MADs as a multiply and an
+ *   add), size = rsq(t) * Size, clamped to [max(MinSize, 1),
+ *   min(MaxSize, 255)] (STATE_POINT_SIZE_CLAMPED), max then min */
+static void point_sizes(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
+                        unsigned n, bool chain, struct t_vertex *out)
+{
+   const struct fgl_point_attrib *pt = &ctx->Point;
+   const float *mv = ctx->ModelviewStack.Top->m;
+   const float mn = pt->MinSize >= FGL_MIN_POINT_SIZE ? pt->MinSize : FGL_MIN_POINT_SIZE;
+   const float mx = pt->MaxSize <= FGL_MAX_POINT_SIZE ? pt->MaxSize : FGL_MAX_POINT_SIZE;
+   for (unsigned i = 0; i < n; i++) {
+      const float *p = fgl_vv_attr(in, i, FGL_ATTR_POS);
+      float z;
+      if (chain) {
+         float eye[4];
+         t_mul_mad_chain(eye, mv, p);
+         z = eye[2];
+      } else {
+         z = ((p[3] * mv[14] + p[2] * mv[10]) + p[1] * mv[6]) + p[0] * mv[2];
+      }
+      const float d = fabsf(z);
+      float t = d * pt->Params[2] + pt->Params[1];
+      t = d * t + pt->Params[0];
+      float size = (1.0f / sqrtf(fabsf(t))) * pt->Size;
+      size = size > mn ? size : mn;   /* maxps(size, min) */
+      size = size < mx ? size : mx;   /* minps(size, max) */
+      float *ps = out[i].r.attr[R_ATTR_PSIZE];
+      ps[0] = size;
+      ps[1] = ps[2] = 0.0f;
+      ps[3] = 1.0f;
+   }
+}
+
 /* The batch goes through the stages below chunk by chunk, each chunk of
  * vertices through every stage while its stored and transformed vertices
  * are in the cache, rather than stage by stage over the whole batch (up to
@@ -124,11 +184,18 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
     * (transform_positions) and the other colour slots are zeros. */
    const int nattr = ctx->_Raster.fs->num_attribs;
    const int ncolor = phong || !lit ? 0 : nattr < R_ATTR_FOG ? nattr : R_ATTR_FOG;
+   const bool color_sum = !phong && ctx->_Raster.fs->color_sum;
+   unsigned c1stride = 0;
+   const float *color1 = color_sum && !lit
+                       ? fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_COLOR1, &c1stride) : NULL;
+   const bool no_col1 = color_sum && lit &&
+                        ctx->Light.Model.ColorControl != GL_SEPARATE_SPECULAR_COLOR;
 
    /* the lighting's per-batch values (uniforms, material sources, the
     * Cook-Torrance lights), prepared once for all chunks */
    struct t_light_batch lb;
    bool eye_position = false;
+   const bool psize = ctx->_Raster.rast->point_size_per_vertex;
    if (phong) {
       /* shading.md: the fog coordinate of a vertex lit by the shading
        * extensions is |P.z|, P the eye position they light with (the
@@ -138,6 +205,7 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       t_light_prepare(ctx, in, &lb);
       eye_position = lb.eye_position;
    }
+   const bool psize_chain = psize && eye_chain_before_psize(ctx, eye_position, fog);
 
    for (unsigned first = 0; first < n; first += T_CHUNK) {
       const unsigned cnt = n - first < T_CHUNK ? n - first : T_CHUNK;
@@ -158,9 +226,26 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
          for (int a = 0; a < ncolor; a++)
             clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
 
+      /* GL_COLOR_SUM: unlit, the vertex program passes the secondary
+       * colour through (clamped as every colour output); lit with a
+       * single colour it writes no COL1, which the fragment program then
+       * reads as 0 (ORACLE-NOTES.md "Secondary colour and fog
+       * coordinate") */
+      if (color1)
+         for (unsigned i = first; i < first + cnt; i++)
+            clamp01x4(out[i].r.attr[R_ATTR_COLOR1], color1 + (size_t)i * c1stride);
+      else if (no_col1)
+         for (unsigned i = first; i < first + cnt; i++)
+            for (int a = R_ATTR_COLOR1; a < ncolor; a += 2)
+               memset(out[i].r.attr[a], 0, sizeof(out[i].r.attr[a]));
+
       /* ffvertex_prog.c: build_fog after build_lighting */
       if (fog)
          t_fog(ctx, &inf, cnt, eye_position, out + first);
+
+      /* build_atten_pointsize, last */
+      if (psize)
+         point_sizes(ctx, &inf, cnt, psize_chain, out + first);
 
       for (unsigned i = first; i < first + cnt; i++)
          out[i].edge = edges == T_EDGES_SET ||

@@ -568,6 +568,14 @@ static void set_blend(void)
       glDisable(GL_BLEND);
    glBlendFunc(src, dst);
    glBlendEquation(eq);
+   /* glBlendFuncSeparate / glBlendEquationSeparate: the alpha channel's
+    * own factors and equation (the generic kernel's per-lane selection) */
+   if (mode == MODE_ANY && chance(0.3f)) {
+      const GLenum src_a = PICK(bfactors), dst_a = PICK(bfactors), eq_a = PICK(eqs);
+      L("blend separate alpha eq 0x%x src 0x%x dst 0x%x", eq_a, src_a, dst_a);
+      glBlendFuncSeparate(src, dst, src_a, dst_a);
+      glBlendEquationSeparate(eq, eq_a);
+   }
    glBlendColor(bc[0], bc[1], bc[2], bc[3]);
 }
 
