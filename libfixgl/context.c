@@ -117,7 +117,7 @@ struct fgl_context *fgl_context_create(void)
    if (!ctx)
       return NULL;
    if (!fgl_vbo_init(&ctx->Vbo) || !fgl_init_matrix(ctx) || !fgl_init_dlist(ctx) ||
-       !fgl_init_texobj(ctx)) {
+       !fgl_init_texobj(ctx) || !fgl_init_bufobj(ctx)) {
       fgl_context_destroy(ctx);
       return NULL;
    }
@@ -177,6 +177,14 @@ void fgl_context_destroy(struct fgl_context *ctx)
    fgl_free_dlist(ctx);
    fgl_free_drawpix_cache(ctx);
    fgl_free_texobj(ctx);
+   /* the client attribute stack's references to buffers, then the
+    * context's own */
+   if (ctx->BufObjects)
+      for (unsigned i = 0; i < ctx->ClientAttribStackDepth; i++)
+         if (ctx->ClientAttribStack[i].Mask & GL_CLIENT_VERTEX_ARRAY_BIT)
+            fgl_buffer_release_array(ctx, &ctx->ClientAttribStack[i].Array);
+   fgl_free_bufobj(ctx);
+   fgl_free_queries(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    fgl_free(ctx->_DrawVbuf.queue);
    r_cso_cache_fini(&ctx->_StateCache);

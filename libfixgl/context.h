@@ -679,6 +679,65 @@ struct fgl_draw_offset_latch {
    float units, scale;
 };
 
+/* A buffer object (GL 1.5, main/bufferobj.c) [S: mtypes.h
+ * gl_buffer_object]: its data store, the user's mapping of it, and the
+ * references that keep it alive: its name in the shared table, each
+ * binding point and vertex array of every context, each glPushClientAttrib
+ * copy.  A glDeleteBuffers frees the name at once; the object lives on
+ * (DeletePending) while another context still has it bound. */
+struct fgl_buffer_object {
+   GLuint Name;
+   unsigned RefCount;      /* changed under the table's Lock */
+   bool DeletePending;
+   GLsizeiptr Size;
+   GLenum Usage;
+   GLbitfield StorageFlags;   /* GL_MAP_READ_BIT | GL_MAP_WRITE_BIT after glBufferData */
+   uint8_t *Data;             /* Size bytes (NULL for 0) */
+   void *MapPointer;          /* the user's mapping (the whole store), or NULL */
+   GLbitfield MapAccess;      /* its GL_MAP_READ_BIT / GL_MAP_WRITE_BIT */
+};
+
+/* The names of buffer objects, shared by the contexts of an
+ * OSMesaCreateContext sharelist (Mesa's ctx->Shared->BufferObjects): a
+ * name from glGenBuffers has no object until it is first bound
+ * (DummyBufferObject), Obj NULL.  Sorted by name. */
+struct fgl_buffer_objects {
+   struct fgl_buffer_entry {
+      GLuint Name;
+      struct fgl_buffer_object *Obj;
+   } *Entries;
+   unsigned Count, Alloc;
+   GLuint MaxName;            /* names are handed out above it */
+   unsigned Refs;             /* contexts sharing it */
+   pthread_mutex_t Lock;
+};
+
+/* An occlusion query (GL 1.5, main/queryobj.c) [S: mtypes.h
+ * gl_query_object]: the raster core counts the samples that pass into
+ * Counters (one per rasterizing thread, raster/r_state.h) while it is
+ * active; the result is their sum. */
+struct fgl_query_object {
+   GLuint Id;
+   bool Active;
+   bool EverBound;            /* glBeginQuery ran on it once */
+   bool Ready;                /* the result is known to be available */
+   unsigned EndEpoch;         /* ctx->Query.FlushEpoch at its glEndQuery */
+   uint64_t Result;
+   struct r_sample_counter *Counters;   /* R_SAMPLE_SLOTS of them */
+};
+
+/* The context's queries (Mesa's ctx->Query: per context, not shared) */
+struct fgl_query_state {
+   struct fgl_query_object **Objs;   /* unordered */
+   unsigned Count, Alloc;
+   GLuint MaxName;
+   struct fgl_query_object *CurrentOcclusion;   /* the active one, or NULL */
+   /* the oracle's flushes of its scene (llvmpipe_flush: glFlush, glFinish,
+    * read-backs, a result waited for, an availability asked for in vain),
+    * counted: a query is available once one came after its glEndQuery */
+   unsigned FlushEpoch;
+};
+
 /* One client-side vertex array (GL_CLIENT_VERTEX_ARRAY_BIT, main/varray.c):
  * Mesa's gl_array_attributes with its buffer binding. */
 struct fgl_client_array {
@@ -688,7 +747,9 @@ struct fgl_client_array {
    GLenum Type;
    GLsizei Stride;         /* as given: the GL_*_ARRAY_STRIDE query */
    GLsizei EffStride;      /* stride, or the element size for 0 */
-   const GLvoid *Ptr;
+   const GLvoid *Ptr;      /* with BufferObj: the offset into its store */
+   struct fgl_buffer_object *BufferObj;   /* GL_ARRAY_BUFFER when the pointer
+                                           * was set (a reference), or NULL */
 };
 
 enum fgl_array_index {
@@ -709,6 +770,8 @@ enum fgl_array_index {
 struct fgl_array_attrib {
    struct fgl_client_array Array[FGL_ARRAY_COUNT];
    GLuint ActiveTexture;    /* glClientActiveTexture - GL_TEXTURE0 */
+   /* GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER (references, or NULL) */
+   struct fgl_buffer_object *ArrayBufferObj, *ElementBufferObj;
 };
 
 /* glPushClientAttrib (main/attrib.c) [S: main/attrib.c, gl_client_attrib_node] */
@@ -823,6 +886,8 @@ struct fgl_context {
    struct fgl_texture_attrib Texture;
    struct fgl_texture_objects *TexObjects;   /* shared */
    struct fgl_texture_local TexLocal;
+   struct fgl_buffer_objects *BufObjects;    /* shared (main/bufferobj.c) */
+   struct fgl_query_state Query;             /* main/queryobj.c */
    struct fgl_multisample_attrib Multisample;
    struct fgl_client_attrib_node ClientAttribStack[FGL_MAX_CLIENT_ATTRIB_STACK_DEPTH];
    unsigned ClientAttribStackDepth;
@@ -1007,6 +1072,7 @@ void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
  * before anything reads or replaces the framebuffer, or changes a
  * texture image. */
 #define FGL_MAX_THREADS 64
+_Static_assert(FGL_MAX_THREADS == R_SAMPLE_SLOTS, "a query counter per thread");
 unsigned fgl_num_threads(void);
 void fgl_scene_flush(struct fgl_context *ctx);
 /* Frees the scenes (after a flush). */

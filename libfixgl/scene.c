@@ -82,7 +82,7 @@ static void run_tile(void *arg, unsigned item, unsigned slot)
          const int ty = (int)(item / (unsigned)j->scene->tiles_x);
          lazy_resolve_tiles(j->lazy, FGL_LAZY_COLOR | FGL_LAZY_ZS, tx, ty, tx, ty);
       }
-      r_scene_run_tile(j->scene, item, &j->stats[slot]);
+      r_scene_run_tile(j->scene, item, &j->stats[slot], slot);
    }
    if (j->front) {
       struct fgl_framebuffer *fb = j->front;

@@ -26,6 +26,9 @@ static const struct qenum walk[] = {
 
 static uint8_t *in_arena, *out_arena;
 static int fn_begin = -1, fn_end = -1, fn_depthbuffer = -1;
+/* glGetBufferPointerv(ARB): the mapping's address differs between the
+ * libraries; only whether there is one is compared */
+static int fn_bufptr = -1, fn_bufptr_arb = -1;
 
 void *fz_ptr(int kind, int64_t off)
 {
@@ -71,6 +74,8 @@ int fz_exec_setup(uint8_t *missing)
     fn_begin = fz_find_entry("glBegin");
     fn_end = fz_find_entry("glEnd");
     fn_depthbuffer = fz_find_entry("OSMesaGetDepthBuffer");
+    fn_bufptr = fz_find_entry("glGetBufferPointerv");
+    fn_bufptr_arb = fz_find_entry("glGetBufferPointervARB");
     return n_missing;
 }
 
@@ -169,6 +174,15 @@ void fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
             const int64_t off = c->a[e->nparams - 1].i;
             if (off >= 0 && off < FZ_OUT_PERSIST)
                 memset(out_arena + off, 0xa5, sizeof(void *));
+        }
+        if (((int)c->fn == fn_bufptr || (int)c->fn == fn_bufptr_arb) && c->a[2].i >= 0 &&
+            c->a[2].i < FZ_OUT_PERSIST) {
+            uint64_t p;
+            memcpy(&p, out_arena + c->a[2].i, sizeof p);
+            if (p != 0 && p != 0xa5a5a5a5a5a5a5a5ull) {
+                p = 1;
+                memcpy(out_arena + c->a[2].i, &p, sizeof p);
+            }
         }
         for (int j = 0; j < e->nparams; j++)
             if (e->params[j].kind == FZ_PTR_OUT && c->a[j].i >= 0 && c->a[j].i < FZ_OUT_PERSIST

@@ -61,7 +61,8 @@ static int classify_bound(const fz_entry *e)
 {
     static const char *const arrays[] = { "glDrawArrays", "glDrawElements",
         "glDrawRangeElements", "glArrayElement", "glMultiDrawArrays", "glMultiDrawArraysEXT",
-        "glMultiDrawElements", "glMultiDrawElementsEXT", NULL };
+        "glMultiDrawElements", "glMultiDrawElementsEXT", "glDrawArraysEXT",
+        "glArrayElementEXT", NULL };
     static const char *const mesh[] = { "glEvalMesh1", "glEvalMesh2", "glEvalPoint1",
         "glEvalPoint2", NULL };
     /* copies from the framebuffer: enormous sizes stay (the GL checks
@@ -101,7 +102,8 @@ static int vertex_call(const char *n)
         "glFogCoord", NULL };
     if (strcmp(n, "glIndexMask") == 0 || strcmp(n, "glIndexPointer") == 0 ||
         strcmp(n, "glEdgeFlagPointer") == 0 || strcmp(n, "glColorPointer") == 0 ||
-        starts_with(n, "glSecondaryColorPointer") || starts_with(n, "glFogCoordPointer"))
+        starts_with(n, "glSecondaryColorPointer") || starts_with(n, "glFogCoordPointer") ||
+        strcmp(n, "glIndexPointerEXT") == 0 || strcmp(n, "glEdgeFlagPointerEXT") == 0)
         return 0;
     for (int i = 0; prefixes[i]; i++)
         if (starts_with(n, prefixes[i]))

@@ -39,6 +39,11 @@ SCALAR = {
     'GLfloat': ('FZ_F32', 'GLfloat', 'f'),
     'GLclampf': ('FZ_F32', 'GLclampf', 'f'),
     'GLdouble': ('FZ_F64', 'GLdouble', 'f'),
+    # buffer offsets and sizes (GL 1.5): 32-bit values, sign-extended
+    'GLsizeiptr': ('FZ_SIZE', 'GLsizeiptr', 'i'),
+    'GLintptr': ('FZ_SIZE', 'GLintptr', 'i'),
+    'GLsizeiptrARB': ('FZ_SIZE', 'GLsizeiptrARB', 'i'),
+    'GLintptrARB': ('FZ_SIZE', 'GLintptrARB', 'i'),
     'GLclampd': ('FZ_F64', 'GLclampd', 'f'),
     'OSMesaContext': ('FZ_CTX', 'OSMesaContext', 'p'),
 }
@@ -195,6 +200,17 @@ CLASSES = {
                   'CLIENT|ACTIVE|EDGE|CULL|FRONT|SHADE|MATRIX|NORMAL|AUX|DRAW|READ|AUTO|'
                   'SUBPIXEL|RGBA|DOUBLE|STEREO|SAMPLE|DITHER|LOGIC)'],
     'attrib_mask': [],
+    # GL 1.5 buffer objects and occlusion queries
+    'buffer_target': ['GL_ARRAY_BUFFER', 'GL_ELEMENT_ARRAY_BUFFER'],
+    'buffer_usage': ['GL_STREAM_DRAW', 'GL_STREAM_READ', 'GL_STREAM_COPY', 'GL_STATIC_DRAW',
+                     'GL_STATIC_READ', 'GL_STATIC_COPY', 'GL_DYNAMIC_DRAW', 'GL_DYNAMIC_READ',
+                     'GL_DYNAMIC_COPY'],
+    'buffer_access': ['GL_READ_ONLY', 'GL_WRITE_ONLY', 'GL_READ_WRITE'],
+    'buffer_pname': ['GL_BUFFER_SIZE', 'GL_BUFFER_USAGE', 'GL_BUFFER_ACCESS', 'GL_BUFFER_MAPPED'],
+    'buffer_pointer_pname': ['GL_BUFFER_MAP_POINTER'],
+    'query_target': ['GL_SAMPLES_PASSED'],
+    'query_pname': ['GL_QUERY_COUNTER_BITS', 'GL_CURRENT_QUERY'],
+    'query_object_pname': ['GL_QUERY_RESULT', 'GL_QUERY_RESULT_AVAILABLE'],
 }
 # GLbitfield classes (combinations of these bits and random masks).
 BITS = {
@@ -207,11 +223,11 @@ BITS = {
 # (function regex, parameter name) -> class; first match wins; then by name.
 RULES = [
     (r'^glBegin$', 'mode', 'primitive'),
-    (r'^gl(Draw(Arrays|Elements|RangeElements))$', 'mode', 'primitive'),
+    (r'^gl(Draw(Arrays|Elements|RangeElements))(EXT)?$', 'mode', 'primitive'),
     (r'^glEvalMesh', 'mode', 'mesh_mode'),
     (r'^gl(Enable|Disable|IsEnabled)$', 'cap', 'cap'),
     (r'^gl(Enable|Disable)ClientState$', 'array', 'client_array'),
-    (r'^gl(Vertex|Normal|Color|TexCoord|Index)Pointer$', 'type', 'type_vertex'),
+    (r'^gl(Vertex|Normal|Color|TexCoord|Index)Pointer(EXT)?$', 'type', 'type_vertex'),
     (r'^glDraw(Range)?Elements$', 'type', 'type_index'),
     (r'^glCallLists$', 'type', 'type_lists'),
     (r'^gl(TexImage|TexSubImage|DrawPixels|ReadPixels|GetTexImage)', 'type', 'type_pixel'),
@@ -263,7 +279,16 @@ RULES = [
     (r'^gl(Get)?ClipPlane$', 'plane', 'clip_plane'),
     (r'^gl(Get)?Material|^glColorMaterial$', 'face', 'face'),
     (r'^glGetString$', 'name', 'string_name'),
-    (r'^glGetPointerv$', 'pname', 'pointer_pname'),
+    (r'^glGetPointerv(EXT)?$', 'pname', 'pointer_pname'),
+    (r'^gl(BindBuffer|BufferData|BufferSubData|GetBufferSubData|MapBuffer|UnmapBuffer|'
+     r'GetBufferParameteriv|GetBufferPointerv)(ARB)?$', 'target', 'buffer_target'),
+    (r'^glBufferData(ARB)?$', 'usage', 'buffer_usage'),
+    (r'^glMapBuffer(ARB)?$', 'access', 'buffer_access'),
+    (r'^glGetBufferParameteriv(ARB)?$', 'pname', 'buffer_pname'),
+    (r'^glGetBufferPointerv(ARB)?$', 'pname', 'buffer_pointer_pname'),
+    (r'^gl(BeginQuery|EndQuery|GetQueryiv)(ARB)?$', 'target', 'query_target'),
+    (r'^glGetQueryiv(ARB)?$', 'pname', 'query_pname'),
+    (r'^glGetQueryObjectu?iv(ARB)?$', 'pname', 'query_object_pname'),
     (r'^glGet(Boolean|Integer|Float|Double)v$', 'pname', 'get_pname'),
 ]
 

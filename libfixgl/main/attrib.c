@@ -494,8 +494,13 @@ void GLAPIENTRY glPushClientAttrib(GLbitfield mask)
       head->Pack = ctx->Pack;
       head->Unpack = ctx->Unpack;
    }
-   if (mask & GL_CLIENT_VERTEX_ARRAY_BIT)
+   if (mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
+      /* [S: attrib.c:save_array_attrib] the arrays with their buffers,
+       * and the GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER bindings,
+       * referenced */
       head->Array = ctx->Array;
+      fgl_buffer_hold_array(ctx, &head->Array);
+   }
    ctx->ClientAttribStackDepth++;
 }
 
@@ -510,13 +515,23 @@ void GLAPIENTRY glPopClientAttrib(void)
       return;
    }
    ctx->ClientAttribStackDepth--;
-   const struct fgl_client_attrib_node *head =
-      &ctx->ClientAttribStack[ctx->ClientAttribStackDepth];
+   struct fgl_client_attrib_node *head = &ctx->ClientAttribStack[ctx->ClientAttribStackDepth];
    /* pixel store and arrays are read when used: no flush */
    if (head->Mask & GL_CLIENT_PIXEL_STORE_BIT) {
       ctx->Pack = head->Pack;
       ctx->Unpack = head->Unpack;
    }
-   if (head->Mask & GL_CLIENT_VERTEX_ARRAY_BIT)
+   if (head->Mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
+      /* [S: attrib.c:restore_array_attrib] the arrays come back with the
+       * buffers they had (the node's references move to the context),
+       * then both targets are bound again by the saved names: a name
+       * deleted since gets a new, empty buffer */
+      fgl_buffer_release_array(ctx, &ctx->Array);
       ctx->Array = head->Array;
+      const GLuint array_name = ctx->Array.ArrayBufferObj ? ctx->Array.ArrayBufferObj->Name : 0;
+      const GLuint elt_name = ctx->Array.ElementBufferObj ? ctx->Array.ElementBufferObj->Name : 0;
+      fgl_bind_buffer_name(ctx, GL_ARRAY_BUFFER, array_name);
+      fgl_bind_buffer_name(ctx, GL_ELEMENT_ARRAY_BUFFER, elt_name);
+      memset(&head->Array, 0, sizeof(head->Array));
+   }
 }

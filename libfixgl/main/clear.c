@@ -63,6 +63,7 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
    /* the clear's own depth-stencil-alpha and blend objects, for this
     * draw only */
    struct r_state rs = ctx->_Raster;
+   rs.samples = NULL;   /* a clear passes no sample (conformance/probes/p_query.c) */
    struct r_dsa_state dsa = *rs.dsa;
    struct r_blend_state blend = *rs.blend;
    dsa.alpha_test = false;

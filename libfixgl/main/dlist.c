@@ -31,8 +31,8 @@
  *    when the list executes (and at once under GL_COMPILE_AND_EXECUTE);
  *    everything else is validated by the command when it executes.
  */
-/* the replay calls GL 1.4 entry points declared by <GL/glext.h> only with
- * GL_GLEXT_PROTOTYPES */
+/* the replay calls GL 1.4 and 1.5 entry points (glBeginQuery, glEndQuery)
+ * declared by <GL/glext.h> only with GL_GLEXT_PROTOTYPES */
 #define GL_GLEXT_PROTOTYPES 1
 #include "main/dlist.h"
 
@@ -1851,8 +1851,20 @@ void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
    }
    grow_vertex_storage(ctx, (unsigned)count);
    notify_begin(ctx, mode, true);
-   for (GLsizei i = 0; i < count && indices; i++)
-      t_array_element(ctx, (GLint)t_index_at(type, indices, i));
+   const struct fgl_buffer_object *ebo = ctx->Array.ElementBufferObj;
+   if (ebo) {
+      /* the element buffer's store from the offset (mapped by the oracle,
+       * _mesa_vao_map, any alignment); an index outside it reads 0 here */
+      const uint64_t isize = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : 4;
+      for (GLsizei i = 0; i < count; i++) {
+         const uint64_t at = (uint64_t)(uintptr_t)indices + (uint64_t)i * isize;
+         const bool in = ebo->Data && at + isize <= (uint64_t)ebo->Size;
+         t_array_element(ctx, in ? (GLint)t_index_at(type, ebo->Data + at, 0) : 0);
+      }
+   } else {
+      for (GLsizei i = 0; i < count && indices; i++)
+         t_array_element(ctx, (GLint)t_index_at(type, indices, i));
+   }
    fgl_save_end(ctx);
 }
 

@@ -131,6 +131,11 @@ DL_OP2(PrioritizeTexture1, U, F)    /* glPrioritizeTextures: one node per
                                      * name, replayed as a call with n = 1
                                      * (main/dlist.h) */
 
+/* ---- occlusion queries (GL 1.5: Mesa compiles them, save_BeginQueryARB,
+ * save_EndQueryARB) ---- */
+DL_OP2(BeginQuery, E, U)           /* glBeginQueryARB too */
+DL_OP1(EndQuery, E)
+
 /* ---- attribute stack, lists ---- */
 DL_OP1(PushAttrib, BF)
 DL_OP0(PopAttrib)

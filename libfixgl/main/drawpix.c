@@ -1238,6 +1238,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    fgl_flush_bitmap_cache(ctx);
    fgl_scene_flush(ctx);   /* reads and draws the framebuffer now */
+   fgl_query_flushed(ctx);  /* the oracle's copy reads its buffer: a flush */
    if (blit_copy_pixels(ctx, srcx, srcy, width, height, dstx, dsty, type))
       return;
 

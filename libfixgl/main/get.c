@@ -791,6 +791,10 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_fog_coord, EXT_secondary_color, EXT_multi_draw_arrays
        *   EXT/SGIS_texture_edge_clamp GL_CLAMP_TO_EDGE
        *   EXT_texture_lod_bias   GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
+       *   EXT_vertex_array       gl*PointerEXT, glArrayElementEXT,
+       *                          glDrawArraysEXT, glGetPointervEXT
+       *   ARB_vertex_buffer_object, ARB_occlusion_query the GL 1.5
+       *                          buffer and query calls' *ARB names
        *   SGIS_generate_mipmap   GL_GENERATE_MIPMAP, GL_GENERATE_MIPMAP_HINT
        *   SGIS_texture_lod       GL_TEXTURE_MIN/MAX_LOD, BASE/MAX_LEVEL
        *   NV_blend_square        GL_SRC_COLOR as source, GL_DST_COLOR as
@@ -801,7 +805,9 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   WIN_phong_shading      GL_PHONG_WIN, GL_PHONG_HINT_WIN
        *   FIXGL_cook_torrance    glMaterial's GL_REFLECTANCE_MODEL_FIXGL,
        *                          GL_ROUGHNESS/METALNESS/DIELECTRIC_F0_FIXGL */
-      return (const GLubyte *)"GL_ARB_multitexture GL_ARB_texture_border_clamp "
+      return (const GLubyte *)"GL_ARB_multitexture GL_ARB_occlusion_query "
+                              "GL_ARB_vertex_buffer_object "
+                              "GL_ARB_texture_border_clamp "
                               "GL_ARB_texture_env_add GL_ARB_texture_env_combine "
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
@@ -818,7 +824,8 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp "
                               "GL_EXT_texture_env_add GL_EXT_texture_env_combine "
                               "GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias "
-                              "GL_EXT_texture_mirror_clamp GL_IBM_texture_mirrored_repeat "
+                              "GL_EXT_texture_mirror_clamp GL_EXT_vertex_array "
+                              "GL_IBM_texture_mirrored_repeat "
                               "GL_NV_blend_square GL_NV_fog_distance "
                               "GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp "
                               "GL_SGIS_texture_lod GL_WIN_phong_shading";

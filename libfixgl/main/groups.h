@@ -26,6 +26,29 @@ struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap);
 /* glGet of the GL_*_ARRAY_{SIZE,TYPE,STRIDE} and GL_*_ARRAY values */
 bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value);
 
+/* main/bufferobj.c (GL 1.5 buffer objects) */
+bool fgl_init_bufobj(struct fgl_context *ctx);
+void fgl_share_bufobjs(struct fgl_context *ctx, struct fgl_context *share);
+void fgl_free_bufobj(struct fgl_context *ctx);
+/* *slot := obj, the references moved (under the shared table's lock) */
+void fgl_buffer_reference(struct fgl_context *ctx, struct fgl_buffer_object **slot,
+                          struct fgl_buffer_object *obj);
+/* a reference more (less) to every buffer a copy of the array state
+ * holds (glPushClientAttrib's; release also clears them) */
+void fgl_buffer_hold_array(struct fgl_context *ctx, const struct fgl_array_attrib *a);
+void fgl_buffer_release_array(struct fgl_context *ctx, struct fgl_array_attrib *a);
+/* glBindBuffer(target, name) of a valid target, trusted */
+void fgl_bind_buffer_name(struct fgl_context *ctx, GLenum target, GLuint name);
+
+/* main/queryobj.c (GL 1.5 occlusion queries) */
+void fgl_free_queries(struct fgl_context *ctx);
+/* the oracle flushed its scene (glFlush, glFinish, a read-back): every
+ * query ended before is available */
+static inline void fgl_query_flushed(struct fgl_context *ctx)
+{
+   ctx->Query.FlushEpoch++;
+}
+
 /* main/begin_end.c (GL_CURRENT_BIT) */
 void fgl_init_current(struct fgl_context *ctx);
 

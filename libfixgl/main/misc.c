@@ -24,6 +24,7 @@ void GLAPIENTRY glFlush(void)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_front(ctx);
+   fgl_query_flushed(ctx);   /* the ended queries are available */
 }
 
 void GLAPIENTRY glFinish(void)
@@ -33,6 +34,7 @@ void GLAPIENTRY glFinish(void)
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_front(ctx);
+   fgl_query_flushed(ctx);   /* the ended queries are available */
 }
 
 FGLAPI const char *fixglGetVersion(void)

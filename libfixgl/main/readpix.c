@@ -252,6 +252,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
+   fgl_query_flushed(ctx);   /* the oracle maps its buffer: a flush */
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb)
       return;

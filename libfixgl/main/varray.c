@@ -15,8 +15,9 @@
  * mode does not draw.  Texture coordinate arrays are fetched per unit
  * (glClientActiveTexture) by tnl/t_array.c.
  */
-/* the GL 1.4 pointer and multi-draw calls are declared by <GL/glext.h>
- * only with GL_GLEXT_PROTOTYPES (which also exports them: GLAPI) */
+/* the GL 1.4 pointer and multi-draw calls and GL_EXT_vertex_array's names
+ * are declared by <GL/glext.h> only with GL_GLEXT_PROTOTYPES (which also
+ * exports them: GLAPI) */
 #define GL_GLEXT_PROTOTYPES 1
 #include <stddef.h>
 
@@ -117,6 +118,9 @@ static void update_array(struct fgl_context *ctx, enum fgl_array_index a, GLint 
    arr->Stride = stride;
    arr->EffStride = stride ? stride : element_size(type, size);
    arr->Ptr = ptr;
+   /* the pointer is an offset into the GL_ARRAY_BUFFER bound now
+    * [S: varray.c:update_array, _mesa_bind_vertex_buffer] */
+   fgl_buffer_reference(ctx, &arr->BufferObj, ctx->Array.ArrayBufferObj);
 }
 
 /* validate_array_and_format then update_array [S: main/varray.c].  Note
@@ -345,6 +349,11 @@ void GLAPIENTRY glDisableClientState(GLenum cap)
    client_state(cap, false);
 }
 
+static int buffer_name(const struct fgl_buffer_object *obj)
+{
+   return obj ? (int)obj->Name : 0;
+}
+
 bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
 {
    const struct fgl_client_array *A = ctx->Array.Array;
@@ -384,6 +393,20 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
       *value = 0;
       return true;
    case GL_CLIENT_ACTIVE_TEXTURE: *value = GL_TEXTURE0 + (int)ctx->Array.ActiveTexture; return true;
+   /* GL 1.5: the buffers bound to the targets and to each array (a
+    * deleted one still bound to an array keeps its name) */
+   case GL_ARRAY_BUFFER_BINDING: *value = buffer_name(ctx->Array.ArrayBufferObj); return true;
+   case GL_ELEMENT_ARRAY_BUFFER_BINDING: *value = buffer_name(ctx->Array.ElementBufferObj); return true;
+   case GL_VERTEX_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_VERTEX].BufferObj); return true;
+   case GL_NORMAL_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_NORMAL].BufferObj); return true;
+   case GL_COLOR_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_COLOR].BufferObj); return true;
+   case GL_INDEX_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_INDEX].BufferObj); return true;
+   case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
+      *value = buffer_name(A[FGL_ARRAY_TEX(ctx->Array.ActiveTexture)].BufferObj);
+      return true;
+   case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_EDGEFLAG].BufferObj); return true;
+   case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_COLOR1].BufferObj); return true;
+   case GL_FOG_COORD_ARRAY_BUFFER_BINDING: *value = buffer_name(A[FGL_ARRAY_FOGCOORD].BufferObj); return true;
    default: return false;
    }
 }
@@ -616,4 +639,61 @@ void GLAPIENTRY glArrayElement(GLint i)
    if (!ctx)
       return;
    t_array_element(ctx, i);
+}
+
+/* ---- GL_EXT_vertex_array's names [S: main/varray.c:_mesa_VertexPointerEXT
+ * and its siblings]: the count is ignored ---- */
+
+void GLAPIENTRY glVertexPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count,
+                                   const GLvoid *ptr)
+{
+   (void)count;
+   glVertexPointer(size, type, stride, ptr);
+}
+
+void GLAPIENTRY glNormalPointerEXT(GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr)
+{
+   (void)count;
+   glNormalPointer(type, stride, ptr);
+}
+
+void GLAPIENTRY glColorPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count,
+                                  const GLvoid *ptr)
+{
+   (void)count;
+   glColorPointer(size, type, stride, ptr);
+}
+
+void GLAPIENTRY glIndexPointerEXT(GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr)
+{
+   (void)count;
+   glIndexPointer(type, stride, ptr);
+}
+
+void GLAPIENTRY glTexCoordPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count,
+                                     const GLvoid *ptr)
+{
+   (void)count;
+   glTexCoordPointer(size, type, stride, ptr);
+}
+
+void GLAPIENTRY glEdgeFlagPointerEXT(GLsizei stride, GLsizei count, const GLboolean *ptr)
+{
+   (void)count;
+   glEdgeFlagPointer(stride, ptr);
+}
+
+void GLAPIENTRY glGetPointervEXT(GLenum pname, GLvoid **params)
+{
+   glGetPointerv(pname, params);
+}
+
+void GLAPIENTRY glArrayElementEXT(GLint i)
+{
+   glArrayElement(i);
+}
+
+void GLAPIENTRY glDrawArraysEXT(GLenum mode, GLint first, GLsizei count)
+{
+   glDrawArrays(mode, first, count);
 }

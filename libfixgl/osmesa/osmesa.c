@@ -307,6 +307,7 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
    if (sharelist) {
       fgl_share_dlists(c->gl, sharelist->gl);
       fgl_share_texobjs(c->gl, sharelist->gl);
+      fgl_share_bufobjs(c->gl, sharelist->gl);
    }
    c->format = format;
    c->y_up = GL_TRUE;

@@ -315,10 +315,13 @@ static ALWAYS_INLINE __m256i stencil_op8(const struct stencil_ops *st, int k, __
 /* The lanes of a half one at a time (a half reaching past the buffer's
  * right edge or last row): the reference's own compares, stencil ops and
  * colour operations (r_blend.h) on the lanes' depth and colour values.
- * m8: the lanes covered and passing the alpha test. */
-static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, const uint32_t zv[8],
-                         const uint32_t src[8], enum zfmt zf, bool zwrite, enum blend bl)
+ * m8: the lanes covered and passing the alpha test.  Returns how many
+ * passed the tests (the occlusion query's samples). */
+static unsigned finish_lanes(const struct r_state *rs, int x, int y, unsigned m8,
+                             const uint32_t zv[8], const uint32_t src[8], enum zfmt zf,
+                             bool zwrite, enum blend bl)
 {
+   unsigned passed = 0;
    for (unsigned m = m8; m; m &= m - 1) {
       const int i = __builtin_ctz(m);
       const size_t idx = (size_t)(y + (i >> 2)) * (size_t)rs->fb->width + (size_t)(x + (i & 3));
@@ -357,6 +360,7 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
             *zb = (uint16_t)zv[i];
       }
       uint8_t *dst = rs->fb->color + 4 * idx;
+      passed++;
       uint8_t s[4];
       memcpy(s, &src[i], 4);
       if (bl == BL_NONE) {
@@ -376,6 +380,7 @@ static void finish_lanes(const struct r_state *rs, int x, int y, unsigned m8, co
          if (rs->blend->color_mask & (1u << c))
             dst[c] = out[c];
    }
+   return passed;
 }
 
 /* The general colour operations in 8 lanes (ORACLE-NOTES.md "Blending,

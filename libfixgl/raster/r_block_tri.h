@@ -85,6 +85,10 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    if (zf == ZF_24S || zf == ZF_S)
       stencil_ops_init(&sops, rs);
    uint64_t fragments = 0;
+   /* the samples that pass, for the active occlusion query (a branch on
+    * a constant of the walk when there is none) */
+   const bool count_samples = rs->samples != NULL;
+   uint64_t samples = 0;
 
    const int32_t bx0 = cv->x0 & ~3, by0 = cv->y0 & ~3;
    int32_t rowc[R_COVER_EDGES];
@@ -207,7 +211,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                uint32_t zl[8], sl[8];
                _mm256_storeu_si256((__m256i *)zl, zv);
                _mm256_storeu_si256((__m256i *)sl, src);
-               finish_lanes(rs, bx, y, lm8, zl, sl, zf, zwrite, cop);
+               const unsigned passed = finish_lanes(rs, bx, y, lm8, zl, sl, zf, zwrite, cop);
+               if (count_samples)
+                  samples += passed;
                continue;
             }
 
@@ -257,6 +263,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                if (zwrite)
                   store_rows16(zp, stride, rm, _mm256_blendv_epi8(zb, zv, pass));
             }
+            if (count_samples)
+               samples += (unsigned)__builtin_popcount(
+                  (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(pass)));
             if (early) {
                /* shade only a half with a fragment that passed */
                if (!_mm256_movemask_ps(_mm256_castsi256_ps(pass)))
@@ -279,6 +288,8 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    }
    if (rs->stats)
       rs->stats->fragments += fragments;
+   if (count_samples)
+      rs->samples->n += samples;
 #undef TRI_PREFETCH_ROWS
 }
 

@@ -685,6 +685,8 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
    if (!rs->full_ops) {
       if (rs->dsa->depth_test && !depth_test_write(rs, idx, z))
          return;
+      if (rs->samples)
+         rs->samples->n++;
       dst[0] = r_float_to_unorm8(color[0]);
       dst[1] = r_float_to_unorm8(color[1]);
       dst[2] = r_float_to_unorm8(color[2]);
@@ -718,6 +720,11 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
    } else if (rs->dsa->depth_test && !depth_test_write(rs, idx, z)) {
       return;
    }
+   /* a sample passed: the occlusion query counts it (llvmpipe's
+    * lp_build_occlusion_count on the mask after the tests; the colour
+    * mask, blending and the logic op do not matter) */
+   if (rs->samples)
+      rs->samples->n++;
 
    /* blending or logic op on the colour converted to unorm8
     * [S: llvmpipe/lp_state_fs.c:generate_unswizzled_blend,

@@ -364,7 +364,8 @@ fail:
    return false;
 }
 
-void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats)
+void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats,
+                      unsigned slot)
 {
    const struct r_bin *b = &s->bins[tile];
    const int tx0 = (int)(tile % (unsigned)s->tiles_x) << R_TILE_LOG2;
@@ -395,6 +396,8 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
          if (rs.y1 > ty1) rs.y1 = ty1;
          if (rs.stats)
             rs.stats = stats;
+         if (rs.samples)
+            rs.samples += slot;
       }
       switch (c->kind) {
       case R_CMD_TRIANGLE:

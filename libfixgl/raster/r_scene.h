@@ -113,7 +113,10 @@ static inline unsigned r_scene_tiles(const struct r_scene *s)
 
 /* Replays tile `tile`'s commands in order; the states that count
  * (r_state.stats) count into `stats` instead. */
-void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats);
+/* slot: the replaying thread's worker slot (< R_SAMPLE_SLOTS), whose
+ * occlusion query counter the tile's draws add to */
+void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats,
+                      unsigned slot);
 
 /* Empties the scene (releasing its states' objects), keeping its memory
  * for the next. */

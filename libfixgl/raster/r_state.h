@@ -500,6 +500,18 @@ struct r_fs_state {
    bool phong;
 };
 
+/* An occlusion query's counters of samples that pass the fragment tests
+ * (alpha, stencil, depth; scissor and the primitive's coverage and kills
+ * before them): one per thread that rasterizes (the scene's worker slot,
+ * 0 when drawing directly), each on a cache line of its own; the query's
+ * result is their sum.  The reference kernels count per fragment
+ * (r_fragment_ops), the block kernels per 4x2 half from its pass mask. */
+#define R_SAMPLE_SLOTS 64
+struct r_sample_counter {
+   uint64_t n;
+   uint64_t pad[7];
+};
+
 /* A draw's raster state (the raster variant): one object of each kind,
  * what is the draw's own (the draw region, the interpolation of the
  * batch, the pixel image, the counters), and the kernels chosen for the
@@ -560,6 +572,10 @@ struct r_state {
     * drawn (r_lazy_touch), or NULL: a context drawing directly (one
     * thread) points it to its framebuffer's */
    struct r_lazy_clear *lazy;
+   /* the active occlusion query's counter of this thread, or NULL (the
+    * usual case: nothing counted); the scene's tiles point it to the slot
+    * of the thread that replays them */
+   struct r_sample_counter *samples;
 
    /* Chosen by r_choose_kernels from the objects: whoever points the
     * r_state to other objects calls it again. */

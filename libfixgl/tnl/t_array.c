@@ -156,12 +156,28 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
     * 4 GB bound is read before the array's pointer (first -2 of a 16-byte
     * stride: offset 0xffffffe0, 32 bytes before Ptr), not 4 GB after it. */
    const uint32_t offset = (uint32_t)((uint64_t)elt * (uint64_t)a->EffStride);
-   if (!a->Ptr || (uint64_t)offset + element_bytes(a) > UINT32_MAX) {
-      if (a->Size == 4)
-         out[3] = 0.0f;
-      return;
+   const GLubyte *p;
+   const struct fgl_buffer_object *bo = a->BufferObj;
+   if (bo) {
+      /* from a buffer object: the pointer is an offset, 32 bits in
+       * gallium's pipe_vertex_buffer, and the element must end inside
+       * the store (draw_llvm.c: buffer_size_adj), else it reads zeros */
+      const uint64_t base = (uint32_t)(uintptr_t)a->Ptr, esize = element_bytes(a);
+      const uint64_t size = bo->Data ? (uint64_t)bo->Size : 0;
+      if (base + esize > size || offset > size - esize - base) {
+         if (a->Size == 4)
+            out[3] = 0.0f;
+         return;
+      }
+      p = bo->Data + base + offset;
+   } else {
+      if (!a->Ptr || (uint64_t)offset + element_bytes(a) > UINT32_MAX) {
+         if (a->Size == 4)
+            out[3] = 0.0f;
+         return;
+      }
+      p = (const GLubyte *)a->Ptr + (ptrdiff_t)(int32_t)offset;
    }
-   const GLubyte *p = (const GLubyte *)a->Ptr + (ptrdiff_t)(int32_t)offset;
    for (int c = 0; c < a->Size; c++)
       out[c] = fetch_comp(p, a->Type, normalized, c);
    if (a->Format == GL_BGRA) {
@@ -259,6 +275,31 @@ static void fetch_window(void *ud, unsigned first, unsigned n, struct fgl_vbo_ve
    fetch_vertices(wf->ctx, NULL, wf->first + first, n, out);
 }
 
+bool t_index_source(const struct fgl_context *ctx, GLenum type, const GLvoid *indices,
+                    struct t_index_source *src)
+{
+   const struct fgl_buffer_object *bo = ctx->Array.ElementBufferObj;
+   src->type = type;
+   if (!bo) {
+      /* skip_validated_draw [S: main/draw.c]: no indices, no draw */
+      src->base = indices;
+      src->start = 0;
+      src->limit = UINT64_MAX;
+      return indices != NULL;
+   }
+   /* [S: draw.c:_mesa_validated_drawrangeelements] an offset that is not
+    * a multiple of the index size draws nothing; draw_pt.c DRAW_GET_IDX:
+    * an index past the store (elt_buffer_size / index size) reads 0 */
+   const uint64_t size = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : 4;
+   const uint64_t offset = (uintptr_t)indices;
+   if (offset % size != 0)
+      return false;
+   src->base = bo->Data;
+   src->start = offset / size;
+   src->limit = bo->Data ? (uint64_t)bo->Size / size : 0;
+   return true;
+}
+
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices)
 {
@@ -268,7 +309,10 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
       return;
    if (mode > GL_POLYGON)
       return;   /* adjacency modes: not drawn yet (as glBegin) */
-   if (index_type && !indices)
+   /* the indices: the client's (none: nothing drawn) or the element
+    * buffer's */
+   struct t_index_source isrc = { 0 };
+   if (index_type && !t_index_source(ctx, index_type, indices, &isrc))
       return;
    /* draw_pt_trim_count [S: gallium/auxiliary/draw/draw_pt.c]: the draw
     * module runs whole primitives only and fetches no vertex of a partial
@@ -306,7 +350,7 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
          slot[c] = UINT_MAX;
       nverts = 0;
       for (GLsizei i = 0; i < count; i++) {
-         const GLuint el = t_index_at(index_type, indices, i);
+         const GLuint el = t_index_src_at(&isrc, i);
          const unsigned c = el % CACHE_SIZE;
          if (slot[c] == UINT_MAX || tag[c] != el) {
             tag[c] = el;
@@ -426,11 +470,28 @@ static void emit(struct fgl_context *ctx, const struct fgl_client_array *a,
     * elt * binding->Stride): the product wraps in 32 bits, glArrayElement
     * (INT_MIN) of a 16-byte stride reads element 0 */
    const uint32_t off = (uint32_t)elt * (uint32_t)a->EffStride;
-   const GLubyte *p = (const GLubyte *)a->Ptr +
-                      (off > INT32_MAX ? (ptrdiff_t)off - ((ptrdiff_t)1 << 32) : (ptrdiff_t)off);
+   const ptrdiff_t delta = off > INT32_MAX ? (ptrdiff_t)off - ((ptrdiff_t)1 << 32) : (ptrdiff_t)off;
    float v[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
-   for (int c = 0; c < a->Size; c++)
-      v[c] = immediate_comp(p, a->Type, normalized, c);
+   const struct fgl_buffer_object *bo = a->BufferObj;
+   if (bo) {
+      /* from a buffer object: its store (mapped by the oracle for the
+       * call, _mesa_vao_map_arrays) at the offset the pointer holds; an
+       * element outside the store (which the oracle reads from wherever
+       * it points) is zeros here */
+      const int64_t at = (int64_t)(uintptr_t)a->Ptr + (int64_t)delta;
+      const int64_t esize = (int64_t)element_bytes(a);
+      if (!bo->Data || at < 0 || at + esize > (int64_t)bo->Size) {
+         for (int c = 0; c < a->Size; c++)
+            v[c] = 0.0f;
+      } else {
+         for (int c = 0; c < a->Size; c++)
+            v[c] = immediate_comp(bo->Data + at, a->Type, normalized, c);
+      }
+   } else {
+      const GLubyte *p = (const GLubyte *)a->Ptr + delta;
+      for (int c = 0; c < a->Size; c++)
+         v[c] = immediate_comp(p, a->Type, normalized, c);
+   }
    /* through the compiler while a list is compiled (_mesa_ArrayElement
     * calls the current dispatch) */
    fgl_attr(ctx, attr, (unsigned)a->Size, v[0], v[1], v[2], v[3]);

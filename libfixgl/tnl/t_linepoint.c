@@ -35,6 +35,7 @@ static bool aa_state(const struct fgl_context *ctx, struct r_state *aa, enum r_a
    aa->flat_mask = rs->flat_mask;
    aa->shade_env = rs->shade_env;
    aa->stats = rs->stats;
+   aa->samples = rs->samples;
    return aa->fs != NULL;   /* else out of memory at validation */
 }
 

@@ -347,4 +347,26 @@ static inline GLuint t_index_at(GLenum type, const GLvoid *indices, GLsizei i)
    }
 }
 
+/* Where a glDrawElements reads its indices: the client's array, or the
+ * GL_ELEMENT_ARRAY_BUFFER's store from the offset `indices` (t_array.c
+ * t_index_source). */
+struct t_index_source {
+   GLenum type;
+   const void *base;      /* the client's indices, or the buffer's store */
+   uint64_t start;        /* the first index's position in base */
+   uint64_t limit;        /* positions at and past it read as 0 */
+};
+/* false when nothing is drawn: a buffer offset that is not a multiple of
+ * the index size (the oracle skips such a draw without an error) */
+bool t_index_source(const struct fgl_context *ctx, GLenum type, const GLvoid *indices,
+                    struct t_index_source *src);
+static inline GLuint t_index_src_at(const struct t_index_source *src, GLsizei i)
+{
+   const uint64_t pos = src->start + (uint64_t)i;
+   if (pos >= src->limit)
+      return 0;
+   const unsigned size = src->type == GL_UNSIGNED_BYTE ? 1u : src->type == GL_UNSIGNED_SHORT ? 2u : 4u;
+   return t_index_at(src->type, (const uint8_t *)src->base + pos * size, 0);
+}
+
 #endif
