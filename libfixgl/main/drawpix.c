@@ -1200,7 +1200,8 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
         (ctx->Stencil.Enabled &&
          (ctx->Stencil.FailFunc != GL_KEEP || ctx->Stencil.ZPassFunc != GL_KEEP ||
           ctx->Stencil.ZFailFunc != GL_KEEP)) ||
-        ctx->Color.DrawBuffer == GL_NONE))
+        ctx->Color.DrawBuffer == GL_NONE ||
+        ctx->Query.CurrentOcclusion))   /* the quad counts its samples */
       return false;
 
    int rx = srcx, ry = srcy, rw = width, rh = height, skip_px = 0, skip_rows = 0;
