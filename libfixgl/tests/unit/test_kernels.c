@@ -37,7 +37,9 @@
  * included), points (sizes 1 to 16, whole and fractional), vertex arrays,
  * and a few glDrawPixels (colour, depth, stencil), glBitmap and
  * glCopyPixels.  The internal colour, depth and stencil
- * buffers of the two contexts are then compared byte for byte.
+ * buffers of the two contexts are then compared byte for byte, and the
+ * results of the occlusion queries that about half the cases draw inside
+ * (the samples each kernel counts) number for number.
  *
  * Nothing here depends on which kernels exist: the comparison covers any
  * kernel r_choose_kernels picks.  The coverage count reads the kernels
@@ -391,6 +393,7 @@ static long g_calls, g_limit;
 static bool g_record;
 static struct {
    uint64_t tris, lines, points, pixels, cases, batches, fragments, stats_batches, gl_errors;
+   uint64_t queries, samples;
 } g_count;
 static bool g_count_on;
 
@@ -1432,6 +1435,10 @@ static void record_case(void)
       record_kind(rs, KIND_POINT);
 }
 
+/* the occlusion queries' results of a batch, [fast] */
+static GLuint g_queries[2][16];
+static int g_nqueries[2];
+
 static void gen_batch(uint64_t bseed, bool fast)
 {
    memset(&G, 0, sizeof G);
@@ -1477,6 +1484,7 @@ static void gen_batch(uint64_t bseed, bool fast)
    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
    const int ncases = 4 + rnd(6);
+   g_nqueries[fast] = 0;
    for (int c = 0; c < ncases; c++) {
       G.case_index = c;
       G.case_tris = G.case_lines = G.case_points = false;
@@ -1500,6 +1508,15 @@ static void gen_batch(uint64_t bseed, bool fast)
          L("  clear depth and stencil (call %ld)", g_calls - 1);
          glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
       }
+      /* about half the cases draw inside an occlusion query: the samples
+       * that pass, counted by the kernels (r_state.samples), must be the
+       * same in both contexts */
+      const bool query = ((bseed >> (c % 48)) ^ (uint64_t)c) & 1;   /* (not from the
+                                                                   * batch's random stream) */
+      if (query) {
+         L("  glBeginQuery(GL_SAMPLES_PASSED, %d)", c + 1);
+         glBeginQuery(GL_SAMPLES_PASSED, (GLuint)c + 1);
+      }
       const int nprims = 2 + rnd(14);
       for (int i = 0; i < nprims; i++) {
          const int what = rnd(100);
@@ -1519,6 +1536,16 @@ static void gen_batch(uint64_t bseed, bool fast)
             draw_arrays();
          else
             draw_pixels();
+      }
+      if (query) {
+         glEndQuery(GL_SAMPLES_PASSED);
+         GLuint n = 0;
+         glGetQueryObjectuiv((GLuint)c + 1, GL_QUERY_RESULT, &n);
+         g_queries[fast][g_nqueries[fast]++] = n;
+         if (g_count_on) {
+            g_count.queries++;
+            g_count.samples += n;
+         }
       }
       fgl_flush_vertices(fgl_get_current());
       if (fast && g_record)
@@ -1663,7 +1690,14 @@ static bool run_pair(long b, uint64_t bseed, long limit, bool record, struct dif
       fgl_lazy_resolve(fast.gl->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       fast.gl->DrawBuffer->Color[4 * (size_t)(c.w * (c.h / 2) + c.w / 2)] ^= 0x10;
    }
-   const bool same = compare_buffers(&c, &fast, &ref, d);
+   bool same = compare_buffers(&c, &fast, &ref, d);
+   /* then the occlusion queries' counts */
+   for (int i = 0; same && i < g_nqueries[0] && i < g_nqueries[1]; i++) {
+      if (g_queries[1][i] != g_queries[0][i]) {
+         *d = (struct diff){ "occlusion query", i, 0, g_queries[0][i], g_queries[1][i] };
+         same = false;
+      }
+   }
    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
    free_side(&fast);
    free_side(&ref);
@@ -1868,6 +1902,8 @@ int main(int argc, char **argv)
           "them (fixglStats); %llu cases raised a GL error\n",
           (unsigned long long)g_count.fragments, (unsigned long long)g_count.stats_batches,
           (unsigned long long)g_count.gl_errors);
+   printf("kernels: %llu occlusion queries counted %llu samples, equal in both contexts\n",
+          (unsigned long long)g_count.queries, (unsigned long long)g_count.samples);
    printf("kernels: %zu kernel/state combinations drawn by %d fast kernels; %zu of %zu state keys "
           "fell back to the reference kernels\n",
           g_combos.n, g_nkernels, g_fallback.n, g_keys.n);
@@ -1882,6 +1918,8 @@ int main(int argc, char **argv)
    } else if (only < 0 && g_combos.n == 0) {
       FAIL("no fast kernel was exercised on a CPU with AVX2 and FMA: the test tests nothing");
    }
+   if (only < 0 && g_count.samples == 0)
+      FAIL("no occlusion query counted a sample: the counting is not tested");
    fflush(stdout);
    return check_report("kernels");
 }
