@@ -22,6 +22,7 @@
  *   robust-alloc-fail [WORKLOAD...]     (default: all)
  *   robust-alloc-fail --run NAME N      (one child run, for debugging)
  */
+#define GL_GLEXT_PROTOTYPES 1   /* GL 1.5 buffers and queries */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 
@@ -387,10 +388,86 @@ static void w_scene(void)
    end(&c);
 }
 
+/* GL 1.5 buffer objects (the shared table, stores, arrays and indices
+ * from them, a list compiled from them, a second context sharing them)
+ * and occlusion queries */
+static void w_buffers_queries(void)
+{
+   struct ctx c;
+   static GLfloat v[300][2];
+   static GLushort idx[600];
+   for (int i = 0; i < 300; i++) {
+      v[i][0] = (float)(i % 64);
+      v[i][1] = (float)((i * 7) % 64);
+   }
+   for (int i = 0; i < 600; i++)
+      idx[i] = (GLushort)((i * 17) % 300);
+   if (begin(&c, OSMESA_RGBA, 24, 0, 0, 64, 64)) {
+      ortho(64, 64);
+      GLuint b[40], q[3];
+      E(glGenBuffers(40, b));
+      for (int i = 0; i < 40; i++)
+         E(glBindBuffer(GL_ARRAY_BUFFER, b[i]));
+      E(glBufferData(GL_ARRAY_BUFFER, sizeof(v), v, GL_STATIC_DRAW));
+      E(glBufferSubData(GL_ARRAY_BUFFER, 8, 16, v[10]));
+      E(glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b[0]));
+      E(glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof(idx), idx, GL_DYNAMIC_DRAW));
+      E(glEnableClientState(GL_VERTEX_ARRAY));
+      GLint ab = 0;
+      E(glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &ab));
+      E(glVertexPointer(2, GL_FLOAT, 0, ab ? NULL : (const GLvoid *)v));
+      E(glGenQueries(3, q));
+      E(glBeginQuery(GL_SAMPLES_PASSED, q[0]));
+      E(glDrawArrays(GL_TRIANGLES, 0, 297));
+      E(glDrawElements(GL_TRIANGLES, 600, GL_UNSIGNED_SHORT, NULL));
+      E(glEndQuery(GL_SAMPLES_PASSED));
+      GLuint r = 0;
+      E(glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &r));
+      /* (an offset, only while an element buffer is bound: after a failed
+       * glBindBuffer it would be a client pointer) */
+      GLint eb = 0;
+      E(glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &eb));
+      E(glNewList(1, GL_COMPILE));
+      E(glDrawElements(GL_LINES, 200, GL_UNSIGNED_SHORT, eb ? (const GLvoid *)20 : idx));
+      E(glEndList());
+      void *m = glMapBuffer(GL_ARRAY_BUFFER, GL_READ_WRITE);
+      check("glMapBuffer");
+      if (m)
+         E(glUnmapBuffer(GL_ARRAY_BUFFER));
+      E(glBeginQuery(GL_SAMPLES_PASSED, 77));
+      E(glCallList(1));
+      E(glEndQuery(GL_SAMPLES_PASSED));
+      E(glGetQueryObjectuiv(77, GL_QUERY_RESULT_AVAILABLE, &r));
+      E(glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT));
+      E(glBindBuffer(GL_ARRAY_BUFFER, 0));
+      E(glPopClientAttrib());
+      OSMesaContext shared = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, c.ctx);
+      if (!shared) {
+         S.osmesa_failed++;
+      } else {
+         static unsigned char buf2[16 * 16 * 4];
+         if (OSMesaMakeCurrent(shared, buf2, GL_UNSIGNED_BYTE, 16, 16)) {
+            E(glBindBuffer(GL_ARRAY_BUFFER, b[1]));
+            E(glDeleteBuffers(40, b));
+            OSMesaMakeCurrent(c.ctx, c.buf, GL_UNSIGNED_BYTE, 64, 64);
+         } else {
+            S.osmesa_failed++;
+            OSMesaMakeCurrent(c.ctx, c.buf, GL_UNSIGNED_BYTE, 64, 64);
+         }
+         OSMesaDestroyContext(shared);
+      }
+      E(glDrawArrays(GL_POINTS, 0, 300));
+      E(glDeleteQueries(3, q));
+      E(glFinish());
+   }
+   end(&c);
+}
+
 static const struct workload {
    const char *name;
    void (*fn)(void);
 } workloads[] = {
+   { "buffers_queries", w_buffers_queries },
    { "context", w_context },
    { "textures", w_textures },
    { "dlists", w_dlists },
