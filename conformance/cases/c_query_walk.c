@@ -505,6 +505,7 @@ static void query_extensions(fc_h *h)
         "GL_ARB_multisample", "GL_ARB_point_parameters", "GL_ARB_transpose_matrix",
         "GL_EXT_blend_equation_separate", "GL_EXT_blend_func_separate", "GL_EXT_fog_coord",
         "GL_EXT_multi_draw_arrays", "GL_EXT_point_parameters", "GL_EXT_secondary_color",
+        "GL_ARB_vertex_buffer_object", "GL_ARB_occlusion_query", "GL_EXT_vertex_array",
     };
     /* fixgl's own extensions (include/fixgl/shading.md), which the oracle
      * does not have: not counted among the others; libfixgl's api tests
@@ -612,6 +613,15 @@ static void query_extensions(fc_h *h)
     fc_value(h, "glBlendColorEXT", OSMesaGetProcAddress("glBlendColorEXT") != NULL);
     fc_value(h, "glBlendEquationEXT", OSMesaGetProcAddress("glBlendEquationEXT") != NULL);
     fc_value(h, "glDrawRangeElementsEXT", OSMesaGetProcAddress("glDrawRangeElementsEXT") != NULL);
+    /* GL_ARB_vertex_buffer_object, GL_ARB_occlusion_query, GL_EXT_vertex_array */
+    static const char *const gl15_names[] = {
+        "glBindBufferARB", "glBufferDataARB", "glMapBufferARB", "glGetBufferPointervARB",
+        "glGenQueriesARB", "glBeginQueryARB", "glGetQueryObjectuivARB", "glVertexPointerEXT",
+        "glColorPointerEXT", "glEdgeFlagPointerEXT", "glDrawArraysEXT", "glArrayElementEXT",
+        "glGetPointervEXT", "glIndexPointerEXT", "glNormalPointerEXT", "glTexCoordPointerEXT",
+    };
+    for (size_t i = 0; i < sizeof gl15_names / sizeof gl15_names[0]; i++)
+        fc_value(h, gl15_names[i], OSMesaGetProcAddress(gl15_names[i]) != NULL);
     /* an EXT entry point draws like the core one */
     typedef void (GLAPIENTRY *blend_color_fn)(GLclampf, GLclampf, GLclampf, GLclampf);
     blend_color_fn bc = (blend_color_fn)OSMesaGetProcAddress("glBlendColorEXT");
