@@ -6,6 +6,7 @@
 #define FGL_T_PIPELINE_H
 
 #include <stdbool.h>
+#include <string.h>
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
 #endif
@@ -334,16 +335,24 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
 /* glArrayElement: the enabled arrays' element elt through the immediate-mode
  * attribute calls. */
 void t_array_element(struct fgl_context *ctx, GLint elt);
-/* index i of an index array of type GL_UNSIGNED_BYTE/SHORT/INT */
+/* index i of an index array of type GL_UNSIGNED_BYTE/SHORT/INT; the
+ * application's pointer need not be aligned to the index size (the
+ * oracle reads such arrays too): read by memcpy, one load on x86 */
 static inline GLuint t_index_at(GLenum type, const GLvoid *indices, GLsizei i)
 {
    switch (type) {
    case GL_UNSIGNED_BYTE:
       return ((const GLubyte *)indices)[i];
-   case GL_UNSIGNED_SHORT:
-      return ((const GLushort *)indices)[i];
-   default:
-      return ((const GLuint *)indices)[i];
+   case GL_UNSIGNED_SHORT: {
+      GLushort v;
+      memcpy(&v, (const GLubyte *)indices + (size_t)i * sizeof(v), sizeof(v));
+      return v;
+   }
+   default: {
+      GLuint v;
+      memcpy(&v, (const GLubyte *)indices + (size_t)i * sizeof(v), sizeof(v));
+      return v;
+   }
    }
 }
 
