@@ -2598,21 +2598,37 @@ static void exec_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, con
       case GL_UNSIGNED_BYTE:
          id = ub[i];
          break;
-      case GL_SHORT:
-         id = ((const GLshort *)lists)[i];
+      /* (the application's array need not be aligned: memcpy) */
+      case GL_SHORT: {
+         GLshort v;
+         memcpy(&v, ub + 2 * (size_t)i, sizeof(v));
+         id = v;
          break;
-      case GL_UNSIGNED_SHORT:
-         id = ((const GLushort *)lists)[i];
+      }
+      case GL_UNSIGNED_SHORT: {
+         GLushort v;
+         memcpy(&v, ub + 2 * (size_t)i, sizeof(v));
+         id = v;
          break;
-      case GL_INT:
-         id = ((const GLint *)lists)[i];
+      }
+      case GL_INT: {
+         GLint v;
+         memcpy(&v, ub + 4 * (size_t)i, sizeof(v));
+         id = v;
          break;
-      case GL_UNSIGNED_INT:
-         id = (int)((const GLuint *)lists)[i];
+      }
+      case GL_UNSIGNED_INT: {
+         GLuint v;
+         memcpy(&v, ub + 4 * (size_t)i, sizeof(v));
+         id = (int)v;
          break;
-      case GL_FLOAT:   /* (GLint) cast as x86 does it: INT_MIN past the range */
-         id = fgl_double_to_int_trunc(((const GLfloat *)lists)[i]);
+      }
+      case GL_FLOAT: {   /* (GLint) cast as x86 does it: INT_MIN past the range */
+         GLfloat v;
+         memcpy(&v, ub + 4 * (size_t)i, sizeof(v));
+         id = fgl_double_to_int_trunc(v);
          break;
+      }
       case GL_2_BYTES:
          id = ub[2 * i] * 256 + ub[2 * i + 1];
          break;

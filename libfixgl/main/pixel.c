@@ -236,11 +236,14 @@ static void pixel_map_converted(struct fgl_context *ctx, GLenum map, GLsizei map
    }
    const unsigned n = saved_count(mapsize, values);
    for (unsigned i = 0; i < n; i++) {
+      /* (the application's array need not be aligned: memcpy) */
       if (is_uint) {
-         const GLuint u = ((const GLuint *)values)[i];
+         GLuint u;
+         memcpy(&u, (const GLubyte *)values + 4 * (size_t)i, sizeof(u));
          fvalues[i] = index ? (GLfloat)u : UINT_TO_FLOAT(u);
       } else {
-         const GLushort us = ((const GLushort *)values)[i];
+         GLushort us;
+         memcpy(&us, (const GLubyte *)values + 2 * (size_t)i, sizeof(us));
          fvalues[i] = index ? (GLfloat)us : USHORT_TO_FLOAT(us);
       }
    }
