@@ -1093,6 +1093,9 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
 /* Lazy clears (scene.c): writes the pending clears of `what`
  * (FGL_LAZY_*) into fb's memory; frees fb's tiles (its buffers go). */
 void fgl_lazy_resolve(struct fgl_framebuffer *fb, unsigned what);
+/* The raster core's view of fb's buffers (state.c), as validation builds
+ * the r_state's framebuffer object. */
+struct r_fb_state fgl_fb_raster_state(const struct fgl_framebuffer *fb);
 void fgl_lazy_fini(struct fgl_framebuffer *fb);
 /* _Raster.shade_env := the object equal to _ShadeEnv (state.c); false
  * when there is none (out of memory, GL_OUT_OF_MEMORY raised). */

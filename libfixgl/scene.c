@@ -243,23 +243,11 @@ static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
 
 /* ---- Lazy clears ---- */
 
-static struct r_fb_state lazy_fb_state(const struct fgl_framebuffer *fb)
-{
-   struct r_fb_state o;
-   memset(&o, 0, sizeof(o));
-   o.color = fb->Color;
-   o.zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
-   o.zs_format = fb->ZSFormat;
-   o.width = fb->Width;
-   o.height = fb->Height;
-   return o;
-}
-
 /* writes `what` of the tiles tx0..tx1, ty0..ty1 (inclusive, in range) */
 static void lazy_resolve_tiles(struct fgl_framebuffer *fb, unsigned what, int tx0, int ty0,
                                int tx1, int ty1)
 {
-   const struct r_fb_state fbs = lazy_fb_state(fb);
+   const struct r_fb_state fbs = fgl_fb_raster_state(fb);
    r_lazy_resolve_tiles(&fb->Lazy, &fbs, what, tx0, ty0, tx1, ty1);
 }
 

@@ -787,6 +787,18 @@ bool fgl_set_shade_env(struct fgl_context *ctx)
 
 /* The raster state: each object whose groups are dirty, then the
  * variant's kernels.  Returns the groups not done (out of memory). */
+struct r_fb_state fgl_fb_raster_state(const struct fgl_framebuffer *fb)
+{
+   struct r_fb_state o;
+   memset(&o, 0, sizeof(o));
+   o.color = fb->Color;
+   o.zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
+   o.zs_format = fb->ZSFormat;
+   o.width = fb->Width;
+   o.height = fb->Height;
+   return o;
+}
+
 static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
 {
    struct r_state *rs = &ctx->_Raster;
@@ -797,13 +809,8 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
    if (dirty & FGL_NEW_BUFFERS) {
       struct r_fb_state o;
       memset(&o, 0, sizeof(o));
-      if (fb) {
-         o.color = fb->Color;
-         o.zs = fb->Depth ? fb->Depth : (void *)fb->Stencil;
-         o.zs_format = fb->ZSFormat;
-         o.width = fb->Width;
-         o.height = fb->Height;
-      }
+      if (fb)
+         o = fgl_fb_raster_state(fb);
       ok = true;
       SET_OBJECT(ctx, rs->fb, o, &ok);
       failed |= ok ? 0u : FGL_NEW_BUFFERS;
