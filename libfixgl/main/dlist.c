@@ -987,8 +987,15 @@ static void fetch_vertex(const struct vertex_list *vl, const float *src,
 {
    for (int a = 0; a < FGL_ATTR_COUNT; a++) {
       const unsigned sz = vl->attrsz[a];
-      if (!sz)
+      if (!sz) {
+         /* a list without positions (an empty GL_LINE_LOOP's closing
+          * vertex, convert_line_loop_to_strip): the draw reads the current
+          * value of attribute 0, (0, 0, 0, 1) */
+         if (a == FGL_ATTR_POS)
+            for (unsigned c = 0; c < 4; c++)
+               dst->attr[a][c] = attr_default[c];
          continue;
+      }
       for (unsigned c = 0; c < 4; c++)
          dst->attr[a][c] = c < sz ? src[c] : attr_default[c];
       src += sz;
