@@ -56,6 +56,7 @@
  * llvmpipe/lp_screen.c, lp_limits.h] */
 #define FGL_MAX_TEXTURE_SIZE           16384   /* LP_MAX_TEXTURE_2D_LEVELS 15 */
 #define FGL_MAX_3D_TEXTURE_SIZE        2048    /* LP_MAX_TEXTURE_3D_LEVELS 12 */
+#define FGL_MAX_3D_TEXTURE_LEVELS      12      /* Const.Max3DTextureLevels */
 #define FGL_MAX_CUBE_MAP_TEXTURE_SIZE  16384   /* LP_MAX_TEXTURE_CUBE_LEVELS 15 */
 #define FGL_MAX_TEXTURE_LOD_BIAS       16.0f
 #define FGL_MAX_EVAL_ORDER             30      /* MAX_EVAL_ORDER */
@@ -403,11 +404,13 @@ struct fgl_texture_attrib {
 #define FGL_MAX_TEXTURE_LEVELS 15   /* LP_MAX_TEXTURE_2D_LEVELS */
 struct fgl_texture_image {
    GLint Width, Height, Border;     /* Height 1 for 1D images */
+   GLint Depth;                     /* 1 for 1D and 2D images */
    GLenum InternalFormat;           /* as the application gave it */
    GLenum BaseFormat;               /* GL_RGBA, GL_RGB, GL_LUMINANCE,
                                      * GL_LUMINANCE_ALPHA, GL_ALPHA or
                                      * GL_INTENSITY */
-   uint8_t *Data;                   /* Width * Height RGBA8 texels */
+   uint8_t *Data;                   /* Width * Height * Depth RGBA8
+                                     * texels, slice by slice */
    /* the oracle's pipe format for the image (its channel bits, which
     * glGetTexLevelParameter reports; main/teximage.c) */
    const struct fgl_tex_pipe_format *Format;
@@ -471,9 +474,9 @@ struct fgl_texture_local {
    /* the LOD bias of units 8..191: glPopAttrib restores only the
     * fixed-function units' (attrib.c:pop_texture_group) */
    float ImageLodBias[FGL_IMAGE_ONLY_UNITS];
-   /* the proxy objects of GL_PROXY_TEXTURE_1D and _2D: images without
-    * texels */
-   struct fgl_texture_object Proxy[2];
+   /* the proxy objects of GL_PROXY_TEXTURE_1D, _2D and _3D: images
+    * without texels */
+   struct fgl_texture_object Proxy[3];
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample

@@ -109,7 +109,8 @@ static void update_texture_general(const struct fgl_context *ctx, unsigned u,
    /* use_aos needs util_format_fits_8unorm [S: lp_bld_sample_soa.c:
     * lp_build_sample_soa_code] */
    rt->float_path = !(rt->wrap_s <= R_WRAP_CLAMP_TO_EDGE &&
-                      (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE)) ||
+                      (rt->dims == 1 || rt->wrap_t <= R_WRAP_CLAMP_TO_EDGE) &&
+                      (rt->dims < 3 || rt->wrap_r <= R_WRAP_CLAMP_TO_EDGE)) ||
                     !fgl_tex_image_fits_unorm8(t->Image[rt->first_level]);
    rt->soa = rt->float_path || rt->lod_bias_non_zero || rt->min_max_lod_equal ||
              rt->apply_min_lod || rt->apply_max_lod;
@@ -167,7 +168,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
 {
    int max_level = t->BaseLevel;
    fgl_texture_complete(t, &max_level);
-   rt->dims = target == GL_TEXTURE_1D ? 1 : 2;
+   rt->dims = target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
    rt->first_level = t->BaseLevel;
    const bool mipmapped = t->MinFilter != GL_NEAREST && t->MinFilter != GL_LINEAR;
    rt->last_level = mipmapped ? max_level : t->BaseLevel;
@@ -175,6 +176,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
       const struct fgl_texture_image *img = t->Image[l];
       rt->level[l].width = img->Width;
       rt->level[l].height = rt->dims == 1 ? 1 : img->Height;
+      rt->level[l].depth = rt->dims == 3 ? img->Depth : 1;
       rt->level[l].data = img->Data;
       /* the stored values of a format that is not 8 bits per channel,
        * for the float path */
@@ -190,8 +192,10 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    const struct fgl_texture_image *base = t->Image[rt->first_level];
    const int w0 = t->Image[0] ? t->Image[0]->Width : base->Width << rt->first_level;
    const int h0 = t->Image[0] ? t->Image[0]->Height : base->Height << rt->first_level;
+   const int d0 = t->Image[0] ? t->Image[0]->Depth : base->Depth << rt->first_level;
    rt->pot_s = is_pot(w0);
    rt->pot_t = rt->dims == 1 || is_pot(h0);
+   rt->pot_r = rt->dims < 3 || is_pot(d0);
    switch (t->MinFilter) {
    case GL_NEAREST:                rt->min_img = R_TEX_NEAREST; rt->mip = R_MIP_NONE; break;
    case GL_LINEAR:                 rt->min_img = R_TEX_LINEAR;  rt->mip = R_MIP_NONE; break;
@@ -204,6 +208,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    rt->mag_img = t->MagFilter == GL_NEAREST ? R_TEX_NEAREST : R_TEX_LINEAR;
    rt->wrap_s = tex_wrap(t->WrapS);
    rt->wrap_t = tex_wrap(t->WrapT);
+   rt->wrap_r = rt->dims == 3 ? tex_wrap(t->WrapR) : R_WRAP_REPEAT;
    update_texture_general(ctx, u, t, rt);
 }
 

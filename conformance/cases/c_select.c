@@ -1430,6 +1430,34 @@ static void stale_layout(fc_h *h)
 static void stress_unlit(fc_h *h) { stress(h, false); }
 static void stress_lit(fc_h *h) { stress(h, true); }
 
+/* An empty GL_LINE_LOOP in a display list: Mesa's list compiler closes the
+ * loop with a copy of its first vertex, of which there is none, so the
+ * replay draws a one-vertex line strip whose position is the current
+ * value of attribute 0, (0, 0, 0, 1): a hit at the middle of the depth
+ * range, under GL_SELECT and GL_FEEDBACK (fuzzer seed 76). */
+static void dlist_empty_line_loop(fc_h *h)
+{
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glBegin(GL_LINE_LOOP);
+    glNormal3b(1, 2, 3);
+    glEnd();
+    glEndList();
+    glDepthRange(0.2, 0.9);
+    sel_begin(64);
+    glCallList(list);
+    sel_end(h, "select", 8);
+    glDepthRange(0.0, 1.0);
+    sel_begin(64);
+    glCallList(list);
+    sel_end(h, "select_full_range", 8);
+    fb_begin(64, GL_3D_COLOR);
+    glCallList(list);
+    fb_end(h, "feedback", 16);
+    fc_error(h, "empty_line_loop");
+    glDeleteLists(list, 1);
+}
+
 const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("select/picking", 64, 48, 0, "api select", picking),
     FC_CASE_RGBA("select/hit_depths", 32, 32, 0, "api select clip", hit_depths),
@@ -1457,5 +1485,6 @@ const fc_case fc_cases_select[] = {
     FC_CASE_RGBA("feedback/stale_layout", 32, 32, 0, "api feedback clip lighting", stale_layout),
     FC_CASE_RGBA("feedback/stress_unlit", 48, 40, 0, "api feedback select clip polygon", stress_unlit),
     FC_CASE_RGBA("feedback/stress_lit", 48, 40, 0, "api feedback select clip polygon lighting", stress_lit),
+    FC_CASE_RGBA("select/dlist_empty_line_loop", 16, 16, 0, "api select feedback dlist", dlist_empty_line_loop),
     { 0 }
 };

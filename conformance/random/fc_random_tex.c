@@ -4,9 +4,11 @@
  * results (texture names are fixed, never from glGenTextures).
  *
  * A scene: a clear, viewport, depth range and projection from the plain
- * generator's helpers, then one texture (1D or 2D) built with glTexImage:
+ * generator's helpers, then one texture (1D, 2D or 3D) built with glTexImage:
  *   - sizes powers of two or not (1 to 64 texels a side), every 8-bit
  *     internal format of GL 1.x (RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA,
+ *     (3D: depths of the same sizes, its own wrap on r, chosen from a
+ *     stream of its own so that the other scenes stay as they were)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -105,6 +107,10 @@ struct profile {
     int unit1;                  /* a second unit: 0 off, 1 texgen, 2 a constant coordinate */
     GLenum env1;
     int pixels;                 /* pixel operations after the primitives */
+    /* from a stream of its own (tex_scene): a 3D texture rather than 2D,
+     * its wrap on r */
+    int tex3d;
+    GLenum wrap_r;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -172,10 +178,11 @@ static unsigned char texel_byte(fc_rng *r)
 
 /* Uploads one level (w x h texels of n components, rows padded to align)
  * with a pattern: 0 random, 1 checker, 2 gradient, 3 one colour. */
-static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h,
-                         int pattern, int align)
+static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h0,
+                         int d, int pattern, int align)
 {
     const int n = src_components[p->src];
+    const int h = h0 * d;   /* a 3D image: d slices of h0 rows, one pattern */
     const size_t row = ((size_t)(w * n) + (size_t)align - 1) / (size_t)align * (size_t)align;
     const size_t bytes = row * (size_t)h;
     unsigned char *img = calloc(bytes ? bytes : 1, 1);
@@ -198,7 +205,10 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
             }
         }
     }
-    if (p->tex1d)
+    if (p->tex3d)
+        fct_glTexImage3D(GL_TEXTURE_3D, level, p->internal, w, h0, d, 0, src_formats[p->src],
+                         GL_UNSIGNED_BYTE, img, bytes);
+    else if (p->tex1d)
         fct_glTexImage1D(GL_TEXTURE_1D, level, p->internal, w, 0, src_formats[p->src],
                          GL_UNSIGNED_BYTE, img, bytes);
     else
@@ -210,23 +220,27 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
 static void random_texture(struct scene *s, const struct profile *p)
 {
     fc_rng *r = &s->r;
-    const GLenum target = p->tex1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+    const GLenum target = p->tex3d ? GL_TEXTURE_3D : p->tex1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
     fct_glBindTexture(target, 1 + fc_rng_below(r, 3));
     static const int aligns[4] = { 1, 2, 4, 8 };
     GLint align = aligns[fc_rng_below(r, 4)];
     fct_glPixelStorei(GL_UNPACK_ALIGNMENT, align);
     int w = tex_size(r, p->npot), h = p->tex1d ? 1 : tex_size(r, p->npot);
+    /* 3D: at most 16 texels deep */
+    int d = p->tex3d ? 1 + (tex_size(r, p->npot) - 1) % 16 : 1;
     const int pattern = (int)fc_rng_below(r, 3);
-    upload_level(r, p, 0, w, h, pattern, align);
+    upload_level(r, p, 0, w, h, d, pattern, align);
     const int mipmapped = p->min_filter != GL_NEAREST && p->min_filter != GL_LINEAR;
     if (mipmapped || fc_rng_chance(r, 10)) {
         const int skip = p->mip == 2 ? fc_rng_range(r, 1, 6) : -1;
-        for (int level = 1; w > 1 || h > 1; level++) {
+        for (int level = 1; w > 1 || h > 1 || d > 1; level++) {
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
+            d = d > 1 ? d / 2 : 1;
             if (level == skip)
                 continue;
-            upload_level(r, p, level, w, h, p->mip == 1 ? 3 : (int)fc_rng_below(r, 4), align);
+            upload_level(r, p, level, w, h, d, p->mip == 1 ? 3 : (int)fc_rng_below(r, 4),
+                         align);
         }
     }
     fct_glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)p->min_filter);
@@ -234,6 +248,8 @@ static void random_texture(struct scene *s, const struct profile *p)
     fct_glTexParameteri(target, GL_TEXTURE_WRAP_S, (GLint)p->wrap_s);
     if (!p->tex1d)
         fct_glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)p->wrap_t);
+    if (p->tex3d)
+        fct_glTexParameteri(target, GL_TEXTURE_WRAP_R, (GLint)p->wrap_r);
     if (p->border_color) {
         GLfloat c[4];
         for (int i = 0; i < 4; i++)
@@ -565,6 +581,14 @@ static void tex_scene(fc_h *h)
     fc_random_tex_parse(c->name, &seed, &index);
     fc_rng k = fc_rng_make(seed, index % FC_TEX_PROFILES, 12);
     make_profile(&k, &p);
+    {
+        /* 3D textures in one scene structure of eight, from a stream of
+         * their own */
+        fc_rng k3 = fc_rng_make(seed, index % FC_TEX_PROFILES, 15);
+        p.tex3d = !p.tex1d && fc_rng_chance(&k3, 12);
+        p.wrap_r = fc_rng_chance(&k3, 60) ? wraps[fc_rng_below(&k3, 2)]
+                                          : wraps[fc_rng_below(&k3, 5)];
+    }
     fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
     s.r = fc_rng_make(seed, index, 11);
     s.w = c->width;

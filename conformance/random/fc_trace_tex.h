@@ -72,6 +72,17 @@ static inline void fct_glTexImage2D(GLenum target, GLint level, GLint internal, 
                 (unsigned)type);
     glTexImage2D(target, level, internal, w, h, border, format, type, pixels);
 }
+static inline void fct_glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w,
+                                    GLsizei h, GLsizei d, GLint border, GLenum format,
+                                    GLenum type, const void *pixels, size_t bytes)
+{
+    fct_trace_image(pixels, bytes);
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "glTexImage3D(%#x, %d, %#x, %d, %d, %d, %d, %#x, %#x, img); }\n",
+                (unsigned)target, level, (unsigned)internal, w, h, d, border, (unsigned)format,
+                (unsigned)type);
+    glTexImage3D(target, level, internal, w, h, d, border, format, type, pixels);
+}
 static inline void fct_glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w,
                                     GLint border, GLenum format, GLenum type,
                                     const void *pixels, size_t bytes)

@@ -109,6 +109,13 @@ enum dl_opcode {
                             * height, border */
    DL_OP_COPY_TEX_SUB_IMAGE, /* dims, target, level, xoffset, yoffset, x, y,
                               * width, height */
+   DL_OP_TEX_IMAGE_3D,     /* target, level, internal, width, height, depth,
+                            * border, format, type, pointer to the image */
+   DL_OP_TEX_SUB_IMAGE_3D, /* target, level, xoffset, yoffset, zoffset, width,
+                            * height, depth, format, type, pointer to the
+                            * image */
+   DL_OP_COPY_TEX_SUB_IMAGE_3D, /* target, level, xoffset, yoffset, zoffset,
+                                 * x, y, width, height */
    DL_OP_VERTEX_LIST,      /* pointer to a struct vertex_list */
    DL_OP_END_OF_LIST,
 };
@@ -331,8 +338,11 @@ static void delete_list(struct display_list *dl)
          fgl_free(get_pointer(&n[7]));
       else if (n->h.op == DL_OP_DRAW_PIXELS)
          fgl_free(get_pointer(&n[5]));
-      else if (n->h.op == DL_OP_TEX_IMAGE || n->h.op == DL_OP_TEX_SUB_IMAGE)
+      else if (n->h.op == DL_OP_TEX_IMAGE || n->h.op == DL_OP_TEX_SUB_IMAGE ||
+               n->h.op == DL_OP_TEX_IMAGE_3D)
          fgl_free(get_pointer(&n[10]));
+      else if (n->h.op == DL_OP_TEX_SUB_IMAGE_3D)
+         fgl_free(get_pointer(&n[11]));
    }
    fgl_free(dl->nodes);
    fgl_free(dl);
@@ -977,8 +987,15 @@ static void fetch_vertex(const struct vertex_list *vl, const float *src,
 {
    for (int a = 0; a < FGL_ATTR_COUNT; a++) {
       const unsigned sz = vl->attrsz[a];
-      if (!sz)
+      if (!sz) {
+         /* a list without positions (an empty GL_LINE_LOOP's closing
+          * vertex, convert_line_loop_to_strip): the draw reads the current
+          * value of attribute 0, (0, 0, 0, 1) */
+         if (a == FGL_ATTR_POS)
+            for (unsigned c = 0; c < 4; c++)
+               dst->attr[a][c] = attr_default[c];
          continue;
+      }
       for (unsigned c = 0; c < 4; c++)
          dst->attr[a][c] = c < sz ? src[c] : attr_default[c];
       src += sz;
@@ -2248,6 +2265,137 @@ bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum ta
    return ctx->ExecuteFlag;
 }
 
+/* [S: dlist.c:unpack_image with three dimensions] a w x h x d client
+ * image in the default packing, slice after slice; NULL as
+ * copy_client_image (a depth of 0 included) */
+static void *copy_client_image_3d(struct fgl_context *ctx, GLsizei width, GLsizei height,
+                                  GLsizei depth, GLenum format, GLenum type,
+                                  const void *pixels)
+{
+   if (!pixels || width <= 0 || height <= 0 || depth <= 0 || type == GL_BITMAP)
+      return NULL;
+   const size_t bpp = fgl_pixel_bytes(format, type);
+   if (bpp == 0)
+      return NULL;
+   const size_t slice_bytes = bpp * (size_t)width * (size_t)height;
+   uint8_t *image = fgl_malloc_gl(ctx, slice_bytes * (size_t)depth);
+   if (!image) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return NULL;
+   }
+   /* each slice is a 2D image at its slice's address (image.c:
+    * _mesa_image_offset), copied by copy_client_image */
+   const struct fgl_pixelstore save = ctx->Unpack;
+   const size_t rows = (size_t)(save.ImageHeight > 0 ? save.ImageHeight : height);
+   const size_t stride = fgl_image_row_stride(&save, width, format, type);
+   bool ok = true;
+   for (GLsizei k = 0; k < depth && ok; k++) {
+      const uint8_t *src =
+         (const uint8_t *)pixels + ((size_t)save.SkipImages + (size_t)k) * rows * stride;
+      uint8_t *slice = copy_client_image(ctx, width, height, format, type, src);
+      if (slice) {
+         memcpy(image + (size_t)k * slice_bytes, slice, slice_bytes);
+         fgl_free(slice);
+      } else {
+         ok = false;
+      }
+   }
+   if (!ok) {
+      fgl_free(image);
+      return NULL;
+   }
+   return image;
+}
+
+/* save_TexImage3D: as fgl_save_tex_image */
+bool fgl_save_tex_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                           GLint internal, GLsizei width, GLsizei height, GLsizei depth,
+                           GLint border, GLenum format, GLenum type, const void *pixels)
+{
+   if (target == GL_PROXY_TEXTURE_3D)
+      return true;
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_TEX_IMAGE_3D, 9 + PTR_NODES);
+   if (n) {
+      n[1].e = target;
+      n[2].i = level;
+      n[3].i = internal;
+      n[4].i = width;
+      n[5].i = height;
+      n[6].i = depth;
+      n[7].i = border;
+      n[8].e = format;
+      n[9].e = type;
+      put_pointer(&n[10],
+                  copy_client_image_3d(ctx, width, height, depth, format, type, pixels));
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_TexSubImage3D */
+bool fgl_save_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                               GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width,
+                               GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                               const void *pixels)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_TEX_SUB_IMAGE_3D, 10 + PTR_NODES);
+   if (n) {
+      n[1].e = target;
+      n[2].i = level;
+      n[3].i = xoffset;
+      n[4].i = yoffset;
+      n[5].i = zoffset;
+      n[6].i = width;
+      n[7].i = height;
+      n[8].i = depth;
+      n[9].e = format;
+      n[10].e = type;
+      put_pointer(&n[11],
+                  copy_client_image_3d(ctx, width, height, depth, format, type, pixels));
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* save_CopyTexSubImage3D */
+bool fgl_save_copy_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                                    GLint xoffset, GLint yoffset, GLint zoffset, GLint x,
+                                    GLint y, GLsizei width, GLsizei height)
+{
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_COPY_TEX_SUB_IMAGE_3D, 9);
+   if (n) {
+      n[1].e = target;
+      n[2].i = level;
+      n[3].i = xoffset;
+      n[4].i = yoffset;
+      n[5].i = zoffset;
+      n[6].i = x;
+      n[7].i = y;
+      n[8].i = width;
+      n[9].i = height;
+   }
+   return ctx->ExecuteFlag;
+}
+
+/* OPCODE_TEX_IMAGE3D / OPCODE_TEX_SUB_IMAGE3D: the stored image under
+ * ctx->DefaultPacking */
+static void exec_tex_image_3d_node(struct fgl_context *ctx, const union dl_node *n)
+{
+   const struct fgl_pixelstore save = ctx->Unpack;
+   ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
+   if (n->h.op == DL_OP_TEX_IMAGE_3D)
+      glTexImage3D(n[1].e, n[2].i, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].e, n[9].e,
+                   get_pointer(&n[10]));
+   else
+      glTexSubImage3D(n[1].e, n[2].i, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].i,
+                      n[9].e, n[10].e, get_pointer(&n[11]));
+   ctx->Unpack = save;
+}
+
 /* OPCODE_TEX_IMAGE*D / OPCODE_TEX_SUB_IMAGE*D: the stored image under
  * ctx->DefaultPacking */
 static void exec_tex_image_node(struct fgl_context *ctx, const union dl_node *n)
@@ -2529,6 +2677,14 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
             glCopyTexImage1D(n[2].e, n[3].i, n[4].e, n[5].i, n[6].i, n[7].i, n[9].i);
          else
             glCopyTexImage2D(n[2].e, n[3].i, n[4].e, n[5].i, n[6].i, n[7].i, n[8].i, n[9].i);
+         break;
+      case DL_OP_TEX_IMAGE_3D:
+      case DL_OP_TEX_SUB_IMAGE_3D:
+         exec_tex_image_3d_node(ctx, n);
+         break;
+      case DL_OP_COPY_TEX_SUB_IMAGE_3D:
+         glCopyTexSubImage3D(n[1].e, n[2].i, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].i,
+                             n[9].i);
          break;
       case DL_OP_COPY_TEX_SUB_IMAGE:
          if (n[1].u == 1)

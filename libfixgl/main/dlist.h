@@ -146,6 +146,17 @@ bool fgl_save_copy_tex_image(struct fgl_context *ctx, GLuint dims, GLenum target
 bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum target,
                                  GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
                                  GLsizei width, GLsizei height);
+/* the same for glTexImage3D, glTexSubImage3D, glCopyTexSubImage3D */
+bool fgl_save_tex_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                           GLint internal, GLsizei width, GLsizei height, GLsizei depth,
+                           GLint border, GLenum format, GLenum type, const void *pixels);
+bool fgl_save_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                               GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width,
+                               GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                               const void *pixels);
+bool fgl_save_copy_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
+                                    GLint xoffset, GLint yoffset, GLint zoffset, GLint x,
+                                    GLint y, GLsizei width, GLsizei height);
 
 /* A vertex attribute call (glVertex, glColor, glNormal, glEdgeFlag,
  * glArrayElement's attributes): compiled while compiling, else executed. */

@@ -1,8 +1,11 @@
 /*
  * Texture images (Mesa 22.3 main/teximage.c, texstore.c, texgetimage.c,
  * texparam.c, state_tracker/st_format.c, st_cb_texture.c):
- * glTexImage1D/2D, glTexSubImage1D/2D, glCopyTexImage1D/2D,
- * glCopyTexSubImage1D/2D, glGetTexImage, glGetTexLevelParameter{fv,iv}.
+ * glTexImage1D/2D/3D, glTexSubImage1D/2D/3D, glCopyTexImage1D/2D,
+ * glCopyTexSubImage1D/2D/3D (and GL_EXT_texture3D's names), glGetTexImage,
+ * glGetTexLevelParameter{fv,iv}.  A 3D image is Depth slices of
+ * Width x Height texels, each unpacked and packed as a 2D image at the
+ * offset of its slice (GL_*_IMAGE_HEIGHT, GL_*_SKIP_IMAGES).
  *
  * Images are stored as RGBA8 texels expanded from their base format
  * (struct fgl_texture_image).  The oracle stores each image in the pipe
@@ -13,6 +16,9 @@
  * sampler and glGetTexImage's 8-bit conversions expand them (img->Data),
  * so that every value the oracle can read back is the one fixgl holds.
  */
+/* GL_EXT_texture3D's names are declared by <GL/glext.h> only with
+ * GL_GLEXT_PROTOTYPES */
+#define GL_GLEXT_PROTOTYPES 1
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -371,7 +377,8 @@ static void rebase_texel(GLenum base, const uint8_t c[4], uint8_t *t)
 
 static bool is_proxy(GLenum target)
 {
-   return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+   return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
+          target == GL_PROXY_TEXTURE_3D;
 }
 
 /* The object an image call on `target` changes: the bound object, or the
@@ -381,19 +388,37 @@ static struct fgl_texture_object *target_object(struct fgl_context *ctx, GLenum 
    switch (target) {
    case GL_PROXY_TEXTURE_1D: return &ctx->TexLocal.Proxy[0];
    case GL_PROXY_TEXTURE_2D: return &ctx->TexLocal.Proxy[1];
+   case GL_PROXY_TEXTURE_3D: return &ctx->TexLocal.Proxy[2];
    default: return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
    }
 }
 
-/* [S: teximage.c:_mesa_legal_texture_dimensions] with NPOT textures */
-static bool legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint border)
+/* [S: teximage.c:_mesa_legal_texture_dimensions] with NPOT textures; 3D
+ * images are limited by 1 << (Max3DTextureLevels - 1) */
+static bool legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
+                             GLint border)
 {
-   const GLint max = FGL_MAX_TEXTURE_SIZE >> level;
+   const GLint max = (dims == 3 ? FGL_MAX_3D_TEXTURE_SIZE : FGL_MAX_TEXTURE_SIZE) >> level;
    if (w < 2 * border || w > 2 * border + max)
       return false;
-   if (dims == 2 && (h < 2 * border || h > 2 * border + max))
+   if (dims >= 2 && (h < 2 * border || h > 2 * border + max))
+      return false;
+   if (dims == 3 && (d < 2 * border || d > 2 * border + max))
       return false;
    return true;
+}
+
+/* [S: teximage.c:_mesa_max_texture_levels] */
+static int max_levels(GLenum target)
+{
+   switch (target) {
+   case GL_TEXTURE_3D: case GL_PROXY_TEXTURE_3D:
+      return FGL_MAX_3D_TEXTURE_LEVELS;
+   case GL_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_RECTANGLE:
+      return 1;
+   default:
+      return FGL_MAX_TEXTURE_LEVELS;
+   }
 }
 
 static unsigned logbase2(unsigned n)
@@ -406,29 +431,36 @@ static unsigned logbase2(unsigned n)
 
 /* [S: st_cb_texture.c:st_TestProxyTexImage, lp_texture.c:
  * llvmpipe_texture_layout, llvmpipe_can_create_resource] the oracle
- * sizes a full mipmap chain from (w, h) (the proxy object's filter is
+ * sizes a full mipmap chain from (w, h, d) (the proxy object's filter is
  * the default mipmap one): rows of 4-aligned width padded to the 64-byte
- * cache line, 2D heights aligned to 4, levels aligned to 64 bytes; more
- * than LP_MAX_TEXTURE_SIZE (2 GiB) does not fit. */
-static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, GLint h)
+ * cache line, 2D and 3D heights aligned to 4, a 3D level d such images,
+ * levels aligned to 64 bytes; more than LP_MAX_TEXTURE_SIZE (2 GiB) does
+ * not fit. */
+static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, GLint h,
+                    GLint d)
 {
-   if (w == 0 || h == 0)
+   if (w == 0 || h == 0 || d == 0)
       return true;
    uint64_t total = 0;
-   unsigned width = (unsigned)w, height = (unsigned)h;
-   const unsigned last = logbase2(width > height ? width : height);
+   unsigned width = (unsigned)w, height = (unsigned)h, depth = (unsigned)d;
+   unsigned larger = width > height ? width : height;
+   larger = larger > depth ? larger : depth;
+   const unsigned last = logbase2(larger);
    for (unsigned l = 0; l <= last; l++) {
       const uint64_t aw = (width + 3u) & ~3u;
       const uint64_t ah = dims == 1 ? height : ((height + 3u) & ~3u);
       const uint64_t stride = (aw * pf->bytes + 63u) & ~(uint64_t)63u;
-      total += (stride * ah + 63u) & ~(uint64_t)63u;
+      total += (stride * ah * depth + 63u) & ~(uint64_t)63u;
+      if (total > 2ull * 1024 * 1024 * 1024)
+         return false;
       width = width > 1 ? width >> 1 : 1;
       height = height > 1 ? height >> 1 : 1;
+      depth = depth > 1 ? depth >> 1 : 1;
    }
-   return total <= 2ull * 1024 * 1024 * 1024;
+   return true;
 }
 
-static struct fgl_texture_image *new_image(int w, int h, int border, GLint internal,
+static struct fgl_texture_image *new_image(int w, int h, int d, int border, GLint internal,
                                            GLenum base, const struct fgl_tex_pipe_format *pf)
 {
    struct fgl_texture_image *img = fgl_calloc(1, sizeof(*img));
@@ -436,6 +468,7 @@ static struct fgl_texture_image *new_image(int w, int h, int border, GLint inter
       return NULL;
    img->Width = w;
    img->Height = h;
+   img->Depth = d;
    img->Border = border;
    img->InternalFormat = (GLenum)internal;
    img->BaseFormat = base;
@@ -459,7 +492,7 @@ static void set_image(struct fgl_texture_object *t, GLint level,
  * storage reads; false (nothing allocated) when out of memory. */
 static bool alloc_texels(struct fgl_texture_image *img)
 {
-   const size_t n = (size_t)img->Width * (size_t)img->Height;
+   const size_t n = (size_t)img->Width * (size_t)img->Height * (size_t)img->Depth;
    img->Data = fgl_malloc(n ? n * 4 : 4);
    if (needs_store(img->Format)) {
       channel_bits(img->Format, img->BaseFormat, img->StoreBits);
@@ -479,13 +512,14 @@ static bool alloc_texels(struct fgl_texture_image *img)
    return true;
 }
 
-/* Unpacks a w x h client image into texels (x, y) of img. */
-static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
-                         const struct fgl_pixelstore *unpack, int x, int y, int w, int h,
-                         GLenum format, GLenum type, const void *pixels)
+/* Unpacks a w x h client image into texels (x, y) of slice z of img. */
+static bool store_rect(struct fgl_context *ctx, struct fgl_texture_image *img,
+                       const struct fgl_pixelstore *unpack, int x, int y, int z, int w, int h,
+                       GLenum format, GLenum type, const void *pixels)
 {
    if (!pixels || w == 0 || h == 0)
       return true;
+   const size_t slice = (size_t)z * (size_t)img->Height;
    if (img->Store) {
       /* the stored values straight from the client data: a float or
        * 16-bit source reaches a wide format without an 8-bit step */
@@ -501,7 +535,7 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
          return false;
       }
       for (int j = 0; j < h; j++)
-         put_stored(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
+         put_stored(img, (slice + (size_t)(y + j)) * (size_t)img->Width + (size_t)x,
                     q + 4 * (size_t)j * (size_t)w, (size_t)w);
       fgl_free(q);
       return true;
@@ -519,9 +553,35 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
       return false;
    }
    for (int j = 0; j < h; j++)
-      put_texels(img, (size_t)(y + j) * (size_t)img->Width + (size_t)x,
+      put_texels(img, (slice + (size_t)(y + j)) * (size_t)img->Width + (size_t)x,
                  tmp + 4 * (size_t)j * (size_t)w, (size_t)w, false);
    fgl_free(tmp);
+   return true;
+}
+
+/* The client address of slice k of a w x h x d image [S: image.c:
+ * _mesa_image_offset]: slices of ImageHeight rows (the image's height when
+ * 0), SkipImages slices skipped; within it the 2D addressing applies. */
+static const void *slice_address(const struct fgl_pixelstore *p, const void *pixels, int w,
+                                 int h, GLenum format, GLenum type, int k)
+{
+   const size_t rows = (size_t)(p->ImageHeight > 0 ? p->ImageHeight : h);
+   const size_t stride = fgl_image_row_stride(p, w, format, type);
+   return (const uint8_t *)pixels + ((size_t)p->SkipImages + (size_t)k) * rows * stride;
+}
+
+/* Unpacks a w x h x d client image of a `dims`-dimensional call into
+ * texels (x, y, z) of img (1D and 2D calls ignore the image modes). */
+static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
+                         const struct fgl_pixelstore *unpack, GLuint dims, int x, int y, int z,
+                         int w, int h, int d, GLenum format, GLenum type, const void *pixels)
+{
+   if (!pixels)
+      return true;
+   for (int k = 0; k < d; k++)
+      if (!store_rect(ctx, img, unpack, x, y, z + k, w, h, format, type,
+                      dims < 3 ? pixels : slice_address(unpack, pixels, w, h, format, type, k)))
+         return false;
    return true;
 }
 
@@ -545,53 +605,73 @@ static uint8_t lerp8(int w, int a, int b)
  * the 8-bit formats, POT and NPOT sizes, 1D (texture/genmipmap_*); the
  * formats of other than 8 bits per channel are blitted here from their
  * 8-bit values (not checked). */
+/* The two texels and the 8.8 weight of texel i of n along an axis of the
+ * level above (n_src texels), as check_gen_mipmap's blit samples it. */
+static void gen_axis(int i, int n, int n_src, int *i0, int *i1, int *w)
+{
+   const long f = lrintf(((float)i + 0.5f) / (float)n * (float)n_src * 256.0f) - 128;
+   int a = (int)(f >> 8), b = a + 1;
+   *w = (int)(f & 255);
+   *i0 = a < 0 ? 0 : a > n_src - 1 ? n_src - 1 : a;
+   *i1 = b < 0 ? 0 : b > n_src - 1 ? n_src - 1 : b;
+}
+
 static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object *t,
                              GLint level)
 {
    if (!t->GenerateMipmap || level != t->BaseLevel || level >= t->MaxLevel)
       return;
    const struct fgl_texture_image *base = t->Image[level];
-   if (!base || base->Width == 0 || base->Height == 0)
+   if (!base || base->Width == 0 || base->Height == 0 || base->Depth == 0)
       return;
-   GLint last = level + (GLint)logbase2((unsigned)(base->Width > base->Height ? base->Width
-                                                                              : base->Height));
+   unsigned larger = (unsigned)(base->Width > base->Height ? base->Width : base->Height);
+   larger = larger > (unsigned)base->Depth ? larger : (unsigned)base->Depth;
+   GLint last = level + (GLint)logbase2(larger);
    if (last > t->MaxLevel)
       last = t->MaxLevel;
-   if (last > FGL_MAX_TEXTURE_LEVELS - 1)
-      last = FGL_MAX_TEXTURE_LEVELS - 1;
+   const GLint max_level = (base->Depth > 1 || t->Target == GL_TEXTURE_3D)
+                              ? FGL_MAX_3D_TEXTURE_LEVELS - 1
+                              : FGL_MAX_TEXTURE_LEVELS - 1;
+   if (last > max_level)
+      last = max_level;
    for (GLint l = level + 1; l <= last; l++) {
       const struct fgl_texture_image *src = t->Image[l - 1];
-      const int W = src->Width, H = src->Height;
-      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
-      struct fgl_texture_image *img = new_image(w, h, 0, (GLint)base->InternalFormat,
+      const int W = src->Width, H = src->Height, D = src->Depth;
+      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1, d = D > 1 ? D >> 1 : 1;
+      struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)base->InternalFormat,
                                                 base->BaseFormat, base->Format);
       if (!img || !alloc_texels(img)) {
          fgl_free(img);
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
-      for (int j = 0; j < h; j++) {
-         const long ft = lrintf(((float)j + 0.5f) / (float)h * (float)H * 256.0f) - 128;
-         int y0 = (int)(ft >> 8);
-         const int wt = (int)(ft & 255);
-         int y1 = y0 + 1;
-         y0 = y0 < 0 ? 0 : y0 > H - 1 ? H - 1 : y0;
-         y1 = y1 < 0 ? 0 : y1 > H - 1 ? H - 1 : y1;
-         for (int i = 0; i < w; i++) {
-            const long fs = lrintf(((float)i + 0.5f) / (float)w * (float)W * 256.0f) - 128;
-            int x0 = (int)(fs >> 8);
-            const int ws = (int)(fs & 255);
-            int x1 = x0 + 1;
-            x0 = x0 < 0 ? 0 : x0 > W - 1 ? W - 1 : x0;
-            x1 = x1 < 0 ? 0 : x1 > W - 1 ? W - 1 : x1;
-            const uint8_t *a = src->Data + 4 * ((size_t)y0 * (size_t)W + (size_t)x0);
-            const uint8_t *b = src->Data + 4 * ((size_t)y0 * (size_t)W + (size_t)x1);
-            const uint8_t *c = src->Data + 4 * ((size_t)y1 * (size_t)W + (size_t)x0);
-            const uint8_t *d = src->Data + 4 * ((size_t)y1 * (size_t)W + (size_t)x1);
-            uint8_t texel[4];
-            for (int k = 0; k < 4; k++)
-               texel[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, c[k], d[k]));
-            put_texels(img, (size_t)j * (size_t)w + (size_t)i, texel, 1, false);
+      for (int k = 0; k < d; k++) {
+         int z0, z1, wr;
+         gen_axis(k, d, D, &z0, &z1, &wr);
+         for (int j = 0; j < h; j++) {
+            int y0, y1, wt;
+            gen_axis(j, h, H, &y0, &y1, &wt);
+            for (int i = 0; i < w; i++) {
+               int x0, x1, ws;
+               gen_axis(i, w, W, &x0, &x1, &ws);
+               uint8_t texel[2][4];
+               for (int z = 0; z < 2; z++) {
+                  const size_t row0 = ((size_t)(z ? z1 : z0) * (size_t)H + (size_t)y0) * (size_t)W;
+                  const size_t row1 = ((size_t)(z ? z1 : z0) * (size_t)H + (size_t)y1) * (size_t)W;
+                  const uint8_t *a = src->Data + 4 * (row0 + (size_t)x0);
+                  const uint8_t *b = src->Data + 4 * (row0 + (size_t)x1);
+                  const uint8_t *c = src->Data + 4 * (row1 + (size_t)x0);
+                  const uint8_t *e = src->Data + 4 * (row1 + (size_t)x1);
+                  for (int n = 0; n < 4; n++)
+                     texel[z][n] = lerp8(wt, lerp8(ws, a[n], b[n]), lerp8(ws, c[n], e[n]));
+               }
+               /* 3D: the two slices' bilinear values along r */
+               if (D > 1)
+                  for (int n = 0; n < 4; n++)
+                     texel[0][n] = lerp8(wr, texel[0][n], texel[1][n]);
+               put_texels(img, ((size_t)k * (size_t)h + (size_t)j) * (size_t)w + (size_t)i,
+                          texel[0], 1, false);
+            }
          }
       }
       set_image(t, l, img);
@@ -605,26 +685,30 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
 
 /* [S: teximage.c:teximage, texture_error_check] */
 static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
-                      GLsizei width, GLsizei height, GLint border, GLenum format,
-                      GLenum type, const void *pixels)
+                      GLsizei width, GLsizei height, GLsizei depth, GLint border,
+                      GLenum format, GLenum type, const void *pixels)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (ctx->CompileFlag && !fgl_save_tex_image(ctx, dims, target, level, internal, width,
-                                               height, border, format, type, pixels))
+   if (ctx->CompileFlag &&
+       !(dims == 3 ? fgl_save_tex_image_3d(ctx, target, level, internal, width, height, depth,
+                                           border, format, type, pixels)
+                   : fgl_save_tex_image(ctx, dims, target, level, internal, width, height,
+                                        border, format, type, pixels)))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
    /* legal_teximage_target (cube faces, rectangle and 1D array targets
     * are not modelled) */
-   if (dims == 1 ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
-                 : target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
+   if (dims == 1   ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
+       : dims == 2 ? target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D
+                   : target != GL_TEXTURE_3D && target != GL_PROXY_TEXTURE_3D) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+   if (level < 0 || level >= max_levels(target)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
@@ -633,7 +717,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (width < 0 || height < 0) {
+   if (width < 0 || height < 0 || depth < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
@@ -652,8 +736,8 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       return;
    }
    const struct fgl_tex_pipe_format *pf = choose_pipe_format(tf, format, type);
-   const bool dims_ok = legal_dimensions(dims, level, width, height, border);
-   const bool sz_ok = size_ok(dims, pf, width, height);
+   const bool dims_ok = legal_dimensions(dims, level, width, height, depth, border);
+   const bool sz_ok = size_ok(dims, pf, width, height, depth);
 
    struct fgl_texture_object *t = target_object(ctx, target);
    if (is_proxy(target)) {
@@ -661,7 +745,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
        * included) or is cleared, without an error */
       struct fgl_texture_image *img = NULL;
       if (dims_ok && sz_ok) {
-         img = new_image(width, height, border, internal, tf->base, pf);
+         img = new_image(width, height, depth, border, internal, tf->base, pf);
          if (!img) {
             fgl_error(ctx, GL_OUT_OF_MEMORY);
             return;
@@ -688,12 +772,16 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
          unpack.ImageHeight = height;
       unpack.SkipPixels++;
       width -= 2;
-      if (dims == 2 && height >= 3) {
+      if (dims >= 2 && height >= 3) {
          unpack.SkipRows++;
          height -= 2;
       }
+      if (depth >= 3) {
+         unpack.SkipImages++;
+         depth -= 2;
+      }
    }
-   struct fgl_texture_image *img = new_image(width, height, 0, internal, tf->base, pf);
+   struct fgl_texture_image *img = new_image(width, height, depth, 0, internal, tf->base, pf);
    if (!img || !alloc_texels(img)) {
       fgl_free(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
@@ -701,9 +789,10 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    /* [S: st_cb_texture.c:st_TexImage, st_TexSubImage] a non-empty image
     * draws glBitmap's cache first */
-   if (width && height)
+   if (width && height && depth)
       fgl_flush_bitmap_cache(ctx);
-   if (!store_texels(ctx, img, &unpack, 0, 0, width, height, format, type, pixels)) {
+   if (!store_texels(ctx, img, &unpack, dims, 0, 0, 0, width, height, depth, format, type,
+                     pixels)) {
       fgl_free(img->Data);
       fgl_free(img->Store);
       fgl_free(img);
@@ -718,14 +807,32 @@ void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat,
                              GLsizei width, GLint border, GLenum format, GLenum type,
                              const GLvoid *pixels)
 {
-   tex_image(1, target, level, internalFormat, width, 1, border, format, type, pixels);
+   tex_image(1, target, level, internalFormat, width, 1, 1, border, format, type, pixels);
 }
 
 void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internalFormat,
                              GLsizei width, GLsizei height, GLint border, GLenum format,
                              GLenum type, const GLvoid *pixels)
 {
-   tex_image(2, target, level, internalFormat, width, height, border, format, type, pixels);
+   tex_image(2, target, level, internalFormat, width, height, 1, border, format, type,
+             pixels);
+}
+
+void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                             GLsizei height, GLsizei depth, GLint border, GLenum format,
+                             GLenum type, const GLvoid *pixels)
+{
+   tex_image(3, target, level, internalFormat, width, height, depth, border, format, type,
+             pixels);
+}
+
+/* GL_EXT_texture3D's name (Mesa's alias of glTexImage3D) */
+void GLAPIENTRY glTexImage3DEXT(GLenum target, GLint level, GLenum internalFormat,
+                                GLsizei width, GLsizei height, GLsizei depth, GLint border,
+                                GLenum format, GLenum type, const GLvoid *pixels)
+{
+   tex_image(3, target, level, (GLint)internalFormat, width, height, depth, border, format,
+             type, pixels);
 }
 
 /* ------------------------------------------------------------------ */
@@ -736,7 +843,7 @@ void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internalFormat,
  * stripped, so the image's border is 0) */
 static bool sub_dimensions_error(struct fgl_context *ctx, GLuint dims,
                                  const struct fgl_texture_image *img, GLint xoff,
-                                 GLint yoff, GLsizei w, GLsizei h)
+                                 GLint yoff, GLint zoff, GLsizei w, GLsizei h, GLsizei d)
 {
    if (xoff < -img->Border || (int64_t)xoff + w > img->Width) {
       fgl_error(ctx, GL_INVALID_VALUE);
@@ -746,32 +853,39 @@ static bool sub_dimensions_error(struct fgl_context *ctx, GLuint dims,
       fgl_error(ctx, GL_INVALID_VALUE);
       return true;
    }
+   if (dims > 2 && (zoff < -img->Border || (int64_t)zoff + d > img->Depth)) {
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return true;
+   }
    return false;
 }
 
 /* [S: teximage.c:texsubimage_err, texsubimage_error_check,
  * legal_texsubimage_target] */
 static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, GLint yoff,
-                          GLsizei width, GLsizei height, GLenum format, GLenum type,
-                          const void *pixels)
+                          GLint zoff, GLsizei width, GLsizei height, GLsizei depth,
+                          GLenum format, GLenum type, const void *pixels)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (ctx->CompileFlag && !fgl_save_tex_sub_image(ctx, dims, target, level, xoff, yoff,
-                                                   width, height, format, type, pixels))
+   if (ctx->CompileFlag &&
+       !(dims == 3 ? fgl_save_tex_sub_image_3d(ctx, target, level, xoff, yoff, zoff, width,
+                                               height, depth, format, type, pixels)
+                   : fgl_save_tex_sub_image(ctx, dims, target, level, xoff, yoff, width,
+                                            height, format, type, pixels)))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+   if (level < 0 || level >= max_levels(target)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
    /* error_check_subtexture_negative_dimensions */
-   if (width < 0 || (dims > 1 && height < 0)) {
+   if (width < 0 || (dims > 1 && height < 0) || (dims > 2 && depth < 0)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
@@ -790,7 +904,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, width, height))
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, depth))
       return;
    if (fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
@@ -802,12 +916,12 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
     * region; offsets are biased by the (stripped, 0) border */
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
-   if (width == 0 || height == 0)
+   if (width == 0 || height == 0 || depth == 0)
       return;
    /* [S: st_cb_texture.c:st_TexSubImage] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
-   if (store_texels(ctx, img, &ctx->Unpack, xoff, yoff, width, height, format, type,
-                    pixels)) {
+   if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
+                    format, type, pixels)) {
       ctx->NewState |= FGL_NEW_TEXTURE;
       check_gen_mipmap(ctx, t, level);
    }
@@ -816,14 +930,32 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
 void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
                                 GLenum format, GLenum type, const GLvoid *pixels)
 {
-   tex_sub_image(1, target, level, xoffset, 0, width, 1, format, type, pixels);
+   tex_sub_image(1, target, level, xoffset, 0, 0, width, 1, 1, format, type, pixels);
 }
 
 void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
                                 GLsizei width, GLsizei height, GLenum format, GLenum type,
                                 const GLvoid *pixels)
 {
-   tex_sub_image(2, target, level, xoffset, yoffset, width, height, format, type, pixels);
+   tex_sub_image(2, target, level, xoffset, yoffset, 0, width, height, 1, format, type,
+                 pixels);
+}
+
+void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                GLenum format, GLenum type, const GLvoid *pixels)
+{
+   tex_sub_image(3, target, level, xoffset, yoffset, zoffset, width, height, depth, format,
+                 type, pixels);
+}
+
+void GLAPIENTRY glTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                   GLint zoffset, GLsizei width, GLsizei height,
+                                   GLsizei depth, GLenum format, GLenum type,
+                                   const GLvoid *pixels)
+{
+   tex_sub_image(3, target, level, xoffset, yoffset, zoffset, width, height, depth, format,
+                 type, pixels);
 }
 
 /* ------------------------------------------------------------------ */
@@ -839,7 +971,7 @@ void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint
  * oracle's st_CopyTexSubImage blits into them).  Copies into R3G3B2 are
  * not modelled exactly (known-differences.txt). */
 static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
-                        GLint yoff, GLint x, GLint y, GLsizei w, GLsizei h)
+                        GLint yoff, GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h)
 {
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb || !fb->Color)
@@ -869,7 +1001,9 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
    fgl_flush_bitmap_cache(ctx);
    for (GLint j = 0; j < h; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
-      const size_t at = (size_t)(yoff + j) * (size_t)img->Width + (size_t)xoff;
+      const size_t at =
+         ((size_t)zoff * (size_t)img->Height + (size_t)(yoff + j)) * (size_t)img->Width +
+         (size_t)xoff;
       for (GLint i = 0; i < w; i++) {
          uint8_t c[4], t[4];
          memcpy(c, fb->Color + 4 * (row * (size_t)fb->Width + (size_t)(x + i)), 4);
@@ -924,7 +1058,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (!legal_dimensions(dims, level, width, height, border)) {
+   if (!legal_dimensions(dims, level, width, height, 1, border)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
@@ -934,12 +1068,13 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    /* can_avoid_reallocation: the same format and size keeps the storage,
     * and the texels outside the framebuffer keep their values */
    if (old && old->InternalFormat == internal && old->Format == pf && border == 0 &&
+       old->Depth == 1 &&
        old->Border == 0 && old->Width == width && old->Height == height) {
-      copy_texels(ctx, old, 0, 0, x, y, width, height);
+      copy_texels(ctx, old, 0, 0, 0, x, y, width, height);
       check_gen_mipmap(ctx, t, level);
       return;
    }
-   if (!size_ok(dims, pf, width, height)) {
+   if (!size_ok(dims, pf, width, height, 1)) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -951,7 +1086,8 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
          height -= 2;
       }
    }
-   struct fgl_texture_image *img = new_image(width, height, 0, (GLint)internal, tf->base, pf);
+   struct fgl_texture_image *img =
+      new_image(width, height, 1, 0, (GLint)internal, tf->base, pf);
    if (!img || !alloc_texels(img)) {
       fgl_free(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
@@ -960,7 +1096,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    set_image(t, level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    if (width && height)
-      copy_texels(ctx, img, 0, 0, x, y, width, height);
+      copy_texels(ctx, img, 0, 0, 0, x, y, width, height);
    check_gen_mipmap(ctx, t, level);
 }
 
@@ -978,26 +1114,30 @@ void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalform
 
 /* [S: teximage.c:copy_texture_sub_image_err, copytexsubimage_error_check] */
 static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff,
-                               GLint yoff, GLint x, GLint y, GLsizei width, GLsizei height)
+                               GLint yoff, GLint zoff, GLint x, GLint y, GLsizei width,
+                               GLsizei height)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (ctx->CompileFlag && !fgl_save_copy_tex_sub_image(ctx, dims, target, level, xoff, yoff,
-                                                        x, y, width, height))
+   if (ctx->CompileFlag &&
+       !(dims == 3 ? fgl_save_copy_tex_sub_image_3d(ctx, target, level, xoff, yoff, zoff, x, y,
+                                                    width, height)
+                   : fgl_save_copy_tex_sub_image(ctx, dims, target, level, xoff, yoff, x, y,
+                                                 width, height)))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* _mesa_CopyTexSubImage{1,2}D check the target (no proxies) before
     * copy_texture_sub_image_err's FLUSH_VERTICES: a bad target raises
     * GL_INVALID_ENUM with the vertex format untouched (a glTexCoord4f,
     * glTexCoord3f after it keeps q; the API fuzzer's seed 150) */
-   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
-   if (level < 0 || level >= FGL_MAX_TEXTURE_LEVELS) {
+   if (level < 0 || level >= max_levels(target)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
@@ -1011,7 +1151,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, width, height))
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, 1))
       return;
    /* _mesa_source_buffer_exists */
    if (ctx->Pixel.ReadBuffer == GL_NONE) {
@@ -1020,21 +1160,35 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
    }
    if (width == 0 || height == 0)
       return;
-   copy_texels(ctx, img, xoff, yoff, x, y, width, height);
+   copy_texels(ctx, img, xoff, yoff, zoff, x, y, width, height);
    check_gen_mipmap(ctx, t, level);
 }
 
 void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x,
                                     GLint y, GLsizei width)
 {
-   copy_tex_sub_image(1, target, level, xoffset, 0, x, y, width, 1);
+   copy_tex_sub_image(1, target, level, xoffset, 0, 0, x, y, width, 1);
 }
 
 void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset,
                                     GLint yoffset, GLint x, GLint y, GLsizei width,
                                     GLsizei height)
 {
-   copy_tex_sub_image(2, target, level, xoffset, yoffset, x, y, width, height);
+   copy_tex_sub_image(2, target, level, xoffset, yoffset, 0, x, y, width, height);
+}
+
+void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset,
+                                    GLint yoffset, GLint zoffset, GLint x, GLint y,
+                                    GLsizei width, GLsizei height)
+{
+   copy_tex_sub_image(3, target, level, xoffset, yoffset, zoffset, x, y, width, height);
+}
+
+void GLAPIENTRY glCopyTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset,
+                                       GLint yoffset, GLint zoffset, GLint x, GLint y,
+                                       GLsizei width, GLsizei height)
+{
+   copy_tex_sub_image(3, target, level, xoffset, yoffset, zoffset, x, y, width, height);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1055,19 +1209,6 @@ static bool legal_get_target(GLenum target)
       return true;
    default:
       return false;
-   }
-}
-
-/* [S: teximage.c:_mesa_max_texture_levels] */
-static int max_levels(GLenum target)
-{
-   switch (target) {
-   case GL_TEXTURE_3D: case GL_PROXY_TEXTURE_3D:
-      return 12;
-   case GL_TEXTURE_RECTANGLE: case GL_PROXY_TEXTURE_RECTANGLE:
-      return 1;
-   default:
-      return FGL_MAX_TEXTURE_LEVELS;
    }
 }
 
@@ -1092,10 +1233,10 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       fgl_error(ctx, err);
       return;
    }
-   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D)
+   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D)
       return;   /* no image: nothing to do */
    const struct fgl_texture_image *img = target_object(ctx, target)->Image[level];
-   if (!img || img->Width == 0 || img->Height == 0)
+   if (!img || img->Width == 0 || img->Height == 0 || img->Depth == 0)
       return;
    /* teximage_error_check: a colour image reads back as colours only */
    if (is_depth_format(format) || is_depthstencil_format(format) ||
@@ -1110,13 +1251,23 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    fgl_flush_bitmap_cache(ctx);
    /* [S: texgetimage.c:get_tex_rgba_uncompressed] the texels through
     * pixelformat's packer (the rebase of L/LA/I/A/RGB images, L = R) */
-   if (img->Store)
-      fgl_pack_tex_stored(ctx, &ctx->Pack, img->Width, img->Height, img->BaseFormat,
-                          img->Store, img->StoreBits, max_bits(img->Format) == 16, format,
-                          type, pixels);
-   else
-      fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                     img->BaseFormat, img->Data, format, type, pixels);
+   /* a 3D image slice by slice, each at its slice's address
+    * (GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES) */
+   const size_t slice = (size_t)img->Width * (size_t)img->Height;
+   for (int k = 0; k < img->Depth; k++) {
+      void *dst = target == GL_TEXTURE_3D
+                     ? (void *)(uintptr_t)slice_address(&ctx->Pack, pixels, img->Width,
+                                                        img->Height, format, type, k)
+                     : pixels;
+      if (img->Store)
+         fgl_pack_tex_stored(ctx, &ctx->Pack, img->Width, img->Height, img->BaseFormat,
+                             img->Store + 4 * slice * (size_t)k, img->StoreBits,
+                             max_bits(img->Format) == 16, format, type, dst);
+      else
+         fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
+                        img->BaseFormat, img->Data + 4 * slice * (size_t)k, format, type,
+                        dst);
+   }
 }
 
 /* ------------------------------------------------------------------ */
@@ -1192,7 +1343,8 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       return false;
    }
    const struct fgl_texture_image *img = NULL;
-   if (target == GL_TEXTURE_1D || target == GL_TEXTURE_2D || is_proxy(target))
+   if (target == GL_TEXTURE_1D || target == GL_TEXTURE_2D || target == GL_TEXTURE_3D ||
+       is_proxy(target))
       img = target_object(ctx, target)->Image[level];
    /* an undefined image reads as Mesa's dummy image: sizes 0, internal
     * format GL_RGBA, no format */
@@ -1206,7 +1358,7 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       *v = img ? img->Height : 0;
       return true;
    case GL_TEXTURE_DEPTH:
-      *v = img ? 1 : 0;
+      *v = img ? img->Depth : 0;
       return true;
    case GL_TEXTURE_INTERNAL_FORMAT:
       *v = img ? (GLint)img->InternalFormat : GL_RGBA;

@@ -59,6 +59,7 @@ bool fgl_init_texobj(struct fgl_context *ctx)
    memset(&ctx->TexLocal, 0, sizeof(ctx->TexLocal));
    init_object(&ctx->TexLocal.Proxy[0], 0, GL_PROXY_TEXTURE_1D);
    init_object(&ctx->TexLocal.Proxy[1], 0, GL_PROXY_TEXTURE_2D);
+   init_object(&ctx->TexLocal.Proxy[2], 0, GL_PROXY_TEXTURE_3D);
    return true;
 }
 
@@ -107,6 +108,7 @@ void fgl_free_texobj(struct fgl_context *ctx)
    ctx->TexObjects = NULL;
    fgl_free_tex_images(&ctx->TexLocal.Proxy[0]);
    fgl_free_tex_images(&ctx->TexLocal.Proxy[1]);
+   fgl_free_tex_images(&ctx->TexLocal.Proxy[2]);
 }
 
 /* OSMesaCreateContext's sharelist: the new context (which has bound

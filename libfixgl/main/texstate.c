@@ -43,29 +43,39 @@ bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level)
    if (!bi || bi->Width == 0 || bi->Height == 0)
       return false;
    const bool is1d = t->Target == GL_TEXTURE_1D;
+   const bool is3d = t->Target == GL_TEXTURE_3D;
+   if (is3d && bi->Depth == 0)
+      return false;
    int w = bi->Width - 2 * bi->Border;
    int h = is1d ? 1 : bi->Height - 2 * bi->Border;
-   int maxl = base + num_levels(w > h ? w : h) - 1;
+   int d = is3d ? bi->Depth - 2 * bi->Border : 1;
+   int larger = w > h ? w : h;
+   larger = larger > d ? larger : d;
+   int maxl = base + num_levels(larger) - 1;
    if (t->MaxLevel < maxl)
       maxl = t->MaxLevel;
-   if (maxl > FGL_MAX_TEXTURE_LEVELS - 1)
-      maxl = FGL_MAX_TEXTURE_LEVELS - 1;
+   const int max_levels = is3d ? FGL_MAX_3D_TEXTURE_LEVELS : FGL_MAX_TEXTURE_LEVELS;
+   if (maxl > max_levels - 1)
+      maxl = max_levels - 1;
    *max_level = maxl;
    if (!needs_mipmaps(t->MinFilter))
       return true;
-   for (int i = base + 1; i < FGL_MAX_TEXTURE_LEVELS; i++) {
+   for (int i = base + 1; i < max_levels; i++) {
       if (w > 1)
          w /= 2;
       if (h > 1)
          h /= 2;
+      if (d > 1)
+         d /= 2;
       if (i <= maxl) {
          const struct fgl_texture_image *img = t->Image[i];
          if (!img || img->InternalFormat != bi->InternalFormat ||
              img->Border != bi->Border || img->Width - 2 * img->Border != w ||
-             (!is1d && img->Height - 2 * img->Border != h))
+             (!is1d && img->Height - 2 * img->Border != h) ||
+             (is3d && img->Depth - 2 * img->Border != d))
             return false;
       }
-      if (w == 1 && h == 1)
+      if (w == 1 && h == 1 && d == 1)
          break;
    }
    return true;
@@ -128,11 +138,12 @@ void fgl_update_texture_matrices(struct fgl_context *ctx)
 }
 
 /* [S: texstate.c:update_ff_texture_state] targets in priority order,
- * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.  Only 1D
- * and 2D textures can have images in fixgl, so only they can texture. */
+ * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.  Only 1D,
+ * 2D and 3D textures can have images in fixgl, so only they can
+ * texture. */
 void fgl_update_texture_state(struct fgl_context *ctx)
 {
-   static const GLenum targets[] = { GL_TEXTURE_2D, GL_TEXTURE_1D };
+   static const GLenum targets[] = { GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_1D };
    ctx->_EnabledTexUnits = 0;
    for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
       ctx->_CurrentTex[u] = NULL;

@@ -168,7 +168,9 @@ enum r_tex_wrap {
 
 struct r_tex_level {
    int width, height;            /* height 1 for 1D */
-   const uint8_t *data;          /* width * height RGBA8 texels */
+   int depth;                    /* 1 for 1D and 2D */
+   const uint8_t *data;          /* width * height * depth RGBA8 texels,
+                                  * slice z at z * width * height */
    /* a format of other than 8 bits per channel (float path only): the
     * stored values, four uint16_t per texel, channel c an integer of
     * store_bits[c] bits (0: a constant 0 or 1) read as
@@ -179,16 +181,18 @@ struct r_tex_level {
 };
 
 struct r_texture {
-   int dims;                     /* 1 (GL_TEXTURE_1D) or 2 (GL_TEXTURE_2D) */
+   int dims;                     /* 1 (GL_TEXTURE_1D), 2 (GL_TEXTURE_2D) or
+                                  * 3 (GL_TEXTURE_3D: the reference kernels
+                                  * only, r_tex8_fast refuses it) */
    int first_level, last_level;  /* BaseLevel .. _MaxLevel */
    struct r_tex_level level[R_MAX_TEX_LEVELS];
    /* the resource's level-0 size is a power of two (the REPEAT wrap of
     * every level uses the pot or npot code by it; lp_bld_sample.c
     * lp_sampler_static_texture_state pot_width/pot_height) */
-   bool pot_s, pot_t;
+   bool pot_s, pot_t, pot_r;
    enum r_tex_filter min_img, mag_img;
    enum r_tex_mip mip;
-   enum r_tex_wrap wrap_s, wrap_t;
+   enum r_tex_wrap wrap_s, wrap_t, wrap_r;   /* wrap_r: 3D only */
    float border_color[4];        /* for r_tex_soa.c */
    float lod_bias;               /* object + unit bias (st_convert_sampler) */
    float min_lod, max_lod;       /* GL_TEXTURE_MIN_LOD / MAX_LOD */
@@ -310,8 +314,8 @@ static inline void r_tex_project(const float v[4], float out[3])
    out[2] = v[2] * r;
 }
 /* lp_build_rho of a quad's projected coordinates (TL, TR, BL) with the
- * size of the first level: squared for 2D, max(|ds|) * W for 1D (r_tex.c),
- * shared by both LOD paths. */
+ * size of the first level: squared for 2D and 3D (the r term added last),
+ * max(|ds|) * W for 1D (r_tex.c), shared by both LOD paths. */
 float r_tex_rho(const struct r_texture *t, const float q[3][3]);
 /* The AoS filtering alone, given the LOD selector's results (for the
  * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still

@@ -123,6 +123,43 @@ static inline const uint8_t *texel(const struct r_tex_level *l, int x, int y)
    return l->data + 4 * ((size_t)y * (size_t)l->width + (size_t)x);
 }
 
+static inline const uint8_t *texel3(const struct r_tex_level *l, int x, int y, int z)
+{
+   return texel(l, x, (int)((size_t)z * (size_t)l->height) + y);
+}
+
+/* sample_level of a 3D texture [S: lp_bld_sample_aos.c:
+ * lp_build_sample_image_nearest, lp_build_sample_image_linear,
+ * lp_build_reduce_filter_3d]: r wraps as s and t do (its own pot flag),
+ * and LINEAR lerps the two slices' bilinear results along r by r's
+ * 8-bit weight. */
+static void sample_level_3d(const struct r_texture *t, const struct r_tex_level *l,
+                            enum r_tex_filter filter, const float c[3], int out[4])
+{
+   if (filter == R_TEX_NEAREST) {
+      const int i = wrap_nearest(c[0], l->width, t->pot_s, t->wrap_s);
+      const int j = wrap_nearest(c[1], l->height, t->pot_t, t->wrap_t);
+      const int k = wrap_nearest(c[2], l->depth, t->pot_r, t->wrap_r);
+      const uint8_t *p = texel3(l, i, j, k);
+      for (int n = 0; n < 4; n++)
+         out[n] = p[n];
+      return;
+   }
+   int i0, i1, ws, j0, j1, wt, k0, k1, wr;
+   wrap_linear(c[0], l->width, t->pot_s, t->wrap_s, &i0, &i1, &ws);
+   wrap_linear(c[1], l->height, t->pot_t, t->wrap_t, &j0, &j1, &wt);
+   wrap_linear(c[2], l->depth, t->pot_r, t->wrap_r, &k0, &k1, &wr);
+   const uint8_t *a0 = texel3(l, i0, j0, k0), *b0 = texel3(l, i1, j0, k0);
+   const uint8_t *d0 = texel3(l, i0, j1, k0), *e0 = texel3(l, i1, j1, k0);
+   const uint8_t *a1 = texel3(l, i0, j0, k1), *b1 = texel3(l, i1, j0, k1);
+   const uint8_t *d1 = texel3(l, i0, j1, k1), *e1 = texel3(l, i1, j1, k1);
+   for (int n = 0; n < 4; n++) {
+      const int s0 = lerp8(wt, lerp8(ws, a0[n], b0[n]), lerp8(ws, d0[n], e0[n]));
+      const int s1 = lerp8(wt, lerp8(ws, a1[n], b1[n]), lerp8(ws, d1[n], e1[n]));
+      out[n] = lerp8(wr, s0, s1);
+   }
+}
+
 /* sample_level's LINEAR filter for a 2D texture with REPEAT on both axes
  * and a power-of-two size, the commonest lookup, inlined: wrap_linear's
  * pot REPEAT branch on both axes, then the same lerps. */
@@ -145,11 +182,15 @@ linear_2d_repeat_pot(const struct r_tex_level *l, const float c[3], int out[4])
 /* One level, one image filter, to 8-bit channels
  * [S: lp_bld_sample_aos.c:lp_build_sample_image_nearest,
  * lp_build_sample_image_linear]: lerp along s on rows t0 and t1, then
- * along t. */
+ * along t (3D: sample_level_3d). */
 static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter filter,
                          const float c[3], int out[4])
 {
    const struct r_tex_level *l = &t->level[lvl];
+   if (t->dims == 3) {
+      sample_level_3d(t, l, filter, c, out);
+      return;
+   }
    if (filter == R_TEX_NEAREST) {
       const int i = wrap_nearest(c[0], l->width, t->pot_s, t->wrap_s);
       const int j = t->dims > 1 ? wrap_nearest(c[1], l->height, t->pot_t, t->wrap_t) : 0;

@@ -46,7 +46,9 @@ static inline int r_lod_float_exp(float x)
 
 /* rho of the quad [S: lp_bld_sample.c:lp_build_rho] from the base
  * level's size.  2D (no_rho_approx): the squared length,
- * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2).  1D (the
+ * max((dsdx*W)^2 + (dtdx*H)^2, (dsdy*W)^2 + (dtdy*H)^2); 3D adds
+ * (drdx*D)^2 and (drdy*D)^2 to those sums (ORACLE-NOTES.md "3D
+ * textures").  1D (the
  * approximation stays on for one dimension): max(|dsdx|, |dsdy|) * W, not
  * squared. */
 static inline float r_tex_rho_inline(const struct r_texture *t, const float q[3][3])
@@ -68,7 +70,19 @@ static inline float r_tex_rho_inline(const struct r_texture *t, const float q[3]
    dsdy = dsdy * dsdy;
    dtdx = dtdx * dtdx;
    dtdy = dtdy * dtdy;
-   const float rx = dsdx + dtdx, ry = dsdy + dtdy;
+   float rx = dsdx + dtdx, ry = dsdy + dtdy;
+   if (t->dims == 3) {
+      /* lp_build_packed_ddx_ddy_onecoord's r derivatives (x: TR - TL,
+       * y: TL - BL, the sign lost in the square) times the depth,
+       * squared, added to the s + t sums */
+      const float fd = (float)l->depth;
+      float drdx = (q[R_QUAD_TR][2] - q[R_QUAD_TL][2]) * fd;
+      float drdy = (q[R_QUAD_TL][2] - q[R_QUAD_BL][2]) * fd;
+      drdx = drdx * drdx;
+      drdy = drdy * drdy;
+      rx = rx + drdx;
+      ry = ry + drdy;
+   }
    return rx > ry ? rx : ry;
 }
 

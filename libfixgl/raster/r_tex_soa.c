@@ -310,7 +310,7 @@ static void wrap_linear(float c, int n, bool pot, enum r_tex_wrap wrap,
  * on an axis whose wrap uses it, the border colour replaces the channels
  * the format has (border_mask) and the others keep the format's constant
  * (those of texel (0, 0), where the fetch is redirected). */
-static void texel(const struct r_texture *t, int lvl, int x, int y, float out[4])
+static void texel(const struct r_texture *t, int lvl, int x, int y, int z, float out[4])
 {
    const struct r_tex_level *l = &t->level[lvl];
    bool border = false;
@@ -318,9 +318,12 @@ static void texel(const struct r_texture *t, int lvl, int x, int y, float out[4]
       border = true;
    if (t->dims > 1 && wrap_uses_border(t->wrap_t, t) && (y < 0 || y >= l->height))
       border = true;
+   if (t->dims > 2 && wrap_uses_border(t->wrap_r, t) && (z < 0 || z >= l->depth))
+      border = true;
    if (border)
-      x = y = 0;
-   const size_t at = 4 * ((size_t)y * (size_t)l->width + (size_t)x);
+      x = y = z = 0;
+   const size_t at =
+      4 * (((size_t)z * (size_t)l->height + (size_t)y) * (size_t)l->width + (size_t)x);
    if (l->store) {
       /* a format wider (or narrower) than 8 bits per channel: the stored
        * n-bit value times (float)(1 / (2^n - 1)) [S: lp_bld_conv.c:
@@ -344,7 +347,8 @@ static void image_nearest(const struct r_texture *t, int lvl, const float c[3], 
    const struct r_tex_level *l = &t->level[lvl];
    const int x = wrap_nearest(c[0], l->width, t->pot_s, t->wrap_s);
    const int y = t->dims > 1 ? wrap_nearest(c[1], l->height, t->pot_t, t->wrap_t) : 0;
-   texel(t, lvl, x, y, out);
+   const int z = t->dims > 2 ? wrap_nearest(c[2], l->depth, t->pot_r, t->wrap_r) : 0;
+   texel(t, lvl, x, y, z, out);
 }
 
 /* lp_build_sample_image_linear; `nearest` (a pixel lp_build_sample_mipmap_
@@ -354,29 +358,44 @@ static void image_linear(const struct r_texture *t, int lvl, bool nearest, const
                          float out[4])
 {
    const struct r_tex_level *l = &t->level[lvl];
-   int x0, x1, y0 = 0, y1 = 0;
-   float ws, wt = 0.0f;
+   int x0, x1, y0 = 0, y1 = 0, z0 = 0, z1 = 0;
+   float ws, wt = 0.0f, wr = 0.0f;
    wrap_linear(c[0], l->width, t->pot_s, t->wrap_s, &x0, &x1, &ws);
    if (t->dims > 1)
       wrap_linear(c[1], l->height, t->pot_t, t->wrap_t, &y0, &y1, &wt);
+   if (t->dims > 2)
+      wrap_linear(c[2], l->depth, t->pot_r, t->wrap_r, &z0, &z1, &wr);
    if (nearest) {
       ws = ws > 0.5f ? 1.0f : 0.0f;
       wt = wt > 0.5f ? 1.0f : 0.0f;
+      wr = wr > 0.5f ? 1.0f : 0.0f;
    }
    float n00[4], n01[4];
-   texel(t, lvl, x0, y0, n00);
-   texel(t, lvl, x1, y0, n01);
+   texel(t, lvl, x0, y0, z0, n00);
+   texel(t, lvl, x1, y0, z0, n01);
    if (t->dims == 1) {
       for (int k = 0; k < 4; k++)
          out[k] = lerp_f(ws, n00[k], n01[k]);
       return;
    }
    float n10[4], n11[4];
-   texel(t, lvl, x0, y1, n10);
-   texel(t, lvl, x1, y1, n11);
+   texel(t, lvl, x0, y1, z0, n10);
+   texel(t, lvl, x1, y1, z0, n11);
    /* lp_build_lerp_2d: along s on rows y0 and y1, then along t */
    for (int k = 0; k < 4; k++)
       out[k] = lerp_f(wt, lerp_f(ws, n00[k], n01[k]), lerp_f(ws, n10[k], n11[k]));
+   if (t->dims == 2)
+      return;
+   /* 3D: the same on slice z1, then along r between the slices */
+   float m00[4], m01[4], m10[4], m11[4];
+   texel(t, lvl, x0, y0, z1, m00);
+   texel(t, lvl, x1, y0, z1, m01);
+   texel(t, lvl, x0, y1, z1, m10);
+   texel(t, lvl, x1, y1, z1, m11);
+   for (int k = 0; k < 4; k++) {
+      const float s1 = lerp_f(wt, lerp_f(ws, m00[k], m01[k]), lerp_f(ws, m10[k], m11[k]));
+      out[k] = lerp_f(wr, out[k], s1);
+   }
 }
 
 static void image(const struct r_texture *t, int lvl, enum r_tex_filter f, const float c[3],
