@@ -40,6 +40,7 @@ static const fc_case *const groups[] = {
     fc_cases_gl14_ops,
     fc_cases_gl14_points,
     fc_cases_gl15,
+    fc_cases_osmesa,
 };
 
 size_t fc_case_count(void)

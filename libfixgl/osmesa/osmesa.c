@@ -248,6 +248,7 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 {
    GLenum format = GL_RGBA;
    int depth = 0, stencil = 0, accum = 0;
+   int profile = OSMESA_COMPAT_PROFILE, major = 1, minor = 0;
 
    for (int i = 0; attribList && attribList[i]; i += 2) {
       const int value = attribList[i + 1];
@@ -280,19 +281,30 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       case OSMESA_PROFILE:
          if (value != OSMESA_CORE_PROFILE && value != OSMESA_COMPAT_PROFILE)
             return NULL;
+         profile = value;
          break;
       case OSMESA_CONTEXT_MAJOR_VERSION:
          if (value < 1)
             return NULL;
+         major = value;
          break;
       case OSMESA_CONTEXT_MINOR_VERSION:
          if (value < 0)
             return NULL;
+         minor = value;
          break;
       default:
+         fprintf(stderr, "Bad attribute in OSMesaCreateContextAttribs()\n");
          return NULL;
       }
    }
+   /* What the context cannot provide gives NULL, as in Mesa, whose
+    * st_api_create_context compares major * 10 + minor (the last value
+    * of each attribute) with the version it implements: fixgl has no
+    * core profile and implements at most GL 1.5 (ORACLE-NOTES.md "OSMesa
+    * contexts and buffers") */
+   if (profile == OSMESA_CORE_PROFILE || (long long)major * 10 + minor > 15)
+      return NULL;
 
    struct osmesa_context *c = fgl_calloc(1, sizeof(*c));
    if (!c)
