@@ -45,23 +45,32 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
 struct fgl_tex_pipe_format {
    uint8_t r, g, b, a, l, i;
    uint8_t bytes;
-   /* glCopyTexImage truncates the colour buffer's 8-bit channels to the
-    * format (x >> (8 - bits)) instead of rounding as texstore does
-    * (measured: every 8-bit value into B5G5R5X1, B5G5R5A1, B5G6R5) */
-   bool copy_truncates;
+   /* how glCopyTexImage stores the colour buffer's 8-bit channels
+    * (enum fgl_copy_rule): as texstore rounds them, or as the blit's
+    * conversion into the format as a render target does */
+   uint8_t copy_rule;
 };
+
+/* [S: llvmpipe/lp_state_fs.c: convert_from_blend_type, scale_bits]
+ * st_CopyTexSubImage blits into the formats llvmpipe renders to; the
+ * blend stage's 8-bit channels go to n bits by a single shift
+ * (x >> (8 - n); measured: every 8-bit value into B5G5R5X1, B5G5R5A1,
+ * B5G6R5); the 10-bit channels of 10-10-10-2 through the 16-bit blend
+ * type, (unorm16 of x * (1/255)) >> 6 (measured: every 8-bit value; its
+ * 2-bit alpha rounds as texstore does) */
+enum fgl_copy_rule { COPY_TEXSTORE, COPY_TRUNCATE, COPY_WIDE };
 
 static const struct fgl_tex_pipe_format PF_RGBA8 = { 8, 8, 8, 8, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_RGBX8 = { 8, 8, 8, 0, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_RGBA16 = { 16, 16, 16, 16, 0, 0, 8, false };
 static const struct fgl_tex_pipe_format PF_RGBX16 = { 16, 16, 16, 0, 0, 0, 8, false };
-static const struct fgl_tex_pipe_format PF_RGB10A2 = { 10, 10, 10, 2, 0, 0, 4, false };
-static const struct fgl_tex_pipe_format PF_RGB10X2 = { 10, 10, 10, 0, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGB10A2 = { 10, 10, 10, 2, 0, 0, 4, COPY_WIDE };
+static const struct fgl_tex_pipe_format PF_RGB10X2 = { 10, 10, 10, 0, 0, 0, 4, COPY_WIDE };
 static const struct fgl_tex_pipe_format PF_RGBA4 = { 4, 4, 4, 4, 0, 0, 2, false };
 static const struct fgl_tex_pipe_format PF_RGBX4 = { 4, 4, 4, 0, 0, 0, 2, false };
-static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, true };
-static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, true };
-static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, true };
+static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, COPY_TRUNCATE };
+static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, COPY_TRUNCATE };
+static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, COPY_TRUNCATE };
 static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_L8 = { 0, 0, 0, 0, 8, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_L16 = { 0, 0, 0, 0, 16, 0, 2, false };
@@ -281,21 +290,34 @@ static uint8_t expand_to_8(unsigned q, unsigned bits)
    return (uint8_t)extend_to_8(q, bits);
 }
 
+/* [S: gallivm/lp_bld_conv.c:lp_build_clamped_float_to_unsigned_norm]
+ * a float in [0, 1] to unorm16 as llvmpipe's render targets take it: the
+ * low 16 mantissa bits of v * (65535/65536) + 2^7 */
+static unsigned float_to_unorm16(float v)
+{
+   const float m = v * (65535.0f / 65536.0f) + 128.0f;
+   uint32_t u;
+   memcpy(&u, &m, sizeof(u));
+   return u & 0xffffu;
+}
+
 /* One 8-bit channel value as a channel of `bits` bits stores it.
  * [S: format_utils.c:_mesa_format_convert] a 16-bit array format takes
  * the byte channel by _mesa_unorm_to_unorm(x, 8, 16) (x * 257); a packed
  * format of at most 8 bits per channel converts through an RGBA ubyte
  * intermediate (_mesa_unorm_to_unorm(x, 8, n): (x * max + 127) / 255), a
  * wider one (10-10-10-2) through float (x/255, then util_iround(f * max)).
- * `truncate`: glCopyTexImage's x >> (8 - bits) (copy_truncates). */
-static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, bool truncate)
+ * `rule`: glCopyTexImage's (enum fgl_copy_rule), COPY_TEXSTORE otherwise. */
+static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, unsigned rule)
 {
    if (bits == 8)
       return x;
    if (bits == 16)
       return (unsigned)x * 257u;
-   if (truncate)
+   if (rule == COPY_TRUNCATE)
       return (unsigned)x >> (8u - bits);
+   if (rule == COPY_WIDE && bits > 8)
+      return float_to_unorm16((float)x * (1.0f / 255.0f)) >> (16u - bits);
    const unsigned max = (1u << bits) - 1u;
    if (via_float) {
       /* [S: u_format_pack.py: util_iround(x * max), (int)(f + 0.5f) off
@@ -322,7 +344,7 @@ static void put_stored(struct fgl_texture_image *img, size_t at, const uint16_t 
  * 255 in the channels the format lacks) at texel index `at` of img, in
  * img's format (truncating: as glCopyTexImage stores into some formats). */
 static void put_texels(struct fgl_texture_image *img, size_t at, const uint8_t *t, size_t n,
-                       bool truncate)
+                       unsigned rule)
 {
    uint8_t *data = img->Data + 4 * at;
    if (!img->Store) {
@@ -338,7 +360,7 @@ static void put_texels(struct fgl_texture_image *img, size_t at, const uint8_t *
          data[i] = t[i];
          continue;
       }
-      const unsigned q = store_from_8(t[i], bits, via_float, truncate);
+      const unsigned q = store_from_8(t[i], bits, via_float, rule);
       store[i] = (uint16_t)q;
       data[i] = expand_to_8(q, bits);
    }
@@ -835,7 +857,7 @@ void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint
  * y up) to texels (xoff, yoff) of img, clipped to the framebuffer; the
  * texels whose source is outside keep their values.  The colour goes
  * through the texture's format as glTexImage stores RGBA ubyte data,
- * except for the formats whose copy truncates (copy_truncates; the
+ * except for the formats whose copy differs (copy_rule; the
  * oracle's st_CopyTexSubImage blits into them).  Copies into R3G3B2 are
  * not modelled exactly (known-differences.txt). */
 static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
@@ -876,7 +898,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
          if (fb->AlphaBits == 0)
             c[3] = 255;
          rebase_texel(img->BaseFormat, c, t);
-         put_texels(img, at + (size_t)i, t, 1, img->Format->copy_truncates);
+         put_texels(img, at + (size_t)i, t, 1, img->Format->copy_rule);
       }
    }
    ctx->NewState |= FGL_NEW_TEXTURE;
