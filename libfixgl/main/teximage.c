@@ -55,10 +55,12 @@ struct fgl_tex_pipe_format {
  * st_CopyTexSubImage blits into the formats llvmpipe renders to; the
  * blend stage's 8-bit channels go to n bits by a single shift
  * (x >> (8 - n); measured: every 8-bit value into B5G5R5X1, B5G5R5A1,
- * B5G6R5); the 10-bit channels of 10-10-10-2 through the 16-bit blend
- * type, (unorm16 of x * (1/255)) >> 6 (measured: every 8-bit value; its
- * 2-bit alpha rounds as texstore does) */
-enum fgl_copy_rule { COPY_TEXSTORE, COPY_TRUNCATE, COPY_WIDE };
+ * B5G6R5) or, for B2G3R3, by the rounded rescale
+ * ((x >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n) (measured: every 8-bit
+ * value; probe p_copy_tex); the 10-bit channels of 10-10-10-2 through
+ * the 16-bit blend type, (unorm16 of x * (1/255)) >> 6 (measured: every
+ * 8-bit value; its 2-bit alpha rounds as texstore does) */
+enum fgl_copy_rule { COPY_TEXSTORE, COPY_TRUNCATE, COPY_RESCALE, COPY_WIDE };
 
 static const struct fgl_tex_pipe_format PF_RGBA8 = { 8, 8, 8, 8, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_RGBX8 = { 8, 8, 8, 0, 0, 0, 4, false };
@@ -71,7 +73,7 @@ static const struct fgl_tex_pipe_format PF_RGBX4 = { 4, 4, 4, 0, 0, 0, 2, false 
 static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, COPY_TRUNCATE };
 static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, COPY_TRUNCATE };
 static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, COPY_TRUNCATE };
-static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, COPY_RESCALE };
 static const struct fgl_tex_pipe_format PF_L8 = { 0, 0, 0, 0, 8, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_L16 = { 0, 0, 0, 0, 16, 0, 2, false };
 static const struct fgl_tex_pipe_format PF_A8 = { 0, 0, 0, 8, 0, 0, 1, false };
@@ -316,6 +318,8 @@ static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, unsigned 
       return (unsigned)x * 257u;
    if (rule == COPY_TRUNCATE)
       return (unsigned)x >> (8u - bits);
+   if (rule == COPY_RESCALE)
+      return (((unsigned)x >> bits) * ((1u << bits) - 1u) + (1u << (7u - bits))) >> (8u - bits);
    if (rule == COPY_WIDE && bits > 8)
       return float_to_unorm16((float)x * (1.0f / 255.0f)) >> (16u - bits);
    const unsigned max = (1u << bits) - 1u;
@@ -563,10 +567,61 @@ static uint8_t lerp8(int w, int a, int b)
  * PIPE_TEX_FILTER_LINEAR blit from the level above: a quad sampling that
  * level bilinearly at each pixel centre, s = (i + 0.5) / w, on the AoS
  * 8-bit path (CLAMP_TO_EDGE, weights (int)round(s * W * 256) - 128 in 8.8
- * fixed point, lerp8 along s on both rows, then along t).  Checked for
- * the 8-bit formats, POT and NPOT sizes, 1D (texture/genmipmap_*); the
- * formats of other than 8 bits per channel are blitted here from their
- * 8-bit values (not checked). */
+ * fixed point, lerp8 along s on both rows, then along t), the 8-bit
+ * result stored into a narrower format as the blit's render target
+ * converts it (copy_rule, as glCopyTexImage).  A format wider than 8 bits
+ * is sampled on the float path instead (gen_mip_float).  Checked for
+ * every format, POT and NPOT sizes, 1D (texture/genmipmap_*; probe
+ * p_copy_tex). */
+/* One texel (i, j) of the w x h level blitted from src, a format wider
+ * than 8 bits, on llvmpipe's float path (use_aos is false for it): the
+ * stored values as floats (r_tex_soa.c's texel), CLAMP_TO_EDGE's linear
+ * wrap of s = (i + 0.5) / w, lp_build_lerp_2d with fused lerps; the
+ * float result to unorm16 (lp_build_clamped_float_to_unsigned_norm: the
+ * low 16 mantissa bits of v * (65535/65536) + 2^7), then to the channel's
+ * bits by a shift (scale_bits: 10-10-10-2 renders through a 16-bit blend
+ * type).  Measured: every channel of RGBA16 and RGB10_A2 2x2 -> 1x1 on
+ * random values (probe p_copy_tex). */
+static void wrap_edge_linear(float c, int n, int *x0, int *x1, float *w)
+{
+   c = fminf(c * (float)n, (float)n) - 0.5f;
+   c = fmaxf(c, 0.0f);
+   const float ip = floorf(c);
+   *w = c - ip;
+   *x0 = (int)ip;
+   *x1 = *x0 + 1 < n - 1 ? *x0 + 1 : n - 1;
+}
+
+static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int i, int j,
+                          uint16_t q[4])
+{
+   const int W = src->Width, H = src->Height;
+   int x0, x1, y0, y1;
+   float ws, wt;
+   wrap_edge_linear(((float)i + 0.5f) / (float)w, W, &x0, &x1, &ws);
+   wrap_edge_linear(((float)j + 0.5f) / (float)h, H, &y0, &y1, &wt);
+   const uint16_t *n[4] = {
+      src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x0),
+      src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x1),
+      src->Store + 4 * ((size_t)y1 * (size_t)W + (size_t)x0),
+      src->Store + 4 * ((size_t)y1 * (size_t)W + (size_t)x1),
+   };
+   for (int c = 0; c < 4; c++) {
+      const unsigned bits = src->StoreBits[c];
+      if (bits == 0) {
+         q[c] = n[0][c];   /* the format's constant */
+         continue;
+      }
+      const float scale = (float)(1.0 / (double)((1u << bits) - 1u));
+      float v[4];
+      for (int k = 0; k < 4; k++)
+         v[k] = (float)n[k][c] * scale;
+      const float a = fmaf(ws, v[1] - v[0], v[0]);
+      const float b = fmaf(ws, v[3] - v[2], v[2]);
+      q[c] = (uint16_t)(float_to_unorm16(fmaf(wt, b - a, a)) >> (16u - bits));
+   }
+}
+
 static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object *t,
                              GLint level)
 {
@@ -592,6 +647,16 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
+      if (!fgl_tex_image_fits_unorm8(base)) {
+         for (int j = 0; j < h; j++)
+            for (int i = 0; i < w; i++) {
+               uint16_t q[4];
+               gen_mip_float(src, w, h, i, j, q);
+               put_stored(img, (size_t)j * (size_t)w + (size_t)i, q, 1);
+            }
+         set_image(t, l, img);
+         continue;
+      }
       for (int j = 0; j < h; j++) {
          const long ft = lrintf(((float)j + 0.5f) / (float)h * (float)H * 256.0f) - 128;
          int y0 = (int)(ft >> 8);
@@ -613,7 +678,8 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
             uint8_t texel[4];
             for (int k = 0; k < 4; k++)
                texel[k] = lerp8(wt, lerp8(ws, a[k], b[k]), lerp8(ws, c[k], d[k]));
-            put_texels(img, (size_t)j * (size_t)w + (size_t)i, texel, 1, false);
+            put_texels(img, (size_t)j * (size_t)w + (size_t)i, texel, 1,
+                       img->Format->copy_rule);
          }
       }
       set_image(t, l, img);
@@ -858,8 +924,7 @@ void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint
  * texels whose source is outside keep their values.  The colour goes
  * through the texture's format as glTexImage stores RGBA ubyte data,
  * except for the formats whose copy differs (copy_rule; the
- * oracle's st_CopyTexSubImage blits into them).  Copies into R3G3B2 are
- * not modelled exactly (known-differences.txt). */
+ * oracle's st_CopyTexSubImage blits into them). */
 static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
                         GLint yoff, GLint x, GLint y, GLsizei w, GLsizei h)
 {
