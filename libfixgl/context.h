@@ -582,6 +582,12 @@ struct fgl_framebuffer {
    bool ColorDefined;
    /* whole-buffer clears not written yet (scene.c "Lazy clears") */
    struct r_lazy_clear Lazy;
+   /* a wide colour buffer (r_fb_state.wide; OSMesa GL_UNSIGNED_SHORT and
+    * GL_FLOAT): Width * Height pixels of four uint16_t or floats, RGBA,
+    * beside Color (which then holds their RGBA8 conversion); never
+    * cleared lazily */
+   enum r_wide_format WideFormat;
+   void *Wide;
 };
 #define FGL_LAZY_COLOR R_LAZY_COLOR
 #define FGL_LAZY_ZS    R_LAZY_ZS

@@ -487,7 +487,7 @@ static void build_dsa(const struct fgl_context *ctx, struct r_dsa_state *o)
    o->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
    o->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
    /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare */
-   o->alpha_test_float = fb && fb->AlphaBits == 0;
+   o->alpha_test_float = fb && (fb->AlphaBits == 0 || fb->Wide);
    o->alpha_ref_float = c->AlphaRef;
 }
 
@@ -526,6 +526,8 @@ static void build_blend(const struct fgl_context *ctx, struct r_blend_state *o)
    }
    for (int i = 0; i < 4; i++)
       o->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
+   if (fb && fb->Wide)
+      memcpy(o->blend_color_f, c->BlendColor, sizeof(o->blend_color_f));
    o->dst_alpha_one = fb && fb->AlphaBits == 0;
 }
 
@@ -801,6 +803,8 @@ struct r_fb_state fgl_fb_raster_state(const struct fgl_framebuffer *fb)
    o.zs_format = fb->ZSFormat;
    o.width = fb->Width;
    o.height = fb->Height;
+   o.wide_format = fb->Wide ? fb->WideFormat : R_WIDE_NONE;
+   o.wide = fb->Wide;
    return o;
 }
 

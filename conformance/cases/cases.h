@@ -67,6 +67,8 @@ extern const fc_case fc_cases_gl14_ops[];
 extern const fc_case fc_cases_gl14_points[];
 extern const fc_case fc_cases_gl15[];
 extern const fc_case fc_cases_tex3d[];
+extern const fc_case fc_cases_osmesa[];
+extern const fc_case fc_cases_tex_copy[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -41,6 +41,8 @@ static const fc_case *const groups[] = {
     fc_cases_gl14_points,
     fc_cases_gl15,
     fc_cases_tex3d,
+    fc_cases_osmesa,
+    fc_cases_tex_copy,
 };
 
 size_t fc_case_count(void)

@@ -7,6 +7,7 @@
 
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "raster/r_scene.h"
 
 void fgl_init_color(struct fgl_context *ctx)
 {
@@ -161,6 +162,20 @@ void GLAPIENTRY glClear(GLbitfield mask)
       depth_quad |= depth_clear;
       stencil_quad |= stencil_clear;
       depth_clear = stencil_clear = false;
+   }
+
+   /* a wide colour buffer (OSMesa GL_UNSIGNED_SHORT, GL_FLOAT) is cleared
+    * at once, after what the scene holds, with the clear colour packed as
+    * st_Clear packs it (r_clear_wide_rect), its RGBA8 image beside it */
+   if (color_clear && fb->Wide) {
+      fgl_scene_flush(ctx);
+      fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR);
+      uint8_t rgba[4];
+      for (int i = 0; i < 4; i++)
+         rgba[i] = r_float_to_unorm8(ctx->Color.ClearColor[i]);
+      r_clear_wide_rect(ctx->_Raster.fb, 0, 0, fb->Width, fb->Height, ctx->Color.ClearColor);
+      r_clear_color_rect(ctx->_Raster.fb, 0, 0, fb->Width, fb->Height, rgba);
+      color_clear = false;
    }
 
    /* whole-buffer clears: a command of the scene (each tile cleared by

@@ -344,7 +344,9 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_RED_BITS:
    case GL_GREEN_BITS:
    case GL_BLUE_BITS:
-      set_ints(val, V_INT, 1, 8, 0, 0, 0);
+      /* a wide OSMesa buffer: R16G16B16A16_UNORM or R32G32B32A32_FLOAT */
+      set_ints(val, V_INT, 1, fb && fb->Wide ? (fb->WideFormat == R_WIDE_FLOAT ? 32 : 16) : 8,
+               0, 0, 0);
       return true;
    case GL_ALPHA_BITS:
       set_ints(val, V_INT, 1, fb ? fb->AlphaBits : 8, 0, 0, 0);

@@ -51,24 +51,35 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
 struct fgl_tex_pipe_format {
    uint8_t r, g, b, a, l, i;
    uint8_t bytes;
-   /* glCopyTexImage truncates the colour buffer's 8-bit channels to the
-    * format (x >> (8 - bits)) instead of rounding as texstore does
-    * (measured: every 8-bit value into B5G5R5X1, B5G5R5A1, B5G6R5) */
-   bool copy_truncates;
+   /* how glCopyTexImage stores the colour buffer's 8-bit channels
+    * (enum fgl_copy_rule): as texstore rounds them, or as the blit's
+    * conversion into the format as a render target does */
+   uint8_t copy_rule;
 };
+
+/* [S: llvmpipe/lp_state_fs.c: convert_from_blend_type, scale_bits]
+ * st_CopyTexSubImage blits into the formats llvmpipe renders to; the
+ * blend stage's 8-bit channels go to n bits by a single shift
+ * (x >> (8 - n); measured: every 8-bit value into B5G5R5X1, B5G5R5A1,
+ * B5G6R5) or, for B2G3R3, by the rounded rescale
+ * ((x >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n) (measured: every 8-bit
+ * value; probe p_copy_tex); the 10-bit channels of 10-10-10-2 through
+ * the 16-bit blend type, (unorm16 of x * (1/255)) >> 6 (measured: every
+ * 8-bit value; its 2-bit alpha rounds as texstore does) */
+enum fgl_copy_rule { COPY_TEXSTORE, COPY_TRUNCATE, COPY_RESCALE, COPY_WIDE };
 
 static const struct fgl_tex_pipe_format PF_RGBA8 = { 8, 8, 8, 8, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_RGBX8 = { 8, 8, 8, 0, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_RGBA16 = { 16, 16, 16, 16, 0, 0, 8, false };
 static const struct fgl_tex_pipe_format PF_RGBX16 = { 16, 16, 16, 0, 0, 0, 8, false };
-static const struct fgl_tex_pipe_format PF_RGB10A2 = { 10, 10, 10, 2, 0, 0, 4, false };
-static const struct fgl_tex_pipe_format PF_RGB10X2 = { 10, 10, 10, 0, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_RGB10A2 = { 10, 10, 10, 2, 0, 0, 4, COPY_WIDE };
+static const struct fgl_tex_pipe_format PF_RGB10X2 = { 10, 10, 10, 0, 0, 0, 4, COPY_WIDE };
 static const struct fgl_tex_pipe_format PF_RGBA4 = { 4, 4, 4, 4, 0, 0, 2, false };
 static const struct fgl_tex_pipe_format PF_RGBX4 = { 4, 4, 4, 0, 0, 0, 2, false };
-static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, true };
-static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, true };
-static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, true };
-static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_RGB5A1 = { 5, 5, 5, 1, 0, 0, 2, COPY_TRUNCATE };
+static const struct fgl_tex_pipe_format PF_RGB5X1 = { 5, 5, 5, 0, 0, 0, 2, COPY_TRUNCATE };
+static const struct fgl_tex_pipe_format PF_RGB565 = { 5, 6, 5, 0, 0, 0, 2, COPY_TRUNCATE };
+static const struct fgl_tex_pipe_format PF_RGB332 = { 3, 3, 2, 0, 0, 0, 1, COPY_RESCALE };
 static const struct fgl_tex_pipe_format PF_L8 = { 0, 0, 0, 0, 8, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_L16 = { 0, 0, 0, 0, 16, 0, 2, false };
 static const struct fgl_tex_pipe_format PF_A8 = { 0, 0, 0, 8, 0, 0, 1, false };
@@ -287,21 +298,36 @@ static uint8_t expand_to_8(unsigned q, unsigned bits)
    return (uint8_t)extend_to_8(q, bits);
 }
 
+/* [S: gallivm/lp_bld_conv.c:lp_build_clamped_float_to_unsigned_norm]
+ * a float in [0, 1] to unorm16 as llvmpipe's render targets take it: the
+ * low 16 mantissa bits of v * (65535/65536) + 2^7 */
+static unsigned float_to_unorm16(float v)
+{
+   const float m = v * (65535.0f / 65536.0f) + 128.0f;
+   uint32_t u;
+   memcpy(&u, &m, sizeof(u));
+   return u & 0xffffu;
+}
+
 /* One 8-bit channel value as a channel of `bits` bits stores it.
  * [S: format_utils.c:_mesa_format_convert] a 16-bit array format takes
  * the byte channel by _mesa_unorm_to_unorm(x, 8, 16) (x * 257); a packed
  * format of at most 8 bits per channel converts through an RGBA ubyte
  * intermediate (_mesa_unorm_to_unorm(x, 8, n): (x * max + 127) / 255), a
  * wider one (10-10-10-2) through float (x/255, then util_iround(f * max)).
- * `truncate`: glCopyTexImage's x >> (8 - bits) (copy_truncates). */
-static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, bool truncate)
+ * `rule`: glCopyTexImage's (enum fgl_copy_rule), COPY_TEXSTORE otherwise. */
+static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, unsigned rule)
 {
    if (bits == 8)
       return x;
    if (bits == 16)
       return (unsigned)x * 257u;
-   if (truncate)
+   if (rule == COPY_TRUNCATE)
       return (unsigned)x >> (8u - bits);
+   if (rule == COPY_RESCALE)
+      return (((unsigned)x >> bits) * ((1u << bits) - 1u) + (1u << (7u - bits))) >> (8u - bits);
+   if (rule == COPY_WIDE && bits > 8)
+      return float_to_unorm16((float)x * (1.0f / 255.0f)) >> (16u - bits);
    const unsigned max = (1u << bits) - 1u;
    if (via_float) {
       /* [S: u_format_pack.py: util_iround(x * max), (int)(f + 0.5f) off
@@ -328,7 +354,7 @@ static void put_stored(struct fgl_texture_image *img, size_t at, const uint16_t 
  * 255 in the channels the format lacks) at texel index `at` of img, in
  * img's format (truncating: as glCopyTexImage stores into some formats). */
 static void put_texels(struct fgl_texture_image *img, size_t at, const uint8_t *t, size_t n,
-                       bool truncate)
+                       unsigned rule)
 {
    uint8_t *data = img->Data + 4 * at;
    if (!img->Store) {
@@ -344,7 +370,7 @@ static void put_texels(struct fgl_texture_image *img, size_t at, const uint8_t *
          data[i] = t[i];
          continue;
       }
-      const unsigned q = store_from_8(t[i], bits, via_float, truncate);
+      const unsigned q = store_from_8(t[i], bits, via_float, rule);
       store[i] = (uint16_t)q;
       data[i] = expand_to_8(q, bits);
    }
@@ -601,10 +627,12 @@ static uint8_t lerp8(int w, int a, int b)
  * PIPE_TEX_FILTER_LINEAR blit from the level above: a quad sampling that
  * level bilinearly at each pixel centre, s = (i + 0.5) / w, on the AoS
  * 8-bit path (CLAMP_TO_EDGE, weights (int)round(s * W * 256) - 128 in 8.8
- * fixed point, lerp8 along s on both rows, then along t).  Checked for
- * the 8-bit formats, POT and NPOT sizes, 1D (texture/genmipmap_*); the
- * formats of other than 8 bits per channel are blitted here from their
- * 8-bit values (not checked). */
+ * fixed point, lerp8 along s on both rows, then along t), the 8-bit
+ * result stored into a narrower format as the blit's render target
+ * converts it (copy_rule, as glCopyTexImage).  A format wider than 8 bits
+ * is sampled on the float path instead (gen_mip_float).  Checked for
+ * every format, POT and NPOT sizes, 1D (texture/genmipmap_*; probe
+ * p_copy_tex). */
 /* The two texels and the 8.8 weight of texel i of n along an axis of the
  * level above (n_src texels), as check_gen_mipmap's blit samples it. */
 static void gen_axis(int i, int n, int n_src, int *i0, int *i1, int *w)
@@ -614,6 +642,55 @@ static void gen_axis(int i, int n, int n_src, int *i0, int *i1, int *w)
    *w = (int)(f & 255);
    *i0 = a < 0 ? 0 : a > n_src - 1 ? n_src - 1 : a;
    *i1 = b < 0 ? 0 : b > n_src - 1 ? n_src - 1 : b;
+}
+
+/* One texel (i, j) of the w x h level blitted from src, a format wider
+ * than 8 bits, on llvmpipe's float path (use_aos is false for it): the
+ * stored values as floats (r_tex_soa.c's texel), CLAMP_TO_EDGE's linear
+ * wrap of s = (i + 0.5) / w, lp_build_lerp_2d with fused lerps; the
+ * float result to unorm16 (lp_build_clamped_float_to_unsigned_norm: the
+ * low 16 mantissa bits of v * (65535/65536) + 2^7), then to the channel's
+ * bits by a shift (scale_bits: 10-10-10-2 renders through a 16-bit blend
+ * type).  Measured: every channel of RGBA16 and RGB10_A2 2x2 -> 1x1 on
+ * random values (probe p_copy_tex). */
+static void wrap_edge_linear(float c, int n, int *x0, int *x1, float *w)
+{
+   c = fminf(c * (float)n, (float)n) - 0.5f;
+   c = fmaxf(c, 0.0f);
+   const float ip = floorf(c);
+   *w = c - ip;
+   *x0 = (int)ip;
+   *x1 = *x0 + 1 < n - 1 ? *x0 + 1 : n - 1;
+}
+
+static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int i, int j,
+                          uint16_t q[4])
+{
+   const int W = src->Width, H = src->Height;
+   int x0, x1, y0, y1;
+   float ws, wt;
+   wrap_edge_linear(((float)i + 0.5f) / (float)w, W, &x0, &x1, &ws);
+   wrap_edge_linear(((float)j + 0.5f) / (float)h, H, &y0, &y1, &wt);
+   const uint16_t *n[4] = {
+      src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x0),
+      src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x1),
+      src->Store + 4 * ((size_t)y1 * (size_t)W + (size_t)x0),
+      src->Store + 4 * ((size_t)y1 * (size_t)W + (size_t)x1),
+   };
+   for (int c = 0; c < 4; c++) {
+      const unsigned bits = src->StoreBits[c];
+      if (bits == 0) {
+         q[c] = n[0][c];   /* the format's constant */
+         continue;
+      }
+      const float scale = (float)(1.0 / (double)((1u << bits) - 1u));
+      float v[4];
+      for (int k = 0; k < 4; k++)
+         v[k] = (float)n[k][c] * scale;
+      const float a = fmaf(ws, v[1] - v[0], v[0]);
+      const float b = fmaf(ws, v[3] - v[2], v[2]);
+      q[c] = (uint16_t)(float_to_unorm16(fmaf(wt, b - a, a)) >> (16u - bits));
+   }
 }
 
 static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object *t,
@@ -645,6 +722,16 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
+      if (!fgl_tex_image_fits_unorm8(base) && D == 1) {
+         for (int j = 0; j < h; j++)
+            for (int i = 0; i < w; i++) {
+               uint16_t q[4];
+               gen_mip_float(src, w, h, i, j, q);
+               put_stored(img, (size_t)j * (size_t)w + (size_t)i, q, 1);
+            }
+         set_image(t, l, img);
+         continue;
+      }
       for (int k = 0; k < d; k++) {
          int z0, z1, wr;
          gen_axis(k, d, D, &z0, &z1, &wr);
@@ -670,7 +757,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
                   for (int n = 0; n < 4; n++)
                      texel[0][n] = lerp8(wr, texel[0][n], texel[1][n]);
                put_texels(img, ((size_t)k * (size_t)h + (size_t)j) * (size_t)w + (size_t)i,
-                          texel[0], 1, false);
+                          texel[0], 1, img->Format->copy_rule);
             }
          }
       }
@@ -967,9 +1054,8 @@ void GLAPIENTRY glTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GL
  * y up) to texels (xoff, yoff) of img, clipped to the framebuffer; the
  * texels whose source is outside keep their values.  The colour goes
  * through the texture's format as glTexImage stores RGBA ubyte data,
- * except for the formats whose copy truncates (copy_truncates; the
- * oracle's st_CopyTexSubImage blits into them).  Copies into R3G3B2 are
- * not modelled exactly (known-differences.txt). */
+ * except for the formats whose copy differs (copy_rule; the
+ * oracle's st_CopyTexSubImage blits into them). */
 static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
                         GLint yoff, GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h)
 {
@@ -1010,7 +1096,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
          if (fb->AlphaBits == 0)
             c[3] = 255;
          rebase_texel(img->BaseFormat, c, t);
-         put_texels(img, at + (size_t)i, t, 1, img->Format->copy_truncates);
+         put_texels(img, at + (size_t)i, t, 1, img->Format->copy_rule);
       }
    }
    ctx->NewState |= FGL_NEW_TEXTURE;

@@ -10,9 +10,17 @@
  * stencil alone S8, 24 or more depth bits Z24X8, 16..23 Z16; any accumBits
  * gives a 16-bit-per-channel accumulation buffer (main/accum.c).
  *
- * Differences from the oracle, on purpose: OSMESA_BGR works (Mesa has no
- * gallium format for it and fails OSMesaMakeCurrent); GL_UNSIGNED_SHORT,
- * GL_FLOAT and OSMESA_RGB_565 buffers are refused (OSMesaMakeCurrent
+ * GL_UNSIGNED_SHORT and GL_FLOAT buffers of OSMESA_RGBA, BGRA, ARGB and
+ * RGB are rendered as the oracle renders them, into a wide target
+ * (R16G16B16A16_UNORM, R32G32B32A32_FLOAT: fb.Wide, r_fb_state.wide)
+ * whose channels glFlush copies as they are, in RGBA (RGB) order whatever
+ * the OSMesa format [S: gallium/frontends/osmesa/osmesa.c:
+ * osmesa_choose_format, osmesa_read_buffer] (ORACLE-NOTES.md "OSMesa
+ * contexts and buffers").
+ *
+ * Differences from the oracle, on purpose: OSMESA_BGR works with
+ * GL_UNSIGNED_BYTE (Mesa has no gallium format for it and fails
+ * OSMesaMakeCurrent); OSMESA_RGB_565 buffers are refused (OSMesaMakeCurrent
  * returns GL_FALSE); NULL arguments never crash.
  */
 /* the GL 1.4 entry points fixgl exports (glWindowPos) are declared by
@@ -60,9 +68,51 @@ struct osmesa_context {
    int zs_bpv;
 };
 
-static int bytes_per_pixel(GLenum format)
+static int channels(GLenum format)
 {
    return (format == OSMESA_RGB || format == OSMESA_BGR) ? 3 : 4;
+}
+
+/* bytes of a pixel of the application's buffer */
+static int bytes_per_pixel(GLenum format, GLenum type)
+{
+   const int size = type == GL_FLOAT ? 4 : type == GL_UNSIGNED_SHORT ? 2 : 1;
+   return channels(format) * size;
+}
+
+/* The oracle's render target for format/type (osmesa_choose_format):
+ * GL_UNSIGNED_SHORT and GL_FLOAT make a wide one for the RGBA family and
+ * RGB; false for what it refuses. */
+static bool choose_type(GLenum format, GLenum type, enum r_wide_format *wide)
+{
+   *wide = R_WIDE_NONE;
+   switch (format) {
+   case OSMESA_RGBA: case OSMESA_BGRA: case OSMESA_ARGB: case OSMESA_RGB:
+      if (type == GL_UNSIGNED_SHORT)
+         *wide = R_WIDE_UNORM16;
+      else if (type == GL_FLOAT)
+         *wide = R_WIDE_FLOAT;
+      return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT || type == GL_FLOAT;
+   case OSMESA_BGR:
+      return type == GL_UNSIGNED_BYTE;
+   default:
+      return false;
+   }
+}
+
+/* One row of the wide target into the application's buffer: the
+ * channels as they are (nc of each pixel's four), 2 or 4 bytes each. */
+static void copy_row_wide(const struct fgl_framebuffer *fb, int nc, uint8_t *restrict dst,
+                          size_t first, int w)
+{
+   const size_t size = fb->WideFormat == R_WIDE_FLOAT ? 4 : 2;
+   const uint8_t *src = (const uint8_t *)fb->Wide + first * 4 * size;
+   if (nc == 4) {
+      memcpy(dst, src, (size_t)w * 4 * size);
+      return;
+   }
+   for (int x = 0; x < w; x++)
+      memcpy(dst + (size_t)x * 3 * size, src + (size_t)x * 4 * size, 3 * size);
 }
 
 static int zs_bytes_per_value(enum r_zs_format f)
@@ -145,8 +195,17 @@ static void flush_front_rect(struct fgl_framebuffer *fb, int x0, int y0, int x1,
       flush_front_lazy_rect(fb, x0, y0, x1, y1);
       return;
    }
-   const int bpp = bytes_per_pixel(c->format);
+   const int bpp = bytes_per_pixel(c->format, c->type);
    const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
+   if (fb->Wide) {
+      for (int y = y0; y < y1; y++) {
+         const int dst_row = c->y_up ? fb->Height - 1 - y : y;
+         copy_row_wide(fb, channels(c->format),
+                       (uint8_t *)c->user_buffer + (size_t)dst_row * stride + (size_t)x0 * (size_t)bpp,
+                       (size_t)y * (size_t)fb->Width + (size_t)x0, x1 - x0);
+      }
+      return;
+   }
    for (int y = y0; y < y1; y++) {
       const uint8_t *src = fb->Color + ((size_t)y * (size_t)fb->Width + (size_t)x0) * 4;
       const int dst_row = c->y_up ? fb->Height - 1 - y : y;
@@ -171,7 +230,7 @@ static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, 
 {
    struct osmesa_context *c = osmesa_of(fb);
    const struct r_lazy_clear *lz = &fb->Lazy;
-   const int bpp = bytes_per_pixel(c->format);
+   const int bpp = bytes_per_pixel(c->format, GL_UNSIGNED_BYTE);   /* never wide */
    const size_t stride = (size_t)bpp * (size_t)(c->row_length > 0 ? c->row_length : fb->Width);
    uint8_t fill[4 * R_TILE_SIZE];
    for (int i = 0; i < R_TILE_SIZE; i++)
@@ -248,6 +307,7 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
 {
    GLenum format = GL_RGBA;
    int depth = 0, stencil = 0, accum = 0;
+   int profile = OSMESA_COMPAT_PROFILE, major = 1, minor = 0;
 
    for (int i = 0; attribList && attribList[i]; i += 2) {
       const int value = attribList[i + 1];
@@ -280,19 +340,30 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
       case OSMESA_PROFILE:
          if (value != OSMESA_CORE_PROFILE && value != OSMESA_COMPAT_PROFILE)
             return NULL;
+         profile = value;
          break;
       case OSMESA_CONTEXT_MAJOR_VERSION:
          if (value < 1)
             return NULL;
+         major = value;
          break;
       case OSMESA_CONTEXT_MINOR_VERSION:
          if (value < 0)
             return NULL;
+         minor = value;
          break;
       default:
+         fprintf(stderr, "Bad attribute in OSMesaCreateContextAttribs()\n");
          return NULL;
       }
    }
+   /* What the context cannot provide gives NULL, as in Mesa, whose
+    * st_api_create_context compares major * 10 + minor (the last value
+    * of each attribute) with the version it implements: fixgl has no
+    * core profile and implements at most GL 1.5 (ORACLE-NOTES.md "OSMesa
+    * contexts and buffers") */
+   if (profile == OSMESA_CORE_PROFILE || (long long)major * 10 + minor > 15)
+      return NULL;
 
    struct osmesa_context *c = fgl_calloc(1, sizeof(*c));
    if (!c)
@@ -331,6 +402,8 @@ static void free_buffers(struct osmesa_context *c)
 {
    fgl_lazy_fini(&c->fb);
    fgl_free(c->fb.Color);
+   fgl_free(c->fb.Wide);
+   c->fb.Wide = NULL;
    fgl_free(c->depth_mem);
    c->depth_mem = NULL;
    fgl_free(c->fb.Stencil);
@@ -358,8 +431,10 @@ OSMesaDestroyContext(OSMesaContext c)
    fgl_free(c);
 }
 
-/* (Re)allocate the internal buffers for a width x height image. */
-static bool alloc_buffers(struct osmesa_context *c, int width, int height)
+/* (Re)allocate the internal buffers for a width x height image, a wide
+ * colour target for `wide`. */
+static bool alloc_buffers(struct osmesa_context *c, int width, int height,
+                          enum r_wide_format wide)
 {
    const size_t n = (size_t)width * (size_t)height;
    free_buffers(c);
@@ -368,7 +443,7 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->Height = height;
    fb->DepthBits = c->depth_bits;
    fb->StencilBits = c->stencil_bits;
-   fb->AlphaBits = bytes_per_pixel(c->format) == 4 ? 8 : 0;
+   fb->AlphaBits = channels(c->format) == 4 ? (wide == R_WIDE_UNORM16 ? 16 : wide ? 32 : 8) : 0;
    fb->ColorR8G8B8A8 = c->format == OSMESA_RGBA;
    fb->ZSFormat = c->zs_format;
    fb->FlushFront = flush_front;
@@ -376,6 +451,9 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    fb->FlushFrontEnd = flush_front_end;
    fb->AccumBits = c->accum_bits;
    fb->Color = fgl_calloc(n, 4);
+   fb->WideFormat = wide;
+   if (wide)
+      fb->Wide = fgl_calloc(n, wide == R_WIDE_FLOAT ? 4 * sizeof(float) : 4 * sizeof(uint16_t));
    if (c->zs_format == R_ZS_S8)
       fb->Stencil = fgl_calloc(n, 1);
    else if (c->zs_format != R_ZS_NONE) {
@@ -389,7 +467,7 @@ static bool alloc_buffers(struct osmesa_context *c, int width, int height)
    }
    if (c->accum_bits > 0)
       fb->Accum = fgl_calloc(n, 4 * sizeof(int16_t));
-   if (!fb->Color || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil) ||
+   if (!fb->Color || (wide && !fb->Wide) || (c->zs_format != R_ZS_NONE && !fb->Depth && !fb->Stencil) ||
        (c->accum_bits > 0 && !fb->Accum)) {
       free_buffers(c);
       return false;
@@ -414,8 +492,8 @@ OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
    if (!c || !buffer || width < 1 || height < 1 ||
        width > OSMESA_MAX_SIZE || height > OSMESA_MAX_SIZE)
       return GL_FALSE;
-   if (type != GL_UNSIGNED_BYTE || c->format == OSMESA_COLOR_INDEX ||
-       c->format == OSMESA_RGB_565) {
+   enum r_wide_format wide;
+   if (!choose_type(c->format, type, &wide)) {
       fprintf(stderr, "OSMesaMakeCurrent(unsupported format/type)\n");
       return GL_FALSE;
    }
@@ -424,12 +502,14 @@ OSMesaMakeCurrent(OSMesaContext c, void *buffer, GLenum type,
    if (cur && (cur != c->gl || c->user_buffer != buffer))
       fgl_flush_front(cur);
 
-   if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height) {
+   if (!c->has_buffer || c->fb.Width != width || c->fb.Height != height ||
+       c->fb.WideFormat != wide) {
       /* what c's scene holds is drawn before its buffers go */
       fgl_scene_flush(c->gl);
-      if (!alloc_buffers(c, width, height))
+      if (!alloc_buffers(c, width, height, wide))
          return GL_FALSE;
-      /* Mesa destroys the osmesa_buffer of another size and makes a new
+      /* Mesa destroys the osmesa_buffer of another size or colour format
+       * and makes a new
        * window framebuffer: the read buffer, which lives there, is GL_FRONT
        * again; the draw buffer is context state and carries over
        * [S: gallium/frontends/osmesa/osmesa.c:OSMesaMakeCurrent;

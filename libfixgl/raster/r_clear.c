@@ -56,6 +56,26 @@ void r_clear_color_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int
    FOR_RUNS(fb, x0, y0, x1, y1, first, n, fill32(c + first, v, n));
 }
 
+void r_clear_wide_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                       const float rgba[4])
+{
+   if (!fb->wide || x0 >= x1 || y0 >= y1)
+      return;
+   if (fb->wide_format == R_WIDE_FLOAT) {
+      float *c = fb->wide;
+      FOR_RUNS(fb, x0, y0, x1, y1, first, n,
+               for (size_t i = 0; i < n; i++) memcpy(c + 4 * (first + i), rgba, 16));
+      return;
+   }
+   /* util_pack_color: util_iround(clamped * 65535), (int)(f + 0.5f) */
+   uint16_t v[4];
+   for (int k = 0; k < 4; k++)
+      v[k] = (uint16_t)(int)(r_clamp01(rgba[k]) * 65535.0f + 0.5f);
+   uint16_t *c = fb->wide;
+   FOR_RUNS(fb, x0, y0, x1, y1, first, n,
+            for (size_t i = 0; i < n; i++) memcpy(c + 4 * (first + i), v, 8));
+}
+
 /* n depth/stencil values from index `first` keep the bits `keep` and take
  * `set` (Z24X8 / Z24S8) */
 static void zs32_runs(uint32_t *z, uint32_t keep, uint32_t set, size_t n)

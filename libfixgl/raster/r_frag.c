@@ -14,6 +14,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "math/m_gallivm.h"
 
@@ -677,6 +678,137 @@ static bool stencil_depth_test(const struct r_state *rs, size_t idx, float z)
    return pass;
 }
 
+/* ---- wide targets (r_fb_state.wide) ---------------------------------
+ *
+ * [S: llvmpipe/lp_state_fs.c:generate_unswizzled_blend,
+ * lp_blend_type_from_format_desc; gallivm/lp_bld_blend.c:lp_build_blend]
+ * the colour of a fragment that passed the tests, into an
+ * R16G16B16A16_UNORM target: clamped (the shader's colour clamp), to
+ * unorm16 by lp_build_clamped_float_to_unsigned_norm, blended in 16-bit
+ * lanes (lp_build_mul_norm: t = a*b, (t + (t >> 16) + 0x8000) >> 16;
+ * saturating add and subtract); into R32G32B32A32_FLOAT: unclamped (no
+ * fragment colour clamp for a float buffer), blended on floats
+ * (s * sf + d * df, unfused).  Measured: probe p_osmesa_wide. */
+static uint16_t float_to_unorm16(float c)
+{
+   const float x = r_clamp01(c) * (65535.0f / 65536.0f) + 128.0f;
+   uint32_t u;
+   memcpy(&u, &x, sizeof(u));
+   return (uint16_t)(u & 0xffffu);
+}
+
+/* logic_op on 16-bit channels */
+static unsigned logic_op16(unsigned mode, unsigned s, unsigned d)
+{
+   unsigned r;
+   switch (mode) {
+   case 0x0: r = 0; break;
+   case 0x1: r = s & d; break;
+   case 0x2: r = s & ~d; break;
+   case 0x3: r = s; break;
+   case 0x4: r = ~s & d; break;
+   case 0x5: r = d; break;
+   case 0x6: r = s ^ d; break;
+   case 0x7: r = s | d; break;
+   case 0x8: r = ~(s | d); break;
+   case 0x9: r = ~(s ^ d); break;
+   case 0xa: r = ~d; break;
+   case 0xb: r = s | ~d; break;
+   case 0xc: r = ~s; break;
+   case 0xd: r = ~s | d; break;
+   case 0xe: r = ~(s & d); break;
+   default:  r = ~0u; break;
+   }
+   return r & 0xffffu;
+}
+
+static inline unsigned mul_u16(unsigned a, unsigned b)
+{
+   const uint32_t t = a * b;
+   return (t + (t >> 16) + 0x8000u) >> 16;
+}
+
+/* blend_factor on unorm16 (one = 65535) or floats (one = 1) */
+#define WIDE_FACTOR(T, ONE, CONST)                                               switch (f) {                                                                  case R_BF_ZERO:            return 0;                                          case R_BF_ONE:             return ONE;                                        case R_BF_SRC_COLOR:       return src[c];                                     case R_BF_INV_SRC_COLOR:   return ONE - src[c];                               case R_BF_SRC_ALPHA:       return src[3];                                     case R_BF_INV_SRC_ALPHA:   return ONE - src[3];                               case R_BF_DST_COLOR:       return dst[c];                                     case R_BF_INV_DST_COLOR:   return ONE - dst[c];                               case R_BF_DST_ALPHA:       return dst[3];                                     case R_BF_INV_DST_ALPHA:   return ONE - dst[3];                               case R_BF_SRC_ALPHA_SATURATE: {                                                  if (c == 3)                                                                      return ONE;                                                                const T inv_da = ONE - dst[3];                                                return src[3] < inv_da ? src[3] : inv_da;                                  }                                                                             case R_BF_CONST_COLOR:     return CONST[c];                                   case R_BF_INV_CONST_COLOR: return ONE - CONST[c];                             case R_BF_CONST_ALPHA:     return CONST[3];                                   case R_BF_INV_CONST_ALPHA: return ONE - CONST[3];                             default:                   return 0;                                          }
+
+static unsigned factor_u16(enum r_blend_factor f, int c, const unsigned src[4],
+                           const unsigned dst[4], const unsigned k[4])
+{
+   WIDE_FACTOR(unsigned, 65535u, k)
+}
+
+static float factor_f(enum r_blend_factor f, int c, const float src[4], const float dst[4],
+                      const float k[4])
+{
+   WIDE_FACTOR(float, 1.0f, k)
+}
+
+static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
+{
+   const struct r_blend_state *b = rs->blend;
+   if (rs->fb->wide_format == R_WIDE_UNORM16) {
+      uint16_t *dst = (uint16_t *)rs->fb->wide + 4 * idx;
+      unsigned s[4], d[4], k[4], out[4];
+      for (int c = 0; c < 4; c++) {
+         s[c] = float_to_unorm16(color[c]);
+         d[c] = dst[c];
+         k[c] = float_to_unorm16(b->blend_color_f[c]);
+      }
+      if (b->dst_alpha_one)
+         d[3] = 65535u;
+      for (int c = 0; c < 4; c++) {
+         if (b->logic_op) {
+            out[c] = logic_op16(b->logic_op_mode, s[c], d[c]);
+            continue;
+         }
+         if (!b->enable) {
+            out[c] = s[c];
+            continue;
+         }
+         const bool a = c == 3 && b->separate_alpha;
+         const unsigned ts = mul_u16(s[c], factor_u16(a ? b->blend_src_a : b->blend_src, c,
+                                                      s, d, k));
+         const unsigned td = mul_u16(d[c], factor_u16(a ? b->blend_dst_a : b->blend_dst, c,
+                                                      s, d, k));
+         switch (a ? b->blend_eq_a : b->blend_eq) {
+         case R_BLEND_SUBTRACT:         out[c] = ts > td ? ts - td : 0; break;
+         case R_BLEND_REVERSE_SUBTRACT: out[c] = td > ts ? td - ts : 0; break;
+         case R_BLEND_MIN:              out[c] = ts < td ? ts : td; break;
+         case R_BLEND_MAX:              out[c] = ts > td ? ts : td; break;
+         default:                       out[c] = ts + td > 65535u ? 65535u : ts + td; break;
+         }
+      }
+      for (int c = 0; c < 4; c++)
+         if (b->color_mask & (1u << c))
+            dst[c] = (uint16_t)out[c];
+      return;
+   }
+   float *dst = (float *)rs->fb->wide + 4 * idx;
+   float d[4] = { dst[0], dst[1], dst[2], b->dst_alpha_one ? 1.0f : dst[3] };
+   float out[4];
+   for (int c = 0; c < 4; c++) {
+      if (!b->enable || b->logic_op) {
+         out[c] = color[c];   /* no logic op on a float target */
+         continue;
+      }
+      const bool a = c == 3 && b->separate_alpha;
+      const float ts = color[c] * factor_f(a ? b->blend_src_a : b->blend_src, c, color, d,
+                                           b->blend_color_f);
+      const float td = d[c] * factor_f(a ? b->blend_dst_a : b->blend_dst, c, color, d,
+                                       b->blend_color_f);
+      switch (a ? b->blend_eq_a : b->blend_eq) {
+      case R_BLEND_SUBTRACT:         out[c] = ts - td; break;
+      case R_BLEND_REVERSE_SUBTRACT: out[c] = td - ts; break;
+      case R_BLEND_MIN:              out[c] = fminf(ts, td); break;
+      case R_BLEND_MAX:              out[c] = fmaxf(ts, td); break;
+      default:                       out[c] = ts + td; break;
+      }
+   }
+   for (int c = 0; c < 4; c++)
+      if (b->color_mask & (1u << c))
+         dst[c] = out[c];
+}
+
 void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const float color[4])
 {
    const size_t idx = (size_t)py * (size_t)rs->fb->width + (size_t)px;
@@ -687,6 +819,8 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
          return;
       if (rs->samples)
          rs->samples->n++;
+      if (rs->fb->wide)
+         wide_ops(rs, idx, color);
       dst[0] = r_float_to_unorm8(color[0]);
       dst[1] = r_float_to_unorm8(color[1]);
       dst[2] = r_float_to_unorm8(color[2]);
@@ -725,6 +859,8 @@ void r_fragment_ops(const struct r_state *rs, int px, int py, float z, const flo
     * mask, blending and the logic op do not matter) */
    if (rs->samples)
       rs->samples->n++;
+   if (rs->fb->wide)
+      wide_ops(rs, idx, color);
 
    /* blending or logic op on the colour converted to unorm8
     * [S: llvmpipe/lp_state_fs.c:generate_unswizzled_blend,

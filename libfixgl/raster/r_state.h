@@ -381,12 +381,30 @@ static inline uint64_t r_stats_now(void)
  * states are equal bytes, padding included. */
 
 /* The framebuffer target. */
+/* A wide colour buffer: OSMesa's GL_UNSIGNED_SHORT and GL_FLOAT buffers,
+ * which the oracle renders into as R16G16B16A16_UNORM and
+ * R32G32B32A32_FLOAT targets (ORACLE-NOTES.md "OSMesa contexts and
+ * buffers"): four uint16_t or four floats per pixel, RGBA, y-down. */
+enum r_wide_format { R_WIDE_NONE, R_WIDE_UNORM16, R_WIDE_FLOAT };
+
 struct r_fb_state {
    uint8_t *color;              /* RGBA8 (NULL: no colour buffer) */
    void *zs;
    enum r_zs_format zs_format;
    int width, height;
+   /* a wide target (else R_WIDE_NONE, NULL): the colour as the oracle
+    * keeps it, written by the reference kernels' r_fragment_ops (no block
+    * kernel is chosen for it) and by r_clear_wide; `color` then holds
+    * its RGBA8 conversion for the readers of 8-bit pixels */
+   enum r_wide_format wide_format;
+   void *wide;
 };
+
+/* r_clear.c: the rectangle of fb's wide target cleared to `rgba` (as
+ * st_Clear's util_pack_color packs it: unclamped floats, or unorm16 by
+ * util_iround) */
+void r_clear_wide_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int y1,
+                       const float rgba[4]);
 
 /* The rasterizer: facing, culling, offset, stipple, point and line size
  * (st_atom_rasterizer.c, llvmpipe_create_rasterizer_state). */
@@ -457,6 +475,7 @@ struct r_blend_state {
    unsigned logic_op_mode;      /* GL op - GL_CLEAR (0..15) */
    unsigned color_mask;         /* bit 0 red .. bit 3 alpha */
    bool dst_alpha_one;          /* colour buffer without alpha bits */
+   float blend_color_f[4];      /* the blend colour as floats (wide targets) */
 };
 
 /* The fragment program: the varyings it reads, colour sum, fog, the

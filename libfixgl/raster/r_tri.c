@@ -812,7 +812,8 @@ void r_choose_kernels(struct r_state *rs)
    rs->tri_kernel[0] = rs->tri_kernel[1] = NULL;
    rs->line_kernel[0] = rs->line_kernel[1] = NULL;
 #ifdef FGL_HAVE_BLOCK_KERNELS
-   if (rs->reference_kernels ||
+   /* a wide target: the reference kernels (r_fragment_ops) only */
+   if (rs->reference_kernels || rs->fb->wide ||
        !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
       return;
    for (int flat = 0; flat < 2; flat++)

@@ -118,6 +118,115 @@ static void test_create_destroy(void)
   OSMesaDestroyContext(NULL); /* must be a no-op */
 }
 
+/* Creates a context from `attribs`; reports whether one came back and, if
+ * it binds, that it draws (a cleared pixel reads back).  Destroys it. */
+static int try_attribs(const int *attribs)
+{
+  OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, NULL);
+  if (!ctx)
+    return 0;
+  static unsigned char px[4 * 4 * 4];
+  int drew = 0;
+  if (OSMesaMakeCurrent(ctx, px, GL_UNSIGNED_BYTE, 4, 4)) {
+    glClearColor(0.0f, 1.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    drew = px[1] == 255 && px[0] == 0 && glGetError() == GL_NO_ERROR;
+    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+  }
+  OSMesaDestroyContext(ctx);
+  return drew ? 2 : 1;
+}
+
+#define ATTRIBS(...) ((const int[]){ __VA_ARGS__, 0 })
+
+/* OSMesaCreateContextAttribs: the attributes both libraries refuse (each
+ * value checked as it is read, so a bad one refuses even when a later one
+ * is good), and the GL 1.x requests both honour; the last value of a
+ * repeated attribute is the one that counts. */
+static void test_create_attribs(void)
+{
+  const struct { const char *what; const int *attribs; int want; } cases[] = {
+    { "empty list", ATTRIBS(0), 2 },
+    { "compat profile", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE), 2 },
+    { "compat 1.0", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 0), 2 },
+    { "compat 1.3", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 3), 2 },
+    { "compat 1.5", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 5), 2 },
+    { "minor 5 alone", ATTRIBS(OSMESA_CONTEXT_MINOR_VERSION, 5), 2 },
+    { "major 0", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 0), 0 },
+    { "major -1", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, -1), 0 },
+    { "minor -1", ATTRIBS(OSMESA_CONTEXT_MINOR_VERSION, -1), 0 },
+    { "major 0 then 1", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 0, OSMESA_CONTEXT_MAJOR_VERSION, 1), 0 },
+    { "compat 4.6", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 6), 0 },
+    { "1.100", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 100), 0 },
+    { "core 5.0", ATTRIBS(OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                          OSMESA_CONTEXT_MAJOR_VERSION, 5, OSMESA_CONTEXT_MINOR_VERSION, 0), 0 },
+    { "profile 0x1234", ATTRIBS(OSMESA_PROFILE, 0x1234), 0 },
+    { "core then compat", ATTRIBS(OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                                  OSMESA_PROFILE, OSMESA_COMPAT_PROFILE), 2 },
+    { "major 4 then 1", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MAJOR_VERSION, 1), 2 },
+    { "unknown attribute", ATTRIBS(0x9999, 1), 0 },
+    { "OSMESA_ROW_LENGTH as an attribute", ATTRIBS(OSMESA_ROW_LENGTH, 5), 0 },
+    { "format 0x1234", ATTRIBS(OSMESA_FORMAT, 0x1234), 0 },
+    { "format BGRA", ATTRIBS(OSMESA_FORMAT, OSMESA_BGRA), 2 },
+    { "depth -1", ATTRIBS(OSMESA_DEPTH_BITS, -1), 0 },
+    { "stencil -1", ATTRIBS(OSMESA_STENCIL_BITS, -1), 0 },
+    { "accum -1", ATTRIBS(OSMESA_ACCUM_BITS, -1), 0 },
+    { "bits 100", ATTRIBS(OSMESA_DEPTH_BITS, 100, OSMESA_STENCIL_BITS, 100,
+                          OSMESA_ACCUM_BITS, 100), 2 },
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    const int got = try_attribs(cases[i].attribs);
+    char what[96];
+    snprintf(what, sizeof what, "CreateContextAttribs(%s)", cases[i].what);
+    note(what, got);
+    CHECK(got == cases[i].want, "%s: %d, expected %d", what, got, cases[i].want);
+  }
+#ifdef FIXGL_API_TEST_FIXGL
+  /* What fixgl cannot provide (the oracle, a GL 4.5 implementation, gives
+   * a context): a core profile of any version, a compatibility profile
+   * above 1.5; a compatibility context keeps its GL_VERSION. */
+  const struct { const char *what; const int *attribs; } refused[] = {
+    { "core", ATTRIBS(OSMESA_PROFILE, OSMESA_CORE_PROFILE) },
+    { "core 1.0", ATTRIBS(OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                          OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 0) },
+    { "core 3.3", ATTRIBS(OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                          OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3) },
+    { "compat then core", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                                  OSMESA_PROFILE, OSMESA_CORE_PROFILE) },
+    { "compat 1.6", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 6) },
+    { "compat 2.0", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 2) },
+    { "compat 2.1", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 2, OSMESA_CONTEXT_MINOR_VERSION, 1) },
+    { "compat 3.3", ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3) },
+    { "compat 4.5", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5) },
+    { "major 2147483647", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 2147483647) },
+    { "1.5 then 1.6", ATTRIBS(OSMESA_CONTEXT_MAJOR_VERSION, 1, OSMESA_CONTEXT_MINOR_VERSION, 5,
+                              OSMESA_CONTEXT_MINOR_VERSION, 6) },
+  };
+  for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++)
+    CHECK(try_attribs(refused[i].attribs) == 0, "CreateContextAttribs(%s) gave a context",
+          refused[i].what);
+  /* a NULL list is the empty list (Mesa reads through it) */
+  CHECK(try_attribs(NULL) == 2, "CreateContextAttribs(NULL) gave no working context");
+  OSMesaContext ctx = OSMesaCreateContextAttribs(
+      ATTRIBS(OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 1,
+              OSMESA_CONTEXT_MINOR_VERSION, 5), NULL);
+  CHECK(ctx != NULL, "compat 1.5 refused");
+  if (ctx) {
+    CHECK(OSMesaMakeCurrent(ctx, color_buf, GL_UNSIGNED_BYTE, W, H) == GL_TRUE, "bind failed");
+    const char *v = (const char *)glGetString(GL_VERSION);
+    CHECK(v && strncmp(v, "1.1", 3) == 0, "compat 1.5 context: GL_VERSION %s", v ? v : "NULL");
+    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+    OSMesaDestroyContext(ctx);
+  }
+#endif
+}
+
 /* OSMesaGetIntegerv and OSMesaPixelStore on a bound RGBA context. */
 static void test_integers(void)
 {
@@ -337,6 +446,7 @@ int main(void)
 {
   test_make_current_rejects();
   test_create_destroy();
+  test_create_attribs();
   test_integers();
   test_buffers();
   test_proc_address();
