@@ -49,7 +49,7 @@ REQUIRED = {
     "glx": {
         "suites": {"glx"},
         "tests": {"glx-gears", "glx-texcube", "glx-quadrics", "glx-glxapi", "glx-glxgears",
-                  "glx-glxinfo"},
+                  "glx-glxinfo", "glx-exports"},
     },
 }
 

@@ -67,15 +67,37 @@ def stop(proc):
             proc.wait()
 
 
-def env_for(which, display, libgl_dir):
+def sanitizer_runtime(libgl_dir):
+    """The AddressSanitizer runtime fixgl's libGL.so.1 needs, or None: in a
+    sanitized build (CI's build-asan) the library is instrumented while the
+    programs are not (they are built without sanitizers, as unmodified
+    binaries are), so the runtime must be loaded first (LD_PRELOAD)."""
+    r = subprocess.run(["ldd", os.path.join(libgl_dir, "libGL.so.1")], capture_output=True, text=True)
+    for line in r.stdout.splitlines():
+        parts = line.split()
+        if parts and parts[0].startswith("libasan.so") and len(parts) >= 3 and parts[2].startswith("/"):
+            return parts[2]
+    return None
+
+
+def env_for(which, display, libgl_dir, preload=None):
     env = dict(os.environ, DISPLAY=display)
     env.pop("LD_LIBRARY_PATH", None)
     env.pop("LD_PRELOAD", None)
+    preloads = [os.path.abspath(preload)] if preload else []
     if which == "mesa":
         env["LIBGL_ALWAYS_SOFTWARE"] = "1"
         env["GALLIUM_DRIVER"] = "llvmpipe"
     else:
         env["LD_LIBRARY_PATH"] = os.path.abspath(libgl_dir)
+        asan = sanitizer_runtime(libgl_dir)
+        if asan:
+            preloads.insert(0, asan)
+            # the programs (freeglut, Xlib) leak at exit: leaks are not
+            # checked here, every access fixgl makes still is
+            env["ASAN_OPTIONS"] = ":".join(filter(None, [env.get("ASAN_OPTIONS"), "detect_leaks=0"]))
+    if preloads:
+        env["LD_PRELOAD"] = " ".join(preloads)
     return env
 
 
@@ -194,7 +216,7 @@ def cmd_glxgears(libgl_dir, out_dir, frozen, grab):
     for which in ("mesa", "fixgl"):
         xvfb, display = start_xvfb()
         env = env_for(which, display, libgl_dir)
-        genv = dict(env, LD_PRELOAD=os.path.abspath(frozen))
+        genv = env_for(which, display, libgl_dir, preload=frozen)
         proc = subprocess.Popen([gears, "-geometry", "300x300+0+0"], env=genv,
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         try:

@@ -116,15 +116,18 @@ struct glx_display {
    struct __GLXFBConfigRec *configs;
    struct glx_drawable *drawables;
    struct glx_visual_choice *choices;
+   struct __GLXcontextRec *contexts;   /* every context made for dpy */
    int has_shm;                 /* -1 not asked yet, 0, 1 */
 };
 
 struct __GLXcontextRec {
    struct fgl_context *gl;
+   struct glx_display *disp;    /* NULL once the display is closed */
    Display *dpy;
    struct __GLXFBConfigRec cfg;
    GLXDrawable draw, read;
-   struct glx_drawable *bound;
+   struct glx_drawable *bound;  /* the drawable its GL context draws into */
+   struct __GLXcontextRec *next;
 };
 
 /* The GLX context current on this thread (its GL context is the one
@@ -144,6 +147,7 @@ static GLXContext current_context(void)
  * XAddExtension's codes) while the connection is still open. */
 
 static void free_drawable(struct glx_drawable *d, bool connected);
+static void unbind_contexts(struct glx_display *gd, const struct glx_drawable *d);
 
 static XExtData **display_ext_list(Display *dpy)
 {
@@ -167,6 +171,12 @@ static int close_display(Display *dpy, XExtCodes *codes)
       if (e->free_private != ext_data_free || !e->private_data)
          continue;
       struct glx_display *gd = (struct glx_display *)(void *)e->private_data;
+      /* the contexts outlive the display: they draw nowhere from now on */
+      unbind_contexts(gd, NULL);
+      for (GLXContext c = gd->contexts; c; c = c->next) {
+         c->disp = NULL;
+         c->dpy = NULL;
+      }
       while (gd->drawables) {
          struct glx_drawable *d = gd->drawables;
          gd->drawables = d->next;
@@ -777,6 +787,25 @@ static struct glx_drawable *add_drawable(struct glx_display *gd, XID xid,
    return d;
 }
 
+/* The contexts bound to d (to any drawable when d is NULL) draw nowhere
+ * from now on: their buffers are about to go.  What the current one has
+ * binned is drawn first; the others were flushed when they stopped being
+ * current. */
+static void unbind_contexts(struct glx_display *gd, const struct glx_drawable *d)
+{
+   GLXContext cur = current_context();
+   pthread_mutex_lock(&gd->lock);
+   for (GLXContext c = gd->contexts; c; c = c->next) {
+      if (!c->bound || (d && c->bound != d))
+         continue;
+      if (c == cur)
+         fgl_scene_flush(c->gl);
+      fgl_context_bind_framebuffer(c->gl, NULL);
+      c->bound = NULL;
+   }
+   pthread_mutex_unlock(&gd->lock);
+}
+
 static void remove_drawable(struct glx_display *gd, XID xid)
 {
    pthread_mutex_lock(&gd->lock);
@@ -789,13 +818,7 @@ static void remove_drawable(struct glx_display *gd, XID xid)
    pthread_mutex_unlock(&gd->lock);
    if (!d)
       return;
-   /* a context bound to it draws nowhere from now on */
-   GLXContext cur = current_context();
-   if (cur && cur->bound == d) {
-      fgl_scene_flush(cur->gl);
-      fgl_context_bind_framebuffer(cur->gl, NULL);
-      cur->bound = NULL;
-   }
+   unbind_contexts(gd, d);
    free_drawable(d, true);
 }
 
@@ -954,7 +977,8 @@ static void present(struct glx_drawable *d)
 
 /* ---- contexts ----------------------------------------------------------- */
 
-static GLXContext create_context(Display *dpy, const struct __GLXFBConfigRec *cfg, GLXContext share)
+static GLXContext create_context(struct glx_display *gd, const struct __GLXFBConfigRec *cfg,
+                                 GLXContext share)
 {
    GLXContext c = fgl_calloc(1, sizeof(*c));
    if (!c)
@@ -970,8 +994,13 @@ static GLXContext create_context(Display *dpy, const struct __GLXFBConfigRec *cf
       fgl_share_texobjs(c->gl, share->gl);
       fgl_share_bufobjs(c->gl, share->gl);
    }
-   c->dpy = dpy;
+   c->disp = gd;
+   c->dpy = gd->dpy;
    c->cfg = *cfg;
+   pthread_mutex_lock(&gd->lock);
+   c->next = gd->contexts;
+   gd->contexts = c;
+   pthread_mutex_unlock(&gd->lock);
    return c;
 }
 
@@ -982,16 +1011,17 @@ GLXAPI GLXContext glXCreateContext(Display *dpy, XVisualInfo *vis, GLXContext sh
    if (!gd || !vis)
       return NULL;
    const struct __GLXFBConfigRec *cfg = config_of_visual(gd, vis->visualid);
-   return cfg ? create_context(dpy, cfg, shareList) : NULL;
+   return cfg ? create_context(gd, cfg, shareList) : NULL;
 }
 
 GLXAPI GLXContext glXCreateNewContext(Display *dpy, GLXFBConfig config, int renderType,
                                       GLXContext shareList, Bool direct)
 {
    (void)direct;
-   if (!get_display(dpy) || !config || renderType != GLX_RGBA_TYPE)
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !config || renderType != GLX_RGBA_TYPE)
       return NULL;
-   return create_context(dpy, config, shareList);
+   return create_context(gd, config, shareList);
 }
 
 GLXAPI void glXDestroyContext(Display *dpy, GLXContext ctx)
@@ -999,10 +1029,20 @@ GLXAPI void glXDestroyContext(Display *dpy, GLXContext ctx)
    (void)dpy;
    if (!ctx)
       return;
+   if (ctx->disp) {
+      pthread_mutex_lock(&ctx->disp->lock);
+      GLXContext *p = &ctx->disp->contexts;
+      while (*p && *p != ctx)
+         p = &(*p)->next;
+      if (*p)
+         *p = ctx->next;
+      pthread_mutex_unlock(&ctx->disp->lock);
+   }
    if (current_context() == ctx) {
       fgl_set_current(NULL);
       current_glx = NULL;
    }
+   /* (what it has binned is drawn into its drawable's buffers, if any) */
    fgl_context_destroy(ctx->gl);
    fgl_free(ctx);
 }
@@ -1018,7 +1058,8 @@ GLXAPI Bool glXMakeContextCurrent(Display *dpy, GLXDrawable draw, GLXDrawable re
       return True;
    }
    struct glx_display *gd = get_display(dpy);
-   if (!gd || draw == None)
+   /* (a context of a closed display, or of another one: BadMatch) */
+   if (!gd || draw == None || ctx->disp != gd)
       return False;
    struct glx_drawable *d = find_drawable(gd, draw);
    if (d && memcmp(&d->cfg, &ctx->cfg, sizeof(d->cfg)) != 0 &&
