@@ -103,6 +103,13 @@ int main(int argc, char **argv)
    CHECK(glXGetCurrentReadDrawable() == gwin);
    CHECK(glXGetCurrentDisplay() == dpy);
    CHECK(glXIsDirect(dpy, ctx));
+   GLint ival = -1;
+   glGetIntegerv(GL_DOUBLEBUFFER, &ival);
+   CHECK(ival == GL_TRUE);
+   glGetIntegerv(GL_DRAW_BUFFER, &ival);
+   CHECK(ival == GL_BACK);
+   glGetIntegerv(GL_READ_BUFFER, &ival);
+   CHECK(ival == GL_BACK);
 
    Font font = XLoadFont(dpy, "fixed");
    const GLuint base = glGenLists(128);
@@ -131,6 +138,10 @@ int main(int argc, char **argv)
    CHECK(glXMakeCurrent(dpy, gpm, pctx));
    CHECK(glXGetCurrentContext() == pctx);
    CHECK(glIsList(base));   /* shared with ctx */
+   glGetIntegerv(GL_DOUBLEBUFFER, &ival);
+   CHECK(ival == GL_FALSE);
+   glGetIntegerv(GL_DRAW_BUFFER, &ival);
+   CHECK(ival == GL_FRONT);
    scene(100, 80, base, opts.frames);
    glFinish();
    write_drawable_ppm(dpy, pm, pvi->visual, opts.out, 1);

@@ -738,6 +738,7 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    fb->AlphaBits = d->cfg.alpha;
    /* the oracle's DRI software buffers are B8G8R8A8/B8G8R8X8 */
    fb->ColorR8G8B8A8 = false;
+   fb->DoubleBuffer = d->cfg.db;
    fb->ZSFormat = zs_format(&d->cfg);
    fb->FlushFront = d->cfg.db ? NULL : flush_front;
    fb->FlushFrontRect = NULL;
@@ -994,6 +995,8 @@ static GLXContext create_context(struct glx_display *gd, const struct __GLXFBCon
       fgl_share_texobjs(c->gl, share->gl);
       fgl_share_bufobjs(c->gl, share->gl);
    }
+   if (cfg->db)
+      fgl_init_double_buffered(c->gl);
    c->disp = gd;
    c->dpy = gd->dpy;
    c->cfg = *cfg;
