@@ -39,8 +39,11 @@ def start_xvfb():
     if not xvfb:
         raise Fail("Xvfb is not installed (Debian package xvfb)")
     rfd, wfd = os.pipe()
+    # the server with the system's libraries (meson points LD_LIBRARY_PATH
+    # at build/libgl, and Xvfb's GLX loads libGL.so.1)
+    env = {k: v for k, v in os.environ.items() if k not in ("LD_LIBRARY_PATH", "LD_PRELOAD")}
     proc = subprocess.Popen([xvfb, "-displayfd", str(wfd), "-screen", "0", SCREEN,
-                             "-nolisten", "tcp", "-noreset"],
+                             "-nolisten", "tcp", "-noreset"], env=env,
                             pass_fds=(wfd,), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     os.close(wfd)
     data = b""
