@@ -556,6 +556,8 @@ struct fgl_framebuffer {
    int DepthBits;             /* 0, 16 or 24 */
    int StencilBits;           /* 0 or 8 */
    int AlphaBits;             /* 8, or 0 for the RGB formats */
+   bool DoubleBuffer;         /* a double-buffered GLX drawable (libgl/): GL_DOUBLEBUFFER;
+                               * fixgl's one colour buffer is its back buffer */
    bool ColorR8G8B8A8;        /* the oracle's colour buffer format is R8G8B8A8_UNORM
                                * (OSMESA_RGBA), which glReadPixels packs from
                                * by other rules than B8G8R8A8 etc. */

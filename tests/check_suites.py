@@ -26,7 +26,7 @@ import subprocess
 import sys
 import tempfile
 
-FEATURES = ("conformance", "viewer")
+FEATURES = ("conformance", "viewer", "glx")
 
 # What each option, when enabled, must put into `meson test`.
 REQUIRED = {
@@ -45,6 +45,11 @@ REQUIRED = {
         "suites": {"glut", "viewer"},
         "tests": {"glut-lit", "glut-menus", "glut-text", "glut-api", "glut-window",
                   "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat"},
+    },
+    "glx": {
+        "suites": {"glx"},
+        "tests": {"glx-gears", "glx-texcube", "glx-quadrics", "glx-glxapi", "glx-glxgears",
+                  "glx-glxinfo", "glx-exports"},
     },
 }
 
@@ -118,18 +123,20 @@ def check_missing_packages(meson, source):
             print(f"without packages, meson setup fails as it must: {line.strip()}")
         # asked for explicitly: a build without the oracle and the viewer
         b2 = os.path.join(scratch, "b2")
-        r = subprocess.run([meson, "setup", b2, source, "-Dconformance=disabled", "-Dviewer=disabled"],
+        r = subprocess.run([meson, "setup", b2, source, "-Dconformance=disabled", "-Dviewer=disabled",
+                            "-Dglx=disabled"],
                            env=env, capture_output=True, text=True)
         if r.returncode != 0:
-            fail("meson setup -Dconformance=disabled -Dviewer=disabled failed without packages:\n"
+            fail("meson setup -Dconformance=disabled -Dviewer=disabled -Dglx=disabled failed without packages:\n"
                  + (r.stdout + r.stderr)[-2000:])
         else:
             suites = suites_of(introspect(meson, b2, "tests"))
-            for s in sorted(suites & (REQUIRED["conformance"]["suites"] | REQUIRED["viewer"]["suites"])):
+            for s in sorted(suites & (REQUIRED["conformance"]["suites"] | REQUIRED["viewer"]["suites"]
+                                      | REQUIRED["glx"]["suites"])):
                 fail(f"suite {s} registered although its option is disabled")
             for s in sorted(REQUIRED[None]["suites"] - suites):
                 fail(f"suite {s} is missing from a build without the oracle and the viewer")
-            print(f"-Dconformance=disabled -Dviewer=disabled: configures; suites {', '.join(sorted(suites))}")
+            print(f"-Dconformance=disabled -Dviewer=disabled -Dglx=disabled: configures; suites {', '.join(sorted(suites))}")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 

@@ -11,6 +11,10 @@
  * other enum: INVALID_ENUM.  GL_NONE is legal: no colour is drawn
  * (state.c, clear.c) and glReadPixels of a colour format raises
  * INVALID_OPERATION (readpix.c).
+ *
+ * A context of a double-buffered GLX config (libgl/) starts with GL_BACK
+ * for both; its drawable's one colour buffer is the back buffer, which
+ * glXSwapBuffers presents, and GL_FRONT names it too.
  */
 #include "main/groups.h"
 #include "main/dlist.h"
@@ -97,4 +101,10 @@ void GLAPIENTRY glReadBuffer(GLenum buffer)
 void fgl_new_window_framebuffer(struct fgl_context *ctx)
 {
    ctx->Pixel.ReadBuffer = GL_FRONT;
+}
+
+void fgl_init_double_buffered(struct fgl_context *ctx)
+{
+   ctx->Color.DrawBuffer = GL_BACK;
+   ctx->Pixel.ReadBuffer = GL_BACK;
 }

@@ -3141,6 +3141,14 @@ bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLf
 {
    if (!save_prologue(ctx))
       return false;
+   /* no pixels (a NULL pointer, whatever the size; glXUseXFont's blank
+    * glyphs): st_make_bitmap_texture has no texture to give, so the call
+    * raises GL_OUT_OF_MEMORY and is neither compiled nor executed, its
+    * move lost (probe p_bitmap_compile_null) */
+   if (!bits) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return false;
+   }
    /* [S: dlist.c:save_Bitmap] a texture only for a bitmap with pixels:
     * a negative size is compiled as it is, GL_INVALID_VALUE when the
     * node executes */

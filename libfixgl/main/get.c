@@ -408,6 +408,8 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, FGL_SUBPIXEL_BITS, 0, 0, 0);
       return true;
    case GL_DOUBLEBUFFER:
+      set_ints(val, V_BOOL, 1, ctx->DrawBuffer && ctx->DrawBuffer->DoubleBuffer, 0, 0, 0);
+      return true;
    case GL_STEREO:
    case GL_INDEX_MODE:
       set_ints(val, V_BOOL, 1, 0, 0, 0, 0);

@@ -18,6 +18,10 @@ GLuint fgl_clear_index_cast(float c);
 
 /* main/buffers.c: the window-system framebuffer was created anew */
 void fgl_new_window_framebuffer(struct fgl_context *ctx);
+/* main/buffers.c: a new context's draw and read buffers for a
+ * double-buffered config (GLX): GL_BACK, as _mesa_init_color and
+ * _mesa_initialize_window_framebuffer choose them */
+void fgl_init_double_buffered(struct fgl_context *ctx);
 
 /* main/varray.c (GL_CLIENT_VERTEX_ARRAY_BIT) */
 void fgl_init_array(struct fgl_context *ctx);

@@ -1,0 +1,124 @@
+/*
+ * glx_frames.h - shared by the programs of the glx suite (compiled against
+ * the system's freeglut, GLU and libGL: nothing of fixgl at build time).
+ *
+ * A program draws a fixed number of frames, each a function of its frame
+ * number alone (no clock), then reads its window back from the X server
+ * (XGetImage after glFinish and the last swap) and writes it as a binary
+ * PPM of the visual's red, green and blue bits, and prints the renderer
+ * ("renderer: ..."): run_glx.py runs it once on Mesa's libGL and once on
+ * fixgl's, checks the renderers and compares the two files.
+ *
+ *   PROGRAM [--frames N] --out FILE.ppm
+ */
+#ifndef GLX_FRAMES_H
+#define GLX_FRAMES_H
+
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct frames_opts {
+   int frames;          /* frames drawn before the read-back */
+   const char *out;     /* the PPM written */
+};
+
+static inline void frames_parse(int argc, char **argv, struct frames_opts *o, int default_frames)
+{
+   o->frames = default_frames;
+   o->out = NULL;
+   for (int i = 1; i < argc; i++) {
+      if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc)
+         o->frames = atoi(argv[++i]);
+      else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
+         o->out = argv[++i];
+      else {
+         fprintf(stderr, "usage: %s [--frames N] --out FILE.ppm\n", argv[0]);
+         exit(2);
+      }
+   }
+   if (!o->out || o->frames < 1) {
+      fprintf(stderr, "usage: %s [--frames N] --out FILE.ppm\n", argv[0]);
+      exit(2);
+   }
+}
+
+static inline int mask_shift(unsigned long m)
+{
+   int s = 0;
+   while (m && !(m & 1ul)) {
+      m >>= 1;
+      s++;
+   }
+   return s;
+}
+
+/* The drawable's pixels as the X server holds them, as a PPM (append:
+ * another image after the first in the same file); exits on failure. */
+static inline void write_drawable_ppm(Display *dpy, Drawable d, Visual *visual, const char *path,
+                                      int append)
+{
+   Window root;
+   int x, y;
+   unsigned w, h, bw, depth;
+   if (!XGetGeometry(dpy, d, &root, &x, &y, &w, &h, &bw, &depth)) {
+      fprintf(stderr, "XGetGeometry failed\n");
+      exit(1);
+   }
+   XImage *img = XGetImage(dpy, d, 0, 0, w, h, AllPlanes, ZPixmap);
+   if (!img) {
+      fprintf(stderr, "XGetImage failed\n");
+      exit(1);
+   }
+   FILE *f = fopen(path, append ? "ab" : "wb");
+   if (!f) {
+      perror(path);
+      exit(1);
+   }
+   const int rs = mask_shift(visual->red_mask), gs = mask_shift(visual->green_mask),
+             bs = mask_shift(visual->blue_mask);
+   fprintf(f, "P6\n%u %u\n255\n", w, h);
+   for (unsigned row = 0; row < h; row++)
+      for (unsigned col = 0; col < w; col++) {
+         const unsigned long p = XGetPixel(img, (int)col, (int)row);
+         const unsigned char rgb[3] = {
+            (unsigned char)((p & visual->red_mask) >> rs),
+            (unsigned char)((p & visual->green_mask) >> gs),
+            (unsigned char)((p & visual->blue_mask) >> bs),
+         };
+         fwrite(rgb, 1, 3, f);
+      }
+   if (fclose(f) != 0) {
+      perror(path);
+      exit(1);
+   }
+   XDestroyImage(img);
+}
+
+/* The renderer that drew, for the runner to check which library ran. */
+static inline void print_renderer(void)
+{
+   printf("renderer: %s\n", (const char *)glGetString(GL_RENDERER));
+   fflush(stdout);
+}
+
+/* The current GLX window (a GLUT program's) to path. */
+static inline void write_current_window_ppm(const char *path)
+{
+   print_renderer();
+   Display *dpy = glXGetCurrentDisplay();
+   const GLXDrawable win = glXGetCurrentDrawable();
+   if (!dpy || !win) {
+      fprintf(stderr, "no current GLX drawable\n");
+      exit(1);
+   }
+   XWindowAttributes wa;
+   XGetWindowAttributes(dpy, win, &wa);
+   write_drawable_ppm(dpy, win, wa.visual, path, 0);
+}
+
+#endif

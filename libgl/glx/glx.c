@@ -1,0 +1,1426 @@
+/*
+ * GLX 1.4 over Xlib for libGL.so.1: a thin front end over fixgl's
+ * contexts, as libfixgl/osmesa/osmesa.c is for OSMesa.
+ *
+ * The model is Mesa's client-side ("fake") GLX of its xlib frontends
+ * (gallium/frontends/glx/xlib/glx_api.c) and the drawable handling of its
+ * DRI software path (glx/drisw_glx.c): nothing is asked of the server's
+ * GLX extension.  Every context renders with fixgl into a framebuffer per
+ * drawable (colour, depth/stencil, accumulation) in fixgl's own memory;
+ * glXSwapBuffers (a double-buffered config) or glFlush/glFinish (a
+ * single-buffered one, and GLX pixmaps) present the colour buffer with
+ * XPutImage, through MIT-SHM's XShmPutImage where the server has it.  The
+ * drawable's size is asked of the server (XGetGeometry) at
+ * glXMakeCurrent and after every glXSwapBuffers, and the buffers follow
+ * it.
+ *
+ * Configs (GLXFBConfig, and the visuals of glXChooseVisual): the screen's
+ * default visual when it is 8-8-8 TrueColor (no alpha) and the first
+ * 32-bit 8-8-8-8 TrueColor visual (alpha), each single- and
+ * double-buffered, with depth/stencil 0/0, 16/0, 24/0 or 24/8 (the
+ * depth/stencil formats fixgl has: Z16, Z24X8, Z24S8) and accumulation 0
+ * or 16 bits.  glXChooseFBConfig and glXChooseVisual match and order them
+ * as Mesa's glxcmds.c does (fbconfigs_compatible, fbconfig_compare), so a
+ * program asking the same of both gets the same kind of buffer.  As
+ * Mesa's fake GLX, glXChooseVisual and glXGetVisualFromFBConfig remember
+ * which config a visual was handed out for; glXGetConfig and
+ * glXCreateContext of that visual use it (else the visual's
+ * double-buffered config with 24 depth and 8 stencil bits).
+ *
+ * The per-display state (configs, drawables) hangs on the Display (its
+ * extension data, freed by XCloseDisplay's close hook), the current GLX
+ * context is thread-local: no other mutable state.
+ *
+ * Not done, on purpose or not yet: separate read drawables (reads come
+ * from the draw drawable), pbuffers (glXCreatePbuffer returns None),
+ * front-buffer drawing in a double-buffered config (there is one colour
+ * buffer: what glXSwapBuffers presents), GLX_ARB_create_context.
+ */
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <X11/Xlibint.h>   /* XESetCloseDisplay */
+#include <X11/extensions/XShm.h>
+#include <sys/ipc.h>
+#include <sys/shm.h>
+
+#include <pthread.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "context.h"
+#include "main/dlist.h"
+#include "main/groups.h"
+#include "fgl_alloc.h"
+
+#define GLXAPI __attribute__((visibility("default")))
+
+#define GLX_MAX_SIZE 16384
+
+static const char glx_extensions[] =
+   "GLX_ARB_get_proc_address GLX_EXT_swap_control GLX_MESA_swap_control "
+   "GLX_SGI_swap_control";
+
+/* ---- configs --------------------------------------------------------- */
+
+struct __GLXFBConfigRec {
+   int id;                 /* GLX_FBCONFIG_ID */
+   int screen;
+   VisualID visualid;
+   int visual_depth;       /* 24 or 32 */
+   int alpha;              /* 8 on the 32-bit visual, else 0 */
+   bool db;
+   int depth, stencil, accum;
+};
+
+/* The depth/stencil pairs of every visual, in fixgl's formats. */
+static const int zs_pairs[][2] = { { 0, 0 }, { 16, 0 }, { 24, 0 }, { 24, 8 } };
+
+/* ---- drawables -------------------------------------------------------- */
+
+struct glx_display;
+
+struct glx_drawable {
+   struct fgl_framebuffer fb;   /* first: FlushFront gets &fb */
+   struct glx_display *disp;
+   XID xid;
+   bool pixmap;
+   bool has_buffer;
+   struct __GLXFBConfigRec cfg; /* the buffers' formats */
+   void *depth_mem;
+   /* presentation */
+   GC gc;
+   XImage *img;
+   bool shm;                    /* img is an MIT-SHM image, attached */
+   XShmSegmentInfo shminfo;
+   int swap_interval;
+   struct glx_drawable *next;
+};
+
+/* A visual handed out for a config (glXChooseVisual,
+ * glXGetVisualFromFBConfig): glXGetConfig/glXCreateContext of it use it. */
+struct glx_visual_choice {
+   VisualID visualid;
+   int config;                  /* index into configs */
+   struct glx_visual_choice *next;
+};
+
+struct glx_display {
+   Display *dpy;
+   pthread_mutex_t lock;
+   int nconfigs;
+   struct __GLXFBConfigRec *configs;
+   struct glx_drawable *drawables;
+   struct glx_visual_choice *choices;
+   struct __GLXcontextRec *contexts;   /* every context made for dpy */
+   int has_shm;                 /* -1 not asked yet, 0, 1 */
+};
+
+struct __GLXcontextRec {
+   struct fgl_context *gl;
+   struct glx_display *disp;    /* NULL once the display is closed */
+   Display *dpy;
+   struct __GLXFBConfigRec cfg;
+   GLXDrawable draw, read;
+   struct glx_drawable *bound;  /* the drawable its GL context draws into */
+   struct __GLXcontextRec *next;
+};
+
+/* The GLX context current on this thread (its GL context is the one
+ * fgl_get_current() returns). */
+static _Thread_local GLXContext current_glx;
+
+static GLXContext current_context(void)
+{
+   if (current_glx && fgl_get_current() != current_glx->gl)
+      current_glx = NULL;
+   return current_glx;
+}
+
+/* ---- the per-display state ---------------------------------------------
+ * Kept in the Display's extension data list, found by its free_private
+ * function; XCloseDisplay calls close_display (registered through
+ * XAddExtension's codes) while the connection is still open. */
+
+static void free_drawable(struct glx_drawable *d, bool connected);
+static void unbind_contexts(struct glx_display *gd, const struct glx_drawable *d);
+
+static XExtData **display_ext_list(Display *dpy)
+{
+   XEDataObject obj;
+   obj.display = dpy;
+   return XEHeadOfExtensionList(obj);
+}
+
+static int ext_data_free(XExtData *data)
+{
+   /* the state itself is freed by close_display */
+   data->private_data = NULL;
+   return 0;
+}
+
+static int close_display(Display *dpy, XExtCodes *codes)
+{
+   (void)codes;
+   XExtData **head = display_ext_list(dpy);
+   for (XExtData *e = head ? *head : NULL; e; e = e->next) {
+      if (e->free_private != ext_data_free || !e->private_data)
+         continue;
+      struct glx_display *gd = (struct glx_display *)(void *)e->private_data;
+      /* the contexts outlive the display: they draw nowhere from now on */
+      unbind_contexts(gd, NULL);
+      for (GLXContext c = gd->contexts; c; c = c->next) {
+         c->disp = NULL;
+         c->dpy = NULL;
+      }
+      while (gd->drawables) {
+         struct glx_drawable *d = gd->drawables;
+         gd->drawables = d->next;
+         free_drawable(d, true);
+      }
+      while (gd->choices) {
+         struct glx_visual_choice *c = gd->choices;
+         gd->choices = c->next;
+         free(c);
+      }
+      free(gd->configs);
+      pthread_mutex_destroy(&gd->lock);
+      free(gd);
+      e->private_data = NULL;
+   }
+   return 0;
+}
+
+static bool visual_is_888(const XVisualInfo *v)
+{
+   return v->class == TrueColor && v->red_mask == 0xff0000ul && v->green_mask == 0xff00ul &&
+          v->blue_mask == 0xfful && v->bits_per_rgb >= 8;
+}
+
+/* The configs of every screen: the default visual (if 8-8-8 TrueColor of
+ * depth 24) and the first 8-8-8 TrueColor visual of depth 32. */
+static bool build_configs(struct glx_display *gd)
+{
+   const int nscreens = ScreenCount(gd->dpy);
+   const int per_visual = 2 * (int)(sizeof(zs_pairs) / sizeof(zs_pairs[0])) * 2;
+   gd->configs = calloc((size_t)nscreens * 2u * (size_t)per_visual, sizeof(*gd->configs));
+   if (!gd->configs)
+      return false;
+   for (int s = 0; s < nscreens; s++) {
+      VisualID vids[2] = { 0, 0 };
+      int depths[2] = { 0, 0 };
+      XVisualInfo tmpl = { .screen = s };
+      int n = 0;
+      XVisualInfo *vis = XGetVisualInfo(gd->dpy, VisualScreenMask, &tmpl, &n);
+      const VisualID def = XVisualIDFromVisual(DefaultVisual(gd->dpy, s));
+      for (int i = 0; i < n; i++) {
+         if (!visual_is_888(&vis[i]))
+            continue;
+         if (vis[i].visualid == def && vis[i].depth == 24) {
+            vids[0] = vis[i].visualid;
+            depths[0] = 24;
+         } else if (vis[i].depth == 32 && !vids[1]) {
+            vids[1] = vis[i].visualid;
+            depths[1] = 32;
+         }
+      }
+      if (vis)
+         XFree(vis);
+      for (int v = 0; v < 2; v++) {
+         if (!vids[v])
+            continue;
+         for (int db = 1; db >= 0; db--)
+            for (size_t z = 0; z < sizeof(zs_pairs) / sizeof(zs_pairs[0]); z++)
+               for (int accum = 0; accum <= 16; accum += 16) {
+                  struct __GLXFBConfigRec *c = &gd->configs[gd->nconfigs];
+                  c->id = gd->nconfigs + 1;
+                  c->screen = s;
+                  c->visualid = vids[v];
+                  c->visual_depth = depths[v];
+                  c->alpha = depths[v] == 32 ? 8 : 0;
+                  c->db = db != 0;
+                  c->depth = zs_pairs[z][0];
+                  c->stencil = zs_pairs[z][1];
+                  c->accum = accum;
+                  gd->nconfigs++;
+               }
+      }
+   }
+   return true;
+}
+
+static struct glx_display *find_display(Display *dpy)
+{
+   XExtData **head = display_ext_list(dpy);
+   for (XExtData *e = head ? *head : NULL; e; e = e->next)
+      if (e->free_private == ext_data_free && e->private_data)
+         return (struct glx_display *)(void *)e->private_data;
+   return NULL;
+}
+
+static struct glx_display *get_display(Display *dpy)
+{
+   if (!dpy)
+      return NULL;
+   XLockDisplay(dpy);
+   struct glx_display *gd = find_display(dpy);
+   if (gd) {
+      XUnlockDisplay(dpy);
+      return gd;
+   }
+   gd = calloc(1, sizeof(*gd));
+   XExtData *e = calloc(1, sizeof(*e));
+   if (gd)
+      gd->dpy = dpy;
+   XExtCodes *codes = gd && e ? XAddExtension(dpy) : NULL;
+   if (!codes || !build_configs(gd)) {
+      free(gd ? gd->configs : NULL);
+      free(gd);
+      free(e);
+      XUnlockDisplay(dpy);
+      return NULL;
+   }
+   gd->has_shm = -1;
+   pthread_mutex_init(&gd->lock, NULL);
+   e->number = codes->extension;
+   e->free_private = ext_data_free;
+   e->private_data = (XPointer)gd;
+   XAddToExtensionList(display_ext_list(dpy), e);
+   XESetCloseDisplay(dpy, codes->extension, close_display);
+   XUnlockDisplay(dpy);
+   return gd;
+}
+
+/* ---- choosing configs --------------------------------------------------- */
+
+#define DONT_CARE ((int)GLX_DONT_CARE)   /* -1, as an attribute list holds it */
+
+/* What glXChooseFBConfig / glXChooseVisual asked for. */
+struct glx_request {
+   int rgba;               /* render type: needs GLX_RGBA_BIT */
+   int db, stereo, level;  /* exact, DONT_CARE for db */
+   int buffer_size, red, green, blue, alpha, depth, stencil;
+   int accum_r, accum_g, accum_b, accum_a, aux, sample_buffers, samples;
+   int drawable_type, x_renderable, visual_type, caveat, fbconfig_id, transparent;
+};
+
+static void request_defaults(struct glx_request *r, bool fbconfig)
+{
+   memset(r, 0, sizeof(*r));
+   r->rgba = 1;
+   r->db = fbconfig ? DONT_CARE : 0;
+   r->drawable_type = GLX_WINDOW_BIT;
+   r->x_renderable = DONT_CARE;
+   r->visual_type = DONT_CARE;
+   r->caveat = DONT_CARE;
+   r->fbconfig_id = DONT_CARE;
+   r->transparent = GLX_NONE;
+}
+
+/* One attribute and its value; false for an unknown attribute. */
+static bool request_set(struct glx_request *r, int attr, int value)
+{
+   switch (attr) {
+   case GLX_BUFFER_SIZE:       r->buffer_size = value; return true;
+   case GLX_LEVEL:             r->level = value; return true;
+   case GLX_DOUBLEBUFFER:      r->db = value; return true;
+   case GLX_STEREO:            r->stereo = value; return true;
+   case GLX_AUX_BUFFERS:       r->aux = value; return true;
+   case GLX_RED_SIZE:          r->red = value; return true;
+   case GLX_GREEN_SIZE:        r->green = value; return true;
+   case GLX_BLUE_SIZE:         r->blue = value; return true;
+   case GLX_ALPHA_SIZE:        r->alpha = value; return true;
+   case GLX_DEPTH_SIZE:        r->depth = value; return true;
+   case GLX_STENCIL_SIZE:      r->stencil = value; return true;
+   case GLX_ACCUM_RED_SIZE:    r->accum_r = value; return true;
+   case GLX_ACCUM_GREEN_SIZE:  r->accum_g = value; return true;
+   case GLX_ACCUM_BLUE_SIZE:   r->accum_b = value; return true;
+   case GLX_ACCUM_ALPHA_SIZE:  r->accum_a = value; return true;
+   case GLX_SAMPLE_BUFFERS:    r->sample_buffers = value; return true;
+   case GLX_SAMPLES:           r->samples = value; return true;
+   case GLX_RENDER_TYPE:       r->rgba = (value & GLX_RGBA_BIT) != 0; return true;
+   case GLX_DRAWABLE_TYPE:     r->drawable_type = value; return true;
+   case GLX_X_RENDERABLE:      r->x_renderable = value; return true;
+   case GLX_X_VISUAL_TYPE:     r->visual_type = value; return true;
+   case GLX_CONFIG_CAVEAT:     r->caveat = value; return true;
+   case GLX_FBCONFIG_ID:       r->fbconfig_id = value; return true;
+   case GLX_TRANSPARENT_TYPE:  r->transparent = value; return true;
+   case GLX_TRANSPARENT_INDEX_VALUE:
+   case GLX_TRANSPARENT_RED_VALUE:
+   case GLX_TRANSPARENT_GREEN_VALUE:
+   case GLX_TRANSPARENT_BLUE_VALUE:
+   case GLX_TRANSPARENT_ALPHA_VALUE:
+   case GLX_MAX_PBUFFER_WIDTH:
+   case GLX_MAX_PBUFFER_HEIGHT:
+   case GLX_MAX_PBUFFER_PIXELS:
+   case GLX_VISUAL_ID:
+      return true;             /* ignored, as GLX says for these */
+   default:
+      return false;
+   }
+}
+
+static int config_buffer_size(const struct __GLXFBConfigRec *c)
+{
+   return 24 + c->alpha;
+}
+
+static int config_caveat(const struct __GLXFBConfigRec *c)
+{
+   /* Mesa marks its configs with an accumulation buffer slow */
+   return c->accum ? GLX_SLOW_CONFIG : GLX_NONE;
+}
+
+#define MIN_OK(req, have) ((req) == DONT_CARE || (req) <= (have))
+
+static bool config_matches(const struct __GLXFBConfigRec *c, const struct glx_request *r)
+{
+   if (!r->rgba)
+      return false;
+   if (r->db != DONT_CARE && (r->db != 0) != c->db)
+      return false;
+   if (r->stereo != DONT_CARE && r->stereo)
+      return false;
+   if (r->level != DONT_CARE && r->level != 0)
+      return false;
+   if (r->drawable_type != DONT_CARE && (r->drawable_type & ~(GLX_WINDOW_BIT | GLX_PIXMAP_BIT)))
+      return false;
+   if (r->x_renderable != DONT_CARE && !r->x_renderable)
+      return false;
+   if (r->visual_type != DONT_CARE && r->visual_type != GLX_TRUE_COLOR)
+      return false;
+   if (r->caveat != DONT_CARE && r->caveat != config_caveat(c))
+      return false;
+   if (r->fbconfig_id != DONT_CARE && r->fbconfig_id != c->id)
+      return false;
+   if (r->transparent != DONT_CARE && r->transparent != GLX_NONE)
+      return false;
+   return MIN_OK(r->buffer_size, config_buffer_size(c)) && MIN_OK(r->red, 8) && MIN_OK(r->green, 8) &&
+          MIN_OK(r->blue, 8) && MIN_OK(r->alpha, c->alpha) && MIN_OK(r->depth, c->depth) &&
+          MIN_OK(r->stencil, c->stencil) && MIN_OK(r->accum_r, c->accum) &&
+          MIN_OK(r->accum_g, c->accum) && MIN_OK(r->accum_b, c->accum) &&
+          MIN_OK(r->accum_a, c->accum) && MIN_OK(r->aux, 0) && MIN_OK(r->sample_buffers, 0) &&
+          MIN_OK(r->samples, 0);
+}
+
+/* Mesa's glxcmds.c:fbconfig_compare: caveat, then colour bits (larger,
+ * zero first), buffer size (smaller), single before double buffering,
+ * depth (larger, zero first), stencil (smaller), accumulation (larger,
+ * zero first). */
+static int prefer_larger_or_zero(int a, int b)
+{
+   if (a == b)
+      return 0;
+   if (a == 0)
+      return -1;
+   if (b == 0)
+      return 1;
+   return b - a;
+}
+
+static int config_compare(const struct __GLXFBConfigRec *a, const struct __GLXFBConfigRec *b)
+{
+   int d;
+   if ((d = config_caveat(a) - config_caveat(b)) != 0)
+      return d;
+   if ((d = prefer_larger_or_zero(a->alpha, b->alpha)) != 0)
+      return d;
+   if ((d = config_buffer_size(a) - config_buffer_size(b)) != 0)
+      return d;
+   if (a->db != b->db)
+      return a->db ? 1 : -1;
+   if ((d = prefer_larger_or_zero(a->depth, b->depth)) != 0)
+      return d;
+   if ((d = a->stencil - b->stencil) != 0)
+      return d;
+   if ((d = prefer_larger_or_zero(a->accum, b->accum)) != 0)
+      return d;
+   return a->id - b->id;
+}
+
+static int config_compare_qsort(const void *pa, const void *pb)
+{
+   return config_compare(*(const GLXFBConfig *)pa, *(const GLXFBConfig *)pb);
+}
+
+static void remember_visual(struct glx_display *gd, const struct __GLXFBConfigRec *c)
+{
+   pthread_mutex_lock(&gd->lock);
+   struct glx_visual_choice *ch;
+   for (ch = gd->choices; ch; ch = ch->next)
+      if (ch->visualid == c->visualid)
+         break;
+   if (!ch && (ch = calloc(1, sizeof(*ch))) != NULL) {
+      ch->visualid = c->visualid;
+      ch->next = gd->choices;
+      gd->choices = ch;
+   }
+   if (ch)
+      ch->config = c->id - 1;
+   pthread_mutex_unlock(&gd->lock);
+}
+
+/* The config a visual stands for: the one it was handed out for, else
+ * its double-buffered config with depth 24 and stencil 8; NULL for a
+ * visual fixgl does not render to. */
+static const struct __GLXFBConfigRec *config_of_visual(struct glx_display *gd, VisualID vid)
+{
+   const struct __GLXFBConfigRec *found = NULL;
+   pthread_mutex_lock(&gd->lock);
+   for (struct glx_visual_choice *ch = gd->choices; ch; ch = ch->next)
+      if (ch->visualid == vid)
+         found = &gd->configs[ch->config];
+   pthread_mutex_unlock(&gd->lock);
+   if (found)
+      return found;
+   for (int i = 0; i < gd->nconfigs; i++) {
+      const struct __GLXFBConfigRec *c = &gd->configs[i];
+      if (c->visualid == vid && c->db && c->depth == 24 && c->stencil == 8 && !c->accum)
+         return c;
+   }
+   return NULL;
+}
+
+static XVisualInfo *visual_info(Display *dpy, const struct __GLXFBConfigRec *c)
+{
+   XVisualInfo tmpl = { .visualid = c->visualid, .screen = c->screen };
+   int n = 0;
+   return XGetVisualInfo(dpy, VisualIDMask | VisualScreenMask, &tmpl, &n);
+}
+
+GLXAPI GLXFBConfig *glXChooseFBConfig(Display *dpy, int screen, const int *attribList, int *nitems)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (nitems)
+      *nitems = 0;
+   if (!gd)
+      return NULL;
+   struct glx_request r;
+   request_defaults(&r, true);
+   for (int i = 0; attribList && attribList[i] != None; i += 2)
+      if (!request_set(&r, attribList[i], attribList[i + 1]))
+         return NULL;
+   GLXFBConfig *list = malloc((size_t)(gd->nconfigs + 1) * sizeof(*list));
+   if (!list)
+      return NULL;
+   int n = 0;
+   for (int i = 0; i < gd->nconfigs; i++)
+      if (gd->configs[i].screen == screen && config_matches(&gd->configs[i], &r))
+         list[n++] = &gd->configs[i];
+   if (n == 0) {
+      free(list);
+      return NULL;
+   }
+   qsort(list, (size_t)n, sizeof(*list), config_compare_qsort);
+   if (nitems)
+      *nitems = n;
+   return list;
+}
+
+GLXAPI GLXFBConfig *glXGetFBConfigs(Display *dpy, int screen, int *nelements)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (nelements)
+      *nelements = 0;
+   if (!gd)
+      return NULL;
+   GLXFBConfig *list = malloc((size_t)(gd->nconfigs + 1) * sizeof(*list));
+   if (!list)
+      return NULL;
+   int n = 0;
+   for (int i = 0; i < gd->nconfigs; i++)
+      if (gd->configs[i].screen == screen)
+         list[n++] = &gd->configs[i];
+   if (n == 0) {
+      free(list);
+      return NULL;
+   }
+   if (nelements)
+      *nelements = n;
+   return list;
+}
+
+/* The value of a config's attribute (glXGetFBConfigAttrib, glXGetConfig). */
+static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
+{
+   switch (attr) {
+   case GLX_USE_GL:                *value = True; break;
+   case GLX_RGBA:                  *value = True; break;
+   case GLX_FBCONFIG_ID:           *value = c->id; break;
+   case GLX_BUFFER_SIZE:           *value = config_buffer_size(c); break;
+   case GLX_LEVEL:                 *value = 0; break;
+   case GLX_DOUBLEBUFFER:          *value = c->db; break;
+   case GLX_STEREO:                *value = False; break;
+   case GLX_AUX_BUFFERS:           *value = 0; break;
+   case GLX_RED_SIZE:
+   case GLX_GREEN_SIZE:
+   case GLX_BLUE_SIZE:             *value = 8; break;
+   case GLX_ALPHA_SIZE:            *value = c->alpha; break;
+   case GLX_DEPTH_SIZE:            *value = c->depth; break;
+   case GLX_STENCIL_SIZE:          *value = c->stencil; break;
+   case GLX_ACCUM_RED_SIZE:
+   case GLX_ACCUM_GREEN_SIZE:
+   case GLX_ACCUM_BLUE_SIZE:
+   case GLX_ACCUM_ALPHA_SIZE:      *value = c->accum; break;
+   case GLX_RENDER_TYPE:           *value = GLX_RGBA_BIT; break;
+   case GLX_DRAWABLE_TYPE:         *value = GLX_WINDOW_BIT | GLX_PIXMAP_BIT; break;
+   case GLX_X_RENDERABLE:          *value = True; break;
+   case GLX_VISUAL_ID:             *value = (int)c->visualid; break;
+   case GLX_X_VISUAL_TYPE:         *value = GLX_TRUE_COLOR; break;
+   case GLX_CONFIG_CAVEAT:         *value = config_caveat(c); break;
+   case GLX_TRANSPARENT_TYPE:      *value = GLX_NONE; break;
+   case GLX_TRANSPARENT_INDEX_VALUE:
+   case GLX_TRANSPARENT_RED_VALUE:
+   case GLX_TRANSPARENT_GREEN_VALUE:
+   case GLX_TRANSPARENT_BLUE_VALUE:
+   case GLX_TRANSPARENT_ALPHA_VALUE:
+   case GLX_MAX_PBUFFER_WIDTH:
+   case GLX_MAX_PBUFFER_HEIGHT:
+   case GLX_MAX_PBUFFER_PIXELS:
+   case GLX_SAMPLE_BUFFERS:
+   case GLX_SAMPLES:               *value = 0; break;
+   case GLX_SCREEN:                *value = c->screen; break;
+   default:
+      return GLX_BAD_ATTRIBUTE;
+   }
+   return Success;
+}
+
+GLXAPI int glXGetFBConfigAttrib(Display *dpy, GLXFBConfig config, int attribute, int *value)
+{
+   (void)dpy;
+   if (!config || !value)
+      return GLX_BAD_VALUE;
+   if (attribute == GLX_USE_GL || attribute == GLX_RGBA)
+      return GLX_BAD_ATTRIBUTE;
+   return config_attrib(config, attribute, value);
+}
+
+GLXAPI XVisualInfo *glXGetVisualFromFBConfig(Display *dpy, GLXFBConfig config)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !config)
+      return NULL;
+   remember_visual(gd, config);
+   return visual_info(dpy, config);
+}
+
+/* glXChooseVisual's list: booleans without a value (GLX_RGBA,
+ * GLX_DOUBLEBUFFER, GLX_STEREO, GLX_USE_GL), the rest with one; the
+ * best config by config_compare gives the visual. */
+GLXAPI XVisualInfo *glXChooseVisual(Display *dpy, int screen, int *attribList)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (!gd)
+      return NULL;
+   struct glx_request r;
+   request_defaults(&r, false);
+   r.rgba = 0;
+   for (int i = 0; attribList && attribList[i] != None;) {
+      switch (attribList[i]) {
+      case GLX_USE_GL:       i++; break;
+      case GLX_RGBA:         r.rgba = 1; i++; break;
+      case GLX_DOUBLEBUFFER: r.db = 1; i++; break;
+      case GLX_STEREO:       r.stereo = 1; i++; break;
+      default:
+         if (!request_set(&r, attribList[i], attribList[i + 1]))
+            return NULL;
+         i += 2;
+         break;
+      }
+   }
+   const struct __GLXFBConfigRec *best = NULL;
+   for (int i = 0; i < gd->nconfigs; i++) {
+      const struct __GLXFBConfigRec *c = &gd->configs[i];
+      if (c->screen == screen && config_matches(c, &r) && (!best || config_compare(c, best) < 0))
+         best = c;
+   }
+   if (!best)
+      return NULL;
+   remember_visual(gd, best);
+   return visual_info(dpy, best);
+}
+
+GLXAPI int glXGetConfig(Display *dpy, XVisualInfo *vis, int attrib, int *value)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !vis || !value)
+      return GLX_NO_EXTENSION;
+   const struct __GLXFBConfigRec *c = config_of_visual(gd, vis->visualid);
+   if (!c) {
+      if (attrib == GLX_USE_GL) {
+         *value = False;
+         return Success;
+      }
+      return GLX_BAD_VISUAL;
+   }
+   if (attrib == GLX_FBCONFIG_ID || attrib == GLX_DRAWABLE_TYPE || attrib == GLX_RENDER_TYPE ||
+       attrib == GLX_X_RENDERABLE || attrib == GLX_MAX_PBUFFER_WIDTH ||
+       attrib == GLX_MAX_PBUFFER_HEIGHT || attrib == GLX_MAX_PBUFFER_PIXELS)
+      return GLX_BAD_ATTRIBUTE;
+   return config_attrib(c, attrib, value);
+}
+
+/* ---- buffers of a drawable ---------------------------------------------- */
+
+static void destroy_image(struct glx_drawable *d, bool connected)
+{
+   if (!d->img)
+      return;
+   if (d->shm) {
+      if (connected)
+         XShmDetach(d->disp->dpy, &d->shminfo);
+      d->img->data = NULL;
+      shmdt(d->shminfo.shmaddr);
+      d->shm = false;
+   }
+   XDestroyImage(d->img);
+   d->img = NULL;
+}
+
+static void free_buffers(struct glx_drawable *d)
+{
+   fgl_lazy_fini(&d->fb);
+   fgl_free(d->fb.Color);
+   fgl_free(d->depth_mem);
+   fgl_free(d->fb.Stencil);
+   fgl_free(d->fb.Accum);
+   d->depth_mem = NULL;
+   d->fb.Color = NULL;
+   d->fb.Depth = NULL;
+   d->fb.Stencil = NULL;
+   d->fb.Accum = NULL;
+   d->has_buffer = false;
+}
+
+static void free_drawable(struct glx_drawable *d, bool connected)
+{
+   destroy_image(d, connected);
+   if (d->gc && connected)
+      XFreeGC(d->disp->dpy, d->gc);
+   free_buffers(d);
+   fgl_free(d);
+}
+
+static void present(struct glx_drawable *d);
+
+/* glFlush/glFinish of a single-buffered drawable: the image to the X
+ * drawable, when a draw or clear defined it since the last time. */
+static void flush_front(struct fgl_framebuffer *fb)
+{
+   if (!fb->ColorDefined)
+      return;
+   fb->ColorDefined = false;
+   present((struct glx_drawable *)(void *)fb);
+}
+
+static enum r_zs_format zs_format(const struct __GLXFBConfigRec *c)
+{
+   if (c->depth == 24)
+      return c->stencil ? R_ZS_Z24S8 : R_ZS_Z24X8;
+   return c->depth == 16 ? R_ZS_Z16 : R_ZS_NONE;
+}
+
+/* (Re)allocates the buffers for width x height. */
+static bool alloc_buffers(struct glx_drawable *d, int width, int height)
+{
+   const size_t n = (size_t)width * (size_t)height;
+   free_buffers(d);
+   struct fgl_framebuffer *fb = &d->fb;
+   fb->Width = width;
+   fb->Height = height;
+   fb->DepthBits = d->cfg.depth;
+   fb->StencilBits = d->cfg.stencil;
+   fb->AlphaBits = d->cfg.alpha;
+   /* the oracle's DRI software buffers are B8G8R8A8/B8G8R8X8 */
+   fb->ColorR8G8B8A8 = false;
+   fb->DoubleBuffer = d->cfg.db;
+   fb->ZSFormat = zs_format(&d->cfg);
+   fb->FlushFront = d->cfg.db ? NULL : flush_front;
+   fb->FlushFrontRect = NULL;
+   fb->FlushFrontEnd = NULL;
+   fb->AccumBits = d->cfg.accum;
+   fb->Color = fgl_calloc(n, 4);
+   if (fb->ZSFormat != R_ZS_NONE) {
+      const size_t bpv = fb->ZSFormat == R_ZS_Z16 ? 2 : 4;
+      /* 2112 bytes past a page boundary, as osmesa.c (4K aliasing) */
+      d->depth_mem = fgl_calloc(n * bpv + 4096, 1);
+      fb->Depth = d->depth_mem ? (uint8_t *)d->depth_mem + 2048 + 64 : NULL;
+   }
+   if (d->cfg.accum > 0)
+      fb->Accum = fgl_calloc(n, 4 * sizeof(int16_t));
+   if (!fb->Color || (fb->ZSFormat != R_ZS_NONE && !fb->Depth) || (d->cfg.accum > 0 && !fb->Accum)) {
+      free_buffers(d);
+      return false;
+   }
+   d->has_buffer = true;
+   return true;
+}
+
+static struct glx_drawable *find_drawable(struct glx_display *gd, XID xid)
+{
+   pthread_mutex_lock(&gd->lock);
+   struct glx_drawable *d = gd->drawables;
+   while (d && d->xid != xid)
+      d = d->next;
+   pthread_mutex_unlock(&gd->lock);
+   return d;
+}
+
+static struct glx_drawable *add_drawable(struct glx_display *gd, XID xid,
+                                         const struct __GLXFBConfigRec *cfg, bool pixmap)
+{
+   struct glx_drawable *d = fgl_calloc(1, sizeof(*d));
+   if (!d)
+      return NULL;
+   d->disp = gd;
+   d->xid = xid;
+   d->cfg = *cfg;
+   d->pixmap = pixmap;
+   pthread_mutex_lock(&gd->lock);
+   d->next = gd->drawables;
+   gd->drawables = d;
+   pthread_mutex_unlock(&gd->lock);
+   return d;
+}
+
+/* The contexts bound to d (to any drawable when d is NULL) draw nowhere
+ * from now on: their buffers are about to go.  What the current one has
+ * binned is drawn first; the others were flushed when they stopped being
+ * current. */
+static void unbind_contexts(struct glx_display *gd, const struct glx_drawable *d)
+{
+   GLXContext cur = current_context();
+   pthread_mutex_lock(&gd->lock);
+   for (GLXContext c = gd->contexts; c; c = c->next) {
+      if (!c->bound || (d && c->bound != d))
+         continue;
+      if (c == cur)
+         fgl_scene_flush(c->gl);
+      fgl_context_bind_framebuffer(c->gl, NULL);
+      c->bound = NULL;
+   }
+   pthread_mutex_unlock(&gd->lock);
+}
+
+static void remove_drawable(struct glx_display *gd, XID xid)
+{
+   pthread_mutex_lock(&gd->lock);
+   struct glx_drawable **p = &gd->drawables;
+   while (*p && (*p)->xid != xid)
+      p = &(*p)->next;
+   struct glx_drawable *d = *p;
+   if (d)
+      *p = d->next;
+   pthread_mutex_unlock(&gd->lock);
+   if (!d)
+      return;
+   unbind_contexts(gd, d);
+   free_drawable(d, true);
+}
+
+/* The drawable's size from the server; the buffers follow it (ctx, when
+ * given, is the context drawing into it: what it holds is drawn before
+ * the buffers go, and it is bound to the new ones). */
+static bool update_size(struct glx_drawable *d, struct fgl_context *ctx)
+{
+   Window root;
+   int x, y;
+   unsigned w = 0, h = 0, bw, depth;
+   if (!XGetGeometry(d->disp->dpy, d->xid, &root, &x, &y, &w, &h, &bw, &depth))
+      return d->has_buffer;
+   if (w < 1)
+      w = 1;
+   if (h < 1)
+      h = 1;
+   if (w > GLX_MAX_SIZE)
+      w = GLX_MAX_SIZE;
+   if (h > GLX_MAX_SIZE)
+      h = GLX_MAX_SIZE;
+   if (d->has_buffer && d->fb.Width == (int)w && d->fb.Height == (int)h)
+      return true;
+   if (ctx)
+      fgl_scene_flush(ctx);
+   if (!alloc_buffers(d, (int)w, (int)h))
+      return false;
+   if (ctx)
+      fgl_context_bind_framebuffer(ctx, &d->fb);
+   return true;
+}
+
+/* ---- presentation ------------------------------------------------------- */
+
+/* The X error trap around XShmAttach: MIT-SHM can be there and still
+ * fail (a server in another IPC namespace).  Thread-local, set only
+ * inside the trap. */
+static _Thread_local bool shm_failed;
+
+static int shm_error_handler(Display *dpy, XErrorEvent *ev)
+{
+   (void)dpy;
+   (void)ev;
+   shm_failed = true;
+   return 0;
+}
+
+static bool create_shm_image(struct glx_drawable *d, Visual *visual, int w, int h)
+{
+   Display *dpy = d->disp->dpy;
+   d->img = XShmCreateImage(dpy, visual, (unsigned)d->cfg.visual_depth, ZPixmap, NULL,
+                            &d->shminfo, (unsigned)w, (unsigned)h);
+   if (!d->img)
+      return false;
+   const size_t size = (size_t)d->img->bytes_per_line * (size_t)h;
+   d->shminfo.shmid = shmget(IPC_PRIVATE, size, IPC_CREAT | 0600);
+   if (d->shminfo.shmid < 0)
+      goto fail_image;
+   d->shminfo.shmaddr = d->img->data = shmat(d->shminfo.shmid, NULL, 0);
+   if (d->shminfo.shmaddr == (char *)-1)
+      goto fail_id;
+   d->shminfo.readOnly = False;
+   XSync(dpy, False);
+   int (*old)(Display *, XErrorEvent *) = XSetErrorHandler(shm_error_handler);
+   shm_failed = false;
+   XShmAttach(dpy, &d->shminfo);
+   XSync(dpy, False);
+   XSetErrorHandler(old);
+   shmctl(d->shminfo.shmid, IPC_RMID, NULL);
+   if (shm_failed) {
+      shmdt(d->shminfo.shmaddr);
+      d->img->data = NULL;
+      XDestroyImage(d->img);
+      d->img = NULL;
+      return false;
+   }
+   d->shm = true;
+   return true;
+fail_id:
+   shmctl(d->shminfo.shmid, IPC_RMID, NULL);
+fail_image:
+   d->img->data = NULL;
+   XDestroyImage(d->img);
+   d->img = NULL;
+   return false;
+}
+
+static bool ensure_image(struct glx_drawable *d, int w, int h)
+{
+   if (d->img && d->img->width == w && d->img->height == h)
+      return true;
+   destroy_image(d, true);
+   Display *dpy = d->disp->dpy;
+   XVisualInfo *vi = visual_info(dpy, &d->cfg);
+   if (!vi)
+      return false;
+   Visual *visual = vi->visual;
+   XFree(vi);
+   if (d->disp->has_shm < 0)
+      d->disp->has_shm = XShmQueryExtension(dpy) ? 1 : 0;
+   if (d->disp->has_shm && create_shm_image(d, visual, w, h))
+      return true;
+   if (d->disp->has_shm)
+      d->disp->has_shm = 0;   /* it failed once: plain XPutImage from now on */
+   d->img = XCreateImage(dpy, visual, (unsigned)d->cfg.visual_depth, ZPixmap, 0, NULL,
+                         (unsigned)w, (unsigned)h, 32, 0);
+   if (!d->img)
+      return false;
+   d->img->data = malloc((size_t)d->img->bytes_per_line * (size_t)h);
+   if (!d->img->data) {
+      XDestroyImage(d->img);
+      d->img = NULL;
+      return false;
+   }
+   return true;
+}
+
+/* The colour buffer (RGBA8, top row first) to the X drawable: 32-bit
+ * pixels 0xAARRGGBB in the server's byte order (alpha 0xff without an
+ * alpha channel). */
+static void present(struct glx_drawable *d)
+{
+   struct fgl_framebuffer *fb = &d->fb;
+   if (!d->has_buffer)
+      return;
+   fgl_lazy_resolve(fb, FGL_LAZY_COLOR);
+   const int w = fb->Width, h = fb->Height;
+   if (!ensure_image(d, w, h) || d->img->bits_per_pixel != 32)
+      return;
+   if (!d->gc)
+      d->gc = XCreateGC(d->disp->dpy, d->xid, 0, NULL);
+   const bool msb = d->img->byte_order == MSBFirst;
+   const bool alpha = d->cfg.alpha > 0;
+   for (int y = 0; y < h; y++) {
+      const uint8_t *src = fb->Color + (size_t)y * (size_t)w * 4;
+      uint8_t *dst = (uint8_t *)d->img->data + (size_t)y * (size_t)d->img->bytes_per_line;
+      for (int x = 0; x < w; x++, src += 4, dst += 4) {
+         const uint8_t a = alpha ? src[3] : 0xff;
+         if (msb) {
+            dst[0] = a; dst[1] = src[0]; dst[2] = src[1]; dst[3] = src[2];
+         } else {
+            dst[0] = src[2]; dst[1] = src[1]; dst[2] = src[0]; dst[3] = a;
+         }
+      }
+   }
+   Display *dpy = d->disp->dpy;
+   if (d->shm) {
+      XShmPutImage(dpy, d->xid, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h, False);
+      /* the next frame overwrites the segment: the server has read it */
+      XSync(dpy, False);
+   } else {
+      XPutImage(dpy, d->xid, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h);
+      XFlush(dpy);
+   }
+}
+
+/* ---- contexts ----------------------------------------------------------- */
+
+static GLXContext create_context(struct glx_display *gd, const struct __GLXFBConfigRec *cfg,
+                                 GLXContext share)
+{
+   GLXContext c = fgl_calloc(1, sizeof(*c));
+   if (!c)
+      return NULL;
+   c->gl = fgl_context_create();
+   if (!c->gl) {
+      fgl_free(c);
+      return NULL;
+   }
+   /* display lists, textures and buffers are shared with share's */
+   if (share) {
+      fgl_share_dlists(c->gl, share->gl);
+      fgl_share_texobjs(c->gl, share->gl);
+      fgl_share_bufobjs(c->gl, share->gl);
+   }
+   if (cfg->db)
+      fgl_init_double_buffered(c->gl);
+   c->disp = gd;
+   c->dpy = gd->dpy;
+   c->cfg = *cfg;
+   pthread_mutex_lock(&gd->lock);
+   c->next = gd->contexts;
+   gd->contexts = c;
+   pthread_mutex_unlock(&gd->lock);
+   return c;
+}
+
+GLXAPI GLXContext glXCreateContext(Display *dpy, XVisualInfo *vis, GLXContext shareList, Bool direct)
+{
+   (void)direct;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !vis)
+      return NULL;
+   const struct __GLXFBConfigRec *cfg = config_of_visual(gd, vis->visualid);
+   return cfg ? create_context(gd, cfg, shareList) : NULL;
+}
+
+GLXAPI GLXContext glXCreateNewContext(Display *dpy, GLXFBConfig config, int renderType,
+                                      GLXContext shareList, Bool direct)
+{
+   (void)direct;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !config || renderType != GLX_RGBA_TYPE)
+      return NULL;
+   return create_context(gd, config, shareList);
+}
+
+GLXAPI void glXDestroyContext(Display *dpy, GLXContext ctx)
+{
+   (void)dpy;
+   if (!ctx)
+      return;
+   if (ctx->disp) {
+      pthread_mutex_lock(&ctx->disp->lock);
+      GLXContext *p = &ctx->disp->contexts;
+      while (*p && *p != ctx)
+         p = &(*p)->next;
+      if (*p)
+         *p = ctx->next;
+      pthread_mutex_unlock(&ctx->disp->lock);
+   }
+   if (current_context() == ctx) {
+      fgl_set_current(NULL);
+      current_glx = NULL;
+   }
+   /* (what it has binned is drawn into its drawable's buffers, if any) */
+   fgl_context_destroy(ctx->gl);
+   fgl_free(ctx);
+}
+
+GLXAPI Bool glXMakeContextCurrent(Display *dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx)
+{
+   GLXContext cur = current_context();
+   if (!ctx) {
+      if (cur)
+         fgl_flush_front(cur->gl);
+      fgl_set_current(NULL);
+      current_glx = NULL;
+      return True;
+   }
+   struct glx_display *gd = get_display(dpy);
+   /* (a context of a closed display, or of another one: BadMatch) */
+   if (!gd || draw == None || ctx->disp != gd)
+      return False;
+   struct glx_drawable *d = find_drawable(gd, draw);
+   if (d && memcmp(&d->cfg, &ctx->cfg, sizeof(d->cfg)) != 0 &&
+       (d->cfg.visualid != ctx->cfg.visualid || d->pixmap)) {
+      return False;   /* BadMatch: another visual */
+   }
+   if (!d && !(d = add_drawable(gd, draw, &ctx->cfg, false)))
+      return False;
+   /* like _mesa_make_current, finish the work of the previous binding */
+   if (cur && (cur != ctx || cur->bound != d))
+      fgl_flush_front(cur->gl);
+   if (memcmp(&d->cfg, &ctx->cfg, sizeof(d->cfg)) != 0) {
+      /* a window drawn by a context of another config of its visual:
+       * buffers of the new config's formats */
+      d->cfg = ctx->cfg;
+      free_buffers(d);
+   }
+   if (!update_size(d, NULL))
+      return False;
+   ctx->dpy = dpy;
+   ctx->draw = draw;
+   ctx->read = read;
+   ctx->bound = d;
+   fgl_context_bind_framebuffer(ctx->gl, &d->fb);
+   fgl_set_current(ctx->gl);
+   current_glx = ctx;
+   return True;
+}
+
+GLXAPI Bool glXMakeCurrent(Display *dpy, GLXDrawable drawable, GLXContext ctx)
+{
+   return glXMakeContextCurrent(dpy, drawable, drawable, ctx);
+}
+
+GLXAPI GLXContext glXGetCurrentContext(void)
+{
+   return current_context();
+}
+
+GLXAPI GLXDrawable glXGetCurrentDrawable(void)
+{
+   GLXContext c = current_context();
+   return c ? c->draw : None;
+}
+
+GLXAPI GLXDrawable glXGetCurrentReadDrawable(void)
+{
+   GLXContext c = current_context();
+   return c ? c->read : None;
+}
+
+GLXAPI Display *glXGetCurrentDisplay(void)
+{
+   GLXContext c = current_context();
+   return c ? c->dpy : NULL;
+}
+
+GLXAPI Bool glXIsDirect(Display *dpy, GLXContext ctx)
+{
+   (void)dpy;
+   return ctx ? True : False;
+}
+
+GLXAPI void glXCopyContext(Display *dpy, GLXContext src, GLXContext dst, unsigned long mask)
+{
+   /* no attribute groups are copied between fixgl contexts */
+   (void)dpy;
+   (void)src;
+   (void)dst;
+   (void)mask;
+}
+
+GLXAPI int glXQueryContext(Display *dpy, GLXContext ctx, int attribute, int *value)
+{
+   (void)dpy;
+   if (!ctx || !value)
+      return GLX_BAD_CONTEXT;
+   switch (attribute) {
+   case GLX_FBCONFIG_ID: *value = ctx->cfg.id; return Success;
+   case GLX_RENDER_TYPE: *value = GLX_RGBA_TYPE; return Success;
+   case GLX_SCREEN:      *value = ctx->cfg.screen; return Success;
+   default:              return GLX_BAD_ATTRIBUTE;
+   }
+}
+
+GLXAPI void glXSwapBuffers(Display *dpy, GLXDrawable drawable)
+{
+   struct glx_display *gd = get_display(dpy);
+   struct glx_drawable *d = gd ? find_drawable(gd, drawable) : NULL;
+   if (!d || !d->cfg.db)
+      return;
+   GLXContext cur = current_context();
+   struct fgl_context *ctx = cur && cur->bound == d ? cur->gl : NULL;
+   /* an implicit glFlush of the current context, as Mesa's */
+   if (ctx)
+      fgl_flush_front(ctx);
+   present(d);
+   /* the size of the next frame */
+   update_size(d, ctx);
+}
+
+GLXAPI void glXWaitGL(void)
+{
+   GLXContext c = current_context();
+   if (c)
+      fgl_flush_front(c->gl);
+}
+
+GLXAPI void glXWaitX(void)
+{
+   GLXContext c = current_context();
+   if (c && c->dpy)
+      XSync(c->dpy, False);
+}
+
+/* ---- GLX drawables ------------------------------------------------------ */
+
+GLXAPI GLXWindow glXCreateWindow(Display *dpy, GLXFBConfig config, Window win, const int *attribList)
+{
+   (void)attribList;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !config || win == None)
+      return None;
+   if (!find_drawable(gd, win) && !add_drawable(gd, win, config, false))
+      return None;
+   return win;
+}
+
+GLXAPI void glXDestroyWindow(Display *dpy, GLXWindow window)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (gd)
+      remove_drawable(gd, window);
+}
+
+GLXAPI GLXPixmap glXCreatePixmap(Display *dpy, GLXFBConfig config, Pixmap pixmap, const int *attribList)
+{
+   (void)attribList;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd || !config || pixmap == None)
+      return None;
+   /* a pixmap is single-buffered: glFlush/glFinish write it */
+   struct __GLXFBConfigRec cfg = *config;
+   cfg.db = false;
+   remove_drawable(gd, pixmap);
+   return add_drawable(gd, pixmap, &cfg, true) ? pixmap : None;
+}
+
+GLXAPI void glXDestroyPixmap(Display *dpy, GLXPixmap pixmap)
+{
+   glXDestroyWindow(dpy, pixmap);
+}
+
+GLXAPI GLXPixmap glXCreateGLXPixmap(Display *dpy, XVisualInfo *vis, Pixmap pixmap)
+{
+   struct glx_display *gd = get_display(dpy);
+   const struct __GLXFBConfigRec *cfg = gd && vis ? config_of_visual(gd, vis->visualid) : NULL;
+   return cfg ? glXCreatePixmap(dpy, (GLXFBConfig)(uintptr_t)cfg, pixmap, NULL) : None;
+}
+
+GLXAPI void glXDestroyGLXPixmap(Display *dpy, GLXPixmap pixmap)
+{
+   glXDestroyWindow(dpy, pixmap);
+}
+
+GLXAPI GLXPbuffer glXCreatePbuffer(Display *dpy, GLXFBConfig config, const int *attribList)
+{
+   /* no pbuffer configs (GLX_DRAWABLE_TYPE has no GLX_PBUFFER_BIT) */
+   (void)dpy;
+   (void)config;
+   (void)attribList;
+   return None;
+}
+
+GLXAPI void glXDestroyPbuffer(Display *dpy, GLXPbuffer pbuf)
+{
+   (void)dpy;
+   (void)pbuf;
+}
+
+GLXAPI void glXQueryDrawable(Display *dpy, GLXDrawable draw, int attribute, unsigned int *value)
+{
+   struct glx_display *gd = get_display(dpy);
+   struct glx_drawable *d = gd ? find_drawable(gd, draw) : NULL;
+   if (!value)
+      return;
+   switch (attribute) {
+   case GLX_WIDTH:
+      *value = d && d->has_buffer ? (unsigned)d->fb.Width : 0;
+      return;
+   case GLX_HEIGHT:
+      *value = d && d->has_buffer ? (unsigned)d->fb.Height : 0;
+      return;
+   case GLX_PRESERVED_CONTENTS:
+   case GLX_LARGEST_PBUFFER:
+      *value = 0;
+      return;
+   case GLX_FBCONFIG_ID:
+      *value = d ? (unsigned)d->cfg.id : 0;
+      return;
+   case GLX_SWAP_INTERVAL_EXT:
+      *value = d ? (unsigned)d->swap_interval : 0;
+      return;
+   case GLX_MAX_SWAP_INTERVAL_EXT:
+      *value = 1;
+      return;
+   default:
+      return;
+   }
+}
+
+GLXAPI void glXSelectEvent(Display *dpy, GLXDrawable draw, unsigned long event_mask)
+{
+   /* fixgl sends no GLX events */
+   (void)dpy;
+   (void)draw;
+   (void)event_mask;
+}
+
+GLXAPI void glXGetSelectedEvent(Display *dpy, GLXDrawable draw, unsigned long *event_mask)
+{
+   (void)dpy;
+   (void)draw;
+   if (event_mask)
+      *event_mask = 0;
+}
+
+/* ---- swap control: accepted, no effect (presentation never waits) -------- */
+
+GLXAPI void glXSwapIntervalEXT(Display *dpy, GLXDrawable drawable, int interval)
+{
+   struct glx_display *gd = get_display(dpy);
+   struct glx_drawable *d = gd ? find_drawable(gd, drawable) : NULL;
+   if (d && interval >= 0)
+      d->swap_interval = interval;
+}
+
+GLXAPI int glXSwapIntervalMESA(unsigned int interval)
+{
+   GLXContext c = current_context();
+   if (!c || !c->bound)
+      return GLX_BAD_CONTEXT;
+   c->bound->swap_interval = (int)interval;
+   return 0;
+}
+
+GLXAPI int glXGetSwapIntervalMESA(void)
+{
+   GLXContext c = current_context();
+   return c && c->bound ? c->bound->swap_interval : 0;
+}
+
+GLXAPI int glXSwapIntervalSGI(int interval)
+{
+   if (interval <= 0)
+      return GLX_BAD_VALUE;
+   return glXSwapIntervalMESA((unsigned)interval);
+}
+
+/* ---- queries ------------------------------------------------------------ */
+
+GLXAPI Bool glXQueryExtension(Display *dpy, int *errorBase, int *eventBase)
+{
+   /* GLX is done in the client: any display has it */
+   if (errorBase)
+      *errorBase = 0;
+   if (eventBase)
+      *eventBase = 0;
+   return dpy ? True : False;
+}
+
+GLXAPI Bool glXQueryVersion(Display *dpy, int *major, int *minor)
+{
+   if (major)
+      *major = 1;
+   if (minor)
+      *minor = 4;
+   return dpy ? True : False;
+}
+
+static const char *glx_string(int name)
+{
+   switch (name) {
+   case GLX_VENDOR:     return "fixgl";
+   case GLX_VERSION:    return "1.4 fixgl " FIXGL_VERSION_STRING;
+   case GLX_EXTENSIONS: return glx_extensions;
+   default:             return NULL;
+   }
+}
+
+GLXAPI const char *glXGetClientString(Display *dpy, int name)
+{
+   (void)dpy;
+   return glx_string(name);
+}
+
+GLXAPI const char *glXQueryServerString(Display *dpy, int screen, int name)
+{
+   (void)dpy;
+   (void)screen;
+   return glx_string(name);
+}
+
+GLXAPI const char *glXQueryExtensionsString(Display *dpy, int screen)
+{
+   (void)dpy;
+   (void)screen;
+   return glx_extensions;
+}
+
+struct glx_proc {
+   const char *name;
+   __GLXextFuncPtr proc;
+};
+
+#define GLX_PROC(f) { #f, (__GLXextFuncPtr)(void (*)(void))(f) }
+static const struct glx_proc glx_procs[] = {
+   GLX_PROC(glXChooseFBConfig),        GLX_PROC(glXChooseVisual),
+   GLX_PROC(glXCopyContext),           GLX_PROC(glXCreateContext),
+   GLX_PROC(glXCreateGLXPixmap),       GLX_PROC(glXCreateNewContext),
+   GLX_PROC(glXCreatePbuffer),         GLX_PROC(glXCreatePixmap),
+   GLX_PROC(glXCreateWindow),          GLX_PROC(glXDestroyContext),
+   GLX_PROC(glXDestroyGLXPixmap),      GLX_PROC(glXDestroyPbuffer),
+   GLX_PROC(glXDestroyPixmap),         GLX_PROC(glXDestroyWindow),
+   GLX_PROC(glXGetClientString),       GLX_PROC(glXGetConfig),
+   GLX_PROC(glXGetCurrentContext),     GLX_PROC(glXGetCurrentDisplay),
+   GLX_PROC(glXGetCurrentDrawable),    GLX_PROC(glXGetCurrentReadDrawable),
+   GLX_PROC(glXGetFBConfigAttrib),     GLX_PROC(glXGetFBConfigs),
+   GLX_PROC(glXGetProcAddress),        GLX_PROC(glXGetProcAddressARB),
+   GLX_PROC(glXGetSelectedEvent),      GLX_PROC(glXGetSwapIntervalMESA),
+   GLX_PROC(glXGetVisualFromFBConfig), GLX_PROC(glXIsDirect),
+   GLX_PROC(glXMakeContextCurrent),    GLX_PROC(glXMakeCurrent),
+   GLX_PROC(glXQueryContext),          GLX_PROC(glXQueryDrawable),
+   GLX_PROC(glXQueryExtension),        GLX_PROC(glXQueryExtensionsString),
+   GLX_PROC(glXQueryServerString),     GLX_PROC(glXQueryVersion),
+   GLX_PROC(glXSelectEvent),           GLX_PROC(glXSwapBuffers),
+   GLX_PROC(glXSwapIntervalEXT),       GLX_PROC(glXSwapIntervalMESA),
+   GLX_PROC(glXSwapIntervalSGI),       GLX_PROC(glXUseXFont),
+   GLX_PROC(glXWaitGL),                GLX_PROC(glXWaitX),
+};
+
+/* The GL entry points as OSMesaGetProcAddress gives them (NULL for a name
+ * fixgl does not implement, libfixgl/osmesa/osmesa.c), and the GLX ones. */
+GLXAPI __GLXextFuncPtr glXGetProcAddressARB(const GLubyte *procName)
+{
+   const char *name = (const char *)procName;
+   if (!name)
+      return NULL;
+   if (strncmp(name, "glX", 3) == 0) {
+      for (size_t i = 0; i < sizeof(glx_procs) / sizeof(glx_procs[0]); i++)
+         if (strcmp(glx_procs[i].name, name) == 0)
+            return glx_procs[i].proc;
+      return NULL;
+   }
+   return (__GLXextFuncPtr)OSMesaGetProcAddress(name);
+}
+
+GLXAPI __GLXextFuncPtr glXGetProcAddress(const GLubyte *procName)
+{
+   return glXGetProcAddressARB(procName);
+}
