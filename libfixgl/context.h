@@ -1139,6 +1139,9 @@ static inline struct fgl_matrix_stack *fgl_texture_stack(struct fgl_context *ctx
  * [S: ff_fragment_shader.cpp:filter_fp_input_mask, load_texture] */
 static inline unsigned fgl_tex_varying_units(const struct fgl_context *ctx)
 {
+   /* with GL_POINT_SPRITE on, every unit's (the sprite may replace it) */
+   if (ctx->Point.PointSprite)
+      return (1u << FGL_MAX_TEXTURE_UNITS) - 1u;
    return ctx->_VaryingTexUnits | ctx->_TexGenEnabled | ctx->_TexMatEnabled;
 }
 
@@ -1207,6 +1210,13 @@ static inline bool fgl_point_attenuated(const struct fgl_context *ctx)
 {
    const float *p = ctx->Point.Params;
    return p[0] != 1.0f || p[1] != 0.0f || p[2] != 0.0f;
+}
+
+/* The rasterizer's point_smooth [S: st_atom_rasterizer.c]: GL_POINT_SMOOTH
+ * is ignored while GL_POINT_SPRITE is on (no aapoint stage) */
+static inline bool fgl_point_smooth(const struct fgl_context *ctx)
+{
+   return ctx->Point.SmoothFlag && !ctx->Point.PointSprite;
 }
 
 /* Public API symbols; everything else is hidden by default. */

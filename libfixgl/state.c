@@ -624,7 +624,7 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
       fill_back = fill_front;
    const bool unfilled = fill_front != GL_FILL || fill_back != GL_FILL;
    const bool line_stipple = ctx->Line.StippleFlag && ctx->Line.StipplePattern != 0xffff;
-   const bool need_pipeline = unfilled || pg->StippleFlag || ctx->Point.SmoothFlag ||
+   const bool need_pipeline = unfilled || pg->StippleFlag || fgl_point_smooth(ctx) ||
                               ctx->Line.SmoothFlag || line_stipple;
    const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
    /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
@@ -651,6 +651,15 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
     * writes each point's size (st_atom_rasterizer.c point_size_per_vertex,
     * ffvertex_prog.c build_atten_pointsize) */
    o->point_size_per_vertex = fgl_point_attenuated(ctx);
+   /* [S: st_atom_rasterizer.c] GL_POINT_SPRITE: point_quad_rasterization,
+    * sprite_coord_enable from the units' GL_COORD_REPLACE, the origin
+    * upper left unless GL_LOWER_LEFT (OSMesa's buffer is Y_0_TOP, so no
+    * flip), and point_smooth off (fgl_point_smooth) */
+   if (ctx->Point.PointSprite) {
+      o->point_sprite = true;
+      o->sprite_lower_left = ctx->Point.SpriteOrigin == GL_LOWER_LEFT;
+      o->sprite_coord_enable = (uint8_t)(ctx->Point.CoordReplace & ((1u << R_MAX_TEX_UNITS) - 1u));
+   }
    o->line_width = width > FGL_MIN_LINE_WIDTH
                  ? (width > FGL_MAX_LINE_WIDTH ? FGL_MAX_LINE_WIDTH : width)
                  : FGL_MIN_LINE_WIDTH;
@@ -719,7 +728,7 @@ static bool update_aa_states(struct fgl_context *ctx)
    bool ok = true;
    for (int m = 0; m < 2; m++) {
       struct r_state *aa = &ctx->_RasterAA[m];
-      const bool on = m == 0 ? ctx->Point.SmoothFlag : ctx->Line.SmoothFlag;
+      const bool on = m == 0 ? fgl_point_smooth(ctx) : ctx->Line.SmoothFlag;
       r_state_release(aa);
       memset(aa, 0, sizeof(*aa));
       if (!on)

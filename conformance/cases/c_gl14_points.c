@@ -4,8 +4,7 @@
  * (which the oracle does not apply), smooth, lit, fogged, textured and
  * array-drawn attenuated points, display lists, the attribute stacks, and
  * the state of GL_POINT_SPRITE / GL_COORD_REPLACE with every query and
- * error.  Point sprites are not drawn here: fixgl does not rasterize them
- * yet (ORACLE-NOTES.md "Point parameters"). */
+ * error.  Point sprites are drawn by c_gl14_sprite.c. */
 #define GL_GLEXT_PROTOTYPES 1
 #include <stdio.h>
 

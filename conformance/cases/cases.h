@@ -65,6 +65,7 @@ extern const fc_case fc_cases_shading_paths[];
 extern const fc_case fc_cases_gl14_attr[];
 extern const fc_case fc_cases_gl14_ops[];
 extern const fc_case fc_cases_gl14_points[];
+extern const fc_case fc_cases_gl14_sprite[];
 extern const fc_case fc_cases_gl15[];
 extern const fc_case fc_cases_tex3d[];
 extern const fc_case fc_cases_osmesa[];

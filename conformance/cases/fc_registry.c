@@ -39,6 +39,7 @@ static const fc_case *const groups[] = {
     fc_cases_gl14_attr,
     fc_cases_gl14_ops,
     fc_cases_gl14_points,
+    fc_cases_gl14_sprite,
     fc_cases_gl15,
     fc_cases_tex3d,
     fc_cases_osmesa,

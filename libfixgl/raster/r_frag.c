@@ -101,6 +101,12 @@ struct tex_cache {
    unsigned have;
    float c[R_MAX_TEX_UNITS][4];
    const struct r_tex_lod *lod;   /* the quad's LOD per unit, or NULL */
+   /* NIR's reassociation across units: the channels (bit c) of the
+    * previous unit's result that are an unsaturated sum of two products
+    * p0 + p1 (a generic INTERPOLATE), with the products; cur_*: the same
+    * of the unit being emitted (emit_combine's R_COMB_ADD reads prev_*) */
+   unsigned prev_sum, cur_sum;
+   float prev_p[4][2], cur_p[4][2];
 };
 
 static const float *tex_color(const struct r_state *rs, const float in[][4],
@@ -260,9 +266,22 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
       case R_COMB_MODULATE:
          r = a[0][c] * a[1][c];
          break;
-      case R_COMB_ADD:
-         r = a[0][c] + a[1][c];
+      case R_COMB_ADD: {
+         /* the previous unit's unsaturated p0 + p1 plus an argument that
+          * is no product (a texel, a colour, the constant) becomes
+          * (p0 + a) + p1 (nir_opt_algebraic moves the product out of the
+          * inner fadd: ST_DEBUG=nir of GL_DECAL then GL_ADD) */
+         const int pi = src[0] == R_SRC_PREVIOUS && opr[0] == R_OPR_COLOR ? 0
+                      : src[1] == R_SRC_PREVIOUS && opr[1] == R_OPR_COLOR ? 1 : -1;
+         const int o = 1 - pi;
+         if (pi >= 0 && ((tc->prev_sum >> c) & 1u) && src[o] != R_SRC_PREVIOUS &&
+             src[o] != R_SRC_ZERO && src[o] != R_SRC_ONE &&
+             (opr[o] == R_OPR_COLOR || opr[o] == R_OPR_ALPHA))
+            r = (tc->prev_p[c][0] + a[o][c]) + tc->prev_p[c][1];
+         else
+            r = a[0][c] + a[1][c];
          break;
+      }
       case R_COMB_ADD_SIGNED:
          /* (a0 + a1) + -0.5 becomes (a0 + -0.5) + a1 (nir_opt_algebraic
           * "Prefer moving out a multiplication": (a + b) + #c ->
@@ -288,8 +307,12 @@ static void emit_combine(const struct r_state *rs, const float in[][4],
             r = a[0][c] * (a[2][c] + a[1][c]);
          else if (same_key(key[2], key[1]))
             r = a[2][c] * (a[0][c] + b);
-         else
-            r = a[0][c] * a[2][c] + a[1][c] * b;
+         else {
+            tc->cur_p[c][0] = a[0][c] * a[2][c];
+            tc->cur_p[c][1] = a[1][c] * b;
+            tc->cur_sum |= 1u << c;
+            r = tc->cur_p[c][0] + tc->cur_p[c][1];
+         }
          break;
       }
       case R_COMB_SUBTRACT:
@@ -402,6 +425,7 @@ static void emit_texenv(const struct r_state *rs, const float in[][4],
    /* the final shift: saturate(val * (2^rgb_shift, ..., 2^alpha_shift)),
     * on every channel once either shift is set (a factor 1 is dropped) */
    if (rgb_shift || alpha_shift) {
+      tc->cur_sum = 0;   /* scaled and saturated: no sum left */
       for (int c = 0; c < 4; c++) {
          const unsigned sh = c < 3 ? rgb_shift : alpha_shift;
          res[c] = fsat(sh ? res[c] * (float)(1u << sh) : res[c]);
@@ -531,6 +555,7 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
    struct tex_cache tc;
    tc.have = 0;
    tc.lod = lod;
+   tc.cur_sum = 0;
    float prev[4], res[4];
    bool first = true;   /* PREVIOUS is still the primary colour */
    for (int c = 0; c < 4; c++)
@@ -538,6 +563,10 @@ static __attribute__((noinline)) void texture_units(const struct r_state *rs, co
    for (int u = 0; u < rs->fs->tex_nr; u++) {
       if (!(rs->fs->tex_units & (1u << u)))
          continue;
+      tc.prev_sum = tc.cur_sum;
+      if (tc.cur_sum)
+         memcpy(tc.prev_p, tc.cur_p, sizeof(tc.prev_p));
+      tc.cur_sum = 0;
       if (rs->tex[u]->comb.simple)
          simple_texenv(rs, in, quad, &tc, u, prev, res);
       else

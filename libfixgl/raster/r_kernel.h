@@ -100,6 +100,13 @@ static inline void r_cover_box(int32_t x0, int32_t y0, int32_t x1, int32_t y1,
    cv->y1 = y1;
 }
 
+/* Shades pixel (px, py) of the draw region with the planes of the
+ * r_tri_setup ctx (flat inputs or planes times 1/w, the texture quads from
+ * the planes, the pstipple kill when rs->stipple_points_lines): the
+ * reference kernel of lines and point sprites (r_line.c; an r_shader's
+ * pixel function). */
+void r_setup_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
+
 /* The block kernel for the state rs and a triangle whose colour is flat
  * or interpolated, or NULL when no block kernel covers the state
  * (r_block_avx2.c; built where the compiler targets x86-64 AVX2:

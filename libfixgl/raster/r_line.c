@@ -80,9 +80,10 @@ static inline int32_t max4(int32_t a, int32_t b, int32_t c, int32_t d)
 
 static inline int32_t sub32(int32_t a, int32_t b) { return (int32_t)((uint32_t)a - (uint32_t)b); }
 
-static void line_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
+void r_setup_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py)
 {
-   /* the line's setup (setup_line_coefficients) */
+   /* the line's or the sprite's setup (setup_line_coefficients,
+    * r_point.c sprite) */
    const struct r_tri_setup *ls = ctx;
    if (rs->stipple_points_lines && !r_stipple_pass(rs, px, py))
       return;   /* the pstipple shader's kill (t_vbuf_flush) */
@@ -390,7 +391,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
             p[i].eo += (uint32_t)p[i].dcdy;
       }
       /* bboxpos: negative regions discarded */
-      const struct r_shader sh = { line_shade_pixel, &ls };
+      const struct r_shader sh = { r_setup_shade_pixel, &ls };
       r_bin_planes(rs, p, 4, bx0 > 0 ? bx0 : 0, by0 > 0 ? by0 : 0, bx1, by1, &sh);
       return;
    }
@@ -463,6 +464,6 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
          }
       }
       for (int32_t px = (int32_t)x0; px <= x1; px++)
-         line_shade_pixel(rs, &ls, px, py);
+         r_setup_shade_pixel(rs, &ls, px, py);
    }
 }

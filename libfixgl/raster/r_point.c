@@ -16,6 +16,20 @@
  * A point of three pixels or more is shaded by the state's block kernel
  * (r_state.line_kernel, r_kernel.h) unless the pstipple shader is bound;
  * else, and for the reference kernels, pixel by pixel here.
+ *
+ * Point sprites (r_rast_state.point_sprite, chosen at validation from
+ * GL_POINT_SPRITE: the rasterizer object's point_quad_rasterization) are
+ * llvmpipe's other point ([S: lp_setup_point.c:try_setup_point, the
+ * !legacy_points path, texcoord_coef]; ORACLE-NOTES.md "Point sprites"):
+ * a square of fw = max(256, iround(size*256)) sub-pixel units whose
+ * corner is iround((x - 0.5)*256) - fw/2, y alike, with the triangles'
+ * fill rule (left and bottom edges in), so exactly the pixels whose
+ * centres lie in [x0, x0 + fw) x (y0, y0 + fw]; the replaced texture
+ * coordinates are planes over it (sprite_planes), the other inputs the
+ * vertex's as for legacy points.  Shaded by the same block kernel (the
+ * square is its box; the planes are the kernel's interpolated inputs)
+ * or, for the reference kernels and under the pstipple shader, by
+ * r_setup_shade_pixel.
  */
 #include "r_kernel.h"
 
@@ -23,17 +37,131 @@
 #include <math.h>
 
 static void point(const struct r_state *rs, const struct r_vertex *v);
+static void sprite(const struct r_state *rs, const struct r_vertex *v);
 
 /* under fixglStats a point is raster time (setup included) */
 void r_point(const struct r_state *rs, const struct r_vertex *v)
 {
+   /* the rasterizer object says which point (once per point) */
+   void (*const fn)(const struct r_state *, const struct r_vertex *) =
+      rs->rast->point_sprite ? sprite : point;
    if (__builtin_expect(rs->stats != NULL, 0)) {
       const uint64_t t0 = r_stats_now();
-      point(rs, v);
+      fn(rs, v);
       rs->stats->raster_ns += r_stats_now() - t0;
       return;
    }
-   point(rs, v);
+   fn(rs, v);
+}
+
+/* [S: lp_setup_point.c:texcoord_coef] the planes (a0, dadx, dady) of a
+ * replaced texture coordinate, channel c, for the sprite of sub-pixel
+ * width fw centred at the window position (x, y), premultiplied by the
+ * vertex 1/w (the input is perspective): s = 0.5 + (x_pixel - (x - 0.5))
+ * * 256/fw, t the same down the buffer (negated for the lower-left
+ * origin), r = 0, q = 1.  The setup's C: float products and sum, the
+ * subtraction from 0.5 in double (the literal), rounded to float. */
+static struct r_attr_plane sprite_plane(int c, float x, float y, float w, int32_t fw,
+                                        bool lower_left)
+{
+   const float xo = x - 0.5f, yo = y - 0.5f;   /* minus pixel_offset */
+   float dadx = 0.0f, dady = 0.0f, a0;
+   switch (c) {
+   case 0:
+      dadx = 256.0f / (float)fw;
+      a0 = (float)(0.5 - (double)(dadx * xo + dady * yo));
+      break;
+   case 1:
+      dady = 256.0f / (float)fw;
+      if (lower_left)
+         dady = -dady;
+      a0 = (float)(0.5 - (double)(dadx * xo + dady * yo));
+      break;
+   case 2:
+      return (struct r_attr_plane){ 0.0f, 0.0f, 0.0f };
+   default:
+      return (struct r_attr_plane){ w, 0.0f, 0.0f };
+   }
+   return (struct r_attr_plane){ a0 * w, dadx * w, dady * w };
+}
+
+static void sprite(const struct r_state *rs, const struct r_vertex *v)
+{
+   /* LP_MAX_POINT_WIDTH */
+   float size = r_point_size(rs->rast, v->attr[R_ATTR_PSIZE]);
+   if (size > 255.0f)
+      size = 255.0f;
+   if (!isfinite(v->pos[0]) || !isfinite(v->pos[1]))
+      return;   /* cannot pass the clip test (NaN positions: outside) */
+
+   /* the square in sub-pixel units (a NaN size snaps to INT32_MIN: 256);
+    * positions inside the clip volume keep these far from overflowing */
+   int32_t fw = r_subpixel_snap(size);
+   if (fw < 256)
+      fw = 256;
+   const int64_t x0 = (int64_t)r_subpixel_snap(v->pos[0] - 0.5f) - fw / 2;
+   const int64_t y0 = (int64_t)r_subpixel_snap(v->pos[1] - 0.5f) - fw / 2;
+   const int64_t x1 = x0 + fw, y1 = y0 + fw;
+   /* The four planes of try_setup_point, C(px, py) > 0 with the left
+    * plane's c incremented and the bottom one's (bottom_edge_rule):
+    * 256 px >= x0, 256 px < x1, 256 py > y0, 256 py <= y1; the bounding
+    * box and the draw region cut it further only where it is empty. */
+   int64_t bx0 = (x0 + 255) >> 8, bx1 = ((x1 + 255) >> 8) - 1;
+   int64_t by0 = (y0 >> 8) + 1, by1 = y1 >> 8;
+   if (bx0 < rs->x0) bx0 = rs->x0;
+   if (by0 < rs->y0) by0 = rs->y0;
+   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
+   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   if (bx0 > bx1 || by0 > by1)
+      return;
+
+   /* setup_point_coefficients: depth and 1/w constant, the replaced
+    * coordinates planes, every other input the vertex's (constant, or
+    * premultiplied by 1/w and divided by it again: point_persp_coeff) */
+   const float w = v->pos[3];
+   struct r_tri_setup ts;
+   ts.z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
+   ts.w = (struct r_attr_plane){ w, 0.0f, 0.0f };
+   ts.zoffset = 0.0f;
+   ts.need_w = false;
+   ts.inputs = rs->fs->fs_inputs;
+   ts.quad_x = ts.quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read here) */
+   ts.phong_back = rs->fs->phong && rs->shade_env->two_side &&
+                   v->attr[R_ATTR_NORMAL][3] == 0.0f;
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(ts.inputs & (1u << a)))
+         continue;
+      const int slot = r_fs_slot(a, false);
+      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
+      /* a constant-interpolated input never takes the sprite planes */
+      const bool replaced = a >= R_FS_TEX0 && a < R_FS_TEX0 + R_MAX_TEX_UNITS && !flat &&
+                            ((rs->rast->sprite_coord_enable >> (a - R_FS_TEX0)) & 1u);
+      ts.flat_attr[a] = !replaced;
+      if (replaced) {
+         ts.need_w = true;
+         for (int c = 0; c < 4; c++)
+            ts.ap[a][c] = sprite_plane(c, v->pos[0], v->pos[1], w, fw,
+                                       rs->rast->sprite_lower_left);
+      } else {
+         for (int c = 0; c < 4; c++)
+            ts.flat[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
+      }
+   }
+
+   /* the square is the box: the block kernel of the state (a flat colour,
+    * as every input but the planes), unless the pstipple shader kills */
+   const r_tri_kernel kernel = rs->stipple_points_lines
+                                  ? NULL
+                                  : rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
+   if (kernel) {
+      struct r_tri_cover cv;
+      r_cover_box((int32_t)bx0, (int32_t)by0, (int32_t)bx1, (int32_t)by1, &cv);
+      kernel(rs, &ts, &cv);
+      return;
+   }
+   for (int32_t py = (int32_t)by0; py <= (int32_t)by1; py++)
+      for (int32_t px = (int32_t)bx0; px <= (int32_t)bx1; px++)
+         r_setup_shade_pixel(rs, &ts, px, py);
 }
 
 static void point(const struct r_state *rs, const struct r_vertex *v)

@@ -430,6 +430,15 @@ struct r_rast_state {
     * computes it: glPointParameter's distance attenuation), point_size
     * unused */
    bool point_size_per_vertex;
+   /* point sprites (GL_POINT_SPRITE: the state tracker's
+    * point_quad_rasterization): a point is llvmpipe's square of sub-pixel
+    * edges (r_point.c sprite) instead of the legacy whole-pixel one, and
+    * the texture coordinates of the units in sprite_coord_enable (bit u:
+    * unit u, GL_COORD_REPLACE) are its planes (s, t, 0, 1), t growing down
+    * the y-down buffer (GL_UPPER_LEFT) or up (sprite_lower_left) */
+   bool point_sprite;
+   bool sprite_lower_left;
+   uint8_t sprite_coord_enable;
 };
 
 /* A point's size: its vertex's or the rasterizer's */

@@ -168,7 +168,7 @@ void t_vbuf_end_draw(struct fgl_context *ctx)
 /* The stage after stipple: the aapoint quad or llvmpipe's point. */
 static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
 {
-   if (ctx->Point.SmoothFlag) {
+   if (fgl_point_smooth(ctx)) {
       vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
       aapoint_point(ctx, v);
    } else
@@ -187,7 +187,7 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
    /* a point in draw's pipeline (smooth, or in a segment that needs
     * clipping) passes the stipple stage, which restarts the line stipple
     * counter (stipple_reset_point) */
-   if ((pipeline || ctx->Point.SmoothFlag) && ctx->_DrawPipeline.line_stipple)
+   if ((pipeline || fgl_point_smooth(ctx)) && ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
    point_raster(ctx, &v->r);
 }

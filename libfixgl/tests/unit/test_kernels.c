@@ -34,7 +34,9 @@
  * degenerate, redrawn at equal depths), lines, line strips and loops
  * (widths 1 to 8, whole and fractional; anywhere, or from pixel centre to
  * pixel centre in every orientation, axis-aligned and diagonal ones
- * included), points (sizes 1 to 16, whole and fractional), vertex arrays,
+ * included), points (sizes 1 to 16, whole and fractional; legacy, smooth
+ * and sprites with GL_COORD_REPLACE on random units and either origin),
+ * vertex arrays,
  * and a few glDrawPixels (colour, depth, stencil), glBitmap and
  * glCopyPixels.  The internal colour, depth and stencil
  * buffers of the two contexts are then compared byte for byte, and the
@@ -306,7 +308,8 @@ static void make_key(const struct r_state *rs, int kind, struct state_key *k)
       k->dst_alpha_one = rs->blend->dst_alpha_one;
    }
    k->flags = (uint8_t)(rs->full_ops | rs->fs->color_sum << 1 | rs->rast->twoside << 2 | rs->rast->stipple << 3 |
-                        rs->dsa->alpha_test_float << 4);
+                        rs->dsa->alpha_test_float << 4 |
+                        (kind == KIND_POINT && rs->rast->point_sprite) << 5);
    k->fog_mode = (uint8_t)rs->fs->fog_mode;
    k->aa = (uint8_t)rs->fs->aa;
    k->phong = rs->fs->phong;
@@ -410,7 +413,7 @@ static struct gen {
    bool case_tris;        /* this case drew filled triangles */
    bool case_lines;       /* ... non-smooth lines */
    bool case_points;      /* ... non-smooth points of 3 pixels or more */
-   bool line_smooth, point_smooth;
+   bool line_smooth, point_smooth, point_sprite;
    float point_size;
    int case_index;
    bool tex_2d[4];        /* texture i + 1 is 2D (else 1D) */
@@ -1013,6 +1016,29 @@ static void set_lines_points(void)
    glLineStipple(factor, (GLushort)pattern);
    glPointSize(ps);
    if (psm) glEnable(GL_POINT_SMOOTH); else glDisable(GL_POINT_SMOOTH);
+   /* point sprites (r_point.c sprite: every size through the kernels,
+    * smoothing ignored), the coordinates of random units replaced, either
+    * origin */
+   const bool spr = chance(0.3f), lower = chance(0.5f);
+   const int repl = rnd(8);
+   G.point_sprite = spr;
+   L("point sprite %d replace 0x%x lower left %d", spr, repl, lower);
+   if (spr) glEnable(GL_POINT_SPRITE); else glDisable(GL_POINT_SPRITE);
+   glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, lower ? GL_LOWER_LEFT : GL_UPPER_LEFT);
+   GLint active = GL_TEXTURE0;
+   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+   for (int u = 0; u < 3; u++) {
+      glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+      glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, (repl >> u) & 1 ? GL_TRUE : GL_FALSE);
+   }
+   glActiveTexture((GLenum)active);
+}
+
+/* this case's points go to a kernel: non-smooth ones of 3 pixels or more
+ * (r_point.c), or sprites of any size (smoothing is off for them) */
+static bool points_to_kernel(void)
+{
+   return G.point_sprite || (!G.point_smooth && G.point_size >= 3.0f);
 }
 
 static void set_projection(void)
@@ -1295,8 +1321,7 @@ static void draw_points(void)
    glEnd();
    if (g_count_on)
       g_count.points += (uint64_t)nv;
-   /* (r_point.c: a point of size 3 or more is 3 pixels wide or more) */
-   if (!G.point_smooth && G.point_size >= 3.0f)
+   if (points_to_kernel())
       G.case_points = true;
 }
 
@@ -1345,7 +1370,7 @@ static void draw_arrays(void)
       G.case_tris = true;
    if (prim == GL_LINES && !G.line_smooth)
       G.case_lines = true;
-   if (prim == GL_POINTS && !G.point_smooth && G.point_size >= 3.0f)
+   if (prim == GL_POINTS && points_to_kernel())
       G.case_points = true;
 }
 
