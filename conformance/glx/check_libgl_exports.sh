@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_libgl_exports.sh LIBGL LIBFIXGL [--sanitized]
 #
-# The public face of libGL.so.1 (libgl/):
+# The public face of libGL.so.1 (libfixgl/libgl/):
 #  - every defined dynamic symbol starts with gl, glX, OSMesa or fixgl;
 #  - the gl* entry points are exactly libfixgl.so's;
 #  - the GLX 1.4 functions (issue 20's list) and the swap-control ones are

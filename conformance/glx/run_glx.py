@@ -40,7 +40,7 @@ def start_xvfb():
         raise Fail("Xvfb is not installed (Debian package xvfb)")
     rfd, wfd = os.pipe()
     # the server with the system's libraries (meson points LD_LIBRARY_PATH
-    # at build/libgl, and Xvfb's GLX loads libGL.so.1)
+    # at build/libfixgl/libgl, and Xvfb's GLX loads libGL.so.1)
     env = {k: v for k, v in os.environ.items() if k not in ("LD_LIBRARY_PATH", "LD_PRELOAD")}
     proc = subprocess.Popen([xvfb, "-displayfd", str(wfd), "-screen", "0", SCREEN,
                              "-nolisten", "tcp", "-noreset"], env=env,

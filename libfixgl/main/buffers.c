@@ -12,7 +12,7 @@
  * (state.c, clear.c) and glReadPixels of a colour format raises
  * INVALID_OPERATION (readpix.c).
  *
- * A context of a double-buffered GLX config (libgl/) starts with GL_BACK
+ * A context of a double-buffered GLX config (libfixgl/libgl/) starts with GL_BACK
  * for both; its drawable's one colour buffer is the back buffer, which
  * glXSwapBuffers presents, and GL_FRONT names it too.
  */
