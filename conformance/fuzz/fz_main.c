@@ -132,8 +132,8 @@ static int read_result(const char *path, size_t n, fz_result *res, fz_final *fin
 
 static char tmp_stream[512], tmp_fixgl[512], tmp_oracle[512], tmp_oracle2[520];
 
-/* Whether the oracle gives the same results (ro, fo) on the stream again,
- * in a process whose allocations glibc fills with another byte.  Some
+/* Whether the oracle gives the same results (ro, fo) on the stream in two
+ * more runs, in processes whose allocations glibc fills with other bytes.  Some
  * streams make Mesa read memory it never wrote (the current colour after
  * a list of seed 58's kind): its results then change from run to run, and
  * a difference from them says nothing about fixgl.  A stream with such a
@@ -146,9 +146,15 @@ static int oracle_repeats(size_t n, const fz_result *ro, const fz_final *fo)
     fz_result *r2 = calloc(n ? n : 1, sizeof *r2);
     fz_final f2;
     int sig, same = 0;
-    if (r2 && run_exec(opt.oracle, tmp_stream, tmp_oracle2, &sig, "165") == RUN_OK &&
-        read_result(tmp_oracle2, n, r2, &f2))
-        same = memcmp(r2, ro, n * sizeof *r2) == 0 && memcmp(&f2, fo, sizeof f2) == 0;
+    /* two more runs: one may happen to repeat a varying result (seed
+     * 116's state walk took 6 values in 6 oracle runs, yet one rerun
+     * repeated it in a CI run; the cause is not traced) */
+    static const char *const perturb[] = { "165", "90" };
+    same = r2 != NULL;
+    for (int k = 0; k < 2 && same; k++)
+        same = run_exec(opt.oracle, tmp_stream, tmp_oracle2, &sig, perturb[k]) == RUN_OK &&
+               read_result(tmp_oracle2, n, r2, &f2) &&
+               memcmp(r2, ro, n * sizeof *r2) == 0 && memcmp(&f2, fo, sizeof f2) == 0;
     unlink(tmp_oracle2);
     free(r2);
     return same;
