@@ -27,6 +27,7 @@
 #include "main/groups.h"
 #include "main/pixelformat.h"
 #include "fgl_alloc.h"
+#include "math/m_gallivm.h"
 
 void fgl_free_tex_images(struct fgl_texture_object *t)
 {
@@ -298,17 +299,6 @@ static uint8_t expand_to_8(unsigned q, unsigned bits)
    return (uint8_t)extend_to_8(q, bits);
 }
 
-/* [S: gallivm/lp_bld_conv.c:lp_build_clamped_float_to_unsigned_norm]
- * a float in [0, 1] to unorm16 as llvmpipe's render targets take it: the
- * low 16 mantissa bits of v * (65535/65536) + 2^7 */
-static unsigned float_to_unorm16(float v)
-{
-   const float m = v * (65535.0f / 65536.0f) + 128.0f;
-   uint32_t u;
-   memcpy(&u, &m, sizeof(u));
-   return u & 0xffffu;
-}
-
 /* One 8-bit channel value as a channel of `bits` bits stores it.
  * [S: format_utils.c:_mesa_format_convert] a 16-bit array format takes
  * the byte channel by _mesa_unorm_to_unorm(x, 8, 16) (x * 257); a packed
@@ -327,7 +317,7 @@ static unsigned store_from_8(uint8_t x, unsigned bits, bool via_float, unsigned 
    if (rule == COPY_RESCALE)
       return (((unsigned)x >> bits) * ((1u << bits) - 1u) + (1u << (7u - bits))) >> (8u - bits);
    if (rule == COPY_WIDE && bits > 8)
-      return float_to_unorm16((float)x * (1.0f / 255.0f)) >> (16u - bits);
+      return (unsigned)m_gallivm_float_to_unorm16((float)x * (1.0f / 255.0f)) >> (16u - bits);
    const unsigned max = (1u << bits) - 1u;
    if (via_float) {
       /* [S: u_format_pack.py: util_iround(x * max), (int)(f + 0.5f) off
@@ -689,7 +679,7 @@ static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int
          v[k] = (float)n[k][c] * scale;
       const float a = fmaf(ws, v[1] - v[0], v[0]);
       const float b = fmaf(ws, v[3] - v[2], v[2]);
-      q[c] = (uint16_t)(float_to_unorm16(fmaf(wt, b - a, a)) >> (16u - bits));
+      q[c] = (uint16_t)(m_gallivm_float_to_unorm16(fmaf(wt, b - a, a)) >> (16u - bits));
    }
 }
 

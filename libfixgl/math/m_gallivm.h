@@ -29,6 +29,16 @@ static inline uint32_t m_gallivm_float_to_bits(float f)
    return u;
 }
 
+/* lp_build_clamped_float_to_unsigned_norm to 16 bits: v in [0, 1] (the
+ * caller clamps) to unorm16 as the low 16 mantissa bits of
+ * v * (65535/65536) + 2^7 (ORACLE-NOTES.md "OSMesa contexts and buffers":
+ * 16-bit render targets; "Copies into textures and generated mipmaps":
+ * the float path of wide formats) */
+static inline uint16_t m_gallivm_float_to_unorm16(float v)
+{
+   return (uint16_t)(m_gallivm_float_to_bits(v * (65535.0f / 65536.0f) + 128.0f) & 0xffffu);
+}
+
 /* (The coefficient tables are written as double constants converted to
  * float, as gallivm converts its double tables.) */
 

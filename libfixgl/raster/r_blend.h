@@ -103,28 +103,35 @@ static inline uint8_t blend_channel(const struct r_state *rs, int c,
 }
 
 /* [S: gallivm/lp_bld_logicop.c:lp_build_logicop], indexed by the GL op
- * minus GL_CLEAR. */
-static inline uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
+ * minus GL_CLEAR, on whole words: a channel of n bits is the low n bits
+ * of the result (logic_op for 8-bit channels, the wide targets' 16-bit
+ * ones in r_frag.c). */
+static inline unsigned r_logic_op_bits(unsigned mode, unsigned s, unsigned d)
 {
    switch (mode) {
-   case 0x0: return 0;                        /* CLEAR */
-   case 0x1: return s & d;                    /* AND */
-   case 0x2: return s & (uint8_t)~d;          /* AND_REVERSE */
-   case 0x3: return s;                        /* COPY */
-   case 0x4: return (uint8_t)~s & d;          /* AND_INVERTED */
-   case 0x5: return d;                        /* NOOP */
-   case 0x6: return s ^ d;                    /* XOR */
-   case 0x7: return s | d;                    /* OR */
-   case 0x8: return (uint8_t)~(s | d);        /* NOR */
-   case 0x9: return (uint8_t)~(s ^ d);        /* EQUIV */
-   case 0xa: return (uint8_t)~d;              /* INVERT */
-   case 0xb: return s | (uint8_t)~d;          /* OR_REVERSE */
-   case 0xc: return (uint8_t)~s;              /* COPY_INVERTED */
-   case 0xd: return (uint8_t)~s | d;          /* OR_INVERTED */
-   case 0xe: return (uint8_t)~(s & d);        /* NAND */
+   case 0x0: return 0;          /* CLEAR */
+   case 0x1: return s & d;      /* AND */
+   case 0x2: return s & ~d;     /* AND_REVERSE */
+   case 0x3: return s;          /* COPY */
+   case 0x4: return ~s & d;     /* AND_INVERTED */
+   case 0x5: return d;          /* NOOP */
+   case 0x6: return s ^ d;      /* XOR */
+   case 0x7: return s | d;      /* OR */
+   case 0x8: return ~(s | d);   /* NOR */
+   case 0x9: return ~(s ^ d);   /* EQUIV */
+   case 0xa: return ~d;         /* INVERT */
+   case 0xb: return s | ~d;     /* OR_REVERSE */
+   case 0xc: return ~s;         /* COPY_INVERTED */
+   case 0xd: return ~s | d;     /* OR_INVERTED */
+   case 0xe: return ~(s & d);   /* NAND */
    case 0xf:
-   default:  return 0xff;                     /* SET */
+   default:  return ~0u;        /* SET */
    }
+}
+
+static inline uint8_t logic_op(unsigned mode, uint8_t s, uint8_t d)
+{
+   return (uint8_t)r_logic_op_bits(mode, s, d);
 }
 
 /* [S: llvmpipe/lp_bld_depth.c:lp_build_stencil_op_single] INCR/DECR

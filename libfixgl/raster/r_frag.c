@@ -718,58 +718,36 @@ static bool stencil_depth_test(const struct r_state *rs, size_t idx, float z)
  * saturating add and subtract); into R32G32B32A32_FLOAT: unclamped (no
  * fragment colour clamp for a float buffer), blended on floats
  * (s * sf + d * df, unfused).  Measured: probe p_osmesa_wide. */
-static uint16_t float_to_unorm16(float c)
-{
-   const float x = r_clamp01(c) * (65535.0f / 65536.0f) + 128.0f;
-   uint32_t u;
-   memcpy(&u, &x, sizeof(u));
-   return (uint16_t)(u & 0xffffu);
-}
-
-/* logic_op on 16-bit channels */
-static unsigned logic_op16(unsigned mode, unsigned s, unsigned d)
-{
-   unsigned r;
-   switch (mode) {
-   case 0x0: r = 0; break;
-   case 0x1: r = s & d; break;
-   case 0x2: r = s & ~d; break;
-   case 0x3: r = s; break;
-   case 0x4: r = ~s & d; break;
-   case 0x5: r = d; break;
-   case 0x6: r = s ^ d; break;
-   case 0x7: r = s | d; break;
-   case 0x8: r = ~(s | d); break;
-   case 0x9: r = ~(s ^ d); break;
-   case 0xa: r = ~d; break;
-   case 0xb: r = s | ~d; break;
-   case 0xc: r = ~s; break;
-   case 0xd: r = ~s | d; break;
-   case 0xe: r = ~(s & d); break;
-   default:  r = ~0u; break;
-   }
-   return r & 0xffffu;
-}
-
 static inline unsigned mul_u16(unsigned a, unsigned b)
 {
    const uint32_t t = a * b;
    return (t + (t >> 16) + 0x8000u) >> 16;
 }
 
-/* blend_factor on unorm16 (one = 65535) or floats (one = 1) */
-#define WIDE_FACTOR(T, ONE, CONST)                                               switch (f) {                                                                  case R_BF_ZERO:            return 0;                                          case R_BF_ONE:             return ONE;                                        case R_BF_SRC_COLOR:       return src[c];                                     case R_BF_INV_SRC_COLOR:   return ONE - src[c];                               case R_BF_SRC_ALPHA:       return src[3];                                     case R_BF_INV_SRC_ALPHA:   return ONE - src[3];                               case R_BF_DST_COLOR:       return dst[c];                                     case R_BF_INV_DST_COLOR:   return ONE - dst[c];                               case R_BF_DST_ALPHA:       return dst[3];                                     case R_BF_INV_DST_ALPHA:   return ONE - dst[3];                               case R_BF_SRC_ALPHA_SATURATE: {                                                  if (c == 3)                                                                      return ONE;                                                                const T inv_da = ONE - dst[3];                                                return src[3] < inv_da ? src[3] : inv_da;                                  }                                                                             case R_BF_CONST_COLOR:     return CONST[c];                                   case R_BF_INV_CONST_COLOR: return ONE - CONST[c];                             case R_BF_CONST_ALPHA:     return CONST[3];                                   case R_BF_INV_CONST_ALPHA: return ONE - CONST[3];                             default:                   return 0;                                          }
-
-static unsigned factor_u16(enum r_blend_factor f, int c, const unsigned src[4],
-                           const unsigned dst[4], const unsigned k[4])
+/* blend_factor of a wide target on floats, `one` its 1 (65535 for
+ * unorm16: the channels are whole numbers up to 65535 there, exact in a
+ * float, and so are one - x and the minimum) */
+static float wide_factor(enum r_blend_factor f, int c, const float src[4], const float dst[4],
+                         const float k[4], float one)
 {
-   WIDE_FACTOR(unsigned, 65535u, k)
-}
-
-static float factor_f(enum r_blend_factor f, int c, const float src[4], const float dst[4],
-                      const float k[4])
-{
-   WIDE_FACTOR(float, 1.0f, k)
+   switch (f) {
+   case R_BF_ZERO:               return 0;
+   case R_BF_ONE:                return one;
+   case R_BF_SRC_COLOR:          return src[c];
+   case R_BF_INV_SRC_COLOR:      return one - src[c];
+   case R_BF_SRC_ALPHA:          return src[3];
+   case R_BF_INV_SRC_ALPHA:      return one - src[3];
+   case R_BF_DST_COLOR:          return dst[c];
+   case R_BF_INV_DST_COLOR:      return one - dst[c];
+   case R_BF_DST_ALPHA:          return dst[3];
+   case R_BF_INV_DST_ALPHA:      return one - dst[3];
+   case R_BF_SRC_ALPHA_SATURATE: return c == 3 ? one : src[3] < one - dst[3] ? src[3] : one - dst[3];
+   case R_BF_CONST_COLOR:        return k[c];
+   case R_BF_INV_CONST_COLOR:    return one - k[c];
+   case R_BF_CONST_ALPHA:        return k[3];
+   case R_BF_INV_CONST_ALPHA:    return one - k[3];
+   default:                      return 0;
+   }
 }
 
 static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
@@ -777,17 +755,22 @@ static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
    const struct r_blend_state *b = rs->blend;
    if (rs->fb->wide_format == R_WIDE_UNORM16) {
       uint16_t *dst = (uint16_t *)rs->fb->wide + 4 * idx;
-      unsigned s[4], d[4], k[4], out[4];
+      unsigned s[4], d[4], out[4];
+      float sf[4], df[4], kf[4];   /* the same values for wide_factor */
       for (int c = 0; c < 4; c++) {
-         s[c] = float_to_unorm16(color[c]);
+         s[c] = m_gallivm_float_to_unorm16(r_clamp01(color[c]));
          d[c] = dst[c];
-         k[c] = float_to_unorm16(b->blend_color_f[c]);
+         kf[c] = (float)m_gallivm_float_to_unorm16(r_clamp01(b->blend_color_f[c]));
       }
       if (b->dst_alpha_one)
          d[3] = 65535u;
       for (int c = 0; c < 4; c++) {
+         sf[c] = (float)s[c];
+         df[c] = (float)d[c];
+      }
+      for (int c = 0; c < 4; c++) {
          if (b->logic_op) {
-            out[c] = logic_op16(b->logic_op_mode, s[c], d[c]);
+            out[c] = r_logic_op_bits(b->logic_op_mode, s[c], d[c]) & 0xffffu;
             continue;
          }
          if (!b->enable) {
@@ -795,10 +778,10 @@ static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
             continue;
          }
          const bool a = c == 3 && b->separate_alpha;
-         const unsigned ts = mul_u16(s[c], factor_u16(a ? b->blend_src_a : b->blend_src, c,
-                                                      s, d, k));
-         const unsigned td = mul_u16(d[c], factor_u16(a ? b->blend_dst_a : b->blend_dst, c,
-                                                      s, d, k));
+         const unsigned ts = mul_u16(s[c], (unsigned)wide_factor(a ? b->blend_src_a : b->blend_src,
+                                                                 c, sf, df, kf, 65535.0f));
+         const unsigned td = mul_u16(d[c], (unsigned)wide_factor(a ? b->blend_dst_a : b->blend_dst,
+                                                                 c, sf, df, kf, 65535.0f));
          switch (a ? b->blend_eq_a : b->blend_eq) {
          case R_BLEND_SUBTRACT:         out[c] = ts > td ? ts - td : 0; break;
          case R_BLEND_REVERSE_SUBTRACT: out[c] = td > ts ? td - ts : 0; break;
@@ -821,10 +804,10 @@ static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
          continue;
       }
       const bool a = c == 3 && b->separate_alpha;
-      const float ts = color[c] * factor_f(a ? b->blend_src_a : b->blend_src, c, color, d,
-                                           b->blend_color_f);
-      const float td = d[c] * factor_f(a ? b->blend_dst_a : b->blend_dst, c, color, d,
-                                       b->blend_color_f);
+      const float ts = color[c] * wide_factor(a ? b->blend_src_a : b->blend_src, c, color, d,
+                                              b->blend_color_f, 1.0f);
+      const float td = d[c] * wide_factor(a ? b->blend_dst_a : b->blend_dst, c, color, d,
+                                          b->blend_color_f, 1.0f);
       switch (a ? b->blend_eq_a : b->blend_eq) {
       case R_BLEND_SUBTRACT:         out[c] = ts - td; break;
       case R_BLEND_REVERSE_SUBTRACT: out[c] = td - ts; break;
