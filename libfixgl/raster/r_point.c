@@ -54,6 +54,37 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
    fn(rs, v);
 }
 
+/* setup_point_coefficients for both points: depth and 1/w constant, every
+ * input the vertex's (constant, or premultiplied by the vertex 1/w and
+ * divided by it again: point_persp_coeff), a flat input of the kernels;
+ * a sprite then replaces the planes of its replaced coordinates. */
+static void point_setup(const struct r_state *rs, const struct r_vertex *v,
+                        struct r_tri_setup *ts)
+{
+   const float w = v->pos[3];
+   ts->z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
+   ts->w = (struct r_attr_plane){ w, 0.0f, 0.0f };
+   ts->zoffset = 0.0f;
+   ts->need_w = false;
+   ts->inputs = rs->fs->fs_inputs;
+   ts->quad_x = ts->quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read here) */
+   /* GL_PHONG_WIN: a point is front facing, unless it is a vertex of an
+    * unfilled back face, whose face the vertex carries (draw's
+    * inject_front_face_info [S: draw_pipe_unfilled.c], read by
+    * lp_setup_point.c) */
+   ts->phong_back = rs->fs->phong && rs->shade_env->two_side &&
+                    v->attr[R_ATTR_NORMAL][3] == 0.0f;
+   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
+      if (!(ts->inputs & (1u << a)))
+         continue;
+      const int slot = r_fs_slot(a, false);
+      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
+      ts->flat_attr[a] = true;
+      for (int c = 0; c < 4; c++)
+         ts->flat[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
+   }
+}
+
 /* [S: lp_setup_point.c:texcoord_coef] the planes (a0, dadx, dady) of a
  * replaced texture coordinate, channel c, for the sprite of sub-pixel
  * width fw centred at the window position (x, y), premultiplied by the
@@ -115,37 +146,20 @@ static void sprite(const struct r_state *rs, const struct r_vertex *v)
    if (bx0 > bx1 || by0 > by1)
       return;
 
-   /* setup_point_coefficients: depth and 1/w constant, the replaced
-    * coordinates planes, every other input the vertex's (constant, or
-    * premultiplied by 1/w and divided by it again: point_persp_coeff) */
-   const float w = v->pos[3];
+   /* setup_point_coefficients, with the planes of the replaced
+    * coordinates (a constant-interpolated input never takes them) */
    struct r_tri_setup ts;
-   ts.z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
-   ts.w = (struct r_attr_plane){ w, 0.0f, 0.0f };
-   ts.zoffset = 0.0f;
-   ts.need_w = false;
-   ts.inputs = rs->fs->fs_inputs;
-   ts.quad_x = ts.quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read here) */
-   ts.phong_back = rs->fs->phong && rs->shade_env->two_side &&
-                   v->attr[R_ATTR_NORMAL][3] == 0.0f;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(ts.inputs & (1u << a)))
+   point_setup(rs, v, &ts);
+   for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+      const int a = R_FS_TEX0 + u;
+      if (!(ts.inputs & (1u << a)) || !((rs->rast->sprite_coord_enable >> u) & 1u) ||
+          (rs->flat_mask & (1u << r_fs_slot(a, false))))
          continue;
-      const int slot = r_fs_slot(a, false);
-      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
-      /* a constant-interpolated input never takes the sprite planes */
-      const bool replaced = a >= R_FS_TEX0 && a < R_FS_TEX0 + R_MAX_TEX_UNITS && !flat &&
-                            ((rs->rast->sprite_coord_enable >> (a - R_FS_TEX0)) & 1u);
-      ts.flat_attr[a] = !replaced;
-      if (replaced) {
-         ts.need_w = true;
-         for (int c = 0; c < 4; c++)
-            ts.ap[a][c] = sprite_plane(c, v->pos[0], v->pos[1], w, fw,
-                                       rs->rast->sprite_lower_left);
-      } else {
-         for (int c = 0; c < 4; c++)
-            ts.flat[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
-      }
+      ts.flat_attr[a] = false;
+      ts.need_w = true;
+      for (int c = 0; c < 4; c++)
+         ts.ap[a][c] = sprite_plane(c, v->pos[0], v->pos[1], v->pos[3], fw,
+                                    rs->rast->sprite_lower_left);
    }
 
    /* the square is the box: the block kernel of the state (a flat colour,
@@ -203,22 +217,12 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
       return;
 
    /* the inputs, and so the shaded colour, are the same at every pixel */
-   float in[R_FS_NUM_INPUTS][4];
-   const float w = v->pos[3];
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs->fs_inputs & (1u << a)))
-         continue;
-      const int slot = r_fs_slot(a, false);
-      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
-      for (int c = 0; c < 4; c++)
-         in[a][c] = flat ? v->attr[slot][c] : (v->attr[slot][c] * w) * (1.0f / w);
-   }
-   const bool phong_back = rs->fs->phong && rs->shade_env->two_side &&
-                           v->attr[R_ATTR_NORMAL][3] == 0.0f;
+   struct r_tri_setup ts;
+   point_setup(rs, v, &ts);
 
    /* A point of three pixels or more goes to the block kernel of the state
     * (unless the pstipple shader is bound: it kills per pixel) as a
-    * triangle whose inputs are all flat, each the value `in` holds, and
+    * triangle whose inputs are all flat, each the value ts.flat holds, and
     * whose coverage is its box (r_cover_box): the kernel shades every
     * pixel of the square with the same inputs, so with the same colour
     * (texture coordinates equal at every pixel of a quad give zero
@@ -231,33 +235,17 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
                                   ? NULL
                                   : rs->line_kernel[(rs->fs->fs_inputs >> R_FS_COLOR0) & 1u];
    if (kernel) {
-      struct r_tri_setup ts;
-      ts.z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
-      ts.w = (struct r_attr_plane){ w, 0.0f, 0.0f };
-      ts.zoffset = 0.0f;
-      ts.need_w = false;
-      ts.inputs = rs->fs->fs_inputs;
-      ts.quad_x = ts.quad_y = INT_MIN;
-      ts.phong_back = phong_back;
-      for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-         if (!(ts.inputs & (1u << a)))
-            continue;
-         ts.flat_attr[a] = true;
-         for (int c = 0; c < 4; c++)
-            ts.flat[a][c] = in[a][c];
-      }
       struct r_tri_cover cv;
       r_cover_box(bx0, by0, bx1, by1, &cv);
       kernel(rs, &ts, &cv);
       return;
    }
 
-   /* GL_PHONG_WIN: lit once, as every pixel's inputs are the vertex's; a
-    * point is front facing, unless it is a vertex of an unfilled back
-    * face, whose face the vertex carries (draw's inject_front_face_info
-    * [S: draw_pipe_unfilled.c], read by lp_setup_point.c) */
+   /* GL_PHONG_WIN: lit once, as every pixel's inputs are the vertex's
+    * (point_setup: the face) */
+   float (*const in)[4] = ts.flat;
    if (rs->fs->phong)
-      r_fragment_phong(rs, in, phong_back);
+      r_fragment_phong(rs, in, ts.phong_back);
    /* the quad's texture coordinates are the vertex's too: zero
     * derivatives, so the texture is magnified */
    struct r_fs_quad quad;
