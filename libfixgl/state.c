@@ -11,6 +11,7 @@
 
 #include <fixgl/fixgl.h>
 
+#include "math/m_gallivm.h"
 #include "context.h"
 #include "main/groups.h"
 
@@ -526,8 +527,11 @@ static void build_blend(const struct fgl_context *ctx, struct r_blend_state *o)
    }
    for (int i = 0; i < 4; i++)
       o->blend_color[i] = r_float_to_unorm8(c->BlendColor[i]);
-   if (fb && fb->Wide)
+   if (fb && fb->Wide) {
       memcpy(o->blend_color_f, c->BlendColor, sizeof(o->blend_color_f));
+      for (int i = 0; i < 4; i++)
+         o->blend_color_u16[i] = (float)m_gallivm_float_to_unorm16(r_clamp01(c->BlendColor[i]));
+   }
    o->dst_alpha_one = fb && fb->AlphaBits == 0;
 }
 

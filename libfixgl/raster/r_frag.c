@@ -756,11 +756,10 @@ static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
    if (rs->fb->wide_format == R_WIDE_UNORM16) {
       uint16_t *dst = (uint16_t *)rs->fb->wide + 4 * idx;
       unsigned s[4], d[4], out[4];
-      float sf[4], df[4], kf[4];   /* the same values for wide_factor */
+      float sf[4], df[4];   /* the same values for wide_factor */
       for (int c = 0; c < 4; c++) {
          s[c] = m_gallivm_float_to_unorm16(r_clamp01(color[c]));
          d[c] = dst[c];
-         kf[c] = (float)m_gallivm_float_to_unorm16(r_clamp01(b->blend_color_f[c]));
       }
       if (b->dst_alpha_one)
          d[3] = 65535u;
@@ -778,10 +777,11 @@ static void wide_ops(const struct r_state *rs, size_t idx, const float color[4])
             continue;
          }
          const bool a = c == 3 && b->separate_alpha;
-         const unsigned ts = mul_u16(s[c], (unsigned)wide_factor(a ? b->blend_src_a : b->blend_src,
-                                                                 c, sf, df, kf, 65535.0f));
-         const unsigned td = mul_u16(d[c], (unsigned)wide_factor(a ? b->blend_dst_a : b->blend_dst,
-                                                                 c, sf, df, kf, 65535.0f));
+         const float *k = b->blend_color_u16;
+         const enum r_blend_factor fs = a ? b->blend_src_a : b->blend_src;
+         const enum r_blend_factor fd = a ? b->blend_dst_a : b->blend_dst;
+         const unsigned ts = mul_u16(s[c], (unsigned)wide_factor(fs, c, sf, df, k, 65535.0f));
+         const unsigned td = mul_u16(d[c], (unsigned)wide_factor(fd, c, sf, df, k, 65535.0f));
          switch (a ? b->blend_eq_a : b->blend_eq) {
          case R_BLEND_SUBTRACT:         out[c] = ts > td ? ts - td : 0; break;
          case R_BLEND_REVERSE_SUBTRACT: out[c] = td > ts ? td - ts : 0; break;

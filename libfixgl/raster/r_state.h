@@ -485,6 +485,8 @@ struct r_blend_state {
    unsigned color_mask;         /* bit 0 red .. bit 3 alpha */
    bool dst_alpha_one;          /* colour buffer without alpha bits */
    float blend_color_f[4];      /* the blend colour as floats (wide targets) */
+   float blend_color_u16[4];    /* ... as unorm16 (R_WIDE_UNORM16 targets), whole
+                                 * numbers kept as floats for wide_factor */
 };
 
 /* The fragment program: the varyings it reads, colour sum, fog, the
