@@ -111,7 +111,7 @@ static void init_other_state(struct fgl_context *ctx)
    ctx->Color.DrawBuffer = GL_FRONT;
 }
 
-struct fgl_context *fgl_context_create(void)
+struct fgl_context *fgl_context_create(struct fgl_context *share)
 {
    struct fgl_context *ctx = fgl_calloc(1, sizeof(*ctx));
    if (!ctx)
@@ -160,6 +160,11 @@ struct fgl_context *fgl_context_create(void)
    }
    ctx->ErrorValue = GL_NO_ERROR;
    ctx->NewState = FGL_NEW_ALL;
+   if (share) {
+      fgl_share_dlists(ctx, share);
+      fgl_share_texobjs(ctx, share);
+      fgl_share_bufobjs(ctx, share);
+   }
    return ctx;
 }
 

@@ -1035,7 +1035,9 @@ struct fgl_context {
 struct fgl_context *fgl_get_current(void);
 void fgl_set_current(struct fgl_context *ctx);
 
-struct fgl_context *fgl_context_create(void);
+/* A new context; with share, its display lists, texture objects and
+ * buffer objects are share's (OSMesa's sharelist, GLX's shareList). */
+struct fgl_context *fgl_context_create(struct fgl_context *share);
 void fgl_context_destroy(struct fgl_context *ctx);
 void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb);
 

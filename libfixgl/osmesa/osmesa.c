@@ -35,7 +35,6 @@
 #include <wchar.h>
 
 #include "context.h"
-#include "main/dlist.h"
 #include "main/groups.h"
 #include "fgl_alloc.h"
 
@@ -368,17 +367,12 @@ OSMesaCreateContextAttribs(const int *attribList, OSMesaContext sharelist)
    struct osmesa_context *c = fgl_calloc(1, sizeof(*c));
    if (!c)
       return NULL;
-   c->gl = fgl_context_create();
+   /* display lists, texture and buffer objects are shared with
+    * sharelist's context */
+   c->gl = fgl_context_create(sharelist ? sharelist->gl : NULL);
    if (!c->gl) {
       fgl_free(c);
       return NULL;
-   }
-   /* display lists and texture objects are shared with sharelist's
-    * context */
-   if (sharelist) {
-      fgl_share_dlists(c->gl, sharelist->gl);
-      fgl_share_texobjs(c->gl, sharelist->gl);
-      fgl_share_bufobjs(c->gl, sharelist->gl);
    }
    c->format = format;
    c->y_up = GL_TRUE;

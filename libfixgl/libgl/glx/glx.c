@@ -53,7 +53,6 @@
 #include <string.h>
 
 #include "context.h"
-#include "main/dlist.h"
 #include "main/groups.h"
 #include "fgl_alloc.h"
 
@@ -984,16 +983,11 @@ static GLXContext create_context(struct glx_display *gd, const struct __GLXFBCon
    GLXContext c = fgl_calloc(1, sizeof(*c));
    if (!c)
       return NULL;
-   c->gl = fgl_context_create();
+   /* display lists, textures and buffers are shared with share's */
+   c->gl = fgl_context_create(share ? share->gl : NULL);
    if (!c->gl) {
       fgl_free(c);
       return NULL;
-   }
-   /* display lists, textures and buffers are shared with share's */
-   if (share) {
-      fgl_share_dlists(c->gl, share->gl);
-      fgl_share_texobjs(c->gl, share->gl);
-      fgl_share_bufobjs(c->gl, share->gl);
    }
    if (cfg->db)
       fgl_init_double_buffered(c->gl);
