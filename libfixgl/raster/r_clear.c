@@ -67,7 +67,8 @@ void r_clear_wide_rect(const struct r_fb_state *fb, int x0, int y0, int x1, int 
                for (size_t i = 0; i < n; i++) memcpy(c + 4 * (first + i), rgba, 16));
       return;
    }
-   /* util_pack_color: util_iround(clamped * 65535), (int)(f + 0.5f) */
+   /* util_pack_color: util_iround(clamped * 65535), (int)(f + 0.5f)
+    * (ORACLE-NOTES.md "OSMesa contexts and buffers") */
    uint16_t v[4];
    for (int k = 0; k < 4; k++)
       v[k] = (uint16_t)(int)(r_clamp01(rgba[k]) * 65535.0f + 0.5f);

@@ -717,7 +717,8 @@ static bool stencil_depth_test(const struct r_state *rs, size_t idx, float z)
  * lanes (lp_build_mul_norm: t = a*b, (t + (t >> 16) + 0x8000) >> 16;
  * saturating add and subtract); into R32G32B32A32_FLOAT: unclamped (no
  * fragment colour clamp for a float buffer), blended on floats
- * (s * sf + d * df, unfused).  Measured: probe p_osmesa_wide. */
+ * (s * sf + d * df, unfused).  ORACLE-NOTES.md "OSMesa contexts and
+ * buffers" (probe p_osmesa_wide). */
 static inline unsigned mul_u16(unsigned a, unsigned b)
 {
    const uint32_t t = a * b;
