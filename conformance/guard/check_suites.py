@@ -34,12 +34,14 @@ REQUIRED = {
            "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws"}},
     "conformance": {
         "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle",
-                   "fuzz"},
+                   "fuzz", "glu"},
         "tests": {"conformance-core", "conformance-random", "conformance-random-lit",
                   "conformance-random-raster", "conformance-random-tex",
                   "conformance-random-shading", "conform-harness-selftest",
                   "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
-                  "fuzz-differential-short"},
+                  "fuzz-differential-short", "glu-quadric-textured", "glu-mipmap2d-rgb",
+                  "glu-scale-image", "glu-tess-winding", "glu-nurbs-trim", "glu-gl-errors",
+                  "glu-scene-list"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},
