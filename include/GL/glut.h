@@ -7,8 +7,9 @@
  *
  * Limits: one window (glutCreateWindow succeeds once; sub-windows, overlays,
  * colour-index mode, game mode, joysticks and spaceballs are not provided);
- * glutFullScreen, glutSetCursor, glutPositionWindow in the headless mode
- * and glutIconifyWindow are accepted and do nothing.
+ * glutSetCursor, glutPositionWindow and glutFullScreen in the headless mode
+ * and glutIconifyWindow are accepted and do nothing.  freeglut's
+ * extensions that libfixglut has: <GL/freeglut.h>.
  *
  * Headless mode and scripted runs (environment variables):
  *   FIXGLUT_HEADLESS=1     no window: frames are rendered off screen only
@@ -240,7 +241,8 @@ void glutStrokeString(void *font, const unsigned char *string);
 GLfloat glutStrokeHeight(void *font);
 
 /* GLU's matrix helpers, provided by libfixglut (classic <GL/glut.h>
- * includes <GL/glu.h>; libGLU itself needs the system libGL). */
+ * includes <GL/glu.h>); for the rest of GLU link the system libGLU after
+ * -lfixgl (viewer/glut/README.md "GLU"): its three are the same. */
 void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
 void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
 void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ,

@@ -1,14 +1,11 @@
 /* The window's pixels from the X server (fv_grab.h). */
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <stdio.h>
 
-/* GLFW's native X11 access, declared here: <GLFW/glfw3native.h> would
- * need the XRandR headers for nothing else. */
-Display *glfwGetX11Display(void);
-Window glfwGetX11Window(GLFWwindow *window);
+/* GLFW, and its native X11 access (declared there: <GLFW/glfw3native.h>
+ * would need the XRandR headers for nothing else) */
+#include "fv_glfw.h"
 
 #include "fv_grab.h"
 

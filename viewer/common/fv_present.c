@@ -2,8 +2,7 @@
  * Presentation through the system GL reached by glfwGetProcAddress only
  * (fv_present.h).
  */
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include "fv_glfw.h"
 #include <GL/gl.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,9 +1,10 @@
 /*
  * The three GLU matrix helpers legacy GLUT demos use most (classic
  * <GL/glut.h> includes <GL/glu.h>, so they call them without including
- * it): gluPerspective, gluLookAt, gluOrtho2D.  libGLU itself cannot be
- * used: it is linked with the system libGL.  Same arithmetic as SGI's
- * libGLU (libutil/project.c), expressed through glMultMatrix as there.
+ * it): gluPerspective, gluLookAt, gluOrtho2D.  Same arithmetic as SGI's
+ * libGLU (libutil/project.c), expressed through glMultMatrix as there, so
+ * that a program linking the system libGLU as well gets the same matrices
+ * from either (test glut-glu).
  */
 #include <math.h>
 #include <string.h>

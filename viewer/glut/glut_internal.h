@@ -71,4 +71,9 @@ void glut_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void glut_represent(void);     /* presents the last frame again (menu changes) */
 void glut_menu_status(int status, int x, int y);
 
+/* PNG frames (glut_png.c): libpng is loaded at the first call.  Writes
+ * w x h RGBA8 pixels, bottom_up: the buffer's first row is the image's
+ * bottom (GL order).  Returns 0, or -1 after a warning. */
+int glut_png_write(const char *path, int w, int h, const unsigned char *rgba, bool bottom_up);
+
 #endif

@@ -11,6 +11,7 @@
  */
 #include <ctype.h>
 #include <errno.h>
+#include <GL/freeglut_ext.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,11 +20,11 @@
 #include <time.h>
 
 #include "glut_internal.h"
-#include "fv_png.h"
 
 #ifndef FIXGLUT_ORACLE
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+/* GLFW and Xlib through fv_glfw.h's table (FV_GLFW_DLOPEN): loaded by
+ * the first window, never by a headless run */
+#include "fv_glfw.h"
 #include "fv_grab.h"
 #include "fv_present.h"
 #endif
@@ -90,39 +91,98 @@ static struct {
    int num_events;
    double t0;             /* real clock origin, seconds */
 
+   bool wm_close;         /* the user closed the window (or the "close" event) */
    int modifiers;
    int mouse_x, mouse_y;
    unsigned buttons;      /* held buttons (bit per button) */
    unsigned char key_char[512]; /* GLFW key -> char delivered at press */
 
+   /* freeglut's session and options (glutSetOption, glutMainLoopEvent,
+    * glutLeaveMainLoop; README.md "freeglut extensions") */
+   char *program;         /* argv[0], named in freeglut's error messages */
+   bool started;          /* the window's first step (initial reshape) done */
+   bool running;          /* inside glutMainLoop, not left */
+   bool destroy_pending;  /* glutDestroyWindow: closed at the end of the step */
+   bool fullscreen;
+   int action_on_close;   /* GLUT_ACTION_EXIT (default), _GLUTMAINLOOP_RETURNS, _CONTINUE_EXECUTION */
+   bool use_current_context;
+   int direct_rendering, aux, samples;
+   bool skip_stale_motion, visualize_normals, join_dots, allow_negative_position;
+   int ctx_major, ctx_minor, ctx_flags, ctx_profile;
+   void (*close)(void);
+   void (*error_func)(const char *fmt, va_list ap);
+   void (*warning_func)(const char *fmt, va_list ap);
+   void *window_data;
+
 #ifndef FIXGLUT_ORACLE
    GLFWwindow *win;
    struct fv_present *present;
+   int windowed_x, windowed_y, windowed_w, windowed_h;   /* before glutFullScreen */
 #endif
 } G = {
    .init_x = -1, .init_y = -1, .init_w = 300, .init_h = 300,
    .frames = -1, .frame_ms = 16.0,
+   .action_on_close = GLUT_ACTION_EXIT, .direct_rendering = GLUT_TRY_DIRECT_CONTEXT,
+   .ctx_major = 1, .ctx_minor = 0,
 };
 
+/* Errors and warnings go to the program's glutInitErrorFunc /
+ * glutInitWarningFunc when it set them (freeglut's fgError/fgWarning);
+ * after an error the program ends (exit 1) even if its function returns. */
 void glut_fatal(const char *fmt, ...)
 {
    va_list ap;
-   fputs("fixglut: ", stderr);
    va_start(ap, fmt);
-   vfprintf(stderr, fmt, ap);
+   if (G.error_func) {
+      G.error_func(fmt, ap);
+   } else {
+      fputs("fixglut: ", stderr);
+      vfprintf(stderr, fmt, ap);
+      fputc('\n', stderr);
+   }
    va_end(ap);
-   fputc('\n', stderr);
    exit(1);
 }
 
 void glut_warn(const char *fmt, ...)
 {
    va_list ap;
-   fputs("fixglut: warning: ", stderr);
    va_start(ap, fmt);
-   vfprintf(stderr, fmt, ap);
+   if (G.warning_func) {
+      G.warning_func(fmt, ap);
+   } else {
+      fputs("fixglut: warning: ", stderr);
+      vfprintf(stderr, fmt, ap);
+      fputc('\n', stderr);
+   }
    va_end(ap);
+}
+
+/* freeglut's fgError where the program goes on when its error function
+ * returns: the message in freeglut's words, "freeglut (PROGRAM): ...",
+ * then exit(1) without an error function. */
+static void freeglut_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static void freeglut_error(const char *fmt, ...)
+{
+   va_list ap;
+   va_start(ap, fmt);
+   if (G.error_func) {
+      G.error_func(fmt, ap);
+      va_end(ap);
+      return;
+   }
+   fprintf(stderr, "freeglut (%s): ", G.program ? G.program : "");
+   vfprintf(stderr, fmt, ap);
    fputc('\n', stderr);
+   va_end(ap);
+   exit(1);
+}
+
+/* freeglut's FREEGLUT_EXIT_IF_NOT_INITIALISED */
+static void require_init(const char *function)
+{
+   if (!G.inited)
+      freeglut_error("ERROR:  Function <%s> called without first calling 'glutInit'.", function);
 }
 
 static double real_seconds(void)
@@ -191,6 +251,8 @@ GLUT_EXPORT void glutInit(int *argcp, char **argv)
       return;
    G.inited = true;
    G.t0 = real_seconds();
+   free(G.program);
+   G.program = xstrdup(argcp && argv && *argcp > 0 && argv[0] ? argv[0] : "");
 
    /* X11 GLUT options: -geometry is honoured, the others are accepted and
     * removed from argv. */
@@ -246,6 +308,8 @@ GLUT_EXPORT void glutInit(int *argcp, char **argv)
 
 #ifndef FIXGLUT_ORACLE
    if (!G.headless) {
+      if (fv_glfw_load() != 0)
+         glut_fatal("cannot load GLFW for a window (set FIXGLUT_HEADLESS=1 to run without one)");
       if (!glfwInit())
          glut_fatal("cannot initialise GLFW (no display? set FIXGLUT_HEADLESS=1)");
    }
@@ -582,7 +646,20 @@ GLUT_EXPORT int glutCreateWindow(const char *title)
       glut_fatal("only one window is supported (glutCreateWindow called twice)");
    if (G.mode & GLUT_INDEX)
       glut_fatal("colour-index mode is not supported");
+   /* glutInitContextVersion/Profile: fixgl is OpenGL 1.5 with the
+    * compatibility profile; anything else is refused as freeglut refuses a
+    * context the driver cannot create */
+   if (G.ctx_major > 1 || (G.ctx_major == 1 && G.ctx_minor > 5) ||
+       G.ctx_profile == GLUT_CORE_PROFILE) {
+      freeglut_error("Unable to create OpenGL %d.%d context (flags %x, profile %x)",
+                     G.ctx_major, G.ctx_minor, G.ctx_flags, G.ctx_profile);
+      return 0;
+   }
    G.created = true;
+   G.started = false;
+   G.destroy_pending = false;
+   G.fullscreen = false;
+   G.frame = 0;
    G.title = xstrdup(title);
 
    /* GLUT_DEPTH, GLUT_STENCIL and GLUT_ACCUM select the context's ancillary
@@ -639,11 +716,90 @@ GLUT_EXPORT int glutCreateWindow(const char *title)
    return 1;
 }
 
-/* The one window gone, the program ends (documented in README.md). */
+/* The window and its context go, after the close callback (freeglut's
+ * fgDestroyWindow); its other callbacks are forgotten. */
+static void destroy_window(void)
+{
+   if (!G.created)
+      return;
+   void (*close)(void) = G.close;
+   G.close = NULL;
+   if (close)
+      close();
+   glFinish();
+#ifndef FIXGLUT_ORACLE
+   if (G.win) {
+      fv_present_destroy(G.present);
+      G.present = NULL;
+      glfwDestroyWindow(G.win);
+      G.win = NULL;
+   }
+#endif
+   OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+   OSMesaDestroyContext(G.ctx);
+   G.ctx = NULL;
+   free(G.buf);
+   free(G.shown);
+   free(G.overlay);
+   G.buf = G.shown = G.overlay = NULL;
+   G.w = G.h = 0;
+   G.have_shown = false;
+   G.created = false;
+   G.destroy_pending = false;
+   G.redisplay = false;
+   G.display = NULL;
+   G.reshape = NULL;
+   G.keyboard = G.keyboard_up = NULL;
+   G.special = G.special_up = NULL;
+   G.mouse = NULL;
+   G.motion = G.passive = NULL;
+   G.entry = G.visibility = NULL;
+   G.window_data = NULL;
+   free(G.title);
+   G.title = NULL;
+}
+
+/* freeglut's fgDeinitialize: the window destroyed, timers and options
+ * back to their defaults; glutInit may start a new session. */
+static void deinitialize(void)
+{
+   destroy_window();
+   G.idle = NULL;
+   G.menu_status = NULL;
+   G.menu_state = NULL;
+   G.num_timers = 0;
+   for (int i = 0; i < G.num_events; i++)
+      free(G.events[i].text);
+   free(G.events);
+   G.events = NULL;
+   G.num_events = 0;
+   free(G.out);
+   free(G.screenshot);
+   free(G.screenshot_x11);
+   G.out = G.screenshot = G.screenshot_x11 = NULL;
+   G.mode = 0;
+   G.init_x = G.init_y = -1;
+   G.init_w = G.init_h = 300;
+   G.frames = -1;
+   G.frame_ms = 16.0;
+   G.fixed_clock = false;
+   G.action_on_close = GLUT_ACTION_EXIT;
+   G.use_current_context = false;
+   G.direct_rendering = GLUT_TRY_DIRECT_CONTEXT;
+   G.aux = G.samples = 0;
+   G.skip_stale_motion = G.visualize_normals = G.join_dots = G.allow_negative_position = false;
+   G.ctx_major = 1, G.ctx_minor = 0, G.ctx_flags = 0, G.ctx_profile = 0;
+   G.running = false;
+   G.inited = false;
+}
+
+/* Closed at the end of the loop's step, after the close callback; in
+ * glutMainLoop the loop then ends (no window is left). */
 GLUT_EXPORT void glutDestroyWindow(int win)
 {
-   (void)win;
-   exit(0);
+   if (win != 1 || !G.created)
+      return;
+   G.destroy_pending = true;
 }
 
 GLUT_EXPORT int glutGetWindow(void)
@@ -723,10 +879,41 @@ GLUT_EXPORT void glutHideWindow(void)
 #endif
 }
 
-/* Documented no-ops: the frame's size is the window's. */
+/* A documented no-op. */
 GLUT_EXPORT void glutIconifyWindow(void) {}
-GLUT_EXPORT void glutFullScreen(void) {}
 GLUT_EXPORT void glutSetCursor(int cursor) { (void)cursor; }
+
+/* Full screen on the primary monitor through GLFW (the window's size
+ * change reshapes the frame); headless, only the state glutGet
+ * (GLUT_FULL_SCREEN) reports changes: the frame keeps its size. */
+static void set_full_screen(bool on)
+{
+   if (!G.created || on == G.fullscreen)
+      return;
+   G.fullscreen = on;
+#ifndef FIXGLUT_ORACLE
+   if (G.win) {
+      if (on) {
+         GLFWmonitor *mon = glfwGetPrimaryMonitor();
+         const GLFWvidmode *vm = mon ? glfwGetVideoMode(mon) : NULL;
+         if (!vm) {
+            G.fullscreen = false;
+            return;
+         }
+         glfwGetWindowPos(G.win, &G.windowed_x, &G.windowed_y);
+         glfwGetWindowSize(G.win, &G.windowed_w, &G.windowed_h);
+         glfwSetWindowMonitor(G.win, mon, 0, 0, vm->width, vm->height, vm->refreshRate);
+      } else {
+         glfwSetWindowMonitor(G.win, NULL, G.windowed_x, G.windowed_y, G.windowed_w,
+                              G.windowed_h, 0);
+      }
+   }
+#endif
+}
+
+GLUT_EXPORT void glutFullScreen(void) { set_full_screen(true); }
+GLUT_EXPORT void glutLeaveFullScreen(void) { set_full_screen(false); }
+GLUT_EXPORT void glutFullScreenToggle(void) { set_full_screen(!G.fullscreen); }
 
 GLUT_EXPORT void glutWarpPointer(int x, int y)
 {
@@ -758,6 +945,48 @@ GLUT_EXPORT void glutVisibilityFunc(void (*func)(int)) { G.visibility = func; }
 GLUT_EXPORT void glutIdleFunc(void (*func)(void)) { G.idle = func; }
 GLUT_EXPORT void glutMenuStatusFunc(void (*func)(int, int, int)) { G.menu_status = func; }
 GLUT_EXPORT void glutMenuStateFunc(void (*func)(int)) { G.menu_state = func; }
+/* freeglut: the window's close (destroy) callback; glutWMCloseFunc is
+ * the same callback under its older name */
+GLUT_EXPORT void glutCloseFunc(void (*func)(void)) { G.close = func; }
+GLUT_EXPORT void glutWMCloseFunc(void (*func)(void)) { G.close = func; }
+GLUT_EXPORT void glutInitErrorFunc(void (*func)(const char *fmt, va_list ap)) { G.error_func = func; }
+GLUT_EXPORT void glutInitWarningFunc(void (*func)(const char *fmt, va_list ap)) { G.warning_func = func; }
+GLUT_EXPORT void glutSetWindowData(void *data) { G.window_data = data; }
+GLUT_EXPORT void *glutGetWindowData(void) { return G.window_data; }
+
+GLUT_EXPORT void glutInitContextVersion(int major, int minor)
+{
+   G.ctx_major = major;
+   G.ctx_minor = minor;
+}
+GLUT_EXPORT void glutInitContextFlags(int flags) { G.ctx_flags = flags; }
+GLUT_EXPORT void glutInitContextProfile(int profile) { G.ctx_profile = profile; }
+
+/* freeglut's options (fg_state.c glutSetOption); glutGet reads them back */
+GLUT_EXPORT void glutSetOption(GLenum what, int value)
+{
+   require_init("glutSetOption");
+   switch (what) {
+   case GLUT_INIT_WINDOW_X: G.init_x = value; break;
+   case GLUT_INIT_WINDOW_Y: G.init_y = value; break;
+   case GLUT_INIT_WINDOW_WIDTH: G.init_w = value; break;
+   case GLUT_INIT_WINDOW_HEIGHT: G.init_h = value; break;
+   case GLUT_INIT_DISPLAY_MODE: G.mode = (unsigned)value; break;
+   case GLUT_ACTION_ON_WINDOW_CLOSE: G.action_on_close = value; break;
+   case GLUT_RENDERING_CONTEXT: G.use_current_context = value == GLUT_USE_CURRENT_CONTEXT; break;
+   case GLUT_DIRECT_RENDERING: G.direct_rendering = value; break;
+   case GLUT_WINDOW_CURSOR: glutSetCursor(value); break;
+   case GLUT_AUX: G.aux = value; break;
+   case GLUT_MULTISAMPLE: G.samples = value; break;
+   case GLUT_SKIP_STALE_MOTION_EVENTS: G.skip_stale_motion = value != 0; break;
+   case GLUT_GEOMETRY_VISUALIZE_NORMALS: G.visualize_normals = value != 0; break;
+   case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: G.join_dots = value != 0; break;
+   case GLUT_ALLOW_NEGATIVE_WINDOW_POSITION: G.allow_negative_position = value != 0; break;
+   default:
+      glut_warn("glutSetOption(): missing enum handle %d", (int)what);
+      break;
+   }
+}
 
 GLUT_EXPORT void glutTimerFunc(unsigned int millis, void (*func)(int), int value)
 {
@@ -862,6 +1091,27 @@ GLUT_EXPORT int glutGet(GLenum type)
    case GLUT_INIT_WINDOW_HEIGHT: return G.init_h;
    case GLUT_INIT_DISPLAY_MODE: return (int)G.mode;
    case GLUT_ELAPSED_TIME: return (int)now_ms();
+   /* freeglut's */
+   case GLUT_INIT_STATE: return G.inited ? 1 : 0;
+   case GLUT_ACTION_ON_WINDOW_CLOSE: return G.action_on_close;
+   case GLUT_VERSION: return FIXGLUT_FREEGLUT_VERSION;
+   case GLUT_RENDERING_CONTEXT:
+      return G.use_current_context ? GLUT_USE_CURRENT_CONTEXT : GLUT_CREATE_NEW_CONTEXT;
+   case GLUT_DIRECT_RENDERING: return G.direct_rendering;
+   case GLUT_FULL_SCREEN: return G.fullscreen ? 1 : 0;
+   case GLUT_AUX: return G.aux;
+   case GLUT_MULTISAMPLE: return G.samples;
+   case GLUT_SKIP_STALE_MOTION_EVENTS: return G.skip_stale_motion;
+   case GLUT_GEOMETRY_VISUALIZE_NORMALS: return G.visualize_normals;
+   case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: return G.join_dots;
+   case GLUT_ALLOW_NEGATIVE_WINDOW_POSITION: return G.allow_negative_position;
+   case GLUT_INIT_MAJOR_VERSION: return G.ctx_major;
+   case GLUT_INIT_MINOR_VERSION: return G.ctx_minor;
+   case GLUT_INIT_FLAGS: return G.ctx_flags;
+   case GLUT_INIT_PROFILE: return G.ctx_profile;
+   case GLUT_WINDOW_BORDER_WIDTH:
+   case GLUT_WINDOW_BORDER_HEIGHT:
+   case GLUT_WINDOW_SRGB: return 0;
    default:
       glut_warn("glutGet: unknown query %u", (unsigned)type);
       return -1;
@@ -990,6 +1240,8 @@ static void run_event(const char *text)
       glutReshapeWindow(atoi(f[1]), atoi(f[2]));
    } else if (!strcmp(what, "redisplay")) {
       G.redisplay = true;
+   } else if (!strcmp(what, "close")) {
+      G.wm_close = true;
    } else {
       glut_fatal("FIXGLUT_EVENTS: unknown or malformed event \"%s\"", text);
    }
@@ -1020,7 +1272,7 @@ static void write_frame(bool last)
          return;
       snprintf(path, sizeof path, "%s", G.out);
    }
-   if (fv_png_write(path, G.w, G.h, G.shown, 1) != 0)
+   if (glut_png_write(path, G.w, G.h, G.shown, true) != 0)
       glut_fatal("cannot write %s", path);
 }
 
@@ -1041,7 +1293,7 @@ static void write_screenshot(void)
    fv_present_frame(G.present, G.overlay, G.w, G.h, fw, fh);
    fv_present_read(G.present, 0, fw, fh, px);
    glfwSwapBuffers(G.win);
-   if (G.screenshot && fv_png_write(G.screenshot, fw, fh, px, 1) != 0)
+   if (G.screenshot && glut_png_write(G.screenshot, fw, fh, px, true) != 0)
       glut_fatal("cannot write %s", G.screenshot);
    /* What the X server shows in the window once the buffers are swapped. */
    if (G.screenshot_x11) {
@@ -1052,7 +1304,7 @@ static void write_screenshot(void)
       if (!xp)
          glut_fatal("out of memory");
       if (fv_grab_window(G.win, ww, wh, xp) != 0 ||
-          fv_png_write(G.screenshot_x11, ww, wh, xp, 1) != 0)
+          glut_png_write(G.screenshot_x11, ww, wh, xp, true) != 0)
          glut_fatal("cannot write the window's X11 image to %s", G.screenshot_x11);
       free(xp);
    }
@@ -1073,55 +1325,116 @@ static double next_timer_due(void)
 }
 #endif
 
+/* The window closed by the user (window manager), the "close" event, or
+ * the end of a FIXGLUT_FRAMES run: freeglut's WM_DELETE_WINDOW handling. */
+static void close_by_user(void)
+{
+   G.wm_close = false;
+   destroy_window();
+   if (G.action_on_close == GLUT_ACTION_EXIT) {
+      deinitialize();
+      exit(0);
+   }
+   if (G.action_on_close == GLUT_ACTION_GLUTMAINLOOP_RETURNS)
+      G.running = false;
+}
+
+/* One step of the loop (a frame): window events, the frame's scripted
+ * events, timers, the idle callback (glutMainLoop only, as freeglut's
+ * glutMainLoopEvent calls none), the display callback when a redisplay is
+ * pending, the frame written; then a window glutDestroyWindow or the user
+ * closed goes. */
+static void loop_step(bool with_idle)
+{
+   if (!G.started) {
+      /* the window's first step: its initial reshape (freeglut's
+       * GLUT_INIT_WORK) */
+      G.started = true;
+      if (!G.display)
+         glut_fatal("no display callback for the window");
+      do_reshape(G.w, G.h);
+      if (G.visibility)
+         G.visibility(GLUT_VISIBLE);
+   }
+#ifndef FIXGLUT_ORACLE
+   if (G.win) {
+      if (G.fixed_clock || G.idle || G.redisplay || !with_idle) {
+         glfwPollEvents();
+      } else {
+         double due = next_timer_due();
+         double wait = due < 0.0 ? 0.5 : (due - now_ms()) / 1000.0;
+         if (wait > 0.0)
+            glfwWaitEventsTimeout(wait > 0.5 ? 0.5 : wait);
+         else
+            glfwPollEvents();
+      }
+      if (G.win && glfwWindowShouldClose(G.win))
+         G.wm_close = true;
+   }
+#endif
+   if (G.wm_close) {
+      close_by_user();
+      return;
+   }
+   for (int i = 0; i < G.num_events && G.created; i++)
+      if (G.events[i].frame == G.frame)
+         run_event(G.events[i].text);
+   if (G.created && !G.wm_close && !G.destroy_pending) {
+      run_timers(now_ms());
+      if (with_idle && G.idle)
+         G.idle();
+   }
+   if (G.created && G.redisplay && !G.wm_close && !G.destroy_pending) {
+      G.redisplay = false;
+      G.display();
+      if (!(G.mode & GLUT_DOUBLE))
+         present_frame();   /* single-buffered: the frame as flushed */
+   }
+   if (!G.created)
+      return;
+   bool last = G.frames >= 0 && G.frame + 1 >= G.frames;
+   write_frame(last);
+   if (last)
+      write_screenshot();
+   G.frame++;
+   if (G.destroy_pending)
+      destroy_window();
+   else if (G.wm_close || (G.frames >= 0 && G.frame >= G.frames))
+      close_by_user();   /* a FIXGLUT_FRAMES run ends as if the user closed the window */
+}
+
 GLUT_EXPORT void glutMainLoop(void)
 {
    if (!G.created)
       glut_fatal("glutMainLoop: no window was created");
    if (!G.display)
       glut_fatal("glutMainLoop: no display callback for the window");
+   G.running = true;
+   while (G.running && G.created)
+      loop_step(true);
+   /* left (glutLeaveMainLoop), or no window is left: freeglut
+    * deinitialises, then ends the program unless told otherwise */
+   int action = G.action_on_close;
+   deinitialize();
+   if (action == GLUT_ACTION_EXIT)
+      exit(0);
+}
 
-   G.frame = 0;
-   do_reshape(G.w, G.h);
-   if (G.visibility)
-      G.visibility(GLUT_VISIBLE);
+GLUT_EXPORT void glutMainLoopEvent(void)
+{
+   require_init("glutMainLoopEvent");
+   if (G.created)
+      loop_step(false);
+}
 
-   for (;; G.frame++) {
-      if (G.frames >= 0 && G.frame >= G.frames)
-         break;
-#ifndef FIXGLUT_ORACLE
-      if (G.win) {
-         if (G.fixed_clock || G.idle || G.redisplay) {
-            glfwPollEvents();
-         } else {
-            double due = next_timer_due();
-            double wait = due < 0.0 ? 0.5 : (due - now_ms()) / 1000.0;
-            if (wait > 0.0)
-               glfwWaitEventsTimeout(wait > 0.5 ? 0.5 : wait);
-            else
-               glfwPollEvents();
-         }
-         if (glfwWindowShouldClose(G.win))
-            break;
-      }
-#endif
-      for (int i = 0; i < G.num_events; i++)
-         if (G.events[i].frame == G.frame)
-            run_event(G.events[i].text);
-      run_timers(now_ms());
-      if (G.idle)
-         G.idle();
-      if (G.redisplay) {
-         G.redisplay = false;
-         G.display();
-         if (!(G.mode & GLUT_DOUBLE))
-            present_frame();   /* single-buffered: the frame as flushed */
-      }
-      bool last = G.frames >= 0 && G.frame + 1 >= G.frames;
-      write_frame(last);
-      if (last)
-         write_screenshot();
-   }
-   /* N frames done, or the window was closed: GLUT's main loop never
-    * returns. */
-   exit(0);
+GLUT_EXPORT void glutLeaveMainLoop(void)
+{
+   require_init("glutLeaveMainLoop");
+   G.running = false;
+}
+
+GLUT_EXPORT void glutExit(void)
+{
+   if (G.inited)
+      deinitialize();
 }

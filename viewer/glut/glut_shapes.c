@@ -367,3 +367,138 @@ GLUT_EXPORT void glutSolidIcosahedron(void) { icosahedron(false); }
 GLUT_EXPORT void glutWireIcosahedron(void) { icosahedron(true); }
 GLUT_EXPORT void glutSolidDodecahedron(void) { dodecahedron(false); }
 GLUT_EXPORT void glutWireDodecahedron(void) { dodecahedron(true); }
+
+/* ---- freeglut's cylinder ------------------------------------------------ */
+
+/* freeglut 3's fghCircleTable with a negative count (the clockwise
+ * circle its cylinder uses): n + 1 entries, the last the first again. */
+static void cylinder_circle(GLfloat *sint, GLfloat *cost, int slices)
+{
+   const GLfloat angle = 2 * (GLfloat)M_PI / (GLfloat)(-slices);
+   sint[0] = 0.0f;
+   cost[0] = 1.0f;
+   for (int i = 1; i < slices; i++) {
+      sint[i] = (GLfloat)sin(angle * i);
+      cost[i] = (GLfloat)cos(angle * i);
+   }
+   sint[slices] = sint[0];
+   cost[slices] = cost[0];
+}
+
+/* freeglut 3's fghCylinder: the same vertices and normals (the closing
+ * disks' rings repeated with axial normals), the same index order, drawn
+ * as freeglut draws on OpenGL 1.1: vertex and normal arrays, one
+ * glDrawElements per triangle strip (solid) or GL_LINES for the slices
+ * and a GL_LINE_LOOP per stack ring (wire), so that a program draws the
+ * same triangles on libfixglut as on freeglut. */
+static void cylinder(GLfloat radius, GLfloat height, GLint slices, GLint stacks, bool wire)
+{
+   if (slices <= 0 || stacks < 1)
+      return;
+   const int nvert = slices * (stacks + 3) + 2;
+   if (nvert > 65535)
+      glut_warn("glutCylinder: too many slices or stacks requested, indices will wrap");
+   const GLfloat zstep = height / (GLfloat)stacks;
+   GLfloat *sint = malloc((size_t)(slices + 1) * sizeof *sint);
+   GLfloat *cost = malloc((size_t)(slices + 1) * sizeof *cost);
+   GLfloat *v = malloc((size_t)nvert * 3 * sizeof *v);
+   GLfloat *n = malloc((size_t)nvert * 3 * sizeof *n);
+   if (!sint || !cost || !v || !n)
+      glut_fatal("out of memory for a cylinder");
+   cylinder_circle(sint, cost, slices);
+
+   int idx = 0;
+   GLfloat z = 0.0f;
+#define CYL_VERTEX(x, y, zz, nx, ny, nz) \
+   (v[idx] = (x), v[idx + 1] = (y), v[idx + 2] = (zz), \
+    n[idx] = (nx), n[idx + 1] = (ny), n[idx + 2] = (nz), idx += 3)
+   CYL_VERTEX(0.0f, 0.0f, 0.0f, 0.0f, 0.0f, -1.0f);          /* the z = 0 disk's centre */
+   for (int j = 0; j < slices; j++)
+      CYL_VERTEX(cost[j] * radius, sint[j] * radius, z, 0.0f, 0.0f, -1.0f);
+   for (int i = 0; i < stacks + 1; i++) {
+      for (int j = 0; j < slices; j++)
+         CYL_VERTEX(cost[j] * radius, sint[j] * radius, z, cost[j], sint[j], 0.0f);
+      z += zstep;
+   }
+   z -= zstep;
+   for (int j = 0; j < slices; j++)
+      CYL_VERTEX(cost[j] * radius, sint[j] * radius, z, 0.0f, 0.0f, 1.0f);
+   CYL_VERTEX(0.0f, 0.0f, height, 0.0f, 0.0f, 1.0f);         /* the far disk's centre */
+#undef CYL_VERTEX
+
+   glEnableClientState(GL_VERTEX_ARRAY);
+   glEnableClientState(GL_NORMAL_ARRAY);
+   glVertexPointer(3, GL_FLOAT, 0, v);
+   glNormalPointer(GL_FLOAT, 0, n);
+   if (wire) {
+      GLushort *stack_idx = malloc((size_t)slices * (stacks + 1) * sizeof *stack_idx);
+      GLushort *slice_idx = malloc((size_t)slices * 2 * sizeof *slice_idx);
+      if (!stack_idx || !slice_idx)
+         glut_fatal("out of memory for a cylinder");
+      idx = 0;
+      for (int i = 0; i < stacks + 1; i++) {
+         GLushort offset = (GLushort)(1 + (i + 1) * slices);
+         for (int j = 0; j < slices; j++)
+            stack_idx[idx++] = (GLushort)(offset + j);
+      }
+      idx = 0;
+      for (int i = 0; i < slices; i++) {
+         GLushort offset = (GLushort)(1 + i);
+         slice_idx[idx++] = (GLushort)(offset + slices);
+         slice_idx[idx++] = (GLushort)(offset + (stacks + 1) * slices);
+      }
+      glDrawElements(GL_LINES, slices * 2, GL_UNSIGNED_SHORT, slice_idx);
+      for (int i = 0; i < stacks + 1; i++)
+         glDrawElements(GL_LINE_LOOP, slices, GL_UNSIGNED_SHORT, stack_idx + i * slices);
+      free(stack_idx);
+      free(slice_idx);
+   } else {
+      const int per_strip = (slices + 1) * 2;
+      GLushort *strip = malloc((size_t)per_strip * (stacks + 2) * sizeof *strip);
+      if (!strip)
+         glut_fatal("out of memory for a cylinder");
+      idx = 0;
+      for (int j = 0; j < slices; j++, idx += 2) {
+         strip[idx] = 0;
+         strip[idx + 1] = (GLushort)(j + 1);
+      }
+      strip[idx] = 0;
+      strip[idx + 1] = 1;
+      idx += 2;
+      for (int i = 0; i < stacks; i++, idx += 2) {
+         GLushort offset = (GLushort)(1 + (i + 1) * slices);
+         for (int j = 0; j < slices; j++, idx += 2) {
+            strip[idx] = (GLushort)(offset + j);
+            strip[idx + 1] = (GLushort)(offset + j + slices);
+         }
+         strip[idx] = offset;
+         strip[idx + 1] = (GLushort)(offset + slices);
+      }
+      GLushort offset = (GLushort)(1 + (stacks + 2) * slices);
+      for (int j = 0; j < slices; j++, idx += 2) {
+         strip[idx] = (GLushort)(offset + j);
+         strip[idx + 1] = (GLushort)(nvert - 1);
+      }
+      strip[idx] = offset;
+      strip[idx + 1] = (GLushort)(nvert - 1);
+      for (int i = 0; i < stacks + 2; i++)
+         glDrawElements(GL_TRIANGLE_STRIP, per_strip, GL_UNSIGNED_SHORT, strip + i * per_strip);
+      free(strip);
+   }
+   glDisableClientState(GL_VERTEX_ARRAY);
+   glDisableClientState(GL_NORMAL_ARRAY);
+   free(sint);
+   free(cost);
+   free(v);
+   free(n);
+}
+
+GLUT_EXPORT void glutSolidCylinder(double radius, double height, GLint slices, GLint stacks)
+{
+   cylinder((GLfloat)radius, (GLfloat)height, slices, stacks, false);
+}
+
+GLUT_EXPORT void glutWireCylinder(double radius, double height, GLint slices, GLint stacks)
+{
+   cylinder((GLfloat)radius, (GLfloat)height, slices, stacks, true);
+}
