@@ -46,6 +46,8 @@ REQUIRED = {
     "viewer": {
         "suites": {"glut", "viewer"},
         "tests": {"glut-lit", "glut-menus", "glut-text", "glut-api", "glut-window",
+                  "glut-freeglut", "glut-freeglut-demo", "glut-glu", "glut-light",
+                  "glut-cylinder-vs-freeglut",
                   "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat"},
     },
     "glx": {

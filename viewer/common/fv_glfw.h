@@ -4,9 +4,10 @@
  * Linked directly (the viewer), this header is <GLFW/glfw3.h>.  Built
  * with FV_GLFW_DLOPEN (libfixglut), every function below is a pointer of
  * the table fv_glfw, filled by fv_glfw_load() from libglfw.so.3 and
- * libX11.so.6 the first time a window is opened: a headless program never
- * maps GLFW or Xlib (measured: linking both costs a bare program about
- * 3.5 ms of start-up and 1.3 MB resident).  The call sites are the same
+ * libX11.so.6 when the window mode starts (libfixglut: glutInit without
+ * FIXGLUT_HEADLESS): a headless program never maps GLFW or Xlib
+ * (measured: linking both costs a bare program about 3.5 ms of start-up
+ * and 1.3 MB resident).  The call sites are the same
  * in both builds.
  */
 #ifndef FV_GLFW_H

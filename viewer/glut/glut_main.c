@@ -23,7 +23,7 @@
 
 #ifndef FIXGLUT_ORACLE
 /* GLFW and Xlib through fv_glfw.h's table (FV_GLFW_DLOPEN): loaded by
- * the first window, never by a headless run */
+ * glutInit in window mode, never by a headless run */
 #include "fv_glfw.h"
 #include "fv_grab.h"
 #include "fv_present.h"
