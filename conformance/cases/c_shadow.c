@@ -1015,6 +1015,86 @@ static void texmatrix_case(fc_h *h)
     glDeleteTextures(1, &tex);
 }
 
+/* GL_GENERATE_MIPMAP on depth textures: each level read back, then
+ * sampled with a mipmap filter and the comparison. */
+static void genmipmap_case(fc_h *h)
+{
+    /* shadow/genmipmap_z32: GL_DEPTH_COMPONENT32 alone */
+    const bool z32 = strstr(fc_this_case(h)->name, "z32") != NULL;
+    for (int f = z32 ? 3 : 0; f < (z32 ? 4 : 3); f++) {
+        GLuint tex;
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+        depth_image(GL_TEXTURE_2D, 0, g_internals[f], f == 1 ? GL_UNSIGNED_SHORT : GL_FLOAT, 16, f == 3 ? 6 : 16, 61u + (unsigned)f);
+        for (int l = 1; l < 5; l++) {
+            GLint w = 0, hh = 0;
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, l, GL_TEXTURE_WIDTH, &w);
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, l, GL_TEXTURE_HEIGHT, &hh);
+            memset(g_out, 0xa5, sizeof(g_out));
+            glGetTexImage(GL_TEXTURE_2D, l, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, g_out);
+            char lb[32];
+            snprintf(lb, sizeof(lb), "f%d_l%d", f, l);
+            fc_blob(h, lb, g_out, (size_t)(w * hh * 4));
+        }
+        if (f == 2 || f == 3) {
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+            glEnable(GL_TEXTURE_2D);
+            fc_pixel_ortho(h);
+            fcu_clear(0.1f, 0.2f, 0.3f, 1, 1);
+            const float r4[4] = { 0.3f, 0.5f, 0.6f, 0.8f };
+            scene_slab(h, 2, -0.5f, 4.0f, 0.1f, 0.9f, r4, 1.0f);
+            fc_capture(h);
+            glDisable(GL_TEXTURE_2D);
+        }
+        glDeleteTextures(1, &tex);
+    }
+    if (z32)
+        return;
+    /* 1D */
+    glTexParameteri(GL_TEXTURE_1D, GL_GENERATE_MIPMAP, GL_TRUE);
+    depth_image(GL_TEXTURE_1D, 0, D24, GL_FLOAT, 16, 1, 71u);
+    for (int l = 1; l < 5; l++) {
+        memset(g_out, 0xa5, sizeof(g_out));
+        glGetTexImage(GL_TEXTURE_1D, l, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, g_out);
+        char lb[32];
+        snprintf(lb, sizeof(lb), "1d_l%d", l);
+        fc_blob(h, lb, g_out, (size_t)(16 >> l) * 4);
+    }
+}
+
+/* The depth transfer and the colour transfer around glCopyTexImage of a
+ * depth format: the copy is a blit unless a colour transfer operation is
+ * on (st_CopyTexSubImage's _ImageTransferState), and the depth scale and
+ * bias then apply. */
+static void copy_transfer_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (int k = 0; k < 3; k++) {
+        depth_scene(h, k);
+        glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+        glPixelTransferf(GL_DEPTH_BIAS, 0.25f);
+        if (k == 1)
+            glPixelTransferf(GL_RED_SCALE, 0.5f);
+        if (k == 2)
+            glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, k == 0 ? D24 : k == 1 ? D16 : D32, 0, 0, 32, 32, 0);
+        glPixelTransferf(GL_DEPTH_SCALE, 1.0f);
+        glPixelTransferf(GL_DEPTH_BIAS, 0.0f);
+        glPixelTransferf(GL_RED_SCALE, 1.0f);
+        glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+        char lb[32];
+        snprintf(lb, sizeof(lb), "transfer_%d", k);
+        fc_error(h, lb);
+        read_back(h, GL_TEXTURE_2D, lb);
+    }
+    show_texture(h, true);
+    glDeleteTextures(1, &tex);
+}
+
 const fc_case fc_cases_shadow[] = {
 #define SC(n) FC_CASE_RGBA(n, 48, 48, 1, "gl14 shadow", sample_case)
     SC("shadow/nearest_lequal_z24"),
@@ -1073,6 +1153,9 @@ const fc_case fc_cases_shadow[] = {
     FC_CASE_RGBA("shadow/copy_from_depth24", 32, 32, 2, "gl14 shadow", copy_case),
     FC_CASE("shadow/copy_from_depth16", 32, 32, OSMESA_RGBA, 16, 0, 2, "gl14 shadow", copy_case),
     FC_CASE("shadow/copy_from_depth32", 32, 32, OSMESA_RGBA, 32, 8, 2, "gl14 shadow", copy_case),
+    FC_CASE_RGBA("shadow/genmipmap", 48, 48, 1, "gl14 shadow", genmipmap_case),
+    FC_CASE_RGBA("shadow/genmipmap_z32", 48, 48, 1, "gl14 shadow", genmipmap_case),
+    FC_CASE_RGBA("shadow/copy_transfer", 32, 32, 1, "gl14 shadow", copy_transfer_case),
     FC_CASE("shadow/copy_no_depth_buffer", 16, 16, OSMESA_RGBA, 0, 0, 0, "gl14 shadow", copy_no_depth_case),
     FC_CASE("shadow/store_types", 16, 16, OSMESA_RGBA, 24, 0, 0, "gl14 shadow", store_types_case),
     FC_CASE("shadow/pixel_transfer", 16, 16, OSMESA_RGBA, 24, 0, 0, "gl14 shadow", transfer_case),

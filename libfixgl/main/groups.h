@@ -95,6 +95,9 @@ void fgl_tex_get_depth(struct fgl_context *ctx, const struct fgl_texture_image *
  * (xoff, yoff) of slice zoff of img */
 void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
                         GLint yoff, GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h);
+/* level dst of a depth texture generated from the level above, src
+ * (GL_GENERATE_MIPMAP) */
+void fgl_tex_gen_mip_depth(const struct fgl_texture_image *src, struct fgl_texture_image *dst);
 /* the sampler state of a complete depth texture (state.c update_texture,
  * after the colour texture's) */
 void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_texture *rt);

@@ -17,6 +17,7 @@
  *                      with any other type          Z24X8_UNORM
  * The sampler reads them as floats (r_state.h r_tex_depth_value).
  */
+#include <math.h>
 #include <string.h>
 
 #include "main/groups.h"
@@ -264,6 +265,16 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
    if (!fb || !fb->Depth)
       return;
    const int bits = fgl_tex_image_depth_bits(img);
+   /* [S: st_cb_texture.c:fallback_copy_texsubimage, util/u_tile.c
+    * pipe_get_tile_z, pipe_put_tile_z, pixeltransfer.c
+    * _mesa_scale_and_bias_depth_uint] with a colour transfer operation on
+    * (_ImageTransferState) or a depth scale or bias the copy is done on the
+    * CPU: each value widened to 32 bits (Z16: z * 0x10001, Z24:
+    * (z << 8) | (z >> 16)), scaled and biased in double (z * scale +
+    * bias * 0xffffffff, clamped, truncated), narrowed by a shift */
+   const double scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
+   const bool sb = scale != 1.0 || bias != 0.0;
+   const bool cpu = sb || fgl_image_transfer_state(ctx) != 0;
    for (GLint j = 0; j < h; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
       uint32_t *dst = img->ZValues +
@@ -271,6 +282,22 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
                          (size_t)img->Width + (size_t)xoff;
       for (GLint i = 0; i < w; i++) {
          const size_t idx = row * (size_t)fb->Width + (size_t)(x + i);
+         if (cpu) {
+            uint32_t z32;
+            if (fb->ZSFormat == R_ZS_Z16) {
+               z32 = (uint32_t)((const uint16_t *)fb->Depth)[idx] * 0x10001u;
+            } else {
+               const uint32_t z = ((const uint32_t *)fb->Depth)[idx] & 0xffffffu;
+               z32 = (z << 8) | (z >> 16);
+            }
+            if (sb) {
+               double d = (double)z32 * scale + bias * 4294967295.0;
+               d = d < 0.0 ? 0.0 : d > 4294967295.0 ? 4294967295.0 : d;
+               z32 = (uint32_t)d;
+            }
+            dst[i] = bits == 32 ? z32 : z32 >> (32 - bits);
+            continue;
+         }
          const float d =
             fb->ZSFormat == R_ZS_Z16
                ? (float)((const uint16_t *)fb->Depth)[idx] * (float)(1.0 / 65535.0)
@@ -306,4 +333,42 @@ void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_textu
    const int m = t->DepthMode == GL_INTENSITY ? 1 : t->DepthMode == GL_ALPHA ? 2
                : t->DepthMode == GL_RED       ? 3 : 0;
    memcpy(rt->depth_swizzle, swz[m], 4);
+}
+
+/* [S: st_gen_mipmap.c:st_generate_mipmap, util/u_gen_mipmap.c
+ * util_gen_mipmap (blit.mask PIPE_MASK_Z, PIPE_TEX_FILTER_LINEAR)] a
+ * GL_GENERATE_MIPMAP level of a depth texture: the level above sampled
+ * bilinearly at each texel centre (CLAMP_TO_EDGE) on the float path, the
+ * depth values as the sampler reads them, lerped fused along s on both
+ * rows then along t, written as the blit's fragment depth (blit_depth). */
+static void edge_linear(float c, int n, int *x0, int *x1, float *w)
+{
+   c = fminf(c * (float)n, (float)n) - 0.5f;
+   c = fmaxf(c, 0.0f);
+   const float ip = floorf(c);
+   *w = c - ip;
+   *x0 = (int)ip;
+   *x1 = *x0 + 1 < n - 1 ? *x0 + 1 : n - 1;
+}
+
+void fgl_tex_gen_mip_depth(const struct fgl_texture_image *src, struct fgl_texture_image *dst)
+{
+   const int bits = fgl_tex_image_depth_bits(src);
+   const int W = src->Width, H = src->Height, w = dst->Width, h = dst->Height;
+   for (int j = 0; j < h; j++) {
+      int y0, y1;
+      float wt;
+      edge_linear(((float)j + 0.5f) / (float)h, H, &y0, &y1, &wt);
+      for (int i = 0; i < w; i++) {
+         int x0, x1;
+         float ws;
+         edge_linear(((float)i + 0.5f) / (float)w, W, &x0, &x1, &ws);
+         const uint32_t *r0 = src->ZValues + (size_t)y0 * (size_t)W;
+         const uint32_t *r1 = src->ZValues + (size_t)y1 * (size_t)W;
+         const float v00 = r_tex_depth_value(r0[x0], bits), v01 = r_tex_depth_value(r0[x1], bits);
+         const float v10 = r_tex_depth_value(r1[x0], bits), v11 = r_tex_depth_value(r1[x1], bits);
+         const float a = fmaf(ws, v01 - v00, v00), b = fmaf(ws, v11 - v10, v10);
+         dst->ZValues[(size_t)j * (size_t)w + (size_t)i] = blit_depth(fmaf(wt, b - a, a), bits);
+      }
+   }
 }

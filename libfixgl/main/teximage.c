@@ -749,6 +749,11 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
+      if (img->ZValues) {
+         fgl_tex_gen_mip_depth(src, img);   /* a depth texture: main/texdepth.c */
+         set_image(t, l, img);
+         continue;
+      }
       if (!fgl_tex_image_fits_unorm8(base) && D == 1) {
          for (int j = 0; j < h; j++)
             for (int i = 0; i < w; i++) {
