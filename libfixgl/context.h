@@ -425,6 +425,10 @@ struct fgl_texture_image {
     * oracle expands it to 8 bits (_mesa_unorm_to_unorm(x, bits, 8)). */
    uint16_t *Store;
    uint8_t StoreBits[4];
+   /* a GL_DEPTH_COMPONENT image (BaseFormat): the oracle's stored depth
+    * values, Width * Height * Depth texels of the pipe format's bits (16, 24 or
+    * 32: fgl_tex_image_depth_bits; main/texdepth.c), else NULL */
+   uint32_t *ZValues;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images
@@ -445,6 +449,9 @@ struct fgl_texture_object {
    float MinLod, MaxLod, LodBias;
    GLint BaseLevel, MaxLevel;
    bool GenerateMipmap;
+   /* ARB_depth_texture / ARB_shadow (main/texdepth.c): GL_DEPTH_TEXTURE_MODE,
+    * GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC */
+   GLenum DepthMode, CompareMode, CompareFunc;
    /* the images, by level (NULL: none); glPopAttrib restores the
     * parameters above and keeps these */
    struct fgl_texture_image *Image[FGL_MAX_TEXTURE_LEVELS];

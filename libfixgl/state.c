@@ -182,6 +182,7 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
       /* the stored values of a format that is not 8 bits per channel,
        * for the float path */
       rt->level[l].store = fgl_tex_image_fits_unorm8(img) ? NULL : img->Store;
+      rt->level[l].zvalues = img->ZValues;
       for (int c = 0; c < 4; c++) {
          const int bits = img->StoreBits[c];
          rt->level[l].store_bits[c] = (uint8_t)bits;
@@ -211,6 +212,8 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    rt->wrap_t = tex_wrap(t->WrapT);
    rt->wrap_r = rt->dims == 3 ? tex_wrap(t->WrapR) : R_WRAP_REPEAT;
    update_texture_general(ctx, u, t, rt);
+   if (base->BaseFormat == GL_DEPTH_COMPONENT)
+      fgl_update_texture_depth(t, rt);
 }
 
 static uint8_t comb_mode(GLenum env, GLenum mode)
@@ -307,7 +310,7 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
       const GLenum f = base_format;
       if (f == GL_ALPHA)
          src_rgb[0] = GL_PREVIOUS;
-      else if (f == GL_LUMINANCE || f == GL_RGB)
+      else if (f == GL_LUMINANCE || f == GL_RGB || f == GL_RED)
          src_a[0] = GL_PREVIOUS;
       switch (env) {
       case GL_REPLACE:
@@ -322,7 +325,7 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
          src_a[0] = GL_PREVIOUS;
          if (f == GL_ALPHA || f == GL_LUMINANCE || f == GL_LUMINANCE_ALPHA || f == GL_INTENSITY)
             src_rgb[0] = GL_PREVIOUS;
-         else if (f == GL_RGB)
+         else if (f == GL_RGB || f == GL_RED)   /* GL_RED: GL_DEPTH_TEXTURE_MODE */
             mode_rgb = GL_REPLACE;
          else
             src_rgb[2] = GL_TEXTURE;
@@ -386,7 +389,10 @@ static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
          memset(&ru, 0, sizeof(ru));
          update_texture(ctx, u, t, ctx->_CurrentTexTarget[u], &ru.tex);
          const struct fgl_texture_unit *tu = &ctx->Texture.Unit[u];
-         update_combine(tu, t->Image[t->BaseLevel]->BaseFormat, &ru.comb);
+         /* [S: texstate.c:update_tex_combine] a depth texture combines as
+          * its GL_DEPTH_TEXTURE_MODE */
+         const GLenum base = t->Image[t->BaseLevel]->BaseFormat;
+         update_combine(tu, base == GL_DEPTH_COMPONENT ? t->DepthMode : base, &ru.comb);
          r_tex_combine_simplify(&ru.comb, (int)u);
          for (int c = 0; c < 4; c++)
             ru.env_color[c] = tu->EnvColor[c];

@@ -107,6 +107,7 @@ CLASSES = {
                        'GL_R3_G3_B2', 'GL_RGB', 'GL_RGB4', 'GL_RGB5', 'GL_RGB8', 'GL_RGB10',
                        'GL_RGB12', 'GL_RGB16', 'GL_RGBA', 'GL_RGBA2', 'GL_RGBA4', 'GL_RGB5_A1',
                        'GL_RGBA8', 'GL_RGB10_A2', 'GL_RGBA12', 'GL_RGBA16', 'GL_DEPTH_COMPONENT',
+                       'GL_DEPTH_COMPONENT16', 'GL_DEPTH_COMPONENT24', 'GL_DEPTH_COMPONENT32',
                        'GL_COLOR_INDEX', 'GL_BGRA', 'GL_RED'],
     # (cube-map faces, which fixgl does not have yet, come from the hostile
     # choices: any GL enum)
@@ -116,11 +117,13 @@ CLASSES = {
                   'GL_TEXTURE_WRAP_T', 'GL_TEXTURE_WRAP_R', 'GL_TEXTURE_BORDER_COLOR',
                   'GL_TEXTURE_PRIORITY', 'GL_TEXTURE_MIN_LOD', 'GL_TEXTURE_MAX_LOD',
                   'GL_TEXTURE_BASE_LEVEL', 'GL_TEXTURE_MAX_LEVEL', 'GL_GENERATE_MIPMAP',
-                  'GL_TEXTURE_LOD_BIAS', 'GL_TEXTURE_RESIDENT'],
+                  'GL_TEXTURE_LOD_BIAS', 'GL_TEXTURE_RESIDENT', 'GL_DEPTH_TEXTURE_MODE',
+                  'GL_TEXTURE_COMPARE_MODE', 'GL_TEXTURE_COMPARE_FUNC'],
     'tex_level_pname': ['GL_TEXTURE_WIDTH', 'GL_TEXTURE_HEIGHT', 'GL_TEXTURE_DEPTH',
                         'GL_TEXTURE_INTERNAL_FORMAT', 'GL_TEXTURE_BORDER', 'GL_TEXTURE_RED_SIZE',
                         'GL_TEXTURE_GREEN_SIZE', 'GL_TEXTURE_BLUE_SIZE', 'GL_TEXTURE_ALPHA_SIZE',
-                        'GL_TEXTURE_LUMINANCE_SIZE', 'GL_TEXTURE_INTENSITY_SIZE'],
+                        'GL_TEXTURE_LUMINANCE_SIZE', 'GL_TEXTURE_INTENSITY_SIZE',
+                        'GL_TEXTURE_DEPTH_SIZE'],
     'texenv_target': ['GL_TEXTURE_ENV', 'GL_TEXTURE_FILTER_CONTROL', 'GL_POINT_SPRITE'],
     'texenv_pname': ['GL_TEXTURE_ENV_MODE', 'GL_TEXTURE_ENV_COLOR', 'GL_COMBINE_RGB',
                      'GL_COMBINE_ALPHA', 'GL_SOURCE0_RGB', 'GL_SOURCE1_RGB', 'GL_SOURCE2_RGB',

@@ -21,6 +21,10 @@
  *     border colour, LOD clamps, base and maximum level, LOD biases;
  *   - an environment: MODULATE, REPLACE, DECAL, BLEND, ADD or COMBINE
  *     (every function, source, operand and scale), an environment colour;
+ *   - in one scene structure of eight of the others (a stream of its
+ *     own), a depth texture (GL 1.4: GL_DEPTH_COMPONENT, 16, 24 or 32
+ *     from float, unsigned short, int or byte values) with the shadow
+ *     comparison (any function) most of the time, any depth texture mode;
  *   - sometimes coordinate generation, a texture matrix, lighting, fog,
  *     blending;
  * and 1-6 primitives of every type with per-vertex texture coordinates
@@ -111,6 +115,14 @@ struct profile {
      * its wrap on r */
     int tex3d;
     GLenum wrap_r;
+    /* from a stream of its own (tex_scene): a depth texture (GL 1.4) of
+     * an internal format and client type, with the shadow comparison or
+     * not, its function and GL_DEPTH_TEXTURE_MODE */
+    int depth;
+    GLint depth_internal;
+    GLenum depth_type;
+    int compare;
+    GLenum compare_func, depth_mode;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -178,9 +190,60 @@ static unsigned char texel_byte(fc_rng *r)
 
 /* Uploads one level (w x h texels of n components, rows padded to align)
  * with a pattern: 0 random, 1 checker, 2 gradient, 3 one colour. */
+/* A depth level: w x h values of p->depth_type (float, unsigned short,
+ * unsigned int or unsigned byte) with a pattern (0 random, 1 checker, 2
+ * gradient, 3 one value; floats sometimes outside [0, 1]). */
+static void upload_depth_level(fc_rng *r, const struct profile *p, int level, int w, int h,
+                               int pattern, int align)
+{
+    const size_t bpp = p->depth_type == GL_UNSIGNED_BYTE ? 1 : p->depth_type == GL_UNSIGNED_SHORT ? 2 : 4;
+    const size_t row = ((size_t)w * bpp + (size_t)align - 1) / (size_t)align * (size_t)align;
+    const size_t bytes = row * (size_t)h;
+    unsigned char *img = calloc(bytes ? bytes : 1, 1);
+    if (!img)
+        abort();
+    const double a = fc_rng_real(r, -0.1, 1.1), b = fc_rng_real(r, -0.1, 1.1);
+    const int cell = 1 << fc_rng_below(r, 3);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double v;
+            switch (pattern) {
+            case 0: v = fc_rng_real(r, -0.05, 1.05); break;
+            case 1: v = ((x / cell + y / cell) & 1) ? a : b; break;
+            case 2: v = (a * (w - x) + b * x) / (w + 1) + 0.4 * y / (h + 1); break;
+            default: v = a; break;
+            }
+            const double c = v < 0 ? 0 : v > 1 ? 1 : v;
+            unsigned char *t = img + (size_t)y * row + (size_t)x * bpp;
+            if (p->depth_type == GL_FLOAT) {
+                const float f = (float)v;
+                memcpy(t, &f, 4);
+            } else if (p->depth_type == GL_UNSIGNED_INT) {
+                const unsigned u = (unsigned)(c * 4294967295.0);
+                memcpy(t, &u, 4);
+            } else if (p->depth_type == GL_UNSIGNED_SHORT) {
+                const unsigned short u = (unsigned short)(c * 65535.0);
+                memcpy(t, &u, 2);
+            } else {
+                *t = (unsigned char)(c * 255.0);
+            }
+        }
+    if (p->tex1d)
+        fct_glTexImage1D(GL_TEXTURE_1D, level, p->depth_internal, w, 0, GL_DEPTH_COMPONENT,
+                         p->depth_type, img, bytes);
+    else
+        fct_glTexImage2D(GL_TEXTURE_2D, level, p->depth_internal, w, h, 0, GL_DEPTH_COMPONENT,
+                         p->depth_type, img, bytes);
+    free(img);
+}
+
 static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h0,
                          int d, int pattern, int align)
 {
+    if (p->depth) {
+        upload_depth_level(r, p, level, w, h0, pattern, align);
+        return;
+    }
     const int n = src_components[p->src];
     const int h = h0 * d;   /* a 3D image: d slices of h0 rows, one pattern */
     const size_t row = ((size_t)(w * n) + (size_t)align - 1) / (size_t)align * (size_t)align;
@@ -250,6 +313,12 @@ static void random_texture(struct scene *s, const struct profile *p)
         fct_glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)p->wrap_t);
     if (p->tex3d)
         fct_glTexParameteri(target, GL_TEXTURE_WRAP_R, (GLint)p->wrap_r);
+    if (p->depth) {
+        if (p->compare)
+            fct_glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+        fct_glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, (GLint)p->compare_func);
+        fct_glTexParameteri(target, GL_DEPTH_TEXTURE_MODE, (GLint)p->depth_mode);
+    }
     if (p->border_color) {
         GLfloat c[4];
         for (int i = 0; i < 4; i++)
@@ -588,6 +657,23 @@ static void tex_scene(fc_h *h)
         p.tex3d = !p.tex1d && fc_rng_chance(&k3, 12);
         p.wrap_r = fc_rng_chance(&k3, 60) ? wraps[fc_rng_below(&k3, 2)]
                                           : wraps[fc_rng_below(&k3, 5)];
+    }
+    {
+        /* depth textures with or without the shadow comparison in one
+         * scene structure of eight of the others, from a stream of their
+         * own */
+        static const GLint dint[4] = { GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16,
+                                       GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32 };
+        static const GLenum dtype[4] = { GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT,
+                                         GL_UNSIGNED_BYTE };
+        static const GLenum dmode[4] = { GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_RED };
+        fc_rng kd = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
+        p.depth = !p.tex3d && fc_rng_chance(&kd, 12);
+        p.depth_internal = dint[fc_rng_below(&kd, 4)];
+        p.depth_type = dtype[fc_rng_below(&kd, 4)];
+        p.compare = fc_rng_chance(&kd, 80);
+        p.compare_func = GL_NEVER + fc_rng_below(&kd, 8);
+        p.depth_mode = dmode[fc_rng_chance(&kd, 70) ? 0 : fc_rng_below(&kd, 4)];
     }
     fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
     s.r = fc_rng_make(seed, index, 11);

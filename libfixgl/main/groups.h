@@ -74,6 +74,33 @@ void fgl_free_tex_images(struct fgl_texture_object *t);
 /* whether the oracle samples the image on its 8-bit AoS path (no channel
  * of its format wider than 8 bits; main/teximage.c) */
 bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img);
+/* the bits of the oracle's depth format of a GL_DEPTH_COMPONENT image (16:
+ * Z16_UNORM, 24: Z24X8_UNORM, 32: Z32_UNORM), 0 for a colour image
+ * (main/teximage.c) */
+int fgl_tex_image_depth_bits(const struct fgl_texture_image *img);
+
+/* main/texdepth.c: the images of GL_DEPTH_COMPONENT textures
+ * (ARB_depth_texture) as the oracle stores and reads them back */
+/* Unpacks a w x h GL_DEPTH_COMPONENT (or GL_DEPTH_STENCIL: its depth)
+ * client image of `type` into texels (x, y) of slice z of img; false for
+ * a type it does not convert. */
+bool fgl_tex_store_depth(struct fgl_context *ctx, struct fgl_texture_image *img,
+                         const struct fgl_pixelstore *unpack, int x, int y, int z, int w,
+                         int h, GLenum format, GLenum type, const void *pixels);
+/* glGetTexImage(GL_DEPTH_COMPONENT, type) of slice z of img into dst */
+void fgl_tex_get_depth(struct fgl_context *ctx, const struct fgl_texture_image *img, int z,
+                       GLenum type, void *dst);
+/* glCopyTexImage / glCopyTexSubImage of the depth buffer's rectangle
+ * (x, y, w, h) (clipped to the framebuffer, GL y up) to texels
+ * (xoff, yoff) of slice zoff of img */
+void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
+                        GLint yoff, GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h);
+/* level dst of a depth texture generated from the level above, src
+ * (GL_GENERATE_MIPMAP) */
+void fgl_tex_gen_mip_depth(const struct fgl_texture_image *src, struct fgl_texture_image *dst);
+/* the sampler state of a complete depth texture (state.c update_texture,
+ * after the colour texture's) */
+void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_texture *rt);
 
 /* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
  * _CurrentTex) */

@@ -35,6 +35,7 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
       if (t->Image[l]) {
          fgl_free(t->Image[l]->Data);
          fgl_free(t->Image[l]->Store);
+         fgl_free(t->Image[l]->ZValues);
          fgl_free(t->Image[l]);
          t->Image[l] = NULL;
       }
@@ -90,6 +91,11 @@ static const struct fgl_tex_pipe_format PF_L4A4 = { 0, 0, 0, 4, 4, 0, 1, false }
 static const struct fgl_tex_pipe_format PF_L16A16 = { 0, 0, 0, 16, 16, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_I8 = { 0, 0, 0, 0, 0, 8, 1, false };
 static const struct fgl_tex_pipe_format PF_I16 = { 0, 0, 0, 0, 0, 16, 2, false };
+/* the depth formats (no colour channel; main/texdepth.c): Z16_UNORM,
+ * Z24X8_UNORM, Z32_UNORM */
+static const struct fgl_tex_pipe_format PF_Z16 = { 0, 0, 0, 0, 0, 0, 2, false };
+static const struct fgl_tex_pipe_format PF_Z24 = { 0, 0, 0, 0, 0, 0, 4, false };
+static const struct fgl_tex_pipe_format PF_Z32 = { 0, 0, 0, 0, 0, 0, 4, false };
 
 struct tex_format {
    GLint internal;
@@ -142,6 +148,11 @@ static const struct tex_format tex_formats[] = {
    { GL_RGB10_A2, GL_RGBA, &PF_RGB10A2 },
    { GL_RGBA12, GL_RGBA, &PF_RGBA16 },
    { GL_RGBA16, GL_RGBA, &PF_RGBA16 },
+   /* [S: st_format.c:format_map, DEFAULT_DEPTH_FORMATS] */
+   { GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, &PF_Z24 },
+   { GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, &PF_Z16 },
+   { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, &PF_Z24 },
+   { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, &PF_Z32 },
 };
 
 /* [S: util/format/u_format.c:util_format_fits_8unorm; llvmpipe's
@@ -154,6 +165,12 @@ bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img)
    const struct fgl_tex_pipe_format *pf = img->Format;
    return !pf || (pf->r <= 8 && pf->g <= 8 && pf->b <= 8 && pf->a <= 8 && pf->l <= 8 &&
                   pf->i <= 8);
+}
+
+int fgl_tex_image_depth_bits(const struct fgl_texture_image *img)
+{
+   const struct fgl_tex_pipe_format *pf = img->Format;
+   return pf == &PF_Z16 ? 16 : pf == &PF_Z24 ? 24 : pf == &PF_Z32 ? 32 : 0;
 }
 
 static const struct tex_format *find_format(GLint internal)
@@ -218,6 +235,13 @@ static const struct fgl_tex_pipe_format *choose_pipe_format(const struct tex_for
          return &PF_RGB5X1;
       if (type == GL_UNSIGNED_INT_2_10_10_10_REV)
          return &PF_RGB10X2;
+   } else if (in == GL_DEPTH_COMPONENT) {
+      /* st_choose_matching_format: Z_UNORM16, Z_UNORM32 (measured: every
+       * type, GL_TEXTURE_DEPTH_SIZE and the values read back) */
+      if (type == GL_UNSIGNED_SHORT)
+         return &PF_Z16;
+      if (type == GL_UNSIGNED_INT)
+         return &PF_Z32;
    } else if (type == GL_UNSIGNED_SHORT && format == (GLenum)in) {
       if (in == GL_LUMINANCE)
          return &PF_L16;
@@ -498,6 +522,7 @@ static void set_image(struct fgl_texture_object *t, GLint level,
    if (t->Image[level]) {
       fgl_free(t->Image[level]->Data);
       fgl_free(t->Image[level]->Store);
+      fgl_free(t->Image[level]->ZValues);
       fgl_free(t->Image[level]);
    }
    t->Image[level] = img;
@@ -514,11 +539,16 @@ static bool alloc_texels(struct fgl_texture_image *img)
       channel_bits(img->Format, img->BaseFormat, img->StoreBits);
       img->Store = fgl_malloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t));
    }
-   if (!img->Data || (needs_store(img->Format) && !img->Store)) {
+   if (img->BaseFormat == GL_DEPTH_COMPONENT)
+      img->ZValues = fgl_calloc(n ? n : 1, sizeof(uint32_t));   /* zeroed storage */
+   if (!img->Data || (needs_store(img->Format) && !img->Store) ||
+       (img->BaseFormat == GL_DEPTH_COMPONENT && !img->ZValues)) {
       fgl_free(img->Data);
       fgl_free(img->Store);
+      fgl_free(img->ZValues);
       img->Data = NULL;
       img->Store = NULL;
+      img->ZValues = NULL;
       return false;
    }
    uint8_t t[4];
@@ -536,6 +566,13 @@ static bool store_rect(struct fgl_context *ctx, struct fgl_texture_image *img,
    if (!pixels || w == 0 || h == 0)
       return true;
    const size_t slice = (size_t)z * (size_t)img->Height;
+   if (img->ZValues) {
+      if (!fgl_tex_store_depth(ctx, img, unpack, x, y, z, w, h, format, type, pixels)) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return false;
+      }
+      return true;
+   }
    if (img->Store) {
       /* the stored values straight from the client data: a float or
        * 16-bit source reaches a wide format without an 8-bit step */
@@ -712,6 +749,11 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
+      if (img->ZValues) {
+         fgl_tex_gen_mip_depth(src, img);   /* a depth texture: main/texdepth.c */
+         set_image(t, l, img);
+         continue;
+      }
       if (!fgl_tex_image_fits_unorm8(base) && D == 1) {
          for (int j = 0; j < h; j++)
             for (int i = 0; i < w; i++) {
@@ -812,6 +854,12 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   /* [S: teximage.c:_mesa_legal_texture_base_format_for_target] no 3D
+    * depth textures (proxies included) */
+   if (dims == 3 && tf->base == GL_DEPTH_COMPONENT) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
    const struct fgl_tex_pipe_format *pf = choose_pipe_format(tf, format, type);
    const bool dims_ok = legal_dimensions(dims, level, width, height, depth, border);
    const bool sz_ok = size_ok(dims, pf, width, height, depth);
@@ -872,6 +920,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
                      pixels)) {
       fgl_free(img->Data);
       fgl_free(img->Store);
+      fgl_free(img->ZValues);
       fgl_free(img);
       return;
    }
@@ -1075,6 +1124,10 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
     * clipped region only (teximage.c:copy_texture_sub_image): glBitmap's
     * cache is drawn first, and may be copied */
    fgl_flush_bitmap_cache(ctx);
+   if (img->ZValues) {
+      fgl_tex_copy_depth(ctx, img, xoff, yoff, zoff, x, y, w, h);   /* the depth buffer */
+      return;
+   }
    for (GLint j = 0; j < h; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (y + j));   /* y-down buffer row */
       const size_t at =
@@ -1129,8 +1182,9 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       return;
    }
    /* _mesa_get_read_renderbuffer_for_format: no colour read buffer under
-    * glReadBuffer(GL_NONE) */
-   if (ctx->Pixel.ReadBuffer == GL_NONE) {
+    * glReadBuffer(GL_NONE); a depth format reads the depth buffer */
+   if (tf->base == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
+                                      : ctx->Pixel.ReadBuffer == GL_NONE) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -1230,7 +1284,8 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
    if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, 1))
       return;
    /* _mesa_source_buffer_exists */
-   if (ctx->Pixel.ReadBuffer == GL_NONE) {
+   if (img->BaseFormat == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
+                                             : ctx->Pixel.ReadBuffer == GL_NONE) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -1314,14 +1369,23 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    const struct fgl_texture_image *img = target_object(ctx, target)->Image[level];
    if (!img || img->Width == 0 || img->Height == 0 || img->Depth == 0)
       return;
-   /* teximage_error_check: a colour image reads back as colours only */
-   if (is_depth_format(format) || is_depthstencil_format(format) ||
-       format == GL_STENCIL_INDEX || fgl_is_integer_format(format)) {
+   /* teximage_error_check: a colour image reads back as colours only, a
+    * depth image as GL_DEPTH_COMPONENT only */
+   const bool depth_image = img->BaseFormat == GL_DEPTH_COMPONENT;
+   if (depth_image ? !is_depth_format(format)
+                   : is_depth_format(format) || is_depthstencil_format(format) ||
+                        format == GL_STENCIL_INDEX || fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
    if (!pixels)
       return;
+   if (depth_image) {
+      fgl_flush_bitmap_cache(ctx);
+      for (int k = 0; k < img->Depth; k++)
+         fgl_tex_get_depth(ctx, img, k, type, pixels);
+      return;
+   }
    /* [S: st_cb_texture.c:st_GetTexSubImage] glBitmap's cache is drawn
     * first */
    fgl_flush_bitmap_cache(ctx);
@@ -1460,7 +1524,10 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
    case GL_TEXTURE_INTENSITY_SIZE:
       *v = has_channel(base, pname) ? pf->i : 0;
       return true;
-   case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_SHARED_SIZE:
+   case GL_TEXTURE_DEPTH_SIZE:
+      *v = img ? fgl_tex_image_depth_bits(img) : 0;
+      return true;
+   case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_SHARED_SIZE:
    case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_SAMPLES:
    case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: case GL_TEXTURE_BUFFER_OFFSET:
    case GL_TEXTURE_BUFFER_SIZE:
@@ -1476,7 +1543,10 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
    case GL_TEXTURE_RED_TYPE: case GL_TEXTURE_GREEN_TYPE: case GL_TEXTURE_BLUE_TYPE:
    case GL_TEXTURE_ALPHA_TYPE: case GL_TEXTURE_LUMINANCE_TYPE:
    case GL_TEXTURE_INTENSITY_TYPE: case GL_TEXTURE_DEPTH_TYPE:
-      *v = has_channel(base, pname) ? GL_UNSIGNED_NORMALIZED : GL_NONE;
+      *v = has_channel(base, pname) ||
+                 (pname == GL_TEXTURE_DEPTH_TYPE && base == GL_DEPTH_COMPONENT)
+              ? GL_UNSIGNED_NORMALIZED
+              : GL_NONE;
       return true;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);

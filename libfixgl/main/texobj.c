@@ -35,6 +35,9 @@ static void init_object(struct fgl_texture_object *t, GLuint name, GLenum target
    t->MinLod = -1000.0f;
    t->MaxLod = 1000.0f;
    t->MaxLevel = 1000;
+   t->DepthMode = GL_LUMINANCE;
+   t->CompareMode = GL_NONE;
+   t->CompareFunc = GL_LEQUAL;
 }
 
 static const GLenum index_target[FGL_TEX_TARGETS] = {
@@ -574,6 +577,40 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
    case GL_GENERATE_MIPMAP:
       t->GenerateMipmap = v != 0;   /* no flush */
       return;
+   case GL_TEXTURE_COMPARE_MODE:
+      /* ARB_shadow; GL_COMPARE_R_TO_TEXTURE is GL_COMPARE_REF_TO_TEXTURE */
+      if ((GLint)t->CompareMode == v)
+         return;
+      if (v != GL_NONE && v != GL_COMPARE_R_TO_TEXTURE) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      tex_flush(ctx);
+      t->CompareMode = (GLenum)v;
+      return;
+   case GL_TEXTURE_COMPARE_FUNC:
+      /* the eight functions (GL 1.5, EXT_shadow_funcs) */
+      if ((GLint)t->CompareFunc == v)
+         return;
+      if (v < GL_NEVER || v > GL_ALWAYS) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      tex_flush(ctx);
+      t->CompareFunc = (GLenum)v;
+      return;
+   case GL_DEPTH_TEXTURE_MODE:
+      /* ARB_depth_texture; GL_RED with ARB_texture_rg, which the oracle
+       * has */
+      if ((GLint)t->DepthMode == v)
+         return;
+      if (v != GL_LUMINANCE && v != GL_INTENSITY && v != GL_ALPHA && v != GL_RED) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      tex_flush(ctx);
+      t->DepthMode = (GLenum)v;
+      return;
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
@@ -639,6 +676,9 @@ static bool int_pname(GLenum pname)
    case GL_TEXTURE_BASE_LEVEL:
    case GL_TEXTURE_MAX_LEVEL:
    case GL_GENERATE_MIPMAP:
+   case GL_TEXTURE_COMPARE_MODE:
+   case GL_TEXTURE_COMPARE_FUNC:
+   case GL_DEPTH_TEXTURE_MODE:
       return true;
    default:
       return false;
@@ -788,6 +828,9 @@ static bool get_parameter(struct fgl_context *ctx, GLenum target, GLenum pname,
    case GL_TEXTURE_BASE_LEVEL: i[0] = t->BaseLevel; break;
    case GL_TEXTURE_MAX_LEVEL: i[0] = t->MaxLevel; break;
    case GL_GENERATE_MIPMAP: i[0] = t->GenerateMipmap; break;
+   case GL_TEXTURE_COMPARE_MODE: i[0] = (GLint)t->CompareMode; break;
+   case GL_TEXTURE_COMPARE_FUNC: i[0] = (GLint)t->CompareFunc; break;
+   case GL_DEPTH_TEXTURE_MODE: i[0] = (GLint)t->DepthMode; break;
    case GL_TEXTURE_RESIDENT: i[0] = GL_TRUE; break;
    case GL_TEXTURE_BORDER_COLOR:
       memcpy(f, t->BorderColor, 4 * sizeof(float));

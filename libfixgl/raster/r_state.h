@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 #include <time.h>
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
@@ -178,6 +179,9 @@ struct r_tex_level {
    const uint16_t *store;
    uint8_t store_bits[4];
    float store_scale[4];
+   /* a depth texture (r_texture.depth_bits): width * height depth values
+    * of depth_bits bits (r_tex_depth_value), else NULL */
+   const uint32_t *zvalues;
 };
 
 struct r_texture {
@@ -203,7 +207,34 @@ struct r_texture {
    bool float_path;
    uint8_t border_mask;
    bool lod_bias_non_zero, apply_min_lod, apply_max_lod, min_max_lod_equal;
+   /* a depth texture (GL_DEPTH_COMPONENT; main/texdepth.c
+    * fgl_update_texture_depth, sampled on the float path only,
+    * r_tex_soa.c): the bits of its format (16, 24, 32; 0 for a colour
+    * texture), the shadow comparison (compare: GL_COMPARE_R_TO_TEXTURE;
+    * compare_func: enum r_func, PIPE_FUNC_* order) and the
+    * sampler view's swizzle of GL_DEPTH_TEXTURE_MODE (depth_swizzle[c]:
+    * R_SWZ_X the value, R_SWZ_0, R_SWZ_1) */
+   uint8_t depth_bits;
+   bool compare;
+   uint8_t compare_func;
+   uint8_t depth_swizzle[4];
 };
+enum { R_SWZ_X, R_SWZ_0, R_SWZ_1 };
+
+/* A stored depth value as llvmpipe's sampler reads it [S: gallivm/
+ * lp_bld_conv.c:lp_build_unsigned_norm_to_float]: up to 24 bits
+ * (float)z * (float)(1 / (2^bits - 1)); 32 bits through the top 23, as the
+ * mantissa of 1.0 + x, minus 1, times 2^23 / (2^23 - 1). */
+static inline float r_tex_depth_value(uint32_t z, int bits)
+{
+   if (bits == 32) {
+      const uint32_t u = (z >> 9) | 0x3f800000u;
+      float f;
+      memcpy(&f, &u, 4);
+      return (f - 1.0f) * (float)(8388608.0 / 8388607.0);
+   }
+   return (float)z * (bits == 16 ? (float)(1.0 / 65535.0) : (float)(1.0 / 16777215.0));
+}
 
 /* Texture combiner state of one unit after Mesa derives it from the env
  * mode and the base format [S: main/texstate.c:calculate_derived_texenv,

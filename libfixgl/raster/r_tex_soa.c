@@ -24,6 +24,7 @@
  * of the other quad of its 8 ("pair").
  */
 #include "r_state.h"
+#include "r_blend.h"
 
 #include <math.h>
 #include <string.h>
@@ -324,6 +325,15 @@ static void texel(const struct r_texture *t, int lvl, int x, int y, int z, float
       x = y = z = 0;
    const size_t at =
       4 * (((size_t)z * (size_t)l->height + (size_t)y) * (size_t)l->width + (size_t)x);
+   if (l->zvalues) {
+      /* a depth texture: the value in every channel (the swizzle comes
+       * after the filter, r_tex_sample_soa); the border colour replaces
+       * the format's one channel, X */
+      const float d = border ? t->border_color[0]
+                             : r_tex_depth_value(l->zvalues[at / 4], t->depth_bits);
+      out[0] = out[1] = out[2] = out[3] = d;
+      return;
+   }
    if (l->store) {
       /* a format wider (or narrower) than 8 bits per channel: the stored
        * n-bit value times (float)(1 / (2^n - 1)) [S: lp_bld_conv.c:
@@ -341,6 +351,33 @@ static void texel(const struct r_texture *t, int lvl, int x, int y, int z, float
       out[c] = border && (t->border_mask >> c & 1) ? t->border_color[c] : (float)p[c] * scale;
 }
 
+/* ---- the shadow comparison [S: lp_bld_sample_soa.c:
+ * lp_build_sample_comparefunc, lp_build_masklerp, lp_build_masklerp2d] --- */
+
+/* The reference value: the coordinate after the texture's own (t of a 1D
+ * texture, r of a 2D one: ff_fragment_shader.cpp load_texture's
+ * shadow_comparator, divided by q with the others), clamped to [0, 1]
+ * as the format is unorm (lp_build_sample_common: lp_build_clamp, min then
+ * max; a NaN becomes 1). */
+static inline float shadow_ref(const struct r_texture *t, const float c[3])
+{
+   return fmax_ps(fmin_ps(c[t->dims == 1 ? 1 : 2], 1.0f), 0.0f);
+}
+
+/* p FUNC texel: ordered comparisons, NOTEQUAL unordered (C's) */
+static inline bool shadow_pass(const struct r_texture *t, float p, float texel_value)
+{
+   R_COMPARE((enum r_func)t->compare_func, p, texel_value)
+}
+
+/* lp_build_masklerp: the weight where the second texel passes plus
+ * 1 - weight where the first does */
+static inline float masklerp(float w, bool m0, bool m1)
+{
+   const float a = m1 ? w : 0.0f, b = m0 ? 1.0f - w : 0.0f;
+   return a + b;
+}
+
 /* lp_build_sample_image_nearest */
 static void image_nearest(const struct r_texture *t, int lvl, const float c[3], float out[4])
 {
@@ -349,6 +386,10 @@ static void image_nearest(const struct r_texture *t, int lvl, const float c[3], 
    const int y = t->dims > 1 ? wrap_nearest(c[1], l->height, t->pot_t, t->wrap_t) : 0;
    const int z = t->dims > 2 ? wrap_nearest(c[2], l->depth, t->pot_r, t->wrap_r) : 0;
    texel(t, lvl, x, y, z, out);
+   if (t->compare) {
+      const float v = shadow_pass(t, shadow_ref(t, c), out[0]) ? 1.0f : 0.0f;
+      out[0] = out[1] = out[2] = out[3] = v;
+   }
 }
 
 /* lp_build_sample_image_linear; `nearest` (a pixel lp_build_sample_mipmap_
@@ -373,6 +414,21 @@ static void image_linear(const struct r_texture *t, int lvl, bool nearest, const
    float n00[4], n01[4];
    texel(t, lvl, x0, y0, z0, n00);
    texel(t, lvl, x1, y0, z0, n01);
+   if (t->compare) {
+      /* the four (two) comparisons filtered by the weights (PCF); depth
+       * textures are 1D or 2D */
+      const float p = shadow_ref(t, c);
+      float v = masklerp(ws, shadow_pass(t, p, n00[0]), shadow_pass(t, p, n01[0]));
+      if (t->dims > 1) {
+         float n10[4], n11[4];
+         texel(t, lvl, x0, y1, z0, n10);
+         texel(t, lvl, x1, y1, z0, n11);
+         const float v1 = masklerp(ws, shadow_pass(t, p, n10[0]), shadow_pass(t, p, n11[0]));
+         v = lerp_f(wt, v, v1);
+      }
+      out[0] = out[1] = out[2] = out[3] = v;
+      return;
+   }
    if (t->dims == 1) {
       for (int k = 0; k < 4; k++)
          out[k] = lerp_f(ws, n00[k], n01[k]);
@@ -479,4 +535,12 @@ void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float q
       sample_float(t, c, quad, pair, out);
    else
       sample_aos_lod(t, c, quad, out);
+   if (t->depth_bits) {
+      /* the sampler view's swizzle of GL_DEPTH_TEXTURE_MODE
+       * [S: st_sampler_view.c:compute_texture_format_swizzle] */
+      const float v = out[0];
+      for (int k = 0; k < 4; k++)
+         out[k] = t->depth_swizzle[k] == R_SWZ_X ? v : t->depth_swizzle[k] == R_SWZ_1 ? 1.0f
+                                                                                      : 0.0f;
+   }
 }
