@@ -211,76 +211,83 @@ static int material_texture(struct fv_model *m, const char *model, const struct 
 
 /* ---- loading ---------------------------------------------------------------- */
 
-/* Why assimp could not load a model it can parse without post-processing:
- * vertices but no faces at all, or points and lines only.  Returns 1 when
- * it said so. */
-static int explain_empty(const char *path)
-{
-   const struct aiScene *raw = aiImportFile(path, 0);
-   if (!raw)
-      return 0;
-   unsigned long verts = 0, faces = 0, tris = 0;
-   for (unsigned i = 0; i < raw->mNumMeshes; i++) {
-      verts += raw->mMeshes[i]->mNumVertices;
-      faces += raw->mMeshes[i]->mNumFaces;
-      if (raw->mMeshes[i]->mPrimitiveTypes & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON))
-         tris += raw->mMeshes[i]->mNumFaces;
-   }
-   aiReleaseImport(raw);
-   if (verts == 0)
-      return 0;   /* nothing in it at all: not a model */
-   if (faces == 0)
-      fprintf(stderr, "fixgl-view: the model %s is empty: %lu vertices and no faces\n", path,
-              verts);
-   else if (tris == 0)
-      fprintf(stderr, "fixgl-view: the model %s is empty: %lu vertices, %lu points and lines, "
-                      "no triangles or polygons\n", path, verts, faces);
-   return faces == 0 || tris == 0;
-}
-
-/* Non-finite vertex coordinates: counted once per position (assimp may
- * split a vertex), the first few named.  Returns 0 when there are none. */
-static int check_finite(const struct fv_model *m, const char *path)
+/* What the file holds before any post-processing, which would hide what
+ * is wrong with it (assimp's vertex joining merges a NaN vertex into a
+ * neighbour, and a model without faces ends as "No output meshes: all
+ * meshes are orphaned ..."): a model without faces, or with points and
+ * lines only, is empty; a vertex with a NaN or infinite coordinate is
+ * counted (once per position) and the first few named with the face that
+ * uses them.  Returns 0, or -1 with the message on stderr. */
+static int check_raw(const struct aiScene *raw, const char *path)
 {
    enum { SHOWN = 4 };
-   unsigned long count = 0;
-   const float *first[SHOWN];
-   int first_mesh[SHOWN];
-   unsigned first_vert[SHOWN];
+   unsigned long verts = 0, faces = 0, tris = 0, bad = 0;
    float *seen = NULL;
-   size_t nseen = 0, cap = 0;
-   for (int i = 0; i < m->num_meshes; i++)
-      for (unsigned v = 0; v < m->meshes[i].num_verts; v++) {
-         const float *p = &m->meshes[i].pos[v * 3];
+   size_t cap = 0;
+   char where[SHOWN][160];
+   for (unsigned i = 0; i < raw->mNumMeshes; i++) {
+      const struct aiMesh *am = raw->mMeshes[i];
+      verts += am->mNumVertices;
+      faces += am->mNumFaces;
+      if (am->mPrimitiveTypes & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON))
+         tris += am->mNumFaces;
+      for (unsigned v = 0; v < am->mNumVertices; v++) {
+         const float p[3] = { am->mVertices[v].x, am->mVertices[v].y, am->mVertices[v].z };
          if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))
             continue;
          int dup = 0;
-         for (size_t k = 0; k < nseen && !dup; k++)
-            dup = !memcmp(&seen[k * 3], p, 3 * sizeof(float));
+         for (unsigned long k = 0; k < bad && !dup; k++)
+            dup = !memcmp(&seen[k * 3], p, sizeof p);
          if (dup)
             continue;
-         if (nseen == cap) {
+         if (bad == cap) {
             cap = cap ? cap * 2 : 16;
             float *g = realloc(seen, cap * 3 * sizeof(float));
-            if (!g)
-               break;
+            if (!g) {
+               free(seen);
+               fprintf(stderr, "fixgl-view: out of memory loading %s\n", path);
+               return -1;
+            }
             seen = g;
          }
-         memcpy(&seen[nseen++ * 3], p, 3 * sizeof(float));
-         if (count < SHOWN)
-            first[count] = p, first_mesh[count] = i, first_vert[count] = v;
-         count++;
+         memcpy(&seen[bad * 3], p, sizeof p);
+         if (bad < SHOWN) {
+            /* the first face that uses it (1-based, in the mesh's order) */
+            unsigned face = 0;
+            for (unsigned t = 0; t < am->mNumFaces && !face; t++)
+               for (unsigned c = 0; c < am->mFaces[t].mNumIndices && !face; c++)
+                  if (am->mFaces[t].mIndices[c] == v)
+                     face = t + 1;
+            char pos[96];
+            snprintf(pos, sizeof pos, "(%g, %g, %g)", p[0], p[1], p[2]);
+            if (face)
+               snprintf(where[bad], sizeof where[bad], "%s in face %u of mesh %u", pos, face, i);
+            else
+               snprintf(where[bad], sizeof where[bad], "%s, vertex %u of mesh %u (in no face)", pos,
+                        v, i);
+         }
+         bad++;
       }
+   }
    free(seen);
-   if (!count)
-      return 0;
-   fprintf(stderr, "fixgl-view: the model %s has %lu %s with NaN or infinite coordinates:", path,
-           count, count == 1 ? "vertex" : "vertices");
-   for (unsigned long k = 0; k < count && k < SHOWN; k++)
-      fprintf(stderr, "%s mesh %d vertex %u (%g, %g, %g)", k ? "," : "", first_mesh[k],
-              first_vert[k], first[k][0], first[k][1], first[k][2]);
-   fprintf(stderr, "%s\n", count > SHOWN ? ", ..." : "");
-   return -1;
+   if (faces == 0) {
+      fprintf(stderr, "fixgl-view: the model %s is empty: %lu vertices and no faces\n", path, verts);
+      return -1;
+   }
+   if (tris == 0) {
+      fprintf(stderr, "fixgl-view: the model %s is empty: %lu vertices, %lu points and lines, "
+                      "no triangles or polygons\n", path, verts, faces);
+      return -1;
+   }
+   if (bad) {
+      fprintf(stderr, "fixgl-view: the model %s has %lu %s with NaN or infinite coordinates:", path,
+              bad, bad == 1 ? "vertex" : "vertices");
+      for (unsigned long k = 0; k < bad && k < SHOWN; k++)
+         fprintf(stderr, "%s %s", k ? ";" : "", where[k]);
+      fprintf(stderr, "%s\n", bad > SHOWN ? "; ..." : "");
+      return -1;
+   }
+   return 0;
 }
 
 /* --normals flat: every triangle gets vertices of its own with its face's
@@ -355,15 +362,25 @@ int fv_model_load(struct fv_model *m, const char *path, enum fv_normals normals)
    aiSetImportPropertyFloat(props, AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, max_angle);
    aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-   const struct aiScene *sc = aiImportFileExWithProperties(path, flags, NULL, props);
+   /* read as the file is, checked, then post-processed */
+   const struct aiScene *sc = aiImportFileExWithProperties(path, 0, NULL, props);
    aiReleasePropertyStore(props);
    if (!sc) {
-      /* assimp's own words for a model without faces ("No output meshes:
-       * all meshes are orphaned ...") say nothing to a user */
-      char why[1024];
-      snprintf(why, sizeof why, "%s", aiGetErrorString());
-      if (!explain_empty(path))
-         fprintf(stderr, "fixgl-view: cannot load the model %s: %s\n", path, why);
+      fprintf(stderr, "fixgl-view: cannot load the model %s: %s\n", path, aiGetErrorString());
+      return -1;
+   }
+   if (sc->mNumMeshes == 0) {
+      fprintf(stderr, "fixgl-view: cannot load the model %s: no meshes in it\n", path);
+      aiReleaseImport(sc);
+      return -1;
+   }
+   if (check_raw(sc, path) != 0) {
+      aiReleaseImport(sc);
+      return -1;
+   }
+   sc = aiApplyPostProcessing(sc, flags);   /* releases the scene when it fails */
+   if (!sc) {
+      fprintf(stderr, "fixgl-view: cannot load the model %s: %s\n", path, aiGetErrorString());
       return -1;
    }
 
@@ -439,10 +456,6 @@ int fv_model_load(struct fv_model *m, const char *path, enum fv_normals normals)
    }
    if (m->num_tris == 0) {
       fprintf(stderr, "fixgl-view: the model %s is empty: no triangles\n", path);
-      fv_model_free(m);
-      return -1;
-   }
-   if (check_finite(m, path) != 0) {
       fv_model_free(m);
       return -1;
    }
