@@ -1006,8 +1006,13 @@ static int run_window(void)
 
 static void print_info(void)
 {
-   printf("model: %s: %d meshes, %u triangles, bounding sphere centre (%g, %g, %g) radius %g\n",
-          A.model_path, A.model.num_meshes, A.model.num_tris, A.model.center[0],
+   int coloured = 0;
+   for (int i = 0; i < A.model.num_meshes; i++)
+      coloured += A.model.meshes[i].col != NULL;
+   printf("model: %s: %d meshes (%d with per-vertex colours), %d textures, %u triangles, "
+          "bounding sphere centre (%g, %g, %g) radius %g\n",
+          A.model_path, A.model.num_meshes, coloured, A.model.num_textures, A.model.num_tris,
+          A.model.center[0],
           A.model.center[1], A.model.center[2], A.model.radius);
    printf("fixgl: %s, %s; GL_WIN_phong_shading %s, GL_FIXGL_cook_torrance %s\n",
           (const char *)A.gl.GetString(GL_RENDERER), (const char *)A.gl.GetString(GL_VERSION),
