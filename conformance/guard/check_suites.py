@@ -39,12 +39,14 @@ REQUIRED = {
                   "conformance-random-raster", "conformance-random-tex",
                   "conformance-random-shading", "conform-harness-selftest",
                   "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
-                  "fuzz-differential-short"},
+                  "fuzz-differential-short", "conform-report"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},
         "tests": {"glut-lit", "glut-menus", "glut-text", "glut-api", "glut-window",
-                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat"},
+                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat",
+                  "view-window-textured", "view-globe-obj-flat-normals-file",
+                  "view-colors-ply-smooth-normals-file", "view-bad-models", "view-progress"},
     },
     "glx": {
         "suites": {"glx"},

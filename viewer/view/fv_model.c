@@ -128,6 +128,10 @@ static char *texture_path(const struct aiMaterial *am, enum aiTextureType type, 
       return NULL;
    memcpy(p, dir, dn);
    memcpy(p + dn, s.data, s.length + 1);
+   /* an MTL written on Windows separates directories with backslashes */
+   for (char *c = p + dn; *c; c++)
+      if (*c == '\\')
+         *c = '/';
    return p;
 }
 
