@@ -17,6 +17,8 @@
  *                           images written through OpenImageIO
  *   colors.ply              a bumpy sphere with per-vertex colours (binary
  *                           PLY, uchar red green blue), no normals
+ *   rgbcube.obj             the RGB colour cube: per-vertex colours in OBJ's
+ *                           "v x y z r g b" form, quads, no normals, no MTL
  *
  *   gen-models DIR
  */
@@ -495,6 +497,24 @@ static void colors_ply(const char *dir)
    close_out(f);
 }
 
+/* ---- rgbcube.obj ---------------------------------------------------------- */
+
+static void rgbcube_obj(const char *dir)
+{
+   FILE *f = open_out(dir, "rgbcube.obj", "w");
+   fprintf(f, "# fixgl-view: the RGB colour cube, a colour per vertex (v x y z r g b)\no rgbcube\n");
+   for (int i = 0; i < 8; i++) {
+      const int r = i & 1, g = (i >> 1) & 1, b = (i >> 2) & 1;
+      fprintf(f, "v %d %d %d %d %d %d\n", 2 * r - 1, 2 * g - 1, 2 * b - 1, r, g, b);
+   }
+   /* counter-clockwise from outside; vertex i + 1 is (r, g, b) = bits of i */
+   static const int q[6][4] = { { 1, 3, 7, 5 }, { 0, 4, 6, 2 }, { 2, 6, 7, 3 },
+                                { 0, 1, 5, 4 }, { 4, 5, 7, 6 }, { 0, 2, 3, 1 } };
+   for (int i = 0; i < 6; i++)
+      fprintf(f, "f %d %d %d %d\n", q[i][0] + 1, q[i][1] + 1, q[i][2] + 1, q[i][3] + 1);
+   close_out(f);
+}
+
 int main(int argc, char **argv)
 {
    if (argc != 2) {
@@ -507,5 +527,6 @@ int main(int argc, char **argv)
    lowpoly_obj(argv[1]);
    globe_obj(argv[1]);
    colors_ply(argv[1]);
+   rgbcube_obj(argv[1]);
    return 0;
 }
