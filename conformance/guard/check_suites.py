@@ -41,14 +41,16 @@ REQUIRED = {
                   "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
                   "fuzz-differential-short", "glu-quadric-textured", "glu-mipmap2d-rgb",
                   "glu-scale-image", "glu-tess-winding", "glu-nurbs-trim", "glu-gl-errors",
-                  "glu-scene-list"},
+                  "glu-scene-list", "conform-report"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},
         "tests": {"glut-lit", "glut-menus", "glut-text", "glut-api", "glut-window",
                   "glut-freeglut", "glut-freeglut-demo", "glut-glu", "glut-light",
                   "glut-cylinder-vs-freeglut",
-                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat"},
+                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat",
+                  "view-window-textured", "view-globe-obj-flat-normals-file",
+                  "view-colors-ply-smooth-normals-file", "view-bad-models", "view-progress"},
     },
     "glx": {
         "suites": {"glx"},

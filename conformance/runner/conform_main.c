@@ -33,10 +33,11 @@ struct options {
     int jobs, list_only;
 };
 
-/* Known differences: case names (first word of each line; '#' comments).
- * They are reported as usual; only the exit status treats them apart. */
+/* Known differences: case names (first word of each line; '#' comments)
+ * and their reasons (the rest of the line).  They are reported as usual,
+ * with the reason; only the exit status treats them apart. */
 struct known {
-    char **names;
+    char **names, **reasons;
     size_t n;
 };
 
@@ -52,30 +53,40 @@ struct ctx {
 
 static int load_known(const char *path, struct known *k)
 {
-    char line[512];
+    char *line = NULL;
+    size_t cap = 0;
     FILE *f = fopen(path, "r");
     memset(k, 0, sizeof *k);
     if (!f) {
         fprintf(stderr, "fixgl-conform: cannot read %s\n", path);
         return 0;
     }
-    while (fgets(line, sizeof line, f)) {
+    /* whole lines (the reasons run long) */
+    while (getline(&line, &cap, f) >= 0) {
         char name[256];
-        if (line[0] == '#' || sscanf(line, "%255s", name) != 1)
+        int end = 0;
+        if (line[0] == '#' || sscanf(line, " %255s%n", name, &end) != 1)
             continue;
+        char *reason = line + end;
+        reason += strspn(reason, " \t");
+        reason[strcspn(reason, "\r\n")] = '\0';
         k->names = realloc(k->names, (k->n + 1) * sizeof *k->names);
-        k->names[k->n++] = dup_str(name);
+        k->reasons = realloc(k->reasons, (k->n + 1) * sizeof *k->reasons);
+        k->names[k->n] = dup_str(name);
+        k->reasons[k->n++] = dup_str(reason);
     }
+    free(line);
     fclose(f);
     return 1;
 }
 
-static int is_known(const struct known *k, const char *name)
+/* The case's reason in the list ("" when it has none), or NULL. */
+static const char *known_reason(const struct known *k, const char *name)
 {
     for (size_t i = 0; k && i < k->n; i++)
         if (strcmp(k->names[i], name) == 0)
-            return 1;
-    return 0;
+            return k->reasons[i];
+    return NULL;
 }
 
 static void usage(FILE *f)
@@ -340,6 +351,7 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
     fc_compare_case(item->side[0].data, item->side[0].len, item->side[1].data, item->side[1].len,
                     &res, fc_report_frame, e);
     status = fc_report_end_case(e, &res);
+    fc_report_set_known(e, known_reason(c->known, item->name));
 
     pad = 56 - (int)strlen(item->name);
     pad = pad < 2 ? 2 : pad > 63 ? 63 : pad;
@@ -362,7 +374,7 @@ static void on_ready(void *ud, struct fc_item *item, size_t index)
         printf("  (%d documented difference%s)", res.ndocumented, res.ndocumented > 1 ? "s" : "");
     if (item->replay && strcmp(status, "exact") != 0)
         printf("  replay: fixgl-conform %s", item->replay);
-    if (is_known(c->known, item->name)) {
+    if (known_reason(c->known, item->name)) {
         if (fc_status_passes(status)) {
             printf("  (listed as a known difference: remove it from the list)");
             c->stale++;
@@ -418,10 +430,12 @@ int main(int argc, char **argv)
         }
         return 0;
     }
-    struct known known = { NULL, 0 };
+    struct known known = { NULL, NULL, 0 };
     if (o.known && !load_known(o.known, &known))
         return 2;
     c.report = fc_report_open(o.report);
+    if (c.report && o.known)
+        fc_report_set_known_file(c.report, o.known);
     c.total = n;
     c.known = o.known ? &known : NULL;
     c.unexpected = c.stale = c.expected = 0;
@@ -457,9 +471,12 @@ int main(int argc, char **argv)
         free(info[s][0]);
         free(info[s][1]);
     }
-    for (size_t i = 0; i < known.n; i++)
+    for (size_t i = 0; i < known.n; i++) {
         free(known.names[i]);
+        free(known.reasons[i]);
+    }
     free(known.names);
+    free(known.reasons);
     if (rc != 0 || bad < 0)
         return 2;
     if (o.known)

@@ -24,6 +24,7 @@ struct fc_report_entry {
     char *name, *tags, *replay, *file_stem;
     struct fc_case_result res;
     const char *status;
+    char *known_reason;         /* the known-differences entry, or NULL */
     int nframes;
     struct frame_images frames[MAX_FRAME_IMAGES];
 };
@@ -31,6 +32,7 @@ struct fc_report_entry {
 struct fc_report {
     char *dir;
     char *renderer[2], *version[2];
+    char *known_file;           /* --known, or NULL */
     struct fc_report_entry **entries;
     size_t n, cap;
 };
@@ -109,6 +111,18 @@ void fc_report_set_renderers(struct fc_report *r, const char *oracle_renderer,
         r->renderer[i] = dup_str(s[2 * i]);
         r->version[i] = dup_str(s[2 * i + 1]);
     }
+}
+
+void fc_report_set_known_file(struct fc_report *r, const char *path)
+{
+    free(r->known_file);
+    r->known_file = path ? dup_str(path) : NULL;
+}
+
+void fc_report_set_known(struct fc_report_entry *e, const char *reason)
+{
+    free(e->known_reason);
+    e->known_reason = reason ? dup_str(reason) : NULL;
 }
 
 struct fc_report_entry *fc_report_begin_case(struct fc_report *r, const char *name,
@@ -528,6 +542,104 @@ static void html_image(FILE *f, const struct fc_report_entry *e, int index, cons
             rel, w * scale, h * scale, caption);
 }
 
+static const char *known_name(const struct fc_report *r)
+{
+    const char *slash = r->known_file ? strrchr(r->known_file, '/') : NULL;
+    return slash ? slash + 1 : r->known_file ? r->known_file : "known-differences.txt";
+}
+
+/* Why a case that does not pass differs: its reason in the list of known
+ * differences, or "unlisted" (red).  A listed case that passes says it
+ * should leave the list.  long_form: a paragraph of the case's section,
+ * else a cell of the table of all cases. */
+static void html_reason(FILE *f, const struct fc_report_entry *e, int long_form)
+{
+    const int passes = fc_status_passes(e->status);
+    if (passes && !e->known_reason)
+        return;
+    if (long_form)
+        fputs("<p class=\"reason\">", f);
+    if (passes) {
+        fputs("<span class=\"unlisted\">listed in ", f);
+        html_str(f, known_name(e->report));
+        fputs(" but passes: remove it from the list</span>", f);
+    } else if (!e->known_reason) {
+        fputs("<span class=\"unlisted\">unlisted</span>", f);
+        if (long_form) {
+            fputs(": not in ", f);
+            html_str(f, known_name(e->report));
+            fputs(e->report->known_file ? "" : " (the run was given no --known list)", f);
+        }
+    } else {
+        if (long_form) {
+            fputs("known difference (", f);
+            html_str(f, known_name(e->report));
+            fputs("): ", f);
+        }
+        html_str(f, e->known_reason[0] ? e->known_reason : "(listed without a reason)");
+    }
+    if (long_form)
+        fputs("</p>\n", f);
+}
+
+/* Anchors of the summary's links: the first row of each tag in the table
+ * of all cases holds an anchor tag-TAG; #tag-TAG:STATUS filters by both. */
+static void html_tag_link(FILE *f, const char *tag, const char *status, const char *text)
+{
+    fputs("<a href=\"#tag-", f);
+    html_str(f, tag);
+    if (status)
+        fprintf(f, ":%s", status);
+    fputs("\">", f);
+    html_str(f, text);
+    fputs("</a>", f);
+}
+
+static void html_count(FILE *f, const char *tag, const char *status, int n, const char *cls)
+{
+    char num[16];
+    snprintf(num, sizeof num, "%d", n);
+    fprintf(f, "<td%s%s%s>", cls && n ? " class=\"" : "", cls && n ? cls : "", cls && n ? "\"" : "");
+    if (n)
+        html_tag_link(f, tag, status, num);
+    else
+        fputs("0", f);
+    fputs("</td>", f);
+}
+
+/* The filter of the table of all cases: by tag and status, from the
+ * controls or from the address's #tag-TAG[:STATUS] (the summary's links);
+ * plain JavaScript, in the page. */
+static const char filter_script[] =
+    "<script>\n"
+    "function fcFilter() {\n"
+    "  var tag = document.getElementById('filter-tag').value;\n"
+    "  var st = document.getElementById('filter-status').value, shown = 0;\n"
+    "  var rows = document.querySelectorAll('#all-cases tr[data-status]');\n"
+    "  for (var i = 0; i < rows.length; i++) {\n"
+    "    var r = rows[i], tags = ' ' + r.getAttribute('data-tags') + ' ';\n"
+    "    var s = r.getAttribute('data-status'), u = r.getAttribute('data-known') === 'unlisted';\n"
+    "    var ok = (!tag || tags.indexOf(' ' + tag + ' ') >= 0) &&\n"
+    "             (!st || s === st || (st === 'not-passing' && s !== 'exact' && s !== 'agrees') ||\n"
+    "              (st === 'unlisted' && u));\n"
+    "    r.style.display = ok ? '' : 'none';\n"
+    "    shown += ok ? 1 : 0;\n"
+    "  }\n"
+    "  document.getElementById('filter-count').textContent = shown + ' of ' + rows.length + ' cases shown';\n"
+    "}\n"
+    "function fcFromHash() {\n"
+    "  var m = /^#tag-([^:]*)(?::(.*))?$/.exec(decodeURIComponent(location.hash));\n"
+    "  if (!m) return;\n"
+    "  document.getElementById('filter-tag').value = m[1];\n"
+    "  document.getElementById('filter-status').value = m[2] || '';\n"
+    "  fcFilter();\n"
+    "  document.getElementById('all-cases').scrollIntoView();\n"
+    "}\n"
+    "window.addEventListener('hashchange', fcFromHash);\n"
+    "fcFromHash();\n"
+    "fcFilter();\n"
+    "</script>\n";
+
 static void html_case(FILE *f, const struct fc_report_entry *e)
 {
     const struct fc_case_result *c = &e->res;
@@ -535,7 +647,9 @@ static void html_case(FILE *f, const struct fc_report_entry *e)
     html_str(f, e->file_stem);
     fprintf(f, "\"><h2 class=\"%s\">", e->status);
     html_str(f, e->name);
-    fprintf(f, " &mdash; %s</h2>\n<p>tags: ", e->status);
+    fprintf(f, " &mdash; %s</h2>\n", e->status);
+    html_reason(f, e, 1);
+    fputs("<p>tags: ", f);
     html_str(f, e->tags);
     fprintf(f, "<br>frames %d, pixels %" PRIu64 ", <b>mismatched pixels %" PRIu64 "</b>, max channel diff %d, "
             "depth mismatches %" PRIu64 " of %" PRIu64 ", error mismatches %d, query mismatches %d, "
@@ -597,7 +711,8 @@ static int write_html(const struct fc_report *r)
           "border:1px solid #888;background:#222}figure{display:inline-block;margin:0 1em 1em 0}"
           "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
           "td:first-child{text-align:left}.differs{color:#b60}.error{color:#c00}.exact{color:#080}"
-          ".agrees{color:#06a}.blank{color:#a0a}"
+          ".agrees{color:#06a}.blank{color:#a0a}.unlisted{color:#d00;font-weight:bold}"
+          ".reason{font-style:italic}td.reason{text-align:left;font-size:smaller}"
           "section{border-top:1px solid #ccc}.notes{font-family:monospace}</style></head><body>\n"
           "<h1>fixgl conformance report</h1>\n<p>oracle: <b>", f);
     html_str(f, r->renderer[0] ? r->renderer[0] : "?");
@@ -609,12 +724,33 @@ static int write_html(const struct fc_report *r)
     html_str(f, r->version[1] ? r->version[1] : "?");
     fputs("</p>\n<p>Heat maps: matching pixels are the oracle image dimmed; differing pixels go from "
           "yellow (difference 1) through red to magenta (255), log scale. Depth heat maps use a "
-          "24-bit scale.</p>\n<table><tr><th>tag</th><th>cases</th><th>exact</th><th>agrees</th>"
-          "<th>differs</th><th>blank</th><th>error</th><th>blank, allowed</th></tr>\n", f);
-    for (size_t j = 0; j < nt; j++)
-        fprintf(f, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td><td>%d</td>"
-                "<td>%d</td></tr>\n", t[j].tag, t[j].cases, t[j].exact, t[j].agrees, t[j].differs,
-                t[j].blank, t[j].error, t[j].blank_allowed);
+          "24-bit scale.</p>\n", f);
+    fputs("<p>Known differences: ", f);
+    if (r->known_file)
+        html_str(f, r->known_file);
+    else
+        fputs("none given (--known)", f);
+    fputs("; a case that does not pass shows its reason from that list, or "
+          "<span class=\"unlisted\">unlisted</span>. Each tag and count links to the tag's rows "
+          "in the <a href=\"#all-cases\">table of all cases</a>.</p>\n"
+          "<table id=\"summary\"><tr><th>tag</th><th>cases</th><th>exact</th><th>agrees</th>"
+          "<th>differs</th><th>blank</th><th>error</th><th>unlisted</th><th>blank, allowed</th></tr>\n", f);
+    for (size_t j = 0; j < nt; j++) {
+        int unlisted = 0;
+        for (size_t i = 0; i < r->n; i++)
+            unlisted += !fc_status_passes(r->entries[i]->status) && !r->entries[i]->known_reason &&
+                        has_tag_word(r->entries[i]->tags, t[j].tag, strlen(t[j].tag));
+        fputs("<tr><td>", f);
+        html_tag_link(f, t[j].tag, NULL, t[j].tag);
+        fprintf(f, "</td><td>%d</td>", t[j].cases);
+        html_count(f, t[j].tag, "exact", t[j].exact, "exact");
+        html_count(f, t[j].tag, "agrees", t[j].agrees, "agrees");
+        html_count(f, t[j].tag, "differs", t[j].differs, "differs");
+        html_count(f, t[j].tag, "blank", t[j].blank, "blank");
+        html_count(f, t[j].tag, "error", t[j].error, "error");
+        html_count(f, t[j].tag, "unlisted", unlisted, "unlisted");
+        fprintf(f, "<td>%d</td></tr>\n", t[j].blank_allowed);
+    }
     fputs("</table>\n<p><span class=\"blank\">blank</span>: a case whose every frame shows a cleared "
           "buffer (every pixel alike, every depth value alike) on both sides compares no drawing; "
           "it fails like a difference unless its table entry declares <code>draws_nothing</code> "
@@ -668,10 +804,41 @@ static int write_html(const struct fc_report *r)
         }
         fputs("</table>\n", f);
     }
-    fputs("<h2>All cases</h2>\n<table><tr><th>case</th><th>status</th><th>mismatched pixels</th></tr>\n", f);
+    fputs("<h2>All cases</h2>\n<p class=\"filter\"><label>tag <select id=\"filter-tag\" "
+          "onchange=\"fcFilter()\"><option value=\"\">all</option>", f);
+    for (size_t j = 0; j < nt; j++) {
+        fputs("<option>", f);
+        html_str(f, t[j].tag);
+        fputs("</option>", f);
+    }
+    fputs("</select></label> <label>status <select id=\"filter-status\" onchange=\"fcFilter()\">"
+          "<option value=\"\">all</option><option>exact</option><option>agrees</option>"
+          "<option>differs</option><option>blank</option><option>error</option>"
+          "<option value=\"not-passing\">not passing</option>"
+          "<option value=\"unlisted\">unlisted</option></select></label> "
+          "<span id=\"filter-count\"></span></p>\n"
+          "<table id=\"all-cases\"><tr><th>case</th><th>tags</th><th>status</th>"
+          "<th>mismatched pixels</th><th>reason</th></tr>\n", f);
+    size_t first[64];
+    for (size_t j = 0; j < nt; j++) {
+        first[j] = 0;
+        while (first[j] < r->n && !has_tag_word(r->entries[first[j]]->tags, t[j].tag, strlen(t[j].tag)))
+            first[j]++;
+    }
     for (size_t i = 0; i < r->n; i++) {
         const struct fc_report_entry *e = r->entries[i];
-        fputs("<tr><td>", f);
+        fputs("<tr data-tags=\"", f);
+        html_str(f, e->tags);
+        fprintf(f, "\" data-status=\"%s\" data-known=\"%s\"><td>", e->status,
+                fc_status_passes(e->status) ? "" : e->known_reason ? "listed" : "unlisted");
+        /* the first row of each of its tags holds the tag's anchor */
+        for (size_t j = 0; j < nt; j++) {
+            if (first[j] == i) {
+                fputs("<a id=\"tag-", f);
+                html_str(f, t[j].tag);
+                fputs("\"></a>", f);
+            }
+        }
         if (strcmp(e->status, "exact") != 0) {
             fputs("<a href=\"#", f);
             html_str(f, e->file_stem);
@@ -681,10 +848,16 @@ static int write_html(const struct fc_report *r)
         } else {
             html_str(f, e->name);
         }
-        fprintf(f, "</td><td class=\"%s\">%s</td><td>%" PRIu64 "</td></tr>\n", e->status, e->status,
-                e->res.mismatched_pixels);
+        fputs("</td><td style=\"text-align:left\">", f);
+        html_str(f, e->tags);
+        fprintf(f, "</td><td class=\"%s\">%s</td><td>%" PRIu64 "</td><td class=\"reason\">", e->status,
+                e->status, e->res.mismatched_pixels);
+        html_reason(f, e, 0);
+        fputs("</td></tr>\n", f);
     }
-    fputs("</table>\n</body></html>\n", f);
+    fputs("</table>\n", f);
+    fputs(filter_script, f);
+    fputs("</body></html>\n", f);
     return fclose(f) == 0;
 }
 
@@ -696,7 +869,7 @@ int fc_report_finish(struct fc_report *r)
     for (size_t i = 0; i < r->n; i++) {
         struct fc_report_entry *e = r->entries[i];
         bad += !fc_status_passes(e->status);
-        free(e->name); free(e->tags); free(e->replay); free(e->file_stem);
+        free(e->name); free(e->tags); free(e->replay); free(e->file_stem); free(e->known_reason);
         fc_result_free(&e->res);
         free(e);
     }
@@ -705,6 +878,7 @@ int fc_report_finish(struct fc_report *r)
         free(r->version[i]);
     }
     free(r->entries);
+    free(r->known_file);
     free(r->dir);
     free(r);
     return ok ? bad : -1;

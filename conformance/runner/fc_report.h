@@ -25,6 +25,14 @@ void fc_report_set_renderers(struct fc_report *r, const char *oracle_renderer,
 struct fc_report_entry *fc_report_begin_case(struct fc_report *r, const char *name,
                                              const char *tags, const char *replay);
 
+/* The list of known differences the run was given (its path, shown in the
+ * report); without one, every differing case is "unlisted". */
+void fc_report_set_known_file(struct fc_report *r, const char *path);
+
+/* The case's entry in that list: its reason (the text after the name, ""
+ * when the line has none), or NULL when it is not listed. */
+void fc_report_set_known(struct fc_report_entry *e, const char *reason);
+
 /* fc_frame_cb for fc_compare_case (ud = the entry): writes the PNGs of a
  * differing frame. */
 void fc_report_frame(void *entry, int index, const struct fc_frame_view *oracle,

@@ -41,6 +41,18 @@
    X(void, VertexPointer, (GLint size, GLenum type, GLsizei stride, const GLvoid *p)) \
    X(void, NormalPointer, (GLenum type, GLsizei stride, const GLvoid *p))           \
    X(void, DrawElements, (GLenum mode, GLsizei count, GLenum type, const GLvoid *i)) \
+   X(void, TexCoordPointer, (GLint size, GLenum type, GLsizei stride, const GLvoid *p)) \
+   X(void, ColorPointer, (GLint size, GLenum type, GLsizei stride, const GLvoid *p)) \
+   X(void, ColorMaterial, (GLenum face, GLenum mode))                               \
+   X(void, GenTextures, (GLsizei n, GLuint *textures))                              \
+   X(void, DeleteTextures, (GLsizei n, const GLuint *textures))                     \
+   X(void, BindTexture, (GLenum target, GLuint texture))                            \
+   X(void, TexParameteri, (GLenum target, GLenum pname, GLint param))               \
+   X(void, TexEnvi, (GLenum target, GLenum pname, GLint param))                     \
+   X(void, PixelStorei, (GLenum pname, GLint param))                                \
+   X(void, TexImage2D, (GLenum target, GLint level, GLint internal, GLsizei w,      \
+                        GLsizei h, GLint border, GLenum format, GLenum type,        \
+                        const GLvoid *pixels))                                      \
    X(void, Color4fv, (const GLfloat *v))                                            \
    X(void, Finish, (void))                                                          \
    X(GLenum, GetError, (void))                                                      \

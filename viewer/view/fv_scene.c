@@ -199,18 +199,12 @@ static void set_lights(const struct fv_scene *s, const struct fv_gl *gl, int w, 
    }
 }
 
-/* Returns 0, or -1 when the GLSL reference's program did not compile. */
-static int set_material(const struct fv_scene *s, const struct fv_gl *gl,
-                        const struct fv_material *m, struct fcr *ref)
+static void set_material(const struct fv_gl *gl, const struct fv_material *m)
 {
    if (!m->lit) {
-#ifdef FV_HAVE_FCR
-      if (ref)
-         fcr_unbind(ref);
-#endif
       gl->Disable(GL_LIGHTING);
       gl->Color4fv(m->diffuse);
-      return 0;
+      return;
    }
    gl->Enable(GL_LIGHTING);
    gl->Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, m->ambient);
@@ -218,24 +212,86 @@ static int set_material(const struct fv_scene *s, const struct fv_gl *gl,
    gl->Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, m->specular);
    gl->Materialfv(GL_FRONT_AND_BACK, GL_EMISSION, m->emission);
    gl->Materialf(GL_FRONT_AND_BACK, GL_SHININESS, m->shininess);
+}
+
+/* The reflectance model: fixgl's GL_FIXGL_cook_torrance (include/fixgl/
+ * shading.md), or on OSMesa the GLSL reference, bound last: it reads the
+ * fixed-function state just set (lighting, colour material, texturing).
+ * Returns 0, or -1 when the reference's program did not compile. */
+static int set_reflectance(const struct fv_scene *s, const struct fv_gl *gl,
+                           const struct fv_material *m, struct fcr *ref)
+{
    if (!ref) {
-      /* fixgl's GL_FIXGL_cook_torrance (include/fixgl/shading.md) */
-      gl->Materiali(GL_FRONT_AND_BACK, GL_REFLECTANCE_MODEL_FIXGL,
-                    s->cook_torrance ? GL_COOK_TORRANCE_FIXGL : GL_BLINN_PHONG_FIXGL);
-      if (s->cook_torrance) {
-         gl->Materialf(GL_FRONT_AND_BACK, GL_ROUGHNESS_FIXGL, s->roughness);
-         gl->Materialf(GL_FRONT_AND_BACK, GL_METALNESS_FIXGL, s->metalness);
+      if (m->lit) {
+         gl->Materiali(GL_FRONT_AND_BACK, GL_REFLECTANCE_MODEL_FIXGL,
+                       s->cook_torrance ? GL_COOK_TORRANCE_FIXGL : GL_BLINN_PHONG_FIXGL);
+         if (s->cook_torrance) {
+            gl->Materialf(GL_FRONT_AND_BACK, GL_ROUGHNESS_FIXGL, s->roughness);
+            gl->Materialf(GL_FRONT_AND_BACK, GL_METALNESS_FIXGL, s->metalness);
+         }
       }
+      return 0;
    }
 #ifdef FV_HAVE_FCR
-   else {
-      /* the GLSL reference reads the fixed-function state just set */
-      const struct fcr_face f = { s->cook_torrance, s->roughness, s->metalness, 0.04f };
-      if (!fcr_bind(ref, s->shade == FV_PHONG, &f, &f))
-         return -1;
+   if (!m->lit) {
+      fcr_unbind(ref);
+      return 0;
    }
+   const struct fcr_face f = { s->cook_torrance, s->roughness, s->metalness, 0.04f };
+   if (!fcr_bind(ref, s->shade == FV_PHONG, &f, &f))
+      return -1;
+#else
+   (void)s;
 #endif
    return 0;
+}
+
+void fv_scene_upload_textures(const struct fv_model *m, const struct fv_gl *gl, GLuint *names)
+{
+   if (m->num_textures == 0)
+      return;
+   gl->GenTextures(m->num_textures, names);
+   gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+   for (int i = 0; i < m->num_textures; i++) {
+      const struct fv_texture *t = &m->textures[i];
+      gl->BindTexture(GL_TEXTURE_2D, names[i]);
+      gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      /* the whole chain from level 0, by the GL (OpenGL 1.4) */
+      gl->TexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+      gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->w, t->h, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     t->rgba);
+   }
+   gl->BindTexture(GL_TEXTURE_2D, 0);
+}
+
+/* The mesh's texture and per-vertex colours, after its material. */
+static void set_arrays(const struct fv_gl *gl, const struct fv_mesh *me, const GLuint *textures)
+{
+   if (textures && me->texture >= 0) {
+      gl->Enable(GL_TEXTURE_2D);
+      gl->BindTexture(GL_TEXTURE_2D, textures[me->texture]);
+      gl->TexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+      gl->EnableClientState(GL_TEXTURE_COORD_ARRAY);
+      gl->TexCoordPointer(2, GL_FLOAT, 0, me->uv);
+   } else {
+      gl->Disable(GL_TEXTURE_2D);
+      gl->DisableClientState(GL_TEXTURE_COORD_ARRAY);
+   }
+   if (me->col) {
+      /* lit: the colours replace the material's ambient and diffuse */
+      if (me->mat.lit) {
+         gl->ColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+         gl->Enable(GL_COLOR_MATERIAL);
+      }
+      gl->EnableClientState(GL_COLOR_ARRAY);
+      gl->ColorPointer(4, GL_FLOAT, 0, me->col);
+   } else {
+      gl->Disable(GL_COLOR_MATERIAL);
+      gl->DisableClientState(GL_COLOR_ARRAY);
+   }
 }
 
 static void draw_mesh(const struct fv_gl *gl, const struct fv_mesh *me)
@@ -245,8 +301,14 @@ static void draw_mesh(const struct fv_gl *gl, const struct fv_mesh *me)
    gl->DrawElements(GL_TRIANGLES, (GLsizei)me->num_idx, GL_UNSIGNED_INT, me->idx);
 }
 
-int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h,
-                  struct fcr *ref)
+static int translucent(const struct fv_model *m, const struct fv_mesh *me, const GLuint *textures)
+{
+   return me->mat.diffuse[3] < 1.0f ||
+          (textures && me->texture >= 0 && m->textures[me->texture].translucent);
+}
+
+int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, const GLuint *textures,
+                  int w, int h, struct fcr *ref)
 {
    int rc = 0;
    float p[16], mv[16];
@@ -280,7 +342,8 @@ int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h
    gl->EnableClientState(GL_VERTEX_ARRAY);
    gl->EnableClientState(GL_NORMAL_ARRAY);
 
-   /* Opaque meshes first, then the translucent ones (MTL d < 1) blended
+   /* Opaque meshes first, then the translucent ones (MTL d < 1, or a
+    * texture with alpha below 1) blended
     * over them without writing depth, nor alpha: the frame stays opaque, as
     * a window shows it (the X server's image of a window whose frame had
     * alpha < 1 differed from its RGB by 1 LSB under Xvfb). */
@@ -293,9 +356,13 @@ int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h
       }
       for (int i = 0; i < s->model->num_meshes; i++) {
          const struct fv_mesh *me = &s->model->meshes[i];
-         if ((me->mat.diffuse[3] < 1.0f) != (pass == 1))
+         if (translucent(s->model, me, textures) != (pass == 1))
             continue;
-         if (set_material(s, gl, &me->mat, ref) != 0)
+         /* the colour material off while glMaterial sets the material */
+         gl->Disable(GL_COLOR_MATERIAL);
+         set_material(gl, &me->mat);
+         set_arrays(gl, me, textures);
+         if (set_reflectance(s, gl, &me->mat, ref) != 0)
             rc = -1;
          draw_mesh(gl, me);
       }
@@ -309,6 +376,10 @@ int fv_scene_draw(const struct fv_scene *s, const struct fv_gl *gl, int w, int h
    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
    gl->DisableClientState(GL_VERTEX_ARRAY);
    gl->DisableClientState(GL_NORMAL_ARRAY);
+   gl->DisableClientState(GL_TEXTURE_COORD_ARRAY);
+   gl->DisableClientState(GL_COLOR_ARRAY);
+   gl->Disable(GL_TEXTURE_2D);
+   gl->Disable(GL_COLOR_MATERIAL);
    gl->Finish();
    return rc;
 }

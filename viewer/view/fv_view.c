@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <GL/osmesa.h>
 #include <fixgl/fixgl.h>
@@ -40,6 +41,12 @@
 #define FV_DEFAULT_MODEL "teapot.obj"
 #endif
 
+/* --size: the width is at least 3 (the split view's three panels); 8192
+ * bounds a frame (and each of the split view's buffers) to 256 MiB. */
+#define FV_MIN_WIDTH 3
+#define FV_MIN_HEIGHT 1
+#define FV_MAX_SIZE 8192
+
 /* ---- the application ---------------------------------------------------- */
 
 struct frame {
@@ -56,6 +63,7 @@ static struct {
    int headless, split, width, height, frames, info;
    float spin;
    int renderer_osmesa;
+   enum fv_normals normals;
    const char *out, *osmesa_out, *screenshot, *screenshot_x11;
    const char *key_list;
    struct scripted {
@@ -73,6 +81,7 @@ static struct {
    OSMesaContext ctx;
    struct fv_gl gl;
    struct frame fixgl_frame;
+   GLuint *fixgl_tex;             /* the model's textures in fixgl's context */
    int fixgl_phong, fixgl_ct;     /* GL_EXTENSIONS lists them */
    double fixgl_ms;
 
@@ -82,6 +91,7 @@ static struct {
    const char *osmesa_why;
    struct fcr *ref;
    struct frame osmesa_frame;
+   GLuint *osmesa_tex;            /* and in OSMesa's, made on first use */
    double osmesa_ms;
    enum osmesa_status osmesa_status;
 
@@ -134,7 +144,7 @@ static void render_fixgl(int w, int h)
    if (!OSMesaMakeCurrent(A.ctx, A.fixgl_frame.rgba, GL_UNSIGNED_BYTE, w, h))
       die("%s: OSMesaMakeCurrent failed", "fixgl");
    double t0 = now_ms();
-   fv_scene_draw(&A.scene, &A.gl, w, h, NULL);
+   fv_scene_draw(&A.scene, &A.gl, A.fixgl_tex, w, h, NULL);
    A.fixgl_ms = now_ms() - t0;
    while (A.gl.GetError() != GL_NO_ERROR)
       ;  /* Phong/CT enums before libfixgl knows them: drawn smooth/Blinn-Phong */
@@ -169,6 +179,12 @@ static void render_osmesa(int w, int h)
       A.osmesa_status = OSM_UNAVAILABLE;
       return;
    }
+   if (!A.osmesa_tex) {
+      A.osmesa_tex = calloc((size_t)A.model.num_textures + 1, sizeof *A.osmesa_tex);
+      if (!A.osmesa_tex)
+         die("out of memory for %s's textures", "OSMesa");
+      fv_scene_upload_textures(&A.model, fv_osmesa_gl(A.osmesa), A.osmesa_tex);
+   }
    struct fcr *ref = NULL;
    if (needs_reference()) {
 #ifdef FV_HAVE_FCR
@@ -182,7 +198,7 @@ static void render_osmesa(int w, int h)
       }
    }
    double t0 = now_ms();
-   int rc = fv_scene_draw(&A.scene, fv_osmesa_gl(A.osmesa), w, h, ref);
+   int rc = fv_scene_draw(&A.scene, fv_osmesa_gl(A.osmesa), A.osmesa_tex, w, h, ref);
    A.osmesa_ms = now_ms() - t0;
    A.osmesa_status = rc == 0 ? OSM_OK : OSM_NO_REFERENCE;
 }
@@ -516,7 +532,8 @@ static void usage(FILE *f)
       "\n"
       "Options:\n"
       "  --headless            no window (no X needed): render and write --out\n"
-      "  --size WxH            frame size (default 800x600; headless 640x480)\n"
+      "  --size WxH            frame size (default 800x600; headless 640x480;\n"
+      "                        W from %d to %d, H from %d to %d)\n"
       "  --shade MODE          flat, smooth, phong or cook-torrance (default smooth;\n"
       "                        cook-torrance: per fragment, GL_PHONG_WIN)\n"
       "  --reflectance MODEL   blinn-phong or cook-torrance (the model under flat and\n"
@@ -531,6 +548,9 @@ static void usage(FILE *f)
       "                        a light (directional, point or spot) from azimuth AZ,\n"
       "                        elevation EL degrees (eye space), DIST model radii\n"
       "                        away; the first replaces the default light, up to 8\n"
+      "  --normals KIND        file (default: the file's normals, generated smooth\n"
+      "                        where it has none), smooth (all generated, averaged\n"
+      "                        around each position) or flat (one per face)\n"
       "  --wireframe           glPolygonMode(GL_LINE)\n"
       "  --cull                back-face culling\n"
       "  --split               fixgl | OSMesa | difference side by side\n"
@@ -541,7 +561,8 @@ static void usage(FILE *f)
       "  --osmesa-out FILE.png headless: the same view rendered by OSMesa in the\n"
       "                        same process\n"
       "  --frames N            headless: render N frames (default 1) and print the\n"
-      "                        frame time; window: quit after N frames\n"
+      "                        frame time; window: quit after N frames; a progress\n"
+      "                        bar on stdout when it is a terminal\n"
       "  --screenshot FILE     window: after --frames, the window's frame read back\n"
       "                        through the system GL\n"
       "  --screenshot-x11 FILE window: after --frames, the window as the X server\n"
@@ -555,8 +576,14 @@ static void usage(FILE *f)
       "The OSMesa side (split view) loads libOSMesa at run time (environment\n"
       "FIXGL_VIEW_OSMESA: another file, or none); Phong and Cook-Torrance are drawn\n"
       "there by the conformance suite's GLSL reference of include/fixgl/shading.md.\n"
+      "\n"
+      "Models: OBJ map_Kd (or map_Ka) and map_d textures (relative to the .mtl,\n"
+      "read with OpenImageIO; one that cannot be read is a warning, the model drawn\n"
+      "untextured) are drawn mipmapped with GL_MODULATE; per-vertex colours (PLY,\n"
+      "OBJ) through GL_COLOR_MATERIAL.  A model without faces, or with NaN or\n"
+      "infinite vertex coordinates, is refused (exit status 1).\n"
       "\n",
-      FV_DEFAULT_MODEL);
+      FV_DEFAULT_MODEL, FV_MIN_WIDTH, FV_MAX_SIZE, FV_MIN_HEIGHT, FV_MAX_SIZE);
    print_keys(f);
 }
 
@@ -619,7 +646,7 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
       static const char *const with_value[] = {
          "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw", "--pitch",
          "--zoom", "--spin", "--light", "--renderer", "--out", "--osmesa-out", "--frames",
-         "--screenshot", "--screenshot-x11", "--keys",
+         "--screenshot", "--screenshot-x11", "--keys", "--normals",
       };
       int known = 0;
       for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
@@ -634,9 +661,20 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
       }
       const char *v = argv[++i];
       if (!strcmp(a, "--size")) {
-         if (sscanf(v, "%dx%d", &A.width, &A.height) != 2 || A.width < 3 || A.height < 1 ||
-             A.width > 8192 || A.height > 8192) {
-            fprintf(stderr, "fixgl-view: --size: bad size \"%s\" (WxH)\n", v);
+         char tail;
+         if (sscanf(v, "%dx%d%c", &A.width, &A.height, &tail) != 2 || A.width < FV_MIN_WIDTH ||
+             A.height < FV_MIN_HEIGHT || A.width > FV_MAX_SIZE || A.height > FV_MAX_SIZE) {
+            fprintf(stderr, "fixgl-view: --size: bad size \"%s\": WxH, W from %d to %d "
+                            "(the split view's three panels), H from %d to %d\n",
+                    v, FV_MIN_WIDTH, FV_MAX_SIZE, FV_MIN_HEIGHT, FV_MAX_SIZE);
+            exit(2);
+         }
+      } else if (!strcmp(a, "--normals")) {
+         if (!strcmp(v, "file")) A.normals = FV_NORMALS_FILE;
+         else if (!strcmp(v, "smooth")) A.normals = FV_NORMALS_SMOOTH;
+         else if (!strcmp(v, "flat")) A.normals = FV_NORMALS_FLAT;
+         else {
+            fprintf(stderr, "fixgl-view: --normals: file, smooth or flat, not \"%s\"\n", v);
             exit(2);
          }
       } else if (!strcmp(a, "--shade")) {
@@ -700,6 +738,28 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
    }
 }
 
+/* ---- progress ------------------------------------------------------------- */
+
+/* --frames N: a one-line bar on stdout when it is a terminal (redrawn in
+ * place with \r after each frame, the line ended after the last); nothing
+ * when stdout is a file or a pipe. */
+static void progress(int done, int total)
+{
+   static int tty = -1;
+   if (tty < 0)
+      tty = isatty(STDOUT_FILENO);
+   if (!tty || total < 2 || done < 1 || done > total)
+      return;
+   enum { WIDTH = 40 };
+   const int fill = (int)((long)WIDTH * done / total);
+   char bar[WIDTH + 1];
+   memset(bar, '#', (size_t)fill);
+   memset(bar + fill, '.', (size_t)(WIDTH - fill));
+   bar[WIDTH] = '\0';
+   printf("\rfixgl-view: [%s] %d/%d frames%s", bar, done, total, done == total ? "\n" : "");
+   fflush(stdout);
+}
+
 /* ---- headless --------------------------------------------------------------- */
 
 static int run_headless(void)
@@ -725,6 +785,7 @@ static int run_headless(void)
          render(A.width, A.height);
          total += A.fixgl_ms;
       }
+      progress(f + 1, frames);
    }
    char line[1024];
    status_line(line, sizeof line);
@@ -919,6 +980,8 @@ static int run_window(void)
       status_line(title, sizeof title);
       glfwSetWindowTitle(A.win, title);
       frame++;
+      if (A.frames > 0)
+         progress(frame, A.frames > A.num_script ? A.frames : A.num_script);
       if (A.frames > 0 && frame >= A.frames && frame >= A.num_script) {
          if (A.screenshot || A.screenshot_x11)
             window_screenshots(fw, fh);
@@ -943,8 +1006,13 @@ static int run_window(void)
 
 static void print_info(void)
 {
-   printf("model: %s: %d meshes, %u triangles, bounding sphere centre (%g, %g, %g) radius %g\n",
-          A.model_path, A.model.num_meshes, A.model.num_tris, A.model.center[0],
+   int coloured = 0;
+   for (int i = 0; i < A.model.num_meshes; i++)
+      coloured += A.model.meshes[i].col != NULL;
+   printf("model: %s: %d meshes (%d with per-vertex colours), %d textures, %u triangles, "
+          "bounding sphere centre (%g, %g, %g) radius %g\n",
+          A.model_path, A.model.num_meshes, coloured, A.model.num_textures, A.model.num_tris,
+          A.model.center[0],
           A.model.center[1], A.model.center[2], A.model.radius);
    printf("fixgl: %s, %s; GL_WIN_phong_shading %s, GL_FIXGL_cook_torrance %s\n",
           (const char *)A.gl.GetString(GL_RENDERER), (const char *)A.gl.GetString(GL_VERSION),
@@ -986,7 +1054,7 @@ int main(int argc, char **argv)
       return 2;
    }
 
-   if (fv_model_load(&A.model, A.model_path) != 0)
+   if (fv_model_load(&A.model, A.model_path, A.normals) != 0)
       return 1;
    A.scene = opts;
    A.scene.model = &A.model;
@@ -1011,6 +1079,10 @@ int main(int argc, char **argv)
    OSMesaMakeCurrent(A.ctx, A.fixgl_frame.rgba, GL_UNSIGNED_BYTE, 4, 4);
    A.fixgl_phong = fv_gl_has_extension(&A.gl, "GL_WIN_phong_shading");
    A.fixgl_ct = fv_gl_has_extension(&A.gl, "GL_FIXGL_cook_torrance");
+   A.fixgl_tex = calloc((size_t)A.model.num_textures + 1, sizeof *A.fixgl_tex);
+   if (!A.fixgl_tex)
+      die("out of memory for %s's textures", "fixgl");
+   fv_scene_upload_textures(&A.model, &A.gl, A.fixgl_tex);
 
    int rc;
    if (A.info) {
@@ -1030,6 +1102,8 @@ int main(int argc, char **argv)
    fv_model_free(&A.model);
    free(A.fixgl_frame.rgba);
    free(A.osmesa_frame.rgba);
+   free(A.fixgl_tex);
+   free(A.osmesa_tex);
    free(A.shown.rgba);
    return rc;
 }

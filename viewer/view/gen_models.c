@@ -11,6 +11,14 @@
  *   lowpoly.obj, lowpoly.mtl  a faceted low-poly house with seven materials
  *                           (Ka, Kd, Ks, Ke, Ns, d, illum 0/1/2), quads and
  *                           one normal per face
+ *   globe.obj, globe.mtl, globe.png, ring_alpha.png
+ *                           a textured globe (UVs, map_Kd) in a ring
+ *                           (map_Kd and map_d: translucent stripes), the
+ *                           images written through OpenImageIO
+ *   colors.ply              a bumpy sphere with per-vertex colours (binary
+ *                           PLY, uchar red green blue), no normals
+ *   rgbcube.obj             the RGB colour cube: per-vertex colours in OBJ's
+ *                           "v x y z r g b" form, quads, no normals, no MTL
  *
  *   gen-models DIR
  */
@@ -21,6 +29,7 @@
 #include <string.h>
 
 #include "../glut/glut_teapot_data.h"
+#include "fv_image.h"
 
 #define PI 3.14159265358979323846
 
@@ -339,6 +348,173 @@ static void lowpoly_obj(const char *dir)
    close_out(obj);
 }
 
+/* ---- globe.obj ------------------------------------------------------------- */
+
+static void write_image(const char *dir, const char *name, int w, int h,
+                        const unsigned char *rgba)
+{
+   char path[4096], err[512];
+   snprintf(path, sizeof path, "%s/%s", dir, name);
+   if (fv_image_write(path, w, h, rgba, err, sizeof err) != 0) {
+      fprintf(stderr, "gen-models: %s: %s\n", path, err);
+      exit(1);
+   }
+}
+
+/* The globe's texture (128 x 64, top row first: the north pole): sea and
+ * land by a few octaves of sines, ice caps, a grid every 60 degrees; the
+ * ring's alpha (the same size, as map_d must be): stripes from opaque to
+ * clear. */
+static void globe_images(const char *dir)
+{
+   enum { W = 128, H = 64, RW = W, RH = H };
+   static unsigned char px[W * H * 4], ring[RW * RH * 4];
+   for (int y = 0; y < H; y++)
+      for (int x = 0; x < W; x++) {
+         double lon = 2.0 * PI * (x + 0.5) / W, lat = PI * (0.5 - (y + 0.5) / H);
+         double land = sin(3.0 * lon) * cos(2.0 * lat) + 0.6 * sin(5.0 * lon + 1.3) * sin(3.0 * lat)
+                       + 0.35 * cos(9.0 * lon - 2.0 * lat);
+         unsigned char *p = &px[(y * W + x) * 4];
+         if (fabs(lat) > 1.25) {
+            p[0] = 235, p[1] = 240, p[2] = 250;                         /* ice */
+         } else if (land > 0.15) {
+            double h = land - 0.15;
+            p[0] = (unsigned char)(60 + 120 * fmin(h, 1.0));
+            p[1] = (unsigned char)(140 - 40 * fmin(h, 1.0));
+            p[2] = (unsigned char)(50 + 20 * fmin(h, 1.0));
+         } else {
+            p[0] = 20, p[1] = (unsigned char)(70 + 40 * (land + 2.0) / 2.15), p[2] = 170;
+         }
+         if (x % (W / 6) == 0 || y % (H / 3) == 0)
+            p[0] = p[1] = p[2] = 250;                                   /* the grid */
+         p[3] = 255;
+      }
+   write_image(dir, "globe.png", W, H, px);
+   for (int y = 0; y < RH; y++)
+      for (int x = 0; x < RW; x++) {
+         unsigned char *p = &ring[(y * RW + x) * 4];
+         unsigned char a = (unsigned char)((x / 16) % 2 ? 255 : 64 + 12 * (x % 16));
+         p[0] = p[1] = p[2] = a, p[3] = a;
+      }
+   write_image(dir, "ring_alpha.png", RW, RH, ring);
+}
+
+static void globe_obj(const char *dir)
+{
+   enum { SLICES = 32, STACKS = 16, RING = 48 };
+   globe_images(dir);
+   FILE *m = open_out(dir, "globe.mtl", "w");
+   fprintf(m, "# fixgl-view: a textured globe in a translucent ring\n"
+              "newmtl globe\nKa 0.3 0.3 0.3\nKd 1 1 1\nKs 0.4 0.4 0.4\nNs 30\nd 1\nillum 2\n"
+              "map_Kd globe.png\n\n"
+              "newmtl ring\nKa 0.3 0.25 0.2\nKd 0.9 0.75 0.5\nKs 0.2 0.2 0.2\nNs 10\nd 1\n"
+              "illum 2\nmap_Kd globe.png\nmap_d ring_alpha.png\n");
+   close_out(m);
+   FILE *f = open_out(dir, "globe.obj", "w");
+   fprintf(f, "# fixgl-view: a UV sphere (radius 1) textured by globe.png, a ring around it\n"
+              "mtllib globe.mtl\no globe\nusemtl globe\n");
+   /* the sphere: (SLICES + 1) x (STACKS + 1) vertices, the seam doubled */
+   for (int i = 0; i <= STACKS; i++)
+      for (int j = 0; j <= SLICES; j++) {
+         double th = PI * i / STACKS, ph = 2.0 * PI * j / SLICES;
+         double x = sin(th) * sin(ph), y = cos(th), z = sin(th) * cos(ph);
+         fprintf(f, "v %.6f %.6f %.6f\nvt %.6f %.6f\nvn %.6f %.6f %.6f\n", x, y, z,
+                 (double)j / SLICES, 1.0 - (double)i / STACKS, x, y, z);
+      }
+#define GV(i, j) (1 + (i) * (SLICES + 1) + (j))
+   for (int i = 0; i < STACKS; i++)
+      for (int j = 0; j < SLICES; j++) {
+         int a = GV(i, j), b = GV(i + 1, j), c = GV(i + 1, j + 1), d = GV(i, j + 1);
+         if (i > 0)
+            fprintf(f, "f %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, a, b, b, b, d, d, d);
+         if (i < STACKS - 1)
+            fprintf(f, "f %d/%d/%d %d/%d/%d %d/%d/%d\n", b, b, b, c, c, c, d, d, d);
+      }
+#undef GV
+   /* the ring: a tilted flat annulus (one face, its normal up), u around,
+    * v across */
+   const int base = (SLICES + 1) * (STACKS + 1);
+   fprintf(f, "o ring\nusemtl ring\n");
+   const double tilt = 0.35;
+   for (int j = 0; j <= RING; j++)
+      for (int k = 0; k < 2; k++) {
+         double ph = 2.0 * PI * j / RING, r = k ? 1.7 : 1.25;
+         double x = r * cos(ph), z = r * sin(ph);
+         double y = -z * sin(tilt), zz = z * cos(tilt);
+         fprintf(f, "v %.6f %.6f %.6f\nvt %.6f %.6f\n", x, y, zz, 2.0 * j / RING, (double)k);
+      }
+   fprintf(f, "vn 0 %.6f %.6f\n", cos(tilt), sin(tilt));
+   const int up = base + 1;
+   for (int j = 0; j < RING; j++) {
+      int a = base + 1 + j * 2, b = a + 1, c = a + 3, d = a + 2;
+      fprintf(f, "f %d/%d/%d %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, up, d, d, up, c, c, up, b, b, up);
+   }
+   close_out(f);
+}
+
+/* ---- colors.ply ------------------------------------------------------------ */
+
+static void colors_ply(const char *dir)
+{
+   enum { SLICES = 36, STACKS = 18 };
+   FILE *f = open_out(dir, "colors.ply", "wb");
+   const int nv = (STACKS + 1) * SLICES, nf = 2 * SLICES * STACKS;
+   fprintf(f, "ply\nformat binary_little_endian 1.0\n"
+              "comment fixgl-view: a bumpy sphere with per-vertex colours, no normals\n"
+              "element vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+              "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+              "element face %d\nproperty list uchar int vertex_indices\nend_header\n", nv, nf);
+   for (int i = 0; i <= STACKS; i++)
+      for (int j = 0; j < SLICES; j++) {
+         double th = PI * i / STACKS, ph = 2.0 * PI * j / SLICES;
+         double r = 1.0 + 0.12 * sin(5.0 * ph) * sin(4.0 * th);
+         float p[3] = { (float)(r * sin(th) * sin(ph)), (float)(r * cos(th)),
+                        (float)(r * sin(th) * cos(ph)) };
+         for (int k = 0; k < 3; k++)
+            put_f32(f, p[k]);
+         unsigned char c[3] = { (unsigned char)(127.5 + 127.0 * sin(ph)),
+                                (unsigned char)(127.5 + 127.0 * cos(th)),
+                                (unsigned char)(127.5 + 127.0 * cos(ph + 1.0)) };
+         fwrite(c, 1, 3, f);
+      }
+   /* every quad as two triangles, counter-clockwise from outside (at the
+    * poles: degenerate, kept: the file is as a scanner writes it) */
+   for (int i = 0; i < STACKS; i++)
+      for (int j = 0; j < SLICES; j++) {
+         int32_t a = i * SLICES + j, b = (i + 1) * SLICES + j,
+                 c = (i + 1) * SLICES + (j + 1) % SLICES, d = i * SLICES + (j + 1) % SLICES;
+         const int32_t t[2][3] = { { a, b, c }, { a, c, d } };
+         for (int k = 0; k < 2; k++) {
+            fputc(3, f);
+            for (int v = 0; v < 3; v++) {
+               uint32_t u = (uint32_t)t[k][v];
+               unsigned char b4[4] = { (unsigned char)u, (unsigned char)(u >> 8),
+                                       (unsigned char)(u >> 16), (unsigned char)(u >> 24) };
+               fwrite(b4, 1, 4, f);
+            }
+         }
+      }
+   close_out(f);
+}
+
+/* ---- rgbcube.obj ---------------------------------------------------------- */
+
+static void rgbcube_obj(const char *dir)
+{
+   FILE *f = open_out(dir, "rgbcube.obj", "w");
+   fprintf(f, "# fixgl-view: the RGB colour cube, a colour per vertex (v x y z r g b)\no rgbcube\n");
+   for (int i = 0; i < 8; i++) {
+      const int r = i & 1, g = (i >> 1) & 1, b = (i >> 2) & 1;
+      fprintf(f, "v %d %d %d %d %d %d\n", 2 * r - 1, 2 * g - 1, 2 * b - 1, r, g, b);
+   }
+   /* counter-clockwise from outside; vertex i + 1 is (r, g, b) = bits of i */
+   static const int q[6][4] = { { 1, 3, 7, 5 }, { 0, 4, 6, 2 }, { 2, 6, 7, 3 },
+                                { 0, 1, 5, 4 }, { 4, 5, 7, 6 }, { 0, 2, 3, 1 } };
+   for (int i = 0; i < 6; i++)
+      fprintf(f, "f %d %d %d %d\n", q[i][0] + 1, q[i][1] + 1, q[i][2] + 1, q[i][3] + 1);
+   close_out(f);
+}
+
 int main(int argc, char **argv)
 {
    if (argc != 2) {
@@ -349,5 +525,8 @@ int main(int argc, char **argv)
    torus_stl(argv[1]);
    teapot_obj(argv[1]);
    lowpoly_obj(argv[1]);
+   globe_obj(argv[1]);
+   colors_ply(argv[1]);
+   rgbcube_obj(argv[1]);
    return 0;
 }

@@ -32,6 +32,19 @@
  *   view-test frames VIEW DIR MODEL
  *       --frames 4 --spin 15 ends on the frame a single render at yaw
  *       30 + 45 gives, bit for bit
+ *   view-test colourful VIEW DIR MODEL [VIEWER ARGS...]
+ *       the headless frame shows several hues (a texture's or per-vertex
+ *       colours, not one material's shades)
+ *   view-test bad VIEW DIR MODELS
+ *       bad models (written here): NaN and infinite coordinates, no faces,
+ *       lines only: a message saying what and how many, exit status 1, no
+ *       output; a missing and an unreadable texture (MODELS/globe.obj
+ *       copied without its images): a warning naming it, exit status 0, the
+ *       frame drawn untextured; --size and --normals out of bounds: the
+ *       limits stated, exit status 2
+ *   view-test progress VIEW DIR MODEL
+ *       --frames 6 on a terminal (a pseudo-terminal) draws a one-line
+ *       progress bar; piped, stdout has no trace of it
  *   view-test window VIEW DIR XVFB MODEL [VIEWER ARGS...]
  *       the viewer in a real GLFW window on an Xvfb server started on a free
  *       display: after 3 frames the window read back through the system GL
@@ -39,6 +52,7 @@
  */
 #include <errno.h>
 #include <fcntl.h>
+#include <pty.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -209,7 +223,7 @@ static const char *const options[] = {
    "--headless", "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw",
    "--pitch", "--zoom", "--spin", "--light", "--wireframe", "--cull", "--split", "--renderer",
    "--out", "--osmesa-out", "--frames", "--screenshot", "--screenshot-x11", "--keys", "--info",
-   "--help",
+   "--help", "--normals", "map_Kd", "map_d", "GL_COLOR_MATERIAL",
    "flat", "smooth", "phong", "cook-torrance", "blinn-phong", "directional", "point", "spot",
    "FIXGL_VIEW_OSMESA",
 };
@@ -565,6 +579,256 @@ static int cmd_frames(const char *model)
    return max ? 1 : 0;
 }
 
+/* ---- colourful ------------------------------------------------------------------ */
+
+/* The hue sextant of a pixel with some saturation, or -1. */
+static int hue_sextant(const unsigned char *p)
+{
+   int r = p[0], g = p[1], b = p[2];
+   int mx = r > g ? (r > b ? r : b) : (g > b ? g : b), mn = r < g ? (r < b ? r : b) : (g < b ? g : b);
+   if (mx - mn < 40)
+      return -1;
+   double h = mx == r ? (double)(g - b) / (mx - mn) : mx == g ? 2.0 + (double)(b - r) / (mx - mn)
+                                                               : 4.0 + (double)(r - g) / (mx - mn);
+   if (h < 0.0)
+      h += 6.0;
+   return (int)h % 6;
+}
+
+static int cmd_colourful(const char *model, int argc, char **argv)
+{
+   const char *fx = path_in("frame.png");
+   struct args a = args_of("--headless");
+   add(&a, "--size"), add(&a, "200x150");
+   for (int i = 0; i < argc; i++)
+      add(&a, argv[i]);
+   add(&a, "--out"), add(&a, fx), add(&a, model);
+   if (run_view("colourful", a.v, NULL, 120) != 0)
+      die("the viewer failed");
+   struct image im = load(fx);
+   long per[6] = { 0 };
+   for (long i = 0; i < (long)im.w * im.h; i++) {
+      int k = hue_sextant(&im.px[i * 4]);
+      if (k >= 0)
+         per[k]++;
+   }
+   int hues = 0;
+   for (int k = 0; k < 6; k++)
+      hues += per[k] >= 30;
+   printf("pixels per hue sextant: %ld %ld %ld %ld %ld %ld; %d hues of 30 pixels or more\n", per[0],
+          per[1], per[2], per[3], per[4], per[5], hues);
+   free(im.px);
+   if (hues < 3) {
+      fprintf(stderr, "view-test: fewer than 3 hues: the texture or the colours are not drawn\n");
+      return 1;
+   }
+   return 0;
+}
+
+/* ---- bad models ------------------------------------------------------------------ */
+
+static void write_file(const char *path, const char *text)
+{
+   FILE *f = fopen(path, "w");
+   if (!f || fputs(text, f) < 0 || fclose(f) != 0)
+      die("cannot write %s", path);
+}
+
+static void copy_file(const char *from, const char *to)
+{
+   char *s = slurp(from);
+   if (!s[0])
+      die("cannot read %s", from);
+   write_file(to, s);
+   free(s);
+}
+
+/* Runs the viewer headless on model with --out; checks the exit status,
+ * that stderr holds every string of msgs (NULL-terminated), and that
+ * --out was written exactly when the status is 0. */
+static int expect_model(const char *name, const char *model, const char *extra, int status,
+                        const char *const *msgs)
+{
+   char out[4200];
+   snprintf(out, sizeof out, "%s/%s.png", dir, name);
+   unlink(out);
+   struct args a = args_of("--headless");
+   add(&a, "--size"), add(&a, "160x120");
+   if (extra)
+      add(&a, "--normals"), add(&a, extra);
+   add(&a, "--out"), add(&a, out), add(&a, model);
+   int rc = run_view(name, a.v, NULL, 60);
+   char errp[4200];
+   snprintf(errp, sizeof errp, "%s/%s.err", dir, name);
+   char *err = slurp(errp);
+   int ok = rc == status;
+   for (int i = 0; msgs[i]; i++)
+      if (!strstr(err, msgs[i])) {
+         fprintf(stderr, "view-test: %s: stderr lacks \"%s\"\n", name, msgs[i]);
+         ok = 0;
+      }
+   if ((access(out, F_OK) == 0) != (status == 0)) {
+      fprintf(stderr, "view-test: %s: --out %s\n", name, status ? "written" : "not written");
+      ok = 0;
+   }
+   if (rc != status)
+      fprintf(stderr, "view-test: %s: exit %d, expected %d\n", name, rc, status);
+   free(err);
+   return ok;
+}
+
+static int cmd_bad(const char *models)
+{
+   int failed = 0, cases = 0;
+   char p[4200], q[4200];
+
+   /* NaN and infinite coordinates: two NaN vertices, one infinite, one of
+    * them used twice (counted once) */
+   snprintf(p, sizeof p, "%s/nan.obj", dir);
+   write_file(p, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 1 0\nv 1 nan 1\nv 0 inf 0\n"
+                 "f 1 2 3\nf 1 2 4\nf 2 3 5\nf 1 3 6\nf 3 4 5\n");
+   static const char *const nan_msgs[] = { "nan.obj", "has 3 vertices with NaN or infinite coordinates",
+                                           "(nan, 1, 0)", "inf", NULL };
+   failed += !expect_model("nan", p, NULL, 1, nan_msgs), cases++;
+   /* flat normals split the vertices: still three */
+   failed += !expect_model("nan-flat", p, "flat", 1, nan_msgs), cases++;
+   snprintf(p, sizeof p, "%s/inf.ply", dir);
+   write_file(p, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                 "end_header\n0 0 0\n1 0 0\n0 -inf 0\n3 0 1 2\n");
+   static const char *const inf_msgs[] = { "inf.ply", "has 1 vertex with NaN or infinite coordinates",
+                                           "(0, -inf, 0)", NULL };
+   failed += !expect_model("inf", p, NULL, 1, inf_msgs), cases++;
+
+   /* no faces */
+   snprintf(p, sizeof p, "%s/empty.obj", dir);
+   write_file(p, "# vertices, no faces\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+   static const char *const empty_msgs[] = { "empty.obj", "is empty: 3 vertices and no faces", NULL };
+   failed += !expect_model("empty-obj", p, NULL, 1, empty_msgs), cases++;
+   snprintf(p, sizeof p, "%s/empty.ply", dir);
+   write_file(p, "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face 0\nproperty list uchar int vertex_indices\n"
+                 "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n");
+   static const char *const empty_ply[] = { "empty.ply", "is empty: 4 vertices and no faces", NULL };
+   failed += !expect_model("empty-ply", p, NULL, 1, empty_ply), cases++;
+   snprintf(p, sizeof p, "%s/lines.obj", dir);
+   write_file(p, "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n");
+   static const char *const lines_msgs[] = { "lines.obj", "is empty", "no triangles", NULL };
+   failed += !expect_model("lines-only", p, NULL, 1, lines_msgs), cases++;
+
+   /* textures: the globe without its images, then with garbage for one */
+   char src[4200];
+   snprintf(src, sizeof src, "%s/globe.obj", models);
+   snprintf(p, sizeof p, "%s/globe.obj", dir);
+   copy_file(src, p);
+   snprintf(src, sizeof src, "%s/globe.mtl", models);
+   snprintf(q, sizeof q, "%s/globe.mtl", dir);
+   copy_file(src, q);
+   static const char *const missing_msgs[] = { "warning", "texture", "globe.png", "drawn untextured",
+                                                NULL };
+   failed += !expect_model("texture-missing", p, NULL, 0, missing_msgs), cases++;
+   snprintf(q, sizeof q, "%s/globe.png", dir);
+   write_file(q, "not a PNG\n");
+   snprintf(q, sizeof q, "%s/ring_alpha.png", dir);
+   snprintf(src, sizeof src, "%s/ring_alpha.png", models);
+   struct image ra = load(src);
+   fv_png_write(q, ra.w, ra.h, ra.px, 0);
+   free(ra.px);
+   static const char *const garbage_msgs[] = { "warning", "globe.png", "cannot read", NULL };
+   failed += !expect_model("texture-unreadable", p, NULL, 0, garbage_msgs), cases++;
+   /* the untextured globe is not the textured one */
+   snprintf(src, sizeof src, "%s/globe.obj", models);
+   static const char *const none[] = { NULL };
+   failed += !expect_model("texture-present", src, NULL, 0, none), cases++;
+   struct image t = load(path_in("texture-present.png")), u = load(path_in("texture-missing.png"));
+   long counts[3];
+   int max = compare(&t, &u, 3, NULL, counts);
+   printf("textured vs untextured globe: %ld pixels differ (max %d)\n", counts[1] + counts[2], max);
+   if (counts[1] + counts[2] < (long)t.w * t.h / 20) {
+      fprintf(stderr, "view-test: the globe without its texture looks textured\n");
+      failed++;
+   }
+   free(t.px), free(u.px), cases++;
+
+   /* --size and --normals: the limits stated */
+   static const char *const sizes[] = { "2x100", "9000x100", "100x0", "100x8193", "100x100x3" };
+   for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+      struct args a = args_of("--headless");
+      add(&a, "--size"), add(&a, sizes[i]), add(&a, src);
+      char name[64];
+      snprintf(name, sizeof name, "size-%zu", i);
+      failed += expect(name, &a, 2, "W from 3 to 8192", "H from 1 to 8192") != 0, cases++;
+   }
+   struct args a = args_of("--headless");
+   add(&a, "--normals"), add(&a, "bent"), add(&a, src);
+   failed += expect("normals-bent", &a, 2, "--normals: file, smooth or flat", "bent") != 0, cases++;
+
+   printf("%d of %d bad-model cases as expected\n", cases - failed, cases);
+   return failed ? 1 : 0;
+}
+
+/* ---- progress ------------------------------------------------------------------ */
+
+static int cmd_progress(const char *model)
+{
+   struct args a = args_of("--headless");
+   add(&a, "--size"), add(&a, "64x48"), add(&a, "--frames"), add(&a, "6"), add(&a, "--spin"),
+      add(&a, "10"), add(&a, model);
+   /* piped (run_view: stdout a file) */
+   if (run_view("piped", a.v, NULL, 60) != 0)
+      die("the viewer failed");
+   char *out = slurp(path_in("piped.out")), *err = slurp(path_in("piped.err"));
+   int ok = 1;
+   if (strchr(out, '\r') || strstr(out, "[#") || strstr(out, "/6 frames") || strchr(err, '\r') ||
+       strstr(err, "[#")) {
+      fprintf(stderr, "view-test: a progress bar while stdout is not a terminal\n");
+      ok = 0;
+   }
+   if (!strstr(out, "6 frames of 64x48")) {
+      fprintf(stderr, "view-test: piped: no frame summary\n");
+      ok = 0;
+   }
+   free(out), free(err);
+
+   /* on a pseudo-terminal */
+   int master;
+   pid_t pid = forkpty(&master, NULL, NULL, NULL);
+   if (pid < 0)
+      die("forkpty: %s", strerror(errno));
+   if (pid == 0) {
+      execv(view, a.v);
+      _exit(127);
+   }
+   char buf[65536];
+   size_t n = 0;
+   for (;;) {
+      ssize_t k = read(master, buf + n, sizeof buf - 1 - n);
+      if (k <= 0)
+         break;   /* EIO once the child has closed the terminal */
+      n += (size_t)k;
+      if (n >= sizeof buf - 1)
+         break;
+   }
+   buf[n] = '\0';
+   close(master);
+   int status;
+   waitpid(pid, &status, 0);
+   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      die("the viewer on a terminal failed");
+   int bars = 0;
+   for (const char *s = buf; (s = strstr(s, "\rfixgl-view: [")) != NULL; s++)
+      bars++;
+   printf("on a terminal: %d redraws of the bar, %s\n", bars,
+          strstr(buf, "6/6 frames") ? "the last at 6/6" : "never at 6/6");
+   if (bars != 6 || !strstr(buf, "] 1/6 frames") || !strstr(buf, "[########################################] 6/6 frames")) {
+      fprintf(stderr, "view-test: no one-line progress bar on a terminal: \"%s\"\n", buf);
+      ok = 0;
+   }
+   if (ok)
+      printf("progress bar on a terminal only\n");
+   return ok ? 0 : 1;
+}
+
 /* ---- window -------------------------------------------------------------------- */
 
 static int cmd_window(const char *xvfb, const char *model, int argc, char **argv)
@@ -655,6 +919,12 @@ int main(int argc, char **argv)
       return cmd_differ(argv[4], argc - 5, argv + 5, 1);
    if (!strcmp(cmd, "frames"))
       return cmd_frames(argv[4]);
+   if (!strcmp(cmd, "colourful"))
+      return cmd_colourful(argv[4], argc - 5, argv + 5);
+   if (!strcmp(cmd, "bad"))
+      return cmd_bad(argv[4]);
+   if (!strcmp(cmd, "progress"))
+      return cmd_progress(argv[4]);
    if (!strcmp(cmd, "window") && argc >= 6)
       return cmd_window(argv[4], argv[5], argc - 6, argv + 6);
    die("unknown command %s", cmd);
