@@ -147,6 +147,15 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
       pc[i][1] = v[1] * r;
       pc[i][2] = v[2] * r;
    }
+   if (t->cube) {
+      /* a cube map: the derivatives of the pixel the LOD belongs to
+       * (the pair quad's top-left) */
+      float br[3];
+      r_tex_project(quad->br[u], br);
+      r_tex_cube_quad(t, br, quad->pos, qc);
+      if (pair)
+         r_tex_cube_quad(t, NULL, 0, pc);
+   }
    r_tex_sample(t, c, (const float (*)[3])qc, pair ? (const float (*)[3])pc : NULL, tc->c[u]);
    return tc->c[u];
 }

@@ -121,6 +121,20 @@ void r_setup_shade_pixel(const struct r_state *rs, const void *ctx, int px, int 
                d[k] = ls->flat_attr[a] ? ls->flat[a][k] : r_eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
          }
       }
+      if (rs->fs->tex_cube) {
+         /* a cube map's bottom-right pixel and the fragment's place */
+         const float qfx = (float)(qx + 1), qfy = (float)(qy + 1);
+         const float qrw = 1.0f / r_eval_plane(&ls->w, qfx, qfy);
+         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+            if (!(rs->fs->tex_units & (1u << u)))
+               continue;
+            const int a = R_FS_TEX0 + u;
+            for (int k = 0; k < 4; k++)
+               quad.br[u][k] = ls->flat_attr[a] ? ls->flat[a][k]
+                                                : r_eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
+         }
+         quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
+      }
       r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
    } else {
       r_fragment_shader(rs, (const float (*)[4])in, NULL, color);

@@ -223,7 +223,9 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
                   const float (*pair)[3], float out[4])
 {
-   if (t->soa)
+   if (t->cube == R_CUBE_MAP)
+      r_tex_sample_cube(t, c, quad, pair, out);
+   else if (t->soa)
       r_tex_sample_soa(t, c, quad, pair, out);
    else
       r_tex_sample_aos(t, c, quad, out);

@@ -234,6 +234,18 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
+      /* a cube map's bottom-right pixel (r_tex_cube_quad) */
+      if (rs->fs->tex_cube) {
+         const float fx = (float)(qx + 1), fy = (float)(qy + 1);
+         const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
+         for (unsigned m = units; m; m &= m - 1) {
+            const int u = __builtin_ctz(m);
+            const int a = R_FS_TEX0 + u;
+            for (int c = 0; c < 4; c++)
+               q->br[u][c] = ts->flat_attr[a] ? ts->flat[a][c]
+                                              : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
+         }
+      }
       /* the LOD of the units that texture (a pixel rectangle's quad
        * coordinate is unit 0's, whether or not it textures) */
       for (unsigned m = units & rs->fs->tex_units; m; m &= m - 1) {
@@ -261,6 +273,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      float color[4])
 {
    fill_quad(rs, ts, px, py, rs->fs->tex_units);
+   ((struct r_tri_setup *)ts)->quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
    r_fragment_shader_lod(rs, in, &ts->quad, ts->lod, color);
 }
 
