@@ -231,8 +231,13 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
       update_texture_cube(t, rt);
    update_texture_general(ctx, u, t, rt);
    if (rt->cube) {
-      /* every lookup of a cube map goes to r_tex_sample (r_tex_cube.c) */
-      rt->face_soa = rt->soa;
+      /* a LOD per pixel (a mipmap filter) with min != mag: the float
+       * path [S: lp_bld_sample_soa.c:lp_build_sample_soa_code, use_aos
+       * needs num_lods <= num_quads or min == mag] */
+      if (rt->mip != R_MIP_NONE && rt->min_img != rt->mag_img)
+         rt->float_path = true;
+      /* every lookup of a cube map goes to r_tex_cube.c */
+      rt->face_soa = rt->soa || rt->float_path;
       rt->soa = true;
    }
 }

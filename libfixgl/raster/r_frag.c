@@ -148,13 +148,17 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
       pc[i][2] = v[2] * r;
    }
    if (t->cube) {
-      /* a cube map: the derivatives of the pixel the LOD belongs to
-       * (the pair quad's top-left) */
-      float br[3];
-      r_tex_project(quad->br[u], br);
-      r_tex_cube_quad(t, br, quad->pos, qc);
-      if (pair)
-         r_tex_cube_quad(t, NULL, 0, pc);
+      /* a cube map: the whole quad (a LOD per pixel), and the pair's */
+      float q4[4][3], p4[4][3];
+      memcpy(q4, qc, sizeof(qc));
+      r_tex_project(quad->br[u], q4[3]);
+      if (pair) {
+         memcpy(p4, pc, sizeof(pc));
+         r_tex_project(quad->pair_br[u], p4[3]);
+      }
+      r_tex_sample_cube(t, c, (const float (*)[3])q4, quad->pos,
+                        pair ? (const float (*)[3])p4 : NULL, tc->c[u]);
+      return tc->c[u];
    }
    r_tex_sample(t, c, (const float (*)[3])qc, pair ? (const float (*)[3])pc : NULL, tc->c[u]);
    return tc->c[u];

@@ -256,7 +256,7 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
          for (int c = 0; c < 4; c++)
             quad.tex[u][i][c] = quad.pair[u][i][c] = in[R_FS_TEX0 + u][c];
       for (int c = 0; c < 4; c++)
-         quad.br[u][c] = in[R_FS_TEX0 + u][c];
+         quad.br[u][c] = quad.pair_br[u][c] = in[R_FS_TEX0 + u][c];
    }
    quad.pos = 0;
    float color[4];

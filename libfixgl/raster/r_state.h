@@ -293,6 +293,7 @@ struct r_fs_quad {
     * bit 1: bottom row): a mipmapped cube map takes each pixel's own
     * derivatives (r_tex_cube.c) */
    float br[R_MAX_TEX_UNITS][4];
+   float pair_br[R_MAX_TEX_UNITS][4];   /* the pair quad's, with `pair` */
    unsigned pos;
 };
 
@@ -336,19 +337,18 @@ static inline void r_tex_project(const float v[4], float out[3])
  * max(|ds|) * W for 1D (r_tex.c), shared by both LOD paths. */
 float r_tex_rho(const struct r_texture *t, const float q[3][3]);
 /* The cube map lookup (r_tex_cube.c): the face and face coordinates of
- * c, then r_tex_sample of that face. */
-void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float quad[3][3],
-                       const float (*pair)[3], float out[4]);
+ * c, then the lookup of that face; q4: the coordinates (after the
+ * projective divide) of the fragment's quad, TL, TR, BL, BR, pos the
+ * fragment's place in it (bit 0 the right column, bit 1 the bottom row),
+ * p4 those of the other quad of its 8-pixel vector (r_tex_need_pair) or
+ * NULL. */
+void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float q4[4][3],
+                       unsigned pos, const float (*p4)[3], float out[4]);
 /* lp_build_rho of a cube map (r_tex_cube.c): q is the derivative form
  * r_tex_cube_quad makes, the (s, t, r) of the pixel whose LOD it is and
  * its x and y derivatives; squared, the first level's size applied. */
 float r_tex_cube_rho(const struct r_texture *t, const float q[3][3]);
-/* A cube map lookup's quad, TL, TR, BL (and br, the bottom-right) after
- * the projective divide, rewritten in place to the derivative form:
- * under a mipmap filter the fragment's own (pixel `pos` of the quad, bit
- * 0 the right column, bit 1 the bottom row: its row's right - left, its
- * column's bottom - top), else the top-left pixel's. */
-void r_tex_cube_quad(const struct r_texture *t, const float br[3], unsigned pos, float q[3][3]);
+
 /* The AoS filtering alone, given the LOD selector's results (for the
  * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still
  * filters on the AoS path): minify picks the min or mag image filter
@@ -360,6 +360,12 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
  * (r_tex_soa.c): called by r_tex_sample for a texture with `soa` set. */
 void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],
                       const float (*pair)[3], float out[4]);
+/* The float path (r_tex_soa.c) of one pixel whose LOD comes from quad,
+ * min != mag decided over it and the n_others other LODs of its 8-pixel
+ * vector (r_tex_cube.c: a LOD per pixel). */
+void r_tex_sample_float_lods(const struct r_texture *t, const float c[3],
+                             const float quad[3][3], const float (*const *others)[3],
+                             int n_others, float out[4]);
 /* The float path with different min and mag filters decides per 8
  * pixels (r_tex_soa.c): the lookup needs the pair quad. */
 static inline bool r_tex_need_pair(const struct r_texture *t)

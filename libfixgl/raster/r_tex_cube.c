@@ -24,8 +24,9 @@
  *    d(face s) = 0.5 * (d sc - sc * d ma / ma) / ma,
  * as gallivm computes them (1/ma a true division, then multiplies), and
  * rho is the 2D squared form of those derivatives times the face size.
- * (The float path's min != mag choice over 8 pixels takes the other
- * quad's top-left pixel: unverified for cube maps.)
+ * With a LOD per pixel and min != mag, llvmpipe takes the float path
+ * (state.c sets float_path), deciding the filter over the 8 pixels of the
+ * vector: every pixel's LOD of both quads (r_tex_sample_float_lods).
  *
  * state.c marks a cube map `soa` (no fast kernel, no per-quad LOD
  * cache); r_tex_sample hands every lookup here, and the face is sampled
@@ -90,23 +91,16 @@ static void face_minor(int axis, uint32_t sign, const float v[3], float *fs, flo
    }
 }
 
-void r_tex_cube_quad(const struct r_texture *t, const float br[3], unsigned pos, float q[3][3])
+/* The derivative form r_tex_cube_rho reads of pixel `pos` of a quad
+ * (q4: TL, TR, BL, BR): its coordinates, then lp_build_ddx (its row's
+ * right - left) and lp_build_ddy (its column's bottom - top). */
+static void deriv_form(const float q4[4][3], unsigned pos, float q[3][3])
 {
-   float p[3], dx[3], dy[3];
-   if (!br || t->mip == R_MIP_NONE)
-      pos = 0;   /* one LOD per quad, its top-left pixel's */
-   const float *tl = q[R_QUAD_TL], *tr = q[R_QUAD_TR], *bl = q[R_QUAD_BL];
    for (int k = 0; k < 3; k++) {
-      const float corner[4] = { tl[k], tr[k], bl[k], br ? br[k] : 0.0f };
-      p[k] = corner[pos];
-      /* lp_build_ddx: the row's right - left; lp_build_ddy: the column's
-       * bottom - top */
-      dx[k] = pos & 2 ? corner[3] - corner[2] : corner[1] - corner[0];
-      dy[k] = pos & 1 ? corner[3] - corner[1] : corner[2] - corner[0];
+      q[0][k] = q4[pos][k];
+      q[1][k] = pos & 2 ? q4[3][k] - q4[2][k] : q4[1][k] - q4[0][k];
+      q[2][k] = pos & 1 ? q4[3][k] - q4[1][k] : q4[2][k] - q4[0][k];
    }
-   memcpy(q[0], p, sizeof(p));
-   memcpy(q[1], dx, sizeof(dx));
-   memcpy(q[2], dy, sizeof(dy));
 }
 
 float r_tex_cube_rho(const struct r_texture *t, const float q[3][3])
@@ -141,8 +135,8 @@ float r_tex_cube_rho(const struct r_texture *t, const float q[3][3])
    return rx > ry ? rx : ry;
 }
 
-void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float quad[3][3],
-                       const float (*pair)[3], float out[4])
+void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float q4[4][3],
+                       unsigned pos, const float (*p4)[3], float out[4])
 {
    const int axis = major_axis(c);
    const float ma = c[axis];
@@ -166,5 +160,39 @@ void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float 
       ft_face.level[l].data = t->cube_data[face][l];
       ft_face.level[l].store = t->cube_store[face][l];
    }
-   r_tex_sample(&ft_face, fc, quad, pair, out);
+   float q[3][3], p[3][3];
+   if (t->mip == R_MIP_NONE) {
+      /* one LOD per quad, its top-left pixel's (the other quad's too) */
+      deriv_form(q4, 0, q);
+      if (p4)
+         deriv_form(p4, 0, p);
+      r_tex_sample(&ft_face, fc, (const float (*)[3])q, p4 ? (const float (*)[3])p : NULL,
+                   out);
+      return;
+   }
+   /* a LOD per pixel */
+   deriv_form(q4, pos, q);
+   if (!(t->float_path && t->min_img != t->mag_img)) {
+      r_tex_sample(&ft_face, fc, (const float (*)[3])q, NULL, out);
+      return;
+   }
+   /* min != mag with a LOD per pixel: the float path (use_aos needs
+    * num_lods <= num_quads), linear filtering when any of the 8 pixels
+    * needs it (lp_build_sample_general) */
+   float others[7][3][3];
+   const float (*op[7])[3];
+   int n = 0;
+   for (unsigned i = 0; i < 4; i++) {
+      if (i != pos) {
+         deriv_form(q4, i, others[n]);
+         op[n] = (const float (*)[3])others[n];
+         n++;
+      }
+   }
+   for (unsigned i = 0; p4 && i < 4; i++) {
+      deriv_form(p4, i, others[n]);
+      op[n] = (const float (*)[3])others[n];
+      n++;
+   }
+   r_tex_sample_float_lods(&ft_face, fc, (const float (*)[3])q, op, n, out);
 }

@@ -235,15 +235,15 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
          }
       }
       /* a cube map's bottom-right pixel (r_tex_cube_quad) */
-      if (rs->fs->tex_cube) {
-         const float fx = (float)(qx + 1), fy = (float)(qy + 1);
+      for (int i = 0; rs->fs->tex_cube && i < (rs->fs->tex_pair ? 2 : 1); i++) {
+         const float fx = (float)((i ? qx ^ 2 : qx) + 1), fy = (float)(qy + 1);
          const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
          for (unsigned m = units; m; m &= m - 1) {
             const int u = __builtin_ctz(m);
             const int a = R_FS_TEX0 + u;
+            float *d = i ? q->pair_br[u] : q->br[u];
             for (int c = 0; c < 4; c++)
-               q->br[u][c] = ts->flat_attr[a] ? ts->flat[a][c]
-                                              : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
+               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
       /* the LOD of the units that texture (a pixel rectangle's quad
