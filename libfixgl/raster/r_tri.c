@@ -298,8 +298,10 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
       /* a pixel rectangle's quad: its own fragment stage (r_pixels.c);
        * a unit reading the quad's coordinate (R_FS_TEX0) needs its quad */
       const bool quad = rs->fs->tex_units && rs->pix->tex_quad;
-      if (quad)
+      if (quad) {
          fill_quad(rs, ts, px, py, 1u);
+         ((struct r_tri_setup *)ts)->quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
+      }
       r_pixel_fragment(rs, px, py, (const float (*)[4])in, r_eval_plane(&ts->z, fx, fy),
                        quad ? &ts->quad : NULL);
       return;
