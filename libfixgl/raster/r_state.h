@@ -345,8 +345,9 @@ float r_tex_rho(const struct r_texture *t, const float q[3][3]);
 void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float q4[4][3],
                        unsigned pos, const float (*p4)[3], float out[4]);
 /* lp_build_rho of a cube map (r_tex_cube.c): q is the derivative form
- * r_tex_cube_quad makes, the (s, t, r) of the pixel whose LOD it is and
- * its x and y derivatives; squared, the first level's size applied. */
+ * r_tex_sample_cube passes (deriv_form), the (s, t, r) of the pixel
+ * whose LOD it is and its x and y derivatives; squared, the first
+ * level's size applied. */
 float r_tex_cube_rho(const struct r_texture *t, const float q[3][3]);
 
 /* The AoS filtering alone, given the LOD selector's results (for the

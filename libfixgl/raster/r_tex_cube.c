@@ -29,7 +29,9 @@
  * vector: every pixel's LOD of both quads (r_tex_sample_float_lods).
  *
  * state.c marks a cube map `soa` (no fast kernel, no per-quad LOD
- * cache); r_tex_sample hands every lookup here, and the face is sampled
+ * cache); the reference fragment program (r_frag.c) calls
+ * r_tex_sample_cube with the whole quad (r_tex_sample, for other callers,
+ * with its top-left pixel's derivatives only), and the face is sampled
  * through a copy of the r_texture whose `cube` is R_CUBE_FACE: its levels
  * point at the face's images and its `soa` is the one the face needs
  * (face_soa), and r_tex_rho still sees a cube (r_tex_cube_rho).

@@ -234,7 +234,8 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
-      /* a cube map's bottom-right pixel (r_tex_cube_quad) */
+      /* a cube map's bottom-right pixels, of the quad and of the pair
+       * quad (r_tex_sample_cube: a LOD per pixel) */
       for (int i = 0; rs->fs->tex_cube && i < (rs->fs->tex_pair ? 2 : 1); i++) {
          const float fx = (float)((i ? qx ^ 2 : qx) + 1), fy = (float)(qy + 1);
          const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
