@@ -455,7 +455,25 @@ struct fgl_texture_object {
    /* the images, by level (NULL: none); glPopAttrib restores the
     * parameters above and keeps these */
    struct fgl_texture_image *Image[FGL_MAX_TEXTURE_LEVELS];
+   /* a cube map's faces -X, +Y, -Y, +Z, -Z by level (face +X, the first,
+    * is Image; fgl_tex_face_image) [S: mtypes.h, gl_texture_object
+    * Image[MAX_FACES][MAX_TEXTURE_LEVELS]] */
+   struct fgl_texture_image *FaceImage[5][FGL_MAX_TEXTURE_LEVELS];
 };
+
+/* The image slot of face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z; 0 for the
+ * targets without faces) at `level` of t. */
+static inline struct fgl_texture_image **fgl_tex_face_slot(struct fgl_texture_object *t,
+                                                           unsigned face, int level)
+{
+   return face ? &t->FaceImage[face - 1][level] : &t->Image[level];
+}
+
+static inline const struct fgl_texture_image *
+fgl_tex_face_image(const struct fgl_texture_object *t, unsigned face, int level)
+{
+   return face ? t->FaceImage[face - 1][level] : t->Image[level];
+}
 
 /* The named objects and the default ones (Mesa's Shared->TexObjects and
  * Shared->DefaultTex): shared by the contexts of an OSMesaCreateContext
@@ -481,9 +499,9 @@ struct fgl_texture_local {
    /* the LOD bias of units 8..191: glPopAttrib restores only the
     * fixed-function units' (attrib.c:pop_texture_group) */
    float ImageLodBias[FGL_IMAGE_ONLY_UNITS];
-   /* the proxy objects of GL_PROXY_TEXTURE_1D, _2D and _3D: images
-    * without texels */
-   struct fgl_texture_object Proxy[3];
+   /* the proxy objects of GL_PROXY_TEXTURE_1D, _2D, _3D and _CUBE_MAP:
+    * images without texels */
+   struct fgl_texture_object Proxy[4];
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample

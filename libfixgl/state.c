@@ -159,6 +159,23 @@ static void update_texture_general(const struct fgl_context *ctx, unsigned u,
       rt->border_color[c] = b[c];
 }
 
+/* A cube map (r_tex_cube.c): its faces' levels, and the wraps llvmpipe
+ * forces on cube maps, CLAMP_TO_EDGE on s and t whatever the object's
+ * [S: lp_bld_sample_soa.c:lp_build_sample_soa_code, derived_sampler_state;
+ * seamless filtering is off in the compatibility context]. */
+static void update_texture_cube(const struct fgl_texture_object *t, struct r_texture *rt)
+{
+   rt->cube = R_CUBE_MAP;
+   for (unsigned f = 0; f < 6; f++) {
+      for (int l = rt->first_level; l <= rt->last_level; l++) {
+         const struct fgl_texture_image *img = fgl_tex_face_image(t, f, l);
+         rt->cube_data[f][l] = img->Data;
+         rt->cube_store[f][l] = rt->level[l].store ? img->Store : NULL;
+      }
+   }
+   rt->wrap_s = rt->wrap_t = R_WRAP_CLAMP_TO_EDGE;
+}
+
 /* The sampler view and sampler state the state tracker hands llvmpipe for
  * a complete texture object [S: st_atom_texture.c, st_atom_sampler.c:
  * st_convert_sampler; gallivm/lp_bld_sample.c:
@@ -211,9 +228,21 @@ static void update_texture(const struct fgl_context *ctx, unsigned u,
    rt->wrap_s = tex_wrap(t->WrapS);
    rt->wrap_t = tex_wrap(t->WrapT);
    rt->wrap_r = rt->dims == 3 ? tex_wrap(t->WrapR) : R_WRAP_REPEAT;
+   if (target == GL_TEXTURE_CUBE_MAP)
+      update_texture_cube(t, rt);
    update_texture_general(ctx, u, t, rt);
    if (base->BaseFormat == GL_DEPTH_COMPONENT)
       fgl_update_texture_depth(t, rt);
+   if (rt->cube) {
+      /* a LOD per pixel (a mipmap filter) with min != mag: the float
+       * path [S: lp_bld_sample_soa.c:lp_build_sample_soa_code, use_aos
+       * needs num_lods <= num_quads or min == mag] */
+      if (rt->mip != R_MIP_NONE && rt->min_img != rt->mag_img)
+         rt->float_path = true;
+      /* every lookup of a cube map goes to r_tex_cube.c */
+      rt->face_soa = rt->soa || rt->float_path;
+      rt->soa = true;
+   }
 }
 
 static uint8_t comb_mode(GLenum env, GLenum mode)
@@ -886,9 +915,12 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
          if (!rs->tex[u])
             o.tex_units &= ~(1u << u);
       o.tex_nr = o.tex_units ? 32 - __builtin_clz(o.tex_units) : 0;
-      for (int u = 0; u < o.tex_nr; u++)
-         if (rs->tex[u])
+      for (int u = 0; u < o.tex_nr; u++) {
+         if (rs->tex[u]) {
             o.tex_pair |= r_tex_need_pair(&rs->tex[u]->tex);
+            o.tex_cube |= rs->tex[u]->tex.cube != R_CUBE_NONE;
+         }
+      }
       ok = true;
       SET_OBJECT(ctx, rs->fs, o, &ok);
       failed |= ok ? 0u : FGL_NEW_FOG;

@@ -69,6 +69,7 @@ extern const fc_case fc_cases_gl14_sprite[];
 extern const fc_case fc_cases_gl15[];
 extern const fc_case fc_cases_tex3d[];
 extern const fc_case fc_cases_shadow[];
+extern const fc_case fc_cases_cubemap[];
 extern const fc_case fc_cases_osmesa[];
 extern const fc_case fc_cases_tex_copy[];
 

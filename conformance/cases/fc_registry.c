@@ -43,6 +43,7 @@ static const fc_case *const groups[] = {
     fc_cases_gl15,
     fc_cases_tex3d,
     fc_cases_shadow,
+    fc_cases_cubemap,
     fc_cases_osmesa,
     fc_cases_tex_copy,
 };

@@ -109,10 +109,12 @@ CLASSES = {
                        'GL_RGBA8', 'GL_RGB10_A2', 'GL_RGBA12', 'GL_RGBA16', 'GL_DEPTH_COMPONENT',
                        'GL_DEPTH_COMPONENT16', 'GL_DEPTH_COMPONENT24', 'GL_DEPTH_COMPONENT32',
                        'GL_COLOR_INDEX', 'GL_BGRA', 'GL_RED'],
-    # (cube-map faces, which fixgl does not have yet, come from the hostile
+    # (three of the six cube-map faces; the others come from the hostile
     # choices: any GL enum)
     'tex_target': ['GL_TEXTURE_1D', 'GL_TEXTURE_2D', 'GL_PROXY_TEXTURE_1D', 'GL_PROXY_TEXTURE_2D',
-                   'GL_TEXTURE_3D', 'GL_TEXTURE_CUBE_MAP', 'GL_PROXY_TEXTURE_3D'],
+                   'GL_TEXTURE_3D', 'GL_TEXTURE_CUBE_MAP', 'GL_PROXY_TEXTURE_3D',
+                   'GL_PROXY_TEXTURE_CUBE_MAP', 'GL_TEXTURE_CUBE_MAP_POSITIVE_X',
+                   'GL_TEXTURE_CUBE_MAP_NEGATIVE_Y', 'GL_TEXTURE_CUBE_MAP_POSITIVE_Z'],
     'tex_pname': ['GL_TEXTURE_MIN_FILTER', 'GL_TEXTURE_MAG_FILTER', 'GL_TEXTURE_WRAP_S',
                   'GL_TEXTURE_WRAP_T', 'GL_TEXTURE_WRAP_R', 'GL_TEXTURE_BORDER_COLOR',
                   'GL_TEXTURE_PRIORITY', 'GL_TEXTURE_MIN_LOD', 'GL_TEXTURE_MAX_LOD',

@@ -8,7 +8,9 @@
  *   - sizes powers of two or not (1 to 64 texels a side), every 8-bit
  *     internal format of GL 1.x (RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA,
  *     (3D: depths of the same sizes, its own wrap on r, chosen from a
- *     stream of its own so that the other scenes stay as they were)
+ *     stream of its own so that the other scenes stay as they were; cube
+ *     maps the same way: six square faces, often with GL_REFLECTION_MAP
+ *     or GL_NORMAL_MAP texgen on S, T and R)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -123,6 +125,11 @@ struct profile {
     GLenum depth_type;
     int compare;
     GLenum compare_func, depth_mode;
+    /* from another stream of its own: a cube map rather than 2D (faces
+     * square), its texgen (0: the primitives' coordinates,
+     * 1: REFLECTION_MAP, 2: NORMAL_MAP on S, T, R) */
+    int cube;
+    int cube_gen;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -238,7 +245,7 @@ static void upload_depth_level(fc_rng *r, const struct profile *p, int level, in
 }
 
 static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h0,
-                         int d, int pattern, int align)
+                         int d, int pattern, int align, int face)
 {
     if (p->depth) {
         upload_depth_level(r, p, level, w, h0, pattern, align);
@@ -275,24 +282,32 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
         fct_glTexImage1D(GL_TEXTURE_1D, level, p->internal, w, 0, src_formats[p->src],
                          GL_UNSIGNED_BYTE, img, bytes);
     else
-        fct_glTexImage2D(GL_TEXTURE_2D, level, p->internal, w, h, 0, src_formats[p->src],
-                         GL_UNSIGNED_BYTE, img, bytes);
+        fct_glTexImage2D(p->cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face : GL_TEXTURE_2D,
+                         level, p->internal, w, h, 0, src_formats[p->src], GL_UNSIGNED_BYTE, img,
+                         bytes);
     free(img);
 }
 
 static void random_texture(struct scene *s, const struct profile *p)
 {
     fc_rng *r = &s->r;
-    const GLenum target = p->tex3d ? GL_TEXTURE_3D : p->tex1d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+    const GLenum target = p->cube    ? GL_TEXTURE_CUBE_MAP
+                          : p->tex3d ? GL_TEXTURE_3D
+                          : p->tex1d ? GL_TEXTURE_1D
+                                     : GL_TEXTURE_2D;
+    const int faces = p->cube ? 6 : 1;
     fct_glBindTexture(target, 1 + fc_rng_below(r, 3));
     static const int aligns[4] = { 1, 2, 4, 8 };
     GLint align = aligns[fc_rng_below(r, 4)];
     fct_glPixelStorei(GL_UNPACK_ALIGNMENT, align);
     int w = tex_size(r, p->npot), h = p->tex1d ? 1 : tex_size(r, p->npot);
+    if (p->cube)
+        h = w;   /* square faces */
     /* 3D: at most 16 texels deep */
     int d = p->tex3d ? 1 + (tex_size(r, p->npot) - 1) % 16 : 1;
     const int pattern = (int)fc_rng_below(r, 3);
-    upload_level(r, p, 0, w, h, d, pattern, align);
+    for (int f = 0; f < faces; f++)
+        upload_level(r, p, 0, w, h, d, pattern, align, f);
     const int mipmapped = p->min_filter != GL_NEAREST && p->min_filter != GL_LINEAR;
     if (mipmapped || fc_rng_chance(r, 10)) {
         const int skip = p->mip == 2 ? fc_rng_range(r, 1, 6) : -1;
@@ -302,8 +317,9 @@ static void random_texture(struct scene *s, const struct profile *p)
             d = d > 1 ? d / 2 : 1;
             if (level == skip)
                 continue;
-            upload_level(r, p, level, w, h, d, p->mip == 1 ? 3 : (int)fc_rng_below(r, 4),
-                         align);
+            for (int f = 0; f < faces; f++)
+                upload_level(r, p, level, w, h, d, p->mip == 1 ? 3 : (int)fc_rng_below(r, 4),
+                             align, f);
         }
     }
     fct_glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)p->min_filter);
@@ -375,6 +391,15 @@ static void random_texgen(struct scene *s, const struct profile *p)
 {
     static const GLenum modes[3] = { GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP };
     fc_rng *r = &s->r;
+    if (p->cube && p->cube_gen) {
+        /* a cube map's texgen: S, T and R */
+        const GLenum mode = p->cube_gen == 1 ? GL_REFLECTION_MAP : GL_NORMAL_MAP;
+        for (int c = 0; c < 3; c++) {
+            fct_glTexGeni(GL_S + (GLenum)c, GL_TEXTURE_GEN_MODE, (GLint)mode);
+            glEnable(GL_TEXTURE_GEN_S + (GLenum)c);
+        }
+        return;
+    }
     if (!p->texgen)
         return;
     for (int c = 0; c < 2; c++) {
@@ -657,6 +682,10 @@ static void tex_scene(fc_h *h)
         p.tex3d = !p.tex1d && fc_rng_chance(&k3, 12);
         p.wrap_r = fc_rng_chance(&k3, 60) ? wraps[fc_rng_below(&k3, 2)]
                                           : wraps[fc_rng_below(&k3, 5)];
+        /* cube maps in about one structure of ten, from another stream */
+        fc_rng kc = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
+        p.cube = !p.tex1d && !p.tex3d && fc_rng_chance(&kc, 11);
+        p.cube_gen = fc_rng_chance(&kc, 60) ? 1 + (int)fc_rng_below(&kc, 2) : 0;
     }
     {
         /* depth textures with or without the shadow comparison in one

@@ -31,13 +31,16 @@
 
 void fgl_free_tex_images(struct fgl_texture_object *t)
 {
-   for (int l = 0; l < FGL_MAX_TEXTURE_LEVELS; l++) {
-      if (t->Image[l]) {
-         fgl_free(t->Image[l]->Data);
-         fgl_free(t->Image[l]->Store);
-         fgl_free(t->Image[l]->ZValues);
-         fgl_free(t->Image[l]);
-         t->Image[l] = NULL;
+   for (unsigned f = 0; f < 6; f++) {
+      for (int l = 0; l < FGL_MAX_TEXTURE_LEVELS; l++) {
+         struct fgl_texture_image **slot = fgl_tex_face_slot(t, f, l);
+         if (*slot) {
+            fgl_free((*slot)->Data);
+            fgl_free((*slot)->Store);
+            fgl_free((*slot)->ZValues);
+            fgl_free(*slot);
+            *slot = NULL;
+         }
       }
    }
 }
@@ -418,7 +421,35 @@ static void rebase_texel(GLenum base, const uint8_t c[4], uint8_t *t)
 static bool is_proxy(GLenum target)
 {
    return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-          target == GL_PROXY_TEXTURE_3D;
+          target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
+/* [S: teximage.h:_mesa_is_cube_face] */
+static bool is_cube_face(GLenum target)
+{
+   return target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
+}
+
+/* A cube map's targets: the faces and the proxy, whose sizes must be
+ * square (_mesa_legal_texture_dimensions) */
+static bool is_cube_target(GLenum target)
+{
+   return is_cube_face(target) || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
+/* [S: teximage.h:_mesa_tex_target_to_face] the face index of a target
+ * (0 for the targets without faces) */
+static unsigned target_face(GLenum target)
+{
+   return is_cube_face(target) ? target - GL_TEXTURE_CUBE_MAP_POSITIVE_X : 0;
+}
+
+/* The image slot an image call on `target` (a face, or a target without
+ * faces) at `level` of t changes. */
+static struct fgl_texture_image **image_slot(struct fgl_texture_object *t, GLenum target,
+                                             GLint level)
+{
+   return fgl_tex_face_slot(t, target_face(target), level);
 }
 
 /* The object an image call on `target` changes: the bound object, or the
@@ -429,16 +460,25 @@ static struct fgl_texture_object *target_object(struct fgl_context *ctx, GLenum 
    case GL_PROXY_TEXTURE_1D: return &ctx->TexLocal.Proxy[0];
    case GL_PROXY_TEXTURE_2D: return &ctx->TexLocal.Proxy[1];
    case GL_PROXY_TEXTURE_3D: return &ctx->TexLocal.Proxy[2];
-   default: return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit, target);
+   case GL_PROXY_TEXTURE_CUBE_MAP: return &ctx->TexLocal.Proxy[3];
+   default:
+      /* a face changes the bound cube map */
+      return fgl_bound_texture(ctx, ctx->Texture.CurrentUnit,
+                               is_cube_face(target) ? GL_TEXTURE_CUBE_MAP : target);
    }
 }
 
 /* [S: teximage.c:_mesa_legal_texture_dimensions] with NPOT textures; 3D
- * images are limited by 1 << (Max3DTextureLevels - 1) */
-static bool legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
+ * images are limited by 1 << (Max3DTextureLevels - 1), cube faces by
+ * 1 << (MaxCubeTextureLevels - 1) and must be square */
+static bool legal_dimensions(GLenum target, GLuint dims, GLint level, GLint w, GLint h, GLint d,
                              GLint border)
 {
-   const GLint max = (dims == 3 ? FGL_MAX_3D_TEXTURE_SIZE : FGL_MAX_TEXTURE_SIZE) >> level;
+   if (is_cube_target(target) && w != h)
+      return false;
+   const GLint max = (dims == 3 ? FGL_MAX_3D_TEXTURE_SIZE
+                      : is_cube_target(target) ? FGL_MAX_CUBE_MAP_TEXTURE_SIZE
+                                               : FGL_MAX_TEXTURE_SIZE) >> level;
    if (w < 2 * border || w > 2 * border + max)
       return false;
    if (dims >= 2 && (h < 2 * border || h > 2 * border + max))
@@ -477,7 +517,7 @@ static unsigned logbase2(unsigned n)
  * levels aligned to 64 bytes; more than LP_MAX_TEXTURE_SIZE (2 GiB) does
  * not fit. */
 static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, GLint h,
-                    GLint d)
+                    GLint d, unsigned layers)
 {
    if (w == 0 || h == 0 || d == 0)
       return true;
@@ -490,7 +530,7 @@ static bool size_ok(GLuint dims, const struct fgl_tex_pipe_format *pf, GLint w, 
       const uint64_t aw = (width + 3u) & ~3u;
       const uint64_t ah = dims == 1 ? height : ((height + 3u) & ~3u);
       const uint64_t stride = (aw * pf->bytes + 63u) & ~(uint64_t)63u;
-      total += (stride * ah * depth + 63u) & ~(uint64_t)63u;
+      total += (stride * ah * depth * layers + 63u) & ~(uint64_t)63u;
       if (total > 2ull * 1024 * 1024 * 1024)
          return false;
       width = width > 1 ? width >> 1 : 1;
@@ -516,16 +556,18 @@ static struct fgl_texture_image *new_image(int w, int h, int d, int border, GLin
    return img;
 }
 
-static void set_image(struct fgl_texture_object *t, GLint level,
+/* Replaces the image of face `face` (0 without faces) at `level` of t. */
+static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
                       struct fgl_texture_image *img)
 {
-   if (t->Image[level]) {
-      fgl_free(t->Image[level]->Data);
-      fgl_free(t->Image[level]->Store);
-      fgl_free(t->Image[level]->ZValues);
-      fgl_free(t->Image[level]);
+   struct fgl_texture_image **slot = fgl_tex_face_slot(t, face, level);
+   if (*slot) {
+      fgl_free((*slot)->Data);
+      fgl_free((*slot)->Store);
+      fgl_free((*slot)->ZValues);
+      fgl_free(*slot);
    }
-   t->Image[level] = img;
+   *slot = img;
 }
 
 /* Allocates the texel storage of img (and its stored values when the
@@ -720,12 +762,47 @@ static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int
    }
 }
 
+/* [S: mipmap.c:_mesa_prepare_mipmap_levels, prepare_mipmap_level] a
+ * cube map's generation first gives every face the levels base+1..last
+ * in the format and halved sizes of face +X's base image: a face whose
+ * image there differs (or is missing) gets a new one, its texels the
+ * zeroed storage's; false when +X has no base image (nothing is
+ * generated) or out of memory. */
+static bool prepare_cube_levels(struct fgl_context *ctx, struct fgl_texture_object *t,
+                                GLint level, GLint last)
+{
+   const struct fgl_texture_image *tmpl = t->Image[level];
+   if (!tmpl)
+      return false;
+   int w = tmpl->Width, h = tmpl->Height;
+   for (GLint l = level + 1; l <= last; l++) {
+      w = w > 1 ? w >> 1 : 1;
+      h = h > 1 ? h >> 1 : 1;
+      for (unsigned f = 0; f < 6; f++) {
+         const struct fgl_texture_image *old = fgl_tex_face_image(t, f, l);
+         if (old && old->Width == w && old->Height == h && old->Depth == 1 &&
+             old->Border == 0 && old->InternalFormat == tmpl->InternalFormat &&
+             old->Format == tmpl->Format)
+            continue;
+         struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)tmpl->InternalFormat,
+                                                   tmpl->BaseFormat, tmpl->Format);
+         if (!img || !alloc_texels(img)) {
+            fgl_free(img);
+            fgl_error(ctx, GL_OUT_OF_MEMORY);
+            return false;
+         }
+         set_image(t, f, l, img);
+      }
+   }
+   return true;
+}
+
 static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object *t,
-                             GLint level)
+                             unsigned face, GLint level)
 {
    if (!t->GenerateMipmap || level != t->BaseLevel || level >= t->MaxLevel)
       return;
-   const struct fgl_texture_image *base = t->Image[level];
+   const struct fgl_texture_image *base = fgl_tex_face_image(t, face, level);
    if (!base || base->Width == 0 || base->Height == 0 || base->Depth == 0)
       return;
    unsigned larger = (unsigned)(base->Width > base->Height ? base->Width : base->Height);
@@ -738,8 +815,13 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
                               : FGL_MAX_TEXTURE_LEVELS - 1;
    if (last > max_level)
       last = max_level;
+   /* a cube map generates the levels of the face given, after giving
+    * every face its levels (st_gen_mipmap.c:st_generate_mipmap: the one
+    * layer of the face) */
+   if (t->Target == GL_TEXTURE_CUBE_MAP && !prepare_cube_levels(ctx, t, level, last))
+      return;
    for (GLint l = level + 1; l <= last; l++) {
-      const struct fgl_texture_image *src = t->Image[l - 1];
+      const struct fgl_texture_image *src = fgl_tex_face_image(t, face, l - 1);
       const int W = src->Width, H = src->Height, D = src->Depth;
       const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1, d = D > 1 ? D >> 1 : 1;
       struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)base->InternalFormat,
@@ -761,7 +843,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
                gen_mip_float(src, w, h, i, j, q);
                put_stored(img, (size_t)j * (size_t)w + (size_t)i, q, 1);
             }
-         set_image(t, l, img);
+         set_image(t, face, l, img);
          continue;
       }
       for (int k = 0; k < d; k++) {
@@ -793,7 +875,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
             }
          }
       }
-      set_image(t, l, img);
+      set_image(t, face, l, img);
    }
    ctx->NewState |= FGL_NEW_TEXTURE;
 }
@@ -819,10 +901,11 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
-   /* legal_teximage_target (cube faces, rectangle and 1D array targets
-    * are not modelled) */
+   /* legal_teximage_target (rectangle and 1D array targets are not
+    * modelled) */
    if (dims == 1   ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
-       : dims == 2 ? target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D
+       : dims == 2 ? target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D &&
+                        !is_cube_target(target)
                    : target != GL_TEXTURE_3D && target != GL_PROXY_TEXTURE_3D) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
@@ -861,8 +944,8 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       return;
    }
    const struct fgl_tex_pipe_format *pf = choose_pipe_format(tf, format, type);
-   const bool dims_ok = legal_dimensions(dims, level, width, height, depth, border);
-   const bool sz_ok = size_ok(dims, pf, width, height, depth);
+   const bool dims_ok = legal_dimensions(target, dims, level, width, height, depth, border);
+   const bool sz_ok = size_ok(dims, pf, width, height, depth, is_cube_target(target) ? 6 : 1);
 
    struct fgl_texture_object *t = target_object(ctx, target);
    if (is_proxy(target)) {
@@ -876,7 +959,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
             return;
          }
       }
-      set_image(t, level, img);
+      set_image(t, 0, level, img);
       return;
    }
    if (!dims_ok) {
@@ -924,9 +1007,9 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_free(img);
       return;
    }
-   set_image(t, level, img);
+   set_image(t, target_face(target), level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
-   check_gen_mipmap(ctx, t, level);
+   check_gen_mipmap(ctx, t, target_face(target), level);
 }
 
 void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat,
@@ -1002,7 +1085,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
                                             height, format, type, pixels)))
       return;
    ASSERT_OUTSIDE_BEGIN_END(ctx);
-   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D)) {
+   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D) &&
+       !(dims == 2 && is_cube_face(target))) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1016,7 +1100,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       return;
    }
    struct fgl_texture_object *t = target_object(ctx, target);
-   struct fgl_texture_image *img = t->Image[level];
+   struct fgl_texture_image *img = *image_slot(t, target, level);
    if (!img) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
@@ -1049,7 +1133,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
       ctx->NewState |= FGL_NEW_TEXTURE;
-      check_gen_mipmap(ctx, t, level);
+      check_gen_mipmap(ctx, t, target_face(target), level);
    }
 }
 
@@ -1159,7 +1243,8 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
    /* legal_texsubimage_target: no proxies */
-   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) {
+   if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D) &&
+       !(dims == 2 && is_cube_face(target))) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1188,23 +1273,24 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (!legal_dimensions(dims, level, width, height, 1, border)) {
+   if (!legal_dimensions(target, dims, level, width, height, 1, border)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
    const struct fgl_tex_pipe_format *pf = tf->pf;
    struct fgl_texture_object *t = target_object(ctx, target);
-   struct fgl_texture_image *old = t->Image[level];
+   const unsigned face = target_face(target);
+   struct fgl_texture_image *old = *image_slot(t, target, level);
    /* can_avoid_reallocation: the same format and size keeps the storage,
     * and the texels outside the framebuffer keep their values */
    if (old && old->InternalFormat == internal && old->Format == pf && border == 0 &&
        old->Depth == 1 &&
        old->Border == 0 && old->Width == width && old->Height == height) {
       copy_texels(ctx, old, 0, 0, 0, x, y, width, height);
-      check_gen_mipmap(ctx, t, level);
+      check_gen_mipmap(ctx, t, face, level);
       return;
    }
-   if (!size_ok(dims, pf, width, height, 1)) {
+   if (!size_ok(dims, pf, width, height, 1, is_cube_target(target) ? 6 : 1)) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -1223,11 +1309,11 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   set_image(t, level, img);
+   set_image(t, face, level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    if (width && height)
       copy_texels(ctx, img, 0, 0, 0, x, y, width, height);
-   check_gen_mipmap(ctx, t, level);
+   check_gen_mipmap(ctx, t, face, level);
 }
 
 void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x,
@@ -1261,7 +1347,8 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
     * copy_texture_sub_image_err's FLUSH_VERTICES: a bad target raises
     * GL_INVALID_ENUM with the vertex format untouched (a glTexCoord4f,
     * glTexCoord3f after it keeps q; the API fuzzer's seed 150) */
-   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D)) {
+   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 2 ? GL_TEXTURE_2D : GL_TEXTURE_3D) &&
+       !(dims == 2 && is_cube_face(target))) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1272,7 +1359,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
       return;
    }
    struct fgl_texture_object *t = target_object(ctx, target);
-   struct fgl_texture_image *img = t->Image[level];
+   struct fgl_texture_image *img = *image_slot(t, target, level);
    if (!img) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
@@ -1292,7 +1379,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
    if (width == 0 || height == 0)
       return;
    copy_texels(ctx, img, xoff, yoff, zoff, x, y, width, height);
-   check_gen_mipmap(ctx, t, level);
+   check_gen_mipmap(ctx, t, target_face(target), level);
 }
 
 void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x,
@@ -1364,9 +1451,10 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
       fgl_error(ctx, err);
       return;
    }
-   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D)
+   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D &&
+       !is_cube_face(target))
       return;   /* no image: nothing to do */
-   const struct fgl_texture_image *img = target_object(ctx, target)->Image[level];
+   const struct fgl_texture_image *img = *image_slot(target_object(ctx, target), target, level);
    if (!img || img->Width == 0 || img->Height == 0 || img->Depth == 0)
       return;
    /* teximage_error_check: a colour image reads back as colours only, a
@@ -1484,8 +1572,8 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
    }
    const struct fgl_texture_image *img = NULL;
    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_2D || target == GL_TEXTURE_3D ||
-       is_proxy(target))
-      img = target_object(ctx, target)->Image[level];
+       is_cube_face(target) || is_proxy(target))
+      img = *image_slot(target_object(ctx, target), target, level);
    /* an undefined image reads as Mesa's dummy image: sizes 0, internal
     * format GL_RGBA, no format */
    const GLenum base = img ? img->BaseFormat : GL_NONE;

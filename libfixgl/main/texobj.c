@@ -63,6 +63,7 @@ bool fgl_init_texobj(struct fgl_context *ctx)
    init_object(&ctx->TexLocal.Proxy[0], 0, GL_PROXY_TEXTURE_1D);
    init_object(&ctx->TexLocal.Proxy[1], 0, GL_PROXY_TEXTURE_2D);
    init_object(&ctx->TexLocal.Proxy[2], 0, GL_PROXY_TEXTURE_3D);
+   init_object(&ctx->TexLocal.Proxy[3], 0, GL_PROXY_TEXTURE_CUBE_MAP);
    return true;
 }
 
@@ -112,6 +113,7 @@ void fgl_free_texobj(struct fgl_context *ctx)
    fgl_free_tex_images(&ctx->TexLocal.Proxy[0]);
    fgl_free_tex_images(&ctx->TexLocal.Proxy[1]);
    fgl_free_tex_images(&ctx->TexLocal.Proxy[2]);
+   fgl_free_tex_images(&ctx->TexLocal.Proxy[3]);
 }
 
 /* OSMesaCreateContext's sharelist: the new context (which has bound

@@ -24,6 +24,22 @@ static bool needs_mipmaps(GLenum min_filter)
    return min_filter != GL_NEAREST && min_filter != GL_LINEAR;
 }
 
+/* [S: texobj.c:_mesa_test_texobj_completeness] a cube map's base level:
+ * the five other faces must have an image there of face +X's width
+ * (faces are square), internal format and border (a face missing or
+ * mismatched leaves the object incomplete whatever the filter). */
+static bool fgl_cube_base_complete(const struct fgl_texture_object *t)
+{
+   const struct fgl_texture_image *bi = t->Image[t->BaseLevel];
+   for (unsigned f = 1; f < 6; f++) {
+      const struct fgl_texture_image *img = fgl_tex_face_image(t, f, t->BaseLevel);
+      if (!img || img->Width - 2 * img->Border != bi->Width - 2 * bi->Border ||
+          img->InternalFormat != bi->InternalFormat || img->Border != bi->Border)
+         return false;
+   }
+   return true;
+}
+
 /* [S: texobj.c:_mesa_test_texobj_completeness, texobj.h:
  * _mesa_is_texture_complete] the base image must exist and be non-empty;
  * with a mipmap filter every level from the base to _MaxLevel =
@@ -44,7 +60,10 @@ bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level)
       return false;
    const bool is1d = t->Target == GL_TEXTURE_1D;
    const bool is3d = t->Target == GL_TEXTURE_3D;
+   const bool cube = t->Target == GL_TEXTURE_CUBE_MAP;
    if (is3d && bi->Depth == 0)
+      return false;
+   if (cube && !fgl_cube_base_complete(t))
       return false;
    int w = bi->Width - 2 * bi->Border;
    int h = is1d ? 1 : bi->Height - 2 * bi->Border;
@@ -67,8 +86,10 @@ bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level)
          h /= 2;
       if (d > 1)
          d /= 2;
-      if (i <= maxl) {
-         const struct fgl_texture_image *img = t->Image[i];
+      /* a cube map: each face's level (check_level_completeness per
+       * face) */
+      for (unsigned f = 0; i <= maxl && f < (cube ? 6u : 1u); f++) {
+         const struct fgl_texture_image *img = fgl_tex_face_image(t, f, i);
          if (!img || img->InternalFormat != bi->InternalFormat ||
              img->Border != bi->Border || img->Width - 2 * img->Border != w ||
              (!is1d && img->Height - 2 * img->Border != h) ||
@@ -138,12 +159,12 @@ void fgl_update_texture_matrices(struct fgl_context *ctx)
 }
 
 /* [S: texstate.c:update_ff_texture_state] targets in priority order,
- * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.  Only 1D,
- * 2D and 3D textures can have images in fixgl, so only they can
- * texture. */
+ * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.
+ * Rectangle textures have no images in fixgl, so they cannot texture. */
 void fgl_update_texture_state(struct fgl_context *ctx)
 {
-   static const GLenum targets[] = { GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_1D };
+   static const GLenum targets[] = { GL_TEXTURE_CUBE_MAP, GL_TEXTURE_3D, GL_TEXTURE_2D,
+                                     GL_TEXTURE_1D };
    ctx->_EnabledTexUnits = 0;
    for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++) {
       ctx->_CurrentTex[u] = NULL;

@@ -147,6 +147,19 @@ static const float *tex_color(const struct r_state *rs, const float in[][4],
       pc[i][1] = v[1] * r;
       pc[i][2] = v[2] * r;
    }
+   if (t->cube) {
+      /* a cube map: the whole quad (a LOD per pixel), and the pair's */
+      float q4[4][3], p4[4][3];
+      memcpy(q4, qc, sizeof(qc));
+      r_tex_project(quad->br[u], q4[3]);
+      if (pair) {
+         memcpy(p4, pc, sizeof(pc));
+         r_tex_project(quad->pair_br[u], p4[3]);
+      }
+      r_tex_sample_cube(t, c, (const float (*)[3])q4, quad->pos,
+                        pair ? (const float (*)[3])p4 : NULL, tc->c[u]);
+      return tc->c[u];
+   }
    r_tex_sample(t, c, (const float (*)[3])qc, pair ? (const float (*)[3])pc : NULL, tc->c[u]);
    return tc->c[u];
 }

@@ -121,6 +121,21 @@ void r_setup_shade_pixel(const struct r_state *rs, const void *ctx, int px, int 
                d[k] = ls->flat_attr[a] ? ls->flat[a][k] : r_eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
          }
       }
+      /* a cube map's bottom-right pixels and the fragment's place */
+      for (int i = 0; rs->fs->tex_cube && i < (rs->fs->tex_pair ? 2 : 1); i++) {
+         const float qfx = (float)((i ? qx ^ 2 : qx) + 1), qfy = (float)(qy + 1);
+         const float qrw = 1.0f / r_eval_plane(&ls->w, qfx, qfy);
+         for (int u = 0; u < R_MAX_TEX_UNITS; u++) {
+            if (!(rs->fs->tex_units & (1u << u)))
+               continue;
+            const int a = R_FS_TEX0 + u;
+            float *d = i ? quad.pair_br[u] : quad.br[u];
+            for (int k = 0; k < 4; k++)
+               d[k] = ls->flat_attr[a] ? ls->flat[a][k]
+                                       : r_eval_plane(&ls->ap[a][k], qfx, qfy) * qrw;
+         }
+      }
+      quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
       r_fragment_shader(rs, (const float (*)[4])in, &quad, color);
    } else {
       r_fragment_shader(rs, (const float (*)[4])in, NULL, color);

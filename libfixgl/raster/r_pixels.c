@@ -54,13 +54,18 @@ static void pixel_shader(const struct r_state *rs, const float fin_in[][4],
          memcpy(fin[R_FS_TEX0 + u], quad_tc, sizeof(fin[0]));
          memcpy(q.tex[u], quad->tex[0], sizeof(q.tex[u]));
          memcpy(q.pair[u], quad->pair[0], sizeof(q.pair[u]));
+         memcpy(q.br[u], quad->br[0], sizeof(q.br[u]));
+         memcpy(q.pair_br[u], quad->pair_br[0], sizeof(q.pair_br[u]));
          continue;
       }
       memcpy(fin[R_FS_TEX0 + u], pix->tex_const[u], sizeof(fin[0]));
       for (int i = 0; i < 3; i++)
          for (int c = 0; c < 4; c++)
             q.tex[u][i][c] = q.pair[u][i][c] = pix->tex_const[u][c];
+      for (int c = 0; c < 4; c++)
+         q.br[u][c] = q.pair_br[u][c] = pix->tex_const[u][c];
    }
+   q.pos = quad ? quad->pos : 0;
    r_fragment_shader(rs, (const float (*)[4])fin, &q, color);
 }
 

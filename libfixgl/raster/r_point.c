@@ -255,7 +255,10 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
       for (int i = 0; i < 3; i++)
          for (int c = 0; c < 4; c++)
             quad.tex[u][i][c] = quad.pair[u][i][c] = in[R_FS_TEX0 + u][c];
+      for (int c = 0; c < 4; c++)
+         quad.br[u][c] = quad.pair_br[u][c] = in[R_FS_TEX0 + u][c];
    }
+   quad.pos = 0;
    float color[4];
    r_fragment_shader(rs, (const float (*)[4])in, rs->fs->tex_units ? &quad : NULL, color);
    for (int32_t py = by0; py <= by1; py++) {

@@ -218,7 +218,19 @@ struct r_texture {
    bool compare;
    uint8_t compare_func;
    uint8_t depth_swizzle[4];
+   /* GL_TEXTURE_CUBE_MAP (r_tex_cube.c; ORACLE-NOTES.md "Cube maps"):
+    * R_CUBE_MAP for the cube map, which state.c marks `soa` so that every
+    * lookup reaches r_tex_sample (the fast kernels refuse it at
+    * validation); r_tex_sample selects each fragment's face and samples
+    * a copy of this struct, R_CUBE_FACE, whose levels are that face's
+    * (a 2D texture with CLAMP_TO_EDGE wraps, `soa` as face_soa, its rho
+    * the cube's: r_tex_cube_rho).  Fields after `cube` are not copied. */
+   uint8_t cube;
+   bool face_soa;
+   const uint8_t *cube_data[6][R_MAX_TEX_LEVELS];     /* +X, -X, +Y, -Y, +Z, -Z */
+   const uint16_t *cube_store[6][R_MAX_TEX_LEVELS];
 };
+enum { R_CUBE_NONE, R_CUBE_MAP, R_CUBE_FACE };
 enum { R_SWZ_X, R_SWZ_0, R_SWZ_1 };
 
 /* A stored depth value as llvmpipe's sampler reads it [S: gallivm/
@@ -307,6 +319,13 @@ struct r_fs_quad {
     * [S: llvmpipe/lp_bld_interp.c, quad_offset_x/y]), filled only when
     * r_state.tex_pair is set (r_tex_soa.c) */
    float pair[R_MAX_TEX_UNITS][3][4];
+   /* the quad's bottom-right pixel (filled only when r_fs_state.tex_cube
+    * is set) and the fragment's place in its quad (bit 0: right column,
+    * bit 1: bottom row): a mipmapped cube map takes each pixel's own
+    * derivatives (r_tex_cube.c) */
+   float br[R_MAX_TEX_UNITS][4];
+   float pair_br[R_MAX_TEX_UNITS][4];   /* the pair quad's, with `pair` */
+   unsigned pos;
 };
 
 /* A texture lookup (r_tex.c): the coordinate c (s, t, r after the
@@ -348,6 +367,20 @@ static inline void r_tex_project(const float v[4], float out[3])
  * size of the first level: squared for 2D and 3D (the r term added last),
  * max(|ds|) * W for 1D (r_tex.c), shared by both LOD paths. */
 float r_tex_rho(const struct r_texture *t, const float q[3][3]);
+/* The cube map lookup (r_tex_cube.c): the face and face coordinates of
+ * c, then the lookup of that face; q4: the coordinates (after the
+ * projective divide) of the fragment's quad, TL, TR, BL, BR, pos the
+ * fragment's place in it (bit 0 the right column, bit 1 the bottom row),
+ * p4 those of the other quad of its 8-pixel vector (r_tex_need_pair) or
+ * NULL. */
+void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float q4[4][3],
+                       unsigned pos, const float (*p4)[3], float out[4]);
+/* lp_build_rho of a cube map (r_tex_cube.c): q is the derivative form
+ * r_tex_sample_cube passes (deriv_form), the (s, t, r) of the pixel
+ * whose LOD it is and its x and y derivatives; squared, the first
+ * level's size applied. */
+float r_tex_cube_rho(const struct r_texture *t, const float q[3][3]);
+
 /* The AoS filtering alone, given the LOD selector's results (for the
  * general LOD path with REPEAT / CLAMP_TO_EDGE, which llvmpipe still
  * filters on the AoS path): minify picks the min or mag image filter
@@ -359,6 +392,12 @@ void r_tex_filter_aos(const struct r_texture *t, const float c[3], bool minify,
  * (r_tex_soa.c): called by r_tex_sample for a texture with `soa` set. */
 void r_tex_sample_soa(const struct r_texture *t, const float c[3], const float quad[3][3],
                       const float (*pair)[3], float out[4]);
+/* The float path (r_tex_soa.c) of one pixel whose LOD comes from quad,
+ * min != mag decided over it and the n_others other LODs of its 8-pixel
+ * vector (r_tex_cube.c: a LOD per pixel). */
+void r_tex_sample_float_lods(const struct r_texture *t, const float c[3],
+                             const float quad[3][3], const float (*const *others)[3],
+                             int n_others, float out[4]);
 /* The float path with different min and mag filters decides per 8
  * pixels (r_tex_soa.c): the lookup needs the pair quad. */
 static inline bool r_tex_need_pair(const struct r_texture *t)
@@ -550,6 +589,8 @@ struct r_fs_state {
    /* some unit's lookup needs the pair quad (r_tex_need_pair): the
     * primitives fill r_fs_quad.pair */
    bool tex_pair;
+   /* some unit samples a cube map: the primitives fill r_fs_quad.br */
+   bool tex_cube;
 
    /* GL_PHONG_WIN with lighting (include/fixgl/shading.md): every
     * fragment is lit by r_fragment_phong from the interpolated R_FS_NORMAL

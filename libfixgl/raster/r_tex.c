@@ -223,7 +223,16 @@ static void sample_level(const struct r_texture *t, int lvl, enum r_tex_filter f
 void r_tex_sample(const struct r_texture *t, const float c[3], const float quad[3][3],
                   const float (*pair)[3], float out[4])
 {
-   if (t->soa)
+   if (t->cube == R_CUBE_MAP) {
+      /* (r_frag.c calls r_tex_sample_cube itself with the whole quad;
+       * here the top-left pixel's derivatives stand for every pixel's) */
+      const float q4[4][3] = {
+         { quad[0][0], quad[0][1], quad[0][2] }, { quad[1][0], quad[1][1], quad[1][2] },
+         { quad[2][0], quad[2][1], quad[2][2] }, { quad[2][0], quad[2][1], quad[2][2] },
+      };
+      (void)pair;
+      r_tex_sample_cube(t, c, q4, 0, NULL, out);
+   } else if (t->soa)
       r_tex_sample_soa(t, c, quad, pair, out);
    else
       r_tex_sample_aos(t, c, quad, out);

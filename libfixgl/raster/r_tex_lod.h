@@ -53,6 +53,8 @@ static inline int r_lod_float_exp(float x)
  * squared. */
 static inline float r_tex_rho_inline(const struct r_texture *t, const float q[3][3])
 {
+   if (t->cube)
+      return r_tex_cube_rho(t, q);
    const struct r_tex_level *l = &t->level[t->first_level];
    const float fw = (float)l->width;
    if (t->dims == 1) {

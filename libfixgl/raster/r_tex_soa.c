@@ -479,9 +479,30 @@ static void sample_mipmap(const struct r_texture *t, enum r_tex_filter f, enum r
    }
 }
 
+static void sample_float_others(const struct r_texture *t, const float c[3],
+                                const float quad[3][3], const float (*const *others)[3],
+                                int n_others, float out[4]);
+
 /* lp_build_sample_general (no anisotropy, no shadow compare) */
 static void sample_float(const struct r_texture *t, const float c[3], const float quad[3][3],
                          const float (*pair)[3], float out[4])
+{
+   const float (*other)[3] = pair ? pair : quad;
+   sample_float_others(t, c, quad, &other, 1, out);
+}
+
+void r_tex_sample_float_lods(const struct r_texture *t, const float c[3],
+                             const float quad[3][3], const float (*const *others)[3],
+                             int n_others, float out[4])
+{
+   sample_float_others(t, c, quad, others, n_others, out);
+}
+
+/* sample_float with the LODs of the other quads (or pixels) of the
+ * 8-pixel vector given by their coordinates */
+static void sample_float_others(const struct r_texture *t, const float c[3],
+                                const float quad[3][3], const float (*const *others)[3],
+                                int n_others, float out[4])
 {
    struct lod q;
    quad_lod(t, quad, &q);
@@ -496,14 +517,18 @@ static void sample_float(const struct r_texture *t, const float c[3], const floa
     * 0 or 1 (this differs from true NEAREST at weights of exactly 0.5 and
     * reaches the border colour under GL_CLAMP); else all use NEAREST with
     * the mip filter of the nearest side. */
-   struct lod p;
-   quad_lod(t, pair ? pair : quad, &p);
    const bool min_linear = t->min_img == R_TEX_LINEAR;
    const bool lin_q = min_linear ? q.minify : !q.minify;
-   const bool lin_p = min_linear ? p.minify : !p.minify;
+   bool lin_p = false, min_p = false;
+   for (int i = 0; i < n_others; i++) {
+      struct lod p;
+      quad_lod(t, others[i], &p);
+      lin_p |= min_linear ? p.minify : !p.minify;
+      min_p |= p.minify;
+   }
    if (lin_q || lin_p) {
       image_linear(t, q.level0, !lin_q, c, out);
-      if (t->mip == R_MIP_LINEAR && (q.minify || p.minify)) {
+      if (t->mip == R_MIP_LINEAR && (q.minify || min_p)) {
          /* lerp by max(fpart, 0), for all 8 pixels */
          float c1[4];
          image_linear(t, q.level1, !lin_q, c, c1);

@@ -234,6 +234,19 @@ static inline __attribute__((always_inline)) void fill_quad(const struct r_state
                d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
          }
       }
+      /* a cube map's bottom-right pixels, of the quad and of the pair
+       * quad (r_tex_sample_cube: a LOD per pixel) */
+      for (int i = 0; rs->fs->tex_cube && i < (rs->fs->tex_pair ? 2 : 1); i++) {
+         const float fx = (float)((i ? qx ^ 2 : qx) + 1), fy = (float)(qy + 1);
+         const float rw = 1.0f / r_eval_plane(&ts->w, fx, fy);
+         for (unsigned m = units; m; m &= m - 1) {
+            const int u = __builtin_ctz(m);
+            const int a = R_FS_TEX0 + u;
+            float *d = i ? q->pair_br[u] : q->br[u];
+            for (int c = 0; c < 4; c++)
+               d[c] = ts->flat_attr[a] ? ts->flat[a][c] : r_eval_plane(&ts->ap[a][c], fx, fy) * rw;
+         }
+      }
       /* the LOD of the units that texture (a pixel rectangle's quad
        * coordinate is unit 0's, whether or not it textures) */
       for (unsigned m = units & rs->fs->tex_units; m; m &= m - 1) {
@@ -261,6 +274,7 @@ static __attribute__((noinline)) void shade_textured(const struct r_state *rs,
                                                      float color[4])
 {
    fill_quad(rs, ts, px, py, rs->fs->tex_units);
+   ((struct r_tri_setup *)ts)->quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
    r_fragment_shader_lod(rs, in, &ts->quad, ts->lod, color);
 }
 
@@ -285,8 +299,10 @@ static inline __attribute__((always_inline)) void shade_pixel(const struct r_sta
       /* a pixel rectangle's quad: its own fragment stage (r_pixels.c);
        * a unit reading the quad's coordinate (R_FS_TEX0) needs its quad */
       const bool quad = rs->fs->tex_units && rs->pix->tex_quad;
-      if (quad)
+      if (quad) {
          fill_quad(rs, ts, px, py, 1u);
+         ((struct r_tri_setup *)ts)->quad.pos = (unsigned)((px & 1) | (py & 1) << 1);
+      }
       r_pixel_fragment(rs, px, py, (const float (*)[4])in, r_eval_plane(&ts->z, fx, fy),
                        quad ? &ts->quad : NULL);
       return;
