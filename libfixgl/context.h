@@ -425,6 +425,12 @@ struct fgl_texture_image {
     * oracle expands it to 8 bits (_mesa_unorm_to_unorm(x, bits, 8)). */
    uint16_t *Store;
    uint8_t StoreBits[4];
+   /* an image of a compressed format (main/texcompress.c): the blocks as
+    * the application gave them (glGetCompressedTexImage returns them),
+    * BlocksSize bytes; Data holds the texels the oracle decodes from them.
+    * NULL for an uncompressed image. */
+   uint8_t *Blocks;
+   size_t BlocksSize;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images

@@ -74,6 +74,22 @@ void fgl_free_tex_images(struct fgl_texture_object *t);
 /* whether the oracle samples the image on its 8-bit AoS path (no channel
  * of its format wider than 8 bits; main/teximage.c) */
 bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img);
+/* what GL_TEXTURE_INTERNAL_FORMAT reports for img (main/teximage.c) */
+GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img);
+/* teximage.c's helpers for main/texcompress.c: the object an image call
+ * on `target` changes, its number of levels, the legal sizes, a new image
+ * of an S3TC format (its base GL_RGB or GL_RGBA; no texels allocated),
+ * replacing level `level` of t by img (NULL: none) */
+struct fgl_texture_object *fgl_tex_target_object(struct fgl_context *ctx, GLenum target);
+int fgl_tex_max_levels(GLenum target);
+bool fgl_tex_legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
+                              GLint border);
+struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
+                                                       GLenum base);
+void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,
+                       struct fgl_texture_image *img);
+/* main/texcompress.c: the bytes of a w x h x d image of an S3TC format */
+GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d);
 
 /* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
  * _CurrentTex) */
