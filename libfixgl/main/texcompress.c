@@ -64,16 +64,12 @@ static void decode_image(struct fgl_texture_image *img)
 /* ------------------------------------------------------------------ */
 
 /* [S: teximage.c:compressed_texture_error_check] true after an error */
-static bool compressed_image_error(struct fgl_context *ctx, GLuint dims, GLenum target,
+static bool compressed_image_error(struct fgl_context *ctx, GLenum target,
                                    GLint level, GLenum internal, GLsizei w, GLsizei h,
                                    GLsizei d, GLint border, GLsizei image_size)
 {
-   /* _mesa_target_can_be_compressed: 2D targets only (a 3D texture takes
-    * none of the formats fixgl has) */
-   if (target == GL_TEXTURE_3D) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return true;
-   }
+   /* _mesa_target_can_be_compressed: 2D targets only (measured: a 1D or
+    * 3D target raises GL_INVALID_ENUM) */
    if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return true;
@@ -87,10 +83,6 @@ static bool compressed_image_error(struct fgl_context *ctx, GLuint dims, GLenum 
       return true;
    }
    if (level < 0 || level >= fgl_tex_max_levels(target)) {
-      fgl_error(ctx, GL_INVALID_VALUE);
-      return true;
-   }
-   if (!fgl_tex_legal_dimensions(dims, level, w, h, d, border)) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return true;
    }
@@ -123,9 +115,12 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   if (compressed_image_error(ctx, dims, target, level, internal, width, height, depth,
-                              border, image_size))
+   if (compressed_image_error(ctx, target, level, internal, width, height, depth, border,
+                              image_size))
       return;
+   /* sizes beyond the limits: a proxy is cleared, without an error
+    * (measured: a 32768-wide proxy with its right imageSize) */
+   const bool dims_ok = fgl_tex_legal_dimensions(dims, level, width, height, depth, border);
    GLenum base;
    fgl_s3tc_block_bytes(internal, &base);
    struct fgl_texture_object *t = fgl_tex_target_object(ctx, target);
@@ -136,8 +131,16 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
       return;
    }
    if (target == GL_PROXY_TEXTURE_2D) {
-      /* the sizes were checked above: the proxy takes the fields */
+      if (!dims_ok) {
+         fgl_free(img);
+         img = NULL;
+      }
       fgl_tex_set_image(t, level, img);
+      return;
+   }
+   if (!dims_ok) {
+      fgl_free(img);
+      fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
    const size_t n = (size_t)width * (size_t)height;
@@ -233,12 +236,15 @@ static bool compressed_sub_error(struct fgl_context *ctx, GLuint dims, GLenum ta
       fgl_error(ctx, GL_INVALID_ENUM);
       return true;
    }
+   /* measured: a generic compressed format raises GL_INVALID_ENUM, any
+    * other that is not a compressed format GL_INVALID_OPERATION, both
+    * before the level and imageSize checks */
    if (is_generic_compressed(format)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
+      fgl_error(ctx, GL_INVALID_ENUM);
       return true;
    }
    if (!fgl_s3tc_block_bytes(format, NULL)) {
-      fgl_error(ctx, GL_INVALID_ENUM);
+      fgl_error(ctx, GL_INVALID_OPERATION);
       return true;
    }
    if (level < 0 || level >= fgl_tex_max_levels(target)) {
@@ -374,12 +380,16 @@ static void get_compressed_tex_image(GLenum target, GLint level, void *img_out)
    switch (target) {
    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D:
       break;
+   case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY:
+      /* targets the oracle takes whose images fixgl does not have: a
+       * missing image of a 1D or 2D target is GL_INVALID_VALUE */
+      fgl_error(ctx, GL_INVALID_VALUE);
+      return;
    case GL_TEXTURE_CUBE_MAP_POSITIVE_X: case GL_TEXTURE_CUBE_MAP_NEGATIVE_X:
    case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y:
    case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z:
-   case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY: case GL_TEXTURE_2D_ARRAY:
-   case GL_TEXTURE_CUBE_MAP_ARRAY:
-      /* targets the oracle takes whose images fixgl does not have */
+   case GL_TEXTURE_2D_ARRAY: case GL_TEXTURE_CUBE_MAP_ARRAY:
+      /* of a layered target, none */
       if (level < 0 || level >= fgl_tex_max_levels(target))
          fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -392,13 +402,20 @@ static void get_compressed_tex_image(GLenum target, GLint level, void *img_out)
       return;
    }
    const struct fgl_texture_image *img = fgl_tex_target_object(ctx, target)->Image[level];
-   if (!img)
-      return;   /* a level without an image: no error, nothing to do */
+   /* measured: a missing image of a 1D or 2D texture is GL_INVALID_VALUE,
+    * of a 3D one no error; an empty image nothing to do */
+   if (!img) {
+      if (target != GL_TEXTURE_3D)
+         fgl_error(ctx, GL_INVALID_VALUE);
+      return;
+   }
+   if (img->Width == 0 || img->Height == 0 || img->Depth == 0)
+      return;
    if (!img->Blocks) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (img_out && img->Width > 0 && img->Height > 0)
+   if (img_out)
       memcpy(img_out, img->Blocks, img->BlocksSize);
 }
 

@@ -1483,7 +1483,7 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       return true;
    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       /* an uncompressed image (or none) has no compressed size */
-      if (!img || !fgl_s3tc_block_bytes(img->InternalFormat, NULL)) {
+      if (!img || !fgl_s3tc_block_bytes(img->InternalFormat, NULL) || is_proxy(target)) {
          fgl_error(ctx, GL_INVALID_OPERATION);
          return false;
       }
