@@ -579,6 +579,8 @@ static void dlist_case(fc_h *h)
     glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 8, 4, 4, 4, DXT5, n, g_blocks);
     glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 1, 4, 4, 4, DXT5, n, g_blocks);
     glCompressedTexImage2D(GL_PROXY_TEXTURE_2D, 0, DXT1, 4, 4, 0, 8, g_blocks);
+    glCompressedTexImage3D(GL_PROXY_TEXTURE_2D, 0, DXT1, 4, 4, 1, 0, 8, g_blocks);
+    glCompressedTexImage1D(GL_PROXY_TEXTURE_2D, 0, DXT1, 4, 0, 8, g_blocks);
     glEndList();
     E(h, "compile");
     level_queries(h, "proxy executed at compile time", GL_PROXY_TEXTURE_2D, 0);
@@ -589,6 +591,7 @@ static void dlist_case(fc_h *h)
     memset(g_blocks, 0, sizeof g_blocks);
     glCallList(list);
     E(h, "glCallList");
+    E(h, "glCallList 2");
     scene_quad(h, 0, 1);
     get_blocks(h, "blocks", 0, 256);
     /* errors compiled: a negative imageSize (the copy fails: out of

@@ -2387,8 +2387,8 @@ bool fgl_save_copy_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLin
 }
 
 /* [S: dlist.c:save_CompressedTexImage1D/2D/3DARB,
- * save_CompressedTexSubImage*DARB, copy_data] an image on a proxy target
- * is not compiled (executed at once); every other call is, with a copy of
+ * save_CompressedTexSubImage*DARB, copy_data] an image on the command's
+ * proxy target is not compiled (executed at once); every other call is, with a copy of
  * imageSize bytes of the data made before any check (a negative size is
  * the malloc that fails: GL_OUT_OF_MEMORY, no copy) */
 bool fgl_save_compressed_tex(struct fgl_context *ctx, GLuint dims, bool sub, GLenum target,
@@ -2396,8 +2396,11 @@ bool fgl_save_compressed_tex(struct fgl_context *ctx, GLuint dims, bool sub, GLe
                              GLsizei h, GLsizei d, GLint border, GLsizei image_size,
                              const void *data)
 {
-   if (!sub && (target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-                target == GL_PROXY_TEXTURE_3D))
+   /* each command's own proxy only (a 3D call on GL_PROXY_TEXTURE_2D is
+    * compiled; fuzzer seeds 46 and 127) */
+   if (!sub && target == (dims == 1   ? GL_PROXY_TEXTURE_1D
+                          : dims == 2 ? GL_PROXY_TEXTURE_2D
+                                      : GL_PROXY_TEXTURE_3D))
       return true;
    if (!save_prologue(ctx))
       return false;
