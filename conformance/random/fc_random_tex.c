@@ -8,7 +8,9 @@
  *   - sizes powers of two or not (1 to 64 texels a side), every 8-bit
  *     internal format of GL 1.x (RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA,
  *     (3D: depths of the same sizes, its own wrap on r, chosen from a
- *     stream of its own so that the other scenes stay as they were)
+ *     stream of its own so that the other scenes stay as they were; from
+ *     the same stream, 2D textures of random S3TC blocks, DXT1 RGB/RGBA,
+ *     DXT3 or DXT5, through glCompressedTexImage2D)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -111,6 +113,9 @@ struct profile {
      * its wrap on r */
     int tex3d;
     GLenum wrap_r;
+    /* from the same stream: a 2D texture of an S3TC format (0: none),
+     * every level random blocks */
+    GLenum dxt;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -181,6 +186,20 @@ static unsigned char texel_byte(fc_rng *r)
 static void upload_level(fc_rng *r, const struct profile *p, int level, int w, int h0,
                          int d, int pattern, int align)
 {
+    if (p->dxt) {
+        /* random blocks (pattern 3: one block repeated) */
+        const int bb = p->dxt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ||
+                       p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT ? 8 : 16;
+        const int size = ((w + 3) / 4) * ((h0 + 3) / 4) * bb;
+        unsigned char *blocks = malloc((size_t)size);
+        if (!blocks)
+            abort();
+        for (int i = 0; i < size; i++)
+            blocks[i] = pattern == 3 && i >= bb ? blocks[i % bb] : (unsigned char)fc_rng_below(r, 256);
+        fct_glCompressedTexImage2D(GL_TEXTURE_2D, level, p->dxt, w, h0, 0, size, blocks);
+        free(blocks);
+        return;
+    }
     const int n = src_components[p->src];
     const int h = h0 * d;   /* a 3D image: d slices of h0 rows, one pattern */
     const size_t row = ((size_t)(w * n) + (size_t)align - 1) / (size_t)align * (size_t)align;
@@ -588,6 +607,15 @@ static void tex_scene(fc_h *h)
         p.tex3d = !p.tex1d && fc_rng_chance(&k3, 12);
         p.wrap_r = fc_rng_chance(&k3, 60) ? wraps[fc_rng_below(&k3, 2)]
                                           : wraps[fc_rng_below(&k3, 5)];
+        /* S3TC textures in about one 2D structure of eight, drawn from
+         * the same stream after the 3D choice (the other scenes keep their
+         * draws) */
+        static const GLenum dxt[4] = { GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+            GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+            GL_COMPRESSED_RGBA_S3TC_DXT5_EXT };
+        const int use_dxt = fc_rng_chance(&k3, 12);
+        const GLenum f = dxt[fc_rng_below(&k3, 4)];
+        p.dxt = !p.tex1d && !p.tex3d && use_dxt ? f : 0;
     }
     fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
     s.r = fc_rng_make(seed, index, 11);
