@@ -429,6 +429,12 @@ struct fgl_texture_image {
     * values, Width * Height * Depth texels of the pipe format's bits (16, 24 or
     * 32: fgl_tex_image_depth_bits; main/texdepth.c), else NULL */
    uint32_t *ZValues;
+   /* an image of a compressed format (main/texcompress.c): the blocks as
+    * the application gave them (glGetCompressedTexImage returns them),
+    * BlocksSize bytes; Data holds the texels the oracle decodes from them.
+    * NULL for an uncompressed image. */
+   uint8_t *Blocks;
+   size_t BlocksSize;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images

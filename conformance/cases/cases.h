@@ -72,6 +72,7 @@ extern const fc_case fc_cases_shadow[];
 extern const fc_case fc_cases_cubemap[];
 extern const fc_case fc_cases_osmesa[];
 extern const fc_case fc_cases_tex_copy[];
+extern const fc_case fc_cases_compressed[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

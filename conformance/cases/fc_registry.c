@@ -46,6 +46,7 @@ static const fc_case *const groups[] = {
     fc_cases_cubemap,
     fc_cases_osmesa,
     fc_cases_tex_copy,
+    fc_cases_compressed,
 };
 
 size_t fc_case_count(void)

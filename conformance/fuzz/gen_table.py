@@ -115,6 +115,11 @@ CLASSES = {
                    'GL_TEXTURE_3D', 'GL_TEXTURE_CUBE_MAP', 'GL_PROXY_TEXTURE_3D',
                    'GL_PROXY_TEXTURE_CUBE_MAP', 'GL_TEXTURE_CUBE_MAP_POSITIVE_X',
                    'GL_TEXTURE_CUBE_MAP_NEGATIVE_Y', 'GL_TEXTURE_CUBE_MAP_POSITIVE_Z'],
+    # glCompressedTex*: the S3TC formats fixgl has, a generic one, one fixgl
+    # lacks (FXT1) and an uncompressed one
+    'compressed_format': ['GL_COMPRESSED_RGB_S3TC_DXT1_EXT', 'GL_COMPRESSED_RGBA_S3TC_DXT1_EXT',
+                          'GL_COMPRESSED_RGBA_S3TC_DXT3_EXT', 'GL_COMPRESSED_RGBA_S3TC_DXT5_EXT',
+                          'GL_COMPRESSED_RGB', 'GL_RGBA'],
     'tex_pname': ['GL_TEXTURE_MIN_FILTER', 'GL_TEXTURE_MAG_FILTER', 'GL_TEXTURE_WRAP_S',
                   'GL_TEXTURE_WRAP_T', 'GL_TEXTURE_WRAP_R', 'GL_TEXTURE_BORDER_COLOR',
                   'GL_TEXTURE_PRIORITY', 'GL_TEXTURE_MIN_LOD', 'GL_TEXTURE_MAX_LOD',
@@ -237,7 +242,9 @@ RULES = [
     (r'^glCallLists$', 'type', 'type_lists'),
     (r'^gl(TexImage|TexSubImage|DrawPixels|ReadPixels|GetTexImage)', 'type', 'type_pixel'),
     (r'^gl(TexImage|TexSubImage|DrawPixels|ReadPixels|GetTexImage)', 'format', 'format_pixel'),
-    (r'^gl(Tex|CopyTex|GetTex|BindTexture)', 'target', 'tex_target'),
+    (r'^gl(Tex|CopyTex|GetTex|BindTexture|CompressedTex|GetCompressedTex)', 'target', 'tex_target'),
+    (r'^glCompressedTex', 'internalformat', 'compressed_format'),
+    (r'^glCompressedTex', 'format', 'compressed_format'),
     (r'^gl(Tex|CopyTex)', 'internalFormat', 'internalformat'),
     (r'^gl(Tex|CopyTex)', 'internalformat', 'internalformat'),
     (r'^gl(Get)?TexParameter', 'pname', 'tex_pname'),

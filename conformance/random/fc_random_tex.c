@@ -10,7 +10,9 @@
  *     (3D: depths of the same sizes, its own wrap on r, chosen from a
  *     stream of its own so that the other scenes stay as they were; cube
  *     maps the same way: six square faces, often with GL_REFLECTION_MAP
- *     or GL_NORMAL_MAP texgen on S, T and R)
+ *     or GL_NORMAL_MAP texgen on S, T and R; from the 3D stream, 2D textures
+ *     of random S3TC blocks, DXT1 RGB/RGBA, DXT3 or DXT5, through
+ *     glCompressedTexImage2D)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -130,6 +132,9 @@ struct profile {
      * 1: REFLECTION_MAP, 2: NORMAL_MAP on S, T, R) */
     int cube;
     int cube_gen;
+    /* from the same stream: a 2D texture of an S3TC format (0: none),
+     * every level random blocks */
+    GLenum dxt;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -249,6 +254,20 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
 {
     if (p->depth) {
         upload_depth_level(r, p, level, w, h0, pattern, align);
+        return;
+    }
+    if (p->dxt) {
+        /* random blocks (pattern 3: one block repeated) */
+        const int bb = p->dxt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ||
+                       p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT ? 8 : 16;
+        const int size = ((w + 3) / 4) * ((h0 + 3) / 4) * bb;
+        unsigned char *blocks = malloc((size_t)size);
+        if (!blocks)
+            abort();
+        for (int i = 0; i < size; i++)
+            blocks[i] = pattern == 3 && i >= bb ? blocks[i % bb] : (unsigned char)fc_rng_below(r, 256);
+        fct_glCompressedTexImage2D(GL_TEXTURE_2D, level, p->dxt, w, h0, 0, size, blocks);
+        free(blocks);
         return;
     }
     const int n = src_components[p->src];
@@ -682,9 +701,18 @@ static void tex_scene(fc_h *h)
         p.tex3d = !p.tex1d && fc_rng_chance(&k3, 12);
         p.wrap_r = fc_rng_chance(&k3, 60) ? wraps[fc_rng_below(&k3, 2)]
                                           : wraps[fc_rng_below(&k3, 5)];
+        /* S3TC textures in about one 2D structure of eight, drawn from
+         * the same stream after the 3D choice (the other scenes keep their
+         * draws) */
+        static const GLenum dxt[4] = { GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+            GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+            GL_COMPRESSED_RGBA_S3TC_DXT5_EXT };
+        const int use_dxt = fc_rng_chance(&k3, 12);
+        const GLenum f = dxt[fc_rng_below(&k3, 4)];
+        p.dxt = !p.tex1d && !p.tex3d && use_dxt ? f : 0;
         /* cube maps in about one structure of ten, from another stream */
         fc_rng kc = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
-        p.cube = !p.tex1d && !p.tex3d && fc_rng_chance(&kc, 11);
+        p.cube = !p.tex1d && !p.tex3d && !p.dxt && fc_rng_chance(&kc, 11);
         p.cube_gen = fc_rng_chance(&kc, 60) ? 1 + (int)fc_rng_below(&kc, 2) : 0;
     }
     {
@@ -696,8 +724,8 @@ static void tex_scene(fc_h *h)
         static const GLenum dtype[4] = { GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT,
                                          GL_UNSIGNED_BYTE };
         static const GLenum dmode[4] = { GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_RED };
-        fc_rng kd = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
-        p.depth = !p.tex3d && fc_rng_chance(&kd, 12);
+        fc_rng kd = fc_rng_make(seed, index % FC_TEX_PROFILES, 17);
+        p.depth = !p.tex3d && !p.cube && !p.dxt && fc_rng_chance(&kd, 12);
         p.depth_internal = dint[fc_rng_below(&kd, 4)];
         p.depth_type = dtype[fc_rng_below(&kd, 4)];
         p.compare = fc_rng_chance(&kd, 80);

@@ -83,6 +83,16 @@ static inline void fct_glTexImage3D(GLenum target, GLint level, GLint internal, 
                 (unsigned)type);
     glTexImage3D(target, level, internal, w, h, d, border, format, type, pixels);
 }
+static inline void fct_glCompressedTexImage2D(GLenum target, GLint level, GLenum internal,
+                                              GLsizei w, GLsizei h, GLint border,
+                                              GLsizei size, const void *data)
+{
+    fct_trace_image(data, (size_t)size);
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "glCompressedTexImage2D(%#x, %d, %#x, %d, %d, %d, %d, img); }\n",
+                (unsigned)target, level, (unsigned)internal, w, h, border, size);
+    glCompressedTexImage2D(target, level, internal, w, h, border, size, data);
+}
 static inline void fct_glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w,
                                     GLint border, GLenum format, GLenum type,
                                     const void *pixels, size_t bytes)

@@ -116,6 +116,9 @@ enum dl_opcode {
                             * image */
    DL_OP_COPY_TEX_SUB_IMAGE_3D, /* target, level, xoffset, yoffset, zoffset,
                                  * x, y, width, height */
+   DL_OP_COMPRESSED_TEX,   /* dims | sub << 4, target, level, format, x, y, z,
+                            * width, height, depth, border, imageSize,
+                            * pointer to the copy of the data */
    DL_OP_VERTEX_LIST,      /* pointer to a struct vertex_list */
    DL_OP_END_OF_LIST,
 };
@@ -343,6 +346,8 @@ static void delete_list(struct display_list *dl)
          fgl_free(get_pointer(&n[10]));
       else if (n->h.op == DL_OP_TEX_SUB_IMAGE_3D)
          fgl_free(get_pointer(&n[11]));
+      else if (n->h.op == DL_OP_COMPRESSED_TEX)
+         fgl_free(get_pointer(&n[13]));
    }
    fgl_free(dl->nodes);
    fgl_free(dl);
@@ -2381,6 +2386,75 @@ bool fgl_save_copy_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLin
    return ctx->ExecuteFlag;
 }
 
+/* [S: dlist.c:save_CompressedTexImage1D/2D/3DARB,
+ * save_CompressedTexSubImage*DARB, copy_data] an image on the command's
+ * proxy target is not compiled (executed at once); every other call is, with a copy of
+ * imageSize bytes of the data made before any check (a negative size is
+ * the malloc that fails: GL_OUT_OF_MEMORY, no copy) */
+bool fgl_save_compressed_tex(struct fgl_context *ctx, GLuint dims, bool sub, GLenum target,
+                             GLint level, GLenum format, GLint x, GLint y, GLint z, GLsizei w,
+                             GLsizei h, GLsizei d, GLint border, GLsizei image_size,
+                             const void *data)
+{
+   /* each command's own proxy only (a 3D call on GL_PROXY_TEXTURE_2D is
+    * compiled; fuzzer seeds 46 and 127) */
+   if (!sub && target == (dims == 1   ? GL_PROXY_TEXTURE_1D
+                          : dims == 2 ? GL_PROXY_TEXTURE_2D
+                                      : GL_PROXY_TEXTURE_3D))
+      return true;
+   if (!save_prologue(ctx))
+      return false;
+   union dl_node *n = alloc_node(ctx, DL_OP_COMPRESSED_TEX, 12 + PTR_NODES);
+   if (n) {
+      n[1].u = dims | (sub ? 16u : 0u);
+      n[2].e = target;
+      n[3].i = level;
+      n[4].e = format;
+      n[5].i = x;
+      n[6].i = y;
+      n[7].i = z;
+      n[8].i = w;
+      n[9].i = h;
+      n[10].i = d;
+      n[11].i = border;
+      n[12].i = image_size;
+      void *copy = NULL;
+      if (data) {
+         copy = image_size >= 0 ? fgl_malloc_gl(ctx, image_size ? (size_t)image_size : 1)
+                                : NULL;
+         if (copy)
+            memcpy(copy, data, (size_t)image_size);
+         else
+            fgl_error(ctx, GL_OUT_OF_MEMORY);
+      }
+      put_pointer(&n[13], copy);
+   }
+   return ctx->ExecuteFlag;
+}
+
+static void exec_compressed_tex_node(const union dl_node *n)
+{
+   const GLuint dims = n[1].u & 15u;
+   const void *data = get_pointer(&n[13]);
+   if (n[1].u & 16u) {
+      if (dims == 1)
+         glCompressedTexSubImage1D(n[2].e, n[3].i, n[5].i, n[8].i, n[4].e, n[12].i, data);
+      else if (dims == 2)
+         glCompressedTexSubImage2D(n[2].e, n[3].i, n[5].i, n[6].i, n[8].i, n[9].i, n[4].e,
+                                   n[12].i, data);
+      else
+         glCompressedTexSubImage3D(n[2].e, n[3].i, n[5].i, n[6].i, n[7].i, n[8].i, n[9].i,
+                                   n[10].i, n[4].e, n[12].i, data);
+   } else if (dims == 1) {
+      glCompressedTexImage1D(n[2].e, n[3].i, n[4].e, n[8].i, n[11].i, n[12].i, data);
+   } else if (dims == 2) {
+      glCompressedTexImage2D(n[2].e, n[3].i, n[4].e, n[8].i, n[9].i, n[11].i, n[12].i, data);
+   } else {
+      glCompressedTexImage3D(n[2].e, n[3].i, n[4].e, n[8].i, n[9].i, n[10].i, n[11].i,
+                             n[12].i, data);
+   }
+}
+
 /* OPCODE_TEX_IMAGE3D / OPCODE_TEX_SUB_IMAGE3D: the stored image under
  * ctx->DefaultPacking */
 static void exec_tex_image_3d_node(struct fgl_context *ctx, const union dl_node *n)
@@ -2681,6 +2755,9 @@ static void execute_nodes(struct fgl_context *ctx, const struct display_list *dl
       case DL_OP_TEX_IMAGE_3D:
       case DL_OP_TEX_SUB_IMAGE_3D:
          exec_tex_image_3d_node(ctx, n);
+         break;
+      case DL_OP_COMPRESSED_TEX:
+         exec_compressed_tex_node(n);
          break;
       case DL_OP_COPY_TEX_SUB_IMAGE_3D:
          glCopyTexSubImage3D(n[1].e, n[2].i, n[3].i, n[4].i, n[5].i, n[6].i, n[7].i, n[8].i,

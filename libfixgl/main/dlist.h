@@ -154,6 +154,12 @@ bool fgl_save_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint lev
                                GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width,
                                GLsizei height, GLsizei depth, GLenum format, GLenum type,
                                const void *pixels);
+/* glCompressedTexImage1D/2D/3D (sub false; `format` the internal format,
+ * offsets 0) and glCompressedTexSubImage1D/2D/3D (sub true) */
+bool fgl_save_compressed_tex(struct fgl_context *ctx, GLuint dims, bool sub, GLenum target,
+                             GLint level, GLenum format, GLint x, GLint y, GLint z, GLsizei w,
+                             GLsizei h, GLsizei d, GLint border, GLsizei image_size,
+                             const void *data);
 bool fgl_save_copy_tex_sub_image_3d(struct fgl_context *ctx, GLenum target, GLint level,
                                     GLint xoffset, GLint yoffset, GLint zoffset, GLint x,
                                     GLint y, GLsizei width, GLsizei height);

@@ -584,12 +584,14 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_floats(val, V_FLOAT, f, 1);
       return true;
    case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
-      /* fixgl has no compressed texture formats (the list is empty) */
-      set_ints(val, V_INT, 1, 0, 0, 0, 0);
+      /* [S: texcompress.c:_mesa_get_compressed_formats] the S3TC formats
+       * fixgl has, as the oracle lists them (not DXT1 RGBA, whose 1-bit
+       * alpha the list leaves out; the oracle's FXT1 and ETC2 fixgl lacks) */
+      set_ints(val, V_INT, 1, 3, 0, 0, 0);
       return true;
    case GL_COMPRESSED_TEXTURE_FORMATS:
-      val->type = V_INT;
-      val->n = 0;
+      set_ints(val, V_INT, 3, GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+               GL_COMPRESSED_RGBA_S3TC_DXT3_EXT, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, 0);
       return true;
    case GL_TRANSPOSE_MODELVIEW_MATRIX:
    case GL_TRANSPOSE_PROJECTION_MATRIX:

@@ -101,6 +101,22 @@ void fgl_tex_gen_mip_depth(const struct fgl_texture_image *src, struct fgl_textu
 /* the sampler state of a complete depth texture (state.c update_texture,
  * after the colour texture's) */
 void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_texture *rt);
+/* what GL_TEXTURE_INTERNAL_FORMAT reports for img (main/teximage.c) */
+GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img);
+/* teximage.c's helpers for main/texcompress.c: the object an image call
+ * on `target` changes, its number of levels, the legal sizes, a new image
+ * of an S3TC format (its base GL_RGB or GL_RGBA; no texels allocated),
+ * replacing level `level` of t by img (NULL: none) */
+struct fgl_texture_object *fgl_tex_target_object(struct fgl_context *ctx, GLenum target);
+int fgl_tex_max_levels(GLenum target);
+bool fgl_tex_legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
+                              GLint border);
+struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
+                                                       GLenum base);
+void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,
+                       struct fgl_texture_image *img);
+/* main/texcompress.c: the bytes of a w x h x d image of an S3TC format */
+GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d);
 
 /* main/texstate.c: the units that texture fragments (_EnabledTexUnits,
  * _CurrentTex) */

@@ -26,6 +26,7 @@
 #include "main/dlist.h"
 #include "main/groups.h"
 #include "main/pixelformat.h"
+#include "main/texcompress_s3tc.h"
 #include "fgl_alloc.h"
 #include "math/m_gallivm.h"
 
@@ -38,6 +39,7 @@ void fgl_free_tex_images(struct fgl_texture_object *t)
             fgl_free((*slot)->Data);
             fgl_free((*slot)->Store);
             fgl_free((*slot)->ZValues);
+            fgl_free((*slot)->Blocks);
             fgl_free(*slot);
             *slot = NULL;
          }
@@ -156,6 +158,10 @@ static const struct tex_format tex_formats[] = {
    { GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, &PF_Z16 },
    { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, &PF_Z24 },
    { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, &PF_Z32 },
+   /* the generic compressed formats llvmpipe stores uncompressed (the
+    * others it compresses: not modelled yet) */
+   { GL_COMPRESSED_ALPHA, GL_ALPHA, &PF_A8 },
+   { GL_COMPRESSED_INTENSITY, GL_INTENSITY, &PF_I8 },
 };
 
 /* [S: util/format/u_format.c:util_format_fits_8unorm; llvmpipe's
@@ -565,6 +571,7 @@ static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
       fgl_free((*slot)->Data);
       fgl_free((*slot)->Store);
       fgl_free((*slot)->ZValues);
+      fgl_free((*slot)->Blocks);
       fgl_free(*slot);
    }
    *slot = img;
@@ -1589,7 +1596,9 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       *v = img ? img->Depth : 0;
       return true;
    case GL_TEXTURE_INTERNAL_FORMAT:
-      *v = img ? (GLint)img->InternalFormat : GL_RGBA;
+      /* [S: texparam.c: _mesa_generic_compressed_format_to_uncompressed_format]
+       * a generic compressed format stored uncompressed reads as its base */
+      *v = img ? (GLint)fgl_tex_reported_internal_format(img) : GL_RGBA;
       return true;
    case GL_TEXTURE_BORDER:
       *v = img ? img->Border : 0;
@@ -1615,8 +1624,11 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
    case GL_TEXTURE_DEPTH_SIZE:
       *v = img ? fgl_tex_image_depth_bits(img) : 0;
       return true;
+   case GL_TEXTURE_COMPRESSED:
+      *v = img && fgl_s3tc_block_bytes(img->InternalFormat, NULL);
+      return true;
    case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_SHARED_SIZE:
-   case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_SAMPLES:
+   case GL_TEXTURE_SAMPLES:
    case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: case GL_TEXTURE_BUFFER_OFFSET:
    case GL_TEXTURE_BUFFER_SIZE:
       *v = 0;
@@ -1625,9 +1637,14 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       *v = 1;
       return true;
    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
-      /* no compressed formats */
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return false;
+      /* an uncompressed image (or none) has no compressed size */
+      if (!img || !fgl_s3tc_block_bytes(img->InternalFormat, NULL) || is_proxy(target)) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return false;
+      }
+      *v = fgl_compressed_image_size(img->InternalFormat, img->Width, img->Height,
+                                     img->Depth);
+      return true;
    case GL_TEXTURE_RED_TYPE: case GL_TEXTURE_GREEN_TYPE: case GL_TEXTURE_BLUE_TYPE:
    case GL_TEXTURE_ALPHA_TYPE: case GL_TEXTURE_LUMINANCE_TYPE:
    case GL_TEXTURE_INTENSITY_TYPE: case GL_TEXTURE_DEPTH_TYPE:
@@ -1664,4 +1681,51 @@ void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pnam
    GLint v;
    if (tex_level_parameter(ctx, target, level, pname, &v))
       *params = (GLfloat)v;
+}
+
+/* ------------------------------------------------------------------ */
+/* For main/texcompress.c                                             */
+/* ------------------------------------------------------------------ */
+
+/* [S: formats.c: MESA_FORMAT_RGB_DXT1 .. RGBA_DXT5] the channel sizes the
+ * oracle reports for the S3TC formats (4 bits; no alpha for DXT1 RGB) */
+static const struct fgl_tex_pipe_format PF_DXT_RGB = { 4, 4, 4, 0, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_DXT_RGBA = { 4, 4, 4, 4, 0, 0, 1, false };
+
+GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
+{
+   switch (img->InternalFormat) {
+   case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+   case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+   default: return img->InternalFormat;
+   }
+}
+
+struct fgl_texture_object *fgl_tex_target_object(struct fgl_context *ctx, GLenum target)
+{
+   return target_object(ctx, target);
+}
+
+int fgl_tex_max_levels(GLenum target)
+{
+   return max_levels(target);
+}
+
+bool fgl_tex_legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
+                              GLint border)
+{
+   return legal_dimensions(dims, level, w, h, d, border);
+}
+
+struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
+                                                       GLenum base)
+{
+   return new_image(w, h, d, 0, (GLint)internal, base,
+                    base == GL_RGB ? &PF_DXT_RGB : &PF_DXT_RGBA);
+}
+
+void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,
+                       struct fgl_texture_image *img)
+{
+   set_image(t, 0, level, img);
 }
