@@ -32,13 +32,11 @@
 #define FGL_MAX_MODELVIEW_STACK_DEPTH  32
 #define FGL_MAX_PROJECTION_STACK_DEPTH 32
 #define FGL_MAX_TEXTURE_STACK_DEPTH    10
-#define FGL_MAX_PROGRAM_STACK_DEPTH    4
 #define FGL_MAX_TEXTURE_UNITS          8
 /* the units glActiveTexture takes (Const.MaxCombinedTextureImageUnits);
  * those past the eight above have a binding and a LOD bias only */
 #define FGL_MAX_COMBINED_TEXTURE_UNITS 192
 #define FGL_IMAGE_ONLY_UNITS (FGL_MAX_COMBINED_TEXTURE_UNITS - FGL_MAX_TEXTURE_UNITS)
-#define FGL_MAX_PROGRAM_MATRICES       8
 #define FGL_MAX_VIEWPORT_SIZE          16384
 #define FGL_VIEWPORT_BOUNDS_MIN        (-32768)
 #define FGL_VIEWPORT_BOUNDS_MAX        32767
@@ -175,7 +173,7 @@ struct fgl_fog_attrib {
  * output. */
 struct fgl_hint_attrib {
    GLenum PerspectiveCorrection, PointSmooth, LineSmooth, PolygonSmooth, Fog;
-   GLenum TextureCompression, GenerateMipmap, FragmentShaderDerivative;
+   GLenum TextureCompression, GenerateMipmap;
    GLenum PhongWin;             /* GL_PHONG_HINT_WIN (include/fixgl/shading.md) */
 };
 
@@ -949,7 +947,6 @@ struct fgl_context {
     * oracle's GL_TEXTURE matrix mode reads past its array (undefined;
     * nothing uses the scratch stack's matrix) */
    struct fgl_matrix_stack TextureStack[FGL_MAX_TEXTURE_UNITS + 1];
-   struct fgl_matrix_stack ProgramStack[FGL_MAX_PROGRAM_MATRICES];
    struct fgl_matrix_stack *CurrentStack;
 
    /* ---- immediate mode ---- */

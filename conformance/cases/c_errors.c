@@ -11,7 +11,9 @@ static void invalid_enums(fc_h *h)
     glDepthFunc(GL_ALWAYS + 1); fc_error(h, "glDepthFunc above range");
     glShadeModel(GL_FLAT + 2); fc_error(h, "glShadeModel");
     glEnable(0); fc_error(h, "glEnable(0)");
-    glBegin(GL_POLYGON + 1); fc_error(h, "glBegin(bad mode)");
+    /* GL_PATCHES + 1: bad in every version (GL_POLYGON + 1, an adjacency
+     * mode, is foreign to GL 1.5: honesty/primitive_modes) */
+    glBegin(0xF); fc_error(h, "glBegin(bad mode)");
     glVertex2f(0, 0); fc_error(h, "glVertex after failed glBegin");
     glEnd(); fc_error(h, "glEnd after failed glBegin");
     glGetIntegerv(0x1234, iv); fc_error(h, "glGetIntegerv");

@@ -838,7 +838,6 @@ static void api_hints(fc_h *h)
         { GL_FOG_HINT, "GL_FOG_HINT" },
         { GL_TEXTURE_COMPRESSION_HINT, "GL_TEXTURE_COMPRESSION_HINT" },
         { GL_GENERATE_MIPMAP_HINT, "GL_GENERATE_MIPMAP_HINT" },
-        { GL_FRAGMENT_SHADER_DERIVATIVE_HINT, "GL_FRAGMENT_SHADER_DERIVATIVE_HINT" },
     };
     static const GLenum modes[3] = { GL_FASTEST, GL_NICEST, GL_DONT_CARE };
     char label[96];

@@ -1135,11 +1135,8 @@ static void errors_enums(fc_h *h)
     glBlendFunc(0x1234, GL_ONE); fc_error(h, "glBlendFunc bad src");
     glBlendFunc(GL_ONE, 0x1234); fc_error(h, "glBlendFunc bad dst");
     glBlendFunc(GL_ONE, GL_ZERO); fc_error(h, "glBlendFunc no change");
-    /* the dual-source factors are legal (ARB_blend_func_extended) */
-    glBlendFunc(GL_SRC1_ALPHA, GL_ONE_MINUS_SRC1_COLOR); fc_error(h, "glBlendFunc SRC1");
-    fc_get_integer(h, "GL_BLEND_SRC SRC1", GL_BLEND_SRC, 1);
-    fc_get_integer(h, "GL_BLEND_DST SRC1", GL_BLEND_DST, 1);
-    glBlendFunc(GL_ONE_MINUS_SRC1_ALPHA, GL_SRC1_COLOR); fc_error(h, "glBlendFunc SRC1 b");
+    /* (the dual-source SRC1 factors are ARB_blend_func_extended's, foreign
+     * to GL 1.5: honesty/blend_factors) */
     glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_CONSTANT_ALPHA); fc_error(h, "glBlendFunc saturate");
     glBlendFunc(GL_ONE, GL_ZERO);
     glBlendEquation(GL_FUNC_ADD + 100); fc_error(h, "glBlendEquation bad");

@@ -449,25 +449,24 @@ static void gl14_attrib(fc_h *h)
     fc_capture(h);
 }
 
-/* The raster position's secondary colour and distance. */
+/* The raster position's distance, with a secondary colour current (its
+ * query, GL_CURRENT_RASTER_SECONDARY_COLOR, is GL 3.0's:
+ * honesty/rasterpos_secondary_color). */
 static void gl14_rasterpos(fc_h *h)
 {
     fc_pixel_ortho(h);
     glSecondaryColor3f(0.3f, 1.5f, -0.25f);
     glFogCoordf(-2.5f);
     glRasterPos2f(10, 10);
-    fc_get_float(h, "raster secondary", GL_CURRENT_RASTER_SECONDARY_COLOR, 4);
     fc_get_float(h, "raster distance (depth)", GL_CURRENT_RASTER_DISTANCE, 1);
     glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
     glRasterPos2f(12, 10);
     fc_get_float(h, "raster distance (fog coord)", GL_CURRENT_RASTER_DISTANCE, 1);
     glWindowPos2f(3, 4);
-    fc_get_float(h, "window secondary", GL_CURRENT_RASTER_SECONDARY_COLOR, 4);
     fc_get_float(h, "window distance", GL_CURRENT_RASTER_DISTANCE, 1);
     glEnable(GL_LIGHTING);
     glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
     glRasterPos2f(12, 12);
-    fc_get_float(h, "lit raster secondary", GL_CURRENT_RASTER_SECONDARY_COLOR, 4);
     fc_error(h, "rasterpos");
 }
 

@@ -217,11 +217,13 @@ static void atten_arrays_dlist(fc_h *h)
 }
 
 /* Every parameter's default, set, query and error, through each entry
- * point; GL_POINT_SPRITE and GL_COORD_REPLACE as state. */
+ * point; GL_POINT_SPRITE and GL_COORD_REPLACE as state.  (GL 2.0's
+ * GL_POINT_SPRITE_COORD_ORIGIN is foreign to GL 1.5:
+ * honesty/point_sprite_origin.) */
 static void params_api(fc_h *h)
 {
     static const GLenum q[] = { GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE,
-                                GL_POINT_SPRITE_COORD_ORIGIN, GL_POINT_SPRITE_R_MODE_NV };
+                                GL_POINT_SPRITE_R_MODE_NV };
     for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
         fc_get_float(h, "default", q[i], 1);
         fc_get_integer(h, "default", q[i], 1);
@@ -240,11 +242,6 @@ static void params_api(fc_h *h)
     fc_error(h, "negative threshold");
     glPointParameterf(GL_POINT_SIZE, 3.0f);
     fc_error(h, "bad pname");
-    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
-    fc_error(h, "origin");
-    fc_get_integer(h, "origin", GL_POINT_SPRITE_COORD_ORIGIN, 1);
-    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LEFT);
-    fc_error(h, "bad origin");
     glPointParameteri(GL_POINT_SPRITE_R_MODE_NV, GL_S);
     fc_error(h, "r mode");
     fc_get_integer(h, "r mode", GL_POINT_SPRITE_R_MODE_NV, 1);
@@ -292,7 +289,6 @@ static void params_api(fc_h *h)
     glPointParameterf(GL_POINT_SIZE_MIN, 4.0f);
     glPointParameterf(GL_POINT_SIZE_MAX, 44.0f);
     glPointParameterf(GL_POINT_DISTANCE_ATTENUATION, 9.0f);
-    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT);
     glPointParameteri(GL_POINT_SPRITE_R_MODE_NV, GL_R);
     glDisable(GL_POINT_SPRITE);
     glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_FALSE);
@@ -300,7 +296,6 @@ static void params_api(fc_h *h)
     fc_get_float(h, "point popped", GL_POINT_SIZE_MIN, 1);
     fc_get_float(h, "point popped", GL_POINT_SIZE_MAX, 1);
     fc_get_float(h, "point popped", GL_POINT_DISTANCE_ATTENUATION, 3);
-    fc_get_integer(h, "point popped", GL_POINT_SPRITE_COORD_ORIGIN, 1);
     fc_get_integer(h, "point popped", GL_POINT_SPRITE_R_MODE_NV, 1);
     fc_is_enabled(h, "point popped", GL_POINT_SPRITE);
     glGetTexEnviv(GL_POINT_SPRITE, GL_COORD_REPLACE, &iv);

@@ -23,13 +23,15 @@
 /* An 8x8 RGBA texture whose texels are all distinct (alpha varying too),
  * bound to the active unit's GL_TEXTURE_2D with `filter`; `mip` builds
  * its levels (each level its own tint). */
-static void sprite_texture(GLenum min_filter, GLenum mag_filter, int mip)
+/* flip: the image upside down (rows from the top), the GL 1.5 way to see
+ * a sprite with t running downwards as the lower-left origin would */
+static void sprite_texture_flip(GLenum min_filter, GLenum mag_filter, int mip, int flip)
 {
     static GLubyte t[8 * 8 * 4];
     for (int lv = 0, n = 8; n >= 1; lv++, n /= 2) {
         for (int y = 0; y < n; y++)
             for (int x = 0; x < n; x++) {
-                GLubyte *p = t + 4 * (y * n + x);
+                GLubyte *p = t + 4 * ((flip ? n - 1 - y : y) * n + x);
                 p[0] = (GLubyte)(32 * x + 8 * lv + 4);
                 p[1] = (GLubyte)(32 * y + 40 * lv + 2);
                 p[2] = (GLubyte)(255 - 20 * x - 9 * y - 30 * lv);
@@ -44,6 +46,11 @@ static void sprite_texture(GLenum min_filter, GLenum mag_filter, int mip)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glEnable(GL_TEXTURE_2D);
+}
+
+static void sprite_texture(GLenum min_filter, GLenum mag_filter, int mip)
+{
+    sprite_texture_flip(min_filter, mag_filter, mip, 0);
 }
 
 /* ---- sizes and placements ----
@@ -136,11 +143,14 @@ static void size_clamps(fc_h *h)
 struct tex_cfg {
     GLenum min, mag;
     int mip;
-    int lower_left;      /* GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT */
+    int flip;            /* the image upside down (sprite_texture_flip) */
     int units;           /* bit u: unit u textured */
     int replace;         /* bit u: GL_COORD_REPLACE on unit u */
     int persp;           /* frustum, points at several depths */
     int env;             /* 0 MODULATE, 1 REPLACE, 2 DECAL, 3 ADD */
+    int lower_left;      /* honesty: GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT
+                          * (GL 2.0's; GL_INVALID_ENUM in fixgl, whose
+                          * sprites keep ARB_point_sprite's upper left) */
 };
 
 static void tex_scene(fc_h *h, const struct tex_cfg *cfg)
@@ -157,7 +167,7 @@ static void tex_scene(fc_h *h, const struct tex_cfg *cfg)
     for (int u = 1; u >= 0; u--) {
         glActiveTexture(GL_TEXTURE0 + (GLenum)u);
         if (cfg->units & (1 << u)) {
-            sprite_texture(cfg->min, cfg->mag, cfg->mip);
+            sprite_texture_flip(cfg->min, cfg->mag, cfg->mip, cfg->flip);
             if (u == 1) {
                 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
@@ -201,19 +211,21 @@ static void tex_scene(fc_h *h, const struct tex_cfg *cfg)
         static const struct tex_cfg cfg = __VA_ARGS__;     \
         tex_scene(h, &cfg);                                \
     }
-TEX_CASE(tex_nearest, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 1, 0, 0 })
-TEX_CASE(tex_linear, { GL_LINEAR, GL_LINEAR, 0, 0, 1, 1, 0, 0 })
-TEX_CASE(tex_mipmap, { GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1, 0, 1, 1, 0, 0 })
-TEX_CASE(tex_mipmap_nearest, { GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, 1, 0, 1, 1, 0, 1 })
-TEX_CASE(origin_lower_left, { GL_NEAREST, GL_NEAREST, 0, 1, 1, 1, 0, 1 })
-TEX_CASE(origin_lower_left_linear, { GL_LINEAR, GL_LINEAR, 0, 1, 1, 1, 0, 0 })
-TEX_CASE(unit0_only, { GL_NEAREST, GL_NEAREST, 0, 0, 3, 1, 0, 0 })
-TEX_CASE(unit1_only, { GL_LINEAR, GL_NEAREST, 0, 0, 3, 2, 0, 0 })
-TEX_CASE(both_units, { GL_NEAREST, GL_LINEAR, 0, 1, 3, 3, 0, 3 })
-TEX_CASE(no_replace, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 0, 1, 0 })
-TEX_CASE(persp_nearest, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 1, 1, 0 })
-TEX_CASE(persp_linear_two_units, { GL_LINEAR, GL_LINEAR, 0, 0, 3, 1, 1, 2 })
-TEX_CASE(persp_mipmap, { GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, 1, 1, 1, 1, 1, 1 })
+TEX_CASE(tex_nearest, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 1, 0, 0, 0 })
+TEX_CASE(tex_linear, { GL_LINEAR, GL_LINEAR, 0, 0, 1, 1, 0, 0, 0 })
+TEX_CASE(tex_mipmap, { GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1, 0, 1, 1, 0, 0, 0 })
+TEX_CASE(tex_mipmap_nearest, { GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, 1, 0, 1, 1, 0, 1, 0 })
+TEX_CASE(flipped_image, { GL_NEAREST, GL_NEAREST, 0, 1, 1, 1, 0, 1, 0 })
+TEX_CASE(flipped_image_linear, { GL_LINEAR, GL_LINEAR, 0, 1, 1, 1, 0, 0, 0 })
+TEX_CASE(origin_lower_left, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 1, 0, 1, 1 })
+TEX_CASE(origin_lower_left_linear, { GL_LINEAR, GL_LINEAR, 0, 0, 1, 1, 0, 0, 1 })
+TEX_CASE(unit0_only, { GL_NEAREST, GL_NEAREST, 0, 0, 3, 1, 0, 0, 0 })
+TEX_CASE(unit1_only, { GL_LINEAR, GL_NEAREST, 0, 0, 3, 2, 0, 0, 0 })
+TEX_CASE(both_units, { GL_NEAREST, GL_LINEAR, 0, 1, 3, 3, 0, 3, 0 })
+TEX_CASE(no_replace, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 0, 1, 0, 0 })
+TEX_CASE(persp_nearest, { GL_NEAREST, GL_NEAREST, 0, 0, 1, 1, 1, 0, 0 })
+TEX_CASE(persp_linear_two_units, { GL_LINEAR, GL_LINEAR, 0, 0, 3, 1, 1, 2, 0 })
+TEX_CASE(persp_mipmap, { GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, 1, 1, 1, 1, 1, 1, 0 })
 
 /* ---- attenuation and fade ---- */
 static void atten_scene(fc_h *h, int textured, float min, float max, int blend)
@@ -493,7 +505,6 @@ static void arrays_vbo_dlist(fc_h *h)
     glPointSize(7.0f);
     glDrawArrays(GL_POINTS, 0, 9);
     glEnable(GL_POINT_SPRITE);
-    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
     glDrawArrays(GL_POINTS, 9, 9);
     glEndList();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -849,8 +860,10 @@ const fc_case fc_cases_gl14_sprite[] = {
     SPRITE("tex_linear", 96, 96, 1, "texture", tex_linear),
     SPRITE("tex_mipmap", 96, 96, 1, "texture", tex_mipmap),
     SPRITE("tex_mipmap_nearest", 96, 96, 1, "texture", tex_mipmap_nearest),
-    SPRITE("origin_lower_left", 96, 96, 1, "texture", origin_lower_left),
-    SPRITE("origin_lower_left_linear", 96, 96, 1, "texture", origin_lower_left_linear),
+    /* the lower-left origin is GL 2.0's: the same scenes with the image
+     * upside down, and the origin itself as honesty cases (below) */
+    SPRITE("flipped_image", 96, 96, 1, "texture", flipped_image),
+    SPRITE("flipped_image_linear", 96, 96, 1, "texture", flipped_image_linear),
     SPRITE("unit0_only", 96, 96, 1, "texture multitexture", unit0_only),
     SPRITE("unit1_only", 96, 96, 1, "texture multitexture", unit1_only),
     SPRITE("both_units", 96, 96, 1, "texture multitexture", both_units),
@@ -874,5 +887,9 @@ const fc_case fc_cases_gl14_sprite[] = {
     SPRITE("tiles", 200, 160, 1, "texture blend threads", tiles),
     FC_CASE_RGBA("demo/sprite_particles", 160, 120, PART_FRAMES,
                  "gl14 points sprite demo vbo fogcoord texture", sprite_particles),
+    FC_CASE_RGBA("honesty/sprite_origin_lower_left", 96, 96, 1,
+                 "honesty gl14 points sprite texture", origin_lower_left),
+    FC_CASE_RGBA("honesty/sprite_origin_lower_left_linear", 96, 96, 1,
+                 "honesty gl14 points sprite texture", origin_lower_left_linear),
     { 0 },
 };

@@ -46,7 +46,7 @@ static void scene(fc_h *h)
 
 /* Reads a w x ht region at (x, y) into a generously sized, pre-filled
  * buffer and records it with the glGetError after the call. */
-static void rd(fc_h *h, const char *label, int x, int y, int w, int ht, GLenum format,
+static void rd_any(fc_h *h, const char *label, int x, int y, int w, int ht, GLenum format,
                GLenum type)
 {
     /* room for 4 components of the largest type, row lengths up to 40 and
@@ -58,6 +58,15 @@ static void rd(fc_h *h, const char *label, int x, int y, int w, int ht, GLenum f
     fc_error(h, label);
     fc_blob(h, label, buf, size);
     free(buf);
+}
+
+/* rd_any for the GL 1.5 cases: a foreign format or type (cases.h
+ * fc_foreign_pixel) is left out, it is an honesty case's (below). */
+static void rd(fc_h *h, const char *label, int x, int y, int w, int ht, GLenum format,
+               GLenum type)
+{
+    if (!fc_foreign_pixel(format, type))
+        rd_any(h, label, x, y, w, ht, format, type);
 }
 
 static const GLenum color_formats[] = {
@@ -90,7 +99,43 @@ TYPE_CASE(read_short, GL_SHORT)
 TYPE_CASE(read_uint, GL_UNSIGNED_INT)
 TYPE_CASE(read_int, GL_INT)
 TYPE_CASE(read_float, GL_FLOAT)
-TYPE_CASE(read_half, GL_HALF_FLOAT)
+
+/* Honesty (GL_HALF_FLOAT is GL 3.0's / ARB_half_float_pixel's, unlisted):
+ * every colour format as GL_HALF_FLOAT, GL_INVALID_ENUM in fixgl. */
+static void read_half(fc_h *h)
+{
+    char label[64];
+    scene(h);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1)
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        for (size_t i = 0; i < N_COLOR_FORMATS; i++) {
+            snprintf(label, sizeof(label), "format %#x type %#x", color_formats[i],
+                     GL_HALF_FLOAT);
+            rd_any(h, label, pass ? 3 : 0, pass ? 2 : 0, pass ? 7 : W, pass ? 5 : H,
+                   color_formats[i], GL_HALF_FLOAT);
+        }
+    }
+}
+
+/* Honesty: GL_RG with every basic type and the packed float types of
+ * GL 3.0 (EXT_packed_float, EXT_texture_shared_exponent). */
+static void read_foreign_formats_types(fc_h *h)
+{
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                   GL_UNSIGNED_INT, GL_INT, GL_FLOAT};
+    char label[64];
+    scene(h);
+    for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
+        snprintf(label, sizeof(label), "format %#x type %#x", GL_RG, types[t]);
+        rd_any(h, label, 0, 0, W, H, GL_RG, types[t]);
+    }
+    rd_any(h, "rgb 10f_11f_11f", 1, 1, 13, 9, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV);
+    rd_any(h, "rgb 5_9_9_9", 1, 1, 13, 9, GL_RGB, GL_UNSIGNED_INT_5_9_9_9_REV);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    rd_any(h, "swapped rgb 10f_11f_11f", 1, 1, 13, 9, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV);
+    rd_any(h, "swapped rgb 5_9_9_9", 1, 1, 13, 9, GL_RGB, GL_UNSIGNED_INT_5_9_9_9_REV);
+}
 
 /* GL_HALF_FLOAT_OES (0x8D61) is the same array type for the formats the
  * oracle's special case lets through */
@@ -102,7 +147,7 @@ static void read_half_oes(fc_h *h)
     scene(h);
     for (size_t i = 0; i < sizeof(formats) / sizeof(formats[0]); i++) {
         snprintf(label, sizeof(label), "format %#x", formats[i]);
-        rd(h, label, 2, 1, 11, 9, formats[i], 0x8D61);
+        rd_any(h, label, 2, 1, 11, 9, formats[i], 0x8D61);
     }
 }
 
@@ -309,15 +354,15 @@ static void read_depth_stencil(fc_h *h)
             glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
         }
         snprintf(label, sizeof(label), "depth/stencil %d 24_8", s);
-        rd(h, label, 1, 1, 14, 10, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
+        rd_any(h, label, 1, 1, 14, 10, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
         snprintf(label, sizeof(label), "depth/stencil %d float_32_24_8", s);
-        rd(h, label, 1, 1, 14, 10, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV);
+        rd_any(h, label, 1, 1, 14, 10, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV);
     }
 }
 
 /* Format/type combinations the oracle refuses, with the error it raises
  * ([S: glformats.c:_mesa_error_check_format_and_type], readpix.c). */
-static void read_errors(fc_h *h)
+static void read_errors_of(fc_h *h, int foreign)
 {
     static const struct { GLenum format, type; } bad[] = {
         {GL_RGBA, GL_BITMAP}, {GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4},
@@ -340,8 +385,10 @@ static void read_errors(fc_h *h)
     char label[96];
     scene(h);
     for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+        if (fc_foreign_pixel(bad[i].format, bad[i].type) != foreign)
+            continue;
         snprintf(label, sizeof(label), "format %#x type %#x", bad[i].format, bad[i].type);
-        rd(h, label, 0, 0, 4, 3, bad[i].format, bad[i].type);
+        rd_any(h, label, 0, 0, 4, 3, bad[i].format, bad[i].type);
     }
     glReadBuffer(GL_NONE);
     rd(h, "read buffer none, LUMINANCE", 0, 0, 4, 3, GL_LUMINANCE, GL_FLOAT);
@@ -351,7 +398,7 @@ static void read_errors(fc_h *h)
 
 /* Without depth and stencil buffers the depth, stencil and colour-index
  * reads fail first on the missing buffer. */
-static void read_errors_no_zs(fc_h *h)
+static void read_errors_no_zs_of(fc_h *h, int foreign)
 {
     static const struct { GLenum format, type; } bad[] = {
         {GL_STENCIL_INDEX, GL_UNSIGNED_BYTE}, {GL_STENCIL_INDEX, GL_RGBA},
@@ -364,10 +411,17 @@ static void read_errors_no_zs(fc_h *h)
     fc_pixel_ortho(h);
     fcu_clear(0.1f, 0.7f, 0.4f, 0.9f, 1.0);
     for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+        if (fc_foreign_pixel(bad[i].format, bad[i].type) != foreign)
+            continue;
         snprintf(label, sizeof(label), "format %#x type %#x", bad[i].format, bad[i].type);
-        rd(h, label, 0, 0, 4, 3, bad[i].format, bad[i].type);
+        rd_any(h, label, 0, 0, 4, 3, bad[i].format, bad[i].type);
     }
 }
+
+static void read_errors(fc_h *h) { read_errors_of(h, 0); }
+static void read_errors_foreign(fc_h *h) { read_errors_of(h, 1); }
+static void read_errors_no_zs(fc_h *h) { read_errors_no_zs_of(h, 0); }
+static void read_errors_no_zs_foreign(fc_h *h) { read_errors_no_zs_of(h, 1); }
 
 #define ZS(name, fn) FC_CASE(name, W, H, OSMESA_RGBA, 24, 8, 0, "pixel readpixels", fn)
 
@@ -379,8 +433,6 @@ const fc_case fc_cases_pix_format[] = {
     ZS("pixel/readpixels_uint_formats", read_uint),
     ZS("pixel/readpixels_int_formats", read_int),
     ZS("pixel/readpixels_float_formats", read_float),
-    ZS("pixel/readpixels_half_float_formats", read_half),
-    ZS("pixel/readpixels_half_float_oes", read_half_oes),
     ZS("pixel/readpixels_packed_types", read_packed),
     /* B8G8R8A8 / A8R8G8B8 buffers: the 10-bit fields pack through float */
     FC_CASE("pixel/readpixels_packed_types_bgra", W, H, OSMESA_BGRA, 24, 8, 0,
@@ -393,10 +445,26 @@ const fc_case fc_cases_pix_format[] = {
     ZS("pixel/readpixels_transfer_ops", read_transfer),
     ZS("pixel/readpixels_depth_types", read_depth_types),
     ZS("pixel/readpixels_stencil_types", read_stencil_types),
-    ZS("pixel/readpixels_depth_stencil", read_depth_stencil),
     ZS("pixel/readpixels_format_type_errors", read_errors),
     FC_CASE("pixel/readpixels_errors_no_depth_stencil", W, H, OSMESA_BGRA, 0, 0, 0,
             "pixel readpixels error", read_errors_no_zs),
+    /* Honesty: the oracle's GL 3.0 client formats and types, which fixgl
+     * (GL 1.5 without ARB_half_float_pixel, ARB_texture_rg,
+     * EXT_packed_depth_stencil, EXT_texture_integer, EXT_packed_float,
+     * EXT_texture_shared_exponent) refuses with GL_INVALID_ENUM:
+     * deliberate differences (known-differences.txt). */
+    FC_CASE("honesty/readpixels_half_float_formats", W, H, OSMESA_RGBA, 24, 8, 0,
+            "honesty pixel readpixels", read_half),
+    FC_CASE("honesty/readpixels_half_float_oes", W, H, OSMESA_RGBA, 24, 8, 0,
+            "honesty pixel readpixels", read_half_oes),
+    FC_CASE("honesty/readpixels_depth_stencil", W, H, OSMESA_RGBA, 24, 8, 0,
+            "honesty pixel readpixels", read_depth_stencil),
+    FC_CASE("honesty/readpixels_rg_packed_float", W, H, OSMESA_RGBA, 24, 8, 0,
+            "honesty pixel readpixels", read_foreign_formats_types),
+    FC_CASE("honesty/readpixels_format_type_errors", W, H, OSMESA_RGBA, 24, 8, 0,
+            "honesty pixel readpixels error", read_errors_foreign),
+    FC_CASE("honesty/readpixels_errors_no_depth_stencil", W, H, OSMESA_BGRA, 0, 0, 0,
+            "honesty pixel readpixels error", read_errors_no_zs_foreign),
     { 0 }
 };
 
@@ -471,8 +539,8 @@ static unsigned char *client_image(size_t size, GLenum type, unsigned seed)
 
 /* Uploads a w x ht image of format/type into a texture of internal
  * format `internal` and records the error and the texels read back. */
-static void up(fc_h *h, const char *label, GLint internal, int w, int ht, GLenum format,
-               GLenum type, unsigned seed)
+static void up_any(fc_h *h, const char *label, GLint internal, int w, int ht, GLenum format,
+                   GLenum type, unsigned seed)
 {
     const size_t size = 8 * 4 * 48 * 24;
     unsigned char *img = client_image(size, type, seed);
@@ -484,6 +552,14 @@ static void up(fc_h *h, const char *label, GLint internal, int w, int ht, GLenum
     fc_error(h, label);
     fc_blob(h, label, back, sizeof(back));
     free(img);
+}
+
+/* up_any for the GL 1.5 cases: foreign formats and types left out. */
+static void up(fc_h *h, const char *label, GLint internal, int w, int ht, GLenum format,
+               GLenum type, unsigned seed)
+{
+    if (!fc_foreign_pixel(format, type))
+        up_any(h, label, internal, w, ht, format, type, seed);
 }
 
 static void upload_all_formats(fc_h *h, GLenum type)
@@ -509,7 +585,27 @@ UPLOAD_CASE(upload_short, GL_SHORT)
 UPLOAD_CASE(upload_uint, GL_UNSIGNED_INT)
 UPLOAD_CASE(upload_int, GL_INT)
 UPLOAD_CASE(upload_float, GL_FLOAT)
-UPLOAD_CASE(upload_half, GL_HALF_FLOAT)
+
+/* Honesty: every colour format as GL_HALF_FLOAT, GL_RG with every basic
+ * type, the packed float types (GL_INVALID_ENUM in fixgl). */
+static void upload_half(fc_h *h)
+{
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                   GL_UNSIGNED_INT, GL_INT, GL_FLOAT};
+    char label[64];
+    for (size_t i = 0; i < N_COLOR_FORMATS; i++) {
+        snprintf(label, sizeof(label), "format %#x type %#x", color_formats[i], GL_HALF_FLOAT);
+        up_any(h, label, GL_RGBA8, TW, TH, color_formats[i], GL_HALF_FLOAT, 17u + (unsigned)i);
+    }
+    for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
+        snprintf(label, sizeof(label), "format %#x type %#x", GL_RG, types[t]);
+        up_any(h, label, GL_RGBA8, TW, TH, GL_RG, types[t], 40u + (unsigned)t);
+    }
+    up_any(h, "rgb 10f_11f_11f", GL_RGBA8, TW, TH, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, 60u);
+    up_any(h, "rgb 5_9_9_9", GL_RGBA8, TW, TH, GL_RGB, GL_UNSIGNED_INT_5_9_9_9_REV, 61u);
+    up_any(h, "depth_stencil 24_8", GL_RGBA8, TW, TH, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 62u);
+    up_any(h, "rgba_integer ubyte", GL_RGBA8, TW, TH, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, 63u);
+}
 
 static void upload_packed(fc_h *h)
 {
@@ -672,13 +768,13 @@ static void upload_color_index_types(fc_h *h, const GLenum *types, size_t ntypes
         }
         for (size_t t = 0; t < ntypes; t++) {
             snprintf(label, sizeof(label), "index %d type %#x", s, types[t]);
-            up(h, label, GL_RGBA8, TW, TH, GL_COLOR_INDEX, types[t], 700u + (unsigned)t);
+            up_any(h, label, GL_RGBA8, TW, TH, GL_COLOR_INDEX, types[t], 700u + (unsigned)t);
         }
     }
 }
 
 static void upload_color_index(fc_h *h)
-{
+{   /* GL 1.5's index types only */
     static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_BITMAP};
     upload_color_index_types(h, types, sizeof(types) / sizeof(types[0]));
@@ -779,7 +875,7 @@ static void upload_1d(fc_h *h)
  * format (texgetimage.c:get_tex_rgba_uncompressed: L/I read as
  * (L, 0, 0, 1), luminance = R, only a clamp for LUMINANCE destinations
  * of unsigned types, no pixel transfer), with pack states. */
-static void get_all(fc_h *h, const char *what)
+static void get_all(fc_h *h, const char *what, int foreign)
 {
     static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_HALF_FLOAT};
@@ -795,6 +891,8 @@ static void get_all(fc_h *h, const char *what)
     char label[96];
     for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
         for (size_t f = 0; f < N_COLOR_FORMATS; f++) {
+            if (fc_foreign_pixel(color_formats[f], types[t]) != foreign)
+                continue;
             memset(buf, FILL, size);
             glGetTexImage(GL_TEXTURE_2D, 0, color_formats[f], types[t], buf);
             snprintf(label, sizeof(label), "%s format %#x type %#x", what, color_formats[f],
@@ -804,6 +902,8 @@ static void get_all(fc_h *h, const char *what)
         }
     }
     for (size_t k = 0; k < sizeof(packed) / sizeof(packed[0]); k++) {
+        if (fc_foreign_pixel(packed[k].format, packed[k].type) != foreign)
+            continue;
         memset(buf, FILL, size);
         glGetTexImage(GL_TEXTURE_2D, 0, packed[k].format, packed[k].type, buf);
         snprintf(label, sizeof(label), "%s format %#x type %#x", what, packed[k].format,
@@ -814,7 +914,7 @@ static void get_all(fc_h *h, const char *what)
     free(buf);
 }
 
-static void get_teximage(fc_h *h)
+static void get_teximage_of(fc_h *h, int foreign)
 {
     static const GLint internals[] = {GL_RGBA8, GL_RGB8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8,
                                       GL_INTENSITY8, GL_ALPHA8};
@@ -828,7 +928,7 @@ static void get_teximage(fc_h *h)
                      img);
         glPixelTransferf(GL_RED_SCALE, 0.5f);
         snprintf(what, sizeof(what), "internal %#x", internals[i]);
-        get_all(h, what);
+        get_all(h, what, foreign);
     }
     free(img);
 }
@@ -842,9 +942,13 @@ static void get_teximage_pack_state(fc_h *h)
     glPixelStorei(GL_PACK_SKIP_PIXELS, 2);
     glPixelStorei(GL_PACK_SKIP_ROWS, 3);
     glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
-    get_all(h, "pack state");
+    get_all(h, "pack state", 0);
     free(img);
 }
+
+static void get_teximage(fc_h *h) { get_teximage_of(h, 0); }
+/* Honesty: the GL 3.0 formats and types of the same walk. */
+static void get_teximage_foreign(fc_h *h) { get_teximage_of(h, 1); }
 
 #define TX(name, fn) FC_CASE(name, 8, 8, OSMESA_RGBA, 0, 0, 0, "pixel teximage", fn)
 
@@ -856,16 +960,21 @@ const fc_case fc_cases_pix_format_tex[] = {
     TX("pixel/teximage_unpack_uint", upload_uint),
     TX("pixel/teximage_unpack_int", upload_int),
     TX("pixel/teximage_unpack_float", upload_float),
-    TX("pixel/teximage_unpack_half_float", upload_half),
     TX("pixel/teximage_unpack_packed_types", upload_packed),
     TX("pixel/teximage_unpack_state", upload_unpack_state),
     TX("pixel/teximage_unpack_transfer_ops", upload_transfer),
     TX("pixel/teximage_unpack_color_index", upload_color_index),
-    TX("pixel/teximage_unpack_color_index_half_float", upload_color_index_half),
     TX("pixel/teximage_unpack_base_formats", upload_bases),
     TX("pixel/teximage_unpack_unsized_internal", upload_unsized),
     TX("pixel/teximage_unpack_1d", upload_1d),
     TX("pixel/getteximage_formats_types", get_teximage),
     TX("pixel/getteximage_pack_state", get_teximage_pack_state),
+    /* Honesty (as the readpixels ones above) */
+    FC_CASE("honesty/teximage_unpack_half_float", 8, 8, OSMESA_RGBA, 0, 0, 0,
+            "honesty pixel teximage", upload_half),
+    FC_CASE("honesty/teximage_unpack_color_index_half_float", 8, 8, OSMESA_RGBA, 0, 0, 0,
+            "honesty pixel teximage", upload_color_index_half),
+    FC_CASE("honesty/getteximage_formats_types", 8, 8, OSMESA_RGBA, 0, 0, 0,
+            "honesty pixel teximage", get_teximage_foreign),
     { 0 }
 };

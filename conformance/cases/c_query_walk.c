@@ -26,9 +26,13 @@ struct qenum { GLenum e; const char *name; };
  * not support, is walked for its INVALID_ENUM), with the GL 1.2-1.4 and
  * extension values of features fixgl implements.  Not walked: values that
  * belong to extensions and later versions fixgl does not implement (the
- * oracle answers hundreds; fixgl raises INVALID_ENUM): GL_COLOR_SUM, point
- * parameters and sprites, GL_MAX_TEXTURE_COORDS/IMAGE_UNITS, rectangle
- * textures, anisotropy, vertex attributes... */
+ * oracle answers hundreds; fixgl raises INVALID_ENUM): GL_COLOR_SUM,
+ * GL_MAX_TEXTURE_COORDS/IMAGE_UNITS, rectangle textures, anisotropy, vertex
+ * attributes, and since GL 1.5 honesty (README "Version and honesty") no
+ * value of a later version or unlisted extension either (GL 2.0's
+ * GL_FRAGMENT_SHADER_DERIVATIVE_HINT, ARB_viewport_array's
+ * GL_VIEWPORT_BOUNDS_RANGE): c_honesty.c records those as deliberate
+ * differences. */
 static const struct qenum walk[] = {
 #include "query_walk_list.h"
 };
@@ -85,7 +89,7 @@ static void set_everything(fc_h *h, int nested)
     static const GLenum hints[] = {
         GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT,
         GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_TEXTURE_COMPRESSION_HINT,
-        GL_GENERATE_MIPMAP_HINT, GL_FRAGMENT_SHADER_DERIVATIVE_HINT,
+        GL_GENERATE_MIPMAP_HINT,
     };
 
     glPushAttrib(GL_ALL_ATTRIB_BITS);
@@ -506,6 +510,7 @@ static void query_extensions(fc_h *h)
         "GL_EXT_blend_equation_separate", "GL_EXT_blend_func_separate", "GL_EXT_fog_coord",
         "GL_EXT_multi_draw_arrays", "GL_EXT_point_parameters", "GL_EXT_secondary_color",
         "GL_ARB_vertex_buffer_object", "GL_ARB_occlusion_query", "GL_EXT_vertex_array",
+        "GL_ARB_point_sprite", "GL_EXT_texture3D",
     };
     /* fixgl's own extensions (include/fixgl/shading.md), which the oracle
      * does not have: not counted among the others; libfixgl's api tests
@@ -1115,8 +1120,7 @@ static GLenum fuzz_enum(fc_rng *r, const GLenum *valid, size_t n)
 #define STENCIL_OPS GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, \
     GL_DECR_WRAP
 #define HINT_TARGETS GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT, \
-    GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_TEXTURE_COMPRESSION_HINT, GL_GENERATE_MIPMAP_HINT, \
-    GL_FRAGMENT_SHADER_DERIVATIVE_HINT
+    GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_TEXTURE_COMPRESSION_HINT, GL_GENERATE_MIPMAP_HINT
 #define PIXEL_STORES GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST, GL_PACK_ROW_LENGTH, \
     GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_IMAGES, \
     GL_PACK_ALIGNMENT, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH, \

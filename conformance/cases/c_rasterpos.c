@@ -9,11 +9,9 @@
 
 #include "cases.h"
 
-#ifndef GL_CURRENT_RASTER_SECONDARY_COLOR
-#define GL_CURRENT_RASTER_SECONDARY_COLOR 0x845F
-#endif
-
-/* Every raster query as float. */
+/* Every raster query of GL 1.5 as float (GL_CURRENT_RASTER_SECONDARY_COLOR
+ * is GL 3.0's compatibility query, foreign to GL 1.5:
+ * honesty/rasterpos_secondary_color records it). */
 static void rp_query(fc_h *h, const char *label)
 {
     char l[96];
@@ -25,8 +23,6 @@ static void rp_query(fc_h *h, const char *label)
     fc_get_float(h, l, GL_CURRENT_RASTER_DISTANCE, 1);
     snprintf(l, sizeof l, "%s color", label);
     fc_get_float(h, l, GL_CURRENT_RASTER_COLOR, 4);
-    snprintf(l, sizeof l, "%s secondary", label);
-    fc_get_float(h, l, GL_CURRENT_RASTER_SECONDARY_COLOR, 4);
     snprintf(l, sizeof l, "%s index", label);
     fc_get_float(h, l, GL_CURRENT_RASTER_INDEX, 1);
     snprintf(l, sizeof l, "%s texcoords", label);

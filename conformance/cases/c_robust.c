@@ -277,8 +277,6 @@ static void drawarrays_negative_first(fc_h *h)
     fc_error(h, "first -1 count -1");
     glDrawArrays(0x7777, -1, 3);
     fc_error(h, "bad mode, first -1");
-    glDrawArrays(GL_PATCHES, -1, 3);
-    fc_error(h, "GL_PATCHES, first -1");
     glNewList(1, GL_COMPILE);
     glDrawArrays(GL_TRIANGLES, -2, 3);
     glDrawArrays(0x7777, -2, 3);

@@ -642,7 +642,7 @@ static void multi_current(fc_h *h)
 static void multi_errors(fc_h *h)
 {
     fc_get_integer(h, "max units", GL_MAX_TEXTURE_UNITS, 1);
-    fc_get_integer(h, "max coords", GL_MAX_TEXTURE_COORDS, 1);
+    /* (GL_MAX_TEXTURE_COORDS is GL 2.0's: honesty/get_pnames) */
     fc_get_integer(h, "active", GL_ACTIVE_TEXTURE, 1);
     fc_get_integer(h, "client active", GL_CLIENT_ACTIVE_TEXTURE, 1);
     glActiveTexture(GL_TEXTURE7);
@@ -787,8 +787,8 @@ static void multi_enables(fc_h *h)
     }
     fc_get_integer(h, "active after gen pop", GL_ACTIVE_TEXTURE, 1);
     /* bad caps for the active unit */
-    glEnable(GL_TEXTURE_RECTANGLE);
-    fc_error(h, "rectangle");
+    glEnable(GL_TEXTURE_3D + 1);
+    fc_error(h, "3d + 1");
     glIsEnabled(GL_TEXTURE_GEN_Q + 1);
     fc_error(h, "gen q + 1");
 }

@@ -27,14 +27,15 @@ static const GLint formats[] = {
 };
 #define NFORMATS (sizeof formats / sizeof formats[0])
 
+/* GL 1.5's level parameters.  The GL 3.0 ones the oracle also answers
+ * (the *_TYPE values, GL_TEXTURE_STENCIL_SIZE, GL_TEXTURE_SHARED_SIZE, the
+ * sample values) raise GL_INVALID_ENUM in fixgl (README "Version and
+ * honesty"): honesty/tex_level_pnames records them. */
 static const GLenum level_pnames[] = {
     GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH, GL_TEXTURE_INTERNAL_FORMAT,
     GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
     GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE, GL_TEXTURE_INTENSITY_SIZE,
-    GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_COMPRESSED, GL_TEXTURE_RED_TYPE, GL_TEXTURE_GREEN_TYPE,
-    GL_TEXTURE_BLUE_TYPE, GL_TEXTURE_ALPHA_TYPE, GL_TEXTURE_LUMINANCE_TYPE,
-    GL_TEXTURE_INTENSITY_TYPE, GL_TEXTURE_DEPTH_TYPE, GL_TEXTURE_STENCIL_SIZE,
-    GL_TEXTURE_SHARED_SIZE, GL_TEXTURE_SAMPLES, GL_TEXTURE_FIXED_SAMPLE_LOCATIONS,
+    GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_COMPRESSED,
 };
 #define NPNAMES (sizeof level_pnames / sizeof level_pnames[0])
 
@@ -357,8 +358,6 @@ static void tex_image_errors(fc_h *h)
     E("rgb 4444", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, px));
     E("rgba 565", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, px));
     E("lum 5551", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_SHORT_5_5_5_1, px));
-    E("depth_stencil ubyte", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_BYTE, px));
-    E("24_8 rgba", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, px));
     E("format before internal", glTexImage2D(GL_TEXTURE_2D, 0, 99, 1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, px));
     E("internal 0", glTexImage2D(GL_TEXTURE_2D, 0, 0, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
     E("internal 5", glTexImage2D(GL_TEXTURE_2D, 0, 5, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
@@ -367,7 +366,6 @@ static void tex_image_errors(fc_h *h)
     E("internal color index", glTexImage2D(GL_TEXTURE_2D, 0, GL_COLOR_INDEX, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
     E("format depth", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, px));
     E("format stencil", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, px));
-    E("format integer", glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, px));
     E("1d level 15", glTexImage1D(GL_TEXTURE_1D, 15, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
     E("1d border 3", glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 3, GL_RGBA, GL_UNSIGNED_BYTE, px));
     E("1d internal", glTexImage1D(GL_TEXTURE_1D, 0, 77, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px));
@@ -444,7 +442,6 @@ static void sub_image(fc_h *h)
     E("y past", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
     E("y -1", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, -1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
     E("format before size", glTexSubImage2D(GL_TEXTURE_2D, 0, 50, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, src));
-    E("integer", glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, src));
     E("1d past", glTexSubImage1D(GL_TEXTURE_1D, 0, 8, 2, GL_RGBA, GL_UNSIGNED_BYTE, src));
     E("1d yoffset ignored", glTexSubImage1D(GL_TEXTURE_1D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, src));
     glBegin(GL_POINTS);
@@ -808,9 +805,9 @@ static void readback_types_of(fc_h *h, const GLint *internals, size_t ni)
 {
     static const GLenum fmts[] = { GL_RGBA, GL_RGB, GL_BGRA, GL_BGR, GL_ABGR_EXT, GL_RED,
                                    GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
-                                   GL_LUMINANCE_ALPHA, GL_RG };
+                                   GL_LUMINANCE_ALPHA };
     static const GLenum types[] = { GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
-                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_HALF_FLOAT };
+                                    GL_UNSIGNED_INT, GL_INT, GL_FLOAT };
     static const struct { GLenum f, t; } packed[] = {
         { GL_RGB, GL_UNSIGNED_BYTE_3_3_2 }, { GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV },
         { GL_RGB, GL_UNSIGNED_SHORT_5_6_5 }, { GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV },
@@ -888,7 +885,7 @@ static void store_precision(fc_h *h)
     };
     static const struct { GLenum f, t; } clients[] = {
         { GL_RGBA, GL_FLOAT }, { GL_RGB, GL_FLOAT }, { GL_LUMINANCE, GL_FLOAT },
-        { GL_BGRA, GL_FLOAT }, { GL_RGBA, GL_HALF_FLOAT }, { GL_RGBA, GL_UNSIGNED_SHORT },
+        { GL_BGRA, GL_FLOAT }, { GL_RGBA, GL_UNSIGNED_SHORT },
         { GL_BGRA, GL_UNSIGNED_SHORT }, { GL_RGBA, GL_SHORT }, { GL_RGBA, GL_UNSIGNED_INT },
         { GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV }, { GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1 },
         { GL_RGB, GL_UNSIGNED_BYTE }, { GL_RGBA, GL_UNSIGNED_BYTE },
@@ -1302,21 +1299,17 @@ static void query_errors(fc_h *h)
     E("get level -1", glGetTexImage(GL_TEXTURE_2D, -1, 0x1234, GL_UNSIGNED_BYTE, readback));
     E("get 3d level 12", glGetTexImage(GL_TEXTURE_3D, 12, GL_RGBA, GL_UNSIGNED_BYTE, readback));
     E("get 3d level 11", glGetTexImage(GL_TEXTURE_3D, 11, GL_RGBA, GL_UNSIGNED_BYTE, readback));
-    E("get rect level 1", glGetTexImage(GL_TEXTURE_RECTANGLE, 1, GL_RGBA, GL_UNSIGNED_BYTE, readback));
     E("get format", glGetTexImage(GL_TEXTURE_2D, 0, 0x1234, GL_UNSIGNED_BYTE, readback));
     E("get type", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, 0x1234, readback));
     E("get packed", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, readback));
     E("get depth", glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, readback));
     E("get depth no image", glGetTexImage(GL_TEXTURE_2D, 4, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, readback));
-    E("get integer", glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, readback));
-    E("get depth_stencil", glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, readback));
     GLint v = -5;
     E("lp target", glGetTexLevelParameteriv(GL_TEXTURE_ENV, 0, GL_TEXTURE_WIDTH, &v));
     E("lp target cube", glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP, 0, GL_TEXTURE_WIDTH, &v));
     E("lp level 15", glGetTexLevelParameteriv(GL_TEXTURE_2D, 15, GL_TEXTURE_WIDTH, &v));
     E("lp level -1", glGetTexLevelParameteriv(GL_TEXTURE_1D, -1, GL_TEXTURE_WIDTH, &v));
     E("lp 3d level 12", glGetTexLevelParameteriv(GL_TEXTURE_3D, 12, GL_TEXTURE_WIDTH, &v));
-    E("lp rect level 1", glGetTexLevelParameteriv(GL_TEXTURE_RECTANGLE, 1, GL_TEXTURE_WIDTH, &v));
     E("lp pname", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_ENV_MODE, &v));
     E("lp pname min filter", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &v));
     E("lp compressed size", glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &v));
@@ -1332,9 +1325,7 @@ static void query_errors(fc_h *h)
     level_params(h, "level 1", GL_TEXTURE_2D, 1);
     level_params(h, "3d", GL_TEXTURE_3D, 0);
     level_params(h, "cube face", GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 3);
-    level_params(h, "rect", GL_TEXTURE_RECTANGLE, 0);
     level_params(h, "proxy cube", GL_PROXY_TEXTURE_CUBE_MAP, 0);
-    level_params(h, "1d array", GL_TEXTURE_1D_ARRAY, 2);
     level_params(h, "proxy 1d none", GL_PROXY_TEXTURE_1D, 4);
 }
 

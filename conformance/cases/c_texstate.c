@@ -553,8 +553,9 @@ static void objects(fc_h *h)
     fc_error(h, "proxy target");
     glBindTexture(GL_TEXTURE_2D + 1, 0);
     fc_error(h, "bad target");
-    glBindTexture(GL_TEXTURE_RECTANGLE, 77);
-    fc_error(h, "rectangle, new name");
+    /* (GL_TEXTURE_RECTANGLE, foreign to GL 1.5, in honesty/texture_targets) */
+    glBindTexture(GL_TEXTURE_3D, 77);
+    fc_error(h, "3d, new name");
     fc_value(h, "is 77", glIsTexture(77));
     glBindTexture(GL_TEXTURE_2D, 50);  /* not generated: created */
     fc_value(h, "is 50", glIsTexture(50));
@@ -562,12 +563,12 @@ static void objects(fc_h *h)
     glGenTextures(2, t + 3);
     fc_blob(h, "gen after 77", t, sizeof t);
     /* a generated name's parameters before its first bind: a priority
-     * stays, a rectangle gets its own wraps and filters */
+     * stays (a rectangle's own wraps and filters: honesty/texture_targets) */
     const GLclampf half = 0.5f;
     glPrioritizeTextures(1, &t[4], &half);
-    glBindTexture(GL_TEXTURE_RECTANGLE, t[4]);
-    tex_params(h, "rect first bound", GL_TEXTURE_RECTANGLE);
-    glBindTexture(GL_TEXTURE_RECTANGLE, 0);
+    glBindTexture(GL_TEXTURE_3D, t[4]);
+    tex_params(h, "3d first bound", GL_TEXTURE_3D);
+    glBindTexture(GL_TEXTURE_3D, 0);
     glGenTextures(0, t);
     glGenTextures(-1, t);
     fc_error(h, "gen -1");
@@ -649,7 +650,6 @@ static void parameters(fc_h *h)
     tex_params(h, "default 2d", GL_TEXTURE_2D);
     tex_params(h, "default 1d", GL_TEXTURE_1D);
     tex_params(h, "default 3d", GL_TEXTURE_3D);
-    tex_params(h, "default rect", GL_TEXTURE_RECTANGLE);
     GLuint t;
     glGenTextures(1, &t);
     glBindTexture(GL_TEXTURE_1D, t);
@@ -722,12 +722,7 @@ static void parameters(fc_h *h)
         glTexParameterf(tg, GL_TEXTURE_WIDTH, 1.0f);
         fc_error(h, "bad pname f");
     }
-    /* rectangle rules */
-    set_and_check(h, "rect min mipmap", GL_TEXTURE_RECTANGLE, GL_TEXTURE_MIN_FILTER,
-                  GL_LINEAR_MIPMAP_LINEAR);
-    set_and_check(h, "rect wrap repeat", GL_TEXTURE_RECTANGLE, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    set_and_check(h, "rect base 1", GL_TEXTURE_RECTANGLE, GL_TEXTURE_BASE_LEVEL, 1);
-    set_and_check(h, "rect max 1", GL_TEXTURE_RECTANGLE, GL_TEXTURE_MAX_LEVEL, 1);
+    /* (the rectangle rules: honesty/texture_targets) */
     /* targets */
     glTexParameteri(GL_PROXY_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     fc_error(h, "proxy");

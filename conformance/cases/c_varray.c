@@ -1093,9 +1093,7 @@ static void draw_errors(fc_h *h)
     glVertexPointer(2, GL_FLOAT, 0, v);
     fcu_clear(0, 0, 0, 0, 1);
     glDrawArrays(GL_TRIANGLES, 0, -1); fc_error(h, "arrays count -1");
-    glDrawArrays(GL_POLYGON + 1, 0, 3); fc_error(h, "arrays lines adjacency");
     glDrawArrays(0x20, 0, 3); fc_error(h, "arrays mode 0x20");
-    glDrawArrays(GL_PATCHES, 0, 3); fc_error(h, "arrays patches");
     glDrawArrays(0x20, 0, -1); fc_error(h, "arrays bad mode and count");
     glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_BYTE, idx); fc_error(h, "elements count -1");
     glDrawElements(0x20, 3, GL_UNSIGNED_BYTE, idx); fc_error(h, "elements bad mode");

@@ -73,6 +73,7 @@ extern const fc_case fc_cases_cubemap[];
 extern const fc_case fc_cases_osmesa[];
 extern const fc_case fc_cases_tex_copy[];
 extern const fc_case fc_cases_compressed[];
+extern const fc_case fc_cases_honesty[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);
@@ -96,5 +97,46 @@ void fcu_frustum(double l, double r, double b, double t, double n, double f);
  * (shared by the shading and lit-primitive cases). */
 extern const float fcu_tri_v[6][2], fcu_strip_v[8][2], fcu_fan_v[7][2];
 extern const float fcu_quads_v[8][2], fcu_qstrip_v[8][2], fcu_poly_v[6][2];
+
+/* GL 1.5 honesty (README "Version and honesty"): a client pixel format or
+ * type of a later GL version or of an extension fixgl does not list
+ * (GL_RG, the *_INTEGER formats, GL_DEPTH_STENCIL, the half-float, 24_8
+ * and packed float types).  fixgl raises GL_INVALID_ENUM for them where
+ * the oracle's GL 4.5 context accepts them, so the GL 1.5 cases leave them
+ * out and the honesty cases (c_honesty.c, tag honesty) record them.
+ * Invalid values of every version (0x1234, GL_DOUBLE, GL_INTENSITY as a
+ * client format) are not foreign: the error cases keep them. */
+static inline int fc_foreign_pixel_format(GLenum format)
+{
+    switch (format) {
+    case 0x8227 /* GL_RG */: case 0x8228 /* GL_RG_INTEGER */:
+    case 0x84F9 /* GL_DEPTH_STENCIL */:
+    case 0x8D94 /* GL_RED_INTEGER */: case 0x8D95 /* GL_GREEN_INTEGER */:
+    case 0x8D96 /* GL_BLUE_INTEGER */: case 0x8D97 /* GL_ALPHA_INTEGER */:
+    case 0x8D98 /* GL_RGB_INTEGER */: case 0x8D99 /* GL_RGBA_INTEGER */:
+    case 0x8D9A /* GL_BGR_INTEGER */: case 0x8D9B /* GL_BGRA_INTEGER */:
+    case 0x8D9C /* GL_LUMINANCE_INTEGER_EXT */: case 0x8D9D /* GL_LUMINANCE_ALPHA_INTEGER_EXT */:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static inline int fc_foreign_pixel_type(GLenum type)
+{
+    switch (type) {
+    case 0x140B /* GL_HALF_FLOAT */: case 0x8D61 /* GL_HALF_FLOAT_OES */:
+    case 0x84FA /* GL_UNSIGNED_INT_24_8 */: case 0x8DAD /* GL_FLOAT_32_UNSIGNED_INT_24_8_REV */:
+    case 0x8C3B /* GL_UNSIGNED_INT_10F_11F_11F_REV */: case 0x8C3E /* GL_UNSIGNED_INT_5_9_9_9_REV */:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static inline int fc_foreign_pixel(GLenum format, GLenum type)
+{
+    return fc_foreign_pixel_format(format) || fc_foreign_pixel_type(type);
+}
 
 #endif

@@ -47,6 +47,7 @@ static const fc_case *const groups[] = {
     fc_cases_osmesa,
     fc_cases_tex_copy,
     fc_cases_compressed,
+    fc_cases_honesty,
 };
 
 size_t fc_case_count(void)

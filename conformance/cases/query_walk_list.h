@@ -1,5 +1,6 @@
 /* query_walk_list.h - every GL 1.3 state value (GL 1.3 state tables 6.5-6.31
- * and the GL 1.2-1.4 and extension values of features fixgl implements) as
+ * and the GL 1.2-1.5 and listed-extension values of features fixgl implements;
+ * nothing of a later version or an unlisted extension) as
  * Q(enum) items: the walk of c_query_walk.c and the state digest of the
  * API fuzzer (conformance/fuzz/fz_exec.c).  Include it inside an array
  * initializer with Q defined. */
@@ -102,13 +103,13 @@
     /* 6.27 hints */
     Q(GL_PERSPECTIVE_CORRECTION_HINT), Q(GL_POINT_SMOOTH_HINT), Q(GL_LINE_SMOOTH_HINT),
     Q(GL_POLYGON_SMOOTH_HINT), Q(GL_FOG_HINT), Q(GL_TEXTURE_COMPRESSION_HINT),
-    Q(GL_GENERATE_MIPMAP_HINT), Q(GL_FRAGMENT_SHADER_DERIVATIVE_HINT),
+    Q(GL_GENERATE_MIPMAP_HINT),
     /* 6.28-6.30 implementation-dependent values and framebuffer depths */
     Q(GL_MAX_LIGHTS), Q(GL_MAX_CLIP_PLANES), Q(GL_MAX_MODELVIEW_STACK_DEPTH),
     Q(GL_MAX_PROJECTION_STACK_DEPTH), Q(GL_MAX_TEXTURE_STACK_DEPTH), Q(GL_SUBPIXEL_BITS),
     Q(GL_MAX_3D_TEXTURE_SIZE), Q(GL_MAX_TEXTURE_SIZE), Q(GL_MAX_CUBE_MAP_TEXTURE_SIZE),
     Q(GL_MAX_TEXTURE_LOD_BIAS), Q(GL_MAX_PIXEL_MAP_TABLE), Q(GL_MAX_EVAL_ORDER),
-    Q(GL_MAX_VIEWPORT_DIMS), Q(GL_VIEWPORT_BOUNDS_RANGE), Q(GL_MAX_ATTRIB_STACK_DEPTH),
+    Q(GL_MAX_VIEWPORT_DIMS), Q(GL_MAX_ATTRIB_STACK_DEPTH),
     Q(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH), Q(GL_AUX_BUFFERS), Q(GL_RGBA_MODE), Q(GL_INDEX_MODE),
     Q(GL_DOUBLEBUFFER), Q(GL_STEREO), Q(GL_POINT_SIZE_RANGE), Q(GL_POINT_SIZE_GRANULARITY),
     Q(GL_ALIASED_POINT_SIZE_RANGE), Q(GL_LINE_WIDTH_RANGE), Q(GL_LINE_WIDTH_GRANULARITY),

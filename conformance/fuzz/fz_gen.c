@@ -207,10 +207,15 @@ static uint32_t enum_value(fz_src *s, int cls, unsigned valid)
     case 0: return 0;
     case 1: return 0xffffffffu;
     case 2: return next32(s);
-    default:
-        return (cls >= 0 && fz_enum_classes[cls].count
-                    ? fz_enum_classes[cls].values[below(s, (uint32_t)fz_enum_classes[cls].count)]
-                    : 0x1400) + 1;
+    default: {
+        uint32_t v = (cls >= 0 && fz_enum_classes[cls].count
+                          ? fz_enum_classes[cls].values[below(s, (uint32_t)fz_enum_classes[cls].count)]
+                          : 0x1400) + 1;
+        /* GL_POLYGON + 1 is GL_LINES_ADJACENCY, a mode of GL 3.2 that the
+         * oracle (GL 4.5) draws and fixgl (GL 1.5) refuses: the first
+         * value after every version's modes instead (GL_PATCHES + 1) */
+        return v == 0xA ? 0xF : v;
+    }
     }
 }
 

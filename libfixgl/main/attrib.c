@@ -229,8 +229,7 @@ static void restore_fog(struct fgl_context *ctx, const struct fgl_attrib_node *n
 }
 
 /* GL_HINT_BIT: _mesa_PopAttrib calls glHint for six targets only;
- * GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT keep their
- * current value. */
+ * GL_GENERATE_MIPMAP_HINT keeps its current value. */
 static void restore_hint(struct fgl_context *ctx, const struct fgl_attrib_node *node)
 {
    struct fgl_hint_attrib *h = &ctx->Hint;

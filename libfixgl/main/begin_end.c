@@ -53,10 +53,10 @@ void fgl_exec_begin(struct fgl_context *ctx, GLenum mode)
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (mode > GL_TRIANGLE_STRIP_ADJACENCY) {
-      /* adjacency modes are valid in the oracle's 4.5 compatibility context
-       * (and draw nothing here yet); patches need a tessellation shader */
-      fgl_error(ctx, mode == GL_PATCHES ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+   if (mode > GL_POLYGON) {
+      /* GL 1.5's ten modes; the oracle's 4.5 context also takes the
+       * adjacency modes and patches (README "Version and honesty") */
+      fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
    fgl_update_state(ctx);

@@ -50,9 +50,10 @@ void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref)
    ctx->Color.AlphaRef = ref;
 }
 
-/* [S: main/blend.c:legal_src_factor, legal_dst_factor]: desktop GL with
- * ARB_blend_func_extended (which llvmpipe has) accepts every factor as
- * source and destination, including the dual-source SRC1 factors. */
+/* [S: main/blend.c:legal_src_factor, legal_dst_factor]: desktop GL
+ * accepts every factor as source and destination (NV_blend_square).  The
+ * oracle's ARB_blend_func_extended SRC1 factors are not GL 1.5's:
+ * GL_INVALID_ENUM (README "Version and honesty"). */
 static bool legal_factor(GLenum factor)
 {
    switch (factor) {
@@ -72,10 +73,6 @@ static bool legal_factor(GLenum factor)
    case GL_ONE_MINUS_CONSTANT_ALPHA:
       return true;
    case GL_SRC_ALPHA_SATURATE:
-   case GL_SRC1_COLOR:
-   case GL_SRC1_ALPHA:
-   case GL_ONE_MINUS_SRC1_COLOR:
-   case GL_ONE_MINUS_SRC1_ALPHA:
       return true;
    default:
       return false;

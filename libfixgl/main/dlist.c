@@ -1573,9 +1573,9 @@ void fgl_save_begin(struct fgl_context *ctx, GLenum mode)
       compile_error(ctx, GL_INVALID_OPERATION);   /* "Recursive glBegin" */
       return;
    }
-   /* _mesa_is_valid_prim_mode: everything up to GL_PATCHES in the
-    * oracle's compatibility context */
-   if (mode > GL_PATCHES) {
+   /* _mesa_is_valid_prim_mode: GL 1.5's ten modes (the oracle's 4.5
+    * context takes everything up to GL_PATCHES) */
+   if (mode > GL_POLYGON) {
       compile_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1784,7 +1784,7 @@ void fgl_save_shade_model(struct fgl_context *ctx, GLenum mode)
  * a primitive of the vertex list that does not update the current values */
 void fgl_save_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count)
 {
-   if (mode > GL_PATCHES) {
+   if (mode > GL_POLYGON) {
       compile_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1821,7 +1821,7 @@ void fgl_save_multi_draw_arrays(struct fgl_context *ctx, GLenum mode, const GLin
 {
    if (n > 0)
       grow_for_counts(ctx, count, n);
-   if (mode > GL_PATCHES) {
+   if (mode > GL_POLYGON) {
       compile_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1857,7 +1857,7 @@ void fgl_save_multi_draw_elements(struct fgl_context *ctx, GLenum mode, const GL
 void fgl_save_draw_elements(struct fgl_context *ctx, GLenum mode, GLsizei count,
                             GLenum type, const GLvoid *indices)
 {
-   if (mode > GL_PATCHES) {
+   if (mode > GL_POLYGON) {
       compile_error(ctx, GL_INVALID_ENUM);
       return;
    }
@@ -1894,7 +1894,7 @@ void fgl_save_draw_range_elements(struct fgl_context *ctx, GLenum mode, GLuint s
                                   GLuint end, GLsizei count, GLenum type,
                                   const GLvoid *indices)
 {
-   if (mode > GL_PATCHES) {
+   if (mode > GL_POLYGON) {
       compile_error(ctx, GL_INVALID_ENUM);
       return;
    }

@@ -1071,10 +1071,6 @@ static void drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei height, G
       return;
    }
    fgl_update_state(ctx);
-   if (fgl_is_integer_format(format)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
    const GLenum err = fgl_error_check_format_and_type(ctx, format, type);
    if (err != GL_NO_ERROR) {
       fgl_error(ctx, err);
@@ -1370,9 +1366,10 @@ void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GL
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL &&
-       type != GL_DEPTH_STENCIL && type != GL_DEPTH_STENCIL_TO_RGBA_NV &&
-       type != GL_DEPTH_STENCIL_TO_BGRA_NV) {
+   /* GL 1.5's three types (the oracle's GL_DEPTH_STENCIL and NV
+    * copy_depth_to_color types are not GL 1.5's: README "Version and
+    * honesty") */
+   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }

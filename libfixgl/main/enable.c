@@ -20,7 +20,7 @@ static unsigned *texture_cap(struct fgl_context *ctx, GLenum cap, unsigned *bit)
    if (!u) {
       switch (cap) {
       case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D:
-      case GL_TEXTURE_CUBE_MAP: case GL_TEXTURE_RECTANGLE:
+      case GL_TEXTURE_CUBE_MAP:
       case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T:
       case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
          *bit = 0;
@@ -34,7 +34,6 @@ static unsigned *texture_cap(struct fgl_context *ctx, GLenum cap, unsigned *bit)
    case GL_TEXTURE_2D:       *bit = 1u << FGL_TEX_2D;   return &u->Enabled;
    case GL_TEXTURE_3D:       *bit = 1u << FGL_TEX_3D;   return &u->Enabled;
    case GL_TEXTURE_CUBE_MAP: *bit = 1u << FGL_TEX_CUBE; return &u->Enabled;
-   case GL_TEXTURE_RECTANGLE: *bit = 1u << FGL_TEX_RECT; return &u->Enabled;  /* NV_texture_rectangle */
    case GL_TEXTURE_GEN_S:
    case GL_TEXTURE_GEN_T:
    case GL_TEXTURE_GEN_R:
@@ -71,7 +70,6 @@ bool fgl_texture_target_enabled(const struct fgl_context *ctx, unsigned unit, GL
    case GL_TEXTURE_2D:       return e & (1u << FGL_TEX_2D);
    case GL_TEXTURE_3D:       return e & (1u << FGL_TEX_3D);
    case GL_TEXTURE_CUBE_MAP: return e & (1u << FGL_TEX_CUBE);
-   case GL_TEXTURE_RECTANGLE: return e & (1u << FGL_TEX_RECT);
    default:                  return false;
    }
 }

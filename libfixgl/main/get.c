@@ -318,11 +318,6 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_MAX_VIEWPORT_DIMS:
       set_ints(val, V_INT, 2, FGL_MAX_VIEWPORT_SIZE, FGL_MAX_VIEWPORT_SIZE, 0, 0);
       return true;
-   case GL_VIEWPORT_BOUNDS_RANGE:
-      f[0] = FGL_VIEWPORT_BOUNDS_MIN;
-      f[1] = FGL_VIEWPORT_BOUNDS_MAX;
-      set_floats(val, V_FLOAT, f, 2);
-      return true;
    /* GL_CLIENT_PIXEL_STORE_BIT */
    case GL_PACK_SWAP_BYTES: set_ints(val, V_BOOL, 1, ctx->Pack.SwapBytes, 0, 0, 0); return true;
    case GL_PACK_LSB_FIRST: set_ints(val, V_BOOL, 1, ctx->Pack.LsbFirst, 0, 0, 0); return true;
@@ -374,9 +369,6 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       return true;
    case GL_POINT_DISTANCE_ATTENUATION:
       set_floats(val, V_FLOAT, ctx->Point.Params, 3);
-      return true;
-   case GL_POINT_SPRITE_COORD_ORIGIN:
-      set_ints(val, V_INT, 1, (int)ctx->Point.SpriteOrigin, 0, 0, 0);
       return true;
    case GL_POINT_SIZE_RANGE:        /* = GL_SMOOTH_POINT_SIZE_RANGE */
    case GL_ALIASED_POINT_SIZE_RANGE:
@@ -477,9 +469,6 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_CURRENT_RASTER_COLOR:
       set_floats(val, V_FLOATN, ctx->Current.RasterColor, 4);
       return true;
-   case GL_CURRENT_RASTER_SECONDARY_COLOR:
-      set_floats(val, V_FLOATN, ctx->Current.RasterSecondaryColor, 4);   /* TYPE_FLOATN_4 */
-      return true;
    case GL_CURRENT_RASTER_INDEX:
       set_ints(val, V_INT, 1, 1, 0, 0, 0);     /* CONST(1) */
       return true;
@@ -564,10 +553,6 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
       set_ints(val, V_INT, 1, (int)bound_names(ctx)[FGL_TEX_CUBE], 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_UNITS:
-      set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
-      return true;
-   case GL_MAX_TEXTURE_COORDS:
-      /* Const.MaxTextureCoordUnits (extra_ARB_fragment_program) */
       set_ints(val, V_INT, 1, FGL_MAX_TEXTURE_UNITS, 0, 0, 0);
       return true;
    case GL_MAX_TEXTURE_SIZE:
@@ -791,7 +776,10 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   EXT_separate_specular_color GL_LIGHT_MODEL_COLOR_CONTROL
        *   EXT_stencil_wrap       GL_INCR_WRAP, GL_DECR_WRAP
        *   ARB_multisample        glSampleCoverage and its state (no samples)
-       *   ARB/EXT_point_parameters glPointParameter (no point sprites)
+       *   ARB/EXT_point_parameters glPointParameter
+       *   ARB_point_sprite       GL_POINT_SPRITE, GL_COORD_REPLACE
+       *   EXT_texture3D          glTexImage3DEXT, glTexSubImage3DEXT,
+       *                          glCopyTexSubImage3DEXT (GL 1.2's 3D textures)
        *   ARB_transpose_matrix   glLoad/MultTransposeMatrix
        *   EXT_blend_equation_separate, EXT_blend_func_separate
        *   EXT_fog_coord, EXT_secondary_color, EXT_multi_draw_arrays
@@ -818,7 +806,8 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
                               "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
-                              "GL_ARB_multisample GL_ARB_point_parameters GL_ARB_transpose_matrix "
+                              "GL_ARB_multisample GL_ARB_point_parameters GL_ARB_point_sprite "
+                              "GL_ARB_transpose_matrix "
                               "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate "
                               "GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_point_parameters "
                               "GL_EXT_secondary_color "
@@ -830,7 +819,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp "
                               "GL_EXT_texture_env_add GL_EXT_texture_env_combine "
                               "GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias "
-                              "GL_EXT_texture_mirror_clamp GL_EXT_vertex_array "
+                              "GL_EXT_texture3D GL_EXT_texture_mirror_clamp GL_EXT_vertex_array "
                               "GL_IBM_texture_mirrored_repeat "
                               "GL_NV_blend_square GL_NV_fog_distance "
                               "GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp "

@@ -23,7 +23,6 @@ void fgl_init_hint(struct fgl_context *ctx)
    h->Fog = GL_DONT_CARE;
    h->TextureCompression = GL_DONT_CARE;
    h->GenerateMipmap = GL_DONT_CARE;
-   h->FragmentShaderDerivative = GL_DONT_CARE;
    h->PhongWin = GL_DONT_CARE;
 }
 
@@ -39,7 +38,6 @@ static GLenum *hint_field(struct fgl_context *ctx, GLenum target)
    case GL_POLYGON_SMOOTH_HINT:              return &h->PolygonSmooth;
    case GL_TEXTURE_COMPRESSION_HINT:         return &h->TextureCompression;
    case GL_GENERATE_MIPMAP_HINT:             return &h->GenerateMipmap;
-   case GL_FRAGMENT_SHADER_DERIVATIVE_HINT:  return &h->FragmentShaderDerivative;
    /* GL_WIN_phong_shading: stored and ignored (fixgl always shades every
     * fragment; include/fixgl/shading.md) */
    case GL_PHONG_HINT_WIN:                   return &h->PhongWin;

@@ -32,8 +32,6 @@ bool fgl_init_matrix(struct fgl_context *ctx)
    for (int i = 0; ok && i <= FGL_MAX_TEXTURE_UNITS; i++)
       ok = init_stack(&ctx->TextureStack[i], FGL_MAX_TEXTURE_STACK_DEPTH,
                       FGL_NEW_TEXTURE_MATRIX);
-   for (int i = 0; ok && i < FGL_MAX_PROGRAM_MATRICES; i++)
-      ok = init_stack(&ctx->ProgramStack[i], FGL_MAX_PROGRAM_STACK_DEPTH, 0);
    ctx->CurrentStack = &ctx->ModelviewStack;
    ctx->Transform.MatrixMode = GL_MODELVIEW;
    return ok;
@@ -45,12 +43,11 @@ void fgl_free_matrix(struct fgl_context *ctx)
    fgl_free(ctx->ProjectionStack.Stack);
    for (int i = 0; i <= FGL_MAX_TEXTURE_UNITS; i++)
       fgl_free(ctx->TextureStack[i].Stack);
-   for (int i = 0; i < FGL_MAX_PROGRAM_MATRICES; i++)
-      fgl_free(ctx->ProgramStack[i].Stack);
 }
 
 /* The stack glMatrixMode(mode) selects, or NULL for an invalid mode.
- * GL_MATRIX0_ARB..7 are accepted like the oracle (ARB_vertex_program). */
+ * (The oracle's ARB_vertex_program stacks GL_MATRIX0_ARB..7 are not GL
+ * 1.5's: README "Version and honesty".) */
 struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLenum mode)
 {
    switch (mode) {
@@ -64,8 +61,6 @@ struct fgl_matrix_stack *fgl_matrix_stack_for_mode(struct fgl_context *ctx, GLen
        * stack takes the calls */
       return fgl_texture_stack(ctx);
    default:
-      if (mode >= GL_MATRIX0_ARB && mode < GL_MATRIX0_ARB + FGL_MAX_PROGRAM_MATRICES)
-         return &ctx->ProgramStack[mode - GL_MATRIX0_ARB];
       return NULL;
    }
 }

@@ -1982,13 +1982,51 @@ static bool is_basic_type(GLenum type, bool half)
    }
 }
 
+/* The client formats and types of GL 1.5 with the listed EXT_abgr,
+ * EXT_bgra and EXT_packed_pixels (get.c GL_EXTENSIONS).  Those of later
+ * versions and unlisted extensions (GL_RG, the *_INTEGER formats,
+ * GL_DEPTH_STENCIL, GL_HALF_FLOAT, GL_UNSIGNED_INT_24_8, the packed float
+ * types), which the oracle's GL 4.5 context accepts, are not enums of a
+ * GL 1.5 implementation without those extensions: GL_INVALID_ENUM
+ * (README "Version and honesty"; api/enum_honesty). */
+static bool gl15_format(GLenum format)
+{
+   switch (format) {
+   case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT:
+   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RGB: case GL_RGBA:
+   case GL_BGR: case GL_BGRA: case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_ABGR_EXT:
+      return true;
+   default:
+      return false;
+   }
+}
+
+static bool gl15_type(GLenum type)
+{
+   switch (type) {
+   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_BITMAP: case GL_UNSIGNED_SHORT: case GL_SHORT:
+   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT:
+   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
+   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
+   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+      return true;
+   default:
+      return false;
+   }
+}
+
 /* [S: glformats.c:_mesa_error_check_format_and_type] for the oracle's
  * desktop context (every extension the checks ask for is on except
- * GL_MESA_ycbcr_texture) */
+ * GL_MESA_ycbcr_texture), after the GL 1.5 gate above */
 GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum format,
                                        GLenum type)
 {
    (void)ctx;
+   if (!gl15_format(format) || !gl15_type(type))
+      return GL_INVALID_ENUM;
    if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
        type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
       return GL_INVALID_ENUM;

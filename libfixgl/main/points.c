@@ -85,19 +85,9 @@ static void fgl_point_parameter(struct fgl_context *ctx, GLenum pname, const GLf
    case GL_POINT_FADE_THRESHOLD_SIZE:
       point_size_param(ctx, &pt->Threshold, params[0]);
       return;
-   case GL_POINT_SPRITE_COORD_ORIGIN: {
-      /* GL 2.0's, in the oracle's 4.5 compatibility context */
-      const GLenum v = (GLenum)params[0];
-      if (v != GL_LOWER_LEFT && v != GL_UPPER_LEFT) {
-         fgl_error(ctx, GL_INVALID_VALUE);
-         return;
-      }
-      if (pt->SpriteOrigin == v)
-         return;
-      FGL_FLUSH_VERTICES(ctx, FGL_NEW_POINT);
-      pt->SpriteOrigin = v;
-      return;
-   }
+   /* GL_POINT_SPRITE_COORD_ORIGIN is GL 2.0's (the oracle's 4.5 context
+    * takes it): ARB_point_sprite's origin is the upper left, always
+    * (README "Version and honesty") */
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return;

@@ -1547,17 +1547,17 @@ static int level_param_max_levels(GLenum target)
 static bool has_channel(GLenum base, GLenum pname)
 {
    switch (pname) {
-   case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_RED_TYPE:
+   case GL_TEXTURE_RED_SIZE:
       return base == GL_RGB || base == GL_RGBA;
-   case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_GREEN_TYPE:
+   case GL_TEXTURE_GREEN_SIZE:
       return base == GL_RGB || base == GL_RGBA;
-   case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_BLUE_TYPE:
+   case GL_TEXTURE_BLUE_SIZE:
       return base == GL_RGB || base == GL_RGBA;
-   case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_ALPHA_TYPE:
+   case GL_TEXTURE_ALPHA_SIZE:
       return base == GL_ALPHA || base == GL_LUMINANCE_ALPHA || base == GL_RGBA;
-   case GL_TEXTURE_LUMINANCE_SIZE: case GL_TEXTURE_LUMINANCE_TYPE:
+   case GL_TEXTURE_LUMINANCE_SIZE:
       return base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA;
-   case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_INTENSITY_TYPE:
+   case GL_TEXTURE_INTENSITY_SIZE:
       return base == GL_INTENSITY;
    default:
       return false;
@@ -1627,15 +1627,6 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
    case GL_TEXTURE_COMPRESSED:
       *v = img && fgl_s3tc_block_bytes(img->InternalFormat, NULL);
       return true;
-   case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_SHARED_SIZE:
-   case GL_TEXTURE_SAMPLES:
-   case GL_TEXTURE_BUFFER_DATA_STORE_BINDING: case GL_TEXTURE_BUFFER_OFFSET:
-   case GL_TEXTURE_BUFFER_SIZE:
-      *v = 0;
-      return true;
-   case GL_TEXTURE_FIXED_SAMPLE_LOCATIONS:
-      *v = 1;
-      return true;
    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       /* an uncompressed image (or none) has no compressed size */
       if (!img || !fgl_s3tc_block_bytes(img->InternalFormat, NULL) || is_proxy(target)) {
@@ -1645,14 +1636,9 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       *v = fgl_compressed_image_size(img->InternalFormat, img->Width, img->Height,
                                      img->Depth);
       return true;
-   case GL_TEXTURE_RED_TYPE: case GL_TEXTURE_GREEN_TYPE: case GL_TEXTURE_BLUE_TYPE:
-   case GL_TEXTURE_ALPHA_TYPE: case GL_TEXTURE_LUMINANCE_TYPE:
-   case GL_TEXTURE_INTENSITY_TYPE: case GL_TEXTURE_DEPTH_TYPE:
-      *v = has_channel(base, pname) ||
-                 (pname == GL_TEXTURE_DEPTH_TYPE && base == GL_DEPTH_COMPONENT)
-              ? GL_UNSIGNED_NORMALIZED
-              : GL_NONE;
-      return true;
+   /* the oracle's GL 3.0 queries (the *_TYPE, STENCIL, SHARED and
+    * sample and buffer values) are not GL 1.5's (README "Version and
+    * honesty") */
    default:
       fgl_error(ctx, GL_INVALID_ENUM);
       return false;

@@ -129,10 +129,13 @@ void fgl_share_texobjs(struct fgl_context *ctx, struct fgl_context *share)
    ctx->TexObjects = to;
 }
 
-/* [S: texobj.c:_mesa_tex_target_to_index] -1 for other targets */
+/* [S: texobj.c:_mesa_tex_target_to_index] -1 for other targets.  GL
+ * 1.5's targets only: the oracle's rectangle and array targets are not
+ * enums of GL 1.5 without those extensions (README "Version and
+ * honesty"); their default objects stay, never bound. */
 static int target_index(GLenum target)
 {
-   for (int i = 0; i < FGL_TEX_TARGETS; i++)
+   for (int i = 0; i <= FGL_TEX_CUBE; i++)
       if (index_target[i] == target)
          return i;
    return -1;

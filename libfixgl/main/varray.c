@@ -448,16 +448,12 @@ void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params)
 
 /* ---- drawing ---- */
 
-/* valid_prim_mode_custom [S: main/draw.c]: the oracle's compatibility
- * context supports the adjacency modes and patches too
- * (SupportedPrimMask); patches are not in ValidPrimMask without a
- * tessellation shader, and DrawGLError is GL_INVALID_OPERATION
- * (_mesa_update_valid_to_render_state). */
+/* valid_prim_mode_custom [S: main/draw.c] for GL 1.5: its ten modes.
+ * (The oracle's 4.5 context also takes the adjacency modes, and patches
+ * with GL_INVALID_OPERATION: README "Version and honesty".) */
 static GLenum valid_prim_mode(GLenum mode)
 {
-   if (mode > GL_PATCHES)
-      return GL_INVALID_ENUM;
-   return mode == GL_PATCHES ? GL_INVALID_OPERATION : GL_NO_ERROR;
+   return mode > GL_POLYGON ? GL_INVALID_ENUM : GL_NO_ERROR;
 }
 
 /* validate_DrawElements_common [S: main/draw.c]: count, mode, then the
