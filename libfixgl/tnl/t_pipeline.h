@@ -25,7 +25,13 @@ struct t_vertex {
    unsigned mask;
    bool edge;
    struct r_vertex r;
+   /* to 320 bytes, five cache lines: in the vertex stage's line-aligned
+    * array (fgl_vbo_scratch_lines) a vertex's clip coordinates, mask,
+    * window position and first colour share its first line, the only one
+    * an untextured batch writes and the raster setup reads */
+   float pad_to_lines[2];
 };
+_Static_assert(sizeof(struct t_vertex) % 64 == 0, "a transformed vertex is whole cache lines");
 
 /* The prim_header flags of draw's primitive decomposition (draw_pipe.h,
  * draw_decompose_tmp.h): T_EDGE_i marks the edge from v[i] to v[(i+1)%3]

@@ -387,8 +387,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
 
    /* the transformed vertices: the context's scratch array, no
     * allocation per batch */
-   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc,
-                                         src ? SEGMENT_SIZE : nverts, sizeof(*tv));
+   struct t_vertex *tv = fgl_vbo_scratch_lines(ctx->Vbo.tv, &ctx->Vbo.tv_alloc,
+                                               src ? SEGMENT_SIZE : nverts, sizeof(*tv));
    if (!tv) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
