@@ -111,6 +111,12 @@ enum t_edge_source { T_EDGES_SET, T_EDGES_FROM_DATA, T_EDGES_CLEAR };
  * flags. */
 void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                  unsigned n, struct t_vertex *out, enum t_edge_source edges);
+/* Whether some vertex of in[first, first + n) is outside the view volume
+ * or a user plane: the clip codes t_transform gives them, or'ed, from the
+ * same arithmetic (the raster path's choice for a segment of a batch
+ * that is transformed window by window later). */
+bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
+                      unsigned first, unsigned n);
 
 /* Lighting (t_light.c): see tnl/t_light.h. */
 
