@@ -55,6 +55,14 @@ void *fgl_realloc(void *p, size_t size)
    return NULL;
 }
 
+void *fgl_aligned_alloc(size_t align, size_t size)
+{
+   void *p = NULL;
+   if (inject() || posix_memalign(&p, align, size ? size : align) != 0)
+      return NULL;
+   return p;
+}
+
 void fgl_free(void *p)
 {
    free(p);

@@ -26,6 +26,9 @@
 void *fgl_malloc(size_t size);
 void *fgl_calloc(size_t n, size_t size);
 void *fgl_realloc(void *p, size_t size);
+/* size bytes at a multiple of align (a power of two, a multiple of
+ * sizeof(void *)); freed with fgl_free */
+void *fgl_aligned_alloc(size_t align, size_t size);
 void fgl_free(void *p);
 
 #ifdef FGL_ALLOC_FAIL_INJECTION

@@ -1,6 +1,7 @@
 /* c_vertex.c - every glVertex{2,3,4}{s,i,f,d}[v] and glColor{3,4}{b,s,i,
  * f,d,ub,us,ui}[v] entry point, with extreme values; the current colour is
  * queried back after each glColor call. */
+#include <math.h>
 #include "cases.h"
 
 /* Cell k of an 8x8 grid of 8-pixel cells in a 64x64 window-ortho view. */
@@ -205,11 +206,195 @@ static void denormals_flushed(fc_h *h)
     fc_capture(h);
 }
 
+/* ---- large immediate-mode batches ----
+ * Batches of thousands of vertices (the vertex stage transforms those of
+ * triangles and quads window by window as the primitives reach them,
+ * t_render.c LAZY_WINDOW; vsplit's 4096-vertex segments choose the
+ * clipped path): a wavy grid that crosses the near plane and the view
+ * volume's sides, lit per vertex with a material inside glBegin/glEnd in
+ * some, in each mode and in several fill and shade states. */
+
+/* The grid point (i, j) of an n x n grid over [-1.3, 1.3]^2, z waving
+ * through the near plane at z = -1 (eye space, frustum near 1). */
+static void big_grid_vertex(int i, int j, int n, int lit)
+{
+    const float x = -1.3f + 2.6f * (float)i / (float)(n - 1);
+    const float y = -1.3f + 2.6f * (float)j / (float)(n - 1);
+    const float z = -1.6f + 0.75f * sinf(3.1f * x) * cosf(2.3f * y);
+    if (lit)
+        glNormal3f(-0.5f * cosf(3.1f * x), 0.4f * sinf(2.3f * y), 1.0f);
+    else
+        glColor3f(0.5f + 0.5f * sinf(7.0f * x), 0.5f + 0.5f * cosf(5.0f * y),
+                  (float)((i * 7 + j * 3) % 11) / 10.0f);
+    glVertex3f(x, y, z);
+}
+
+static void big_setup(int lit)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.8, 0.8, -0.8, 0.8, 1.0, 4.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_DEPTH_TEST);
+    if (lit) {
+        static const GLfloat pos[4] = { 0.4f, 0.6f, 1.0f, 0.0f };
+        static const GLfloat spec[4] = { 1, 1, 1, 1 };
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glLightfv(GL_LIGHT0, GL_POSITION, pos);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 30.0f);
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    }
+}
+
+/* One batch of the grid in `mode`: GL_TRIANGLES and GL_QUADS as one
+ * glBegin/glEnd, strips one per grid row (many primitives of one mode in
+ * the batch), or one long strip when `one_strip`. */
+static void big_grid(GLenum mode, int n, int lit, int materials)
+{
+    static const GLfloat mat_a[4] = { 0.9f, 0.3f, 0.2f, 1 }, mat_b[4] = { 0.2f, 0.5f, 0.9f, 1 };
+    if (mode == GL_TRIANGLES || mode == GL_QUADS) {
+        glBegin(mode);
+        for (int j = 0; j + 1 < n; j++)
+            for (int i = 0; i + 1 < n; i++) {
+                if (materials && i % 5 == 0)
+                    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, (i + j) & 1 ? mat_a : mat_b);
+                if (mode == GL_QUADS) {
+                    big_grid_vertex(i, j, n, lit);
+                    big_grid_vertex(i + 1, j, n, lit);
+                    big_grid_vertex(i + 1, j + 1, n, lit);
+                    big_grid_vertex(i, j + 1, n, lit);
+                } else {
+                    big_grid_vertex(i, j, n, lit);
+                    big_grid_vertex(i + 1, j, n, lit);
+                    big_grid_vertex(i + 1, j + 1, n, lit);
+                    big_grid_vertex(i, j, n, lit);
+                    big_grid_vertex(i + 1, j + 1, n, lit);
+                    big_grid_vertex(i, j + 1, n, lit);
+                }
+            }
+        glEnd();
+        return;
+    }
+    for (int j = 0; j + 1 < n; j++) {
+        glBegin(mode);
+        for (int i = 0; i < n; i++) {
+            if (materials && i % 7 == 0)
+                glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, (i + j) & 1 ? mat_a : mat_b);
+            big_grid_vertex(i, j + (mode == GL_TRIANGLE_STRIP ? 0 : 0), n, lit);
+            big_grid_vertex(i, j + 1, n, lit);
+        }
+        glEnd();
+    }
+}
+
+/* One long triangle strip of 2 * n * rows vertices (past vsplit's 4096),
+ * zig-zagging over the grid's rows. */
+static void big_long_strip(int n, int lit)
+{
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int j = 0; j + 1 < n; j++)
+        for (int k = 0; k < n; k++) {
+            const int i = j & 1 ? n - 1 - k : k;
+            big_grid_vertex(i, j, n, lit);
+            big_grid_vertex(i, j + 1, n, lit);
+        }
+    glEnd();
+}
+
+static void big_batches(fc_h *h)
+{
+    static const GLenum modes[4] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_QUADS, GL_QUAD_STRIP };
+    big_setup(0);
+    for (int m = 0; m < 4; m++) {
+        fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+        big_grid(modes[m], 48, 0, 0);
+        fc_capture(h);
+    }
+    glShadeModel(GL_FLAT);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_grid(GL_QUAD_STRIP, 48, 0, 0);
+    fc_capture(h);
+    glShadeModel(GL_SMOOTH);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_long_strip(48, 0);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
+static void big_batches_lit(fc_h *h)
+{
+    static const GLenum modes[4] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_QUADS, GL_QUAD_STRIP };
+    big_setup(1);
+    for (int m = 0; m < 4; m++) {
+        fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+        big_grid(modes[m], 40, 1, m & 1);
+        fc_capture(h);
+    }
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_long_strip(40, 1);
+    fc_capture(h);
+    fc_error(h, "final");
+}
+
+/* The same batches under a user clip plane, unfilled with edge flags,
+ * polygon offset and stipple: draw's pipeline for the segments that
+ * need it. */
+static void big_batches_pipeline(fc_h *h)
+{
+    static const GLdouble plane[4] = { 1.0, 0.3, 0.0, 0.2 };
+    big_setup(0);
+    glClipPlane(GL_CLIP_PLANE0, plane);
+    glEnable(GL_CLIP_PLANE0);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_grid(GL_TRIANGLES, 40, 0, 0);
+    fc_capture(h);
+    glDisable(GL_CLIP_PLANE0);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glBegin(GL_QUADS);
+    for (int j = 0; j + 1 < 36; j++)
+        for (int i = 0; i + 1 < 36; i++) {
+            glEdgeFlag((i + j) % 3 != 0);
+            big_grid_vertex(i, j, 36, 0);
+            big_grid_vertex(i + 1, j, 36, 0);
+            big_grid_vertex(i + 1, j + 1, 36, 0);
+            big_grid_vertex(i, j + 1, 36, 0);
+        }
+    glEnd();
+    glEdgeFlag(GL_TRUE);
+    fc_capture(h);
+    glPolygonMode(GL_FRONT, GL_FILL);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 2.0f);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_grid(GL_TRIANGLE_STRIP, 40, 0, 0);
+    fc_capture(h);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    static GLubyte stipple[128];
+    for (int i = 0; i < 128; i++)
+        stipple[i] = (GLubyte)(i & 4 ? 0xaa : 0x5c);
+    glPolygonStipple(stipple);
+    glEnable(GL_POLYGON_STIPPLE);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    big_grid(GL_QUAD_STRIP, 40, 0, 0);
+    fc_capture(h);
+    glDisable(GL_POLYGON_STIPPLE);
+    fc_error(h, "final");
+}
+
 const fc_case fc_cases_vertex[] = {
     FC_CASE_RGBA("core/vertex_entry_points", 64, 64, 1, "core vertex", vertex_variants),
     FC_CASE_RGBA("core/color_entry_points", 64, 64, 1, "core vertex query", color_variants),
     FC_CASE_RGBA("core/color_integer_smooth", 32, 32, 1, "core vertex shade", color_integer_smooth),
     FC_CASE_RGBA("core/vbo_batch_corners", 32, 32, 2, "core vertex", batch_corners),
     FC_CASE_RGBA("core/denormals_flushed", 32, 32, 2, "core vertex", denormals_flushed),
+    FC_CASE_RGBA("core/large_batches", 96, 96, 6, "core vertex", big_batches),
+    FC_CASE_RGBA("core/large_batches_lit", 96, 96, 5, "core vertex lighting", big_batches_lit),
+    FC_CASE_RGBA("core/large_batches_pipeline", 96, 96, 4, "core vertex polygon", big_batches_pipeline),
     { 0 }
 };

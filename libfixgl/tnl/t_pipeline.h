@@ -25,7 +25,13 @@ struct t_vertex {
    unsigned mask;
    bool edge;
    struct r_vertex r;
+   /* to 320 bytes, five cache lines: in the vertex stage's line-aligned
+    * array (fgl_vbo_scratch_lines) a vertex's clip coordinates, mask,
+    * window position and first colour share its first line, the only one
+    * an untextured batch writes and the raster setup reads */
+   float pad_to_lines[2];
 };
+_Static_assert(sizeof(struct t_vertex) % 64 == 0, "a transformed vertex is whole cache lines");
 
 /* The prim_header flags of draw's primitive decomposition (draw_pipe.h,
  * draw_decompose_tmp.h): T_EDGE_i marks the edge from v[i] to v[(i+1)%3]
@@ -105,6 +111,12 @@ enum t_edge_source { T_EDGES_SET, T_EDGES_FROM_DATA, T_EDGES_CLEAR };
  * flags. */
 void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                  unsigned n, struct t_vertex *out, enum t_edge_source edges);
+/* Whether some vertex of in[first, first + n) is outside the view volume
+ * or a user plane: the clip codes t_transform gives them, or'ed, from the
+ * same arithmetic (the raster path's choice for a segment of a batch
+ * that is transformed window by window later). */
+bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
+                      unsigned first, unsigned n);
 
 /* Lighting (t_light.c): see tnl/t_light.h. */
 

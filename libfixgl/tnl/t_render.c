@@ -38,12 +38,24 @@
 
 #define SEGMENT_SIZE 4096
 
+/* A batch of triangles, strips, quads and quad strips of more than
+ * 2 * LAZY_WINDOW vertices, not indexed, is transformed LAZY_WINDOW
+ * vertices at a time as its primitives reach them (need_prim) rather
+ * than all at once before drawing: the window's transformed vertices
+ * (60 KiB) stay in the cache from the vertex stage to the triangle
+ * setup, where the whole batch's (up to 65535 of 320 bytes) went to
+ * memory and back.  The clip codes that choose each vsplit segment's
+ * path come from a pass over the segment's positions first
+ * (t_clip_masks_any, the same arithmetic).  A multiple of 3 and 4. */
+#define LAZY_WINDOW 192
+
 /* A draw whose vertices are fetched window by window (t_render_source):
  * vertices [first, first + n) of the draw are in[] and, transformed, tv[];
  * vertex 0 is v0 as well (the first vertex of fans, polygons and loops,
  * which every segment uses). */
 struct render_window {
-   const struct t_vertex_source *src;
+   const struct t_vertex_source *src;   /* NULL: a lazy batch (view) */
+   const struct fgl_vertex_view *view;  /* a lazy batch's stored vertices */
    enum t_edge_source edges;
    unsigned count;               /* vertices of the draw */
    unsigned first, n;
@@ -89,11 +101,28 @@ static inline const struct t_vertex *vtx(const struct render *r, unsigned i)
 static void need(const struct render *r, unsigned start, unsigned count)
 {
    struct render_window *w = r->win;
-   if (!w || w->src->uniform || (start >= w->first && start - w->first + count <= w->n))
+   if (!w || w->view || w->src->uniform ||
+       (start >= w->first && start - w->first + count <= w->n))
       return;
    const unsigned n = w->count - start < SEGMENT_SIZE ? w->count - start : SEGMENT_SIZE;
    w->src->fetch(w->src->ud, start, n, w->in);
    const struct fgl_vertex_view view = fgl_vertex_view_full(w->in);
+   t_transform(r->ctx, &view, n, w->tv, w->edges);
+   w->first = start;
+   w->n = n;
+}
+
+/* A lazy batch (LAZY_WINDOW): vertices [start, start + count) of a
+ * primitive ending at `end` transformed, the window moved to start when
+ * they are not all in it. */
+static inline void need_prim(const struct render *r, unsigned start, unsigned count,
+                             unsigned end)
+{
+   struct render_window *w = r->win;
+   if (!w || !w->view || (start >= w->first && start - w->first + count <= w->n))
+      return;
+   const unsigned n = end - start < LAZY_WINDOW ? end - start : LAZY_WINDOW;
+   const struct fgl_vertex_view view = fgl_vv_from(w->view, start);
    t_transform(r->ctx, &view, n, w->tv, w->edges);
    w->first = start;
    w->n = n;
@@ -151,6 +180,8 @@ static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned 
 /* Vertices [start, start+count) of a segment need the draw pipeline. */
 static bool segment_clipped(const struct render *r, unsigned start, unsigned count)
 {
+   if (r->win && r->win->view)
+      return t_clip_masks_any(r->ctx, r->win->view, start, count);
    unsigned m = 0;
    for (unsigned i = start; i < start + count; i++)
       m |= vtx(r, i)->mask;
@@ -174,8 +205,10 @@ static void render_triangles(const struct render *r, unsigned s, unsigned n)
       const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
       need(r, s + seg, cnt);
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
-      for (unsigned i = seg; i < seg + cnt; i += 3)
+      for (unsigned i = seg; i < seg + cnt; i += 3) {
+         need_prim(r, s + i, 3, s + n);
          tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
+      }
    }
 }
 
@@ -188,6 +221,7 @@ static void render_triangle_strip(const struct render *r, unsigned s, unsigned n
       need(r, s + seg, cnt);
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
       for (unsigned i = seg; i + 2 < seg + cnt; i++) {
+         need_prim(r, s + i, 3, s + n);
          if (i & 1)
             tri(r, s + i + 1, s + i, s + i + 2, pipeline, TRI_FLAGS);
          else
@@ -253,6 +287,7 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
        * vertices through it (draw_pt_emit.c) */
       const bool split13 = constant_interp || pipeline || indexed;
       for (unsigned i = start + seg; i < start + seg + n; i += 4) {
+         need_prim(r, i, 4, start + count);
          /* [S: draw_decompose_tmp.h PIPE_PRIM_QUADS, last vertex
           * provoking] edges 0->1, 3->0, then 1->2, 2->3 */
          if (split13) {
@@ -277,6 +312,7 @@ static void render_quad_strip(const struct render *r, unsigned start, unsigned c
       need(r, start + seg, n);
       const bool pipeline = segment_pipeline(r, start + seg, n);
       for (unsigned k = start + seg; k + 3 < start + seg + n; k += 2) {
+         need_prim(r, k, 4, start + count);
          /* [S: draw_decompose_tmp.h PIPE_PRIM_QUAD_STRIP, last vertex
           * provoking] edges k+2->k, k+3->k+2, then k->k+1, k+1->k+3 */
          if (pipeline) {
@@ -385,17 +421,26 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
       ctx->DrawBuffer->ColorDefined = true;
    fgl_update_stipple(ctx);
 
+   /* LAZY_WINDOW: a batch of triangles and quads, in strips or not,
+    * transformed window by window */
+   bool lazy = !src && !elts && nverts > 2 * LAZY_WINDOW;
+   for (unsigned i = 0; lazy && i < nprims; i++)
+      lazy = prims[i].mode == GL_TRIANGLES || prims[i].mode == GL_TRIANGLE_STRIP ||
+             prims[i].mode == GL_QUADS || prims[i].mode == GL_QUAD_STRIP;
+
    /* the transformed vertices: the context's scratch array, no
     * allocation per batch */
-   struct t_vertex *tv = fgl_vbo_scratch(ctx->Vbo.tv, &ctx->Vbo.tv_alloc,
-                                         src ? SEGMENT_SIZE : nverts, sizeof(*tv));
+   struct t_vertex *tv = fgl_vbo_scratch_lines(ctx->Vbo.tv, &ctx->Vbo.tv_alloc,
+                                               src ? SEGMENT_SIZE : lazy ? LAZY_WINDOW : nverts,
+                                               sizeof(*tv));
    if (!tv) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
    ctx->Vbo.tv = tv;
    /* a windowed draw's fetched vertices: the array draws' scratch */
-   struct render_window win = { .src = src, .count = nverts, .tv = tv };
+   struct render_window win = { .src = src, .view = lazy ? verts : NULL, .count = nverts,
+                                .tv = tv };
    if (src) {
       win.in = fgl_vbo_scratch(ctx->Vbo.array_verts, &ctx->Vbo.array_alloc, SEGMENT_SIZE,
                                sizeof(*win.in));
@@ -444,6 +489,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
       src->fetch(src->ud, 0, 1, win.in);
       const struct fgl_vertex_view view0 = fgl_vertex_view_full(win.in);
       t_transform(ctx, &view0, 1, &win.v0, edges);
+   } else if (lazy) {
+      win.edges = edges;   /* need_prim transforms the windows */
    } else {
       t_transform(ctx, verts, nverts, tv, edges);
    }
@@ -464,7 +511,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   const struct render r = { ctx, src ? &win : NULL, tv, verts, elts, phong_mats };
+   const struct render r = { ctx, src || lazy ? &win : NULL, tv, verts, elts, phong_mats };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program

@@ -90,6 +90,23 @@ void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
    return p;
 }
 
+void *fgl_vbo_scratch_lines(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
+{
+   if (buf && n <= *alloc)
+      return buf;
+   size_t want = *alloc ? *alloc : 256;
+   while (want < n)
+      want *= 2;
+   if (want > FGL_VBO_SCRATCH_MAX_BYTES / elem_size)
+      return NULL;
+   void *p = fgl_aligned_alloc(64, want * elem_size);
+   if (!p)
+      return NULL;
+   fgl_free(buf);
+   *alloc = (unsigned)want;
+   return p;
+}
+
 /* vbo_compute_max_verts: room left in the buffer, less one vertex kept for
  * the GL_LINE_LOOP -> GL_LINE_STRIP conversion. */
 static unsigned compute_max_verts(const struct fgl_vbo *vbo)

@@ -200,6 +200,11 @@ bool fgl_vbo_init(struct fgl_vbo *vbo);
  * least n (*alloc updated): the array to use from now on, or NULL when out
  * of memory (buf is then still the caller's). */
 void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
+/* The same for an array whose elements start on cache lines (elem_size a
+ * multiple of 64, the array 64-byte aligned): the transformed vertices,
+ * so that the hot fields of one vertex share one line.  The contents are
+ * not kept when it grows (buf is then freed). */
+void *fgl_vbo_scratch_lines(void *buf, unsigned *alloc, unsigned n, size_t elem_size);
 /* The most elements a scratch array keeps after a draw: enough for any
  * immediate-mode batch (the 512 KiB buffer holds at most 65535 vertices);
  * a larger one (a long array draw or display list) is freed after its

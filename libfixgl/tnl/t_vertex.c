@@ -86,6 +86,20 @@ static inline void transform_positions(const struct fgl_context *ctx,
    }
 }
 
+bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
+                      unsigned first, unsigned n)
+{
+   const float *m = ctx->_ModelProjectMatrix.m;
+   const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
+   for (unsigned i = first; i < first + n; i++) {
+      float clip[4];
+      t_mul_mad_chain(clip, m, fgl_vv_attr(in, i, FGL_ATTR_POS));
+      if (t_clip_mask(clip) || (planes && user_clip_mask(ctx, clip)))
+         return true;
+   }
+   return false;
+}
+
 /* Whether the vertex program computed the whole eye position (the
  * column MUL/MAD chain, get_eye_position) before the point size: for the
  * lighting, radial fog, or the texture coordinates of a unit the
