@@ -745,10 +745,9 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
    case GL_RENDERER:
       return (const GLubyte *)"fixgl CPU rasterizer (OpenGL 1.x fixed function)";
    case GL_VERSION:
-      /* The GL 1.1 entry points and state are all there; of later versions
-       * what the extension list names (a version number above 1.1 would
-       * promise 3D and cube-map textures, which fixgl does not have) */
-      return (const GLubyte *)"1.1 fixgl " FIXGL_VERSION_STRING;
+      /* GL 1.5: every entry point of GL 1.2-1.5 (api/glext_exports), and
+       * no enum of a later version (api/enum_honesty) */
+      return (const GLubyte *)"1.5 fixgl " FIXGL_VERSION_STRING;
    case GL_EXTENSIONS:
       /* Exactly the extensions fixgl implements, each with its enums and
        * entry points (the suffixed ones through OSMesaGetProcAddress);
@@ -778,6 +777,11 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   ARB_multisample        glSampleCoverage and its state (no samples)
        *   ARB/EXT_point_parameters glPointParameter
        *   ARB_point_sprite       GL_POINT_SPRITE, GL_COORD_REPLACE
+       *   ARB_depth_texture, ARB_shadow GL_DEPTH_COMPONENT16/24/32 images,
+       *                          GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_*
+       *   ARB_texture_compression glCompressedTex*ARB, the generic formats
+       *   ARB_texture_cube_map   GL_TEXTURE_CUBE_MAP, GL_REFLECTION_MAP,
+       *                          GL_NORMAL_MAP
        *   EXT_texture3D          glTexImage3DEXT, glTexSubImage3DEXT,
        *                          glCopyTexSubImage3DEXT (GL 1.2's 3D textures)
        *   ARB_transpose_matrix   glLoad/MultTransposeMatrix
@@ -806,7 +810,8 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "
                               "GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
                               "GL_ATI_texture_env_combine3 GL_ATI_texture_mirror_once "
-                              "GL_ARB_multisample GL_ARB_point_parameters GL_ARB_point_sprite "
+                              "GL_ARB_depth_texture GL_ARB_multisample GL_ARB_point_parameters GL_ARB_point_sprite "
+                              "GL_ARB_shadow GL_ARB_texture_compression GL_ARB_texture_cube_map "
                               "GL_ARB_transpose_matrix "
                               "GL_EXT_blend_equation_separate GL_EXT_blend_func_separate "
                               "GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_point_parameters "

@@ -109,8 +109,8 @@ GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img);
  * replacing level `level` of t by img (NULL: none) */
 struct fgl_texture_object *fgl_tex_target_object(struct fgl_context *ctx, GLenum target);
 int fgl_tex_max_levels(GLenum target);
-bool fgl_tex_legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
-                              GLint border);
+bool fgl_tex_legal_dimensions(GLenum target, GLuint dims, GLint level, GLint w, GLint h,
+                              GLint d, GLint border);
 struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
                                                        GLenum base);
 void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,

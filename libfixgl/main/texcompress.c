@@ -120,7 +120,7 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
       return;
    /* sizes beyond the limits: a proxy is cleared, without an error
     * (measured: a 32768-wide proxy with its right imageSize) */
-   const bool dims_ok = fgl_tex_legal_dimensions(dims, level, width, height, depth, border);
+   const bool dims_ok = fgl_tex_legal_dimensions(target, dims, level, width, height, depth, border);
    GLenum base;
    fgl_s3tc_block_bytes(internal, &base);
    struct fgl_texture_object *t = fgl_tex_target_object(ctx, target);

@@ -158,10 +158,18 @@ static const struct tex_format tex_formats[] = {
    { GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, &PF_Z16 },
    { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, &PF_Z24 },
    { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, &PF_Z32 },
-   /* the generic compressed formats llvmpipe stores uncompressed (the
-    * others it compresses: not modelled yet) */
+   /* the generic compressed formats (GL 1.3): llvmpipe stores these two
+    * uncompressed; the other four it compresses with its own encoder
+    * (LATC1, LATC2, DXT1, DXT5), which fixgl does not model: it stores
+    * them uncompressed, as GL 1.3 allows (an implementation may choose
+    * an uncompressed internal format), so their texels are the
+    * application's, not the oracle's lossy ones (README status, issue 19) */
    { GL_COMPRESSED_ALPHA, GL_ALPHA, &PF_A8 },
    { GL_COMPRESSED_INTENSITY, GL_INTENSITY, &PF_I8 },
+   { GL_COMPRESSED_LUMINANCE, GL_LUMINANCE, &PF_L8 },
+   { GL_COMPRESSED_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, &PF_L8A8 },
+   { GL_COMPRESSED_RGB, GL_RGB, &PF_RGBX8 },
+   { GL_COMPRESSED_RGBA, GL_RGBA, &PF_RGBA8 },
 };
 
 /* [S: util/format/u_format.c:util_format_fits_8unorm; llvmpipe's
@@ -840,7 +848,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
       }
       if (img->ZValues) {
          fgl_tex_gen_mip_depth(src, img);   /* a depth texture: main/texdepth.c */
-         set_image(t, l, img);
+         set_image(t, face, l, img);
          continue;
       }
       if (!fgl_tex_image_fits_unorm8(base) && D == 1) {
@@ -1697,10 +1705,10 @@ int fgl_tex_max_levels(GLenum target)
    return max_levels(target);
 }
 
-bool fgl_tex_legal_dimensions(GLuint dims, GLint level, GLint w, GLint h, GLint d,
-                              GLint border)
+bool fgl_tex_legal_dimensions(GLenum target, GLuint dims, GLint level, GLint w, GLint h,
+                              GLint d, GLint border)
 {
-   return legal_dimensions(dims, level, w, h, d, border);
+   return legal_dimensions(target, dims, level, w, h, d, border);
 }
 
 struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
