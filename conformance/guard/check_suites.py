@@ -30,8 +30,9 @@ FEATURES = ("conformance", "viewer", "glx")
 
 # What each option, when enabled, must put into `meson test`.
 REQUIRED = {
-    None: {"suites": {"unit", "api", "threads", "guard", "robust"},
-           "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws"}},
+    None: {"suites": {"unit", "api", "threads", "guard", "robust", "packaging"},
+           "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws",
+                     "cli-options", "packaging-subproject"}},
     "conformance": {
         "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle",
                    "fuzz", "glu"},
@@ -41,14 +42,15 @@ REQUIRED = {
                   "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
                   "fuzz-differential-short", "glu-quadric-textured", "glu-mipmap2d-rgb",
                   "glu-scale-image", "glu-tess-winding", "glu-nurbs-trim", "glu-gl-errors",
-                  "glu-scene-list"},
+                  "glu-scene-list", "driver-stdout"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},
         "tests": {"glut-lit", "glut-menus", "glut-text", "glut-api", "glut-window",
                   "glut-freeglut", "glut-freeglut-demo", "glut-glu", "glut-light",
                   "glut-cylinder-vs-freeglut",
-                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat"},
+                  "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat",
+                  "packaging-consumers"},
     },
     "glx": {
         "suites": {"glx"},
