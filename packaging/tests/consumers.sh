@@ -80,7 +80,14 @@ if [[ $mode == subproject ]]; then
   exit
 fi
 
-build=$3 prefix=$4 libdir=$5 datadir=$6
+build=$3 prefix=$4 libdir=$5 datadir=$6 sanitize=${7:-none}
+# a sanitized build's libraries need the consumers built with its runtime
+san_flags=() meson_san=() cmake_san=()
+if [[ $sanitize != none ]]; then
+  san_flags=("-fsanitize=$sanitize")
+  meson_san=("-Db_sanitize=$sanitize")
+  cmake_san=("-DCMAKE_C_FLAGS=-fsanitize=$sanitize")
+fi
 root=$tmp/root
 [[ $libdir == /* ]] || libdir=$prefix/$libdir
 [[ $datadir == /* ]] || datadir=$prefix/$datadir
@@ -106,8 +113,10 @@ export PKG_CONFIG_SYSROOT_DIR=$root PKG_CONFIG_PATH=$lib/pkgconfig
 cons=$src/packaging/tests/consumer
 mkdir -p "$tmp/pc"
 # shellcheck disable=SC2046
-if cc -std=c11 -Wall -Werror "$cons/triangle.c" -o "$tmp/pc/triangle" $(pkg-config --cflags --libs fixgl) \
-   && cc -std=c11 -Wall -Werror "$cons/glut_triangle.c" -o "$tmp/pc/glut-triangle" $(pkg-config --cflags --libs fixglut); then
+if cc -std=c11 -Wall -Werror "${san_flags[@]}" "$cons/triangle.c" -o "$tmp/pc/triangle" \
+     $(pkg-config --cflags --libs fixgl) \
+   && cc -std=c11 -Wall -Werror "${san_flags[@]}" "$cons/glut_triangle.c" -o "$tmp/pc/glut-triangle" \
+     $(pkg-config --cflags --libs fixglut); then
   check_triangle "pkg-config" "$tmp/pc/triangle"
   check_glut "pkg-config" "$tmp/pc/glut-triangle"
 else
@@ -116,7 +125,7 @@ fi
 
 # 2. a meson project
 cp -r "$cons" "$tmp/meson-src"
-if meson setup "$tmp/meson-build" "$tmp/meson-src" >"$tmp/meson.log" 2>&1 \
+if meson setup "${meson_san[@]}" "$tmp/meson-build" "$tmp/meson-src" >"$tmp/meson.log" 2>&1 \
    && ninja -C "$tmp/meson-build" >>"$tmp/meson.log" 2>&1; then
   check_triangle "meson" "$tmp/meson-build/triangle"
   check_glut "meson" "$tmp/meson-build/glut-triangle"
@@ -129,7 +138,7 @@ unset PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_PATH
 mv "$root" "$tmp/moved"
 root=$tmp/moved lib=$tmp/moved$libdir
 export LD_LIBRARY_PATH=$lib
-if cmake -S "$cons" -B "$tmp/cmake-build" -G Ninja -DCMAKE_PREFIX_PATH="$root$prefix" \
+if cmake -S "$cons" -B "$tmp/cmake-build" -G Ninja -DCMAKE_PREFIX_PATH="$root$prefix" "${cmake_san[@]}" \
      >"$tmp/cmake.log" 2>&1 && cmake --build "$tmp/cmake-build" >>"$tmp/cmake.log" 2>&1; then
   check_triangle "cmake" "$tmp/cmake-build/triangle"
   check_glut "cmake" "$tmp/cmake-build/glut-triangle"
