@@ -12,6 +12,9 @@
 #include "fz_exec.h"
 #include "fz_gen.h"
 
+#include <fixgl/version.h>
+
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +23,13 @@
 /* the entry points an executor lacks, one flag each (file scope: it lives
  * as long as the process, on every return path) */
 static uint8_t *missing;
+
+#ifdef FC_ORACLE
+#define FZ_EXEC_NAME "fixgl-fuzz-exec-osmesa"
+#else
+#define FZ_EXEC_NAME "fixgl-fuzz-exec-fixgl"
+#endif
+#define FZ_EXEC_USAGE "usage: %s --missing | --version | STREAM RESULT [SECONDS]\n"
 
 int main(int argc, char **argv)
 {
@@ -37,17 +47,34 @@ int main(int argc, char **argv)
         fprintf(stderr, "fuzz-exec: cannot map the arenas\n");
         return 3;
     }
-    if (argc == 2 && strcmp(argv[1], "--missing") == 0) {
+    static const struct option longopts[] = {
+        { "missing", no_argument, NULL, 'm' },
+        { "version", no_argument, NULL, 'V' },
+        { "help", no_argument, NULL, 'h' },
+        { NULL, 0, NULL, 0 },
+    };
+    int ch, list_missing = 0, bad = 0;
+    while ((ch = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+        switch (ch) {
+        case 'm': list_missing = 1; break;
+        case 'V': puts(FIXGL_VERSION_BANNER(FZ_EXEC_NAME)); return 0;
+        case 'h': printf(FZ_EXEC_USAGE, argv[0]); return 0;
+        default: bad = 1; break;
+        }
+    }
+    const int nargs = argc - optind;
+    if (list_missing && !bad && nargs == 0) {
         for (size_t i = 0; i < fz_table_count; i++)
             if (missing[i])
                 printf("%s\n", fz_table[i].name);
         return 0;
     }
-    if (argc < 3 || argc > 4) {
-        fprintf(stderr, "usage: %s --missing | STREAM RESULT [SECONDS]\n", argv[0]);
+    if (bad || list_missing || nargs < 2 || nargs > 3) {
+        fprintf(stderr, FZ_EXEC_USAGE, argv[0]);
         return 2;
     }
-    alarm(argc == 4 ? (unsigned)atoi(argv[3]) : 10u);
+    argv += optind - 1;   /* argv[1] STREAM, argv[2] RESULT, argv[3] SECONDS */
+    alarm(nargs == 3 ? (unsigned)atoi(argv[3]) : 10u);
     if (!(calls = fz_read_stream(argv[1], &n))) {
         fprintf(stderr, "fuzz-exec: cannot read %s\n", argv[1]);
         return 2;

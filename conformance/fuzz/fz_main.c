@@ -29,6 +29,7 @@
 #include <fcntl.h>
 #include <fnmatch.h>
 #include <getopt.h>
+#include <fixgl/version.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -501,7 +502,9 @@ static void usage(FILE *f, const char *argv0)
         "          [--timeout T] [--out DIR] [--known FILE] [--no-reduce]\n"
         "          [--fixgl EXEC] [--oracle EXEC]\n"
         "       %s --print SEED [--calls L]\n"
-        "       %s --write-stream FILE --seed S [--calls L]\n", argv0, argv0, argv0);
+        "       %s --write-stream FILE --seed S [--calls L]\n"
+        "       %s --version | --help\n"
+        "Every option also as --opt=value.\n", argv0, argv0, argv0, argv0);
 }
 
 /* the entry points an executor lacks, one flag each (file scope: it lives
@@ -517,7 +520,8 @@ int main(int argc, char **argv)
         { "out", required_argument, NULL, 'o' }, { "known", required_argument, NULL, 'k' },
         { "no-reduce", no_argument, NULL, 'R' }, { "fixgl", required_argument, NULL, 'F' },
         { "oracle", required_argument, NULL, 'O' }, { "print", required_argument, NULL, 'p' },
-        { "write-stream", required_argument, NULL, 'w' }, { "help", no_argument, NULL, 'h' }, { NULL, 0, NULL, 0 } };
+        { "write-stream", required_argument, NULL, 'w' }, { "help", no_argument, NULL, 'h' },
+        { "version", no_argument, NULL, 'V' }, { NULL, 0, NULL, 0 } };
     double seconds = 60;
     unsigned long long seed = 1, max_streams = 0, print_seed = 0;
     int print = 0, ch;
@@ -545,6 +549,7 @@ int main(int argc, char **argv)
         case 'p': print = 1; print_seed = strtoull(optarg, NULL, 10); break;
         case 'w': print = 2; stream_file = optarg; break;
         case 'h': usage(stdout, argv[0]); return 0;
+        case 'V': puts(FIXGL_VERSION_BANNER("fixgl-fuzz")); return 0;
         default: usage(stderr, argv[0]); return 2;
         }
     }

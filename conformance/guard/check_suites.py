@@ -30,8 +30,9 @@ FEATURES = ("conformance", "viewer", "glx")
 
 # What each option, when enabled, must put into `meson test`.
 REQUIRED = {
-    None: {"suites": {"unit", "api", "threads", "guard", "robust"},
-           "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws"}},
+    None: {"suites": {"unit", "api", "threads", "guard", "robust", "packaging"},
+           "tests": {"exports", "osmesa_api", "alloc-fail", "alloc-routing", "huge-draws",
+                     "cli-options", "packaging-subproject"}},
     "conformance": {
         "suites": {"conformance", "conformance-reference", "conformance-threads", "probes", "oracle",
                    "fuzz", "glu"},
@@ -41,7 +42,7 @@ REQUIRED = {
                   "dropin", "osmesa_api_vs_mesa", "threads (oracle)",
                   "fuzz-differential-short", "glu-quadric-textured", "glu-mipmap2d-rgb",
                   "glu-scale-image", "glu-tess-winding", "glu-nurbs-trim", "glu-gl-errors",
-                  "glu-scene-list", "conform-report"},
+                  "glu-scene-list", "conform-report", "driver-stdout"},
     },
     "viewer": {
         "suites": {"glut", "viewer"},
@@ -50,7 +51,8 @@ REQUIRED = {
                   "glut-cylinder-vs-freeglut",
                   "view-window", "view-window-split", "view-window-keys", "view-sphere-ply-flat",
                   "view-window-textured", "view-globe-obj-flat-normals-file",
-                  "view-colors-ply-smooth-normals-file", "view-bad-models", "view-progress"},
+                  "view-colors-ply-smooth-normals-file", "view-bad-models", "view-progress",
+                  "packaging-consumers"},
     },
     "glx": {
         "suites": {"glx"},

@@ -33,6 +33,9 @@
 #include "fc_random.h"
 #include "fc_record.h"
 
+#include <fixgl/version.h>
+
+#include <getopt.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -67,6 +70,15 @@ static int list_cases(void)
 static const fc_case *find_case(const char *name, fc_case *scratch, char *namebuf);
 
 /* --list-random: name, tags and tolerance of count scenes of family. */
+#ifdef FC_ORACLE
+#define RENDERER_NAME "fixgl-render-osmesa"
+#else
+#define RENDERER_NAME "fixgl-render-fixgl"
+#endif
+#define RENDER_USAGE \
+    "usage: %s --list | --list-random FAMILY SEED INDEX COUNT | --version |\n" \
+    "       [--perturb] [--crash=NAME] --out FILE CASE...   (--opt=value as well)\n"
+
 static int list_random(const char *family, const char *seed, const char *index, const char *count)
 {
     const unsigned long long first = strtoull(index, NULL, 10);
@@ -151,22 +163,38 @@ int main(int argc, char **argv)
     int perturb = 0, first = 1;
     FILE *out;
 
-    if (argc == 2 && strcmp(argv[1], "--list") == 0)
-        return list_cases();
-    if (argc == 6 && strcmp(argv[1], "--list-random") == 0)
-        return list_random(argv[2], argv[3], argv[4], argv[5]);
-    for (; first < argc && argv[first][0] == '-'; first++) {
-        if (strcmp(argv[first], "--perturb") == 0)
-            perturb = 1;
-        else if (strncmp(argv[first], "--crash=", 8) == 0)
-            crash = argv[first] + 8;
-        else if (strcmp(argv[first], "--out") == 0 && first + 1 < argc)
-            out_path = argv[++first];
-        else
-            break;
+    enum { OPT_LIST = 256, OPT_LIST_RANDOM, OPT_PERTURB, OPT_CRASH, OPT_OUT, OPT_VERSION };
+    static const struct option longopts[] = {
+        { "list", no_argument, NULL, OPT_LIST },
+        { "list-random", no_argument, NULL, OPT_LIST_RANDOM },
+        { "perturb", no_argument, NULL, OPT_PERTURB },
+        { "crash", required_argument, NULL, OPT_CRASH },
+        { "out", required_argument, NULL, OPT_OUT },
+        { "version", no_argument, NULL, OPT_VERSION },
+        { "help", no_argument, NULL, 'h' },
+        { NULL, 0, NULL, 0 },
+    };
+    int list = 0, list_rnd = 0, bad = 0, ch;
+    opterr = 0;
+    while ((ch = getopt_long(argc, argv, "+h", longopts, NULL)) != -1) {
+        switch (ch) {
+        case OPT_LIST: list = 1; break;
+        case OPT_LIST_RANDOM: list_rnd = 1; break;
+        case OPT_PERTURB: perturb = 1; break;
+        case OPT_CRASH: crash = optarg; break;
+        case OPT_OUT: out_path = optarg; break;
+        case OPT_VERSION: puts(FIXGL_VERSION_BANNER(RENDERER_NAME)); return 0;
+        case 'h': printf(RENDER_USAGE, argv[0]); return 0;
+        default: bad = 1; break;
+        }
     }
-    if (!out_path || (first < argc && argv[first][0] == '-')) {
-        fprintf(stderr, "usage: %s --list | [--perturb] [--crash=NAME] --out FILE CASE...\n", argv[0]);
+    first = optind;
+    if (list && first == argc && !list_rnd && !bad)
+        return list_cases();
+    if (list_rnd && argc - first == 4 && !list && !bad)
+        return list_random(argv[first], argv[first + 1], argv[first + 2], argv[first + 3]);
+    if (!out_path || list || list_rnd || bad) {
+        fprintf(stderr, RENDER_USAGE, argv[0]);
         return 2;
     }
 #ifdef FC_ORACLE

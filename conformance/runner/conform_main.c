@@ -9,7 +9,10 @@
 #include "fc_report.h"
 #include "fc_run.h"
 
+#include <fixgl/version.h>
+
 #include <fnmatch.h>
+#include <getopt.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -120,7 +123,9 @@ static void usage(FILE *f)
         "  --fixgl-arg ARG      extra argument for the fixgl renderer (test-only, e.g. --perturb)\n"
         "  --list               print the selected cases and exit\n"
         "  --known FILE         cases listed in FILE are known differences: still reported,\n"
-        "                       but only other differences (or a listed case now exact) fail\n",
+        "                       but only other differences (or a listed case now exact) fail\n"
+        "  --version            the versions of fixgl and of the oracle, Mesa\n"
+        "Every option also as --opt=value.\n",
         FC_DEFAULT_REPORT, FC_DEFAULT_ORACLE, FC_DEFAULT_FIXGL);
 }
 
@@ -135,30 +140,70 @@ static int parse_args(int argc, char **argv, struct options *o)
     o->renderer[FC_ORACLE] = FC_DEFAULT_ORACLE;
     o->renderer[FC_FIXGL] = FC_DEFAULT_FIXGL;
     o->jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = 1;
-        if (strcmp(a, "--no-random") == 0) { o->random = 0; explicit_random = 1; takes = 0; }
-        else if (strcmp(a, "--list") == 0) { o->list_only = 1; takes = 0; }
-        else if (strcmp(a, "--help") == 0) { usage(stdout); exit(0); }
-        else if (!v) { fprintf(stderr, "fixgl-conform: %s needs a value\n", a); return 0; }
-        else if (strcmp(a, "--tag") == 0 && o->ntags < MAX_FILTERS) o->tags[o->ntags++] = v;
-        else if (strcmp(a, "--case") == 0 && o->nglobs < MAX_FILTERS) o->globs[o->nglobs++] = v;
-        else if (strcmp(a, "--random") == 0) { o->random = strtol(v, NULL, 10); explicit_random = 1; }
-        else if (strcmp(a, "--random-lit") == 0) { o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; }
-        else if (strcmp(a, "--random-raster") == 0) { o->random_raster = strtol(v, NULL, 10); explicit_lit = 1; }
-        else if (strcmp(a, "--random-tex") == 0) { o->random_tex = strtol(v, NULL, 10); explicit_lit = 1; }
-        else if (strcmp(a, "--random-shading") == 0) { o->random_shading = strtol(v, NULL, 10); explicit_lit = 1; }
-        else if (strcmp(a, "--seed") == 0) o->seed = strtoull(v, NULL, 10);
-        else if (strcmp(a, "--index") == 0) o->index = strtol(v, NULL, 10);
-        else if (strcmp(a, "--jobs") == 0) o->jobs = atoi(v);
-        else if (strcmp(a, "--report") == 0) o->report = v;
-        else if (strcmp(a, "--oracle-renderer") == 0) o->renderer[FC_ORACLE] = v;
-        else if (strcmp(a, "--fixgl-renderer") == 0) o->renderer[FC_FIXGL] = v;
-        else if (strcmp(a, "--fixgl-arg") == 0) o->fixgl_arg = v;
-        else if (strcmp(a, "--known") == 0) o->known = v;
-        else { fprintf(stderr, "fixgl-conform: unknown option %s\n", a); return 0; }
-        i += takes;
+    enum {
+        OPT_NO_RANDOM = 256, OPT_LIST, OPT_VERSION, OPT_TAG, OPT_CASE, OPT_RANDOM, OPT_RANDOM_LIT,
+        OPT_RANDOM_RASTER, OPT_RANDOM_TEX, OPT_RANDOM_SHADING, OPT_SEED, OPT_INDEX, OPT_JOBS,
+        OPT_REPORT, OPT_ORACLE_RENDERER, OPT_FIXGL_RENDERER, OPT_FIXGL_ARG, OPT_KNOWN,
+    };
+    static const struct option longopts[] = {
+        { "help", no_argument, NULL, 'h' },
+        { "version", no_argument, NULL, OPT_VERSION },
+        { "no-random", no_argument, NULL, OPT_NO_RANDOM },
+        { "list", no_argument, NULL, OPT_LIST },
+        { "tag", required_argument, NULL, OPT_TAG },
+        { "case", required_argument, NULL, OPT_CASE },
+        { "random", required_argument, NULL, OPT_RANDOM },
+        { "random-lit", required_argument, NULL, OPT_RANDOM_LIT },
+        { "random-raster", required_argument, NULL, OPT_RANDOM_RASTER },
+        { "random-tex", required_argument, NULL, OPT_RANDOM_TEX },
+        { "random-shading", required_argument, NULL, OPT_RANDOM_SHADING },
+        { "seed", required_argument, NULL, OPT_SEED },
+        { "index", required_argument, NULL, OPT_INDEX },
+        { "jobs", required_argument, NULL, OPT_JOBS },
+        { "report", required_argument, NULL, OPT_REPORT },
+        { "oracle-renderer", required_argument, NULL, OPT_ORACLE_RENDERER },
+        { "fixgl-renderer", required_argument, NULL, OPT_FIXGL_RENDERER },
+        { "fixgl-arg", required_argument, NULL, OPT_FIXGL_ARG },
+        { "known", required_argument, NULL, OPT_KNOWN },
+        { NULL, 0, NULL, 0 },
+    };
+    int ch;
+    opterr = 0;
+    while ((ch = getopt_long(argc, argv, ":h", longopts, NULL)) != -1) {
+        const char *v = optarg;
+        switch (ch) {
+        case 'h': usage(stdout); exit(0);
+        case OPT_VERSION: puts(FIXGL_VERSION_BANNER("fixgl-conform")); exit(0);
+        case OPT_NO_RANDOM: o->random = 0; explicit_random = 1; break;
+        case OPT_LIST: o->list_only = 1; break;
+        case OPT_TAG:
+            if (o->ntags >= MAX_FILTERS) { fprintf(stderr, "fixgl-conform: more than %d --tag\n", MAX_FILTERS); return 0; }
+            o->tags[o->ntags++] = v;
+            break;
+        case OPT_CASE:
+            if (o->nglobs >= MAX_FILTERS) { fprintf(stderr, "fixgl-conform: more than %d --case\n", MAX_FILTERS); return 0; }
+            o->globs[o->nglobs++] = v;
+            break;
+        case OPT_RANDOM: o->random = strtol(v, NULL, 10); explicit_random = 1; break;
+        case OPT_RANDOM_LIT: o->random_lit = strtol(v, NULL, 10); explicit_lit = 1; break;
+        case OPT_RANDOM_RASTER: o->random_raster = strtol(v, NULL, 10); explicit_lit = 1; break;
+        case OPT_RANDOM_TEX: o->random_tex = strtol(v, NULL, 10); explicit_lit = 1; break;
+        case OPT_RANDOM_SHADING: o->random_shading = strtol(v, NULL, 10); explicit_lit = 1; break;
+        case OPT_SEED: o->seed = strtoull(v, NULL, 10); break;
+        case OPT_INDEX: o->index = strtol(v, NULL, 10); break;
+        case OPT_JOBS: o->jobs = atoi(v); break;
+        case OPT_REPORT: o->report = v; break;
+        case OPT_ORACLE_RENDERER: o->renderer[FC_ORACLE] = v; break;
+        case OPT_FIXGL_RENDERER: o->renderer[FC_FIXGL] = v; break;
+        case OPT_FIXGL_ARG: o->fixgl_arg = v; break;
+        case OPT_KNOWN: o->known = v; break;
+        case ':': fprintf(stderr, "fixgl-conform: %s needs a value\n", argv[optind - 1]); return 0;
+        default: fprintf(stderr, "fixgl-conform: unknown option %s\n", argv[optind - 1]); return 0;
+        }
+    }
+    if (optind < argc) {
+        fprintf(stderr, "fixgl-conform: unexpected argument %s\n", argv[optind]);
+        return 0;
     }
     if (explicit_lit && !explicit_random)
         o->random = 0;

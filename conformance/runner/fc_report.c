@@ -6,6 +6,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <inttypes.h>
+#include <json-c/json.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -406,18 +407,6 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
 
 /* ---- files ------------------------------------------------------------ */
 
-static void json_str(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') fprintf(f, "\\%c", c);
-        else if (c < 0x20) fprintf(f, "\\u%04x", c);
-        else fputc(c, f);
-    }
-    fputc('"', f);
-}
-
 static void html_str(FILE *f, const char *s)
 {
     for (; *s; s++) {
@@ -431,104 +420,129 @@ static void html_str(FILE *f, const char *s)
     }
 }
 
-static void json_tags(FILE *f, const char *tags)
+/* summary.json is built as a json-c tree and written by json-c (escaping
+ * included): one line, ", " and ": " between members (SPACED), slashes
+ * as they are. */
+static void jadd_str(json_object *o, const char *key, const char *s)
 {
-    int first = 1;
-    fputc('[', f);
+    json_object_object_add(o, key, json_object_new_string(s ? s : ""));
+}
+
+static void jadd_int(json_object *o, const char *key, int64_t v)
+{
+    json_object_object_add(o, key, json_object_new_int64(v));
+}
+
+static void jadd_u64(json_object *o, const char *key, uint64_t v)
+{
+    json_object_object_add(o, key, json_object_new_uint64(v));
+}
+
+/* The space-separated tags as a JSON array of strings. */
+static json_object *json_tags(const char *tags)
+{
+    json_object *a = json_object_new_array();
     for (const char *s = tags; *s;) {
         size_t k = strcspn(s, " ");
         if (k) {
             char buf[64];
             snprintf(buf, sizeof buf, "%.*s", (int)(k < 63 ? k : 63), s);
-            fputs(first ? "" : ", ", f);
-            json_str(f, buf);
-            first = 0;
+            json_object_array_add(a, json_object_new_string(buf));
         }
         s += k;
         s += strspn(s, " ");
     }
-    fputc(']', f);
+    return a;
+}
+
+static json_object *json_case(const struct fc_report_entry *e)
+{
+    const struct fc_case_result *c = &e->res;
+    json_object *o = json_object_new_object();
+    jadd_str(o, "name", e->name);
+    json_object_object_add(o, "tags", json_tags(e->tags));
+    jadd_int(o, "frames", c->frames);
+    jadd_u64(o, "pixels", c->pixels);
+    jadd_u64(o, "mismatched_pixels", c->mismatched_pixels);
+    jadd_int(o, "max_channel_diff", c->max_channel_diff);
+    jadd_u64(o, "depth_mismatches", c->depth_mismatches);
+    jadd_int(o, "error_mismatches", c->error_mismatches);
+    jadd_int(o, "query_mismatches", c->query_mismatches);
+    jadd_int(o, "blob_mismatches", c->blob_mismatches);
+    jadd_int(o, "value_mismatches", c->value_mismatches);
+    jadd_int(o, "structure_mismatches", c->structure_mismatches);
+    json_object_object_add(o, "blank", json_object_new_boolean(c->blank));
+    json_object_object_add(o, "blank_allowed", json_object_new_boolean(c->blank_allowed));
+    jadd_str(o, "status", e->status);
+    if (c->tolerance) {
+        jadd_int(o, "tolerance_lsb", c->tolerance);
+        jadd_u64(o, "pixels_at_1", c->pixels_at_1);
+        jadd_u64(o, "pixels_beyond_1", c->mismatched_pixels - c->pixels_at_1);
+        jadd_u64(o, "pixels_beyond_tolerance", c->pixels_beyond);
+    }
+    if (e->replay)
+        jadd_str(o, "replay", e->replay);
+    if (c->ndocumented) {
+        json_object *docs = json_object_new_array();
+        for (int k = 0; k < c->ndocumented; k++) {
+            const struct fc_documented *d = &c->documented[k];
+            json_object *doc = json_object_new_object();
+            jadd_str(doc, "label", d->label);
+            jadd_str(doc, "kind", d->kind);
+            jadd_str(doc, "reason", d->reason);
+            jadd_str(doc, "oracle", d->oracle);
+            jadd_str(doc, "fixgl", d->fixgl);
+            json_object_array_add(docs, doc);
+        }
+        json_object_object_add(o, "documented_differences", docs);
+    }
+    return o;
 }
 
 static int write_json(const struct fc_report *r)
 {
     char *path = path_join(r->dir, "summary.json");
-    FILE *f = fopen(path, "w");
     char oracle[512];
-    free(path);
-    if (!f)
-        return 0;
+    json_object *root = json_object_new_object(), *cases = json_object_new_array();
     snprintf(oracle, sizeof oracle, "%s %s", r->renderer[0] ? r->renderer[0] : "",
              r->version[0] ? r->version[0] : "");
-    fputs("{\n  \"oracle\": ", f); json_str(f, oracle);
-    fputs(",\n  \"oracle_renderer\": ", f); json_str(f, r->renderer[0] ? r->renderer[0] : "");
-    fputs(",\n  \"oracle_version\": ", f); json_str(f, r->version[0] ? r->version[0] : "");
-    fputs(",\n  \"fixgl_renderer\": ", f); json_str(f, r->renderer[1] ? r->renderer[1] : "");
-    fputs(",\n  \"fixgl_version\": ", f); json_str(f, r->version[1] ? r->version[1] : "");
-    fputs(",\n  \"cases\": [", f);
-    for (size_t i = 0; i < r->n; i++) {
-        const struct fc_report_entry *e = r->entries[i];
-        const struct fc_case_result *c = &e->res;
-        fprintf(f, "%s\n    {\"name\": ", i ? "," : "");
-        json_str(f, e->name);
-        fputs(", \"tags\": ", f);
-        json_tags(f, e->tags);
-        fprintf(f, ", \"frames\": %d, \"pixels\": %" PRIu64 ", \"mismatched_pixels\": %" PRIu64
-                ", \"max_channel_diff\": %d, \"depth_mismatches\": %" PRIu64
-                ", \"error_mismatches\": %d, \"query_mismatches\": %d, \"blob_mismatches\": %d"
-                ", \"value_mismatches\": %d, \"structure_mismatches\": %d, \"blank\": %s"
-                ", \"blank_allowed\": %s, \"status\": \"%s\"",
-                c->frames, c->pixels, c->mismatched_pixels, c->max_channel_diff, c->depth_mismatches,
-                c->error_mismatches, c->query_mismatches, c->blob_mismatches, c->value_mismatches,
-                c->structure_mismatches, c->blank ? "true" : "false",
-                c->blank_allowed ? "true" : "false", e->status);
-        if (c->tolerance)
-            fprintf(f, ", \"tolerance_lsb\": %d, \"pixels_at_1\": %" PRIu64 ", \"pixels_beyond_1\": %" PRIu64
-                    ", \"pixels_beyond_tolerance\": %" PRIu64, c->tolerance, c->pixels_at_1,
-                    c->mismatched_pixels - c->pixels_at_1, c->pixels_beyond);
-        if (e->replay) {
-            fputs(", \"replay\": ", f);
-            json_str(f, e->replay);
-        }
-        if (c->ndocumented) {
-            fputs(", \"documented_differences\": [", f);
-            for (int k = 0; k < c->ndocumented; k++) {
-                const struct fc_documented *d = &c->documented[k];
-                fputs(k ? ", {\"label\": " : "{\"label\": ", f);
-                json_str(f, d->label);
-                fputs(", \"kind\": ", f); json_str(f, d->kind);
-                fputs(", \"reason\": ", f); json_str(f, d->reason);
-                fputs(", \"oracle\": ", f); json_str(f, d->oracle);
-                fputs(", \"fixgl\": ", f); json_str(f, d->fixgl);
-                fputc('}', f);
-            }
-            fputc(']', f);
-        }
-        fputc('}', f);
-    }
-    fputs("\n  ]", f);
+    jadd_str(root, "oracle", oracle);
+    jadd_str(root, "oracle_renderer", r->renderer[0]);
+    jadd_str(root, "oracle_version", r->version[0]);
+    jadd_str(root, "fixgl_renderer", r->renderer[1]);
+    jadd_str(root, "fixgl_version", r->version[1]);
+    for (size_t i = 0; i < r->n; i++)
+        json_object_array_add(cases, json_case(r->entries[i]));
+    json_object_object_add(root, "cases", cases);
     {
         struct agreement a[MAX_AGREEMENT];
         size_t na = collect_agreement(r, a, MAX_AGREEMENT);
+        json_object *agreement = json_object_new_object();
         /* per tag of the reference cases: how close fixgl comes to the
          * GLSL reference (max LSB, pixels at 1 LSB and beyond) */
-        fputs(",\n  \"agreement\": {", f);
         for (size_t j = 0; j < na; j++) {
-            fprintf(f, "%s\n    ", j ? "," : "");
-            json_str(f, a[j].tag);
-            fprintf(f, ": {\"cases\": %d, \"bit_exact_cases\": %d, \"agreeing_cases\": %d, "
-                    "\"differing_cases\": %d, \"error_cases\": %d, \"tolerance_lsb\": %d, \"max_lsb\": %d, "
-                    "\"pixels_compared\": %" PRIu64 ", \"pixels_exact\": %" PRIu64 ", \"pixels_at_1_lsb\": %" PRIu64
-                    ", \"pixels_beyond_1_lsb\": %" PRIu64 ", \"pixels_beyond_tolerance\": %" PRIu64
-                    ", \"depth_mismatches\": %" PRIu64 "}",
-                    a[j].cases, a[j].exact, a[j].agrees, a[j].differs, a[j].error, a[j].tolerance,
-                    a[j].max_lsb, a[j].pixels, a[j].pixels - a[j].mismatched, a[j].at_1, a[j].beyond_1,
-                    a[j].beyond_tolerance, a[j].depth_mismatches);
+            json_object *t = json_object_new_object();
+            jadd_int(t, "cases", a[j].cases);
+            jadd_int(t, "bit_exact_cases", a[j].exact);
+            jadd_int(t, "agreeing_cases", a[j].agrees);
+            jadd_int(t, "differing_cases", a[j].differs);
+            jadd_int(t, "error_cases", a[j].error);
+            jadd_int(t, "tolerance_lsb", a[j].tolerance);
+            jadd_int(t, "max_lsb", a[j].max_lsb);
+            jadd_u64(t, "pixels_compared", a[j].pixels);
+            jadd_u64(t, "pixels_exact", a[j].pixels - a[j].mismatched);
+            jadd_u64(t, "pixels_at_1_lsb", a[j].at_1);
+            jadd_u64(t, "pixels_beyond_1_lsb", a[j].beyond_1);
+            jadd_u64(t, "pixels_beyond_tolerance", a[j].beyond_tolerance);
+            jadd_u64(t, "depth_mismatches", a[j].depth_mismatches);
+            json_object_object_add(agreement, a[j].tag, t);
         }
-        fputs(na ? "\n  }" : "}", f);
+        json_object_object_add(root, "agreement", agreement);
     }
-    fputs("\n}\n", f);
-    return fclose(f) == 0;
+    int ok = json_object_to_file_ext(path, root, JSON_C_TO_STRING_SPACED | JSON_C_TO_STRING_NOSLASHESCAPE) == 0;
+    json_object_put(root);
+    free(path);
+    return ok;
 }
 
 static void html_image(FILE *f, const struct fc_report_entry *e, int index, const char *what,

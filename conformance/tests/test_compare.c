@@ -6,6 +6,9 @@
 #include "fc_record.h"
 #include "fc_report.h"
 
+#define FIXGL_TRICKY "fixgl-v \"q\" \\ \t \x01 a/b"
+
+#include <json-c/json.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -436,12 +439,30 @@ int main(int argc, char **argv)
         }
     }
 
-    fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", "fixgl-v");
+    /* a version string that needs escaping: quotes, a backslash, a tab,
+     * a control character, a slash */
+    fc_report_set_renderers(rep, "oracle-r", "oracle-v", "fixgl-r", FIXGL_TRICKY);
     CHECK(fc_report_finish(rep) == 8);      /* + tol_2, tol_0, tol_depth */
     json = slurp(dir, "summary.json");
+    {   /* valid JSON (json-c parses it back) of the same shape */
+        json_object *root = json_tokener_parse(json), *v, *cases, *c0, *tags;
+        CHECK(root != NULL);
+        CHECK(root && json_object_object_get_ex(root, "fixgl_version", &v) &&
+              strcmp(json_object_get_string(v), FIXGL_TRICKY) == 0);
+        CHECK(root && json_object_object_get_ex(root, "cases", &cases) &&
+              json_object_is_type(cases, json_type_array) && json_object_array_length(cases) >= 10);
+        c0 = root && cases ? json_object_array_get_idx(cases, 0) : NULL;
+        CHECK(c0 && json_object_object_get_ex(c0, "name", &v) &&
+              strcmp(json_object_get_string(v), "unit/case") == 0);
+        CHECK(c0 && json_object_object_get_ex(c0, "tags", &tags) && json_object_array_length(tags) == 2);
+        CHECK(c0 && json_object_object_get_ex(c0, "pixels", &v) && json_object_get_int64(v) == 32);
+        CHECK(root && json_object_object_get_ex(root, "agreement", &v) &&
+              json_object_is_type(v, json_type_object));
+        json_object_put(root);
+    }
     html = slurp(dir, "index.html");
     CHECK(strstr(json, "\"oracle\": \"oracle-r oracle-v\"") != NULL);
-    CHECK(strstr(json, "{\"name\": \"unit/case\", \"tags\": [\"unit\", \"core\"], \"frames\": 1, \"pixels\": 32, "
+    CHECK(strstr(json, "{ \"name\": \"unit/case\", \"tags\": [ \"unit\", \"core\" ], \"frames\": 1, \"pixels\": 32, "
                        "\"mismatched_pixels\": 2, \"max_channel_diff\": 200, \"depth_mismatches\": 3, "
                        "\"error_mismatches\": 1") != NULL);
     CHECK(strstr(json, "\"name\": \"unit/same\"") && strstr(json, "\"status\": \"exact\", \"replay\": \"--seed 3 --index 4\""));
@@ -450,17 +471,17 @@ int main(int argc, char **argv)
     CHECK(strstr(html, "oracle 0x0500, fixgl 0x0000") != NULL);
     CHECK(strstr(html, "img/unit_same") == NULL);
     CHECK(strstr(json, "\"name\": \"unit/doc_ok\"") != NULL &&
-          strstr(json, "\"documented_differences\": [{\"label\": \"limit\", \"kind\": \"query int\", "
-                       "\"reason\": \"implementation string\", \"oracle\": \"{1}\", \"fixgl\": \"{2}\"}]") != NULL);
+          strstr(json, "\"documented_differences\": [ { \"label\": \"limit\", \"kind\": \"query int\", "
+                       "\"reason\": \"implementation string\", \"oracle\": \"{1}\", \"fixgl\": \"{2}\" } ]") != NULL);
     CHECK(strstr(html, "Documented differences (4)") != NULL);
     CHECK(strstr(json, "\"name\": \"unit/tol_1\"") &&
           strstr(json, "\"status\": \"agrees\", \"tolerance_lsb\": 1, \"pixels_at_1\": 2, "
                        "\"pixels_beyond_1\": 0, \"pixels_beyond_tolerance\": 0"));
     /* tol_1, tol_2, tol_depth, tol_same: 4 cases, 1 bit-exact, 1 agrees */
-    CHECK(strstr(json, "\"phong\": {\"cases\": 4, \"bit_exact_cases\": 1, \"agreeing_cases\": 1, "
+    CHECK(strstr(json, "\"phong\": { \"cases\": 4, \"bit_exact_cases\": 1, \"agreeing_cases\": 1, "
                        "\"differing_cases\": 2, \"error_cases\": 0, \"tolerance_lsb\": 1, \"max_lsb\": 2, "
                        "\"pixels_compared\": 128, \"pixels_exact\": 122, \"pixels_at_1_lsb\": 5, "
-                       "\"pixels_beyond_1_lsb\": 1, \"pixels_beyond_tolerance\": 1, \"depth_mismatches\": 1}") != NULL);
+                       "\"pixels_beyond_1_lsb\": 1, \"pixels_beyond_tolerance\": 1, \"depth_mismatches\": 1 }") != NULL);
     CHECK(strstr(html, "Agreement of the reference cases") != NULL);
     CHECK(strstr(html, "img/unit_tol_1-f0-diff.png") != NULL);
     free(json);

@@ -70,7 +70,7 @@ static char *case_json(const char *json, const char *name, char *out, size_t siz
 {
     char key[256];
     const char *p, *end;
-    snprintf(key, sizeof key, "{\"name\": \"%s\"", name);
+    snprintf(key, sizeof key, "{ \"name\": \"%s\"", name);
     p = strstr(json, key);
     out[0] = 0;
     if (!p)
@@ -111,10 +111,10 @@ int main(int argc, char **argv)
         int cases, rc = run(a);
         CHECK(rc == 0);
         json = slurp(dir[0], "summary.json");
-        cases = count(json, "{\"name\": ");
+        cases = count(json, "{ \"name\": ");
         CHECK(cases >= 90);
-        CHECK(count(json, "\"tags\": [\"core\"") >= 40);
-        CHECK(count(json, "\"tags\": [\"random\"]") == 50);
+        CHECK(count(json, "\"tags\": [ \"core\"") >= 40);
+        CHECK(count(json, "\"tags\": [ \"random\" ]") == 50);
         CHECK(count(json, "\"status\": \"exact\"") == cases);
         CHECK(strstr(json, "\"oracle\": \"llvmpipe") != NULL);
         free(json);
@@ -124,10 +124,10 @@ int main(int argc, char **argv)
                       "--oracle-renderer", argv[2], "--fixgl-renderer", argv[2], "--report", dir[3], NULL };
         CHECK(run(a) == 0);
         json = slurp(dir[3], "summary.json");
-        CHECK(count(json, "{\"name\": ") == 50);
-        CHECK(count(json, "\"tags\": [\"random-lit\"]") == 50);
+        CHECK(count(json, "{ \"name\": ") == 50);
+        CHECK(count(json, "\"tags\": [ \"random-lit\" ]") == 50);
         CHECK(count(json, "\"name\": \"random-lit/s7-i49\"") == 1);
-        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{\"name\": "));
+        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{ \"name\": "));
         free(json);
     }
     if (argc == 5) {   /* 1b. the oracle and fixgl renderers issue the same calls */
@@ -164,7 +164,7 @@ int main(int argc, char **argv)
                       "--fixgl-arg", "--perturb", "--report", dir[1], NULL };
         CHECK(run(a) == 1);
         json = slurp(dir[1], "summary.json");
-        CHECK(count(json, "{\"name\": ") == 3);
+        CHECK(count(json, "{ \"name\": ") == 3);
         case_json(json, "core/fill_rule_square", obj, sizeof obj);
         CHECK(strstr(obj, "\"frames\": 1, \"pixels\": 256, \"mismatched_pixels\": 1, \"max_channel_diff\": 64, "
                           "\"depth_mismatches\": 1, \"error_mismatches\": 0") != NULL);
@@ -189,7 +189,7 @@ int main(int argc, char **argv)
         case_json(json, "core/fill_shared_diagonal", obj, sizeof obj);
         CHECK(strstr(obj, "\"status\": \"error\"") != NULL);
         CHECK(count(json, "\"status\": \"error\"") == 1);
-        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{\"name\": ") - 1);
+        CHECK(count(json, "\"status\": \"exact\"") == count(json, "{ \"name\": ") - 1);
         case_json(json, "core/fill_fan_pixel_centres", obj, sizeof obj);
         CHECK(strstr(obj, "\"status\": \"exact\"") != NULL);
         free(json);

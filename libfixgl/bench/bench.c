@@ -63,10 +63,15 @@
 
 #ifdef BENCH_ORACLE
 #include "fcr_shading.h"
+#define BENCH_NAME "fixgl-bench-osmesa"
 #else
+#define BENCH_NAME "fixgl-bench-fixgl"
 #include <fixgl/fixgl.h>
 #endif
 
+#include <fixgl/version.h>
+
+#include <getopt.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -910,11 +915,34 @@ static void run_scene(const char *name, void (*frame)(void), double seconds,
 
 int main(int argc, char **argv)
 {
-  double seconds = argc > 1 ? atof(argv[1]) : 2.0;
-  if (!(seconds > 0.0)) {
-    fprintf(stderr, "usage: %s [SECONDS_PER_SCENE [SCENE...]]\n", argv[0]);
+  /* [--seconds S] [SECONDS] [SCENE...]: the seconds per scene as an option
+   * or, as run-bench.sh gives it, the first operand when it is a number */
+  static const struct option longopts[] = {
+    { "seconds", required_argument, NULL, 's' },
+    { "version", no_argument, NULL, 'V' },
+    { "help", no_argument, NULL, 'h' },
+    { NULL, 0, NULL, 0 },
+  };
+  double seconds = 2.0;
+  int ch, bad = 0;
+#define BENCH_USAGE "usage: %s [--seconds S | SECONDS] [SCENE...]   (S seconds per scene, default 2;\n" \
+                    "       --opt=value as well) | --version\n"
+  char *end;
+  while ((ch = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+    switch (ch) {
+    case 's': seconds = strtod(optarg, &end); bad |= *end != 0; break;
+    case 'V': puts(FIXGL_VERSION_BANNER(BENCH_NAME)); return 0;
+    case 'h': printf(BENCH_USAGE, argv[0]); return 0;
+    default: bad = 1; break;
+    }
+  }
+  if (optind < argc && strtod(argv[optind], &end) > 0.0 && *end == 0)
+    seconds = strtod(argv[optind++], NULL);
+  if (bad || !(seconds > 0.0)) {
+    fprintf(stderr, BENCH_USAGE, argv[0]);
     return 2;
   }
+  const int first_scene = optind;   /* the scenes asked for: the operands left */
 
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
   unsigned char *buf = malloc((size_t)WIDTH * HEIGHT * 4);
@@ -945,8 +973,8 @@ int main(int argc, char **argv)
     { "manydraws", draw_manydraws }, { "lines", draw_lines },   { "points", draw_points },
   };
   for (size_t i = 0; i < sizeof(scenes) / sizeof(scenes[0]); i++) {
-    int wanted = argc <= 2;
-    for (int a = 2; a < argc; a++)
+    int wanted = first_scene >= argc;
+    for (int a = first_scene; a < argc; a++)
       wanted |= strcmp(argv[a], scenes[i].name) == 0;
     if (wanted)
       run_scene(scenes[i].name, scenes[i].frame, seconds, buf);

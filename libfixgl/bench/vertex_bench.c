@@ -20,6 +20,9 @@
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 
+#include <fixgl/version.h>
+
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -129,7 +132,32 @@ static void run(const char *mode, double seconds)
 
 int main(int argc, char **argv)
 {
-  const double seconds = argc > 1 ? atof(argv[1]) : 2.0;
+  /* [--seconds S] [SECONDS] [MODE...]: as bench.c */
+  static const struct option longopts[] = {
+    { "seconds", required_argument, NULL, 's' },
+    { "version", no_argument, NULL, 'V' },
+    { "help", no_argument, NULL, 'h' },
+    { NULL, 0, NULL, 0 },
+  };
+#define VBENCH_USAGE "usage: %s [--seconds S | SECONDS] [MODE...]   (modes color, lit, decolor,\n" \
+                     "       delit; default 2 s each; --opt=value as well) | --version\n"
+  double seconds = 2.0;
+  int ch, bad = 0;
+  char *end;
+  while ((ch = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+    switch (ch) {
+    case 's': seconds = strtod(optarg, &end); bad |= *end != 0; break;
+    case 'V': puts(FIXGL_VERSION_BANNER("fixgl-bench-vertex")); return 0;
+    case 'h': printf(VBENCH_USAGE, argv[0]); return 0;
+    default: bad = 1; break;
+    }
+  }
+  if (optind < argc && strtod(argv[optind], &end) > 0.0 && *end == 0)
+    seconds = strtod(argv[optind++], NULL);
+  if (bad || !(seconds > 0.0)) {
+    fprintf(stderr, VBENCH_USAGE, argv[0]);
+    return 2;
+  }
   static const char *all[] = { "color", "lit", "decolor", "delit" };
   static unsigned char buf[64 * 64 * 4];
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
@@ -138,8 +166,8 @@ int main(int argc, char **argv)
     return 1;
   }
   build_sphere();
-  if (argc > 2)
-    for (int i = 2; i < argc; i++)
+  if (optind < argc)
+    for (int i = optind; i < argc; i++)
       run(argv[i], seconds);
   else
     for (unsigned i = 0; i < sizeof(all) / sizeof(all[0]); i++)

@@ -12,6 +12,8 @@
  * both the help and the dispatch).
  */
 #include <errno.h>
+#include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +23,7 @@
 
 #include <GL/osmesa.h>
 #include <fixgl/fixgl.h>
+#include <fixgl/version.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -37,15 +40,83 @@
 #include "fcr_shading.h"
 #endif
 
-#ifndef FV_DEFAULT_MODEL
-#define FV_DEFAULT_MODEL "teapot.obj"
+/* ---- the bundled models ------------------------------------------------ */
+
+/* Where the build installs the bundled models (DATADIR/fixgl/models), and
+ * the same directory relative to the installed executable's (BINDIR), for
+ * an installed tree that was moved or not yet copied into place (DESTDIR). */
+#ifndef FV_MODELS_DIR
+#define FV_MODELS_DIR "/usr/local/share/fixgl/models"
 #endif
+#ifndef FV_MODELS_REL
+#define FV_MODELS_REL "../share/fixgl/models"
+#endif
+#define FV_DEFAULT_MODEL "teapot.obj"
+static const char *const bundled_models[] = { "teapot.obj", "lowpoly.obj", "sphere.ply",
+                                              "torus.stl", "globe.obj", "colors.ply",
+                                              "rgbcube.obj" };
 
 /* --size: the width is at least 3 (the split view's three panels); 8192
  * bounds a frame (and each of the split view's buffers) to 256 MiB. */
 #define FV_MIN_WIDTH 3
 #define FV_MIN_HEIGHT 1
 #define FV_MAX_SIZE 8192
+
+static int has_default_model(const char *dir)
+{
+   char path[PATH_MAX];
+   return snprintf(path, sizeof path, "%s/" FV_DEFAULT_MODEL, dir) < (int)sizeof path &&
+          access(path, R_OK) == 0;
+}
+
+/* The directory of the bundled models, the first of: $FIXGL_VIEW_MODELS;
+ * FV_MODELS_REL from the executable's directory (installed: the same
+ * directory as FV_MODELS_DIR, or where a moved tree has it); `models`
+ * beside the executable (the build tree, uninstalled:
+ * build/viewer/view/models); FV_MODELS_DIR. */
+static const char *models_dir(void)
+{
+   static char dir[PATH_MAX];
+   if (dir[0])
+      return dir;
+   const char *env = getenv("FIXGL_VIEW_MODELS");
+   if (env && *env) {
+      snprintf(dir, sizeof dir, "%s", env);
+      return dir;
+   }
+   char exe[PATH_MAX];
+   ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+   if (n > 0) {
+      exe[n] = 0;
+      char *slash = strrchr(exe, '/');
+      if (slash)
+         *slash = 0;
+      static const char *const rel[] = { FV_MODELS_REL, "models" };
+      for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+         char cand[PATH_MAX], real[PATH_MAX];
+         if (snprintf(cand, sizeof cand, "%s/%s", exe, rel[i]) < (int)sizeof cand &&
+             has_default_model(cand) && realpath(cand, real)) {
+            snprintf(dir, sizeof dir, "%s", real);
+            return dir;
+         }
+      }
+   }
+   snprintf(dir, sizeof dir, "%s", FV_MODELS_DIR);
+   return dir;
+}
+
+/* MODEL as given when it exists or names a directory, else the bundled
+ * model of that name when there is one; the bundled teapot without MODEL. */
+static const char *model_path(const char *model)
+{
+   static char path[PATH_MAX];
+   if (model && (access(model, F_OK) == 0 || strchr(model, '/')))
+      return model;
+   if (snprintf(path, sizeof path, "%s/%s", models_dir(), model ? model : FV_DEFAULT_MODEL) >=
+       (int)sizeof path)
+      return model ? model : FV_DEFAULT_MODEL;
+   return !model || access(path, F_OK) == 0 ? path : model;
+}
 
 /* ---- the application ---------------------------------------------------- */
 
@@ -528,7 +599,11 @@ static void usage(FILE *f)
       "usage: fixgl-view [OPTIONS] [MODEL]\n"
       "\n"
       "Shows MODEL (OBJ with MTL, PLY, STL, ... through assimp; default: the\n"
-      "bundled teapot, %s) rendered by fixgl in a window.\n"
+      "bundled teapot) rendered by fixgl in a window.  The bundled models (MODEL\n"
+      "also by name, e.g. teapot.obj):\n");
+   for (size_t i = 0; i < sizeof bundled_models / sizeof bundled_models[0]; i++)
+      fprintf(f, "  %s/%s\n", models_dir(), bundled_models[i]);
+   fprintf(f,
       "\n"
       "Options:\n"
       "  --headless            no window (no X needed): render and write --out\n"
@@ -571,6 +646,7 @@ static void usage(FILE *f)
       "                        (drag:DX:DY, rdrag:DX:DY in pixels, wheel:N),\n"
       "                        comma-separated, one per frame from the first\n"
       "  --info                print the model, the renderers and their extensions\n"
+      "  --version             the versions of fixgl and of the oracle, Mesa\n"
       "  --help                this help\n"
       "\n"
       "The OSMesa side (split view) loads libOSMesa at run time (environment\n"
@@ -582,8 +658,11 @@ static void usage(FILE *f)
       "untextured) are drawn mipmapped with GL_MODULATE; per-vertex colours (PLY,\n"
       "OBJ) through GL_COLOR_MATERIAL.  A model without faces, or with NaN or\n"
       "infinite vertex coordinates, is refused (exit status 1).\n"
+      "\n"
+      "The bundled models' directory: FIXGL_VIEW_MODELS, else %s when installed\n"
+      "there, else %s or models/ beside fixgl-view.\n"
       "\n",
-      FV_DEFAULT_MODEL, FV_MIN_WIDTH, FV_MAX_SIZE, FV_MIN_HEIGHT, FV_MAX_SIZE);
+      FV_MIN_WIDTH, FV_MAX_SIZE, FV_MIN_HEIGHT, FV_MAX_SIZE, FV_MODELS_DIR, FV_MODELS_REL);
    print_keys(f);
 }
 
@@ -621,46 +700,72 @@ static float parse_float(const char *opt, const char *v, float lo, float hi)
    return f;
 }
 
+/* The long options: `--opt value` and `--opt=value` alike (getopt_long). */
+enum {
+   OPT_HEADLESS = 256, OPT_SPLIT, OPT_WIREFRAME, OPT_CULL, OPT_INFO, OPT_VERSION, OPT_SIZE,
+   OPT_SHADE, OPT_REFLECTANCE, OPT_ROUGHNESS, OPT_METALNESS, OPT_YAW, OPT_PITCH, OPT_ZOOM,
+   OPT_SPIN, OPT_LIGHT, OPT_RENDERER, OPT_OUT, OPT_OSMESA_OUT, OPT_FRAMES, OPT_SCREENSHOT,
+   OPT_SCREENSHOT_X11, OPT_KEYS, OPT_NORMALS,
+};
+static const struct option long_options[] = {
+   { "help", no_argument, NULL, 'h' },
+   { "version", no_argument, NULL, OPT_VERSION },
+   { "headless", no_argument, NULL, OPT_HEADLESS },
+   { "split", no_argument, NULL, OPT_SPLIT },
+   { "wireframe", no_argument, NULL, OPT_WIREFRAME },
+   { "cull", no_argument, NULL, OPT_CULL },
+   { "info", no_argument, NULL, OPT_INFO },
+   { "size", required_argument, NULL, OPT_SIZE },
+   { "shade", required_argument, NULL, OPT_SHADE },
+   { "reflectance", required_argument, NULL, OPT_REFLECTANCE },
+   { "roughness", required_argument, NULL, OPT_ROUGHNESS },
+   { "metalness", required_argument, NULL, OPT_METALNESS },
+   { "yaw", required_argument, NULL, OPT_YAW },
+   { "pitch", required_argument, NULL, OPT_PITCH },
+   { "zoom", required_argument, NULL, OPT_ZOOM },
+   { "spin", required_argument, NULL, OPT_SPIN },
+   { "light", required_argument, NULL, OPT_LIGHT },
+   { "renderer", required_argument, NULL, OPT_RENDERER },
+   { "out", required_argument, NULL, OPT_OUT },
+   { "osmesa-out", required_argument, NULL, OPT_OSMESA_OUT },
+   { "frames", required_argument, NULL, OPT_FRAMES },
+   { "screenshot", required_argument, NULL, OPT_SCREENSHOT },
+   { "screenshot-x11", required_argument, NULL, OPT_SCREENSHOT_X11 },
+   { "keys", required_argument, NULL, OPT_KEYS },
+   { "normals", required_argument, NULL, OPT_NORMALS },
+   { NULL, 0, NULL, 0 },
+};
+
 static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_light *lights,
                           int *num_lights)
 {
-   for (int i = 1; i < argc; i++) {
-      const char *a = argv[i];
-      if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+   int ch, opt_index = -1;
+   opterr = 0;
+   while ((ch = getopt_long(argc, argv, ":h", long_options, &opt_index)) != -1) {
+      const char *v = optarg;
+      /* the option's name, for messages */
+      char a[32];
+      snprintf(a, sizeof a, "--%s", opt_index >= 0 ? long_options[opt_index].name : "?");
+      opt_index = -1;
+      switch (ch) {
+      case 'h':
          usage(stdout);
          exit(0);
-      }
-      if (!strcmp(a, "--headless")) { A.headless = 1; continue; }
-      if (!strcmp(a, "--split")) { A.split = 1; continue; }
-      if (!strcmp(a, "--wireframe")) { sc->wireframe = 1; continue; }
-      if (!strcmp(a, "--cull")) { sc->cull = 1; continue; }
-      if (!strcmp(a, "--info")) { A.info = 1; continue; }
-      if (a[0] != '-' || !a[1]) {
-         if (A.model_path) {
-            fprintf(stderr, "fixgl-view: one model only (%s, %s)\n", A.model_path, a);
-            exit(2);
-         }
-         A.model_path = a;
-         continue;
-      }
-      static const char *const with_value[] = {
-         "--size", "--shade", "--reflectance", "--roughness", "--metalness", "--yaw", "--pitch",
-         "--zoom", "--spin", "--light", "--renderer", "--out", "--osmesa-out", "--frames",
-         "--screenshot", "--screenshot-x11", "--keys", "--normals",
-      };
-      int known = 0;
-      for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-         known |= !strcmp(a, with_value[k]);
-      if (!known) {
-         fprintf(stderr, "fixgl-view: unknown option %s (see --help)\n", a);
+      case OPT_VERSION:
+         puts(FIXGL_VERSION_BANNER("fixgl-view"));
+         exit(0);
+      case OPT_HEADLESS: A.headless = 1; break;
+      case OPT_SPLIT: A.split = 1; break;
+      case OPT_WIREFRAME: sc->wireframe = 1; break;
+      case OPT_CULL: sc->cull = 1; break;
+      case OPT_INFO: A.info = 1; break;
+      case ':':
+         fprintf(stderr, "fixgl-view: %s needs a value (see --help)\n", argv[optind - 1]);
          exit(2);
-      }
-      if (i + 1 >= argc) {
-         fprintf(stderr, "fixgl-view: %s needs a value (see --help)\n", a);
+      case '?':
+         fprintf(stderr, "fixgl-view: unknown option %s (see --help)\n", argv[optind - 1]);
          exit(2);
-      }
-      const char *v = argv[++i];
-      if (!strcmp(a, "--size")) {
+      case OPT_SIZE: {
          char tail;
          if (sscanf(v, "%dx%d%c", &A.width, &A.height, &tail) != 2 || A.width < FV_MIN_WIDTH ||
              A.height < FV_MIN_HEIGHT || A.width > FV_MAX_SIZE || A.height > FV_MAX_SIZE) {
@@ -669,7 +774,9 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
                     v, FV_MIN_WIDTH, FV_MAX_SIZE, FV_MIN_HEIGHT, FV_MAX_SIZE);
             exit(2);
          }
-      } else if (!strcmp(a, "--normals")) {
+         break;
+      }
+      case OPT_NORMALS:
          if (!strcmp(v, "file")) A.normals = FV_NORMALS_FILE;
          else if (!strcmp(v, "smooth")) A.normals = FV_NORMALS_SMOOTH;
          else if (!strcmp(v, "flat")) A.normals = FV_NORMALS_FLAT;
@@ -677,7 +784,8 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
             fprintf(stderr, "fixgl-view: --normals: file, smooth or flat, not \"%s\"\n", v);
             exit(2);
          }
-      } else if (!strcmp(a, "--shade")) {
+         break;
+      case OPT_SHADE:
          if (!strcmp(v, "flat")) sc->shade = FV_FLAT, sc->cook_torrance = 0;
          else if (!strcmp(v, "smooth") || !strcmp(v, "gouraud")) sc->shade = FV_SMOOTH, sc->cook_torrance = 0;
          else if (!strcmp(v, "phong")) sc->shade = FV_PHONG, sc->cook_torrance = 0;
@@ -686,55 +794,78 @@ static void parse_options(int argc, char **argv, struct fv_scene *sc, struct fv_
             fprintf(stderr, "fixgl-view: --shade: flat, smooth, phong or cook-torrance, not \"%s\"\n", v);
             exit(2);
          }
-      } else if (!strcmp(a, "--reflectance")) {
+         break;
+      case OPT_REFLECTANCE:
          if (!strcmp(v, "blinn-phong")) sc->cook_torrance = 0;
          else if (!strcmp(v, "cook-torrance")) sc->cook_torrance = 1;
          else {
             fprintf(stderr, "fixgl-view: --reflectance: blinn-phong or cook-torrance, not \"%s\"\n", v);
             exit(2);
          }
-      } else if (!strcmp(a, "--roughness")) {
+         break;
+      case OPT_ROUGHNESS:
          sc->roughness = parse_float(a, v, 0.0f, 1.0f);
-      } else if (!strcmp(a, "--metalness")) {
+         break;
+      case OPT_METALNESS:
          sc->metalness = parse_float(a, v, 0.0f, 1.0f);
-      } else if (!strcmp(a, "--yaw")) {
+         break;
+      case OPT_YAW:
          sc->yaw = parse_float(a, v, -3600.0f, 3600.0f);
-      } else if (!strcmp(a, "--pitch")) {
+         break;
+      case OPT_PITCH:
          sc->pitch = parse_float(a, v, -90.0f, 90.0f);
-      } else if (!strcmp(a, "--zoom")) {
+         break;
+      case OPT_ZOOM:
          sc->zoom = parse_float(a, v, 0.05f, 20.0f);
-      } else if (!strcmp(a, "--spin")) {
+         break;
+      case OPT_SPIN:
          A.spin = parse_float(a, v, -360.0f, 360.0f);
-      } else if (!strcmp(a, "--light")) {
+         break;
+      case OPT_LIGHT:
          if (*num_lights >= FV_MAX_LIGHTS || parse_light(v, &lights[*num_lights]) != 0) {
             fprintf(stderr, "fixgl-view: --light: bad light \"%s\" (TYPE[:AZ:EL[:DIST]], up to %d)\n",
                     v, FV_MAX_LIGHTS);
             exit(2);
          }
          ++*num_lights;
-      } else if (!strcmp(a, "--renderer")) {
+         break;
+      case OPT_RENDERER:
          if (!strcmp(v, "fixgl")) A.renderer_osmesa = 0;
          else if (!strcmp(v, "osmesa")) A.renderer_osmesa = 1;
          else {
             fprintf(stderr, "fixgl-view: --renderer: fixgl or osmesa, not \"%s\"\n", v);
             exit(2);
          }
-      } else if (!strcmp(a, "--out")) {
+         break;
+      case OPT_OUT:
          A.out = v;
-      } else if (!strcmp(a, "--osmesa-out")) {
+         break;
+      case OPT_OSMESA_OUT:
          A.osmesa_out = v;
-      } else if (!strcmp(a, "--frames")) {
+         break;
+      case OPT_FRAMES:
          A.frames = (int)parse_float(a, v, 1.0f, 1e6f);
-      } else if (!strcmp(a, "--screenshot")) {
+         break;
+      case OPT_SCREENSHOT:
          A.screenshot = v;
-      } else if (!strcmp(a, "--screenshot-x11")) {
+         break;
+      case OPT_SCREENSHOT_X11:
          A.screenshot_x11 = v;
-      } else if (!strcmp(a, "--keys")) {
+         break;
+      case OPT_KEYS:
          A.key_list = v;
-      } else {
+         break;
+      default:
          fprintf(stderr, "fixgl-view: unknown option %s (see --help)\n", a);
          exit(2);
       }
+   }
+   for (int i = optind; i < argc; i++) {
+      if (A.model_path) {
+         fprintf(stderr, "fixgl-view: one model only (%s, %s)\n", A.model_path, argv[i]);
+         exit(2);
+      }
+      A.model_path = argv[i];
    }
 }
 
@@ -1043,8 +1174,7 @@ int main(int argc, char **argv)
    struct fv_scene opts;
    fv_scene_init(&opts, NULL);
    parse_options(argc, argv, &opts, lights, &num_lights);
-   if (!A.model_path)
-      A.model_path = FV_DEFAULT_MODEL;
+   A.model_path = model_path(A.model_path);
    if (A.key_list)
       parse_keys(A.key_list);
    if (!A.width)
