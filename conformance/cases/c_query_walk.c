@@ -432,8 +432,8 @@ static void query_strings(fc_h *h)
     fc_documented_difference(h, "GL_VENDOR", "fixgl's own vendor string");
     fc_documented_difference(h, "GL_RENDERER", "fixgl's own renderer string");
     fc_documented_difference(h, "GL_VERSION",
-                             "fixgl reports the version it implements (1.1 without the "
-                             "texture path), the oracle 4.5 Compatibility Profile");
+                             "fixgl reports the version it implements (1.5), the "
+                             "oracle 4.5 Compatibility Profile");
     fc_documented_difference(h, "GL_EXTENSIONS",
                              "fixgl lists exactly the extensions it implements "
                              "(api/query_extensions checks each is the oracle's too)");
@@ -510,7 +510,8 @@ static void query_extensions(fc_h *h)
         "GL_EXT_blend_equation_separate", "GL_EXT_blend_func_separate", "GL_EXT_fog_coord",
         "GL_EXT_multi_draw_arrays", "GL_EXT_point_parameters", "GL_EXT_secondary_color",
         "GL_ARB_vertex_buffer_object", "GL_ARB_occlusion_query", "GL_EXT_vertex_array",
-        "GL_ARB_point_sprite", "GL_EXT_texture3D",
+        "GL_ARB_point_sprite", "GL_EXT_texture3D", "GL_ARB_depth_texture", "GL_ARB_shadow",
+        "GL_ARB_texture_compression", "GL_ARB_texture_cube_map",
     };
     /* fixgl's own extensions (include/fixgl/shading.md), which the oracle
      * does not have: not counted among the others; libfixgl's api tests

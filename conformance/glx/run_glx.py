@@ -284,7 +284,7 @@ def cmd_glxinfo(libgl_dir):
         "GLX_MESA_swap_control",
         "OpenGL vendor string: fixgl",
         "OpenGL renderer string: fixgl CPU rasterizer",
-        "OpenGL version string: 1.1 fixgl",
+        "OpenGL version string: 1.5 fixgl",
         "GL_ARB_multitexture",
         "GL_ARB_vertex_buffer_object",
         "GL_EXT_blend_color",

@@ -220,7 +220,7 @@ static void test_create_attribs(void)
   if (ctx) {
     CHECK(OSMesaMakeCurrent(ctx, color_buf, GL_UNSIGNED_BYTE, W, H) == GL_TRUE, "bind failed");
     const char *v = (const char *)glGetString(GL_VERSION);
-    CHECK(v && strncmp(v, "1.1", 3) == 0, "compat 1.5 context: GL_VERSION %s", v ? v : "NULL");
+    CHECK(v && strncmp(v, "1.5 ", 4) == 0, "compat 1.5 context: GL_VERSION %s", v ? v : "NULL");
     OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
     OSMesaDestroyContext(ctx);
   }
