@@ -1982,36 +1982,34 @@ static bool is_basic_type(GLenum type, bool half)
    }
 }
 
-/* The client formats and types of GL 1.5 with the listed EXT_abgr,
- * EXT_bgra and EXT_packed_pixels (get.c GL_EXTENSIONS).  Those of later
- * versions and unlisted extensions (GL_RG, the *_INTEGER formats,
- * GL_DEPTH_STENCIL, GL_HALF_FLOAT, GL_UNSIGNED_INT_24_8, the packed float
- * types), which the oracle's GL 4.5 context accepts, are not enums of a
- * GL 1.5 implementation without those extensions: GL_INVALID_ENUM
- * (README "Version and honesty"; api/enum_honesty). */
-static bool gl15_format(GLenum format)
+/* The client formats and types the oracle's GL 4.5 context knows beyond
+ * GL 1.5 with the listed EXT_abgr, EXT_bgra and EXT_packed_pixels (get.c
+ * GL_EXTENSIONS): GL_RG, the *_INTEGER formats, GL_DEPTH_STENCIL,
+ * GL_HALF_FLOAT(_OES), GL_UNSIGNED_INT_24_8, the packed float types.  Not
+ * enums of a GL 1.5 implementation without those extensions:
+ * GL_INVALID_ENUM (README "Version and honesty"; api/enum_honesty).  Any
+ * other value, a GL 1.5 enum or none at all, takes the oracle's checks in
+ * their order (a packed type with a format it does not fit is
+ * GL_INVALID_OPERATION before an unknown format is GL_INVALID_ENUM). */
+static bool foreign_format(GLenum format)
 {
    switch (format) {
-   case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT:
-   case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_RGB: case GL_RGBA:
-   case GL_BGR: case GL_BGRA: case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_ABGR_EXT:
+   case GL_RG: case GL_DEPTH_STENCIL:
+   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER: case GL_ALPHA_INTEGER:
+   case GL_RG_INTEGER: case GL_RGB_INTEGER: case GL_BGR_INTEGER: case GL_RGBA_INTEGER:
+   case GL_BGRA_INTEGER: case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
       return true;
    default:
       return false;
    }
 }
 
-static bool gl15_type(GLenum type)
+static bool foreign_type(GLenum type)
 {
    switch (type) {
-   case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_BITMAP: case GL_UNSIGNED_SHORT: case GL_SHORT:
-   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT:
-   case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-   case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-   case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-   case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-   case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-   case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+   case GL_HALF_FLOAT: case 0x8D61: /* GL_HALF_FLOAT_OES */
+   case GL_UNSIGNED_INT_24_8: case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+   case GL_UNSIGNED_INT_10F_11F_11F_REV: case GL_UNSIGNED_INT_5_9_9_9_REV:
       return true;
    default:
       return false;
@@ -2025,7 +2023,7 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
                                        GLenum type)
 {
    (void)ctx;
-   if (!gl15_format(format) || !gl15_type(type))
+   if (foreign_format(format) || foreign_type(type))
       return GL_INVALID_ENUM;
    if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
        type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
