@@ -158,6 +158,10 @@ struct fgl_context *fgl_context_create(struct fgl_context *share)
       fgl_context_destroy(ctx);
       return NULL;
    }
+   /* no framebuffer is bound yet: this framebuffer object is the empty
+    * one, kept for an out-of-memory validation (state.c update_raster) */
+   ctx->_NullFb = ctx->_Raster.fb;
+   r_cso_hold(ctx->_NullFb);
    ctx->ErrorValue = GL_NO_ERROR;
    ctx->NewState = FGL_NEW_ALL;
    if (share) {
@@ -192,6 +196,8 @@ void fgl_context_destroy(struct fgl_context *ctx)
    fgl_free_queries(ctx);
    fgl_vbo_fini(&ctx->Vbo);
    fgl_free(ctx->_DrawVbuf.queue);
+   if (ctx->_NullFb)
+      r_cso_release(ctx->_NullFb);
    r_cso_cache_fini(&ctx->_StateCache);
    fgl_free(ctx);
 }

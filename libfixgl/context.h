@@ -1020,6 +1020,9 @@ struct fgl_context {
     * zero while its smoothing is off), validated with _Raster */
    struct r_state _RasterAA[2];
    struct r_cso_cache _StateCache;
+   /* the framebuffer object of no framebuffer (held; context.c), which
+    * _Raster.fb falls back to when a framebuffer's cannot be made */
+   const struct r_fb_state *_NullFb;
    /* GL_PHONG_WIN: the shading environment of the batch being drawn, as
     * built before it becomes _Raster.shade_env (tnl/t_render.c) */
    struct m_shade_env _ShadeEnv;

@@ -870,10 +870,19 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
          o = fgl_fb_raster_state(fb);
       ok = true;
       SET_OBJECT(ctx, rs->fb, o, &ok);
+      if (!ok) {
+         /* out of memory: no buffer at all rather than the last one,
+          * which a rebind may have resized or freed (the context's empty
+          * framebuffer object; the draw region below is empty too, and
+          * the group is validated again by the next call) */
+         r_cso_hold(ctx->_NullFb);
+         r_cso_release(rs->fb);
+         rs->fb = ctx->_NullFb;
+      }
       failed |= ok ? 0u : FGL_NEW_BUFFERS;
       /* drawing directly (one thread), a triangle writes the lazy clears
        * of its box (scene.c); the scene's tiles write their own */
-      rs->lazy = fb && ctx->_NumThreads == 1 ? &ctx->DrawBuffer->Lazy : NULL;
+      rs->lazy = ok && fb && ctx->_NumThreads == 1 ? &ctx->DrawBuffer->Lazy : NULL;
    }
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_SCISSOR)) {
       /* scissor: the draw region [S: st_atom_scissor.c:st_update_scissor;
@@ -884,6 +893,8 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
       rs->y0 = region[1];
       rs->x1 = region[2];
       rs->y1 = region[3];
+      if (failed & FGL_NEW_BUFFERS)
+         rs->x0 = rs->y0 = rs->x1 = rs->y1 = 0;
    }
    if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_DEPTH | FGL_NEW_STENCIL | FGL_NEW_COLOR)) {
       struct r_dsa_state o;

@@ -30,19 +30,25 @@
 #include "fgl_alloc.h"
 #include "math/m_gallivm.h"
 
+/* An image and everything it owns (NULL: nothing) */
+static void free_image(struct fgl_texture_image *img)
+{
+   if (!img)
+      return;
+   fgl_free(img->Data);
+   fgl_free(img->Store);
+   fgl_free(img->ZValues);
+   fgl_free(img->Blocks);
+   fgl_free(img);
+}
+
 void fgl_free_tex_images(struct fgl_texture_object *t)
 {
    for (unsigned f = 0; f < 6; f++) {
       for (int l = 0; l < FGL_MAX_TEXTURE_LEVELS; l++) {
          struct fgl_texture_image **slot = fgl_tex_face_slot(t, f, l);
-         if (*slot) {
-            fgl_free((*slot)->Data);
-            fgl_free((*slot)->Store);
-            fgl_free((*slot)->ZValues);
-            fgl_free((*slot)->Blocks);
-            fgl_free(*slot);
-            *slot = NULL;
-         }
+         free_image(*slot);
+         *slot = NULL;
       }
    }
 }
@@ -575,13 +581,7 @@ static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
                       struct fgl_texture_image *img)
 {
    struct fgl_texture_image **slot = fgl_tex_face_slot(t, face, level);
-   if (*slot) {
-      fgl_free((*slot)->Data);
-      fgl_free((*slot)->Store);
-      fgl_free((*slot)->ZValues);
-      fgl_free((*slot)->Blocks);
-      fgl_free(*slot);
-   }
+   free_image(*slot);
    *slot = img;
 }
 

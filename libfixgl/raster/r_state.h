@@ -70,6 +70,22 @@ enum {
    R_FS_NUM_INPUTS,
 };
 
+
+/* A float's bits and back (memcpy: the same bits, no aliasing) */
+static inline uint32_t r_f2u(float f)
+{
+   uint32_t u;
+   memcpy(&u, &f, 4);
+   return u;
+}
+
+static inline float r_u2f(uint32_t u)
+{
+   float f;
+   memcpy(&f, &u, 4);
+   return f;
+}
+
 /* The vertex slot that feeds fragment-shader input `input`, for a front-
  * or back-facing primitive (lp_state_setup.c:lp_twoside swaps the colour
  * inputs for back faces). */

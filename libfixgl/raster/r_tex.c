@@ -21,20 +21,6 @@
 #include <math.h>
 #include <string.h>
 
-static inline uint32_t f2u(float f)
-{
-   uint32_t u;
-   memcpy(&u, &f, 4);
-   return u;
-}
-
-static inline float u2f(uint32_t u)
-{
-   float f;
-   memcpy(&f, &u, 4);
-   return f;
-}
-
 /* cvtps2dq / cvttps2dq of values outside int32 give INT32_MIN */
 static inline int32_t iround_even(float f)
 {

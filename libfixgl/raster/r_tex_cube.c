@@ -42,20 +42,6 @@
 #include <stddef.h>
 #include <string.h>
 
-static inline uint32_t f2u(float f)
-{
-   uint32_t u;
-   memcpy(&u, &f, 4);
-   return u;
-}
-
-static inline float u2f(uint32_t u)
-{
-   float f;
-   memcpy(&f, &u, 4);
-   return f;
-}
-
 #define SIGN 0x80000000u
 
 /* The major axis of c [S: lp_build_cube_lookup]: as_ge_at is
@@ -79,16 +65,16 @@ static void face_minor(int axis, uint32_t sign, const float v[3], float *fs, flo
 {
    switch (axis) {
    case 0:
-      *fs = u2f(f2u(v[2]) ^ SIGN ^ sign);
-      *ft = u2f(f2u(v[1]) ^ SIGN);
+      *fs = r_u2f(r_f2u(v[2]) ^ SIGN ^ sign);
+      *ft = r_u2f(r_f2u(v[1]) ^ SIGN);
       break;
    case 1:
       *fs = v[0];
-      *ft = u2f(f2u(v[2]) ^ sign);
+      *ft = r_u2f(r_f2u(v[2]) ^ sign);
       break;
    default:
-      *fs = u2f(f2u(v[0]) ^ sign);
-      *ft = u2f(f2u(v[1]) ^ SIGN);
+      *fs = r_u2f(r_f2u(v[0]) ^ sign);
+      *ft = r_u2f(r_f2u(v[1]) ^ SIGN);
       break;
    }
 }
@@ -110,7 +96,7 @@ float r_tex_cube_rho(const struct r_texture *t, const float q[3][3])
    const float *tl = q[0], *dx = q[1], *dy = q[2];
    const int axis = major_axis(tl);
    const float ma = tl[axis];
-   const uint32_t sign = f2u(ma) & SIGN;
+   const uint32_t sign = r_f2u(ma) & SIGN;
    float fs, ft, fsdx, ftdx, fsdy, ftdy;
    face_minor(axis, sign, tl, &fs, &ft);
    face_minor(axis, sign, dx, &fsdx, &ftdx);
@@ -142,7 +128,7 @@ void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float 
 {
    const int axis = major_axis(c);
    const float ma = c[axis];
-   const uint32_t sign = f2u(ma) & SIGN;
+   const uint32_t sign = r_f2u(ma) & SIGN;
    const int face = 2 * axis + (int)(sign >> 31);
    float fs, ft;
    face_minor(axis, sign, c, &fs, &ft);

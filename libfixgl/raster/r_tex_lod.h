@@ -11,20 +11,6 @@
 
 #include "r_state.h"
 
-static inline uint32_t r_lod_f2u(float f)
-{
-   uint32_t u;
-   memcpy(&u, &f, 4);
-   return u;
-}
-
-static inline float r_lod_u2f(uint32_t u)
-{
-   float f;
-   memcpy(&f, &u, 4);
-   return f;
-}
-
 /* cvttps2dq: INT32_MIN outside int32 */
 static inline int32_t r_lod_itrunc(float f)
 {
@@ -41,7 +27,7 @@ static inline int r_lod_clampi(int i, int lo, int hi)
 /* biased exponent field of a float */
 static inline int r_lod_float_exp(float x)
 {
-   return (int)((r_lod_f2u(x) >> 23) & 255u);
+   return (int)((r_f2u(x) >> 23) & 255u);
 }
 
 /* rho of the quad [S: lp_bld_sample.c:lp_build_rho] from the base
@@ -123,7 +109,7 @@ static inline void r_tex_lod_aos_inline(const struct r_texture *t, const float q
        * lp_build_linear_mip_levels */
       const float r2 = squared ? rho : rho * rho;
       const float l2 = (float)(r_lod_float_exp(r2) - 128) +
-                       r_lod_u2f((r_lod_f2u(r2) & 0x7fffffu) | 0x3f800000u);
+                       r_u2f((r_f2u(r2) & 0x7fffffu) | 0x3f800000u);
       const float lod = l2 * 0.5f;
       minify = !(lod <= 0.0f);   /* unordered, as above */
       const float fl = floorf(lod);

@@ -29,20 +29,6 @@
 #include <math.h>
 #include <string.h>
 
-static inline uint32_t f2u(float f)
-{
-   uint32_t u;
-   memcpy(&u, &f, 4);
-   return u;
-}
-
-static inline float u2f(uint32_t u)
-{
-   float f;
-   memcpy(&f, &u, 4);
-   return f;
-}
-
 /* cvttps2dq (LLVMBuildFPToSI): INT32_MIN outside int32 and for NaN */
 static inline int32_t itrunc(float f)
 {
@@ -84,13 +70,13 @@ struct lod {
 
 static inline int float_exp(float x)
 {
-   return (int)((f2u(x) >> 23) & 255u);
+   return (int)((r_f2u(x) >> 23) & 255u);
 }
 
 /* lp_build_fast_log2: (exponent - 128) + the mantissa as a float in [1,2) */
 static inline float fast_log2(float x)
 {
-   return (float)(float_exp(x) - 128) + u2f((f2u(x) & 0x7fffffu) | 0x3f800000u);
+   return (float)(float_exp(x) - 128) + r_u2f((r_f2u(x) & 0x7fffffu) | 0x3f800000u);
 }
 
 /* lod_positive (minified) is lp_build_cmp(GREATER), an unordered compare

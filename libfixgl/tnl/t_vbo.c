@@ -71,18 +71,26 @@ void fgl_vbo_fini(struct fgl_vbo *vbo)
    vbo->array_elts_alloc = 0;
 }
 
+/* The elements a scratch array of *alloc grows to for n (doubling from
+ * 256), 0 when that is more than FGL_VBO_SCRATCH_MAX_BYTES: a draw of
+ * billions of vertices (glDrawArrays(mode, 0, INT_MAX)) asks for hundreds
+ * of gigabytes at once, refused as out of memory rather than attempted
+ * (the oracle draws it in segments; fixgl fetches a draw's vertices at
+ * once) */
+static size_t scratch_grown(unsigned alloc, unsigned n, size_t elem_size)
+{
+   size_t want = alloc ? alloc : 256;
+   while (want < n)
+      want *= 2;
+   return want > FGL_VBO_SCRATCH_MAX_BYTES / elem_size ? 0 : want;
+}
+
 void *fgl_vbo_scratch(void *buf, unsigned *alloc, unsigned n, size_t elem_size)
 {
    if (buf && n <= *alloc)
       return buf;
-   size_t want = *alloc ? *alloc : 256;
-   while (want < n)
-      want *= 2;
-   /* a draw of billions of vertices (glDrawArrays(mode, 0, INT_MAX)) asks
-    * for hundreds of gigabytes at once: refused as out of memory rather
-    * than attempted (the oracle draws it in segments; fixgl fetches a
-    * draw's vertices at once) */
-   if (want > FGL_VBO_SCRATCH_MAX_BYTES / elem_size)
+   const size_t want = scratch_grown(*alloc, n, elem_size);
+   if (!want)
       return NULL;
    void *p = fgl_realloc(buf, want * elem_size);
    if (p)
@@ -94,10 +102,8 @@ void *fgl_vbo_scratch_lines(void *buf, unsigned *alloc, unsigned n, size_t elem_
 {
    if (buf && n <= *alloc)
       return buf;
-   size_t want = *alloc ? *alloc : 256;
-   while (want < n)
-      want *= 2;
-   if (want > FGL_VBO_SCRATCH_MAX_BYTES / elem_size)
+   const size_t want = scratch_grown(*alloc, n, elem_size);
+   if (!want)
       return NULL;
    void *p = fgl_aligned_alloc(64, want * elem_size);
    if (!p)
