@@ -246,6 +246,15 @@ static char *dup_str(const char *s)
     return memcpy(malloc(n), s, n);
 }
 
+static void free_items(struct fc_item *items, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        free(items[i].name); free(items[i].tags); free(items[i].replay);
+        free(items[i].side[0].data); free(items[i].side[1].data);
+    }
+    free(items);
+}
+
 static void add_item(struct fc_item **items, size_t *n, size_t *cap, const char *name,
                      const char *tags, const char *replay, int tolerance)
 {
@@ -473,6 +482,7 @@ int main(int argc, char **argv)
             else
                 printf("%s\t%s\n", items[i].name, items[i].tags);
         }
+        free_items(items, n);
         return 0;
     }
     struct known known = { NULL, NULL, 0 };
@@ -507,11 +517,7 @@ int main(int argc, char **argv)
     if (o.known)
         printf("known differences (%s): %zu still differ, %zu now exact; other differences: %zu\n",
                o.known, c.expected, c.stale, c.unexpected);
-    for (size_t i = 0; i < n; i++) {
-        free(items[i].name); free(items[i].tags); free(items[i].replay);
-        free(items[i].side[0].data); free(items[i].side[1].data);
-    }
-    free(items);
+    free_items(items, n);
     for (int s = 0; s < 2; s++) {
         free(info[s][0]);
         free(info[s][1]);
