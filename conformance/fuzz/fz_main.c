@@ -560,14 +560,20 @@ int main(int argc, char **argv)
     if (print) {
         fz_gen_init(NULL);
         fz_call *calls = malloc(opt.calls * sizeof *calls);
-        if (print == 2)   /* --write-stream FILE --seed S: the stream file of seed S */
-            return fz_write_stream(stream_file, calls, fz_gen_seed(seed, calls, opt.calls)) ? 1 : 0;
-        size_t n = fz_gen_seed(print_seed, calls, opt.calls);
-        char comment[128];
-        snprintf(comment, sizeof comment, "fixgl-fuzz stream of seed %llu (%zu calls)",
-                 print_seed, n);
-        fz_print_c(stdout, calls, n, comment);
-        return 0;
+        if (!calls)
+            return 2;
+        int rc = 0;
+        if (print == 2) {   /* --write-stream FILE --seed S: the stream file of seed S */
+            rc = fz_write_stream(stream_file, calls, fz_gen_seed(seed, calls, opt.calls)) ? 1 : 0;
+        } else {
+            size_t n = fz_gen_seed(print_seed, calls, opt.calls);
+            char comment[128];
+            snprintf(comment, sizeof comment, "fixgl-fuzz stream of seed %llu (%zu calls)",
+                     print_seed, n);
+            fz_print_c(stdout, calls, n, comment);
+        }
+        free(calls);
+        return rc;
     }
     if (!query_missing(opt.oracle, missing) || !query_missing(opt.fixgl, missing)) {
         fprintf(stderr, "fixgl-fuzz: cannot run the executors %s, %s\n", opt.oracle, opt.fixgl);
