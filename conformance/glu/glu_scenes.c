@@ -302,8 +302,10 @@ static void scene_mipmap2d_types(void)
 {
    static GLushort la[19][13][2];
    static GLfloat rgba[11][29][4];
-   static GLushort p565[9][21];
-   static GLushort p4444[7][5];
+   /* GL_UNPACK_ALIGNMENT 4: a row of 21 (5) shorts is 42 (10) bytes, padded
+    * to 44 (12); the arrays hold the padding, which GL skips */
+   static GLushort p565[9][22];
+   static GLushort p4444[7][6];
    for (int y = 0; y < 19; y++)
       for (int x = 0; x < 13; x++) {
          la[y][x][0] = (GLushort)(x * 5000 + y * 300);
