@@ -44,7 +44,8 @@ for sym in glXQueryExtension glXQueryVersion glXGetClientString glXQueryServerSt
            glXWaitGL glXWaitX glXIsDirect glXUseXFont glXCreateWindow glXDestroyWindow \
            glXCreatePixmap glXDestroyPixmap glXCreateGLXPixmap glXDestroyGLXPixmap \
            glXGetProcAddress glXGetProcAddressARB glXSwapIntervalEXT glXSwapIntervalMESA \
-           glXGetSwapIntervalMESA; do
+           glXGetSwapIntervalMESA glXCreateContextAttribsARB glXCreatePbuffer glXDestroyPbuffer \
+           glXQueryDrawable; do
   grep -qx "$sym" <<<"$symbols" || fail "$sym is not exported"
 done
 echo "$(printf '%s\n' "$symbols" | grep -c -E '^glX') glX* functions"

@@ -31,10 +31,20 @@
  * extension data, freed by XCloseDisplay's close hook), the current GLX
  * context is thread-local: no other mutable state.
  *
+ * Pbuffers (glXCreatePbuffer) are drawables of fixgl's memory alone: an
+ * XID of the client's (XAllocID, as Mesa's client-side pbuffers), the
+ * size asked for, nothing presented.  GLX_ARB_create_context
+ * (glXCreateContextAttribsARB) checks its attributes in the oracle's
+ * order and with its X errors (create_attribs_error), and refuses every
+ * version above 1.5 as the oracle refuses a version it lacks.  GLX errors
+ * are raised as X errors the client's handler sees (glx_error), with the
+ * server's GLX codes when it has the extension.
+ *
  * Not done, on purpose or not yet: separate read drawables (reads come
- * from the draw drawable), pbuffers (glXCreatePbuffer returns None),
- * front-buffer drawing in a double-buffered config (there is one colour
- * buffer: what glXSwapBuffers presents), GLX_ARB_create_context.
+ * from the draw drawable), front-buffer drawing in a double-buffered
+ * config (there is one colour buffer: what glXSwapBuffers presents), the
+ * oracle's 32-bit depth configs (GLX_DEPTH_SIZE 32: fixgl's framebuffers
+ * have no Z32 format).
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
@@ -61,8 +71,22 @@
 #define GLX_MAX_SIZE 16384
 
 static const char glx_extensions[] =
+   "GLX_ARB_create_context GLX_ARB_create_context_profile "
    "GLX_ARB_get_proc_address GLX_EXT_swap_control GLX_MESA_swap_control "
    "GLX_SGI_swap_control";
+
+/* GLX protocol: error numbers past the extension's error base, and the
+ * minor opcodes the oracle names in its errors (glxproto.h) */
+#define GLX_ERR_BAD_DRAWABLE     2    /* GLXBadDrawable */
+#define GLX_ERR_BAD_FBCONFIG     9    /* GLXBadFBConfig */
+#define GLX_ERR_BAD_PROFILE     13    /* GLXBadProfileARB */
+#define GLX_OP_CREATE_PBUFFER   27    /* X_GLXCreatePbuffer */
+#define GLX_OP_GET_DRAWABLE_ATTRIBUTES 29
+#define GLX_OP_CREATE_CONTEXT_ATTRIBS  34  /* X_GLXCreateContextAttribsARB */
+
+/* The largest pbuffer the configs report (GLX_MAX_PBUFFER_WIDTH/HEIGHT,
+ * the oracle's values; GLX_MAX_PBUFFER_PIXELS is 0 there) */
+#define GLX_MAX_PBUFFER 4096
 
 /* ---- configs --------------------------------------------------------- */
 
@@ -88,6 +112,9 @@ struct glx_drawable {
    struct glx_display *disp;
    XID xid;
    bool pixmap;
+   bool pbuffer;                /* no X drawable: sized by its creator */
+   int pb_width, pb_height;     /* a pbuffer's size as asked for */
+   bool pb_largest;
    bool has_buffer;
    struct __GLXFBConfigRec cfg; /* the buffers' formats */
    void *depth_mem;
@@ -117,6 +144,8 @@ struct glx_display {
    struct glx_visual_choice *choices;
    struct __GLXcontextRec *contexts;   /* every context made for dpy */
    int has_shm;                 /* -1 not asked yet, 0, 1 */
+   /* the server's GLX extension (its errors carry these codes), or 0 */
+   int glx_opcode, glx_error_base, glx_event_base;
 };
 
 struct __GLXcontextRec {
@@ -284,6 +313,8 @@ static struct glx_display *get_display(Display *dpy)
       return NULL;
    }
    gd->has_shm = -1;
+   if (!XQueryExtension(dpy, "GLX", &gd->glx_opcode, &gd->glx_event_base, &gd->glx_error_base))
+      gd->glx_opcode = gd->glx_event_base = gd->glx_error_base = 0;
    pthread_mutex_init(&gd->lock, NULL);
    e->number = codes->extension;
    e->free_private = ext_data_free;
@@ -292,6 +323,25 @@ static struct glx_display *get_display(Display *dpy)
    XESetCloseDisplay(dpy, codes->extension, close_display);
    XUnlockDisplay(dpy);
    return gd;
+}
+
+/* An X error for the client's error handler, as the oracle's
+ * __glXSendError raises them: a GLX error (past the server's GLX error
+ * base) or a core one (BadMatch, BadValue), with the GLX opcode and the
+ * request's minor opcode. */
+static void glx_error(Display *dpy, bool glx, int code, int minor, XID resource)
+{
+   struct glx_display *gd = find_display(dpy);
+   xError err;
+   memset(&err, 0, sizeof(err));
+   LockDisplay(dpy);
+   err.errorCode = (CARD8)(glx ? (gd ? gd->glx_error_base : 0) + code : code);
+   err.sequenceNumber = (CARD16)dpy->request;
+   err.resourceID = (CARD32)resource;
+   err.minorCode = (CARD16)minor;
+   err.majorCode = (CARD8)(gd ? gd->glx_opcode : 0);
+   _XError(dpy, &err);
+   UnlockDisplay(dpy);
 }
 
 /* ---- choosing configs --------------------------------------------------- */
@@ -386,7 +436,8 @@ static bool config_matches(const struct __GLXFBConfigRec *c, const struct glx_re
       return false;
    if (r->level != DONT_CARE && r->level != 0)
       return false;
-   if (r->drawable_type != DONT_CARE && (r->drawable_type & ~(GLX_WINDOW_BIT | GLX_PIXMAP_BIT)))
+   if (r->drawable_type != DONT_CARE &&
+       (r->drawable_type & ~(GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT)))
       return false;
    if (r->x_renderable != DONT_CARE && !r->x_renderable)
       return false;
@@ -566,7 +617,9 @@ static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
    case GLX_ACCUM_BLUE_SIZE:
    case GLX_ACCUM_ALPHA_SIZE:      *value = c->accum; break;
    case GLX_RENDER_TYPE:           *value = GLX_RGBA_BIT; break;
-   case GLX_DRAWABLE_TYPE:         *value = GLX_WINDOW_BIT | GLX_PIXMAP_BIT; break;
+   case GLX_DRAWABLE_TYPE:         *value = GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT; break;
+   case GLX_MAX_PBUFFER_WIDTH:
+   case GLX_MAX_PBUFFER_HEIGHT:    *value = GLX_MAX_PBUFFER; break;
    case GLX_X_RENDERABLE:          *value = True; break;
    case GLX_VISUAL_ID:             *value = (int)c->visualid; break;
    case GLX_X_VISUAL_TYPE:         *value = GLX_TRUE_COLOR; break;
@@ -577,8 +630,6 @@ static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
    case GLX_TRANSPARENT_GREEN_VALUE:
    case GLX_TRANSPARENT_BLUE_VALUE:
    case GLX_TRANSPARENT_ALPHA_VALUE:
-   case GLX_MAX_PBUFFER_WIDTH:
-   case GLX_MAX_PBUFFER_HEIGHT:
    case GLX_MAX_PBUFFER_PIXELS:
    case GLX_SAMPLE_BUFFERS:
    case GLX_SAMPLES:               *value = 0; break;
@@ -830,8 +881,12 @@ static bool update_size(struct glx_drawable *d, struct fgl_context *ctx)
    Window root;
    int x, y;
    unsigned w = 0, h = 0, bw, depth;
-   if (!XGetGeometry(d->disp->dpy, d->xid, &root, &x, &y, &w, &h, &bw, &depth))
+   if (d->pbuffer) {
+      w = (unsigned)d->pb_width;
+      h = (unsigned)d->pb_height;
+   } else if (!XGetGeometry(d->disp->dpy, d->xid, &root, &x, &y, &w, &h, &bw, &depth)) {
       return d->has_buffer;
+   }
    if (w < 1)
       w = 1;
    if (h < 1)
@@ -942,7 +997,7 @@ static bool ensure_image(struct glx_drawable *d, int w, int h)
 static void present(struct glx_drawable *d)
 {
    struct fgl_framebuffer *fb = &d->fb;
-   if (!d->has_buffer)
+   if (!d->has_buffer || d->pbuffer)
       return;
    fgl_lazy_resolve(fb, FGL_LAZY_COLOR);
    const int w = fb->Width, h = fb->Height;
@@ -1019,6 +1074,81 @@ GLXAPI GLXContext glXCreateNewContext(Display *dpy, GLXFBConfig config, int rend
    if (!gd || !config || renderType != GLX_RGBA_TYPE)
       return NULL;
    return create_context(gd, config, shareList);
+}
+
+/* GLX_ARB_create_context: the attributes checked in the oracle's order
+ * (the glx suite's glx-glxattribs): an undefined version (major below 1,
+ * 1.6+, 2.2+, 3.4+), colour index from 3.0 on and forward compatibility
+ * before 3.0 are BadMatch; unknown flag bits BadValue; a profile mask
+ * other than core or compatibility GLXBadProfileARB; an unknown attribute
+ * and colour index BadValue; a version the library lacks GLXBadFBConfig
+ * (minor opcode 0, as the oracle raises it).  fixgl is GL 1.5: every
+ * version above it is refused that way, whatever the profile.  Returns
+ * the error (code, whether GLX's, minor opcode) or false. */
+struct attribs_error {
+   bool glx;
+   int code, minor;
+};
+
+static bool create_attribs_error(const int *attribs, struct attribs_error *e)
+{
+   int major = 1, minor = 0, flags = 0, profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
+   int render_type = GLX_RGBA_TYPE;
+   bool unknown = false;
+   for (int i = 0; attribs && attribs[i] != None; i += 2) {
+      switch (attribs[i]) {
+      case GLX_CONTEXT_MAJOR_VERSION_ARB: major = attribs[i + 1]; break;
+      case GLX_CONTEXT_MINOR_VERSION_ARB: minor = attribs[i + 1]; break;
+      case GLX_CONTEXT_FLAGS_ARB:         flags = attribs[i + 1]; break;
+      case GLX_CONTEXT_PROFILE_MASK_ARB:  profile = attribs[i + 1]; break;
+      case GLX_RENDER_TYPE:               render_type = attribs[i + 1]; break;
+      default:                            unknown = true; break;
+      }
+   }
+   const int known_flags = GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB |
+                           0x4 /* robust access */ | 0x8 /* reset isolation */;
+   e->glx = false;
+   e->minor = GLX_OP_CREATE_CONTEXT_ATTRIBS;
+   if (major < 1 || (major == 1 && minor > 5) || (major == 2 && minor > 1) ||
+       (major == 3 && minor > 3) || minor < 0 ||
+       (render_type == GLX_COLOR_INDEX_TYPE && major >= 3) ||
+       ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3)) {
+      e->code = BadMatch;
+   } else if (flags & ~known_flags) {
+      e->code = BadValue;
+   } else if (profile != GLX_CONTEXT_CORE_PROFILE_BIT_ARB &&
+              profile != GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB) {
+      e->glx = true;
+      e->code = GLX_ERR_BAD_PROFILE;
+   } else if (unknown || render_type != GLX_RGBA_TYPE) {
+      e->code = BadValue;
+   } else if (major > 1) {
+      e->glx = true;
+      e->code = GLX_ERR_BAD_FBCONFIG;
+      e->minor = 0;
+   } else {
+      return false;
+   }
+   return true;
+}
+
+GLXAPI GLXContext glXCreateContextAttribsARB(Display *dpy, GLXFBConfig config, GLXContext shareContext,
+                                             Bool direct, const int *attribList)
+{
+   (void)direct;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd)
+      return NULL;
+   struct attribs_error e;
+   if (!config) {
+      glx_error(dpy, true, GLX_ERR_BAD_FBCONFIG, GLX_OP_CREATE_CONTEXT_ATTRIBS, 0);
+      return NULL;
+   }
+   if (create_attribs_error(attribList, &e)) {
+      glx_error(dpy, e.glx, e.code, e.minor, 0);
+      return NULL;
+   }
+   return create_context(gd, config, shareContext);
 }
 
 GLXAPI void glXDestroyContext(Display *dpy, GLXContext ctx)
@@ -1222,43 +1352,86 @@ GLXAPI void glXDestroyGLXPixmap(Display *dpy, GLXPixmap pixmap)
    glXDestroyWindow(dpy, pixmap);
 }
 
+/* A pbuffer of the config's formats [S: glx/glx_pbuffer.c:CreatePbuffer]:
+ * GLX_PBUFFER_WIDTH/HEIGHT (0 by default) and GLX_LARGEST_PBUFFER (False;
+ * the size asked for is always given, as the oracle gives it); the
+ * contents are always preserved (the oracle reports
+ * GLX_PRESERVED_CONTENTS True whatever was asked); other attributes are
+ * ignored, as the oracle ignores them.  No config: GLXBadFBConfig. */
 GLXAPI GLXPbuffer glXCreatePbuffer(Display *dpy, GLXFBConfig config, const int *attribList)
 {
-   /* no pbuffer configs (GLX_DRAWABLE_TYPE has no GLX_PBUFFER_BIT) */
-   (void)dpy;
-   (void)config;
-   (void)attribList;
-   return None;
+   struct glx_display *gd = get_display(dpy);
+   if (!gd)
+      return None;
+   if (!config) {
+      glx_error(dpy, true, GLX_ERR_BAD_FBCONFIG, GLX_OP_CREATE_PBUFFER, 0);
+      return None;
+   }
+   int width = 0, height = 0;
+   bool largest = false;
+   for (int i = 0; attribList && attribList[i] != None; i += 2) {
+      switch (attribList[i]) {
+      case GLX_PBUFFER_WIDTH:      width = attribList[i + 1]; break;
+      case GLX_PBUFFER_HEIGHT:     height = attribList[i + 1]; break;
+      case GLX_LARGEST_PBUFFER:    largest = attribList[i + 1] != 0; break;
+      default:                     break;
+      }
+   }
+   if (width < 0 || height < 0 || width > GLX_MAX_SIZE || height > GLX_MAX_SIZE) {
+      glx_error(dpy, false, BadValue, GLX_OP_CREATE_PBUFFER, 0);
+      return None;
+   }
+   XLockDisplay(dpy);
+   const XID xid = XAllocID(dpy);
+   XUnlockDisplay(dpy);
+   struct glx_drawable *d = add_drawable(gd, xid, config, false);
+   if (!d)
+      return None;
+   d->pbuffer = true;
+   /* a 0x0 pbuffer reports its size; its buffers hold one pixel */
+   d->pb_width = width;
+   d->pb_height = height;
+   d->pb_largest = largest;
+   return xid;
 }
 
 GLXAPI void glXDestroyPbuffer(Display *dpy, GLXPbuffer pbuf)
 {
-   (void)dpy;
-   (void)pbuf;
+   glXDestroyWindow(dpy, pbuf);
 }
 
+/* [S: glx/glx_pbuffer.c:__glXGetDrawableAttribute] None or a drawable
+ * GLX does not know: GLXBadDrawable, *value untouched; else *value is 0
+ * for an attribute without a value. */
 GLXAPI void glXQueryDrawable(Display *dpy, GLXDrawable draw, int attribute, unsigned int *value)
 {
    struct glx_display *gd = get_display(dpy);
-   struct glx_drawable *d = gd ? find_drawable(gd, draw) : NULL;
-   if (!value)
+   struct glx_drawable *d = gd && draw != None ? find_drawable(gd, draw) : NULL;
+   if (!gd || !value)
       return;
+   if (!d) {
+      glx_error(dpy, true, GLX_ERR_BAD_DRAWABLE, GLX_OP_GET_DRAWABLE_ATTRIBUTES, draw);
+      return;
+   }
+   *value = 0;
    switch (attribute) {
    case GLX_WIDTH:
-      *value = d && d->has_buffer ? (unsigned)d->fb.Width : 0;
+      *value = d->pbuffer ? (unsigned)d->pb_width : d->has_buffer ? (unsigned)d->fb.Width : 0;
       return;
    case GLX_HEIGHT:
-      *value = d && d->has_buffer ? (unsigned)d->fb.Height : 0;
+      *value = d->pbuffer ? (unsigned)d->pb_height : d->has_buffer ? (unsigned)d->fb.Height : 0;
       return;
    case GLX_PRESERVED_CONTENTS:
+      *value = d->pbuffer;
+      return;
    case GLX_LARGEST_PBUFFER:
-      *value = 0;
+      *value = d->pbuffer && d->pb_largest;
       return;
    case GLX_FBCONFIG_ID:
-      *value = d ? (unsigned)d->cfg.id : 0;
+      *value = (unsigned)d->cfg.id;
       return;
    case GLX_SWAP_INTERVAL_EXT:
-      *value = d ? (unsigned)d->swap_interval : 0;
+      *value = (unsigned)d->swap_interval;
       return;
    case GLX_MAX_SWAP_INTERVAL_EXT:
       *value = 1;
@@ -1320,11 +1493,14 @@ GLXAPI int glXSwapIntervalSGI(int interval)
 
 GLXAPI Bool glXQueryExtension(Display *dpy, int *errorBase, int *eventBase)
 {
-   /* GLX is done in the client: any display has it */
+   /* GLX is done in the client: any display has it; the error and event
+    * bases are the server's GLX extension's (those of the errors
+    * glx_error raises), 0 without one */
+   struct glx_display *gd = get_display(dpy);
    if (errorBase)
-      *errorBase = 0;
+      *errorBase = gd ? gd->glx_error_base : 0;
    if (eventBase)
-      *eventBase = 0;
+      *eventBase = gd ? gd->glx_event_base : 0;
    return dpy ? True : False;
 }
 
@@ -1376,6 +1552,7 @@ struct glx_proc {
 static const struct glx_proc glx_procs[] = {
    GLX_PROC(glXChooseFBConfig),        GLX_PROC(glXChooseVisual),
    GLX_PROC(glXCopyContext),           GLX_PROC(glXCreateContext),
+   GLX_PROC(glXCreateContextAttribsARB),
    GLX_PROC(glXCreateGLXPixmap),       GLX_PROC(glXCreateNewContext),
    GLX_PROC(glXCreatePbuffer),         GLX_PROC(glXCreatePixmap),
    GLX_PROC(glXCreateWindow),          GLX_PROC(glXDestroyContext),
