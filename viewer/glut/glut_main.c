@@ -210,15 +210,72 @@ static char *xstrdup(const char *s)
 
 /* ---- initialisation ----------------------------------------------------- */
 
+/* One integer of an X geometry string as Xlib's ReadInteger reads it: an
+ * optional sign, then any digits (none is 0); returns where it stopped. */
+static const char *geometry_int(const char *s, int *value)
+{
+   int sign = 1;
+   if (*s == '+' || *s == '-')
+      sign = *s++ == '-' ? -1 : 1;
+   unsigned v = 0;
+   for (; *s >= '0' && *s <= '9'; s++)
+      v = v * 10u + (unsigned)(*s - '0');
+   *value = sign * (int)v;
+   return s;
+}
+
+/* -geometry [=][W][{xX}H][{+-}X[{+-}Y]] by XParseGeometry's grammar (the
+ * whole string or nothing; a field is bad when its reader consumed
+ * nothing), applied as freeglut's glutInit does: a negative offset
+ * counts from the right or bottom edge of the screen, less the window's
+ * size. */
 static void parse_geometry(const char *g)
 {
-   int w, h, x, y;
-   if (sscanf(g, "%dx%d%d%d", &w, &h, &x, &y) == 4) {
-      G.init_w = w, G.init_h = h, G.init_x = x, G.init_y = y;
-   } else if (sscanf(g, "%dx%d", &w, &h) == 2) {
-      G.init_w = w, G.init_h = h;
-   } else if (sscanf(g, "%d%d", &x, &y) == 2) {
-      G.init_x = x, G.init_y = y;
+   enum { W = 1, H = 2, X = 4, Y = 8, XNEG = 16, YNEG = 32 };
+   int mask = 0, w = 0, h = 0, x = 0, y = 0;
+   const char *s = g, *next;
+   if (*s == '=')
+      s++;
+   if (*s && *s != '+' && *s != '-' && *s != 'x' && *s != 'X') {
+      if ((next = geometry_int(s, &w)) == s)
+         return;
+      s = next;
+      mask |= W;
+   }
+   if (*s == 'x' || *s == 'X') {
+      s++;
+      if ((next = geometry_int(s, &h)) == s)
+         return;
+      s = next;
+      mask |= H;
+   }
+   if (*s == '+' || *s == '-') {
+      const bool neg = *s++ == '-';
+      if ((next = geometry_int(s, &x)) == s)
+         return;
+      s = next;
+      x = neg ? -x : x;
+      mask |= X | (neg ? XNEG : 0);
+      if (*s == '+' || *s == '-') {
+         const bool yneg = *s++ == '-';
+         if ((next = geometry_int(s, &y)) == s)
+            return;
+         s = next;
+         y = yneg ? -y : y;
+         mask |= Y | (yneg ? YNEG : 0);
+      }
+   }
+   if (*s != '\0')
+      return;
+   if (mask & W)
+      G.init_w = w;
+   if (mask & H)
+      G.init_h = h;
+   /* a position is used only when it has both offsets (freeglut's
+    * Position.Use; glutGet(GLUT_INIT_WINDOW_X) is -1 otherwise) */
+   if ((mask & (X | Y)) == (X | Y)) {
+      G.init_x = (mask & XNEG) ? x + glutGet(GLUT_SCREEN_WIDTH) - G.init_w : x;
+      G.init_y = (mask & YNEG) ? y + glutGet(GLUT_SCREEN_HEIGHT) - G.init_h : y;
    }
 }
 
@@ -254,24 +311,37 @@ GLUT_EXPORT void glutInit(int *argcp, char **argv)
    free(G.program);
    G.program = xstrdup(argcp && argv && *argcp > 0 && argv[0] ? argv[0] : "");
 
-   /* X11 GLUT options: -geometry is honoured, the others are accepted and
-    * removed from argv. */
+   /* freeglut's options, as its glutInit takes them
+    * (fghParseCommandLineArguments): -display NAME and -geometry SPEC
+    * (each an error without its value), -direct, -indirect (an error
+    * together), -iconic, -gldebug, -sync; they are removed from argv,
+    * everything else stays, in order, for the program's own parsing.
+    * The geometry is applied once the screen is known, below. */
+   const char *geometry = NULL;
    if (argcp && argv) {
+      const int argc = *argcp;
       int out = 1;
-      for (int i = 1; i < *argcp; i++) {
+      for (int i = 1; i < argc; i++) {
          const char *a = argv[i];
-         if ((!strcmp(a, "-display") || !strcmp(a, "-geometry")) && i + 1 < *argcp) {
+         if (!strcmp(a, "-display") || !strcmp(a, "-geometry")) {
+            if (++i >= argc)
+               freeglut_error(!strcmp(a, "-display")
+                                 ? "-display parameter must be followed by display name"
+                                 : "-geometry parameter must be followed by window geometry settings");
             if (!strcmp(a, "-geometry"))
-               parse_geometry(argv[i + 1]);
-            i++;
-         } else if (!strcmp(a, "-iconic") || !strcmp(a, "-indirect") || !strcmp(a, "-direct") ||
-                    !strcmp(a, "-gldebug") || !strcmp(a, "-sync")) {
+               geometry = argv[i];
+         } else if (!strcmp(a, "-direct") || !strcmp(a, "-indirect")) {
+            const bool direct = !strcmp(a, "-direct");
+            if (G.direct_rendering == (direct ? GLUT_FORCE_INDIRECT_CONTEXT : GLUT_FORCE_DIRECT_CONTEXT))
+               freeglut_error("parameters ambiguity, -direct and -indirect cannot be both specified");
+            G.direct_rendering = direct ? GLUT_FORCE_DIRECT_CONTEXT : GLUT_FORCE_INDIRECT_CONTEXT;
+         } else if (!strcmp(a, "-iconic") || !strcmp(a, "-gldebug") || !strcmp(a, "-sync")) {
             /* accepted, no effect */
          } else {
             argv[out++] = argv[i];
          }
       }
-      if (out < *argcp)
+      if (out < argc)
          argv[out] = NULL;
       *argcp = out;
    }
@@ -314,6 +384,8 @@ GLUT_EXPORT void glutInit(int *argcp, char **argv)
          glut_fatal("cannot initialise GLFW (no display? set FIXGLUT_HEADLESS=1)");
    }
 #endif
+   if (geometry)
+      parse_geometry(geometry);
 }
 
 GLUT_EXPORT void glutInitDisplayMode(unsigned int mode)
