@@ -38,7 +38,13 @@
  * and sprites with GL_COORD_REPLACE on random units and either origin),
  * vertex arrays,
  * and a few glDrawPixels (colour, depth, stencil), glBitmap and
- * glCopyPixels.  The internal colour, depth and stencil
+ * glCopyPixels; now and then, in the middle of a case, a clear of some of
+ * the buffers (whole: lazy; or scissored or masked: a quad) or a
+ * glReadPixels of colour, depth or stencil, whose bytes must be the same
+ * in both contexts.  Each context draws with one thread (directly, a
+ * triangle writing the lazy clears of its box's tiles first, scene.c) or
+ * the default threads (binned into tiles), chosen per batch and per side.
+ * The internal colour, depth and stencil
  * buffers of the two contexts are then compared byte for byte, and the
  * results of the occlusion queries that about half the cases draw inside
  * (the samples each kernel counts) number for number.
@@ -167,6 +173,11 @@ struct config {
    GLenum format;
    int depth, stencil;
    int w, h;
+   /* FIXGL_NUM_THREADS of the fast and the reference context (1, or 0:
+    * the default): one thread draws directly, each triangle writing the
+    * lazy clears of its box first (scene.c "Lazy clears"); more bin into
+    * tiles */
+   int threads[2];
 };
 
 static const char *format_name(GLenum f)
@@ -196,6 +207,9 @@ static struct config pick_config(uint64_t bseed)
    const int s = rnd(16) < 14 ? rnd(5) : 5;
    c.w = sizes[s][0];
    c.h = sizes[s][1];
+   /* (from the seed's bits, not its random stream) */
+   c.threads[0] = (bseed >> 3) % 4 ? 1 : 0;
+   c.threads[1] = (bseed >> 5) % 2 ? 1 : 0;
    return c;
 }
 
@@ -215,7 +229,16 @@ static bool make_side(struct side *sd, const struct config *c, bool reference)
       reference = false;
    if (reference)
       setenv("FIXGL_KERNELS", "reference", 1);
+   const char *nt = getenv("FIXGL_NUM_THREADS");
+   char *saved = nt ? strdup(nt) : NULL;
+   if (c->threads[reference])
+      setenv("FIXGL_NUM_THREADS", "1", 1);
    sd->osm = OSMesaCreateContextExt(c->format, c->depth, c->stencil, 0, NULL);
+   if (saved)
+      setenv("FIXGL_NUM_THREADS", saved, 1);
+   else
+      unsetenv("FIXGL_NUM_THREADS");
+   free(saved);
    if (reference)
       unsetenv("FIXGL_KERNELS");
    if (!sd->osm)
@@ -1463,6 +1486,55 @@ static void record_case(void)
 /* the occlusion queries' results of a batch, [fast] */
 static GLuint g_queries[2][16];
 static int g_nqueries[2];
+/* what glReadPixels read in the middle of the batch (FNV-1a), per side */
+static uint64_t g_reads[2];
+
+static void hash_bytes(uint64_t *h, const void *p, size_t n)
+{
+   const uint8_t *b = p;
+   for (size_t i = 0; i < n; i++)
+      *h = (*h ^ b[i]) * 0x100000001b3ull;
+}
+
+/* In the middle of a frame, where blocks still hold lazy clears and
+ * others were drawn: a clear of some of the buffers (whole or under the
+ * scissor and masks: lazy, or drawn as a quad), or a glReadPixels of a
+ * random rectangle of colour, depth or stencil. */
+static void mid_frame(bool fast)
+{
+   if (chance(0.5f)) {
+      static const GLbitfield masks[] = {
+         GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT,
+         GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+         GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+         GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+      };
+      const GLbitfield m = PICK(masks);
+      float cc[4];
+      rnd_color4(cc);
+      const double cd = rndf();
+      const int cs = rnd(256);
+      L("  mid-frame clear 0x%x colour %.9g %.9g %.9g %.9g depth %.17g stencil %d (call %ld)", m,
+        cc[0], cc[1], cc[2], cc[3], cd, cs, g_calls);
+      glClearColor(cc[0], cc[1], cc[2], cc[3]);
+      glClearDepth(cd);
+      glClearStencil(cs);
+      glClear(m);
+      return;
+   }
+   const int x = rnd(G.cfg.w), y = rnd(G.cfg.h);
+   const int w = 1 + rnd(G.cfg.w - x), h = 1 + rnd(G.cfg.h - y);
+   static const GLenum kinds[] = { GL_RGBA, GL_RGBA, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX };
+   GLenum kind = PICK(kinds);
+   if ((kind == GL_DEPTH_COMPONENT && !G.cfg.depth) || (kind == GL_STENCIL_INDEX && !G.cfg.stencil))
+      kind = GL_RGBA;
+   L("  mid-frame glReadPixels 0x%x %d %d %dx%d (call %ld)", kind, x, y, w, h, g_calls);
+   static uint32_t px[96 * 64];
+   memset(px, 0, sizeof px);
+   glPixelStorei(GL_PACK_ALIGNMENT, 4);
+   glReadPixels(x, y, w, h, kind, kind == GL_RGBA ? GL_UNSIGNED_BYTE : GL_UNSIGNED_INT, px);
+   hash_bytes(&g_reads[fast], px, (size_t)w * (size_t)h * 4);
+}
 
 static void gen_batch(uint64_t bseed, bool fast)
 {
@@ -1510,6 +1582,7 @@ static void gen_batch(uint64_t bseed, bool fast)
 
    const int ncases = 4 + rnd(6);
    g_nqueries[fast] = 0;
+   g_reads[fast] = 0xcbf29ce484222325ull;
    for (int c = 0; c < ncases; c++) {
       G.case_index = c;
       G.case_tris = G.case_lines = G.case_points = false;
@@ -1544,6 +1617,8 @@ static void gen_batch(uint64_t bseed, bool fast)
       }
       const int nprims = 2 + rnd(14);
       for (int i = 0; i < nprims; i++) {
+         if (chance(0.04f) && draw_allowed())
+            mid_frame(fast);
          const int what = rnd(100);
          if (!draw_allowed())
             break;
@@ -1717,6 +1792,11 @@ static bool run_pair(long b, uint64_t bseed, long limit, bool record, struct dif
    }
    bool same = compare_buffers(&c, &fast, &ref, d);
    /* then the occlusion queries' counts */
+   if (same && g_reads[0] != g_reads[1]) {
+      *d = (struct diff){ "glReadPixels in the middle of the batch", 0, 0, (uint32_t)g_reads[0],
+                          (uint32_t)g_reads[1] };
+      same = false;
+   }
    for (int i = 0; same && i < g_nqueries[0] && i < g_nqueries[1]; i++) {
       if (g_queries[1][i] != g_queries[0][i]) {
          *d = (struct diff){ "occlusion query", i, 0, g_queries[0][i], g_queries[1][i] };
@@ -1813,7 +1893,7 @@ static bool self_check(void)
 {
    /* a batch drawn twice into equal contexts compares equal; one byte of
     * each buffer changed does not */
-   const struct config c = { OSMESA_RGBA, 24, 8, 61, 37 };
+   const struct config c = { OSMESA_RGBA, 24, 8, 61, 37, { 1, 0 } };
    struct side a = { 0 }, r = { 0 };
    if (!make_side(&a, &c, false) || !make_side(&r, &c, true))
       return false;
