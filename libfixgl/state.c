@@ -339,7 +339,7 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
       const GLenum f = base_format;
       if (f == GL_ALPHA)
          src_rgb[0] = GL_PREVIOUS;
-      else if (f == GL_LUMINANCE || f == GL_RGB || f == GL_RED)
+      else if (f == GL_LUMINANCE || f == GL_RGB)
          src_a[0] = GL_PREVIOUS;
       switch (env) {
       case GL_REPLACE:
@@ -354,7 +354,7 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
          src_a[0] = GL_PREVIOUS;
          if (f == GL_ALPHA || f == GL_LUMINANCE || f == GL_LUMINANCE_ALPHA || f == GL_INTENSITY)
             src_rgb[0] = GL_PREVIOUS;
-         else if (f == GL_RGB || f == GL_RED)   /* GL_RED: GL_DEPTH_TEXTURE_MODE */
+         else if (f == GL_RGB)
             mode_rgb = GL_REPLACE;
          else
             src_rgb[2] = GL_TEXTURE;

@@ -1611,7 +1611,50 @@ static void query_vbo_draw(fc_h *h)
 #define VBO_N(name, frames, fn) FC_CASE_RGBA("gl15/vbo_" name, 64, 64, frames, "api gl15 vbo", fn)
 #define QRY(name, frames, fn) FC_CASE("gl15/query_" name, 64, 64, OSMESA_RGBA, 24, 8, frames, "api gl15 query", fn)
 
+/* glMultiDrawElements with an element buffer: an index pointer of 0 is
+ * the buffer's offset 0, not the NULL that cancels a call of client
+ * indices (found by the random families' buffer objects); then the same
+ * pointers without the buffer (cancelled), and offsets mixed. */
+static void multidraw_elements_offset0(fc_h *h)
+{
+    static const GLfloat v[8][2] = { { 4, 4 }, { 28, 4 }, { 4, 28 }, { 28, 28 },
+                                     { 34, 6 }, { 60, 10 }, { 36, 40 }, { 58, 44 } };
+    static const GLubyte c[8][4] = { { 255, 0, 0, 255 }, { 0, 255, 0, 255 }, { 0, 0, 255, 255 },
+                                     { 255, 255, 0, 255 }, { 0, 255, 255, 255 }, { 255, 0, 255, 255 },
+                                     { 128, 128, 128, 255 }, { 255, 128, 0, 255 } };
+    static const GLushort idx[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 1, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, c);
+    GLuint ibo;
+    glGenBuffers(1, &ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof idx, idx, GL_STATIC_DRAW);
+    const GLsizei count[2] = { 4, 4 };
+    const GLvoid *at[2] = { (const GLvoid *)0, (const GLvoid *)(4 * sizeof(GLushort)) };
+    glMultiDrawElements(GL_QUAD_STRIP, count, GL_UNSIGNED_SHORT, at, 1);
+    fc_error(h, "offset 0");
+    fc_capture(h);
+    glMultiDrawElements(GL_TRIANGLE_STRIP, count, GL_UNSIGNED_SHORT, at, 2);
+    fc_error(h, "offsets 0 and 8");
+    fc_capture(h);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    fcu_clear(0, 0, 0, 1, 1);
+    const GLvoid *client[2] = { NULL, idx + 4 };
+    glMultiDrawElements(GL_TRIANGLE_STRIP, count, GL_UNSIGNED_SHORT, client, 2);
+    fc_error(h, "client NULL");
+    fc_capture(h);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDeleteBuffers(1, &ibo);
+}
+
 const fc_case fc_cases_gl15[] = {
+    FC_CASE_RGBA("gl15/multidraw_elements_offset0", 64, 48, 3, "gl14 gl15 vbo varray",
+                 multidraw_elements_offset0),
     VBO("arrays_points", arrays_points),
     VBO("arrays_lines", arrays_lines),
     VBO("arrays_line_loop", arrays_line_loop),

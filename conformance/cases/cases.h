@@ -74,6 +74,7 @@ extern const fc_case fc_cases_osmesa[];
 extern const fc_case fc_cases_tex_copy[];
 extern const fc_case fc_cases_compressed[];
 extern const fc_case fc_cases_honesty[];
+extern const fc_case fc_cases_demo_cube_shadow[];
 
 /* glClearColor + glClearDepth + clear of colour and depth. */
 void fcu_clear(float r, float g, float b, float a, double depth);

@@ -48,6 +48,7 @@ static const fc_case *const groups[] = {
     fc_cases_tex_copy,
     fc_cases_compressed,
     fc_cases_honesty,
+    fc_cases_demo_cube_shadow,
 };
 
 size_t fc_case_count(void)

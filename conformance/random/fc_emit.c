@@ -23,11 +23,13 @@
  *
  * Current values.  glArrayElement sets them as the calls would; after an
  * array draw the block's last call of each attribute is issued again. */
+#define GL_GLEXT_PROTOTYPES 1   /* buffer objects, multi-draws */
 #define FC_EMIT_NO_MACROS
 #include "fc_emit.h"
 #include "fc_rng.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,6 +52,10 @@ struct policy {
     int pad;                        /* padding bytes */
     int order;                      /* attribute order inside an interleaved vertex */
     int explicit_stride;            /* tight arrays: the element size rather than 0 */
+    /* from a stream of their own (the other choices stay as they were) */
+    int vbo;                        /* % of array blocks whose arrays are in a buffer object */
+    int ibo;                        /* % of element draws whose indices are in one */
+    int multi;                      /* % of draws issued as glMultiDrawArrays / Elements */
 };
 
 /* Display lists of a FCE_DLIST scene (see fce_dl_*). */
@@ -67,6 +73,7 @@ struct dl {
 
 static struct {
     fc_rng val;                     /* per-block choices that compile nothing */
+    fc_rng bo;                      /* per-block buffer object and multi-draw choices */
     struct policy P;
     struct dl D;
     GLenum mode;
@@ -119,6 +126,24 @@ enum fce_path fce_scene_begin(enum fce_family family, uint64_t seed, uint32_t in
     D->cae = (int)fc_rng_below(&k, 3) * 50;
     D->arrays = fc_rng_chance(&k, 30);
     E.val = fc_rng_make(seed, index, 50 + (uint32_t)family);
+    {
+        /* GL 1.5 buffer objects and GL 1.4 multi-draws, from streams of
+         * their own: in about half the scenes the arrays come from a
+         * vertex buffer (glBufferData, glBufferSubData or a mapped
+         * buffer), the indices from an element buffer, draws split into
+         * glMultiDrawArrays / glMultiDrawElements */
+        fc_rng kb = fc_rng_make(seed, profile, 60 + (uint32_t)family);
+        static const int pct[4] = { 0, 0, 50, 100 };
+        P->vbo = pct[fc_rng_below(&kb, 4)];
+        P->ibo = pct[fc_rng_below(&kb, 4)];
+        P->multi = pct[fc_rng_below(&kb, 4)];
+        /* FC_EMIT_BO=V,I,M overrides the three shares (percent; for
+         * bisecting a difference: 0,0,0 draws as before they existed) */
+        const char *bo = getenv("FC_EMIT_BO");
+        if (bo)
+            sscanf(bo, "%d,%d,%d", &P->vbo, &P->ibo, &P->multi);
+        E.bo = fc_rng_make(seed, index, 70 + (uint32_t)family);
+    }
     E.nev = 0;
     E.nbuf = 0;
     fce_recording = 0;
@@ -421,17 +446,22 @@ static void trace_bytes(const unsigned char *p, int n)
     fprintf(fc_trace_out, " };\n");
 }
 
-static void trace_pointer(const char *name, int size, int type, int stride, int offset)
+/* vbo_base >= 0: the arrays are in a vertex buffer from that byte */
+static void trace_pointer(const char *name, int size, int type, int stride, int offset, int vbo_base)
 {
     if (!fc_trace_out)
         return;
-    if (size)
-        fprintf(fc_trace_out, "%s(%d, %#x, %d, b%d + %d);\n", name, size, gl_type[type], stride,
-                E.nbuf, offset);
-    else if (type >= 0)
-        fprintf(fc_trace_out, "%s(%#x, %d, b%d + %d);\n", name, gl_type[type], stride, E.nbuf, offset);
+    char where[48];
+    if (vbo_base >= 0)
+        snprintf(where, sizeof where, "(const void *)%d", vbo_base + offset);
     else
-        fprintf(fc_trace_out, "%s(%d, b%d + %d);\n", name, stride, E.nbuf, offset);
+        snprintf(where, sizeof where, "b%d + %d", E.nbuf, offset);
+    if (size)
+        fprintf(fc_trace_out, "%s(%d, %#x, %d, %s);\n", name, size, gl_type[type], stride, where);
+    else if (type >= 0)
+        fprintf(fc_trace_out, "%s(%#x, %d, %s);\n", name, gl_type[type], stride, where);
+    else
+        fprintf(fc_trace_out, "%s(%d, %s);\n", name, stride, where);
 }
 
 static void trace_indices(int itype, const void *idx, int n)
@@ -463,6 +493,104 @@ static void shuffle(int *a, int n)
         int j = (int)fc_rng_below(&E.val, (uint32_t)i + 1), t = a[i];
         a[i] = a[j], a[j] = t;
     }
+}
+
+/* ---- buffer objects and multi-draws ----
+ *
+ * Fixed names, never from glGenBuffers (GL 1.5 makes a buffer on the
+ * first bind of a name); every block leaves both targets unbound. */
+#define FCE_VBO 901u
+#define FCE_IBO 902u
+
+static void bind_buffer(GLenum target, GLuint name)
+{
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "glBindBuffer(%#x, %u);\n", target, name);
+    glBindBuffer(target, name);
+}
+
+/* n bytes of data (named `tname` in the trace) into the buffer `name` at
+ * byte `base`: glBufferData of the whole, glBufferData of undefined
+ * storage then glBufferSubData in two pieces, or the same through
+ * glMapBuffer; the buffer stays bound to target. */
+static void upload(GLenum target, GLuint name, const unsigned char *data, int n, int base,
+                   const char *tname)
+{
+    static const GLenum usage[3] = { GL_STREAM_DRAW, GL_STATIC_DRAW, GL_DYNAMIC_DRAW };
+    fc_rng *r = &E.bo;
+    const GLenum u = usage[fc_rng_below(r, 3)];
+    const int size = base + n + 8 * fc_rng_range(r, 0, 2);
+    const int how = (int)fc_rng_below(r, 3);
+    bind_buffer(target, name);
+    if (how == 0) {
+        unsigned char *all = calloc(1, (size_t)size);
+        if (!all)
+            abort();
+        memcpy(all + base, data, (size_t)n);
+        if (fc_trace_out)
+            fprintf(fc_trace_out, "{ static unsigned char all[%d]; memcpy(all + %d, %s%d, %d); "
+                    "glBufferData(%#x, %d, all, %#x); }\n", size, base, tname, E.nbuf, n, target,
+                    size, u);
+        glBufferData(target, size, all, u);
+        free(all);
+        return;
+    }
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "glBufferData(%#x, %d, NULL, %#x);\n", target, size, u);
+    glBufferData(target, size, NULL, u);
+    if (how == 1) {
+        const int k = n / 2;
+        if (fc_trace_out)
+            fprintf(fc_trace_out, "glBufferSubData(%#x, %d, %d, %s%d);\n"
+                    "glBufferSubData(%#x, %d, %d, (const char *)%s%d + %d);\n",
+                    target, base, k, tname, E.nbuf, target, base + k, n - k, tname, E.nbuf, k);
+        glBufferSubData(target, base, k, data);
+        glBufferSubData(target, base + k, n - k, data + k);
+        return;
+    }
+    if (fc_trace_out)
+        fprintf(fc_trace_out, "{ void *m = glMapBuffer(%#x, GL_WRITE_ONLY); if (m) { "
+                "memcpy((char *)m + %d, %s%d, %d); glUnmapBuffer(%#x); } }\n",
+                target, base, tname, E.nbuf, n, target);
+    void *m = glMapBuffer(target, GL_WRITE_ONLY);
+    if (m) {
+        memcpy((char *)m + base, data, (size_t)n);
+        glUnmapBuffer(target);
+    }
+}
+
+/* Splits n vertices of `mode` into draws of whole primitives (the
+ * independent modes only; one draw for the others), with empty draws
+ * among them; start[i], count[i]; returns the number of draws. */
+static int split_draws(GLenum mode, int n, int *start, int *count)
+{
+    fc_rng *r = &E.bo;
+    const int unit = mode == GL_POINTS ? 1 : mode == GL_LINES ? 2 : mode == GL_TRIANGLES ? 3
+                   : mode == GL_QUADS ? 4 : 0;
+    int k = 0;
+    for (int s = 0; s < n || k == 0;) {
+        if (fc_rng_chance(r, 20)) {         /* an empty draw */
+            start[k] = (int)fc_rng_below(r, (uint32_t)n + 1);
+            count[k++] = 0;
+        }
+        int len = unit ? unit * fc_rng_range(r, 1, 3) : n - s;
+        if (s + len >= n || n - (s + len) < unit)
+            len = n - s;
+        start[k] = s;
+        count[k++] = len;
+        s += len;
+    }
+    return k;
+}
+
+static void trace_ints(const char *name, const int *v, int n)
+{
+    if (!fc_trace_out)
+        return;
+    fprintf(fc_trace_out, "static const GLint %s%d[%d] = {", name, E.nbuf, n);
+    for (int i = 0; i < n; i++)
+        fprintf(fc_trace_out, "%s%d", i ? "," : "", v[i]);
+    fprintf(fc_trace_out, " };\n");
 }
 
 void fce_block_end(void)
@@ -660,50 +788,85 @@ void fce_block_end(void)
     fc_trace_text("{");
     if (nvert)
         trace_bytes(buf, total);
+    /* the arrays in a vertex buffer, at byte `base` (E.bo decides) */
+    const int vbo = nvert && (int)fc_rng_below(&E.bo, 100) < E.P.vbo;
+    int base = 0;
+    if (vbo) {
+        base = 8 * fc_rng_range(&E.bo, 0, 3);
+        upload(GL_ARRAY_BUFFER, FCE_VBO, buf, total, base, "b");
+    }
+    /* where an array starts: in the buffer (an offset) or in memory */
+#define ARRAY_AT(off) (vbo ? (const void *)(uintptr_t)(base + (off)) : (const void *)(buf + (off)))
     static const GLenum caps[A_COUNT] = {
         GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_EDGE_FLAG_ARRAY,
         GL_TEXTURE_COORD_ARRAY,
     };
     if (ifmt) {
-        if (fc_trace_out)
+        if (fc_trace_out && vbo)
+            fprintf(fc_trace_out, "glInterleavedArrays(%#x, %d, (const void *)%d);\n", ifmt,
+                    E.P.explicit_stride || E.P.pad ? istride : 0, base);
+        else if (fc_trace_out)
             fprintf(fc_trace_out, "glInterleavedArrays(%#x, %d, b%d);\n", ifmt,
                     E.P.explicit_stride || E.P.pad ? istride : 0, E.nbuf);
-        glInterleavedArrays(ifmt, E.P.explicit_stride || E.P.pad ? istride : 0, buf);
+        glInterleavedArrays(ifmt, E.P.explicit_stride || E.P.pad ? istride : 0, ARRAY_AT(0));
     } else if (nvert) {
         for (int a = 0; a < A_COUNT; a++) {
             if (!at[a].on)
                 continue;
             /* a tight stride is given as 0 or as the element size */
             const int stride = E.P.layout == 0 && !E.P.explicit_stride ? 0 : at[a].stride;
-            const void *p = buf + at[a].offset;
+            const void *p = ARRAY_AT(at[a].offset);
             const GLenum t = gl_type[at[a].type];
             switch (a) {
             case A_POS:
-                trace_pointer("glVertexPointer", at[a].size, at[a].type, stride, at[a].offset);
+                trace_pointer("glVertexPointer", at[a].size, at[a].type, stride, at[a].offset, vbo ? base : -1);
                 glVertexPointer(at[a].size, t, stride, p);
                 break;
             case A_COL:
-                trace_pointer("glColorPointer", at[a].size, at[a].type, stride, at[a].offset);
+                trace_pointer("glColorPointer", at[a].size, at[a].type, stride, at[a].offset, vbo ? base : -1);
                 glColorPointer(at[a].size, t, stride, p);
                 break;
             case A_NRM:
-                trace_pointer("glNormalPointer", 0, at[a].type, stride, at[a].offset);
+                trace_pointer("glNormalPointer", 0, at[a].type, stride, at[a].offset, vbo ? base : -1);
                 glNormalPointer(t, stride, p);
                 break;
             case A_TEX:
-                trace_pointer("glTexCoordPointer", at[a].size, at[a].type, stride, at[a].offset);
+                trace_pointer("glTexCoordPointer", at[a].size, at[a].type, stride, at[a].offset, vbo ? base : -1);
                 glTexCoordPointer(at[a].size, t, stride, p);
                 break;
             default:
-                trace_pointer("glEdgeFlagPointer", 0, -1, stride, at[a].offset);
+                trace_pointer("glEdgeFlagPointer", 0, -1, stride, at[a].offset, vbo ? base : -1);
                 glEdgeFlagPointer(stride, p);
                 break;
             }
             client_state(caps[a], 1);
         }
     }
+#undef ARRAY_AT
+    /* the pointers hold the buffer: unbound before the draw or after */
+    const int unbind_early = vbo && fc_rng_chance(&E.bo, 50);
+    if (unbind_early)
+        bind_buffer(GL_ARRAY_BUFFER, 0);
+    const int multi = draw && (int)fc_rng_below(&E.bo, 100) < E.P.multi;
+    int *mstart = NULL, *mcount = NULL, nmulti = 0;
+    if (multi) {
+        mstart = malloc(sizeof(int) * (size_t)(2 * nvert + 2));
+        mcount = malloc(sizeof(int) * (size_t)(2 * nvert + 2));
+        if (!mstart || !mcount)
+            abort();
+        nmulti = split_draws(E.mode, nvert, mstart, mcount);
+    }
 
-    if (draw && call < 35) {
+    if (draw && call < 35 && multi) {
+        for (int i = 0; i < nmulti; i++)
+            mstart[i] += lead;
+        trace_ints("mf", mstart, nmulti);
+        trace_ints("mc", mcount, nmulti);
+        if (fc_trace_out)
+            fprintf(fc_trace_out, "glMultiDrawArrays(%#x, mf%d, mc%d, %d);\n", E.mode, E.nbuf,
+                    E.nbuf, nmulti);
+        glMultiDrawArrays(E.mode, mstart, mcount, nmulti);
+    } else if (draw && call < 35) {
         fc_trace_calli("glDrawArrays", 3, E.mode, lead, nvert, 0);
         glDrawArrays(E.mode, lead, nvert);
     } else if (draw) {
@@ -724,17 +887,48 @@ void fce_block_end(void)
             hi = slot[k] > hi ? slot[k] : hi;
         }
         trace_indices(itype, idx, nvert);
+        /* the indices in an element buffer, at byte ibase */
+        static const int isize[3] = { 1, 2, 4 };
+        const int ibo = (int)fc_rng_below(&E.bo, 100) < E.P.ibo;
+        int ibase = 0;
+        if (ibo) {
+            ibase = isize[itype] * fc_rng_range(&E.bo, 0, 5);
+            upload(GL_ELEMENT_ARRAY_BUFFER, FCE_IBO, idx, nvert * isize[itype], ibase, "x");
+        }
+        const void *iat = ibo ? (const void *)(uintptr_t)ibase : idx;
+        char iname[32];
+        if (ibo)
+            snprintf(iname, sizeof iname, "(const void *)%d", ibase);
+        else
+            snprintf(iname, sizeof iname, "x%d", E.nbuf);
         if (range) {
             if (fc_trace_out)
-                fprintf(fc_trace_out, "glDrawRangeElements(%#x, %d, %d, %d, %#x, x%d);\n", E.mode,
-                        lo, hi, nvert, itypes[itype], E.nbuf);
-            glDrawRangeElements(E.mode, (GLuint)lo, (GLuint)hi, nvert, itypes[itype], idx);
+                fprintf(fc_trace_out, "glDrawRangeElements(%#x, %d, %d, %d, %#x, %s);\n", E.mode,
+                        lo, hi, nvert, itypes[itype], iname);
+            glDrawRangeElements(E.mode, (GLuint)lo, (GLuint)hi, nvert, itypes[itype], iat);
+        } else if (multi) {
+            const void **ip = malloc(sizeof(void *) * (size_t)nmulti);
+            if (!ip)
+                abort();
+            for (int i = 0; i < nmulti; i++)
+                ip[i] = (const char *)iat + (size_t)mstart[i] * (size_t)isize[itype];
+            trace_ints("mo", mstart, nmulti);
+            trace_ints("mc", mcount, nmulti);
+            if (fc_trace_out)
+                fprintf(fc_trace_out, "{ const void *ip[%d]; for (int i = 0; i < %d; i++) "
+                        "ip[i] = (const char *)%s + mo%d[i] * %d; "
+                        "glMultiDrawElements(%#x, mc%d, %#x, ip, %d); }\n", nmulti, nmulti, iname,
+                        E.nbuf, isize[itype], E.mode, E.nbuf, itypes[itype], nmulti);
+            glMultiDrawElements(E.mode, mcount, itypes[itype], ip, nmulti);
+            free(ip);
         } else {
             if (fc_trace_out)
-                fprintf(fc_trace_out, "glDrawElements(%#x, %d, %#x, x%d);\n", E.mode, nvert,
-                        itypes[itype], E.nbuf);
-            glDrawElements(E.mode, nvert, itypes[itype], idx);
+                fprintf(fc_trace_out, "glDrawElements(%#x, %d, %#x, %s);\n", E.mode, nvert,
+                        itypes[itype], iname);
+            glDrawElements(E.mode, nvert, itypes[itype], iat);
         }
+        if (ibo)
+            bind_buffer(GL_ELEMENT_ARRAY_BUFFER, 0);
         free(idx);
     } else {
         fct_glBegin(E.mode);
@@ -752,6 +946,10 @@ void fce_block_end(void)
         }
         fct_glEnd();
     }
+    if (vbo && !unbind_early)
+        bind_buffer(GL_ARRAY_BUFFER, 0);
+    free(mstart);
+    free(mcount);
     if (draw) {
         /* the current values immediate mode leaves */
         if (last[A_COL] >= 0)

@@ -17,7 +17,13 @@
  *     that the oracle's conversions give the values immediate mode gives
  *     (fc_emit.c explains each rule); after an array draw the last value of
  *     each attribute is issued again so the current values are those of
- *     immediate mode.
+ *     immediate mode.  From streams of their own (the other choices stay
+ *     as they were), about half the scenes take the arrays from a vertex
+ *     buffer object (glBufferData, glBufferSubData or glMapBuffer, at an
+ *     offset, unbound before or after the draw), the indices from an
+ *     element buffer, and split draws of whole primitives (with empty
+ *     ones) into glMultiDrawArrays / glMultiDrawElements; FC_EMIT_BO=V,I,M
+ *     sets the three shares (percent) for bisecting.
  *   - FCE_DLIST: everything is compiled into display lists (GL_COMPILE or
  *     GL_COMPILE_AND_EXECUTE, run in order through glCallList, glCallLists
  *     or nested lists; fc_emit.c "display lists"), the blocks inside them

@@ -723,14 +723,15 @@ static void tex_scene(fc_h *h)
                                        GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32 };
         static const GLenum dtype[4] = { GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT,
                                          GL_UNSIGNED_BYTE };
-        static const GLenum dmode[4] = { GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_RED };
+        /* (GL_RED, ARB_texture_rg's, is no GL 1.5 mode) */
+        static const GLenum dmode[3] = { GL_LUMINANCE, GL_INTENSITY, GL_ALPHA };
         fc_rng kd = fc_rng_make(seed, index % FC_TEX_PROFILES, 17);
         p.depth = !p.tex3d && !p.cube && !p.dxt && fc_rng_chance(&kd, 12);
         p.depth_internal = dint[fc_rng_below(&kd, 4)];
         p.depth_type = dtype[fc_rng_below(&kd, 4)];
         p.compare = fc_rng_chance(&kd, 80);
         p.compare_func = GL_NEVER + fc_rng_below(&kd, 8);
-        p.depth_mode = dmode[fc_rng_chance(&kd, 70) ? 0 : fc_rng_below(&kd, 4)];
+        p.depth_mode = dmode[fc_rng_chance(&kd, 70) ? 0 : fc_rng_below(&kd, 3)];
     }
     fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
     s.r = fc_rng_make(seed, index, 11);

@@ -149,8 +149,11 @@ struct display_list {
 };
 
 /* Mesa's current vertex primitive while compiling
- * (ctx->Driver.CurrentSavePrimitive): a GL mode inside glBegin/glEnd. */
-#define PRIM_MAX              GL_PATCHES
+ * (ctx->Driver.CurrentSavePrimitive): a GL mode inside glBegin/glEnd (GL
+ * 1.5's ten: every compiled glBegin and draw refuses a mode above
+ * GL_POLYGON before it gets here, so the adjacency modes and GL_PATCHES
+ * of the oracle's vbo_save are not handled). */
+#define PRIM_MAX              GL_POLYGON
 #define PRIM_OUTSIDE_BEGIN_END (PRIM_MAX + 1)
 #define PRIM_UNKNOWN          (PRIM_MAX + 2)
 
@@ -847,20 +850,10 @@ static unsigned copy_vertices_mode(GLenum mode, unsigned *pcount, unsigned verte
       copy = count % 3;
       break;
    case GL_QUADS:
-   case GL_LINES_ADJACENCY:
       copy = count % 4;
-      break;
-   case GL_TRIANGLES_ADJACENCY:
-      copy = count % 6;
       break;
    case GL_LINE_STRIP:
       copy = count < 1 ? count : 1;
-      break;
-   case GL_LINE_STRIP_ADJACENCY:
-      copy = count < 3 ? count : 3;
-      break;
-   case GL_PATCHES:
-      copy = count % 3;
       break;
    case GL_LINE_LOOP:
    case GL_TRIANGLE_FAN:
@@ -979,8 +972,6 @@ static unsigned prim_min_vertices(GLenum mode)
    case GL_LINES: case GL_LINE_LOOP: case GL_LINE_STRIP: return 2;
    case GL_TRIANGLES: case GL_TRIANGLE_STRIP: case GL_TRIANGLE_FAN: case GL_POLYGON: return 3;
    case GL_QUADS: case GL_QUAD_STRIP: return 4;
-   case GL_LINES_ADJACENCY: case GL_LINE_STRIP_ADJACENCY: return 4;
-   case GL_TRIANGLES_ADJACENCY: case GL_TRIANGLE_STRIP_ADJACENCY: return 6;
    default: return 1;
    }
 }
@@ -1038,7 +1029,7 @@ static unsigned *build_draws(struct vertex_list *vl, const float *buffer, unsign
          mode = GL_LINES;
       const bool merge = last >= 0 && mode == merged[last].mode &&
                          mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN &&
-                         mode != GL_QUAD_STRIP && mode != GL_POLYGON && mode != GL_PATCHES;
+                         mode != GL_QUAD_STRIP && mode != GL_POLYGON;
       /* consecutive triangle strips are joined by degenerate triangles,
        * with one more index when the first has an odd triangle count */
       if (merge && mode == GL_TRIANGLE_STRIP) {

@@ -314,8 +314,8 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
  * the sampler of a depth texture: llvmpipe samples its formats (none fits
  * 8-bit unorm) on the float path; GL_COMPARE_R_TO_TEXTURE makes a shadow
  * sampler; GL_DEPTH_TEXTURE_MODE is the view's swizzle (LUMINANCE: XXX1,
- * INTENSITY: XXXX, ALPHA: 000X as fixed function is no GLSL 1.30, RED:
- * X001); the border colour replaces the format's only channel (R). */
+ * INTENSITY: XXXX, ALPHA: 000X as fixed function is no GLSL 1.30); the
+ * border colour replaces the format's only channel (R). */
 void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_texture *rt)
 {
    rt->depth_bits = (uint8_t)fgl_tex_image_depth_bits(t->Image[rt->first_level]);
@@ -324,14 +324,12 @@ void fgl_update_texture_depth(const struct fgl_texture_object *t, struct r_textu
    rt->border_mask = 1;
    rt->compare = t->CompareMode == GL_COMPARE_R_TO_TEXTURE;
    rt->compare_func = (uint8_t)(rt->compare ? t->CompareFunc - GL_NEVER : 0);
-   static const uint8_t swz[4][4] = {
+   static const uint8_t swz[3][4] = {
       { R_SWZ_X, R_SWZ_X, R_SWZ_X, R_SWZ_1 },   /* GL_LUMINANCE */
       { R_SWZ_X, R_SWZ_X, R_SWZ_X, R_SWZ_X },   /* GL_INTENSITY */
       { R_SWZ_0, R_SWZ_0, R_SWZ_0, R_SWZ_X },   /* GL_ALPHA */
-      { R_SWZ_X, R_SWZ_0, R_SWZ_0, R_SWZ_1 },   /* GL_RED */
    };
-   const int m = t->DepthMode == GL_INTENSITY ? 1 : t->DepthMode == GL_ALPHA ? 2
-               : t->DepthMode == GL_RED       ? 3 : 0;
+   const int m = t->DepthMode == GL_INTENSITY ? 1 : t->DepthMode == GL_ALPHA ? 2 : 0;
    memcpy(rt->depth_swizzle, swz[m], 4);
 }
 

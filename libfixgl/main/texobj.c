@@ -605,11 +605,12 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
       t->CompareFunc = (GLenum)v;
       return;
    case GL_DEPTH_TEXTURE_MODE:
-      /* ARB_depth_texture; GL_RED with ARB_texture_rg, which the oracle
-       * has */
+      /* ARB_depth_texture's three; GL_RED is ARB_texture_rg's (GL 3.0),
+       * which fixgl does not list: GL_INVALID_ENUM (the oracle accepts
+       * it; honesty/depth_texture_mode_red) */
       if ((GLint)t->DepthMode == v)
          return;
-      if (v != GL_LUMINANCE && v != GL_INTENSITY && v != GL_ALPHA && v != GL_RED) {
+      if (v != GL_LUMINANCE && v != GL_INTENSITY && v != GL_ALPHA) {
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }

@@ -572,7 +572,8 @@ void GLAPIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsi
  * _mesa_MultiDrawElementsEXT, _mesa_validated_multidrawelements;
  * main/api_validate.c:_mesa_validate_MultiDrawElements]: the draw count,
  * the mode, the index type, then each count are checked; a NULL index
- * pointer (client indices) cancels the whole call without an error.  The
+ * pointer cancels the whole call without an error when the indices are
+ * the client's (with an element buffer it is offset 0).  The
  * draws whose index pointers are a whole number of indices apart are one
  * driver call (skipped whole when the first is empty, as
  * glMultiDrawArrays); otherwise each non-empty draw is a call of its
@@ -600,9 +601,12 @@ void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum ty
       fgl_error(ctx, err);
       return;
    }
-   for (GLsizei i = 0; i < n; i++)
-      if (!indices[i])
-         return;
+   /* only client indices: with an element buffer bound, 0 is an offset
+    * (api_validate.c: !VAO->IndexBufferObj) */
+   if (!ctx->Array.ElementBufferObj)
+      for (GLsizei i = 0; i < n; i++)
+         if (!indices[i])
+            return;
    if (n == 0)
       return;
    /* one driver call when every pointer is a whole number of indices from

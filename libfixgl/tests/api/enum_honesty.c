@@ -292,6 +292,22 @@ int main(int argc, char **argv)
           ndefs, foreign, probed, foreign_failures);
    CHECK(foreign_failures == 0, "%d calls accepted an enum fixgl does not have", foreign_failures);
 
+   /* GL 1.x enums that only a later version accepts in a place: the value
+    * is allowed, its use there is not.  GL_DEPTH_TEXTURE_MODE GL_RED is
+    * ARB_texture_rg's (GL 3.0); the texture keeps GL_LUMINANCE. */
+   while (glGetError() != GL_NO_ERROR)
+      ;
+   glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_RED);
+   CHECK(glGetError() == GL_INVALID_ENUM, "GL_DEPTH_TEXTURE_MODE GL_RED: GL_INVALID_ENUM");
+   const GLfloat red = (GLfloat)GL_RED;
+   glTexParameterfv(GL_TEXTURE_1D, GL_DEPTH_TEXTURE_MODE, &red);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glTexParameterfv GL_DEPTH_TEXTURE_MODE GL_RED: GL_INVALID_ENUM");
+   GLint mode = 0;
+   glGetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, &mode);
+   CHECK(mode == GL_LUMINANCE, "GL_DEPTH_TEXTURE_MODE after GL_RED: %#x", (unsigned)mode);
+   glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_ALPHA);
+   CHECK(glGetError() == GL_NO_ERROR, "GL_DEPTH_TEXTURE_MODE GL_ALPHA: no error");
+
    OSMesaDestroyContext(ctx);
    return check_report("enum_honesty");
 }
