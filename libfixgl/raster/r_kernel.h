@@ -122,4 +122,8 @@ r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color)
  * r_block_choose_tri asks first when a texture unit is on. */
 r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color);
 
+/* The same for two texture units or more (r_block_mtex_avx2.c), which
+ * r_block_choose_tri_tex asks when units past the first are walked. */
+r_tri_kernel r_block_choose_tri_mtex(const struct r_state *rs, bool flat_color);
+
 #endif

@@ -16,7 +16,7 @@
  * scissor; viewport; shade model including GL_PHONG_WIN; lighting with
  * Blinn-Phong and Cook-Torrance materials, spots, attenuation, two-sided
  * lighting, local viewer, colour material and separate specular; fog
- * modes, coordinate source and distance mode; up to three texture units
+ * modes, coordinate source and distance mode; up to four texture units
  * with 1D/2D textures of every base format and several sized ones, every
  * filter, wrap (mirror and border ones included), LOD bias, min/max LOD
  * and base level, and every environment (combine, crossbar, dot3,
@@ -849,7 +849,7 @@ static GLenum rnd_source(void)
 {
    static const GLenum srcs[] = { GL_TEXTURE, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS,
                                   GL_PRIMARY_COLOR, GL_CONSTANT, GL_TEXTURE0, GL_TEXTURE1,
-                                  GL_TEXTURE2, GL_ZERO, GL_ONE };
+                                  GL_TEXTURE2, GL_ZERO, GL_ONE, GL_TEXTURE3 };
    return PICK(srcs);
 }
 
@@ -894,10 +894,10 @@ static void set_texturing(void)
                                   GL_ADD, GL_COMBINE, GL_COMBINE, GL_COMBINE4_NV };
    const int mode = G.mode[GROUP_TEX];
    const int n = mode == MODE_OFF || chance(0.1f) ? 0 : mode == MODE_USUAL ? (chance(0.8f) ? 1 : 2)
-               : chance(0.5f) ? 1 : 1 + rnd(3);
+               : chance(0.5f) ? 1 : 1 + rnd(4);
    G.nunits = n;
    L("texture units %d", n);
-   for (int u = 0; u < 3; u++) {
+   for (int u = 0; u < 4; u++) {
       glActiveTexture(GL_TEXTURE0 + (GLenum)u);
       glDisable(GL_TEXTURE_1D);
       glDisable(GL_TEXTURE_2D);
