@@ -1,6 +1,7 @@
 /*
  * The block kernels of multi-textured triangles, AVX2 + FMA (r_kernel.h):
- * units 0 .. n-1 (2 <= n <= R_MAX_TEX_UNITS) all enabled, each with a
+ * units 0 .. n-1 (2 <= n <= MTEX_MAX_UNITS, the counts the
+ * kernel-equivalence tests draw) all enabled, each with a
  * texture the 8-lane lookup samples itself (r_tex8_fast) and an
  * environment whose channels are each one of (r_frag.c emit_texenv,
  * emit_combine, simple_texenv, without a scale):
@@ -40,6 +41,8 @@
 #include "r_tex_avx2.h"
 
 #include <math.h>
+
+#define MTEX_MAX_UNITS 4
 
 /* the variants: any units (each through its functions), or two units
  * both MODULATE on a texture with alpha (T * P on every channel), or both
@@ -97,7 +100,7 @@ struct block_stage {
    int n;
    bool flat_color;
    __m256 color[4];
-   struct unit_stage u[R_MAX_TEX_UNITS];
+   struct unit_stage u[MTEX_MAX_UNITS];
 };
 
 /* ---- the lookups ---- */
@@ -514,7 +517,7 @@ r_tri_kernel r_block_choose_tri_mtex(const struct r_state *rs, bool flat_color)
 {
    (void)flat_color;   /* read per triangle */
    const int n = rs->fs->tex_nr;
-   if (n < 2 || n > R_MAX_TEX_UNITS || rs->fs->tex_units != (1u << n) - 1u)
+   if (n < 2 || n > MTEX_MAX_UNITS || rs->fs->tex_units != (1u << n) - 1u)
       return NULL;
    unsigned inputs = 1u << R_FS_COLOR0;
    for (int i = 0; i < n; i++)
@@ -523,7 +526,7 @@ r_tri_kernel r_block_choose_tri_mtex(const struct r_state *rs, bool flat_color)
        rs->fs->phong || rs->pix || rs->fs->aa != R_AA_NONE || rs->rast->stipple || !rs->fb->color)
       return NULL;
    /* both units of one MODULATE form: V_MOD2 or V_MOD2_RGB */
-   env_fn fns[R_MAX_TEX_UNITS];
+   env_fn fns[MTEX_MAX_UNITS];
    unsigned prev_sum = 0;
    for (int i = 0; i < n; i++) {
       if (!r_tex8_fast(&rs->tex[i]->tex))

@@ -999,8 +999,10 @@ static void set_lines_points(void)
    const int lr = rnd(10), pr = rnd(10);
    const float lw = lr < 3 ? 1.0f : lr < 6 ? (float)(1 + rnd(8)) : lr < 9 ? rndr(1.0f, 8.0f)
                                                                             : rndr(0.5f, 1.0f);
-   const bool ls = chance(0.15f), lst = chance(0.12f);
-   const int factor = 1 + rnd(3);
+   /* line stipple: the draw stipple stage's sub-lines go to the line
+    * kernels (factors up to 256 now and then: long dashes) */
+   const bool ls = chance(0.15f), lst = chance(0.2f);
+   const int factor = chance(0.2f) ? 1 + rnd(256) : 1 + rnd(3);
    const unsigned pattern = (unsigned)rnd(65536);
    const float ps = pr < 2 ? 1.0f : pr < 5 ? (float)(1 + rnd(16)) : pr < 9 ? rndr(1.0f, 16.0f)
                                                                         : rndr(0.2f, 1.0f);
