@@ -40,6 +40,15 @@
  *           long, every orientation), orthographic, depth test
  *   points  10,000 random points of size 8, one colour each,
  *           orthographic, depth test
+ *   lightmap the texfloor floor and wall with two texture units, as legacy
+ *           demos light a level: unit 0 the texfloor texture
+ *           (GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_MODULATE), unit 1 a
+ *           64x64 RGB light map (GL_LINEAR, GL_CLAMP_TO_EDGE, GL_MODULATE)
+ *           stretched over each quad, the whole screen textured
+ *   stipple the lines scene's 2,000 lines stippled (glLineStipple(2,
+ *           0x3f3f): dashes of 12 pixels, gaps of 4), 1 pixel wide as
+ *           GL_LINE_STRIPs of 4 lines each (the stipple counter runs
+ *           along a strip and restarts at each glBegin)
  * OSMesa has neither extension: for the last three scenes its build binds
  * the GLSL reference of the conformance suite (conformance/reference/
  * fcr_shading.c, through OSMesaGetProcAddress), which evaluates the same
@@ -430,6 +439,23 @@ static void draw_points(void)
   draw_lines_points(GL_POINTS);
 }
 
+static void draw_stipple(void)
+{
+  begin_ortho_frame(GL_SMOOTH);
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(2, 0x3f3f);
+  for (int i = 0; i < LINES; i += 4) {
+    glBegin(GL_LINE_STRIP);
+    for (int k = 0; k < 5; k++) {
+      glColor3fv(lines[2 * i + k].color);
+      glVertex3fv(lines[2 * i + k].pos);
+    }
+    glEnd();
+  }
+  glDisable(GL_LINE_STIPPLE);
+  glFinish();
+}
+
 static void draw_sphere(void)
 {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -618,6 +644,87 @@ static void draw_texfloor(void)
   glTexCoord2f(20.0f, 10.0f); glVertex3f(40.0f, 60.0f, -100.0f);
   glTexCoord2f(0.0f, 10.0f);  glVertex3f(-40.0f, 60.0f, -100.0f);
   glEnd();
+  glDisable(GL_TEXTURE_2D);
+  glFinish();
+}
+
+/* The lightmap scene's light map: a dark ambient with a few soft
+ * round lights, RGB. */
+#define LIGHTMAP_SIZE 64
+static GLuint tex_lightmap;
+static void build_lightmap(void)
+{
+  static unsigned char t[LIGHTMAP_SIZE * LIGHTMAP_SIZE * 3];
+  static const float lights[4][5] = {
+    /* x, y, radius, warm, cool */
+    { 16, 20, 14, 1.0f, 0.7f }, { 44, 12, 10, 0.6f, 1.0f },
+    { 36, 44, 18, 1.0f, 0.9f }, { 8, 54, 8, 0.9f, 0.5f },
+  };
+  for (int y = 0; y < LIGHTMAP_SIZE; y++)
+    for (int x = 0; x < LIGHTMAP_SIZE; x++) {
+      float c[3] = { 0.15f, 0.15f, 0.2f };
+      for (int l = 0; l < 4; l++) {
+        const float dx = (float)x - lights[l][0], dy = (float)y - lights[l][1];
+        float f = 1.0f - sqrtf(dx * dx + dy * dy) / lights[l][2];
+        if (f > 0.0f) {
+          c[0] += f * lights[l][3];
+          c[1] += f * 0.5f * (lights[l][3] + lights[l][4]);
+          c[2] += f * lights[l][4];
+        }
+      }
+      for (int k = 0; k < 3; k++)
+        t[(y * LIGHTMAP_SIZE + x) * 3 + k] = (unsigned char)(c[k] > 1.0f ? 255 : c[k] * 255.0f);
+    }
+  glGenTextures(1, &tex_lightmap);
+  glBindTexture(GL_TEXTURE_2D, tex_lightmap);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, LIGHTMAP_SIZE, LIGHTMAP_SIZE, 0, GL_RGB,
+               GL_UNSIGNED_BYTE, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+static void lightmap_vertex(float s, float t, float u, float v, float x, float y, float z)
+{
+  glMultiTexCoord2f(GL_TEXTURE0, s, t);
+  glMultiTexCoord2f(GL_TEXTURE1, u, v);
+  glVertex3f(x, y, z);
+}
+
+static void draw_lightmap(void)
+{
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.4, 0.4, -0.3, 0.3, 0.5, 200.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(0.0f, -1.0f, 0.0f);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, tex_name);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, tex_lightmap);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glBegin(GL_QUADS);
+  glColor3f(1.0f, 0.95f, 0.9f);
+  lightmap_vertex(0.0f, 0.0f, 0.0f, 0.0f, -40.0f, 0.0f, -0.5f);
+  lightmap_vertex(20.0f, 0.0f, 1.0f, 0.0f, 40.0f, 0.0f, -0.5f);
+  lightmap_vertex(20.0f, 40.0f, 1.0f, 1.0f, 40.0f, 0.0f, -100.0f);
+  lightmap_vertex(0.0f, 40.0f, 0.0f, 1.0f, -40.0f, 0.0f, -100.0f);
+  lightmap_vertex(0.0f, 0.0f, 0.0f, 0.0f, -40.0f, 0.0f, -100.0f);
+  lightmap_vertex(20.0f, 0.0f, 1.0f, 0.0f, 40.0f, 0.0f, -100.0f);
+  lightmap_vertex(20.0f, 10.0f, 1.0f, 1.0f, 40.0f, 60.0f, -100.0f);
+  lightmap_vertex(0.0f, 10.0f, 0.0f, 1.0f, -40.0f, 60.0f, -100.0f);
+  glEnd();
+  glDisable(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
   glDisable(GL_TEXTURE_2D);
   glFinish();
 }
@@ -963,6 +1070,7 @@ int main(int argc, char **argv)
   build_texture();
   build_small_texture();
   build_lines_points();
+  build_lightmap();
   static const struct {
     const char *name;
     void (*frame)(void);
@@ -971,6 +1079,7 @@ int main(int argc, char **argv)
     { "lit20k", draw_lit20k },   { "gears", draw_gears },       { "texfloor", draw_texfloor },
     { "phong", draw_phong },     { "ctphong", draw_ctphong },   { "ctsmooth", draw_ctsmooth },
     { "manydraws", draw_manydraws }, { "lines", draw_lines },   { "points", draw_points },
+    { "lightmap", draw_lightmap }, { "stipple", draw_stipple },
   };
   for (size_t i = 0; i < sizeof(scenes) / sizeof(scenes[0]); i++) {
     int wanted = first_scene >= argc;

@@ -319,6 +319,8 @@ static bool is_decal_rgba(const struct r_tex_combine *k)
 r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
 {
    (void)flat_color;   /* read per triangle */
+   if (rs->fs->tex_nr >= 2)
+      return r_block_choose_tri_mtex(rs, flat_color);   /* r_block_mtex_avx2.c */
    /* the fragment program: the colour and unit 0's coordinates, unit 0
     * alone, its lookup in r_tex_avx2.h, a simple environment; no colour
     * sum, fog, GL_PHONG_WIN, pixel rectangle, coverage lowering or

@@ -7,7 +7,8 @@
  *    r_frag.c): portable scalar code, one pixel at a time, which handles
  *    every state and is the specification of the others;
  *  - the block kernels (r_block_avx2.c untextured, r_block_tex_avx2.c
- *    with one texture unit, r_block_phong_avx2.c per-fragment lit; the
+ *    with one texture unit, r_block_mtex_avx2.c with two to four,
+ *    r_block_phong_avx2.c per-fragment lit; the
  *    walk r_block_tri.h and the shared operations r_block_avx2.h; AVX2 +
  *    FMA): a triangle's, a line's or a point's 4x4 blocks (r_tri.c,
  *    r_line.c, r_point.c; the proof that they cover the same pixels is
@@ -21,7 +22,7 @@
  *    tests check this on random states against a context with
  *    FIXGL_KERNELS=reference (tests/unit/test_kernels.c over the whole
  *    state space, tests/api/lit_kernels.c for lit scenes,
- *    tests/api/tex_kernels.c for textured triangles).
+ *    tests/api/tex_kernels.c for textured triangles, one to four units).
  * A state no block kernel covers draws with the reference kernels.
  * FIXGL_KERNELS=reference in the environment forces the reference kernels
  * for every context created afterwards (and the scalar per-vertex
@@ -121,5 +122,9 @@ r_tri_kernel r_block_choose_tri_phong(const struct r_state *rs, bool flat_color)
 /* The same for the textured states (r_block_tex_avx2.c), which
  * r_block_choose_tri asks first when a texture unit is on. */
 r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color);
+
+/* The same for two texture units or more (r_block_mtex_avx2.c), which
+ * r_block_choose_tri_tex asks when units past the first are walked. */
+r_tri_kernel r_block_choose_tri_mtex(const struct r_state *rs, bool flat_color);
 
 #endif

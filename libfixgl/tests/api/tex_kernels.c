@@ -15,6 +15,11 @@
  * blend), perspective (clip w) and projective (q) coordinates, tiny and
  * huge triangles, vertices on pixel centres, scales that magnify and
  * minify, a projective texture matrix, scissor box, polygon offset -- and compares the colour and depth buffers byte for byte.
+ * A third of the cases enable two to four units (r_block_mtex_avx2.c), each
+ * with its own random texture, environment and coordinates (COMBINE
+ * sources then include the other units' textures, GL_SUBTRACT and
+ * GL_INTERPOLATE after GL_ADD, DECAL or BLEND units followed by an ADD
+ * one: NIR's reassociation, r_frag.c emit_combine).
  * A state the block kernels don't cover draws with the reference kernels
  * in both contexts, so every case must match.
  *
@@ -117,7 +122,7 @@ static void random_texture(GLenum target)
     glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, frand(-2.0f, 2.0f));
 }
 
-static void random_env(void)
+static void random_env(int nunits)
 {
   static const GLenum modes[] = { GL_MODULATE, GL_MODULATE, GL_REPLACE, GL_REPLACE, GL_DECAL,
                                   GL_ADD, GL_BLEND, GL_COMBINE, GL_COMBINE };
@@ -128,20 +133,25 @@ static void random_env(void)
   if (mode != GL_COMBINE)
     return;
   static const GLenum cmodes[] = { GL_REPLACE, GL_MODULATE, GL_REPLACE, GL_MODULATE, GL_ADD,
-                                   GL_INTERPOLATE };
-  static const GLenum srcs[] = { GL_TEXTURE, GL_PRIMARY_COLOR, GL_PREVIOUS, GL_CONSTANT };
+                                   GL_INTERPOLATE, GL_SUBTRACT };
+  static const GLenum srcs[] = { GL_TEXTURE, GL_PRIMARY_COLOR, GL_PREVIOUS, GL_CONSTANT,
+                                 GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE2, GL_TEXTURE3 };
+  /* another unit's texture as a source only now and then (those draw
+   * with the reference kernels) */
+  const int nsrcs = nunits > 1 && irand(4) == 0 ? 4 + nunits : 4;
   static const GLenum oprs_rgb[] = { GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
                                      GL_ONE_MINUS_SRC_ALPHA };
   static const GLenum oprs_a[] = { GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA };
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)cmodes[irand(6)]);
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)cmodes[irand(6)]);
+  const int ncm = nunits > 1 ? 7 : 6;
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)cmodes[irand(ncm)]);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)cmodes[irand(ncm)]);
   static const GLenum src_rgb[] = { GL_SOURCE0_RGB, GL_SOURCE1_RGB, GL_SOURCE2_RGB };
   static const GLenum src_a[] = { GL_SOURCE0_ALPHA, GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA };
   static const GLenum op_rgb[] = { GL_OPERAND0_RGB, GL_OPERAND1_RGB, GL_OPERAND2_RGB };
   static const GLenum op_a[] = { GL_OPERAND0_ALPHA, GL_OPERAND1_ALPHA, GL_OPERAND2_ALPHA };
   for (int i = 0; i < 3; i++) {
-    glTexEnvi(GL_TEXTURE_ENV, src_rgb[i], (GLint)srcs[irand(4)]);
-    glTexEnvi(GL_TEXTURE_ENV, src_a[i], (GLint)srcs[irand(4)]);
+    glTexEnvi(GL_TEXTURE_ENV, src_rgb[i], (GLint)srcs[irand(nsrcs)]);
+    glTexEnvi(GL_TEXTURE_ENV, src_a[i], (GLint)srcs[irand(nsrcs)]);
     glTexEnvi(GL_TEXTURE_ENV, op_rgb[i], (GLint)oprs_rgb[irand(4)]);
     glTexEnvi(GL_TEXTURE_ENV, op_a[i], (GLint)oprs_a[irand(2)]);
   }
@@ -151,19 +161,25 @@ static void random_env(void)
 
 /* one vertex: window-ish position in clip space with weight w, a colour
  * and a texture coordinate with q */
+#define MAX_UNITS 4
 struct vert {
   float x, y, z, w;
   float c[4];
-  float s, t, q;
+  float s[MAX_UNITS], t[MAX_UNITS], q[MAX_UNITS];
 };
+
+static int case_units;   /* the units of the case */
 
 static void emit(const struct vert *v, bool proj)
 {
   glColor4fv(v->c);
-  if (proj)
-    glTexCoord4f(v->s * v->q, v->t * v->q, 0.0f, v->q);
-  else
-    glTexCoord2f(v->s, v->t);
+  for (int u = 0; u < case_units; u++) {
+    if (proj)
+      glMultiTexCoord4f(GL_TEXTURE0 + (GLenum)u, v->s[u] * v->q[u], v->t[u] * v->q[u], 0.0f,
+                        v->q[u]);
+    else
+      glMultiTexCoord2f(GL_TEXTURE0 + (GLenum)u, v->s[u], v->t[u]);
+  }
   glVertex4f(v->x * v->w, v->y * v->w, v->z * v->w, v->w);
 }
 
@@ -173,8 +189,12 @@ static void random_triangles(void)
   const bool proj = irand(3) == 0;
   const bool persp = irand(2) == 0;
   /* texture scale: magnify (small) to minify (large) */
-  const float ts = powf(2.0f, frand(-5.0f, 6.0f));
-  const float s0 = frand(-4.0f, 4.0f), t0 = frand(-4.0f, 4.0f);
+  float ts[MAX_UNITS], s0[MAX_UNITS], t0[MAX_UNITS];
+  for (int u = 0; u < case_units; u++) {
+    ts[u] = powf(2.0f, frand(-5.0f, 6.0f));
+    s0[u] = frand(-4.0f, 4.0f);
+    t0[u] = frand(-4.0f, 4.0f);
+  }
   const int n = kind == 0 ? 40 : 1 + irand(6);
   glBegin(GL_TRIANGLES);
   for (int i = 0; i < n; i++) {
@@ -206,9 +226,11 @@ static void random_triangles(void)
       v[k].w = persp && kind != 2 ? frand(0.2f, 4.0f) : 1.0f;
       for (int c = 0; c < 4; c++)
         v[k].c[c] = frand(0.0f, 1.0f);
-      v[k].s = s0 + x * ts * frand(0.5f, 1.5f);
-      v[k].t = t0 + y * ts * frand(0.5f, 1.5f);
-      v[k].q = proj ? frand(0.25f, 3.0f) : 1.0f;
+      for (int u = 0; u < case_units; u++) {
+        v[k].s[u] = s0[u] + x * ts[u] * frand(0.5f, 1.5f);
+        v[k].t[u] = t0[u] + y * ts[u] * frand(0.5f, 1.5f);
+        v[k].q[u] = proj ? frand(0.25f, 3.0f) : 1.0f;
+      }
     }
     for (int k = 0; k < 3; k++)
       emit(&v[k], proj);
@@ -229,16 +251,26 @@ static void draw_case(uint64_t seed)
   glClearDepth(frand(0.3f, 1.0f));
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-  const GLuint names[2] = { 1, 2 };
-  const GLenum target = irand(8) == 0 ? GL_TEXTURE_1D : GL_TEXTURE_2D;
-  glDisable(GL_TEXTURE_1D);
-  glDisable(GL_TEXTURE_2D);
-  glDeleteTextures(2, names);
-  glBindTexture(target, names[0]);
-  glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 0.0f);
-  random_texture(target);
-  random_env();
-  glEnable(target);
+  const GLuint names[MAX_UNITS] = { 1, 2, 3, 4 };
+  case_units = irand(3) == 0 ? 2 + irand(MAX_UNITS - 1) : 1;
+  for (int u = 0; u < MAX_UNITS; u++) {
+    glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+    glDisable(GL_TEXTURE_1D);
+    glDisable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 0.0f);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+  }
+  glDeleteTextures(MAX_UNITS, names);
+  for (int u = case_units - 1; u >= 0; u--) {
+    glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+    const GLenum target = irand(8) == 0 ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+    glBindTexture(target, names[u]);
+    random_texture(target);
+    random_env(case_units);
+    glEnable(target);
+  }
 
   glShadeModel(irand(3) == 0 ? GL_FLAT : GL_SMOOTH);
   static const GLenum funcs[] = { GL_LESS, GL_LEQUAL, GL_GREATER, GL_GEQUAL, GL_EQUAL,
@@ -281,6 +313,7 @@ static void draw_case(uint64_t seed)
   glMatrixMode(GL_TEXTURE);
   glLoadIdentity();
   if (irand(6) == 0) {
+    /* (on unit 0, the active one) */
     /* a projective texture matrix: q varies across the triangle */
     const GLfloat m[16] = { frand(-2, 2), frand(-1, 1), 0, frand(-0.5f, 0.5f),
                             frand(-1, 1), frand(-2, 2), 0, frand(-0.5f, 0.5f),
@@ -316,7 +349,7 @@ int main(int argc, char **argv)
     CHECK(pairs[p].ctx[0] && pairs[p].ctx[1], "context creation");
   }
   unsetenv("FIXGL_KERNELS");
-  int bad_cases = 0;
+  int bad_cases = 0, multi = 0;
   long drawn = 0;
   for (int i = 0; i < cases; i++) {
     struct pair *pr = &pairs[i % 3];
@@ -326,6 +359,7 @@ int main(int argc, char **argv)
     for (int k = 0; k < 2; k++) {
       CHECK(OSMesaMakeCurrent(pr->ctx[k], pr->buf[k], GL_UNSIGNED_BYTE, W, H), "make current");
       draw_case(seed);
+      multi += k == 0 && case_units > 1;
       GLint w, h;
       OSMesaGetDepthBuffer(pr->ctx[k], &w, &h, &bpv[k], &depth[k]);
     }
@@ -355,7 +389,9 @@ int main(int argc, char **argv)
       }
   }
   CHECK(drawn > cases / 2, "too few cases drew anything (%ld of %d)", drawn, cases);
-  fprintf(stderr, "tex_kernels: %d cases, %d differ\n", cases, bad_cases);
+  CHECK(cases < 30 || multi > cases / 5, "too few multi-texture cases (%d of %d)", multi, cases);
+  fprintf(stderr, "tex_kernels: %d cases (%d with 2 to 4 units), %d differ\n", cases, multi,
+          bad_cases);
   for (int p = 0; p < 3; p++) {
     OSMesaDestroyContext(pairs[p].ctx[0]);
     OSMesaDestroyContext(pairs[p].ctx[1]);

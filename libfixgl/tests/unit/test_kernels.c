@@ -16,7 +16,7 @@
  * scissor; viewport; shade model including GL_PHONG_WIN; lighting with
  * Blinn-Phong and Cook-Torrance materials, spots, attenuation, two-sided
  * lighting, local viewer, colour material and separate specular; fog
- * modes, coordinate source and distance mode; up to three texture units
+ * modes, coordinate source and distance mode; up to four texture units
  * with 1D/2D textures of every base format and several sized ones, every
  * filter, wrap (mirror and border ones included), LOD bias, min/max LOD
  * and base level, and every environment (combine, crossbar, dot3,
@@ -872,7 +872,7 @@ static GLenum rnd_source(void)
 {
    static const GLenum srcs[] = { GL_TEXTURE, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS,
                                   GL_PRIMARY_COLOR, GL_CONSTANT, GL_TEXTURE0, GL_TEXTURE1,
-                                  GL_TEXTURE2, GL_ZERO, GL_ONE };
+                                  GL_TEXTURE2, GL_ZERO, GL_ONE, GL_TEXTURE3 };
    return PICK(srcs);
 }
 
@@ -917,10 +917,10 @@ static void set_texturing(void)
                                   GL_ADD, GL_COMBINE, GL_COMBINE, GL_COMBINE4_NV };
    const int mode = G.mode[GROUP_TEX];
    const int n = mode == MODE_OFF || chance(0.1f) ? 0 : mode == MODE_USUAL ? (chance(0.8f) ? 1 : 2)
-               : chance(0.5f) ? 1 : 1 + rnd(3);
+               : chance(0.5f) ? 1 : 1 + rnd(4);
    G.nunits = n;
    L("texture units %d", n);
-   for (int u = 0; u < 3; u++) {
+   for (int u = 0; u < 4; u++) {
       glActiveTexture(GL_TEXTURE0 + (GLenum)u);
       glDisable(GL_TEXTURE_1D);
       glDisable(GL_TEXTURE_2D);
@@ -1022,8 +1022,10 @@ static void set_lines_points(void)
    const int lr = rnd(10), pr = rnd(10);
    const float lw = lr < 3 ? 1.0f : lr < 6 ? (float)(1 + rnd(8)) : lr < 9 ? rndr(1.0f, 8.0f)
                                                                             : rndr(0.5f, 1.0f);
-   const bool ls = chance(0.15f), lst = chance(0.12f);
-   const int factor = 1 + rnd(3);
+   /* line stipple: the draw stipple stage's sub-lines go to the line
+    * kernels (factors up to 256 now and then: long dashes) */
+   const bool ls = chance(0.15f), lst = chance(0.2f);
+   const int factor = chance(0.2f) ? 1 + rnd(256) : 1 + rnd(3);
    const unsigned pattern = (unsigned)rnd(65536);
    const float ps = pr < 2 ? 1.0f : pr < 5 ? (float)(1 + rnd(16)) : pr < 9 ? rndr(1.0f, 16.0f)
                                                                         : rndr(0.2f, 1.0f);
