@@ -63,6 +63,8 @@ struct tile_job {
     * NULL: tiles_x columns of 64x64 tiles of the framebuffer */
    struct fgl_framebuffer *front;
    int tiles_x;
+   /* the tile of each item (r_scene_tile_order), or NULL: item order */
+   const uint32_t *order;
    /* the framebuffer whose lazy clears (fb->Lazy) a tile with commands
     * writes first, or NULL */
    struct fgl_framebuffer *lazy;
@@ -74,6 +76,8 @@ static void lazy_resolve_tiles(struct fgl_framebuffer *fb, unsigned what, int tx
 static void run_tile(void *arg, unsigned item, unsigned slot)
 {
    struct tile_job *j = arg;
+   if (j->order)
+      item = j->order[item];
    if (j->scene) {
       /* a tile that is drawn holds its lazy clears first (each tile's
        * byte is this thread's alone during the job) */
@@ -105,7 +109,40 @@ struct fgl_scene_async {
    struct tile_job tiles;
    struct r_job job;
    bool busy;                     /* submitted, not yet waited for */
+   /* the tile orders (r_scene_tile_order) of `scene` [1] and of the
+    * context's scene when a flush runs it [0] */
+   uint32_t *order[2];
+   unsigned order_capacity[2];
 };
+
+/* Scene s's tiles in the order the threads of job take them (its lanes,
+ * one a thread), in a's buffer `which`; NULL (index order, one lane) when
+ * out of memory. */
+static const uint32_t *tile_order(struct fgl_scene_async *a, int which, const struct r_scene *s,
+                                  struct r_job *job)
+{
+   const unsigned n = r_scene_tiles(s);
+   if (n > a->order_capacity[which]) {
+      uint32_t *o = fgl_realloc(a->order[which], (size_t)n * sizeof(*o));
+      if (!o)
+         return NULL;
+      a->order[which] = o;
+      a->order_capacity[which] = n;
+   }
+   _Static_assert(R_SCENE_MAX_LANES <= R_POOL_MAX_LANES, "a lane per thread");
+   job->lanes = job->threads < R_SCENE_MAX_LANES ? job->threads : R_SCENE_MAX_LANES;
+   r_scene_tile_order(s, job->lanes, a->order[which], job->lane_end);
+   return a->order[which];
+}
+
+/* The context's fgl_scene_async, made on first use; NULL when out of
+ * memory. */
+static struct fgl_scene_async *scene_async(struct fgl_context *ctx)
+{
+   if (!ctx->_SceneAsync)
+      ctx->_SceneAsync = fgl_calloc(1, sizeof(*ctx->_SceneAsync));
+   return ctx->_SceneAsync;
+}
 
 /* Past this many commands, a scene is handed to the workers when they
  * are idle: a job costs a wake-up and a pass over the tiles, which a few
@@ -161,13 +198,9 @@ static void maybe_hand_over(struct fgl_context *ctx)
    struct r_scene *s = &ctx->_Scene;
    if (s->ncmds < ASYNC_MIN_CMDS)
       return;
-   struct fgl_scene_async *a = ctx->_SceneAsync;
-   if (!a) {
-      a = fgl_calloc(1, sizeof(*a));
-      if (!a)
-         return;   /* drawn at the next flush, as without it */
-      ctx->_SceneAsync = a;
-   }
+   struct fgl_scene_async *a = scene_async(ctx);
+   if (!a)
+      return;   /* drawn at the next flush, as without it */
    if (a->busy) {
       if (!r_pool_finished(&a->job))
          return;
@@ -189,6 +222,7 @@ static void maybe_hand_over(struct fgl_context *ctx)
       .count = r_scene_tiles(&a->scene),
       .threads = ctx->_NumThreads,
    };
+   a->tiles.order = tile_order(a, 1, &a->scene, &a->job);
    a->busy = true;
    r_pool_submit(&a->job);
 }
@@ -199,6 +233,8 @@ void fgl_scene_fini(struct fgl_context *ctx)
    r_scene_fini(&ctx->_Scene);
    if (ctx->_SceneAsync) {
       r_scene_fini(&ctx->_SceneAsync->scene);
+      fgl_free(ctx->_SceneAsync->order[0]);
+      fgl_free(ctx->_SceneAsync->order[1]);
       fgl_free(ctx->_SceneAsync);
       ctx->_SceneAsync = NULL;
    }
@@ -220,20 +256,22 @@ static void run_scene(struct fgl_context *ctx, struct fgl_framebuffer *front)
    memset(j.stats, 0, sizeof(j.stats));
    j.front = front;
    j.lazy = draw ? scene_lazy_fb(ctx, s) : NULL;
-   unsigned count;
-   if (draw) {
-      j.tiles_x = s->tiles_x;
-      count = r_scene_tiles(s);
-   } else {
-      j.tiles_x = (front->Width + R_TILE_SIZE - 1) / R_TILE_SIZE;
-      count = (unsigned)(j.tiles_x * ((front->Height + R_TILE_SIZE - 1) / R_TILE_SIZE));
-   }
    struct r_job job = {
       .run = run_tile,
       .arg = &j,
-      .count = count,
       .threads = ctx->_NumThreads,
    };
+   j.order = NULL;
+   if (draw) {
+      j.tiles_x = s->tiles_x;
+      job.count = r_scene_tiles(s);
+      struct fgl_scene_async *a = ctx->_NumThreads > 1 ? scene_async(ctx) : NULL;
+      if (a)
+         j.order = tile_order(a, 0, s, &job);
+   } else {
+      j.tiles_x = (front->Width + R_TILE_SIZE - 1) / R_TILE_SIZE;
+      job.count = (unsigned)(j.tiles_x * ((front->Height + R_TILE_SIZE - 1) / R_TILE_SIZE));
+   }
    const uint64_t t0 = s->stats ? r_stats_now() : 0;
    r_pool_run(&job);
    if (s->stats)

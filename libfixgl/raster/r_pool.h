@@ -3,18 +3,36 @@
  * for any context, holding no GL state.
  *
  * A job is run by the thread that submits it together with up to
- * `threads - 1` workers; items are taken in index order from a shared
- * counter, so which thread runs which item varies, but every item runs
+ * `threads - 1` workers; items are taken in index order from shared
+ * counters (see Lanes), so which thread runs which item varies, but every item runs
  * exactly once, and r_pool_run returns after all of them finished.  Jobs
  * of several submitting threads (several contexts) run at once, the
  * workers going round them in turn.  Workers are created when a job first
  * asks for them, kept across jobs and contexts, and joined by
  * r_pool_shutdown (the last context destroyed, or the library unloaded).
+ *
+ * Lanes: a job may split its items into `lanes` consecutive ranges, each
+ * with its own counter on its own cache line.  The thread of slot k takes
+ * the items of lane k mod lanes first, then those left in the other lanes
+ * in turn.  A submitter that gives each lane the items of one part of the
+ * framebuffer, the same every frame, keeps that part's memory in one
+ * core's cache (and the threads do not contend for one counter); the
+ * taking from other lanes keeps the load balanced.
  */
 #ifndef FGL_R_POOL_H
 #define FGL_R_POOL_H
 
 #include <stdbool.h>
+
+#define R_POOL_MAX_LANES 8
+
+/* A lane's counter, 64 bytes from any other field of the job (so on a
+ * cache line of its own, without asking heap or stack for alignment). */
+struct r_pool_lane {
+   unsigned next;           /* the next item to take (atomic) */
+   unsigned end;            /* one past the lane's last item */
+   char pad[56];
+};
 
 struct r_job {
    /* runs item `item`; `slot` identifies the running thread within the
@@ -23,9 +41,15 @@ struct r_job {
    void *arg;
    unsigned count;          /* items 0 .. count - 1 */
    unsigned threads;        /* at most this many threads (>= 1) */
+   /* 0 or 1: one lane; else lane k ends before lane_end[k] (the last
+    * one at count), at most R_POOL_MAX_LANES */
+   unsigned lanes;
+   unsigned lane_end[R_POOL_MAX_LANES];
 
-   /* the pool's bookkeeping */
-   unsigned next;           /* the next item to take (atomic) */
+   /* the pool's bookkeeping: each claim of an item writes its lane's
+    * counter, each thread leaving the items writes `done` once */
+   char pad[64];
+   struct r_pool_lane lane[R_POOL_MAX_LANES];
    unsigned done;           /* items finished (atomic) */
    unsigned helpers;        /* workers that joined (under the pool lock) */
    unsigned active;         /* workers inside the job (under the pool lock) */

@@ -364,6 +364,40 @@ fail:
    return false;
 }
 
+/* buckets of r_scene_tile_order: tiles with this many commands or more
+ * share the last */
+#define ORDER_BUCKETS 64u
+
+void r_scene_tile_order(const struct r_scene *s, unsigned lanes, uint32_t *order,
+                        unsigned *lane_end)
+{
+   /* a counting sort by lane, then by the number of commands, most
+    * first, then by index */
+   enum { KEYS = R_SCENE_MAX_LANES * ORDER_BUCKETS };
+   unsigned start[KEYS + 1] = { 0 };
+   for (int ty = 0; ty < s->tiles_y; ty++) {
+      for (int tx = 0; tx < s->tiles_x; tx++) {
+         const uint32_t c = s->bins[ty * s->tiles_x + tx].count;
+         const unsigned key = (unsigned)ty % lanes * ORDER_BUCKETS + ORDER_BUCKETS - 1 -
+                              (c < ORDER_BUCKETS - 1 ? c : ORDER_BUCKETS - 1);
+         start[key + 1]++;
+      }
+   }
+   for (unsigned k = 1; k <= KEYS; k++)
+      start[k] += start[k - 1];
+   for (unsigned l = 0; l < lanes; l++)
+      lane_end[l] = start[(l + 1) * ORDER_BUCKETS];
+   for (int ty = 0; ty < s->tiles_y; ty++) {
+      for (int tx = 0; tx < s->tiles_x; tx++) {
+         const uint32_t t = (uint32_t)(ty * s->tiles_x + tx);
+         const uint32_t c = s->bins[t].count;
+         const unsigned key = (unsigned)ty % lanes * ORDER_BUCKETS + ORDER_BUCKETS - 1 -
+                              (c < ORDER_BUCKETS - 1 ? c : ORDER_BUCKETS - 1);
+         order[start[key]++] = t;
+      }
+   }
+}
+
 void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats,
                       unsigned slot)
 {

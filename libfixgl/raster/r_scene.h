@@ -111,6 +111,21 @@ static inline unsigned r_scene_tiles(const struct r_scene *s)
    return (unsigned)(s->tiles_x * s->tiles_y);
 }
 
+/* Writes into order[0 .. r_scene_tiles(s) - 1] the scene's tiles in the
+ * order in which `lanes` threads should take them (r_pool.h's lanes):
+ * lane k, ending before lane_end[k], holds the rows of tiles ty with
+ * ty mod lanes = k, the same tiles every frame, so that a thread finds
+ * its tiles' pixels in its core's cache and two threads rarely write
+ * neighbouring tiles, whose rows share the cache lines at their ends when
+ * the application's buffer is not 64-byte aligned (a checkerboard of
+ * tiles made gears 12% slower on two threads); within a lane, the tiles
+ * with the most commands come first, so that the last tiles taken are
+ * short and no thread waits long for another at the end.  The order of
+ * the tiles changes no pixel.  lanes <= R_SCENE_MAX_LANES. */
+#define R_SCENE_MAX_LANES 8
+void r_scene_tile_order(const struct r_scene *s, unsigned lanes, uint32_t *order,
+                        unsigned *lane_end);
+
 /* Replays tile `tile`'s commands in order; the states that count
  * (r_state.stats) count into `stats` instead. */
 /* slot: the replaying thread's worker slot (< R_SAMPLE_SLOTS), whose
