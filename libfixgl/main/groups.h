@@ -119,6 +119,10 @@ void fgl_tex_set_image(struct fgl_texture_object *t, GLenum target, GLint level,
  * `level` of t */
 struct fgl_texture_image **fgl_tex_image_slot(struct fgl_texture_object *t, GLenum target,
                                               GLint level);
+/* after level `level` of `target`'s image changed: GL_GENERATE_MIPMAP's
+ * levels below it (teximage.c check_gen_mipmap) */
+void fgl_tex_image_changed(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum target, GLint level);
 /* a 2D target, a cube face or a cube-map proxy (glCompressedTexImage2D's
  * targets) */
 bool fgl_tex_is_2d_image_target(GLenum target, bool proxies);

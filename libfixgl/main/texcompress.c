@@ -167,6 +167,8 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
    }
    fgl_tex_set_image(t, target, level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
+   /* [S: teximage.c:teximage] then GL_GENERATE_MIPMAP */
+   fgl_tex_image_changed(ctx, t, target, level);
 }
 
 void GLAPIENTRY glCompressedTexImage1D(GLenum target, GLint level, GLenum internalformat,
@@ -315,6 +317,8 @@ static void compressed_tex_sub_image(GLuint dims, GLenum target, GLint level, GL
              (const uint8_t *)data + (size_t)j * row, row);
    decode_image(img);
    ctx->NewState |= FGL_NEW_TEXTURE;
+   /* [S: teximage.c:compressed_tex_sub_image] then GL_GENERATE_MIPMAP */
+   fgl_tex_image_changed(ctx, fgl_tex_target_object(ctx, target), target, level);
 }
 
 void GLAPIENTRY glCompressedTexSubImage1D(GLenum target, GLint level, GLint xoffset,

@@ -728,10 +728,10 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
  * of `internal` on `target` is stored in, 0 for an uncompressed one */
 static GLenum s3tc_format_of(GLint internal, GLenum target)
 {
-   if (fgl_s3tc_block_bytes((GLenum)internal, NULL))
-      return (GLenum)internal;
    if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target))
       return 0;
+   if (fgl_s3tc_block_bytes((GLenum)internal, NULL))
+      return (GLenum)internal;
    if (internal == GL_COMPRESSED_RGB)
       return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
    if (internal == GL_COMPRESSED_RGBA)
@@ -1896,6 +1896,10 @@ GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
    switch (img->InternalFormat) {
    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+   /* GL_COMPRESSED_RGB/RGBA of a 1D or 3D image (measured: stored
+    * uncompressed, reported as the base format) */
+   case GL_COMPRESSED_RGB: return GL_RGB;
+   case GL_COMPRESSED_RGBA: return GL_RGBA;
    default: return img->InternalFormat;
    }
 }
@@ -1930,6 +1934,12 @@ void fgl_tex_set_image(struct fgl_texture_object *t, GLenum target, GLint level,
                        struct fgl_texture_image *img)
 {
    set_image(t, target_face(target), level, img);
+}
+
+void fgl_tex_image_changed(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum target, GLint level)
+{
+   check_gen_mipmap(ctx, t, target_face(target), level);
 }
 
 struct fgl_texture_image **fgl_tex_image_slot(struct fgl_texture_object *t, GLenum target,
