@@ -433,6 +433,9 @@ struct fgl_texture_image {
     * NULL for an uncompressed image. */
    uint8_t *Blocks;
    size_t BlocksSize;
+   /* the S3TC format of Blocks (InternalFormat, or the one the oracle
+    * picks for GL_COMPRESSED_RGB/RGBA), 0 for an uncompressed image */
+   GLenum CompressedFormat;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images

@@ -743,6 +743,500 @@ static void mixed_levels_case(fc_h *h)
     scene_floor(h, 2.0f);
 }
 
+
+/* ---- the encoder: uncompressed data into S3TC images ---- */
+
+/* Client images for the encoder cases (RGBA bytes, tightly packed): kind
+ * 0 random, 1 gradients (alpha down the rows), 2 random colours with an
+ * alpha edge, 3 alpha in three levels over colour bands, 4 a few flat
+ * colours (blocks of one or two colours), 5 greys close together. */
+static unsigned char g_img[64 * 64 * 4];
+
+static void make_image(int kind, int w, int h, unsigned seed)
+{
+    rng_state = seed * 104729u + 3u;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            for (int c = 0; c < 4; c++) {
+                int v;
+                switch (kind) {
+                case 0: v = (int)(rng() & 255); break;
+                case 1:
+                    v = c == 3 ? y * 255 / (h > 1 ? h - 1 : 1)
+                               : (x * 255 / (w > 1 ? w - 1 : 1) + c * 40 + y * 3) & 255;
+                    break;
+                case 2: v = c == 3 ? (x < w / 2 ? 0 : 255) : (int)(rng() & 255); break;
+                case 3: v = c == 3 ? (int)(rng() % 3) * 127 : (y * 30 + c * 50) & 255; break;
+                case 4: v = ((x / 3 + y / 2) & 1) ? 40 + c * 60 : 250 - c * 30; break;
+                default: v = 120 + (int)(rng() % 6) + (c == 1 ? 2 : 0); break;
+                }
+                g_img[4 * (y * w + x) + c] = (unsigned char)v;
+            }
+}
+
+/* What a case may read back of an encoded image.  The oracle's encoder
+ * reads uninitialised stack memory for the texels of an image's first
+ * block that lie outside the image (ORACLE-NOTES.md "Compressed
+ * textures: the encoder"): DXT3 and DXT5 blocks of an image narrower or
+ * shorter than 4 hold garbage there, so the cases compare their texels,
+ * not their bytes; a DXT5 image narrower than 4 and 2 or more high can
+ * get a garbage code in a texel of the image, so no case makes one. */
+static bool bytes_defined(GLenum f, int w, int h)
+{
+    return f == DXT1 || f == DXT1A || f == GL_COMPRESSED_RGB || (w >= 4 && h >= 4);
+}
+
+struct ep {
+    const char *name;
+    GLenum internal;
+    int w, h, kind;
+    GLenum min, mag, env;
+    bool blend;
+};
+
+static const struct ep encode_params[] = {
+    { "compressed/encode_dxt1_random", DXT1, 16, 16, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_dxt1_gradient_linear", DXT1, 16, 16, 1, GL_LINEAR, GL_LINEAR, GL_MODULATE, false },
+    { "compressed/encode_dxt1_flat_colours", DXT1, 12, 8, 4, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_dxt1_close_greys", DXT1, 8, 8, 5, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_dxt1_npot_13x6", DXT1, 13, 6, 1, GL_LINEAR, GL_LINEAR, GL_REPLACE, false },
+    { "compressed/encode_dxt1_1x1", DXT1, 1, 1, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_dxt1_2x2", DXT1, 2, 2, 0, GL_LINEAR, GL_LINEAR, GL_REPLACE, false },
+    { "compressed/encode_dxt1_3x5", DXT1, 3, 5, 1, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_dxt1a_alpha_edge", DXT1A, 16, 16, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt1a_alpha_levels", DXT1A, 7, 9, 3, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+    { "compressed/encode_dxt1a_gradient", DXT1A, 16, 16, 1, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt1a_5x3", DXT1A, 5, 3, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt3_random", DXT3, 16, 16, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt3_gradient_npot", DXT3, 33, 17, 1, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+    { "compressed/encode_dxt3_alpha_levels", DXT3, 8, 8, 3, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt3_1x1", DXT3, 1, 1, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt3_3x5", DXT3, 3, 5, 1, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_random", DXT5, 16, 16, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_gradient_linear", DXT5, 16, 16, 1, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+    { "compressed/encode_dxt5_alpha_edge", DXT5, 8, 8, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_alpha_levels_npot", DXT5, 7, 9, 3, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_flat_colours", DXT5, 12, 8, 4, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_1x1", DXT5, 1, 1, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_dxt5_5x1", DXT5, 5, 1, 0, GL_LINEAR, GL_LINEAR, GL_REPLACE, true },
+    { "compressed/encode_dxt5_13x6", DXT5, 13, 6, 0, GL_LINEAR, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_generic_rgb", GL_COMPRESSED_RGB, 16, 12, 1, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/encode_generic_rgba", GL_COMPRESSED_RGBA, 16, 12, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/encode_generic_rgba_npot", GL_COMPRESSED_RGBA, 10, 6, 3, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+};
+
+static const struct ep *find_encode(const char *name)
+{
+    for (size_t i = 0; i < sizeof encode_params / sizeof encode_params[0]; i++)
+        if (strcmp(encode_params[i].name, name) == 0)
+            return &encode_params[i];
+    return NULL;
+}
+
+/* The stored format's blocks and texels of level `level` (w x h) of the
+ * bound 2D texture; the blocks only where the oracle defines them. */
+static void read_encoded(fc_h *h, const char *label, GLenum internal, int level, int w, int hh)
+{
+    char l[96];
+    GLint fmt = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+    snprintf(l, sizeof l, "%s texels", label);
+    get_rgba(h, l, level, w, hh);
+    if (bytes_defined(internal, w, hh) && (fmt == DXT1 || fmt == DXT1A || fmt == DXT3 || fmt == DXT5)) {
+        snprintf(l, sizeof l, "%s blocks", label);
+        get_blocks(h, l, level, image_size((GLenum)fmt, w, hh));
+    }
+}
+
+static void encode_case(fc_h *h)
+{
+    const struct ep *p = find_encode(fc_this_case(h)->name);
+    if (!p)
+        return;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(p->min, p->mag);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    make_image(p->kind, p->w, p->h, 11);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)p->internal, p->w, p->h, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 g_img);
+    fc_error(h, "glTexImage2D");
+    level_queries(h, "level 0", GL_TEXTURE_2D, 0);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)p->env);
+    if (p->blend) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    scene_quad(h, -0.1f, 1.2f);
+    read_encoded(h, "level 0", p->internal, 0, p->w, p->h);
+}
+
+/* Client data of other formats, types and unpack modes into S3TC images:
+ * the oracle converts it to RGB8 / RGBA8 first, as into such an image. */
+static void encode_sources_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(GL_NEAREST, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    make_image(0, 16, 16, 23);
+    static const GLenum fmts[4] = { DXT1, DXT1A, DXT3, DXT5 };
+    static const GLenum src_fmt[5] = { GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_BGRA, GL_ALPHA };
+    char l[96];
+    for (int f = 0; f < 4; f++)
+        for (int s = 0; s < 5; s++) {
+            glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 8, 8, 0, src_fmt[s], GL_UNSIGNED_BYTE,
+                         g_img);
+            snprintf(l, sizeof l, "format %d from 0x%x", f, src_fmt[s]);
+            fc_error(h, l);
+            read_encoded(h, l, fmts[f], 0, 8, 8);
+        }
+    /* other types */
+    static float fsrc[8 * 8 * 4];
+    for (int i = 0; i < 8 * 8 * 4; i++)
+        fsrc[i] = (float)g_img[i] / 255.0f + (float)((int)(rng() % 9) - 4) / 3000.0f;
+    for (int f = 0; f < 4; f++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 8, 8, 0, GL_RGBA, GL_FLOAT, fsrc);
+        snprintf(l, sizeof l, "format %d from floats", f);
+        fc_error(h, l);
+        read_encoded(h, l, fmts[f], 0, 8, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 8, 8, 0, GL_RGBA,
+                     GL_UNSIGNED_SHORT_4_4_4_4, g_img);
+        snprintf(l, sizeof l, "format %d from 4_4_4_4", f);
+        fc_error(h, l);
+        read_encoded(h, l, fmts[f], 0, 8, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 8, 4, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5,
+                     g_img);
+        snprintf(l, sizeof l, "format %d from 5_6_5", f);
+        fc_error(h, l);
+        read_encoded(h, l, fmts[f], 0, 8, 4);
+    }
+    /* unpack modes: row length, skips, alignment */
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 16);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 5);
+    for (int f = 0; f < 4; f++) {
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 9, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d with unpack skips", f);
+        fc_error(h, l);
+        read_encoded(h, l, fmts[f], 0, 9, 8);
+    }
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT1, 5, 5, 0, GL_RGB, GL_UNSIGNED_BYTE, g_img);
+    fc_error(h, "DXT1 from RGB rows aligned to 8");
+    read_encoded(h, "DXT1 from RGB rows aligned to 8", DXT1, 0, 5, 5);
+    /* pixel transfer: scale and bias before the encoder */
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    glPixelTransferf(GL_ALPHA_BIAS, 0.25f);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT5, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    fc_error(h, "DXT5 with scale and bias");
+    read_encoded(h, "DXT5 with scale and bias", DXT5, 0, 8, 8);
+    glPixelTransferf(GL_RED_SCALE, 1);
+    glPixelTransferf(GL_ALPHA_BIAS, 0);
+    /* no data: the storage as it is (zero blocks), then the same size again */
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT5, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    fc_error(h, "DXT5 without data");
+    read_encoded(h, "DXT5 without data", DXT5, 0, 8, 8);
+}
+
+/* glTexSubImage2D into S3TC images: block boundaries, the edge, errors;
+ * one image over another of the same size keeps the storage (a DXT5
+ * block of one alpha leaves its second byte as it was). */
+static void encode_sub_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(GL_NEAREST, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static const GLenum fmts[4] = { DXT1, DXT1A, DXT3, DXT5 };
+    char l[96];
+    for (int f = 0; f < 4; f++) {
+        make_image(1, 13, 10, 5u + (unsigned)f);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)fmts[f], 13, 10, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        make_image(f == 3 ? 2 : 0, 9, 6, 40u + (unsigned)f);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: 8x4 at (4, 4)", f);
+        E(h, l);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 8, 4, 5, 6, GL_RGBA, GL_UNSIGNED_BYTE, g_img + 16);
+        snprintf(l, sizeof l, "format %d: 5x6 at (8, 4) to both edges", f);
+        E(h, l);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: x off the grid", f);
+        E(h, l);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 4, 4, 3, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: height not a block, not at the edge", f);
+        E(h, l);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 3, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: width not a block, not at the edge", f);
+        E(h, l);
+        /* a 1x2 region is an image of its own to the encoder: DXT1 only
+         * (bytes_defined) */
+        if (f < 2) {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 12, 8, 1, 2, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+            snprintf(l, sizeof l, "format %d: 1x2 at (12, 8), the last block", f);
+            E(h, l);
+        }
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 12, 8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: beyond the image", f);
+        E(h, l);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 4, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        snprintf(l, sizeof l, "format %d: empty", f);
+        E(h, l);
+        snprintf(l, sizeof l, "format %d", f);
+        read_encoded(h, l, fmts[f], 0, 13, 10);
+        if (f == 0 || f == 3)
+            scene_quad(h, 0, 1);
+    }
+    /* the same size and format again: the storage stays */
+    make_image(1, 8, 8, 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT5, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    make_image(2, 8, 8, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT5, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    read_encoded(h, "DXT5 over DXT5 of the same size", DXT5, 0, 8, 8);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT5, 12, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    read_encoded(h, "DXT5 of another size", DXT5, 0, 12, 8);
+}
+
+/* glCopyTexImage2D / glCopyTexSubImage2D into S3TC images. */
+static void encode_copy_case(fc_h *h)
+{
+    const fc_case *c = fc_this_case(h);
+    fc_pixel_ortho(h);
+    fcu_clear(0.2f, 0.4f, 0.6f, 0.8f, 1);
+    glBegin(GL_TRIANGLES);
+    glColor4f(1, 0, 0, 0.1f); glVertex2f(1, 1);
+    glColor4f(0, 1, 0, 0.5f); glVertex2f((float)c->width - 2, 4);
+    glColor4f(0, 0, 1, 1); glVertex2f(12, (float)c->height - 3);
+    glEnd();
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(GL_NEAREST, GL_NEAREST);
+    static const GLenum fmts[6] = { DXT1, DXT1A, DXT3, DXT5, GL_COMPRESSED_RGB, GL_COMPRESSED_RGBA };
+    char l[96];
+    for (int f = 0; f < 6; f++) {
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, fmts[f], 2, 3, 20, 18, 0);
+        snprintf(l, sizeof l, "copy into 0x%x", fmts[f]);
+        E(h, l);
+        level_queries(h, l, GL_TEXTURE_2D, 0);
+        read_encoded(h, l, fmts[f], 0, 20, 18);
+    }
+    /* partly outside the buffer: the texels outside stay as stored */
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, DXT5, c->width - 9, 5, 16, 12, 0);
+    E(h, "copy partly outside");
+    read_encoded(h, "copy partly outside", DXT5, 0, 16, 12);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, DXT1, 2, 3, 18, 18, 1);
+    E(h, "copy with a border");
+    glCopyTexImage1D(GL_TEXTURE_1D, 0, DXT1, 0, 0, 16, 0);
+    E(h, "1D copy into DXT1");
+    /* sub-copies */
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, DXT3, 0, 0, 16, 16, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 4, 8, 10, 3, 8, 8);
+    E(h, "sub-copy 8x8 at (4, 8)");
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 12, 0, 1, 1, 4, 4);
+    E(h, "sub-copy to the edge");
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 1, 1, 4, 4);
+    E(h, "sub-copy off the grid");
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, 4, 3);
+    E(h, "sub-copy height not a block");
+    read_encoded(h, "after the sub-copies", DXT3, 0, 16, 16);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    scene_quad(h, 0, 1);
+}
+
+/* GL_GENERATE_MIPMAP of S3TC images: the base decoded, box-filtered along
+ * an uncompressed chain, each level encoded. */
+static void encode_mipmap_case(fc_h *h)
+{
+    const char *name = fc_this_case(h)->name;
+    GLenum f = DXT1;
+    int w = 32, hh = 32;
+    if (strstr(name, "dxt1a"))
+        f = DXT1A;
+    else if (strstr(name, "dxt3"))
+        f = DXT3;
+    else if (strstr(name, "dxt5"))
+        f = DXT5;
+    else if (strstr(name, "generic"))
+        f = GL_COMPRESSED_RGBA;
+    if (strstr(name, "npot"))
+        w = 24, hh = 10;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    /* DXT5 levels under 4 wide and 2 or more high may hold the oracle's
+     * garbage codes (bytes_defined): the 32x32 chains stop at 4x4 */
+    const bool dxt5 = f == DXT5 || f == GL_COMPRESSED_RGBA;
+    const int max_level = dxt5 && w == 32 ? 3 : 1000;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max_level);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (strstr(name, "compressed_base")) {
+        const int n = make_blocks(f, w, hh, 21, 0, 0);
+        glCompressedTexImage2D(GL_TEXTURE_2D, 0, f, w, hh, 0, n, g_blocks);
+    } else {
+        make_image(f == DXT5 || f == GL_COMPRESSED_RGBA ? 1 : 0, w, hh, 9);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, w, hh, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    }
+    E(h, "base");
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    scene_floor(h, 3.0f);
+    char l[64];
+    for (int level = 0;; level++) {
+        snprintf(l, sizeof l, "level %d", level);
+        level_queries(h, l, GL_TEXTURE_2D, level);
+        read_encoded(h, l, f, level, w, hh);
+        if ((w == 1 && hh == 1) || level == max_level)
+            break;
+        w = w > 1 ? w / 2 : 1;
+        hh = hh > 1 ? hh / 2 : 1;
+    }
+    /* a sub-image of the base regenerates the chain */
+    make_image(2, 8, 8, 31);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 8, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "sub-image of the base");
+    read_encoded(h, "level 1 after the sub-image", f, 1, strstr(name, "npot") ? 12 : 16,
+                 strstr(name, "npot") ? 5 : 16);
+    scene_floor(h, 3.0f);
+}
+
+/* S3TC images on cube-map faces: glCompressedTexImage2D, glTexImage2D
+ * (encoded), sub-images, glGetCompressedTexImage of a face. */
+static void cube_case(fc_h *h)
+{
+    const char *name = fc_this_case(h)->name;
+    const bool encoded = strstr(name, "encoded") != NULL;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    /* one format for all faces (faces of different formats: the oracle's
+     * glGetTexImage of some faces reads other texels; not modelled) */
+    char l[96];
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        const GLenum f = encoded ? DXT5 : DXT1A;
+        if (encoded) {
+            make_image(face % 4, 8, 8, 60u + (unsigned)face);
+            glTexImage2D(target, 0, (GLint)(face == 5 ? GL_COMPRESSED_RGBA : DXT5), 8, 8, 0,
+                         GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        } else {
+            const int n = make_blocks(DXT5, 8, 8, 70u + (unsigned)face, 0, 0);
+            glCompressedTexImage2D(target, 0, f, 8, 8, 0,
+                                   f == DXT1 || f == DXT1A ? n / 2 : n, g_blocks);
+        }
+        snprintf(l, sizeof l, "face %d", face);
+        E(h, l);
+    }
+    /* a sub-image of one face, then errors */
+    if (encoded) {
+        make_image(0, 4, 4, 99);
+        glTexSubImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, 4, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE,
+                        g_img);
+    } else {
+        const int n = make_blocks(DXT1A, 4, 4, 98, 2, 0);
+        glCompressedTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_Z, 0, 4, 4, 4, 4, DXT1A, n, g_blocks);
+    }
+    E(h, "sub-image of a face");
+    glCompressedTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, DXT1, 8, 4, 0, 16, g_blocks);
+    E(h, "face not square");
+    glCompressedTexImage2D(GL_TEXTURE_CUBE_MAP, 0, DXT1, 8, 8, 0, 32, g_blocks);
+    E(h, "the cube-map target");
+    glCompressedTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, DXT5, 16, 16, 0, 256, NULL);
+    E(h, "cube-map proxy");
+    level_queries(h, "cube-map proxy", GL_PROXY_TEXTURE_CUBE_MAP, 0);
+    glCompressedTexSubImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_X, 0, 0, 0, 4, 4, DXT5, 16, g_blocks);
+    E(h, "sub-image of another format");
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        snprintf(l, sizeof l, "face %d", face);
+        level_queries(h, l, target, 0);
+        memset(g_out, 0xcd, 256);
+        glGetCompressedTexImage(target, 0, g_out);
+        E(h, l);
+        GLint fmt = 0;
+        glGetTexLevelParameteriv(target, 0, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+        fc_blob(h, l, g_out, (size_t)image_size((GLenum)fmt, 8, 8) + 16);
+        memset(g_out, 0xcd, 8 * 8 * 4);
+        glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, l, g_out, 8 * 8 * 4);
+    }
+    glGetCompressedTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 1, g_out);
+    E(h, "face level without an image");
+    /* drawn: a quad whose coordinates sweep every face */
+    const fc_case *c = fc_this_case(h);
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    glEnable(GL_TEXTURE_CUBE_MAP);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    const int n = 6;
+    for (int face = 0; face < n; face++) {
+        const float x0 = (float)c->width * (float)face / (float)n,
+                    x1 = (float)c->width * (float)(face + 1) / (float)n;
+        static const float dir[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 },
+                                         { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+        const float *d = dir[face];
+        glBegin(GL_QUADS);
+        for (int k = 0; k < 4; k++) {
+            const float u = k == 1 || k == 2 ? 0.9f : -0.9f, v = k >= 2 ? 0.9f : -0.9f;
+            /* a direction near the face's axis, spread over the face */
+            const float s = d[0] != 0 ? d[0] : u, t = d[1] != 0 ? d[1] : (d[0] != 0 ? u : v),
+                        r = d[2] != 0 ? d[2] : v;
+            glTexCoord3f(s, t, r);
+            glVertex2f(k == 1 || k == 2 ? x1 : x0, k >= 2 ? (float)c->height - 1 : 1);
+        }
+        glEnd();
+    }
+    fc_capture(h);
+}
+
+/* glTexImage2D errors of the S3TC formats. */
+static void encode_errors_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    make_image(0, 8, 8, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT1, 8, 8, 1, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "border 1");
+    glTexImage1D(GL_TEXTURE_1D, 0, (GLint)DXT1, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "1D image");
+    glTexImage1D(GL_PROXY_TEXTURE_1D, 0, (GLint)DXT5, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    E(h, "1D proxy");
+    glTexImage3D(GL_TEXTURE_3D, 0, (GLint)DXT1, 8, 8, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "3D image");
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT3, 8, 8, 0, GL_DEPTH_COMPONENT, GL_FLOAT, g_img);
+    E(h, "depth data");
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT3, -4, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "negative width");
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, (GLint)DXT3, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    E(h, "proxy");
+    level_queries(h, "proxy", GL_PROXY_TEXTURE_2D, 0);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_COMPRESSED_RGB, 6, 6, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    E(h, "generic proxy");
+    level_queries(h, "generic proxy", GL_PROXY_TEXTURE_2D, 0);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_COMPRESSED_RGBA, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    E(h, "generic 1D");
+    level_queries(h, "generic 1D", GL_TEXTURE_1D, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)DXT1A, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    E(h, "0x0");
+    level_queries(h, "0x0", GL_TEXTURE_2D, 0);
+    const char *ext = (const char *)glGetString(GL_EXTENSIONS);
+    fc_value(h, "GL_EXT_texture_compression_s3tc listed",
+             ext && strstr(ext, "GL_EXT_texture_compression_s3tc") != NULL);
+}
+
 const fc_case fc_cases_compressed[] = {
 #define SC(n) FC_CASE_RGBA(n, 40, 40, 1, "gl13 compressed", sample_case)
     SC("compressed/dxt1_rgb_4colour_nearest"),
@@ -786,5 +1280,49 @@ const fc_case fc_cases_compressed[] = {
     FC_CASE_RGBA("compressed/generic_intensity", 40, 40, 1, "gl13 compressed", generic_case),
     FC_CASE_RGBA("compressed/multitexture_pushattrib", 40, 40, 1, "gl13 compressed", multitex_case),
     FC_CASE_RGBA("compressed/mixed_levels", 40, 40, 4, "gl13 compressed", mixed_levels_case),
+#define EC(n) FC_CASE_RGBA(n, 40, 40, 1, "gl13 compressed", encode_case)
+    EC("compressed/encode_dxt1_random"),
+    EC("compressed/encode_dxt1_gradient_linear"),
+    EC("compressed/encode_dxt1_flat_colours"),
+    EC("compressed/encode_dxt1_close_greys"),
+    EC("compressed/encode_dxt1_npot_13x6"),
+    EC("compressed/encode_dxt1_1x1"),
+    EC("compressed/encode_dxt1_2x2"),
+    EC("compressed/encode_dxt1_3x5"),
+    EC("compressed/encode_dxt1a_alpha_edge"),
+    EC("compressed/encode_dxt1a_alpha_levels"),
+    EC("compressed/encode_dxt1a_gradient"),
+    EC("compressed/encode_dxt1a_5x3"),
+    EC("compressed/encode_dxt3_random"),
+    EC("compressed/encode_dxt3_gradient_npot"),
+    EC("compressed/encode_dxt3_alpha_levels"),
+    EC("compressed/encode_dxt3_1x1"),
+    EC("compressed/encode_dxt3_3x5"),
+    EC("compressed/encode_dxt5_random"),
+    EC("compressed/encode_dxt5_gradient_linear"),
+    EC("compressed/encode_dxt5_alpha_edge"),
+    EC("compressed/encode_dxt5_alpha_levels_npot"),
+    EC("compressed/encode_dxt5_flat_colours"),
+    EC("compressed/encode_dxt5_1x1"),
+    EC("compressed/encode_dxt5_5x1"),
+    EC("compressed/encode_dxt5_13x6"),
+    EC("compressed/encode_generic_rgb"),
+    EC("compressed/encode_generic_rgba"),
+    EC("compressed/encode_generic_rgba_npot"),
+#undef EC
+    FC_CASE_RGBA("compressed/encode_sources", 16, 16, 0, "gl13 compressed", encode_sources_case),
+    FC_CASE_RGBA("compressed/encode_sub_images", 40, 40, 2, "gl13 compressed", encode_sub_case),
+    FC_CASE_RGBA("compressed/encode_copies", 40, 40, 1, "gl13 compressed", encode_copy_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt1", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt1a", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt3", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt5", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_generic_npot", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt1_npot", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt5_compressed_base", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_mipmap_dxt1a_compressed_base", 40, 40, 2, "gl13 compressed", encode_mipmap_case),
+    FC_CASE_RGBA("compressed/encode_errors", 16, 16, 0, "gl13 compressed errors", encode_errors_case),
+    FC_CASE_RGBA("compressed/cube_faces_blocks", 48, 16, 1, "gl13 compressed cubemap", cube_case),
+    FC_CASE_RGBA("compressed/cube_faces_encoded", 48, 16, 1, "gl13 compressed cubemap", cube_case),
     { 0 },
 };

@@ -512,6 +512,7 @@ static void query_extensions(fc_h *h)
         "GL_ARB_vertex_buffer_object", "GL_ARB_occlusion_query", "GL_EXT_vertex_array",
         "GL_ARB_point_sprite", "GL_EXT_texture3D", "GL_ARB_depth_texture", "GL_ARB_shadow",
         "GL_ARB_texture_compression", "GL_ARB_texture_cube_map",
+        "GL_EXT_texture_compression_s3tc",
     };
     /* fixgl's own extensions (include/fixgl/shading.md), which the oracle
      * does not have: not counted among the others; libfixgl's api tests

@@ -11,7 +11,7 @@
  *    or 3264 (a0 <= a1: codes 6 and 7 are 0 and 255);
  *  - glCompressedTexImage of a generic format: GL_COMPRESSED_ALPHA and
  *    GL_COMPRESSED_INTENSITY stay uncompressed (GL_ALPHA, GL_INTENSITY),
- *    GL_COMPRESSED_RGB becomes DXT1 RGB (the encoder fixgl lacks).
+ *    GL_COMPRESSED_RGB becomes DXT1 RGB (the encoder: p_s3tc_encode).
  * 64x64 textures of random blocks of each format, drawn with NEAREST
  * and read back, against the C model. */
 #include "probe.h"

@@ -12,7 +12,8 @@
  *     maps the same way: six square faces, often with GL_REFLECTION_MAP
  *     or GL_NORMAL_MAP texgen on S, T and R; from the 3D stream, 2D textures
  *     of random S3TC blocks, DXT1 RGB/RGBA, DXT3 or DXT5, through
- *     glCompressedTexImage2D)
+ *     glCompressedTexImage2D, or, in half of them, uncompressed levels
+ *     the oracle's encoder compresses, through glTexImage2D)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -135,6 +136,12 @@ struct profile {
     /* from the same stream: a 2D texture of an S3TC format (0: none),
      * every level random blocks */
     GLenum dxt;
+    /* from a stream of its own: an S3TC texture's levels given as
+     * uncompressed images (the oracle's encoder compresses them), with
+     * the S3TC format or the generic one the oracle stores it as
+     * (GL_COMPRESSED_RGB for DXT1 RGB, GL_COMPRESSED_RGBA for DXT5) */
+    int dxt_encode;
+    GLint dxt_internal;
 };
 
 static void make_profile(fc_rng *k, struct profile *p)
@@ -256,7 +263,12 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
         upload_depth_level(r, p, level, w, h0, pattern, align);
         return;
     }
-    if (p->dxt) {
+    /* encoded levels but DXT5 ones under 4 texels wide and 2 or more
+     * high: the oracle's encoder reads uninitialised memory for them
+     * (ORACLE-NOTES.md "Compressed textures: the encoder") */
+    const int encode = p->dxt && p->dxt_encode &&
+                       !(p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT && w < 4 && h0 >= 2);
+    if (p->dxt && !encode) {
         /* random blocks (pattern 3: one block repeated) */
         const int bb = p->dxt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ||
                        p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT ? 8 : 16;
@@ -302,8 +314,8 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
                          GL_UNSIGNED_BYTE, img, bytes);
     else
         fct_glTexImage2D(p->cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face : GL_TEXTURE_2D,
-                         level, p->internal, w, h, 0, src_formats[p->src], GL_UNSIGNED_BYTE, img,
-                         bytes);
+                         level, encode ? p->dxt_internal : p->internal, w, h, 0,
+                         src_formats[p->src], GL_UNSIGNED_BYTE, img, bytes);
     free(img);
 }
 
@@ -710,6 +722,16 @@ static void tex_scene(fc_h *h)
         const int use_dxt = fc_rng_chance(&k3, 12);
         const GLenum f = dxt[fc_rng_below(&k3, 4)];
         p.dxt = !p.tex1d && !p.tex3d && use_dxt ? f : 0;
+        /* half of them encoded from uncompressed levels, from a stream
+         * of their own */
+        fc_rng ke = fc_rng_make(seed, index % FC_TEX_PROFILES, 23);
+        p.dxt_encode = fc_rng_chance(&ke, 50);
+        const int generic = fc_rng_chance(&ke, 30);
+        p.dxt_internal = (GLint)p.dxt;
+        if (generic && p.dxt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT)
+            p.dxt_internal = GL_COMPRESSED_RGB;
+        if (generic && p.dxt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
+            p.dxt_internal = GL_COMPRESSED_RGBA;
         /* cube maps in about one structure of ten, from another stream */
         fc_rng kc = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
         p.cube = !p.tex1d && !p.tex3d && !p.dxt && fc_rng_chance(&kc, 11);

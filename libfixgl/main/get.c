@@ -780,6 +780,8 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
        *   ARB_depth_texture, ARB_shadow GL_DEPTH_COMPONENT16/24/32 images,
        *                          GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_*
        *   ARB_texture_compression glCompressedTex*ARB, the generic formats
+       *   EXT_texture_compression_s3tc DXT1/DXT3/DXT5 images, compressed by
+       *                          the oracle's encoder (main/texcompress_s3tc.c)
        *   ARB_texture_cube_map   GL_TEXTURE_CUBE_MAP, GL_REFLECTION_MAP,
        *                          GL_NORMAL_MAP
        *   EXT_texture3D          glTexImage3DEXT, glTexSubImage3DEXT,
@@ -823,6 +825,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
                               "GL_EXT_rescale_normal GL_EXT_separate_specular_color "
                               "GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp "
                               "GL_EXT_texture_env_add GL_EXT_texture_env_combine "
+                              "GL_EXT_texture_compression_s3tc "
                               "GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias "
                               "GL_EXT_texture3D GL_EXT_texture_mirror_clamp GL_EXT_vertex_array "
                               "GL_IBM_texture_mirrored_repeat "

@@ -113,8 +113,19 @@ bool fgl_tex_legal_dimensions(GLenum target, GLuint dims, GLint level, GLint w, 
                               GLint d, GLint border);
 struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
                                                        GLenum base);
-void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,
+void fgl_tex_set_image(struct fgl_texture_object *t, GLenum target, GLint level,
                        struct fgl_texture_image *img);
+/* the image slot of `target` (a 2D target, a cube face or a proxy) at
+ * `level` of t */
+struct fgl_texture_image **fgl_tex_image_slot(struct fgl_texture_object *t, GLenum target,
+                                              GLint level);
+/* after level `level` of `target`'s image changed: GL_GENERATE_MIPMAP's
+ * levels below it (teximage.c check_gen_mipmap) */
+void fgl_tex_image_changed(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum target, GLint level);
+/* a 2D target, a cube face or a cube-map proxy (glCompressedTexImage2D's
+ * targets) */
+bool fgl_tex_is_2d_image_target(GLenum target, bool proxies);
 /* main/texcompress.c: the bytes of a w x h x d image of an S3TC format */
 GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d);
 

@@ -13,9 +13,12 @@
  * blocks as given (fgl_texture_image.Blocks: glGetCompressedTexImage
  * returns them) and, in Data, the RGBA8 texels the oracle's sampler
  * decodes from them (main/texcompress_s3tc.c), so the raster core samples
- * it as any 8-bit image.  S3TC images are 2D only (the oracle refuses
- * them on GL_TEXTURE_3D with GL_INVALID_OPERATION and has no 1D
- * compressed textures).  ORACLE-NOTES.md "Compressed textures".
+ * it as any 8-bit image.  S3TC images are 2D (GL_TEXTURE_2D and the
+ * cube-map faces) only (the oracle refuses them on GL_TEXTURE_3D with
+ * GL_INVALID_OPERATION and has no 1D compressed textures).  Uncompressed
+ * data given to an S3TC image goes through the oracle's encoder
+ * (main/teximage.c "S3TC images").  ORACLE-NOTES.md "Compressed
+ * textures" and "Compressed textures: the encoder".
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <stdlib.h>
@@ -55,7 +58,7 @@ static bool is_generic_compressed(GLenum f)
 static void decode_image(struct fgl_texture_image *img)
 {
    if (img->Width > 0 && img->Height > 0)
-      fgl_s3tc_decode_image(img->InternalFormat, img->Blocks, img->Width, img->Height,
+      fgl_s3tc_decode_image(img->CompressedFormat, img->Blocks, img->Width, img->Height,
                             img->Data);
 }
 
@@ -68,9 +71,9 @@ static bool compressed_image_error(struct fgl_context *ctx, GLenum target,
                                    GLint level, GLenum internal, GLsizei w, GLsizei h,
                                    GLsizei d, GLint border, GLsizei image_size)
 {
-   /* _mesa_target_can_be_compressed: 2D targets only (measured: a 1D or
-    * 3D target raises GL_INVALID_ENUM) */
-   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
+   /* _mesa_target_can_be_compressed: 2D targets and cube maps only
+    * (measured: a 1D or 3D target raises GL_INVALID_ENUM) */
+   if (!fgl_tex_is_2d_image_target(target, true)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return true;
    }
@@ -78,12 +81,13 @@ static bool compressed_image_error(struct fgl_context *ctx, GLenum target,
       fgl_error(ctx, GL_INVALID_ENUM);
       return true;
    }
-   if (border != 0) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return true;
-   }
+   /* measured: a bad level before the border (the API fuzzer's seed 54) */
    if (level < 0 || level >= fgl_tex_max_levels(target)) {
       fgl_error(ctx, GL_INVALID_VALUE);
+      return true;
+   }
+   if (border != 0) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
       return true;
    }
    if (fgl_compressed_image_size(internal, w, h, d) != image_size) {
@@ -110,7 +114,7 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
    fgl_scene_flush(ctx);   /* the scene may sample the images */
    /* legal_teximage_target (fixgl's targets, as glTexImage) */
    if (dims == 1   ? target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D
-       : dims == 2 ? target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D
+       : dims == 2 ? !fgl_tex_is_2d_image_target(target, true)
                    : target != GL_TEXTURE_3D && target != GL_PROXY_TEXTURE_3D) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
@@ -130,12 +134,12 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   if (target == GL_PROXY_TEXTURE_2D) {
+   if (target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP) {
       if (!dims_ok) {
          fgl_free(img);
          img = NULL;
       }
-      fgl_tex_set_image(t, level, img);
+      fgl_tex_set_image(t, target, level, img);
       return;
    }
    if (!dims_ok) {
@@ -162,8 +166,10 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
          memcpy(img->Blocks, data, (size_t)image_size);
       decode_image(img);
    }
-   fgl_tex_set_image(t, level, img);
+   fgl_tex_set_image(t, target, level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
+   /* [S: teximage.c:teximage] then GL_GENERATE_MIPMAP */
+   fgl_tex_image_changed(ctx, t, target, level);
 }
 
 void GLAPIENTRY glCompressedTexImage1D(GLenum target, GLint level, GLenum internalformat,
@@ -226,13 +232,13 @@ static bool compressed_sub_error(struct fgl_context *ctx, GLuint dims, GLenum ta
                                  GLsizei h, GLsizei d, GLenum format, GLsizei image_size,
                                  struct fgl_texture_image **out)
 {
-   /* no 1D compressed textures; 2D on GL_TEXTURE_2D; none of fixgl's
-    * formats on GL_TEXTURE_3D */
+   /* no 1D compressed textures; 2D on GL_TEXTURE_2D and the cube faces;
+    * none of fixgl's formats on GL_TEXTURE_3D */
    if (dims == 3 && target == GL_TEXTURE_3D) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return true;
    }
-   if (dims != 2 || target != GL_TEXTURE_2D) {
+   if (dims != 2 || !fgl_tex_is_2d_image_target(target, false)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return true;
    }
@@ -255,7 +261,8 @@ static bool compressed_sub_error(struct fgl_context *ctx, GLuint dims, GLenum ta
       fgl_error(ctx, GL_INVALID_VALUE);
       return true;
    }
-   struct fgl_texture_image *img = fgl_tex_target_object(ctx, target)->Image[level];
+   struct fgl_texture_image *img =
+      *fgl_tex_image_slot(fgl_tex_target_object(ctx, target), target, level);
    if (!img || img->InternalFormat != format) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return true;
@@ -311,6 +318,8 @@ static void compressed_tex_sub_image(GLuint dims, GLenum target, GLint level, GL
              (const uint8_t *)data + (size_t)j * row, row);
    decode_image(img);
    ctx->NewState |= FGL_NEW_TEXTURE;
+   /* [S: teximage.c:compressed_tex_sub_image] then GL_GENERATE_MIPMAP */
+   fgl_tex_image_changed(ctx, fgl_tex_target_object(ctx, target), target, level);
 }
 
 void GLAPIENTRY glCompressedTexSubImage1D(GLenum target, GLint level, GLint xoffset,
@@ -379,15 +388,15 @@ static void get_compressed_tex_image(GLenum target, GLint level, void *img_out)
    fgl_flush_vertices(ctx);
    switch (target) {
    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_X: case GL_TEXTURE_CUBE_MAP_NEGATIVE_X:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y:
+   case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z:
       break;
    case GL_TEXTURE_RECTANGLE: case GL_TEXTURE_1D_ARRAY:
       /* targets the oracle takes whose images fixgl does not have: a
        * missing image of a 1D or 2D target is GL_INVALID_VALUE */
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
-   case GL_TEXTURE_CUBE_MAP_POSITIVE_X: case GL_TEXTURE_CUBE_MAP_NEGATIVE_X:
-   case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y:
-   case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z:
    case GL_TEXTURE_2D_ARRAY: case GL_TEXTURE_CUBE_MAP_ARRAY:
       /* of a layered target, none */
       if (level < 0 || level >= fgl_tex_max_levels(target))
@@ -401,11 +410,12 @@ static void get_compressed_tex_image(GLenum target, GLint level, void *img_out)
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   const struct fgl_texture_image *img = fgl_tex_target_object(ctx, target)->Image[level];
+   const struct fgl_texture_image *img =
+      *fgl_tex_image_slot(fgl_tex_target_object(ctx, target), target, level);
    /* measured: a missing image of a 1D or 2D texture is GL_INVALID_VALUE,
-    * of a 3D one no error; an empty image nothing to do */
+    * of a 3D one or a cube face no error; an empty image nothing to do */
    if (!img) {
-      if (target != GL_TEXTURE_3D)
+      if (target == GL_TEXTURE_1D || target == GL_TEXTURE_2D)
          fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }

@@ -30,6 +30,8 @@
  *    mod 256; with a0 <= a1 code 6 is 0 and code 7 is 255.
  */
 #include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "main/texcompress_s3tc.h"
 
@@ -144,6 +146,496 @@ void fgl_s3tc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
                }
             }
          }
+      }
+   }
+}
+
+/* ------------------------------------------------------------------ */
+/* The encoder                                                        */
+/* ------------------------------------------------------------------ */
+
+/*
+ * The oracle compresses uncompressed data into an S3TC format with Mesa's
+ * own encoder, the libtxc_dxtn algorithm (ORACLE-NOTES.md "Compressed
+ * textures: the encoder"; probe p_s3tc_encode) [S: Mesa 22.3
+ * main/texcompress_s3tc.c: _mesa_texstore_rgb_dxt1 and siblings;
+ * util/format/texcompress_s3tc_tmp.h: tx_compress_dxtn].  It is a
+ * heuristic, not an optimum, so fixgl repeats its every step: the same
+ * 8-bit integer arithmetic, the same ties, the same slips.
+ *
+ * Colour block (all four formats):
+ *  1. the two start colours are the texels of least and greatest
+ *     weighted length r^2*4 + g^2*16 + b^2 (texel (0,0) when none is
+ *     smaller / greater; for DXT1 RGBA texels of alpha <= 127 are left
+ *     out and mark the block as having alpha);
+ *  2. one refinement (refine_ends): each texel picks the nearest of the
+ *     four colours of the ordered pair (by the same weighted distance,
+ *     the first of equals), its signed error is spread 3:0, 2:1, 1:2 or
+ *     0:3 over the two ends, each end moves by its summed error divided
+ *     (truncating) by its weight; two ends that came within a 565 step
+ *     are pushed apart;
+ *  3. the ends are cut to 565, the texels coded against the four-colour
+ *     palette (floor((2a + b) / 3), floor((a + 2b) / 3)) and, for DXT1,
+ *     against the three-colour one (floor((a + b) / 2); alpha <= 127 code
+ *     3 in DXT1 RGBA); DXT1 keeps the three-colour coding when its error
+ *     is smaller or the block has alpha.
+ * Texels outside a partial block take no part.
+ *
+ * DXT3 alpha: the top four bits of each of the 16 texels of the block's
+ * scratch: a partial block's missing texels keep what the block before it
+ * in the same call left there (the oracle's uninitialised local array).
+ *
+ * DXT5 alpha (encode_dxt5_alpha): a block whose alphas are all 0 or all
+ * 255 is written as that alpha with all codes 0, its second byte left as
+ * it was; otherwise the best of up to three codings: 8 alphas between the
+ * extremes found (0 and 255 taking part), 6 alphas between the inner
+ * extremes plus 0 and 255 (tried when the first errs by 32 or more), and
+ * that with adjusted ends (tried when both err by more than 96).
+ */
+
+enum { RED_W = 4, GREEN_W = 16, BLUE_W = 1, ALPHA_CUT = 127 };
+
+/* the block's texels, [row][column][channel] */
+typedef uint8_t s3tc_texels[4][4][4];
+
+static unsigned weighted_length(const uint8_t *c)
+{
+   return (unsigned)(c[0] * c[0] * RED_W + c[1] * c[1] * GREEN_W + c[2] * c[2] * BLUE_W);
+}
+
+/* weighted squared distance of texel c from palette colour p, and the
+ * signed channel differences */
+static unsigned colour_error(const uint8_t *c, const uint8_t *p, int diff[3])
+{
+   const int dr = c[0] - p[0], dg = c[1] - p[1], db = c[2] - p[2];
+   if (diff) {
+      diff[0] = dr;
+      diff[1] = dg;
+      diff[2] = db;
+   }
+   return (unsigned)(dr * dr * RED_W) + (unsigned)(dg * dg * GREEN_W) +
+          (unsigned)(db * db * BLUE_W);
+}
+
+/* the colour's 565 value, as the encoder compares them */
+static unsigned pack565(const uint8_t *c)
+{
+   return (unsigned)(c[0] & 0xf8) << 8 | (unsigned)(c[1] & 0xfc) << 3 | (unsigned)c[2] >> 3;
+}
+
+static void four_palette(uint8_t e[2][3], uint8_t pal[4][3])
+{
+   for (int n = 0; n < 3; n++) {
+      pal[0][n] = e[0][n];
+      pal[1][n] = e[1][n];
+      pal[2][n] = (uint8_t)((e[0][n] * 2 + e[1][n]) / 3);
+      pal[3][n] = (uint8_t)((e[0][n] + e[1][n] * 2) / 3);
+   }
+}
+
+static uint8_t clamp_u8(int v)
+{
+   return (uint8_t)(v <= 0 ? 0 : v >= 255 ? 255 : v);
+}
+
+static uint8_t add_sat(uint8_t v, int add)
+{
+   return (uint8_t)(v + add <= 255 ? v + add : 255);
+}
+
+/* Step 2: moves the two ends toward the texels' mean errors. */
+static void refine_ends(s3tc_texels px, int nx, int ny, uint8_t ends[2][3])
+{
+   uint8_t e[2][3], pal[4][3];
+   const bool keep = pack565(ends[0]) < pack565(ends[1]);
+   memcpy(e[0], ends[keep ? 0 : 1], 3);
+   memcpy(e[1], ends[keep ? 1 : 0], 3);
+   four_palette(e, pal);
+   /* the share of each end in each palette entry, out of 3 */
+   static const int share[4][2] = { { 3, 0 }, { 0, 3 }, { 2, 1 }, { 1, 2 } };
+   int err[2][3] = { { 0 } };
+   int weight[2] = { 0, 0 };
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         unsigned best = 0xffffffffu;
+         int code = 0, best_diff[3] = { 0, 0, 0 };
+         for (int k = 0; k < 4; k++) {
+            int diff[3];
+            const unsigned d = colour_error(px[j][i], pal[k], diff);
+            if (d < best) {
+               best = d;
+               code = k;
+               memcpy(best_diff, diff, sizeof(best_diff));
+            }
+         }
+         for (int s = 0; s < 2; s++) {
+            for (int n = 0; n < 3; n++)
+               err[s][n] += share[code][s] * best_diff[n];
+            weight[s] += share[code][s];
+         }
+      }
+   }
+   for (int s = 0; s < 2; s++) {
+      if (weight[s] == 0)
+         weight[s] = 1;
+      for (int n = 0; n < 3; n++)
+         e[s][n] = clamp_u8(e[s][n] + err[s][n] / weight[s]);
+   }
+   /* ends that may meet in 565: pushed apart along green, and along red
+    * and blue on the side the oracle picks (its red test compares with
+    * the other end's green, as it does) */
+   const int dr = abs(e[0][0] - e[1][0]), dg = abs(e[0][1] - e[1][1]),
+             db = abs(e[0][2] - e[1][2]);
+   if (dr < 8 && dg < 4 && db < 8) {
+      const int red = dr, green = 2 * dg, blue = db;
+      int most = red > green ? red : green;
+      most = most > blue ? most : blue;
+      if (most > 0) {
+         const int f = most > 4 ? 2 : most > 2 ? 3 : 4;
+         const int hi = e[1][1] >= e[0][1] ? 1 : 0, lo = 1 - hi;
+         e[hi][1] = add_sat(e[hi][1], f * green);
+         if (e[hi][0] - e[lo][1] > 0)
+            e[hi][0] = add_sat(e[hi][0], f * red);
+         else
+            e[lo][0] = add_sat(e[lo][0], f * red);
+         if (e[hi][2] - e[lo][2] > 0)
+            e[hi][2] = add_sat(e[hi][2], f * blue);
+         else
+            e[lo][2] = add_sat(e[lo][2], f * blue);
+      }
+   }
+   /* the oracle's order test shifts the whole of the second 565 value
+    * right by 3 (a misplaced parenthesis) */
+   const unsigned second = ((unsigned)(e[1][0] & 0xf8) << 8 | (unsigned)(e[1][1] & 0xfc) << 3 |
+                            e[1][2]) >> 3;
+   const bool in_order = pack565(e[0]) < second;
+   memcpy(ends[0], e[in_order ? 0 : 1], 3);
+   memcpy(ends[1], e[in_order ? 1 : 0], 3);
+}
+
+static void put_colour_block(uint8_t *out, unsigned c0, unsigned c1, uint32_t codes)
+{
+   out[0] = (uint8_t)c0;
+   out[1] = (uint8_t)(c0 >> 8);
+   out[2] = (uint8_t)c1;
+   out[3] = (uint8_t)(c1 >> 8);
+   for (int k = 0; k < 4; k++)
+      out[4 + k] = (uint8_t)(codes >> (8 * k));
+}
+
+/* Step 3: codes the texels against the 565 ends and writes the block. */
+static void code_colour_block(uint8_t *out, s3tc_texels px, int nx, int ny,
+                              uint8_t ends[2][3], GLenum format, bool has_alpha)
+{
+   for (int s = 0; s < 2; s++) {
+      ends[s][0] &= 0xf8;
+      ends[s][1] &= 0xfc;
+      ends[s][2] &= 0xf8;
+   }
+   unsigned c0 = pack565(ends[0]), c1 = pack565(ends[1]);
+   uint8_t e[2][3];
+   const bool swap = c0 < c1;
+   memcpy(e[0], ends[swap ? 1 : 0], 3);
+   memcpy(e[1], ends[swap ? 0 : 1], 3);
+   if (swap) {
+      const unsigned t = c0;
+      c0 = c1;
+      c1 = t;
+   }
+   uint8_t pal[4][3];
+   four_palette(e, pal);
+   unsigned err4 = 0, err3 = 0xffffffffu;
+   uint32_t codes4 = 0, codes3 = 0;
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         unsigned best = 0xffffffffu;
+         unsigned code = 0;
+         for (unsigned k = 0; k < 4; k++) {
+            const unsigned d = colour_error(px[j][i], pal[k], NULL);
+            if (d < best) {
+               best = d;
+               code = k;
+            }
+         }
+         err4 += best;
+         codes4 |= code << (2 * (j * 4 + i));
+      }
+   }
+   if (format == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ||
+       format == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT) {
+      /* the three-colour palette, written with the ends exchanged (c1
+       * first), so entries 0 and 1 swap codes */
+      for (int n = 0; n < 3; n++) {
+         pal[2][n] = (uint8_t)((e[0][n] + e[1][n]) / 2);
+         pal[3][n] = 0;
+      }
+      err3 = 0;
+      for (int j = 0; j < ny; j++) {
+         for (int i = 0; i < nx; i++) {
+            unsigned best = 0xffffffffu;
+            unsigned code = 0;
+            if (format == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT && px[j][i][3] <= ALPHA_CUT) {
+               code = 3;
+               best = 0;
+            } else {
+               for (unsigned k = 0; k < 3; k++) {
+                  const unsigned d = colour_error(px[j][i], pal[k], NULL);
+                  if (d < best) {
+                     best = d;
+                     code = k > 1 ? k : k ^ 1u;
+                  }
+               }
+            }
+            err3 += best;
+            codes3 |= code << (2 * (j * 4 + i));
+         }
+      }
+   }
+   if (err4 > err3 || has_alpha)
+      put_colour_block(out, c1, c0, codes3);
+   else
+      put_colour_block(out, c0, c1, codes4);
+}
+
+static void encode_colour_block(uint8_t *out, s3tc_texels px, int nx, int ny,
+                                GLenum format)
+{
+   const uint8_t *lo = px[0][0], *hi = px[0][0];
+   unsigned lo_len = weighted_length(px[0][0]), hi_len = lo_len;
+   bool has_alpha = false;
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         if (format == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT && px[j][i][3] <= ALPHA_CUT) {
+            has_alpha = true;
+            continue;
+         }
+         const unsigned len = weighted_length(px[j][i]);
+         if (len > hi_len) {
+            hi_len = len;
+            hi = px[j][i];
+         } else if (len < lo_len) {
+            lo_len = len;
+            lo = px[j][i];
+         }
+      }
+   }
+   uint8_t ends[2][3];
+   memcpy(ends[0], lo, 3);
+   memcpy(ends[1], hi, 3);
+   refine_ends(px, nx, ny, ends);
+   code_colour_block(out, px, nx, ny, ends, format, has_alpha);
+}
+
+static void put_alpha_block(uint8_t *out, uint8_t a0, uint8_t a1, const uint8_t codes[16])
+{
+   out[0] = a0;
+   out[1] = a1;
+   uint64_t bits = 0;
+   for (int t = 0; t < 16; t++)
+      bits |= (uint64_t)codes[t] << (3 * t);
+   for (int k = 0; k < 6; k++)
+      out[2 + k] = (uint8_t)(bits >> (8 * k));
+}
+
+/* The six-alpha coding between lo and hi (0 and 255 as codes 6 and 7
+ * when `extremes`, else by the cuts at lo/2 and (255 + hi)/2); returns
+ * its squared error. */
+static unsigned six_alpha_coding(s3tc_texels px, int nx, int ny, int lo, int hi,
+                                 bool exact_extremes, uint8_t codes[16])
+{
+   uint8_t cut[5];
+   for (int k = 0; k < 5; k++)
+      cut[k] = (uint8_t)((lo * (10 - (2 * k + 1)) + hi * (2 * k + 1)) / 10);
+   unsigned err = 0;
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         const int a = px[j][i][3];
+         int code, dist;
+         if (exact_extremes ? a == 0 : a <= lo / 2) {
+            code = 6;
+            dist = a;
+         } else if (exact_extremes ? a == 255 : a > (255 + hi) / 2) {
+            code = 7;
+            dist = 255 - a;
+         } else if (a <= cut[0]) {
+            code = 0;
+            dist = a - lo;
+         } else if (a <= cut[4]) {
+            int k = 1;
+            while (a > cut[k])
+               k++;
+            /* codes 2..5: (lo * (5 - k) + hi * k) / 5 */
+            code = k + 1;
+            dist = a - (lo * (5 - k) + hi * k) / 5;
+         } else {
+            code = 1;
+            dist = a - hi;
+         }
+         if (exact_extremes && (code == 6 || code == 7))
+            dist = 0;
+         dist = (int16_t)dist;
+         err += (unsigned)(dist * dist);
+         codes[4 * j + i] = (uint8_t)code;
+      }
+   }
+   return err;
+}
+
+/* What an image's blocks share (the oracle's stack arrays, whose entries
+ * for the texels outside a partial block keep the last block's values):
+ * the texels and the three alpha codings. */
+struct s3tc_scratch {
+   s3tc_texels px;
+   uint8_t codes1[16], codes2[16], codes3[16];
+};
+
+static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int ny)
+{
+   uint8_t(*const px)[4][4] = s->px;
+   uint8_t *const codes1 = s->codes1, *const codes2 = s->codes2, *const codes3 = s->codes3;
+   int lo = 255, hi = 0;
+   bool has0 = false, has255 = false;
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         const int a = px[j][i][3];
+         if (a == 0)
+            has0 = true;
+         else if (a == 255)
+            has255 = true;
+         else {
+            hi = a > hi ? a : hi;
+            lo = a < lo ? a : lo;
+         }
+      }
+   }
+   if (lo > hi && !(has0 && has255)) {
+      /* all 0 or all 255: codes 0; byte 1 is not written */
+      out[0] = px[0][0][3];
+      memset(out + 2, 0, 6);
+      return;
+   }
+   /* coding 1: eight alphas from `use_hi` (alpha 0) down to `use_lo` */
+   const int use_lo = has0 ? 0 : lo, use_hi = has255 ? 255 : hi;
+   uint8_t cut[7];
+   for (int k = 0; k < 7; k++)
+      cut[k] = (uint8_t)((use_lo * (2 * k + 1) + use_hi * (14 - (2 * k + 1))) / 14);
+   unsigned err1 = 0, err2 = 0xffffffffu, err3 = 0xffffffffu;
+   for (int j = 0; j < ny; j++) {
+      for (int i = 0; i < nx; i++) {
+         const int a = px[j][i][3];
+         int code, dist;
+         if (a > cut[0]) {
+            code = 0;
+            dist = a - use_hi;
+         } else if (a > cut[6]) {
+            int k = 1;
+            while (a <= cut[k])
+               k++;
+            /* codes 2..7: (use_hi * (7 - k) + use_lo * k) / 7 */
+            code = k + 1;
+            dist = a - (use_hi * (7 - k) + use_lo * k) / 7;
+         } else {
+            code = 1;
+            dist = a - use_lo;
+         }
+         dist = (int16_t)dist;
+         err1 += (unsigned)(dist * dist);
+         codes1[4 * j + i] = (uint8_t)code;
+      }
+   }
+   int t_lo = 0, t_hi = 0;
+   if (err1 >= 32) {
+      err2 = six_alpha_coding(px, nx, ny, lo, hi, true, codes2);
+      if (err2 > 96 && err1 > 96) {
+         /* coding 3: inner ends away from 0 and 255, moved by the mean
+          * error of the alphas between them */
+         t_lo = 0xff;
+         t_hi = 0;
+         const int margin = (hi - lo) / 28;
+         for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+               const int a = px[j][i][3];
+               if (a > t_hi && a < 255 - margin)
+                  t_hi = a;
+               if (a < t_lo && a > margin)
+                  t_lo = a;
+            }
+         }
+         if (t_hi <= t_lo) {
+            t_lo = 1;
+            t_hi = 254;
+         }
+         uint8_t c[5];
+         for (int k = 0; k < 5; k++)
+            c[k] = (uint8_t)((t_lo * (10 - (2 * k + 1)) + t_hi * (2 * k + 1)) / 10);
+         int16_t sum_lo = 0, sum_hi = 0;
+         int n_lo = 0, n_hi = 0;
+         for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+               const int a = px[j][i][3];
+               if (a <= t_lo / 2 || a > (255 + t_hi) / 2)
+                  continue;
+               if (a <= c[0]) {
+                  sum_lo = (int16_t)(sum_lo + (a - t_lo));
+                  n_lo++;
+               } else if (a <= c[4]) {
+                  int k = 1;
+                  while (a > c[k])
+                     k++;
+                  const int d = a - (t_lo * (5 - k) + t_hi * k) / 5;
+                  sum_lo = (int16_t)(sum_lo + d);
+                  sum_hi = (int16_t)(sum_hi + d);
+                  n_lo++;
+                  n_hi++;
+               } else {
+                  sum_hi = (int16_t)(sum_hi + (a - t_hi));
+                  n_hi++;
+               }
+            }
+         }
+         n_lo = (uint8_t)n_lo ? (uint8_t)n_lo : 1;
+         n_hi = (uint8_t)n_hi ? (uint8_t)n_hi : 1;
+         t_lo = (int16_t)(t_lo + sum_lo / n_lo);
+         if (t_lo < 0)
+            t_lo = 0;
+         t_hi = (int16_t)(t_hi + sum_hi / n_hi);
+         if (t_hi > 255)
+            t_hi = 255;
+         err3 = six_alpha_coding(px, nx, ny, t_lo, t_hi, false, codes3);
+      }
+   }
+   if (err1 <= err2 && err1 <= err3)
+      put_alpha_block(out, (uint8_t)use_hi, (uint8_t)use_lo, codes1);
+   else if (err2 <= err3)
+      put_alpha_block(out, (uint8_t)lo, (uint8_t)hi, codes2);
+   else
+      put_alpha_block(out, (uint8_t)t_lo, (uint8_t)t_hi, codes3);
+}
+
+void fgl_s3tc_encode_image(GLenum format, const uint8_t *rgba, int w, int h, uint8_t *blocks,
+                           size_t row_bytes)
+{
+   const unsigned bytes = fgl_s3tc_block_bytes(format, NULL);
+   /* the scratch lives for the whole image (see DXT3 above) */
+   struct s3tc_scratch s;
+   memset(&s, 0, sizeof(s));
+   for (int y = 0; y < h; y += 4) {
+      const int ny = h - y < 4 ? h - y : 4;
+      uint8_t *out = blocks + (size_t)(y / 4) * row_bytes;
+      for (int x = 0; x < w; x += 4, out += bytes) {
+         const int nx = w - x < 4 ? w - x : 4;
+         for (int j = 0; j < ny; j++)
+            memcpy(s.px[j], rgba + 4 * ((size_t)(y + j) * (size_t)w + (size_t)x),
+                   4 * (size_t)nx);
+         if (format == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT) {
+            for (int j = 0; j < 4; j++)
+               for (int i = 0; i < 4; i += 2)
+                  out[j * 2 + i / 2] =
+                     (uint8_t)(s.px[j][i][3] >> 4 | (s.px[j][i + 1][3] & 0xf0));
+         } else if (format == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT) {
+            encode_dxt5_alpha(out, &s, nx, ny);
+         }
+         encode_colour_block(bytes == 16 ? out + 8 : out, s.px, nx, ny, format);
       }
    }
 }

@@ -9,6 +9,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 /* Bytes of one 4x4 block of an S3TC internal format, 0 for any other
@@ -21,5 +22,12 @@ unsigned fgl_s3tc_block_bytes(GLenum format, GLenum *base);
  * `rgba` w * h * 4 bytes. */
 void fgl_s3tc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
                            uint8_t *rgba);
+
+/* Compresses the w x h RGBA8 texels `rgba` (row 0 first) into blocks of
+ * `format` as the oracle's encoder does (texcompress_s3tc.c "The
+ * encoder"): block row k at blocks + k * row_bytes.  For DXT5, byte 1 of
+ * a block of one alpha keeps what `blocks` held. */
+void fgl_s3tc_encode_image(GLenum format, const uint8_t *rgba, int w, int h, uint8_t *blocks,
+                           size_t row_bytes);
 
 #endif

@@ -107,6 +107,12 @@ static const struct fgl_tex_pipe_format PF_I16 = { 0, 0, 0, 0, 0, 16, 2, false }
 static const struct fgl_tex_pipe_format PF_Z16 = { 0, 0, 0, 0, 0, 0, 2, false };
 static const struct fgl_tex_pipe_format PF_Z24 = { 0, 0, 0, 0, 0, 0, 4, false };
 static const struct fgl_tex_pipe_format PF_Z32 = { 0, 0, 0, 0, 0, 0, 4, false };
+/* [S: formats.c: MESA_FORMAT_RGB_DXT1 .. RGBA_DXT5] the channel sizes the
+ * oracle reports for the S3TC formats (4 bits; no alpha for DXT1 RGB);
+ * their texels are 8-bit (Data, decoded from Blocks), nothing is stored
+ * in other precisions */
+static const struct fgl_tex_pipe_format PF_DXT_RGB = { 4, 4, 4, 0, 0, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_DXT_RGBA = { 4, 4, 4, 4, 0, 0, 1, false };
 
 struct tex_format {
    GLint internal;
@@ -164,11 +170,18 @@ static const struct tex_format tex_formats[] = {
    { GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, &PF_Z16 },
    { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, &PF_Z24 },
    { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, &PF_Z32 },
-   /* the generic compressed formats (GL 1.3): llvmpipe stores these two
-    * uncompressed; the other four it compresses with its own encoder
-    * (LATC1, LATC2, DXT1, DXT5), which fixgl does not model: it stores
-    * them uncompressed, as GL 1.3 allows (an implementation may choose
-    * an uncompressed internal format), so their texels are the
+   /* GL_EXT_texture_compression_s3tc: 2D and cube-map images only
+    * (s3tc_format_of), compressed by the oracle's encoder */
+   { GL_COMPRESSED_RGB_S3TC_DXT1_EXT, GL_RGB, &PF_DXT_RGB },
+   { GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_RGBA, &PF_DXT_RGBA },
+   { GL_COMPRESSED_RGBA_S3TC_DXT3_EXT, GL_RGBA, &PF_DXT_RGBA },
+   { GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GL_RGBA, &PF_DXT_RGBA },
+   /* the generic compressed formats (GL 1.3): llvmpipe stores ALPHA and
+    * INTENSITY uncompressed; RGB and RGBA images of 2D targets it
+    * compresses as DXT1 RGB and DXT5 (s3tc_format_of; of 1D and 3D
+    * targets they stay uncompressed here); LUMINANCE and LUMINANCE_ALPHA
+    * it compresses as LATC1/LATC2, which fixgl does not model: it stores
+    * them uncompressed, as GL 1.3 allows, so their texels are the
     * application's, not the oracle's lossy ones (README status, issue 19) */
    { GL_COMPRESSED_ALPHA, GL_ALPHA, &PF_A8 },
    { GL_COMPRESSED_INTENSITY, GL_INTENSITY, &PF_I8 },
@@ -327,6 +340,8 @@ static void channel_bits(const struct fgl_tex_pipe_format *pf, GLenum base, uint
  * of other than 8 bits. */
 static bool needs_store(const struct fgl_tex_pipe_format *pf)
 {
+   if (pf == &PF_DXT_RGB || pf == &PF_DXT_RGBA)
+      return false;
    const uint8_t b[6] = { pf->r, pf->g, pf->b, pf->a, pf->l, pf->i };
    for (int k = 0; k < 6; k++)
       if (b[k] != 0 && b[k] != 8)
@@ -695,6 +710,153 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
    return true;
 }
 
+/* ------------------------------------------------------------------ */
+/* S3TC images                                                        */
+/* ------------------------------------------------------------------ */
+
+/* An image of an S3TC format keeps the oracle's blocks (Blocks) and, in
+ * Data, the texels llvmpipe decodes from them.  Uncompressed data given
+ * to it (glTexImage, glTexSubImage, glCopyTexImage, glCopyTexSubImage,
+ * GL_GENERATE_MIPMAP) is first stored in Data as into an RGBA8 image of
+ * the same base format (the oracle's texstore converts it to RGB8 or
+ * RGBA8 first [S: texcompress_s3tc.c:_mesa_texstore_rgb_dxt1 and
+ * siblings]), then compressed by the oracle's encoder
+ * (main/texcompress_s3tc.c) and decoded back. */
+
+/* [S: glformats.c:_mesa_target_can_be_compressed; st_format.c:
+ * st_choose_format for GL_COMPRESSED_RGB/RGBA] the S3TC format an image
+ * of `internal` on `target` is stored in, 0 for an uncompressed one */
+static GLenum s3tc_format_of(GLint internal, GLenum target)
+{
+   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target))
+      return 0;
+   if (fgl_s3tc_block_bytes((GLenum)internal, NULL))
+      return (GLenum)internal;
+   if (internal == GL_COMPRESSED_RGB)
+      return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+   if (internal == GL_COMPRESSED_RGBA)
+      return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+   return 0;
+}
+
+static const struct fgl_tex_pipe_format *s3tc_pipe_format(GLenum cf)
+{
+   return cf == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ? &PF_DXT_RGB : &PF_DXT_RGBA;
+}
+
+/* Gives img (texels allocated) zeroed blocks of `cf`, or, when `old` is an
+ * image of the same format and size (the oracle then keeps the texture's
+ * storage: st_texture_match_image), old's blocks, and decodes them into
+ * Data; false when out of memory. */
+static bool alloc_blocks(struct fgl_texture_image *img, GLenum cf,
+                         const struct fgl_texture_image *old)
+{
+   img->CompressedFormat = cf;
+   img->BlocksSize = (size_t)fgl_compressed_image_size(cf, img->Width, img->Height, img->Depth);
+   img->Blocks = fgl_calloc(img->BlocksSize ? img->BlocksSize : 1, 1);
+   if (!img->Blocks)
+      return false;
+   if (old && old->Blocks && old->CompressedFormat == cf && old->Width == img->Width &&
+       old->Height == img->Height && old->Depth == img->Depth)
+      memcpy(img->Blocks, old->Blocks, img->BlocksSize);
+   if (img->Width > 0 && img->Height > 0)
+      fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+   return true;
+}
+
+/* Compresses texels (x, y) .. (x + w - 1, y + h - 1) of img's Data (x and
+ * y on the 4x4 grid) into its blocks as the oracle's texstore does (the
+ * region is an image of its own to the encoder), then decodes them back
+ * into Data. */
+static void compress_region(struct fgl_context *ctx, struct fgl_texture_image *img, int x,
+                            int y, int w, int h)
+{
+   if (w <= 0 || h <= 0)
+      return;
+   const GLenum cf = img->CompressedFormat;
+   const unsigned bytes = fgl_s3tc_block_bytes(cf, NULL);
+   const size_t row = (size_t)((img->Width + 3) / 4) * bytes;
+   uint8_t *tmp = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4);
+   if (!tmp) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   for (int j = 0; j < h; j++)
+      memcpy(tmp + 4 * (size_t)j * (size_t)w,
+             img->Data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x),
+             4 * (size_t)w);
+   fgl_s3tc_encode_image(cf, tmp, w, h,
+                         img->Blocks + (size_t)(y / 4) * row + (size_t)(x / 4) * bytes, row);
+   fgl_free(tmp);
+   fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+}
+
+/* [S: teximage.c:error_check_subtexture_dimensions] a region of an S3TC
+ * image starts on the 4x4 grid and is whole blocks, but where it ends at
+ * the image's edge; true (GL_INVALID_OPERATION raised) when not */
+static bool block_alignment_error(struct fgl_context *ctx, const struct fgl_texture_image *img,
+                                  GLint xoff, GLint yoff, GLsizei w, GLsizei h)
+{
+   if (!img->CompressedFormat)
+      return false;
+   if (xoff % 4 != 0 || yoff % 4 != 0 || (w % 4 != 0 && xoff + w != img->Width) ||
+       (h % 4 != 0 && yoff + h != img->Height)) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return true;
+   }
+   return false;
+}
+
+/* [S: mipmap.c:generate_mipmap_compressed, make_2d_mipmap, do_row] The
+ * levels below `level` of an S3TC image: the base's decoded texels, each
+ * level the truncated mean of 2x2 texels of the one above (a 1-texel side
+ * doubles its texel; an odd side drops its last texel), kept uncompressed
+ * along the chain, each compressed into its level. */
+static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_object *t,
+                               unsigned face, GLint level, GLint last)
+{
+   const struct fgl_texture_image *base = fgl_tex_face_image(t, face, level);
+   int W = base->Width, H = base->Height;
+   uint8_t *src = fgl_malloc_gl(ctx, (size_t)W * (size_t)H * 4);
+   if (!src) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   memcpy(src, base->Data, (size_t)W * (size_t)H * 4);
+   for (GLint l = level + 1; l <= last; l++) {
+      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
+      struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)base->InternalFormat,
+                                                base->BaseFormat, base->Format);
+      if (!img || !alloc_texels(img) ||
+          !alloc_blocks(img, base->CompressedFormat, fgl_tex_face_image(t, face, l))) {
+         free_image(img);
+         fgl_free(src);
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      const int row_step = H > h ? 1 : 0, col_step = W > w ? 1 : 0;
+      for (int j = 0; j < h; j++) {
+         const uint8_t *ra = src + 4 * (size_t)(j * (row_step + 1)) * (size_t)W;
+         const uint8_t *rb = ra + 4 * (size_t)row_step * (size_t)W;
+         for (int i = 0; i < w; i++) {
+            const int x0 = i * (col_step + 1), x1 = x0 + col_step;
+            for (int n = 0; n < 4; n++)
+               img->Data[4 * ((size_t)j * (size_t)w + (size_t)i) + (size_t)n] =
+                  (uint8_t)((ra[4 * x0 + n] + ra[4 * x1 + n] + rb[4 * x0 + n] +
+                             rb[4 * x1 + n]) / 4);
+         }
+      }
+      /* the chain goes on from the uncompressed level */
+      memcpy(src, img->Data, (size_t)w * (size_t)h * 4);
+      compress_region(ctx, img, 0, 0, w, h);
+      set_image(t, face, l, img);
+      W = w;
+      H = h;
+   }
+   fgl_free(src);
+   ctx->NewState |= FGL_NEW_TEXTURE;
+}
+
 /* [S: lp_bld_arit.c:lp_build_lerp_simple, AoS with pmulhrsw rounding] */
 static uint8_t lerp8(int w, int a, int b)
 {
@@ -801,8 +963,9 @@ static bool prepare_cube_levels(struct fgl_context *ctx, struct fgl_texture_obje
             continue;
          struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)tmpl->InternalFormat,
                                                    tmpl->BaseFormat, tmpl->Format);
-         if (!img || !alloc_texels(img)) {
-            fgl_free(img);
+         if (!img || !alloc_texels(img) ||
+             (tmpl->CompressedFormat && !alloc_blocks(img, tmpl->CompressedFormat, old))) {
+            free_image(img);
             fgl_error(ctx, GL_OUT_OF_MEMORY);
             return false;
          }
@@ -835,6 +998,10 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
     * layer of the face) */
    if (t->Target == GL_TEXTURE_CUBE_MAP && !prepare_cube_levels(ctx, t, level, last))
       return;
+   if (base->CompressedFormat) {
+      gen_mip_compressed(ctx, t, face, level, last);
+      return;
+   }
    for (GLint l = level + 1; l <= last; l++) {
       const struct fgl_texture_image *src = fgl_tex_face_image(t, face, l - 1);
       const int W = src->Width, H = src->Height, D = src->Depth;
@@ -952,13 +1119,28 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   /* [S: teximage.c:texture_error_check, "additional checks for
+    * compressed textures"] an S3TC format on a target that cannot be
+    * compressed, or with a border */
+   if (fgl_s3tc_block_bytes((GLenum)internal, NULL)) {
+      if (!s3tc_format_of(internal, target)) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      if (border != 0) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+   }
    /* [S: teximage.c:_mesa_legal_texture_base_format_for_target] no 3D
     * depth textures (proxies included) */
    if (dims == 3 && tf->base == GL_DEPTH_COMPONENT) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   const struct fgl_tex_pipe_format *pf = choose_pipe_format(tf, format, type);
+   const GLenum cf = s3tc_format_of(internal, target);
+   const struct fgl_tex_pipe_format *pf =
+      cf ? s3tc_pipe_format(cf) : choose_pipe_format(tf, format, type);
    const bool dims_ok = legal_dimensions(target, dims, level, width, height, depth, border);
    const bool sz_ok = size_ok(dims, pf, width, height, depth, is_cube_target(target) ? 6 : 1);
 
@@ -973,6 +1155,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
             fgl_error(ctx, GL_OUT_OF_MEMORY);
             return;
          }
+         img->CompressedFormat = cf;
       }
       set_image(t, 0, level, img);
       return;
@@ -1005,8 +1188,9 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       }
    }
    struct fgl_texture_image *img = new_image(width, height, depth, 0, internal, tf->base, pf);
-   if (!img || !alloc_texels(img)) {
-      fgl_free(img);
+   if (!img || !alloc_texels(img) ||
+       (cf && !alloc_blocks(img, cf, *image_slot(t, target, level)))) {
+      free_image(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -1016,12 +1200,12 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_flush_bitmap_cache(ctx);
    if (!store_texels(ctx, img, &unpack, dims, 0, 0, 0, width, height, depth, format, type,
                      pixels)) {
-      fgl_free(img->Data);
-      fgl_free(img->Store);
-      fgl_free(img->ZValues);
-      fgl_free(img);
+      free_image(img);
       return;
    }
+   /* no data: the storage is left as it was */
+   if (cf && pixels)
+      compress_region(ctx, img, 0, 0, width, height);
    set_image(t, target_face(target), level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    check_gen_mipmap(ctx, t, target_face(target), level);
@@ -1129,7 +1313,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, depth))
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, depth) ||
+       block_alignment_error(ctx, img, xoff, yoff, width, height))
       return;
    if (fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
@@ -1147,6 +1332,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    fgl_flush_bitmap_cache(ctx);
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
+      if (img->CompressedFormat && pixels)
+         compress_region(ctx, img, xoff, yoff, width, height);
       ctx->NewState |= FGL_NEW_TEXTURE;
       check_gen_mipmap(ctx, t, target_face(target), level);
    }
@@ -1241,6 +1428,11 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
          put_texels(img, at + (size_t)i, t, 1, img->Format->copy_rule);
       }
    }
+   /* [S: st_cb_texture.c:fallback_copy_texsubimage] an S3TC image: the
+    * copied region through texstore (the encoder); a region the clipping
+    * moved off the 4x4 grid is taken from the grid line before it */
+   if (img->CompressedFormat)
+      compress_region(ctx, img, xoff & ~3, yoff & ~3, w + (xoff & 3), h + (yoff & 3));
    ctx->NewState |= FGL_NEW_TEXTURE;
 }
 
@@ -1281,6 +1473,19 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
+   /* [S: teximage.c:copytexture_error_check] S3TC: a border is
+    * GL_INVALID_OPERATION */
+   const GLenum cf = s3tc_format_of((GLint)internal, target);
+   if (fgl_s3tc_block_bytes(internal, NULL)) {
+      if (!cf) {
+         fgl_error(ctx, GL_INVALID_ENUM);
+         return;
+      }
+      if (border != 0) {
+         fgl_error(ctx, GL_INVALID_OPERATION);
+         return;
+      }
+   }
    /* _mesa_get_read_renderbuffer_for_format: no colour read buffer under
     * glReadBuffer(GL_NONE); a depth format reads the depth buffer */
    if (tf->base == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
@@ -1292,7 +1497,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   const struct fgl_tex_pipe_format *pf = tf->pf;
+   const struct fgl_tex_pipe_format *pf = cf ? s3tc_pipe_format(cf) : tf->pf;
    struct fgl_texture_object *t = target_object(ctx, target);
    const unsigned face = target_face(target);
    struct fgl_texture_image *old = *image_slot(t, target, level);
@@ -1319,8 +1524,8 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    }
    struct fgl_texture_image *img =
       new_image(width, height, 1, 0, (GLint)internal, tf->base, pf);
-   if (!img || !alloc_texels(img)) {
-      fgl_free(img);
+   if (!img || !alloc_texels(img) || (cf && !alloc_blocks(img, cf, old))) {
+      free_image(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
@@ -1383,7 +1588,8 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, 1))
+   if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, 1) ||
+       block_alignment_error(ctx, img, xoff, yoff, width, height))
       return;
    /* _mesa_source_buffer_exists */
    if (img->BaseFormat == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
@@ -1633,15 +1839,15 @@ static bool tex_level_parameter(struct fgl_context *ctx, GLenum target, GLint le
       *v = img ? fgl_tex_image_depth_bits(img) : 0;
       return true;
    case GL_TEXTURE_COMPRESSED:
-      *v = img && fgl_s3tc_block_bytes(img->InternalFormat, NULL);
+      *v = img && img->CompressedFormat;
       return true;
    case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       /* an uncompressed image (or none) has no compressed size */
-      if (!img || !fgl_s3tc_block_bytes(img->InternalFormat, NULL) || is_proxy(target)) {
+      if (!img || !img->CompressedFormat || is_proxy(target)) {
          fgl_error(ctx, GL_INVALID_OPERATION);
          return false;
       }
-      *v = fgl_compressed_image_size(img->InternalFormat, img->Width, img->Height,
+      *v = fgl_compressed_image_size(img->CompressedFormat, img->Width, img->Height,
                                      img->Depth);
       return true;
    /* the oracle's GL 3.0 queries (the *_TYPE, STENCIL, SHARED and
@@ -1681,16 +1887,19 @@ void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pnam
 /* For main/texcompress.c                                             */
 /* ------------------------------------------------------------------ */
 
-/* [S: formats.c: MESA_FORMAT_RGB_DXT1 .. RGBA_DXT5] the channel sizes the
- * oracle reports for the S3TC formats (4 bits; no alpha for DXT1 RGB) */
-static const struct fgl_tex_pipe_format PF_DXT_RGB = { 4, 4, 4, 0, 0, 0, 1, false };
-static const struct fgl_tex_pipe_format PF_DXT_RGBA = { 4, 4, 4, 4, 0, 0, 1, false };
-
 GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
 {
+   /* [S: texparam.c:get_tex_level_parameter_image] a compressed image
+    * reports its actual compressed format */
+   if (img->CompressedFormat)
+      return img->CompressedFormat;
    switch (img->InternalFormat) {
    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+   /* GL_COMPRESSED_RGB/RGBA of a 1D or 3D image (measured: stored
+    * uncompressed, reported as the base format) */
+   case GL_COMPRESSED_RGB: return GL_RGB;
+   case GL_COMPRESSED_RGBA: return GL_RGBA;
    default: return img->InternalFormat;
    }
 }
@@ -1714,12 +1923,33 @@ bool fgl_tex_legal_dimensions(GLenum target, GLuint dims, GLint level, GLint w, 
 struct fgl_texture_image *fgl_tex_new_compressed_image(int w, int h, int d, GLenum internal,
                                                        GLenum base)
 {
-   return new_image(w, h, d, 0, (GLint)internal, base,
-                    base == GL_RGB ? &PF_DXT_RGB : &PF_DXT_RGBA);
+   struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)internal, base,
+                                             base == GL_RGB ? &PF_DXT_RGB : &PF_DXT_RGBA);
+   if (img)
+      img->CompressedFormat = internal;
+   return img;
 }
 
-void fgl_tex_set_image(struct fgl_texture_object *t, GLint level,
+void fgl_tex_set_image(struct fgl_texture_object *t, GLenum target, GLint level,
                        struct fgl_texture_image *img)
 {
-   set_image(t, 0, level, img);
+   set_image(t, target_face(target), level, img);
+}
+
+void fgl_tex_image_changed(struct fgl_context *ctx, struct fgl_texture_object *t,
+                           GLenum target, GLint level)
+{
+   check_gen_mipmap(ctx, t, target_face(target), level);
+}
+
+struct fgl_texture_image **fgl_tex_image_slot(struct fgl_texture_object *t, GLenum target,
+                                              GLint level)
+{
+   return image_slot(t, target, level);
+}
+
+bool fgl_tex_is_2d_image_target(GLenum target, bool proxies)
+{
+   return target == GL_TEXTURE_2D || is_cube_face(target) ||
+          (proxies && (target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP));
 }
