@@ -42,8 +42,18 @@ void fc_report_frame(void *entry, int index, const struct fc_frame_view *oracle,
  * over res->documented); returns its status. */
 const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_result *res);
 
-/* Prints the per-tag table and totals. */
-void fc_report_print_summary(const struct fc_report *r, FILE *out);
+/* A random family compares too little when more than FC_BLANK_MAX_PERCENT %
+ * of its scenes (counted when it has at least FC_BLANK_MIN_SCENES) draw
+ * nothing: the generators place a witness in every scene (fc_random.c
+ * fcr_witness), so that only a few state combinations stay blank. */
+#define FC_BLANK_MAX_PERCENT 8
+#define FC_BLANK_MIN_SCENES 50
+#define FC_STR_(x) #x
+#define FC_STR(x) FC_STR_(x)
+
+/* Prints the per-tag table and totals; returns the number of random
+ * families over the blank bound (FC_BLANK_MAX_PERCENT), which fail the run. */
+int fc_report_print_summary(const struct fc_report *r, FILE *out);
 
 /* Writes index.html and summary.json; returns the number of cases that do
  * not pass (neither exact nor, for a reference case, "agrees"),
