@@ -734,7 +734,6 @@ static void tex_scene(fc_h *h)
     }
     fce_scene_begin(FCE_TEX, seed, index, index % FC_TEX_PROFILES);
     s.r = fc_rng_make(seed, index, 11);
-    s.vis = fc_rng_make(seed, index, 32);
     s.w = c->width;
     s.h = c->height;
     {
@@ -763,12 +762,7 @@ static void tex_scene(fc_h *h)
     random_light(&s, &p);
     random_fragment(&s, &p);
 
-    const int witness = fc_rng_range(&s.vis, 0, p.nprim);    /* before primitive witness */
-    for (int i = 0; i <= p.nprim; i++) {
-        if (i == witness)
-            fcr_witness(&s);
-        if (i == p.nprim)
-            break;
+    for (int i = 0; i < p.nprim; i++) {
         random_primitive(&s, p.modes[i]);
         if (c->frames == 2 && i == p.nprim / 2)
             fc_capture(h);

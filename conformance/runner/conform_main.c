@@ -532,8 +532,8 @@ int main(int argc, char **argv)
     if (rc != 0 || bad < 0)
         return 2;
     if (blank_over) {
-        printf("random families drawing nothing in more than %d%% of their scenes: %d\n",
-               FC_BLANK_MAX_PERCENT, blank_over);
+        printf("random families drawing nothing in too many of their scenes "
+               "(FC_BLANK_MAX_PERCENT, fc_report.h): %d\n", blank_over);
         return 1;
     }
     if (o.known)
