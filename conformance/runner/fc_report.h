@@ -47,7 +47,7 @@ const char *fc_report_end_case(struct fc_report_entry *e, const struct fc_case_r
  * FC_BLANK_MAX_PERCENT %, FC_BLANK_MAX_PERCENT_TEX % for random-tex.  The
  * plain and raster generators place a witness in every scene (fc_random.c
  * fcr_witness), so only a few state combinations stay blank (about 1% and
- * 4-5%); the texture family has none yet (about 13% blank: its witness
+ * 4-5%); the texture family has none yet (9-13% blank: its witness
  * showed a fixgl difference after an incomplete glBegin(GL_TRIANGLES) in
  * a cube-map scene, random-tex/s1-i254, still open), the lit and shading
  * families none blank. */
