@@ -540,6 +540,32 @@ static void deletelists_before_any(fc_h *h)
     fc_error(h, "then");
 }
 
+/* glTexImage3D / glTexSubImage3D compiled with a depth <= 0 and data:
+ * the oracle's unpack_image checks only the width and height, and
+ * _mesa_unpack_image's NULL for the depth is taken for a failed
+ * allocation (GL_OUT_OF_MEMORY, fuzzer seed 1000447 of the long
+ * campaign); a zero width, or a depth of 1, compiles without error. */
+static void teximage3d_compile_depth(fc_h *h)
+{
+    static const GLubyte px[2 * 2 * 4 * 4] = { 0 };
+    static const GLsizei depths[3] = { 1, 0, -65536 };
+    for (int i = 0; i < 3; i++) {
+        glNewList(1, GL_COMPILE);
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 2, 2, depths[i], GL_RGBA, GL_UNSIGNED_BYTE, px);
+        fc_error(h, "compiled glTexSubImage3D");
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 2, 2, depths[i], 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        fc_error(h, "compiled glTexImage3D");
+        glTexSubImage3D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 255, 3, 7, 3, 12, 2, depths[i],
+                        GL_STENCIL_INDEX, GL_INT, px);
+        fc_error(h, "compiled glTexSubImage3D, bad target and level");
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 0, 2, depths[i], GL_RGBA, GL_UNSIGNED_BYTE, px);
+        fc_error(h, "compiled glTexSubImage3D, width 0");
+        glEndList();
+        glCallList(1);
+        fc_error(h, "called");
+    }
+}
+
 /* glMap2f compiled with a huge vorder: the list stores ustride =
  * components * vorder, which wraps in the oracle's int product; fixgl's
  * signed product was undefined behaviour (clang's UBSan, found by the
@@ -1585,5 +1611,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("draw_keeps_vertex_format", 32, 32, 1, draw_keeps_vertex_format),
     ROBUST("compile_execute_inside_begin", 64, 64, 1, compile_execute_inside_begin),
     ROBUST("long_array_draws", 64, 64, 16, long_array_draws),
+    ROBUST("teximage3d_compile_depth", 8, 8, 0, teximage3d_compile_depth),
     { 0 }
 };

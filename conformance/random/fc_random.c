@@ -244,7 +244,16 @@ void fcr_viewport(struct scene *s)
         y = fc_rng_range(r, -s->h / 2, s->h - 1);
         s->vw = fc_rng_range(r, 1, 2 * s->w);
         s->vh = fc_rng_range(r, 1, 2 * s->h);
+        /* a viewport left or below the window shows nothing: widen it
+         * into the window (from the witness's stream, so scenes with a
+         * visible viewport keep their values) */
+        if (x + s->vw <= 0)
+            s->vw = -x + fc_rng_range(&s->vis, 1, s->w);
+        if (y + s->vh <= 0)
+            s->vh = -y + fc_rng_range(&s->vis, 1, s->h);
     }
+    s->vx = x;
+    s->vy = y;
     glViewport(x, y, s->vw, s->vh);
 }
 
@@ -283,22 +292,53 @@ void fcr_load_or_mult(fc_rng *r, const double m[16])
     }
 }
 
+/* The matrices of glOrtho and glFrustum (column-major). */
+static void ortho_matrix(double m[16], const double b[6])
+{
+    memset(m, 0, 16 * sizeof m[0]);
+    m[0] = 2 / (b[1] - b[0]);
+    m[5] = 2 / (b[3] - b[2]);
+    m[10] = -2 / (b[5] - b[4]);
+    m[12] = -(b[1] + b[0]) / (b[1] - b[0]);
+    m[13] = -(b[3] + b[2]) / (b[3] - b[2]);
+    m[14] = -(b[5] + b[4]) / (b[5] - b[4]);
+    m[15] = 1;
+}
+
+static void frustum_matrix(double m[16], const double f[6])
+{
+    memset(m, 0, 16 * sizeof m[0]);
+    m[0] = 2 * f[4] / (f[1] - f[0]);
+    m[5] = 2 * f[4] / (f[3] - f[2]);
+    m[8] = (f[1] + f[0]) / (f[1] - f[0]);
+    m[9] = (f[3] + f[2]) / (f[3] - f[2]);
+    m[10] = -(f[5] + f[4]) / (f[5] - f[4]);
+    m[11] = -1;
+    m[14] = -2 * f[5] * f[4] / (f[5] - f[4]);
+}
+
 void fcr_projection(struct scene *s)
 {
     fc_rng *r = &s->r;
     double m[16];
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
+    memset(s->proj, 0, sizeof s->proj);
+    s->proj[0] = s->proj[5] = s->proj[10] = s->proj[15] = 1;
     switch (s->space) {
-    case SP_PIXEL:
+    case SP_PIXEL: {
+        const double b[6] = { 0, s->vw, 0, s->vh, -1, 1 };
         glOrtho(0, s->vw, 0, s->vh, -1, 1);
+        ortho_matrix(s->proj, b);
         break;
+    }
     case SP_BOX:
         for (int i = 0; i < 6; i += 2) {
             s->box[i] = (float)fc_rng_real(r, -50, 50);
             s->box[i + 1] = s->box[i] + (fc_rng_chance(r, 85) ? 1 : -1) * (float)fc_rng_real(r, 0.5, 100);
         }
         glOrtho(s->box[0], s->box[1], s->box[2], s->box[3], s->box[4], s->box[5]);
+        ortho_matrix(s->proj, s->box);
         break;
     case SP_FRUSTUM:
         s->fr[4] = (float)fc_rng_real(r, 0.05, 3.0);
@@ -308,15 +348,100 @@ void fcr_projection(struct scene *s)
         s->fr[2] = -(float)fc_rng_real(r, 0.05, 2.0) * s->fr[4];
         s->fr[3] = (float)fc_rng_real(r, 0.05, 2.0) * s->fr[4];
         glFrustum(s->fr[0], s->fr[1], s->fr[2], s->fr[3], s->fr[4], s->fr[5]);
+        frustum_matrix(s->proj, s->fr);
         break;
     case SP_CLIP:
         break;
     case SP_MATRIX:
         fcr_matrix(r, m, fc_rng_chance(r, 50));
         fcr_load_or_mult(r, m);
+        memcpy(s->proj, m, sizeof s->proj);
         break;
     }
     glMatrixMode(GL_MODELVIEW);
+}
+
+/* ---- the witness -------------------------------------------------------- */
+
+/* inv = m^-1 (column-major, Gauss-Jordan with partial pivoting); 0 when m
+ * is (nearly) singular. */
+static int invert4(const double m[16], double inv[16])
+{
+    double a[4][8];
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++) {
+            a[r][c] = m[c * 4 + r];
+            a[r][c + 4] = r == c;
+        }
+    for (int c = 0; c < 4; c++) {
+        int p = c;
+        for (int r = c + 1; r < 4; r++)
+            if (fabs(a[r][c]) > fabs(a[p][c]))
+                p = r;
+        if (fabs(a[p][c]) < 1e-9)
+            return 0;
+        for (int k = 0; k < 8; k++) {
+            double t = a[c][k];
+            a[c][k] = a[p][k];
+            a[p][k] = t;
+        }
+        for (int k = 7; k >= c; k--)
+            a[c][k] /= a[c][c];
+        for (int r = 0; r < 4; r++)
+            if (r != c)
+                for (int k = 7; k >= c; k--)
+                    a[r][k] -= a[r][c] * a[c][k];
+    }
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++)
+            inv[c * 4 + r] = a[r][c + 4];
+    return 1;
+}
+
+/* A window coordinate inside [lo, hi) of the viewport's part in the
+ * window, as a normalised device coordinate of the viewport [o, o + n). */
+static double visible_ndc(fc_rng *r, int lo, int hi, int o, int n)
+{
+    double x = fc_rng_real(r, lo - 0.5, hi + 0.5);
+    x = x < o ? o : x > o + n ? o + n : x;
+    double d = 2 * (x - o) / n - 1;
+    return d < -0.999 ? -0.999 : d > 0.999 ? 0.999 : d;
+}
+
+void fcr_witness(struct scene *s)
+{
+    static const int counts[6][2] = { { 3, 3 }, { 3, 5 }, { 3, 5 }, { 4, 4 }, { 4, 4 }, { 3, 6 } };
+    const int x0 = s->vx > 0 ? s->vx : 0, x1 = s->vx + s->vw < s->w ? s->vx + s->vw : s->w;
+    const int y0 = s->vy > 0 ? s->vy : 0, y1 = s->vy + s->vh < s->h ? s->vy + s->vh : s->h;
+    double inv[16];
+    if (x1 <= x0 || y1 <= y0 || !invert4(s->proj, inv))
+        return;
+    const fc_rng saved = s->r;          /* the emitters draw from s->r */
+    s->r = s->vis;
+    fc_rng *r = &s->r;
+    const int m = (int)fc_rng_below(r, 6);
+    const int n = fc_rng_range(r, counts[m][0], counts[m][1]);
+    glPushAttrib(GL_DEPTH_BUFFER_BIT);
+    glDepthFunc(GL_ALWAYS);
+    glPushMatrix();
+    glLoadIdentity();
+    glBegin(fcr_modes[m]);
+    for (int k = 0; k < n; k++) {
+        const double c[4] = { visible_ndc(r, x0, x1, s->vx, s->vw),
+                              visible_ndc(r, y0, y1, s->vy, s->vh),
+                              fc_rng_real(r, -0.95, 0.95), 1 };
+        double v[4];
+        for (int i = 0; i < 4; i++)
+            v[i] = (float)(inv[i] * c[0] + inv[4 + i] * c[1] + inv[8 + i] * c[2] + inv[12 + i] * c[3]);
+        if (k == 0 || fc_rng_chance(r, 70))
+            fcr_emit_color(s);
+        fcr_emit_vertex(s, v, v[3] != 1 ? 4 : 3);
+    }
+    glEnd();
+    glPopMatrix();
+    glPopAttrib();
+    s->vis = s->r;
+    s->r = saved;
 }
 
 /* One random modelview builder call. */
@@ -440,6 +565,7 @@ static void random_scene(fc_h *h)
     memset(&s, 0, sizeof s);
     fc_random_parse(c->name, &seed, &index);
     s.r = fc_rng_make(seed, index, 2);
+    s.vis = fc_rng_make(seed, index, 30);
     fce_scene_begin(FCE_PLAIN, seed, index, index);
     s.w = c->width;
     s.h = c->height;
@@ -458,7 +584,12 @@ static void random_scene(fc_h *h)
     glShadeModel(fc_rng_chance(&s.r, 50) ? GL_FLAT : GL_SMOOTH);
 
     nprim = fc_rng_range(&s.r, 1, 12);
-    for (int p = 0; p < nprim; p++) {
+    const int witness = fc_rng_range(&s.vis, 0, nprim);      /* before primitive witness */
+    for (int p = 0; p <= nprim; p++) {
+        if (p == witness)
+            fcr_witness(&s);
+        if (p == nprim)
+            break;
         int pushed = fc_rng_chance(&s.r, 15);
         random_state_change(&s);
         if (pushed) {

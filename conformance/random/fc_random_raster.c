@@ -358,6 +358,32 @@ static void random_raster_primitive(struct scene *s, const struct profile *p, GL
     glEnd();
 }
 
+/* The witness (fcr_witness) under the scene's state, except that each
+ * profile setting that can hide or keep every fragment (scissor, alpha
+ * and stencil tests, blending, logic op, colour mask, culling, stipple,
+ * clip planes, and polygon modes, whose outlines and points the current
+ * edge flag can hide) stays on for it with a chance of 15% only. */
+static void raster_witness(struct scene *s, const struct profile *p)
+{
+    fc_rng *v = &s->vis;
+    glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_POLYGON_BIT);
+    if (p->unfilled && !fc_rng_chance(v, 15))        /* outlines and points: edge flags */
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    if (p->scissor && !fc_rng_chance(v, 15)) glDisable(GL_SCISSOR_TEST);
+    if (p->alpha && !fc_rng_chance(v, 15)) glDisable(GL_ALPHA_TEST);
+    if (p->stencil && !fc_rng_chance(v, 15)) glDisable(GL_STENCIL_TEST);
+    if (p->blend && !fc_rng_chance(v, 15)) glDisable(GL_BLEND);
+    if (p->logic && !fc_rng_chance(v, 15)) glDisable(GL_COLOR_LOGIC_OP);
+    if (p->cmask && !fc_rng_chance(v, 15)) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (p->cull && !fc_rng_chance(v, 15)) glDisable(GL_CULL_FACE);
+    if (p->pstipple && !fc_rng_chance(v, 15)) glDisable(GL_POLYGON_STIPPLE);
+    if (p->planes && !fc_rng_chance(v, 15))
+        for (int i = 0; i < p->planes; i++)
+            glDisable(GL_CLIP_PLANE0 + i);
+    fcr_witness(s);
+    glPopAttrib();
+}
+
 static void raster_scene(fc_h *h)
 {
     const fc_case *c = fc_this_case(h);
@@ -373,6 +399,7 @@ static void raster_scene(fc_h *h)
     make_profile(&k, &p);
     fce_scene_begin(FCE_RASTER, seed, index, index % FC_RASTER_PROFILES);
     s.r = fc_rng_make(seed, index, 7);
+    s.vis = fc_rng_make(seed, index, 31);
     s.w = c->width;
     s.h = c->height;
     s.space = (enum space)(fc_rng_below(&k, 100) < 60 ? SP_PIXEL : 1 + fc_rng_below(&k, 4));
@@ -396,7 +423,12 @@ static void raster_scene(fc_h *h)
                          (fc_rng_chance(&s.r, 50) ? GL_STENCIL_BUFFER_BIT : 0));
     }
 
-    for (int i = 0; i < p.nprim; i++) {
+    const int witness = fc_rng_range(&s.vis, 0, p.nprim);    /* before primitive witness */
+    for (int i = 0; i <= p.nprim; i++) {
+        if (i == witness)
+            raster_witness(&s, &p);
+        if (i == p.nprim)
+            break;
         random_points_lines(&s, &p);
         random_raster_primitive(&s, &p, p.modes[i]);
         if (c->frames == 2 && i == p.nprim / 2)

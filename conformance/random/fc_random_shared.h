@@ -21,6 +21,12 @@ struct scene {
     double fr[6];               /* SP_FRUSTUM: l r b t n f */
     double pool[POOL][4];       /* earlier vertices, for shared edges */
     int npool;
+    /* The witness (fcr_witness): the viewport's origin and the projection
+     * as issued (column-major), and a stream of its own, so a witness
+     * leaves the rest of the scene as it was. */
+    int vx, vy;
+    double proj[16];
+    fc_rng vis;
 };
 
 extern const GLenum fcr_depth_funcs[8];
@@ -47,5 +53,17 @@ void fcr_load_or_mult(fc_rng *r, const double m[16]);
 void fcr_projection(struct scene *s);
 /* Random clear colour and depth, then glClear(bits). */
 void fcr_clear(fc_rng *r, GLbitfield bits);
+/* The witness: a primitive that leaves visible pixels, so that a scene
+ * whose own state hides everything (depth functions and clear depths that
+ * reject every fragment, geometry outside the view volume, a viewport off
+ * the window, fragment operations that discard or keep the colour) still
+ * compares a drawing (a blank scene compares nothing).  A polygon of a
+ * random type, random colours, vertices inside the part of the view
+ * volume the window shows (window positions, depths and, through the
+ * inverse of s->proj, object coordinates under an identity modelview),
+ * drawn with glDepthFunc(GL_ALWAYS) inside glPushAttrib.  Every value
+ * comes from s->vis.  The callers place it at a random point of the
+ * scene, so later primitives test against what it wrote. */
+void fcr_witness(struct scene *s);
 
 #endif

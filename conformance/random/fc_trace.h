@@ -130,6 +130,8 @@ static inline void fct_glLoadIdentity(void) { fc_trace_text("glLoadIdentity();")
 static inline void fct_glEnd(void) { fc_trace_text("glEnd();"); glEnd(); }
 static inline void fct_glPushMatrix(void) { fc_trace_text("glPushMatrix();"); glPushMatrix(); }
 static inline void fct_glPopMatrix(void) { fc_trace_text("glPopMatrix();"); glPopMatrix(); }
+static inline void fct_glPushAttrib(GLbitfield a0) { fc_trace_calli("glPushAttrib", 1, a0, 0, 0, 0); glPushAttrib(a0); }
+static inline void fct_glPopAttrib(void) { fc_trace_text("glPopAttrib();"); glPopAttrib(); }
 static inline void fct_glLoadMatrixf(const GLfloat *p) { fc_trace_vf("glLoadMatrixf", "GLfloat", 16, p); glLoadMatrixf(p); }
 static inline void fct_glLoadMatrixd(const GLdouble *p) { fc_trace_vd("glLoadMatrixd", "GLdouble", 16, p); glLoadMatrixd(p); }
 static inline void fct_glMultMatrixf(const GLfloat *p) { fc_trace_vf("glMultMatrixf", "GLfloat", 16, p); glMultMatrixf(p); }
@@ -241,6 +243,8 @@ static inline void fct_fc_capture(fc_h *h) { fc_trace_text("/* fc_capture(h); */
 #define glEnd fct_glEnd
 #define glPushMatrix fct_glPushMatrix
 #define glPopMatrix fct_glPopMatrix
+#define glPushAttrib fct_glPushAttrib
+#define glPopAttrib fct_glPopAttrib
 #define glLoadMatrixf fct_glLoadMatrixf
 #define glLoadMatrixd fct_glLoadMatrixd
 #define glMultMatrixf fct_glMultMatrixf

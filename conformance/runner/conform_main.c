@@ -3,7 +3,8 @@
  * plus the recorded error/query/blob/value sequences, prints one line per
  * case and a per-tag summary, and writes the HTML/JSON report.
  * Exit status: 0 all exact (reference cases: within their tolerance), 1 some
- * case differs, failed or is blank (compares nothing: fc_case.h), 2
+ * case differs, failed or is blank (compares nothing: fc_case.h), or a
+ * random family's scenes compare nothing too often (FC_BLANK_MAX_PERCENT), 2
  * usage/setup. */
 #include "fc_compare.h"
 #include "fc_report.h"
@@ -455,7 +456,7 @@ int main(int argc, char **argv)
     struct ctx c;
     char *info[2][2] = { { NULL, NULL }, { NULL, NULL } };
     size_t n;
-    int rc, bad;
+    int rc, bad, blank_over = 0;
 
     if (!parse_args(argc, argv, &o)) {
         usage(stderr);
@@ -509,7 +510,7 @@ int main(int argc, char **argv)
     rc = fc_run_items(&cfg, items, n, on_ready, &c, info);
     fc_report_set_renderers(c.report, info[0][0], info[0][1], info[1][0], info[1][1]);
     if (rc == 0)
-        fc_report_print_summary(c.report, stdout);
+        blank_over = fc_report_print_summary(c.report, stdout);
     else
         fprintf(stderr, "fixgl-conform: run aborted; the report holds the cases finished so far\n");
     bad = fc_report_finish(c.report);
@@ -530,6 +531,11 @@ int main(int argc, char **argv)
     free(known.reasons);
     if (rc != 0 || bad < 0)
         return 2;
+    if (blank_over) {
+        printf("random families drawing nothing in too many of their scenes "
+               "(FC_BLANK_MAX_PERCENT, fc_report.h): %d\n", blank_over);
+        return 1;
+    }
     if (o.known)
         return (c.unexpected || c.stale) ? 1 : 0;
     return bad ? 1 : 0;

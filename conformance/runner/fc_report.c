@@ -341,11 +341,14 @@ static size_t collect_tags(const struct fc_report *r, struct tag_count *t, size_
 }
 
 /* Per random family (the part of the name before '/'), the generated
- * scenes that compare nothing (FC_MAY_DRAW_NOTHING, fc_case.h). */
-static void print_blank_allowed(const struct fc_report *r, FILE *out)
+ * scenes that compare nothing (FC_MAY_DRAW_NOTHING, fc_case.h); returns
+ * the number of families of at least FC_BLANK_MIN_SCENES scenes of which
+ * more than FC_BLANK_MAX_PERCENT % compare nothing. */
+static int print_blank_allowed(const struct fc_report *r, FILE *out)
 {
     struct { char family[32]; int scenes, blank; } f[16];
     size_t nf = 0;
+    int over = 0;
     for (size_t i = 0; i < r->n; i++) {
         const struct fc_report_entry *e = r->entries[i];
         size_t k = strcspn(e->name, "/"), j;
@@ -363,12 +366,19 @@ static void print_blank_allowed(const struct fc_report *r, FILE *out)
         f[j].scenes++;
         f[j].blank += e->res.blank_allowed;
     }
-    for (size_t j = 0; j < nf; j++)
+    for (size_t j = 0; j < nf; j++) {
+        const int bound = strcmp(f[j].family, "random-tex") == 0 ? FC_BLANK_MAX_PERCENT_TEX
+                                                                 : FC_BLANK_MAX_PERCENT;
+        const int bad = f[j].scenes >= FC_BLANK_MIN_SCENES && 100 * f[j].blank > bound * f[j].scenes;
+        over += bad;
         fprintf(out, "%s: %d of %d generated scenes compare nothing (every frame a cleared buffer; "
-                "allowed)\n", f[j].family, f[j].blank, f[j].scenes);
+                "%s %d%%)\n", f[j].family, f[j].blank, f[j].scenes,
+                bad ? "the family fails: more than" : "allowed up to", bound);
+    }
+    return over;
 }
 
-void fc_report_print_summary(const struct fc_report *r, FILE *out)
+int fc_report_print_summary(const struct fc_report *r, FILE *out)
 {
     struct tag_count t[64], total;
     size_t nt = collect_tags(r, t, 64);
@@ -394,7 +404,7 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     if (total.blank)
         fprintf(out, "blank cases: %d compare nothing (every frame a cleared buffer on both sides, "
                 "no draws_nothing declaration): they fail like differences\n", total.blank);
-    print_blank_allowed(r, out);
+    const int blank_over = print_blank_allowed(r, out);
     fprintf(out, "mismatched pixels: %" PRIu64 " of %" PRIu64 "; depth mismatches: %" PRIu64 "\n",
             mism, px, dmism);
     if (ndoc)
@@ -403,6 +413,7 @@ void fc_report_print_summary(const struct fc_report *r, FILE *out)
     print_agreement(r, out);
     fprintf(out, "oracle: %s | %s\n", r->renderer[0] ? r->renderer[0] : "?", r->version[0] ? r->version[0] : "?");
     fprintf(out, "fixgl:  %s | %s\n", r->renderer[1] ? r->renderer[1] : "?", r->version[1] ? r->version[1] : "?");
+    return blank_over;
 }
 
 /* ---- files ------------------------------------------------------------ */

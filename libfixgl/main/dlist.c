@@ -2263,16 +2263,23 @@ bool fgl_save_copy_tex_sub_image(struct fgl_context *ctx, GLuint dims, GLenum ta
 
 /* [S: dlist.c:unpack_image with three dimensions] a w x h x d client
  * image in the default packing, slice after slice; NULL as
- * copy_client_image (a depth of 0 included) */
+ * copy_client_image.  unpack_image checks the width and height only, and
+ * _mesa_unpack_image returns NULL for a depth <= 0, which its caller
+ * takes for a failed allocation: GL_OUT_OF_MEMORY when the data pointer
+ * is not NULL (ORACLE-NOTES.md "Display lists", fuzzer seed 1000447) */
 static void *copy_client_image_3d(struct fgl_context *ctx, GLsizei width, GLsizei height,
                                   GLsizei depth, GLenum format, GLenum type,
                                   const void *pixels)
 {
-   if (!pixels || width <= 0 || height <= 0 || depth <= 0 || type == GL_BITMAP)
+   if (!pixels || width <= 0 || height <= 0 || type == GL_BITMAP)
       return NULL;
    const size_t bpp = fgl_pixel_bytes(format, type);
    if (bpp == 0)
       return NULL;
+   if (depth <= 0) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return NULL;
+   }
    const size_t slice_bytes = bpp * (size_t)width * (size_t)height;
    uint8_t *image = fgl_malloc_gl(ctx, slice_bytes * (size_t)depth);
    if (!image) {
