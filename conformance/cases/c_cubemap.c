@@ -903,6 +903,75 @@ static void projective_genmip_case(fc_h *h)
     glDeleteTextures(1, &tex);
 }
 
+/* Coordinates divided by q = 0 (random-tex/s1-i451, s1-i963): infinite
+ * (or, for s = t = r = 0, NaN) coordinates whose derivatives are NaN.
+ * The cube's rho comes from explicit derivatives, and llvmpipe replaces
+ * an infinite or NaN one by 0 (magnified, level 0), where the implicit 2D
+ * rho keeps the NaN and minifies (texture/wrap_lod_nan).  Points of sizes
+ * 1 and 3, a line and a triangle, with q = 0 and q = 1 beside them; frame
+ * 1 mipmapped with min == mag (NEAREST_MIPMAP_LINEAR, NEAREST), frame 2
+ * min != mag (LINEAR_MIPMAP_NEAREST, NEAREST: the float path), frame 3
+ * the general LOD path (bias, MIN_LOD/MAX_LOD), frame 4 min != mag
+ * without a mipmap filter (one LOD per quad). */
+static void q_zero_case(fc_h *h)
+{
+    static const struct { GLenum min, mag; float bias; } filt[4] = {
+        { GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, 0.0f },
+        { GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST, 0.0f },
+        { GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, 0.5f },
+        { GL_LINEAR, GL_NEAREST, 0.0f },
+    };
+    static const GLfloat tc[4][4] = {
+        { -1.0f, 5.0f, 380.0f, 0.0f },   /* (-inf, inf, inf): face +Z */
+        { 3.0f, -0.5f, 0.25f, 0.0f },    /* (inf, -inf, inf): face +Z (ties) */
+        { 0.0f, 0.0f, 0.0f, 0.0f },      /* NaN */
+        { -1.0f, 5.0f, 380.0f, 1.0f },   /* finite, for comparison */
+    };
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    cube_chain(16, GL_RGBA, 77u);
+    glEnable(GL_TEXTURE_CUBE_MAP);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fc_pixel_ortho(h);
+    for (int f = 0; f < 4; f++) {
+        cparams(filt[f].min, filt[f].mag);
+        glTexParameterf(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_LOD_BIAS, filt[f].bias);
+        if (f == 2) {
+            glTexParameterf(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_LOD, 0.5f);
+            glTexParameterf(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LOD, 3.0f);
+        }
+        fcu_clear(0.2f, 0.1f, 0.3f, 1.0f, 1.0);
+        for (int k = 0; k < 4; k++) {
+            const float y = 4.0f + 11.0f * (float)k;
+            glPointSize(1.0f);
+            glBegin(GL_POINTS);
+            glTexCoord4fv(tc[k]);
+            glVertex2f(3.5f, y + 0.5f);
+            glEnd();
+            glPointSize(3.0f);
+            glBegin(GL_POINTS);
+            glTexCoord4fv(tc[k]);
+            glVertex2f(9.5f, y + 0.5f);
+            glEnd();
+            glBegin(GL_LINES);
+            glTexCoord4fv(tc[k]);
+            glVertex2f(14.0f, y + 0.5f);
+            glVertex2f(24.0f, y + 3.5f);
+            glEnd();
+            glBegin(GL_TRIANGLES);
+            glTexCoord4fv(tc[k]);
+            glVertex2f(26.0f, y - 2.0f);
+            glVertex2f(46.0f, y);
+            glVertex2f(30.0f, y + 7.0f);
+            glEnd();
+        }
+        fc_capture(h);
+    }
+    fc_error(h, "q_zero");
+    glDeleteTextures(1, &tex);
+}
+
 const fc_case fc_cases_cubemap[] = {
 #define SC(n) FC_CASE_RGBA(n, 48, 48, 1, "gl13 cubemap", sample_case)
 #define SC2(n) FC_CASE_RGBA(n, 48, 48, 2, "gl13 cubemap", sample_case)
@@ -970,5 +1039,6 @@ const fc_case fc_cases_cubemap[] = {
                  multitex_lines_case),
     FC_CASE_RGBA("cubemap/projective_genmipmap_face", 48, 48, 2, "gl13 cubemap",
                  projective_genmip_case),
+    FC_CASE_RGBA("cubemap/projective_q_zero", 48, 48, 4, "gl13 cubemap", q_zero_case),
     { 0 },
 };

@@ -8,10 +8,12 @@
  * right - left, its column's bottom - top) carried onto its face
  * (0.5 * (d sc - sc * d ma / ma) / ma) and the 2D squared rho, each pixel
  * its own LOD under a mipmap filter; with min != mag and no mipmap
- * filter, the quad's top-left pixel's for the quad.  Float colour
+ * filter, the quad's top-left pixel's for the quad; an infinite or NaN
+ * rho (q = 0) is 0, level 0 magnified.  Float colour
  * buffer; 16x16 faces with five levels of random texels; random
  * triangles under six filters, and constant directions on ties. */
 #include "probe.h"
+#include <limits.h>
 #define W 48
 #define H 48
 static float buf[W*H*4];
@@ -55,7 +57,9 @@ static float cube_rho_px(const float tl[3], const float dx[3], const float dy[3]
   float a = (float)TS * ((fsx - mx * fs) * imh), b = (float)TS * ((ftx - mx * ft) * imh);
   float c = (float)TS * ((fsy - my * fs) * imh), d = (float)TS * ((fty - my * ft) * imh);
   a = a*a; b = b*b; c = c*c; d = d*d;
-  float rx = a + b, ry = c + d; return rx > ry ? rx : ry;
+  float rx = a + b, ry = c + d; float rho = rx > ry ? rx : ry;
+  /* lp_build_rho, explicit derivatives: an infinite or NaN rho is 0 */
+  return (f2u(rho) & 0x7f800000u) == 0x7f800000u ? 0.0f : rho;
 }
 static const unsigned char *texel(int f, int L, int n, int i, int j) { return tex[f][L] + 4 * (j * n + i); }
 static void sample_level(int f, int L, int linear, float s, float t, int out[4]) {
@@ -169,5 +173,37 @@ int main(void) {
       printf("  dir %g %g %g: oracle %g model %g\n", dirs[d][0], dirs[d][1], dirs[d][2], p[k]*255.0, (double)res[k]); break; }
   }
   probe_expect("constant directions on ties, axes and edges: misses", bad, 0);
+  /* q = 0: the coordinates times 1/q are infinite (NaN for 0 * inf), their
+   * derivatives NaN, so rho is NaN and becomes 0 (magnified, level 0)
+   * under every filter; the face coordinates are NaN (inf * 0), whose
+   * floor converts to INT32_MIN: texel (0, 0) under NEAREST.  (A NaN rho
+   * kept would select the last level.) */
+  static const GLenum qmin[4] = { GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST_MIPMAP_NEAREST,
+                                  GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR };
+  static const float qdirs[][3] = { { -1, 5, 380 }, { 3, -0.5f, 0.25f }, { 0.5f, -2, 1 }, { 0, 0, 0 } };
+  volatile float vzero = 0.0f;
+  const float inf = 1.0f / vzero;
+  bad = 0;
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (int m = 0; m < 4; m++) {
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, qmin[m]);
+    for (size_t d = 0; d < sizeof qdirs / sizeof qdirs[0]; d++) {
+      glClearColor(-1,-1,-1,-1); glClear(GL_COLOR_BUFFER_BIT);
+      glBegin(GL_QUADS); glTexCoord4f(qdirs[d][0], qdirs[d][1], qdirs[d][2], 0.0f);
+      glVertex2f(0, 0); glVertex2f(4, 0); glVertex2f(4, 4); glVertex2f(0, 4); glEnd(); glFinish();
+      float c[3], dd[3];
+      for (int k = 0; k < 3; k++) { c[k] = qdirs[d][k] * inf; dd[k] = c[k] - c[k]; }
+      const float rho = cube_rho_px(c, dd, dd);
+      float s, t; const int f = lookup(c, 1, &s, &t);
+      const float fsn = floorf(s * (float)TS), ftn = floorf(t * (float)TS);
+      const int i = clampi(fsn >= -2147483648.0f && fsn < 2147483648.0f ? (int)fsn : INT_MIN, 0, TS-1);
+      const int j = clampi(ftn >= -2147483648.0f && ftn < 2147483648.0f ? (int)ftn : INT_MIN, 0, TS-1);
+      const unsigned char *e = texel(f, 0, TS, i, j);
+      for (int k = 0; k < 4; k++) if (rho != 0.0f || buf[k] != (float)e[k]*invw) { bad++;
+        printf("  q = 0, min filter %d, dir %g %g %g: oracle %g model %d\n", m,
+               qdirs[d][0], qdirs[d][1], qdirs[d][2], buf[k]*255.0, e[k]); break; }
+    }
+  }
+  probe_expect("q = 0: infinite or NaN rho is 0 (level 0, magnified): misses", bad, 0);
   return probe_result();
 }

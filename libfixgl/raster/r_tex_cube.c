@@ -23,7 +23,8 @@
  * derivatives are carried onto that pixel's face,
  *    d(face s) = 0.5 * (d sc - sc * d ma / ma) / ma,
  * as gallivm computes them (1/ma a true division, then multiplies), and
- * rho is the 2D squared form of those derivatives times the face size.
+ * rho is the 2D squared form of those derivatives times the face size,
+ * 0 when it is infinite or NaN (q = 0: infinite coordinates).
  * With a LOD per pixel and min != mag, llvmpipe takes the float path
  * (state.c sets float_path), deciding the filter over the 8 pixels of the
  * vector: every pixel's LOD of both quads (r_tex_sample_float_lods).
@@ -120,7 +121,12 @@ float r_tex_cube_rho(const struct r_texture *t, const float q[3][3])
    c = c * c;
    d = d * d;
    const float rx = a + b, ry = c + d;
-   return rx > ry ? rx : ry;
+   const float rho = rx > ry ? rx : ry;
+   /* explicit derivatives only: an infinite or NaN rho (a coordinate
+    * divided by q = 0) becomes 0, a magnified level 0 (lp_build_rho's
+    * lp_build_is_inf_or_nan select; the implicit 1D/2D/3D rho keeps its
+    * NaN, which minifies) */
+   return (r_f2u(rho) & 0x7f800000u) == 0x7f800000u ? 0.0f : rho;
 }
 
 void r_tex_sample_cube(const struct r_texture *t, const float c[3], const float q4[4][3],
