@@ -5,6 +5,7 @@
  * per-fragment operations, depth and stencil images, copies of colour,
  * depth and stencil with overlapping regions and zoom, feedback and
  * selection records, display lists and errors. */
+#define GL_GLEXT_PROTOTYPES 1   /* glMultiDrawArrays, glMultiDrawElements */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -1783,6 +1784,59 @@ static void bitmap_textured_2d(fc_h *h)
     }
 }
 
+/* An array draw call changes which coordinates the fragment program reads
+ * as varyings before it validates anything, so one that draws nothing
+ * (an empty draw, a glMultiDrawArrays or glMultiDrawElements whose first
+ * count is 0, an invalid count) still decides how the next
+ * glBitmap's unit 0 reads its coordinate: the enabled coordinate array
+ * makes it the quad's own (mipmapped by its derivatives), a disabled one
+ * the current coordinate.  Frame 5: the triangle's coordinate varies, the
+ * empty draw has no coordinate array.  Found with random-tex/s1-i892. */
+static void bitmap_textured_empty_draws(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    tex2d_levels(1, 64, true, 5u);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GLubyte tall[8 * 40];
+    for (int i = 0; i < (int)sizeof tall; i++)
+        tall[i] = (GLubyte)(0xff ^ (i * 29));
+    static const GLfloat pos[3][2] = { { 60, 60 }, { 61, 60 }, { 60, 61 } };
+    static const GLfloat tc[3][2] = { { 0.2f, 0.4f }, { 0.6f, 0.1f }, { 0.9f, 0.9f } };
+    static const GLint first[2] = { 0, 0 };
+    static const GLsizei counts[2] = { 0, 3 };
+    static const GLubyte idx[3] = { 0, 1, 2 };
+    const GLvoid *const idxs[2] = { idx, idx };
+    static const GLsizei ecounts[2] = { 0, 3 };
+    for (int frame = 0; frame < 6; frame++) {
+        glColor4f(1, 1, 1, 1);
+        textured_tri(frame == 5 ? 1u : 0u);
+        glVertexPointer(2, GL_FLOAT, 0, pos);
+        glTexCoordPointer(2, GL_FLOAT, 0, tc);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        if (frame != 5)
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        switch (frame) {
+        case 0: glDrawArrays(GL_POINTS, 0, 0); break;
+        case 1: glMultiDrawArrays(GL_POINTS, first, counts, 2); break;
+        case 2: glDrawArrays(GL_POINTS, 0, -1); break;
+        case 3: glDrawElements(GL_POINTS, 0, GL_UNSIGNED_BYTE, idx); break;
+        case 4: glMultiDrawElements(GL_POINTS, ecounts, GL_UNSIGNED_BYTE, idxs, 2); break;
+        default: glDrawArrays(GL_TRIANGLES, 0, 2); break;
+        }
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoord4f(0.7f, 0.3f, 0.0f, 1.0f);
+        window_pos(24.0f, 4.0f, 0.0f);
+        glBitmap(64, 40, 0, 0, 0, 0, tall);
+        glFinish();
+        fc_capture(h);
+        fcu_clear(0.1f, 0.1f, 0.1f, 1.0f, 1.0);
+    }
+}
+
 /* glDrawPixels and glCopyPixels under two units: unit 0 reads the current
  * coordinate of unit 0 (nir_lower_drawpixels' gl_TexCoord[0]), unit 1
  * (0, 0, 0, 0) whatever its current coordinate; both magnified.  Then the
@@ -2024,6 +2078,8 @@ const fc_case fc_cases_pix_draw[] = {
             "pixel drawpixels copypixels errors", pixels_no_depth),
     FC_CASE_RGBA("pixel/bitmap_textured_2d", 96, 64, 4, "pixel bitmap texture mipmap texgen texmat",
                  bitmap_textured_2d),
+    FC_CASE_RGBA("pixel/bitmap_textured_empty_draws", 96, 64, 6,
+                 "pixel bitmap texture mipmap varray multidraw errors", bitmap_textured_empty_draws),
     FC_CASE_RGBA("pixel/drawpixels_textured_units", 64, 64, 4,
                  "pixel drawpixels copypixels texture multitexture texgen texmat",
                  drawpixels_textured_units),

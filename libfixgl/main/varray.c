@@ -478,6 +478,7 @@ void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count)
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_for_draw(ctx);
+   t_set_draw_inputs(ctx);
    GLenum err = count < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    if (err) {
       fgl_error(ctx, err);
@@ -497,6 +498,7 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_for_draw(ctx);
+   t_set_draw_inputs(ctx);
    const GLenum err = validate_draw_elements(mode, count, type);
    if (err) {
       fgl_error(ctx, err);
@@ -517,6 +519,7 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_for_draw(ctx);
+   t_set_draw_inputs(ctx);
    /* _mesa_validate_DrawRangeElements: end < start first */
    const GLenum err = end < start ? GL_INVALID_VALUE
                                   : validate_draw_elements(mode, count, type);
@@ -548,6 +551,7 @@ void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_for_draw(ctx);
+   t_set_draw_inputs(ctx);
    GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    for (GLsizei i = 0; !err && i < n; i++)
       if (count[i] < 0)
@@ -590,6 +594,7 @@ void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum ty
    }
    ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_for_draw(ctx);
+   t_set_draw_inputs(ctx);
    GLenum err = n < 0 ? GL_INVALID_VALUE : valid_prim_mode(mode);
    if (!err && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT &&
        type != GL_UNSIGNED_INT)

@@ -235,6 +235,15 @@ static void set_array_format(struct fgl_context *ctx)
          vbo->attr_size[array_map[m].attr] = (unsigned)A[array_map[m].array].Size;
 }
 
+void t_set_draw_inputs(struct fgl_context *ctx)
+{
+   const struct fgl_client_array *A = ctx->Array.Array;
+   ctx->_VaryingTexUnits = 0;
+   for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
+      if (A[FGL_ARRAY_TEX(u)].Enabled)
+         ctx->_VaryingTexUnits |= 1u << u;
+}
+
 /* n vertices of the enabled arrays into verts: elements fetch_elt[i], or
  * first + i without an element list */
 static void fetch_vertices(const struct fgl_context *ctx, const GLuint *fetch_elt, GLuint first,

@@ -344,6 +344,12 @@ void t_render_source(struct fgl_context *ctx, const struct t_vertex_source *src,
  * arrays, validated by the caller. */
 void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei count,
                    GLenum index_type, const GLvoid *indices);
+/* Every array draw call, before its validation (an invalid or empty draw
+ * too): the enabled coordinate arrays become the units whose coordinates
+ * the fixed-function fragment program reads as varyings
+ * (ctx->_VaryingTexUnits) [S: main/draw.c: each draw entry point calls
+ * _mesa_set_draw_vao, hence _mesa_set_varying_vp_inputs, first]. */
+void t_set_draw_inputs(struct fgl_context *ctx);
 /* glArrayElement: the enabled arrays' element elt through the immediate-mode
  * attribute calls. */
 void t_array_element(struct fgl_context *ctx, GLint elt);
