@@ -8,7 +8,8 @@
  *    + 127) & ~255) >> 8), so .5 rounds down;
  *  - the point is the n x n square starting at (x0>>8, y0>>8) - (n-1)/2 for
  *    odd n, ((x0+128)>>8, (y0+128)>>8) - n/2 for even n, cut to the draw
- *    region (lp_setup_bin_rectangle shades the whole box);
+ *    region, and to the viewport under attenuation (r_state.px0..py1;
+ *    lp_setup_bin_rectangle shades the whole box);
  *  - depth and every input come from the vertex: constant coefficients, or,
  *    for perspective-interpolated inputs, the vertex value premultiplied by
  *    its 1/w and divided by the (constant) interpolated 1/w again in the
