@@ -959,6 +959,32 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
    return failed;
 }
 
+/* The region of points and non-smooth lines (r_state.px0..py1): the draw
+ * region, and with a size per vertex llvmpipe cuts them to the viewport
+ * too (ORACLE-NOTES.md "Point parameters"; probe p_point_viewport): vpwh,
+ * (int)(x0 + 0.499f) .. (int)(x1 - 0.501f) inclusive, truncated toward
+ * zero, in y-down window coordinates. */
+static void update_point_region(struct fgl_context *ctx)
+{
+   struct r_state *rs = &ctx->_Raster;
+   rs->px0 = rs->x0;
+   rs->py0 = rs->y0;
+   rs->px1 = rs->x1;
+   rs->py1 = rs->y1;
+   if (!rs->rast || !rs->rast->point_size_per_vertex)
+      return;
+   const float sx = fabsf(ctx->_ViewportScale[0]), sy = fabsf(ctx->_ViewportScale[1]);
+   const float tx = ctx->_ViewportTranslate[0], ty = ctx->_ViewportTranslate[1];
+   const int vx0 = (int)((tx - sx) + 0.499f), vx1 = (int)((tx + sx) - 0.501f) + 1;
+   const int vy0 = (int)((ty - sy) + 0.499f), vy1 = (int)((ty + sy) - 0.501f) + 1;
+   if (rs->px0 < vx0) rs->px0 = vx0;
+   if (rs->py0 < vy0) rs->py0 = vy0;
+   if (rs->px1 > vx1) rs->px1 = vx1;
+   if (rs->py1 > vy1) rs->py1 = vy1;
+   if (rs->px0 >= rs->px1 || rs->py0 >= rs->py1)
+      rs->px0 = rs->py0 = rs->px1 = rs->py1 = 0;
+}
+
 void fgl_update_state(struct fgl_context *ctx)
 {
    const unsigned dirty = ctx->NewState;
@@ -1013,6 +1039,9 @@ void fgl_update_state(struct fgl_context *ctx)
       if (failed)
          fgl_error(ctx, GL_OUT_OF_MEMORY);
    }
+   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_SCISSOR | FGL_NEW_VIEWPORT | FGL_NEW_POINT |
+                FGL_NEW_POLYGON))
+      update_point_region(ctx);
 
    /* a group whose object could not be made is validated again */
    ctx->NewState = failed;

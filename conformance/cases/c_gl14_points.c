@@ -368,6 +368,102 @@ static void atten_modelview(fc_h *h)
     fc_capture(h);
 }
 
+/* Under attenuation llvmpipe cuts points and non-smooth lines to the
+ * viewport rectangle (ORACLE-NOTES.md "Point parameters"): the report's
+ * repro (40x40, viewport (5, 5, 30, 30), size 20 attenuated to 40 at the
+ * centre: 900 pixels), as a sprite (930: the row below the viewport too),
+ * smooth (not cut), a viewport below the window (nothing), one ending at
+ * x = 0 (vpwh's truncation keeps column 0), wide lines, and points of
+ * glPolygonMode GL_POINT; one frame each. */
+static void atten_viewport(fc_h *h)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    const GLfloat a[3] = { 0.25f, 0, 0 };
+    glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, a);
+    static const int vps[][4] = { { 5, 5, 30, 30 }, { 5, -40, 30, 30 }, { -30, 5, 30, 30 },
+                                  { 5, 40, 30, 30 }, { 3, 9, 20, 14 } };
+    for (int mode = 0; mode < 3; mode++) {   /* legacy, sprite, smooth */
+        if (mode == 1)
+            glEnable(GL_POINT_SPRITE);
+        if (mode == 2) {
+            glDisable(GL_POINT_SPRITE);
+            glEnable(GL_POINT_SMOOTH);
+        }
+        for (int i = 0; i < 5; i++) {
+            glViewport(0, 0, 40, 40);
+            fcu_clear(0, 0, 0, 1, 1);
+            glViewport(vps[i][0], vps[i][1], vps[i][2], vps[i][3]);
+            glPointSize(20.0f - 3.0f * (float)i);
+            glBegin(GL_POINTS);
+            fcu_color(i + mode);
+            glVertex2f(vps[i][0] < 0 ? 0.99f : 0.1f * (float)i, vps[i][1] >= 40 ? -0.99f : 0.0f);
+            glEnd();
+            fc_capture(h);
+        }
+    }
+    glDisable(GL_POINT_SMOOTH);
+    /* wide lines and GL_POINT polygons, the viewport cut */
+    glViewport(0, 0, 40, 40);
+    fcu_clear(0, 0, 0, 1, 1);
+    glViewport(5, 5, 30, 30);
+    glLineWidth(9);
+    glBegin(GL_LINES);
+    fcu_color(1);
+    glVertex2f(-0.5f, 0.95f);
+    glVertex2f(0.7f, 0.8f);
+    fcu_color(2);
+    glVertex2f(-0.97f, -0.9f);
+    glVertex2f(-0.9f, 0.4f);
+    glEnd();
+    glPointSize(5);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+    glBegin(GL_TRIANGLES);
+    fcu_color(3);
+    glVertex2f(0.99f, 0.99f);
+    glVertex2f(0.2f, -0.99f);
+    glVertex2f(0.99f, 0.2f);
+    glEnd();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    fc_capture(h);
+}
+
+/* Sprites cut at their bottom by the attenuated viewport or the scissor
+ * box keep the row below it unless that row starts the next band of 64x64
+ * tiles (ORACLE-NOTES.md "Point sprites"): an 80x72 window, viewports
+ * ending at GL y = 8 (y-down row 64) and 20, the scissor alone without
+ * attenuation. */
+static void sprite_region_row(fc_h *h)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_POINT_SPRITE);
+    const GLfloat a[3] = { 0.25f, 0, 0 }, none[3] = { 1, 0, 0 };
+    for (int f = 0; f < 3; f++) {
+        glViewport(0, 0, 80, 72);
+        fcu_clear(0, 0, 0, 1, 1);
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, f < 2 ? a : none);
+        glViewport(f == 1 ? 7 : 30, f == 0 ? 8 : 20, 40, 40);
+        if (f == 2) {
+            glScissor(20, 30, 30, 25);
+            glEnable(GL_SCISSOR_TEST);
+        }
+        glPointSize(f < 2 ? 13.5f : 27);
+        glBegin(GL_POINTS);
+        fcu_color(f);
+        glVertex2f(-0.3f, -0.45f);
+        fcu_color(f + 4);
+        glVertex2f(0.6f, -0.85f);
+        glEnd();
+        glDisable(GL_SCISSOR_TEST);
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_gl14_points[] = {
     FC_CASE_RGBA("gl14/points_atten_linear", 64, 64, 1, "gl14 points", atten_linear),
     FC_CASE_RGBA("gl14/points_atten_quadratic", 64, 64, 1, "gl14 points", atten_quadratic),
@@ -395,6 +491,10 @@ const fc_case fc_cases_gl14_points[] = {
     FC_CASE_RGBA("gl14/points_arrays_dlist", 64, 64, 4, "gl14 points varray dlist", atten_arrays_dlist),
     FC_CASE_RGBA("gl14/points_atten_clip", 64, 64, 1, "gl14 points clip", atten_clip),
     FC_CASE_RGBA("gl14/points_atten_modelview", 64, 64, 1, "gl14 points", atten_modelview),
+    FC_CASE_RGBA("gl14/points_atten_viewport", 40, 40, 16, "gl14 points sprite smooth",
+                 atten_viewport),
+    FC_CASE_RGBA("gl14/sprite_region_row", 80, 72, 3, "gl14 points sprite scissor",
+                 sprite_region_row),
     FC_CASE_RGBA("gl14/points_params_api", 8, 8, 0, "gl14 points api error attrib dlist", params_api),
     { 0 },
 };

@@ -43,12 +43,13 @@ struct r_shader {
 
 /* lp_setup_bin_triangle and the rasterizer for the n edge planes p[] (room
  * for R_MAX_PLANES) and the bounding box bx0..bx1, by0..by1 (inclusive,
- * already clamped to >= 0 and known to meet the draw region): adds the
- * planes of the draw region's sides the box leaves, then bins 64x64 tiles
+ * already clamped to >= 0 and known to meet the region): adds the planes
+ * of the sides of region (x0, y0, x1, y1 exclusive: the draw region, or
+ * r_state's point and line region) the box leaves, then bins 64x64 tiles
  * and descends through 16x16 and 4x4 blocks with llvmpipe's wrapping
  * 32-bit block arithmetic. */
 void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
                   int32_t bx0, int32_t by0, int32_t bx1, int32_t by1,
-                  const struct r_shader *sh);
+                  const int32_t region[4], const struct r_shader *sh);
 
 #endif

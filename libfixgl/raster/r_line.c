@@ -334,8 +334,8 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    int32_t by0 = r_add32(ymin, 255 + adj) >> 8;
    int32_t by1 = (r_add32(ymax, 255 + adj) >> 8) - 1;
    /* u_rect_test_intersection with the draw region */
-   if (rs->x0 >= rs->x1 || rs->y0 >= rs->y1 ||
-       bx1 < rs->x0 || bx0 > rs->x1 - 1 || by1 < rs->y0 || by0 > rs->y1 - 1)
+   if (rs->px0 >= rs->px1 || rs->py0 >= rs->py1 ||
+       bx1 < rs->px0 || bx0 > rs->px1 - 1 || by1 < rs->py0 || by0 > rs->py1 - 1)
       return;
 
    /* setup_line_coefficients: depth and 1/w are linear, the inputs
@@ -407,14 +407,15 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
       }
       /* bboxpos: negative regions discarded */
       const struct r_shader sh = { r_setup_shade_pixel, &ls };
-      r_bin_planes(rs, p, 4, bx0 > 0 ? bx0 : 0, by0 > 0 ? by0 : 0, bx1, by1, &sh);
+      const int32_t region[4] = { rs->px0, rs->py0, rs->px1, rs->py1 };
+      r_bin_planes(rs, p, 4, bx0 > 0 ? bx0 : 0, by0 > 0 ? by0 : 0, bx1, by1, region, &sh);
       return;
    }
 
-   if (bx0 < rs->x0) bx0 = rs->x0;
-   if (by0 < rs->y0) by0 = rs->y0;
-   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
-   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   if (bx0 < rs->px0) bx0 = rs->px0;
+   if (by0 < rs->py0) by0 = rs->py0;
+   if (bx1 > rs->px1 - 1) bx1 = rs->px1 - 1;
+   if (by1 > rs->py1 - 1) by1 = rs->py1 - 1;
 
    /* the four edges, as the triangles' (lp_setup_tri.c conventions) */
    int64_t c[4], dcdx[4], dcdy[4];

@@ -8,7 +8,8 @@
  *    + 127) & ~255) >> 8), so .5 rounds down;
  *  - the point is the n x n square starting at (x0>>8, y0>>8) - (n-1)/2 for
  *    odd n, ((x0+128)>>8, (y0+128)>>8) - n/2 for even n, cut to the draw
- *    region (lp_setup_bin_rectangle shades the whole box);
+ *    region, and to the viewport under attenuation (r_state.px0..py1;
+ *    lp_setup_bin_rectangle shades the whole box);
  *  - depth and every input come from the vertex: constant coefficients, or,
  *    for perspective-interpolated inputs, the vertex value premultiplied by
  *    its 1/w and divided by the (constant) interpolated 1/w again in the
@@ -139,12 +140,20 @@ static void sprite(const struct r_state *rs, const struct r_vertex *v)
     * box and the draw region cut it further only where it is empty. */
    int64_t bx0 = (x0 + 255) >> 8, bx1 = ((x1 + 255) >> 8) - 1;
    int64_t by0 = (y0 >> 8) + 1, by1 = y1 >> 8;
-   if (bx0 < rs->x0) bx0 = rs->x0;
-   if (by0 < rs->y0) by0 = rs->y0;
-   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
-   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   const int64_t own_by1 = by1;
+   if (bx0 < rs->px0) bx0 = rs->px0;
+   if (by0 < rs->py0) by0 = rs->py0;
+   if (bx1 > rs->px1 - 1) bx1 = rs->px1 - 1;
+   if (by1 > rs->py1 - 1) by1 = rs->py1 - 1;
    if (bx0 > bx1 || by0 > by1)
       return;
+   /* The bottom plane's constant is the box's bottom + 1 row, plus the
+    * fill rule's increment: a square the region cuts at its bottom also
+    * covers the row below the region, shaded where the rasterizer walks,
+    * in the bottom row of tiles binned and inside the framebuffer
+    * (ORACLE-NOTES.md "Point sprites"; probe p_point_viewport) */
+   if (own_by1 > by1 && by1 + 1 < rs->fb->height && (by1 + 1) % 64 != 0)
+      by1++;
 
    /* setup_point_coefficients, with the planes of the replaced
     * coordinates (a constant-interpolated input never takes them) */
@@ -208,11 +217,11 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
    }
    int32_t bx1 = bx0 + n - 1, by1 = by0 + n - 1;
 
-   /* u_rect_find_intersection with the draw region */
-   if (bx0 < rs->x0) bx0 = rs->x0;
-   if (by0 < rs->y0) by0 = rs->y0;
-   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
-   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
+   /* u_rect_find_intersection with the draw region (the point region) */
+   if (bx0 < rs->px0) bx0 = rs->px0;
+   if (by0 < rs->py0) by0 = rs->py0;
+   if (bx1 > rs->px1 - 1) bx1 = rs->px1 - 1;
+   if (by1 > rs->py1 - 1) by1 = rs->py1 - 1;
    if (bx0 > bx1 || by0 > by1)
       return;
 

@@ -428,6 +428,10 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
          if (rs.y0 < ty0) rs.y0 = ty0;
          if (rs.x1 > tx1) rs.x1 = tx1;
          if (rs.y1 > ty1) rs.y1 = ty1;
+         if (rs.px0 < tx0) rs.px0 = tx0;
+         if (rs.py0 < ty0) rs.py0 = ty0;
+         if (rs.px1 > tx1) rs.px1 = tx1;
+         if (rs.py1 > ty1) rs.py1 = ty1;
          if (rs.stats)
             rs.stats = stats;
          if (rs.samples)

@@ -675,6 +675,11 @@ struct r_state {
    /* pixels outside [x0,x1) x [y0,y1) are never touched (framebuffer,
     * intersected with the scissor box) */
    int x0, y0, x1, y1;
+   /* the region of points and of lines that are not smooth: the draw
+    * region, cut to the viewport rectangle while point sizes are per
+    * vertex (ORACLE-NOTES.md "Point parameters": llvmpipe's vpwh scissor);
+    * a sprite may shade the row at py1 below it (r_point.c sprite) */
+   int px0, py0, px1, py1;
 
    /* bit i: attribute i uses the provoking vertex (the vertex stage sets
     * it per batch) */

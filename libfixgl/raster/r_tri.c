@@ -622,7 +622,8 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    setup_shade(rs, v, back, phong_back, &ts);
    const struct r_shader sh = { tri_shade_pixel, &ts };
    const uint64_t t1 = rs->stats ? r_stats_now() : 0;
-   r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, &sh);
+   const int32_t region[4] = { rs->x0, rs->y0, rs->x1, rs->y1 };
+   r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, region, &sh);
    if (rs->stats) {
       rs->stats->setup_ns += t1 - t0;
       rs->stats->raster_ns += r_stats_now() - t1;
@@ -637,10 +638,10 @@ static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, i
 /* [S: lp_setup_tri.c:lp_setup_bin_triangle] */
 void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
                   int32_t bx0, int32_t by0, int32_t bx1, int32_t by1,
-                  const struct r_shader *sh)
+                  const int32_t region[4], const struct r_shader *sh)
 {
    /* draw region, inclusive */
-   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   const int32_t rx0 = region[0], ry0 = region[1], rx1 = region[2] - 1, ry1 = region[3] - 1;
    /* trimmed box: the box intersected with the draw region */
    const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
    const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;

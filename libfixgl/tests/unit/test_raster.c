@@ -72,6 +72,9 @@ static struct r_state make_state(uint8_t *color, int w, int h)
    rs.y0 = 0;
    rs.x1 = w;
    rs.y1 = h;
+   rs.px0 = rs.py0 = 0;
+   rs.px1 = w;
+   rs.py1 = h;
    t_dsa.depth_test = false;
    t_dsa.depth_func = R_LESS;
    t_dsa.depth_write = false;
