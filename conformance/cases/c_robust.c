@@ -547,7 +547,9 @@ static void deletelists_before_any(fc_h *h)
  * campaign); a zero width, or a depth of 1, compiles without error. */
 static void teximage3d_compile_depth(fc_h *h)
 {
-    static const GLubyte px[2 * 2 * 4 * 4] = { 0 };
+    /* large enough for every call below at depth 1 (the 12x2 GL_INT
+     * stencil image: 96 bytes), which the list copies */
+    static const GLubyte px[12 * 2 * 4] = { 0 };
     static const GLsizei depths[3] = { 1, 0, -65536 };
     for (int i = 0; i < 3; i++) {
         glNewList(1, GL_COMPILE);
