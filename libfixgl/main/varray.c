@@ -607,7 +607,8 @@ void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum ty
       return;
    }
    /* only client indices: with an element buffer bound, 0 is an offset
-    * (api_validate.c: !VAO->IndexBufferObj) */
+    * (ORACLE-NOTES.md "GL 1.4 vertex attributes and operations";
+    * api_validate.c: !VAO->IndexBufferObj) */
    if (!ctx->Array.ElementBufferObj)
       for (GLsizei i = 0; i < n; i++)
          if (!indices[i])

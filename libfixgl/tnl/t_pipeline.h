@@ -347,7 +347,8 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
 /* Every array draw call, before its validation (an invalid or empty draw
  * too): the enabled coordinate arrays become the units whose coordinates
  * the fixed-function fragment program reads as varyings
- * (ctx->_VaryingTexUnits) [S: main/draw.c: each draw entry point calls
+ * (ctx->_VaryingTexUnits; ORACLE-NOTES.md "Bitmaps and pixel
+ * rectangles") [S: main/draw.c: each draw entry point calls
  * _mesa_set_draw_vao, hence _mesa_set_varying_vp_inputs, first]. */
 void t_set_draw_inputs(struct fgl_context *ctx);
 /* glArrayElement: the enabled arrays' element elt through the immediate-mode
