@@ -531,12 +531,11 @@ struct fgl_point_attrib {
    float Threshold;         /* GL_POINT_FADE_THRESHOLD_SIZE (1): stored
                              * only, the oracle fades nothing */
    float Params[3];         /* GL_POINT_DISTANCE_ATTENUATION (1, 0, 0) */
-   /* GL_POINT_SPRITE, glTexEnv's GL_COORD_REPLACE per unit (bit u),
-    * GL_POINT_SPRITE_COORD_ORIGIN (the oracle has no NV_point_sprite:
-    * no R mode) */
+   /* GL_POINT_SPRITE, glTexEnv's GL_COORD_REPLACE per unit (bit u);
+    * the origin is ARB_point_sprite's upper left (GL 2.0's
+    * GL_POINT_SPRITE_COORD_ORIGIN is no GL 1.5 state) */
    bool PointSprite;
    unsigned CoordReplace;
-   GLenum SpriteOrigin;
 };
 
 /* GL_LINE_BIT (main/lines.c) */

@@ -692,11 +692,11 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
    o->point_size_per_vertex = fgl_point_attenuated(ctx);
    /* [S: st_atom_rasterizer.c] GL_POINT_SPRITE: point_quad_rasterization,
     * sprite_coord_enable from the units' GL_COORD_REPLACE, the origin
-    * upper left unless GL_LOWER_LEFT (OSMesa's buffer is Y_0_TOP, so no
-    * flip), and point_smooth off (fgl_point_smooth) */
+    * upper left (GL 1.5 has no GL_POINT_SPRITE_COORD_ORIGIN; OSMesa's
+    * buffer is Y_0_TOP, so no flip), and point_smooth off
+    * (fgl_point_smooth) */
    if (ctx->Point.PointSprite) {
       o->point_sprite = true;
-      o->sprite_lower_left = ctx->Point.SpriteOrigin == GL_LOWER_LEFT;
       o->sprite_coord_enable = (uint8_t)(ctx->Point.CoordReplace & ((1u << R_MAX_TEX_UNITS) - 1u));
    }
    o->line_width = width > FGL_MIN_LINE_WIDTH

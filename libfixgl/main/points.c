@@ -26,7 +26,6 @@ void fgl_init_point(struct fgl_context *ctx)
    ctx->Point.Params[2] = 0.0f;
    ctx->Point.PointSprite = false;
    ctx->Point.CoordReplace = 0;
-   ctx->Point.SpriteOrigin = GL_UPPER_LEFT;
 }
 
 void GLAPIENTRY glPointSize(GLfloat size)

@@ -90,11 +90,11 @@ static void point_setup(const struct r_state *rs, const struct r_vertex *v,
  * replaced texture coordinate, channel c, for the sprite of sub-pixel
  * width fw centred at the window position (x, y), premultiplied by the
  * vertex 1/w (the input is perspective): s = 0.5 + (x_pixel - (x - 0.5))
- * * 256/fw, t the same down the buffer (negated for the lower-left
- * origin), r = 0, q = 1.  The setup's C: float products and sum, the
- * subtraction from 0.5 in double (the literal), rounded to float. */
-static struct r_attr_plane sprite_plane(int c, float x, float y, float w, int32_t fw,
-                                        bool lower_left)
+ * * 256/fw, t the same down the buffer (ARB_point_sprite's upper-left
+ * origin; GL 2.0's lower-left one is no GL 1.5 state), r = 0, q = 1.  The
+ * setup's C: float products and sum, the subtraction from 0.5 in double
+ * (the literal), rounded to float. */
+static struct r_attr_plane sprite_plane(int c, float x, float y, float w, int32_t fw)
 {
    const float xo = x - 0.5f, yo = y - 0.5f;   /* minus pixel_offset */
    float dadx = 0.0f, dady = 0.0f, a0;
@@ -105,8 +105,6 @@ static struct r_attr_plane sprite_plane(int c, float x, float y, float w, int32_
       break;
    case 1:
       dady = 256.0f / (float)fw;
-      if (lower_left)
-         dady = -dady;
       a0 = (float)(0.5 - (double)(dadx * xo + dady * yo));
       break;
    case 2:
@@ -167,8 +165,7 @@ static void sprite(const struct r_state *rs, const struct r_vertex *v)
       ts.flat_attr[a] = false;
       ts.need_w = true;
       for (int c = 0; c < 4; c++)
-         ts.ap[a][c] = sprite_plane(c, v->pos[0], v->pos[1], v->pos[3], fw,
-                                    rs->rast->sprite_lower_left);
+         ts.ap[a][c] = sprite_plane(c, v->pos[0], v->pos[1], v->pos[3], fw);
    }
 
    /* the square is the box: the block kernel of the state (a flat colour,

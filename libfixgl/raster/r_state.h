@@ -521,9 +521,8 @@ struct r_rast_state {
     * edges (r_point.c sprite) instead of the legacy whole-pixel one, and
     * the texture coordinates of the units in sprite_coord_enable (bit u:
     * unit u, GL_COORD_REPLACE) are its planes (s, t, 0, 1), t growing down
-    * the y-down buffer (GL_UPPER_LEFT) or up (sprite_lower_left) */
+    * the y-down buffer (ARB_point_sprite's upper-left origin) */
    bool point_sprite;
-   bool sprite_lower_left;
    uint8_t sprite_coord_enable;
 };
 
