@@ -59,7 +59,9 @@
  * scene)
  * FIXGL_BENCH_DUMP=DIR writes the check frame of each scene to DIR/NAME.ppm.
  * FIXGL_BENCH_FRAMES=N draws exactly N frames of each scene, without warm-up
- * or stats frames (a fixed amount of work for callgrind or perf).
+ * or stats frames, then its check frames (a fixed amount of work for
+ * callgrind or perf: N + CHECK_FRAMES frames a scene, the check frames in
+ * a context of their own).
  * Output, one line per scene:  scene NAME fps X frames N checksum C
  * The checksum (FNV-1a of the scene's check frame) tells whether both
  * libraries drew the same image.  The check frame is not the last timed
@@ -69,7 +71,7 @@
  * the frame counts of this and the earlier scenes, which the time budget
  * makes differ between the builds and between runs (the stipple scene's
  * last frame was another image in about one run of ten, on both
- * libraries alike).  So after the scene's frames a fresh context sharing
+ * libraries alike).  So after the scene's timed frames a fresh context sharing
  * the textures draws CHECK_FRAMES frames of it (check_frame), the same
  * vertex stream in both builds whatever the clock did; the workers, the
  * textures and the user's buffer are the long run's.  The fixgl build
