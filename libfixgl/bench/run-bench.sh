@@ -7,7 +7,7 @@
 # per second per scene and the ratios like for like (default threads over
 # default threads, one thread over one thread), and a scaling table: fixgl
 # with 1, 2 and 4 threads.  The "same" column compares the checksums of the
-# last frames of every fixgl run with OSMesa's.
+# check frames (bench.c) of every fixgl run with OSMesa's.
 # The shading scenes (phong, ctphong, ctsmooth) use fixgl's extensions; the
 # OSMesa build binds the conformance suite's GLSL reference for them.
 #
@@ -100,7 +100,7 @@ awk -v format=text -f "$here/tables.awk" "$tsv"
 echo
 echo "fixgl = FIXGL_NUM_THREADS unset (one thread per CPU); fixgl-1 = FIXGL_NUM_THREADS=1;"
 echo "OSMesa = llvmpipe with its default threads; OSMesa-1 = LP_NUM_THREADS=1;"
-echo "same = last frame of every fixgl run identical to OSMesa's (lit200, lit20k,"
+echo "same = check frame of every fixgl run identical to OSMesa's (lit200, lit20k,"
 echo "gears and manydraws are lit).  phong, ctphong, ctsmooth: fixgl's GL_PHONG_WIN and"
 echo "GL_FIXGL_cook_torrance (per fragment, per vertex) against llvmpipe running the"
 echo "same equations as GLSL (conformance/reference/fcr_shading.c); 786,432 lit"
@@ -135,7 +135,7 @@ EOF
   awk -v format=svg -f "$here/chart.awk" "$tsv"
   awk -v format=html -f "$here/tables.awk" "$tsv"
   cat <<'EOF'
-<p class="note">same: the last frame of fixgl is identical to OSMesa's
+<p class="note">same: the check frame of fixgl is identical to OSMesa's
 (phong, ctphong, ctsmooth: OSMesa runs the GLSL reference of fixgl's shading
 extensions, conformance/reference/fcr_shading.c).</p>
 <p class="note">Breakdown: fixgl's own counters (fixglStats) in the

@@ -3,7 +3,7 @@
 #
 # Frames per second: fixgl (default threads) and fixgl-1 (one thread),
 # OSMesa (llvmpipe, default threads) and OSMesa-1 (LP_NUM_THREADS=1), the
-# ratios like for like, and whether the last frames are the same.
+# ratios like for like, and whether the check frames are the same.
 #
 # Scaling: fixgl's frames per second with 1, 2 and 4 threads
 # (FIXGL_NUM_THREADS) and the speed-ups over one thread.
