@@ -468,13 +468,19 @@ static uint8_t *alloc_buffer(void **mem, size_t size)
 {
    const size_t huge = (size_t)2 << 20;
    const size_t align = size >= huge ? huge : 64;
-   *mem = fgl_calloc(size + align, 1);
+   /* a large buffer is rounded up to whole 2 MB pages: its last part,
+    * short of a page, was in 4 KB pages before, and its tiles' rows
+    * missed the TLB again (1024x768: the bottom 256 rows of both the
+    * colour and the depth buffer); the cost, at most 2 MB a buffer of
+    * memory that the huge page holds past the buffer's end */
+   const size_t span = align == huge ? (size + huge - 1) & ~(huge - 1) : size;
+   *mem = fgl_calloc(span + align, 1);
    if (!*mem)
       return NULL;
    uint8_t *p = (uint8_t *)(((uintptr_t)*mem + align - 1) & ~(uintptr_t)(align - 1));
 #ifdef MADV_HUGEPAGE
    if (align == huge)
-      (void)madvise(p, size & ~(huge - 1), MADV_HUGEPAGE);
+      (void)madvise(p, span, MADV_HUGEPAGE);
 #endif
    return p;
 }
