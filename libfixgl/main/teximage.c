@@ -113,6 +113,10 @@ static const struct fgl_tex_pipe_format PF_Z32 = { 0, 0, 0, 0, 0, 0, 4, false };
  * in other precisions */
 static const struct fgl_tex_pipe_format PF_DXT_RGB = { 4, 4, 4, 0, 0, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_DXT_RGBA = { 4, 4, 4, 4, 0, 0, 1, false };
+/* [S: formats.csv: MESA_FORMAT_L_LATC1_UNORM, MESA_FORMAT_LA_LATC2_UNORM]
+ * the LATC formats GL_COMPRESSED_LUMINANCE(_ALPHA) are stored in */
+static const struct fgl_tex_pipe_format PF_LATC1 = { 0, 0, 0, 0, 8, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_LATC2 = { 0, 0, 0, 8, 8, 0, 1, false };
 
 struct tex_format {
    GLint internal;
@@ -736,12 +740,22 @@ static GLenum s3tc_format_of(GLint internal, GLenum target)
       return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
    if (internal == GL_COMPRESSED_RGBA)
       return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+   /* LATC1 / LATC2 (ORACLE-NOTES.md "Compressed textures: LATC") */
+   if (internal == GL_COMPRESSED_LUMINANCE)
+      return GL_COMPRESSED_LUMINANCE_LATC1_EXT;
+   if (internal == GL_COMPRESSED_LUMINANCE_ALPHA)
+      return GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
    return 0;
 }
 
 static const struct fgl_tex_pipe_format *s3tc_pipe_format(GLenum cf)
 {
-   return cf == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ? &PF_DXT_RGB : &PF_DXT_RGBA;
+   switch (cf) {
+   case GL_COMPRESSED_RGB_S3TC_DXT1_EXT: return &PF_DXT_RGB;
+   case GL_COMPRESSED_LUMINANCE_LATC1_EXT: return &PF_LATC1;
+   case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT: return &PF_LATC2;
+   default: return &PF_DXT_RGBA;
+   }
 }
 
 /* Gives img (texels allocated) zeroed blocks of `cf`, or, when `old` is an
@@ -774,7 +788,7 @@ static void compress_region(struct fgl_context *ctx, struct fgl_texture_image *i
    if (w <= 0 || h <= 0)
       return;
    const GLenum cf = img->CompressedFormat;
-   const unsigned bytes = fgl_s3tc_block_bytes(cf, NULL);
+   const unsigned bytes = fgl_stored_block_bytes(cf);
    const size_t row = (size_t)((img->Width + 3) / 4) * bytes;
    uint8_t *tmp = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4);
    if (!tmp) {
@@ -807,6 +821,20 @@ static bool block_alignment_error(struct fgl_context *ctx, const struct fgl_text
    return false;
 }
 
+/* [S: st_cb_texture.c:st_GetTexSubImage] The RGBA8 texels glGetTexImage
+ * (and GL_GENERATE_MIPMAP's read of the base) gets of an image of Data's
+ * size: its Data, the sampler's texels, but for LATC2, which the oracle
+ * reads back with Mesa's CPU decoder (measured: exact sevenths and
+ * fifths; ORACLE-NOTES.md "Compressed textures: LATC"). */
+static void readback_texels(const struct fgl_texture_image *img, uint8_t *out)
+{
+   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT)
+      fgl_latc_decode_exact(img->CompressedFormat, img->Blocks, img->Width, img->Height, out);
+   else
+      memcpy(out, img->Data,
+             (size_t)img->Width * (size_t)img->Height * (size_t)img->Depth * 4);
+}
+
 /* [S: mipmap.c:generate_mipmap_compressed, make_2d_mipmap, do_row] The
  * levels below `level` of an S3TC image: the base's decoded texels, each
  * level the truncated mean of 2x2 texels of the one above (a 1-texel side
@@ -822,7 +850,7 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   memcpy(src, base->Data, (size_t)W * (size_t)H * 4);
+   readback_texels(base, src);
    for (GLint l = level + 1; l <= last; l++) {
       const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
       struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)base->InternalFormat,
@@ -1703,6 +1731,15 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    /* a 3D image slice by slice, each at its slice's address
     * (GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES) */
    const size_t slice = (size_t)img->Width * (size_t)img->Height;
+   uint8_t *latc2 = NULL;
+   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT) {
+      latc2 = fgl_malloc_gl(ctx, slice * 4);
+      if (!latc2) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      readback_texels(img, latc2);
+   }
    for (int k = 0; k < img->Depth; k++) {
       void *dst = target == GL_TEXTURE_3D
                      ? (void *)(uintptr_t)slice_address(&ctx->Pack, pixels, img->Width,
@@ -1714,9 +1751,10 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
                              max_bits(img->Format) == 16, format, type, dst);
       else
          fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                        img->BaseFormat, img->Data + 4 * slice * (size_t)k, format, type,
-                        dst);
+                        img->BaseFormat, latc2 ? latc2 : img->Data + 4 * slice * (size_t)k,
+                        format, type, dst);
    }
+   fgl_free(latc2);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1896,6 +1934,8 @@ GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
    switch (img->InternalFormat) {
    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+   case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+   case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
    /* GL_COMPRESSED_RGB/RGBA of a 1D or 3D image (measured: stored
     * uncompressed, reported as the base format) */
    case GL_COMPRESSED_RGB: return GL_RGB;
