@@ -1261,21 +1261,49 @@ static void latc_more_case(fc_h *h)
         glEnable(GL_TEXTURE_2D);
         scene_quad(h, 0, 1);
     } else if (strstr(c->name, "3d")) {
-        /* 3D images: the oracle stores them as LATC too, each slice an
-         * image of its own to the encoder */
-        make_image(0, 8, 24, 7);
+        /* 3D images of the generic formats: the oracle compresses them
+         * too, each slice an image of its own to the encoder */
+        const GLenum g = strstr(c->name, "generic_rgba") ? GL_COMPRESSED_RGBA
+                         : strstr(c->name, "generic_rgb") ? GL_COMPRESSED_RGB
+                                                          : f;
+        const int n = g == GL_COMPRESSED_RGBA || g == GL_COMPRESSED_LUMINANCE_ALPHA ? 192 : 96;
+        make_image(strstr(c->name, "ramp") ? 1 : 0, 8, 24, 7);
         GLuint t3;
         glGenTextures(1, &t3);
         glBindTexture(GL_TEXTURE_3D, t3);
-        glTexImage3D(GL_TEXTURE_3D, 0, (GLint)f, 8, 8, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexImage3D(GL_TEXTURE_3D, 0, (GLint)g, 8, 8, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
         E(h, "3D");
         level_queries(h, "3D", GL_TEXTURE_3D, 0);
         memset(g_out, 0xcd, sizeof g_out);
         glGetCompressedTexImage(GL_TEXTURE_3D, 0, g_out);
         E(h, "glGetCompressedTexImage of the 3D image");
-        fc_blob(h, "3D blocks", g_out, two ? 192 : 96);
-        glGetTexImage(GL_TEXTURE_3D, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, g_out);
-        fc_blob(h, "3D texels", g_out, 8 * 8 * 3 * 2);
+        fc_blob(h, "3D blocks", g_out, (size_t)n);
+        glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, "3D texels", g_out, 8 * 8 * 3 * 4);
+        /* a sub-image across slices 1 and 2, on the block grid */
+        make_image(0, 4, 8, 8);
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 4, 0, 1, 4, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "glTexSubImage3D");
+        memset(g_out, 0xcd, sizeof g_out);
+        glGetCompressedTexImage(GL_TEXTURE_3D, 0, g_out);
+        fc_blob(h, "3D blocks after the sub-image", g_out, (size_t)n);
+        glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, "3D texels after the sub-image", g_out, 8 * 8 * 3 * 4);
+        /* drawn: r across the slices */
+        fc_pixel_ortho(h);
+        fcu_clear(0.2f, 0.1f, 0.3f, 1, 1);
+        glEnable(GL_TEXTURE_3D);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        glBegin(GL_QUADS);
+        glTexCoord3f(0, 0, 0); glVertex2f(1, 1);
+        glTexCoord3f(1.2f, 0, 0.3f); glVertex2f((float)c->width - 1, 1);
+        glTexCoord3f(1.2f, 1.1f, 1); glVertex2f((float)c->width - 1, (float)c->height - 1);
+        glTexCoord3f(0, 1.1f, 0.7f); glVertex2f(1, (float)c->height - 1);
+        glEnd();
+        glDisable(GL_TEXTURE_3D);
+        fc_capture(h);
     } else {
         /* queries: 2D, 1D (stored uncompressed), a cube face */
         make_image(0, 8, 8, 2);
@@ -1544,8 +1572,10 @@ const fc_case fc_cases_compressed[] = {
     LC("compressed/latc2_copies", 40, 40, 1, latc_more_case),
     LC("compressed/latc1_queries_targets", 16, 16, 0, latc_more_case),
     LC("compressed/latc2_queries_targets", 16, 16, 0, latc_more_case),
-    LC("compressed/latc1_3d_slices", 16, 16, 0, latc_more_case),
-    LC("compressed/latc2_3d_slices", 16, 16, 0, latc_more_case),
+    LC("compressed/latc1_3d_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_3d_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgb_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgba_ramp_slices", 40, 40, 1, latc_more_case),
     LC("compressed/latc1_mipmap_ll", 40, 40, 2, encode_mipmap_case),
     LC("compressed/latc1_mipmap_nn_npot", 40, 40, 2, encode_mipmap_case),
     LC("compressed/latc1_mipmap_nl_ramp", 40, 40, 2, encode_mipmap_case),

@@ -732,10 +732,15 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
  * of `internal` on `target` is stored in, 0 for an uncompressed one */
 static GLenum s3tc_format_of(GLint internal, GLenum target)
 {
-   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target))
+   /* a generic format is compressed on a 3D target too (measured: each
+    * slice an image of its own to the encoder), an S3TC one is not
+    * (refused there) */
+   const bool is_3d = target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D;
+   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target) &&
+       !is_3d)
       return 0;
    if (fgl_s3tc_block_bytes((GLenum)internal, NULL))
-      return (GLenum)internal;
+      return is_3d ? 0 : (GLenum)internal;
    if (internal == GL_COMPRESSED_RGB)
       return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
    if (internal == GL_COMPRESSED_RGBA)
@@ -758,6 +763,24 @@ static const struct fgl_tex_pipe_format *s3tc_pipe_format(GLenum cf)
    }
 }
 
+/* The bytes of one slice of a compressed image (a 3D image is its slices'
+ * blocks, one slice after the other). */
+static size_t slice_blocks_bytes(const struct fgl_texture_image *img)
+{
+   return (size_t)fgl_compressed_image_size(img->CompressedFormat, img->Width, img->Height, 1);
+}
+
+/* Decodes slices z .. z + d - 1 of img's blocks into its Data. */
+static void decode_slices(struct fgl_texture_image *img, int z, int d)
+{
+   if (img->Width <= 0 || img->Height <= 0)
+      return;
+   const size_t texels = (size_t)img->Width * (size_t)img->Height;
+   for (int k = z; k < z + d; k++)
+      fgl_s3tc_decode_image(img->CompressedFormat, img->Blocks + (size_t)k * slice_blocks_bytes(img),
+                            img->Width, img->Height, img->Data + 4 * texels * (size_t)k);
+}
+
 /* Gives img (texels allocated) zeroed blocks of `cf`, or, when `old` is an
  * image of the same format and size (the oracle then keeps the texture's
  * storage: st_texture_match_image), old's blocks, and decodes them into
@@ -773,8 +796,7 @@ static bool alloc_blocks(struct fgl_texture_image *img, GLenum cf,
    if (old && old->Blocks && old->CompressedFormat == cf && old->Width == img->Width &&
        old->Height == img->Height && old->Depth == img->Depth)
       memcpy(img->Blocks, old->Blocks, img->BlocksSize);
-   if (img->Width > 0 && img->Height > 0)
-      fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+   decode_slices(img, 0, img->Depth);
    return true;
 }
 
@@ -783,26 +805,32 @@ static bool alloc_blocks(struct fgl_texture_image *img, GLenum cf,
  * region is an image of its own to the encoder), then decodes them back
  * into Data. */
 static void compress_region(struct fgl_context *ctx, struct fgl_texture_image *img, int x,
-                            int y, int w, int h)
+                            int y, int z, int w, int h, int d)
 {
-   if (w <= 0 || h <= 0)
+   if (w <= 0 || h <= 0 || d <= 0)
       return;
    const GLenum cf = img->CompressedFormat;
    const unsigned bytes = fgl_stored_block_bytes(cf);
    const size_t row = (size_t)((img->Width + 3) / 4) * bytes;
+   const size_t texels = (size_t)img->Width * (size_t)img->Height;
    uint8_t *tmp = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4);
    if (!tmp) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   for (int j = 0; j < h; j++)
-      memcpy(tmp + 4 * (size_t)j * (size_t)w,
-             img->Data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x),
-             4 * (size_t)w);
-   fgl_s3tc_encode_image(cf, tmp, w, h,
-                         img->Blocks + (size_t)(y / 4) * row + (size_t)(x / 4) * bytes, row);
+   /* each slice of a 3D region an image of its own */
+   for (int k = z; k < z + d; k++) {
+      const uint8_t *data = img->Data + 4 * texels * (size_t)k;
+      for (int j = 0; j < h; j++)
+         memcpy(tmp + 4 * (size_t)j * (size_t)w,
+                data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x), 4 * (size_t)w);
+      fgl_s3tc_encode_image(cf, tmp, w, h,
+                            img->Blocks + (size_t)k * slice_blocks_bytes(img) +
+                               (size_t)(y / 4) * row + (size_t)(x / 4) * bytes,
+                            row);
+   }
    fgl_free(tmp);
-   fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+   decode_slices(img, z, d);
 }
 
 /* [S: teximage.c:error_check_subtexture_dimensions] a region of an S3TC
@@ -829,7 +857,11 @@ static bool block_alignment_error(struct fgl_context *ctx, const struct fgl_text
 static void readback_texels(const struct fgl_texture_image *img, uint8_t *out)
 {
    if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT)
-      fgl_latc_decode_exact(img->CompressedFormat, img->Blocks, img->Width, img->Height, out);
+      for (int k = 0; k < img->Depth; k++)
+         fgl_latc_decode_exact(img->CompressedFormat,
+                               img->Blocks + (size_t)k * slice_blocks_bytes(img), img->Width,
+                               img->Height,
+                               out + 4 * (size_t)k * (size_t)img->Width * (size_t)img->Height);
    else
       memcpy(out, img->Data,
              (size_t)img->Width * (size_t)img->Height * (size_t)img->Depth * 4);
@@ -876,7 +908,7 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
       }
       /* the chain goes on from the uncompressed level */
       memcpy(src, img->Data, (size_t)w * (size_t)h * 4);
-      compress_region(ctx, img, 0, 0, w, h);
+      compress_region(ctx, img, 0, 0, 0, w, h, 1);
       set_image(t, face, l, img);
       W = w;
       H = h;
@@ -1233,7 +1265,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    /* no data: the storage is left as it was */
    if (cf && pixels)
-      compress_region(ctx, img, 0, 0, width, height);
+      compress_region(ctx, img, 0, 0, 0, width, height, depth);
    set_image(t, target_face(target), level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    check_gen_mipmap(ctx, t, target_face(target), level);
@@ -1361,7 +1393,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
       if (img->CompressedFormat && pixels)
-         compress_region(ctx, img, xoff, yoff, width, height);
+         compress_region(ctx, img, xoff, yoff, zoff, width, height, depth);
       ctx->NewState |= FGL_NEW_TEXTURE;
       check_gen_mipmap(ctx, t, target_face(target), level);
    }
@@ -1460,7 +1492,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
     * copied region through texstore (the encoder); a region the clipping
     * moved off the 4x4 grid is taken from the grid line before it */
    if (img->CompressedFormat)
-      compress_region(ctx, img, xoff & ~3, yoff & ~3, w + (xoff & 3), h + (yoff & 3));
+      compress_region(ctx, img, xoff & ~3, yoff & ~3, zoff, w + (xoff & 3), h + (yoff & 3), 1);
    ctx->NewState |= FGL_NEW_TEXTURE;
 }
 
@@ -1733,7 +1765,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    const size_t slice = (size_t)img->Width * (size_t)img->Height;
    uint8_t *latc2 = NULL;
    if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT) {
-      latc2 = fgl_malloc_gl(ctx, slice * 4);
+      latc2 = fgl_malloc_gl(ctx, slice * (size_t)img->Depth * 4);
       if (!latc2) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
@@ -1751,7 +1783,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
                              max_bits(img->Format) == 16, format, type, dst);
       else
          fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                        img->BaseFormat, latc2 ? latc2 : img->Data + 4 * slice * (size_t)k,
+                        img->BaseFormat, (latc2 ? latc2 : img->Data) + 4 * slice * (size_t)k,
                         format, type, dst);
    }
    fgl_free(latc2);
@@ -1936,7 +1968,7 @@ GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
    case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
    case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
-   /* GL_COMPRESSED_RGB/RGBA of a 1D or 3D image (measured: stored
+   /* GL_COMPRESSED_RGB/RGBA of a 1D image (measured: stored
     * uncompressed, reported as the base format) */
    case GL_COMPRESSED_RGB: return GL_RGB;
    case GL_COMPRESSED_RGBA: return GL_RGBA;
