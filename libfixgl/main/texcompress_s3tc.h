@@ -1,6 +1,7 @@
 /*
- * S3TC (GL_EXT_texture_compression_s3tc) block formats: their sizes and
- * the texels llvmpipe's sampler decodes from them (texcompress_s3tc.c).
+ * S3TC (GL_EXT_texture_compression_s3tc) block formats, and the LATC ones
+ * the oracle stores GL_COMPRESSED_LUMINANCE(_ALPHA) in: their sizes, the
+ * oracle's encoders and the texels llvmpipe decodes (texcompress_s3tc.c).
  * Knows no context; used by main/texcompress.c.
  */
 #ifndef FGL_TEXCOMPRESS_S3TC_H
@@ -40,9 +41,10 @@ void fgl_s3tc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
                            uint8_t *rgba);
 
 /* Compresses the w x h RGBA8 texels `rgba` (row 0 first) into blocks of
- * `format` as the oracle's encoder does (texcompress_s3tc.c "The
- * encoder"): block row k at blocks + k * row_bytes.  For DXT5, byte 1 of
- * a block of one alpha keeps what `blocks` held. */
+ * `format` (S3TC, or LATC from red and alpha) as the oracle's encoders do
+ * (texcompress_s3tc.c "The encoder", "LATC"): block row k at blocks +
+ * k * row_bytes.  For DXT5 and LATC, byte 1 of a channel block of one
+ * value keeps what `blocks` held. */
 void fgl_s3tc_encode_image(GLenum format, const uint8_t *rgba, int w, int h, uint8_t *blocks,
                            size_t row_bytes);
 
