@@ -1339,6 +1339,42 @@ static void latc_more_case(fc_h *h)
     }
 }
 
+/* Cube-map faces of mixed formats (DXT1 blocks, LATC1 from
+ * GL_COMPRESSED_LUMINANCE, then DXT1 again): glGetTexImage of each face.
+ * The oracle reads the faces specified before the last change of format
+ * through Mesa's CPU decoders, the others through the sampler
+ * (ORACLE-NOTES.md "Compressed textures: LATC"); fixgl reads them all as
+ * the sampler decodes them. */
+static void cube_mixed_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    char l[96];
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        if (face == 1) {
+            make_image(0, 8, 8, 80);
+            glTexImage2D(target, 0, GL_COMPRESSED_LUMINANCE, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                         g_img);
+        } else {
+            const int n = make_blocks(DXT1A, 8, 8, 81u + (unsigned)face, 0, 0);
+            glCompressedTexImage2D(target, 0, DXT1A, 8, 8, 0, n, g_blocks);
+        }
+        snprintf(l, sizeof l, "face %d", face);
+        E(h, l);
+    }
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        snprintf(l, sizeof l, "face %d", face);
+        level_queries(h, l, target, 0);
+        memset(g_out, 0xcd, 8 * 8 * 4);
+        glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, l, g_out, 8 * 8 * 4);
+    }
+}
+
 /* S3TC images on cube-map faces: glCompressedTexImage2D, glTexImage2D
  * (encoded), sub-images, glGetCompressedTexImage of a face. */
 static void cube_case(fc_h *h)
@@ -1597,5 +1633,7 @@ const fc_case fc_cases_compressed[] = {
     FC_CASE_RGBA("compressed/encode_errors", 16, 16, 0, "gl13 compressed errors", encode_errors_case),
     FC_CASE_RGBA("compressed/cube_faces_blocks", 48, 16, 1, "gl13 compressed cubemap", cube_case),
     FC_CASE_RGBA("compressed/cube_faces_encoded", 48, 16, 1, "gl13 compressed cubemap", cube_case),
+    FC_CASE_RGBA("compressed/cube_faces_mixed_formats", 16, 16, 0, "gl13 compressed cubemap latc",
+                 cube_mixed_case),
     { 0 },
 };
