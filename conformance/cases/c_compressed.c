@@ -1304,6 +1304,21 @@ static void latc_more_case(fc_h *h)
         glEnd();
         glDisable(GL_TEXTURE_3D);
         fc_capture(h);
+        if (strstr(c->name, "mipmap")) {
+            /* GL_GENERATE_MIPMAP of a 3D image: 8x8x4, then 4x4x2 ... */
+            make_image(1, 8, 32, 17);
+            glTexParameteri(GL_TEXTURE_3D, GL_GENERATE_MIPMAP, GL_TRUE);
+            glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 1);
+            glTexImage3D(GL_TEXTURE_3D, 0, (GLint)g, 8, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+            E(h, "3D with GL_GENERATE_MIPMAP");
+            level_queries(h, "3D level 1", GL_TEXTURE_3D, 1);
+            memset(g_out, 0xcd, sizeof g_out);
+            glGetCompressedTexImage(GL_TEXTURE_3D, 1, g_out);
+            E(h, "glGetCompressedTexImage of level 1");
+            fc_blob(h, "level 1 blocks", g_out, (size_t)n / 6);
+            glGetTexImage(GL_TEXTURE_3D, 1, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+            fc_blob(h, "level 1 texels", g_out, 4 * 4 * 2 * 4);
+        }
     } else {
         /* queries: 2D, 1D (stored uncompressed), a cube face */
         make_image(0, 8, 8, 2);
@@ -1612,6 +1627,9 @@ const fc_case fc_cases_compressed[] = {
     LC("compressed/latc2_3d_slices", 40, 40, 1, latc_more_case),
     LC("compressed/latc1_3d_generic_rgb_slices", 40, 40, 1, latc_more_case),
     LC("compressed/latc1_3d_generic_rgba_ramp_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_mipmap", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_3d_mipmap", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgba_mipmap", 40, 40, 1, latc_more_case),
     LC("compressed/latc1_mipmap_ll", 40, 40, 2, encode_mipmap_case),
     LC("compressed/latc1_mipmap_nn_npot", 40, 40, 2, encode_mipmap_case),
     LC("compressed/latc1_mipmap_nl_ramp", 40, 40, 2, encode_mipmap_case),

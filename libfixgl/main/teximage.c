@@ -868,24 +868,24 @@ static void readback_texels(const struct fgl_texture_image *img, uint8_t *out)
 }
 
 /* [S: mipmap.c:generate_mipmap_compressed, make_2d_mipmap, do_row] The
- * levels below `level` of an S3TC image: the base's decoded texels, each
- * level the truncated mean of 2x2 texels of the one above (a 1-texel side
- * doubles its texel; an odd side drops its last texel), kept uncompressed
- * along the chain, each compressed into its level. */
+ * levels below `level` of a compressed image: the base's decoded texels,
+ * each level the truncated mean of 2x2 texels of the one above (a 1-texel
+ * side doubles its texel; an odd side drops its last texel; 3D below),
+ * kept uncompressed along the chain, each compressed into its level. */
 static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_object *t,
                                unsigned face, GLint level, GLint last)
 {
    const struct fgl_texture_image *base = fgl_tex_face_image(t, face, level);
-   int W = base->Width, H = base->Height;
-   uint8_t *src = fgl_malloc_gl(ctx, (size_t)W * (size_t)H * 4);
+   int W = base->Width, H = base->Height, D = base->Depth;
+   uint8_t *src = fgl_malloc_gl(ctx, (size_t)W * (size_t)H * (size_t)D * 4);
    if (!src) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
    readback_texels(base, src);
    for (GLint l = level + 1; l <= last; l++) {
-      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
-      struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)base->InternalFormat,
+      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1, d = D > 1 ? D >> 1 : 1;
+      struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)base->InternalFormat,
                                                 base->BaseFormat, base->Format);
       if (!img || !alloc_texels(img) ||
           !alloc_blocks(img, base->CompressedFormat, fgl_tex_face_image(t, face, l))) {
@@ -894,24 +894,44 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
-      const int row_step = H > h ? 1 : 0, col_step = W > w ? 1 : 0;
-      for (int j = 0; j < h; j++) {
-         const uint8_t *ra = src + 4 * (size_t)(j * (row_step + 1)) * (size_t)W;
-         const uint8_t *rb = ra + 4 * (size_t)row_step * (size_t)W;
-         for (int i = 0; i < w; i++) {
-            const int x0 = i * (col_step + 1), x1 = x0 + col_step;
-            for (int n = 0; n < 4; n++)
-               img->Data[4 * ((size_t)j * (size_t)w + (size_t)i) + (size_t)n] =
-                  (uint8_t)((ra[4 * x0 + n] + ra[4 * x1 + n] + rb[4 * x0 + n] +
-                             rb[4 * x1 + n]) / 4);
+      /* [S: mipmap.c:make_2d_mipmap, make_3d_mipmap, do_row_3D] 2D: the
+       * truncated mean of 2x2 texels; a 3D texture: the rounded mean
+       * (sum + 4) >> 3 of 2x2x2 texels, a side that does not shrink
+       * counting its texels twice */
+      const bool is_3d = t->Target == GL_TEXTURE_3D;
+      const int row_step = H > h ? 1 : 0, col_step = W > w ? 1 : 0, slice_step = D > d ? 1 : 0;
+      const size_t slice = (size_t)W * (size_t)H;
+      for (int k = 0; k < d; k++) {
+         const uint8_t *sa = src + 4 * slice * (size_t)(k * (slice_step + 1));
+         const uint8_t *sb = sa + 4 * slice * (size_t)slice_step;
+         for (int j = 0; j < h; j++) {
+            const size_t ya = (size_t)(j * (row_step + 1)) * (size_t)W,
+                         yb = ya + (size_t)row_step * (size_t)W;
+            for (int i = 0; i < w; i++) {
+               const size_t x0 = (size_t)(i * (col_step + 1)), x1 = x0 + (size_t)col_step;
+               uint8_t *o =
+                  img->Data + 4 * (((size_t)k * (size_t)h + (size_t)j) * (size_t)w + (size_t)i);
+               for (int n = 0; n < 4; n++) {
+                  const unsigned q = sa[4 * (ya + x0) + n] + sa[4 * (ya + x1) + n] +
+                                     sa[4 * (yb + x0) + n] + sa[4 * (yb + x1) + n];
+                  if (!is_3d) {
+                     o[n] = (uint8_t)(q / 4);
+                     continue;
+                  }
+                  const unsigned r = sb[4 * (ya + x0) + n] + sb[4 * (ya + x1) + n] +
+                                     sb[4 * (yb + x0) + n] + sb[4 * (yb + x1) + n];
+                  o[n] = (uint8_t)((q + r + 4) >> 3);
+               }
+            }
          }
       }
       /* the chain goes on from the uncompressed level */
-      memcpy(src, img->Data, (size_t)w * (size_t)h * 4);
-      compress_region(ctx, img, 0, 0, 0, w, h, 1);
+      memcpy(src, img->Data, (size_t)w * (size_t)h * (size_t)d * 4);
+      compress_region(ctx, img, 0, 0, 0, w, h, d);
       set_image(t, face, l, img);
       W = w;
       H = h;
+      D = d;
    }
    fgl_free(src);
    ctx->NewState |= FGL_NEW_TEXTURE;
