@@ -749,7 +749,8 @@ static void mixed_levels_case(fc_h *h)
 /* Client images for the encoder cases (RGBA bytes, tightly packed): kind
  * 0 random, 1 gradients (alpha down the rows), 2 random colours with an
  * alpha edge, 3 alpha in three levels over colour bands, 4 a few flat
- * colours (blocks of one or two colours), 5 greys close together. */
+ * colours (blocks of one or two colours), 5 greys close together, 6 one
+ * value per 4x4 block. */
 static unsigned char g_img[64 * 64 * 4];
 
 static void make_image(int kind, int w, int h, unsigned seed)
@@ -768,6 +769,9 @@ static void make_image(int kind, int w, int h, unsigned seed)
                 case 2: v = c == 3 ? (x < w / 2 ? 0 : 255) : (int)(rng() & 255); break;
                 case 3: v = c == 3 ? (int)(rng() % 3) * 127 : (y * 30 + c * 50) & 255; break;
                 case 4: v = ((x / 3 + y / 2) & 1) ? 40 + c * 60 : 250 - c * 30; break;
+                case 6:   /* one value per 4x4 block */
+                    v = c == 3 ? 200 - 90 * ((x / 4 + y / 4) & 1) : 60 + 70 * ((x / 4 + y / 4) & 1);
+                    break;
                 default: v = 120 + (int)(rng() % 6) + (c == 1 ? 2 : 0); break;
                 }
                 g_img[4 * (y * w + x) + c] = (unsigned char)v;
@@ -781,6 +785,13 @@ static void make_image(int kind, int w, int h, unsigned seed)
  * shorter than 4 hold garbage there, so the cases compare their texels,
  * not their bytes; a DXT5 image narrower than 4 and 2 or more high can
  * get a garbage code in a texel of the image, so no case makes one. */
+#define LATC1 GL_COMPRESSED_LUMINANCE_LATC1_EXT
+#define LATC2 GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT
+/* (LATC, the oracle's storage of GL_COMPRESSED_LUMINANCE(_ALPHA): its
+ * encoder's code arrays are uninitialised likewise, so an image narrower
+ * than 4 and 2 or more high can sample garbage unless each of its blocks
+ * holds one value (written without codes); its bytes are compared for
+ * images of at least 4x4.) */
 static bool bytes_defined(GLenum f, int w, int h)
 {
     return f == DXT1 || f == DXT1A || f == GL_COMPRESSED_RGB || (w >= 4 && h >= 4);
@@ -823,6 +834,31 @@ static const struct ep encode_params[] = {
     { "compressed/encode_generic_rgb", GL_COMPRESSED_RGB, 16, 12, 1, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
     { "compressed/encode_generic_rgba", GL_COMPRESSED_RGBA, 16, 12, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
     { "compressed/encode_generic_rgba_npot", GL_COMPRESSED_RGBA, 10, 6, 3, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+#define CL GL_COMPRESSED_LUMINANCE
+#define CLA GL_COMPRESSED_LUMINANCE_ALPHA
+    { "compressed/latc1_noise_nearest", CL, 16, 16, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/latc1_ramp_linear", CL, 16, 16, 1, GL_LINEAR, GL_LINEAR, GL_MODULATE, false },
+    { "compressed/latc1_flat_blocks", CL, 12, 8, 4, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/latc1_close_values", CL, 8, 8, 5, GL_LINEAR, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/latc1_levels", CL, 8, 12, 3, GL_NEAREST, GL_LINEAR, GL_MODULATE, false },
+    { "compressed/latc1_npot_13x6", CL, 13, 6, 0, GL_LINEAR, GL_LINEAR, GL_REPLACE, false },
+    { "compressed/latc1_npot_33x17_noise", CL, 33, 17, 0, GL_LINEAR, GL_NEAREST, GL_MODULATE, false },
+    { "compressed/latc1_1x1", CL, 1, 1, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/latc1_5x3_ramp", CL, 5, 3, 1, GL_LINEAR, GL_LINEAR, GL_REPLACE, false },
+    { "compressed/latc1_3x5_flat", CL, 3, 5, 6, GL_NEAREST, GL_NEAREST, GL_REPLACE, false },
+    { "compressed/latc1_2x2_flat_linear", CL, 2, 2, 6, GL_LINEAR, GL_LINEAR, GL_MODULATE, false },
+    { "compressed/latc2_noise_nearest", CLA, 16, 16, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/latc2_ramp_linear", CLA, 16, 16, 1, GL_LINEAR, GL_LINEAR, GL_MODULATE, true },
+    { "compressed/latc2_alpha_edge", CLA, 8, 8, 2, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/latc2_alpha_levels_npot", CLA, 7, 9, 3, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/latc2_flat_blocks", CLA, 12, 8, 4, GL_LINEAR, GL_LINEAR, GL_REPLACE, true },
+    { "compressed/latc2_close_values", CLA, 8, 8, 5, GL_NEAREST, GL_LINEAR, GL_MODULATE, true },
+    { "compressed/latc2_npot_13x6", CLA, 13, 6, 0, GL_LINEAR, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/latc2_1x1", CLA, 1, 1, 0, GL_NEAREST, GL_NEAREST, GL_REPLACE, true },
+    { "compressed/latc2_5x1", CLA, 5, 1, 0, GL_LINEAR, GL_LINEAR, GL_REPLACE, true },
+    { "compressed/latc2_3x5_flat", CLA, 3, 5, 6, GL_NEAREST, GL_NEAREST, GL_MODULATE, true },
+#undef CL
+#undef CLA
 };
 
 static const struct ep *find_encode(const char *name)
@@ -842,7 +878,8 @@ static void read_encoded(fc_h *h, const char *label, GLenum internal, int level,
     glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
     snprintf(l, sizeof l, "%s texels", label);
     get_rgba(h, l, level, w, hh);
-    if (bytes_defined(internal, w, hh) && (fmt == DXT1 || fmt == DXT1A || fmt == DXT3 || fmt == DXT5)) {
+    if (bytes_defined(internal, w, hh) && (fmt == DXT1 || fmt == DXT1A || fmt == DXT3 ||
+                                           fmt == DXT5 || fmt == LATC1 || fmt == LATC2)) {
         snprintf(l, sizeof l, "%s blocks", label);
         get_blocks(h, l, level, image_size((GLenum)fmt, w, hh));
     }
@@ -1067,16 +1104,25 @@ static void encode_mipmap_case(fc_h *h)
         f = DXT5;
     else if (strstr(name, "generic"))
         f = GL_COMPRESSED_RGBA;
+    else if (strstr(name, "latc1"))
+        f = GL_COMPRESSED_LUMINANCE;
+    else if (strstr(name, "latc2"))
+        f = GL_COMPRESSED_LUMINANCE_ALPHA;
     if (strstr(name, "npot"))
         w = 24, hh = 10;
     GLuint tex;
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
-    filters(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    filters(strstr(name, "_nn")   ? GL_NEAREST_MIPMAP_NEAREST
+            : strstr(name, "_nl") ? GL_NEAREST_MIPMAP_LINEAR
+            : strstr(name, "_ln") ? GL_LINEAR_MIPMAP_NEAREST
+                                  : GL_LINEAR_MIPMAP_LINEAR,
+            strstr(name, "_nn") ? GL_NEAREST : GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
     /* DXT5 levels under 4 wide and 2 or more high may hold the oracle's
      * garbage codes (bytes_defined): the 32x32 chains stop at 4x4 */
-    const bool dxt5 = f == DXT5 || f == GL_COMPRESSED_RGBA;
+    const bool dxt5 = f == DXT5 || f == GL_COMPRESSED_RGBA || f == GL_COMPRESSED_LUMINANCE ||
+                      f == GL_COMPRESSED_LUMINANCE_ALPHA;
     const int max_level = dxt5 && w == 32 ? 3 : 1000;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max_level);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -1084,7 +1130,7 @@ static void encode_mipmap_case(fc_h *h)
         const int n = make_blocks(f, w, hh, 21, 0, 0);
         glCompressedTexImage2D(GL_TEXTURE_2D, 0, f, w, hh, 0, n, g_blocks);
     } else {
-        make_image(f == DXT5 || f == GL_COMPRESSED_RGBA ? 1 : 0, w, hh, 9);
+        make_image(f == DXT5 || f == GL_COMPRESSED_RGBA || strstr(name, "ramp") ? 1 : 0, w, hh, 9);
         glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, w, hh, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
     }
     E(h, "base");
@@ -1107,6 +1153,241 @@ static void encode_mipmap_case(fc_h *h)
     read_encoded(h, "level 1 after the sub-image", f, 1, strstr(name, "npot") ? 12 : 16,
                  strstr(name, "npot") ? 5 : 16);
     scene_floor(h, 3.0f);
+}
+
+/* GL_COMPRESSED_LUMINANCE(_ALPHA), stored as LATC1/LATC2: other client
+ * formats and types, pixel transfer, sub-images (on block boundaries, to
+ * the edge, errors off the grid), one image over another of the same size
+ * (a block of one value keeps its second byte), copies from the colour
+ * buffer, the queries of 1D, 2D and cube-face images, 3D images. */
+static void latc_more_case(fc_h *h)
+{
+    const fc_case *c = fc_this_case(h);
+    const bool two = strstr(c->name, "latc2") != NULL;
+    const GLenum f = two ? GL_COMPRESSED_LUMINANCE_ALPHA : GL_COMPRESSED_LUMINANCE;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    filters(GL_NEAREST, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    char l[96];
+    if (strstr(c->name, "sources")) {
+        make_image(0, 16, 16, 23);
+        static const GLenum src_fmt[6] = { GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_BGRA,
+                                           GL_ALPHA, GL_RGBA };
+        for (int k = 0; k < 6; k++) {
+            glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, src_fmt[k], GL_UNSIGNED_BYTE, g_img);
+            snprintf(l, sizeof l, "from 0x%x", src_fmt[k]);
+            fc_error(h, l);
+            read_encoded(h, l, f, 0, 8, 8);
+        }
+        static float fsrc[8 * 8 * 4];
+        for (int i = 0; i < 8 * 8 * 4; i++)
+            fsrc[i] = (float)g_img[i] / 255.0f + (float)((int)(rng() % 9) - 4) / 3000.0f;
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_FLOAT, fsrc);
+        fc_error(h, "from floats");
+        read_encoded(h, "from floats", f, 0, 8, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, g_img);
+        fc_error(h, "from 4_4_4_4");
+        read_encoded(h, "from 4_4_4_4", f, 0, 8, 8);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 16);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 5);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 9, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        fc_error(h, "unpack skips");
+        read_encoded(h, "unpack skips", f, 0, 9, 8);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+        glPixelTransferf(GL_RED_SCALE, 0.5f);
+        glPixelTransferf(GL_ALPHA_BIAS, 0.25f);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        fc_error(h, "scale and bias");
+        read_encoded(h, "scale and bias", f, 0, 8, 8);
+        glPixelTransferf(GL_RED_SCALE, 1);
+        glPixelTransferf(GL_ALPHA_BIAS, 0);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        fc_error(h, "without data");
+        read_encoded(h, "without data", f, 0, 8, 8);
+        scene_quad(h, 0, 1);
+    } else if (strstr(c->name, "sub")) {
+        make_image(1, 13, 10, 5);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 13, 10, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        make_image(0, 9, 6, 40);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "8x4 at (4, 4)");
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 8, 4, 5, 6, GL_RGBA, GL_UNSIGNED_BYTE, g_img + 16);
+        E(h, "5x6 at (8, 4) to both edges");
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "x off the grid");
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 4, 4, 3, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "height not a block, not at the edge");
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 12, 8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "beyond the image");
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 4, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "empty");
+        read_encoded(h, "after the sub-images", f, 0, 13, 10);
+        scene_quad(h, 0, 1);
+        /* the same size again: the storage stays */
+        make_image(0, 8, 8, 3);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        make_image(6, 8, 8, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        read_encoded(h, "one-value blocks over an image of the same size", f, 0, 8, 8);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 12, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        read_encoded(h, "another size", f, 0, 12, 8);
+    } else if (strstr(c->name, "copies")) {
+        fc_pixel_ortho(h);
+        fcu_clear(0.2f, 0.4f, 0.6f, 0.8f, 1);
+        glBegin(GL_TRIANGLES);
+        glColor4f(1, 0, 0, 0.1f); glVertex2f(1, 1);
+        glColor4f(0, 1, 0, 0.5f); glVertex2f((float)c->width - 2, 4);
+        glColor4f(0.6f, 0, 1, 1); glVertex2f(12, (float)c->height - 3);
+        glEnd();
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, f, 2, 3, 20, 18, 0);
+        E(h, "copy");
+        level_queries(h, "copy", GL_TEXTURE_2D, 0);
+        read_encoded(h, "copy", f, 0, 20, 18);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, f, c->width - 9, 5, 16, 12, 0);
+        E(h, "copy partly outside");
+        read_encoded(h, "copy partly outside", f, 0, 16, 12);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, f, 0, 0, 16, 16, 0);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 4, 8, 10, 3, 8, 8);
+        E(h, "sub-copy 8x8 at (4, 8)");
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 1, 1, 4, 4);
+        E(h, "sub-copy off the grid");
+        read_encoded(h, "after the sub-copies", f, 0, 16, 16);
+        glEnable(GL_TEXTURE_2D);
+        scene_quad(h, 0, 1);
+    } else if (strstr(c->name, "3d")) {
+        /* 3D images of the generic formats: the oracle compresses them
+         * too, each slice an image of its own to the encoder */
+        const GLenum g = strstr(c->name, "generic_rgba") ? GL_COMPRESSED_RGBA
+                         : strstr(c->name, "generic_rgb") ? GL_COMPRESSED_RGB
+                                                          : f;
+        const int n = g == GL_COMPRESSED_RGBA || g == GL_COMPRESSED_LUMINANCE_ALPHA ? 192 : 96;
+        make_image(strstr(c->name, "ramp") ? 1 : 0, 8, 24, 7);
+        GLuint t3;
+        glGenTextures(1, &t3);
+        glBindTexture(GL_TEXTURE_3D, t3);
+        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexImage3D(GL_TEXTURE_3D, 0, (GLint)g, 8, 8, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "3D");
+        level_queries(h, "3D", GL_TEXTURE_3D, 0);
+        memset(g_out, 0xcd, sizeof g_out);
+        glGetCompressedTexImage(GL_TEXTURE_3D, 0, g_out);
+        E(h, "glGetCompressedTexImage of the 3D image");
+        fc_blob(h, "3D blocks", g_out, (size_t)n);
+        glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, "3D texels", g_out, 8 * 8 * 3 * 4);
+        /* a sub-image across slices 1 and 2, on the block grid */
+        make_image(0, 4, 8, 8);
+        glTexSubImage3D(GL_TEXTURE_3D, 0, 4, 0, 1, 4, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "glTexSubImage3D");
+        memset(g_out, 0xcd, sizeof g_out);
+        glGetCompressedTexImage(GL_TEXTURE_3D, 0, g_out);
+        fc_blob(h, "3D blocks after the sub-image", g_out, (size_t)n);
+        glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, "3D texels after the sub-image", g_out, 8 * 8 * 3 * 4);
+        /* drawn: r across the slices */
+        fc_pixel_ortho(h);
+        fcu_clear(0.2f, 0.1f, 0.3f, 1, 1);
+        glEnable(GL_TEXTURE_3D);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        glBegin(GL_QUADS);
+        glTexCoord3f(0, 0, 0); glVertex2f(1, 1);
+        glTexCoord3f(1.2f, 0, 0.3f); glVertex2f((float)c->width - 1, 1);
+        glTexCoord3f(1.2f, 1.1f, 1); glVertex2f((float)c->width - 1, (float)c->height - 1);
+        glTexCoord3f(0, 1.1f, 0.7f); glVertex2f(1, (float)c->height - 1);
+        glEnd();
+        glDisable(GL_TEXTURE_3D);
+        fc_capture(h);
+        if (strstr(c->name, "mipmap")) {
+            /* GL_GENERATE_MIPMAP of a 3D image: 8x8x4, then 4x4x2 ... */
+            make_image(1, 8, 32, 17);
+            glTexParameteri(GL_TEXTURE_3D, GL_GENERATE_MIPMAP, GL_TRUE);
+            glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 1);
+            glTexImage3D(GL_TEXTURE_3D, 0, (GLint)g, 8, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+            E(h, "3D with GL_GENERATE_MIPMAP");
+            level_queries(h, "3D level 1", GL_TEXTURE_3D, 1);
+            memset(g_out, 0xcd, sizeof g_out);
+            glGetCompressedTexImage(GL_TEXTURE_3D, 1, g_out);
+            E(h, "glGetCompressedTexImage of level 1");
+            fc_blob(h, "level 1 blocks", g_out, (size_t)n / 6);
+            glGetTexImage(GL_TEXTURE_3D, 1, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+            fc_blob(h, "level 1 texels", g_out, 4 * 4 * 2 * 4);
+        }
+    } else {
+        /* queries: 2D, 1D (stored uncompressed), a cube face */
+        make_image(0, 8, 8, 2);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        level_queries(h, "2D", GL_TEXTURE_2D, 0);
+        glTexImage2D(GL_PROXY_TEXTURE_2D, 0, (GLint)f, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        level_queries(h, "2D proxy", GL_PROXY_TEXTURE_2D, 0);
+        GLuint t1;
+        glGenTextures(1, &t1);
+        glBindTexture(GL_TEXTURE_1D, t1);
+        glTexImage1D(GL_TEXTURE_1D, 0, (GLint)f, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        E(h, "1D");
+        level_queries(h, "1D", GL_TEXTURE_1D, 0);
+        glGetCompressedTexImage(GL_TEXTURE_1D, 0, g_out);
+        E(h, "glGetCompressedTexImage of the 1D image");
+        GLuint tc;
+        glGenTextures(1, &tc);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, tc);
+        for (int face = 0; face < 6; face++) {
+            make_image(face & 1 ? 1 : 0, 8, 8, 50u + (unsigned)face);
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, (GLint)f, 8, 8, 0,
+                         GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+        }
+        E(h, "cube faces");
+        level_queries(h, "cube face -Y", GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0);
+        memset(g_out, 0xcd, sizeof g_out);
+        glGetCompressedTexImage(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, g_out);
+        E(h, "glGetCompressedTexImage of a face");
+        fc_blob(h, "face -Y blocks", g_out, two ? 64 : 32);
+        glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_Z, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, g_out);
+        E(h, "glGetTexImage of a face");
+        fc_blob(h, "face +Z texels", g_out, 8 * 8 * 2);
+    }
+}
+
+/* Cube-map faces of mixed formats (DXT1 blocks, LATC1 from
+ * GL_COMPRESSED_LUMINANCE, then DXT1 again): glGetTexImage of each face.
+ * The oracle reads the faces specified before the last change of format
+ * through Mesa's CPU decoders, the others through the sampler
+ * (ORACLE-NOTES.md "Compressed textures: LATC"); fixgl reads them all as
+ * the sampler decodes them. */
+static void cube_mixed_case(fc_h *h)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    char l[96];
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        if (face == 1) {
+            make_image(0, 8, 8, 80);
+            glTexImage2D(target, 0, GL_COMPRESSED_LUMINANCE, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                         g_img);
+        } else {
+            const int n = make_blocks(DXT1A, 8, 8, 81u + (unsigned)face, 0, 0);
+            glCompressedTexImage2D(target, 0, DXT1A, 8, 8, 0, n, g_blocks);
+        }
+        snprintf(l, sizeof l, "face %d", face);
+        E(h, l);
+    }
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        snprintf(l, sizeof l, "face %d", face);
+        level_queries(h, l, target, 0);
+        memset(g_out, 0xcd, 8 * 8 * 4);
+        glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, l, g_out, 8 * 8 * 4);
+    }
 }
 
 /* S3TC images on cube-map faces: glCompressedTexImage2D, glTexImage2D
@@ -1309,7 +1590,53 @@ const fc_case fc_cases_compressed[] = {
     EC("compressed/encode_generic_rgb"),
     EC("compressed/encode_generic_rgba"),
     EC("compressed/encode_generic_rgba_npot"),
+#define LE(n) FC_CASE_RGBA(n, 40, 40, 1, "gl13 compressed latc", encode_case)
+    LE("compressed/latc1_noise_nearest"),
+    LE("compressed/latc1_ramp_linear"),
+    LE("compressed/latc1_flat_blocks"),
+    LE("compressed/latc1_close_values"),
+    LE("compressed/latc1_levels"),
+    LE("compressed/latc1_npot_13x6"),
+    LE("compressed/latc1_npot_33x17_noise"),
+    LE("compressed/latc1_1x1"),
+    LE("compressed/latc1_5x3_ramp"),
+    LE("compressed/latc1_3x5_flat"),
+    LE("compressed/latc1_2x2_flat_linear"),
+    LE("compressed/latc2_noise_nearest"),
+    LE("compressed/latc2_ramp_linear"),
+    LE("compressed/latc2_alpha_edge"),
+    LE("compressed/latc2_alpha_levels_npot"),
+    LE("compressed/latc2_flat_blocks"),
+    LE("compressed/latc2_close_values"),
+    LE("compressed/latc2_npot_13x6"),
+    LE("compressed/latc2_1x1"),
+    LE("compressed/latc2_5x1"),
+    LE("compressed/latc2_3x5_flat"),
 #undef EC
+#undef LE
+#define LC(n, w, hh, fr, f) FC_CASE_RGBA(n, w, hh, fr, "gl13 compressed latc", f)
+    LC("compressed/latc1_sources", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_sources", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_sub_images", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_sub_images", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_copies", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_copies", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_queries_targets", 16, 16, 0, latc_more_case),
+    LC("compressed/latc2_queries_targets", 16, 16, 0, latc_more_case),
+    LC("compressed/latc1_3d_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_3d_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgb_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgba_ramp_slices", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_mipmap", 40, 40, 1, latc_more_case),
+    LC("compressed/latc2_3d_mipmap", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_3d_generic_rgba_mipmap", 40, 40, 1, latc_more_case),
+    LC("compressed/latc1_mipmap_ll", 40, 40, 2, encode_mipmap_case),
+    LC("compressed/latc1_mipmap_nn_npot", 40, 40, 2, encode_mipmap_case),
+    LC("compressed/latc1_mipmap_nl_ramp", 40, 40, 2, encode_mipmap_case),
+    LC("compressed/latc2_mipmap_ln", 40, 40, 2, encode_mipmap_case),
+    LC("compressed/latc2_mipmap_ll_npot", 40, 40, 2, encode_mipmap_case),
+    LC("compressed/latc2_mipmap_nn_ramp", 40, 40, 2, encode_mipmap_case),
+#undef LC
     FC_CASE_RGBA("compressed/encode_sources", 16, 16, 0, "gl13 compressed", encode_sources_case),
     FC_CASE_RGBA("compressed/encode_sub_images", 40, 40, 2, "gl13 compressed", encode_sub_case),
     FC_CASE_RGBA("compressed/encode_copies", 40, 40, 1, "gl13 compressed", encode_copy_case),
@@ -1324,5 +1651,7 @@ const fc_case fc_cases_compressed[] = {
     FC_CASE_RGBA("compressed/encode_errors", 16, 16, 0, "gl13 compressed errors", encode_errors_case),
     FC_CASE_RGBA("compressed/cube_faces_blocks", 48, 16, 1, "gl13 compressed cubemap", cube_case),
     FC_CASE_RGBA("compressed/cube_faces_encoded", 48, 16, 1, "gl13 compressed cubemap", cube_case),
+    FC_CASE_RGBA("compressed/cube_faces_mixed_formats", 16, 16, 0, "gl13 compressed cubemap latc",
+                 cube_mixed_case),
     { 0 },
 };

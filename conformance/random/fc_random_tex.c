@@ -13,7 +13,8 @@
  *     or GL_NORMAL_MAP texgen on S, T and R; from the 3D stream, 2D textures
  *     of random S3TC blocks, DXT1 RGB/RGBA, DXT3 or DXT5, through
  *     glCompressedTexImage2D, or, in half of them, uncompressed levels
- *     the oracle's encoder compresses, through glTexImage2D)
+ *     the oracle's encoder compresses, through glTexImage2D; a third of
+ *     those GL_COMPRESSED_LUMINANCE(_ALPHA), stored as LATC1/LATC2)
  *     ALPHA, INTENSITY, their sized 8-bit forms, 1-4 components) from
  *     unsigned-byte RGBA, RGB, LUMINANCE, LUMINANCE_ALPHA or ALPHA data
  *     under a random GL_UNPACK_ALIGNMENT; texels random, a checker, a
@@ -266,8 +267,15 @@ static void upload_level(fc_rng *r, const struct profile *p, int level, int w, i
     /* encoded levels but DXT5 ones under 4 texels wide and 2 or more
      * high: the oracle's encoder reads uninitialised memory for them
      * (ORACLE-NOTES.md "Compressed textures: the encoder") */
+    const int latc = p->dxt == GL_COMPRESSED_LUMINANCE_LATC1_EXT ||
+                     p->dxt == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
     const int encode = p->dxt && p->dxt_encode &&
-                       !(p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT && w < 4 && h0 >= 2);
+                       (latc || !(p->dxt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT && w < 4 && h0 >= 2));
+    /* LATC levels of that shape: one value (blocks of one value are
+     * written without the uninitialised codes; ORACLE-NOTES.md
+     * "Compressed textures: LATC") */
+    if (latc && w < 4 && h0 >= 2)
+        pattern = 3;
     if (p->dxt && !encode) {
         /* random blocks (pattern 3: one block repeated) */
         const int bb = p->dxt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ||
@@ -732,6 +740,16 @@ static void tex_scene(fc_h *h)
             p.dxt_internal = GL_COMPRESSED_RGB;
         if (generic && p.dxt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
             p.dxt_internal = GL_COMPRESSED_RGBA;
+        /* of the encoded ones, about a third GL_COMPRESSED_LUMINANCE(_ALPHA),
+         * which the oracle stores as LATC1/LATC2, from a stream of their
+         * own (p.dxt only names the stored format: levels are always
+         * given uncompressed) */
+        fc_rng kl = fc_rng_make(seed, index % FC_TEX_PROFILES, 24);
+        if (p.dxt && p.dxt_encode && fc_rng_chance(&kl, 35)) {
+            const int two = fc_rng_chance(&kl, 50);
+            p.dxt = two ? GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT : GL_COMPRESSED_LUMINANCE_LATC1_EXT;
+            p.dxt_internal = two ? GL_COMPRESSED_LUMINANCE_ALPHA : GL_COMPRESSED_LUMINANCE;
+        }
         /* cube maps in about one structure of ten, from another stream */
         fc_rng kc = fc_rng_make(seed, index % FC_TEX_PROFILES, 16);
         p.cube = !p.tex1d && !p.tex3d && !p.dxt && fc_rng_chance(&kc, 11);

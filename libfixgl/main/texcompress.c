@@ -30,11 +30,11 @@
 #include "fgl_alloc.h"
 
 /* [S: formats.c:_mesa_format_image_size] the bytes of a w x h x d image
- * of an S3TC format, in the oracle's unsigned arithmetic (a negative size
+ * of an S3TC (or stored LATC) format, in the oracle's unsigned arithmetic (a negative size
  * wraps as it does there) */
 GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d)
 {
-   const unsigned bytes = fgl_s3tc_block_bytes(format, NULL);
+   const unsigned bytes = fgl_stored_block_bytes(format);
    const unsigned wb = ((unsigned)w + 3u) / 4u, hb = ((unsigned)h + 3u) / 4u;
    return (GLint)(wb * hb * (unsigned)d * bytes);
 }

@@ -109,9 +109,16 @@ static void alpha_palette(const uint8_t *b, uint8_t pal[8])
    }
 }
 
+static void latc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
+                              uint8_t *rgba);
+
 void fgl_s3tc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
                            uint8_t *rgba)
 {
+   if (fgl_latc_block_bytes(format)) {
+      latc_decode_image(format, blocks, w, h, rgba);
+      return;
+   }
    const unsigned bytes = fgl_s3tc_block_bytes(format, NULL);
    const bool dxt1 = bytes == 8;
    const bool dxt1_alpha = format == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
@@ -185,7 +192,7 @@ void fgl_s3tc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
  * scratch: a partial block's missing texels keep what the block before it
  * in the same call left there (the oracle's uninitialised local array).
  *
- * DXT5 alpha (encode_dxt5_alpha): a block whose alphas are all 0 or all
+ * DXT5 alpha (encode_alpha_channel): a block whose alphas are all 0 or all
  * 255 is written as that alpha with all codes 0, its second byte left as
  * it was; otherwise the best of up to three codings: 8 alphas between the
  * extremes found (0 and 255 taking part), 6 alphas between the inner
@@ -440,7 +447,7 @@ static void put_alpha_block(uint8_t *out, uint8_t a0, uint8_t a1, const uint8_t 
 /* The six-alpha coding between lo and hi (0 and 255 as codes 6 and 7
  * when `extremes`, else by the cuts at lo/2 and (255 + hi)/2); returns
  * its squared error. */
-static unsigned six_alpha_coding(s3tc_texels px, int nx, int ny, int lo, int hi,
+static unsigned six_alpha_coding(s3tc_texels px, int ch, int nx, int ny, int lo, int hi,
                                  bool exact_extremes, uint8_t codes[16])
 {
    uint8_t cut[5];
@@ -449,7 +456,7 @@ static unsigned six_alpha_coding(s3tc_texels px, int nx, int ny, int lo, int hi,
    unsigned err = 0;
    for (int j = 0; j < ny; j++) {
       for (int i = 0; i < nx; i++) {
-         const int a = px[j][i][3];
+         const int a = px[j][i][ch];
          int code, dist;
          if (exact_extremes ? a == 0 : a <= lo / 2) {
             code = 6;
@@ -489,7 +496,12 @@ struct s3tc_scratch {
    uint8_t codes1[16], codes2[16], codes3[16];
 };
 
-static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int ny)
+/* The DXT5 alpha coding of channel `ch` of the block's texels; `rgtc`:
+ * the RGTC/LATC encoder's variant [S: util/format/texcompress_rgtc_tmp.h:
+ * encode_rgtc_ubyte], which also writes a block of one value other than 0
+ * and 255 as that value with all codes 0 (its second byte unwritten). */
+static void encode_alpha_channel(uint8_t *out, struct s3tc_scratch *s, int ch, bool rgtc,
+                                 int nx, int ny)
 {
    uint8_t(*const px)[4][4] = s->px;
    uint8_t *const codes1 = s->codes1, *const codes2 = s->codes2, *const codes3 = s->codes3;
@@ -497,7 +509,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
    bool has0 = false, has255 = false;
    for (int j = 0; j < ny; j++) {
       for (int i = 0; i < nx; i++) {
-         const int a = px[j][i][3];
+         const int a = px[j][i][ch];
          if (a == 0)
             has0 = true;
          else if (a == 255)
@@ -508,9 +520,10 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
          }
       }
    }
-   if (lo > hi && !(has0 && has255)) {
-      /* all 0 or all 255: codes 0; byte 1 is not written */
-      out[0] = px[0][0][3];
+   if ((lo > hi && !(has0 && has255)) || (rgtc && lo == hi && !has0 && !has255)) {
+      /* all 0 or all 255 (or, for RGTC, all one value): codes 0; byte 1
+       * is not written */
+      out[0] = px[0][0][ch];
       memset(out + 2, 0, 6);
       return;
    }
@@ -522,7 +535,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
    unsigned err1 = 0, err2 = 0xffffffffu, err3 = 0xffffffffu;
    for (int j = 0; j < ny; j++) {
       for (int i = 0; i < nx; i++) {
-         const int a = px[j][i][3];
+         const int a = px[j][i][ch];
          int code, dist;
          if (a > cut[0]) {
             code = 0;
@@ -545,7 +558,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
    }
    int t_lo = 0, t_hi = 0;
    if (err1 >= 32) {
-      err2 = six_alpha_coding(px, nx, ny, lo, hi, true, codes2);
+      err2 = six_alpha_coding(px, ch, nx, ny, lo, hi, true, codes2);
       if (err2 > 96 && err1 > 96) {
          /* coding 3: inner ends away from 0 and 255, moved by the mean
           * error of the alphas between them */
@@ -554,7 +567,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
          const int margin = (hi - lo) / 28;
          for (int j = 0; j < ny; j++) {
             for (int i = 0; i < nx; i++) {
-               const int a = px[j][i][3];
+               const int a = px[j][i][ch];
                if (a > t_hi && a < 255 - margin)
                   t_hi = a;
                if (a < t_lo && a > margin)
@@ -572,7 +585,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
          int n_lo = 0, n_hi = 0;
          for (int j = 0; j < ny; j++) {
             for (int i = 0; i < nx; i++) {
-               const int a = px[j][i][3];
+               const int a = px[j][i][ch];
                if (a <= t_lo / 2 || a > (255 + t_hi) / 2)
                   continue;
                if (a <= c[0]) {
@@ -601,7 +614,7 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
          t_hi = (int16_t)(t_hi + sum_hi / n_hi);
          if (t_hi > 255)
             t_hi = 255;
-         err3 = six_alpha_coding(px, nx, ny, t_lo, t_hi, false, codes3);
+         err3 = six_alpha_coding(px, ch, nx, ny, t_lo, t_hi, false, codes3);
       }
    }
    if (err1 <= err2 && err1 <= err3)
@@ -612,9 +625,16 @@ static void encode_dxt5_alpha(uint8_t *out, struct s3tc_scratch *s, int nx, int 
       put_alpha_block(out, (uint8_t)t_lo, (uint8_t)t_hi, codes3);
 }
 
+static void latc_encode_image(GLenum format, const uint8_t *rgba, int w, int h,
+                              uint8_t *blocks, size_t row_bytes);
+
 void fgl_s3tc_encode_image(GLenum format, const uint8_t *rgba, int w, int h, uint8_t *blocks,
                            size_t row_bytes)
 {
+   if (fgl_latc_block_bytes(format)) {
+      latc_encode_image(format, rgba, w, h, blocks, row_bytes);
+      return;
+   }
    const unsigned bytes = fgl_s3tc_block_bytes(format, NULL);
    /* the scratch lives for the whole image (see DXT3 above) */
    struct s3tc_scratch s;
@@ -633,9 +653,141 @@ void fgl_s3tc_encode_image(GLenum format, const uint8_t *rgba, int w, int h, uin
                   out[j * 2 + i / 2] =
                      (uint8_t)(s.px[j][i][3] >> 4 | (s.px[j][i + 1][3] & 0xf0));
          } else if (format == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT) {
-            encode_dxt5_alpha(out, &s, nx, ny);
+            encode_alpha_channel(out, &s, 3, false, nx, ny);
          }
          encode_colour_block(bytes == 16 ? out + 8 : out, s.px, nx, ny, format);
+      }
+   }
+}
+
+/* ------------------------------------------------------------------ */
+/* LATC: GL_COMPRESSED_LUMINANCE and GL_COMPRESSED_LUMINANCE_ALPHA     */
+/* ------------------------------------------------------------------ */
+
+/*
+ * The oracle stores the generic GL_COMPRESSED_LUMINANCE as LATC1 and
+ * GL_COMPRESSED_LUMINANCE_ALPHA as LATC2 (ORACLE-NOTES.md "Compressed
+ * textures: LATC"; probe p_latc) [S: st_format.c:format_map;
+ * texcompress_rgtc.c:_mesa_texstore_red_rgtc1, _mesa_texstore_rg_rgtc2].
+ * A LATC1 block is one 8-byte DXT5-style alpha block of the luminance, a
+ * LATC2 block one of the luminance then one of the alpha.
+ *  - Encoder: the data first stored as into an L8 / L8A8 image, then each
+ *    block's channel coded by the RGTC encoder, the DXT5 alpha coder of
+ *    libtxc with one more shortcut (encode_alpha_channel, `rgtc`).  The
+ *    encoder's code arrays are uninitialised locals of one stack frame
+ *    that every call of an image (both channels of LATC2 included)
+ *    reuses: the texels outside a partial block keep the codes the call
+ *    before left (fixgl: one scratch per image, zero at its start).
+ *  - Decoder: llvmpipe samples each channel with the DXT5 alpha decoder
+ *    [S: gallivm/lp_bld_format_s3tc.c: latc1_to_rgba_aos,
+ *    latc2_to_rgba_aos, s3tc_dxt5_alpha_channel]: (L, L, L, 1) and
+ *    (L, L, L, A).
+ */
+
+unsigned fgl_latc_block_bytes(GLenum format)
+{
+   switch (format) {
+   case GL_COMPRESSED_LUMINANCE_LATC1_EXT: return 8;
+   case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT: return 16;
+   default: return 0;
+   }
+}
+
+unsigned fgl_stored_block_bytes(GLenum format)
+{
+   const unsigned b = fgl_s3tc_block_bytes(format, NULL);
+   return b ? b : fgl_latc_block_bytes(format);
+}
+
+static void latc_decode_image(GLenum format, const uint8_t *blocks, int w, int h,
+                              uint8_t *rgba)
+{
+   const bool two = format == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+   const unsigned bytes = two ? 16 : 8;
+   const int bw = (w + 3) / 4, bh = (h + 3) / 4;
+   for (int by = 0; by < bh; by++) {
+      for (int bx = 0; bx < bw; bx++) {
+         const uint8_t *b = blocks + ((size_t)by * (size_t)bw + (size_t)bx) * bytes;
+         uint8_t lpal[8], apal[8];
+         uint64_t lcodes = 0, acodes = 0;
+         alpha_palette(b, lpal);
+         for (int k = 0; k < 6; k++)
+            lcodes |= (uint64_t)b[2 + k] << (8 * k);
+         if (two) {
+            alpha_palette(b + 8, apal);
+            for (int k = 0; k < 6; k++)
+               acodes |= (uint64_t)b[10 + k] << (8 * k);
+         }
+         for (int j = 0; j < 4 && by * 4 + j < h; j++) {
+            for (int i = 0; i < 4 && bx * 4 + i < w; i++) {
+               const int t = j * 4 + i;
+               uint8_t *o = rgba + 4 * ((size_t)(by * 4 + j) * (size_t)w + (size_t)(bx * 4 + i));
+               o[0] = o[1] = o[2] = lpal[(lcodes >> (3 * t)) & 7u];
+               o[3] = two ? apal[(acodes >> (3 * t)) & 7u] : 255;
+            }
+         }
+      }
+   }
+}
+
+static void latc_encode_image(GLenum format, const uint8_t *rgba, int w, int h,
+                              uint8_t *blocks, size_t row_bytes)
+{
+   const bool two = format == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+   struct s3tc_scratch s;
+   memset(&s, 0, sizeof(s));
+   for (int y = 0; y < h; y += 4) {
+      const int ny = h - y < 4 ? h - y : 4;
+      uint8_t *out = blocks + (size_t)(y / 4) * row_bytes;
+      for (int x = 0; x < w; x += 4, out += two ? 16 : 8) {
+         const int nx = w - x < 4 ? w - x : 4;
+         for (int j = 0; j < ny; j++)
+            memcpy(s.px[j], rgba + 4 * ((size_t)(y + j) * (size_t)w + (size_t)x),
+                   4 * (size_t)nx);
+         encode_alpha_channel(out, &s, 0, true, nx, ny);
+         if (two)
+            encode_alpha_channel(out + 8, &s, 3, true, nx, ny);
+      }
+   }
+}
+
+/* [S: util/format/texcompress_rgtc_tmp.h: fetch_texel_rgtc] a channel's
+ * value for code `code` of the block's end values a0, a1 in the exact
+ * arithmetic of Mesa's CPU decoder: sevenths or fifths, truncated */
+static uint8_t rgtc_exact(int a0, int a1, unsigned code)
+{
+   if (code == 0)
+      return (uint8_t)a0;
+   if (code == 1)
+      return (uint8_t)a1;
+   if (a0 > a1)
+      return (uint8_t)((a0 * (8 - (int)code) + a1 * ((int)code - 1)) / 7);
+   if (code < 6)
+      return (uint8_t)((a0 * (6 - (int)code) + a1 * ((int)code - 1)) / 5);
+   return code == 6 ? 0 : 255;
+}
+
+void fgl_latc_decode_exact(GLenum format, const uint8_t *blocks, int w, int h, uint8_t *rgba)
+{
+   const bool two = format == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+   const unsigned bytes = two ? 16 : 8;
+   const int bw = (w + 3) / 4;
+   for (int y = 0; y < h; y++) {
+      for (int x = 0; x < w; x++) {
+         const uint8_t *b = blocks + ((size_t)(y / 4) * (size_t)bw + (size_t)(x / 4)) * bytes;
+         const int t = (y & 3) * 4 + (x & 3);
+         uint8_t *o = rgba + 4 * ((size_t)y * (size_t)w + (size_t)x);
+         uint64_t codes = 0;
+         for (int k = 0; k < 6; k++)
+            codes |= (uint64_t)b[2 + k] << (8 * k);
+         o[0] = o[1] = o[2] = rgtc_exact(b[0], b[1], (unsigned)(codes >> (3 * t)) & 7u);
+         o[3] = 255;
+         if (two) {
+            codes = 0;
+            for (int k = 0; k < 6; k++)
+               codes |= (uint64_t)b[10 + k] << (8 * k);
+            o[3] = rgtc_exact(b[8], b[9], (unsigned)(codes >> (3 * t)) & 7u);
+         }
       }
    }
 }

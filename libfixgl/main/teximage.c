@@ -113,6 +113,10 @@ static const struct fgl_tex_pipe_format PF_Z32 = { 0, 0, 0, 0, 0, 0, 4, false };
  * in other precisions */
 static const struct fgl_tex_pipe_format PF_DXT_RGB = { 4, 4, 4, 0, 0, 0, 1, false };
 static const struct fgl_tex_pipe_format PF_DXT_RGBA = { 4, 4, 4, 4, 0, 0, 1, false };
+/* [S: formats.csv: MESA_FORMAT_L_LATC1_UNORM, MESA_FORMAT_LA_LATC2_UNORM]
+ * the LATC formats GL_COMPRESSED_LUMINANCE(_ALPHA) are stored in */
+static const struct fgl_tex_pipe_format PF_LATC1 = { 0, 0, 0, 0, 8, 0, 1, false };
+static const struct fgl_tex_pipe_format PF_LATC2 = { 0, 0, 0, 8, 8, 0, 1, false };
 
 struct tex_format {
    GLint internal;
@@ -728,20 +732,53 @@ static bool store_texels(struct fgl_context *ctx, struct fgl_texture_image *img,
  * of `internal` on `target` is stored in, 0 for an uncompressed one */
 static GLenum s3tc_format_of(GLint internal, GLenum target)
 {
-   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target))
+   /* a generic format is compressed on a 3D target too (measured: each
+    * slice an image of its own to the encoder), an S3TC one is not
+    * (refused there) */
+   const bool is_3d = target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D;
+   if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D && !is_cube_target(target) &&
+       !is_3d)
       return 0;
    if (fgl_s3tc_block_bytes((GLenum)internal, NULL))
-      return (GLenum)internal;
+      return is_3d ? 0 : (GLenum)internal;
    if (internal == GL_COMPRESSED_RGB)
       return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
    if (internal == GL_COMPRESSED_RGBA)
       return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+   /* LATC1 / LATC2 (ORACLE-NOTES.md "Compressed textures: LATC") */
+   if (internal == GL_COMPRESSED_LUMINANCE)
+      return GL_COMPRESSED_LUMINANCE_LATC1_EXT;
+   if (internal == GL_COMPRESSED_LUMINANCE_ALPHA)
+      return GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
    return 0;
 }
 
 static const struct fgl_tex_pipe_format *s3tc_pipe_format(GLenum cf)
 {
-   return cf == GL_COMPRESSED_RGB_S3TC_DXT1_EXT ? &PF_DXT_RGB : &PF_DXT_RGBA;
+   switch (cf) {
+   case GL_COMPRESSED_RGB_S3TC_DXT1_EXT: return &PF_DXT_RGB;
+   case GL_COMPRESSED_LUMINANCE_LATC1_EXT: return &PF_LATC1;
+   case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT: return &PF_LATC2;
+   default: return &PF_DXT_RGBA;
+   }
+}
+
+/* The bytes of one slice of a compressed image (a 3D image is its slices'
+ * blocks, one slice after the other). */
+static size_t slice_blocks_bytes(const struct fgl_texture_image *img)
+{
+   return (size_t)fgl_compressed_image_size(img->CompressedFormat, img->Width, img->Height, 1);
+}
+
+/* Decodes slices z .. z + d - 1 of img's blocks into its Data. */
+static void decode_slices(struct fgl_texture_image *img, int z, int d)
+{
+   if (img->Width <= 0 || img->Height <= 0)
+      return;
+   const size_t texels = (size_t)img->Width * (size_t)img->Height;
+   for (int k = z; k < z + d; k++)
+      fgl_s3tc_decode_image(img->CompressedFormat, img->Blocks + (size_t)k * slice_blocks_bytes(img),
+                            img->Width, img->Height, img->Data + 4 * texels * (size_t)k);
 }
 
 /* Gives img (texels allocated) zeroed blocks of `cf`, or, when `old` is an
@@ -759,8 +796,7 @@ static bool alloc_blocks(struct fgl_texture_image *img, GLenum cf,
    if (old && old->Blocks && old->CompressedFormat == cf && old->Width == img->Width &&
        old->Height == img->Height && old->Depth == img->Depth)
       memcpy(img->Blocks, old->Blocks, img->BlocksSize);
-   if (img->Width > 0 && img->Height > 0)
-      fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+   decode_slices(img, 0, img->Depth);
    return true;
 }
 
@@ -769,26 +805,32 @@ static bool alloc_blocks(struct fgl_texture_image *img, GLenum cf,
  * region is an image of its own to the encoder), then decodes them back
  * into Data. */
 static void compress_region(struct fgl_context *ctx, struct fgl_texture_image *img, int x,
-                            int y, int w, int h)
+                            int y, int z, int w, int h, int d)
 {
-   if (w <= 0 || h <= 0)
+   if (w <= 0 || h <= 0 || d <= 0)
       return;
    const GLenum cf = img->CompressedFormat;
-   const unsigned bytes = fgl_s3tc_block_bytes(cf, NULL);
+   const unsigned bytes = fgl_stored_block_bytes(cf);
    const size_t row = (size_t)((img->Width + 3) / 4) * bytes;
+   const size_t texels = (size_t)img->Width * (size_t)img->Height;
    uint8_t *tmp = fgl_malloc_gl(ctx, (size_t)w * (size_t)h * 4);
    if (!tmp) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   for (int j = 0; j < h; j++)
-      memcpy(tmp + 4 * (size_t)j * (size_t)w,
-             img->Data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x),
-             4 * (size_t)w);
-   fgl_s3tc_encode_image(cf, tmp, w, h,
-                         img->Blocks + (size_t)(y / 4) * row + (size_t)(x / 4) * bytes, row);
+   /* each slice of a 3D region an image of its own */
+   for (int k = z; k < z + d; k++) {
+      const uint8_t *data = img->Data + 4 * texels * (size_t)k;
+      for (int j = 0; j < h; j++)
+         memcpy(tmp + 4 * (size_t)j * (size_t)w,
+                data + 4 * ((size_t)(y + j) * (size_t)img->Width + (size_t)x), 4 * (size_t)w);
+      fgl_s3tc_encode_image(cf, tmp, w, h,
+                            img->Blocks + (size_t)k * slice_blocks_bytes(img) +
+                               (size_t)(y / 4) * row + (size_t)(x / 4) * bytes,
+                            row);
+   }
    fgl_free(tmp);
-   fgl_s3tc_decode_image(cf, img->Blocks, img->Width, img->Height, img->Data);
+   decode_slices(img, z, d);
 }
 
 /* [S: teximage.c:error_check_subtexture_dimensions] a region of an S3TC
@@ -807,25 +849,43 @@ static bool block_alignment_error(struct fgl_context *ctx, const struct fgl_text
    return false;
 }
 
+/* [S: st_cb_texture.c:st_GetTexSubImage] The RGBA8 texels glGetTexImage
+ * (and GL_GENERATE_MIPMAP's read of the base) gets of an image of Data's
+ * size: its Data, the sampler's texels, but for LATC2, which the oracle
+ * reads back with Mesa's CPU decoder (measured: exact sevenths and
+ * fifths; ORACLE-NOTES.md "Compressed textures: LATC"). */
+static void readback_texels(const struct fgl_texture_image *img, uint8_t *out)
+{
+   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT)
+      for (int k = 0; k < img->Depth; k++)
+         fgl_latc_decode_exact(img->CompressedFormat,
+                               img->Blocks + (size_t)k * slice_blocks_bytes(img), img->Width,
+                               img->Height,
+                               out + 4 * (size_t)k * (size_t)img->Width * (size_t)img->Height);
+   else
+      memcpy(out, img->Data,
+             (size_t)img->Width * (size_t)img->Height * (size_t)img->Depth * 4);
+}
+
 /* [S: mipmap.c:generate_mipmap_compressed, make_2d_mipmap, do_row] The
- * levels below `level` of an S3TC image: the base's decoded texels, each
- * level the truncated mean of 2x2 texels of the one above (a 1-texel side
- * doubles its texel; an odd side drops its last texel), kept uncompressed
- * along the chain, each compressed into its level. */
+ * levels below `level` of a compressed image: the base's decoded texels,
+ * each level the truncated mean of 2x2 texels of the one above (a 1-texel
+ * side doubles its texel; an odd side drops its last texel; 3D below),
+ * kept uncompressed along the chain, each compressed into its level. */
 static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_object *t,
                                unsigned face, GLint level, GLint last)
 {
    const struct fgl_texture_image *base = fgl_tex_face_image(t, face, level);
-   int W = base->Width, H = base->Height;
-   uint8_t *src = fgl_malloc_gl(ctx, (size_t)W * (size_t)H * 4);
+   int W = base->Width, H = base->Height, D = base->Depth;
+   uint8_t *src = fgl_malloc_gl(ctx, (size_t)W * (size_t)H * (size_t)D * 4);
    if (!src) {
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   memcpy(src, base->Data, (size_t)W * (size_t)H * 4);
+   readback_texels(base, src);
    for (GLint l = level + 1; l <= last; l++) {
-      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1;
-      struct fgl_texture_image *img = new_image(w, h, 1, 0, (GLint)base->InternalFormat,
+      const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1, d = D > 1 ? D >> 1 : 1;
+      struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)base->InternalFormat,
                                                 base->BaseFormat, base->Format);
       if (!img || !alloc_texels(img) ||
           !alloc_blocks(img, base->CompressedFormat, fgl_tex_face_image(t, face, l))) {
@@ -834,24 +894,44 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
-      const int row_step = H > h ? 1 : 0, col_step = W > w ? 1 : 0;
-      for (int j = 0; j < h; j++) {
-         const uint8_t *ra = src + 4 * (size_t)(j * (row_step + 1)) * (size_t)W;
-         const uint8_t *rb = ra + 4 * (size_t)row_step * (size_t)W;
-         for (int i = 0; i < w; i++) {
-            const int x0 = i * (col_step + 1), x1 = x0 + col_step;
-            for (int n = 0; n < 4; n++)
-               img->Data[4 * ((size_t)j * (size_t)w + (size_t)i) + (size_t)n] =
-                  (uint8_t)((ra[4 * x0 + n] + ra[4 * x1 + n] + rb[4 * x0 + n] +
-                             rb[4 * x1 + n]) / 4);
+      /* [S: mipmap.c:make_2d_mipmap, make_3d_mipmap, do_row_3D] 2D: the
+       * truncated mean of 2x2 texels; a 3D texture: the rounded mean
+       * (sum + 4) >> 3 of 2x2x2 texels, a side that does not shrink
+       * counting its texels twice */
+      const bool is_3d = t->Target == GL_TEXTURE_3D;
+      const int row_step = H > h ? 1 : 0, col_step = W > w ? 1 : 0, slice_step = D > d ? 1 : 0;
+      const size_t slice = (size_t)W * (size_t)H;
+      for (int k = 0; k < d; k++) {
+         const uint8_t *sa = src + 4 * slice * (size_t)(k * (slice_step + 1));
+         const uint8_t *sb = sa + 4 * slice * (size_t)slice_step;
+         for (int j = 0; j < h; j++) {
+            const size_t ya = (size_t)(j * (row_step + 1)) * (size_t)W,
+                         yb = ya + (size_t)row_step * (size_t)W;
+            for (int i = 0; i < w; i++) {
+               const size_t x0 = (size_t)(i * (col_step + 1)), x1 = x0 + (size_t)col_step;
+               uint8_t *o =
+                  img->Data + 4 * (((size_t)k * (size_t)h + (size_t)j) * (size_t)w + (size_t)i);
+               for (int n = 0; n < 4; n++) {
+                  const unsigned q = sa[4 * (ya + x0) + n] + sa[4 * (ya + x1) + n] +
+                                     sa[4 * (yb + x0) + n] + sa[4 * (yb + x1) + n];
+                  if (!is_3d) {
+                     o[n] = (uint8_t)(q / 4);
+                     continue;
+                  }
+                  const unsigned r = sb[4 * (ya + x0) + n] + sb[4 * (ya + x1) + n] +
+                                     sb[4 * (yb + x0) + n] + sb[4 * (yb + x1) + n];
+                  o[n] = (uint8_t)((q + r + 4) >> 3);
+               }
+            }
          }
       }
       /* the chain goes on from the uncompressed level */
-      memcpy(src, img->Data, (size_t)w * (size_t)h * 4);
-      compress_region(ctx, img, 0, 0, w, h);
+      memcpy(src, img->Data, (size_t)w * (size_t)h * (size_t)d * 4);
+      compress_region(ctx, img, 0, 0, 0, w, h, d);
       set_image(t, face, l, img);
       W = w;
       H = h;
+      D = d;
    }
    fgl_free(src);
    ctx->NewState |= FGL_NEW_TEXTURE;
@@ -1205,7 +1285,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    }
    /* no data: the storage is left as it was */
    if (cf && pixels)
-      compress_region(ctx, img, 0, 0, width, height);
+      compress_region(ctx, img, 0, 0, 0, width, height, depth);
    set_image(t, target_face(target), level, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    check_gen_mipmap(ctx, t, target_face(target), level);
@@ -1333,7 +1413,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
       if (img->CompressedFormat && pixels)
-         compress_region(ctx, img, xoff, yoff, width, height);
+         compress_region(ctx, img, xoff, yoff, zoff, width, height, depth);
       ctx->NewState |= FGL_NEW_TEXTURE;
       check_gen_mipmap(ctx, t, target_face(target), level);
    }
@@ -1432,7 +1512,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
     * copied region through texstore (the encoder); a region the clipping
     * moved off the 4x4 grid is taken from the grid line before it */
    if (img->CompressedFormat)
-      compress_region(ctx, img, xoff & ~3, yoff & ~3, w + (xoff & 3), h + (yoff & 3));
+      compress_region(ctx, img, xoff & ~3, yoff & ~3, zoff, w + (xoff & 3), h + (yoff & 3), 1);
    ctx->NewState |= FGL_NEW_TEXTURE;
 }
 
@@ -1703,6 +1783,15 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    /* a 3D image slice by slice, each at its slice's address
     * (GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES) */
    const size_t slice = (size_t)img->Width * (size_t)img->Height;
+   uint8_t *latc2 = NULL;
+   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT) {
+      latc2 = fgl_malloc_gl(ctx, slice * (size_t)img->Depth * 4);
+      if (!latc2) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return;
+      }
+      readback_texels(img, latc2);
+   }
    for (int k = 0; k < img->Depth; k++) {
       void *dst = target == GL_TEXTURE_3D
                      ? (void *)(uintptr_t)slice_address(&ctx->Pack, pixels, img->Width,
@@ -1714,9 +1803,10 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
                              max_bits(img->Format) == 16, format, type, dst);
       else
          fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                        img->BaseFormat, img->Data + 4 * slice * (size_t)k, format, type,
-                        dst);
+                        img->BaseFormat, (latc2 ? latc2 : img->Data) + 4 * slice * (size_t)k,
+                        format, type, dst);
    }
+   fgl_free(latc2);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1896,7 +1986,9 @@ GLenum fgl_tex_reported_internal_format(const struct fgl_texture_image *img)
    switch (img->InternalFormat) {
    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
-   /* GL_COMPRESSED_RGB/RGBA of a 1D or 3D image (measured: stored
+   case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+   case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+   /* GL_COMPRESSED_RGB/RGBA of a 1D image (measured: stored
     * uncompressed, reported as the base format) */
    case GL_COMPRESSED_RGB: return GL_RGB;
    case GL_COMPRESSED_RGBA: return GL_RGBA;
