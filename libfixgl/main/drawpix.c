@@ -1263,11 +1263,11 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    const size_t n = (size_t)width * (size_t)height;
    float *t = NULL;
    uint8_t *s = NULL;
-   const bool to_color = type == GL_DEPTH_STENCIL_TO_RGBA_NV ||
-                         type == GL_DEPTH_STENCIL_TO_BGRA_NV;
-   const bool color = type == GL_COLOR || to_color;
-   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL;
-   const bool stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
+   /* glCopyPixels passes GL 1.5's three types only (GL_DEPTH_STENCIL and
+    * the NV copy_depth_to_color types raise GL_INVALID_ENUM there) */
+   const bool color = type == GL_COLOR;
+   const bool depth = type == GL_DEPTH;
+   const bool stencil = type == GL_STENCIL;
    if (color || depth)
       t = fgl_calloc_gl(ctx, color ? 4 * n : n, sizeof(float));
    if (stencil)
@@ -1281,26 +1281,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       for (int i = 0; i < rw; i++) {
          const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)(rx + i);
          const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)(skip_px + i);
-         if (to_color) {
-            /* [S: st_cb_drawpixels.c:make_drawpix_zs_to_color_program_nir]
-             * the depth sampled as float, times 0xffffff in double,
-             * truncated; bytes of the stencil and of that depth, each
-             * u2f * (float)(1/255) */
-            const uint32_t zs = ((uint32_t *)fb->Depth)[src];
-            const float zf = (float)(zs & 0xffffffu) * (float)(1.0 / 16777215.0);
-            const uint32_t iz = (uint32_t)((double)zf * (double)0xffffff);
-            const uint32_t ds[4] = { zs >> 24, iz & 0xffu, (iz >> 8) & 0xffu,
-                                     (iz >> 16) & 0xffu };
-            const float k = (float)(1.0 / 255.0);
-            float v[4] = { (float)ds[3] * k, (float)ds[2] * k, (float)ds[1] * k,
-                           (float)ds[0] * k };
-            if (type == GL_DEPTH_STENCIL_TO_BGRA_NV) {
-               const float tmp = v[0];
-               v[0] = v[2];
-               v[2] = tmp;
-            }
-            memcpy(t + 4 * dst, v, sizeof(v));
-         } else if (color) {
+         if (color) {
             for (int c = 0; c < 4; c++)
                t[4 * dst + c] = (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
          }
@@ -1328,21 +1309,14 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    textured_quad(ctx, &q, dstx, dsty, width, height, true);
    struct r_state rs = ctx->_Raster;
    struct stencil_quad_objects qo;
-   if (to_color) {
-      /* the shader's colour goes straight to the fragment operations */
-      img.kind = R_PIX_COLOR;
-      img.raw_color = true;
-      if (ctx->Color.DrawBuffer != GL_NONE)
-         fb->ColorDefined = true;
-   } else if (color) {
+   if (color) {
       img.kind = R_PIX_COLOR;
       color_transfer(ctx, &img);
       if (ctx->Color.DrawBuffer != GL_NONE)
          fb->ColorDefined = true;
    } else if (stencil) {
-      img.kind = depth ? R_PIX_DEPTH : R_PIX_STENCIL;
-      img.with_stencil = depth;
-      stencil_quad_state(ctx, &rs, &qo, depth);
+      img.kind = R_PIX_STENCIL;
+      stencil_quad_state(ctx, &rs, &qo, false);
    } else {
       img.kind = R_PIX_DEPTH;
       if (ctx->Color.DrawBuffer != GL_NONE)
@@ -1378,8 +1352,7 @@ void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GL
    /* _mesa_source_buffer_exists, _mesa_dest_buffer_exists */
    const bool exists = fb && (type == GL_COLOR ? ctx->Pixel.ReadBuffer != GL_NONE
                               : type == GL_DEPTH ? fb->DepthBits > 0
-                              : type == GL_STENCIL ? fb->StencilBits > 0
-                              : fb->DepthBits > 0 && fb->StencilBits > 0);   /* and the NV types */
+                              : fb->StencilBits > 0);
    if (!exists) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;

@@ -112,10 +112,6 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
        * replaces gl_Color; scale and bias, then the maps */
       float c[4];
       memcpy(c, pix->texels + 4 * idx, sizeof(c));
-      if (pix->raw_color) {
-         r_fragment_ops(rs, px, py, z, c);
-         return;
-      }
       if (pix->scale_bias)
          for (int k = 0; k < 4; k++)
             c[k] = c[k] * pix->scale[k] + pix->bias[k];
