@@ -1956,27 +1956,12 @@ bool fgl_is_color_format(GLenum format)
    }
 }
 
-static bool is_integer_format(GLenum format)
-{
-   switch (format) {
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RG_INTEGER: case GL_RGB_INTEGER: case GL_BGR_INTEGER:
-   case GL_RGBA_INTEGER: case GL_BGRA_INTEGER: case GL_LUMINANCE_INTEGER_EXT:
-   case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return true;
-   default:
-      return false;
-   }
-}
-
-static bool is_basic_type(GLenum type, bool half)
+static bool is_basic_type(GLenum type)
 {
    switch (type) {
    case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT:
    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT:
       return true;
-   case GL_HALF_FLOAT:
-      return half;
    default:
       return false;
    }
@@ -2025,11 +2010,8 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
    (void)ctx;
    if (foreign_format(format) || foreign_type(type))
       return GL_INVALID_ENUM;
-   if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
-       type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
-      return GL_INVALID_ENUM;
 
-   /* special type-based checks */
+   /* special type-based checks (the foreign formats and types gone) */
    switch (type) {
    case GL_BITMAP:
       if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
@@ -2037,53 +2019,36 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       break;
    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
    case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      if (format == GL_RGB || format == GL_RGB_INTEGER)
+      if (format == GL_RGB)
          break;
       return GL_INVALID_OPERATION;
    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
    case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT ||
-          format == GL_RGBA_INTEGER || format == GL_BGRA_INTEGER)
+      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT)
          break;
       return GL_INVALID_OPERATION;
    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
    case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_RGBA_INTEGER ||
-          format == GL_BGRA_INTEGER)
+      if (format == GL_RGBA || format == GL_BGRA)
          break;
       return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_24_8:
-   case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
-      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_10F_11F_11F_REV:
-      return format == GL_RGB ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case 0x8D61: /* GL_HALF_FLOAT_OES */
-      switch (format) {
-      case GL_RGBA: case GL_RGB: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE:
-      case GL_ALPHA: case GL_RG: case GL_RED:
-         return GL_NO_ERROR;
-      default:
-         return GL_INVALID_OPERATION;
-      }
    default:
       break;
    }
 
    switch (format) {
    case GL_COLOR_INDEX: case GL_STENCIL_INDEX:
-      return is_basic_type(type, true) || type == GL_BITMAP ? GL_NO_ERROR : GL_INVALID_ENUM;
+      return is_basic_type(type) || type == GL_BITMAP ? GL_NO_ERROR : GL_INVALID_ENUM;
    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
-   case GL_LUMINANCE_ALPHA: case GL_DEPTH_COMPONENT: case GL_RG:
-   case GL_BGR:
-      return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+   case GL_LUMINANCE_ALPHA: case GL_DEPTH_COMPONENT: case GL_BGR:
+      return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
    case GL_RGB:
       switch (type) {
       case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
       case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      case GL_UNSIGNED_INT_5_9_9_9_REV: case GL_UNSIGNED_INT_10F_11F_11F_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    case GL_RGBA: case GL_BGRA:
       switch (type) {
@@ -2093,7 +2058,7 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    case GL_ABGR_EXT:
       switch (type) {
@@ -2101,40 +2066,9 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
-      }
-   case GL_DEPTH_STENCIL:
-      return GL_NO_ERROR;   /* the types were checked above */
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RG_INTEGER: case GL_BGR_INTEGER:
-   case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RGB_INTEGER:
-      switch (type) {
-      case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-      case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-         return GL_NO_ERROR;
-      default:
-         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
-                                                               : GL_INVALID_ENUM;
-      }
-   case GL_RGBA_INTEGER: case GL_BGRA_INTEGER:
-      switch (type) {
-      case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-      case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-      case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-         return GL_NO_ERROR;
-      default:
-         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
-                                                               : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    default:
       return GL_INVALID_ENUM;
    }
-}
-
-bool fgl_is_integer_format(GLenum format)
-{
-   return is_integer_format(format);
 }

@@ -332,11 +332,6 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
-   /* integer formats from the normalized colour buffer */
-   if (fgl_is_color_format(format) && fgl_is_integer_format(format)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
 
    /* [S: image.c:_mesa_clip_readpixels] */
    struct fgl_pixelstore pack = ctx->Pack;
