@@ -403,7 +403,6 @@ static bool zs_buffer_exists(const struct fgl_framebuffer *fb, GLenum format)
    switch (format) {
    case GL_DEPTH_COMPONENT: return fb->DepthBits > 0;
    case GL_STENCIL_INDEX:   return fb->StencilBits > 0;
-   case GL_DEPTH_STENCIL:   return fb->DepthBits > 0 && fb->StencilBits > 0;
    default:                 return true;
    }
 }
@@ -474,10 +473,6 @@ static bool unpack_color_texels(const struct fgl_pixelstore *p, const void *pixe
             color_component(type, src, 2, &c[0]);
             color_component(type, src, 1, &c[1]);
             color_component(type, src, 0, &c[2]);
-            break;
-         case GL_RG:
-            color_component(type, src, 0, &c[0]);
-            color_component(type, src, 1, &c[1]);
             break;
          case GL_RED:   color_component(type, src, 0, &c[0]); break;
          case GL_GREEN: color_component(type, src, 0, &c[1]); break;
@@ -677,62 +672,6 @@ static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixels
    return true;
 }
 
-/* GL_DEPTH_STENCIL images [S: texstore.c:_mesa_texstore_z24_s8,
- * _mesa_texstore_z32f_x24s8; pack.c:_mesa_unpack_depth_span,
- * _mesa_unpack_stencil_span]: GL_UNSIGNED_INT_24_8 into S8_UINT_Z24_UNORM,
- * GL_FLOAT_32_UNSIGNED_INT_24_8_REV into Z32_FLOAT_S8X24_UINT; copied as
- * they are when the depth transfer is the identity and GL_MAP_STENCIL is
- * off, else depth through scale, bias and the clamp ((GLuint)(d *
- * (float)0xffffff) for the 24-bit one) and the stencil byte through the
- * stencil map. */
-static bool unpack_depth_stencil_texels(const struct fgl_context *ctx,
-                                        const struct fgl_pixelstore *p, const void *pixels,
-                                        int width, int height, GLenum type, float *depth,
-                                        uint8_t *stencil)
-{
-   if (p->SwapBytes)
-      return false;
-   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
-   const bool identity = scale == 1.0f && bias == 0.0f;
-   const bool f32 = type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
-   for (int y = 0; y < height; y++) {
-      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_STENCIL, type, y, 0);
-      for (int x = 0; x < width; x++) {
-         const size_t i = (size_t)y * (size_t)width + (size_t)x;
-         GLuint s;
-         float d;
-         if (f32) {
-            memcpy(&d, src + 8 * x, 4);
-            memcpy(&s, src + 8 * x + 4, 4);
-            if (!identity) {
-               d = d * scale + bias;
-               d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;
-            }
-         } else {
-            GLuint v;
-            memcpy(&v, src + 4 * x, 4);
-            s = v;
-            uint32_t z = v >> 8;
-            if (!identity) {
-               float f = (float)z * (1.0f / 0xffffff);
-               f = f * scale + bias;
-               f = f > 0.0f ? (f > 1.0f ? 1.0f : f) : 0.0f;
-               z = (uint32_t)(f * (float)0xffffff);
-            }
-            d = (float)z * (float)(1.0 / 16777215.0);
-         }
-         s &= 0xffu;
-         if (!identity && ctx->Pixel.MapStencilFlag) {
-            const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
-            s = (GLuint)ctx->PixelMaps.StoS.Map[s & mask];
-         }
-         depth[i] = d;
-         stencil[i] = (uint8_t)(s & 0xffu);
-      }
-   }
-   return true;
-}
-
 /* The stencil texels of a GL_STENCIL_INDEX image [S: texstore.c:
  * _mesa_texstore_s8, pack.c:_mesa_unpack_stencil_span with the transfer
  * operations off (make_texture clears _ImageTransferState): no index shift
@@ -766,16 +705,16 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
 
 /* The state of the stencil-writing quad [S: st_cb_drawpixels.c:
  * draw_textured_quad with write_stencil]: stencil ALWAYS, zpass REPLACE
- * with the exported value under the stencil write mask, depth ALWAYS with
- * the depth mask when depth is written too, else off; no colour, alpha
- * test or blending. */
+ * with the exported value under the stencil write mask, depth off (the
+ * oracle's depth+stencil draw, ALWAYS under the depth mask, is
+ * GL_DEPTH_STENCIL's, not GL 1.5's); no colour, alpha test or blending. */
 struct stencil_quad_objects {
    struct r_dsa_state dsa;
    struct r_blend_state blend;
 };
 
 static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs,
-                               struct stencil_quad_objects *o, bool write_depth)
+                               struct stencil_quad_objects *o)
 {
    o->dsa = *rs->dsa;
    o->blend = *rs->blend;
@@ -785,7 +724,7 @@ static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs
    o->dsa.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
    o->dsa.stencil_fail = o->dsa.stencil_zfail = R_STENCIL_KEEP;
    o->dsa.stencil_zpass = R_STENCIL_REPLACE;
-   o->dsa.depth_test = write_depth;
+   o->dsa.depth_test = false;
    o->dsa.depth_func = R_ALWAYS;
    o->dsa.depth_write = ctx->Depth.Mask;
    o->dsa.alpha_test = false;
@@ -970,13 +909,6 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
       *mask = fgl_malloc_gl(ctx, n);
       if (*mask && unpack_stencil_texels(ctx, unpack, pixels, width, height, type, *mask))
          return true;
-   } else if (format == GL_DEPTH_STENCIL) {
-      *mask = fgl_malloc_gl(ctx, n);
-      *texels = fgl_malloc_gl(ctx, n * sizeof(float));
-      if (*mask && *texels &&
-          unpack_depth_stencil_texels(ctx, unpack, pixels, width, height, type, *texels,
-                                      *mask))
-         return true;
    } else if (format == GL_DEPTH_COMPONENT) {
       *texels = fgl_malloc_gl(ctx, n * sizeof(float));
       if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
@@ -1043,11 +975,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
    struct stencil_quad_objects qo;
    if (format == GL_STENCIL_INDEX) {
       img.kind = R_PIX_STENCIL;
-      stencil_quad_state(ctx, &rs, &qo, false);
-   } else if (format == GL_DEPTH_STENCIL) {
-      img.kind = R_PIX_DEPTH;
-      img.with_stencil = true;
-      stencil_quad_state(ctx, &rs, &qo, true);
+      stencil_quad_state(ctx, &rs, &qo);
    } else if (format == GL_DEPTH_COMPONENT) {
       img.kind = R_PIX_DEPTH;
    } else {
@@ -1316,7 +1244,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
          fb->ColorDefined = true;
    } else if (stencil) {
       img.kind = R_PIX_STENCIL;
-      stencil_quad_state(ctx, &rs, &qo, false);
+      stencil_quad_state(ctx, &rs, &qo);
    } else {
       img.kind = R_PIX_DEPTH;
       if (ctx->Color.DrawBuffer != GL_NONE)
