@@ -639,7 +639,7 @@ static bool store_rect(struct fgl_context *ctx, struct fgl_texture_image *img,
       return true;
    const size_t slice = (size_t)z * (size_t)img->Height;
    if (img->ZValues) {
-      if (!fgl_tex_store_depth(ctx, img, unpack, x, y, z, w, h, format, type, pixels)) {
+      if (!fgl_tex_store_depth(ctx, img, unpack, x, y, z, w, h, type, pixels)) {
          fgl_error(ctx, GL_INVALID_ENUM);
          return false;
       }
