@@ -66,9 +66,6 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
  * GL_INVALID_ENUM), so no later integer-format check is needed. */
 bool fgl_is_color_format(GLenum format);
 
-/* [S: util/half_float.c] */
-float fgl_half_to_float(uint16_t h);
-uint16_t fgl_float_to_half(float f);
 
 /* ------------------------------------------------------------------ */
 /* Pixel transfer                                                      */
