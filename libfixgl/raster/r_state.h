@@ -787,6 +787,11 @@ struct r_pixel_image {
    bool map_color;
    const float *maps[4];     /* R, G, B, A maps (GL_PIXEL_MAP_x_TO_x) */
    int map_size[4];
+   /* R_PIX_STENCIL with R_PIX_DEPTH values too (GL_DEPTH_STENCIL) */
+   bool with_stencil;
+   /* R_PIX_COLOR: the texel is the fragment colour, no fixed-function
+    * program (glCopyPixels of GL_DEPTH_STENCIL_TO_RGBA/BGRA_NV) */
+   bool raw_color;
    /* The texture coordinates the user's units (r_state.tex_units) see:
     * units in tex_quad read the quad's own coordinate (s, t, 0, 1) with
     * its derivatives (glBitmap's gl_TexCoord[0]), the others the constant
