@@ -337,12 +337,12 @@ struct fgl_eval_maps {
    bool AutoNormal;
 };
 
-/* The texture targets an object can be bound to in the oracle's
- * compatibility context (texobj.c:_mesa_tex_target_to_index; buffer and
- * multisample targets are not modelled) */
+/* The texture targets an object can be bound to: GL 1.5's, in the order
+ * of the oracle's texobj.c:_mesa_tex_target_to_index (its rectangle, array,
+ * buffer and multisample targets are GL_INVALID_ENUM in fixgl: README
+ * "Version and honesty") */
 enum fgl_tex_index {
-   FGL_TEX_1D, FGL_TEX_2D, FGL_TEX_3D, FGL_TEX_CUBE, FGL_TEX_RECT,
-   FGL_TEX_1D_ARRAY, FGL_TEX_2D_ARRAY, FGL_TEX_CUBE_ARRAY,
+   FGL_TEX_1D, FGL_TEX_2D, FGL_TEX_3D, FGL_TEX_CUBE,
    FGL_TEX_TARGETS,
 };
 

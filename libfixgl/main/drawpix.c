@@ -403,7 +403,6 @@ static bool zs_buffer_exists(const struct fgl_framebuffer *fb, GLenum format)
    switch (format) {
    case GL_DEPTH_COMPONENT: return fb->DepthBits > 0;
    case GL_STENCIL_INDEX:   return fb->StencilBits > 0;
-   case GL_DEPTH_STENCIL:   return fb->DepthBits > 0 && fb->StencilBits > 0;
    default:                 return true;
    }
 }
@@ -474,10 +473,6 @@ static bool unpack_color_texels(const struct fgl_pixelstore *p, const void *pixe
             color_component(type, src, 2, &c[0]);
             color_component(type, src, 1, &c[1]);
             color_component(type, src, 0, &c[2]);
-            break;
-         case GL_RG:
-            color_component(type, src, 0, &c[0]);
-            color_component(type, src, 1, &c[1]);
             break;
          case GL_RED:   color_component(type, src, 0, &c[0]); break;
          case GL_GREEN: color_component(type, src, 0, &c[1]); break;
@@ -677,62 +672,6 @@ static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixels
    return true;
 }
 
-/* GL_DEPTH_STENCIL images [S: texstore.c:_mesa_texstore_z24_s8,
- * _mesa_texstore_z32f_x24s8; pack.c:_mesa_unpack_depth_span,
- * _mesa_unpack_stencil_span]: GL_UNSIGNED_INT_24_8 into S8_UINT_Z24_UNORM,
- * GL_FLOAT_32_UNSIGNED_INT_24_8_REV into Z32_FLOAT_S8X24_UINT; copied as
- * they are when the depth transfer is the identity and GL_MAP_STENCIL is
- * off, else depth through scale, bias and the clamp ((GLuint)(d *
- * (float)0xffffff) for the 24-bit one) and the stencil byte through the
- * stencil map. */
-static bool unpack_depth_stencil_texels(const struct fgl_context *ctx,
-                                        const struct fgl_pixelstore *p, const void *pixels,
-                                        int width, int height, GLenum type, float *depth,
-                                        uint8_t *stencil)
-{
-   if (p->SwapBytes)
-      return false;
-   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
-   const bool identity = scale == 1.0f && bias == 0.0f;
-   const bool f32 = type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
-   for (int y = 0; y < height; y++) {
-      const uint8_t *src = fgl_image_address(p, pixels, width, GL_DEPTH_STENCIL, type, y, 0);
-      for (int x = 0; x < width; x++) {
-         const size_t i = (size_t)y * (size_t)width + (size_t)x;
-         GLuint s;
-         float d;
-         if (f32) {
-            memcpy(&d, src + 8 * x, 4);
-            memcpy(&s, src + 8 * x + 4, 4);
-            if (!identity) {
-               d = d * scale + bias;
-               d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;
-            }
-         } else {
-            GLuint v;
-            memcpy(&v, src + 4 * x, 4);
-            s = v;
-            uint32_t z = v >> 8;
-            if (!identity) {
-               float f = (float)z * (1.0f / 0xffffff);
-               f = f * scale + bias;
-               f = f > 0.0f ? (f > 1.0f ? 1.0f : f) : 0.0f;
-               z = (uint32_t)(f * (float)0xffffff);
-            }
-            d = (float)z * (float)(1.0 / 16777215.0);
-         }
-         s &= 0xffu;
-         if (!identity && ctx->Pixel.MapStencilFlag) {
-            const GLuint mask = (GLuint)ctx->PixelMaps.StoS.Size - 1;
-            s = (GLuint)ctx->PixelMaps.StoS.Map[s & mask];
-         }
-         depth[i] = d;
-         stencil[i] = (uint8_t)(s & 0xffu);
-      }
-   }
-   return true;
-}
-
 /* The stencil texels of a GL_STENCIL_INDEX image [S: texstore.c:
  * _mesa_texstore_s8, pack.c:_mesa_unpack_stencil_span with the transfer
  * operations off (make_texture clears _ImageTransferState): no index shift
@@ -766,16 +705,16 @@ static bool unpack_stencil_texels(const struct fgl_context *ctx,
 
 /* The state of the stencil-writing quad [S: st_cb_drawpixels.c:
  * draw_textured_quad with write_stencil]: stencil ALWAYS, zpass REPLACE
- * with the exported value under the stencil write mask, depth ALWAYS with
- * the depth mask when depth is written too, else off; no colour, alpha
- * test or blending. */
+ * with the exported value under the stencil write mask, depth off (the
+ * oracle's depth+stencil draw, ALWAYS under the depth mask, is
+ * GL_DEPTH_STENCIL's, not GL 1.5's); no colour, alpha test or blending. */
 struct stencil_quad_objects {
    struct r_dsa_state dsa;
    struct r_blend_state blend;
 };
 
 static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs,
-                               struct stencil_quad_objects *o, bool write_depth)
+                               struct stencil_quad_objects *o)
 {
    o->dsa = *rs->dsa;
    o->blend = *rs->blend;
@@ -785,7 +724,7 @@ static void stencil_quad_state(const struct fgl_context *ctx, struct r_state *rs
    o->dsa.stencil_writemask = (uint8_t)(ctx->Stencil.WriteMask & 0xffu);
    o->dsa.stencil_fail = o->dsa.stencil_zfail = R_STENCIL_KEEP;
    o->dsa.stencil_zpass = R_STENCIL_REPLACE;
-   o->dsa.depth_test = write_depth;
+   o->dsa.depth_test = false;
    o->dsa.depth_func = R_ALWAYS;
    o->dsa.depth_write = ctx->Depth.Mask;
    o->dsa.alpha_test = false;
@@ -970,13 +909,6 @@ static bool make_texture(struct fgl_context *ctx, const struct fgl_pixelstore *u
       *mask = fgl_malloc_gl(ctx, n);
       if (*mask && unpack_stencil_texels(ctx, unpack, pixels, width, height, type, *mask))
          return true;
-   } else if (format == GL_DEPTH_STENCIL) {
-      *mask = fgl_malloc_gl(ctx, n);
-      *texels = fgl_malloc_gl(ctx, n * sizeof(float));
-      if (*mask && *texels &&
-          unpack_depth_stencil_texels(ctx, unpack, pixels, width, height, type, *texels,
-                                      *mask))
-         return true;
    } else if (format == GL_DEPTH_COMPONENT) {
       *texels = fgl_malloc_gl(ctx, n * sizeof(float));
       if (*texels && (unpack_depth_texels(ctx, unpack, pixels, width, height, type, *texels) ||
@@ -1043,11 +975,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
    struct stencil_quad_objects qo;
    if (format == GL_STENCIL_INDEX) {
       img.kind = R_PIX_STENCIL;
-      stencil_quad_state(ctx, &rs, &qo, false);
-   } else if (format == GL_DEPTH_STENCIL) {
-      img.kind = R_PIX_DEPTH;
-      img.with_stencil = true;
-      stencil_quad_state(ctx, &rs, &qo, true);
+      stencil_quad_state(ctx, &rs, &qo);
    } else if (format == GL_DEPTH_COMPONENT) {
       img.kind = R_PIX_DEPTH;
    } else {
@@ -1263,11 +1191,11 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    const size_t n = (size_t)width * (size_t)height;
    float *t = NULL;
    uint8_t *s = NULL;
-   const bool to_color = type == GL_DEPTH_STENCIL_TO_RGBA_NV ||
-                         type == GL_DEPTH_STENCIL_TO_BGRA_NV;
-   const bool color = type == GL_COLOR || to_color;
-   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL;
-   const bool stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
+   /* glCopyPixels passes GL 1.5's three types only (GL_DEPTH_STENCIL and
+    * the NV copy_depth_to_color types raise GL_INVALID_ENUM there) */
+   const bool color = type == GL_COLOR;
+   const bool depth = type == GL_DEPTH;
+   const bool stencil = type == GL_STENCIL;
    if (color || depth)
       t = fgl_calloc_gl(ctx, color ? 4 * n : n, sizeof(float));
    if (stencil)
@@ -1281,26 +1209,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       for (int i = 0; i < rw; i++) {
          const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)(rx + i);
          const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)(skip_px + i);
-         if (to_color) {
-            /* [S: st_cb_drawpixels.c:make_drawpix_zs_to_color_program_nir]
-             * the depth sampled as float, times 0xffffff in double,
-             * truncated; bytes of the stencil and of that depth, each
-             * u2f * (float)(1/255) */
-            const uint32_t zs = ((uint32_t *)fb->Depth)[src];
-            const float zf = (float)(zs & 0xffffffu) * (float)(1.0 / 16777215.0);
-            const uint32_t iz = (uint32_t)((double)zf * (double)0xffffff);
-            const uint32_t ds[4] = { zs >> 24, iz & 0xffu, (iz >> 8) & 0xffu,
-                                     (iz >> 16) & 0xffu };
-            const float k = (float)(1.0 / 255.0);
-            float v[4] = { (float)ds[3] * k, (float)ds[2] * k, (float)ds[1] * k,
-                           (float)ds[0] * k };
-            if (type == GL_DEPTH_STENCIL_TO_BGRA_NV) {
-               const float tmp = v[0];
-               v[0] = v[2];
-               v[2] = tmp;
-            }
-            memcpy(t + 4 * dst, v, sizeof(v));
-         } else if (color) {
+         if (color) {
             for (int c = 0; c < 4; c++)
                t[4 * dst + c] = (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
          }
@@ -1328,21 +1237,14 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    textured_quad(ctx, &q, dstx, dsty, width, height, true);
    struct r_state rs = ctx->_Raster;
    struct stencil_quad_objects qo;
-   if (to_color) {
-      /* the shader's colour goes straight to the fragment operations */
-      img.kind = R_PIX_COLOR;
-      img.raw_color = true;
-      if (ctx->Color.DrawBuffer != GL_NONE)
-         fb->ColorDefined = true;
-   } else if (color) {
+   if (color) {
       img.kind = R_PIX_COLOR;
       color_transfer(ctx, &img);
       if (ctx->Color.DrawBuffer != GL_NONE)
          fb->ColorDefined = true;
    } else if (stencil) {
-      img.kind = depth ? R_PIX_DEPTH : R_PIX_STENCIL;
-      img.with_stencil = depth;
-      stencil_quad_state(ctx, &rs, &qo, depth);
+      img.kind = R_PIX_STENCIL;
+      stencil_quad_state(ctx, &rs, &qo);
    } else {
       img.kind = R_PIX_DEPTH;
       if (ctx->Color.DrawBuffer != GL_NONE)
@@ -1378,8 +1280,7 @@ void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GL
    /* _mesa_source_buffer_exists, _mesa_dest_buffer_exists */
    const bool exists = fb && (type == GL_COLOR ? ctx->Pixel.ReadBuffer != GL_NONE
                               : type == GL_DEPTH ? fb->DepthBits > 0
-                              : type == GL_STENCIL ? fb->StencilBits > 0
-                              : fb->DepthBits > 0 && fb->StencilBits > 0);   /* and the NV types */
+                              : fb->StencilBits > 0);
    if (!exists) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;

@@ -81,12 +81,11 @@ int fgl_tex_image_depth_bits(const struct fgl_texture_image *img);
 
 /* main/texdepth.c: the images of GL_DEPTH_COMPONENT textures
  * (ARB_depth_texture) as the oracle stores and reads them back */
-/* Unpacks a w x h GL_DEPTH_COMPONENT (or GL_DEPTH_STENCIL: its depth)
- * client image of `type` into texels (x, y) of slice z of img; false for
- * a type it does not convert. */
+/* Unpacks a w x h GL_DEPTH_COMPONENT client image of `type` into texels
+ * (x, y) of slice z of img; false for a type it does not convert. */
 bool fgl_tex_store_depth(struct fgl_context *ctx, struct fgl_texture_image *img,
                          const struct fgl_pixelstore *unpack, int x, int y, int z, int w,
-                         int h, GLenum format, GLenum type, const void *pixels);
+                         int h, GLenum type, const void *pixels);
 /* glGetTexImage(GL_DEPTH_COMPONENT, type) of slice z of img into dst */
 void fgl_tex_get_depth(struct fgl_context *ctx, const struct fgl_texture_image *img, int z,
                        GLenum type, void *dst);

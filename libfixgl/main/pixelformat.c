@@ -107,73 +107,6 @@ static int32_t unorm_to_snorm(uint32_t x, unsigned src_bits, unsigned dst_bits)
    return (int32_t)unorm_to_unorm(x, src_bits, dst_bits - 1);
 }
 
-/* [S: util/half_float.c:_mesa_half_to_float] */
-float fgl_half_to_float(uint16_t h)
-{
-   const uint32_t s = (uint32_t)(h >> 15) << 31;
-   const int e = (h >> 10) & 0x1f;
-   const uint32_t m = h & 0x3ff;
-   union { float f; uint32_t u; } v;
-   if (e == 0) {
-      v.f = (float)m * (1.0f / 16777216.0f);     /* denormal or zero */
-      v.u |= s;
-      return v.f;
-   }
-   if (e == 31)
-      v.u = s | 0x7f800000u | (m << 13);
-   else
-      v.u = s | ((uint32_t)(e - 15 + 127) << 23) | (m << 13);
-   return v.f;
-}
-
-/* [S: util/half_float.c:_mesa_float_to_half_slow] */
-uint16_t fgl_float_to_half(float val)
-{
-   union { float f; uint32_t u; } fi = {val};
-   const int flt_m = (int)(fi.u & 0x7fffff);
-   const int flt_e = (int)((fi.u >> 23) & 0xff);
-   const int s = (int)((fi.u >> 31) & 1);
-   int e, m = 0;
-   if (flt_e == 0) {
-      e = 0;
-   } else if (flt_e == 0xff) {
-      e = 31;
-      if (flt_m) {
-         m = flt_m >> 13;
-         if (!m)
-            m = 1;
-      }
-   } else {
-      const int new_exp = flt_e - 127;
-      if (new_exp < -14) {
-         e = 0;
-         m = (int)rintf((float)(1 << 24) * fabsf(fi.f));
-      } else if (new_exp > 15) {
-         e = 31;
-      } else {
-         e = new_exp + 15;
-         m = (int)rintf((float)flt_m / (float)(1 << 13));
-      }
-   }
-   if (m == 1024) {
-      ++e;
-      m = 0;
-   }
-   return (uint16_t)((s << 15) | (e << 10) | m);
-}
-
-/* [S: util/u_math.h:float_to_ubyte] */
-static uint8_t float_to_ubyte(float f)
-{
-   if (!(f > 0.0f))
-      return 0;
-   if (f >= 1.0f)
-      return 255;
-   union { float f; uint32_t u; } t;
-   t.f = f * (255.0f / 256.0f) + 32768.0f;
-   return (uint8_t)t.u;
-}
-
 /* macros.h CLAMPED_FLOAT_TO_UBYTE (the IEEE form) for a value in [0, 1] */
 static uint8_t clamped_float_to_ubyte(float f)
 {
@@ -300,11 +233,8 @@ const uint8_t *fgl_image_address(const struct fgl_pixelstore *p, const void *pix
  * an array format (every channel one `type`, `swz` giving for each of
  * R, G, B, A the channel or SWZ_ZERO/ONE) or a packed one (one word of
  * `bytes`, the bit field of R, G, B, A; bits 0 = absent). */
-enum packed_float { PF_NONE, PF_R11G11B10F, PF_RGB9E5 };
-
 struct layout {
    bool packed;
-   enum packed_float pf;      /* packed: one of the float formats */
    GLenum type;               /* array: the channel type */
    int nchan;
    uint8_t swz[4];
@@ -320,7 +250,6 @@ static bool format_swizzle(GLenum format, uint8_t swz[4])
       {GL_GREEN, {SWZ_ZERO, 0, SWZ_ZERO, SWZ_ONE}},
       {GL_BLUE, {SWZ_ZERO, SWZ_ZERO, 0, SWZ_ONE}},
       {GL_ALPHA, {SWZ_ZERO, SWZ_ZERO, SWZ_ZERO, 0}},
-      {GL_RG, {0, 1, SWZ_ZERO, SWZ_ONE}},
       {GL_RGB, {0, 1, 2, SWZ_ONE}},
       {GL_BGR, {2, 1, 0, SWZ_ONE}},
       {GL_RGBA, {0, 1, 2, 3}},
@@ -352,25 +281,17 @@ static bool packed_order(GLenum format, int pos[4])
    }
 }
 
-/* The layout of format/type; false if fixgl does not convert it (the
- * integer formats, GL_BITMAP, the float packed types, depth/stencil). */
+/* The layout of format/type; false if fixgl does not convert it
+ * (GL_BITMAP, depth/stencil).  The callers convert GL 1.5's colour formats
+ * and types only: GL_RG, the integer formats, GL_HALF_FLOAT and the packed
+ * float types are GL_INVALID_ENUM in fgl_error_check_format_and_type. */
 static bool get_layout(GLenum format, GLenum type, struct layout *l)
 {
    memset(l, 0, sizeof(*l));
-   if (type == 0x8D61)   /* GL_HALF_FLOAT_OES: the same array format */
-      type = GL_HALF_FLOAT;
    l->type = type;
    switch (type) {
-   case GL_UNSIGNED_INT_10F_11F_11F_REV:
-   case GL_UNSIGNED_INT_5_9_9_9_REV:
-      if (format != GL_RGB)
-         return false;
-      l->packed = true;
-      l->pf = type == GL_UNSIGNED_INT_5_9_9_9_REV ? PF_RGB9E5 : PF_R11G11B10F;
-      l->bytes = 4;
-      return true;
    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
-   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
+   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT:
       if (!format_swizzle(format, l->swz))
          return false;
       l->nchan = fgl_format_components(format);
@@ -432,123 +353,6 @@ static bool get_layout(GLenum format, GLenum type, struct layout *l)
    return false;
 }
 
-/* [S: util/format_r11g11b10f.h] */
-static uint32_t f32_to_ufloat(float val, int mbits, float maxval)
-{
-   union { float f; uint32_t u; } f32 = {val};
-   const int sign = (int)((f32.u >> 16) & 0x8000);
-   int exponent = (int)((f32.u >> 23) & 0xff) - 127;
-   int mantissa = (int)(f32.u & 0x007fffff);
-   uint32_t r = 0;
-   if (exponent == 128) {
-      r = 0x1fu << mbits;
-      if (mantissa)
-         r |= 1;
-      else if (sign)
-         r = 0;
-   } else if (sign) {
-      return 0;
-   } else if (val > maxval) {
-      r = (30u << mbits) | ((1u << mbits) - 1);
-   } else if (exponent > -15) {
-      exponent += 15;
-      mantissa >>= 23 - mbits;
-      r = (uint32_t)exponent << mbits | (uint32_t)mantissa;
-   }
-   return r;
-}
-
-static float ufloat_to_f32(uint32_t val, int mbits)
-{
-   union { float f; uint32_t u; } f32;
-   int exponent = (int)(val >> mbits) & 0x1f;
-   const int mantissa = (int)(val & ((1u << mbits) - 1));
-   f32.f = 0.0f;
-   if (exponent == 0) {
-      if (mantissa != 0) {
-         const float scale = (float)(1.0 / (1 << (mbits == 6 ? 20 : 19)));
-         f32.f = scale * (float)mantissa;
-      }
-   } else if (exponent == 31) {
-      f32.u = 0x7f800000u | (uint32_t)mantissa;
-   } else {
-      float scale;
-      exponent -= 15;
-      if (exponent < 0)
-         scale = 1.0f / (float)(1 << -exponent);
-      else
-         scale = (float)(1 << exponent);
-      const float decimal = 1.0f + (float)mantissa / (float)(1 << mbits);
-      f32.f = scale * decimal;
-   }
-   return f32.f;
-}
-
-/* [S: util/format_rgb9e5.h] */
-static uint32_t rgb9e5_clamp_range(float x)
-{
-   union { float f; uint32_t u; } f = {x}, max;
-   max.f = (float)511 / 512 * (1 << 16);
-   if (f.u > 0x7f800000u)
-      return 0;
-   else if (f.u >= max.u)
-      return max.u;
-   return f.u;
-}
-
-static uint32_t float3_to_rgb9e5(const float rgb[3])
-{
-   union { float f; uint32_t u; } rc, gc, bc, maxrgb, revdenom;
-   rc.u = rgb9e5_clamp_range(rgb[0]);
-   gc.u = rgb9e5_clamp_range(rgb[1]);
-   bc.u = rgb9e5_clamp_range(rgb[2]);
-   maxrgb.u = rc.u > gc.u ? rc.u : gc.u;
-   if (bc.u > maxrgb.u)
-      maxrgb.u = bc.u;
-   maxrgb.u += maxrgb.u & (1u << (23 - 9));
-   const int e = (int)(maxrgb.u >> 23);
-   const int exp_shared = (e > -15 - 1 + 127 ? e : -15 - 1 + 127) + 1 + 15 - 127;
-   revdenom.u = (uint32_t)(127 - (exp_shared - 15 - 9) + 1) << 23;
-   int rm = (int)(rc.f * revdenom.f);
-   int gm = (int)(gc.f * revdenom.f);
-   int bm = (int)(bc.f * revdenom.f);
-   rm = (rm & 1) + (rm >> 1);
-   gm = (gm & 1) + (gm >> 1);
-   bm = (bm & 1) + (bm >> 1);
-   return ((uint32_t)exp_shared << 27) | ((uint32_t)bm << 18) | ((uint32_t)gm << 9) |
-          (uint32_t)rm;
-}
-
-static void rgb9e5_to_float3(uint32_t rgb, float out[3])
-{
-   const int exponent = (int)(rgb >> 27) - 15 - 9;
-   union { float f; uint32_t u; } scale;
-   scale.u = (uint32_t)(exponent + 127) << 23;
-   out[0] = (float)(rgb & 0x1ff) * scale.f;
-   out[1] = (float)((rgb >> 9) & 0x1ff) * scale.f;
-   out[2] = (float)((rgb >> 18) & 0x1ff) * scale.f;
-}
-
-static void packed_float_to_float3(enum packed_float pf, uint32_t w, float out[3])
-{
-   if (pf == PF_RGB9E5) {
-      rgb9e5_to_float3(w, out);
-      return;
-   }
-   out[0] = ufloat_to_f32(w & 0x7ff, 6);
-   out[1] = ufloat_to_f32((w >> 11) & 0x7ff, 6);
-   out[2] = ufloat_to_f32((w >> 22) & 0x3ff, 5);
-}
-
-static uint32_t float3_to_packed_float(enum packed_float pf, const float rgb[3])
-{
-   if (pf == PF_RGB9E5)
-      return float3_to_rgb9e5(rgb);
-   return (f32_to_ufloat(rgb[0], 6, 65024.0f) & 0x7ff) |
-          ((f32_to_ufloat(rgb[1], 6, 65024.0f) & 0x7ff) << 11) |
-          ((f32_to_ufloat(rgb[2], 5, 64512.0f) & 0x3ff) << 22);
-}
-
 static uint32_t load_word(const uint8_t *src, size_t bytes)
 {
    if (bytes == 1)
@@ -602,7 +406,6 @@ static void load_channel(GLenum type, const uint8_t *px, int c, int64_t *iv, flo
    case GL_SHORT: { int16_t v; memcpy(&v, px + 2 * c, 2); *iv = v; break; }
    case GL_UNSIGNED_INT: { uint32_t v; memcpy(&v, px + 4 * c, 4); *iv = v; break; }
    case GL_INT: { int32_t v; memcpy(&v, px + 4 * c, 4); *iv = v; break; }
-   case GL_HALF_FLOAT: { uint16_t v; memcpy(&v, px + 2 * c, 2); *fv = fgl_half_to_float(v); break; }
    case GL_FLOAT: memcpy(fv, px + 4 * c, 4); break;
    default: break;
    }
@@ -621,7 +424,7 @@ static uint8_t channel_to_ubyte(GLenum type, const uint8_t *px, int c)
    case GL_SHORT: return (uint8_t)snorm_to_unorm((int32_t)i, 16, 8);
    case GL_UNSIGNED_INT: return (uint8_t)unorm_to_unorm((uint32_t)i, 32, 8);
    case GL_INT: return (uint8_t)snorm_to_unorm((int32_t)i, 32, 8);
-   default: return (uint8_t)float_to_unorm(f, 8);   /* GL_FLOAT, GL_HALF_FLOAT */
+   default: return (uint8_t)float_to_unorm(f, 8);   /* GL_FLOAT */
    }
 }
 
@@ -650,15 +453,6 @@ static void unpack_row_ubyte(const struct layout *l, const uint8_t *src, size_t 
                              uint8_t (*out)[4])
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
-      if (l->pf) {
-         /* u_format_other.c unpack_rgba_8unorm: float_to_ubyte */
-         float f[3];
-         packed_float_to_float3(l->pf, load_word(src, 4), f);
-         for (int c = 0; c < 3; c++)
-            out[i][c] = float_to_ubyte(f[c]);
-         out[i][3] = 255;
-         continue;
-      }
       if (l->packed) {
          const uint32_t w = load_word(src, l->bytes);
          for (int c = 0; c < 4; c++) {
@@ -684,11 +478,6 @@ static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t 
                              float (*out)[4])
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
-      if (l->pf) {
-         packed_float_to_float3(l->pf, load_word(src, 4), out[i]);
-         out[i][3] = 1.0f;
-         continue;
-      }
       if (l->packed) {
          const uint32_t w = load_word(src, l->bytes);
          for (int c = 0; c < 4; c++) {
@@ -723,7 +512,7 @@ static void store_channel_int(GLenum type, uint8_t *px, int ch, int64_t v)
 {
    switch (type) {
    case GL_UNSIGNED_BYTE: case GL_BYTE: px[ch] = (uint8_t)v; break;
-   case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: {
+   case GL_UNSIGNED_SHORT: case GL_SHORT: {
       const uint16_t s = (uint16_t)v;
       memcpy(px + 2 * ch, &s, 2);
       break;
@@ -743,13 +532,6 @@ static void pack_row_ubyte(const struct layout *l, const uint8_t (*in)[4], size_
                            uint8_t *dst)
 {
    for (size_t i = 0; i < n; i++, dst += l->bytes) {
-      if (l->pf) {
-         /* u_format_other.c pack_rgba_8unorm: ubyte_to_float first */
-         const float f[3] = {unorm_to_float(in[i][0], 8), unorm_to_float(in[i][1], 8),
-                             unorm_to_float(in[i][2], 8)};
-         store_word(dst, 4, float3_to_packed_float(l->pf, f));
-         continue;
-      }
       if (l->packed) {
          uint32_t w = 0;
          for (int c = 0; c < 4; c++)
@@ -768,9 +550,6 @@ static void pack_row_ubyte(const struct layout *l, const uint8_t (*in)[4], size_
          case GL_SHORT: store_channel_int(l->type, dst, ch, unorm_to_snorm(x, 8, 16)); break;
          case GL_UNSIGNED_INT: store_channel_int(l->type, dst, ch, unorm_to_unorm(x, 8, 32)); break;
          case GL_INT: store_channel_int(l->type, dst, ch, unorm_to_snorm(x, 8, 32)); break;
-         case GL_HALF_FLOAT:
-            store_channel_int(l->type, dst, ch, fgl_float_to_half(unorm_to_float(x, 8)));
-            break;
          case GL_FLOAT: {
             const float f = unorm_to_float(x, 8);
             memcpy(dst + 4 * ch, &f, 4);
@@ -789,10 +568,6 @@ static void pack_row_float(const struct layout *l, const float (*in)[4], size_t 
                            uint8_t *dst)
 {
    for (size_t i = 0; i < n; i++, dst += l->bytes) {
-      if (l->pf) {
-         store_word(dst, 4, float3_to_packed_float(l->pf, in[i]));
-         continue;
-      }
       if (l->packed) {
          uint32_t w = 0;
          for (int c = 0; c < 4; c++) {
@@ -817,7 +592,6 @@ static void pack_row_float(const struct layout *l, const float (*in)[4], size_t 
          case GL_SHORT: store_channel_int(l->type, dst, ch, float_to_snorm(x, 16)); break;
          case GL_UNSIGNED_INT: store_channel_int(l->type, dst, ch, float_to_unorm(x, 32)); break;
          case GL_INT: store_channel_int(l->type, dst, ch, float_to_snorm(x, 32)); break;
-         case GL_HALF_FLOAT: store_channel_int(l->type, dst, ch, fgl_float_to_half(x)); break;
          case GL_FLOAT: memcpy(dst + 4 * ch, &x, 4); break;
          default: break;
          }
@@ -962,7 +736,6 @@ void fgl_extract_uint_indexes(const struct fgl_pixelstore *p, size_t n, GLenum t
       break;
    case GL_UNSIGNED_SHORT:
    case GL_SHORT:
-   case GL_HALF_FLOAT:
       for (size_t i = 0; i < n; i++) {
          uint16_t v;
          memcpy(&v, s + 2 * i, 2);
@@ -970,16 +743,13 @@ void fgl_extract_uint_indexes(const struct fgl_pixelstore *p, size_t n, GLenum t
             v = swap16(v);
          if (type == GL_UNSIGNED_SHORT)
             index[i] = v;
-         else if (type == GL_SHORT)
+         else
             index[i] = (GLuint)(int16_t)v;
-         else   /* (GLuint) of the float: cvttss2si, truncated to 32 bits */
-            index[i] = (GLuint)(int64_t)fgl_half_to_float(v);
       }
       break;
    case GL_UNSIGNED_INT:
    case GL_INT:
    case GL_FLOAT:
-   case GL_UNSIGNED_INT_24_8:
       for (size_t i = 0; i < n; i++) {
          uint32_t v;
          memcpy(&v, s + 4 * i, 4);
@@ -992,8 +762,6 @@ void fgl_extract_uint_indexes(const struct fgl_pixelstore *p, size_t n, GLenum t
              * INT64_MIN past the range or NaN, then the low 32 bits */
             index[i] = f >= -9223372036854775808.0f && f < 9223372036854775808.0f
                           ? (GLuint)(int64_t)f : 0u;
-         } else if (type == GL_UNSIGNED_INT_24_8) {
-            index[i] = v & 0xff;
          } else {
             index[i] = v;
          }
@@ -1037,8 +805,7 @@ void fgl_unpack_depth_span_float(struct fgl_context *ctx, const struct fgl_pixel
          d = (float)s[i] / 255.0f;
          break;
       case GL_SHORT:
-      case GL_UNSIGNED_SHORT:
-      case GL_HALF_FLOAT: {
+      case GL_UNSIGNED_SHORT: {
          uint16_t v;
          memcpy(&v, s + 2 * i, 2);
          if (p->SwapBytes)
@@ -1047,11 +814,8 @@ void fgl_unpack_depth_span_float(struct fgl_context *ctx, const struct fgl_pixel
             const int16_t sv = (int16_t)v;
             d = sv == 0 ? 0.0f : (2.0f * sv + 1.0f) * (1.0f / 65535.0f);
             clamp = true;
-         } else if (type == GL_UNSIGNED_SHORT) {   /* USHORT_TO_FLOAT */
+         } else {   /* USHORT_TO_FLOAT */
             d = (float)v * (1.0f / 65535.0f);
-         } else {
-            d = fgl_half_to_float(v);
-            clamp = true;
          }
          break;
       }
@@ -1065,8 +829,6 @@ void fgl_unpack_depth_span_float(struct fgl_context *ctx, const struct fgl_pixel
             clamp = true;
          } else if (type == GL_UNSIGNED_INT) {   /* UINT_TO_FLOAT */
             d = (float)((float)v * (1.0f / 4294967295.0));
-         } else if (type == GL_UNSIGNED_INT_24_8) {
-            d = (float)(v >> 8) * (1.0f / 0xffffff);
          } else {      /* GL_FLOAT */
             memcpy(&d, &v, 4);
             clamp = true;
@@ -1116,20 +878,6 @@ void fgl_pack_depth_span(struct fgl_context *ctx, const struct fgl_pixelstore *p
          if (p->SwapBytes)
             v = swap16(v);
          memcpy(dst + 2 * i, &v, 2);
-         break;
-      }
-      case GL_HALF_FLOAT: {
-         uint16_t v = fgl_float_to_half(d);
-         if (p->SwapBytes)
-            v = swap16(v);
-         memcpy(dst + 2 * i, &v, 2);
-         break;
-      }
-      case GL_UNSIGNED_INT_24_8: {
-         uint32_t v = (uint32_t)((double)d * (double)0xffffff) << 8;
-         if (p->SwapBytes)
-            v = swap32(v);
-         memcpy(dst + 4 * i, &v, 4);
          break;
       }
       case GL_UNSIGNED_INT: {     /* FLOAT_TO_UINT: (GLuint)(X * 4294967295.0) */
@@ -1193,8 +941,8 @@ void fgl_pack_stencil_span(struct fgl_context *ctx, const struct fgl_pixelstore 
       switch (type) {
       case GL_UNSIGNED_BYTE: dst[i] = s[i]; break;
       case GL_BYTE: dst[i] = (uint8_t)(s[i] & 0x7f); break;
-      case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: {
-         uint16_t v = type == GL_HALF_FLOAT ? fgl_float_to_half((float)s[i]) : s[i];
+      case GL_UNSIGNED_SHORT: case GL_SHORT: {
+         uint16_t v = s[i];
          if (p->SwapBytes)
             v = swap16(v);
          memcpy(dst + 2 * i, &v, 2);
@@ -1441,7 +1189,7 @@ static uint32_t channel_to_unorm16(GLenum type, const uint8_t *px, int c)
    case GL_SHORT: return snorm_to_unorm((int32_t)i, 16, 16);
    case GL_UNSIGNED_INT: return unorm_to_unorm((uint32_t)i, 32, 16);
    case GL_INT: return snorm_to_unorm((int32_t)i, 32, 16);
-   default: return float_to_unorm(f, 16);   /* GL_FLOAT; GL_HALF_FLOAT: _mesa_half_to_unorm */
+   default: return float_to_unorm(f, 16);   /* GL_FLOAT */
    }
 }
 
@@ -1496,7 +1244,7 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
       path = VIA_UBYTE;
    else if (ops || rgba_float)
       path = VIA_FLOAT;
-   else if (array16 && !l.packed && !l.pf)
+   else if (array16 && !l.packed)
       path = DIRECT16;
    else if (!array16 && (rgba8 || maxbits <= 8))
       path = VIA_UBYTE;
@@ -1617,7 +1365,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
        * destination of a type that cannot hold negative values */
       ops = 0;
       const bool signed_type = type == GL_BYTE || type == GL_SHORT || type == GL_INT ||
-                               type == GL_FLOAT || type == GL_HALF_FLOAT;
+                               type == GL_FLOAT;
       if (!signed_type && lum)
          ops |= FGL_IMAGE_CLAMP_BIT;
    }
@@ -1722,7 +1470,7 @@ static uint8_t stored_to_ubyte(uint32_t v, unsigned bits)
  *    RGBA, clamped, then float to the destination;
  *  - a 16-bit array format to a plain GL type: channel by channel from
  *    unorm16 (_mesa_swizzle_and_convert: _mesa_unorm_to_unorm/_snorm,
- *    _mesa_unorm_to_float, _mesa_unorm_to_half);
+ *    _mesa_unorm_to_float);
  *  - otherwise (a packed texture format or a packed type) through an
  *    RGBA intermediate: float when the destination is signed, float or
  *    wider than 8 bits (its type size for a plain type, its widest field
@@ -1745,7 +1493,7 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
    const size_t count = (size_t)width * (size_t)height;
    const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
    const bool signed_type = type == GL_BYTE || type == GL_SHORT || type == GL_INT ||
-                            type == GL_FLOAT || type == GL_HALF_FLOAT || type == 0x8D61;
+                            type == GL_FLOAT;
    const bool clamp = lum && !signed_type;
 
    /* the rebase (teximage_needs_rebase): L and I read as (L, 0, 0, 1), LA
@@ -1785,12 +1533,10 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
    }
    const size_t stride = fgl_image_row_stride(p, width, format, type);
    uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
-   const bool dst_array = !l.packed && !l.pf;
+   const bool dst_array = !l.packed;
    bool via_float;
    if (dst_array) {
       via_float = signed_type || type_size(l.type) > 1;
-   } else if (l.pf) {
-      via_float = true;   /* a float format: GL_FLOAT datatype, signed */
    } else {
       int maxbits = 0;
       for (int c = 0; c < 4; c++)
@@ -1807,7 +1553,7 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
             for (int ch = 0; ch < l.nchan; ch++) {
                const int c = rgba_of_channel(&l, ch);
                /* a constant 1 converts as unorm16 0xffff does, but for
-                * float/half: exactly 1.0 */
+                * float: exactly 1.0 */
                const bool konst = c < 0 || b[i][c] == 0;
                const uint32_t x16 = c < 0 ? 0 : konst ? (v[i][c] ? 0xffffu : 0u) : v[i][c];
                switch (l.type) {
@@ -1817,11 +1563,6 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
                case GL_SHORT: store_channel_int(l.type, dst, ch, unorm_to_snorm(x16, 16, 16)); break;
                case GL_UNSIGNED_INT: store_channel_int(l.type, dst, ch, unorm_to_unorm(x16, 16, 32)); break;
                case GL_INT: store_channel_int(l.type, dst, ch, unorm_to_snorm(x16, 16, 32)); break;
-               case GL_HALF_FLOAT: case 0x8D61: {
-                  const float f = konst ? (x16 ? 1.0f : 0.0f) : unorm_to_float(x16, 16);
-                  store_channel_int(GL_HALF_FLOAT, dst, ch, fgl_float_to_half(f));
-                  break;
-               }
                case GL_FLOAT: {
                   const float f = konst ? (x16 ? 1.0f : 0.0f) : unorm_to_float(x16, 16);
                   memcpy(dst + 4 * ch, &f, 4);
@@ -1956,27 +1697,12 @@ bool fgl_is_color_format(GLenum format)
    }
 }
 
-static bool is_integer_format(GLenum format)
-{
-   switch (format) {
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RG_INTEGER: case GL_RGB_INTEGER: case GL_BGR_INTEGER:
-   case GL_RGBA_INTEGER: case GL_BGRA_INTEGER: case GL_LUMINANCE_INTEGER_EXT:
-   case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return true;
-   default:
-      return false;
-   }
-}
-
-static bool is_basic_type(GLenum type, bool half)
+static bool is_basic_type(GLenum type)
 {
    switch (type) {
    case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT:
    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT:
       return true;
-   case GL_HALF_FLOAT:
-      return half;
    default:
       return false;
    }
@@ -2025,11 +1751,8 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
    (void)ctx;
    if (foreign_format(format) || foreign_type(type))
       return GL_INVALID_ENUM;
-   if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8 &&
-       type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
-      return GL_INVALID_ENUM;
 
-   /* special type-based checks */
+   /* special type-based checks (the foreign formats and types gone) */
    switch (type) {
    case GL_BITMAP:
       if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
@@ -2037,53 +1760,36 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       break;
    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
    case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      if (format == GL_RGB || format == GL_RGB_INTEGER)
+      if (format == GL_RGB)
          break;
       return GL_INVALID_OPERATION;
    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
    case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT ||
-          format == GL_RGBA_INTEGER || format == GL_BGRA_INTEGER)
+      if (format == GL_RGBA || format == GL_BGRA || format == GL_ABGR_EXT)
          break;
       return GL_INVALID_OPERATION;
    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
    case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-      if (format == GL_RGBA || format == GL_BGRA || format == GL_RGBA_INTEGER ||
-          format == GL_BGRA_INTEGER)
+      if (format == GL_RGBA || format == GL_BGRA)
          break;
       return GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_24_8:
-   case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
-      return format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case GL_UNSIGNED_INT_10F_11F_11F_REV:
-      return format == GL_RGB ? GL_NO_ERROR : GL_INVALID_OPERATION;
-   case 0x8D61: /* GL_HALF_FLOAT_OES */
-      switch (format) {
-      case GL_RGBA: case GL_RGB: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE:
-      case GL_ALPHA: case GL_RG: case GL_RED:
-         return GL_NO_ERROR;
-      default:
-         return GL_INVALID_OPERATION;
-      }
    default:
       break;
    }
 
    switch (format) {
    case GL_COLOR_INDEX: case GL_STENCIL_INDEX:
-      return is_basic_type(type, true) || type == GL_BITMAP ? GL_NO_ERROR : GL_INVALID_ENUM;
+      return is_basic_type(type) || type == GL_BITMAP ? GL_NO_ERROR : GL_INVALID_ENUM;
    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
-   case GL_LUMINANCE_ALPHA: case GL_DEPTH_COMPONENT: case GL_RG:
-   case GL_BGR:
-      return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+   case GL_LUMINANCE_ALPHA: case GL_DEPTH_COMPONENT: case GL_BGR:
+      return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
    case GL_RGB:
       switch (type) {
       case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
       case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-      case GL_UNSIGNED_INT_5_9_9_9_REV: case GL_UNSIGNED_INT_10F_11F_11F_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    case GL_RGBA: case GL_BGRA:
       switch (type) {
@@ -2093,7 +1799,7 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    case GL_ABGR_EXT:
       switch (type) {
@@ -2101,40 +1807,9 @@ GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum for
       case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
          return GL_NO_ERROR;
       default:
-         return is_basic_type(type, true) ? GL_NO_ERROR : GL_INVALID_ENUM;
-      }
-   case GL_DEPTH_STENCIL:
-      return GL_NO_ERROR;   /* the types were checked above */
-   case GL_RED_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RG_INTEGER: case GL_BGR_INTEGER:
-   case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
-      return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR : GL_INVALID_ENUM;
-   case GL_RGB_INTEGER:
-      switch (type) {
-      case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV:
-      case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_5_6_5_REV:
-         return GL_NO_ERROR;
-      default:
-         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
-                                                               : GL_INVALID_ENUM;
-      }
-   case GL_RGBA_INTEGER: case GL_BGRA_INTEGER:
-      switch (type) {
-      case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-      case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-      case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
-      case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
-         return GL_NO_ERROR;
-      default:
-         return is_basic_type(type, false) && type != GL_FLOAT ? GL_NO_ERROR
-                                                               : GL_INVALID_ENUM;
+         return is_basic_type(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
       }
    default:
       return GL_INVALID_ENUM;
    }
-}
-
-bool fgl_is_integer_format(GLenum format)
-{
-   return is_integer_format(format);
 }

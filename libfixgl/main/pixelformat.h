@@ -61,16 +61,11 @@ bool fgl_unpack_texels_stored(struct fgl_context *ctx, const struct fgl_pixelsto
 GLenum fgl_error_check_format_and_type(const struct fgl_context *ctx, GLenum format,
                                        GLenum type);
 
-/* [S: glformats.c:_mesa_is_color_format, _mesa_is_enum_format_integer].
- * fixgl converts the colour formats of the check above (incl. GL_RG and
- * GL_ABGR_EXT), GL_COLOR_INDEX, GL_STENCIL_INDEX and GL_DEPTH_COMPONENT;
- * the integer formats pass the check but are not converted. */
+/* [S: glformats.c:_mesa_is_color_format].  The check above passes GL
+ * 1.5's client formats only (no GL_RG, no integer formats: they raise
+ * GL_INVALID_ENUM), so no later integer-format check is needed. */
 bool fgl_is_color_format(GLenum format);
-bool fgl_is_integer_format(GLenum format);
 
-/* [S: util/half_float.c] */
-float fgl_half_to_float(uint16_t h);
-uint16_t fgl_float_to_half(float f);
 
 /* ------------------------------------------------------------------ */
 /* Pixel transfer                                                      */

@@ -3,8 +3,9 @@
  * state_tracker/st_cb_readpixels.c:st_ReadPixels, which on llvmpipe (no
  * PIPE_CAP_TEXTURE_TRANSFER_MODES) always falls back to _mesa_readpixels].
  * Every colour format and type (the conversions are in pixelformat.c),
- * GL_DEPTH_COMPONENT, GL_STENCIL_INDEX and GL_DEPTH_STENCIL in every type
- * the oracle takes, with the pack state and the pixel transfer
+ * GL_DEPTH_COMPONENT and GL_STENCIL_INDEX in every type the oracle takes
+ * (GL_DEPTH_STENCIL, GL_RG and the integer formats are not GL 1.5's:
+ * GL_INVALID_ENUM), with the pack state and the pixel transfer
  * operations.  The rectangle is first clipped to the buffer
  * (image.c:_mesa_clip_readpixels, which moves SKIP_PIXELS/SKIP_ROWS and
  * sets ROW_LENGTH to the width when 0); pixels outside are not written.
@@ -72,14 +73,9 @@ static bool source_buffer_exists(const struct fgl_context *ctx,
       return fb->DepthBits > 0;
    case GL_STENCIL_INDEX:
       return fb->StencilBits > 0;
-   case GL_DEPTH_STENCIL:
-      return fb->DepthBits > 0 && fb->StencilBits > 0;
    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
-   case GL_LUMINANCE_ALPHA: case GL_INTENSITY: case GL_RG: case GL_RGB: case GL_BGR:
+   case GL_LUMINANCE_ALPHA: case GL_INTENSITY: case GL_RGB: case GL_BGR:
    case GL_RGBA: case GL_BGRA: case GL_ABGR_EXT:
-   case GL_RED_INTEGER: case GL_RG_INTEGER: case GL_GREEN_INTEGER: case GL_BLUE_INTEGER:
-   case GL_ALPHA_INTEGER: case GL_RGB_INTEGER: case GL_RGBA_INTEGER: case GL_BGR_INTEGER:
-   case GL_BGRA_INTEGER: case GL_LUMINANCE_INTEGER_EXT: case GL_LUMINANCE_ALPHA_INTEGER_EXT:
       /* no colour buffer to read under glReadBuffer(GL_NONE) */
       return ctx->Pixel.ReadBuffer != GL_NONE;
    default:   /* GL_COLOR_INDEX: no index buffer */
@@ -227,73 +223,6 @@ static void read_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *
    fgl_free(s);
 }
 
-static void read_depth_stencil(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
-                               const struct read_rect *r, const struct fgl_pixelstore *pack,
-                               GLenum type, void *pixels)
-{
-   const struct fgl_pixel_attrib *px = &ctx->Pixel;
-   const bool scale_bias = px->DepthScale != 1.0f || px->DepthBias != 0.0f;
-   const bool stencil_transfer = px->IndexShift || px->IndexOffset || px->MapStencilFlag;
-   /* [S: readpix.c:read_depth_stencil_pixels] */
-   const bool fast = type == GL_UNSIGNED_INT_24_8 && !scale_bias && !stencil_transfer &&
-                     !pack->SwapBytes;
-   const size_t n = (size_t)r->width;
-   float *z = fgl_malloc_gl(ctx, n * sizeof(float));
-   uint8_t *s = fgl_malloc_gl(ctx, n);
-   if (!z || !s) {
-      fgl_free(z);
-      fgl_free(s);
-      fgl_error(ctx, GL_OUT_OF_MEMORY);
-      return;
-   }
-   for (GLsizei j = 0; j < r->height; j++) {
-      const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
-      const size_t idx0 = row * (size_t)fb->Width + (size_t)r->x;
-      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, r->width, GL_DEPTH_STENCIL,
-                                                  type, j, 0);
-      if (fast) {
-         /* fast_read_depth_stencil_pixels: z24 << 8 | s */
-         for (size_t i = 0; i < n; i++) {
-            const uint32_t v = (depth_at(fb, idx0 + i) << 8) | stencil_at(fb, idx0 + i);
-            memcpy(dst + 4 * i, &v, 4);
-         }
-         continue;
-      }
-      /* slow_read_depth_stencil_pixels_separate, pack.c:
-       * _mesa_pack_depth_stencil_span */
-      for (size_t i = 0; i < n; i++) {
-         z[i] = depth_float_at(fb, idx0 + i);
-         s[i] = stencil_at(fb, idx0 + i);
-         if (scale_bias) {
-            const float d = z[i] * px->DepthScale + px->DepthBias;
-            z[i] = d < 0.0f ? 0.0f : d > 1.0f ? 1.0f : d;
-         }
-      }
-      if (stencil_transfer)
-         fgl_apply_stencil_transfer_ops(ctx, n, s);
-      for (size_t i = 0; i < n; i++) {
-         if (type == GL_UNSIGNED_INT_24_8) {
-            const uint32_t v = ((uint32_t)(z[i] * (float)0xffffff) << 8) | s[i];
-            memcpy(dst + 4 * i, &v, 4);
-         } else {
-            const uint32_t sv = s[i];
-            memcpy(dst + 8 * i, &z[i], 4);
-            memcpy(dst + 8 * i + 4, &sv, 4);
-         }
-      }
-      /* _mesa_swap4(dest, n): n words, half of the float/uint pairs */
-      if (pack->SwapBytes) {
-         for (size_t i = 0; i < n; i++) {
-            uint8_t *w = dst + 4 * i;
-            uint8_t t = w[0]; w[0] = w[3]; w[3] = t;
-            t = w[1]; w[1] = w[2]; w[2] = t;
-         }
-      }
-   }
-   fgl_free(z);
-   fgl_free(s);
-}
-
 void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
                              GLenum format, GLenum type, GLvoid *pixels)
 {
@@ -329,11 +258,6 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       return;
    }
    if (!source_buffer_exists(ctx, fb, format)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
-   /* integer formats from the normalized colour buffer */
-   if (fgl_is_color_format(format) && fgl_is_integer_format(format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -375,9 +299,6 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       break;
    case GL_STENCIL_INDEX:
       read_stencil(ctx, fb, &r, &pack, type, pixels);
-      break;
-   case GL_DEPTH_STENCIL:
-      read_depth_stencil(ctx, fb, &r, &pack, type, pixels);
       break;
    default:
       read_color(ctx, fb, &r, &pack, format, type, pixels);

@@ -98,76 +98,13 @@ static void unpack_depth_row(struct fgl_context *ctx, const struct fgl_pixelstor
       dst[i] = (uint32_t)(tmp[i] * max);
 }
 
-/* [S: pack.c:_mesa_unpack_depth_span] the depth of GL_DEPTH_STENCIL data:
- * GL_UNSIGNED_INT_24_8 (its top 24 bits: into 24 bits as they are, else
- * (v >> 8) * (1.0f / 0xffffff)) and GL_FLOAT_32_UNSIGNED_INT_24_8_REV (the
- * float of each pair, clamped), then the transfer and the conversion of
- * unpack_depth_row */
-static void unpack_depth_stencil_row(struct fgl_context *ctx, const struct fgl_pixelstore *p,
-                                     int n, GLenum type, const uint8_t *src, int bits,
-                                     float *tmp, uint32_t *dst)
-{
-   const float scale = ctx->Pixel.DepthScale, bias = ctx->Pixel.DepthBias;
-   const bool identity = scale == 1.0f && bias == 0.0f;
-   bool clamp = !identity;
-   for (int i = 0; i < n; i++) {
-      uint32_t v;
-      memcpy(&v, src + (type == GL_UNSIGNED_INT_24_8 ? 4 : 8) * (size_t)i, 4);
-      if (p->SwapBytes)
-         v = __builtin_bswap32(v);
-      if (type == GL_UNSIGNED_INT_24_8) {
-         if (identity && bits == 24) {
-            dst[i] = v >> 8;
-            continue;
-         }
-         tmp[i] = (float)(v >> 8) * (1.0f / 0xffffff);
-      } else {
-         memcpy(&tmp[i], &v, 4);
-         clamp = true;
-      }
-      if (!identity)
-         tmp[i] = tmp[i] * scale + bias;
-   }
-   if (identity && bits == 24 && type == GL_UNSIGNED_INT_24_8)
-      return;
-   for (int i = 0; i < n; i++) {
-      float d = tmp[i];
-      if (clamp)
-         d = d > 0.0f ? (d > 1.0f ? 1.0f : d) : 0.0f;
-      if (bits == 32) {
-         const double zd = (double)d * 4294967295.0;
-         dst[i] = zd >= 4294967295.0 ? 0xffffffffu : (uint32_t)zd;
-      } else {
-         dst[i] = (uint32_t)(d * (bits == 16 ? 65535.0f : (float)0xffffff));
-      }
-   }
-}
-
 bool fgl_tex_store_depth(struct fgl_context *ctx, struct fgl_texture_image *img,
                          const struct fgl_pixelstore *unpack, int x, int y, int z, int w,
-                         int h, GLenum format, GLenum type, const void *pixels)
+                         int h, GLenum type, const void *pixels)
 {
-   if (format == GL_DEPTH_STENCIL) {
-      if (type != GL_UNSIGNED_INT_24_8 && type != GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
-         return false;
-      float *tmp = fgl_malloc_gl(ctx, (size_t)w * sizeof(float));
-      if (!tmp) {
-         fgl_error(ctx, GL_OUT_OF_MEMORY);
-         return true;
-      }
-      const int bits = fgl_tex_image_depth_bits(img);
-      for (int j = 0; j < h; j++) {
-         const uint8_t *src = fgl_image_address(unpack, pixels, w, format, type, j, 0);
-         const size_t at = ((size_t)z * (size_t)img->Height + (size_t)(y + j)) *
-                              (size_t)img->Width + (size_t)x;
-         unpack_depth_stencil_row(ctx, unpack, w, type, src, bits, tmp, img->ZValues + at);
-      }
-      fgl_free(tmp);
-      return true;
-   }
    switch (type) {
    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
-   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_HALF_FLOAT:
+   case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT:
       break;
    default:
       return false;

@@ -643,7 +643,7 @@ static bool store_rect(struct fgl_context *ctx, struct fgl_texture_image *img,
       return true;
    const size_t slice = (size_t)z * (size_t)img->Height;
    if (img->ZValues) {
-      if (!fgl_tex_store_depth(ctx, img, unpack, x, y, z, w, h, format, type, pixels)) {
+      if (!fgl_tex_store_depth(ctx, img, unpack, x, y, z, w, h, type, pixels)) {
          fgl_error(ctx, GL_INVALID_ENUM);
          return false;
       }
@@ -1195,7 +1195,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if (!formats_agree(internal, format) || fgl_is_integer_format(format)) {
+   if (!formats_agree(internal, format)) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
@@ -1396,10 +1396,6 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    if (sub_dimensions_error(ctx, dims, img, xoff, yoff, zoff, width, height, depth) ||
        block_alignment_error(ctx, img, xoff, yoff, width, height))
       return;
-   if (fgl_is_integer_format(format)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
    /* [S: teximage.c:texture_sub_image] FLUSH_VERTICES after every check
     * (an erroneous call leaves the vertex format alone: a glTexCoord4f,
     * glTexCoord3f after it keeps q), then nothing to store for an empty
@@ -1763,7 +1759,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    const bool depth_image = img->BaseFormat == GL_DEPTH_COMPONENT;
    if (depth_image ? !is_depth_format(format)
                    : is_depth_format(format) || is_depthstencil_format(format) ||
-                        format == GL_STENCIL_INDEX || fgl_is_integer_format(format)) {
+                        format == GL_STENCIL_INDEX) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }

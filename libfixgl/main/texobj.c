@@ -27,10 +27,9 @@ static void init_object(struct fgl_texture_object *t, GLuint name, GLenum target
    memset(t, 0, sizeof(*t));
    t->Name = name;
    t->Target = target;
-   const bool rect = target == GL_TEXTURE_RECTANGLE;
-   t->MinFilter = rect ? GL_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+   t->MinFilter = GL_NEAREST_MIPMAP_LINEAR;
    t->MagFilter = GL_LINEAR;
-   t->WrapS = t->WrapT = t->WrapR = rect ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+   t->WrapS = t->WrapT = t->WrapR = GL_REPEAT;
    t->Priority = 1.0f;
    t->MinLod = -1000.0f;
    t->MaxLod = 1000.0f;
@@ -43,8 +42,6 @@ static void init_object(struct fgl_texture_object *t, GLuint name, GLenum target
 static const GLenum index_target[FGL_TEX_TARGETS] = {
    [FGL_TEX_1D] = GL_TEXTURE_1D, [FGL_TEX_2D] = GL_TEXTURE_2D,
    [FGL_TEX_3D] = GL_TEXTURE_3D, [FGL_TEX_CUBE] = GL_TEXTURE_CUBE_MAP,
-   [FGL_TEX_RECT] = GL_TEXTURE_RECTANGLE, [FGL_TEX_1D_ARRAY] = GL_TEXTURE_1D_ARRAY,
-   [FGL_TEX_2D_ARRAY] = GL_TEXTURE_2D_ARRAY, [FGL_TEX_CUBE_ARRAY] = GL_TEXTURE_CUBE_MAP_ARRAY,
 };
 
 /* [S: shared.c:_mesa_alloc_shared_state] the object table and the
@@ -132,10 +129,10 @@ void fgl_share_texobjs(struct fgl_context *ctx, struct fgl_context *share)
 /* [S: texobj.c:_mesa_tex_target_to_index] -1 for other targets.  GL
  * 1.5's targets only: the oracle's rectangle and array targets are not
  * enums of GL 1.5 without those extensions (README "Version and
- * honesty"); their default objects stay, never bound. */
+ * honesty"), so no object ever has them. */
 static int target_index(GLenum target)
 {
-   for (int i = 0; i <= FGL_TEX_CUBE; i++)
+   for (int i = 0; i < FGL_TEX_TARGETS; i++)
       if (index_target[i] == target)
          return i;
    return -1;
@@ -336,14 +333,10 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
             return;
          }
          if (t->Target == 0) {
-            /* [S: texobj.c:finish_texture_init] the target; a rectangle
-             * gets its clamped wraps and linear filters, other parameters
-             * (a priority set before the first bind) stay */
+            /* [S: texobj.c:finish_texture_init] the target (the
+             * rectangle's clamped wraps and linear filters do not arise);
+             * other parameters (a priority set before the first bind) stay */
             t->Target = target;
-            if (target == GL_TEXTURE_RECTANGLE) {
-               t->WrapS = t->WrapT = t->WrapR = GL_CLAMP_TO_EDGE;
-               t->MinFilter = t->MagFilter = GL_LINEAR;
-            }
          }
       } else if (!(t = insert(ctx, texture, target))) {
          pthread_mutex_unlock(&ctx->TexObjects->Lock);
@@ -505,12 +498,10 @@ static struct fgl_texture_object *param_object(struct fgl_context *ctx, GLenum t
 }
 
 /* [S: texparam.c:validate_texture_wrap_mode] */
-static bool valid_wrap(const struct fgl_texture_object *t, GLint wrap)
+static bool valid_wrap(GLint wrap)
 {
    if (wrap == GL_CLAMP || wrap == GL_CLAMP_TO_EDGE || wrap == GL_CLAMP_TO_BORDER)
       return true;
-   if (t->Target == GL_TEXTURE_RECTANGLE)
-      return false;
    return wrap == GL_REPEAT || wrap == GL_MIRRORED_REPEAT ||
           wrap == GL_MIRROR_CLAMP_EXT || wrap == GL_MIRROR_CLAMP_TO_EDGE ||
           wrap == GL_MIRROR_CLAMP_TO_BORDER_EXT;
@@ -531,9 +522,6 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
       case GL_LINEAR_MIPMAP_NEAREST:
       case GL_NEAREST_MIPMAP_LINEAR:
       case GL_LINEAR_MIPMAP_LINEAR:
-         if (t->Target == GL_TEXTURE_RECTANGLE)
-            break;
-         /* fallthrough */
       case GL_NEAREST:
       case GL_LINEAR:
          tex_flush(ctx);
@@ -558,10 +546,6 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
    case GL_TEXTURE_BASE_LEVEL:
       if (t->BaseLevel == v)
          return;
-      if (t->Target == GL_TEXTURE_RECTANGLE && v != 0) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
       if (v < 0) {
          fgl_error(ctx, GL_INVALID_VALUE);
          return;
@@ -572,7 +556,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
    case GL_TEXTURE_MAX_LEVEL:
       if (t->MaxLevel == v)
          return;
-      if (v < 0 || (t->Target == GL_TEXTURE_RECTANGLE && v > 0)) {
+      if (v < 0) {
          fgl_error(ctx, GL_INVALID_VALUE);
          return;
       }
@@ -623,7 +607,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
    }
    if ((GLint)*wrap == v)
       return;
-   if (!valid_wrap(t, v)) {
+   if (!valid_wrap(v)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }

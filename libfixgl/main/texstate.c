@@ -159,8 +159,8 @@ void fgl_update_texture_matrices(struct fgl_context *ctx)
 }
 
 /* [S: texstate.c:update_ff_texture_state] targets in priority order,
- * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.
- * Rectangle textures have no images in fixgl, so they cannot texture. */
+ * cube map, 3D, rectangle, 2D, 1D; the first complete one wins.  fixgl
+ * has no rectangle target (GL_INVALID_ENUM: not GL 1.5's). */
 void fgl_update_texture_state(struct fgl_context *ctx)
 {
    static const GLenum targets[] = { GL_TEXTURE_CUBE_MAP, GL_TEXTURE_3D, GL_TEXTURE_2D,

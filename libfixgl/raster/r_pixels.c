@@ -112,10 +112,6 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
        * replaces gl_Color; scale and bias, then the maps */
       float c[4];
       memcpy(c, pix->texels + 4 * idx, sizeof(c));
-      if (pix->raw_color) {
-         r_fragment_ops(rs, px, py, z, c);
-         return;
-      }
       if (pix->scale_bias)
          for (int k = 0; k < 4; k++)
             c[k] = c[k] * pix->scale[k] + pix->bias[k];
@@ -143,15 +139,7 @@ void r_pixel_fragment(const struct r_state *rs, int px, int py, const float in[]
    case R_PIX_DEPTH:
       /* [S: st_cb_drawpixels.c:make_drawpix_z_stencil_program_nir] depth
        * from the texture, the vertex colour as is */
-      if (pix->with_stencil) {
-         struct r_dsa_state dsa = *rs->dsa;
-         struct r_state s = *rs;
-         dsa.stencil_ref = pix->mask[idx];
-         s.dsa = &dsa;
-         r_fragment_ops(&s, px, py, pix->texels[idx], in[R_FS_COLOR0]);
-      } else {
-         r_fragment_ops(rs, px, py, pix->texels[idx], in[R_FS_COLOR0]);
-      }
+      r_fragment_ops(rs, px, py, pix->texels[idx], in[R_FS_COLOR0]);
       return;
    case R_PIX_STENCIL:
    default: {

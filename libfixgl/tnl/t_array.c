@@ -316,8 +316,8 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
     * vertices or a position array */
    if (count == 0)
       return;
-   if (mode > GL_POLYGON)
-      return;   /* adjacency modes: not drawn yet (as glBegin) */
+   /* mode: one of GL 1.5's ten (every caller, varray.c's draws, raised
+    * GL_INVALID_ENUM above GL_POLYGON) */
    /* the indices: the client's (none: nothing drawn) or the element
     * buffer's */
    struct t_index_source isrc = { 0 };
