@@ -1571,6 +1571,80 @@ static void long_array_draws(fc_h *h)
     glDisable(GL_DEPTH_TEST);
 }
 
+/* glBitmap with a negative size, compiled: the oracle makes its texture
+ * from the sizes as unsigned (the height's low 16 bits) and raises
+ * GL_OUT_OF_MEMORY when that needs more than 2 GiB, without compiling or
+ * executing the call; smaller ones compile and raise GL_INVALID_VALUE when
+ * executed (the API fuzzer's seed 1000699; probe p_bitmap_compile_negative).
+ * No size here is one that crashes the oracle (a positive width with a
+ * negative height whose texture it can make). */
+static void bitmap_negative_compile_sizes(fc_h *h)
+{
+    static const GLsizei sizes[][2] = {
+        { -64, 1 }, { -2147483647 - 1, 308 }, { -63, 308 }, { -64, 0 },
+        { -64, -2147483647 - 1 }, { -64, -65535 }, { 100000, -1 },
+        { 40000, -2147483647 + 3 }, { -1000, -1 }, { -1, -2147483647 - 1 },
+    };
+    GLubyte b[64];
+    pattern_bits(b, 64);
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glColor3f(1, 1, 1);
+    glRasterPos2i(4, 4);
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        glNewList(1, GL_COMPILE);
+        glBitmap(sizes[i][0], sizes[i][1], 0, 0, 1, 2, b);
+        fc_error(h, "compiled");
+        glBitmap(8, 8, 0, 0, 9, 1, b);
+        glEndList();
+        glCallList(1);
+        fc_error(h, "called");
+        glNewList(2, GL_COMPILE_AND_EXECUTE);
+        glBitmap(sizes[i][0], sizes[i][1], 0, 0, 1, 2, b);
+        fc_error(h, "compiled and executed");
+        glEndList();
+        glCallList(2);
+        fc_error(h, "called 2");
+        fc_get_float(h, "raster pos", GL_CURRENT_RASTER_POSITION, 4);
+    }
+    fc_capture(h);
+}
+
+/* glGet(GL_TRANSPOSE_TEXTURE_MATRIX) reads texture unit 0's matrix on
+ * every active unit (the oracle's get table: CONTEXT_MATRIX_T of the
+ * first stack), GL_TEXTURE_MATRIX the active unit's (the API fuzzer's
+ * seed 1000655: glActiveTexture, glMatrixMode, glScaled; probe
+ * p_transpose_texmat). */
+static void transpose_texture_matrix_unit(fc_h *h)
+{
+    static const GLenum units[4] = { GL_TEXTURE1, GL_TEXTURE0, GL_TEXTURE3, GL_TEXTURE7 };
+    glMatrixMode(GL_TEXTURE);
+    glActiveTexture(GL_TEXTURE0);
+    glScaled(1e20, -3.5, 0.25);
+    glTranslated(2, 0, -1);
+    glActiveTexture(GL_TEXTURE1);
+    glRotated(30, 0, 0, 1);
+    glActiveTexture(GL_TEXTURE3);
+    glScaled(2, 2, 2);
+    fc_error(h, "matrices");
+    for (int i = 0; i < 4; i++) {
+        glActiveTexture(units[i]);
+        fc_get_float(h, "texture matrix", GL_TEXTURE_MATRIX, 16);
+        fc_get_float(h, "transpose texture matrix", GL_TRANSPOSE_TEXTURE_MATRIX, 16);
+        fc_get_double(h, "transpose texture matrix (double)", GL_TRANSPOSE_TEXTURE_MATRIX, 16);
+        fc_get_integer(h, "transpose texture matrix (int)", GL_TRANSPOSE_TEXTURE_MATRIX, 16);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glLoadIdentity();
+    glActiveTexture(GL_TEXTURE1);
+    fc_get_float(h, "transpose after unit 0 reset", GL_TRANSPOSE_TEXTURE_MATRIX, 16);
+    glLoadIdentity();
+    glActiveTexture(GL_TEXTURE3);
+    glLoadIdentity();
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_MODELVIEW);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -1614,5 +1688,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("compile_execute_inside_begin", 64, 64, 1, compile_execute_inside_begin),
     ROBUST("long_array_draws", 64, 64, 16, long_array_draws),
     ROBUST("teximage3d_compile_depth", 8, 8, 0, teximage3d_compile_depth),
+    ROBUST("bitmap_negative_compile_sizes", 64, 64, 1, bitmap_negative_compile_sizes),
+    ROBUST("transpose_texture_matrix_unit", 8, 8, 0, transpose_texture_matrix_unit),
     { 0 }
 };

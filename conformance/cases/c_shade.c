@@ -162,6 +162,74 @@ static void quad_flat_constant_colour(fc_h *h)
     fc_capture(h);
 }
 
+/* The flat colour is a constant-interpolated input only when the fragment
+ * program still reads it after dead code goes: a GL_REPLACE unit of an
+ * RGBA texture after it leaves no live use, and the direct path splits
+ * (0,1,2)+(0,2,3) as for a smooth batch; a GL_ALPHA texture, a
+ * GL_MODULATE unit, a GL_COMBINE source GL_PRIMARY_COLOR or the colour
+ * sum keep it (the random-tex witness, s2-i107). */
+static void quad_flat_dead_colour(fc_h *h)
+{
+    static const GLubyte rgba[2 * 2 * 4] = { 200, 40, 90, 255, 30, 220, 60, 128,
+                                             90, 90, 250, 64, 250, 250, 20, 200 };
+    static const GLubyte alpha[4] = { 40, 90, 160, 230 };
+    GLuint t[2];
+    glViewport(0, 0, 32, 32);
+    fcu_ortho(0, 1, 0, 1, -1, 1);
+    glEnable(GL_DEPTH_TEST);
+    glShadeModel(GL_FLAT);
+    glGenTextures(2, t);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, t[1]);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 2, 2, 0, GL_ALPHA, GL_UNSIGNED_BYTE, alpha);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glMultiTexCoord2f(GL_TEXTURE1, 0.75f, 0.75f);
+    for (int f = 0; f < 8; f++) {
+        fcu_clear(0, 0, 0, 0, 1);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, t[f == 2 ? 1 : 0]);
+        glEnable(GL_TEXTURE_2D);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, f == 1 ? GL_MODULATE : GL_REPLACE);
+        if (f == 3) {                           /* unit 0 modulates, unit 1 replaces */
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, t[0]);
+            glEnable(GL_TEXTURE_2D);
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        }
+        if (f == 4) {                           /* COMBINE: texture times PRIMARY_COLOR */
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+            glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);
+            glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE);
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
+            glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_PRIMARY_COLOR);
+        }
+        if (f >= 5) {                           /* lit: dead, then the colour sum */
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            glNormal3f(0, 0, 1);
+            glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL,
+                          f == 6 ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
+            if (f == 7)
+                glEnable(GL_COLOR_SUM);
+        }
+        flat_quads(1);
+        fc_capture(h);
+        glActiveTexture(GL_TEXTURE1);
+        glDisable(GL_TEXTURE_2D);
+        glActiveTexture(GL_TEXTURE0);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_COLOR_SUM);
+    }
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(2, t);
+}
+
 /* A large smooth triangle with very different w per vertex. */
 static void persp_colour(fc_h *h)
 {
@@ -221,6 +289,8 @@ const fc_case fc_cases_shade[] = {
                  quad_strip_and_polygon_clipped),
     FC_CASE_RGBA("core/quad_diagonal_flat_constant_colour", 32, 32, 3, "core shade quad",
                  quad_flat_constant_colour),
+    FC_CASE_RGBA("core/quad_diagonal_flat_dead_colour", 32, 32, 8, "core shade quad",
+                 quad_flat_dead_colour),
     FC_CASE_RGBA("core/perspective_colour_large", 128, 128, 1, "core shade perspective", persp_colour),
     FC_CASE_RGBA("core/colour_rounding_ties", 64, 64, 1, "core shade", colour_ties),
     { 0 }

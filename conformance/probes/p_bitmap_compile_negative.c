@@ -33,5 +33,20 @@ int main(void)
                 GL_OUT_OF_MEMORY);
    probe_expect("glBitmap(-100000, 2) compiled (defect: GL_OUT_OF_MEMORY)",
                 compile_bitmap(-100000, 2), GL_OUT_OF_MEMORY);
+   /* the texture's height is pipe_resource's 16 bits of the size, its row
+    * the width aligned to 4 and 64 in 32 bits; more than 2 GiB fails
+    * (the API fuzzer's seed 1000699: glBitmap(INT_MIN, 308) under
+    * GL_COMPILE_AND_EXECUTE, neither compiled nor executed) */
+   probe_expect("glBitmap(INT_MIN, 308) compiled (defect: GL_OUT_OF_MEMORY)",
+                compile_bitmap(-2147483647 - 1, 308), GL_OUT_OF_MEMORY);
+   probe_expect("glBitmap(-64, -65535) compiled (16-bit height 1: GL_OUT_OF_MEMORY)",
+                compile_bitmap(-64, -65535), GL_OUT_OF_MEMORY);
+   probe_expect("glBitmap(-64, INT_MIN) compiled (16-bit height 0)",
+                compile_bitmap(-64, -2147483647 - 1), GL_NO_ERROR);
+   probe_expect("glBitmap(-64, 0) compiled", compile_bitmap(-64, 0), GL_NO_ERROR);
+   probe_expect("glBitmap(100000, -1) compiled (100032 x 65536 bytes: GL_OUT_OF_MEMORY)",
+                compile_bitmap(100000, -1), GL_OUT_OF_MEMORY);
+   probe_expect("glBitmap(40000, INT_MIN + 4) compiled (40000 x 4 bytes)",
+                compile_bitmap(40000, -2147483647 + 3), GL_NO_ERROR);
    return probe_result();
 }

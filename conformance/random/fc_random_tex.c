@@ -803,11 +803,21 @@ static void tex_scene(fc_h *h)
     random_light(&s, &p);
     random_fragment(&s, &p);
 
+    /* the witness (fcr_witness: a polygon inside the visible view volume,
+     * drawn with GL_ALWAYS under the scene's texture state), from a stream
+     * of its own, before primitive `witness` (after the last at nprim), so
+     * that a scene whose primitives all miss still compares something */
+    s.vis = fc_rng_make(seed, index, 32);
+    const int witness = fc_rng_range(&s.vis, 0, p.nprim);
     for (int i = 0; i < p.nprim; i++) {
+        if (i == witness)
+            fcr_witness(&s);
         random_primitive(&s, p.modes[i]);
         if (c->frames == 2 && i == p.nprim / 2)
             fc_capture(h);
     }
+    if (witness == p.nprim)
+        fcr_witness(&s);
     random_pixels(&s, &p);
     fc_capture(h);
     fc_error(h, "scene glGetError");

@@ -3224,9 +3224,23 @@ bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLf
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return false;
    }
-   /* [S: dlist.c:save_Bitmap] a texture only for a bitmap with pixels:
-    * a negative size is compiled as it is, GL_INVALID_VALUE when the
-    * node executes */
+   /* [S: dlist.c:save_Bitmap, st_cb_bitmap.c:st_make_bitmap_texture,
+    * lp_texture.c:llvmpipe_texture_layout] a negative size is compiled as
+    * it is (GL_INVALID_VALUE when the node executes), but the oracle
+    * first makes its texture from the sizes as unsigned, the height cut
+    * to pipe_resource's 16 bits: a row of the width aligned to 4 and to
+    * 64 bytes in 32-bit arithmetic (widths -63 to -1 wrap to 0), times
+    * the height aligned to 4, over LP_MAX_TEXTURE_SIZE (2 GiB) raises
+    * GL_OUT_OF_MEMORY, neither compiled nor executed (oracle defect,
+    * probe p_bitmap_compile_negative) */
+   if (width < 0 || height < 0) {
+      const uint32_t row = ((((uint32_t)width + 3u) & ~3u) + 63u) & ~63u;
+      const uint64_t rows = (((uint32_t)height & 0xffffu) + 3u) & ~3u;
+      if ((uint64_t)row * rows > 2ull * 1024 * 1024 * 1024) {
+         fgl_error(ctx, GL_OUT_OF_MEMORY);
+         return false;
+      }
+   }
    uint8_t *tex = NULL;
    if (width > 0 && height > 0) {
       tex = fgl_make_bitmap_texture(ctx, width, height, bits);

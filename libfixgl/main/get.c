@@ -581,10 +581,12 @@ static bool fill_value(struct fgl_context *ctx, GLenum pname, struct value *val)
    case GL_TRANSPOSE_MODELVIEW_MATRIX:
    case GL_TRANSPOSE_PROJECTION_MATRIX:
    case GL_TRANSPOSE_TEXTURE_MATRIX: {
-      /* CONTEXT_MATRIX_T: the top of the stack, transposed */
+      /* CONTEXT_MATRIX_T: the top of the stack, transposed; for the
+       * texture matrix the first stack of TextureMatrixStack, unit 0's
+       * whatever the active unit (probe p_transpose_texmat) */
       const fgl_matrix *m = pname == GL_TRANSPOSE_MODELVIEW_MATRIX ? ctx->ModelviewStack.Top
                           : pname == GL_TRANSPOSE_PROJECTION_MATRIX ? ctx->ProjectionStack.Top
-                          : fgl_texture_stack(ctx)->Top;
+                          : ctx->TextureStack[0].Top;
       val->type = V_FLOATN;
       val->n = 16;
       for (int i = 0; i < 4; i++)

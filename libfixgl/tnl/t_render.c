@@ -398,6 +398,49 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
    }
 }
 
+/* Whether the fragment program reads the primary colour after the
+ * compiler drops dead code: the final colour, traced back through the
+ * enabled units' combiners channel by channel (PREVIOUS of the first unit
+ * is the primary colour; a DOT3_RGBA result is every channel).  A flat
+ * colour that no live instruction reads is no input of the shader, so it
+ * makes no constant-interpolated input of llvmpipe's setup
+ * [S: ff_fragment_shader.cpp emit_texenv, emit_combine; the NIR
+ * optimisations of the state tracker] (random-tex witness, s2-i107: a
+ * GL_REPLACE unit of an RGBA texture after the colour). */
+static bool t_fs_reads_primary(const struct r_state *rs)
+{
+   bool need_rgb = true, need_a = true, reads = false;
+   for (int u = rs->fs->tex_nr - 1; u >= 0; u--) {
+      if (!(rs->fs->tex_units & (1u << u)) || !rs->tex[u])
+         continue;
+      const struct r_tex_combine *k = &rs->tex[u]->comb;
+      const bool dot3_rgba = k->mode_rgb == R_COMB_DOT3_RGBA ||
+                             k->mode_rgb == R_COMB_DOT3_RGBA_EXT;
+      bool prev_rgb = false, prev_a = false;
+      if (need_rgb || (dot3_rgba && need_a)) {
+         for (int i = 0; i < k->nargs_rgb; i++) {
+            const bool alpha = k->opr_rgb[i] == R_OPR_ALPHA ||
+                               k->opr_rgb[i] == R_OPR_ONE_MINUS_ALPHA;
+            if (k->src_rgb[i] == R_SRC_PRIMARY_COLOR)
+               reads = true;
+            else if (k->src_rgb[i] == R_SRC_PREVIOUS)
+               *(alpha ? &prev_a : &prev_rgb) = true;
+         }
+      }
+      if (need_a && !dot3_rgba) {
+         for (int i = 0; i < k->nargs_a; i++) {
+            if (k->src_a[i] == R_SRC_PRIMARY_COLOR)
+               reads = true;
+            else if (k->src_a[i] == R_SRC_PREVIOUS)
+               prev_a = true;
+         }
+      }
+      need_rgb = prev_rgb;
+      need_a = prev_a;
+   }
+   return reads || need_rgb || need_a;
+}
+
 /* src: the vertices come window by window from src (one primitive,
  * nverts its count, verts and elts unused), else all are in verts. */
 static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *verts,
@@ -557,7 +600,9 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
     * colour is not a fragment-shader input (unlit, colour outside the
     * vertex format) still gets the (0,2) diagonal (ORACLE-NOTES.md
     * "Vertex batching"). */
-   const bool constant_interp = flat && (ctx->Light.Enabled || color_varying ||
+   const bool constant_interp = flat && (((ctx->Light.Enabled || color_varying) &&
+                                          t_fs_reads_primary(&ctx->_Raster)) ||
+                                         (ctx->Light.Enabled && ctx->_Raster.fs->color_sum) ||
                                          color1_varying);
    bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {
