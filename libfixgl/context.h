@@ -584,7 +584,7 @@ struct fgl_framebuffer {
    int Width, Height;
    uint8_t *Color;            /* RGBA8, row 0 = top (y-down, as the oracle) */
    void *Depth;               /* NULL, uint16_t (Z16) or uint32_t (Z24X8/Z24S8) */
-   int DepthBits;             /* 0, 16 or 24 */
+   int DepthBits;             /* 0, 16, 24 or 32 */
    int StencilBits;           /* 0 or 8 */
    int AlphaBits;             /* 8, or 0 for the RGB formats */
    bool DoubleBuffer;         /* a double-buffered GLX drawable (libgl/): GL_DOUBLEBUFFER;

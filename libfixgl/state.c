@@ -668,7 +668,9 @@ static void build_rast(struct fgl_context *ctx, struct r_rast_state *o)
    const bool any_offset = pg->OffsetFill || pg->OffsetLine || pg->OffsetPoint;
    /* util_get_depth_format_mrd: 1/(2^bits - 1), D24 without a unorm
     * depth buffer; units scaled in double, then stored as float */
-   const double mrd = fb && fb->DepthBits == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
+   const double mrd = fb && fb->DepthBits == 16   ? 1.0 / 65535.0
+                      : fb && fb->DepthBits == 32 ? 1.0 / 4294967295.0
+                                                  : 1.0 / 16777215.0;
    const float units = (float)((double)pg->OffsetUnits * mrd * 2.0);
    const bool lp_offset = any_offset && !need_pipeline;
    o->offset_units = lp_offset ? units : 0.0f;

@@ -31,15 +31,16 @@ void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclam
    ctx->Color.ClearColor[3] = alpha;
 }
 
-/* util_pack_z for the 16- and 24-bit formats */
+/* util_pack_z for the 16-, 24- and 32-bit unorm formats (llrint for
+ * Z32, lrint for the others: the same rounding in double) */
 static uint32_t pack_z(double z, int bits)
 {
-   const double max = bits == 16 ? 65535.0 : 16777215.0;
+   const double max = bits == 16 ? 65535.0 : bits == 32 ? 4294967295.0 : 16777215.0;
    if (z == 0.0)
       return 0;
    if (z == 1.0)
       return (uint32_t)max;
-   return (uint32_t)lrint(z * max);
+   return (uint32_t)llrint(z * max);
 }
 
 /* Mesa's is_scissor_enabled: a scissor that leaves part of the buffer out */

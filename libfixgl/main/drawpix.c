@@ -1215,9 +1215,12 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
          }
          if (depth) {
             /* the depth texture (the buffer's format) sampled: unorm to
-             * float, value * (float)(1 / (2^n - 1)) */
+             * float, value * (float)(1 / (2^n - 1)); a Z32_UNORM one
+             * through its top 23 bits (r_tex_depth_value) */
             if (fb->ZSFormat == R_ZS_Z16)
                t[dst] = (float)((uint16_t *)fb->Depth)[src] * (float)(1.0 / 65535.0);
+            else if (fb->ZSFormat == R_ZS_Z32)
+               t[dst] = r_tex_depth_value(((uint32_t *)fb->Depth)[src], 32);
             else
                t[dst] = (float)(((uint32_t *)fb->Depth)[src] & 0xffffffu) *
                         (float)(1.0 / 16777215.0);

@@ -18,20 +18,25 @@
 #include "main/pixelformat.h"
 #include "fgl_alloc.h"
 
-/* depth value at internal (y-down) pixel idx, as 24- or 16-bit integer */
+/* depth value at internal (y-down) pixel idx, as 32-, 24- or 16-bit integer */
 static uint32_t depth_at(const struct fgl_framebuffer *fb, size_t idx)
 {
    if (fb->ZSFormat == R_ZS_Z16)
       return ((const uint16_t *)fb->Depth)[idx];
+   if (fb->ZSFormat == R_ZS_Z32)
+      return ((const uint32_t *)fb->Depth)[idx];
    return ((const uint32_t *)fb->Depth)[idx] & 0xffffffu;
 }
 
-/* [S: util/format unpack_z_float] Z16: z * (1.0f / 0xffff); Z24: in double */
+/* [S: util/format unpack_z_float] Z16: z * (1.0f / 0xffff); Z24 and Z32:
+ * in double */
 static float depth_float_at(const struct fgl_framebuffer *fb, size_t idx)
 {
    const uint32_t z = depth_at(fb, idx);
    if (fb->ZSFormat == R_ZS_Z16)
       return (float)z * (1.0f / 65535.0f);
+   if (fb->ZSFormat == R_ZS_Z32)
+      return (float)((double)z * (1.0 / (double)0xffffffffu));
    return (float)((double)z * (1.0 / (double)0xffffff));
 }
 
@@ -41,6 +46,8 @@ static uint32_t depth_uint_at(const struct fgl_framebuffer *fb, size_t idx)
    const uint32_t z = depth_at(fb, idx);
    if (fb->ZSFormat == R_ZS_Z16)
       return (z << 16) | z;
+   if (fb->ZSFormat == R_ZS_Z32)
+      return z;
    return (z << 8) | (z >> 16);
 }
 

@@ -223,6 +223,8 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
             uint32_t z32;
             if (fb->ZSFormat == R_ZS_Z16) {
                z32 = (uint32_t)((const uint16_t *)fb->Depth)[idx] * 0x10001u;
+            } else if (fb->ZSFormat == R_ZS_Z32) {
+               z32 = ((const uint32_t *)fb->Depth)[idx];
             } else {
                const uint32_t z = ((const uint32_t *)fb->Depth)[idx] & 0xffffffu;
                z32 = (z << 8) | (z >> 16);
@@ -233,6 +235,15 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
                z32 = (uint32_t)d;
             }
             dst[i] = bits == 32 ? z32 : z32 >> (32 - bits);
+            continue;
+         }
+         if (fb->ZSFormat == R_ZS_Z32) {
+            /* a Z32_UNORM buffer: into a Z32_UNORM texture the blit is a
+             * plain copy (llvmpipe's lp_blit takes
+             * util_try_blit_via_copy_region for equal formats), into the
+             * others the value is sampled through its top 23 bits */
+            const uint32_t z = ((const uint32_t *)fb->Depth)[idx];
+            dst[i] = bits == 32 ? z : blit_depth(r_tex_depth_value(z, 32), bits);
             continue;
          }
          const float d =

@@ -121,7 +121,8 @@ static int zs_bytes_per_value(enum r_zs_format f)
    switch (f) {
    case R_ZS_Z16:   return 2;
    case R_ZS_Z24X8:
-   case R_ZS_Z24S8: return 4;
+   case R_ZS_Z24S8:
+   case R_ZS_Z32:   return 4;
    case R_ZS_S8:    return 1;
    default:         return 0;
    }

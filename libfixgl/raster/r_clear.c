@@ -138,6 +138,12 @@ void r_clear_depth_stencil_rect(const struct r_fb_state *fb, int x0, int y0, int
       FOR_RUNS(fb, x0, y0, x1, y1, first, n, zs32_runs(z + first, keep, set, n));
       break;
    }
+   case R_ZS_Z32:
+      if (depth) {
+         uint32_t *z = fb->zs;
+         FOR_RUNS(fb, x0, y0, x1, y1, first, n, zs32_runs(z + first, 0u, zvalue, n));
+      }
+      break;
    case R_ZS_S8:
       if (stencil) {
          uint8_t *z = fb->zs;

@@ -41,6 +41,17 @@ uint16_t r_depth_to_z16(float z)
    return (uint16_t)r_round_even(r_clamp01(z) * 65535.0f);
 }
 
+/* A 32-bit unorm has more bits than a float's mantissa
+ * [S: gallivm/lp_bld_conv.c:lp_build_clamped_float_to_unsigned_norm, its
+ * last case]: z * 2^31 (exact) truncated to an integer t, then
+ * (t << 1) - (t >> 31), which maps 1.0 (t = 2^31) to 0xffffffff
+ * (ORACLE-NOTES.md "Depth sizes"). */
+uint32_t r_depth_to_z32(float z)
+{
+   const uint32_t t = (uint32_t)(r_clamp01(z) * 2147483648.0f);
+   return (t << 1) - (t >> 31);
+}
+
 /* R_COMPARE, compare: r_blend.h */
 
 static bool compare_float(enum r_func func, float a, float b)
@@ -671,6 +682,15 @@ static bool depth_test_write(const struct r_state *rs, size_t idx, float z)
          return false;
       if (rs->dsa->depth_write)
          *zb = (*zb & 0xff000000u) | zv;
+      return true;
+   }
+   case R_ZS_Z32: {
+      uint32_t *zb = (uint32_t *)rs->fb->zs + idx;
+      const uint32_t zv = r_depth_to_z32(z);
+      if (!compare(rs->dsa->depth_func, zv, *zb))
+         return false;
+      if (rs->dsa->depth_write)
+         *zb = zv;
       return true;
    }
    default:

@@ -109,6 +109,7 @@ enum r_zs_format {
    R_ZS_Z24X8,     /* uint32_t, depth in bits 0..23, bits 24..31 zero */
    R_ZS_Z24S8,     /* uint32_t, depth in bits 0..23, stencil in 24..31 */
    R_ZS_S8,        /* uint8_t stencil only */
+   R_ZS_Z32,       /* uint32_t depth, all 32 bits (GLX's Z32_UNORM configs) */
 };
 
 /* Comparison functions, in GL's order (GL_NEVER + n). */
@@ -945,5 +946,6 @@ static inline float r_clamp01(float x)
 uint8_t r_float_to_unorm8(float c);
 uint32_t r_depth_to_z24(float z);
 uint16_t r_depth_to_z16(float z);
+uint32_t r_depth_to_z32(float z);
 
 #endif

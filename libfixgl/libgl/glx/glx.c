@@ -17,9 +17,10 @@
  * Configs (GLXFBConfig, and the visuals of glXChooseVisual): the screen's
  * default visual when it is 8-8-8 TrueColor (no alpha) and the first
  * 32-bit 8-8-8-8 TrueColor visual (alpha), each single- and
- * double-buffered, with depth/stencil 0/0, 16/0, 24/0 or 24/8 (the
- * depth/stencil formats fixgl has: Z16, Z24X8, Z24S8) and accumulation 0
- * or 16 bits.  glXChooseFBConfig and glXChooseVisual match and order them
+ * double-buffered, with depth/stencil 0/0, 16/0, 24/0, 24/8 or 32/0 (the
+ * oracle's Z16, Z24X8, Z24S8 and Z32_UNORM; its "larger depth first"
+ * order makes GLX_DEPTH_SIZE 1 or 16 pick the 32-bit ones) and
+ * accumulation 0 or 16 bits.  glXChooseFBConfig and glXChooseVisual match and order them
  * as Mesa's glxcmds.c does (fbconfigs_compatible, fbconfig_compare), so a
  * program asking the same of both gets the same kind of buffer.  As
  * Mesa's fake GLX, glXChooseVisual and glXGetVisualFromFBConfig remember
@@ -42,9 +43,7 @@
  *
  * Not done, on purpose or not yet: separate read drawables (reads come
  * from the draw drawable), front-buffer drawing in a double-buffered
- * config (there is one colour buffer: what glXSwapBuffers presents), the
- * oracle's 32-bit depth configs (GLX_DEPTH_SIZE 32: fixgl's framebuffers
- * have no Z32 format).
+ * config (there is one colour buffer: what glXSwapBuffers presents).
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
@@ -101,7 +100,7 @@ struct __GLXFBConfigRec {
 };
 
 /* The depth/stencil pairs of every visual, in fixgl's formats. */
-static const int zs_pairs[][2] = { { 0, 0 }, { 16, 0 }, { 24, 0 }, { 24, 8 } };
+static const int zs_pairs[][2] = { { 0, 0 }, { 16, 0 }, { 24, 0 }, { 24, 8 }, { 32, 0 } };
 
 /* ---- drawables -------------------------------------------------------- */
 
@@ -772,6 +771,8 @@ static enum r_zs_format zs_format(const struct __GLXFBConfigRec *c)
 {
    if (c->depth == 24)
       return c->stencil ? R_ZS_Z24S8 : R_ZS_Z24X8;
+   if (c->depth == 32)
+      return R_ZS_Z32;
    return c->depth == 16 ? R_ZS_Z16 : R_ZS_NONE;
 }
 

@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "raster/r_state.h"
+#include "raster/r_scene.h"
 
 #include "check.h"
 
@@ -754,6 +755,71 @@ static void test_depth(void)
    }
 }
 
+/* Z32 (llvmpipe's Z32_UNORM): trunc(z * 2^31) = t, stored (t << 1) - (t >> 31):
+ * 0 -> 0, 1 -> 0xffffffff, 0.5 -> 0x80000000, and depths a quarter of a
+ * 24-bit step apart are told apart (GL_LESS passes the nearer one);
+ * r_clear_depth_stencil_rect writes the whole word. */
+static void test_depth_z32(void)
+{
+   CHECK(r_depth_to_z32(0.0f) == 0u, "z32");
+   CHECK(r_depth_to_z32(1.0f) == 0xffffffffu, "z32");
+   CHECK(r_depth_to_z32(2.0f) == 0xffffffffu, "z32");
+   CHECK(r_depth_to_z32(-1.0f) == 0u, "z32");
+   CHECK(r_depth_to_z32(0.5f) == 0x80000000u, "z32");
+   CHECK(r_depth_to_z32(0.25f) == 0x40000000u, "z32");
+   /* 2^-31 and its neighbours: trunc(1.5) = 1 -> 2, trunc(0.75) = 0 */
+   CHECK(r_depth_to_z32(0x1.8p-31f) == 2u, "z32");
+   CHECK(r_depth_to_z32(0x1.8p-32f) == 0u, "z32");
+   /* just below 1: trunc((1 - 2^-24) * 2^31) = 2^31 - 2^7 */
+   CHECK(r_depth_to_z32(0x1.fffffep-1f) == (uint32_t)((0x80000000u - 0x80u) << 1), "z32");
+
+   enum { W = 10, H = 8 };
+   uint8_t buf[W * H * 4];
+   uint32_t z32[W * H];
+   struct r_state rs = make_state(buf, W, H);
+   t_fb.zs = z32;
+   t_fb.zs_format = R_ZS_Z32;
+   t_fb.width = W;
+   t_fb.height = H;
+   t_dsa.depth_test = true;
+   t_dsa.depth_func = R_LESS;
+   t_dsa.depth_write = true;
+   memset(buf, 0, sizeof buf);
+   r_clear_depth_stencil_rect(&t_fb, 0, 0, W, H, true, 0xdeadbeefu, true, 0x55);
+   for (int i = 0; i < W * H; i++)
+      CHECK(z32[i] == 0xdeadbeefu, "z32");
+   static const float grey[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+   static const float red[4] = { 1, 0, 0, 1 };
+   struct r_vertex v[3];
+   /* one float step apart (2^-27, an eighth of a 24-bit step): one 24-bit
+    * value, two 32-bit ones */
+   const float za = 0.09375f, zb = 0.09375f - 0x1p-27f;
+   for (int i = 0; i < 3; i++) {
+      v[i] = make_vertex(tri_a.x[i], tri_a.y[i], grey);
+      v[i].pos[2] = za;
+   }
+   r_triangle(&rs, &v[0], &v[1], &v[2]);
+   for (int i = 0; i < 3; i++) {
+      v[i] = make_vertex(tri_a.x[i], tri_a.y[i], red);
+      v[i].pos[2] = zb;
+   }
+   r_triangle(&rs, &v[0], &v[1], &v[2]);
+   const uint32_t want_in = r_depth_to_z32(zb);
+   CHECK(want_in == 0x18000000u - 32u, "z32");
+   CHECK(r_depth_to_z24(zb) == r_depth_to_z24(za), "z32");   /* one 24-bit value */
+   int bad = 0;
+   for (int y = 0; y < H; y++) {
+      for (int x = 0; x < W; x++) {
+         const int i = y * W + x;
+         const bool in = map_a[y][x] == '#';
+         const uint32_t want_z = in ? want_in : 0xdeadbeefu;
+         if ((z32[i] != want_z || buf[4 * i] != (in ? 255 : 0)) && bad++ < 4)
+            FAIL("depth Z32: pixel (%d,%d) z 0x%08x red %u, expected 0x%08x %u", x, y, z32[i],
+                 buf[4 * i], want_z, in ? 255u : 0u);
+      }
+   }
+}
+
 int main(void)
 {
    test_square_shared_diagonal();
@@ -769,5 +835,6 @@ int main(void)
    test_colours();
    test_draw_region();
    test_depth();
+   test_depth_z32();
    return check_report("unit-raster");
 }
