@@ -211,10 +211,19 @@ static void finish_task(struct sched *s, struct task *t, int status)
     }
 }
 
+static int load_cached(struct fc_cache *cache, struct fc_item *item, int keep);
+
 static void flush_ready(struct sched *s)
 {
     while (s->next_ready < s->n && s->items[s->next_ready].side[0].state != FC_PENDING &&
            s->items[s->next_ready].side[1].state != FC_PENDING) {
+        struct fc_side_result *o = &s->items[s->next_ready].side[FC_ORACLE];
+        if (o->cached && !load_cached(s->cfg->oracle_cache, &s->items[s->next_ready], 1)) {
+            store(o, (const unsigned char *)"", 0, FC_FAILED);
+            snprintf(o->why, sizeof o->why, "its entry in the oracle cache %s changed during the run",
+                     fc_cache_dir(s->cfg->oracle_cache));
+        }
+        o->cached = 0;
         s->ready(s->ud, &s->items[s->next_ready], s->next_ready);
         s->next_ready++;
     }
@@ -247,10 +256,12 @@ static int make_dirs(const char *base)
     return 1;
 }
 
-/* The oracle side of item i from the cache: the records of one whole case,
+/* The oracle side of item from the cache: the records of one whole case,
  * CASE (this case's name) to END with status FC_END_OK; 0 if absent or not
- * that (then the case is rendered, and stored again). */
-static int load_cached(struct fc_cache *cache, struct fc_item *item)
+ * that (then the case is rendered, and stored again).  With keep, the
+ * records are stored in the item; without, the item is only marked cached
+ * (the run holds no more cached data at once than it held renders). */
+static int load_cached(struct fc_cache *cache, struct fc_item *item, int keep)
 {
     size_t len, pos = 0;
     unsigned char *buf = fc_cache_load(cache, item->name, &len);
@@ -271,8 +282,12 @@ static int load_cached(struct fc_cache *cache, struct fc_item *item)
             }
         }
     }
-    if (ok)
+    if (ok && keep) {
         store(&item->side[FC_ORACLE], buf, len, FC_DONE);
+    } else if (ok) {
+        item->side[FC_ORACLE].state = FC_DONE;
+        item->side[FC_ORACLE].cached = 1;
+    }
     free(buf);
     return ok;
 }
@@ -297,7 +312,7 @@ int fc_run_items(struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
         return -1;
     cfg->oracle_cached = 0;
     for (size_t i = 0; cfg->oracle_cache && i < n; i++)
-        cfg->oracle_cached += (size_t)load_cached(cfg->oracle_cache, &items[i]);
+        cfg->oracle_cached += (size_t)load_cached(cfg->oracle_cache, &items[i], 0);
     for (int w = 0; cfg->oracle_cache && w < 2; w++)
         info[FC_ORACLE][w] = fc_cache_load_info(cfg->oracle_cache, w);
     for (size_t i = 0; i < n; i += chunk) {

@@ -14,6 +14,8 @@ struct fc_side_result {
     unsigned char *data;        /* the case's records, CASE..END (partial if failed) */
     size_t len;
     enum fc_side_state state;
+    int cached;                 /* FC_DONE in the oracle cache: data is read
+                                 * just before the item is handed over */
     char why[1024];             /* failure description */
 };
 
