@@ -16,7 +16,8 @@
  *    a fresh render; FC_EMIT=arrays is another key.
  * Runs 1-3 take the oracle side from the build's cache when the test's
  * environment names one (FIXGL_CONFORM_ORACLE_CACHE): a render of an
- * earlier process, compared with a fresh one. */
+ * earlier process, compared with a fresh one.  FIXGL_CONFORM_ORACLE_RENDERER,
+ * when set, replaces fixgl-render-osmesa (as it does for fixgl-conform). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -125,6 +126,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s fixgl-conform fixgl-render-osmesa scratch-dir [fixgl-render-fixgl]\n", argv[0]);
         return 2;
     }
+    /* the oracle renderer the conformance runs use (.ci/run's sanitized
+     * step: the regular build's, whose renders are in the cache; the
+     * oracle renderer is never sanitized) */
+    if (getenv("FIXGL_CONFORM_ORACLE_RENDERER") && *getenv("FIXGL_CONFORM_ORACLE_RENDERER"))
+        argv[2] = getenv("FIXGL_CONFORM_ORACLE_RENDERER");
     snprintf(dir[3], sizeof dir[3], "%s/lit", argv[3]);
     for (int i = 0; i < 3; i++)
         snprintf(dir[i], sizeof dir[i], "%s/%s", argv[3], i == 0 ? "exact" : i == 1 ? "perturb" : "crash");
