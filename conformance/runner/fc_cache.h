@@ -2,9 +2,9 @@
  *
  * The oracle's render of a case depends on the oracle renderer (its binary,
  * with the case code compiled in, and the shared libraries it loads: Mesa),
- * the case name (random scenes carry their seed and index in it), the extra
- * renderer argument and a few environment variables (FC_*, Mesa's and the
- * loader's); never on fixgl's configuration (FIXGL_NUM_THREADS,
+ * the host's CPU, the case name (random scenes carry their seed and index
+ * in it), the extra renderer argument and a few environment variables
+ * (FC_*, Mesa's); never on fixgl's configuration (FIXGL_NUM_THREADS,
  * FIXGL_KERNELS).  The cache key hashes all of these, so runs that compare
  * several fixgl configurations with the same cases render each case on the
  * oracle once.  Layout: ROOT/<key>/<case name, '/' as '@'>.rec holds the
