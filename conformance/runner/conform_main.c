@@ -6,6 +6,7 @@
  * case differs, failed or is blank (compares nothing: fc_case.h), or a
  * random family's scenes compare nothing too often (FC_BLANK_MAX_PERCENT), 2
  * usage/setup. */
+#include "fc_cache.h"
 #include "fc_compare.h"
 #include "fc_report.h"
 #include "fc_run.h"
@@ -18,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #define MAX_FILTERS 32
@@ -34,6 +36,7 @@ struct options {
     long index;                 /* first scene index; >= 0 replays from there */
     const char *report, *renderer[2], *fixgl_arg;
     const char *known;          /* file of known differences, or NULL */
+    const char *oracle_cache;   /* root of the oracle's result cache, or NULL */
     int jobs, list_only;
 };
 
@@ -119,8 +122,12 @@ static void usage(FILE *f)
         "  --no-random          no plain random scenes\n"
         "  --jobs N             renderer processes at once (default: online CPUs)\n"
         "  --report DIR         report directory (default %s)\n"
-        "  --oracle-renderer P  default %s\n"
+        "  --oracle-renderer P  default $FIXGL_CONFORM_ORACLE_RENDERER, else %s\n"
         "  --fixgl-renderer P   default %s\n"
+        "  --oracle-cache DIR   reuse the oracle's render of a case from DIR, keyed by the\n"
+        "                       oracle renderer, its libraries, the case and the FC_/Mesa\n"
+        "                       environment (fc_cache.h); default $FIXGL_CONFORM_ORACLE_CACHE\n"
+        "  --no-oracle-cache    render every case on the oracle\n"
         "  --fixgl-arg ARG      extra argument for the fixgl renderer (test-only, e.g. --perturb)\n"
         "  --list               print the selected cases and exit\n"
         "  --known FILE         cases listed in FILE are known differences: still reported,\n"
@@ -139,12 +146,17 @@ static int parse_args(int argc, char **argv, struct options *o)
     o->index = -1;
     o->report = FC_DEFAULT_REPORT;
     o->renderer[FC_ORACLE] = FC_DEFAULT_ORACLE;
+    if (getenv("FIXGL_CONFORM_ORACLE_RENDERER") && *getenv("FIXGL_CONFORM_ORACLE_RENDERER"))
+        o->renderer[FC_ORACLE] = getenv("FIXGL_CONFORM_ORACLE_RENDERER");
+    if (getenv("FIXGL_CONFORM_ORACLE_CACHE") && *getenv("FIXGL_CONFORM_ORACLE_CACHE"))
+        o->oracle_cache = getenv("FIXGL_CONFORM_ORACLE_CACHE");
     o->renderer[FC_FIXGL] = FC_DEFAULT_FIXGL;
     o->jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
     enum {
         OPT_NO_RANDOM = 256, OPT_LIST, OPT_VERSION, OPT_TAG, OPT_CASE, OPT_RANDOM, OPT_RANDOM_LIT,
         OPT_RANDOM_RASTER, OPT_RANDOM_TEX, OPT_RANDOM_SHADING, OPT_SEED, OPT_INDEX, OPT_JOBS,
         OPT_REPORT, OPT_ORACLE_RENDERER, OPT_FIXGL_RENDERER, OPT_FIXGL_ARG, OPT_KNOWN,
+        OPT_ORACLE_CACHE, OPT_NO_ORACLE_CACHE,
     };
     static const struct option longopts[] = {
         { "help", no_argument, NULL, 'h' },
@@ -166,6 +178,8 @@ static int parse_args(int argc, char **argv, struct options *o)
         { "fixgl-renderer", required_argument, NULL, OPT_FIXGL_RENDERER },
         { "fixgl-arg", required_argument, NULL, OPT_FIXGL_ARG },
         { "known", required_argument, NULL, OPT_KNOWN },
+        { "oracle-cache", required_argument, NULL, OPT_ORACLE_CACHE },
+        { "no-oracle-cache", no_argument, NULL, OPT_NO_ORACLE_CACHE },
         { NULL, 0, NULL, 0 },
     };
     int ch;
@@ -198,6 +212,8 @@ static int parse_args(int argc, char **argv, struct options *o)
         case OPT_FIXGL_RENDERER: o->renderer[FC_FIXGL] = v; break;
         case OPT_FIXGL_ARG: o->fixgl_arg = v; break;
         case OPT_KNOWN: o->known = v; break;
+        case OPT_ORACLE_CACHE: o->oracle_cache = v; break;
+        case OPT_NO_ORACLE_CACHE: o->oracle_cache = NULL; break;
         case ':': fprintf(stderr, "fixgl-conform: %s needs a value\n", argv[optind - 1]); return 0;
         default: fprintf(stderr, "fixgl-conform: unknown option %s\n", argv[optind - 1]); return 0;
         }
@@ -385,6 +401,15 @@ static int build_items(const struct options *o, struct fc_item **out, size_t *n)
     return 1;
 }
 
+/* The two paths name the same file (a symbolic link is the same renderer). */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (stat(a, &sa) != 0 || stat(b, &sb) != 0)
+        return strcmp(a, b) == 0;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
 static void on_ready(void *ud, struct fc_item *item, size_t index)
 {
     struct ctx *c = ud;
@@ -495,7 +520,7 @@ int main(int argc, char **argv)
     c.total = n;
     c.known = o.known ? &known : NULL;
     c.unexpected = c.stale = c.expected = 0;
-    c.self_compare = strcmp(o.renderer[FC_ORACLE], o.renderer[FC_FIXGL]) == 0;
+    c.self_compare = same_file(o.renderer[FC_ORACLE], o.renderer[FC_FIXGL]);
     if (!c.report)
         return 2;
     memset(&cfg, 0, sizeof cfg);
@@ -504,10 +529,17 @@ int main(int argc, char **argv)
     cfg.extra_arg[FC_FIXGL] = o.fixgl_arg;
     cfg.work_dir = o.report;
     cfg.jobs = o.jobs;
+    if (o.oracle_cache)
+        cfg.oracle_cache = fc_cache_open(o.oracle_cache, o.renderer[FC_ORACLE], NULL);
     printf("fixgl-conform: %zu cases, %d jobs\n  oracle %s\n  fixgl  %s\n", n, o.jobs,
            o.renderer[FC_ORACLE], o.renderer[FC_FIXGL]);
     fflush(stdout);
     rc = fc_run_items(&cfg, items, n, on_ready, &c, info);
+    if (cfg.oracle_cache) {
+        printf("oracle cache %s: %zu of %zu cases reused, %zu rendered\n",
+               fc_cache_dir(cfg.oracle_cache), cfg.oracle_cached, n, n - cfg.oracle_cached);
+        fc_cache_close(cfg.oracle_cache);
+    }
     fc_report_set_renderers(c.report, info[0][0], info[0][1], info[1][0], info[1][1]);
     if (rc == 0)
         blank_over = fc_report_print_summary(c.report, stdout);

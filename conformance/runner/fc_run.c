@@ -1,5 +1,6 @@
 /* fc_run.c - renderer process scheduling (see fc_run.h). */
 #include "fc_run.h"
+#include "fc_cache.h"
 #include "fc_record.h"
 
 #include <dirent.h>
@@ -160,6 +161,8 @@ static void finish_task(struct sched *s, struct task *t, int status)
                 s->info[t->side][w] = malloc(r.payload_len + 1);
                 memcpy(s->info[t->side][w], r.payload, r.payload_len);
                 s->info[t->side][w][r.payload_len] = 0;
+                if (t->side == FC_ORACLE && s->cfg->oracle_cache)
+                    fc_cache_store_info(s->cfg->oracle_cache, w, s->info[t->side][w]);
             }
         } else if (r.kind == FC_REC_CASE) {
             if (!fc_rec_label_is(&r, s->items[k].name)) {
@@ -175,6 +178,8 @@ static void finish_task(struct sched *s, struct task *t, int status)
             int32_t st = FC_END_OK;
             memcpy(&st, r.payload, r.payload_len >= sizeof st ? sizeof st : 0);
             store(res, buf + start, pos - start, st == FC_END_OK ? FC_DONE : FC_FAILED);
+            if (t->side == FC_ORACLE && st == FC_END_OK && s->cfg->oracle_cache)
+                fc_cache_store(s->cfg->oracle_cache, s->items[k - 1].name, buf + start, pos - start);
             if (st != FC_END_OK)        /* the harness rejected the case (e.g. frame count) */
                 snprintf(res->why, sizeof res->why, "harness: %.*s",
                          (int)(r.payload_len > sizeof st ? r.payload_len - sizeof st : 0),
@@ -206,10 +211,19 @@ static void finish_task(struct sched *s, struct task *t, int status)
     }
 }
 
+static int load_cached(struct fc_cache *cache, struct fc_item *item, int keep);
+
 static void flush_ready(struct sched *s)
 {
     while (s->next_ready < s->n && s->items[s->next_ready].side[0].state != FC_PENDING &&
            s->items[s->next_ready].side[1].state != FC_PENDING) {
+        struct fc_side_result *o = &s->items[s->next_ready].side[FC_ORACLE];
+        if (o->cached && !load_cached(s->cfg->oracle_cache, &s->items[s->next_ready], 1)) {
+            store(o, (const unsigned char *)"", 0, FC_FAILED);
+            snprintf(o->why, sizeof o->why, "its entry in the oracle cache %s changed during the run",
+                     fc_cache_dir(s->cfg->oracle_cache));
+        }
+        o->cached = 0;
         s->ready(s->ud, &s->items[s->next_ready], s->next_ready);
         s->next_ready++;
     }
@@ -242,7 +256,43 @@ static int make_dirs(const char *base)
     return 1;
 }
 
-int fc_run_items(const struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
+/* The oracle side of item from the cache: the records of one whole case,
+ * CASE (this case's name) to END with status FC_END_OK; 0 if absent or not
+ * that (then the case is rendered, and stored again).  With keep, the
+ * records are stored in the item; without, the item is only marked cached
+ * (the run holds no more cached data at once than it held renders). */
+static int load_cached(struct fc_cache *cache, struct fc_item *item, int keep)
+{
+    size_t len, pos = 0;
+    unsigned char *buf = fc_cache_load(cache, item->name, &len);
+    struct fc_rec r;
+    int ok = 0;
+    if (!buf)
+        return 0;
+    if (fc_rec_next(buf, len, &pos, &r) && r.kind == FC_REC_CASE && fc_rec_label_is(&r, item->name)) {
+        for (;;) {
+            if (!fc_rec_next(buf, len, &pos, &r) || r.kind == FC_REC_CASE)
+                break;
+            if (r.kind == FC_REC_END) {
+                int32_t st = FC_END_OK + 1;
+                if (r.payload_len >= sizeof st)
+                    memcpy(&st, r.payload, sizeof st);
+                ok = st == FC_END_OK && pos == len;
+                break;
+            }
+        }
+    }
+    if (ok && keep) {
+        store(&item->side[FC_ORACLE], buf, len, FC_DONE);
+    } else if (ok) {
+        item->side[FC_ORACLE].state = FC_DONE;
+        item->side[FC_ORACLE].cached = 1;
+    }
+    free(buf);
+    return ok;
+}
+
+int fc_run_items(struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
                  fc_item_ready ready, void *ud, char *info[2][2])
 {
     struct sched s;
@@ -260,9 +310,27 @@ int fc_run_items(const struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
     s.running = calloc((size_t)jobs, sizeof *s.running);
     if (!make_dirs(cfg->work_dir))
         return -1;
-    for (size_t i = 0; i < n; i += chunk)
-        for (int side = 0; side < 2; side++)
-            push_task(&s, side, i, i + chunk < n ? i + chunk : n);
+    cfg->oracle_cached = 0;
+    for (size_t i = 0; cfg->oracle_cache && i < n; i++)
+        cfg->oracle_cached += (size_t)load_cached(cfg->oracle_cache, &items[i], 0);
+    for (int w = 0; cfg->oracle_cache && w < 2; w++)
+        info[FC_ORACLE][w] = fc_cache_load_info(cfg->oracle_cache, w);
+    for (size_t i = 0; i < n; i += chunk) {
+        size_t end = i + chunk < n ? i + chunk : n;
+        /* the oracle: the runs of cases not in the cache */
+        for (size_t a = i; a < end;) {
+            size_t b;
+            if (items[a].side[FC_ORACLE].state != FC_PENDING) {
+                a++;
+                continue;
+            }
+            for (b = a; b < end && items[b].side[FC_ORACLE].state == FC_PENDING; b++)
+                ;
+            push_task(&s, FC_ORACLE, a, b);
+            a = b;
+        }
+        push_task(&s, FC_FIXGL, i, end);
+    }
 
     while (!s.fatal && (s.qhead < s.qtail || s.nrunning > 0)) {
         int status;

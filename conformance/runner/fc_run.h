@@ -14,6 +14,8 @@ struct fc_side_result {
     unsigned char *data;        /* the case's records, CASE..END (partial if failed) */
     size_t len;
     enum fc_side_state state;
+    int cached;                 /* FC_DONE in the oracle cache: data is read
+                                 * just before the item is handed over */
     char why[1024];             /* failure description */
 };
 
@@ -23,20 +25,26 @@ struct fc_item {
     struct fc_side_result side[2];
 };
 
+struct fc_cache;
+
 struct fc_run_cfg {
     const char *renderer[2];    /* executable paths */
     const char *extra_arg[2];   /* optional extra argument (test-only --perturb) */
     const char *work_dir;       /* tmp/ and logs/ are created below it */
     int jobs;
+    struct fc_cache *oracle_cache;  /* or NULL (fc_cache.h) */
+    size_t oracle_cached;       /* out: cases whose oracle side came from the cache */
 };
 
 /* Called in item order once both sides of an item are finished. */
 typedef void (*fc_item_ready)(void *ud, struct fc_item *item, size_t index);
 
-/* Runs all items.  info[side][0] / [1] receive malloc'ed GL_RENDERER /
+/* Runs all items; with an oracle cache, the oracle side of a cached case
+ * is read from it (cfg->oracle_cached counts them) and every case the
+ * oracle finishes is stored in it.  info[side][0] / [1] receive malloc'ed GL_RENDERER /
  * GL_VERSION strings.  Returns 0, or -1 if a renderer could not start or
  * refused to run (the reason is printed). */
-int fc_run_items(const struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
+int fc_run_items(struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
                  fc_item_ready ready, void *ud, char *info[2][2]);
 
 /* Runs argv[0] with argv and returns its stdout (malloc'ed, NUL-terminated),

@@ -10,7 +10,14 @@
  * 2. --perturb on the "fixgl" side: the chosen cases differ by exactly one
  *    pixel (channel diff 64) and one depth value per frame, with heat maps;
  * 3. --crash=NAME: that case is an error and the renderer restarts for the
- *    cases after it. */
+ *    cases after it;
+ * 4. the oracle cache (runner/fc_cache.h): a first run stores every case,
+ *    a second reuses every one and its cached oracle side is exact against
+ *    a fresh render; FC_EMIT=arrays is another key.
+ * Runs 1-3 take the oracle side from the build's cache when the test's
+ * environment names one (FIXGL_CONFORM_ORACLE_CACHE): a render of an
+ * earlier process, compared with a fresh one.  FIXGL_CONFORM_ORACLE_RENDERER,
+ * when set, replaces fixgl-render-osmesa (as it does for fixgl-conform). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +47,24 @@ static int run_env(char *const *argv, const char *trace)
 static int run(char *const *argv)
 {
     return run_env(argv, NULL);
+}
+
+/* Runs argv with stdout to `out` and, if env_name, that variable set. */
+static int run_out(char *const *argv, const char *out, const char *env_name, const char *env_val)
+{
+    int status;
+    pid_t pid = fork();
+    if (pid == 0) {
+        if (env_name)
+            setenv(env_name, env_val, 1);
+        if (!freopen(out, "w", stdout))
+            _exit(126);
+        execv(argv[0], argv);
+        _exit(127);
+    }
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status))
+        return -1;
+    return WEXITSTATUS(status);
 }
 
 static char *slurp(const char *dir, const char *name)
@@ -101,6 +126,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s fixgl-conform fixgl-render-osmesa scratch-dir [fixgl-render-fixgl]\n", argv[0]);
         return 2;
     }
+    /* the oracle renderer the conformance runs use (.ci/run's sanitized
+     * step: the regular build's, whose renders are in the cache; the
+     * oracle renderer is never sanitized) */
+    if (getenv("FIXGL_CONFORM_ORACLE_RENDERER") && *getenv("FIXGL_CONFORM_ORACLE_RENDERER"))
+        argv[2] = getenv("FIXGL_CONFORM_ORACLE_RENDERER");
     snprintf(dir[3], sizeof dir[3], "%s/lit", argv[3]);
     for (int i = 0; i < 3; i++)
         snprintf(dir[i], sizeof dir[i], "%s/%s", argv[3], i == 0 ? "exact" : i == 1 ? "perturb" : "crash");
@@ -193,6 +223,42 @@ int main(int argc, char **argv)
         case_json(json, "core/fill_fan_pixel_centres", obj, sizeof obj);
         CHECK(strstr(obj, "\"status\": \"exact\"") != NULL);
         free(json);
+    }
+    {   /* 4. the oracle cache */
+        char cache[1100], out[1100], cmd[1200], line[256];
+        long cases = -1, reused = -1, rendered = -1;
+        snprintf(cache, sizeof cache, "%s/oracle-cache", argv[3]);
+        snprintf(out, sizeof out, "%s/cache-run.txt", argv[3]);
+        snprintf(cmd, sizeof cmd, "rm -rf '%s'", cache);
+        CHECK(system(cmd) == 0);
+        char *a[] = { argv[1], "--no-random", "--case", "core/fill_*", "--case", "random/*", "--random", "10",
+                      "--seed", "3", "--jobs", "2", "--oracle-renderer", argv[2], "--fixgl-renderer", argv[2],
+                      "--oracle-cache", cache, "--report", dir[3], NULL };
+        for (int pass = 0; pass < 3; pass++) {
+            FILE *f;
+            CHECK(run_out(a, out, pass == 2 ? "FC_EMIT" : NULL, "arrays") == 0);
+            reused = rendered = -1;
+            if ((f = fopen(out, "r")) != NULL) {
+                while (fgets(line, sizeof line, f)) {
+                    long c;
+                    if (sscanf(line, "fixgl-conform: %ld cases", &c) == 1)
+                        cases = pass == 0 ? c : cases;
+                    if (strncmp(line, "oracle cache ", 13) == 0 && strstr(line, ": "))
+                        sscanf(strstr(line, ": ") + 2, "%ld of %*d cases reused, %ld rendered",
+                               &reused, &rendered);
+                }
+                fclose(f);
+            }
+            CHECK(cases >= 12);
+            /* pass 0 stores, pass 1 reuses, pass 2 (FC_EMIT=arrays) is another key */
+            CHECK(reused == (pass == 1 ? cases : 0));
+            CHECK(rendered == (pass == 1 ? 0 : cases));
+            json = slurp(dir[3], "summary.json");
+            CHECK(count(json, "{ \"name\": ") == cases);
+            CHECK(count(json, "\"status\": \"exact\"") == cases);
+            CHECK(strstr(json, "\"oracle\": \"llvmpipe") != NULL);
+            free(json);
+        }
     }
     if (failures) {
         fprintf(stderr, "%d check(s) failed; reports under %s\n", failures, argv[3]);
