@@ -1994,6 +1994,48 @@ static void bitmap_cache_teximage(fc_h *h)
  * oracle's GL 4.5 context accepts and fixgl (GL 1.5 without those
  * extensions) refuses with GL_INVALID_ENUM (README "Version and
  * honesty"; known-differences.txt lists the honesty cases). */
+
+/* GL_INT colour images go through a 16-bit snorm texture (the top 16 bits
+ * of each value): values whose 8-bit result lies next to a half, random
+ * and negative ones, with a scale and bias in the shader (ORACLE-NOTES.md
+ * "Bitmaps and pixel rectangles", probe p_drawpixels_int; fuzzer seed
+ * 3000159). */
+static void drawpixels_int_snorm16(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.2f, 0.3f, 0.4f, 1.0);
+    static GLint img[40 * 30 * 4];
+    unsigned s = 777u;
+    for (int i = 0; i < 40 * 30 * 4; i++) {
+        s = s * 1664525u + 1013904223u;
+        img[i] = (GLint)(s & 0x7fffffffu);
+        if (i % 11 == 0)
+            img[i] = -img[i];
+    }
+    /* the fuzzer's value and neighbours of every half step k + 0.5 */
+    img[0] = 1065334784;
+    for (int k = 0; k < 255 && 4 + 4 * k < 40 * 30 * 4; k++)
+        img[4 + 4 * k] = (GLint)(((double)k + 0.5) / 255.0 * 2147483648.0) + (k % 5) * 4096;
+    window_pos(1, 1, 0);
+    glDrawPixels(40, 30, GL_RGBA, GL_INT, img);
+    fc_error(h, "rgba");
+    window_pos(44, 1, 0);
+    glDrawPixels(20, 30, GL_LUMINANCE_ALPHA, GL_INT, img);
+    window_pos(1, 34, 0);
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    glPixelTransferf(GL_RED_BIAS, 0.25f);
+    glPixelTransferf(GL_ALPHA_SCALE, 2.0f);
+    glDrawPixels(40, 12, GL_BGRA, GL_INT, img + 400);
+    glPixelTransferf(GL_RED_SCALE, 1.0f);
+    glPixelTransferf(GL_RED_BIAS, 0.0f);
+    glPixelTransferf(GL_ALPHA_SCALE, 1.0f);
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+    window_pos(44, 34, 0);
+    glDrawPixels(20, 12, GL_ALPHA, GL_INT, img);
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    fc_error(h, "transfer, swapped");
+    fc_capture(h);
+}
 static void drawpixels_types(fc_h *h) { drawpixels_types_of(h, 0); }
 static void drawpixels_foreign_types(fc_h *h) { drawpixels_types_of(h, 1); }
 static void drawpixels_errors(fc_h *h) { drawpixels_errors_of(h, 0); }
@@ -2027,6 +2069,7 @@ const fc_case fc_cases_pix_draw[] = {
     FC_CASE_RGBA("pixel/drawpixels_transfer", 64, 40, 1, "pixel drawpixels",
                  drawpixels_transfer),
     FC_CASE_RGBA("pixel/drawpixels_types", 64, 48, 1, "pixel drawpixels", drawpixels_types),
+    FC_CASE_RGBA("pixel/drawpixels_int_snorm16", 68, 48, 1, "pixel drawpixels", drawpixels_int_snorm16),
     FC_CASE_RGBA("pixel/drawpixels_color_index", 64, 24, 1, "pixel drawpixels",
                  drawpixels_color_index),
     FC_CASE("pixel/drawpixels_zs_types", 64, 32, OSMESA_RGBA, 24, 8, 1,

@@ -475,7 +475,7 @@ static void unpack_row_ubyte(const struct layout *l, const uint8_t *src, size_t 
 /* The same to float RGBA [S: convert_float; util/format unpack_rgba_float:
  * field * (1.0f / max)] */
 static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t n,
-                             float (*out)[4])
+                             float (*out)[4], bool int_snorm16)
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
       if (l->packed) {
@@ -492,6 +492,14 @@ static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t 
       }
       for (int c = 0; c < 4; c++) {
          const int s = l->swz[c];
+         if (int_snorm16 && s != SWZ_ZERO && s != SWZ_ONE) {
+            /* a GL_INT channel through a 16-bit snorm texel:
+             * _mesa_snorm_to_snorm(x, 32, 16) is x >> 16 */
+            int32_t v;
+            memcpy(&v, src + 4 * s, 4);
+            out[i][c] = snorm_to_float(v >> 16, 16);
+            continue;
+         }
          out[i][c] = s == SWZ_ZERO ? 0.0f : s == SWZ_ONE ? 1.0f
                                           : channel_to_float(l->type, src, s);
       }
@@ -1049,9 +1057,11 @@ bool fgl_unpack_rgba_float(struct fgl_context *ctx, const struct fgl_pixelstore 
       return false;
    for (int y = 0; y < height; y++) {
       const uint8_t *src = image_row(p, &l, width, format, type, pixels, y, tmp);
-      unpack_row_float(&l, src, (size_t)width, (float (*)[4])(rgba + 4 * (size_t)y * width));
+      unpack_row_float(&l, src, (size_t)width, (float (*)[4])(rgba + 4 * (size_t)y * width),
+                       (ops & FGL_UNPACK_INT_SNORM16) && type == GL_INT && !l.packed);
    }
    fgl_free(tmp);
+   ops &= ~(unsigned)FGL_UNPACK_INT_SNORM16;
    if (ops)
       fgl_apply_rgba_transfer_ops(ctx, ops, count, (float (*)[4])rgba);
    return true;

@@ -76,6 +76,10 @@ bool fgl_is_color_format(GLenum format);
 #define FGL_IMAGE_SHIFT_OFFSET_BIT  0x2
 #define FGL_IMAGE_MAP_COLOR_BIT     0x4
 #define FGL_IMAGE_CLAMP_BIT         0x800
+/* fixgl's own unpack flag (no transfer operation): GL_INT channels
+ * quantized to 16-bit snorm first, as glDrawPixels' image texture
+ * stores them (fgl_unpack_rgba_float) */
+#define FGL_UNPACK_INT_SNORM16      0x10000
 
 /* [S: pixel.c:_mesa_update_pixel] ctx->_ImageTransferState */
 unsigned fgl_image_transfer_state(const struct fgl_context *ctx);
