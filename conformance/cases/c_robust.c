@@ -1610,6 +1610,57 @@ static void bitmap_negative_compile_sizes(fc_h *h)
     fc_capture(h);
 }
 
+/* A display list whose glBegin is split across two vertex lists (a new
+ * attribute after the first vertex wraps the compiler's store) and whose
+ * second vertex list also holds a compiled glDrawElements: that node does
+ * not copy to the current values, so replaying it leaves the context inside
+ * glBegin/glEnd with no primitive open in the immediate-mode store (Mesa's
+ * CurrentExecPrimitive set by the first node).  glGetError reports nothing
+ * there; the next glEnd leaves it like any glEnd (vbo_exec_End), and the
+ * error raised by the list's compiled glBindTexture then shows (fixgl
+ * stayed inside for good; fuzzer seeds 3000018 and 3000208; probe
+ * p_end_after_list). */
+static void end_after_list_mid_primitive(fc_h *h)
+{
+    static const GLfloat v[8] = { 4, 4, 28, 4, 28, 28, 4, 28 };
+    static const GLubyte idx[2] = { 0, 1 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glNewList(1, GL_COMPILE);
+    glBindTexture(GL_PROXY_TEXTURE_3D, 4);   /* compiled: INVALID_ENUM when called */
+    glBegin(GL_POINTS);
+    glSecondaryColor3ui(5, 243, 0xffff0000u);
+    glVertex2d(10, 10);
+    glColor3ui(7, 6, 6);                     /* after a vertex: wraps */
+    glColor3f(0.25f, 0.5f, 0.75f);
+    glEnd();
+    glDrawElements(GL_QUADS, 2, GL_UNSIGNED_BYTE, idx);
+    glEndList();
+    fc_error(h, "list 1 compiled");
+    glCallList(1);
+    fc_error(h, "list 1 called (inside: nothing reported)");
+    glLineWidth(-1.0f);
+    fc_error(h, "glLineWidth(-1) inside");
+    glEnd();
+    fc_error(h, "glEnd after the list");
+    glLineWidth(-1.0f);
+    fc_error(h, "glLineWidth(-1) after glEnd");
+    glEnd();
+    fc_error(h, "a second glEnd");
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 2);
+    glVertex2f(30, 6);
+    glVertex2f(14, 30);
+    glEnd();
+    fc_error(h, "a triangle");
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDeleteLists(1, 1);
+    fc_capture(h);
+}
+
 /* glGet(GL_TRANSPOSE_TEXTURE_MATRIX) reads texture unit 0's matrix on
  * every active unit (the oracle's get table: CONTEXT_MATRIX_T of the
  * first stack), GL_TEXTURE_MATRIX the active unit's (the API fuzzer's
@@ -1690,5 +1741,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("teximage3d_compile_depth", 8, 8, 0, teximage3d_compile_depth),
     ROBUST("bitmap_negative_compile_sizes", 64, 64, 1, bitmap_negative_compile_sizes),
     ROBUST("transpose_texture_matrix_unit", 8, 8, 0, transpose_texture_matrix_unit),
+    ROBUST("end_after_list_mid_primitive", 32, 32, 1, end_after_list_mid_primitive),
     { 0 }
 };

@@ -558,8 +558,14 @@ static bool merge_draws(struct fgl_vbo_prim *prev, const struct fgl_vbo_prim *cu
 void fgl_vbo_end(struct fgl_context *ctx)
 {
    struct fgl_vbo *vbo = &ctx->Vbo;
-   if (vbo->prim_count == 0)
+   /* vbo_exec_End leaves glBegin/glEnd whether or not it has a primitive
+    * to close: a display list's vertex list that ends mid-primitive puts
+    * the context inside glBegin/glEnd without one (playback_copy_to_current),
+    * and the next glEnd ends it (`robust/end_after_list_mid_primitive`) */
+   if (vbo->prim_count == 0) {
+      ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
       return;
+   }
    struct fgl_vbo_prim *last = &vbo->prims[vbo->prim_count - 1];
 
    last->count = vbo->vert_count - last->start;
