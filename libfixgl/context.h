@@ -785,7 +785,6 @@ struct fgl_query_state {
 struct fgl_client_array {
    bool Enabled;
    GLint Size;             /* components (4 for GL_BGRA) */
-   GLenum Format;          /* GL_RGBA, or GL_BGRA for a colour array */
    GLenum Type;
    GLsizei Stride;         /* as given: the GL_*_ARRAY_STRIDE query */
    GLsizei EffStride;      /* stride, or the element size for 0 */

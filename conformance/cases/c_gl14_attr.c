@@ -279,7 +279,7 @@ static void seccolor_arrays(fc_h *h)
         switch (f) {
         case 0: glSecondaryColorPointer(3, GL_FLOAT, 0, secf[0]); break;   /* stride 0: packed 3 */
         case 1: glSecondaryColorPointer(3, GL_UNSIGNED_BYTE, 4, secub); break;
-        case 2: glSecondaryColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, secub); break;
+        case 2: glSecondaryColorPointer(4, GL_UNSIGNED_BYTE, 0, secub); break;
         case 3: glSecondaryColorPointer(3, GL_SHORT, 0, secs); break;
         case 4: glSecondaryColorPointer(4, GL_FLOAT, 0, secf); break;
         default: glSecondaryColorPointerEXT(3, GL_FLOAT, 16, secf); break;
@@ -353,9 +353,7 @@ static void seccolor_api(fc_h *h)
     fc_is_enabled(h, "array default", GL_SECONDARY_COLOR_ARRAY);
     static const struct { GLint size; GLenum type; GLsizei stride; } calls[] = {
         { 3, GL_FLOAT, 0 }, { 4, GL_UNSIGNED_SHORT, 12 }, { 2, GL_FLOAT, 0 },
-        { 5, GL_FLOAT, 0 }, { 1, GL_BYTE, 0 }, { GL_BGRA, GL_FLOAT, 0 },
-        { GL_BGRA, GL_UNSIGNED_BYTE, 8 }, { 3, GL_INT, -4 }, { 3, GL_HALF_FLOAT, 6 },
-        { 3, GL_UNSIGNED_INT_2_10_10_10_REV, 0 }, { 4, GL_INT_2_10_10_10_REV, 0 },
+        { 5, GL_FLOAT, 0 }, { 1, GL_BYTE, 0 }, { 3, GL_INT, -4 },
         { 3, GL_BITMAP, 0 }, { 3, GL_DOUBLE, 24 }, { 3, GL_UNSIGNED_INT, 0 },
     };
     for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
@@ -647,7 +645,7 @@ static void fogcoord_api(fc_h *h)
     fc_get_float(h, "double overflow", GL_CURRENT_FOG_COORD, 1);
     glFogCoordfEXT(2.5f);
     fc_get_double(h, "ext", GL_CURRENT_FOG_COORD, 1);
-    static const GLenum types[6] = { GL_FLOAT, GL_DOUBLE, GL_HALF_FLOAT, GL_INT,
+    static const GLenum types[6] = { GL_FLOAT, GL_DOUBLE, GL_UNSIGNED_INT, GL_INT,
                                      GL_UNSIGNED_BYTE, GL_SHORT };
     for (int i = 0; i < 6; i++) {
         char label[48];
@@ -760,7 +758,7 @@ static void gl14_arrays_dlist(fc_h *h)
     glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
     glEnableClientState(GL_FOG_COORD_ARRAY);
     glVertexPointer(3, GL_FLOAT, 0, pos);
-    glSecondaryColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, sec);
+    glSecondaryColorPointer(4, GL_UNSIGNED_BYTE, 0, sec);
     glFogCoordPointer(GL_DOUBLE, 0, fcd);
     glColor3f(0.3f, 0.1f, 0.1f);
     const GLuint l = glGenLists(1);

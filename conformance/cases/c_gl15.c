@@ -482,7 +482,7 @@ static void array_bindings(fc_h *h)
     glBindBuffer(GL_ARRAY_BUFFER, b[1]);
     glNormalPointer(GL_SHORT, 8, (const GLvoid *)(uintptr_t)2);
     glBindBuffer(GL_ARRAY_BUFFER, b[2]);
-    glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, NULL);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, NULL);
     glBindBuffer(GL_ARRAY_BUFFER, b[3]);
     glIndexPointer(GL_INT, 0, NULL);
     glBindBuffer(GL_ARRAY_BUFFER, b[4]);

@@ -312,6 +312,85 @@ static void rasterpos_secondary_color(fc_h *h)
     fc_error(h, "clipped error");
 }
 
+/* ---- vertex array types: GL 3.0's GL_HALF_FLOAT (ARB_half_float_vertex),
+ * GL 3.3's packed GL_(UNSIGNED_)INT_2_10_10_10_REV
+ * (ARB_vertex_type_2_10_10_10_rev) and GL 3.2's GL_BGRA size of the colour
+ * arrays (ARB/EXT_vertex_array_bgra), through every pointer call and its
+ * EXT name, with the state each leaves (as varray/pointer_errors,
+ * varray/queries, gl14/seccolor_api and gl14/fogcoord_api called them
+ * before they were limited to GL 1.5).  Without the extensions GL 1.5
+ * raises GL_INVALID_ENUM for the types and GL_INVALID_VALUE for the
+ * GL_BGRA size (a bad size), and keeps the array's state. ---- */
+static void varray_pointer_types(fc_h *h)
+{
+    static GLuint data[64];
+    static const struct { GLint size; GLenum type; GLsizei stride; } calls[] = {
+        { 4, GL_HALF_FLOAT, 0 }, { 3, GL_HALF_FLOAT, 6 }, { 1, GL_HALF_FLOAT, 0 },
+        { 4, GL_INT_2_10_10_10_REV, 0 }, { 3, GL_INT_2_10_10_10_REV, 0 },
+        { 4, GL_UNSIGNED_INT_2_10_10_10_REV, 8 }, { 3, GL_UNSIGNED_INT_2_10_10_10_REV, 0 },
+        { GL_BGRA, GL_UNSIGNED_BYTE, 0 }, { GL_BGRA, GL_UNSIGNED_BYTE, 8 },
+        { GL_BGRA, GL_UNSIGNED_BYTE, -2 }, { GL_BGRA, GL_FLOAT, 0 },
+        { GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, 12 }, { GL_BGRA, GL_INT_2_10_10_10_REV, 0 },
+        { GL_BGRA, GL_HALF_FLOAT, 0 }, { 4, GL_UNSIGNED_INT_10F_11F_11F_REV, 0 },
+    };
+    static const struct { const char *name; GLenum size_q, type_q, stride_q, ptr_q; } arrays[] = {
+        { "vertex", GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE,
+          GL_VERTEX_ARRAY_POINTER },
+        { "normal", 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, GL_NORMAL_ARRAY_POINTER },
+        { "colour", GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
+          GL_COLOR_ARRAY_POINTER },
+        { "texcoord", GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+          GL_TEXTURE_COORD_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_POINTER },
+        { "secondary", GL_SECONDARY_COLOR_ARRAY_SIZE, GL_SECONDARY_COLOR_ARRAY_TYPE,
+          GL_SECONDARY_COLOR_ARRAY_STRIDE, GL_SECONDARY_COLOR_ARRAY_POINTER },
+        { "fog", 0, GL_FOG_COORD_ARRAY_TYPE, GL_FOG_COORD_ARRAY_STRIDE, GL_FOG_COORD_ARRAY_POINTER },
+        { "colour EXT", GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
+          GL_COLOR_ARRAY_POINTER },
+        { "vertex EXT", GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE,
+          GL_VERTEX_ARRAY_POINTER },
+        { "normal EXT", 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, GL_NORMAL_ARRAY_POINTER },
+        { "texcoord EXT", GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+          GL_TEXTURE_COORD_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_POINTER },
+        { "secondary EXT", GL_SECONDARY_COLOR_ARRAY_SIZE, GL_SECONDARY_COLOR_ARRAY_TYPE,
+          GL_SECONDARY_COLOR_ARRAY_STRIDE, GL_SECONDARY_COLOR_ARRAY_POINTER },
+        { "fog EXT", 0, GL_FOG_COORD_ARRAY_TYPE, GL_FOG_COORD_ARRAY_STRIDE,
+          GL_FOG_COORD_ARRAY_POINTER },
+    };
+    char l[96];
+    for (size_t a = 0; a < sizeof arrays / sizeof arrays[0]; a++) {
+        for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
+            const GLint sz = calls[i].size;
+            const GLenum ty = calls[i].type;
+            const GLsizei st = calls[i].stride;
+            const GLvoid *p = data + i;
+            switch (a) {
+            case 0: glVertexPointer(sz, ty, st, p); break;
+            case 1: glNormalPointer(ty, st, p); break;
+            case 2: glColorPointer(sz, ty, st, p); break;
+            case 3: glTexCoordPointer(sz, ty, st, p); break;
+            case 4: glSecondaryColorPointer(sz, ty, st, p); break;
+            case 5: glFogCoordPointer(ty, st, p); break;
+            case 6: glColorPointerEXT(sz, ty, st, 4, p); break;
+            case 7: glVertexPointerEXT(sz, ty, st, 4, p); break;
+            case 8: glNormalPointerEXT(ty, st, 4, p); break;
+            case 9: glTexCoordPointerEXT(sz, ty, st, 4, p); break;
+            case 10: glSecondaryColorPointerEXT(sz, ty, st, p); break;
+            default: glFogCoordPointerEXT(ty, st, p); break;
+            }
+            snprintf(l, sizeof l, "%s size %#x type %#x stride %d", arrays[a].name,
+                     (unsigned)sz, ty, (int)st);
+            fc_error(h, l);
+            if (arrays[a].size_q)
+                fc_get_integer(h, l, arrays[a].size_q, 1);
+            fc_get_integer(h, l, arrays[a].type_q, 1);
+            fc_get_integer(h, l, arrays[a].stride_q, 1);
+            GLvoid *q = NULL;
+            glGetPointerv(arrays[a].ptr_q, &q);
+            fc_value(h, l, q == NULL ? -1 : (long long)((const GLuint *)q - data));
+        }
+    }
+}
+
 const fc_case fc_cases_honesty[] = {
     FC_CASE_RGBA("honesty/primitive_modes", 32, 32, 1, "honesty api varray", primitive_modes),
     FC_CASE("honesty/blend_factors", 16, 16, OSMESA_RGBA, 24, 0, 0,
@@ -330,5 +409,7 @@ const fc_case fc_cases_honesty[] = {
             "honesty api texture query", tex_level_pnames),
     FC_CASE("honesty/rasterpos_secondary_color", 32, 32, OSMESA_RGBA, 24, 0, 0,
             "honesty pixel gl14 rasterpos seccolor query", rasterpos_secondary_color),
+    FC_CASE("honesty/varray_pointer_types", 8, 8, OSMESA_RGBA, 24, 0, 0,
+            "honesty api varray gl14 seccolor fogcoord query", varray_pointer_types),
     { 0 }
 };

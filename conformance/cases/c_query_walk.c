@@ -192,7 +192,7 @@ static void set_everything(fc_h *h, int nested)
 
     glVertexPointer(3, GL_SHORT, 12, walk_vertices);
     glNormalPointer(GL_BYTE, 5, walk_vertices + 1);
-    glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 20, walk_vertices + 2);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 20, walk_vertices + 2);
     glIndexPointer(GL_SHORT, 6, walk_vertices + 3);
     glTexCoordPointer(2, GL_INT, 24, walk_vertices + 4);
     glEdgeFlagPointer(7, walk_vertices + 5);

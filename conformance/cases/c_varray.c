@@ -786,7 +786,7 @@ static void half_packed(fc_h *h)
 }
 
 /* glArrayElement of the types the immediate path reads its own way:
- * half floats (TYPE_IDX), GL_BGRA colours. */
+ * half floats (TYPE_IDX), GL_BGRA colours (honesty: GL 3.0 and 3.2). */
 static void array_element_quirks(fc_h *h)
 {
     fc_pixel_ortho(h);
@@ -805,6 +805,10 @@ static void array_element_quirks(fc_h *h)
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
     glVertexPointer(2, GL_FLOAT, 0, pos);
+    /* a GL 1.5 array first: fixgl (GL 1.5) refuses the next two and
+     * glArrayElement reads this one (an enabled array without a pointer
+     * would crash it, as it does the oracle) */
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, bc);
     glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bc);
     fcu_clear(0, 0, 0, 0, 1);
     glBegin(GL_POINTS);
@@ -1052,7 +1056,6 @@ static void pointer_errors(fc_h *h)
     glVertexPointer(3, GL_FLOAT, -4, data); fc_error(h, "vertex negative stride");
     fc_get_integer(h, "vertex stride after negative", GL_VERTEX_ARRAY_STRIDE, 1);
     glVertexPointer(3, GL_FLOAT, -4, data + 1); fc_error(h, "vertex negative stride again");
-    glVertexPointer(3, GL_INT_2_10_10_10_REV, 0, data); fc_error(h, "vertex packed size 3");
     glVertexPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, data); fc_error(h, "vertex bgra");
     glNormalPointer(GL_UNSIGNED_BYTE, 0, data); fc_error(h, "normal ubyte");
     glNormalPointer(GL_UNSIGNED_SHORT, 0, data); fc_error(h, "normal ushort");
@@ -1061,9 +1064,6 @@ static void pointer_errors(fc_h *h)
     glColorPointer(2, GL_FLOAT, 0, data); fc_error(h, "colour size 2");
     glColorPointer(5, GL_FLOAT, 0, data); fc_error(h, "colour size 5");
     glColorPointer(4, GL_BOOL, 0, data); fc_error(h, "colour bool");
-    glColorPointer(GL_BGRA, GL_FLOAT, 0, data); fc_error(h, "colour bgra float");
-    glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, -2, data); fc_error(h, "colour bgra negative stride");
-    glColorPointer(3, GL_UNSIGNED_INT_2_10_10_10_REV, 0, data); fc_error(h, "colour packed size 3");
     glTexCoordPointer(0, GL_FLOAT, 0, data); fc_error(h, "texcoord size 0");
     glTexCoordPointer(2, GL_UNSIGNED_BYTE, 0, data); fc_error(h, "texcoord ubyte");
     glIndexPointer(GL_BYTE, 0, data); fc_error(h, "index byte");
@@ -1179,10 +1179,10 @@ static void queries(fc_h *h)
         } else if (pass == 1) {
             for (int i = 0; i < 6; i += 2)
                 glDisable(caps[i]);
-            glVertexPointer(4, GL_HALF_FLOAT, 0, data + 6);
-            glNormalPointer(GL_INT_2_10_10_10_REV, 0, data);
-            glColorPointer(GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, 12, data);
-            glTexCoordPointer(4, GL_UNSIGNED_INT_2_10_10_10_REV, 0, data + 7);
+            glVertexPointer(4, GL_DOUBLE, 0, data + 6);
+            glNormalPointer(GL_INT, 0, data);
+            glColorPointer(4, GL_UNSIGNED_INT, 12, data);
+            glTexCoordPointer(3, GL_SHORT, 0, data + 7);
         }
     }
     void *p = (void *)1;
@@ -1205,7 +1205,7 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/color_types4", 64, 64, 8, "api varray", color_types4),
     FC_CASE_RGBA("varray/color_types3", 64, 64, 8, "api varray", color_types3),
     FC_CASE_RGBA("varray/color_types_blend", 64, 64, 1, "api varray blend", color_types_blend),
-    FC_CASE_RGBA("varray/color_bgra", 64, 64, 1, "api varray", color_bgra),
+    FC_CASE_RGBA("honesty/varray_color_bgra", 64, 64, 1, "honesty api varray", color_bgra),
     FC_CASE_RGBA("varray/normal_types", 64, 64, 5, "api varray lighting", normal_types),
     FC_CASE_RGBA("varray/lit_color_material", 64, 64, 3, "api varray lighting", lit_color_material),
     FC_CASE_RGBA("varray/strides", 64, 64, 2, "api varray", strides),
@@ -1221,8 +1221,8 @@ const fc_case fc_cases_varray[] = {
     FC_CASE_RGBA("varray/current_values", 64, 64, 3, "api varray", current_values),
     FC_CASE_RGBA("varray/edge_flags", 64, 64, 1, "api varray polygon_mode", edge_flags),
     FC_CASE_RGBA("varray/clipped", 64, 64, 2, "api varray clip", clipped),
-    FC_CASE_RGBA("varray/half_packed", 64, 64, 6, "api varray lighting", half_packed),
-    FC_CASE_RGBA("varray/array_element_quirks", 64, 64, 2, "api varray", array_element_quirks),
+    FC_CASE_RGBA("honesty/varray_half_packed", 64, 64, 6, "honesty api varray lighting", half_packed),
+    FC_CASE_RGBA("honesty/varray_array_element_quirks", 64, 64, 2, "honesty api varray", array_element_quirks),
     FC_CASE_RGBA("varray/long_draws", 64, 64, 4, "api varray clip", long_draws),
     FC_CASE_RGBA("varray/interleaved", 64, 64, 1, "api varray errors query", interleaved),
     FC_CASE_RGBA("varray/client_attrib", 64, 64, 2, "api varray errors query", client_attrib),

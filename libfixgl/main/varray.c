@@ -37,18 +37,19 @@
  * main/getstring.c:_mesa_GetPointerv]. */
 
 /* Mesa's type bits [S: main/varray.c:type_to_bit] for the legal types of
- * each array on the desktop compatibility profile */
+ * each array on the desktop compatibility profile, limited to GL 1.5: the
+ * oracle's GL_HALF_FLOAT (GL 3.0 / ARB_half_float_vertex) and
+ * GL_(UNSIGNED_)INT_2_10_10_10_REV (GL 3.3 / ARB_vertex_type_2_10_10_10_rev)
+ * have no bit, so they fail the type check with GL_INVALID_ENUM where the
+ * oracle checks its legal types (README "Version and honesty") */
 #define B_BYTE    (1u << 0)
 #define B_UBYTE   (1u << 1)
 #define B_SHORT   (1u << 2)
 #define B_USHORT  (1u << 3)
 #define B_INT     (1u << 4)
 #define B_UINT    (1u << 5)
-#define B_HALF    (1u << 6)
 #define B_FLOAT   (1u << 7)
 #define B_DOUBLE  (1u << 8)
-#define B_I2101010  (1u << 9)
-#define B_UI2101010 (1u << 10)
 
 static unsigned type_bit(GLenum type)
 {
@@ -59,11 +60,8 @@ static unsigned type_bit(GLenum type)
    case GL_UNSIGNED_SHORT: return B_USHORT;
    case GL_INT: return B_INT;
    case GL_UNSIGNED_INT: return B_UINT;
-   case GL_HALF_FLOAT: return B_HALF;
    case GL_FLOAT: return B_FLOAT;
    case GL_DOUBLE: return B_DOUBLE;
-   case GL_INT_2_10_10_10_REV: return B_I2101010;
-   case GL_UNSIGNED_INT_2_10_10_10_REV: return B_UI2101010;
    default: return 0;
    }
 }
@@ -73,9 +71,8 @@ static GLsizei element_size(GLenum type, GLint size)
 {
    switch (type) {
    case GL_BYTE: case GL_UNSIGNED_BYTE: return size;
-   case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_HALF_FLOAT: return 2 * size;
+   case GL_SHORT: case GL_UNSIGNED_SHORT: return 2 * size;
    case GL_DOUBLE: return 8 * size;
-   case GL_INT_2_10_10_10_REV: case GL_UNSIGNED_INT_2_10_10_10_REV: return 4;
    default: return 4 * size;
    }
 }
@@ -99,7 +96,7 @@ void fgl_init_array(struct fgl_context *ctx)
    };
    for (int i = 0; i < FGL_ARRAY_COUNT; i++) {
       ctx->Array.Array[i] = (struct fgl_client_array){
-         .Enabled = false, .Size = init[i].size, .Format = GL_RGBA,
+         .Enabled = false, .Size = init[i].size,
          .Type = init[i].type, .Stride = 0,
          .EffStride = element_size(init[i].type, init[i].size), .Ptr = NULL,
       };
@@ -109,11 +106,10 @@ void fgl_init_array(struct fgl_context *ctx)
 /* update_array: the arrays are read at draw time, nothing stored needs a
  * flush */
 static void update_array(struct fgl_context *ctx, enum fgl_array_index a, GLint size,
-                         GLenum format, GLenum type, GLsizei stride, const GLvoid *ptr)
+                         GLenum type, GLsizei stride, const GLvoid *ptr)
 {
    struct fgl_client_array *arr = &ctx->Array.Array[a];
    arr->Size = size;
-   arr->Format = format;
    arr->Type = type;
    arr->Stride = stride;
    arr->EffStride = stride ? stride : element_size(type, size);
@@ -125,67 +121,54 @@ static void update_array(struct fgl_context *ctx, enum fgl_array_index a, GLint 
 
 /* validate_array_and_format then update_array [S: main/varray.c].  Note
  * that validate_array's errors (a negative stride) do not stop the update:
- * only validate_array_format's do. */
+ * only validate_array_format's do.  Its order: the type (GL_INVALID_ENUM),
+ * then the size (GL_INVALID_VALUE).  GL_BGRA as the size of glColorPointer
+ * and glSecondaryColorPointer is GL 3.2's (ARB/EXT_vertex_array_bgra, not
+ * listed): without the extension the oracle's get_array_format leaves the
+ * size as given and the size range check refuses it with GL_INVALID_VALUE,
+ * as GL 1.5 does for a bad size. */
 static void pointer(enum fgl_array_index a, unsigned legal, GLint size_min,
-                    GLint size_max, bool bgra_ok, GLint size, GLenum type,
+                    GLint size_max, GLint size, GLenum type,
                     GLsizei stride, const GLvoid *ptr)
 {
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
    ASSERT_OUTSIDE_BEGIN_END_DISPATCH(ctx);
-   GLenum format = GL_RGBA;
-   if (bgra_ok && size == GL_BGRA) {   /* get_array_format */
-      format = GL_BGRA;
-      size = 4;
-   }
    if (stride < 0)
       fgl_error(ctx, GL_INVALID_VALUE);
    if (!(type_bit(type) & legal)) {
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   if (format == GL_BGRA) {
-      if (type != GL_UNSIGNED_INT_2_10_10_10_REV && type != GL_INT_2_10_10_10_REV &&
-          type != GL_UNSIGNED_BYTE) {
-         fgl_error(ctx, GL_INVALID_OPERATION);
-         return;
-      }
-   } else if (size < size_min || size > size_max) {
+   if (size < size_min || size > size_max) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
    }
-   if ((type == GL_UNSIGNED_INT_2_10_10_10_REV || type == GL_INT_2_10_10_10_REV) &&
-       size != 4) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
-   update_array(ctx, a, size, format, type, stride, ptr);
+   update_array(ctx, a, size, type, stride, ptr);
 }
 
 void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_VERTEX, B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
-           B_UI2101010 | B_I2101010, 2, 4, false, size, type, stride, ptr);
+   pointer(FGL_ARRAY_VERTEX, B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 2, 4, size, type, stride, ptr);
 }
 
 void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_NORMAL, B_BYTE | B_SHORT | B_INT | B_HALF | B_FLOAT | B_DOUBLE |
-           B_UI2101010 | B_I2101010, 3, 3, false, 3, type, stride, ptr);
+   pointer(FGL_ARRAY_NORMAL, B_BYTE | B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 3, 3, 3, type, stride, ptr);
 }
 
 void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr)
 {
    pointer(FGL_ARRAY_COLOR, B_BYTE | B_UBYTE | B_SHORT | B_USHORT | B_INT | B_UINT |
-           B_HALF | B_FLOAT | B_DOUBLE | B_UI2101010 | B_I2101010, 3, 4, true,
+           B_FLOAT | B_DOUBLE, 3, 4,
            size, type, stride, ptr);
 }
 
 /* state only: colour index arrays never draw in RGBA mode */
 void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_INDEX, B_UBYTE | B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 1, 1, false,
+   pointer(FGL_ARRAY_INDEX, B_UBYTE | B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 1, 1,
            1, type, stride, ptr);
 }
 
@@ -196,13 +179,12 @@ void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   pointer(FGL_ARRAY_TEX(ctx->Array.ActiveTexture), B_SHORT | B_INT | B_FLOAT | B_DOUBLE | B_HALF |
-           B_UI2101010 | B_I2101010, 1, 4, false, size, type, stride, ptr);
+   pointer(FGL_ARRAY_TEX(ctx->Array.ActiveTexture), B_SHORT | B_INT | B_FLOAT | B_DOUBLE, 1, 4, size, type, stride, ptr);
 }
 
 void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_EDGEFLAG, B_UBYTE, 1, 1, false, 1, GL_UNSIGNED_BYTE, stride, ptr);
+   pointer(FGL_ARRAY_EDGEFLAG, B_UBYTE, 1, 1, 1, GL_UNSIGNED_BYTE, stride, ptr);
 }
 
 /* glSecondaryColorPointer (GL 1.4, EXT alias): three or four components
@@ -212,7 +194,7 @@ void GLAPIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
                                         const GLvoid *ptr)
 {
    pointer(FGL_ARRAY_COLOR1, B_BYTE | B_UBYTE | B_SHORT | B_USHORT | B_INT | B_UINT |
-           B_HALF | B_FLOAT | B_DOUBLE | B_UI2101010 | B_I2101010, 3, 4, true,
+           B_FLOAT | B_DOUBLE, 3, 4,
            size, type, stride, ptr);
 }
 
@@ -226,7 +208,7 @@ void GLAPIENTRY glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stri
  * [S: main/varray.c:_mesa_FogCoordPointer] */
 void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *ptr)
 {
-   pointer(FGL_ARRAY_FOGCOORD, B_HALF | B_FLOAT | B_DOUBLE, 1, 1, false, 1, type, stride, ptr);
+   pointer(FGL_ARRAY_FOGCOORD, B_FLOAT | B_DOUBLE, 1, 1, 1, type, stride, ptr);
 }
 
 void GLAPIENTRY glFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *ptr)
@@ -296,15 +278,15 @@ void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid 
    const enum fgl_array_index tex = FGL_ARRAY_TEX(ctx->Array.ActiveTexture);
    A[tex].Enabled = tc != 0;
    if (tc)
-      update_array(ctx, tex, tc, GL_RGBA, GL_FLOAT, stride, p);
+      update_array(ctx, tex, tc, GL_FLOAT, stride, p);
    A[FGL_ARRAY_COLOR].Enabled = cc != 0;
    if (cc)
-      update_array(ctx, FGL_ARRAY_COLOR, cc, GL_RGBA, ctype, stride, p + coff);
+      update_array(ctx, FGL_ARRAY_COLOR, cc, ctype, stride, p + coff);
    A[FGL_ARRAY_NORMAL].Enabled = nflag;
    if (nflag)
-      update_array(ctx, FGL_ARRAY_NORMAL, 3, GL_RGBA, GL_FLOAT, stride, p + noff);
+      update_array(ctx, FGL_ARRAY_NORMAL, 3, GL_FLOAT, stride, p + noff);
    A[FGL_ARRAY_VERTEX].Enabled = true;
-   update_array(ctx, FGL_ARRAY_VERTEX, vc, GL_RGBA, GL_FLOAT, stride, p + voff);
+   update_array(ctx, FGL_ARRAY_VERTEX, vc, GL_FLOAT, stride, p + voff);
 }
 
 struct fgl_client_array *fgl_client_array(struct fgl_context *ctx, GLenum cap)
@@ -363,10 +345,7 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
    case GL_VERTEX_ARRAY_STRIDE: *value = A[FGL_ARRAY_VERTEX].Stride; return true;
    case GL_NORMAL_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_NORMAL].Type; return true;
    case GL_NORMAL_ARRAY_STRIDE: *value = A[FGL_ARRAY_NORMAL].Stride; return true;
-   case GL_COLOR_ARRAY_SIZE:
-      /* [S: main/get.c:find_custom_value] GL_BGRA reads back as such */
-      *value = A[FGL_ARRAY_COLOR].Format == GL_BGRA ? GL_BGRA : A[FGL_ARRAY_COLOR].Size;
-      return true;
+   case GL_COLOR_ARRAY_SIZE: *value = A[FGL_ARRAY_COLOR].Size; return true;
    case GL_COLOR_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_COLOR].Type; return true;
    case GL_COLOR_ARRAY_STRIDE: *value = A[FGL_ARRAY_COLOR].Stride; return true;
    case GL_INDEX_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_INDEX].Type; return true;
@@ -379,7 +358,7 @@ bool fgl_get_array_value(struct fgl_context *ctx, GLenum pname, int *value)
    case GL_FOG_COORD_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_FOGCOORD].Type; return true;
    case GL_FOG_COORD_ARRAY_STRIDE: *value = A[FGL_ARRAY_FOGCOORD].Stride; return true;
    case GL_SECONDARY_COLOR_ARRAY_SIZE:
-      *value = A[FGL_ARRAY_COLOR1].Format == GL_BGRA ? GL_BGRA : A[FGL_ARRAY_COLOR1].Size;
+      *value = A[FGL_ARRAY_COLOR1].Size;
       return true;
    case GL_SECONDARY_COLOR_ARRAY_TYPE: *value = (int)A[FGL_ARRAY_COLOR1].Type; return true;
    case GL_SECONDARY_COLOR_ARRAY_STRIDE: *value = A[FGL_ARRAY_COLOR1].Stride; return true;

@@ -34,21 +34,9 @@
 #include "tnl/t_pipeline.h"
 #include "fgl_alloc.h"
 
-/* util_format half -> float, exact */
-static float half_to_float(uint16_t h)
-{
-   const unsigned e = (h >> 10) & 0x1f, m = h & 0x3ff;
-   float f;
-   if (e == 0)
-      f = ldexpf((float)m, -24);
-   else if (e == 31)
-      f = m ? NAN : INFINITY;
-   else
-      f = ldexpf((float)(m | 0x400), (int)e - 25);
-   return (h & 0x8000) ? -f : f;
-}
-
-/* One component c of an array element, as gallivm fetches it. */
+/* One component c of an array element, as gallivm fetches it.  The
+ * array types are GL 1.5's: varray.c refuses GL_HALF_FLOAT, the packed
+ * 2_10_10_10 types and a GL_BGRA size (README "Version and honesty"). */
 static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
 {
    switch (type) {
@@ -86,11 +74,6 @@ static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
       memcpy(&f, &bits, 4);
       return (f - 1.0f) * (float)(8388608.0 / 8388607.0);
    }
-   case GL_HALF_FLOAT: {
-      uint16_t v;
-      memcpy(&v, p + 2 * c, 2);
-      return half_to_float(v);
-   }
    case GL_FLOAT: {
       float v;
       memcpy(&v, p + 4 * c, 4);
@@ -100,18 +83,6 @@ static float fetch_comp(const GLubyte *p, GLenum type, bool normalized, int c)
       double v;
       memcpy(&v, p + 8 * c, 8);
       return (float)v;
-   }
-   case GL_INT_2_10_10_10_REV:
-   case GL_UNSIGNED_INT_2_10_10_10_REV: {
-      uint32_t v;
-      memcpy(&v, p, 4);
-      const int width = c == 3 ? 2 : 10;
-      const uint32_t raw = (v >> (10 * c)) & ((1u << width) - 1);
-      if (type == GL_UNSIGNED_INT_2_10_10_10_REV)
-         return normalized ? (float)raw * (float)(1.0 / ((1u << width) - 1)) : (float)raw;
-      const int s = (int)(raw << (32 - width)) >> (32 - width);
-      return normalized ? fmaxf((float)s * (float)(1.0 / ((1 << (width - 1)) - 1)), -1.0f)
-                        : (float)s;
    }
    default:
       return 0.0f;
@@ -127,13 +98,9 @@ static uint64_t element_bytes(const struct fgl_client_array *a)
       return (uint64_t)a->Size;
    case GL_SHORT:
    case GL_UNSIGNED_SHORT:
-   case GL_HALF_FLOAT:
       return 2u * (uint64_t)a->Size;
    case GL_DOUBLE:
       return 8u * (uint64_t)a->Size;
-   case GL_INT_2_10_10_10_REV:
-   case GL_UNSIGNED_INT_2_10_10_10_REV:
-      return 4u;
    default:
       return 4u * (uint64_t)a->Size;
    }
@@ -180,11 +147,6 @@ static void fetch(const struct fgl_client_array *a, bool normalized, GLuint elt,
    }
    for (int c = 0; c < a->Size; c++)
       out[c] = fetch_comp(p, a->Type, normalized, c);
-   if (a->Format == GL_BGRA) {
-      const float t = out[0];
-      out[0] = out[2];
-      out[2] = t;
-   }
 }
 
 /* The vertices of mode's first primitive and of each next one
@@ -419,10 +381,8 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
 
 /* Immediate-mode conversions of the NV attribute functions
  * [S: main/api_arrayelt.c:AttribFuncsNV]: normalized integers with Mesa's
- * macros (main/conv.h), others cast.  TYPE_IDX(t) = t & 7 (GL_DOUBLE
- * apart) reads GL_HALF_FLOAT (0x140B) as GL_UNSIGNED_SHORT (0x1403), and
- * the packed types are not looked at either; func_nv ignores a GL_BGRA
- * format. */
+ * macros (main/conv.h), others cast, indexed by TYPE_IDX(t) = t & 7
+ * (GL_DOUBLE apart); only GL 1.5's types reach here (varray.c). */
 static float immediate_comp(const GLubyte *p, GLenum type, bool normalized, int c)
 {
    if (type != GL_DOUBLE)

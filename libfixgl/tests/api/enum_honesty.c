@@ -17,6 +17,7 @@
  *
  * fixgl only (the oracle implements GL 4.5 and accepts these enums).
  */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 
@@ -241,6 +242,19 @@ static void probe_foreign(const struct def *d)
    expect_enum("glTexGeni(mode)", d);
    glMatrixMode(v);
    expect_enum("glMatrixMode", d);
+   /* the vertex array types (GL_HALF_FLOAT, GL_INT_2_10_10_10_REV...) */
+   glVertexPointer(3, v, 0, buf.i);
+   expect_enum("glVertexPointer", d);
+   glNormalPointer(v, 0, buf.i);
+   expect_enum("glNormalPointer", d);
+   glColorPointer(4, v, 0, buf.i);
+   expect_enum("glColorPointer", d);
+   glTexCoordPointer(2, v, 0, buf.i);
+   expect_enum("glTexCoordPointer", d);
+   glSecondaryColorPointer(3, v, 0, buf.i);
+   expect_enum("glSecondaryColorPointer", d);
+   glFogCoordPointer(v, 0, buf.i);
+   expect_enum("glFogCoordPointer", d);
 }
 
 int main(int argc, char **argv)
@@ -287,7 +301,7 @@ int main(int argc, char **argv)
    }
    /* a sanity bound: glext.h holds thousands of enums beyond GL 1.5 */
    CHECK(probed > 1000, "only %d foreign values probed", probed);
-   printf("enum_honesty: %d definitions, %d foreign names, %d foreign values probed with 37 calls "
+   printf("enum_honesty: %d definitions, %d foreign names, %d foreign values probed with 43 calls "
           "each, %d wrong answers\n",
           ndefs, foreign, probed, foreign_failures);
    CHECK(foreign_failures == 0, "%d calls accepted an enum fixgl does not have", foreign_failures);
@@ -307,6 +321,60 @@ int main(int argc, char **argv)
    CHECK(mode == GL_LUMINANCE, "GL_DEPTH_TEXTURE_MODE after GL_RED: %#x", (unsigned)mode);
    glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_ALPHA);
    CHECK(glGetError() == GL_NO_ERROR, "GL_DEPTH_TEXTURE_MODE GL_ALPHA: no error");
+
+   /* GL_UNSIGNED_INT_2_10_10_10_REV is a GL 1.2 pixel type, a vertex
+    * array type only from GL 3.3 (ARB_vertex_type_2_10_10_10_rev): GL 1.5
+    * raises GL_INVALID_ENUM.  GL_BGRA is a GL 1.2 pixel format, the size
+    * of a colour array only from GL 3.2 (ARB/EXT_vertex_array_bgra): GL
+    * 1.5 raises GL_INVALID_VALUE, a bad size, after the type check.  Each
+    * leaves the array as it was. */
+   static GLuint arr[16];
+   glColorPointer(3, GL_UNSIGNED_BYTE, 0, arr);
+   glSecondaryColorPointer(3, GL_UNSIGNED_BYTE, 0, arr);
+   glVertexPointer(2, GL_SHORT, 0, arr);
+   glNormalPointer(GL_BYTE, 0, arr);
+   glTexCoordPointer(2, GL_SHORT, 0, arr);
+   CHECK(glGetError() == GL_NO_ERROR, "GL 1.5 pointers: no error");
+   glVertexPointer(4, GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glVertexPointer 2_10_10_10_REV: GL_INVALID_ENUM");
+   glNormalPointer(GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glNormalPointer 2_10_10_10_REV: GL_INVALID_ENUM");
+   glColorPointer(4, GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glColorPointer 2_10_10_10_REV: GL_INVALID_ENUM");
+   glTexCoordPointer(4, GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glTexCoordPointer 2_10_10_10_REV: GL_INVALID_ENUM");
+   glSecondaryColorPointer(4, GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glSecondaryColorPointer 2_10_10_10_REV: GL_INVALID_ENUM");
+   glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_VALUE, "glColorPointer GL_BGRA: GL_INVALID_VALUE");
+   glColorPointerEXT(GL_BGRA, GL_UNSIGNED_BYTE, 0, 4, arr + 1);
+   CHECK(glGetError() == GL_INVALID_VALUE, "glColorPointerEXT GL_BGRA: GL_INVALID_VALUE");
+   glSecondaryColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_VALUE, "glSecondaryColorPointer GL_BGRA: GL_INVALID_VALUE");
+   glSecondaryColorPointerEXT(GL_BGRA, GL_UNSIGNED_BYTE, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_VALUE, "glSecondaryColorPointerEXT GL_BGRA: GL_INVALID_VALUE");
+   /* the type is checked first: a foreign type with GL_BGRA is an enum error */
+   glColorPointer(GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_ENUM, "glColorPointer GL_BGRA 2_10_10_10_REV: GL_INVALID_ENUM");
+   glColorPointer(GL_BGRA, GL_FLOAT, 0, arr + 1);
+   CHECK(glGetError() == GL_INVALID_VALUE, "glColorPointer GL_BGRA GL_FLOAT: GL_INVALID_VALUE");
+   CHECK(glGetError() == GL_NO_ERROR, "one error per call");
+   GLint q[2] = { 0, 0 };
+   glGetIntegerv(GL_COLOR_ARRAY_SIZE, &q[0]);
+   glGetIntegerv(GL_COLOR_ARRAY_TYPE, &q[1]);
+   CHECK(q[0] == 3 && q[1] == GL_UNSIGNED_BYTE, "colour array kept: size %d type %#x", q[0],
+         (unsigned)q[1]);
+   glGetIntegerv(GL_SECONDARY_COLOR_ARRAY_SIZE, &q[0]);
+   glGetIntegerv(GL_SECONDARY_COLOR_ARRAY_TYPE, &q[1]);
+   CHECK(q[0] == 3 && q[1] == GL_UNSIGNED_BYTE, "secondary colour array kept: size %d type %#x",
+         q[0], (unsigned)q[1]);
+   glGetIntegerv(GL_VERTEX_ARRAY_TYPE, &q[0]);
+   glGetIntegerv(GL_NORMAL_ARRAY_TYPE, &q[1]);
+   CHECK(q[0] == GL_SHORT && q[1] == GL_BYTE, "vertex, normal arrays kept: %#x %#x",
+         (unsigned)q[0], (unsigned)q[1]);
+   GLvoid *ptr = NULL;
+   glGetPointerv(GL_COLOR_ARRAY_POINTER, &ptr);
+   CHECK(ptr == (GLvoid *)arr, "colour array pointer kept");
 
    OSMesaDestroyContext(ctx);
    return check_report("enum_honesty");
