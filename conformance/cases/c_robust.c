@@ -1696,6 +1696,34 @@ static void transpose_texture_matrix_unit(fc_h *h)
     glMatrixMode(GL_MODELVIEW);
 }
 
+/* glTexParameterf of an integer parameter at the edges of the int range:
+ * Mesa rounds and clamps with float compares against INT_MAX and INT_MIN,
+ * which are 2^31 and -2^31 as floats, so 2^31 itself is converted as x86
+ * converts 2^31 + 0.5, to INT_MIN (a GL_INVALID_VALUE for the levels);
+ * the next float up clamps to INT_MAX (libFuzzer under UBSan found the
+ * conversion of 2^31 in fixgl). */
+static void texparameterf_int_edges(fc_h *h)
+{
+    static const float vals[] = {
+        2147483648.0f, 4294967296.0f, 2147483520.0f, -2147483648.0f,
+        -2147483904.0f, 1e30f, -1e30f, 1000.5f, -0.5f,
+    };
+    static const GLenum pnames[] = { GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_BASE_LEVEL };
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    for (int p = 0; p < 2; p++)
+        for (int i = 0; i < (int)(sizeof vals / sizeof vals[0]); i++) {
+            glTexParameteri(GL_TEXTURE_2D, pnames[p], p == 0 ? 1000 : 0);
+            glTexParameterf(GL_TEXTURE_2D, pnames[p], vals[i]);
+            fc_error(h, "glTexParameterf");
+            GLint v = -7;
+            glGetTexParameteriv(GL_TEXTURE_2D, pnames[p], &v);
+            fc_value(h, "level", v);
+        }
+    glDeleteTextures(1, &tex);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -1738,6 +1766,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("draw_keeps_vertex_format", 32, 32, 1, draw_keeps_vertex_format),
     ROBUST("compile_execute_inside_begin", 64, 64, 1, compile_execute_inside_begin),
     ROBUST("long_array_draws", 64, 64, 16, long_array_draws),
+    ROBUST("texparameterf_int_edges", 8, 8, 0, texparameterf_int_edges),
     ROBUST("teximage3d_compile_depth", 8, 8, 0, teximage3d_compile_depth),
     ROBUST("bitmap_negative_compile_sizes", 64, 64, 1, bitmap_negative_compile_sizes),
     ROBUST("transpose_texture_matrix_unit", 8, 8, 0, transpose_texture_matrix_unit),

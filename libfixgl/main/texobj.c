@@ -694,10 +694,13 @@ static void tex_parameterfv(struct fgl_context *ctx, GLenum target, GLenum pname
       if (scalar) {
          /* [S: texparam.c:_mesa_texture_parameterf] (param > 0) ?
           * floor(param + 0.5) : ceil(param - 0.5), clamped to the int
-          * range; a NaN converts as x86 converts it, to INT_MIN */
+          * range by float compares with INT_MAX and INT_MIN, which are
+          * 2^31 and -2^31 as floats: so 2^31 itself is not clamped and
+          * converts as x86 converts it, to INT_MIN, as does a NaN */
          v = isnan(p) ? INT_MIN
-             : p > 0 ? (p > INT_MAX ? INT_MAX : (GLint)floor(p + 0.5))
-                     : (p < INT_MIN ? INT_MIN : (GLint)ceil(p - 0.5));
+             : p > 0 ? (p > 2147483648.0f ? INT_MAX
+                        : p == 2147483648.0f ? INT_MIN : (GLint)floor(p + 0.5))
+                     : (p < -2147483648.0f ? INT_MIN : (GLint)ceil(p - 0.5));
       } else {
          /* (GLint)params[0]: the x86 conversion, INT_MIN when out of
           * range or NaN */
