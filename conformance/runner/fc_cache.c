@@ -174,32 +174,6 @@ static void entry_path(const struct fc_cache *c, const char *name, char *out, si
     snprintf(out + n, size - (size_t)n, ".rec");
 }
 
-static unsigned char *read_all(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *buf = NULL;
-    size_t cap = 0, n = 0, got;
-    *len = 0;
-    if (!f)
-        return NULL;
-    do {
-        if (n == cap) {
-            cap = cap ? 2 * cap : 1 << 16;
-            buf = realloc(buf, cap + 1);
-        }
-        got = fread(buf + n, 1, cap - n, f);
-        n += got;
-    } while (got > 0);
-    if (ferror(f)) {
-        free(buf);
-        fclose(f);
-        return NULL;
-    }
-    fclose(f);
-    *len = n;
-    return buf;
-}
-
 static void write_all(const char *path, const void *data, size_t len)
 {
     char tmp[1100];
@@ -220,7 +194,7 @@ unsigned char *fc_cache_load(const struct fc_cache *c, const char *name, size_t 
 {
     char path[1024];
     entry_path(c, name, path, sizeof path);
-    return read_all(path, len);
+    return fc_read_file(path, len);
 }
 
 void fc_cache_store(const struct fc_cache *c, const char *name, const unsigned char *data, size_t len)
@@ -236,9 +210,9 @@ char *fc_cache_load_info(const struct fc_cache *c, int which)
     size_t len;
     unsigned char *s;
     snprintf(path, sizeof path, "%s/info-%s", c->dir, which ? "version" : "renderer");
-    if (!(s = read_all(path, &len)))
+    if (!(s = fc_read_file(path, &len)))
         return NULL;
-    s[len] = 0;     /* read_all leaves room for it */
+    s[len] = 0;     /* fc_read_file leaves room for it */
     return (char *)s;
 }
 

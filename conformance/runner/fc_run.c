@@ -98,7 +98,10 @@ static void print_log(const char *path)
     fclose(f);
 }
 
-static unsigned char *read_file(const char *path, size_t *len)
+/* The whole file at path, with one more byte allocated after its len
+ * bytes (room for a terminating NUL); NULL if it cannot be opened, read or
+ * held. */
+unsigned char *fc_read_file(const char *path, size_t *len)
 {
     FILE *f = fopen(path, "rb");
     unsigned char *buf = NULL;
@@ -108,12 +111,23 @@ static unsigned char *read_file(const char *path, size_t *len)
         return NULL;
     do {
         if (n == cap) {
-            cap = cap ? 2 * cap : 1 << 20;
-            buf = realloc(buf, cap);
+            cap = cap ? 2 * cap : 1 << 16;
+            unsigned char *grown = realloc(buf, cap + 1);
+            if (!grown) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = grown;
         }
         got = fread(buf + n, 1, cap - n, f);
         n += got;
     } while (got > 0);
+    if (ferror(f)) {
+        free(buf);
+        fclose(f);
+        return NULL;
+    }
     fclose(f);
     *len = n;
     return buf;
@@ -146,7 +160,7 @@ static void store(struct fc_side_result *r, const unsigned char *p, size_t len, 
 static void finish_task(struct sched *s, struct task *t, int status)
 {
     size_t len, pos = 0, start = 0, k = t->first;
-    unsigned char *buf = read_file(t->out, &len);
+    unsigned char *buf = fc_read_file(t->out, &len);
     struct fc_rec r;
     int in_case = 0;
     int clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;

@@ -51,4 +51,8 @@ int fc_run_items(struct fc_run_cfg *cfg, struct fc_item *items, size_t n,
  * or NULL if it could not run or failed. */
 char *fc_run_capture(const char *const *argv);
 
+/* The whole file at path (malloc'ed, *len bytes, one more byte allocated
+ * for a terminating NUL), or NULL if it cannot be opened, read or held. */
+unsigned char *fc_read_file(const char *path, size_t *len);
+
 #endif
