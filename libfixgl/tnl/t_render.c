@@ -405,7 +405,8 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
  * colour that no live instruction reads is no input of the shader, so it
  * makes no constant-interpolated input of llvmpipe's setup
  * [S: ff_fragment_shader.cpp emit_texenv, emit_combine; the NIR
- * optimisations of the state tracker] (random-tex witness, s2-i107: a
+ * optimisations of the state tracker] (ORACLE-NOTES.md "Primitive
+ * decomposition and the provoking vertex"; random-tex witness, s2-i107: a
  * GL_REPLACE unit of an RGBA texture after the colour). */
 static bool t_fs_reads_primary(const struct r_state *rs)
 {

@@ -561,7 +561,8 @@ void fgl_vbo_end(struct fgl_context *ctx)
    /* vbo_exec_End leaves glBegin/glEnd whether or not it has a primitive
     * to close: a display list's vertex list that ends mid-primitive puts
     * the context inside glBegin/glEnd without one (playback_copy_to_current),
-    * and the next glEnd ends it (`robust/end_after_list_mid_primitive`) */
+    * and the next glEnd ends it (ORACLE-NOTES.md "Display lists";
+    * `robust/end_after_list_mid_primitive`) */
    if (vbo->prim_count == 0) {
       ctx->BeginMode = FGL_OUTSIDE_BEGIN_END;
       return;
