@@ -139,11 +139,11 @@ static float wbuf[WW * WH * 4 * 2];   /* room for either type */
  * pre-filled with a pattern), runs `draw`, records the buffer's bytes and
  * binds the harness's context again. */
 static void wide_run(fc_h *h, const char *label, GLenum format, GLenum type,
-                     void (*draw)(fc_h *h), int depth)
+                     void (*draw)(fc_h *h), int depth, int accum)
 {
     const int nc = format == OSMESA_RGB ? 3 : 4;
     const size_t size = (size_t)WW * WH * (size_t)nc * (type == GL_FLOAT ? 4 : 2);
-    OSMesaContext ctx = OSMesaCreateContextExt(format, depth, 0, 0, NULL);
+    OSMesaContext ctx = OSMesaCreateContextExt(format, depth, 0, accum, NULL);
     char l[96];
     snprintf(l, sizeof l, "%s: created", label);
     fc_value(h, l, ctx != NULL);
@@ -324,7 +324,101 @@ static void draw_readpixels(fc_h *h)
 }
 
 #define WIDE_CASE(fn, fmt, type, draw, depth)                                 \
-    static void fn(fc_h *h) { wide_run(h, #fn, fmt, type, draw, depth); }
+    static void fn(fc_h *h) { wide_run(h, #fn, fmt, type, draw, depth, 0); }
+#define WIDE_ACCUM_CASE(fn, fmt, type, draw)                                  \
+    static void fn(fc_h *h) { wide_run(h, #fn, fmt, type, draw, 0, 16); }
+
+/* glAccum reads and returns the wide colour values: loads and
+ * accumulations of a smooth picture (values between the 8-bit steps),
+ * a scissored GL_MULT, a GL_RETURN above 1 and a masked one */
+static void draw_accum(fc_h *h)
+{
+    draw_smooth(h);
+    glAccum(GL_LOAD, 0.5f);
+    glClearColor(0.9f, 0.2f, 0.6f, 0.35f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_TRIANGLES);
+    glColor4f(0.1f, 0.9f, 0.3f, 0.8f); glVertex2f(0, 0);
+    glColor4f(0.7f, 0.2f, 0.95f, 0.1f); glVertex2f(24, 3);
+    glColor4f(0.33f, 0.44f, 0.55f, 0.66f); glVertex2f(10, 16);
+    glEnd();
+    glAccum(GL_ACCUM, 0.5f);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(3, 2, 15, 11);
+    glAccum(GL_MULT, 1.37f);
+    glDisable(GL_SCISSOR_TEST);
+    glAccum(GL_RETURN, 1.0f);
+    fc_value(h, "accum error", (long long)glGetError());
+    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(12, 0, 12, 16);
+    glAccum(GL_RETURN, 0.3f);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+/* glCopyPixels of a wide buffer: a plain copy, a zoomed one and one with
+ * pixel transfer scale and bias */
+static void draw_copypixels(fc_h *h)
+{
+    draw_smooth(h);
+    glRasterPos2i(13, 1);
+    glCopyPixels(1, 2, 9, 6, GL_COLOR);
+    glRasterPos2i(0, 9);
+    glPixelZoom(1.5f, 1.25f);
+    glCopyPixels(14, 8, 6, 5, GL_COLOR);
+    glPixelZoom(1.0f, 1.0f);
+    glPixelTransferf(GL_RED_SCALE, 0.75f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.1f);
+    glRasterPos2i(16, 10);
+    glCopyPixels(2, 3, 7, 5, GL_COLOR);
+    glPixelTransferf(GL_RED_SCALE, 1.0f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.0f);
+    fc_value(h, "copy error", (long long)glGetError());
+}
+
+/* Copies of a wide buffer into textures (8-bit and 16-bit internal
+ * formats), read back and drawn */
+static void draw_copytex(fc_h *h)
+{
+    draw_smooth(h);
+    static const GLenum ifmt[] = { GL_RGBA16, GL_RGBA8, GL_RGB8, GL_RGB10_A2, GL_RGB5_A1,
+                                   GL_LUMINANCE16, GL_LUMINANCE16_ALPHA16, GL_ALPHA16,
+                                   GL_INTENSITY16, GL_RGB16, GL_RGBA4, GL_R3_G3_B2,
+                                   GL_LUMINANCE8, GL_RGB12 };
+    enum { NF = sizeof ifmt / sizeof ifmt[0] };
+    static unsigned short img[8 * 8 * 4];
+    GLuint tex[NF];
+    glGenTextures(NF, tex);
+    for (int i = 0; i < NF; i++) {
+        glBindTexture(GL_TEXTURE_2D, tex[i]);
+        glCopyTexImage2D(GL_TEXTURE_2D, 0, ifmt[i], 2 + i % 8, 3 + i % 5, 8, 8, 0);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        memset(img, 0, sizeof img);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, img);
+        char l[32];
+        snprintf(l, sizeof l, "teximage %d", i);
+        fc_blob(h, l, img, sizeof img);
+    }
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 12, 6, 5, 4);
+    memset(img, 0, sizeof img);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, img);
+    fc_blob(h, "subimage", img, sizeof img);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(14, 8);
+    glTexCoord2f(1, 0); glVertex2f(22, 8);
+    glTexCoord2f(1, 1); glVertex2f(22, 16);
+    glTexCoord2f(0, 1); glVertex2f(14, 16);
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(NF, tex);
+    fc_value(h, "copytex error", (long long)glGetError());
+}
 
 WIDE_CASE(float_clears, OSMESA_RGBA, GL_FLOAT, draw_clears, 0)
 WIDE_CASE(float_clear_range, OSMESA_RGBA, GL_FLOAT, draw_clear_range, 0)
@@ -344,6 +438,13 @@ WIDE_CASE(ushort_depth_alpha, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_depth_alpha, 
 WIDE_CASE(ushort_readpixels, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_readpixels, 0)
 WIDE_CASE(ushort_argb, OSMESA_ARGB, GL_UNSIGNED_SHORT, draw_blend, 0)
 WIDE_CASE(ushort_rgb_clear, OSMESA_RGB, GL_UNSIGNED_SHORT, draw_smooth, 0)
+WIDE_ACCUM_CASE(ushort_accum, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_accum)
+WIDE_ACCUM_CASE(float_accum, OSMESA_RGBA, GL_FLOAT, draw_accum)
+WIDE_ACCUM_CASE(float_bgra_accum, OSMESA_BGRA, GL_FLOAT, draw_accum)
+WIDE_CASE(ushort_copypixels, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_copypixels, 0)
+WIDE_CASE(float_copypixels, OSMESA_RGBA, GL_FLOAT, draw_copypixels, 0)
+WIDE_CASE(ushort_copytex, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_copytex, 0)
+WIDE_CASE(float_copytex, OSMESA_RGBA, GL_FLOAT, draw_copytex, 0)
 
 /* Which format/type pairs OSMesaMakeCurrent takes (GL_FALSE for the
  * others), and a context rebound from ubyte to float to ushort and back
@@ -412,6 +513,13 @@ const fc_case fc_cases_osmesa[] = {
     FC_CASE_RGBA("osmesa/ushort_readpixels", 8, 8, 0, "osmesa pixel", ushort_readpixels),
     FC_CASE_RGBA("osmesa/ushort_argb", 8, 8, 0, "osmesa", ushort_argb),
     FC_CASE_RGBA("osmesa/ushort_rgb_clear", 8, 8, 0, "osmesa", ushort_rgb_clear),
+    FC_CASE_RGBA("osmesa/ushort_accum", 8, 8, 0, "osmesa accum", ushort_accum),
+    FC_CASE_RGBA("osmesa/float_accum", 8, 8, 0, "osmesa accum", float_accum),
+    FC_CASE_RGBA("osmesa/float_bgra_accum", 8, 8, 0, "osmesa accum", float_bgra_accum),
+    FC_CASE_RGBA("osmesa/ushort_copypixels", 8, 8, 0, "osmesa pixel", ushort_copypixels),
+    FC_CASE_RGBA("osmesa/float_copypixels", 8, 8, 0, "osmesa pixel", float_copypixels),
+    FC_CASE_RGBA("osmesa/ushort_copytex", 8, 8, 0, "osmesa texture", ushort_copytex),
+    FC_CASE_RGBA("osmesa/float_copytex", 8, 8, 0, "osmesa texture", float_copytex),
     FC_CASE_RGBA("osmesa/attribs_refused", 8, 8, 0, "osmesa api", attribs_refused),
     FC_CASE_RGBA("osmesa/attribs_compat", 8, 8, 0, "osmesa api", attribs_compat),
     FC_CASE_RGBA("osmesa/attribs_unprovided", 8, 8, 0, "osmesa api", attribs_unprovided),

@@ -136,13 +136,61 @@ void fgl_clear_accum_buffer(struct fgl_context *ctx)
    }
 }
 
-/* the colour buffer's unpacked RGBA at a pixel (alpha 1 without alpha
- * bits: the R8G8B8 formats unpack it as one) */
-static void unpack_color(const struct fgl_framebuffer *fb, const uint8_t *src, float rgba[4])
+/* [S: util/format/u_format_pack.py] unorm16 to float: x * (1 / 65535) */
+static float ushort_to_float(uint16_t us)
 {
-   for (int c = 0; c < 3; c++)
-      rgba[c] = ubyte_to_float(src[c]);
-   rgba[3] = fb->AlphaBits > 0 ? ubyte_to_float(src[3]) : 1.0f;
+   return (float)us * (1.0f / 65535.0f);
+}
+
+/* [S: util/format/u_format_pack.py] float to unorm16: clamped to [0, 1]
+ * (NaN gives 0), then util_iround(f * 65535), (int)(f + 0.5f): halves
+ * round up (case osmesa/ushort_accum: six channels on a half) */
+static uint16_t float_to_ushort(float f)
+{
+   const float c = f > 0.0f ? (f < 1.0f ? f : 1.0f) : 0.0f;
+   return (uint16_t)(int)(c * 65535.0f + 0.5f);
+}
+
+/* the colour buffer's unpacked RGBA at pixel `idx` (alpha 1 without alpha
+ * bits: the RGB formats unpack it as one): the wide target of an OSMesa
+ * GL_UNSIGNED_SHORT or GL_FLOAT buffer where there is one
+ * (R16G16B16A16_UNORM, R32G32B32A32_FLOAT), else the RGBA8 image */
+static void unpack_color(const struct fgl_framebuffer *fb, size_t idx, float rgba[4])
+{
+   if (fb->WideFormat == R_WIDE_UNORM16) {
+      const uint16_t *src = (const uint16_t *)fb->Wide + 4 * idx;
+      for (int c = 0; c < 4; c++)
+         rgba[c] = ushort_to_float(src[c]);
+   } else if (fb->WideFormat == R_WIDE_FLOAT) {
+      const float *src = (const float *)fb->Wide + 4 * idx;
+      for (int c = 0; c < 4; c++)
+         rgba[c] = src[c];
+   } else {
+      const uint8_t *src = fb->Color + 4 * idx;
+      for (int c = 0; c < 4; c++)
+         rgba[c] = ubyte_to_float(src[c]);
+   }
+   if (fb->AlphaBits == 0)
+      rgba[3] = 1.0f;
+}
+
+/* rgba packed into the colour buffer at pixel `idx` (nch channels: 3 for
+ * the RGB formats), into the wide target and its RGBA8 image where there
+ * is one */
+static void pack_color(struct fgl_framebuffer *fb, size_t idx, const float rgba[4], int nch)
+{
+   if (fb->WideFormat == R_WIDE_UNORM16) {
+      uint16_t *dst = (uint16_t *)fb->Wide + 4 * idx;
+      for (int c = 0; c < nch; c++)
+         dst[c] = float_to_ushort(rgba[c]);
+   } else if (fb->WideFormat == R_WIDE_FLOAT) {
+      float *dst = (float *)fb->Wide + 4 * idx;
+      for (int c = 0; c < nch; c++)
+         dst[c] = rgba[c];
+   }
+   uint8_t *col = fb->Color + 4 * idx;
+   for (int c = 0; c < nch; c++)
+      col[c] = float_to_ubyte(rgba[c]);
 }
 
 /* [S: main/accum.c:accum_scale_or_bias] */
@@ -177,10 +225,9 @@ static void accum_or_load(struct fgl_context *ctx, float value, bool load)
    for (int r = r0; r < r1; r++) {
       const size_t first = (size_t)r * (size_t)fb->Width + (size_t)x0;
       int16_t *acc = fb->Accum + first * 4;
-      const uint8_t *col = fb->Color + first * 4;
-      for (int x = x0; x < x1; x++, acc += 4, col += 4) {
+      for (int x = x0; x < x1; x++, acc += 4) {
          float rgba[4];
-         unpack_color(fb, col, rgba);
+         unpack_color(fb, first + (size_t)(x - x0), rgba);
          for (int c = 0; c < 4; c++) {
             const int16_t v = float_to_short_x86(rgba[c] * scale);
             acc[c] = load ? v : add_short(acc[c], v);
@@ -205,20 +252,19 @@ static void accum_return(struct fgl_context *ctx, float value)
    for (int r = r0; r < r1; r++) {
       const size_t first = (size_t)r * (size_t)fb->Width + (size_t)x0;
       const int16_t *acc = fb->Accum + first * 4;
-      uint8_t *col = fb->Color + first * 4;
-      for (int x = x0; x < x1; x++, acc += 4, col += 4) {
+      for (int x = x0; x < x1; x++, acc += 4) {
+         const size_t idx = first + (size_t)(x - x0);
          float rgba[4];
          for (int c = 0; c < 4; c++)
             rgba[c] = (float)acc[c] * scale;
          if (mask != 0xfu) {
             float dest[4];
-            unpack_color(fb, col, dest);
+            unpack_color(fb, idx, dest);
             for (int c = 0; c < 4; c++)
                if (!(mask & (1u << c)))
                   rgba[c] = dest[c];
          }
-         for (int c = 0; c < nch; c++)
-            col[c] = float_to_ubyte(rgba[c]);
+         pack_color(fb, idx, rgba, nch);
       }
    }
 }

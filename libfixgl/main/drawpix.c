@@ -1095,13 +1095,20 @@ static bool transfer_ops(const struct fgl_context *ctx)
 }
 
 /* pipe->blit of a w x h colour rectangle between two y-down positions:
- * whole pixels (PIPE_MASK_RGBA) */
+ * whole pixels (PIPE_MASK_RGBA), of the wide target too (the same format
+ * at both ends: its values copied as they are; case osmesa/float_copypixels) */
 static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy, int w, int h)
 {
+   const size_t wide_bpp = fb->WideFormat == R_WIDE_FLOAT     ? 16
+                           : fb->WideFormat == R_WIDE_UNORM16 ? 8
+                                                              : 0;
    for (int j = 0; j < h; j++) {
       const size_t s = (size_t)(sy + j) * (size_t)fb->Width + (size_t)sx;
       const size_t d = (size_t)(dy + j) * (size_t)fb->Width + (size_t)dx;
       memmove(fb->Color + 4 * d, fb->Color + 4 * s, 4 * (size_t)w);
+      if (wide_bpp)
+         memmove((uint8_t *)fb->Wide + wide_bpp * d, (const uint8_t *)fb->Wide + wide_bpp * s,
+                 wide_bpp * (size_t)w);
    }
 }
 
@@ -1216,8 +1223,15 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
          const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)(rx + i);
          const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)(skip_px + i);
          if (color) {
+            /* the texture has the colour buffer's format: a wide target
+             * samples as unorm16 * (float)(1 / 65535) or as its floats */
             for (int c = 0; c < 4; c++)
-               t[4 * dst + c] = (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
+               t[4 * dst + c] =
+                  fb->WideFormat == R_WIDE_FLOAT
+                     ? ((const float *)fb->Wide)[4 * src + c]
+                  : fb->WideFormat == R_WIDE_UNORM16
+                     ? (float)((const uint16_t *)fb->Wide)[4 * src + c] * (float)(1.0 / 65535.0)
+                     : (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
          }
          if (depth) {
             /* the depth texture (the buffer's format) sampled: unorm to
