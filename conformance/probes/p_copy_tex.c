@@ -6,8 +6,9 @@
  *  - a copy into GL_RGB reads alpha 1 whatever the buffer's alpha;
  *  - a generated level of RGBA16 or RGB10_A2 is the fused float lerp of
  *    the level above's stored values, converted to unorm16 by the magic
- *    of lp_build_clamped_float_to_unsigned_norm, then shifted to the
- *    channel's bits. */
+ *    of lp_build_clamped_float_to_unsigned_norm, then to the channel's
+ *    bits by llvmpipe's scale_bits (a shift for 10 bits, a rescale with
+ *    a rounding term for the 2-bit alpha). */
 #include "probe.h"
 
 #include <stdint.h>
@@ -16,7 +17,7 @@ static unsigned rnd = 7;
 static unsigned r32(void)
 {
    rnd = rnd * 1103515245u + 12345u;
-   return rnd;
+   return rnd >> 8;   /* the LCG's low bits have short periods */
 }
 
 /* float in [0, 1] to an unorm of `bits` bits: the low mantissa bits of
@@ -38,7 +39,9 @@ static unsigned lerp2(const unsigned t[4], int bits)
       v[k] = (float)t[k] * sc;
    const float a = fmaf(0.5f, v[1] - v[0], v[0]);
    const float b = fmaf(0.5f, v[3] - v[2], v[2]);
-   return to_unorm(fmaf(0.5f, b - a, a), 16) >> (16 - bits);
+   const unsigned u = to_unorm(fmaf(0.5f, b - a, a), 16), d = 16u - (unsigned)bits;
+   return d <= (unsigned)bits ? u >> d
+                              : ((u >> bits) * ((1u << bits) - 1u) + (1u << (d - 1u))) >> d;
 }
 
 int main(void)
@@ -85,7 +88,7 @@ int main(void)
    for (int it = 0; it < 1000; it++) {
       unsigned short s[16];
       for (int i = 0; i < 16; i++)
-         s[i] = (unsigned short)(r32() >> 12);
+         s[i] = (unsigned short)r32();
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, 2, 2, 0, GL_RGBA, GL_UNSIGNED_SHORT, s);
       unsigned short o[4];
       glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_SHORT, o);
@@ -95,7 +98,7 @@ int main(void)
       }
       unsigned p[4];
       for (int i = 0; i < 4; i++)
-         p[i] = r32();
+         p[i] = r32() ^ (r32() << 16);
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB10_A2, 2, 2, 0, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2, p);
       unsigned q;
       glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2, &q);

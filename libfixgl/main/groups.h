@@ -78,6 +78,15 @@ bool fgl_tex_image_fits_unorm8(const struct fgl_texture_image *img);
  * Z16_UNORM, 24: Z24X8_UNORM, 32: Z32_UNORM), 0 for a colour image
  * (main/teximage.c) */
 int fgl_tex_image_depth_bits(const struct fgl_texture_image *img);
+/* The texture coordinates (s, t) at which the oracle's mipmap blit
+ * samples the level above for texel (i, j) of a w x h level: the planes
+ * of the blit quad's two triangles (main/teximage.c) */
+struct fgl_blit_quad {
+   float s[2][3], t[2][3];   /* (a0', dadx, dady) per triangle */
+   int w, h;
+};
+void fgl_blit_quad_init(struct fgl_blit_quad *q, int w, int h);
+void fgl_blit_quad_coord(const struct fgl_blit_quad *q, int i, int j, float *s, float *t);
 
 /* main/texdepth.c: the images of GL_DEPTH_COMPONENT textures
  * (ARB_depth_texture) as the oracle stores and reads them back */

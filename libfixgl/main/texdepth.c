@@ -301,14 +301,15 @@ void fgl_tex_gen_mip_depth(const struct fgl_texture_image *src, struct fgl_textu
 {
    const int bits = fgl_tex_image_depth_bits(src);
    const int W = src->Width, H = src->Height, w = dst->Width, h = dst->Height;
+   struct fgl_blit_quad bq;
+   fgl_blit_quad_init(&bq, w, h);   /* the blit quad's coordinates */
    for (int j = 0; j < h; j++) {
-      int y0, y1;
-      float wt;
-      edge_linear(((float)j + 0.5f) / (float)h, H, &y0, &y1, &wt);
       for (int i = 0; i < w; i++) {
-         int x0, x1;
-         float ws;
-         edge_linear(((float)i + 0.5f) / (float)w, W, &x0, &x1, &ws);
+         int x0, x1, y0, y1;
+         float ws, wt, s, t;
+         fgl_blit_quad_coord(&bq, i, j, &s, &t);
+         edge_linear(s, W, &x0, &x1, &ws);
+         edge_linear(t, H, &y0, &y1, &wt);
          const uint32_t *r0 = src->ZValues + (size_t)y0 * (size_t)W;
          const uint32_t *r1 = src->ZValues + (size_t)y1 * (size_t)W;
          const float v00 = r_tex_depth_value(r0[x0], bits), v01 = r_tex_depth_value(r0[x1], bits);

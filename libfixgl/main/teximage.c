@@ -973,12 +973,13 @@ static void gen_axis(int i, int n, int n_src, int *i0, int *i1, int *w)
 /* One texel (i, j) of the w x h level blitted from src, a format wider
  * than 8 bits, on llvmpipe's float path (use_aos is false for it): the
  * stored values as floats (r_tex_soa.c's texel), CLAMP_TO_EDGE's linear
- * wrap of s = (i + 0.5) / w, lp_build_lerp_2d with fused lerps; the
- * float result to unorm16 (lp_build_clamped_float_to_unsigned_norm: the
- * low 16 mantissa bits of v * (65535/65536) + 2^7), then to the channel's
- * bits by a shift (scale_bits: 10-10-10-2 renders through a 16-bit blend
- * type).  Measured: every channel of RGBA16 and RGB10_A2 2x2 -> 1x1 on
- * random values (probe p_copy_tex). */
+ * wrap of the blit quad's (s, t) (fgl_blit_quad_coord), lp_build_lerp_2d
+ * with fused lerps; the float result to unorm16
+ * (lp_build_clamped_float_to_unsigned_norm: the low 16 mantissa bits of
+ * v * (65535/65536) + 2^7), then to the channel's bits as scale_bits
+ * does (blend16_to_bits: 10-10-10-2 renders through a 16-bit blend
+ * type).  Measured: probes p_genmip_planes (random sizes) and p_copy_tex
+ * (2x2 -> 1x1). */
 static void wrap_edge_linear(float c, int n, int *x0, int *x1, float *w)
 {
    c = fminf(c * (float)n, (float)n) - 0.5f;
@@ -989,14 +990,100 @@ static void wrap_edge_linear(float c, int n, int *x0, int *x1, float *w)
    *x1 = *x0 + 1 < n - 1 ? *x0 + 1 : n - 1;
 }
 
-static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int i, int j,
-                          uint16_t q[4])
+/* [S: llvmpipe/lp_state_fs.c:scale_bits] a 16-bit blend-type channel
+ * to a channel of `bits` bits: a shift where the bits dropped are at
+ * most `bits` (10, 12), else ((u >> bits) * (2^bits - 1) + 2^(d - 1)) >> d
+ * with d = 16 - bits (the 2-bit alpha of 10-10-10-2; probe
+ * p_genmip_planes) */
+static unsigned blend16_to_bits(unsigned u, unsigned bits)
+{
+   const unsigned d = 16u - bits;
+   if (d <= bits)
+      return u >> d;
+   return ((u >> bits) * ((1u << bits) - 1u) + (1u << (d - 1u))) >> d;
+}
+
+/* The setup of one triangle's planes (ORACLE-NOTES.md "Interpolation")
+ * for vertices (gx, gy) in setup order */
+struct tri_setup {
+   float x0c, y0c, dx20o, dy20o, dx01o, dy01o;
+};
+
+static struct tri_setup tri_setup_init(const float gx[3], const float gy[3])
+{
+   struct tri_setup u;
+   u.x0c = gx[0] - 0.5f;
+   u.y0c = gy[0] - 0.5f;
+   const float dx01 = gx[0] - gx[1], dy01 = gy[0] - gy[1];
+   const float dx20 = gx[2] - gx[0], dy20 = gy[2] - gy[0];
+   const float e = dx01 * dy20, f = dy01 * dx20;
+   const float ooa = 1.0f / (e - f);
+   u.dx20o = dx20 * ooa;
+   u.dy20o = dy20 * ooa;
+   u.dx01o = dx01 * ooa;
+   u.dy01o = dy01 * ooa;
+   return u;
+}
+
+/* (a0', dadx, dady) of an attribute with values a0, a1, a2 in setup order */
+static void tri_plane(const struct tri_setup *u, float a0, float a1, float a2, float r[3])
+{
+   const float da01 = a0 - a1, da20 = a2 - a0;
+   const float t1 = da01 * u->dy20o, t2 = da20 * u->dy01o;
+   r[1] = t1 - t2;
+   const float t3 = da20 * u->dx01o, t4 = da01 * u->dx20o;
+   r[2] = t3 - t4;
+   const float s1 = r[1] * u->x0c, s2 = r[2] * u->y0c;
+   r[0] = a0 - (s1 + s2);
+}
+
+/* [S: util/u_blitter.c:blitter_set_rectangle, get_texcoords,
+ * blitter_draw; llvmpipe/lp_setup_vbuf.c:lp_setup_draw_arrays,
+ * lp_setup_tri.c:triangle_both, triangle_cw] util_gen_mipmap's blit
+ * draws the level as a TRIANGLE_FAN of V0 (0, 0), V1 (w, 0), V2 (w, h),
+ * V3 (0, h) (window coordinates, y down, exact), texture coordinates
+ * (0, 0), (1, 0), (1, 1), (0, 1).  llvmpipe takes a fan of four as the
+ * triangles (V0, V1, V2) and (V0, V2, V3) (its rectangle path needs a
+ * B8G8R8A8/X8 target); both are clockwise there, so each is set up as
+ * (v1, v0, v2): (V1, V0, V2) and (V2, V0, V3), and a texel's coordinate is
+ * the plane of its triangle at its centre, fma(dady, j, fma(dadx, i, a0')).
+ * A centre on the diagonal V0-V2 belongs to the first.  Neither s nor t
+ * is exactly (i + 0.5) / w there: on the float path that moves a weight
+ * next to 0.5 one step (probe p_genmip_planes: 0 of 140,824 RGBA16
+ * channels off, against 4,484 with (i + 0.5) / w). */
+void fgl_blit_quad_init(struct fgl_blit_quad *q, int w, int h)
+{
+   const float fw = (float)w, fh = (float)h;
+   const float ax[3] = { fw, 0.0f, fw }, ay[3] = { 0.0f, 0.0f, fh };   /* V1, V0, V2 */
+   const float bx[3] = { fw, 0.0f, 0.0f }, by[3] = { fh, 0.0f, fh };   /* V2, V0, V3 */
+   const struct tri_setup a = tri_setup_init(ax, ay), b = tri_setup_init(bx, by);
+   tri_plane(&a, 1.0f, 0.0f, 1.0f, q->s[0]);
+   tri_plane(&a, 0.0f, 0.0f, 1.0f, q->t[0]);
+   tri_plane(&b, 1.0f, 0.0f, 0.0f, q->s[1]);
+   tri_plane(&b, 1.0f, 0.0f, 1.0f, q->t[1]);
+   q->w = w;
+   q->h = h;
+}
+
+void fgl_blit_quad_coord(const struct fgl_blit_quad *q, int i, int j, float *s, float *t)
+{
+   /* the centre (i + 0.5, j + 0.5) against the diagonal from (0, 0) to
+    * (w, h), in integers */
+   const long long lhs = (2LL * i + 1) * q->h, rhs = (2LL * j + 1) * q->w;
+   const int k = lhs >= rhs ? 0 : 1;
+   *s = fmaf(q->s[k][2], (float)j, fmaf(q->s[k][1], (float)i, q->s[k][0]));
+   *t = fmaf(q->t[k][2], (float)j, fmaf(q->t[k][1], (float)i, q->t[k][0]));
+}
+
+static void gen_mip_float(const struct fgl_texture_image *src, const struct fgl_blit_quad *bq,
+                          int i, int j, uint16_t q[4])
 {
    const int W = src->Width, H = src->Height;
    int x0, x1, y0, y1;
-   float ws, wt;
-   wrap_edge_linear(((float)i + 0.5f) / (float)w, W, &x0, &x1, &ws);
-   wrap_edge_linear(((float)j + 0.5f) / (float)h, H, &y0, &y1, &wt);
+   float ws, wt, s, t;
+   fgl_blit_quad_coord(bq, i, j, &s, &t);
+   wrap_edge_linear(s, W, &x0, &x1, &ws);
+   wrap_edge_linear(t, H, &y0, &y1, &wt);
    const uint16_t *n[4] = {
       src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x0),
       src->Store + 4 * ((size_t)y0 * (size_t)W + (size_t)x1),
@@ -1015,7 +1102,7 @@ static void gen_mip_float(const struct fgl_texture_image *src, int w, int h, int
          v[k] = (float)n[k][c] * scale;
       const float a = fmaf(ws, v[1] - v[0], v[0]);
       const float b = fmaf(ws, v[3] - v[2], v[2]);
-      q[c] = (uint16_t)(m_gallivm_float_to_unorm16(fmaf(wt, b - a, a)) >> (16u - bits));
+      q[c] = (uint16_t)blend16_to_bits(m_gallivm_float_to_unorm16(fmaf(wt, b - a, a)), bits);
    }
 }
 
@@ -1099,10 +1186,12 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
          continue;
       }
       if (!fgl_tex_image_fits_unorm8(base) && D == 1) {
+         struct fgl_blit_quad bq;
+         fgl_blit_quad_init(&bq, w, h);
          for (int j = 0; j < h; j++)
             for (int i = 0; i < w; i++) {
                uint16_t q[4];
-               gen_mip_float(src, w, h, i, j, q);
+               gen_mip_float(src, &bq, i, j, q);
                put_stored(img, (size_t)j * (size_t)w + (size_t)i, q, 1);
             }
          set_image(t, face, l, img);
