@@ -347,6 +347,11 @@ GENMIP(genmip_r3g3b2, GL_R3_G3_B2, 16, 16, false, GL_UNSIGNED_BYTE_3_3_2, 1)
 GENMIP(genmip_rgba4, GL_RGBA4, 16, 16, false, GL_UNSIGNED_SHORT_4_4_4_4, 2)
 GENMIP(genmip_rgba2, GL_RGBA2, 12, 16, false, GL_UNSIGNED_SHORT_4_4_4_4, 2)
 GENMIP(genmip_l4a4, GL_LUMINANCE4_ALPHA4, 16, 16, false, GL_UNSIGNED_BYTE, 4)
+/* the blit quad's planes (probe p_genmip_planes): odd and square NPOT
+ * sizes, a chain with a level of width 1 and the 2-bit alpha rescale */
+GENMIP(genmip_rgba16_odd_square, GL_RGBA16, 15, 15, true, GL_UNSIGNED_SHORT, 8)
+GENMIP(genmip_rgba16_tall, GL_RGBA16, 3, 23, true, GL_UNSIGNED_SHORT, 8)
+GENMIP(genmip_rgb10_a2_npot, GL_RGB10_A2, 21, 10, true, GL_UNSIGNED_INT_10_10_10_2, 4)
 
 /* 1D chains in a 16-bit and a 5-bit format */
 static void genmip_1d(fc_h *h)
@@ -384,6 +389,9 @@ const fc_case fc_cases_tex_copy[] = {
     FC_CASE_RGBA("texture/copy_r3g3b2_genmipmap", 24, 24, 1, "texture", copy_r3g3b2_genmipmap),
     FC_CASE_RGBA("texture/genmipmap_rgba16", 32, 32, 1, "texture", genmip_rgba16),
     FC_CASE_RGBA("texture/genmipmap_rgba16_npot", 32, 32, 1, "texture", genmip_rgba16_npot),
+    FC_CASE_RGBA("texture/genmipmap_rgba16_odd_square", 32, 32, 1, "texture", genmip_rgba16_odd_square),
+    FC_CASE_RGBA("texture/genmipmap_rgba16_tall", 32, 32, 1, "texture", genmip_rgba16_tall),
+    FC_CASE_RGBA("texture/genmipmap_rgb10_a2_npot", 32, 32, 1, "texture", genmip_rgb10_a2_npot),
     FC_CASE_RGBA("texture/genmipmap_rgba12_ubyte", 32, 32, 1, "texture", genmip_rgba12_ub),
     FC_CASE_RGBA("texture/genmipmap_rgb16", 32, 32, 1, "texture", genmip_rgb16),
     FC_CASE_RGBA("texture/genmipmap_rgb10_a2", 32, 32, 1, "texture", genmip_rgb10_a2),
