@@ -21,11 +21,19 @@
  *     test (references on u8 ties), stencil (function, reference, masks,
  *     all operations), blending (every GL 1.x factor pair, each equation,
  *     a blend colour), logic ops, colour and depth masks;
- *   - clears under the scissor and masks.
+ *   - clears under the scissor and masks;
+ *   - GL 1.4's vertex attributes and point parameters (issue 19), from
+ *     streams of their own (a scene without them is the scene it was
+ *     before they came): GL_COLOR_SUM with a secondary colour, the fog
+ *     coordinate as GL_FOG_COORD_SRC, each set before a primitive (the
+ *     current value, so the immediate, array and display-list paths of
+ *     fc_emit.h draw the same), glPointParameter (distance attenuation,
+ *     minimum and maximum size, fade threshold).
  * The structure of a scene (which state is on, which functions, which
  * primitive types: what llvmpipe compiles shaders for) repeats every
  * FC_RASTER_PROFILES indices with other values, as in the lit family, so
  * long runs reuse the oracle's shader cache. */
+#define GL_GLEXT_PROTOTYPES 1   /* GL 1.4's secondary colour, fog coordinate, point parameters */
 #include "fc_random.h"
 #include "fc_random_shared.h"
 #include "fc_rng.h"
@@ -39,6 +47,24 @@
 #include <string.h>
 
 #define FC_RASTER_PROFILES 256
+
+/* call-trace wrappers (fc_trace.h) of the GL 1.4 entry points only this
+ * family calls */
+static inline void fct_glSecondaryColor3f(GLfloat a, GLfloat b, GLfloat c) { fc_trace_call("glSecondaryColor3f", 3, a, b, c, 0); glSecondaryColor3f(a, b, c); }
+static inline void fct_glSecondaryColor3ub(GLubyte a, GLubyte b, GLubyte c) { fc_trace_calli("glSecondaryColor3ub", 3, a, b, c, 0); glSecondaryColor3ub(a, b, c); }
+static inline void fct_glSecondaryColor3dv(const GLdouble *p) { fc_trace_vd("glSecondaryColor3dv", "GLdouble", 3, p); glSecondaryColor3dv(p); }
+static inline void fct_glFogCoordf(GLfloat a) { fc_trace_call("glFogCoordf", 1, a, 0, 0, 0); glFogCoordf(a); }
+static inline void fct_glFogCoordd(GLdouble a) { fc_trace_call("glFogCoordd", 1, a, 0, 0, 0); glFogCoordd(a); }
+static inline void fct_glPointParameterf(GLenum p, GLfloat v) { fc_trace_enums_f("glPointParameterf", 1, p, 0, v); glPointParameterf(p, v); }
+static inline void fct_glPointParameterfv(GLenum p, const GLfloat *v) { fc_trace_enums_vf("glPointParameterfv", 1, p, 0, p == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1, v); glPointParameterfv(p, v); }
+
+#define glSecondaryColor3f fct_glSecondaryColor3f
+#define glSecondaryColor3ub fct_glSecondaryColor3ub
+#define glSecondaryColor3dv fct_glSecondaryColor3dv
+#define glFogCoordf fct_glFogCoordf
+#define glFogCoordd fct_glFogCoordd
+#define glPointParameterf fct_glPointParameterf
+#define glPointParameterfv fct_glPointParameterfv
 
 static const GLenum prim_modes[11] = {
     GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES, GL_TRIANGLE_STRIP,
@@ -80,7 +106,17 @@ struct profile {
     int flat, depth_test;
     GLenum depth_func;
     int masked_clear;
+    /* GL 1.4 (make_profile14) */
+    int seccolor, fogcoord, ptparams;
 };
+
+/* The GL 1.4 part of a profile, from a stream of its own */
+static void make_profile14(fc_rng *k, struct profile *p)
+{
+    p->seccolor = fc_rng_chance(k, 20);
+    p->fogcoord = p->fog && fc_rng_chance(k, 40);
+    p->ptparams = fc_rng_chance(k, 20);
+}
 
 static void make_profile(fc_rng *k, struct profile *p)
 {
@@ -240,6 +276,62 @@ static void random_fog(struct scene *s, const struct profile *p)
     glFogf(GL_FOG_DENSITY, (GLfloat)(fc_rng_chance(r, 10) ? 0.0 : fc_rng_real(r, 0, 3.0 / range)));
 }
 
+/* The GL 1.4 state of a scene (r: the scene's stream of it) */
+static void random_state14(struct scene *s, const struct profile *p, fc_rng *r)
+{
+    if (p->seccolor)
+        glEnable(GL_COLOR_SUM);
+    if (p->fogcoord)
+        glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+    if (p->ptparams) {
+        /* attenuations on the scale of the scene's eye distances */
+        const double range = s->space == SP_PIXEL ? 1.0 : 20.0;
+        GLfloat att[3] = { (GLfloat)(fc_rng_chance(r, 20) ? 1.0 : fc_rng_real(r, 0.05, 2.0)),
+                           (GLfloat)(fc_rng_chance(r, 40) ? 0.0 : fc_rng_real(r, 0.0, 1.0 / range)),
+                           (GLfloat)(fc_rng_chance(r, 40) ? 0.0
+                                                          : fc_rng_real(r, 0.0, 1.0 / (range * range))) };
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+        if (fc_rng_chance(r, 50))
+            glPointParameterf(GL_POINT_SIZE_MIN, (GLfloat)fc_rng_real(r, 0.0, 4.0));
+        if (fc_rng_chance(r, 50)) {
+            const GLfloat mx = (GLfloat)fc_rng_real(r, 0.5, 16.0);
+            glPointParameterfv(GL_POINT_SIZE_MAX, &mx);
+        }
+        if (fc_rng_chance(r, 50))
+            glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, (GLfloat)fc_rng_real(r, 0.0, 6.0));
+    }
+}
+
+/* The current secondary colour and fog coordinate before a primitive */
+static void random_attribs14(struct scene *s, const struct profile *p, fc_rng *r)
+{
+    if (p->seccolor && fc_rng_chance(r, 70)) {
+        switch (fc_rng_below(r, 3)) {
+        case 0:
+            glSecondaryColor3f((GLfloat)u8ish(r), (GLfloat)u8ish(r), (GLfloat)u8ish(r));
+            break;
+        case 1:
+            glSecondaryColor3ub((GLubyte)fc_rng_below(r, 256), (GLubyte)fc_rng_below(r, 256),
+                                (GLubyte)fc_rng_below(r, 256));
+            break;
+        default: {
+            const GLdouble c[3] = { fc_rng_real(r, -0.5, 1.5), fc_rng_unit(r), u8ish(r) };
+            glSecondaryColor3dv(c);
+            break;
+        }
+        }
+    }
+    if (p->fogcoord && fc_rng_chance(r, 70)) {
+        const double range = s->space == SP_PIXEL ? 1.0 : 20.0;
+        const double f = fc_rng_chance(r, 10) ? -fc_rng_real(r, 0.0, range)
+                                              : fc_rng_real(r, 0.0, 2.0 * range);
+        if (fc_rng_chance(r, 50))
+            glFogCoordf((GLfloat)f);
+        else
+            glFogCoordd(f);
+    }
+}
+
 static void random_fragment_state(struct scene *s, const struct profile *p)
 {
     fc_rng *r = &s->r;
@@ -397,6 +489,9 @@ static void raster_scene(fc_h *h)
     fc_random_raster_parse(c->name, &seed, &index);
     fc_rng k = fc_rng_make(seed, index % FC_RASTER_PROFILES, 8);
     make_profile(&k, &p);
+    fc_rng k14 = fc_rng_make(seed, index % FC_RASTER_PROFILES, 43);
+    make_profile14(&k14, &p);
+    fc_rng r14 = fc_rng_make(seed, index, 44);
     fce_scene_begin(FCE_RASTER, seed, index, index % FC_RASTER_PROFILES);
     s.r = fc_rng_make(seed, index, 7);
     s.vis = fc_rng_make(seed, index, 31);
@@ -417,6 +512,7 @@ static void raster_scene(fc_h *h)
     random_polygon_state(&s, &p);
     random_fog(&s, &p);
     random_fragment_state(&s, &p);
+    random_state14(&s, &p, &r14);
     if (p.masked_clear) {
         glClearStencil(fc_rng_range(&s.r, 0, 255));
         fcr_clear(&s.r, GL_COLOR_BUFFER_BIT | (fc_rng_chance(&s.r, 50) ? GL_DEPTH_BUFFER_BIT : 0) |
@@ -430,6 +526,7 @@ static void raster_scene(fc_h *h)
         if (i == p.nprim)
             break;
         random_points_lines(&s, &p);
+        random_attribs14(&s, &p, &r14);
         random_raster_primitive(&s, &p, p.modes[i]);
         if (c->frames == 2 && i == p.nprim / 2)
             fc_capture(h);
