@@ -29,7 +29,8 @@
  * colour), and the result to unorm8.
  *
  * What is known at validation is not tested per pixel: each unit's
- * lookup (the trilinear REPEAT one or the general one) and environment
+ * lookup (the trilinear REPEAT one, the bilinear REPEAT or CLAMP_TO_EDGE
+ * one, or the general one) and environment
  * (the common forms MODULATE, REPLACE, their RGB-texture variants, or
  * the general program) are functions chosen once per triangle
  * (block_stage_prepare) from the unit's state; the fragment operations
@@ -87,6 +88,7 @@ struct unit_stage {
    const struct r_texture *tex;
    bool flat_tex;
    bool trilinear;
+   bool bilinear;       /* a lookup of tex8_is_bilinear: no level of detail */
    lookup_fn lookup;
    env_fn env;
    struct unit_prog prog;
@@ -113,6 +115,16 @@ static __m256i lookup_general(const struct unit_stage *u, const struct unit_fron
 static __m256i lookup_trilinear(const struct unit_stage *u, const struct unit_front *f)
 {
    return tex8_filter_trilinear_repeat(u->levels, f->lod, f->s, f->t);
+}
+
+static __m256i lookup_bilinear_repeat(const struct unit_stage *u, const struct unit_front *f)
+{
+   return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_REPEAT, f->s, f->t);
+}
+
+static __m256i lookup_bilinear_clamp(const struct unit_stage *u, const struct unit_front *f)
+{
+   return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_CLAMP_TO_EDGE, f->s, f->t);
 }
 
 /* ---- the environments ---- */
@@ -382,7 +394,17 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
       u->flat_tex = ts->flat_attr[R_FS_TEX0 + i];
       u->ap = ts->ap[R_FS_TEX0 + i];
       u->trilinear = tex8_is_trilinear_repeat(u->tex);
-      u->lookup = u->trilinear ? lookup_trilinear : lookup_general;
+      u->bilinear = false;
+      u->lookup = lookup_general;
+      if (u->trilinear) {
+         u->lookup = lookup_trilinear;
+      } else if (tex8_is_bilinear(u->tex, R_WRAP_REPEAT)) {
+         u->bilinear = true;
+         u->lookup = lookup_bilinear_repeat;
+      } else if (tex8_is_bilinear(u->tex, R_WRAP_CLAMP_TO_EDGE)) {
+         u->bilinear = true;
+         u->lookup = lookup_bilinear_clamp;
+      }
       for (int c = 0; c < 4; c++) {
          u->tc[c] = _mm256_set1_ps(ts->flat[R_FS_TEX0 + i][c]);
          u->konst[c] = _mm256_set1_ps(tu->env_color[c]);
@@ -421,7 +443,7 @@ static ALWAYS_INLINE void unit_front(const struct unit_stage *u, __m256 rw, __m2
    f->t = _mm256_mul_ps(t, rq);
    if (u->trilinear)
       tex8_lod_quads_k(u->tex, 2, R_MIP_LINEAR, false, f->s, f->t, f->lod);
-   else
+   else if (!u->bilinear)   /* (its lookup needs none) */
       tex8_lod_quads(u->tex, f->s, f->t, f->lod);
 }
 

@@ -48,9 +48,11 @@
  * so rgb = T.c * T.a + P.c * (1 - T.a); alpha REPLACE by P.a) */
 enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P, ENV_DECAL };
 /* the variant: an env, plus VAR_TRILINEAR for a texture of
- * tex8_is_trilinear_repeat (its lookup's properties constants) */
+ * tex8_is_trilinear_repeat or VAR_BILINEAR for one of
+ * tex8_is_bilinear with REPEAT (its lookup's properties constants) */
 #define VAR_ENV(v) ((v) & 15)
 #define VAR_TRILINEAR 16
+#define VAR_BILINEAR 32
 
 /* what stage_front computes for a half */
 struct stage_front {
@@ -148,7 +150,7 @@ static ALWAYS_INLINE void stage_front(const struct r_tri_setup *ts, const struct
    /* the level of detail of quads A and B (fill_quad) */
    if (variant & VAR_TRILINEAR)
       tex8_lod_quads_k(st->tex, 2, R_MIP_LINEAR, false, f->s, f->t, f->lod);
-   else
+   else if (!(variant & VAR_BILINEAR))   /* (its lookup needs none) */
       tex8_lod_quads(st->tex, f->s, f->t, f->lod);
 }
 
@@ -179,9 +181,10 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    }
    const __m256 rw = f.rw;
    const struct r_texture *tex = st->tex;
-   const __m256i texel = variant & VAR_TRILINEAR
-                            ? tex8_filter_trilinear_repeat(st->levels, f.lod, f.s, f.t)
-                            : tex8_filter_quads(tex, st->levels, f.lod, f.s, f.t);
+   const __m256i texel =
+      variant & VAR_TRILINEAR  ? tex8_filter_trilinear_repeat(st->levels, f.lod, f.s, f.t)
+      : variant & VAR_BILINEAR ? tex8_filter_bilinear(st->levels, tex->first_level, R_WRAP_REPEAT, f.s, f.t)
+                               : tex8_filter_quads(tex, st->levels, f.lod, f.s, f.t);
 
    __m256i out;
    if (env == ENV_T_T) {
@@ -272,16 +275,26 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    TEX_KERNELS_ENV(p##_tri_tp_tp, ENV_TP_TP | VAR_TRILINEAR, bl)                          \
    TEX_KERNELS_ENV(p##_tri_tp_p, ENV_TP_P | VAR_TRILINEAR, bl)
 
+/* the same with the bilinear REPEAT lookup */
+#define TEX_KERNELS_BLEND_BI(p, bl)                                                        \
+   TEX_KERNELS_ENV(p##_bi_t_t, ENV_T_T | VAR_BILINEAR, bl)                                \
+   TEX_KERNELS_ENV(p##_bi_t_p, ENV_T_P | VAR_BILINEAR, bl)                                \
+   TEX_KERNELS_ENV(p##_bi_tp_tp, ENV_TP_TP | VAR_BILINEAR, bl)                            \
+   TEX_KERNELS_ENV(p##_bi_tp_p, ENV_TP_P | VAR_BILINEAR, bl)
+
 TEX_KERNELS_BLEND(opaque, BL_NONE)
 TEX_KERNELS_BLEND(alpha, BL_ALPHA)
 TEX_KERNELS_BLEND_TRI(opaque, BL_NONE)
 TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
+TEX_KERNELS_BLEND_BI(opaque, BL_NONE)
+TEX_KERNELS_BLEND_BI(alpha, BL_ALPHA)
 
 #define ROW(p)                                                                             \
    { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
-/* [trilinear][blend][env][zfmt][zwrite] (the trilinear lookup for the
- * envs of TEX_KERNELS_BLEND_TRI, the general one for the others) */
-static const r_tri_kernel tex_table[2][2][6][3][2] = {
+/* [lookup][blend][env][zfmt][zwrite] (lookup 1 trilinear, 2 bilinear
+ * for the envs of TEX_KERNELS_BLEND_TRI and _BI, the general one for the
+ * others and for lookup 0) */
+static const r_tri_kernel tex_table[3][2][6][3][2] = {
    { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
        ROW(opaque_decal) },
      { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
@@ -290,6 +303,10 @@ static const r_tri_kernel tex_table[2][2][6][3][2] = {
        ROW(opaque_tri_tp_p), ROW(opaque_decal) },
      { ROW(alpha_args), ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp),
        ROW(alpha_tri_tp_p), ROW(alpha_decal) } },
+   { { ROW(opaque_args), ROW(opaque_bi_t_t), ROW(opaque_bi_t_p), ROW(opaque_bi_tp_tp),
+       ROW(opaque_bi_tp_p), ROW(opaque_decal) },
+     { ROW(alpha_args), ROW(alpha_bi_t_t), ROW(alpha_bi_t_p), ROW(alpha_bi_tp_tp),
+       ROW(alpha_bi_tp_p), ROW(alpha_decal) } },
 };
 
 /* the form of a group of channels (r_tex_combine.simple_fn_*): 0 T,
@@ -349,5 +366,6 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
       env = ENV_DECAL;
    else if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
       env = forms[fr][fa];
-   return tex_table[tex8_is_trilinear_repeat(t)][bl][env][zf][rs->dsa->depth_write];
+   const int lookup = tex8_is_trilinear_repeat(t) ? 1 : tex8_is_bilinear(t, R_WRAP_REPEAT) ? 2 : 0;
+   return tex_table[lookup][bl][env][zf][rs->dsa->depth_write];
 }

@@ -535,4 +535,28 @@ tex8_filter_trilinear_repeat(const struct tex8_level *tab, const struct r_tex_lo
    return _mm256_packus_epi16(lo, hi);
 }
 
+/* Whether tex8_filter_bilinear samples t: 2D, LINEAR for both image
+ * filters, no mip filter, and REPEAT on both axes with power-of-two sizes
+ * or CLAMP_TO_EDGE on both (with r_tex8_fast). */
+static inline bool tex8_is_bilinear(const struct r_texture *t, enum r_tex_wrap wrap)
+{
+   return t->dims == 2 && t->wrap_s == wrap && t->wrap_t == wrap &&
+          (wrap == R_WRAP_CLAMP_TO_EDGE || (wrap == R_WRAP_REPEAT && t->pot_s && t->pot_t)) &&
+          t->min_img == R_TEX_LINEAR && t->mag_img == R_TEX_LINEAR && t->mip == R_MIP_NONE;
+}
+
+/* tex8_filter_quads for such a texture, with its table: tex8_lod_quads
+ * gives no level of detail (no mip filter, min_img == mag_img), and
+ * r_tex_filter_aos's branch of R_MIP_NONE is LINEAR on first_level for
+ * both quads, with every property a constant (linear_axis reads pot only
+ * with REPEAT). */
+static inline __attribute__((always_inline)) __m256i
+tex8_filter_bilinear(const struct tex8_level *tab, int first_level, enum r_tex_wrap wrap, __m256 s,
+                     __m256 tc)
+{
+   struct lv8 v;
+   lv8_from(&tab[first_level], &tab[first_level], &v);
+   return sample_linear_k(2, true, wrap, true, wrap, &v, s, tc);
+}
+
 #endif

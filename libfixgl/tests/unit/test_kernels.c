@@ -842,8 +842,14 @@ static void set_tex_params(GLenum target)
                                    GL_MIRROR_CLAMP_EXT, GL_MIRROR_CLAMP_TO_EDGE_EXT,
                                    GL_MIRROR_CLAMP_TO_BORDER_EXT };
    const bool usual = G.mode[GROUP_TEX] != MODE_ANY;
-   const GLenum mi = PICK(mins), ma = PICK(mags);
-   const GLenum ws = wraps[rnd(usual ? 4 : 10)], wt = wraps[rnd(usual ? 4 : 10)];
+   GLenum mi = PICK(mins), ma = PICK(mags);
+   GLenum ws = wraps[rnd(usual ? 4 : 10)], wt = wraps[rnd(usual ? 4 : 10)];
+   if (usual && chance(0.2f)) {
+      /* the block kernels' bilinear lookups (r_tex_avx2.h
+       * tex8_is_bilinear): LINEAR, no mipmap, one wrap on both axes */
+      mi = ma = GL_LINEAR;
+      wt = ws;
+   }
    float bc[4];
    rnd_color4(bc);
    L("  params min 0x%x mag 0x%x wrap 0x%x 0x%x", mi, ma, ws, wt);
