@@ -48,9 +48,14 @@
  * are raised as X errors the client's handler sees (glx_error), with the
  * server's GLX codes when it has the extension.
  *
+ * A double-buffered window has a separate front buffer (fb->Other,
+ * main/buffers.c): black at first, drawn into under glDrawBuffer(GL_FRONT)
+ * and shown by glFlush/glFinish when drawn into, left as it is by
+ * glXSwapBuffers, which shows the back buffer, as the oracle's drisw.
+ *
  * Not done, on purpose or not yet: separate read drawables (reads come
- * from the draw drawable), front-buffer drawing in a double-buffered
- * config (there is one colour buffer: what glXSwapBuffers presents).
+ * from the draw drawable); GL_FRONT_AND_BACK and GL_LEFT draw into the
+ * back buffer only (into both on the oracle).
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
@@ -920,11 +925,13 @@ static void free_buffers(struct glx_drawable *d)
 {
    fgl_lazy_fini(&d->fb);
    fgl_free(d->fb.Color);
+   fgl_free(d->fb.Other);
    fgl_free(d->depth_mem);
    fgl_free(d->fb.Stencil);
    fgl_free(d->fb.Accum);
    d->depth_mem = NULL;
    d->fb.Color = NULL;
+   d->fb.Other = NULL;
    d->fb.Depth = NULL;
    d->fb.Stencil = NULL;
    d->fb.Accum = NULL;
@@ -940,7 +947,7 @@ static void free_drawable(struct glx_drawable *d, bool connected)
    fgl_free(d);
 }
 
-static void present(struct glx_drawable *d);
+static void present(struct glx_drawable *d, const uint8_t *color);
 
 /* glFlush/glFinish of a single-buffered drawable: the image to the X
  * drawable, when a draw or clear defined it since the last time. */
@@ -949,7 +956,20 @@ static void flush_front(struct fgl_framebuffer *fb)
    if (!fb->ColorDefined)
       return;
    fb->ColorDefined = false;
-   present((struct glx_drawable *)(void *)fb);
+   present((struct glx_drawable *)(void *)fb, fb->Color);
+}
+
+/* glFlush/glFinish of a double-buffered window: its front buffer to the
+ * X window when it was drawn into since the last time (the oracle's
+ * front renderbuffer's "defined", st_manager_flush_frontbuffer); the
+ * back buffer is glXSwapBuffers's. */
+static void flush_front_db(struct fgl_framebuffer *fb)
+{
+   bool *defined = fb->FrontIsColor ? &fb->ColorDefined : &fb->OtherDefined;
+   if (!*defined)
+      return;
+   *defined = false;
+   present((struct glx_drawable *)(void *)fb, fb->FrontIsColor ? fb->Color : fb->Other);
 }
 
 static enum r_zs_format zs_format(const struct __GLXFBConfigRec *c)
@@ -976,11 +996,17 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    fb->ColorR8G8B8A8 = false;
    fb->DoubleBuffer = d->cfg.db;
    fb->ZSFormat = zs_format(&d->cfg);
-   fb->FlushFront = d->cfg.db ? NULL : flush_front;
+   /* a double-buffered window has a separate front buffer (Other), black
+    * at first as the oracle's; glDrawBuffer selects the one drawn */
+   const bool separate_front = d->cfg.db && !d->pixmap && !d->pbuffer;
+   fb->FlushFront = !d->cfg.db ? flush_front : separate_front ? flush_front_db : NULL;
    fb->FlushFrontRect = NULL;
    fb->FlushFrontEnd = NULL;
    fb->AccumBits = d->cfg.accum;
    fb->Color = fgl_calloc(n, 4);
+   fb->Other = separate_front ? fgl_calloc(n, 4) : NULL;
+   fb->FrontIsColor = false;
+   fb->OtherDefined = false;
    if (fb->ZSFormat != R_ZS_NONE) {
       const size_t bpv = fb->ZSFormat == R_ZS_Z16 ? 2 : 4;
       /* 2112 bytes past a page boundary, as osmesa.c (4K aliasing) */
@@ -989,7 +1015,8 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    }
    if (d->cfg.accum > 0)
       fb->Accum = fgl_calloc(n, 4 * sizeof(int16_t));
-   if (!fb->Color || (fb->ZSFormat != R_ZS_NONE && !fb->Depth) || (d->cfg.accum > 0 && !fb->Accum)) {
+   if (!fb->Color || (separate_front && !fb->Other) || (fb->ZSFormat != R_ZS_NONE && !fb->Depth) ||
+       (d->cfg.accum > 0 && !fb->Accum)) {
       free_buffers(d);
       return false;
    }
@@ -1180,7 +1207,7 @@ static bool ensure_image(struct glx_drawable *d, int w, int h)
 /* The colour buffer (RGBA8, top row first) to the X drawable: 32-bit
  * pixels 0xAARRGGBB in the server's byte order (alpha 0xff without an
  * alpha channel). */
-static void present(struct glx_drawable *d)
+static void present(struct glx_drawable *d, const uint8_t *color)
 {
    struct fgl_framebuffer *fb = &d->fb;
    if (!d->has_buffer || d->pbuffer)
@@ -1194,7 +1221,7 @@ static void present(struct glx_drawable *d)
    const bool msb = d->img->byte_order == MSBFirst;
    const bool alpha = d->cfg.alpha > 0 && d->cfg.visual_depth == 32;
    for (int y = 0; y < h; y++) {
-      const uint8_t *src = fb->Color + (size_t)y * (size_t)w * 4;
+      const uint8_t *src = color + (size_t)y * (size_t)w * 4;
       uint8_t *dst = (uint8_t *)d->img->data + (size_t)y * (size_t)d->img->bytes_per_line;
       for (int x = 0; x < w; x++, src += 4, dst += 4) {
          const uint8_t a = alpha ? src[3] : 0xff;
@@ -1469,7 +1496,8 @@ GLXAPI void glXSwapBuffers(Display *dpy, GLXDrawable drawable)
    /* an implicit glFlush of the current context, as Mesa's */
    if (ctx)
       fgl_flush_front(ctx);
-   present(d);
+   /* the back buffer (the front stays as it is, as the oracle's) */
+   present(d, d->fb.Other && d->fb.FrontIsColor ? d->fb.Other : d->fb.Color);
    /* the size of the next frame */
    update_size(d, ctx);
 }
