@@ -206,6 +206,7 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
 {
    ctx->DrawBuffer = fb;
    ctx->NewState |= FGL_NEW_BUFFERS;
+   fgl_select_color_buffer(ctx);   /* a separate front buffer: the one drawn */
    /* Like _mesa_make_current (_mesa_check_init_viewport): the first
     * binding sizes viewport and scissor box to the buffer. */
    if (fb && !ctx->ViewportInitialized) {

@@ -587,8 +587,16 @@ struct fgl_framebuffer {
    int DepthBits;             /* 0, 16, 24 or 32 */
    int StencilBits;           /* 0 or 8 */
    int AlphaBits;             /* 8, or 0 for the RGB formats */
-   bool DoubleBuffer;         /* a double-buffered GLX drawable (libgl/): GL_DOUBLEBUFFER;
-                               * fixgl's one colour buffer is its back buffer */
+   bool DoubleBuffer;         /* a double-buffered GLX drawable (libgl/): GL_DOUBLEBUFFER */
+   /* A separate front colour buffer (a double-buffered GLX window,
+    * libgl/), else NULL and GL_FRONT and GL_BACK both name Color (OSMesa,
+    * single-buffered drawables).  With one, Color is the buffer
+    * glDrawBuffer selects and Other the other one, same layout;
+    * FrontIsColor tells which is which, OtherDefined is ColorDefined of
+    * Other (main/buffers.c:fgl_select_color_buffer swaps them). */
+   uint8_t *Other;
+   bool FrontIsColor;
+   bool OtherDefined;
    bool ColorR8G8B8A8;        /* the oracle's colour buffer format is R8G8B8A8_UNORM
                                * (OSMESA_RGBA), which glReadPixels packs from
                                * by other rules than B8G8R8A8 etc. */

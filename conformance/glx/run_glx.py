@@ -16,6 +16,13 @@ against the same programs on Mesa's libGL (llvmpipe), under Xvfb.
         fixgl and its frames move.
     run_glx.py glxinfo LIBGL_DIR
         glxinfo on fixgl prints fixgl's renderer, version and extensions.
+    run_glx.py configs LIBGL_DIR OUT_DIR PROGRAM
+        PROGRAM (configs.c) lists the FBConfigs, the visuals and the
+        answers of glXChooseFBConfig/glXChooseVisual on Mesa's libGL and on
+        fixgl's (each on a fresh Xvfb): the configs fixgl cannot render
+        (lines of Mesa's marked "-": multisampled, not 8-8-8 RGBA) are
+        left out of Mesa's list, fixgl must list none of them and answer
+        "no GL" for their visuals; every other line must be equal.
 
 Xvfb, glxgears or glxinfo missing is a failure (exit 1), not a skip.
 """
@@ -299,6 +306,51 @@ def cmd_glxinfo(libgl_dir):
             print(line)
 
 
+def cmd_configs(libgl_dir, out_dir, program):
+    if not os.path.exists(program):
+        raise Fail(f"{program} is missing")
+    os.makedirs(out_dir, exist_ok=True)
+    lines = {}
+    for which in ("mesa", "fixgl"):
+        xvfb, display = start_xvfb()
+        try:
+            path = os.path.join(out_dir, f"configs-{which}.txt")
+            if os.path.exists(path):
+                os.remove(path)
+            out = run([program, "--out", path], env_for(which, display, libgl_dir))
+            vendor = next((l for l in out.splitlines() if l.startswith("vendor: ")), "")
+            want = "Mesa" if which == "mesa" else "fixgl"
+            if want not in vendor:
+                raise Fail(f"configs on {which}: expected {want}'s GLX, got {vendor!r}")
+            print(f"{which}: " + " ".join(out.splitlines()[1:]))
+            with open(path) as f:
+                lines[which] = f.read().splitlines()
+        finally:
+            stop(xvfb)
+    skipped_visuals = {l.split()[1] for l in lines["mesa"] if l.startswith("-visual ")}
+    mesa = [l for l in lines["mesa"] if not l.startswith("-")]
+    fixgl = []
+    for l in lines["fixgl"]:
+        if l.startswith("-"):
+            raise Fail(f"fixgl offers a config it cannot render: {l}")
+        f = l.split()
+        if f[0] == "visual" and f[1] in skipped_visuals:
+            if "use_gl=0" not in f:
+                raise Fail(f"fixgl offers GL on a visual of Mesa's it cannot render: {l}")
+            continue
+        fixgl.append(l)
+    if not any(l.startswith("fbconfig ") for l in mesa):
+        raise Fail("Mesa lists no FBConfig fixgl could render")
+    for i, (a, b) in enumerate(zip(mesa, fixgl)):
+        if a != b:
+            raise Fail(f"line {i + 1} differs:\n  Mesa:  {a}\n  fixgl: {b}")
+    if len(mesa) != len(fixgl):
+        raise Fail(f"Mesa has {len(mesa)} lines, fixgl {len(fixgl)}")
+    counts = {k: sum(1 for l in mesa if l.startswith(k)) for k in ("fbconfig", "visual", "choose")}
+    print(f"configs: {counts['fbconfig']} FBConfigs, {counts['visual']} visuals and "
+          f"{counts['choose']} choices equal ({len(skipped_visuals)} multisampled visuals without GL on fixgl)")
+
+
 def main(argv):
     try:
         if len(argv) >= 5 and argv[1] == "compare":
@@ -307,6 +359,8 @@ def main(argv):
             cmd_glxgears(*argv[2:])
         elif len(argv) == 3 and argv[1] == "glxinfo":
             cmd_glxinfo(argv[2])
+        elif len(argv) == 5 and argv[1] == "configs":
+            cmd_configs(*argv[2:])
         else:
             print(__doc__)
             return 2

@@ -154,8 +154,10 @@ static uint16_t float_to_ushort(float f)
 /* the colour buffer's unpacked RGBA at pixel `idx` (alpha 1 without alpha
  * bits: the RGB formats unpack it as one): the wide target of an OSMesa
  * GL_UNSIGNED_SHORT or GL_FLOAT buffer where there is one
- * (R16G16B16A16_UNORM, R32G32B32A32_FLOAT), else the RGBA8 image */
-static void unpack_color(const struct fgl_framebuffer *fb, size_t idx, float rgba[4])
+ * (R16G16B16A16_UNORM, R32G32B32A32_FLOAT), else the RGBA8 image `color`
+ * (fb->Color, or the read buffer of a separate front: fgl_read_color) */
+static void unpack_color(const struct fgl_framebuffer *fb, const uint8_t *color, size_t idx,
+                         float rgba[4])
 {
    if (fb->WideFormat == R_WIDE_UNORM16) {
       const uint16_t *src = (const uint16_t *)fb->Wide + 4 * idx;
@@ -166,7 +168,7 @@ static void unpack_color(const struct fgl_framebuffer *fb, size_t idx, float rgb
       for (int c = 0; c < 4; c++)
          rgba[c] = src[c];
    } else {
-      const uint8_t *src = fb->Color + 4 * idx;
+      const uint8_t *src = color + 4 * idx;
       for (int c = 0; c < 4; c++)
          rgba[c] = ubyte_to_float(src[c]);
    }
@@ -222,12 +224,13 @@ static void accum_or_load(struct fgl_context *ctx, float value, bool load)
    int x0, x1, r0, r1;
    accum_region(ctx, &x0, &x1, &r0, &r1);
    const float scale = value * 32767.0f;
+   const uint8_t *read_color = fgl_read_color(ctx);
    for (int r = r0; r < r1; r++) {
       const size_t first = (size_t)r * (size_t)fb->Width + (size_t)x0;
       int16_t *acc = fb->Accum + first * 4;
       for (int x = x0; x < x1; x++, acc += 4) {
          float rgba[4];
-         unpack_color(fb, first + (size_t)(x - x0), rgba);
+         unpack_color(fb, read_color, first + (size_t)(x - x0), rgba);
          for (int c = 0; c < 4; c++) {
             const int16_t v = float_to_short_x86(rgba[c] * scale);
             acc[c] = load ? v : add_short(acc[c], v);
@@ -259,7 +262,7 @@ static void accum_return(struct fgl_context *ctx, float value)
             rgba[c] = (float)acc[c] * scale;
          if (mask != 0xfu) {
             float dest[4];
-            unpack_color(fb, idx, dest);
+            unpack_color(fb, fb->Color, idx, dest);
             for (int c = 0; c < 4; c++)
                if (!(mask & (1u << c)))
                   rgba[c] = dest[c];

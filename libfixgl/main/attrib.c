@@ -206,6 +206,7 @@ static void restore_color(struct fgl_context *ctx, const struct fgl_attrib_node 
    if (clear_index)
       ctx->Color.ClearIndex = fgl_clear_index_cast((float)node->Color.ClearIndex);
    ctx->NewState |= FGL_NEW_COLOR;
+   fgl_select_color_buffer(ctx);   /* the draw buffer restored */
 }
 
 /* GL_FOG_BIT: the setters, _mesa_Fogfv(GL_FOG_COLOR) with the clamped

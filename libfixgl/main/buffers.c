@@ -13,8 +13,14 @@
  * INVALID_OPERATION (readpix.c).
  *
  * A context of a double-buffered GLX config (libfixgl/libgl/) starts with GL_BACK
- * for both; its drawable's one colour buffer is the back buffer, which
- * glXSwapBuffers presents, and GL_FRONT names it too.
+ * for both.  A double-buffered GLX window has a separate front buffer
+ * (fb->Other): GL_FRONT and GL_FRONT_LEFT draw into it, the other draw
+ * buffers into the back (fgl_select_color_buffer, at glDrawBuffer, at
+ * glPopAttrib and when a framebuffer is bound); GL_FRONT, GL_FRONT_LEFT,
+ * GL_LEFT and GL_FRONT_AND_BACK read from the front, GL_BACK and
+ * GL_BACK_LEFT from the back (fgl_read_color).  Not done: GL_LEFT and
+ * GL_FRONT_AND_BACK draw into both buffers on the oracle, into the back
+ * only here.
  */
 #include "main/groups.h"
 #include "main/dlist.h"
@@ -80,6 +86,7 @@ void GLAPIENTRY glDrawBuffer(GLenum buffer)
       return;
    ctx->NewState |= FGL_NEW_COLOR;
    ctx->Color.DrawBuffer = buffer;
+   fgl_select_color_buffer(ctx);
 }
 
 void GLAPIENTRY glReadBuffer(GLenum buffer)
@@ -107,4 +114,41 @@ void fgl_init_double_buffered(struct fgl_context *ctx)
 {
    ctx->Color.DrawBuffer = GL_BACK;
    ctx->Pixel.ReadBuffer = GL_BACK;
+}
+
+/* The draw buffer into Color (see the top): the drawing so far is
+ * finished into the buffer it was for, then Color and Other trade places,
+ * with their ColorDefined. */
+void fgl_select_color_buffer(struct fgl_context *ctx)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const GLenum b = ctx->Color.DrawBuffer;
+   if (!fb || !fb->Other || b == GL_NONE)
+      return;
+   const bool front = b == GL_FRONT || b == GL_FRONT_LEFT;
+   if (front == fb->FrontIsColor)
+      return;
+   fgl_scene_flush(ctx);
+   fgl_lazy_resolve(fb, FGL_LAZY_COLOR);
+   uint8_t *const color = fb->Color;
+   fb->Color = fb->Other;
+   fb->Other = color;
+   const bool defined = fb->ColorDefined;
+   fb->ColorDefined = fb->OtherDefined;
+   fb->OtherDefined = defined;
+   fb->FrontIsColor = front;
+   ctx->NewState |= FGL_NEW_BUFFERS;
+}
+
+/* The colour buffer glReadPixels, glCopyPixels, glCopyTexImage and
+ * glAccum read from: Color, or Other when the read buffer names the other
+ * one (a separate front buffer only). */
+const uint8_t *fgl_read_color(const struct fgl_context *ctx)
+{
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (!fb || !fb->Other)
+      return fb ? fb->Color : NULL;
+   const GLenum b = ctx->Pixel.ReadBuffer;
+   const bool front = b == GL_FRONT || b == GL_FRONT_LEFT || b == GL_LEFT || b == GL_FRONT_AND_BACK;
+   return front == fb->FrontIsColor ? fb->Color : fb->Other;
 }

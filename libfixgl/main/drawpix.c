@@ -1096,8 +1096,11 @@ static bool transfer_ops(const struct fgl_context *ctx)
 
 /* pipe->blit of a w x h colour rectangle between two y-down positions:
  * whole pixels (PIPE_MASK_RGBA), of the wide target too (the same format
- * at both ends: its values copied as they are; case osmesa/float_copypixels) */
-static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy, int w, int h)
+ * at both ends: its values copied as they are; case osmesa/float_copypixels);
+ * the RGBA8 pixels from src (the read buffer: fb->Color, or a separate
+ * front or back buffer, fgl_read_color) */
+static void blit_rect(struct fgl_framebuffer *fb, const uint8_t *src, int sx, int sy, int dx, int dy,
+                      int w, int h)
 {
    const size_t wide_bpp = fb->WideFormat == R_WIDE_FLOAT     ? 16
                            : fb->WideFormat == R_WIDE_UNORM16 ? 8
@@ -1105,7 +1108,7 @@ static void blit_rect(struct fgl_framebuffer *fb, int sx, int sy, int dx, int dy
    for (int j = 0; j < h; j++) {
       const size_t s = (size_t)(sy + j) * (size_t)fb->Width + (size_t)sx;
       const size_t d = (size_t)(dy + j) * (size_t)fb->Width + (size_t)dx;
-      memmove(fb->Color + 4 * d, fb->Color + 4 * s, 4 * (size_t)w);
+      memmove(fb->Color + 4 * d, src + 4 * s, 4 * (size_t)w);
       if (wide_bpp)
          memmove((uint8_t *)fb->Wide + wide_bpp * d, (const uint8_t *)fb->Wide + wide_bpp * s,
                  wide_bpp * (size_t)w);
@@ -1165,7 +1168,7 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
    if (overlap)
       return false;
    fb->ColorDefined = true;
-   blit_rect(fb, rx, ry_down, drx, dy_down, rw, rh);
+   blit_rect(fb, fgl_read_color(ctx), rx, ry_down, drx, dy_down, rw, rh);
    return true;
 }
 
@@ -1209,6 +1212,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    const bool color = type == GL_COLOR;
    const bool depth = type == GL_DEPTH;
    const bool stencil = type == GL_STENCIL;
+   const uint8_t *read_color = fgl_read_color(ctx);
    if (color || depth)
       t = fgl_calloc_gl(ctx, color ? 4 * n : n, sizeof(float));
    if (stencil)
@@ -1231,7 +1235,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
                      ? ((const float *)fb->Wide)[4 * src + c]
                   : fb->WideFormat == R_WIDE_UNORM16
                      ? (float)((const uint16_t *)fb->Wide)[4 * src + c] * (float)(1.0 / 65535.0)
-                     : (float)fb->Color[4 * src + c] * (float)(1.0 / 255.0);
+                     : (float)read_color[4 * src + c] * (float)(1.0 / 255.0);
          }
          if (depth) {
             /* the depth texture (the buffer's format) sampled: unorm to

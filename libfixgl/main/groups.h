@@ -22,6 +22,8 @@ void fgl_new_window_framebuffer(struct fgl_context *ctx);
  * double-buffered config (GLX): GL_BACK, as _mesa_init_color and
  * _mesa_initialize_window_framebuffer choose them */
 void fgl_init_double_buffered(struct fgl_context *ctx);
+void fgl_select_color_buffer(struct fgl_context *ctx);
+const uint8_t *fgl_read_color(const struct fgl_context *ctx);
 
 /* main/varray.c (GL_CLIENT_VERTEX_ARRAY_BIT) */
 void fgl_init_array(struct fgl_context *ctx);

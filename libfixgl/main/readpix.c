@@ -161,10 +161,11 @@ static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb
       return;
    }
    /* rows bottom-up as GL reads them; the buffer is stored y-down */
+   const uint8_t *color = fgl_read_color(ctx);
    for (GLsizei j = 0; j < r->height; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
       memcpy(rgba + 4 * (size_t)j * (size_t)r->width,
-             fb->Color + 4 * (row * (size_t)fb->Width + (size_t)r->x), 4 * (size_t)r->width);
+             color + 4 * (row * (size_t)fb->Width + (size_t)r->x), 4 * (size_t)r->width);
    }
    /* the oracle's buffer without alpha is an RGB format: alpha reads 1 */
    const GLenum base = fb->AlphaBits == 0 ? GL_RGB : GL_RGBA;

@@ -1615,6 +1615,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb || !fb->Color)
       return;
+   const uint8_t *color = fgl_read_color(ctx);
    /* _mesa_clip_to_region */
    if (x < 0) {
       w -= -x;
@@ -1656,7 +1657,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
       }
       for (GLint i = 0; i < w; i++) {
          uint8_t c[4], t[4];
-         memcpy(c, fb->Color + 4 * (row * (size_t)fb->Width + (size_t)(x + i)), 4);
+         memcpy(c, color + 4 * (row * (size_t)fb->Width + (size_t)(x + i)), 4);
          if (fb->AlphaBits == 0)
             c[3] = 255;
          rebase_texel(img->BaseFormat, c, t);

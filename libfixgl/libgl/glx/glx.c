@@ -14,19 +14,26 @@
  * glXMakeCurrent and after every glXSwapBuffers, and the buffers follow
  * it.
  *
- * Configs (GLXFBConfig, and the visuals of glXChooseVisual): the screen's
- * default visual when it is 8-8-8 TrueColor (no alpha) and the first
- * 32-bit 8-8-8-8 TrueColor visual (alpha), each single- and
- * double-buffered, with depth/stencil 0/0, 16/0, 24/0, 24/8 or 32/0 (the
- * oracle's Z16, Z24X8, Z24S8 and Z32_UNORM; its "larger depth first"
- * order makes GLX_DEPTH_SIZE 1 or 16 pick the 32-bit ones) and
- * accumulation 0 or 16 bits.  glXChooseFBConfig and glXChooseVisual match and order them
- * as Mesa's glxcmds.c does (fbconfigs_compatible, fbconfig_compare), so a
- * program asking the same of both gets the same kind of buffer.  As
- * Mesa's fake GLX, glXChooseVisual and glXGetVisualFromFBConfig remember
- * which config a visual was handed out for; glXGetConfig and
- * glXCreateContext of that visual use it (else the visual's
- * double-buffered config with 24 depth and 8 stencil bits).
+ * Configs (GLXFBConfig, and the visuals of glXChooseVisual): the
+ * server's own list (X_GLXGetFBConfigs), as the oracle's libGL (Mesa's
+ * DRI GLX on Xvfb: drisw) takes it, less the configs fixgl cannot
+ * render (multisampled, floating-point, 10-10-10 and 5-6-5 colour, no
+ * 8-8-8 TrueColor/DirectColor visual): same IDs, visuals, attributes and
+ * order.  Xvfb's GLX makes a visual for each config it offers on a
+ * window, so a visual is one config's (glXGetConfig and glXCreateContext
+ * of a visual use that config).  A server without GLX gets fixgl's own
+ * list: the screen's default visual when it is 8-8-8 TrueColor (no
+ * alpha) and the first 32-bit 8-8-8-8 TrueColor visual (alpha), each
+ * single- and double-buffered, with depth/stencil 0/0, 16/0, 24/0, 24/8
+ * or 32/0 (the oracle's Z16, Z24X8, Z24S8 and Z32_UNORM; its "larger
+ * depth first" order makes GLX_DEPTH_SIZE 1 or 16 pick the 32-bit ones)
+ * and accumulation 0 or 16 bits; there a visual stands for the config it
+ * was last handed out for (glXChooseVisual, glXGetVisualFromFBConfig),
+ * else its double-buffered config with 24 depth and 8 stencil bits.
+ * glXChooseFBConfig and glXChooseVisual match and order them as Mesa's
+ * glxcmds.c does (fbconfigs_compatible, fbconfig_compare, a stable sort
+ * as glibc's qsort is), so a program asking the same of both gets the
+ * same config.
  *
  * The per-display state (configs, drawables) hangs on the Display (its
  * extension data, freed by XCloseDisplay's close hook), the current GLX
@@ -41,9 +48,14 @@
  * are raised as X errors the client's handler sees (glx_error), with the
  * server's GLX codes when it has the extension.
  *
+ * A double-buffered window has a separate front buffer (fb->Other,
+ * main/buffers.c): black at first, drawn into under glDrawBuffer(GL_FRONT)
+ * and shown by glFlush/glFinish when drawn into, left as it is by
+ * glXSwapBuffers, which shows the back buffer, as the oracle's drisw.
+ *
  * Not done, on purpose or not yet: separate read drawables (reads come
- * from the draw drawable), front-buffer drawing in a double-buffered
- * config (there is one colour buffer: what glXSwapBuffers presents).
+ * from the draw drawable); GL_FRONT_AND_BACK and GL_LEFT draw into the
+ * back buffer only (into both on the oracle).
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
@@ -52,6 +64,7 @@
 #include <X11/Xutil.h>
 #include <X11/Xlibint.h>   /* XESetCloseDisplay */
 #include <X11/extensions/XShm.h>
+#include <GL/glxproto.h>   /* X_GLXGetFBConfigs */
 #include <sys/ipc.h>
 #include <sys/shm.h>
 
@@ -92,11 +105,16 @@ static const char glx_extensions[] =
 struct __GLXFBConfigRec {
    int id;                 /* GLX_FBCONFIG_ID */
    int screen;
-   VisualID visualid;
+   VisualID visualid;      /* 0: no visual (pbuffers only) */
    int visual_depth;       /* 24 or 32 */
-   int alpha;              /* 8 on the 32-bit visual, else 0 */
+   int alpha;              /* 0 or 8 */
    bool db;
    int depth, stencil, accum;
+   /* as the server reports them (GLX_X_VISUAL_TYPE, GLX_CONFIG_CAVEAT,
+    * GLX_BUFFER_SIZE, GLX_DRAWABLE_TYPE, GLX_X_RENDERABLE,
+    * GLX_VISUAL_SELECT_GROUP_SGIX, GLX_MAX_PBUFFER_*) */
+   int visual_type, caveat, buffer_size, drawable_type, x_renderable, select_group;
+   int max_pb_width, max_pb_height, max_pb_pixels;
 };
 
 /* The depth/stencil pairs of every visual, in fixgl's formats. */
@@ -143,6 +161,7 @@ struct glx_display {
    struct glx_visual_choice *choices;
    struct __GLXcontextRec *contexts;   /* every context made for dpy */
    int has_shm;                 /* -1 not asked yet, 0, 1 */
+   bool from_server;            /* configs: the server's GLX list */
    /* the server's GLX extension (its errors carry these codes), or 0 */
    int glx_opcode, glx_error_base, glx_event_base;
 };
@@ -224,8 +243,146 @@ static int close_display(Display *dpy, XExtCodes *codes)
 
 static bool visual_is_888(const XVisualInfo *v)
 {
-   return v->class == TrueColor && v->red_mask == 0xff0000ul && v->green_mask == 0xff00ul &&
-          v->blue_mask == 0xfful && v->bits_per_rgb >= 8;
+   return (v->class == TrueColor || v->class == DirectColor) && v->red_mask == 0xff0000ul &&
+          v->green_mask == 0xff00ul && v->blue_mask == 0xfful && v->bits_per_rgb >= 8 &&
+          (v->depth == 24 || v->depth == 32);
+}
+
+static bool zs_supported(int depth, int stencil)
+{
+   for (size_t z = 0; z < sizeof(zs_pairs) / sizeof(zs_pairs[0]); z++)
+      if (zs_pairs[z][0] == depth && zs_pairs[z][1] == stencil)
+         return true;
+   return false;
+}
+
+/* One of the server's FBConfigs (its attribute/value pairs) as a config
+ * of fixgl's, if fixgl renders it: RGBA of 8 bits a channel, alpha 0 or
+ * 8, single-sampled, no aux buffers, mono, level 0, a depth/stencil pair
+ * of zs_pairs, accumulation 0 or 16 in every channel, a visual of 8-8-8
+ * TrueColor or DirectColor. */
+static bool server_config(Display *dpy, int screen, const CARD32 *p, int nattr,
+                          struct __GLXFBConfigRec *c)
+{
+   int r = -1, g = -1, b = -1, render = 0, sb = 0, samples = 0, aux = 0, stereo = 0, level = 0;
+   int ar = 0, ag = 0, ab = 0, aa = 0;
+   memset(c, 0, sizeof(*c));
+   c->screen = screen;
+   c->visual_type = GLX_TRUE_COLOR;
+   c->caveat = GLX_NONE;
+   c->drawable_type = GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT;
+   c->x_renderable = True;
+   c->max_pb_width = c->max_pb_height = GLX_MAX_PBUFFER;
+   c->alpha = -1;
+   for (int i = 0; i < nattr; i++) {
+      const int v = (int)p[2 * i + 1];
+      switch ((int)p[2 * i]) {
+      case GLX_FBCONFIG_ID:       c->id = v; break;
+      case GLX_VISUAL_ID:         c->visualid = (VisualID)(CARD32)v; break;
+      case GLX_X_VISUAL_TYPE:     c->visual_type = v; break;
+      case GLX_CONFIG_CAVEAT:     c->caveat = v; break;
+      case GLX_RGBA:              if (v) render |= GLX_RGBA_BIT; break;
+      case GLX_RENDER_TYPE:       render = v; break;
+      case GLX_BUFFER_SIZE:       c->buffer_size = v; break;
+      case GLX_LEVEL:             level = v; break;
+      case GLX_DOUBLEBUFFER:      c->db = v != 0; break;
+      case GLX_STEREO:            stereo = v; break;
+      case GLX_AUX_BUFFERS:       aux = v; break;
+      case GLX_RED_SIZE:          r = v; break;
+      case GLX_GREEN_SIZE:        g = v; break;
+      case GLX_BLUE_SIZE:         b = v; break;
+      case GLX_ALPHA_SIZE:        c->alpha = v; break;
+      case GLX_DEPTH_SIZE:        c->depth = v; break;
+      case GLX_STENCIL_SIZE:      c->stencil = v; break;
+      case GLX_ACCUM_RED_SIZE:    ar = v; break;
+      case GLX_ACCUM_GREEN_SIZE:  ag = v; break;
+      case GLX_ACCUM_BLUE_SIZE:   ab = v; break;
+      case GLX_ACCUM_ALPHA_SIZE:  aa = v; break;
+      case GLX_SAMPLE_BUFFERS:    sb = v; break;
+      case GLX_SAMPLES:           samples = v; break;
+      case GLX_DRAWABLE_TYPE:     c->drawable_type = v; break;
+      case GLX_X_RENDERABLE:      c->x_renderable = v; break;
+      case GLX_VISUAL_SELECT_GROUP_SGIX: c->select_group = v; break;
+      case GLX_MAX_PBUFFER_WIDTH:  c->max_pb_width = v; break;
+      case GLX_MAX_PBUFFER_HEIGHT: c->max_pb_height = v; break;
+      case GLX_MAX_PBUFFER_PIXELS: c->max_pb_pixels = v; break;
+      default: break;
+      }
+   }
+   c->accum = ar;
+   /* the server (Xvfb) reports 0: the oracle's client has its driver's
+    * limit */
+   if (c->max_pb_width <= 0)
+      c->max_pb_width = GLX_MAX_PBUFFER;
+   if (c->max_pb_height <= 0)
+      c->max_pb_height = GLX_MAX_PBUFFER;
+   if (render != GLX_RGBA_BIT || r != 8 || g != 8 || b != 8 || (c->alpha != 0 && c->alpha != 8) ||
+       sb || samples || aux || stereo || level || !zs_supported(c->depth, c->stencil) ||
+       ag != ar || ab != ar || aa != ar || (ar != 0 && ar != 16) || !c->visualid)
+      return false;
+   XVisualInfo tmpl = { .visualid = c->visualid, .screen = screen };
+   int n = 0;
+   XVisualInfo *vi = XGetVisualInfo(dpy, VisualIDMask | VisualScreenMask, &tmpl, &n);
+   const bool ok = vi && n == 1 && visual_is_888(vi);
+   if (ok)
+      c->visual_depth = vi->depth;
+   if (vi)
+      XFree(vi);
+   return ok;
+}
+
+/* The configs of one screen as the server's GLX lists them
+ * (X_GLXGetFBConfigs), those fixgl renders, in the server's order: the
+ * oracle's libGL (Mesa's DRI GLX) takes its configs and visuals from
+ * the same list.  -1 when the server has no GLX or does not answer. */
+static int server_configs(struct glx_display *gd, int screen)
+{
+   Display *dpy = gd->dpy;
+   xGLXGetFBConfigsReply reply;
+   LockDisplay(dpy);
+   xGLXGetFBConfigsReq *req = (xGLXGetFBConfigsReq *)_XGetRequest(dpy, 0, sz_xGLXGetFBConfigsReq);
+   req->reqType = (CARD8)gd->glx_opcode;
+   req->glxCode = X_GLXGetFBConfigs;
+   req->screen = (CARD32)screen;
+   if (!_XReply(dpy, (xReply *)&reply, 0, False)) {
+      UnlockDisplay(dpy);
+      SyncHandle();
+      return -1;
+   }
+   const size_t words = (size_t)reply.length;
+   const int nconf = (int)reply.numFBConfigs, nattr = (int)reply.numAttribs;
+   CARD32 *data = words ? malloc(words * 4u) : NULL;
+   if (words && !data) {
+      _XEatDataWords(dpy, reply.length);
+      UnlockDisplay(dpy);
+      SyncHandle();
+      return -1;
+   }
+   if (words)
+      _XRead(dpy, (char *)data, (long)(words * 4u));
+   UnlockDisplay(dpy);
+   SyncHandle();
+   if (nconf < 0 || nattr < 0 || (size_t)nconf * (size_t)nattr * 2u > words) {
+      free(data);
+      return -1;
+   }
+   struct __GLXFBConfigRec *grown =
+      realloc(gd->configs, (size_t)(gd->nconfigs + nconf + 1) * sizeof(*gd->configs));
+   if (!grown) {
+      free(data);
+      return -1;
+   }
+   gd->configs = grown;
+   int kept = 0;
+   for (int i = 0; i < nconf; i++) {
+      struct __GLXFBConfigRec c;
+      if (server_config(dpy, screen, data + (size_t)i * (size_t)nattr * 2u, nattr, &c)) {
+         gd->configs[gd->nconfigs++] = c;
+         kept++;
+      }
+   }
+   free(data);
+   return kept;
 }
 
 /* The configs of every screen: the default visual (if 8-8-8 TrueColor of
@@ -233,6 +390,19 @@ static bool visual_is_888(const XVisualInfo *v)
 static bool build_configs(struct glx_display *gd)
 {
    const int nscreens = ScreenCount(gd->dpy);
+   if (gd->glx_opcode) {
+      gd->from_server = true;
+      for (int s = 0; s < nscreens; s++)
+         if (server_configs(gd, s) < 0) {
+            gd->from_server = false;
+            break;
+         }
+      if (gd->from_server)
+         return true;
+      free(gd->configs);
+      gd->configs = NULL;
+      gd->nconfigs = 0;
+   }
    const int per_visual = 2 * (int)(sizeof(zs_pairs) / sizeof(zs_pairs[0])) * 2;
    gd->configs = calloc((size_t)nscreens * 2u * (size_t)per_visual, sizeof(*gd->configs));
    if (!gd->configs)
@@ -245,7 +415,7 @@ static bool build_configs(struct glx_display *gd)
       XVisualInfo *vis = XGetVisualInfo(gd->dpy, VisualScreenMask, &tmpl, &n);
       const VisualID def = XVisualIDFromVisual(DefaultVisual(gd->dpy, s));
       for (int i = 0; i < n; i++) {
-         if (!visual_is_888(&vis[i]))
+         if (!visual_is_888(&vis[i]) || vis[i].class != TrueColor)
             continue;
          if (vis[i].visualid == def && vis[i].depth == 24) {
             vids[0] = vis[i].visualid;
@@ -273,6 +443,12 @@ static bool build_configs(struct glx_display *gd)
                   c->depth = zs_pairs[z][0];
                   c->stencil = zs_pairs[z][1];
                   c->accum = accum;
+                  c->visual_type = GLX_TRUE_COLOR;
+                  c->caveat = accum ? GLX_SLOW_CONFIG : GLX_NONE;
+                  c->buffer_size = 24 + c->alpha;
+                  c->drawable_type = GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT;
+                  c->x_renderable = True;
+                  c->max_pb_width = c->max_pb_height = GLX_MAX_PBUFFER;
                   gd->nconfigs++;
                }
       }
@@ -304,6 +480,8 @@ static struct glx_display *get_display(Display *dpy)
    if (gd)
       gd->dpy = dpy;
    XExtCodes *codes = gd && e ? XAddExtension(dpy) : NULL;
+   if (gd && !XQueryExtension(dpy, "GLX", &gd->glx_opcode, &gd->glx_event_base, &gd->glx_error_base))
+      gd->glx_opcode = gd->glx_event_base = gd->glx_error_base = 0;
    if (!codes || !build_configs(gd)) {
       free(gd ? gd->configs : NULL);
       free(gd);
@@ -312,8 +490,6 @@ static struct glx_display *get_display(Display *dpy)
       return NULL;
    }
    gd->has_shm = -1;
-   if (!XQueryExtension(dpy, "GLX", &gd->glx_opcode, &gd->glx_event_base, &gd->glx_error_base))
-      gd->glx_opcode = gd->glx_event_base = gd->glx_error_base = 0;
    pthread_mutex_init(&gd->lock, NULL);
    e->number = codes->extension;
    e->free_private = ext_data_free;
@@ -414,13 +590,13 @@ static bool request_set(struct glx_request *r, int attr, int value)
 
 static int config_buffer_size(const struct __GLXFBConfigRec *c)
 {
-   return 24 + c->alpha;
+   return c->buffer_size;
 }
 
 static int config_caveat(const struct __GLXFBConfigRec *c)
 {
    /* Mesa marks its configs with an accumulation buffer slow */
-   return c->accum ? GLX_SLOW_CONFIG : GLX_NONE;
+   return c->caveat;
 }
 
 #define MIN_OK(req, have) ((req) == DONT_CARE || (req) <= (have))
@@ -435,12 +611,11 @@ static bool config_matches(const struct __GLXFBConfigRec *c, const struct glx_re
       return false;
    if (r->level != DONT_CARE && r->level != 0)
       return false;
-   if (r->drawable_type != DONT_CARE &&
-       (r->drawable_type & ~(GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT)))
+   if (r->drawable_type != DONT_CARE && (r->drawable_type & ~c->drawable_type))
       return false;
-   if (r->x_renderable != DONT_CARE && !r->x_renderable)
+   if (r->x_renderable != DONT_CARE && r->x_renderable != c->x_renderable)
       return false;
-   if (r->visual_type != DONT_CARE && r->visual_type != GLX_TRUE_COLOR)
+   if (r->visual_type != DONT_CARE && r->visual_type != c->visual_type)
       return false;
    if (r->caveat != DONT_CARE && r->caveat != config_caveat(c))
       return false;
@@ -474,6 +649,8 @@ static int prefer_larger_or_zero(int a, int b)
 static int config_compare(const struct __GLXFBConfigRec *a, const struct __GLXFBConfigRec *b)
 {
    int d;
+   if ((d = a->select_group - b->select_group) != 0)
+      return d;
    if ((d = config_caveat(a) - config_caveat(b)) != 0)
       return d;
    if ((d = prefer_larger_or_zero(a->alpha, b->alpha)) != 0)
@@ -488,7 +665,16 @@ static int config_compare(const struct __GLXFBConfigRec *a, const struct __GLXFB
       return d;
    if ((d = prefer_larger_or_zero(a->accum, b->accum)) != 0)
       return d;
-   return a->id - b->id;
+   if ((d = a->visual_type - b->visual_type) != 0)
+      return d;
+   if ((d = b->max_pb_width - a->max_pb_width) != 0)
+      return d;
+   if ((d = b->max_pb_height - a->max_pb_height) != 0)
+      return d;
+   if ((d = b->max_pb_pixels - a->max_pb_pixels) != 0)
+      return d;
+   /* equal for Mesa: glibc's qsort (a merge sort) keeps the list's order */
+   return (a > b) - (a < b);
 }
 
 static int config_compare_qsort(const void *pa, const void *pb)
@@ -509,7 +695,7 @@ static void remember_visual(struct glx_display *gd, const struct __GLXFBConfigRe
       gd->choices = ch;
    }
    if (ch)
-      ch->config = c->id - 1;
+      ch->config = (int)(c - gd->configs);
    pthread_mutex_unlock(&gd->lock);
 }
 
@@ -526,6 +712,10 @@ static const struct __GLXFBConfigRec *config_of_visual(struct glx_display *gd, V
    pthread_mutex_unlock(&gd->lock);
    if (found)
       return found;
+   /* the server's configs: a visual is one config's */
+   for (int i = 0; gd->from_server && i < gd->nconfigs; i++)
+      if (gd->configs[i].visualid == vid)
+         return &gd->configs[i];
    for (int i = 0; i < gd->nconfigs; i++) {
       const struct __GLXFBConfigRec *c = &gd->configs[i];
       if (c->visualid == vid && c->db && c->depth == 24 && c->stencil == 8 && !c->accum)
@@ -616,12 +806,12 @@ static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
    case GLX_ACCUM_BLUE_SIZE:
    case GLX_ACCUM_ALPHA_SIZE:      *value = c->accum; break;
    case GLX_RENDER_TYPE:           *value = GLX_RGBA_BIT; break;
-   case GLX_DRAWABLE_TYPE:         *value = GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT; break;
-   case GLX_MAX_PBUFFER_WIDTH:
-   case GLX_MAX_PBUFFER_HEIGHT:    *value = GLX_MAX_PBUFFER; break;
-   case GLX_X_RENDERABLE:          *value = True; break;
+   case GLX_DRAWABLE_TYPE:         *value = c->drawable_type; break;
+   case GLX_MAX_PBUFFER_WIDTH:     *value = c->max_pb_width; break;
+   case GLX_MAX_PBUFFER_HEIGHT:    *value = c->max_pb_height; break;
+   case GLX_X_RENDERABLE:          *value = c->x_renderable; break;
    case GLX_VISUAL_ID:             *value = (int)c->visualid; break;
-   case GLX_X_VISUAL_TYPE:         *value = GLX_TRUE_COLOR; break;
+   case GLX_X_VISUAL_TYPE:         *value = c->visual_type; break;
    case GLX_CONFIG_CAVEAT:         *value = config_caveat(c); break;
    case GLX_TRANSPARENT_TYPE:      *value = GLX_NONE; break;
    case GLX_TRANSPARENT_INDEX_VALUE:
@@ -629,10 +819,9 @@ static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
    case GLX_TRANSPARENT_GREEN_VALUE:
    case GLX_TRANSPARENT_BLUE_VALUE:
    case GLX_TRANSPARENT_ALPHA_VALUE:
-   case GLX_MAX_PBUFFER_PIXELS:
    case GLX_SAMPLE_BUFFERS:
    case GLX_SAMPLES:               *value = 0; break;
-   case GLX_SCREEN:                *value = c->screen; break;
+   case GLX_MAX_PBUFFER_PIXELS:    *value = c->max_pb_pixels; break;
    default:
       return GLX_BAD_ATTRIBUTE;
    }
@@ -667,8 +856,9 @@ GLXAPI XVisualInfo *glXChooseVisual(Display *dpy, int screen, int *attribList)
    if (!gd)
       return NULL;
    struct glx_request r;
+   /* without GLX_RGBA too: the oracle's chooser leaves the render type
+    * free then (0, every config matches) */
    request_defaults(&r, false);
-   r.rgba = 0;
    for (int i = 0; attribList && attribList[i] != None;) {
       switch (attribList[i]) {
       case GLX_USE_GL:       i++; break;
@@ -735,11 +925,13 @@ static void free_buffers(struct glx_drawable *d)
 {
    fgl_lazy_fini(&d->fb);
    fgl_free(d->fb.Color);
+   fgl_free(d->fb.Other);
    fgl_free(d->depth_mem);
    fgl_free(d->fb.Stencil);
    fgl_free(d->fb.Accum);
    d->depth_mem = NULL;
    d->fb.Color = NULL;
+   d->fb.Other = NULL;
    d->fb.Depth = NULL;
    d->fb.Stencil = NULL;
    d->fb.Accum = NULL;
@@ -755,7 +947,7 @@ static void free_drawable(struct glx_drawable *d, bool connected)
    fgl_free(d);
 }
 
-static void present(struct glx_drawable *d);
+static void present(struct glx_drawable *d, const uint8_t *color);
 
 /* glFlush/glFinish of a single-buffered drawable: the image to the X
  * drawable, when a draw or clear defined it since the last time. */
@@ -764,7 +956,20 @@ static void flush_front(struct fgl_framebuffer *fb)
    if (!fb->ColorDefined)
       return;
    fb->ColorDefined = false;
-   present((struct glx_drawable *)(void *)fb);
+   present((struct glx_drawable *)(void *)fb, fb->Color);
+}
+
+/* glFlush/glFinish of a double-buffered window: its front buffer to the
+ * X window when it was drawn into since the last time (the oracle's
+ * front renderbuffer's "defined", st_manager_flush_frontbuffer); the
+ * back buffer is glXSwapBuffers's. */
+static void flush_front_db(struct fgl_framebuffer *fb)
+{
+   bool *defined = fb->FrontIsColor ? &fb->ColorDefined : &fb->OtherDefined;
+   if (!*defined)
+      return;
+   *defined = false;
+   present((struct glx_drawable *)(void *)fb, fb->FrontIsColor ? fb->Color : fb->Other);
 }
 
 static enum r_zs_format zs_format(const struct __GLXFBConfigRec *c)
@@ -791,11 +996,17 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    fb->ColorR8G8B8A8 = false;
    fb->DoubleBuffer = d->cfg.db;
    fb->ZSFormat = zs_format(&d->cfg);
-   fb->FlushFront = d->cfg.db ? NULL : flush_front;
+   /* a double-buffered window has a separate front buffer (Other), black
+    * at first as the oracle's; glDrawBuffer selects the one drawn */
+   const bool separate_front = d->cfg.db && !d->pixmap && !d->pbuffer;
+   fb->FlushFront = !d->cfg.db ? flush_front : separate_front ? flush_front_db : NULL;
    fb->FlushFrontRect = NULL;
    fb->FlushFrontEnd = NULL;
    fb->AccumBits = d->cfg.accum;
    fb->Color = fgl_calloc(n, 4);
+   fb->Other = separate_front ? fgl_calloc(n, 4) : NULL;
+   fb->FrontIsColor = false;
+   fb->OtherDefined = false;
    if (fb->ZSFormat != R_ZS_NONE) {
       const size_t bpv = fb->ZSFormat == R_ZS_Z16 ? 2 : 4;
       /* 2112 bytes past a page boundary, as osmesa.c (4K aliasing) */
@@ -804,7 +1015,8 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    }
    if (d->cfg.accum > 0)
       fb->Accum = fgl_calloc(n, 4 * sizeof(int16_t));
-   if (!fb->Color || (fb->ZSFormat != R_ZS_NONE && !fb->Depth) || (d->cfg.accum > 0 && !fb->Accum)) {
+   if (!fb->Color || (separate_front && !fb->Other) || (fb->ZSFormat != R_ZS_NONE && !fb->Depth) ||
+       (d->cfg.accum > 0 && !fb->Accum)) {
       free_buffers(d);
       return false;
    }
@@ -995,7 +1207,7 @@ static bool ensure_image(struct glx_drawable *d, int w, int h)
 /* The colour buffer (RGBA8, top row first) to the X drawable: 32-bit
  * pixels 0xAARRGGBB in the server's byte order (alpha 0xff without an
  * alpha channel). */
-static void present(struct glx_drawable *d)
+static void present(struct glx_drawable *d, const uint8_t *color)
 {
    struct fgl_framebuffer *fb = &d->fb;
    if (!d->has_buffer || d->pbuffer)
@@ -1007,9 +1219,9 @@ static void present(struct glx_drawable *d)
    if (!d->gc)
       d->gc = XCreateGC(d->disp->dpy, d->xid, 0, NULL);
    const bool msb = d->img->byte_order == MSBFirst;
-   const bool alpha = d->cfg.alpha > 0;
+   const bool alpha = d->cfg.alpha > 0 && d->cfg.visual_depth == 32;
    for (int y = 0; y < h; y++) {
-      const uint8_t *src = fb->Color + (size_t)y * (size_t)w * 4;
+      const uint8_t *src = color + (size_t)y * (size_t)w * 4;
       uint8_t *dst = (uint8_t *)d->img->data + (size_t)y * (size_t)d->img->bytes_per_line;
       for (int x = 0; x < w; x++, src += 4, dst += 4) {
          const uint8_t a = alpha ? src[3] : 0xff;
@@ -1284,7 +1496,8 @@ GLXAPI void glXSwapBuffers(Display *dpy, GLXDrawable drawable)
    /* an implicit glFlush of the current context, as Mesa's */
    if (ctx)
       fgl_flush_front(ctx);
-   present(d);
+   /* the back buffer (the front stays as it is, as the oracle's) */
+   present(d, d->fb.Other && d->fb.FrontIsColor ? d->fb.Other : d->fb.Color);
    /* the size of the next frame */
    update_size(d, ctx);
 }
