@@ -1705,7 +1705,7 @@ const fc_case fc_cases_compressed[] = {
     FC_CASE_RGBA("compressed/cube_faces_encoded", 48, 16, 1, "gl13 compressed cubemap", cube_case),
     FC_CASE_RGBA("compressed/cube_faces_mixed_formats", 16, 16, 0, "gl13 compressed cubemap latc",
                  cube_mixed_case),
-    FC_CASE_RGBA("compressed/latc_small_images", 104, 68, 0, "gl13 compressed latc",
+    FC_CASE_RGBA("compressed/latc_small_images", 104, 68, 1, "gl13 compressed latc",
                  latc_small_case),
     { 0 },
 };
