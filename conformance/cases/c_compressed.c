@@ -909,6 +909,58 @@ static void encode_case(fc_h *h)
     read_encoded(h, "level 0", p->internal, 0, p->w, p->h);
 }
 
+/* LATC images smaller than a block: 1x1, 2x3 and 3x2 (and 1x3, 3x1) of
+ * random luminance (and alpha), GL_COMPRESSED_LUMINANCE(_ALPHA).  The
+ * oracle's encoder reads the image's texels only (the block's end values
+ * come from them alone), but the codes of the texels outside the image
+ * are its stack garbage, which spills into the codes of the rows below
+ * the first of an image narrower than 4 (ORACLE-NOTES.md "Compressed
+ * textures: LATC"): the case draws each image's first row, magnified
+ * with NEAREST, and reads back the texels of the 1-row and 1x1 images
+ * only; the 2x3 and 3x2 images' other rows are compared where each of
+ * their blocks holds one value (written without codes). */
+static void latc_small_case(fc_h *h)
+{
+    static const int sz[5][2] = { { 1, 1 }, { 2, 3 }, { 3, 2 }, { 1, 3 }, { 3, 1 } };
+    static const GLenum gen[2] = { GL_COMPRESSED_LUMINANCE, GL_COMPRESSED_LUMINANCE_ALPHA };
+    fc_pixel_ortho(h);
+    fcu_clear(0.2f, 0.1f, 0.3f, 0.5f, 1);
+    glEnable(GL_TEXTURE_2D);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLuint tex[20];
+    glGenTextures(20, tex);
+    char l[96];
+    for (int f = 0; f < 2; f++)
+        for (int k = 0; k < 5; k++)
+            for (int flat = 0; flat < 2; flat++) {
+                const int w = sz[k][0], hh = sz[k][1];
+                glBindTexture(GL_TEXTURE_2D, tex[(f * 5 + k) * 2 + flat]);
+                filters(GL_NEAREST, GL_NEAREST);
+                make_image(flat ? 6 : 0, w, hh, 31u + (unsigned)(f * 5 + k));
+                glTexImage2D(GL_TEXTURE_2D, 0, (GLint)gen[f], w, hh, 0, GL_RGBA,
+                             GL_UNSIGNED_BYTE, g_img);
+                snprintf(l, sizeof l, "format %d %dx%d%s", f, w, hh, flat ? " flat" : "");
+                fc_error(h, l);
+                /* the first row (all of it for a flat image), 4 pixels a texel */
+                const float x0 = (float)(2 + 20 * k), y0 = (float)(2 + 16 * (2 * f + flat));
+                const float t1 = flat ? 1.0f : 1.0f / (float)hh;
+                const float ph = flat ? 4.0f * (float)hh : 4.0f;
+                glBegin(GL_QUADS);
+                glTexCoord2f(0, 0); glVertex2f(x0, y0);
+                glTexCoord2f(1, 0); glVertex2f(x0 + 4.0f * (float)w, y0);
+                glTexCoord2f(1, t1); glVertex2f(x0 + 4.0f * (float)w, y0 + ph);
+                glTexCoord2f(0, t1); glVertex2f(x0, y0 + ph);
+                glEnd();
+                if (hh == 1 || w >= 4 || flat)
+                    get_rgba(h, l, 0, w, hh);
+            }
+    fc_error(h, "drawn");
+    fc_capture(h);
+}
+
 /* Client data of other formats, types and unpack modes into S3TC images:
  * the oracle converts it to RGB8 / RGBA8 first, as into such an image. */
 static void encode_sources_case(fc_h *h)
@@ -1653,5 +1705,7 @@ const fc_case fc_cases_compressed[] = {
     FC_CASE_RGBA("compressed/cube_faces_encoded", 48, 16, 1, "gl13 compressed cubemap", cube_case),
     FC_CASE_RGBA("compressed/cube_faces_mixed_formats", 16, 16, 0, "gl13 compressed cubemap latc",
                  cube_mixed_case),
+    FC_CASE_RGBA("compressed/latc_small_images", 104, 68, 1, "gl13 compressed latc",
+                 latc_small_case),
     { 0 },
 };

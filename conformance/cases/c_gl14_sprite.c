@@ -590,6 +590,111 @@ static void texgen_matrix(fc_h *h)
     fc_capture(h);
 }
 
+/* Lines and polygons drawn while GL_POINT_SPRITE is on read the texture
+ * coordinates of the units with GL_COORD_REPLACE as (0, 0, 0, 0), given
+ * or generated (llvmpipe links no vertex output to them): s/q = 0/0 under
+ * each wrap mode and filter; the other unit keeps its coordinates, glBitmap
+ * and glDrawPixels (their own rasterizer state) theirs, and sprites their
+ * replaced ones.  Frames: unit 0 replaced (NEAREST, then LINEAR, over the
+ * four wraps), unit 1 replaced, both, then GL_POINT_SPRITE off
+ * (ORACLE-NOTES.md "Point sprites"; probe p_sprites). */
+static void replaced_on_lines_polygons(fc_h *h)
+{
+    static const GLenum wraps[4] = { GL_REPEAT, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER,
+                                     GL_MIRRORED_REPEAT };
+    static const GLfloat border[4] = { 0.9f, 0.2f, 0.6f, 0.8f };
+    static const GLubyte bits[8] = { 0xf0, 0x0f, 0xaa, 0x55, 0xff, 0x81, 0x3c, 0x66 };
+    static GLubyte img[6 * 5 * 4];
+    for (int i = 0; i < 6 * 5 * 4; i++)
+        img[i] = (GLubyte)(i * 29 + 7);
+    for (int u = 0; u < 2; u++) {
+        glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        sprite_texture(GL_NEAREST, GL_NEAREST, 0);
+        glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, u ? GL_ADD : GL_MODULATE);
+    }
+    glEnable(GL_POINT_SPRITE);
+    glPointSize(5.0f);
+    for (int f = 0; f < 4; f++) {
+        for (int u = 0; u < 2; u++) {
+            glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+            glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, (f == 0 && u == 0) || (f == 1 && u == 1) || f >= 2);
+        }
+        if (f == 3)
+            glDisable(GL_POINT_SPRITE);
+        fc_pixel_ortho(h);
+        fcu_clear(0.1f, 0.1f, 0.2f, 1, 1);
+        for (int k = 0; k < 8; k++) {
+            const GLenum filter = k < 4 ? GL_NEAREST : GL_LINEAR;
+            for (int u = 0; u < 2; u++) {
+                glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)filter);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)filter);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wraps[k % 4]);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wraps[(k + 1) % 4]);
+            }
+            const float x = 2.0f + 12.0f * (float)k;
+            glBegin(GL_TRIANGLES);
+            glColor3f(1.0f, 0.8f, 0.6f);
+            glMultiTexCoord4f(GL_TEXTURE0, 0.1f, 0.2f, 0.0f, 1.0f);
+            glMultiTexCoord2f(GL_TEXTURE1, 0.7f, 0.1f);
+            glVertex2f(x, 2.0f);
+            glMultiTexCoord4f(GL_TEXTURE0, 0.9f, 0.3f, 0.5f, 2.0f);
+            glMultiTexCoord2f(GL_TEXTURE1, 0.2f, 0.8f);
+            glVertex2f(x + 11.0f, 4.0f);
+            glMultiTexCoord4f(GL_TEXTURE0, 0.4f, 0.95f, 0.0f, 0.5f);
+            glMultiTexCoord2f(GL_TEXTURE1, 0.5f, 0.5f);
+            glVertex2f(x + 3.0f, 24.0f);
+            glEnd();
+            glBegin(GL_LINES);
+            glVertex2f(x, 27.5f);
+            glMultiTexCoord2f(GL_TEXTURE0, 0.3f, 0.6f);
+            glVertex2f(x + 11.0f, 30.5f);
+            glEnd();
+            glBegin(GL_POINTS);
+            glVertex2f(x + 5.5f, 36.0f);
+            glEnd();
+        }
+        /* eye-linear texgen on both units: a strip of quads */
+        glActiveTexture(GL_TEXTURE0);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        for (int u = 0; u < 2; u++) {
+            static const GLfloat ps[4] = { 0.031f, -0.017f, 0.0f, 0.13f };
+            static const GLfloat pt[4] = { -0.023f, 0.041f, 0.0f, 0.3f };
+            glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+            glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+            glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+            glTexGenfv(GL_S, GL_EYE_PLANE, ps);
+            glTexGenfv(GL_T, GL_EYE_PLANE, pt);
+            glEnable(GL_TEXTURE_GEN_S);
+            glEnable(GL_TEXTURE_GEN_T);
+        }
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i <= 6; i++) {
+            glColor3f(0.9f, 1.0f - 0.1f * (float)i, 0.7f);
+            glVertex2f(2.0f + 15.0f * (float)i, 40.0f + (float)(i % 2));
+            glVertex2f(2.0f + 15.0f * (float)i, 52.0f);
+        }
+        glEnd();
+        for (int u = 0; u < 2; u++) {
+            glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+            glDisable(GL_TEXTURE_GEN_S);
+            glDisable(GL_TEXTURE_GEN_T);
+        }
+        glActiveTexture(GL_TEXTURE0);
+        /* pixel rectangles keep the raster position's coordinates */
+        glMultiTexCoord2f(GL_TEXTURE0, 0.6f, 0.3f);
+        glMultiTexCoord2f(GL_TEXTURE1, 0.2f, 0.9f);
+        glRasterPos2f(4.0f, 56.0f);
+        glBitmap(8, 8, 0, 0, 0, 0, bits);
+        glRasterPos2f(20.0f, 56.0f);
+        glDrawPixels(6, 5, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        fc_error(h, "frame");
+        fc_capture(h);
+    }
+}
+
 /* glPolygonMode GL_POINT: a polygon's vertices drawn as sprites (front
  * and back modes, culling off), with polygon offset on points. */
 static void polygon_mode_points(fc_h *h)
@@ -884,6 +989,7 @@ const fc_case fc_cases_gl14_sprite[] = {
     SPRITE("varying_rule", 80, 80, 3, "texture", varying_rule),
     SPRITE("texgen_matrix", 80, 80, 1, "texture multitexture texgen", texgen_matrix),
     SPRITE("polygon_mode_points", 64, 64, 1, "texture polygon", polygon_mode_points),
+    SPRITE("replaced_on_lines_polygons", 100, 66, 4, "texture multitexture texgen", replaced_on_lines_polygons),
     SPRITE("tiles", 200, 160, 1, "texture blend threads", tiles),
     FC_CASE_RGBA("demo/sprite_particles", 160, 120, PART_FRAMES,
                  "gl14 points sprite demo vbo fogcoord texture", sprite_particles),

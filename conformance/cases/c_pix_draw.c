@@ -2036,6 +2036,47 @@ static void drawpixels_int_snorm16(fc_h *h)
     fc_error(h, "transfer, swapped");
     fc_capture(h);
 }
+/* glDrawPixels of GL_UNSIGNED_INT colour data: the oracle's image texture
+ * is 16-bit unorm, each channel rounded to 16 bits (Mesa's unorm-to-unorm
+ * narrowing), so a value whose 32-bit conversion x * 255 / (2^32 - 1) lies
+ * at or next to a half rounds as the 16-bit texel does; every client
+ * format, with a scale and bias in the shader (ORACLE-NOTES.md "Bitmaps
+ * and pixel rectangles", probe p_drawpixels_int). */
+static void drawpixels_uint_unorm16(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0.1f, 0.2f, 0.3f, 0.4f, 1.0);
+    static GLuint img[40 * 30 * 4];
+    unsigned s = 4242u;
+    for (int i = 0; i < 40 * 30 * 4; i++) {
+        s = s * 1664525u + 1013904223u;
+        img[i] = s;
+    }
+    /* the tie 104.5 and neighbours of every half step k + 0.5 */
+    img[0] = 1760094441u;   /* (float)x * 2^-32 * 255 is 104.5 */
+    img[1] = 1760094440u;
+    for (int k = 0; k < 255 && 4 + 4 * k < 40 * 30 * 4; k++)
+        img[4 + 4 * k] = (GLuint)(((double)k + 0.5) / 255.0 * 4294967296.0) + (GLuint)(k % 5) - 2u;
+    window_pos(1, 1, 0);
+    glDrawPixels(40, 30, GL_RGB, GL_UNSIGNED_INT, img);
+    fc_error(h, "rgb");
+    window_pos(44, 1, 0);
+    glDrawPixels(20, 30, GL_RGBA, GL_UNSIGNED_INT, img);
+    window_pos(1, 34, 0);
+    glPixelTransferf(GL_GREEN_SCALE, 0.5f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+    glDrawPixels(40, 12, GL_BGRA, GL_UNSIGNED_INT, img + 400);
+    glPixelTransferf(GL_GREEN_SCALE, 1.0f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.0f);
+    window_pos(44, 34, 0);
+    glDrawPixels(10, 12, GL_LUMINANCE_ALPHA, GL_UNSIGNED_INT, img);
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+    window_pos(56, 34, 0);
+    glDrawPixels(10, 12, GL_LUMINANCE, GL_UNSIGNED_INT, img);
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    fc_error(h, "transfer, swapped");
+    fc_capture(h);
+}
 static void drawpixels_types(fc_h *h) { drawpixels_types_of(h, 0); }
 static void drawpixels_foreign_types(fc_h *h) { drawpixels_types_of(h, 1); }
 static void drawpixels_errors(fc_h *h) { drawpixels_errors_of(h, 0); }
@@ -2070,6 +2111,7 @@ const fc_case fc_cases_pix_draw[] = {
                  drawpixels_transfer),
     FC_CASE_RGBA("pixel/drawpixels_types", 64, 48, 1, "pixel drawpixels", drawpixels_types),
     FC_CASE_RGBA("pixel/drawpixels_int_snorm16", 68, 48, 1, "pixel drawpixels", drawpixels_int_snorm16),
+    FC_CASE_RGBA("pixel/drawpixels_uint_unorm16", 68, 48, 1, "pixel drawpixels", drawpixels_uint_unorm16),
     FC_CASE_RGBA("pixel/drawpixels_color_index", 64, 24, 1, "pixel drawpixels",
                  drawpixels_color_index),
     FC_CASE("pixel/drawpixels_zs_types", 64, 32, OSMESA_RGBA, 24, 8, 1,

@@ -5,8 +5,13 @@
  * 8-bit result where x * 255 / 2^31 lies just above a half.  Every
  * channel of every client format is checked against the 16-bit model, and
  * the float model must miss some (else the probe would not tell them
- * apart).  ORACLE-NOTES.md "Bitmaps and pixel rectangles"; the API
- * fuzzer's seed 3000159. */
+ * apart).  GL_UNSIGNED_INT colour data is held as 16-bit unorm, each
+ * channel rounded to 16 bits, (x * 65535 + 2^31 - 1) / (2^32 - 1) (Mesa's
+ * unorm-to-unorm narrowing), sampled as u * (1/65535): the truncating
+ * x >> 16 and the float x * 2^-32 both miss some, among them the value
+ * 1760094441, whose (float)x * 2^-32 * 255 is 104.5 (105 on the oracle).
+ * ORACLE-NOTES.md "Bitmaps and pixel rectangles"; the API fuzzer's seed
+ * 3000159. */
 #include "probe.h"
 #include <stdint.h>
 
@@ -60,6 +65,49 @@ int main(void)
       probe_expect(what, bad16, 0);
       snprintf(what, sizeof what, "%s GL_INT: the float model misses some", f[k].name);
       probe_expect(what, badf > 0, 1);
+   }
+   /* GL_UNSIGNED_INT: random words, neighbours of every half step and the
+    * exact tie 104.5 * 2^32 / 255 */
+   static uint32_t ux[W * H * 4];
+   for (int i = 0; i < W * H * 4; i++) {
+      s = s * 1664525u + 1013904223u;
+      ux[i] = s;
+   }
+   for (int i = 0; i < 4096; i++)
+      ux[i] = (uint32_t)(((double)(i % 255) + 0.5) * 4294967296.0 / 255.0) + (uint32_t)((i / 255) % 5) - 2u;
+   ux[4096] = 1760094441u;   /* (float)x * 2^-32 * 255 is 104.5 */
+   for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) {
+      memset(g_buf, 0, (size_t)W * H * 4);
+      glRasterPos2i(0, 0);
+      glDrawPixels(W, H, f[k].format, GL_UNSIGNED_INT, ux);
+      glFinish();
+      long bad16 = 0, badshift = 0, badf = 0;
+      for (int p = 0; p < W * H; p++)
+         for (int c = 0; c < f[k].n; c++) {
+            const uint32_t v = ux[p * f[k].n + c];
+            const int got = g_buf[p * 4 + f[k].ch[c]];
+            const uint32_t u16 = (uint32_t)(((uint64_t)v * 65535u + 0x7fffffffu) / 0xffffffffu);
+            bad16 += got != rnd8((float)u16 * (1.0f / 65535.0f));
+            badshift += got != rnd8((float)(v >> 16) * (1.0f / 65535.0f));
+            badf += got != rnd8((float)v * (1.0f / 4294967296.0f));
+         }
+      char what[160];
+      snprintf(what, sizeof what, "%s GL_UNSIGNED_INT: channels off the rounded 16-bit unorm model", f[k].name);
+      probe_expect(what, bad16, 0);
+      snprintf(what, sizeof what, "%s GL_UNSIGNED_INT: the x >> 16 and float models miss some", f[k].name);
+      probe_expect(what, badshift > 0 && badf > 0, 1);
+   }
+   {
+      /* the tie: (float)x * 2^-32 * 255 is 104.5 for both; x * 255 / 2^32
+       * lies just above the half for 1760094441 (105), below for
+       * 1760094440 (104) */
+      const uint32_t tie[3] = { 1760094441u, 1760094440u, 1760094441u };
+      memset(g_buf, 0, (size_t)W * H * 4);
+      glRasterPos2i(0, 0);
+      glDrawPixels(1, 1, GL_RGB, GL_UNSIGNED_INT, tie);
+      glFinish();
+      probe_expect("GL_RGB GL_UNSIGNED_INT 104.5: red (1760094441)", g_buf[0], 105);
+      probe_expect("GL_RGB GL_UNSIGNED_INT 104.5: green (1760094440)", g_buf[1], 104);
    }
    probe_expect("no error", (long)glGetError(), GL_NO_ERROR);
    return probe_result();

@@ -101,6 +101,17 @@ static long texels_off(int f, int w, int h)
    return bad;
 }
 
+/* the same for the image's first row alone (tex_got, tex_want as
+ * texels_off left them): the garbage codes outside an image narrower than
+ * 4 spill only into later texels' codes */
+static long first_row_off(int w)
+{
+   long bad = 0;
+   for (int i = 0; i < w * 4; i++)
+      bad += tex_got[i] != tex_want[i];
+   return bad;
+}
+
 /* what glGetTexImage reads of an image: LATC1 the sampler's texels, LATC2
  * Mesa's CPU decoder's (exact sevenths and fifths) */
 static void readback_decode(int f, const unsigned char *blocks, int w, int h, unsigned char *out)
@@ -168,12 +179,12 @@ int main(void)
    /* glTexImage2D */
    static const int sizes[][2] = { { 1, 1 }, { 4, 1 }, { 4, 3 }, { 5, 3 }, { 4, 4 }, { 7, 9 },
                                    { 8, 8 }, { 13, 6 }, { 16, 16 }, { 33, 17 }, { 64, 64 },
-                                   { 2, 2 }, { 3, 5 } };
+                                   { 2, 2 }, { 3, 5 }, { 2, 3 }, { 3, 2 }, { 1, 3 } };
    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
       const int w = sizes[s][0], h = sizes[s][1];
       const bool spill = w < 4 && h >= 2;
       for (int f = 0; f < 2; f++) {
-         long bytes_bad = 0, tex_bad = 0, samp_bad = 0;
+         long bytes_bad = 0, tex_bad = 0, samp_bad = 0, row_bad = 0;
          for (int kind = 0; kind < 5; kind++) {
             make_image(kind, w, h);
             fresh_texture();
@@ -184,6 +195,7 @@ int main(void)
             if (w >= 4 && h >= 4)
                bytes_bad += blocks_off(f, w, h);
             tex_bad += texels_off(f, w, h);
+            row_bad += first_row_off(w);
             samp_bad += sampled_off(f, 0, w, h);
          }
          if (w >= 4 && h >= 4) {
@@ -196,6 +208,8 @@ int main(void)
             printf("info %s: %ld\n", what, tex_bad);
          else
             probe_expect(what, tex_bad, 0);
+         snprintf(what, sizeof what, "glTexImage2D %dx%d format %d: first-row texels off", w, h, f);
+         probe_expect(what, row_bad, 0);
          snprintf(what, sizeof what, "glTexImage2D %dx%d format %d: sampled texels off", w, h, f);
          probe_expect(what, samp_bad, 0);
       }

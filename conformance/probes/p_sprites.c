@@ -7,7 +7,11 @@
  * s = 0.5 + 256/fw * (px - (x - 0.5)), t the same down the buffer for
  * GL_UPPER_LEFT (up for GL_LOWER_LEFT), evaluated with two fused ops and
  * divided by the interpolated 1/w; GL_POINT_SMOOTH is ignored and the
- * fade threshold changes nothing; attenuated sizes are fractional. */
+ * fade threshold changes nothing; attenuated sizes are fractional.
+ * Lines and triangles drawn with GL_POINT_SPRITE on read a replaced
+ * unit's coordinates as (0, 0, 0, 0), given or generated (texgen), under
+ * every wrap and filter: the same image as those coordinates given
+ * explicitly with sprites off, and not the image of their own. */
 #include "probe.h"
 
 /* the covered pixels of a sprite, y-down, inclusive */
@@ -229,6 +233,97 @@ static void plain(long *n, long *bad)
    free(g_buf);
 }
 
+/* lines and triangles with sprites on: frame `mode` 0 the sprite state
+ * (GL_COORD_REPLACE on unit `unit`), 1 sprites off and that unit's
+ * coordinates (0, 0, 0, 0), 2 sprites off, the coordinates as given */
+static void zero_scene(int mode, int unit, int texgen)
+{
+   static const float v[3][6] = { { 0.3f, 0.6f, 0.2f, 2.0f, 0, 0 },
+                                  { 0.9f, 0.2f, 0.2f, 1.0f, 64, 0 },
+                                  { 0.5f, 0.95f, 0.7f, 0.5f, 0, 64 } };
+   glClear(GL_COLOR_BUFFER_BIT);
+   if (mode == 0)
+      glEnable(GL_POINT_SPRITE);
+   else
+      glDisable(GL_POINT_SPRITE);
+   glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+   if (texgen && mode != 1) {
+      glEnable(GL_TEXTURE_GEN_S);
+      glEnable(GL_TEXTURE_GEN_T);
+   } else {
+      glDisable(GL_TEXTURE_GEN_S);
+      glDisable(GL_TEXTURE_GEN_T);
+   }
+   glBegin(GL_TRIANGLES);
+   for (int i = 0; i < 3; i++) {
+      glColor4f(0.2f + 0.3f * (float)i, 0.5f, 0.9f - 0.2f * (float)i, 0.8f);
+      for (int u = 0; u < 2; u++) {
+         if (mode == 1 && u == unit)
+            glMultiTexCoord4f(GL_TEXTURE0 + (GLenum)u, 0, 0, 0, 0);
+         else
+            glMultiTexCoord4f(GL_TEXTURE0 + (GLenum)u, v[i][0] + 0.1f * (float)u, v[i][1], v[i][2],
+                              v[i][3]);
+      }
+      glVertex2f(v[i][4], v[i][5]);
+   }
+   glEnd();
+   glBegin(GL_LINES);
+   glMultiTexCoord4f(GL_TEXTURE0 + (GLenum)unit, mode == 1 ? 0.0f : 0.6f, mode == 1 ? 0.0f : 0.6f,
+                     0.0f, mode == 1 ? 0.0f : 1.0f);
+   glVertex2f(0, 60.5f);
+   glVertex2f(64, 60.5f);
+   glEnd();
+   glFinish();
+}
+
+static void replaced_zero(long *n, long *bad, long *own)
+{
+   probe_init_ub(64, 64);
+   static unsigned char tex[16 * 16 * 4], img[3][64 * 64 * 4];
+   for (int i = 0; i < 16 * 16 * 4; i++)
+      tex[i] = (unsigned char)(i * 37 + i / 7);
+   static const GLenum wr[4] = { GL_REPEAT, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER,
+                                 GL_MIRRORED_REPEAT };
+   static const GLenum fl[2] = { GL_NEAREST, GL_LINEAR };
+   static const GLfloat ps[4] = { 0.031f, -0.017f, 0.0f, 0.13f }, pt[4] = { -0.023f, 0.041f, 0.0f, 0.3f };
+   for (int u = 0; u < 2; u++) {
+      glActiveTexture(GL_TEXTURE0 + (GLenum)u);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, tex);
+      glEnable(GL_TEXTURE_2D);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, u ? GL_ADD : GL_MODULATE);
+      glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+      glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+      glTexGenfv(GL_S, GL_EYE_PLANE, ps);
+      glTexGenfv(GL_T, GL_EYE_PLANE, pt);
+   }
+   for (int unit = 0; unit < 2; unit++) {
+      glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+      glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
+      for (int w = 0; w < 4; w++)
+         for (int f = 0; f < 2; f++)
+            for (int texgen = 0; texgen < 2; texgen++) {
+               glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+               glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wr[w]);
+               glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wr[(w + 1) % 4]);
+               glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)fl[f]);
+               glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)fl[f]);
+               for (int mode = 0; mode < 3; mode++) {
+                  zero_scene(mode, unit, texgen);
+                  memcpy(img[mode], g_buf, sizeof img[mode]);
+               }
+               for (int i = 0; i < 64 * 64 * 4; i++) {
+                  (*n)++;
+                  *bad += img[0][i] != img[1][i];
+                  *own += img[0][i] != img[2][i];
+               }
+            }
+      glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+      glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_FALSE);
+   }
+   OSMesaDestroyContext(g_ctx);
+   free(g_buf);
+}
+
 int main(void)
 {
    long n = 0, cover = 0, coord = 0;
@@ -242,5 +337,10 @@ int main(void)
    plain(&n2, &bad);
    printf("     300 sprites (smooth, fade threshold, attenuation), %ld pixels\n", n2);
    probe_expect("sprites: plain pixels differing", bad, 0);
+   long n3 = 0, bad3 = 0, own3 = 0;
+   replaced_zero(&n3, &bad3, &own3);
+   printf("     lines and triangles with a replaced unit, %ld channels\n", n3);
+   probe_expect("replaced unit on lines/triangles: channels off (0, 0, 0, 0)", bad3, 0);
+   probe_expect("replaced unit on lines/triangles: differs from its own coordinates", own3 > 0, 1);
    return probe_result();
 }

@@ -701,6 +701,50 @@ static void random_pixels(struct scene *s, const struct profile *p)
     glPixelZoom(1, 1);
 }
 
+/* Point sprites (GL 1.4, ARB_point_sprite) in about two in five of the
+ * 2D structures that draw points, from streams of their own (the other
+ * draws stay as they were): GL_COORD_REPLACE on unit 0 (mostly) and on
+ * the second unit when there is one (half of them), sizes from 1 to 40,
+ * sometimes distance attenuation with the min/max clamps and a fade
+ * threshold.  The scene's lines and polygons are drawn with the sprite
+ * state on too (a replaced unit reads (0, 0, 0, 0) there: ORACLE-NOTES.md
+ * "Point sprites"). */
+static void fct_glPointParameterfv(GLenum pname, int n, const GLfloat *v)
+{
+    fc_trace_enums_vf("glPointParameterfv", 1, pname, 0, n, v);
+    glPointParameterfv(pname, v);
+}
+
+static void random_sprites(const struct profile *p, uint64_t seed, uint32_t index)
+{
+    fc_rng ks = fc_rng_make(seed, index % FC_TEX_PROFILES, 18);
+    int points = 0;
+    for (int i = 0; i < p->nprim; i++)
+        points |= p->modes[i] == GL_POINTS;
+    if (!points || p->tex1d || p->tex3d || p->cube || p->depth || !fc_rng_chance(&ks, 40))
+        return;
+    const int replace = fc_rng_chance(&ks, 80), atten = fc_rng_chance(&ks, 35);
+    const int replace1 = p->unit1 && fc_rng_chance(&ks, 50);
+    fc_rng r = fc_rng_make(seed, index, 24);
+    glEnable(GL_POINT_SPRITE);
+    fct_glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, replace);
+    if (replace1) {
+        glActiveTexture(GL_TEXTURE1);
+        fct_glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
+        glActiveTexture(GL_TEXTURE0);
+    }
+    glPointSize((GLfloat)fc_rng_real(&r, 1.0, 40.0));
+    if (atten) {
+        const GLfloat a[3] = { 1.0f, (GLfloat)fc_rng_real(&r, 0.0, 0.5), (GLfloat)fc_rng_real(&r, 0.0, 0.1) };
+        const GLfloat lo = (GLfloat)fc_rng_real(&r, 0.0, 4.0), hi = (GLfloat)fc_rng_real(&r, 8.0, 64.0);
+        const GLfloat fade = (GLfloat)fc_rng_real(&r, 0.0, 4.0);
+        fct_glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, 3, a);
+        fct_glPointParameterfv(GL_POINT_SIZE_MIN, 1, &lo);
+        fct_glPointParameterfv(GL_POINT_SIZE_MAX, 1, &hi);
+        fct_glPointParameterfv(GL_POINT_FADE_THRESHOLD_SIZE, 1, &fade);
+    }
+}
+
 static void tex_scene(fc_h *h)
 {
     const fc_case *c = fc_this_case(h);
@@ -802,6 +846,7 @@ static void tex_scene(fc_h *h)
     random_texmatrix(&s, &p);
     random_light(&s, &p);
     random_fragment(&s, &p);
+    random_sprites(&p, seed, index);
 
     /* the witness (fcr_witness: a polygon inside the visible view volume,
      * drawn with GL_ALWAYS under the scene's texture state), from a stream

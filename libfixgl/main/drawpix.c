@@ -604,8 +604,9 @@ static bool unpack_depth_texels_z24(struct fgl_context *ctx, const struct fgl_pi
  * clears _ImageTransferState).  The matching texture formats (snorm,
  * the packed unorm formats) sample as those floats, up to the last bit of
  * the unorm conversions, which no output rounding sees; GL_INT data is
- * narrowed to 16-bit snorm first, whose last bit an output rounding does
- * see (FGL_UNPACK_INT_SNORM16).
+ * narrowed to 16-bit snorm first and GL_UNSIGNED_INT data to 16-bit
+ * unorm, whose last bit an output rounding does see
+ * (FGL_UNPACK_INT_SNORM16, FGL_UNPACK_UINT_UNORM16).
  * GL_COLOR_INDEX goes through the I_TO_R/G/B/A maps into an RGBA8
  * texture (_mesa_unpack_color_index_to_rgba_ubyte, CLAMPED_FLOAT_TO_UBYTE:
  * the index shift and offset are off as well). */
@@ -650,10 +651,12 @@ static bool unpack_other_texels(struct fgl_context *ctx, const struct fgl_pixels
                                 GLenum type, float *dst)
 {
    /* GL_INT: the oracle's image texture is 16-bit snorm, so each channel
-    * keeps its top 16 bits (ORACLE-NOTES.md "Bitmaps and pixel
-    * rectangles", probe p_drawpixels_int) */
-   if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels,
-                              type == GL_INT ? FGL_UNPACK_INT_SNORM16 : 0, dst))
+    * keeps its top 16 bits; GL_UNSIGNED_INT: 16-bit unorm, each channel
+    * rounded to 16 bits (ORACLE-NOTES.md "Bitmaps and pixel rectangles",
+    * probe p_drawpixels_int) */
+   const unsigned narrow = type == GL_INT ? FGL_UNPACK_INT_SNORM16
+                         : type == GL_UNSIGNED_INT ? FGL_UNPACK_UINT_UNORM16 : 0;
+   if (!fgl_unpack_rgba_float(ctx, p, width, height, format, type, pixels, narrow, dst))
       return false;
    int w[4];
    if (format != GL_COLOR_INDEX && unorm8_widths(type, w)) {

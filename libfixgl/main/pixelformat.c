@@ -475,7 +475,7 @@ static void unpack_row_ubyte(const struct layout *l, const uint8_t *src, size_t 
 /* The same to float RGBA [S: convert_float; util/format unpack_rgba_float:
  * field * (1.0f / max)] */
 static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t n,
-                             float (*out)[4], bool int_snorm16)
+                             float (*out)[4], bool int_snorm16, bool uint_unorm16)
 {
    for (size_t i = 0; i < n; i++, src += l->bytes) {
       if (l->packed) {
@@ -498,6 +498,14 @@ static void unpack_row_float(const struct layout *l, const uint8_t *src, size_t 
             int32_t v;
             memcpy(&v, src + 4 * s, 4);
             out[i][c] = snorm_to_float(v >> 16, 16);
+            continue;
+         }
+         if (uint_unorm16 && s != SWZ_ZERO && s != SWZ_ONE) {
+            /* a GL_UNSIGNED_INT channel through a 16-bit unorm texel:
+             * _mesa_unorm_to_unorm(x, 32, 16) rounds */
+            uint32_t v;
+            memcpy(&v, src + 4 * s, 4);
+            out[i][c] = unorm_to_float(unorm_to_unorm(v, 32, 16), 16);
             continue;
          }
          out[i][c] = s == SWZ_ZERO ? 0.0f : s == SWZ_ONE ? 1.0f
@@ -1058,10 +1066,11 @@ bool fgl_unpack_rgba_float(struct fgl_context *ctx, const struct fgl_pixelstore 
    for (int y = 0; y < height; y++) {
       const uint8_t *src = image_row(p, &l, width, format, type, pixels, y, tmp);
       unpack_row_float(&l, src, (size_t)width, (float (*)[4])(rgba + 4 * (size_t)y * width),
-                       (ops & FGL_UNPACK_INT_SNORM16) && type == GL_INT && !l.packed);
+                       (ops & FGL_UNPACK_INT_SNORM16) && type == GL_INT && !l.packed,
+                       (ops & FGL_UNPACK_UINT_UNORM16) && type == GL_UNSIGNED_INT && !l.packed);
    }
    fgl_free(tmp);
-   ops &= ~(unsigned)FGL_UNPACK_INT_SNORM16;
+   ops &= ~(unsigned)(FGL_UNPACK_INT_SNORM16 | FGL_UNPACK_UINT_UNORM16);
    if (ops)
       fgl_apply_rgba_transfer_ops(ctx, ops, count, (float (*)[4])rgba);
    return true;

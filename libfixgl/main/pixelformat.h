@@ -80,6 +80,8 @@ bool fgl_is_color_format(GLenum format);
  * quantized to 16-bit snorm first, as glDrawPixels' image texture
  * stores them (fgl_unpack_rgba_float) */
 #define FGL_UNPACK_INT_SNORM16      0x10000
+/* likewise GL_UNSIGNED_INT channels quantized to 16-bit unorm, rounded */
+#define FGL_UNPACK_UINT_UNORM16     0x20000
 
 /* [S: pixel.c:_mesa_update_pixel] ctx->_ImageTransferState */
 unsigned fgl_image_transfer_state(const struct fgl_context *ctx);

@@ -367,6 +367,8 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
                                     v2->attr[slot][k] * v2->pos[3]);
       }
    }
+   if (__builtin_expect(rs->rast->sprite_coord_enable != 0, 0))
+      r_zero_sprite_inputs(rs->rast, &ls);
 
    /* With finite corners whose differences stay below 2^22 nothing wraps,
     * and the binned coverage is exactly the pixels whose four edge

@@ -527,6 +527,14 @@ struct r_rast_state {
    uint8_t sprite_coord_enable;
 };
 
+/* The fragment inputs of a line or triangle that read (0, 0, 0, 0): the
+ * texture coordinates of the units whose coordinates sprites replace
+ * (sprite_coord_enable, set only with point_sprite).  llvmpipe links no
+ * vertex output to them, whatever the primitive (ORACLE-NOTES.md "Point
+ * sprites"; probe p_sprites); in ts (r_tri_setup) after its setup. */
+struct r_tri_setup;
+void r_zero_sprite_inputs(const struct r_rast_state *rast, struct r_tri_setup *ts);
+
 /* A point's size: its vertex's or the rasterizer's */
 static inline float r_point_size(const struct r_rast_state *rast, const float psize[4])
 {

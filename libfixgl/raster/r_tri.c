@@ -204,6 +204,21 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
          }
       }
    }
+   if (__builtin_expect(rs->rast->sprite_coord_enable != 0, 0))
+      r_zero_sprite_inputs(rs->rast, ts);
+}
+
+void r_zero_sprite_inputs(const struct r_rast_state *rast, struct r_tri_setup *ts)
+{
+   for (unsigned m = rast->sprite_coord_enable; m; m &= m - 1) {
+      const int a = R_FS_TEX0 + __builtin_ctz(m);
+      if (!(ts->inputs & (1u << a)))
+         continue;
+      for (int c = 0; c < 4; c++) {
+         ts->flat[a][c] = 0.0f;
+         ts->ap[a][c] = (struct r_attr_plane){ 0.0f, 0.0f, 0.0f };
+      }
+   }
 }
 
 /* The texture coordinates of the quad of pixel (px, py) for the units in

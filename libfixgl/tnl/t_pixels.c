@@ -64,6 +64,8 @@ void t_pixel_rect(const struct r_state *rs_in, const struct r_pixel_image *pix,
    rast.offset_units = rast.offset_scale = 0.0f;
    rast.cull_front = rast.cull_back = false;
    rast.twoside = false;
+   rast.point_sprite = false;     /* (its own rasterizer: no sprite coordinates) */
+   rast.sprite_coord_enable = 0;
    fs.phong = false;
    rs.flat_mask = 0;
    fs.fs_inputs = 1u << R_FS_COLOR0 | 1u << R_FS_TEX0;
