@@ -34,6 +34,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "context.h"
 #include "fgl_alloc.h"
@@ -86,7 +89,20 @@ static void run_tile(void *arg, unsigned item, unsigned slot)
          const int ty = (int)(item / (unsigned)j->scene->tiles_x);
          lazy_resolve_tiles(j->lazy, FGL_LAZY_COLOR | FGL_LAZY_ZS, tx, ty, tx, ty);
       }
+      /* the oracle's rasterizer threads run with denormals flushed
+       * (lp_rast.c thread_function, util_fpstate_set_denorms_to_zero), as
+       * the draw did (tnl/t_render.c): a worker's MXCSR is its own, and
+       * the calling thread restored its own after the draw (fuzzer seed
+       * 3000366: perspective planes of w = 1.5e35, ORACLE-NOTES.md
+       * "Clamps and NaN") */
+#if defined(__SSE__) || defined(__x86_64__)
+      const unsigned mxcsr = _mm_getcsr();
+      _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
+#endif
       r_scene_run_tile(j->scene, item, &j->stats[slot], slot);
+#if defined(__SSE__) || defined(__x86_64__)
+      _mm_setcsr(mxcsr);
+#endif
    }
    if (j->front) {
       struct fgl_framebuffer *fb = j->front;

@@ -1724,6 +1724,108 @@ static void texparameterf_int_edges(fc_h *h)
     glDeleteTextures(1, &tex);
 }
 
+/* glPrioritizeTextures while compiling, between glBegin and glEnd: the
+ * compiler's begin/end check comes before n is looked at, so a negative n
+ * there is GL_INVALID_OPERATION (compiled, and raised at once under
+ * GL_COMPILE_AND_EXECUTE), a valid call too; outside glBegin/glEnd a
+ * negative n is GL_INVALID_VALUE (fixgl raised GL_INVALID_VALUE inside and
+ * compiled nothing; fuzzer seed 338 of the seed-7 campaign; probe
+ * p_prioritize_inside). */
+static void prioritize_inside_compile(fc_h *h)
+{
+    static const GLuint names[2] = { 1, 2 };
+    static const GLclampf prio[2] = { 0.5f, 0.25f };
+    GLuint tex[2];
+    GLfloat p = -1.0f;
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glGenTextures(2, tex);
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    glBindTexture(GL_TEXTURE_2D, tex[1]);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glBegin(GL_TRIANGLE_FAN);
+    glPrioritizeTextures(-1, names, prio);
+    glEnd();
+    fc_error(h, "n = -1 inside glBegin, compile and execute");
+    glBegin(GL_POINTS);
+    glPrioritizeTextures(2, names, prio);
+    glEnd();
+    fc_error(h, "n = 2 inside glBegin, compile and execute");
+    glPrioritizeTextures(-1, names, prio);
+    fc_error(h, "n = -1 outside glBegin, compile and execute");
+    glEndList();
+    fc_error(h, "list 1 ended");
+    glCallList(1);
+    fc_error(h, "list 1 called");
+    glNewList(2, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glPrioritizeTextures(-1, names, prio);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 2);
+    glVertex2f(30, 6);
+    glVertex2f(14, 30);
+    glEnd();
+    glEndList();
+    fc_error(h, "list 2 compiled");
+    glCallList(2);
+    fc_error(h, "list 2 called");
+    glBindTexture(GL_TEXTURE_2D, tex[1]);
+    glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, &p);
+    fc_value(h, "priority of texture 2 * 4", (long long)(p * 4.0f));
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDeleteLists(1, 2);
+    glDeleteTextures(2, tex);
+    fc_capture(h);
+}
+
+/* glDrawElements from a bound element buffer without a data store (bound
+ * but never given data, or glBufferData of size 0) draws nothing: no
+ * feedback, no selection hit (st_draw.c prepare_indexed_draw; rendering it
+ * crashes the oracle, so only feedback and selection).  fixgl read every
+ * index as 0 and fed back the first vertex's degenerate triangles (fuzzer
+ * seed 440 of the seed-7 campaign: glRenderMode returned 494 against 342;
+ * probe p_element_buffer_no_store). */
+static void element_buffer_no_store(fc_h *h)
+{
+    static const GLfloat v[4][4] = { { 1.13666f, -0.265503f, -1.24915f, 1.72406f },
+                                     { 0.5f, -0.5f, 0, 1 }, { 0.5f, 0.5f, 0, 1 },
+                                     { -0.5f, 0.5f, 0, 1 } };
+    static GLfloat fb[512];
+    static GLuint sb[64];
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    fcu_clear(0, 0, 0, 0, 1);
+    glVertexPointer(4, GL_FLOAT, 0, v);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 5);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1)
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, 0, NULL, GL_STATIC_DRAW);
+        glFeedbackBuffer(512, GL_4D_COLOR_TEXTURE, fb);
+        glRenderMode(GL_FEEDBACK);
+        glDrawElements(GL_QUAD_STRIP, 6, GL_UNSIGNED_BYTE, (const GLvoid *)0);
+        glDrawElements(GL_QUAD_STRIP, 6, GL_UNSIGNED_BYTE, (const GLvoid *)0x40);
+        glDrawElements(GL_POINTS, 2, GL_UNSIGNED_SHORT, (const GLvoid *)0x40);
+        fc_value(h, "feedback values", glRenderMode(GL_RENDER));
+        glSelectBuffer(64, sb);
+        glRenderMode(GL_SELECT);
+        glInitNames();
+        glPushName(7);
+        glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, (const GLvoid *)0x40);
+        fc_value(h, "selection hits", glRenderMode(GL_RENDER));
+        fc_error(h, "no store");
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    glDeleteBuffers(1, (const GLuint[]){ 5 });
+    glDrawArrays(GL_TRIANGLES, 1, 3);   /* the witness: rendered, no element buffer */
+    fc_error(h, "witness");
+    glDisableClientState(GL_VERTEX_ARRAY);
+    fc_capture(h);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -1771,5 +1873,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("bitmap_negative_compile_sizes", 64, 64, 1, bitmap_negative_compile_sizes),
     ROBUST("transpose_texture_matrix_unit", 8, 8, 0, transpose_texture_matrix_unit),
     ROBUST("end_after_list_mid_primitive", 32, 32, 1, end_after_list_mid_primitive),
+    ROBUST("prioritize_inside_compile", 32, 32, 1, prioritize_inside_compile),
+    ROBUST("element_buffer_no_store", 32, 32, 1, element_buffer_no_store),
     { 0 }
 };

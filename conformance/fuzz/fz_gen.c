@@ -891,6 +891,16 @@ void fz_print_c(FILE *f, const fz_call *calls, size_t n, const char *comment)
         if (!inside)
             fprintf(f, "    err(%zu);\n", i);
     }
+    /* what the executor does after the stream (fz_exec_run: a glEnd when
+     * the stream ends inside glBegin/glEnd; fz_exec_final: glEndList,
+     * glRenderMode(GL_RENDER)), so the reproducer draws what the executor
+     * compared (seed 3000589: a line strip left open) */
+    if (inside)
+        fprintf(f, "    glEnd();\n");
+    fprintf(f, "    glEndList();\n"
+               "    glRenderMode(GL_RENDER);\n"
+               "    while (glGetError())\n"
+               "        ;\n");
     fprintf(f, "    glFinish();\n"
                "    uint64_t h = 0xcbf29ce484222325ull;   /* the colour buffer's digest */\n"
                "    for (size_t i = 0; i < %d * %d * 16; i++)\n"

@@ -2040,6 +2040,20 @@ static bool save_eval(struct fgl_context *ctx, enum dl_opcode op, union dl_node 
    return ctx->ExecuteFlag;
 }
 
+/* [S: dlist.c:save_PrioritizeTextures] the begin/end check comes first,
+ * once, whatever n is (a negative n inside glBegin/glEnd is
+ * GL_INVALID_OPERATION, not GL_INVALID_VALUE; probe p_prioritize_inside);
+ * then a node per name, replayed as a call with n = 1 */
+bool fgl_save_prioritize_textures(struct fgl_context *ctx, GLsizei n, const GLuint *textures,
+                                  const GLclampf *priorities)
+{
+   if (!save_prologue(ctx))
+      return false;
+   for (GLsizei i = 0; i < n && textures && priorities; i++)
+      fgl_dl_put_PrioritizeTexture1(ctx, textures[i], priorities[i]);
+   return ctx->ExecuteFlag;
+}
+
 bool fgl_save_eval_coord1(struct fgl_context *ctx, GLfloat u)
 {
    return save_eval(ctx, DL_OP_EVAL_C1, (union dl_node){ .f = u }, (union dl_node){ .u = 0 }, 1);

@@ -118,6 +118,8 @@ bool fgl_save_eval_coord2(struct fgl_context *ctx, GLfloat u, GLfloat v);
 bool fgl_save_eval_point1(struct fgl_context *ctx, GLint i);
 bool fgl_save_eval_point2(struct fgl_context *ctx, GLint i, GLint j);
 void fgl_save_call_lists(struct fgl_context *ctx, GLsizei n, GLenum type, const GLvoid *lists);
+bool fgl_save_prioritize_textures(struct fgl_context *ctx, GLsizei n, const GLuint *textures,
+                                  const GLclampf *priorities);
 /* glBitmap and glDrawPixels (main/drawpix.c keeps their images) */
 bool fgl_save_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLfloat xorig,
                      GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bits);

@@ -455,12 +455,10 @@ void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures,
    if (!ctx)
       return;
    if (ctx->CompileFlag) {
-      /* [S: dlist.c:save_PrioritizeTextures] a node per name (none for
-       * n <= 0), then the call itself under GL_COMPILE_AND_EXECUTE */
-      bool execute = ctx->ExecuteFlag;
-      for (GLsizei i = 0; i < n && textures && priorities; i++)
-         execute = fgl_save_PrioritizeTexture1(ctx, textures[i], priorities[i]);
-      if (!execute)
+      /* [S: dlist.c:save_PrioritizeTextures] the begin/end check, a node
+       * per name (none for n <= 0), then the call itself under
+       * GL_COMPILE_AND_EXECUTE */
+      if (!fgl_save_prioritize_textures(ctx, n, textures, priorities))
          return;
    }
    if (fgl_inside_begin_end(ctx)) {

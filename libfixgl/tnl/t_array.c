@@ -258,6 +258,12 @@ bool t_index_source(const struct fgl_context *ctx, GLenum type, const GLvoid *in
       src->limit = UINT64_MAX;
       return indices != NULL;
    }
+   /* an element buffer without a store (never given data, or of size 0)
+    * draws nothing ([S: st_draw.c:prepare_indexed_draw] "doesn't have any
+    * backing storage"; the oracle's feedback and selection draw nothing,
+    * its rendering crashes: probe p_element_buffer_no_store) */
+   if (!bo->Data || bo->Size == 0)
+      return false;
    /* [S: draw.c:_mesa_validated_drawrangeelements] an offset that is not
     * a multiple of the index size draws nothing; draw_pt.c DRAW_GET_IDX:
     * an index past the store (elt_buffer_size / index size) reads 0 */
@@ -267,7 +273,7 @@ bool t_index_source(const struct fgl_context *ctx, GLenum type, const GLvoid *in
       return false;
    src->base = bo->Data;
    src->start = offset / size;
-   src->limit = bo->Data ? (uint64_t)bo->Size / size : 0;
+   src->limit = (uint64_t)bo->Size / size;
    return true;
 }
 

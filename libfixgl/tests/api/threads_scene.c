@@ -273,6 +273,23 @@ static void scene_small(int f)
   glEnd();
   glAccum(GL_ACCUM, 0.5f);
   glAccum(GL_RETURN, 1.0f);
+  /* a triangle clipped to a quad of w ~1.5e35 (fuzzer seed 3000366): its
+   * perspective planes take denormal products, flushed in the oracle's
+   * rasterizer threads; the workers once kept them (pixels that changed
+   * with FIXGL_NUM_THREADS) */
+  glDisable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glBegin(GL_TRIANGLES);
+  glColor4f(-4.27294e-13f, -2.14219e-35f, 6.1083e+11f, -3.13026e-31f);
+  glVertex4f(-1.979e-16f, 6.19298e+37f, 1.17068e+10f, 1.32819e+26f);
+  glColor4f(-2.14219e-35f, 6.1083e+11f, -3.13026e-31f, -3.60428e+30f);
+  glVertex4f(6.19298e+37f, 1.17068e+10f, 1.32819e+26f, -8.44828e-08f);
+  glColor4f(6.1083e+11f, -3.13026e-31f, -3.60428e+30f, -2.07323e+37f);
+  glVertex4f(1.17068e+10f, 1.32819e+26f, -8.44828e-08f, 1.53802e+35f);
+  glEnd();
 }
 
 struct job {
