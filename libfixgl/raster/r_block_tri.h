@@ -97,6 +97,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    /* rows of five blocks or more are narrowed to the blocks the edges
     * allow (block_row_span) */
    const bool wide = cv->x1 - bx0 >= 16;
+   const bool long_rows = cv->x1 - bx0 >= 32;
 
    /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
     * are asked for ahead of their use (a triangle touches a few pixels of
@@ -134,12 +135,18 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             rowc[e] += 4 * cv->dy[e];
          continue;
       }
+      /* the row's blocks wholly inside the edges (block_row_inner), which
+       * skip the edge test: none in a box of fewer than nine block
+       * columns */
+      int32_t ifirst = 1, ilast = 0;
+      if (long_rows && !block_row_inner(cv, rowc, bx0, &ifirst, &ilast))
+         ifirst = 1, ilast = 0;
       int32_t c[R_COVER_EDGES];
       for (int e = 0; e < R_COVER_EDGES; e++)
          c[e] = rowc[e] + (first - bx0) * cv->dx[e];
       for (int32_t bx = first; bx <= last; bx += 4) {
          /* coverage */
-         unsigned mask = r_block_cover(c, eoff);
+         unsigned mask = bx >= ifirst && bx <= ilast ? 0xffffu : r_block_cover(c, eoff);
          for (int e = 0; e < R_COVER_EDGES; e++)
             c[e] += 4 * cv->dx[e];
          /* cut to the box's rows and, in its first and last block
