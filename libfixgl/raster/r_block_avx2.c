@@ -120,6 +120,7 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
 
 #define BLOCK_STAGE_HAS_ALPHA 1
 #define BLOCK_STAGE_PER_BLOCK 1
+#define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
 #define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \

@@ -133,6 +133,41 @@ static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
    return true;
 }
 
+/* The blocks of one block row that lie wholly inside every edge: those
+ * at *ifirst .. *ilast (block x, multiples of 4 from bx0, the row's
+ * first), false when there is none.  An edge's smallest value over the
+ * block k blocks along is rowc + 4k dx + min(0, 3 dx) + min(0, 3 dy), as
+ * block_row_span's largest is; where it is >= 0 for every edge, every
+ * pixel of the block is covered and r_block_cover would give 0xffff, so
+ * the walk takes that mask without evaluating the edges.  Worth its
+ * divides on long rows only. */
+static ALWAYS_INLINE bool block_row_inner(const struct r_tri_cover *cv,
+                                          const int32_t rowc[R_COVER_EDGES], int32_t bx0,
+                                          int32_t *ifirst, int32_t *ilast)
+{
+   int64_t kmax = (cv->x1 - bx0) >> 2;
+   int64_t kmin = 0;
+   for (int e = 0; e < R_COVER_EDGES; e++) {
+      const int64_t dx = cv->dx[e], dy = cv->dy[e];
+      const int64_t m = (int64_t)rowc[e] + (dx < 0 ? 3 * dx : 0) + (dy < 0 ? 3 * dy : 0);
+      if (dx > 0) {
+         /* m + 4k dx >= 0 */
+         const int64_t k = -block_floor_div(m, 4 * dx);
+         kmin = k > kmin ? k : kmin;
+      } else if (dx < 0) {
+         const int64_t k = block_floor_div(m, -4 * dx);
+         kmax = k < kmax ? k : kmax;
+      } else if (m < 0) {
+         return false;
+      }
+   }
+   if (kmin > kmax)
+      return false;
+   *ifirst = bx0 + 4 * (int32_t)kmin;
+   *ilast = bx0 + 4 * (int32_t)kmax;
+   return true;
+}
+
 /* r_float_to_unorm8 in 8 lanes (ORACLE-NOTES.md "Colour conversion"; maxps returns its second operand for NaN:
  * NaN -> 0, as !(c > 0)) */
 static ALWAYS_INLINE __m256i unorm8(__m256 c)

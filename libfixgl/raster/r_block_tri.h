@@ -62,6 +62,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
 {
    const int width = rs->fb->width, height = rs->fb->height;
    const size_t stride = (size_t)width;
+   /* the buffers, read once: the stores through them might alias rs */
+   void *const zs_base = rs->fb->zs;
+   uint32_t *const color_base = (uint32_t *)rs->fb->color;
    const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
    const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
    const __m256 flx = _mm256_cvtepi32_ps(lx), fly = _mm256_cvtepi32_ps(ly);
@@ -97,6 +100,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    /* rows of five blocks or more are narrowed to the blocks the edges
     * allow (block_row_span) */
    const bool wide = cv->x1 - bx0 >= 16;
+   const bool long_rows = cv->x1 - bx0 >= 32;
 
    /* the buffers' lines of the box's rows [ya, yb] and columns [x0, x1]
     * are asked for ahead of their use (a triangle touches a few pixels of
@@ -134,12 +138,18 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             rowc[e] += 4 * cv->dy[e];
          continue;
       }
+      /* the row's blocks wholly inside the edges (block_row_inner), which
+       * skip the edge test: none in a box of fewer than nine block
+       * columns */
+      int32_t ifirst = 1, ilast = 0;
+      if (long_rows && !block_row_inner(cv, rowc, bx0, &ifirst, &ilast))
+         ifirst = 1, ilast = 0;
       int32_t c[R_COVER_EDGES];
       for (int e = 0; e < R_COVER_EDGES; e++)
          c[e] = rowc[e] + (first - bx0) * cv->dx[e];
       for (int32_t bx = first; bx <= last; bx += 4) {
          /* coverage */
-         unsigned mask = r_block_cover(c, eoff);
+         unsigned mask = bx >= ifirst && bx <= ilast ? 0xffffu : r_block_cover(c, eoff);
          for (int e = 0; e < R_COVER_EDGES; e++)
             c[e] += 4 * cv->dx[e];
          /* cut to the box's rows and, in its first and last block
@@ -228,7 +238,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                 * depth test of its passing lanes, the op of each outcome
                 * under the write mask, the Z24S8 words of the live lanes
                 * rewritten */
-               uint32_t *zp = (uint32_t *)rs->fb->zs + idx;
+               uint32_t *zp = (uint32_t *)zs_base + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                const __m256i s8 = _mm256_srli_epi32(zb, 24);
                const __m256i spass = depth_pass(&sops.fn, sops.ref_vm, _mm256_and_si256(s8, sops.vm));
@@ -247,7 +257,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nw, pass));
                pass = _mm256_and_si256(pass, zpass);
             } else if (zf_z24(zf)) {
-               uint32_t *zp = (uint32_t *)rs->fb->zs + idx;
+               uint32_t *zp = (uint32_t *)zs_base + idx;
                const __m256i zb = load_rows32(zp, stride, rm);
                pass = _mm256_and_si256(
                   pass, depth_test8(zf, &fn, zv, _mm256_and_si256(zb, _mm256_set1_epi32(0xffffff))));
@@ -257,7 +267,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                   store_rows32(zp, stride, rm, _mm256_blendv_epi8(zb, nz, pass));
                }
             } else if (zf == ZF_16) {
-               uint16_t *zp = (uint16_t *)rs->fb->zs + idx;
+               uint16_t *zp = (uint16_t *)zs_base + idx;
                const __m256i zb = load_rows16(zp, stride, rm);
                pass = _mm256_and_si256(pass, depth_pass(&fn, zv, zb));
                if (zwrite)
@@ -273,7 +283,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
                src = block_stage_shade(rs, ts, &stage, variant, fx, fy, bx, y, m8, &live);
             }
 
-            uint32_t *cp = (uint32_t *)rs->fb->color + idx;
+            uint32_t *cp = color_base + idx;
             const __m256i dst = load_rows32(cp, stride, rm);
             __m256i out = src;
             if (cop == BL_ALPHA)
