@@ -94,26 +94,24 @@ static ALWAYS_INLINE int64_t block_floor_div(int64_t a, int64_t b)
    return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
-/* The blocks of one block row that may hold a covered pixel: those at
- * *first .. *last (block x, multiples of 4 from bx0, the row's first),
- * narrowed from the whole row (of five blocks or more), false when there
- * is none.  rowc[e]: the
- * edge values at the row's first block.  An edge's largest value over
- * the block k blocks along is rowc + 4k dx + max(0, 3 dx) + max(0, 3 dy)
- * (the values are linear over the block and fit in 32 bits: r_cover_planes),
- * so a block where that is negative for some edge covers no pixel and
- * r_block_cover would give it an empty mask: skipping it changes nothing
- * but the time (a line's or a thin triangle's box is mostly empty).  Only
- * worth its divides on a row of many blocks. */
-static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
-                                         const int32_t rowc[R_COVER_EDGES], int32_t bx0,
-                                         int32_t *first, int32_t *last)
+/* The range kmin .. kmax of the blocks k blocks along one block row
+ * (from bx0, the row's first) where every edge's extreme value over the
+ * block is >= 0: its largest (`inner` false: the block may hold a covered
+ * pixel) or its smallest (`inner` true: every pixel of the block is
+ * covered).  rowc[e]: the edge values at the row's first block.  An edge's
+ * values are linear over the block and fit in 32 bits (r_cover_planes):
+ * over the block k blocks along they reach rowc + 4k dx + {max, min}(0,
+ * 3 dx) + {max, min}(0, 3 dy).  False when no block qualifies. */
+static ALWAYS_INLINE bool block_row_range(const struct r_tri_cover *cv,
+                                          const int32_t rowc[R_COVER_EDGES], int32_t bx0,
+                                          bool inner, int64_t *kmin_out, int64_t *kmax_out)
 {
    int64_t kmax = (cv->x1 - bx0) >> 2;
    int64_t kmin = 0;
    for (int e = 0; e < R_COVER_EDGES; e++) {
       const int64_t dx = cv->dx[e], dy = cv->dy[e];
-      const int64_t m = (int64_t)rowc[e] + (dx > 0 ? 3 * dx : 0) + (dy > 0 ? 3 * dy : 0);
+      const int64_t m = (int64_t)rowc[e] + ((inner ? dx < 0 : dx > 0) ? 3 * dx : 0) +
+                        ((inner ? dy < 0 : dy > 0) ? 3 * dy : 0);
       if (dx > 0) {
          /* m + 4k dx >= 0: k >= ceil(-m / 4dx) */
          const int64_t k = -block_floor_div(m, 4 * dx);
@@ -128,40 +126,41 @@ static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
    }
    if (kmin > kmax)
       return false;
+   *kmin_out = kmin;
+   *kmax_out = kmax;
+   return true;
+}
+
+/* The blocks of one block row that may hold a covered pixel: those at
+ * *first .. *last (block x, multiples of 4 from bx0), narrowed from the
+ * whole row (of five blocks or more), false when there is none.  A block
+ * where some edge's largest value is negative covers no pixel and
+ * r_block_cover would give it an empty mask: skipping it changes nothing
+ * but the time (a line's or a thin triangle's box is mostly empty).  Only
+ * worth its divides on a row of many blocks. */
+static ALWAYS_INLINE bool block_row_span(const struct r_tri_cover *cv,
+                                         const int32_t rowc[R_COVER_EDGES], int32_t bx0,
+                                         int32_t *first, int32_t *last)
+{
+   int64_t kmin, kmax;
+   if (!block_row_range(cv, rowc, bx0, false, &kmin, &kmax))
+      return false;
    *first = bx0 + 4 * (int32_t)kmin;
    *last = bx0 + 4 * (int32_t)kmax + 3 < cv->x1 ? bx0 + 4 * (int32_t)kmax + 3 : cv->x1;
    return true;
 }
 
 /* The blocks of one block row that lie wholly inside every edge: those
- * at *ifirst .. *ilast (block x, multiples of 4 from bx0, the row's
- * first), false when there is none.  An edge's smallest value over the
- * block k blocks along is rowc + 4k dx + min(0, 3 dx) + min(0, 3 dy), as
- * block_row_span's largest is; where it is >= 0 for every edge, every
- * pixel of the block is covered and r_block_cover would give 0xffff, so
- * the walk takes that mask without evaluating the edges.  Worth its
- * divides on long rows only. */
+ * at *ifirst .. *ilast (block x, multiples of 4 from bx0), false when
+ * there is none: every pixel of such a block is covered and
+ * r_block_cover would give 0xffff, so the walk takes that mask without
+ * evaluating the edges.  Worth its divides on long rows only. */
 static ALWAYS_INLINE bool block_row_inner(const struct r_tri_cover *cv,
                                           const int32_t rowc[R_COVER_EDGES], int32_t bx0,
                                           int32_t *ifirst, int32_t *ilast)
 {
-   int64_t kmax = (cv->x1 - bx0) >> 2;
-   int64_t kmin = 0;
-   for (int e = 0; e < R_COVER_EDGES; e++) {
-      const int64_t dx = cv->dx[e], dy = cv->dy[e];
-      const int64_t m = (int64_t)rowc[e] + (dx < 0 ? 3 * dx : 0) + (dy < 0 ? 3 * dy : 0);
-      if (dx > 0) {
-         /* m + 4k dx >= 0 */
-         const int64_t k = -block_floor_div(m, 4 * dx);
-         kmin = k > kmin ? k : kmin;
-      } else if (dx < 0) {
-         const int64_t k = block_floor_div(m, -4 * dx);
-         kmax = k < kmax ? k : kmax;
-      } else if (m < 0) {
-         return false;
-      }
-   }
-   if (kmin > kmax)
+   int64_t kmin, kmax;
+   if (!block_row_range(cv, rowc, bx0, true, &kmin, &kmax))
       return false;
    *ifirst = bx0 + 4 * (int32_t)kmin;
    *ilast = bx0 + 4 * (int32_t)kmax;
