@@ -204,6 +204,10 @@ void fgl_context_destroy(struct fgl_context *ctx)
 
 void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb)
 {
+   /* [S: lp_setup.c:lp_setup_bind_framebuffer] another framebuffer: the
+    * draw regions are recomputed at the next primitive */
+   if (ctx->DrawBuffer != fb)
+      fgl_vpcut_invalidate(ctx);
    ctx->DrawBuffer = fb;
    ctx->NewState |= FGL_NEW_BUFFERS;
    fgl_select_color_buffer(ctx);   /* a separate front buffer: the one drawn */

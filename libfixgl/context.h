@@ -1028,6 +1028,21 @@ struct fgl_context {
    /* the raster state of the smooth point [0] and line [1] quads (each
     * zero while its smoothing is off), validated with _Raster */
    struct r_state _RasterAA[2];
+   /* llvmpipe's draw region under point attenuation is state
+    * (ORACLE-NOTES.md "Point parameters", "The cut is state"; probe
+    * p_vpcut_state): _VpCutDirty is set when a draw validates another
+    * viewport, scissor rectangle or scissor enable than _VpCutKey, and
+    * when the oracle would flush its scene or draw a pixel rectangle; the
+    * next primitive then decides _VpCut (the region cut to the viewport:
+    * a size per vertex, and not a smooth point or line, whose draw stage
+    * binds a rasterizer without one), kept until the next change
+    * (state.c fgl_vpcut_*) */
+   bool _VpCutDirty, _VpCut;
+   struct fgl_vpcut_key {
+      float scale[3], translate[3];
+      int x0, y0, x1, y1;
+      int scissor;
+   } _VpCutKey;
    struct r_cso_cache _StateCache;
    /* the framebuffer object of no framebuffer (held; context.c), which
     * _Raster.fb falls back to when a framebuffer's cannot be made */
@@ -1134,6 +1149,19 @@ void fgl_scene_fini(struct fgl_context *ctx);
  * by tiles, each copied by the thread that drew it, when the framebuffer
  * can (FlushFrontRect) */
 void fgl_scene_flush_front(struct fgl_context *ctx);
+/* The viewport cut of the draw region (state.c; ORACLE-NOTES.md "Point
+ * parameters"): fgl_vpcut_validate compares what a draw (draw true) or a
+ * clear (false: the scissor rectangle only) validated with what the last
+ * one did; fgl_vpcut_invalidate marks the region for recomputation (the
+ * oracle flushed its scene, or drew a pixel rectangle or a clear quad with
+ * a viewport of its own); fgl_vpcut_decide is called by the first
+ * primitive after that (aa: a smooth point's or line's quads). */
+void fgl_vpcut_validate(struct fgl_context *ctx, bool draw);
+static inline void fgl_vpcut_invalidate(struct fgl_context *ctx)
+{
+   ctx->_VpCutDirty = true;
+}
+void fgl_vpcut_decide(struct fgl_context *ctx, bool aa);
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2);

@@ -395,6 +395,8 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2)
 {
+   if (ctx->_VpCutDirty)
+      fgl_vpcut_decide(ctx, false);
    if (ctx->_NumThreads == 1) {
       /* (its box's lazy clears are written by rasterize_ccw: rs->lazy) */
       r_triangle(rs, v0, v1, v2);
@@ -412,6 +414,8 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
 void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
                      const struct r_vertex *v0, const struct r_vertex *v1)
 {
+   if (ctx->_VpCutDirty)
+      fgl_vpcut_decide(ctx, false);
    if (ctx->_NumThreads == 1) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_line(rs, v0, v1);
@@ -429,6 +433,8 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
 void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
                       const struct r_vertex *v)
 {
+   if (ctx->_VpCutDirty)
+      fgl_vpcut_decide(ctx, false);
    if (ctx->_NumThreads == 1) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_point(rs, v);

@@ -961,30 +961,81 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
    return failed;
 }
 
-/* The region of points and non-smooth lines (r_state.px0..py1): the draw
- * region, and with a size per vertex llvmpipe cuts them to the viewport
- * too (ORACLE-NOTES.md "Point parameters"; probe p_point_viewport): vpwh,
- * (int)(x0 + 0.499f) .. (int)(x1 - 0.501f) inclusive, truncated toward
- * zero, in y-down window coordinates. */
+/* The region of points and non-smooth lines (r_state.px0..py1) and of the
+ * smooth point and line quads (_RasterAA[].x0..y1): the draw region, cut
+ * to the viewport while ctx->_VpCut (ORACLE-NOTES.md "Point parameters";
+ * probes p_point_viewport, p_vpcut_state): vpwh, (int)(x0 + 0.499f) ..
+ * (int)(x1 - 0.501f) inclusive, truncated toward zero, in y-down window
+ * coordinates.  The smooth quads are cut pixel by pixel too. */
 static void update_point_region(struct fgl_context *ctx)
 {
    struct r_state *rs = &ctx->_Raster;
-   rs->px0 = rs->x0;
-   rs->py0 = rs->y0;
-   rs->px1 = rs->x1;
-   rs->py1 = rs->y1;
-   if (!rs->rast || !rs->rast->point_size_per_vertex)
-      return;
-   const float sx = fabsf(ctx->_ViewportScale[0]), sy = fabsf(ctx->_ViewportScale[1]);
-   const float tx = ctx->_ViewportTranslate[0], ty = ctx->_ViewportTranslate[1];
-   const int vx0 = (int)((tx - sx) + 0.499f), vx1 = (int)((tx + sx) - 0.501f) + 1;
-   const int vy0 = (int)((ty - sy) + 0.499f), vy1 = (int)((ty + sy) - 0.501f) + 1;
-   if (rs->px0 < vx0) rs->px0 = vx0;
-   if (rs->py0 < vy0) rs->py0 = vy0;
-   if (rs->px1 > vx1) rs->px1 = vx1;
-   if (rs->py1 > vy1) rs->py1 = vy1;
-   if (rs->px0 >= rs->px1 || rs->py0 >= rs->py1)
-      rs->px0 = rs->py0 = rs->px1 = rs->py1 = 0;
+   int x0 = rs->x0, y0 = rs->y0, x1 = rs->x1, y1 = rs->y1;
+   if (ctx->_VpCut) {
+      const float sx = fabsf(ctx->_ViewportScale[0]), sy = fabsf(ctx->_ViewportScale[1]);
+      const float tx = ctx->_ViewportTranslate[0], ty = ctx->_ViewportTranslate[1];
+      const int vx0 = (int)((tx - sx) + 0.499f), vx1 = (int)((tx + sx) - 0.501f) + 1;
+      const int vy0 = (int)((ty - sy) + 0.499f), vy1 = (int)((ty + sy) - 0.501f) + 1;
+      if (x0 < vx0) x0 = vx0;
+      if (y0 < vy0) y0 = vy0;
+      if (x1 > vx1) x1 = vx1;
+      if (y1 > vy1) y1 = vy1;
+      if (x0 >= x1 || y0 >= y1)
+         x0 = y0 = x1 = y1 = 0;
+   }
+   rs->px0 = x0;
+   rs->py0 = y0;
+   rs->px1 = x1;
+   rs->py1 = y1;
+   for (int m = 0; m < 2; m++) {
+      struct r_state *aa = &ctx->_RasterAA[m];
+      if (!aa->fs)
+         continue;
+      aa->x0 = aa->px0 = x0;
+      aa->y0 = aa->py0 = y0;
+      aa->x1 = aa->px1 = x1;
+      aa->y1 = aa->py1 = y1;
+   }
+}
+
+/* [S: llvmpipe/lp_setup.c: lp_setup_set_viewports, lp_setup_set_scissors,
+ * lp_setup_bind_rasterizer (the scissor flag), try_update_scene_state]
+ * llvmpipe marks its draw regions dirty when the state tracker hands it
+ * another viewport or scissor rectangle (cso and st compare with the last
+ * ones) or a rasterizer of another scissor flag: at a draw's validation,
+ * and for the scissor rectangle at a clear's (ST_PIPELINE_CLEAR).  The
+ * viewport here is the pipe's, depth range included. */
+void fgl_vpcut_validate(struct fgl_context *ctx, bool draw)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   struct fgl_vpcut_key k = ctx->_VpCutKey;
+   k.x0 = rs->x0;
+   k.y0 = rs->y0;
+   k.x1 = rs->x1;
+   k.y1 = rs->y1;
+   if (draw) {
+      memcpy(k.scale, ctx->_ViewportScale, sizeof(k.scale));
+      memcpy(k.translate, ctx->_ViewportTranslate, sizeof(k.translate));
+      k.scissor = ctx->Scissor.Enabled;
+   }
+   if (memcmp(&k, &ctx->_VpCutKey, sizeof(k)) != 0) {
+      ctx->_VpCutKey = k;
+      ctx->_VpCutDirty = true;
+   }
+}
+
+/* [S: lp_setup.c:try_update_scene_state; draw_pipe_aaline.c:
+ * aaline_first_line, draw_pipe_aapoint.c:aapoint_first_point] the first
+ * primitive that reaches llvmpipe's setup after the regions were marked
+ * dirty recomputes them with the rasterizer bound then: the draw's, or
+ * for smooth points and lines the draw module's "no cull" one, which has
+ * no size per vertex (no cut); kept until the next change */
+void fgl_vpcut_decide(struct fgl_context *ctx, bool aa)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   ctx->_VpCutDirty = false;
+   ctx->_VpCut = !aa && rs->rast && rs->rast->point_size_per_vertex;
+   update_point_region(ctx);
 }
 
 void fgl_update_state(struct fgl_context *ctx)
@@ -1041,9 +1092,8 @@ void fgl_update_state(struct fgl_context *ctx)
       if (failed)
          fgl_error(ctx, GL_OUT_OF_MEMORY);
    }
-   if (dirty & (FGL_NEW_BUFFERS | FGL_NEW_SCISSOR | FGL_NEW_VIEWPORT | FGL_NEW_POINT |
-                FGL_NEW_POLYGON))
-      update_point_region(ctx);
+   /* (after update_raster: the smooth quads' states copy the draw's) */
+   update_point_region(ctx);
 
    /* a group whose object could not be made is validated again */
    ctx->NewState = failed;

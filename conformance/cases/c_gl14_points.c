@@ -464,6 +464,181 @@ static void sprite_region_row(fc_h *h)
     }
 }
 
+/* llvmpipe's viewport cut of the draw region under attenuation is state
+ * (ORACLE-NOTES.md "Point parameters", "The cut is state"; probe
+ * p_vpcut_state): computed by the first primitive after a viewport,
+ * scissor or framebuffer change, a flush or a pixel rectangle, with the
+ * rasterizer bound then (a smooth point's or line's: no cut), and kept.
+ * Each frame: a viewport from GL row 7, attenuation on, a first primitive,
+ * an event (or none), then a wide smooth line and a wide point that reach
+ * below the viewport. */
+static void vpcut_tri(void)
+{
+    glBegin(GL_TRIANGLES);
+    glColor3f(0, 0, 1);
+    glVertex2f(40, 40);
+    glVertex2f(41, 40);
+    glVertex2f(40, 41);
+    glEnd();
+}
+
+static void vpcut_smooth(int points)
+{
+    glEnable(points ? GL_POINT_SMOOTH : GL_LINE_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glLineWidth(6);
+    glPointSize(9);
+    glBegin(points ? GL_POINTS : GL_LINES);
+    glColor3f(1, 0, 0);
+    glVertex2f(points ? 30 : 2, 9);
+    if (!points)
+        glVertex2f(60, 10);
+    glEnd();
+    glDisable(GL_BLEND);
+    glDisable(points ? GL_POINT_SMOOTH : GL_LINE_SMOOTH);
+}
+
+static void vpcut_events(fc_h *h)
+{
+    static const GLfloat att[3] = { 1, 0.5f, 0.25f }, none[3] = { 1, 0, 0 };
+    static const GLubyte bits[8] = { 0xff, 0x81, 0xff };
+    const GLubyte rgba[4] = { 0, 200, 0, 255 };
+    GLubyte rb[4];
+    for (int f = 0; f < 24; f++) {
+        glViewport(0, 0, 64, 64);
+        glDepthRange(0, 1);
+        fcu_clear(0, 0, 0, 0, 1);
+        glViewport(0, 7, 64, 57);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0, 64, 7, 64, -1, 1);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glScissor(0, 0, 64, 64);
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, f == 20 ? none : att);
+        if (f == 12)
+            vpcut_smooth(1);            /* a smooth point first: no cut */
+        else if (f == 13) {
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            vpcut_tri();                /* polygon-mode lines: cut */
+            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        } else if (f == 1 || f == 21)
+            vpcut_smooth(0);            /* a smooth line first: no cut */
+        else
+            vpcut_tri();                /* a triangle first: cut */
+        switch (f) {
+        case 2: glFinish(); break;
+        case 3: glViewport(0, 7, 64, 56); break;
+        case 4: glViewport(0, 7, 64, 57); break;            /* unchanged */
+        case 5: glEnable(GL_SCISSOR_TEST); break;
+        case 6: glScissor(0, 0, 60, 64); break;             /* test off */
+        case 7: glDepthRange(0.25, 1); break;
+        case 8:
+            glRasterPos2f(50, 50);
+            glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+            break;
+        case 9: glClear(GL_COLOR_BUFFER_BIT); break;        /* a plain clear */
+        case 10:
+            glColorMask(1, 0, 1, 1);                        /* a quad clear */
+            glClear(GL_COLOR_BUFFER_BIT);
+            glColorMask(1, 1, 1, 1);
+            break;
+        case 11: glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rb); break;
+        case 14:
+            glRasterPos2f(50, 50);
+            glBitmap(8, 3, 0, 0, 0, 0, bits);
+            break;
+        case 15: glFlush(); break;
+        case 16:
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, none);
+            vpcut_tri();
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+            break;
+        case 17: glViewport(0, 7, 64, 50); glViewport(0, 7, 64, 57); break;
+        case 18:
+            glScissor(0, 0, 60, 64);
+            glEnable(GL_SCISSOR_TEST);
+            glDisable(GL_SCISSOR_TEST);
+            break;
+        case 19:
+            glRasterPos2f(50, 50);
+            glCopyPixels(40, 40, 2, 2, GL_COLOR);
+            break;
+        case 20:                       /* decided before attenuation */
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+            break;
+        case 21: vpcut_tri(); break;   /* after a smooth line: stays uncut */
+        case 22:
+            glEnable(GL_SCISSOR_TEST);
+            vpcut_tri();
+            glDisable(GL_SCISSOR_TEST);
+            break;
+        case 23:
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, none);
+            glViewport(0, 7, 64, 56);
+            vpcut_tri();               /* decided without attenuation */
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+            break;
+        default: break;
+        }
+        vpcut_smooth(0);
+        glPointSize(12);
+        glBegin(GL_POINTS);
+        glColor3f(0, 1, 0);
+        glVertex2f(20, 8);
+        glEnd();
+        vpcut_smooth(1);
+        glPointSize(1);
+        glLineWidth(1);
+        fc_capture(h);
+    }
+}
+
+/* Polygon-mode points of triangles clipped by the near and far planes and
+ * by the viewport's sides: the new vertices' sizes are the clipper's lerp of
+ * the attenuated sizes (draw_pipe_clip.c interp: every output), clamped
+ * sizes above GL_POINT_SIZE_MIN; flat and smooth shading, smooth points.
+ * (random-raster/s1-i1293) */
+static void atten_unfilled_clip(fc_h *h)
+{
+    static const GLfloat att[3] = { 0.95f, 0.35f, 0.4f };
+    for (int f = 0; f < 3; f++) {
+        glViewport(0, 0, 64, 64);
+        fcu_clear(0.2f, 0.2f, 0.3f, 1, 1);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0, 64, 0, 64, -1, 1);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+        glPointParameterf(GL_POINT_SIZE_MIN, 3.4f);
+        glPointSize(f == 1 ? 2.3f : 7.5f);
+        glShadeModel(f == 0 ? GL_FLAT : GL_SMOOTH);
+        if (f == 2)
+            glEnable(GL_POINT_SMOOTH);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+        glBegin(GL_TRIANGLES);
+        fcu_color(1);
+        glVertex3f(8, 10, -1.5f);
+        fcu_color(2);
+        glVertex3f(50, 14, 1.5f);
+        fcu_color(3);
+        glVertex3f(30, 55, 0.2f);
+        fcu_color(4);
+        glVertex3f(-20, 30, 0.5f);
+        fcu_color(5);
+        glVertex3f(40, 40, -0.3f);
+        fcu_color(6);
+        glVertex3f(90, 50, 1.8f);
+        glEnd();
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDisable(GL_POINT_SMOOTH);
+        glShadeModel(GL_SMOOTH);
+        fc_capture(h);
+    }
+}
+
 const fc_case fc_cases_gl14_points[] = {
     FC_CASE_RGBA("gl14/points_atten_linear", 64, 64, 1, "gl14 points", atten_linear),
     FC_CASE_RGBA("gl14/points_atten_quadratic", 64, 64, 1, "gl14 points", atten_quadratic),
@@ -495,6 +670,10 @@ const fc_case fc_cases_gl14_points[] = {
                  atten_viewport),
     FC_CASE_RGBA("gl14/sprite_region_row", 80, 72, 3, "gl14 points sprite scissor",
                  sprite_region_row),
+    FC_CASE_RGBA("gl14/points_vpcut_events", 64, 64, 24, "gl14 points smooth scissor",
+                 vpcut_events),
+    FC_CASE_RGBA("gl14/points_atten_unfilled_clip", 64, 64, 3, "gl14 points clip polygon",
+                 atten_unfilled_clip),
     FC_CASE_RGBA("gl14/points_params_api", 8, 8, 0, "gl14 points api error attrib dlist", params_api),
     { 0 },
 };

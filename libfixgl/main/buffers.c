@@ -138,6 +138,7 @@ void fgl_select_color_buffer(struct fgl_context *ctx)
    fb->OtherDefined = defined;
    fb->FrontIsColor = front;
    ctx->NewState |= FGL_NEW_BUFFERS;
+   fgl_vpcut_invalidate(ctx);   /* another colour surface bound */
 }
 
 /* The colour buffer glReadPixels, glCopyPixels, glCopyTexImage and

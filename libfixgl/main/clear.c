@@ -64,6 +64,9 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
 {
    /* the clear's own depth-stencil-alpha and blend objects, for this
     * draw only */
+   /* the quad's viewport: the draw regions are computed again after it
+    * (probe p_vpcut_state) */
+   fgl_vpcut_invalidate(ctx);
    struct r_state rs = ctx->_Raster;
    rs.samples = NULL;   /* a clear passes no sample (conformance/probes/p_query.c) */
    struct r_dsa_state dsa = *rs.dsa;
@@ -122,6 +125,7 @@ void GLAPIENTRY glClear(GLbitfield mask)
    /* [S: st_cb_clear.c:st_Clear] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
    fgl_update_state(ctx);
+   fgl_vpcut_validate(ctx, false);   /* ST_PIPELINE_CLEAR: the scissor */
    if (ctx->Color.DrawBuffer != GL_NONE)
       ctx->DrawBuffer->ColorDefined = true;
 

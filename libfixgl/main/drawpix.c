@@ -194,6 +194,9 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
    if (!rs->fb->color && !rs->fb->zs)
       return;
    fgl_scene_flush(ctx);   /* drawn now, after what the scene holds */
+   /* the quad's viewport and rasterizer: the draw regions are computed
+    * again after it (probe p_vpcut_state) */
+   fgl_vpcut_invalidate(ctx);
    struct r_pixel_image img = {
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
    };
@@ -944,6 +947,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
                         GLenum format, GLenum type, const void *pixels)
 {
    fgl_scene_flush(ctx);   /* drawn now, after what the scene holds */
+   fgl_vpcut_invalidate(ctx);   /* the quad's viewport (probe p_vpcut_state) */
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    struct fgl_pixelstore unpack = ctx->Unpack;
 
@@ -1182,6 +1186,7 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    fgl_flush_bitmap_cache(ctx);
    fgl_scene_flush(ctx);   /* reads and draws the framebuffer now */
+   fgl_vpcut_invalidate(ctx);   /* a flush, then a quad (probe p_vpcut_state) */
    fgl_query_flushed(ctx);  /* the oracle's copy reads its buffer: a flush */
    if (blit_copy_pixels(ctx, srcx, srcy, width, height, dstx, dsty, type))
       return;

@@ -15,6 +15,9 @@ void fgl_flush_front(struct fgl_context *ctx)
    /* [S: st_cb_flush.c:st_flush] glBitmap's cache is drawn first */
    fgl_flush_bitmap_cache(ctx);
    fgl_scene_flush_front(ctx);
+   /* [S: lp_setup.c:lp_setup_reset] a flushed scene leaves all of
+    * llvmpipe's setup state dirty (probe p_vpcut_state) */
+   fgl_vpcut_invalidate(ctx);
 }
 
 void GLAPIENTRY glFlush(void)

@@ -269,6 +269,8 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   /* the oracle maps its colour buffer: a flush (probe p_vpcut_state) */
+   fgl_vpcut_invalidate(ctx);
 
    /* [S: image.c:_mesa_clip_readpixels] */
    struct fgl_pixelstore pack = ctx->Pack;

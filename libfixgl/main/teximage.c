@@ -1615,6 +1615,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb || !fb->Color)
       return;
+   fgl_vpcut_invalidate(ctx);   /* the oracle reads its buffer: a flush */
    const uint8_t *color = fgl_read_color(ctx);
    /* _mesa_clip_to_region */
    if (x < 0) {

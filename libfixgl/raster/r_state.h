@@ -684,8 +684,10 @@ struct r_state {
     * intersected with the scissor box) */
    int x0, y0, x1, y1;
    /* the region of points and of lines that are not smooth: the draw
-    * region, cut to the viewport rectangle while point sizes are per
-    * vertex (ORACLE-NOTES.md "Point parameters": llvmpipe's vpwh scissor);
+    * region, cut to the viewport rectangle when the context decided so
+    * (ORACLE-NOTES.md "Point parameters": llvmpipe's vpwh scissor, state
+    * decided by the first primitive after a change; the smooth quads'
+    * x0..y1 are cut with it);
     * a sprite may shade the row at py1 below it (r_point.c sprite) */
    int px0, py0, px1, py1;
 

@@ -244,6 +244,11 @@ static void clipper_init(const struct fgl_context *ctx, struct t_clipper *c)
    c->scale = ctx->_ViewportScale;
    c->translate = ctx->_ViewportTranslate;
    c->attrs = (1u << nattr) - 1u;
+   /* [S: draw_pipe_clip.c:interp] every vertex output is interpolated,
+    * the point size too: a polygon-mode point at a new vertex takes the
+    * lerped size (random-raster/s1-i1293; case gl14/points_atten_unfilled_clip) */
+   if (ctx->_Raster.rast && ctx->_Raster.rast->point_size_per_vertex)
+      c->attrs |= 1u << R_ATTR_PSIZE;
    if (ctx->RenderMode == GL_FEEDBACK)
       c->attrs |= 1u << R_ATTR_TEX0;
    c->new_vertex = NULL;

@@ -28,8 +28,12 @@
  * the draw's, state.c update_aa_states: the draw module's "no cull"
  * rasterizer, the fragment shader with the coverage lowering), with what
  * the draw's r_state has of the batch. */
-static bool aa_state(const struct fgl_context *ctx, struct r_state *aa, enum r_aa_mode mode)
+static bool aa_state(struct fgl_context *ctx, struct r_state *aa, enum r_aa_mode mode)
 {
+   /* the quads of the first primitive after a change decide the region
+    * with the "no cull" rasterizer: not cut */
+   if (ctx->_VpCutDirty)
+      fgl_vpcut_decide(ctx, true);
    const struct r_state *rs = &ctx->_Raster;
    *aa = ctx->_RasterAA[mode == R_AA_POINT ? 0 : 1];
    aa->flat_mask = rs->flat_mask;

@@ -461,6 +461,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
+   fgl_vpcut_validate(ctx, true);
    if (ctx->Color.DrawBuffer != GL_NONE)
       ctx->DrawBuffer->ColorDefined = true;
    fgl_update_stipple(ctx);
