@@ -31,8 +31,18 @@
  *     (glTranslate/glRotate only: llvmpipe then lights in object space when
  *     the lights are directional), scaled (uniform, non-uniform, mirrored),
  *     a glMultMatrix look-at or a general affine matrix.
+ *   - GL 1.4 state (issue 19), from streams of its own (purposes 81 for
+ *     structure, 82 for values: a scene without it is the scene it was
+ *     before it came): fog (linear, exp, exp2, on the scale of the lit
+ *     region's eye distances), GL_FOG_COORD_SRC = GL_FOG_COORD with the
+ *     current fog coordinate set before each glBegin, GL_COLOR_SUM with the
+ *     current secondary colour set before each glBegin, separate specular
+ *     forced on now and then, and patches drawn with lighting off (where
+ *     the secondary colour is the current one; with lighting on it is the
+ *     lit specular whatever GL_COLOR_SUM says).
  * Scenes stay small (a few hundred vertices): the oracle's time goes to
  * compiling shaders (see FC_LIT_PROFILES). */
+#define GL_GLEXT_PROTOTYPES 1   /* GL 1.4's secondary colour and fog coordinate */
 #include "fc_random.h"
 #include "fc_random_shared.h"
 #include "fc_rng.h"
@@ -45,6 +55,26 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
+
+/* call-trace wrappers (fc_trace.h) of the GL 1.4 entry points this family
+ * calls */
+static inline void fctl_glSecondaryColor3f(GLfloat a, GLfloat b, GLfloat c) { fc_trace_call("glSecondaryColor3f", 3, a, b, c, 0); glSecondaryColor3f(a, b, c); }
+static inline void fctl_glSecondaryColor3fv(const GLfloat *p) { fc_trace_vf("glSecondaryColor3fv", "GLfloat", 3, p); glSecondaryColor3fv(p); }
+static inline void fctl_glSecondaryColor3ub(GLubyte a, GLubyte b, GLubyte c) { fc_trace_calli("glSecondaryColor3ub", 3, a, b, c, 0); glSecondaryColor3ub(a, b, c); }
+static inline void fctl_glSecondaryColor3dv(const GLdouble *p) { fc_trace_vd("glSecondaryColor3dv", "GLdouble", 3, p); glSecondaryColor3dv(p); }
+static inline void fctl_glFogCoordf(GLfloat a) { fc_trace_call("glFogCoordf", 1, a, 0, 0, 0); glFogCoordf(a); }
+static inline void fctl_glFogCoordd(GLdouble a) { fc_trace_call("glFogCoordd", 1, a, 0, 0, 0); glFogCoordd(a); }
+static inline void fctl_glFogCoordfv(const GLfloat *p) { fc_trace_vf("glFogCoordfv", "GLfloat", 1, p); glFogCoordfv(p); }
+static inline void fctl_glFogCoorddv(const GLdouble *p) { fc_trace_vd("glFogCoorddv", "GLdouble", 1, p); glFogCoorddv(p); }
+
+#define glSecondaryColor3f fctl_glSecondaryColor3f
+#define glSecondaryColor3fv fctl_glSecondaryColor3fv
+#define glSecondaryColor3ub fctl_glSecondaryColor3ub
+#define glSecondaryColor3dv fctl_glSecondaryColor3dv
+#define glFogCoordf fctl_glFogCoordf
+#define glFogCoordd fctl_glFogCoordd
+#define glFogCoordfv fctl_glFogCoordfv
+#define glFogCoorddv fctl_glFogCoorddv
 
 /* Structure profiles.  Everything the oracle compiles a shader for (light
  * count, indices and kinds, attenuation and spot presence, light model
@@ -86,6 +116,15 @@ struct npolicy {
     double w;                       /* vertex w (1 mostly) */
 };
 
+/* The GL 1.4 part of a scene's structure (make_profile14) */
+struct profile14 {
+    int fog;                        /* 0 off, else 1 + index into fog_modes */
+    int fogcoord;                   /* GL_FOG_COORD_SRC = GL_FOG_COORD */
+    int seccolor;                   /* GL_COLOR_SUM, glSecondaryColor before glBegin */
+    int separate;                   /* GL_SEPARATE_SPECULAR_COLOR forced on */
+    int unlit;                      /* percentage of patches drawn with lighting off */
+};
+
 struct lit {
     struct scene s;                 /* s.r: the value stream */
     fc_rng k;                       /* the structure stream (see FC_LIT_PROFILES) */
@@ -107,6 +146,10 @@ struct lit {
     struct npolicy np;
     GLenum mat_pname;
     int mat_face;
+    /* GL 1.4: structure (profile) and value streams of its own */
+    struct profile14 p14;
+    fc_rng k14, r14;
+    double fog_near, fog_far;       /* eye distances the lit region spans */
 };
 
 /* ---- the modelview mirror (doubles; only used to aim lights) ---------- */
@@ -737,6 +780,109 @@ static void random_light_model(struct lit *L)
         light_model_int(r, GL_LIGHT_MODEL_COLOR_CONTROL, k < 25 ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
 }
 
+/* ---- GL 1.4 state (streams L->k14 and L->r14 only) -------------------- */
+
+static const GLenum fog_modes[3] = { GL_LINEAR, GL_EXP, GL_EXP2 };
+
+static void make_profile14(fc_rng *k, struct profile14 *p)
+{
+    p->fog = fc_rng_chance(k, 25) ? 1 + (int)fc_rng_below(k, 3) : 0;
+    p->fogcoord = p->fog && fc_rng_chance(k, 50);
+    p->seccolor = fc_rng_chance(k, 25);
+    p->separate = fc_rng_chance(k, 15);
+    p->unlit = fc_rng_chance(k, 20) ? fc_rng_range(k, 25, 75) : 0;
+}
+
+/* Fog, the fog coordinate source, colour sum and separate specular, after
+ * the lights (place_region has set the region). */
+static void random_state14(struct lit *L)
+{
+    const struct profile14 *p = &L->p14;
+    fc_rng *r = &L->r14;
+    /* the region's eye distances (the oracle's fragment depth is |z_eye|) */
+    double zc = fabs(L->c[2]), span;
+    L->fog_near = zc > L->rz ? zc - L->rz : 0.0;
+    L->fog_far = zc + L->rz;
+    span = L->fog_far - L->fog_near;
+    if (p->fog) {
+        GLfloat color[4];
+        for (int i = 0; i < 4; i++)
+            color[i] = (GLfloat)(fc_rng_chance(r, 15) ? (double)fc_rng_range(r, 0, 255) / 255.0
+                                                      : fc_rng_unit(r));
+        glEnable(GL_FOG);
+        glFogi(GL_FOG_MODE, (GLint)fog_modes[p->fog - 1]);
+        glFogfv(GL_FOG_COLOR, color);
+        if (p->fog == 1) {
+            double start = L->fog_near + span * fc_rng_real(r, -0.5, 0.6);
+            double end = start + span * fc_rng_real(r, 0.3, 1.6);
+            glFogf(GL_FOG_START, (GLfloat)start);
+            glFogf(GL_FOG_END, (GLfloat)end);
+        } else {
+            double far = L->fog_far > 0 ? L->fog_far : 1.0;
+            glFogf(GL_FOG_DENSITY, (GLfloat)(fc_rng_real(r, 0.1, p->fog == 2 ? 2.5 : 1.8) / far));
+        }
+    }
+    if (p->fogcoord) {
+        if (fc_rng_chance(r, 70))
+            glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+        else
+            glFogf(GL_FOG_COORD_SRC, (GLfloat)GL_FOG_COORD);
+    }
+    if (p->seccolor)
+        glEnable(GL_COLOR_SUM);
+    if (p->separate)
+        light_model_int(r, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+}
+
+/* The current secondary colour and fog coordinate, before a glBegin. */
+static void random_attribs14(struct lit *L)
+{
+    const struct profile14 *p = &L->p14;
+    fc_rng *r = &L->r14;
+    if (p->seccolor && fc_rng_chance(r, 70)) {
+        double c[3];
+        for (int i = 0; i < 3; i++)
+            c[i] = fc_rng_chance(r, 20) ? (double)fc_rng_range(r, 0, 255) / 255.0 : fc_rng_unit(r) * 0.6;
+        switch (fc_rng_below(r, 4)) {
+        case 0:
+            glSecondaryColor3f((GLfloat)c[0], (GLfloat)c[1], (GLfloat)c[2]);
+            break;
+        case 1: {
+            const GLfloat f[3] = { (GLfloat)c[0], (GLfloat)c[1], (GLfloat)c[2] };
+            glSecondaryColor3fv(f);
+            break;
+        }
+        case 2:
+            glSecondaryColor3ub((GLubyte)(c[0] * 255.0 + 0.5), (GLubyte)(c[1] * 255.0 + 0.5),
+                                (GLubyte)(c[2] * 255.0 + 0.5));
+            break;
+        default:
+            if (fc_rng_chance(r, 20))       /* out of range: clamped after the sum */
+                c[fc_rng_below(r, 3)] = fc_rng_real(r, -0.5, 1.5);
+            glSecondaryColor3dv(c);
+            break;
+        }
+    }
+    if (p->fogcoord && fc_rng_chance(r, 70)) {
+        const double span = L->fog_far - L->fog_near;
+        const double f = fc_rng_chance(r, 10) ? -fc_rng_real(r, 0.0, L->fog_far + 0.1)
+                                              : L->fog_near + span * fc_rng_real(r, -0.2, 1.2);
+        const GLfloat ff = (GLfloat)f;
+        switch (fc_rng_below(r, 4)) {
+        case 0: glFogCoordf(ff); break;
+        case 1: glFogCoordd(f); break;
+        case 2: glFogCoordfv(&ff); break;
+        default: glFogCoorddv(&f); break;
+        }
+    }
+}
+
+static void lit_begin(struct lit *L, GLenum mode)
+{
+    random_attribs14(L);
+    glBegin(mode);
+}
+
 /* ---- materials --------------------------------------------------------- */
 
 /* zero: 0 from the structure stream (Mesa specialises shininess 0). */
@@ -1007,7 +1153,7 @@ static void draw_grid(struct lit *L, const struct patch *P, const struct npolicy
     case GL_QUAD_STRIP:
     case GL_TRIANGLE_STRIP:
         for (int j = 0; j < nv; j++) {
-            glBegin(mode);
+            lit_begin(L, mode);
             for (int i = 0; i <= nu; i++) {
                 emit_attr_vertex(L, np, GV(P, i, j + 1), i == 0);
                 emit_attr_vertex(L, np, GV(P, i, j), 0);
@@ -1017,7 +1163,7 @@ static void draw_grid(struct lit *L, const struct patch *P, const struct npolicy
         break;
     case GL_QUADS:
     case GL_TRIANGLES:
-        glBegin(mode);
+        lit_begin(L, mode);
         for (int j = 0; j < nv; j++)
             for (int i = 0; i < nu; i++) {
                 const double *n = P->n[i][j];
@@ -1049,7 +1195,7 @@ static void draw_grid(struct lit *L, const struct patch *P, const struct npolicy
                     face_normal(P, i, j, fn);
                     n = fn;
                 }
-                glBegin(mode);
+                lit_begin(L, mode);
                 emit_attr_vertex(L, np, P->p[i][j], n, P->col[i][j], 1);
                 emit_attr_vertex(L, np, GV(P, i + 1, j), 0);
                 emit_attr_vertex(L, np, GV(P, i + 1, j + 1), 0);
@@ -1069,7 +1215,7 @@ static void draw_cap(struct lit *L, const struct npolicy *np, GLenum mode)
     double a0 = fc_rng_real(r, 0, 2 * PI), hue[4], col[4];
     int closed = mode == GL_TRIANGLE_FAN;
     random_hue(r, hue, 0.1, 1.0);
-    glBegin(mode);
+    lit_begin(L, mode);
     if (mode == GL_TRIANGLE_FAN) {
         double p[3] = { 0, 0, h }, n[3] = { 0, 0, 1 };
         emit_attr_vertex(L, np, p, n, hue, 1);
@@ -1149,7 +1295,7 @@ static void random_patch(struct lit *L, int npatches)
     struct npolicy np;
     int type = (int)fc_rng_below(r, 100), pushed = 0;
     GLenum mode = fcr_modes[fc_rng_below(K, 6)];
-    int place = npatches > 1 || fc_rng_chance(K, 20);
+    int place = npatches > 1 || fc_rng_chance(K, 20), unlit;
 
     np = L->np;
     if (L->dynamic) {
@@ -1157,6 +1303,11 @@ static void random_patch(struct lit *L, int npatches)
         if (fc_rng_chance(K, 50))
             random_npolicy(L, &np);
     }
+    /* GL 1.4 profile: a patch with lighting off (the primary colour is the
+     * current colour, the secondary the current secondary colour) */
+    unlit = L->p14.unlit && L->lighting && fc_rng_chance(&L->k14, L->p14.unlit);
+    if (unlit)
+        glDisable(GL_LIGHTING);
     if (place) {                    /* a place of its own in the region (scaled) */
         double sc = npatches > 1 ? fc_rng_real(r, 0.55, 0.85) : fc_rng_real(r, 0.75, 1.0);
         int use_d = fc_rng_chance(r, 30);
@@ -1196,6 +1347,8 @@ static void random_patch(struct lit *L, int npatches)
     }
     if (pushed)
         lt_pop(L);
+    if (unlit)
+        glEnable(GL_LIGHTING);
 }
 
 /* ---- the scene ----------------------------------------------------------- */
@@ -1332,6 +1485,9 @@ static void lit_scene(fc_h *h)
     *r = fc_rng_make(seed, index, 4);
     K = &L.k;
     *K = fc_rng_make(seed, index % FC_LIT_PROFILES, 5);
+    L.k14 = fc_rng_make(seed, index % FC_LIT_PROFILES, 81);
+    make_profile14(&L.k14, &L.p14);
+    L.r14 = fc_rng_make(seed, index, 82);
     fce_scene_begin(FCE_LIT, seed, index, index % FC_LIT_PROFILES);
     L.s.w = c->width;
     L.s.h = c->height;
@@ -1424,6 +1580,7 @@ static void lit_scene(fc_h *h)
         L.lighting = 1;
     }
 
+    random_state14(&L);
     issue_camera(&L);
     npatches = (k = (int)fc_rng_below(K, 100)) < 45 ? 1 : k < 75 ? 2 : k < 92 ? 3 : 4;
     if (c->frames == 2 && npatches < 2)
