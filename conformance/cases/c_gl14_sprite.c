@@ -603,7 +603,9 @@ static void replaced_on_lines_polygons(fc_h *h)
     static const GLenum wraps[4] = { GL_REPEAT, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER,
                                      GL_MIRRORED_REPEAT };
     static const GLfloat border[4] = { 0.9f, 0.2f, 0.6f, 0.8f };
-    static const GLubyte bits[8] = { 0xf0, 0x0f, 0xaa, 0x55, 0xff, 0x81, 0x3c, 0x66 };
+    /* 8 rows of one byte at GL_UNPACK_ALIGNMENT 4: a row every 4 bytes */
+    static const GLubyte bits[8 * 4] = { 0xf0, 0, 0, 0, 0x0f, 0, 0, 0, 0xaa, 0, 0, 0, 0x55, 0, 0, 0,
+                                         0xff, 0, 0, 0, 0x81, 0, 0, 0, 0x3c, 0, 0, 0, 0x66, 0, 0, 0 };
     static GLubyte img[6 * 5 * 4];
     for (int i = 0; i < 6 * 5 * 4; i++)
         img[i] = (GLubyte)(i * 29 + 7);
