@@ -502,7 +502,8 @@ static void vpcut_smooth(int points)
 static void vpcut_events(fc_h *h)
 {
     static const GLfloat att[3] = { 1, 0.5f, 0.25f }, none[3] = { 1, 0, 0 };
-    static const GLubyte bits[8] = { 0xff, 0x81, 0xff };
+    /* 3 rows of one byte at GL_UNPACK_ALIGNMENT 4: a row every 4 bytes */
+    static const GLubyte bits[3 * 4] = { 0xff, 0, 0, 0, 0x81, 0, 0, 0, 0xff, 0, 0, 0 };
     const GLubyte rgba[4] = { 0, 200, 0, 255 };
     GLubyte rb[4];
     for (int f = 0; f < 24; f++) {
