@@ -1179,6 +1179,67 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
    return true;
 }
 
+/* n pixels of glCopyPixels' source from index src, as the texture of
+ * the read buffer's format samples them (each format chosen once per
+ * row): the colour buffer's RGBA8 value * (float)(1 / 255), a wide
+ * target's unorm16 * (float)(1 / 65535) or its floats (case
+ * osmesa/ushort_copypixels; ORACLE-NOTES.md "OSMesa contexts and
+ * buffers") */
+static void copy_source_color_row(const struct fgl_framebuffer *fb, const uint8_t *read_color,
+                                  size_t src, float *t, int n)
+{
+   const size_t k = 4 * (size_t)n;
+   switch (fb->WideFormat) {
+   case R_WIDE_FLOAT:
+      memcpy(t, (const float *)fb->Wide + 4 * src, k * sizeof(float));
+      break;
+   case R_WIDE_UNORM16: {
+      const uint16_t *w = (const uint16_t *)fb->Wide + 4 * src;
+      for (size_t i = 0; i < k; i++)
+         t[i] = (float)w[i] * (float)(1.0 / 65535.0);
+      break;
+   }
+   default: {
+      const uint8_t *c = read_color + 4 * src;
+      for (size_t i = 0; i < k; i++)
+         t[i] = (float)c[i] * (float)(1.0 / 255.0);
+      break;
+   }
+   }
+}
+
+/* the depth texture (the buffer's format) sampled: unorm to float,
+ * value * (float)(1 / (2^n - 1)); a Z32_UNORM one through its top 23 bits
+ * (r_tex_depth_value) */
+static void copy_source_depth_row(const struct fgl_framebuffer *fb, size_t src, float *t, int n)
+{
+   switch (fb->ZSFormat) {
+   case R_ZS_Z16:
+      for (int i = 0; i < n; i++)
+         t[i] = (float)((const uint16_t *)fb->Depth)[src + (size_t)i] * (float)(1.0 / 65535.0);
+      break;
+   case R_ZS_Z32:
+      for (int i = 0; i < n; i++)
+         t[i] = r_tex_depth_value(((const uint32_t *)fb->Depth)[src + (size_t)i], 32);
+      break;
+   default:
+      for (int i = 0; i < n; i++)
+         t[i] = (float)(((const uint32_t *)fb->Depth)[src + (size_t)i] & 0xffffffu) *
+                (float)(1.0 / 16777215.0);
+      break;
+   }
+}
+
+static void copy_source_stencil_row(const struct fgl_framebuffer *fb, size_t src, uint8_t *s,
+                                    int n)
+{
+   if (fb->ZSFormat == R_ZS_S8)
+      memcpy(s, fb->Stencil + src, (size_t)n);
+   else
+      for (int i = 0; i < n; i++)
+         s[i] = (uint8_t)(((const uint32_t *)fb->Depth)[src + (size_t)i] >> 24);
+}
+
 /* [S: st_cb_drawpixels.c:st_CopyPixels] */
 static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, int height,
                         int dstx, int dsty, GLenum type)
@@ -1231,36 +1292,14 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       return;
    }
    for (int j = 0; j < rh; j++) {
-      for (int i = 0; i < rw; i++) {
-         const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)(rx + i);
-         const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)(skip_px + i);
-         if (color) {
-            /* the texture has the colour buffer's format: a wide target
-             * samples as unorm16 * (float)(1 / 65535) or as its floats */
-            for (int c = 0; c < 4; c++)
-               t[4 * dst + c] =
-                  fb->WideFormat == R_WIDE_FLOAT
-                     ? ((const float *)fb->Wide)[4 * src + c]
-                  : fb->WideFormat == R_WIDE_UNORM16
-                     ? (float)((const uint16_t *)fb->Wide)[4 * src + c] * (float)(1.0 / 65535.0)
-                     : (float)read_color[4 * src + c] * (float)(1.0 / 255.0);
-         }
-         if (depth) {
-            /* the depth texture (the buffer's format) sampled: unorm to
-             * float, value * (float)(1 / (2^n - 1)); a Z32_UNORM one
-             * through its top 23 bits (r_tex_depth_value) */
-            if (fb->ZSFormat == R_ZS_Z16)
-               t[dst] = (float)((uint16_t *)fb->Depth)[src] * (float)(1.0 / 65535.0);
-            else if (fb->ZSFormat == R_ZS_Z32)
-               t[dst] = r_tex_depth_value(((uint32_t *)fb->Depth)[src], 32);
-            else
-               t[dst] = (float)(((uint32_t *)fb->Depth)[src] & 0xffffffu) *
-                        (float)(1.0 / 16777215.0);
-         }
-         if (stencil)
-            s[dst] = fb->ZSFormat == R_ZS_S8 ? fb->Stencil[src]
-                                             : (uint8_t)(((uint32_t *)fb->Depth)[src] >> 24);
-      }
+      const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)rx;
+      const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)skip_px;
+      if (color)
+         copy_source_color_row(fb, read_color, src, t + 4 * dst, rw);
+      else if (depth)
+         copy_source_depth_row(fb, src, t + dst, rw);
+      else
+         copy_source_stencil_row(fb, src, s + dst, rw);
    }
 
    struct r_pixel_image img = { .width = width, .height = height, .texels = t, .mask = s };
