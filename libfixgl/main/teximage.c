@@ -1539,35 +1539,20 @@ void GLAPIENTRY glTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GL
 /* glCopyTexImage, glCopyTexSubImage                                  */
 /* ------------------------------------------------------------------ */
 
-/* Texel `at` of img, a format wider than 8 bits a channel, copied from
- * pixel `idx` of the wide target of an OSMesa GL_UNSIGNED_SHORT or
- * GL_FLOAT buffer (st_CopyTexSubImage's blit): the source as unorm16 (an
- * R16G16B16A16_UNORM buffer's values as they are; a float buffer's
- * converted by the blit's shader, clamped, m_gallivm_float_to_unorm16),
- * rebased, each channel of n > 8 bits its top n bits, one of fewer bits
- * util_iround(f * (2^n - 1)) of its float (case osmesa/ushort_copytex) */
-static void put_texel_wide(struct fgl_texture_image *img, size_t at,
-                           const struct fgl_framebuffer *fb, size_t idx)
+/* n texels of img from `at`, a format wider than 8 bits a channel, copied
+ * from pixels idx.. of the wide target of an OSMesa GL_UNSIGNED_SHORT or
+ * GL_FLOAT buffer (st_CopyTexSubImage's blit; case osmesa/ushort_copytex,
+ * ORACLE-NOTES.md "OSMesa contexts and buffers"): the source as unorm16
+ * (an R16G16B16A16_UNORM buffer's values as they are; a float buffer's
+ * clamped and converted by the blit's shader,
+ * m_gallivm_float_to_unorm16), rebased, each channel of n > 8 bits its
+ * top n bits, one of fewer bits util_iround(f * (2^n - 1)) of its float.
+ * The buffer's format and the rebase are chosen once per call. */
+static void put_texels_wide(struct fgl_texture_image *img, size_t at,
+                            const struct fgl_framebuffer *fb, size_t idx, size_t n)
 {
-   float f[4];
-   uint16_t q[4];
-   for (int c = 0; c < 4; c++) {
-      if (fb->WideFormat == R_WIDE_UNORM16) {
-         q[c] = ((const uint16_t *)fb->Wide)[4 * idx + (size_t)c];
-         f[c] = (float)q[c] * (1.0f / 65535.0f);
-      } else {
-         const float v = ((const float *)fb->Wide)[4 * idx + (size_t)c];
-         f[c] = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-         q[c] = m_gallivm_float_to_unorm16(f[c]);
-      }
-   }
-   if (fb->AlphaBits == 0) {
-      q[3] = 65535;
-      f[3] = 1.0f;
-   }
-   /* rebase_texel on the unorm16 values and floats */
-   uint16_t tq[4];
-   float tf[4];
+   /* rebase_texel as source channels: >= 0 a channel, -1 the constant 1,
+    * -2 the constant 0 */
    static const int pick[6][4] = {
       { 0, 0, 0, -1 }, { 0, 0, 0, 3 }, { 0, 0, 0, 0 }, { -2, -2, -2, 3 }, { 0, 1, 2, -1 },
       { 0, 1, 2, 3 },
@@ -1578,27 +1563,42 @@ static void put_texel_wide(struct fgl_texture_image *img, size_t at,
                   : img->BaseFormat == GL_ALPHA           ? pick[3]
                   : img->BaseFormat == GL_RGB             ? pick[4]
                                                           : pick[5];
-   for (int c = 0; c < 4; c++) {
-      tq[c] = p[c] >= 0 ? q[p[c]] : p[c] == -1 ? 65535 : 0;
-      tf[c] = p[c] >= 0 ? f[p[c]] : p[c] == -1 ? 1.0f : 0.0f;
-   }
-   uint16_t *store = img->Store + 4 * at;
-   uint8_t *data = img->Data + 4 * at;
-   for (int c = 0; c < 4; c++) {
-      const unsigned bits = img->StoreBits[c];
-      unsigned v;
-      if (bits == 0) {
-         v = tq[c] ? 1 : 0;
-         store[c] = (uint16_t)v;
-         data[c] = v ? 255 : 0;
-         continue;
+   const bool unorm16 = fb->WideFormat == R_WIDE_UNORM16;
+   const int nch = fb->AlphaBits == 0 ? 3 : 4;   /* alpha 1 without alpha bits */
+   for (size_t k = 0; k < n; k++) {
+      float f[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+      uint16_t q[4] = { 65535, 65535, 65535, 65535 };
+      if (unorm16) {
+         const uint16_t *src = (const uint16_t *)fb->Wide + 4 * (idx + k);
+         for (int c = 0; c < nch; c++) {
+            q[c] = src[c];
+            f[c] = (float)q[c] * (1.0f / 65535.0f);
+         }
+      } else {
+         const float *src = (const float *)fb->Wide + 4 * (idx + k);
+         for (int c = 0; c < nch; c++) {
+            f[c] = src[c] > 0.0f ? (src[c] < 1.0f ? src[c] : 1.0f) : 0.0f;
+            q[c] = m_gallivm_float_to_unorm16(f[c]);
+         }
       }
-      if (bits > 8)
-         v = (unsigned)tq[c] >> (16u - bits);
-      else
-         v = (unsigned)(int)(tf[c] * (float)((1u << bits) - 1u) + 0.5f);
-      store[c] = (uint16_t)v;
-      data[c] = expand_to_8(v, bits);
+      uint16_t *store = img->Store + 4 * (at + k);
+      uint8_t *data = img->Data + 4 * (at + k);
+      for (int c = 0; c < 4; c++) {
+         const uint16_t tq = p[c] >= 0 ? q[p[c]] : p[c] == -1 ? 65535 : 0;
+         const float tf = p[c] >= 0 ? f[p[c]] : p[c] == -1 ? 1.0f : 0.0f;
+         const unsigned bits = img->StoreBits[c];
+         unsigned v;
+         if (bits == 0) {
+            v = tq ? 1 : 0;
+            store[c] = (uint16_t)v;
+            data[c] = v ? 255 : 0;
+            continue;
+         }
+         v = bits > 8 ? (unsigned)tq >> (16u - bits)
+                      : (unsigned)(int)(tf * (float)((1u << bits) - 1u) + 0.5f);
+         store[c] = (uint16_t)v;
+         data[c] = expand_to_8(v, bits);
+      }
    }
 }
 
@@ -1652,8 +1652,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
          ((size_t)zoff * (size_t)img->Height + (size_t)(yoff + j)) * (size_t)img->Width +
          (size_t)xoff;
       if (wide) {
-         for (GLint i = 0; i < w; i++)
-            put_texel_wide(img, at + (size_t)i, fb, row * (size_t)fb->Width + (size_t)(x + i));
+         put_texels_wide(img, at, fb, row * (size_t)fb->Width + (size_t)x, (size_t)w);
          continue;
       }
       for (GLint i = 0; i < w; i++) {
