@@ -209,6 +209,8 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
    if (ctx->DrawBuffer != fb)
       fgl_vpcut_invalidate(ctx);
    ctx->DrawBuffer = fb;
+   if (!fb || fb == ctx->ReadFb)
+      ctx->ReadFb = NULL;
    ctx->NewState |= FGL_NEW_BUFFERS;
    fgl_select_color_buffer(ctx);   /* a separate front buffer: the one drawn */
    /* Like _mesa_make_current (_mesa_check_init_viewport): the first
@@ -218,6 +220,11 @@ void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffe
       fgl_set_viewport(ctx, 0, 0, fb->Width, fb->Height);
       fgl_set_scissor(ctx, 0, 0, fb->Width, fb->Height);
    }
+}
+
+void fgl_context_bind_read_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb)
+{
+   ctx->ReadFb = fb == ctx->DrawBuffer ? NULL : fb;
 }
 
 void fgl_flush_vertices(struct fgl_context *ctx)

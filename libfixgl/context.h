@@ -597,6 +597,10 @@ struct fgl_framebuffer {
    uint8_t *Other;
    bool FrontIsColor;
    bool OtherDefined;
+   /* GL_FRONT_AND_BACK or GL_LEFT with a separate front: every colour
+    * write goes to Color and Other (main/buffers.c "Both buffers"; set by
+    * fgl_select_color_buffer) */
+   bool DrawBoth;
    bool ColorR8G8B8A8;        /* the oracle's colour buffer format is R8G8B8A8_UNORM
                                * (OSMESA_RGBA), which glReadPixels packs from
                                * by other rules than B8G8R8A8 etc. */
@@ -1028,6 +1032,16 @@ struct fgl_context {
    /* the raster state of the smooth point [0] and line [1] quads (each
     * zero while its smoothing is off), validated with _Raster */
    struct r_state _RasterAA[2];
+   /* the draws into both buffers (fb->DrawBoth; main/buffers.c "Both
+    * buffers"): the raster state of the other buffer for the primitive
+    * being drawn, made from its r_state (same objects, but the colour is
+    * fb->Other and depth and stencil are tested, not written); its fb
+    * and dsa objects are these copies, not the cache's */
+   struct fgl_both_target {
+      struct r_state rs;
+      struct r_fb_state fb;
+      struct r_dsa_state dsa;
+   } _Both;
    /* llvmpipe's draw region under point attenuation is state
     * (ORACLE-NOTES.md "Point parameters", "The cut is state"; probe
     * p_vpcut_state): _VpCutDirty is set when a draw validates another
@@ -1081,6 +1095,11 @@ struct fgl_context {
 
    /* ---- framebuffer ---- */
    struct fgl_framebuffer *DrawBuffer;
+   /* the framebuffer read from (glReadPixels, glCopyPixels,
+    * glCopyTexImage, glAccum) when it is another one than DrawBuffer (a
+    * separate read drawable: glXMakeContextCurrent), else NULL; see
+    * fgl_read_fb */
+   struct fgl_framebuffer *ReadFb;
    bool ViewportInitialized;
 };
 
@@ -1095,6 +1114,12 @@ void fgl_set_current(struct fgl_context *ctx);
 struct fgl_context *fgl_context_create(struct fgl_context *share);
 void fgl_context_destroy(struct fgl_context *ctx);
 void fgl_context_bind_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb);
+/* The framebuffer ctx reads from: fb, or the draw framebuffer when fb is
+ * NULL or the same (context.c). */
+void fgl_context_bind_read_framebuffer(struct fgl_context *ctx, struct fgl_framebuffer *fb);
+/* The framebuffer the read operations read (ReadFb or DrawBuffer), its
+ * lazy clears written (main/buffers.c). */
+struct fgl_framebuffer *fgl_read_fb(const struct fgl_context *ctx);
 
 /* Record a GL error; the first one since the last glGetError wins. */
 void fgl_error(struct fgl_context *ctx, GLenum error);
@@ -1143,6 +1168,19 @@ void fgl_fog_uniforms(const struct fgl_context *ctx, struct r_fs_state *fs);
 _Static_assert(FGL_MAX_THREADS == R_SAMPLE_SLOTS, "a query counter per thread");
 unsigned fgl_num_threads(void);
 void fgl_scene_flush(struct fgl_context *ctx);
+/* Draws into both buffers (fb->DrawBoth, main/buffers.c): what the
+ * scene holds drawn and every lazy clear written (the primitive is then
+ * drawn directly), fb->Other marked defined, and the raster state of the
+ * other buffer for a primitive of the state rs returned. */
+const struct r_state *fgl_both_begin(struct fgl_context *ctx, const struct r_state *rs);
+/* A draw or clear is validated with the colour buffer bound: Mesa's
+ * rb->defined of each buffer drawn (see ColorDefined). */
+static inline void fgl_mark_color_defined(struct fgl_framebuffer *fb)
+{
+   fb->ColorDefined = true;
+   if (fb->DrawBoth)
+      fb->OtherDefined = true;
+}
 /* Frees the scenes (after a flush). */
 void fgl_scene_fini(struct fgl_context *ctx);
 /* fgl_scene_flush, then the framebuffer's FlushFront (glFlush, glFinish):

@@ -397,6 +397,12 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
 {
    if (ctx->_VpCutDirty)
       fgl_vpcut_decide(ctx, false);
+   if (ctx->DrawBuffer && ctx->DrawBuffer->DrawBoth) {
+      /* into both buffers, directly (main/buffers.c "Both buffers") */
+      r_triangle(fgl_both_begin(ctx, rs), v0, v1, v2);
+      r_triangle(rs, v0, v1, v2);
+      return;
+   }
    if (ctx->_NumThreads == 1) {
       /* (its box's lazy clears are written by rasterize_ccw: rs->lazy) */
       r_triangle(rs, v0, v1, v2);
@@ -416,6 +422,12 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
 {
    if (ctx->_VpCutDirty)
       fgl_vpcut_decide(ctx, false);
+   if (ctx->DrawBuffer && ctx->DrawBuffer->DrawBoth) {
+      /* into both buffers, directly (main/buffers.c "Both buffers") */
+      r_line(fgl_both_begin(ctx, rs), v0, v1);
+      r_line(rs, v0, v1);
+      return;
+   }
    if (ctx->_NumThreads == 1) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_line(rs, v0, v1);
@@ -435,6 +447,12 @@ void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
 {
    if (ctx->_VpCutDirty)
       fgl_vpcut_decide(ctx, false);
+   if (ctx->DrawBuffer && ctx->DrawBuffer->DrawBoth) {
+      /* into both buffers, directly (main/buffers.c "Both buffers") */
+      r_point(fgl_both_begin(ctx, rs), v);
+      r_point(rs, v);
+      return;
+   }
    if (ctx->_NumThreads == 1) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_point(rs, v);
@@ -456,6 +474,8 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    const bool fb_match = fb && rs->fb->color == fb->Color && rs->fb->width == fb->Width &&
                          rs->fb->height == fb->Height;
+   if (color && fb && fb->DrawBoth)   /* the other buffer now (main/buffers.c) */
+      r_clear_color(fgl_both_begin(ctx, rs), rgba);
    if (ctx->_NumThreads > 1) {
       /* a clear with nothing binned before it (a frame's first) is lazy
        * too: the tiles that the scene then draws write it first

@@ -8,8 +8,7 @@
  * the window's image), glFlush/glFinish show it in the window when it
  * was drawn into, glXSwapBuffers shows the back buffer and leaves the
  * front as it was, and the back keeps its image after the swap.
- * (GL_FRONT_AND_BACK, which draws into both, is not in the sequence:
- * fixgl draws into the back only.)
+ * (GL_FRONT_AND_BACK and GL_LEFT, which draw into both: frontback.c.)
  *
  *   frontbuf --out FILE.ppm
  */

@@ -174,6 +174,7 @@ def cmd_compare(libgl_dir, out_dir, name, program):
         raise Fail(f"{program[0]} is missing")
     os.makedirs(out_dir, exist_ok=True)
     paths = {}
+    said = {}
     for which in ("mesa", "fixgl"):
         xvfb, display = start_xvfb()
         try:
@@ -182,8 +183,12 @@ def cmd_compare(libgl_dir, out_dir, name, program):
                 os.remove(paths[which])
             out = run(program + ["--out", paths[which]], env_for(which, display, libgl_dir))
             check_renderer(out, which, name)
+            # lines starting "= " (GL state, errors, counts) must be equal too
+            said[which] = [l for l in out.splitlines() if l.startswith("= ")]
         finally:
             stop(xvfb)
+    if said["mesa"] != said["fixgl"]:
+        raise Fail(f"{name}: Mesa printed {said['mesa']}, fixgl {said['fixgl']}")
     compare_images(name, paths["mesa"], paths["fixgl"])
 
 
@@ -223,6 +228,7 @@ def cmd_glxgears(libgl_dir, out_dir, frozen, grab):
         raise Fail("glxgears is not installed (Debian package mesa-utils)")
     os.makedirs(out_dir, exist_ok=True)
     paths = {}
+    said = {}
     for which in ("mesa", "fixgl"):
         xvfb, display = start_xvfb()
         env = env_for(which, display, libgl_dir)

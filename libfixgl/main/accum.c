@@ -179,7 +179,8 @@ static void unpack_color(const struct fgl_framebuffer *fb, const uint8_t *color,
 /* rgba packed into the colour buffer at pixel `idx` (nch channels: 3 for
  * the RGB formats), into the wide target and its RGBA8 image where there
  * is one */
-static void pack_color(struct fgl_framebuffer *fb, size_t idx, const float rgba[4], int nch)
+static void pack_color(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, const float rgba[4],
+                       int nch)
 {
    if (fb->WideFormat == R_WIDE_UNORM16) {
       uint16_t *dst = (uint16_t *)fb->Wide + 4 * idx;
@@ -190,7 +191,7 @@ static void pack_color(struct fgl_framebuffer *fb, size_t idx, const float rgba[
       for (int c = 0; c < nch; c++)
          dst[c] = rgba[c];
    }
-   uint8_t *col = fb->Color + 4 * idx;
+   uint8_t *col = color + 4 * idx;
    for (int c = 0; c < nch; c++)
       col[c] = float_to_ubyte(rgba[c]);
 }
@@ -240,21 +241,25 @@ static void accum_or_load(struct fgl_context *ctx, float value, bool load)
 }
 
 /* [S: main/accum.c:accum_return]: accum * (value / 32767) packed into the
- * draw buffer; a channel the colour mask disables keeps the buffer's colour
- * (unpacked and packed again); glDrawBuffer(GL_NONE) writes nothing */
-static void accum_return(struct fgl_context *ctx, float value)
+ * draw buffer `color` (each of them: both under fb->DrawBoth); a channel
+ * the colour mask disables keeps the buffer's colour (unpacked and packed
+ * again).  Row r takes the accumulation row r - skip (y-down): see
+ * accum_return for the second buffer; rows whose source would lie above
+ * the buffer are left as they are (the oracle reads outside its buffer
+ * there) */
+static void accum_return_into(struct fgl_context *ctx, uint8_t *color, float value, int skip)
 {
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   if (ctx->Color.DrawBuffer == GL_NONE)
-      return;
    int x0, x1, r0, r1;
    accum_region(ctx, &x0, &x1, &r0, &r1);
    const float scale = value / 32767.0f;
    const unsigned mask = ctx->Color.ColorMask & 0xfu;
    const int nch = fb->AlphaBits > 0 ? 4 : 3;
    for (int r = r0; r < r1; r++) {
+      if (r - skip < 0)
+         continue;
       const size_t first = (size_t)r * (size_t)fb->Width + (size_t)x0;
-      const int16_t *acc = fb->Accum + first * 4;
+      const int16_t *acc = fb->Accum + ((size_t)(r - skip) * (size_t)fb->Width + (size_t)x0) * 4;
       for (int x = x0; x < x1; x++, acc += 4) {
          const size_t idx = first + (size_t)(x - x0);
          float rgba[4];
@@ -262,14 +267,35 @@ static void accum_return(struct fgl_context *ctx, float value)
             rgba[c] = (float)acc[c] * scale;
          if (mask != 0xfu) {
             float dest[4];
-            unpack_color(fb, fb->Color, idx, dest);
+            unpack_color(fb, color, idx, dest);
             for (int c = 0; c < 4; c++)
                if (!(mask & (1u << c)))
                   rgba[c] = dest[c];
          }
-         pack_color(fb, idx, rgba, nch);
+         pack_color(fb, color, idx, rgba, nch);
       }
    }
+}
+
+/* glDrawBuffer(GL_NONE) writes nothing.  Into both buffers (fb->DrawBoth)
+ * the oracle's loop over the draw buffers writes the front (FRONT_LEFT,
+ * Other) first, then the back, without going back to the start of the
+ * region in the accumulation buffer it walks row by row: the back's row
+ * y (GL's, up) gets the accumulation row y + height of the region
+ * (ORACLE-NOTES.md "Both buffers") */
+static void accum_return(struct fgl_context *ctx, float value)
+{
+   struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   if (ctx->Color.DrawBuffer == GL_NONE)
+      return;
+   if (!fb->DrawBoth) {
+      accum_return_into(ctx, fb->Color, value, 0);
+      return;
+   }
+   int x0, x1, r0, r1;
+   accum_region(ctx, &x0, &x1, &r0, &r1);
+   accum_return_into(ctx, fb->Other, value, 0);
+   accum_return_into(ctx, fb->Color, value, r1 - r0);
 }
 
 void GLAPIENTRY glAccum(GLenum op, GLfloat value)
@@ -294,6 +320,12 @@ void GLAPIENTRY glAccum(GLenum op, GLfloat value)
    }
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    if (!fb || fb->AccumBits == 0) {
+      fgl_error(ctx, GL_INVALID_OPERATION);
+      return;
+   }
+   /* a separate read drawable (glXMakeContextCurrent): "different
+    * read/draw buffers" (ORACLE-NOTES.md "GLX read drawables") */
+   if (ctx->ReadFb) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }

@@ -99,6 +99,8 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
 
    const float zclip = (float)(ctx->Depth.Clear * 2.0f - 1.0f);
    const float z = fmaf(zclip, 0.5f, 0.5f);
+   if (ctx->DrawBuffer->DrawBoth)   /* the other buffer too (main/buffers.c) */
+      r_clear_quad(fgl_both_begin(ctx, &rs), z, ctx->Color.ClearColor);
    r_clear_quad(&rs, z, ctx->Color.ClearColor);
 }
 
@@ -127,7 +129,7 @@ void GLAPIENTRY glClear(GLbitfield mask)
    fgl_update_state(ctx);
    fgl_vpcut_validate(ctx, false);   /* ST_PIPELINE_CLEAR: the scissor */
    if (ctx->Color.DrawBuffer != GL_NONE)
-      ctx->DrawBuffer->ColorDefined = true;
+      fgl_mark_color_defined(ctx->DrawBuffer);
 
    /* Which buffers take a plain clear and which a quad
     * [S: main/clear.c:clear; state_tracker/st_cb_clear.c:st_Clear].

@@ -184,6 +184,18 @@ static void pixel_texcoords(struct fgl_context *ctx, struct r_pixel_image *img,
    }
 }
 
+/* t_pixel_rect into the draw buffer, and first into the other one when
+ * both are drawn (main/buffers.c "Both buffers": a rectangle's two
+ * triangles share no pixel, so the whole rectangle goes to one buffer,
+ * then to the other) */
+static void pixel_rect(struct fgl_context *ctx, const struct r_state *rs,
+                       const struct r_pixel_image *img, const struct t_pixel_quad *q)
+{
+   if (ctx->DrawBuffer && ctx->DrawBuffer->DrawBoth)
+      t_pixel_rect(fgl_both_begin(ctx, rs), img, q);
+   t_pixel_rect(rs, img, q);
+}
+
 /* Draws a bitmap texture of w x h texels at GL window (x, y) with the
  * state rs [S: st_cb_bitmap.c:draw_bitmap_quad]: texture coordinates 0..1,
  * t = 1 at the top edge. */
@@ -217,7 +229,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
     * the y1 corners */
    q.t_y1 = 1.0f;
    q.t_y0 = 0.0f;
-   t_pixel_rect(rs, &img, &q);
+   pixel_rect(ctx, rs, &img, &q);
 }
 
 void fgl_flush_bitmap_cache(struct fgl_context *ctx)
@@ -314,7 +326,7 @@ static void bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height, GLflo
          const int x = ifloor(ctx->Current.RasterPos[0] + eps - xorig);
          const int y = ifloor(ctx->Current.RasterPos[1] + eps - yorig);
          if (ctx->Color.DrawBuffer != GL_NONE)
-            fb->ColorDefined = true;
+            fgl_mark_color_defined(fb);
          if (tex)
             fgl_flush_bitmap_cache(ctx);
          /* the cache is drawn with the state validated last: this call's */
@@ -977,7 +989,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
          owned = false;
    }
    if (ctx->Color.DrawBuffer != GL_NONE)
-      fb->ColorDefined = true;
+      fgl_mark_color_defined(fb);
 
    struct r_pixel_image img = { .width = width, .height = height, .texels = texels,
                                 .mask = mask };
@@ -996,7 +1008,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
       color_transfer(ctx, &img);
    }
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
-   t_pixel_rect(&rs, &img, &q);
+   pixel_rect(ctx, &rs, &img, &q);
    if (owned) {
       fgl_free(texels);
       fgl_free(mask);
@@ -1148,6 +1160,8 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
          (ctx->Stencil.FailFunc != GL_KEEP || ctx->Stencil.ZPassFunc != GL_KEEP ||
           ctx->Stencil.ZFailFunc != GL_KEEP)) ||
         ctx->Color.DrawBuffer == GL_NONE ||
+        (fb && fb->DrawBoth) ||         /* _NumColorDrawBuffers 2 */
+        ctx->ReadFb ||                  /* another read framebuffer: the quad */
         ctx->Query.CurrentOcclusion))   /* the quad counts its samples */
       return false;
 
@@ -1174,7 +1188,7 @@ static bool blit_copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int wi
                           (ry_down + rh < dy_down + rh ? ry_down + rh : dy_down + rh));
    if (overlap)
       return false;
-   fb->ColorDefined = true;
+   fgl_mark_color_defined(fb);
    blit_rect(fb, fgl_read_color(ctx), rx, ry_down, drx, dy_down, rw, rh);
    return true;
 }
@@ -1251,16 +1265,18 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
    fgl_query_flushed(ctx);  /* the oracle's copy reads its buffer: a flush */
    if (blit_copy_pixels(ctx, srcx, srcy, width, height, dstx, dsty, type))
       return;
+   /* the source: the read framebuffer (a separate read drawable's) */
+   const struct fgl_framebuffer *rfb = fgl_read_fb(ctx);
 
    /* the source, y-down, into a width x height texture whose row 0 is
     * the top row; the part outside the framebuffer stays uninitialised
     * in the oracle (zero here).  A source wholly outside draws nothing. */
-   const long long ry64 = (long long)fb->Height - srcy - height;
+   const long long ry64 = (long long)rfb->Height - srcy - height;
    if (ry64 < INT_MIN || ry64 > INT_MAX)
       return;
    int rx = srcx, ry = (int)ry64, rw = width, rh = height;
    int skip_px = 0, skip_rows = 0;
-   if (!clip_readpixels(fb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
+   if (!clip_readpixels(rfb, &rx, &ry, &rw, &rh, &skip_px, &skip_rows))
       return;
    if (width > FGL_MAX_TEXTURE_SIZE || height > FGL_MAX_TEXTURE_SIZE) {
       /* larger than any texture: only the part of the source inside the
@@ -1292,14 +1308,14 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       return;
    }
    for (int j = 0; j < rh; j++) {
-      const size_t src = (size_t)(ry + j) * (size_t)fb->Width + (size_t)rx;
+      const size_t src = (size_t)(ry + j) * (size_t)rfb->Width + (size_t)rx;
       const size_t dst = (size_t)(skip_rows + j) * (size_t)width + (size_t)skip_px;
       if (color)
-         copy_source_color_row(fb, read_color, src, t + 4 * dst, rw);
+         copy_source_color_row(rfb, read_color, src, t + 4 * dst, rw);
       else if (depth)
-         copy_source_depth_row(fb, src, t + dst, rw);
+         copy_source_depth_row(rfb, src, t + dst, rw);
       else
-         copy_source_stencil_row(fb, src, s + dst, rw);
+         copy_source_stencil_row(rfb, src, s + dst, rw);
    }
 
    struct r_pixel_image img = { .width = width, .height = height, .texels = t, .mask = s };
@@ -1315,17 +1331,17 @@ static void copy_pixels(struct fgl_context *ctx, int srcx, int srcy, int width, 
       img.kind = R_PIX_COLOR;
       color_transfer(ctx, &img);
       if (ctx->Color.DrawBuffer != GL_NONE)
-         fb->ColorDefined = true;
+         fgl_mark_color_defined(fb);
    } else if (stencil) {
       img.kind = R_PIX_STENCIL;
       stencil_quad_state(ctx, &rs, &qo);
    } else {
       img.kind = R_PIX_DEPTH;
       if (ctx->Color.DrawBuffer != GL_NONE)
-         fb->ColorDefined = true;
+         fgl_mark_color_defined(fb);
    }
    pixel_texcoords(ctx, &img, tex_varying(ctx), false);
-   t_pixel_rect(&rs, &img, &q);
+   pixel_rect(ctx, &rs, &img, &q);
    fgl_free(t);
    fgl_free(s);
 }

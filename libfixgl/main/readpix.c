@@ -245,7 +245,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height,
       return;
    }
    fgl_query_flushed(ctx);   /* the oracle maps its buffer: a flush */
-   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const struct fgl_framebuffer *fb = fgl_read_fb(ctx);
    if (!fb)
       return;
    /* [S: readpix.c:read_pixels] the renderbuffer the format reads

@@ -1612,7 +1612,7 @@ static void put_texels_wide(struct fgl_texture_image *img, size_t at,
 static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, GLint xoff,
                         GLint yoff, GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h)
 {
-   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const struct fgl_framebuffer *fb = fgl_read_fb(ctx);
    if (!fb || !fb->Color)
       return;
    fgl_vpcut_invalidate(ctx);   /* the oracle reads its buffer: a flush */
@@ -1724,7 +1724,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
    }
    /* _mesa_get_read_renderbuffer_for_format: no colour read buffer under
     * glReadBuffer(GL_NONE); a depth format reads the depth buffer */
-   if (tf->base == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
+   if (tf->base == GL_DEPTH_COMPONENT ? !fgl_read_fb(ctx) || !fgl_read_fb(ctx)->Depth
                                       : ctx->Pixel.ReadBuffer == GL_NONE) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
@@ -1828,7 +1828,7 @@ static void copy_tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xo
        block_alignment_error(ctx, img, xoff, yoff, width, height))
       return;
    /* _mesa_source_buffer_exists */
-   if (img->BaseFormat == GL_DEPTH_COMPONENT ? !ctx->DrawBuffer || !ctx->DrawBuffer->Depth
+   if (img->BaseFormat == GL_DEPTH_COMPONENT ? !fgl_read_fb(ctx) || !fgl_read_fb(ctx)->Depth
                                              : ctx->Pixel.ReadBuffer == GL_NONE) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;

@@ -463,7 +463,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
       return;
    fgl_vpcut_validate(ctx, true);
    if (ctx->Color.DrawBuffer != GL_NONE)
-      ctx->DrawBuffer->ColorDefined = true;
+      fgl_mark_color_defined(ctx->DrawBuffer);
    fgl_update_stipple(ctx);
 
    /* LAZY_WINDOW: a batch of triangles and quads, in strips or not,

@@ -133,6 +133,9 @@ struct glx_drawable {
    int pb_width, pb_height;     /* a pbuffer's size as asked for */
    bool pb_largest;
    bool has_buffer;
+   /* a plain X window made current (not glXCreateWindow's): its buffers
+    * go when no context is bound to it any more (release_drawable) */
+   bool implicit;
    struct __GLXFBConfigRec cfg; /* the buffers' formats */
    void *depth_mem;
    /* presentation */
@@ -173,6 +176,7 @@ struct __GLXcontextRec {
    struct __GLXFBConfigRec cfg;
    GLXDrawable draw, read;
    struct glx_drawable *bound;  /* the drawable its GL context draws into */
+   struct glx_drawable *read_bound;  /* ... reads from, when another one */
    struct __GLXcontextRec *next;
 };
 
@@ -1060,12 +1064,18 @@ static void unbind_contexts(struct glx_display *gd, const struct glx_drawable *d
    GLXContext cur = current_context();
    pthread_mutex_lock(&gd->lock);
    for (GLXContext c = gd->contexts; c; c = c->next) {
+      if (c->read_bound && (!d || c->read_bound == d)) {
+         /* (reads from the draw drawable from now on) */
+         fgl_context_bind_read_framebuffer(c->gl, NULL);
+         c->read_bound = NULL;
+      }
       if (!c->bound || (d && c->bound != d))
          continue;
       if (c == cur)
          fgl_scene_flush(c->gl);
-      fgl_context_bind_framebuffer(c->gl, NULL);
+      fgl_context_bind_framebuffer(c->gl, NULL);   /* (and no read one) */
       c->bound = NULL;
+      c->read_bound = NULL;
    }
    pthread_mutex_unlock(&gd->lock);
 }
@@ -1387,6 +1397,26 @@ GLXAPI void glXDestroyContext(Display *dpy, GLXContext ctx)
    fgl_free(ctx);
 }
 
+/* A context bound to other drawables lets go of the ones it was bound to
+ * (glXMakeCurrent(dpy, None, NULL) does not): the oracle's GLX then
+ * destroys the DRI drawable of a plain X window that no context is bound
+ * to any more, and its buffers with it; bound again, it has new ones,
+ * black, with a zero depth buffer (ORACLE-NOTES.md "GLX read drawables";
+ * glXCreateWindow windows, pixmaps and pbuffers keep theirs).  Their
+ * drawing was finished when the context left them. */
+static void release_drawable(struct glx_display *gd, struct glx_drawable *d)
+{
+   if (!d || !d->implicit || !d->has_buffer)
+      return;
+   bool held = false;
+   pthread_mutex_lock(&gd->lock);
+   for (GLXContext c = gd->contexts; c && !held; c = c->next)
+      held = c->bound == d || c->read_bound == d;
+   pthread_mutex_unlock(&gd->lock);
+   if (!held)
+      free_buffers(d);
+}
+
 GLXAPI Bool glXMakeContextCurrent(Display *dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx)
 {
    GLXContext cur = current_context();
@@ -1406,7 +1436,9 @@ GLXAPI Bool glXMakeContextCurrent(Display *dpy, GLXDrawable draw, GLXDrawable re
        (d->cfg.visualid != ctx->cfg.visualid || d->pixmap)) {
       return False;   /* BadMatch: another visual */
    }
-   if (!d && !(d = add_drawable(gd, draw, &ctx->cfg, false)))
+   if (!d && (d = add_drawable(gd, draw, &ctx->cfg, false)) != NULL)
+      d->implicit = true;
+   if (!d)
       return False;
    /* like _mesa_make_current, finish the work of the previous binding */
    if (cur && (cur != ctx || cur->bound != d))
@@ -1419,11 +1451,37 @@ GLXAPI Bool glXMakeContextCurrent(Display *dpy, GLXDrawable draw, GLXDrawable re
    }
    if (!update_size(d, NULL))
       return False;
+   /* a separate read drawable (GLX 1.3): glReadPixels, glCopyPixels,
+    * glCopyTexImage and glAccum read its buffers (main/buffers.c
+    * fgl_read_fb); of the context's config too */
+   struct glx_drawable *rd = NULL;
+   if (read != None && read != draw) {
+      rd = find_drawable(gd, read);
+      if (rd && memcmp(&rd->cfg, &ctx->cfg, sizeof(rd->cfg)) != 0 &&
+          (rd->cfg.visualid != ctx->cfg.visualid || rd->pixmap))
+         return False;   /* BadMatch */
+      if (!rd && (rd = add_drawable(gd, read, &ctx->cfg, false)) != NULL)
+         rd->implicit = true;
+      if (!rd)
+         return False;
+      if (memcmp(&rd->cfg, &ctx->cfg, sizeof(rd->cfg)) != 0) {
+         rd->cfg = ctx->cfg;
+         free_buffers(rd);
+      }
+      if (!update_size(rd, NULL))
+         return False;
+   }
+   struct glx_drawable *const old_draw = ctx->bound, *const old_read = ctx->read_bound;
    ctx->dpy = dpy;
    ctx->draw = draw;
    ctx->read = read;
    ctx->bound = d;
+   ctx->read_bound = rd;
    fgl_context_bind_framebuffer(ctx->gl, &d->fb);
+   fgl_context_bind_read_framebuffer(ctx->gl, rd ? &rd->fb : NULL);
+   release_drawable(gd, old_draw);
+   if (old_read != old_draw)
+      release_drawable(gd, old_read);
    fgl_set_current(ctx->gl);
    current_glx = ctx;
    return True;
@@ -1489,7 +1547,8 @@ GLXAPI void glXSwapBuffers(Display *dpy, GLXDrawable drawable)
 {
    struct glx_display *gd = get_display(dpy);
    struct glx_drawable *d = gd ? find_drawable(gd, drawable) : NULL;
-   if (!d || !d->cfg.db)
+   /* (a plain window no context is bound to has no buffers: release_drawable) */
+   if (!d || !d->cfg.db || !d->has_buffer)
       return;
    GLXContext cur = current_context();
    struct fgl_context *ctx = cur && cur->bound == d ? cur->gl : NULL;
