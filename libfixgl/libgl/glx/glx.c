@@ -1583,8 +1583,10 @@ GLXAPI GLXWindow glXCreateWindow(Display *dpy, GLXFBConfig config, Window win, c
    struct glx_display *gd = get_display(dpy);
    if (!gd || !config || win == None)
       return None;
-   if (!find_drawable(gd, win) && !add_drawable(gd, win, config, false))
+   struct glx_drawable *d = find_drawable(gd, win);
+   if (!d && !(d = add_drawable(gd, win, config, false)))
       return None;
+   d->implicit = false;   /* a GLX window keeps its buffers (release_drawable) */
    return win;
 }
 
