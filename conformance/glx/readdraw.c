@@ -9,7 +9,8 @@
  * (an error); B's back read once B is the read drawable again, B's
  * window after the swap; A read after the context left it (its buffers
  * gone: black) and after a second context bound B while the first stayed
- * on A (kept); all into one PPM.
+ * on A (kept); a glXCreateWindow window and a pbuffer read the same way
+ * after their context left them (kept); all into one PPM.
  *
  *   readdraw --out FILE.ppm
  */
@@ -226,7 +227,57 @@ int main(int argc, char **argv)
    glXMakeCurrent(dpy, a, ctx);
    grab_buffer(GL_BACK, AW, AH);
 
+   /* GLX 1.3 drawables keep their buffers: a pbuffer and a glXCreateWindow
+    * window drawn, left for B, then read through (B, drawable) */
+   int fbattrs[] = { GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DRAWABLE_TYPE,
+                     GLX_WINDOW_BIT | GLX_PBUFFER_BIT, GLX_DOUBLEBUFFER, True, GLX_RED_SIZE, 8,
+                     GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_X_VISUAL_TYPE, GLX_TRUE_COLOR, None };
+   int n = 0;
+   GLXFBConfig *cf = glXChooseFBConfig(dpy, DefaultScreen(dpy), fbattrs, &n);
+   if (!cf || n < 1) {
+      fprintf(stderr, "readdraw: no FBConfig\n");
+      return 1;
+   }
+   XVisualInfo *cvi = glXGetVisualFromFBConfig(dpy, cf[0]);
+   XSetWindowAttributes swa;
+   swa.colormap = XCreateColormap(dpy, RootWindow(dpy, cvi->screen), cvi->visual, AllocNone);
+   swa.border_pixel = 0;
+   Window xc = XCreateWindow(dpy, RootWindow(dpy, cvi->screen), 0, 0, AW, AH, 0, cvi->depth,
+                             InputOutput, cvi->visual, CWColormap | CWBorderPixel, &swa);
+   Window xd = XCreateWindow(dpy, RootWindow(dpy, cvi->screen), 0, 0, BW, BH, 0, cvi->depth,
+                             InputOutput, cvi->visual, CWColormap | CWBorderPixel, &swa);
+   XMapWindow(dpy, xc);
+   XMapWindow(dpy, xd);
+   XSync(dpy, False);
+   GLXWindow gw = glXCreateWindow(dpy, cf[0], xc, NULL);
+   int pbattrs[] = { GLX_PBUFFER_WIDTH, AW, GLX_PBUFFER_HEIGHT, AH, None };
+   GLXPbuffer pb = glXCreatePbuffer(dpy, cf[0], pbattrs);
+   GLXContext nc = glXCreateNewContext(dpy, cf[0], GLX_RGBA_TYPE, NULL, True);
+   if (!gw || !pb || !nc || !glXMakeContextCurrent(dpy, gw, gw, nc)) {
+      fprintf(stderr, "readdraw: no GLX 1.3 drawables\n");
+      return 1;
+   }
+   setup_view(AW, AH);
+   glClearColor(0.7f, 0.2f, 0.5f, 1);
+   glClear(GL_COLOR_BUFFER_BIT);
+   shaded_tri(10, 6, 36, 0);
+   glXMakeContextCurrent(dpy, pb, pb, nc);
+   setup_view(AW, AH);
+   glClearColor(0.1f, 0.5f, 0.5f, 1);
+   glClear(GL_COLOR_BUFFER_BIT);
+   shaded_tri(2, 12, 30, 0);
+   glXMakeContextCurrent(dpy, xd, xd, nc);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glXMakeContextCurrent(dpy, xd, gw, nc);
+   grab_buffer(GL_BACK, AW, AH);
+   glXMakeContextCurrent(dpy, xd, pb, nc);
+   grab_buffer(GL_BACK, AW, AH);
+
    glXMakeCurrent(dpy, None, NULL);
+   glXDestroyContext(dpy, nc);
+   glXDestroyPbuffer(dpy, pb);
+   glXDestroyWindow(dpy, gw);
+   XFree(cf);
    glXDestroyContext(dpy, ctx2);
    glXDestroyContext(dpy, ctx);
    XDestroyWindow(dpy, a);
