@@ -155,12 +155,16 @@ static inline struct r_attr_plane make_plane(const struct setup_factors *f,
 
 #if defined(__SSE2__)
 _Static_assert(sizeof(struct r_attr_plane) == 3 * sizeof(float), "planes are packed");
+_Static_assert(offsetof(struct r_tri_setup, w) == offsetof(struct r_tri_setup, z) +
+               sizeof(struct r_attr_plane), "w follows z");
 
-/* make_plane on four attributes at once, lane c the plane of a0[c],
- * a1[c], a2[c]: the same float operations in the same order, each lane
- * rounded as the scalar one (mulps, subps, addps), written to p[0..3]. */
-static inline void make_planes4(const struct setup_factors *f, __m128 a0, __m128 a1,
-                                __m128 a2, struct r_attr_plane p[4])
+/* make_plane's float operations on four attributes at once, lane c
+ * those of a0[c], a1[c], a2[c], in the same order, each lane rounded as
+ * the scalar one (mulps, subps, addps). */
+static inline __attribute__((always_inline)) void plane_vectors(const struct setup_factors *f,
+                                                               __m128 a0, __m128 a1, __m128 a2,
+                                                               __m128 *c0_out, __m128 *dadx_out,
+                                                               __m128 *dady_out)
 {
    const __m128 da01 = _mm_sub_ps(a0, a1);
    const __m128 da20 = _mm_sub_ps(a2, a0);
@@ -168,8 +172,35 @@ static inline void make_planes4(const struct setup_factors *f, __m128 a0, __m128
                                   _mm_mul_ps(da20, _mm_set1_ps(f->dy01o)));
    const __m128 dady = _mm_sub_ps(_mm_mul_ps(da20, _mm_set1_ps(f->dx01o)),
                                   _mm_mul_ps(da01, _mm_set1_ps(f->dx20o)));
-   const __m128 c0 = _mm_sub_ps(a0, _mm_add_ps(_mm_mul_ps(dadx, _mm_set1_ps(f->x0c)),
-                                               _mm_mul_ps(dady, _mm_set1_ps(f->y0c))));
+   *c0_out = _mm_sub_ps(a0, _mm_add_ps(_mm_mul_ps(dadx, _mm_set1_ps(f->x0c)),
+                                       _mm_mul_ps(dady, _mm_set1_ps(f->y0c))));
+   *dadx_out = dadx;
+   *dady_out = dady;
+}
+
+/* The planes of lanes 2 and 3 only (z and w of four positions), written
+ * to ts->z and ts->w. */
+static inline void make_planes_zw(const struct setup_factors *f, __m128 a0, __m128 a1,
+                                  __m128 a2, struct r_tri_setup *ts)
+{
+   __m128 c0, dadx, dady;
+   plane_vectors(f, a0, a1, a2, &c0, &dadx, &dady);
+   const __m128 hi = _mm_unpackhi_ps(c0, dadx);                               /* a0.2 dx.2 a0.3 dx.3 */
+   const __m128 t2 = _mm_shuffle_ps(dady, c0, _MM_SHUFFLE(3, 3, 2, 2));       /* dy.2 dy.2 a0.3 a0.3 */
+   const __m128 t3 = _mm_shuffle_ps(dadx, dady, _MM_SHUFFLE(3, 3, 3, 3));     /* dx.3 dx.3 dy.3 dy.3 */
+   float *d = (float *)((char *)ts + offsetof(struct r_tri_setup, z));
+   _mm_storeu_ps(d, _mm_shuffle_ps(hi, t2, _MM_SHUFFLE(2, 0, 1, 0)));         /* a0.2 dx.2 dy.2 a0.3 */
+   _mm_storel_pi((__m64 *)(d + 4), _mm_shuffle_ps(t3, t3, _MM_SHUFFLE(2, 0, 2, 0)));  /* dx.3 dy.3 */
+}
+
+/* make_plane on four attributes at once, lane c the plane of a0[c],
+ * a1[c], a2[c]: the same float operations in the same order, each lane
+ * rounded as the scalar one (mulps, subps, addps), written to p[0..3]. */
+static inline void make_planes4(const struct setup_factors *f, __m128 a0, __m128 a1,
+                                __m128 a2, struct r_attr_plane p[4])
+{
+   __m128 c0, dadx, dady;
+   plane_vectors(f, a0, a1, a2, &c0, &dadx, &dady);
    /* to { a0, dadx, dady } per lane: 12 floats in a row */
    const __m128 lo = _mm_unpacklo_ps(c0, dadx);                               /* a0.0 dx.0 a0.1 dx.1 */
    const __m128 hi = _mm_unpackhi_ps(c0, dadx);                               /* a0.2 dx.2 a0.3 dx.3 */
@@ -204,14 +235,10 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    };
 
 #if defined(__SSE2__)
-   {
-      /* z and w together, lanes 0 and 1 */
-      struct r_attr_plane zw[4];
-      make_planes4(&f, _mm_loadu_ps(&v[0]->pos[0]), _mm_loadu_ps(&v[1]->pos[0]),
-                   _mm_loadu_ps(&v[2]->pos[0]), zw);
-      ts->z = zw[2];
-      ts->w = zw[3];
-   }
+   /* z and w together, lanes 2 and 3 of the positions (ts->w follows
+    * ts->z) */
+   make_planes_zw(&f, _mm_loadu_ps(&v[0]->pos[0]), _mm_loadu_ps(&v[1]->pos[0]),
+                  _mm_loadu_ps(&v[2]->pos[0]), ts);
 #else
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
    ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
