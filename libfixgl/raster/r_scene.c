@@ -302,15 +302,48 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
                       const struct r_vertex *v1, const struct r_vertex *v2)
 {
    /* binned into the tiles of the box r_triangle draws in, or not at all
-    * when it draws nothing (culled, empty) */
+    * when it draws nothing (culled, empty); an exact triangle (kind 1) is
+    * set up now, once, instead of in each tile it is drawn in */
+   if (!begin(s, rs))
+      return false;
+   const size_t mark_used = s->chunk_used, mark_bytes = s->bytes;
+   struct r_scene_chunk *const mark_chunk = s->chunk;
+   const uint32_t mark_states = s->nstates;
+   struct r_tri_binned *bin = scene_alloc(s, r_tri_binned_size(rs));
+   if (!bin)
+      return false;
    int box[4];
    struct r_tri_edges edges;
-   const int known = r_triangle_box(rs, v0, v1, v2, box, &edges);
-   if (known == 0)
-      return true;
-   const struct r_vertex *v[3] = { v0, v1, v2 };
-   return known == 1 ? add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, box, &edges)
-                     : add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL);
+   const int known = r_triangle_box_setup(rs, v0, v1, v2, box, &edges, bin);
+   if (known != 1) {
+      s->chunk = mark_chunk;
+      s->chunk_used = mark_used;
+      s->bytes = mark_bytes;
+      if (known == 0)
+         return true;
+      const struct r_vertex *v[3] = { v0, v1, v2 };
+      return add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL);
+   }
+   const uint32_t ci = new_cmd(s, rs, R_CMD_TRIANGLE);
+   if (ci == UINT32_MAX)
+      goto fail;
+   s->cmds[ci].tri = bin;
+   if (!bin_box(s, ci, box[0], box[1], box[2], box[3], &edges)) {
+      unbin(s, ci);
+      goto fail;
+   }
+   s->ncmds++;
+   return true;
+fail:
+   /* as it was: the setup and a state this command added dropped */
+   s->chunk = mark_chunk;
+   s->chunk_used = mark_used;
+   s->bytes = mark_bytes;
+   if (s->nstates > mark_states) {
+      s->nstates--;
+      r_state_release(&s->states[s->nstates]);
+   }
+   return false;
 }
 
 bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
@@ -439,7 +472,10 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
       }
       switch (c->kind) {
       case R_CMD_TRIANGLE:
-         r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
+         if (c->tri)
+            r_triangle_binned(&rs, c->tri);
+         else
+            r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
          break;
       case R_CMD_LINE:
          r_line(&rs, c->v[0], c->v[1]);

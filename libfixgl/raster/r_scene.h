@@ -5,12 +5,15 @@
  *
  * The vertex stage hands the scene what it would hand the raster core
  * (r_triangle, r_line, r_point with a draw's r_state, and whole-buffer
- * clears), in submission order.  The scene copies the vertices (the
- * attribute slots the state reads), keeps one copy of each distinct
- * r_state (holding its state objects, r_state_hold), and appends the
- * command to the bin of every tile its bounding box touches.
+ * clears), in submission order.  The scene sets a triangle up once, now
+ * (its edges, box and attribute planes: r_triangle_box_setup; the
+ * non-finite or huge ones excepted), or copies the vertices of the other
+ * primitives (the attribute slots the state reads), keeps one copy of
+ * each distinct r_state (holding its state objects, r_state_hold), and
+ * appends the command to the bin of every tile its bounding box touches.
  * r_scene_run_tile then replays one tile's commands in order with the
- * draw region cut to the tile.
+ * draw region cut to the tile (a triangle set up when binned is only
+ * rasterized there: r_triangle_binned).
  *
  * Why the result is the same bits for every thread count and every tile
  * order: a primitive's pixels depend on the primitive and the pixel alone
@@ -46,6 +49,20 @@ enum r_cmd_kind {
    R_CMD_CLEAR,
 };
 
+/* The scene's triangles are set up once, when they are binned (r_tri.c
+ * struct r_tri_binned: the edges, the snapped box and the attribute
+ * setup, none of which depends on the draw region): r_triangle_box_setup
+ * is r_triangle_box (r_state.h) that, for kind 1, also writes that setup
+ * into `bin` (r_tri_binned_size(rs) bytes, 16-aligned; NULL: not wanted),
+ * and r_triangle_binned draws it with rs (the binning state, its draw
+ * region cut to a tile): the pixels and bytes r_triangle draws with rs. */
+struct r_tri_binned;
+size_t r_tri_binned_size(const struct r_state *rs);
+int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                         const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
+                         struct r_tri_edges *edges, struct r_tri_binned *bin);
+void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *bin);
+
 struct r_cmd {
    uint8_t kind;
    /* R_CMD_CLEAR: which buffers, and the packed values (r_clear_color,
@@ -56,6 +73,9 @@ struct r_cmd {
    uint32_t zvalue;
    uint32_t state;                  /* index into r_scene.states */
    const struct r_vertex *v[3];
+   /* R_CMD_TRIANGLE set up when binned (r_triangle_box_setup), replayed
+    * by r_triangle_binned without its vertices; NULL: by r_triangle */
+   const struct r_tri_binned *tri;
 };
 
 struct r_bin {

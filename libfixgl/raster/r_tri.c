@@ -18,10 +18,14 @@
  * inside; on a right or top edge they are outside.
  */
 #include "r_kernel.h"
+#include "r_scene.h"
 
 #include <limits.h>
 #include <math.h>
 #include <stddef.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* cvtps2dq: round half to even; NaN and out-of-range values give INT32_MIN. */
 static inline int32_t cvt_rne_i32(float f)
@@ -149,6 +153,68 @@ static inline struct r_attr_plane make_plane(const struct setup_factors *f,
 }
 
 
+#if defined(__SSE2__)
+_Static_assert(sizeof(struct r_attr_plane) == 3 * sizeof(float), "planes are packed");
+_Static_assert(offsetof(struct r_tri_setup, w) == offsetof(struct r_tri_setup, z) +
+               sizeof(struct r_attr_plane), "w follows z");
+
+/* make_plane's float operations on four attributes at once, lane c
+ * those of a0[c], a1[c], a2[c], in the same order, each lane rounded as
+ * the scalar one (mulps, subps, addps). */
+static inline __attribute__((always_inline)) void plane_vectors(const struct setup_factors *f,
+                                                               __m128 a0, __m128 a1, __m128 a2,
+                                                               __m128 *c0_out, __m128 *dadx_out,
+                                                               __m128 *dady_out)
+{
+   const __m128 da01 = _mm_sub_ps(a0, a1);
+   const __m128 da20 = _mm_sub_ps(a2, a0);
+   const __m128 dadx = _mm_sub_ps(_mm_mul_ps(da01, _mm_set1_ps(f->dy20o)),
+                                  _mm_mul_ps(da20, _mm_set1_ps(f->dy01o)));
+   const __m128 dady = _mm_sub_ps(_mm_mul_ps(da20, _mm_set1_ps(f->dx01o)),
+                                  _mm_mul_ps(da01, _mm_set1_ps(f->dx20o)));
+   *c0_out = _mm_sub_ps(a0, _mm_add_ps(_mm_mul_ps(dadx, _mm_set1_ps(f->x0c)),
+                                       _mm_mul_ps(dady, _mm_set1_ps(f->y0c))));
+   *dadx_out = dadx;
+   *dady_out = dady;
+}
+
+/* The planes of lanes 2 and 3 only (z and w of four positions), written
+ * to ts->z and ts->w. */
+static inline void make_planes_zw(const struct setup_factors *f, __m128 a0, __m128 a1,
+                                  __m128 a2, struct r_tri_setup *ts)
+{
+   __m128 c0, dadx, dady;
+   plane_vectors(f, a0, a1, a2, &c0, &dadx, &dady);
+   const __m128 hi = _mm_unpackhi_ps(c0, dadx);                               /* a0.2 dx.2 a0.3 dx.3 */
+   const __m128 t2 = _mm_shuffle_ps(dady, c0, _MM_SHUFFLE(3, 3, 2, 2));       /* dy.2 dy.2 a0.3 a0.3 */
+   const __m128 t3 = _mm_shuffle_ps(dadx, dady, _MM_SHUFFLE(3, 3, 3, 3));     /* dx.3 dx.3 dy.3 dy.3 */
+   float *d = (float *)((char *)ts + offsetof(struct r_tri_setup, z));
+   _mm_storeu_ps(d, _mm_shuffle_ps(hi, t2, _MM_SHUFFLE(2, 0, 1, 0)));         /* a0.2 dx.2 dy.2 a0.3 */
+   _mm_storel_pi((__m64 *)(d + 4), _mm_shuffle_ps(t3, t3, _MM_SHUFFLE(2, 0, 2, 0)));  /* dx.3 dy.3 */
+}
+
+/* make_plane on four attributes at once, lane c the plane of a0[c],
+ * a1[c], a2[c]: the same float operations in the same order, each lane
+ * rounded as the scalar one (mulps, subps, addps), written to p[0..3]. */
+static inline void make_planes4(const struct setup_factors *f, __m128 a0, __m128 a1,
+                                __m128 a2, struct r_attr_plane p[4])
+{
+   __m128 c0, dadx, dady;
+   plane_vectors(f, a0, a1, a2, &c0, &dadx, &dady);
+   /* to { a0, dadx, dady } per lane: 12 floats in a row */
+   const __m128 lo = _mm_unpacklo_ps(c0, dadx);                               /* a0.0 dx.0 a0.1 dx.1 */
+   const __m128 hi = _mm_unpackhi_ps(c0, dadx);                               /* a0.2 dx.2 a0.3 dx.3 */
+   const __m128 t0 = _mm_shuffle_ps(dady, c0, _MM_SHUFFLE(1, 1, 0, 0));       /* dy.0 dy.0 a0.1 a0.1 */
+   const __m128 t1 = _mm_shuffle_ps(dadx, dady, _MM_SHUFFLE(1, 1, 1, 1));     /* dx.1 dx.1 dy.1 dy.1 */
+   const __m128 t2 = _mm_shuffle_ps(dady, c0, _MM_SHUFFLE(3, 3, 2, 2));       /* dy.2 dy.2 a0.3 a0.3 */
+   const __m128 t3 = _mm_shuffle_ps(dadx, dady, _MM_SHUFFLE(3, 3, 3, 3));     /* dx.3 dx.3 dy.3 dy.3 */
+   float *d = (float *)p;
+   _mm_storeu_ps(d, _mm_shuffle_ps(lo, t0, _MM_SHUFFLE(2, 0, 1, 0)));         /* a0.0 dx.0 dy.0 a0.1 */
+   _mm_storeu_ps(d + 4, _mm_shuffle_ps(t1, hi, _MM_SHUFFLE(1, 0, 2, 0)));     /* dx.1 dy.1 a0.2 dx.2 */
+   _mm_storeu_ps(d + 8, _mm_shuffle_ps(t2, t3, _MM_SHUFFLE(2, 0, 2, 0)));     /* dy.2 a0.3 dx.3 dy.3 */
+}
+#endif
+
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
  * the back-face slots for a back-facing two-sided triangle
  * (lp_state_setup.c:lp_twoside). */
@@ -168,7 +234,15 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
       .dx20o = dx20 * ooa, .dy20o = dy20 * ooa,
    };
 
+#if defined(__SSE2__)
+   /* z and w together, lanes 2 and 3 of the positions (ts->w follows
+    * ts->z) */
+   make_planes_zw(&f, _mm_loadu_ps(&v[0]->pos[0]), _mm_loadu_ps(&v[1]->pos[0]),
+                  _mm_loadu_ps(&v[2]->pos[0]), ts);
+#else
    ts->z = make_plane(&f, v[0]->pos[2], v[1]->pos[2], v[2]->pos[2]);
+   ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
+#endif
    /* [S: lp_state_setup.c:lp_do_offset_tri] (res1, res2) = cross(e, f).xy
     * of the setup-order edges; the larger slope is picked with an
     * unordered compare (NaN picks dzdx); offset = units + max * factor */
@@ -182,28 +256,34 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
       const float max = !(dzdx <= dzdy) ? dzdx : dzdy;
       ts->zoffset = rs->rast->offset_units + max * rs->rast->offset_scale;
    }
-   ts->w = make_plane(&f, v[0]->pos[3], v[1]->pos[3], v[2]->pos[3]);
    ts->quad_x = INT_MIN;   /* no quad cached */
    ts->quad_y = INT_MIN;
    ts->inputs = rs->fs->fs_inputs;
    ts->phong_back = phong_back;
-   ts->need_w = false;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(ts->inputs & (1u << a)))
-         continue;
+   bool need_w = false;
+   for (unsigned m = ts->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
       const int slot = r_fs_slot(a, back);
-      ts->flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
-      ts->need_w |= !ts->flat_attr[a];
-      for (int c = 0; c < 4; c++) {
-         if (ts->flat_attr[a]) {
-            ts->flat[a][c] = v[2]->attr[slot][c];
-         } else {
-            ts->ap[a][c] = make_plane(&f, v[0]->attr[slot][c] * v[0]->pos[3],
-                                          v[1]->attr[slot][c] * v[1]->pos[3],
-                                          v[2]->attr[slot][c] * v[2]->pos[3]);
-         }
+      const bool flat = (rs->flat_mask & (1u << slot)) != 0;
+      ts->flat_attr[a] = flat;
+      need_w |= !flat;
+      if (flat) {
+         memcpy(ts->flat[a], v[2]->attr[slot], sizeof(ts->flat[a]));
+         continue;
       }
+#if defined(__SSE2__)
+      make_planes4(&f, _mm_mul_ps(_mm_loadu_ps(v[0]->attr[slot]), _mm_set1_ps(v[0]->pos[3])),
+                   _mm_mul_ps(_mm_loadu_ps(v[1]->attr[slot]), _mm_set1_ps(v[1]->pos[3])),
+                   _mm_mul_ps(_mm_loadu_ps(v[2]->attr[slot]), _mm_set1_ps(v[2]->pos[3])),
+                   ts->ap[a]);
+#else
+      for (int c = 0; c < 4; c++)
+         ts->ap[a][c] = make_plane(&f, v[0]->attr[slot][c] * v[0]->pos[3],
+                                       v[1]->attr[slot][c] * v[1]->pos[3],
+                                       v[2]->attr[slot][c] * v[2]->pos[3]);
+#endif
    }
+   ts->need_w = need_w;
    if (__builtin_expect(rs->rast->sprite_coord_enable != 0, 0))
       r_zero_sprite_inputs(rs->rast, ts);
 }
@@ -554,31 +634,69 @@ static inline void snapped_box(const int32_t X[3], const int32_t Y[3], int32_t b
    b[3] = max3(Y[0], Y[1], Y[2]) >> 8;
 }
 
-/* The three edges of a counter-clockwise triangle (lp_setup_tri.c SSE
- * path); true when nothing in them wraps (see rasterize_direct). */
+/* Edge i of a counter-clockwise triangle, from vertex i (Xi, Yi) to vertex
+ * i + 1 (Xk, Yk) (lp_setup_tri.c SSE path); true when nothing in it wraps
+ * (see rasterize_direct). */
+static inline __attribute__((always_inline)) bool edge_plane(int32_t Xi, int32_t Yi, int32_t Xk,
+                                                             int32_t Yk, struct r_plane *p)
+{
+   const int32_t dcdx = sub_wrap(Yi, Yk);
+   const int32_t dcdy = sub_wrap(Xi, Xk);
+   /* -(1 << 22) < dcdx, dcdy < 1 << 22 */
+   const bool exact = Xi != INT32_MIN && Yi != INT32_MIN &&
+                      (uint32_t)dcdx + ((1u << 22) - 1u) < (1u << 23) - 1u &&
+                      (uint32_t)dcdy + ((1u << 22) - 1u) < (1u << 23) - 1u;
+   int64_t c = (int64_t)((uint64_t)imul64(dcdx, Xi) - (uint64_t)imul64(dcdy, Yi));
+   /* bottom-left fill convention (window buffers are y-down) */
+   if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+      c = add64(c, 1);
+   p->c = c;
+   p->dcdx = shl32(dcdx, 8);
+   p->dcdy = shl32(dcdy, 8);
+   /* trivial reject offset, 32 bits: the signs come from the unscaled
+    * steps, the values from the scaled ones */
+   p->eo = (uint32_t)(dcdy >= 0 ? p->dcdy : 0) - (uint32_t)(dcdx < 0 ? p->dcdx : 0);
+   return exact;
+}
+
+/* The three edges of a counter-clockwise triangle; true when nothing in
+ * them wraps. */
 static inline bool edge_planes(const int32_t X[3], const int32_t Y[3], struct r_plane p[3])
 {
-   bool exact = true;
-   for (int i = 0; i < 3; i++) {
-      const int k = (i + 1) % 3;
-      const int32_t dcdx = sub_wrap(Y[i], Y[k]);
-      const int32_t dcdy = sub_wrap(X[i], X[k]);
-      if (X[i] == INT32_MIN || Y[i] == INT32_MIN ||
-          dcdx <= -(1 << 22) || dcdx >= (1 << 22) || dcdy <= -(1 << 22) || dcdy >= (1 << 22))
-         exact = false;
-      int64_t c = (int64_t)((uint64_t)imul64(dcdx, X[i]) - (uint64_t)imul64(dcdy, Y[i]));
-      /* bottom-left fill convention (window buffers are y-down) */
-      if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
-         c = add64(c, 1);
-      p[i].c = c;
-      p[i].dcdx = shl32(dcdx, 8);
-      p[i].dcdy = shl32(dcdy, 8);
-      /* trivial reject offset, 32 bits: the signs come from the unscaled
-       * steps, the values from the scaled ones */
-      p[i].eo = (uint32_t)(dcdy >= 0 ? p[i].dcdy : 0) -
-                (uint32_t)(dcdx < 0 ? p[i].dcdx : 0);
+   const bool e0 = edge_plane(X[0], Y[0], X[1], Y[1], &p[0]);
+   const bool e1 = edge_plane(X[1], Y[1], X[2], Y[2], &p[1]);
+   const bool e2 = edge_plane(X[2], Y[2], X[0], Y[0], &p[2]);
+   return e0 & e1 & e2;
+}
+
+/* Whether the colour input of setup ts is flat (it chooses the kernel). */
+static inline bool tri_flat0(const struct r_tri_setup *ts)
+{
+   /* (flat_attr is set for the inputs only) */
+   return (ts->inputs & (1u << R_FS_COLOR0)) && ts->flat_attr[R_FS_COLOR0];
+}
+
+/* Draws an exact triangle (edge_planes true) of setup ts and edges p over
+ * its box trimmed to the draw region, tx0..tx1, ty0..ty1 (inclusive);
+ * t0: the time its setup started, when rs counts. */
+static inline void draw_exact(const struct r_state *rs, const struct r_tri_setup *ts, bool flat0,
+                              const struct r_plane *p, int32_t tx0, int32_t ty0, int32_t tx1,
+                              int32_t ty1, uint64_t t0)
+{
+   const r_tri_kernel kernel = rs->tri_kernel[flat0];
+   struct r_tri_cover cv;
+   const bool blocks = kernel && r_cover_planes(p, 3, tx0, ty0, tx1, ty1, &cv);
+   const uint64_t t1 = rs->stats ? r_stats_now() : 0;
+   if (blocks)
+      kernel(rs, ts, &cv);
+   else if (rs->fs->tex_units)
+      rasterize_direct_quads(rs, ts, p, tx0, ty0, tx1, ty1);
+   else
+      rasterize_direct(rs, ts, p, tx0, ty0, tx1, ty1);
+   if (rs->stats) {
+      rs->stats->setup_ns += t1 - t0;
+      rs->stats->raster_ns += r_stats_now() - t1;
    }
-   return exact;
 }
 
 /* Triangle setup and binning of a triangle whose snapped area is positive
@@ -614,22 +732,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
-      /* (flat_attr is set for the inputs only) */
-      const bool flat0 = (ts.inputs & (1u << R_FS_COLOR0)) && ts.flat_attr[R_FS_COLOR0];
-      const r_tri_kernel kernel = rs->tri_kernel[flat0];
-      struct r_tri_cover cv;
-      const bool blocks = kernel && r_cover_planes(p, 3, tx0, ty0, tx1, ty1, &cv);
-      const uint64_t t1 = rs->stats ? r_stats_now() : 0;
-      if (blocks)
-         kernel(rs, &ts, &cv);
-      else if (rs->fs->tex_units)
-         rasterize_direct_quads(rs, &ts, p, tx0, ty0, tx1, ty1);
-      else
-         rasterize_direct(rs, &ts, p, tx0, ty0, tx1, ty1);
-      if (rs->stats) {
-         rs->stats->setup_ns += t1 - t0;
-         rs->stats->raster_ns += r_stats_now() - t1;
-      }
+      draw_exact(rs, &ts, tri_flat0(&ts), p, tx0, ty0, tx1, ty1, t0);
       return;
    }
 
@@ -736,10 +839,26 @@ void r_bin_planes(const struct r_state *rs, struct r_plane *p, int n,
  * window coordinates). */
 static inline int64_t snap_area(const struct r_vertex *const v[3], int32_t X[3], int32_t Y[3])
 {
+#if defined(__SSE2__)
+   /* cvt_rne_i32 of the three x (then y) at once: cvtps2dq rounds to
+    * nearest even and gives INT32_MIN for NaN and every value out of
+    * range, as cvt_rne_i32 does */
+   const __m128 half = _mm_set1_ps(0.5f), scale = _mm_set1_ps(256.0f);
+   const __m128 xs = _mm_setr_ps(v[0]->pos[0], v[1]->pos[0], v[2]->pos[0], 0.0f);
+   const __m128 ys = _mm_setr_ps(v[0]->pos[1], v[1]->pos[1], v[2]->pos[1], 0.0f);
+   int32_t xi[4], yi[4];
+   _mm_storeu_si128((__m128i *)xi, _mm_cvtps_epi32(_mm_mul_ps(_mm_sub_ps(xs, half), scale)));
+   _mm_storeu_si128((__m128i *)yi, _mm_cvtps_epi32(_mm_mul_ps(_mm_sub_ps(ys, half), scale)));
+   for (int i = 0; i < 3; i++) {
+      X[i] = xi[i];
+      Y[i] = yi[i];
+   }
+#else
    for (int i = 0; i < 3; i++) {
       X[i] = cvt_rne_i32((v[i]->pos[0] - 0.5f) * 256.0f);
       Y[i] = cvt_rne_i32((v[i]->pos[1] - 0.5f) * 256.0f);
    }
+#endif
    const int32_t dx01 = sub_wrap(X[0], X[1]), dy01 = sub_wrap(Y[0], Y[1]);
    const int32_t dx20 = sub_wrap(X[2], X[0]), dy20 = sub_wrap(Y[2], Y[0]);
    return (int64_t)((uint64_t)((int64_t)dx01 * dy20) - (uint64_t)((int64_t)dx20 * dy01));
@@ -755,9 +874,82 @@ static inline bool area_culled(const struct r_state *rs, int64_t area)
    return is_back ? rs->rast->cull_back : rs->rast->cull_front;
 }
 
-int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
-                   const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
-                   struct r_tri_edges *edges)
+/* A triangle of the scene (r_scene.c), set up once when it is binned:
+ * what rasterize_ccw computes from the vertices, which depends on the
+ * vertices and the state alone, never on the draw region (the tile): the
+ * exact edges, the snapped box, and setup_shade's result, of which only
+ * the inputs' planes or flat values are kept, in data[]: for each input a
+ * of `inputs` in increasing order, 4 floats (flat, bit a of `flat`) or
+ * 4 planes of 3 (r_attr_plane).  Each tile's replay (r_triangle_binned)
+ * rebuilds the r_tri_setup from it, bit for bit what setup_shade gave. */
+struct r_tri_binned {
+   struct r_plane p[3];
+   int32_t b[4];              /* snapped_box: bx0, bx1, by0, by1 */
+   struct r_attr_plane z, w;
+   float zoffset;
+   uint32_t inputs, flat;
+   bool need_w, phong_back, flat0;
+   float data[];
+};
+
+size_t r_tri_binned_size(const struct r_state *rs)
+{
+   return offsetof(struct r_tri_binned, data) +
+          (size_t)__builtin_popcount(rs->fs->fs_inputs) * 12 * sizeof(float);
+}
+
+static void pack_binned(const struct r_tri_setup *ts, struct r_tri_binned *t)
+{
+   t->z = ts->z;
+   t->w = ts->w;
+   t->zoffset = ts->zoffset;
+   t->inputs = ts->inputs;
+   t->need_w = ts->need_w;
+   t->phong_back = ts->phong_back;
+   t->flat0 = tri_flat0(ts);
+   t->flat = 0;
+   float *d = t->data;
+   for (unsigned m = ts->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
+      if (ts->flat_attr[a]) {
+         t->flat |= 1u << a;
+         memcpy(d, ts->flat[a], 4 * sizeof(float));
+         d += 4;
+      } else {
+         memcpy(d, ts->ap[a], 12 * sizeof(float));
+         d += 12;
+      }
+   }
+}
+
+static void unpack_binned(const struct r_tri_binned *t, struct r_tri_setup *ts)
+{
+   ts->z = t->z;
+   ts->w = t->w;
+   ts->zoffset = t->zoffset;
+   ts->inputs = t->inputs;
+   ts->need_w = t->need_w;
+   ts->phong_back = t->phong_back;
+   ts->quad_x = INT_MIN;   /* no quad cached */
+   ts->quad_y = INT_MIN;
+   const float *d = t->data;
+   for (unsigned m = t->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
+      const bool flat = (t->flat >> a) & 1u;
+      ts->flat_attr[a] = flat;
+      if (flat) {
+         memcpy(ts->flat[a], d, 4 * sizeof(float));
+         d += 4;
+      } else {
+         memcpy(ts->ap[a], d, 12 * sizeof(float));
+         d += 12;
+      }
+   }
+}
+
+int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                         const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
+                         struct r_tri_edges *edges, struct r_tri_binned *bin)
 {
    const struct r_vertex *v[3] = { v0, v1, v2 };
    int32_t X[3], Y[3];
@@ -766,8 +958,9 @@ int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
       return 0;
    if (area < 0) {
       /* r_triangle's order */
-      int32_t t = X[0]; X[0] = X[1]; X[1] = t;
-      t = Y[0]; Y[0] = Y[1]; Y[1] = t;
+      const struct r_vertex *t = v[0]; v[0] = v[1]; v[1] = t;
+      int32_t ti = X[0]; X[0] = X[1]; X[1] = ti;
+      ti = Y[0]; Y[0] = Y[1]; Y[1] = ti;
    }
    struct r_plane p[3];
    if (!edge_planes(X, Y, p))
@@ -797,7 +990,47 @@ int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
    box[1] = by0;
    box[2] = bx1 + 1;
    box[3] = by1 + 1;
+   if (bin) {
+      /* r_triangle's facing and rasterize_ccw's setup */
+      const bool is_back = (area > 0) != rs->rast->ccw_is_front;
+      const bool back = rs->rast->twoside && is_back;
+      const bool phong_back = rs->fs->phong && rs->shade_env->two_side && is_back;
+      memcpy(bin->p, p, sizeof(p));
+      memcpy(bin->b, b, sizeof(b));
+      struct r_tri_setup ts;
+      setup_shade(rs, v, back, phong_back, &ts);
+      pack_binned(&ts, bin);
+   }
    return 1;
+}
+
+int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
+                   const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
+                   struct r_tri_edges *edges)
+{
+   return r_triangle_box_setup(rs, v0, v1, v2, box, edges, NULL);
+}
+
+void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *t)
+{
+   /* rasterize_ccw from its box on: the same tests, the same trimmed box,
+    * the setup it made */
+   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   if (rx0 > rx1 || ry0 > ry1)
+      return;
+   int32_t bx0 = t->b[0], by0 = t->b[2];
+   const int32_t bx1 = t->b[1], by1 = t->b[3];
+   if (bx0 > rx1 || bx1 < rx0 || by0 > ry1 || by1 < ry0)
+      return;
+   if (bx0 < 0) bx0 = 0;
+   if (by0 < 0) by0 = 0;
+   const int32_t tx0 = bx0 > rx0 ? bx0 : rx0, ty0 = by0 > ry0 ? by0 : ry0;
+   const int32_t tx1 = bx1 < rx1 ? bx1 : rx1, ty1 = by1 < ry1 ? by1 : ry1;
+   r_lazy_touch(rs, tx0, ty0, tx1, ty1);
+   const uint64_t t0 = rs->stats ? r_stats_now() : 0;
+   struct r_tri_setup ts;
+   unpack_binned(t, &ts);
+   draw_exact(rs, &ts, t->flat0, t->p, tx0, ty0, tx1, ty1, t0);
 }
 
 bool r_tri_edges_miss_tile(const struct r_tri_edges *e, int x, int y)

@@ -820,6 +820,120 @@ static void test_depth_z32(void)
    }
 }
 
+/* The scene's triangles are set up once, when binned (r_scene.c,
+ * r_triangle_box_setup), and each tile draws that setup
+ * (r_triangle_binned): the bytes must be those of r_triangle drawing the
+ * same triangles directly.  Random triangles over several 64x64 tiles,
+ * partly off the buffer, smooth or flat, two-sided or not, with a depth
+ * test and a scissored draw region, with the reference kernels and with
+ * the block kernels where the CPU has them. */
+static uint32_t scene_rng = 12345u;
+static float scene_rand(float lo, float hi)
+{
+   scene_rng ^= scene_rng << 13;
+   scene_rng ^= scene_rng >> 17;
+   scene_rng ^= scene_rng << 5;
+   return lo + (hi - lo) * (float)(scene_rng >> 8) / 16777216.0f;
+}
+
+static void test_scene_setup_once(bool flat, bool twoside, bool kernels)
+{
+   enum { W = 200, H = 150, N = 400 };
+   static uint8_t ca[W * H * 4], cb[W * H * 4];
+   static uint32_t za[W * H], zb[W * H];
+   static struct r_vertex v[N][3];
+   struct r_cso_cache cache;
+   memset(&cache, 0, sizeof cache);
+   struct r_state proto = make_state(ca, W, H);
+   t_fb.zs = za;
+   t_fb.zs_format = R_ZS_Z24S8;
+   t_dsa.depth_test = true;
+   t_dsa.depth_func = R_LESS;
+   t_dsa.depth_write = true;
+   t_rast.twoside = twoside;
+   t_rast.cull_front = t_rast.cull_back = false;
+   t_blend.color_mask = 0xfu;
+   proto.flat_mask = flat ? 1u << R_ATTR_COLOR0 | 1u << R_ATTR_BCOLOR0 : 0u;
+   proto.x0 = 3;
+   proto.y0 = 5;
+   proto.x1 = W - 7;
+   proto.y1 = H - 2;
+   proto.px0 = proto.x0;
+   proto.py0 = proto.y0;
+   proto.px1 = proto.x1;
+   proto.py1 = proto.y1;
+   /* the scene holds its states' objects: they come from a cache */
+   struct r_state rs = proto;
+   rs.rast = r_cso_lookup(&cache, &t_rast, sizeof t_rast);
+   rs.dsa = r_cso_lookup(&cache, &t_dsa, sizeof t_dsa);
+   rs.blend = r_cso_lookup(&cache, &t_blend, sizeof t_blend);
+   rs.fs = r_cso_lookup(&cache, &t_fs, sizeof t_fs);
+   t_fb.zs = za;
+   t_fb.color = ca;
+   const struct r_fb_state *fba = r_cso_lookup(&cache, &t_fb, sizeof t_fb);
+   t_fb.zs = zb;
+   t_fb.color = cb;
+   const struct r_fb_state *fbb = r_cso_lookup(&cache, &t_fb, sizeof t_fb);
+   rs.reference_kernels = !kernels;
+   for (int i = 0; i < N; i++) {
+      /* mostly small triangles, some across many tiles */
+      const float cx = scene_rand(-20.0f, W + 20.0f), cy = scene_rand(-20.0f, H + 20.0f);
+      const float r = i % 8 == 0 ? 90.0f : 12.0f;
+      for (int k = 0; k < 3; k++) {
+         struct r_vertex *p = &v[i][k];
+         memset(p, 0, sizeof *p);
+         p->pos[0] = cx + scene_rand(-r, r);
+         p->pos[1] = cy + scene_rand(-r, r);
+         p->pos[2] = scene_rand(0.0f, 1.0f);
+         p->pos[3] = scene_rand(0.25f, 2.0f);
+         for (int c = 0; c < 4; c++) {
+            p->attr[R_ATTR_COLOR0][c] = scene_rand(0.0f, 1.0f);
+            p->attr[R_ATTR_BCOLOR0][c] = scene_rand(0.0f, 1.0f);
+         }
+      }
+   }
+   memset(ca, 0, sizeof ca);
+   memset(cb, 0, sizeof cb);
+   for (int i = 0; i < W * H; i++)
+      za[i] = zb[i] = 0xffffffu;
+
+   /* A: directly */
+   rs.fb = fba;
+   r_choose_kernels(&rs);
+   for (int i = 0; i < N; i++)
+      r_triangle(&rs, &v[i][0], &v[i][1], &v[i][2]);
+   /* B: binned, then tile by tile */
+   rs.fb = fbb;
+   r_choose_kernels(&rs);
+   struct r_scene scene;
+   memset(&scene, 0, sizeof scene);
+   for (int i = 0; i < N; i++)
+      CHECK(r_scene_triangle(&scene, &rs, &v[i][0], &v[i][1], &v[i][2]), "binned %d", i);
+   unsigned set_up = 0;
+   for (uint32_t i = 0; i < scene.ncmds; i++)
+      set_up += scene.cmds[i].tri != NULL;
+   CHECK(set_up > N / 4, "%u of %u binned triangles set up when binned", set_up, scene.ncmds);
+   for (unsigned t = 0; t < r_scene_tiles(&scene); t++)
+      r_scene_run_tile(&scene, t, NULL, 0);
+   r_scene_fini(&scene);
+
+   int bad = 0, drawn = 0, coloured = 0;
+   for (int i = 0; i < W * H; i++) {
+      drawn += za[i] != 0xffffffu;
+      coloured += ca[4 * i + 3] != 0;
+      if ((memcmp(&ca[4 * i], &cb[4 * i], 4) != 0 || za[i] != zb[i]) && bad++ < 4)
+         FAIL("scene setup (flat %d, twoside %d, kernels %d): pixel (%d,%d) colour %08x z %06x, "
+              "direct %08x z %06x", flat, twoside, kernels, i % W, i / W,
+              (unsigned)(cb[4 * i] | cb[4 * i + 1] << 8 | cb[4 * i + 2] << 16 | (uint32_t)cb[4 * i + 3] << 24),
+              (unsigned)zb[i],
+              (unsigned)(ca[4 * i] | ca[4 * i + 1] << 8 | ca[4 * i + 2] << 16 | (uint32_t)ca[4 * i + 3] << 24),
+              (unsigned)za[i]);
+   }
+   CHECK(drawn > W * H / 4 && coloured > W * H / 4, "the triangles drew %d pixels, %d coloured",
+         drawn, coloured);
+   r_cso_cache_fini(&cache);
+}
+
 int main(void)
 {
    test_square_shared_diagonal();
@@ -836,5 +950,7 @@ int main(void)
    test_draw_region();
    test_depth();
    test_depth_z32();
+   for (int m = 0; m < 8; m++)
+      test_scene_setup_once(m & 1, (m >> 1) & 1, (m >> 2) & 1);
    return check_report("unit-raster");
 }
