@@ -144,6 +144,10 @@ GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d);
 void fgl_update_texture_state(struct fgl_context *ctx);
 void fgl_update_texture_matrices(struct fgl_context *ctx);
 bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level);
+/* The oracle's finalization of a complete texture t drawn with (levels up
+ * to max_level, fgl_texture_complete's): its images move into the
+ * object's resource (main/teximage.c "Storage") */
+void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level);
 
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);
