@@ -2148,7 +2148,9 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
                              img->Store + 4 * slice * (size_t)k, img->StoreBits,
                              max_bits(img->Format) == 16, format, type, dst);
       else
-         fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
+         fgl_pack_rgba8(ctx, &ctx->Pack,
+                        FGL_PACK_TEXIMAGE | (cpu ? FGL_PACK_CPU_DECODED : 0u), img->Width,
+                        img->Height,
                         img->BaseFormat, (cpu ? cpu : img->Data) + 4 * slice * (size_t)k,
                         format, type, dst);
    }
