@@ -1410,8 +1410,8 @@ static void latc_more_case(fc_h *h)
  * GL_COMPRESSED_LUMINANCE, then DXT1 again): glGetTexImage of each face.
  * The oracle reads the faces specified before the last change of format
  * through Mesa's CPU decoders, the others through the sampler
- * (ORACLE-NOTES.md "Compressed textures: LATC"); fixgl reads them all as
- * the sampler decodes them. */
+ * (ORACLE-NOTES.md "Compressed textures: LATC"; main/teximage.c
+ * "Storage"). */
 static void cube_mixed_case(fc_h *h)
 {
     GLuint tex;
@@ -1568,8 +1568,8 @@ static void cube_case(fc_h *h)
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    /* one format for all faces (faces of different formats: the oracle's
-     * glGetTexImage of some faces reads other texels; not modelled) */
+    /* one format for all faces (faces of different formats:
+     * compressed/cube_faces_mixed_formats*) */
     char l[96];
     for (int face = 0; face < 6; face++) {
         const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
