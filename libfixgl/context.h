@@ -487,6 +487,12 @@ struct fgl_texture_object {
     * last storage id given out (main/teximage.c "Storage") */
    struct fgl_tex_storage Storage;
    unsigned StorageIds;
+   /* the last draw that sampled the object: its context, that context's
+    * Query.FlushEpoch then and the resource (Storage.Id) it sampled; the
+    * oracle flushes its scene when a texel write reaches that resource
+    * before the scene's next flush (main/teximage.c fgl_tex_written) */
+   const struct fgl_context *SceneCtx;
+   unsigned SceneEpoch, SceneStorage;
 };
 
 /* The image slot of face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z; 0 for the

@@ -770,6 +770,33 @@ void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level)
    }
 }
 
+void fgl_tex_note_scene_use(struct fgl_context *ctx)
+{
+   for (unsigned bits = ctx->_EnabledTexUnits; bits; bits &= bits - 1) {
+      struct fgl_texture_object *t = ctx->_CurrentTex[__builtin_ctz(bits)];
+      t->SceneCtx = ctx;
+      t->SceneEpoch = ctx->Query.FlushEpoch;
+      t->SceneStorage = t->Storage.Id;
+   }
+}
+
+/* [S: llvmpipe/lp_texture.c:llvmpipe_transfer_map, lp_flush.c:
+ * llvmpipe_flush_resource] Mesa maps the image's resource to write
+ * texels; llvmpipe flushes the scene first when the scene samples that
+ * resource (probe p_vpcut_state: glTexImage2D of the same size and
+ * glTexSubImage2D of a texture the pending triangle samples; not another
+ * texture's, not an image given new storage).  The flush marks
+ * llvmpipe's setup state dirty and makes the ended queries available. */
+void fgl_tex_written(struct fgl_context *ctx, const struct fgl_texture_object *t,
+                     const struct fgl_texture_image *img)
+{
+   if (img && img->Storage.Id != 0 && t->SceneCtx == ctx &&
+       t->SceneEpoch == ctx->Query.FlushEpoch && t->SceneStorage == img->Storage.Id) {
+      fgl_query_flushed(ctx);
+      fgl_vpcut_invalidate(ctx);
+   }
+}
+
 /* Replaces the image of face `face` (0 without faces) at `level` of t. */
 static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
                       struct fgl_texture_image *img)
@@ -1565,6 +1592,8 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    if (cf && pixels)
       compress_region(ctx, img, 0, 0, 0, width, height, depth);
    set_image(t, target_face(target), level, img);
+   if (pixels)
+      fgl_tex_written(ctx, t, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    check_gen_mipmap(ctx, t, target_face(target), level);
 }
@@ -1686,6 +1715,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    fgl_flush_bitmap_cache(ctx);
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
+      if (pixels)
+         fgl_tex_written(ctx, t, img);
       if (img->CompressedFormat && pixels)
          compress_region(ctx, img, xoff, yoff, zoff, width, height, depth);
       ctx->NewState |= FGL_NEW_TEXTURE;
