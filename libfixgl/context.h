@@ -487,12 +487,6 @@ struct fgl_texture_object {
     * last storage id given out (main/teximage.c "Storage") */
    struct fgl_tex_storage Storage;
    unsigned StorageIds;
-   /* the last draw that sampled the object: its context, that context's
-    * Query.FlushEpoch then and the resource (Storage.Id) it sampled; the
-    * oracle flushes its scene when a texel write reaches that resource
-    * before the scene's next flush (main/teximage.c fgl_tex_written) */
-   const struct fgl_context *SceneCtx;
-   unsigned SceneEpoch, SceneStorage;
 };
 
 /* The image slot of face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z; 0 for the
@@ -1103,6 +1097,16 @@ struct fgl_context {
    /* texture units that texture fragments: enabled, with a complete
     * texture (main/texstate.c) [S: texstate.c:update_ff_texture_state] */
    unsigned _EnabledTexUnits;                     /* bit u: unit u */
+   /* the texture resources the oracle's pending scene samples: each
+    * object drawn with since the flush of Query.FlushEpoch
+    * _SceneTexEpoch, with its resource (Storage.Id) then; _SceneTexFull:
+    * more than fit, any write counts (main/teximage.c fgl_tex_written) */
+   struct {
+      const struct fgl_texture_object *Obj;
+      unsigned Storage;
+   } _SceneTex[32];
+   unsigned _SceneTexCount, _SceneTexEpoch;
+   bool _SceneTexFull;
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
    /* the vertex side of those units [S: texstate.c:update_texgen,

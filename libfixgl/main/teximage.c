@@ -770,13 +770,31 @@ void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level)
    }
 }
 
+/* [S: lp_setup.c:try_update_scene_state, lp_scene_add_resource_reference]
+ * the resources of the sampler views a draw binds join the scene's
+ * references until its flush */
 void fgl_tex_note_scene_use(struct fgl_context *ctx)
 {
+   if (ctx->_SceneTexEpoch != ctx->Query.FlushEpoch) {
+      ctx->_SceneTexEpoch = ctx->Query.FlushEpoch;
+      ctx->_SceneTexCount = 0;
+      ctx->_SceneTexFull = false;
+   }
    for (unsigned bits = ctx->_EnabledTexUnits; bits; bits &= bits - 1) {
-      struct fgl_texture_object *t = ctx->_CurrentTex[__builtin_ctz(bits)];
-      t->SceneCtx = ctx;
-      t->SceneEpoch = ctx->Query.FlushEpoch;
-      t->SceneStorage = t->Storage.Id;
+      const struct fgl_texture_object *t = ctx->_CurrentTex[__builtin_ctz(bits)];
+      unsigned i = 0;
+      while (i < ctx->_SceneTexCount &&
+             (ctx->_SceneTex[i].Obj != t || ctx->_SceneTex[i].Storage != t->Storage.Id))
+         i++;
+      if (i < ctx->_SceneTexCount)
+         continue;
+      if (i == sizeof(ctx->_SceneTex) / sizeof(ctx->_SceneTex[0])) {
+         ctx->_SceneTexFull = true;
+         continue;
+      }
+      ctx->_SceneTex[i].Obj = t;
+      ctx->_SceneTex[i].Storage = t->Storage.Id;
+      ctx->_SceneTexCount++;
    }
 }
 
@@ -790,8 +808,12 @@ void fgl_tex_note_scene_use(struct fgl_context *ctx)
 void fgl_tex_written(struct fgl_context *ctx, const struct fgl_texture_object *t,
                      const struct fgl_texture_image *img)
 {
-   if (img && img->Storage.Id != 0 && t->SceneCtx == ctx &&
-       t->SceneEpoch == ctx->Query.FlushEpoch && t->SceneStorage == img->Storage.Id) {
+   if (!img || img->Storage.Id == 0 || ctx->_SceneTexEpoch != ctx->Query.FlushEpoch)
+      return;
+   bool sampled = ctx->_SceneTexFull;
+   for (unsigned i = 0; i < ctx->_SceneTexCount && !sampled; i++)
+      sampled = ctx->_SceneTex[i].Obj == t && ctx->_SceneTex[i].Storage == img->Storage.Id;
+   if (sampled) {
       fgl_query_flushed(ctx);
       fgl_vpcut_invalidate(ctx);
    }

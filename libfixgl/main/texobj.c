@@ -910,9 +910,6 @@ static void restore_params(struct fgl_texture_object *t, const struct fgl_textur
    memcpy(t->FaceImage, keep.FaceImage, sizeof(t->FaceImage));
    t->Storage = keep.Storage;
    t->StorageIds = keep.StorageIds;
-   t->SceneCtx = keep.SceneCtx;
-   t->SceneEpoch = keep.SceneEpoch;
-   t->SceneStorage = keep.SceneStorage;
 }
 
 /* [S: attrib.c:pop_texture_group] after the bindings are restored (a
