@@ -1109,6 +1109,7 @@ struct fgl_context {
    bool _SceneTexFull;
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
+   int _CurrentTexMaxLevel[FGL_MAX_TEXTURE_UNITS];   /* fgl_texture_complete's */
    /* the vertex side of those units [S: texstate.c:update_texgen,
     * _mesa_update_texture_matrices]: bit u when the unit's texture matrix
     * applies (Mesa's _TexMatEnabled), when it generates coordinates

@@ -148,8 +148,9 @@ bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level);
  * to max_level, fgl_texture_complete's): its images move into the
  * object's resource (main/teximage.c "Storage") */
 void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level);
-/* A draw samples the textures of the enabled units: the oracle's scene
- * references their resources until its next flush (main/teximage.c) */
+/* A draw samples the textures of the enabled units: the oracle finalizes
+ * them, and its scene references their resources until its next flush
+ * (main/teximage.c) */
 void fgl_tex_note_scene_use(struct fgl_context *ctx);
 /* Texels were written into img of t: a flush of the oracle's scene when
  * it samples img's resource (main/teximage.c) */

@@ -770,11 +770,17 @@ void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level)
    }
 }
 
-/* [S: lp_setup.c:try_update_scene_state, lp_scene_add_resource_reference]
- * the resources of the sampler views a draw binds join the scene's
- * references until its flush */
+/* [S: st_atom_texture.c:update_textures, st_finalize_texture;
+ * lp_setup.c:try_update_scene_state, lp_scene_add_resource_reference] a
+ * draw (not a clear or a pixel rectangle, whose validation binds no
+ * sampler views) finalizes the textures it samples, and their resources
+ * join the scene's references until its flush */
 void fgl_tex_note_scene_use(struct fgl_context *ctx)
 {
+   for (unsigned bits = ctx->_EnabledTexUnits; bits; bits &= bits - 1) {
+      const unsigned u = (unsigned)__builtin_ctz(bits);
+      fgl_tex_finalize_storage(ctx->_CurrentTex[u], ctx->_CurrentTexMaxLevel[u]);
+   }
    if (ctx->_SceneTexEpoch != ctx->Query.FlushEpoch) {
       ctx->_SceneTexEpoch = ctx->Query.FlushEpoch;
       ctx->_SceneTexCount = 0;

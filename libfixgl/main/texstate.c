@@ -176,8 +176,8 @@ void fgl_update_texture_state(struct fgl_context *ctx)
          int max_level;
          if (!fgl_texture_complete(t, &max_level))
             continue;
-         fgl_tex_finalize_storage(t, max_level);
          ctx->_EnabledTexUnits |= 1u << u;
+         ctx->_CurrentTexMaxLevel[u] = max_level;
          ctx->_CurrentTex[u] = t;
          ctx->_CurrentTexTarget[u] = targets[k];
          break;
