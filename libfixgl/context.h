@@ -400,6 +400,20 @@ struct fgl_texture_attrib {
  * the raster core filters four 8-bit channels alike; row 0 is the first
  * row the application gave (t = 0, the bottom of the image). */
 #define FGL_MAX_TEXTURE_LEVELS 15   /* LP_MAX_TEXTURE_2D_LEVELS */
+
+/* One of the oracle's texture resources (a pipe_resource an st texture
+ * object or image holds), as far as it decides how glGetTexImage reads an
+ * image (main/teximage.c "Storage"; ORACLE-NOTES.md "Compressed textures:
+ * LATC", cube faces of mixed formats): Id 0 is none; ids are unique
+ * within their texture object. */
+struct fgl_tex_storage {
+   unsigned Id;
+   const struct fgl_tex_pipe_format *Format;   /* the pipe format ... */
+   GLenum CompressedFormat;                    /* ... told apart */
+   GLint Width0, Height0, Depth0;              /* level 0's size */
+   GLint LastLevel;
+};
+
 struct fgl_texture_image {
    GLint Width, Height, Border;     /* Height 1 for 1D images */
    GLint Depth;                     /* 1 for 1D and 2D images */
@@ -436,6 +450,9 @@ struct fgl_texture_image {
    /* the S3TC format of Blocks (InternalFormat, or the one the oracle
     * picks for GL_COMPRESSED_RGB/RGBA), 0 for an uncompressed image */
    GLenum CompressedFormat;
+   /* the oracle's storage the image lives in (main/teximage.c
+    * "Storage"): the object's, or one of its own */
+   struct fgl_tex_storage Storage;
 };
 
 /* A texture object's state (main/texobj.c, texparam.c) and its images
@@ -466,6 +483,10 @@ struct fgl_texture_object {
     * is Image; fgl_tex_face_image) [S: mtypes.h, gl_texture_object
     * Image[MAX_FACES][MAX_TEXTURE_LEVELS]] */
    struct fgl_texture_image *FaceImage[5][FGL_MAX_TEXTURE_LEVELS];
+   /* the oracle's storage of the object (stObj->pt; Id 0: none) and the
+    * last storage id given out (main/teximage.c "Storage") */
+   struct fgl_tex_storage Storage;
+   unsigned StorageIds;
 };
 
 /* The image slot of face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z; 0 for the
@@ -1076,8 +1097,19 @@ struct fgl_context {
    /* texture units that texture fragments: enabled, with a complete
     * texture (main/texstate.c) [S: texstate.c:update_ff_texture_state] */
    unsigned _EnabledTexUnits;                     /* bit u: unit u */
+   /* the texture resources the oracle's pending scene samples: each
+    * object drawn with since the flush of Query.FlushEpoch
+    * _SceneTexEpoch, with its resource (Storage.Id) then; _SceneTexFull:
+    * more than fit, any write counts (main/teximage.c fgl_tex_written) */
+   struct {
+      const struct fgl_texture_object *Obj;
+      unsigned Storage;
+   } _SceneTex[32];
+   unsigned _SceneTexCount, _SceneTexEpoch;
+   bool _SceneTexFull;
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
+   int _CurrentTexMaxLevel[FGL_MAX_TEXTURE_UNITS];   /* fgl_texture_complete's */
    /* the vertex side of those units [S: texstate.c:update_texgen,
     * _mesa_update_texture_matrices]: bit u when the unit's texture matrix
     * applies (Mesa's _TexMatEnabled), when it generates coordinates

@@ -1410,8 +1410,8 @@ static void latc_more_case(fc_h *h)
  * GL_COMPRESSED_LUMINANCE, then DXT1 again): glGetTexImage of each face.
  * The oracle reads the faces specified before the last change of format
  * through Mesa's CPU decoders, the others through the sampler
- * (ORACLE-NOTES.md "Compressed textures: LATC"); fixgl reads them all as
- * the sampler decodes them. */
+ * (ORACLE-NOTES.md "Compressed textures: LATC"; main/teximage.c
+ * "Storage"). */
 static void cube_mixed_case(fc_h *h)
 {
     GLuint tex;
@@ -1442,6 +1442,120 @@ static void cube_mixed_case(fc_h *h)
     }
 }
 
+/* Reads back every face of the bound cube map (GL_RGBA bytes) under
+ * `stage`, and face `ff` also as floats. */
+static void read_faces(fc_h *h, const char *stage, int ff)
+{
+    char l[96];
+    for (int face = 0; face < 6; face++) {
+        const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+        snprintf(l, sizeof l, "%s: face %d", stage, face);
+        memset(g_out, 0xcd, 8 * 8 * 4);
+        glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+        fc_blob(h, l, g_out, 8 * 8 * 4);
+        if (face == ff) {
+            static float fl[8 * 8 * 4];
+            glGetTexImage(target, 0, GL_RGBA, GL_FLOAT, fl);
+            snprintf(l, sizeof l, "%s: face %d as floats", stage, face);
+            fc_blob(h, l, fl, sizeof fl);
+        }
+    }
+    E(h, stage);
+}
+
+/* One face of an 8x8 cube map in `kind`: DXT1A/DXT1/DXT3/DXT5 random
+ * blocks, 'U' RGBA8 data, 'L' / 'A' GL_COMPRESSED_LUMINANCE(_ALPHA), 'E'
+ * DXT5 encoded from data. */
+static void cube_face(GLenum target, int kind, unsigned seed)
+{
+    if (kind == 'U' || kind == 'L' || kind == 'A' || kind == 'E') {
+        make_image(0, 8, 8, seed);
+        const GLint internal = kind == 'U'   ? GL_RGBA8
+                               : kind == 'L' ? GL_COMPRESSED_LUMINANCE
+                               : kind == 'A' ? GL_COMPRESSED_LUMINANCE_ALPHA
+                                             : (GLint)DXT5;
+        glTexImage2D(target, 0, internal, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, g_img);
+    } else {
+        const int n = make_blocks((GLenum)kind, 8, 8, seed, 0, 0);
+        glCompressedTexImage2D(target, 0, (GLenum)kind, 8, 8, 0, n, g_blocks);
+    }
+}
+
+/* Where the oracle keeps each image decides how glGetTexImage reads a
+ * compressed one (ORACLE-NOTES.md "Compressed textures: LATC", cube
+ * faces of mixed formats; main/teximage.c "Storage"):
+ *  - _more: faces DXT3 DXT3 DXT5 RGBA8 LATC2 DXT5(encoded): faces 0-4
+ *    before the last change of format read through Mesa's CPU decoders;
+ *  - _redrawn: DXT5 DXT5 RGBA8 DXT5 DXT5 DXT5, read; face 2 given DXT5
+ *    blocks, read (faces 0 and 1 still in resources of their own); the
+ *    cube map drawn (complete: the oracle moves every face into the
+ *    object's resource), read again;
+ *  - _levels (2D): GL_LINEAR, level 0 DXT1 (a one-level resource), then
+ *    levels 1-3: level 0 keeps its own; read; drawn with a mipmap filter,
+ *    read again. */
+static void mixed_storage_case(fc_h *h)
+{
+    const char *name = fc_this_case(h)->name;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    fc_pixel_ortho(h);
+    if (strstr(name, "_levels")) {
+        glBindTexture(GL_TEXTURE_2D, tex);
+        filters(GL_LINEAR, GL_NEAREST);
+        for (int l = 0; l < 4; l++)
+            upload(DXT1A, l, 8 >> l, 8 >> l, 300u + (unsigned)l, 0, 0);
+        E(h, "levels");
+        char l[64];
+        for (int pass = 0; pass < 2; pass++) {
+            for (int lv = 0; lv < 2; lv++) {
+                snprintf(l, sizeof l, "pass %d level %d", pass, lv);
+                memset(g_out, 0xcd, 8 * 8 * 4);
+                glGetTexImage(GL_TEXTURE_2D, lv, GL_RGBA, GL_UNSIGNED_BYTE, g_out);
+                fc_blob(h, l, g_out, (size_t)(8 >> lv) * (size_t)(8 >> lv) * 4);
+            }
+            filters(GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST);
+            glEnable(GL_TEXTURE_2D);
+            glBegin(GL_QUADS);
+            glTexCoord2f(0, 0); glVertex2f(0, 0);
+            glTexCoord2f(1, 0); glVertex2f(16, 0);
+            glTexCoord2f(1, 1); glVertex2f(16, 16);
+            glTexCoord2f(0, 1); glVertex2f(0, 16);
+            glEnd();
+            glDisable(GL_TEXTURE_2D);
+            fc_capture(h);
+        }
+        E(h, "read back");
+        return;
+    }
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    const bool more = strstr(name, "_more") != NULL;
+    static const int kinds_more[6] = { DXT3, DXT3, DXT5, 'U', 'A', 'E' };
+    static const int kinds_redrawn[6] = { DXT5, DXT5, 'U', DXT5, DXT5, DXT5 };
+    for (int face = 0; face < 6; face++)
+        cube_face(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face,
+                  more ? kinds_more[face] : kinds_redrawn[face], 400u + (unsigned)face);
+    E(h, "faces");
+    read_faces(h, "specified", more ? 2 : 0);
+    if (more)
+        return;
+    cube_face(GL_TEXTURE_CUBE_MAP_NEGATIVE_X + 1, DXT5, 420u);
+    read_faces(h, "face 2 again", 0);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glEnable(GL_TEXTURE_CUBE_MAP);
+    glBegin(GL_QUADS);
+    glTexCoord3f(1, -0.5f, -0.5f); glVertex2f(0, 0);
+    glTexCoord3f(1, 0.5f, -0.5f); glVertex2f(16, 0);
+    glTexCoord3f(1, 0.5f, 0.5f); glVertex2f(16, 16);
+    glTexCoord3f(1, -0.5f, 0.5f); glVertex2f(0, 16);
+    glEnd();
+    glDisable(GL_TEXTURE_CUBE_MAP);
+    fc_capture(h);
+    read_faces(h, "drawn", 0);
+}
+
 /* S3TC images on cube-map faces: glCompressedTexImage2D, glTexImage2D
  * (encoded), sub-images, glGetCompressedTexImage of a face. */
 static void cube_case(fc_h *h)
@@ -1454,8 +1568,8 @@ static void cube_case(fc_h *h)
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    /* one format for all faces (faces of different formats: the oracle's
-     * glGetTexImage of some faces reads other texels; not modelled) */
+    /* one format for all faces (faces of different formats:
+     * compressed/cube_faces_mixed_formats*) */
     char l[96];
     for (int face = 0; face < 6; face++) {
         const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
@@ -1707,5 +1821,11 @@ const fc_case fc_cases_compressed[] = {
                  cube_mixed_case),
     FC_CASE_RGBA("compressed/latc_small_images", 104, 68, 1, "gl13 compressed latc",
                  latc_small_case),
+    FC_CASE_RGBA("compressed/cube_faces_mixed_formats_more", 16, 16, 0,
+                 "gl13 compressed cubemap latc", mixed_storage_case),
+    FC_CASE_RGBA("compressed/cube_faces_mixed_formats_redrawn", 16, 16, 1,
+                 "gl13 compressed cubemap", mixed_storage_case),
+    FC_CASE_RGBA("compressed/mixed_storage_levels", 16, 16, 2, "gl13 compressed",
+                 mixed_storage_case),
     { 0 },
 };

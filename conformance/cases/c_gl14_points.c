@@ -596,6 +596,110 @@ static void vpcut_events(fc_h *h)
     }
 }
 
+/* The flushes llvmpipe makes on its own also mark the region (probe
+ * p_vpcut_state): asking for a query result that is not ready, and a
+ * texel write into the resource the pending scene samples; not a query
+ * begun or ended, another texture's write, an image given new storage, a
+ * deletion or glGetTexImage.  Each frame: a textured triangle first (the
+ * region cut), the event, then a wide smooth line, a wide point and a
+ * smooth point reaching below the viewport. */
+static void vpcut_flush_events(fc_h *h)
+{
+    static const GLfloat att[3] = { 1, 0.5f, 0.25f };
+    static GLubyte texels[8 * 8 * 4];
+    for (int i = 0; i < (int)sizeof texels; i++)
+        texels[i] = (GLubyte)(255 - i);
+    static const GLubyte blocks[8] = { 0xff, 0xff, 0, 0, 0, 0, 0, 0 };
+    for (int f = 0; f < 14; f++) {
+        glViewport(0, 0, 64, 64);
+        fcu_clear(0, 0, 0, 0, 1);
+        glViewport(0, 7, 64, 57);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0, 64, 7, 64, -1, 1);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, att);
+        GLuint t[2], q[2];
+        GLuint r = 0;
+        glGenTextures(2, t);
+        glGenQueries(2, q);
+        for (int i = 1; i >= 0; i--) {
+            glBindTexture(GL_TEXTURE_2D, t[i]);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            if (f == 11 && i == 0)
+                glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4,
+                                       0, 8, blocks);
+            else
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                             texels);
+        }
+        if (f == 2 || f == 3 || f == 4)
+            glBeginQuery(GL_SAMPLES_PASSED, q[0]);
+        glEnable(GL_TEXTURE_2D);
+        vpcut_tri();
+        glDisable(GL_TEXTURE_2D);
+        switch (f) {
+        case 1: glBeginQuery(GL_SAMPLES_PASSED, q[1]); break;
+        case 2: glEndQuery(GL_SAMPLES_PASSED); break;
+        case 3:                         /* not ready: llvmpipe flushes */
+            glEndQuery(GL_SAMPLES_PASSED);
+            glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &r);
+            break;
+        case 4:                         /* asked in vain: a flush */
+            glEndQuery(GL_SAMPLES_PASSED);
+            glGetQueryObjectuiv(q[0], GL_QUERY_RESULT_AVAILABLE, &r);
+            break;
+        case 5:
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+            break;
+        case 6:
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+            break;
+        case 7:
+            glBindTexture(GL_TEXTURE_2D, t[1]);
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+            break;
+        case 8:                         /* new storage */
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+            break;
+        case 9: glDeleteTextures(1, &t[0]); break;
+        case 10: {
+            static GLubyte out[4 * 4 * 4];
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+            break;
+        }
+        case 11:
+            glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4,
+                                      GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 8, blocks);
+            break;
+        case 12:                        /* the level-1 image of the same resource */
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+            break;
+        case 13:                        /* drawn without texturing in between */
+            vpcut_tri();
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+            break;
+        default: break;
+        }
+        vpcut_smooth(0);
+        glPointSize(12);
+        glBegin(GL_POINTS);
+        glColor3f(0, 1, 0);
+        glVertex2f(20, 8);
+        glEnd();
+        vpcut_smooth(1);
+        glPointSize(1);
+        glLineWidth(1);
+        if (f == 1)
+            glEndQuery(GL_SAMPLES_PASSED);
+        fc_capture(h);
+        glDeleteTextures(2, t);
+        glDeleteQueries(2, q);
+    }
+}
+
 /* Polygon-mode points of triangles clipped by the near and far planes and
  * by the viewport's sides: the new vertices' sizes are the clipper's lerp of
  * the attenuated sizes (draw_pipe_clip.c interp: every output), clamped
@@ -673,6 +777,8 @@ const fc_case fc_cases_gl14_points[] = {
                  sprite_region_row),
     FC_CASE_RGBA("gl14/points_vpcut_events", 64, 64, 24, "gl14 points smooth scissor",
                  vpcut_events),
+    FC_CASE_RGBA("gl14/points_vpcut_flush_events", 64, 64, 14, "gl14 points smooth query",
+                 vpcut_flush_events),
     FC_CASE_RGBA("gl14/points_atten_unfilled_clip", 64, 64, 3, "gl14 points clip polygon",
                  atten_unfilled_clip),
     FC_CASE_RGBA("gl14/points_params_api", 8, 8, 0, "gl14 points api error attrib dlist", params_api),

@@ -323,6 +323,59 @@ static void draw_readpixels(fc_h *h)
     fc_get_integer(h, "GL_ALPHA_BITS", GL_ALPHA_BITS, 1);
 }
 
+/* glReadPixels of every colour format in every type (packed ones
+ * included; the pairs GL refuses record their error) from the wide
+ * buffer; _transfer: under scale, bias and byte swapping. */
+static void read_formats(fc_h *h, int transfer)
+{
+    draw_smooth(h);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glColor4f(0.6f, 0.7f, 0.8f, 0.9f);
+    glRectf(8, 2, 16, 14);   /* sums above 1 in a float buffer */
+    glDisable(GL_BLEND);
+    static const GLenum formats[] = { GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
+                                      GL_LUMINANCE_ALPHA, GL_RGB, GL_BGR, GL_RGBA, GL_BGRA,
+                                      GL_ABGR_EXT };
+    static const int ncomp[] = { 1, 1, 1, 1, 1, 2, 3, 3, 4, 4, 4 };
+    static const struct { GLenum t; int size; int packed; } types[] = {
+        { GL_UNSIGNED_BYTE, 1, 0 }, { GL_BYTE, 1, 0 }, { GL_UNSIGNED_SHORT, 2, 0 },
+        { GL_SHORT, 2, 0 }, { GL_UNSIGNED_INT, 4, 0 }, { GL_INT, 4, 0 }, { GL_FLOAT, 4, 0 },
+        { GL_UNSIGNED_BYTE_3_3_2, 1, 1 }, { GL_UNSIGNED_BYTE_2_3_3_REV, 1, 1 },
+        { GL_UNSIGNED_SHORT_5_6_5, 2, 1 }, { GL_UNSIGNED_SHORT_5_6_5_REV, 2, 1 },
+        { GL_UNSIGNED_SHORT_4_4_4_4, 2, 1 }, { GL_UNSIGNED_SHORT_4_4_4_4_REV, 2, 1 },
+        { GL_UNSIGNED_SHORT_5_5_5_1, 2, 1 }, { GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 1 },
+        { GL_UNSIGNED_INT_8_8_8_8, 4, 1 }, { GL_UNSIGNED_INT_8_8_8_8_REV, 4, 1 },
+        { GL_UNSIGNED_INT_10_10_10_2, 4, 1 }, { GL_UNSIGNED_INT_2_10_10_10_REV, 4, 1 },
+    };
+    static unsigned char px[WW * WH * 16];
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (transfer) {
+        glPixelTransferf(GL_RED_SCALE, 0.5f);
+        glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+        glPixelTransferf(GL_BLUE_SCALE, 1.5f);
+        glPixelTransferf(GL_ALPHA_BIAS, -0.125f);
+        glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    }
+    glGetError();
+    for (size_t f = 0; f < sizeof formats / sizeof formats[0]; f++)
+        for (size_t t = 0; t < sizeof types / sizeof types[0]; t++) {
+            memset(px, 0xA5, sizeof px);
+            glReadPixels(1, 2, 20, 13, formats[f], types[t].t, px);
+            char l[64];
+            snprintf(l, sizeof l, "read 0x%04x 0x%04x", (unsigned)formats[f], (unsigned)types[t].t);
+            const GLenum err = glGetError();
+            fc_value(h, l, (long long)err);
+            if (err == GL_NO_ERROR)
+                fc_blob(h, l, px, (size_t)20 * 13 * (size_t)types[t].size *
+                                      (size_t)(types[t].packed ? 1 : ncomp[f]));
+        }
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+}
+
+static void draw_readpixels_formats(fc_h *h) { read_formats(h, 0); }
+static void draw_readpixels_transfer(fc_h *h) { read_formats(h, 1); }
+
 #define WIDE_CASE(fn, fmt, type, draw, depth)                                 \
     static void fn(fc_h *h) { wide_run(h, #fn, fmt, type, draw, depth, 0); }
 #define WIDE_ACCUM_CASE(fn, fmt, type, draw)                                  \
@@ -438,6 +491,12 @@ WIDE_CASE(ushort_depth_alpha, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_depth_alpha, 
 WIDE_CASE(ushort_readpixels, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_readpixels, 0)
 WIDE_CASE(ushort_argb, OSMESA_ARGB, GL_UNSIGNED_SHORT, draw_blend, 0)
 WIDE_CASE(ushort_rgb_clear, OSMESA_RGB, GL_UNSIGNED_SHORT, draw_smooth, 0)
+WIDE_CASE(ushort_readpixels_formats, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_readpixels_formats, 0)
+WIDE_CASE(float_readpixels_formats, OSMESA_RGBA, GL_FLOAT, draw_readpixels_formats, 0)
+WIDE_CASE(ushort_readpixels_transfer, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_readpixels_transfer, 0)
+WIDE_CASE(float_readpixels_transfer, OSMESA_RGBA, GL_FLOAT, draw_readpixels_transfer, 0)
+WIDE_CASE(float_rgb_readpixels_formats, OSMESA_RGB, GL_FLOAT, draw_readpixels_formats, 0)
+WIDE_CASE(float_bgra_readpixels_formats, OSMESA_BGRA, GL_FLOAT, draw_readpixels_formats, 0)
 WIDE_ACCUM_CASE(ushort_accum, OSMESA_RGBA, GL_UNSIGNED_SHORT, draw_accum)
 WIDE_ACCUM_CASE(float_accum, OSMESA_RGBA, GL_FLOAT, draw_accum)
 WIDE_ACCUM_CASE(float_bgra_accum, OSMESA_BGRA, GL_FLOAT, draw_accum)
@@ -520,6 +579,12 @@ const fc_case fc_cases_osmesa[] = {
     FC_CASE_RGBA("osmesa/float_copypixels", 8, 8, 0, "osmesa pixel", float_copypixels),
     FC_CASE_RGBA("osmesa/ushort_copytex", 8, 8, 0, "osmesa texture", ushort_copytex),
     FC_CASE_RGBA("osmesa/float_copytex", 8, 8, 0, "osmesa texture", float_copytex),
+    FC_CASE_RGBA("osmesa/ushort_readpixels_formats", 8, 8, 0, "osmesa pixel", ushort_readpixels_formats),
+    FC_CASE_RGBA("osmesa/float_readpixels_formats", 8, 8, 0, "osmesa pixel", float_readpixels_formats),
+    FC_CASE_RGBA("osmesa/ushort_readpixels_transfer", 8, 8, 0, "osmesa pixel", ushort_readpixels_transfer),
+    FC_CASE_RGBA("osmesa/float_readpixels_transfer", 8, 8, 0, "osmesa pixel", float_readpixels_transfer),
+    FC_CASE_RGBA("osmesa/float_rgb_readpixels_formats", 8, 8, 0, "osmesa pixel", float_rgb_readpixels_formats),
+    FC_CASE_RGBA("osmesa/float_bgra_readpixels_formats", 8, 8, 0, "osmesa pixel", float_bgra_readpixels_formats),
     FC_CASE_RGBA("osmesa/attribs_refused", 8, 8, 0, "osmesa api", attribs_refused),
     FC_CASE_RGBA("osmesa/attribs_compat", 8, 8, 0, "osmesa api", attribs_compat),
     FC_CASE_RGBA("osmesa/attribs_unprovided", 8, 8, 0, "osmesa api", attribs_unprovided),

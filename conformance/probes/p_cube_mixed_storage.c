@@ -1,7 +1,8 @@
 /* p_cube_mixed_storage.c - how the oracle reads back cube-map faces of
- * mixed compressed formats (open in fixgl: known difference
- * compressed/cube_faces_mixed_formats; ORACLE-NOTES.md "Compressed
- * textures: LATC", cube faces of mixed formats):
+ * mixed compressed formats (modelled by libfixgl/main/teximage.c
+ * "Storage", the decoders pinned by p_s3tc_cpu_decode; ORACLE-NOTES.md
+ * "Compressed textures: LATC", which images glGetTexImage reads through
+ * Mesa's CPU decoders):
  *  - a face specified in another format than the face before it gets new
  *    storage for the texture object, which the faces specified after it
  *    in that format share; the faces specified before the last such change

@@ -126,6 +126,69 @@ int main(void)
              rfl[i] != (float)ubuf[i] * (1.0f / 65535.0f);
    probe_expect("glReadPixels of the ushort buffer (ubyte, float) off", bad, 0);
 
+   /* other formats and types (readpix.c read_rgba_pixels,
+    * _mesa_format_convert; libfixgl pixelformat.c fgl_pack_wide): from
+    * ushort, a plain type channel by channel, a packed one of fields up to
+    * 8 bits through the rounded byte and its rounded field, wider fields
+    * through float and (int)(f * max + 0.5f), luminance R+G+B clamped; from
+    * floats, clamped, then as float */
+   {
+      static unsigned short rs[N * N * 4];
+      static unsigned int r32[N * N];
+      long b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+      glReadPixels(0, 0, N, N, GL_BGRA, GL_UNSIGNED_SHORT, rs);
+      for (int i = 0; i < N * N; i++)
+         for (int c = 0; c < 4; c++)
+            b1 += rs[4 * i + c] != ubuf[4 * i + (c == 3 ? 3 : 2 - c)];
+      glReadPixels(0, 0, N, N, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, rs);
+      for (int i = 0; i < N * N; i++) {
+         unsigned f[3];
+         for (int c = 0; c < 3; c++) {
+            const unsigned u8 = (ubuf[4 * i + c] * 255u + 32767u) / 65535u, bits = c == 1 ? 6 : 5;
+            f[c] = (u8 * ((1u << bits) - 1) + 127u) / 255u;
+         }
+         b2 += rs[i] != (unsigned short)(f[0] << 11 | f[1] << 5 | f[2]);
+      }
+      glReadPixels(0, 0, N, N, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2, r32);
+      for (int i = 0; i < N * N; i++) {
+         unsigned w = 0;
+         for (int c = 0; c < 4; c++) {
+            const float f = (float)ubuf[4 * i + c] * (1.0f / 65535.0f);
+            const unsigned max = c == 3 ? 3u : 1023u;
+            w |= (unsigned)(int)(f * (float)max + 0.5f) << (c == 3 ? 0 : 22 - 10 * c);
+         }
+         b3 += r32[i] != w;
+      }
+      glReadPixels(0, 0, N, N, GL_LUMINANCE, GL_FLOAT, rfl);
+      for (int i = 0; i < N * N; i++) {
+         float sum = 0.0f;
+         for (int c = 0; c < 3; c++)
+            sum += (float)ubuf[4 * i + c] * (1.0f / 65535.0f);
+         b4 += rfl[i] != (sum < 1.0f ? sum : 1.0f);
+      }
+      probe_expect("ushort buffer as GL_BGRA ushort: channels off", b1, 0);
+      probe_expect("ushort buffer as GL_RGB 5_6_5 (byte, then field, both rounded): off", b2, 0);
+      probe_expect("ushort buffer as GL_RGBA 10_10_10_2 (through float): off", b3, 0);
+      probe_expect("ushort buffer as GL_LUMINANCE float (R+G+B clamped): off", b4, 0);
+      OSMesaMakeCurrent(c, fbuf, GL_FLOAT, N, N);
+      scene();
+      static short rsh[N * N];
+      glReadPixels(0, 0, N, N, GL_BGRA, GL_UNSIGNED_SHORT, rs);
+      glReadPixels(0, 0, N, N, GL_RED, GL_SHORT, rsh);
+      long b5 = 0;
+      for (int i = 0; i < N * N; i++) {
+         for (int c = 0; c < 4; c++) {
+            const float v = fbuf[4 * i + (c == 3 ? 3 : 2 - c)];
+            const float cl = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+            b5 += rs[4 * i + c] != (unsigned short)lrintf(cl * 65535.0f);
+         }
+         const float v = fbuf[4 * i], cl = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+         b5 += rsh[i] != (short)lrintf(cl * 32767.0f);
+      }
+      probe_expect("float buffer as GL_BGRA ushort and GL_RED short (clamped): off", b5, 0);
+      OSMesaMakeCurrent(c, ubuf, GL_UNSIGNED_SHORT, N, N);
+   }
+
    /* blending on random colours */
    long badf = 0, badu = 0;
    for (int it = 0; it < 300; it++) {

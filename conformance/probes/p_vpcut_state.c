@@ -1,7 +1,6 @@
 /* p_vpcut_state.c - llvmpipe's viewport cut of the draw region under
  * point attenuation is state computed once, not per primitive
- * (ORACLE-NOTES.md "Point parameters"; open in fixgl, known differences
- * random-raster/s1-i211 and others):
+ * (ORACLE-NOTES.md "Point parameters"):
  *  - llvmpipe recomputes its draw regions (framebuffer, scissor box and,
  *    with per-vertex point sizes, the viewport rectangle) only when they
  *    are marked dirty (a viewport or scissor change, the scissor test
@@ -21,6 +20,12 @@
  *    viewport again, a viewport changed and changed back between draws, a
  *    scissor box changed while the test is off, the test toggled on and
  *    off between draws, a plain clear, attenuation toggled;
+ *  - occlusion queries begun or ended mark nothing, asking for a
+ *    result that is not ready does (llvmpipe flushes to wait for it); a
+ *    texel write into the resource the pending scene samples
+ *    (glTexImage2D of the same size, glTexSubImage2D) flushes and marks,
+ *    one into another texture, an image given new storage, a deletion or
+ *    glGetTexImage does not;
  *  - a smooth point first (the aapoint stage binds the same "no cull"
  *    rasterizer) leaves them uncut, a polygon-mode line first cuts them,
  *    and a wide point after an uncut region is not cut either.
@@ -123,6 +128,11 @@ static int run_event(int ev)
    static const float one[3] = { 1, 0, 0 };
    unsigned char b[4] = { 0, 0, 0, 0 };
    static const GLubyte bm[8] = { 0xff };
+   if (ev == 24) {
+      GLuint q;
+      glGenQueries(1, &q);
+      glBeginQuery(GL_SAMPLES_PASSED, q);
+   }
    if (ev == 12)
       smooth_point();
    else if (ev == 13) {
@@ -131,7 +141,45 @@ static int run_event(int ev)
       glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
    } else if (ev == 18 || ev == 21)
       smooth_line();
-   else
+   else if (ev >= 25 && ev <= 30) {
+      /* a textured triangle pending; textures t[0] (used) and t[1] */
+      static const unsigned char texels[4 * 4 * 4] = { 255, 255, 255, 255 };
+      GLuint t[2];
+      glGenTextures(2, t);
+      for (int i = 1; i >= 0; i--) {
+         glBindTexture(GL_TEXTURE_2D, t[i]);
+         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      }
+      glEnable(GL_TEXTURE_2D);
+      tiny_tri();
+      glDisable(GL_TEXTURE_2D);
+      switch (ev) {
+      case 25:   /* the used texture's image again, same size and format */
+         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+         break;
+      case 26:   /* the used texture, a sub-image */
+         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+         break;
+      case 27:   /* the other texture's sub-image */
+         glBindTexture(GL_TEXTURE_2D, t[1]);
+         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+         break;
+      case 28:   /* the used texture, another size (new storage) */
+         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+         break;
+      case 29:   /* the used texture deleted */
+         glDeleteTextures(1, &t[0]);
+         break;
+      case 30:   /* glGetTexImage of the used texture */
+         {
+            static unsigned char out[4 * 4 * 4];
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+         }
+         break;
+      default: break;
+      }
+   } else
       tiny_tri();
    switch (ev) {
    case 1: glFinish(); break;
@@ -160,6 +208,31 @@ static int run_event(int ev)
    case 18: tiny_tri(); break;
    case 19: glRasterPos2f(50, 50); glCopyPixels(0, 0, 1, 1, GL_COLOR); break;
    case 20: glScissor(0, 0, 60, 64); glEnable(GL_SCISSOR_TEST); glDisable(GL_SCISSOR_TEST); break;
+   case 22: {   /* an occlusion query begun (active at the next draw) */
+      GLuint q;
+      glGenQueries(1, &q);
+      glBeginQuery(GL_SAMPLES_PASSED, q);
+      break;
+   }
+   case 23: {   /* an occlusion query begun and ended */
+      GLuint q;
+      glGenQueries(1, &q);
+      glBeginQuery(GL_SAMPLES_PASSED, q);
+      glEndQuery(GL_SAMPLES_PASSED);
+      break;
+   }
+   case 24: {   /* an occlusion query ended (begun before the triangle) */
+      glEndQuery(GL_SAMPLES_PASSED);
+      break;
+   }
+   case 31: {   /* a query's result asked for */
+      GLuint q, r;
+      glGenQueries(1, &q);
+      glBeginQuery(GL_SAMPLES_PASSED, q);
+      glEndQuery(GL_SAMPLES_PASSED);
+      glGetQueryObjectuiv(q, GL_QUERY_RESULT, &r);
+      break;
+   }
    default: break;
    }
    if (ev == 21) {
@@ -201,6 +274,14 @@ int main(void)
       { 19, 1, "glCopyPixels" },
       { 20, 0, "the scissor test on and off between draws" },
       { 21, 1, "a wide point after a smooth line first" },
+      { 22, 0, "glBeginQuery" },    { 23, 0, "glBeginQuery, glEndQuery" },
+      { 24, 0, "glEndQuery" },      { 25, 1, "glTexImage2D of the used texture" },
+      { 26, 1, "glTexSubImage2D of the used texture" },
+      { 27, 0, "glTexSubImage2D of another texture" },
+      { 28, 0, "glTexImage2D of the used texture, another size" },
+      { 29, 0, "the used texture deleted" },
+      { 30, 0, "glGetTexImage of the used texture" },
+      { 31, 1, "glGetQueryObjectuiv(GL_QUERY_RESULT)" },
    };
    for (unsigned i = 0; i < sizeof(evs) / sizeof(evs[0]); i++) {
       const int n = run_event(evs[i].ev);

@@ -144,6 +144,18 @@ GLint fgl_compressed_image_size(GLenum format, GLsizei w, GLsizei h, GLsizei d);
 void fgl_update_texture_state(struct fgl_context *ctx);
 void fgl_update_texture_matrices(struct fgl_context *ctx);
 bool fgl_texture_complete(const struct fgl_texture_object *t, int *max_level);
+/* The oracle's finalization of a complete texture t drawn with (levels up
+ * to max_level, fgl_texture_complete's): its images move into the
+ * object's resource (main/teximage.c "Storage") */
+void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level);
+/* A draw samples the textures of the enabled units: the oracle finalizes
+ * them, and its scene references their resources until its next flush
+ * (main/teximage.c) */
+void fgl_tex_note_scene_use(struct fgl_context *ctx);
+/* Texels were written into img of t: a flush of the oracle's scene when
+ * it samples img's resource (main/teximage.c) */
+void fgl_tex_written(struct fgl_context *ctx, const struct fgl_texture_object *t,
+                     const struct fgl_texture_image *img);
 
 /* main/clear.c (GL_COLOR_BUFFER_BIT) */
 void fgl_init_color(struct fgl_context *ctx);

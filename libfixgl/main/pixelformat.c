@@ -1371,7 +1371,8 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    unsigned ops;
    bool rgb_to_lum = false;
    const bool exact_rgba8 = base == GL_RGBA && !(source & FGL_PACK_NOT_R8G8B8A8);
-   source &= ~(unsigned)FGL_PACK_NOT_R8G8B8A8;
+   const bool cpu_decoded = (source & FGL_PACK_CPU_DECODED) != 0;
+   source &= ~(unsigned)(FGL_PACK_NOT_R8G8B8A8 | FGL_PACK_CPU_DECODED);
    if (source == FGL_PACK_READPIXELS) {
       /* [S: readpix.c:_mesa_get_readpixels_transfer_ops] the clamp stays
        * only for the R+G+B luminance of an unsigned normalized buffer */
@@ -1413,7 +1414,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
    const size_t stride = fgl_image_row_stride(p, width, format, type);
    uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
 
-   if (ops || rgb_to_lum) {
+   if (ops || rgb_to_lum || cpu_decoded) {
       float (*f)[4] = fgl_malloc_gl(ctx, count * sizeof(*f));
       if (!f) {
          fgl_free(src);
@@ -1421,7 +1422,7 @@ bool fgl_pack_rgba8(struct fgl_context *ctx, const struct fgl_pixelstore *p,
       }
       for (size_t i = 0; i < count; i++)
          for (int c = 0; c < 4; c++)
-            f[i][c] = unorm_to_float(src[i][c], 8);
+            f[i][c] = cpu_decoded ? (float)src[i][c] / 255.0f : unorm_to_float(src[i][c], 8);
       fgl_apply_rgba_transfer_ops(ctx, ops, count, f);
       if (rgb_to_lum) {
          /* [S: pack.c:_mesa_pack_luminance_from_rgba_float] */
@@ -1632,6 +1633,68 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
    fgl_free(v);
    fgl_free(b);
    return ok;
+}
+
+/*
+ * [S: readpix.c:read_rgba_pixels, get_readpixels_transfer_ops;
+ * format_utils.c:_mesa_format_convert] glReadPixels from a wide colour
+ * buffer (ORACLE-NOTES.md "OSMesa contexts and buffers"; probe
+ * p_osmesa_wide):
+ *  - R16G16B16A16_UNORM without transfer operations or a luminance
+ *    destination: the values converted straight to the destination, as
+ *    glGetTexImage converts a 16-bit array texture (fgl_pack_tex_stored:
+ *    plain types channel by channel, packed types through an 8-bit
+ *    intermediate, or float for fields wider than 8 bits);
+ *  - otherwise, and always from R32G32B32A32_FLOAT (GL_FIXED_ONLY's read
+ *    clamp is a transfer operation there): RGBA float (u * (1 / 65535) or
+ *    the stored float), the operations (the clamp last), L = R+G+B for a
+ *    luminance destination (clamped when the clamp is on), then float to
+ *    the destination.
+ * `u16` or `f32`: width * height RGBA source values, rows in memory order.
+ */
+bool fgl_pack_wide(struct fgl_context *ctx, const struct fgl_pixelstore *p, int width,
+                   int height, const uint16_t *u16, const float *f32, GLenum format,
+                   GLenum type, void *pixels)
+{
+   struct layout l;
+   if (!get_layout(format, type, &l))
+      return false;
+   if (width <= 0 || height <= 0)
+      return true;
+   const size_t count = (size_t)width * (size_t)height;
+   const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
+   unsigned ops = fgl_image_transfer_state(ctx);
+   if (f32 || lum)
+      ops |= FGL_IMAGE_CLAMP_BIT;
+   if (u16 && !lum && !(ops & ~(unsigned)FGL_IMAGE_CLAMP_BIT)) {
+      static const uint8_t bits16[4] = { 16, 16, 16, 16 };
+      return fgl_pack_tex_stored(ctx, p, width, height, GL_RGBA, u16, bits16, true, format,
+                                 type, pixels);
+   }
+   float (*f)[4] = fgl_malloc_gl(ctx, count * sizeof(*f));
+   if (!f)
+      return false;
+   for (size_t i = 0; i < count; i++)
+      for (int c = 0; c < 4; c++)
+         f[i][c] = u16 ? unorm_to_float(u16[4 * i + (size_t)c], 16) : f32[4 * i + (size_t)c];
+   fgl_apply_rgba_transfer_ops(ctx, ops, count, f);
+   if (lum) {
+      /* [S: pack.c:_mesa_pack_luminance_from_rgba_float] */
+      for (size_t i = 0; i < count; i++) {
+         const float sum = f[i][0] + f[i][1] + f[i][2];
+         f[i][0] = (ops & FGL_IMAGE_CLAMP_BIT) ? clampf(sum, 0.0f, 1.0f) : sum;
+      }
+   }
+   const size_t stride = fgl_image_row_stride(p, width, format, type);
+   uint8_t *dst0 = (uint8_t *)fgl_image_address(p, pixels, width, format, type, 0, 0);
+   for (int y = 0; y < height; y++)
+      pack_row_float(&l, (const float (*)[4])(f + (size_t)y * (size_t)width), (size_t)width,
+                     dst0 + (size_t)y * stride);
+   if (p->SwapBytes)
+      for (int y = 0; y < height; y++)
+         swap_row(&l, type, dst0 + (size_t)y * stride, (size_t)width);
+   fgl_free(f);
+   return true;
 }
 
 /* ------------------------------------------------------------------ */

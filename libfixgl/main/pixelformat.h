@@ -157,6 +157,11 @@ enum fgl_pack_source {
  * rather than pack_rgba_8unorm, which rounds differently
  * (GL_UNSIGNED_INT_10_10_10_2 and _REV). */
 #define FGL_PACK_NOT_R8G8B8A8 0x100
+/* Or'ed into FGL_PACK_TEXIMAGE when the texels come from Mesa's CPU
+ * decoders (texcompress.c:_mesa_decompress_image): they reach the
+ * destination through float, each channel UBYTE_TO_FLOAT's x / 255.0f
+ * (not x * (1.0f / 255)), then as the float path packs. */
+#define FGL_PACK_CPU_DECODED 0x200
 
 /* Packs width x height RGBA8 values (row-major; rows in the order they
  * go to memory) of base format `base` (GL_RGBA, GL_RGB for a buffer or
@@ -180,6 +185,16 @@ bool fgl_pack_tex_stored(struct fgl_context *ctx, const struct fgl_pixelstore *p
                          int width, int height, GLenum base, const uint16_t *store,
                          const uint8_t bits[4], bool array16, GLenum format, GLenum type,
                          void *pixels);
+
+/* glReadPixels of a colour format from a wide OSMesa buffer: packs the
+ * width x height RGBA values of its R16G16B16A16_UNORM (u16) or
+ * R32G32B32A32_FLOAT (f32; the other NULL) render target, rows in memory
+ * order, as the oracle converts them [S: readpix.c:read_rgba_pixels],
+ * with the pixel transfer operations, SWAP_BYTES last.  Returns false for
+ * a format/type it does not convert. */
+bool fgl_pack_wide(struct fgl_context *ctx, const struct fgl_pixelstore *p, int width,
+                   int height, const uint16_t *u16, const float *f32, GLenum format,
+                   GLenum type, void *pixels);
 
 /* One row of n depth values [S: pack.c:_mesa_pack_depth_span] (depth
  * scale/bias applied, SWAP_BYTES) at `dst` (already addressed). */

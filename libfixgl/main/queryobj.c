@@ -290,8 +290,10 @@ static bool query_object_value(struct fgl_context *ctx, GLuint id, GLenum pname,
       if (!q->Ready) {
          /* the oracle waits for the scene's fence, flushing it first
           * unless a flush came since the query ended */
-         if (ctx->Query.FlushEpoch == q->EndEpoch)
+         if (ctx->Query.FlushEpoch == q->EndEpoch) {
             fgl_query_flushed(ctx);
+            fgl_vpcut_invalidate(ctx);   /* lp_setup_reset (p_vpcut_state) */
+         }
          resolve(ctx, q);
       }
       *value = q->Result;
@@ -300,8 +302,10 @@ static bool query_object_value(struct fgl_context *ctx, GLuint id, GLenum pname,
       if (!q->Ready) {
          if (ctx->Query.FlushEpoch != q->EndEpoch)
             resolve(ctx, q);
-         else
+         else {
             fgl_query_flushed(ctx);   /* asked in vain: the scene flushes */
+            fgl_vpcut_invalidate(ctx);
+         }
       }
       *value = q->Ready;
       return true;

@@ -96,64 +96,55 @@ struct read_rect {
    GLsizei width, height;
 };
 
-/* glReadPixels of GL_RGBA or GL_RGB as GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT
- * or GL_FLOAT from a wide colour buffer (OSMesa GL_UNSIGNED_SHORT and
- * GL_FLOAT buffers), without pixel transfer operations, and not
- * byte-swapped [S: readpix.c:read_rgba_pixels, _mesa_format_convert]:
- * from R32G32B32A32_FLOAT the values clamped to [0, 1] (no fragment
- * colour clamp for a float buffer, GL_FIXED_ONLY's read clamp), as floats
- * or lrint(f * max); from R16G16B16A16_UNORM ushort as stored, float
- * u * (1.0f / 65535), ubyte (u * 255 + 32767) / 65535.  Measured: probe
- * p_osmesa_wide.  Returns false for any other request, which the RGBA8
- * image beside the wide buffer serves (not exact). */
-static bool read_color_wide(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
+/* glReadPixels of a colour format from a wide colour buffer (OSMesa
+ * GL_UNSIGNED_SHORT and GL_FLOAT buffers): the rectangle's values, alpha
+ * 1 for a buffer without alpha, converted by fgl_pack_wide as the oracle
+ * converts its R16G16B16A16_UNORM / R32G32B32A32_FLOAT render target.
+ * Measured: probe p_osmesa_wide, cases osmesa/ushort_readpixels_formats and siblings. */
+static void read_color_wide(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
                             const struct read_rect *r, const struct fgl_pixelstore *pack,
                             GLenum format, GLenum type, void *pixels)
 {
-   if (!fb->Wide || (format != GL_RGBA && format != GL_RGB) ||
-       (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_FLOAT) ||
-       fgl_image_transfer_state(ctx) != 0 || pack->SwapBytes)
-      return false;
-   const int nc = format == GL_RGBA ? 4 : 3;
+   const bool u16 = fb->WideFormat == R_WIDE_UNORM16;
+   const size_t n = (size_t)r->width * (size_t)r->height;
+   void *src = fgl_malloc_gl(ctx, n * 4 * (u16 ? sizeof(uint16_t) : sizeof(float)));
+   if (!src) {
+      fgl_error(ctx, GL_OUT_OF_MEMORY);
+      return;
+   }
+   /* rows bottom-up as GL reads them; the buffer is stored y-down */
    for (GLsizei j = 0; j < r->height; j++) {
       const size_t row = (size_t)(fb->Height - 1 - (r->y + j));
-      uint8_t *dst = (uint8_t *)fgl_image_address(pack, pixels, r->width, format, type, j, 0);
-      for (GLsizei i = 0; i < r->width; i++) {
-         const size_t at = 4 * (row * (size_t)fb->Width + (size_t)(r->x + i));
-         for (int c = 0; c < nc; c++) {
-            const size_t o = (size_t)i * (size_t)nc + (size_t)c;
-            if (fb->WideFormat == R_WIDE_UNORM16) {
-               const unsigned u = c == 3 && fb->AlphaBits == 0 ? 65535u
-                                                                : ((const uint16_t *)fb->Wide)[at + (size_t)c];
-               if (type == GL_UNSIGNED_BYTE)
-                  dst[o] = (uint8_t)((u * 255u + 32767u) / 65535u);
-               else if (type == GL_UNSIGNED_SHORT)
-                  ((GLushort *)(void *)dst)[o] = (GLushort)u;
-               else
-                  ((GLfloat *)(void *)dst)[o] = (float)u * (1.0f / 65535.0f);
-               continue;
-            }
-            float f = c == 3 && fb->AlphaBits == 0 ? 1.0f
-                                                   : ((const float *)fb->Wide)[at + (size_t)c];
-            f = f > 0.0f ? (f < 1.0f ? f : 1.0f) : 0.0f;
-            if (type == GL_UNSIGNED_BYTE)
-               dst[o] = (uint8_t)lrintf(f * 255.0f);
-            else if (type == GL_UNSIGNED_SHORT)
-               ((GLushort *)(void *)dst)[o] = (GLushort)lrintf(f * 65535.0f);
-            else
-               ((GLfloat *)(void *)dst)[o] = f;
-         }
+      const size_t at = 4 * (row * (size_t)fb->Width + (size_t)r->x);
+      const size_t to = 4 * (size_t)j * (size_t)r->width;
+      if (u16) {
+         uint16_t *d = (uint16_t *)src + to;
+         memcpy(d, (const uint16_t *)fb->Wide + at, 8 * (size_t)r->width);
+         if (fb->AlphaBits == 0)
+            for (GLsizei i = 0; i < r->width; i++)
+               d[4 * i + 3] = 65535u;
+      } else {
+         float *d = (float *)src + to;
+         memcpy(d, (const float *)fb->Wide + at, 16 * (size_t)r->width);
+         if (fb->AlphaBits == 0)
+            for (GLsizei i = 0; i < r->width; i++)
+               d[4 * i + 3] = 1.0f;
       }
    }
-   return true;
+   if (!fgl_pack_wide(ctx, pack, r->width, r->height, u16 ? src : NULL, u16 ? NULL : src,
+                      format, type, pixels))
+      fgl_error(ctx, GL_INVALID_OPERATION);   /* not reached: validated */
+   fgl_free(src);
 }
 
 static void read_color(struct fgl_context *ctx, const struct fgl_framebuffer *fb,
                        const struct read_rect *r, const struct fgl_pixelstore *pack,
                        GLenum format, GLenum type, void *pixels)
 {
-   if (read_color_wide(ctx, fb, r, pack, format, type, pixels))
+   if (fb->Wide) {
+      read_color_wide(ctx, fb, r, pack, format, type, pixels);
       return;
+   }
    const size_t n = (size_t)r->width * (size_t)r->height;
    uint8_t *rgba = fgl_malloc_gl(ctx, n * 4);
    if (!rgba) {

@@ -167,6 +167,8 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
       decode_image(img);
    }
    fgl_tex_set_image(t, target, level, img);
+   if (data && width > 0 && height > 0 && depth > 0)
+      fgl_tex_written(ctx, t, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    /* [S: teximage.c:teximage] then GL_GENERATE_MIPMAP */
    fgl_tex_image_changed(ctx, t, target, level);
@@ -317,6 +319,7 @@ static void compressed_tex_sub_image(GLuint dims, GLenum target, GLint level, GL
       memcpy(img->Blocks + (size_t)(y / 4 + j) * img_row + (size_t)(x / 4) * bytes,
              (const uint8_t *)data + (size_t)j * row, row);
    decode_image(img);
+   fgl_tex_written(ctx, fgl_tex_target_object(ctx, target), img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    /* [S: teximage.c:compressed_tex_sub_image] then GL_GENERATE_MIPMAP */
    fgl_tex_image_changed(ctx, fgl_tex_target_object(ctx, target), target, level);

@@ -791,3 +791,86 @@ void fgl_latc_decode_exact(GLenum format, const uint8_t *blocks, int w, int h, u
       }
    }
 }
+
+/* ------------------------------------------------------------------ */
+/* Mesa's CPU decoders                                                */
+/* ------------------------------------------------------------------ */
+
+/*
+ * What glGetTexImage reads of an image outside the texture object's
+ * resource (main/teximage.c "Storage"; ORACLE-NOTES.md "Compressed
+ * textures: LATC", cube faces of mixed formats; probe p_s3tc_cpu_decode)
+ * [S: util/format/texcompress_s3tc_tmp.h: dxt135_decode_imageblock,
+ * fetch_2d_texel_rgba_dxt3, fetch_2d_texel_rgba_dxt5;
+ * texcompress_rgtc_tmp.h: fetch_texel_rgtc]: exact integer thirds and
+ * halves of the 8-bit colours, truncated (not the sampler's lerp23 and
+ * rounded-up average), the DXT3 nibble replicated, DXT5 and LATC channels
+ * in exact sevenths or fifths (rgtc_exact).
+ */
+
+/* The RGBA8 colour of code `code` of a colour block (its first 8 bytes);
+ * dxt1_mode: DXT1 (three colours when c0 <= c1), dxt1_alpha: DXT1 RGBA. */
+static void cpu_colour(const uint8_t *b, unsigned code, bool dxt1_mode, bool dxt1_alpha,
+                       uint8_t *o)
+{
+   const unsigned c[2] = { (unsigned)b[0] | (unsigned)b[1] << 8,
+                           (unsigned)b[2] | (unsigned)b[3] << 8 };
+   int e[2][3];
+   for (int i = 0; i < 2; i++) {
+      const unsigned r = c[i] >> 11, g = (c[i] >> 5) & 63u, bl = c[i] & 31u;
+      e[i][0] = (int)(r << 3 | r >> 2);
+      e[i][1] = (int)(g << 2 | g >> 4);
+      e[i][2] = (int)(bl << 3 | bl >> 2);
+   }
+   const bool four = !dxt1_mode || c[0] > c[1];
+   o[3] = 255;
+   for (int n = 0; n < 3; n++) {
+      int v;
+      switch (code) {
+      case 0: v = e[0][n]; break;
+      case 1: v = e[1][n]; break;
+      case 2: v = four ? (e[0][n] * 2 + e[1][n]) / 3 : (e[0][n] + e[1][n]) / 2; break;
+      default: v = four ? (e[0][n] + e[1][n] * 2) / 3 : 0; break;
+      }
+      o[n] = (uint8_t)v;
+   }
+   if (code == 3 && !four && dxt1_alpha)
+      o[3] = 0;
+}
+
+static uint64_t codes48(const uint8_t *b)
+{
+   uint64_t codes = 0;
+   for (int k = 0; k < 6; k++)
+      codes |= (uint64_t)b[k] << (8 * k);
+   return codes;
+}
+
+void fgl_s3tc_decode_exact(GLenum format, const uint8_t *blocks, int w, int h, uint8_t *rgba)
+{
+   if (fgl_latc_block_bytes(format)) {
+      fgl_latc_decode_exact(format, blocks, w, h, rgba);
+      return;
+   }
+   const unsigned bytes = fgl_s3tc_block_bytes(format, NULL);
+   const bool dxt1 = bytes == 8;
+   const bool dxt1_alpha = format == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+   const int bw = (w + 3) / 4;
+   for (int y = 0; y < h; y++) {
+      for (int x = 0; x < w; x++) {
+         const uint8_t *b = blocks + ((size_t)(y / 4) * (size_t)bw + (size_t)(x / 4)) * bytes;
+         const uint8_t *cb = dxt1 ? b : b + 8;
+         const unsigned t = (unsigned)((y & 3) * 4 + (x & 3));
+         const uint32_t codes = (uint32_t)cb[4] | (uint32_t)cb[5] << 8 |
+                                (uint32_t)cb[6] << 16 | (uint32_t)cb[7] << 24;
+         uint8_t *o = rgba + 4 * ((size_t)y * (size_t)w + (size_t)x);
+         cpu_colour(cb, (codes >> (2 * t)) & 3u, dxt1, dxt1_alpha, o);
+         if (format == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT) {
+            const unsigned a = (b[t >> 1] >> (4 * (t & 1))) & 15u;
+            o[3] = (uint8_t)(a << 4 | a);
+         } else if (format == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT) {
+            o[3] = rgtc_exact(b[0], b[1], (unsigned)(codes48(b + 2) >> (3 * t)) & 7u);
+         }
+      }
+   }
+}

@@ -31,6 +31,13 @@ unsigned fgl_latc_block_bytes(GLenum format);
  * "Compressed textures: LATC"). */
 void fgl_latc_decode_exact(GLenum format, const uint8_t *blocks, int w, int h, uint8_t *rgba);
 
+/* Decodes an image of `format` (S3TC or LATC) as Mesa's CPU decoders do
+ * (exact thirds, halves, sevenths and fifths, truncated; not the
+ * sampler's approximations): what glGetTexImage reads of a compressed
+ * image outside its texture object's resource (main/teximage.c
+ * "Storage"). Arguments as fgl_s3tc_decode_image's. */
+void fgl_s3tc_decode_exact(GLenum format, const uint8_t *blocks, int w, int h, uint8_t *rgba);
+
 /* Bytes of one block of a stored compressed format (S3TC or LATC). */
 unsigned fgl_stored_block_bytes(GLenum format);
 

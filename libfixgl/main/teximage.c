@@ -595,6 +595,236 @@ static struct fgl_texture_image *new_image(int w, int h, int d, int border, GLin
    return img;
 }
 
+/* ------------------------------------------------------------------ */
+/* Storage                                                            */
+/* ------------------------------------------------------------------ */
+
+/*
+ * Which of the oracle's resources an image lives in decides how
+ * glGetTexImage reads a compressed image: one in the object's resource
+ * goes through the sampler (a blit), one in a resource of its own through
+ * Mesa's CPU decoders (ORACLE-NOTES.md "Compressed textures: LATC", cube
+ * faces of mixed formats; probe p_cube_mixed_storage) [S: st_cb_texture.c:
+ * st_GetTexSubImage, "stImage->pt != stObj->pt"].  fixgl keeps the
+ * texels either way and records only where the oracle put them:
+ *  - at each image's allocation [S: st_AllocTextureImageBuffer]: an image
+ *    the object's resource fits (same pipe format, the level's size, the
+ *    level within the resource) lives there; otherwise, when the object
+ *    has no resource, or one of a single level, or the image is of level
+ *    0, the object's resource is dropped and a new one guessed from the
+ *    image (guess_and_alloc_texture: level 0's size from the base image
+ *    when that agrees, else from this one; all levels or one,
+ *    allocate_full_mipmap) and the image lives there if it fits; else
+ *    the image gets a resource of its own;
+ *  - when a complete texture is drawn [S: st_finalize_texture]: the base
+ *    image's resource becomes the object's when it has as many levels; a
+ *    resource of another format, size or too few levels is replaced; the
+ *    images of the used levels that fit are moved into it.
+ * Faces of different formats therefore leave the faces before the last
+ * change of format in resources of their own.
+ */
+
+static GLint minify(GLint x, GLint level)
+{
+   return x >> level > 1 ? x >> level : 1;
+}
+
+/* [S: st_texture.c:st_texture_match_image] */
+static bool storage_fits(const struct fgl_tex_storage *s, const struct fgl_texture_image *img,
+                         GLint level)
+{
+   return s->Id != 0 && s->Format == img->Format && s->CompressedFormat == img->CompressedFormat &&
+          level <= s->LastLevel && img->Width == minify(s->Width0, level) &&
+          img->Height == minify(s->Height0, level) && img->Depth == minify(s->Depth0, level);
+}
+
+/* [S: st_cb_texture.c:guess_base_level_size] level 0's size from an image
+ * of `level`; false when it cannot be told */
+static bool guess_level0(GLenum target, const struct fgl_texture_image *img, GLint level,
+                         GLint size[3])
+{
+   size[0] = img->Width;
+   size[1] = img->Height;
+   size[2] = img->Depth;
+   if (level == 0)
+      return true;
+   if ((target == GL_TEXTURE_2D && (size[0] == 1 || size[1] == 1)) ||
+       (target == GL_TEXTURE_3D && (size[0] == 1 || size[1] == 1 || size[2] == 1)))
+      return false;
+   size[0] <<= level;
+   if (target != GL_TEXTURE_1D)
+      size[1] <<= level;
+   if (target == GL_TEXTURE_3D)
+      size[2] <<= level;
+   return true;
+}
+
+/* [S: st_cb_texture.c:allocate_full_mipmap] */
+static bool full_mipmap(const struct fgl_texture_object *t, const struct fgl_texture_image *img,
+                        GLint level)
+{
+   if (level > 0 || t->GenerateMipmap)
+      return true;
+   if (t->MaxLevel < FGL_MAX_TEXTURE_LEVELS && t->MaxLevel - t->BaseLevel > 0)
+      return true;
+   if (img->BaseFormat == GL_DEPTH_COMPONENT)
+      return false;
+   if (t->BaseLevel == 0 && t->MaxLevel == 0)
+      return false;
+   if (t->MinFilter == GL_NEAREST || t->MinFilter == GL_LINEAR ||
+       t->MinFilter == GL_NEAREST_MIPMAP_LINEAR)
+      return false;
+   return t->Target != GL_TEXTURE_3D;
+}
+
+static struct fgl_tex_storage new_storage(struct fgl_texture_object *t,
+                                          const struct fgl_texture_image *img,
+                                          const GLint size[3], GLint last_level)
+{
+   const struct fgl_tex_storage s = { ++t->StorageIds, img->Format, img->CompressedFormat,
+                                      size[0], size[1], size[2], last_level };
+   return s;
+}
+
+/* [S: st_cb_texture.c:guess_and_alloc_texture] the object's new resource
+ * for img at `level` (none when level 0's size cannot be guessed) */
+static void guess_storage(struct fgl_texture_object *t, const struct fgl_texture_image *img,
+                          GLint level)
+{
+   const struct fgl_texture_image *base =
+      t->BaseLevel >= 0 && t->BaseLevel < FGL_MAX_TEXTURE_LEVELS ? t->Image[t->BaseLevel] : NULL;
+   GLint size[3];
+   bool guessed = false;
+   if (base && base->Width > 0 && base->Height > 0 && base->Depth > 0 &&
+       guess_level0(t->Target, base, t->BaseLevel, size))
+      guessed = img->Width == minify(size[0], level) && img->Height == minify(size[1], level) &&
+                img->Depth == minify(size[2], level);
+   if (!guessed && !guess_level0(t->Target, img, level, size))
+      return;
+   GLint last = 0;
+   if (full_mipmap(t, img, level)) {
+      GLint m = size[0] > size[1] ? size[0] : size[1];
+      if (t->Target == GL_TEXTURE_3D && size[2] > m)
+         m = size[2];
+      while (m > 1) {
+         m >>= 1;
+         last++;
+      }
+   }
+   t->Storage = new_storage(t, img, size, last);
+}
+
+/* [S: st_cb_texture.c:st_AllocTextureImageBuffer] where img, the new
+ * image of `level`, lives */
+static void place_image(struct fgl_texture_object *t, struct fgl_texture_image *img, GLint level)
+{
+   if (img->Width <= 0 || img->Height <= 0 || img->Depth <= 0)
+      return;
+   if (t->Storage.Id == 0 || t->Storage.LastLevel == 0 || level == 0) {
+      if (storage_fits(&t->Storage, img, level)) {
+         img->Storage = t->Storage;
+         return;
+      }
+      t->Storage.Id = 0;
+      guess_storage(t, img, level);
+   }
+   if (storage_fits(&t->Storage, img, level)) {
+      img->Storage = t->Storage;
+   } else {
+      const GLint size[3] = { img->Width, img->Height, img->Depth };
+      img->Storage = new_storage(t, img, size, 0);
+   }
+}
+
+void fgl_tex_finalize_storage(struct fgl_texture_object *t, int max_level)
+{
+   struct fgl_texture_image *first = t->Image[t->BaseLevel];
+   const GLint last = t->MinFilter == GL_NEAREST || t->MinFilter == GL_LINEAR ? t->BaseLevel
+                                                                               : max_level;
+   if (first->Storage.Id != t->Storage.Id &&
+       (t->Storage.Id == 0 || first->Storage.LastLevel >= t->Storage.LastLevel))
+      t->Storage = first->Storage;
+   GLint size[3];
+   if (!guess_level0(t->Target, first, t->BaseLevel, size)) {
+      size[0] = t->Storage.Width0;
+      size[1] = t->Storage.Height0;
+      size[2] = t->Storage.Depth0;
+   }
+   if (t->Storage.Id != 0 &&
+       (t->Storage.Format != first->Format ||
+        t->Storage.CompressedFormat != first->CompressedFormat || t->Storage.LastLevel < last ||
+        t->Storage.Width0 != size[0] || t->Storage.Height0 != size[1] ||
+        t->Storage.Depth0 != size[2]))
+      t->Storage.Id = 0;
+   if (t->Storage.Id == 0)
+      t->Storage = new_storage(t, first, size, last);
+   const unsigned faces = t->Target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
+   for (unsigned f = 0; f < faces; f++) {
+      for (GLint l = t->BaseLevel; l <= last && l < FGL_MAX_TEXTURE_LEVELS; l++) {
+         struct fgl_texture_image *img = *fgl_tex_face_slot(t, f, l);
+         if (img && img->Storage.Id != t->Storage.Id &&
+             (l == 0 || (img->Width == minify(size[0], l) && img->Height == minify(size[1], l) &&
+                         img->Depth == minify(size[2], l))))
+            img->Storage = t->Storage;
+      }
+   }
+}
+
+/* [S: st_atom_texture.c:update_textures, st_finalize_texture;
+ * lp_setup.c:try_update_scene_state, lp_scene_add_resource_reference] a
+ * draw (not a clear or a pixel rectangle, whose validation binds no
+ * sampler views) finalizes the textures it samples, and their resources
+ * join the scene's references until its flush */
+void fgl_tex_note_scene_use(struct fgl_context *ctx)
+{
+   for (unsigned bits = ctx->_EnabledTexUnits; bits; bits &= bits - 1) {
+      const unsigned u = (unsigned)__builtin_ctz(bits);
+      fgl_tex_finalize_storage(ctx->_CurrentTex[u], ctx->_CurrentTexMaxLevel[u]);
+   }
+   if (ctx->_SceneTexEpoch != ctx->Query.FlushEpoch) {
+      ctx->_SceneTexEpoch = ctx->Query.FlushEpoch;
+      ctx->_SceneTexCount = 0;
+      ctx->_SceneTexFull = false;
+   }
+   for (unsigned bits = ctx->_EnabledTexUnits; bits; bits &= bits - 1) {
+      const struct fgl_texture_object *t = ctx->_CurrentTex[__builtin_ctz(bits)];
+      unsigned i = 0;
+      while (i < ctx->_SceneTexCount &&
+             (ctx->_SceneTex[i].Obj != t || ctx->_SceneTex[i].Storage != t->Storage.Id))
+         i++;
+      if (i < ctx->_SceneTexCount)
+         continue;
+      if (i == sizeof(ctx->_SceneTex) / sizeof(ctx->_SceneTex[0])) {
+         ctx->_SceneTexFull = true;
+         continue;
+      }
+      ctx->_SceneTex[i].Obj = t;
+      ctx->_SceneTex[i].Storage = t->Storage.Id;
+      ctx->_SceneTexCount++;
+   }
+}
+
+/* [S: llvmpipe/lp_texture.c:llvmpipe_transfer_map, lp_flush.c:
+ * llvmpipe_flush_resource] Mesa maps the image's resource to write
+ * texels; llvmpipe flushes the scene first when the scene samples that
+ * resource (probe p_vpcut_state: glTexImage2D of the same size and
+ * glTexSubImage2D of a texture the pending triangle samples; not another
+ * texture's, not an image given new storage).  The flush marks
+ * llvmpipe's setup state dirty and makes the ended queries available. */
+void fgl_tex_written(struct fgl_context *ctx, const struct fgl_texture_object *t,
+                     const struct fgl_texture_image *img)
+{
+   if (!img || img->Storage.Id == 0 || ctx->_SceneTexEpoch != ctx->Query.FlushEpoch)
+      return;
+   bool sampled = ctx->_SceneTexFull;
+   for (unsigned i = 0; i < ctx->_SceneTexCount && !sampled; i++)
+      sampled = ctx->_SceneTex[i].Obj == t && ctx->_SceneTex[i].Storage == img->Storage.Id;
+   if (sampled) {
+      fgl_query_flushed(ctx);
+      fgl_vpcut_invalidate(ctx);
+   }
+}
+
 /* Replaces the image of face `face` (0 without faces) at `level` of t. */
 static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
                       struct fgl_texture_image *img)
@@ -602,6 +832,8 @@ static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
    struct fgl_texture_image **slot = fgl_tex_face_slot(t, face, level);
    free_image(*slot);
    *slot = img;
+   if (img)
+      place_image(t, img, level);
 }
 
 /* Allocates the texel storage of img (and its stored values when the
@@ -849,16 +1081,28 @@ static bool block_alignment_error(struct fgl_context *ctx, const struct fgl_text
    return false;
 }
 
-/* [S: st_cb_texture.c:st_GetTexSubImage] The RGBA8 texels glGetTexImage
- * (and GL_GENERATE_MIPMAP's read of the base) gets of an image of Data's
- * size: its Data, the sampler's texels, but for LATC2, which the oracle
- * reads back with Mesa's CPU decoder (measured: exact sevenths and
- * fifths; ORACLE-NOTES.md "Compressed textures: LATC"). */
-static void readback_texels(const struct fgl_texture_image *img, uint8_t *out)
+/* [S: st_cb_texture.c:st_GetTexSubImage] Whether glGetTexImage (and
+ * GL_GENERATE_MIPMAP's read of the base) reads img, an image of t, through
+ * Mesa's CPU decoders: a compressed image in a resource other than the
+ * object's ("Storage" above), and LATC2 always (measured: exact sevenths
+ * and fifths; ORACLE-NOTES.md "Compressed textures: LATC"). */
+static bool reads_through_cpu(const struct fgl_texture_object *t,
+                              const struct fgl_texture_image *img)
 {
-   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT)
+   return img->CompressedFormat &&
+          (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT ||
+           img->Storage.Id != t->Storage.Id);
+}
+
+/* The RGBA8 texels glGetTexImage and GL_GENERATE_MIPMAP read of img, an
+ * image of t: its Data (the sampler's texels), or Mesa's CPU decode of
+ * its blocks (reads_through_cpu). */
+static void readback_texels(const struct fgl_texture_object *t,
+                            const struct fgl_texture_image *img, uint8_t *out)
+{
+   if (reads_through_cpu(t, img))
       for (int k = 0; k < img->Depth; k++)
-         fgl_latc_decode_exact(img->CompressedFormat,
+         fgl_s3tc_decode_exact(img->CompressedFormat,
                                img->Blocks + (size_t)k * slice_blocks_bytes(img), img->Width,
                                img->Height,
                                out + 4 * (size_t)k * (size_t)img->Width * (size_t)img->Height);
@@ -882,7 +1126,7 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
    }
-   readback_texels(base, src);
+   readback_texels(t, base, src);
    for (GLint l = level + 1; l <= last; l++) {
       const int w = W > 1 ? W >> 1 : 1, h = H > 1 ? H >> 1 : 1, d = D > 1 ? D >> 1 : 1;
       struct fgl_texture_image *img = new_image(w, h, d, 0, (GLint)base->InternalFormat,
@@ -1376,6 +1620,8 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    if (cf && pixels)
       compress_region(ctx, img, 0, 0, 0, width, height, depth);
    set_image(t, target_face(target), level, img);
+   if (pixels)
+      fgl_tex_written(ctx, t, img);
    ctx->NewState |= FGL_NEW_TEXTURE;
    check_gen_mipmap(ctx, t, target_face(target), level);
 }
@@ -1497,6 +1743,8 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
    fgl_flush_bitmap_cache(ctx);
    if (store_texels(ctx, img, &ctx->Unpack, dims, xoff, yoff, zoff, width, height, depth,
                     format, type, pixels)) {
+      if (pixels)
+         fgl_tex_written(ctx, t, img);
       if (img->CompressedFormat && pixels)
          compress_region(ctx, img, xoff, yoff, zoff, width, height, depth);
       ctx->NewState |= FGL_NEW_TEXTURE;
@@ -1911,6 +2159,7 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D &&
        !is_cube_face(target))
       return;   /* no image: nothing to do */
+   const struct fgl_texture_object *tobj = target_object(ctx, target);
    const struct fgl_texture_image *img = *image_slot(target_object(ctx, target), target, level);
    if (!img || img->Width == 0 || img->Height == 0 || img->Depth == 0)
       return;
@@ -1939,14 +2188,14 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
    /* a 3D image slice by slice, each at its slice's address
     * (GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES) */
    const size_t slice = (size_t)img->Width * (size_t)img->Height;
-   uint8_t *latc2 = NULL;
-   if (img->CompressedFormat == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT) {
-      latc2 = fgl_malloc_gl(ctx, slice * (size_t)img->Depth * 4);
-      if (!latc2) {
+   uint8_t *cpu = NULL;
+   if (reads_through_cpu(tobj, img)) {
+      cpu = fgl_malloc_gl(ctx, slice * (size_t)img->Depth * 4);
+      if (!cpu) {
          fgl_error(ctx, GL_OUT_OF_MEMORY);
          return;
       }
-      readback_texels(img, latc2);
+      readback_texels(tobj, img, cpu);
    }
    for (int k = 0; k < img->Depth; k++) {
       void *dst = target == GL_TEXTURE_3D
@@ -1958,11 +2207,13 @@ void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum 
                              img->Store + 4 * slice * (size_t)k, img->StoreBits,
                              max_bits(img->Format) == 16, format, type, dst);
       else
-         fgl_pack_rgba8(ctx, &ctx->Pack, FGL_PACK_TEXIMAGE, img->Width, img->Height,
-                        img->BaseFormat, (latc2 ? latc2 : img->Data) + 4 * slice * (size_t)k,
+         fgl_pack_rgba8(ctx, &ctx->Pack,
+                        FGL_PACK_TEXIMAGE | (cpu ? FGL_PACK_CPU_DECODED : 0u), img->Width,
+                        img->Height,
+                        img->BaseFormat, (cpu ? cpu : img->Data) + 4 * slice * (size_t)k,
                         format, type, dst);
    }
-   fgl_free(latc2);
+   fgl_free(cpu);
 }
 
 /* ------------------------------------------------------------------ */

@@ -899,6 +899,19 @@ void fgl_save_texobjs(struct fgl_context *ctx, struct fgl_attrib_node *node)
       node->TexObj[x] = *current_object(ctx, x);
 }
 
+/* t's parameters from a glPushAttrib copy, keeping what is not state of
+ * GL_TEXTURE_BIT: the images (every face's) and the oracle's storage
+ * (main/teximage.c "Storage") */
+static void restore_params(struct fgl_texture_object *t, const struct fgl_texture_object *saved)
+{
+   struct fgl_texture_object keep = *t;
+   *t = *saved;
+   memcpy(t->Image, keep.Image, sizeof(t->Image));
+   memcpy(t->FaceImage, keep.FaceImage, sizeof(t->FaceImage));
+   t->Storage = keep.Storage;
+   t->StorageIds = keep.StorageIds;
+}
+
 /* [S: attrib.c:pop_texture_group] after the bindings are restored (a
  * unit not saved had nothing but default objects bound at the push): the
  * LOD bias from the node, saved or not; for a saved unit each bound named
@@ -929,20 +942,13 @@ void fgl_restore_texobjs(struct fgl_context *ctx, const struct fgl_attrib_node *
       for (int x = 0; x < FGL_TEX_TARGETS; x++) {
          struct fgl_texture_object *t = ctx->TexLocal.Current[0][x];
          if (t && saved[x].Name == t->Name) {
-            struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
-            memcpy(images, t->Image, sizeof(images));
             const unsigned refs = t->RefCount;
-            *t = saved[x];
-            memcpy(t->Image, images, sizeof(images));
+            restore_params(t, &saved[x]);
             t->RefCount = refs;
          }
       }
    }
    for (int x = 0; x < FGL_TEX_TARGETS; x++) {
-      struct fgl_texture_object *t = &ctx->TexObjects->Default[x];
-      struct fgl_texture_image *images[FGL_MAX_TEXTURE_LEVELS];
-      memcpy(images, t->Image, sizeof(images));
-      *t = node->TexDefault[x];
-      memcpy(t->Image, images, sizeof(images));
+      restore_params(&ctx->TexObjects->Default[x], &node->TexDefault[x]);
    }
 }

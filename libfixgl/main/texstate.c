@@ -177,6 +177,7 @@ void fgl_update_texture_state(struct fgl_context *ctx)
          if (!fgl_texture_complete(t, &max_level))
             continue;
          ctx->_EnabledTexUnits |= 1u << u;
+         ctx->_CurrentTexMaxLevel[u] = max_level;
          ctx->_CurrentTex[u] = t;
          ctx->_CurrentTexTarget[u] = targets[k];
          break;

@@ -462,6 +462,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    if (!ctx->DrawBuffer)
       return;
    fgl_vpcut_validate(ctx, true);
+   fgl_tex_note_scene_use(ctx);
    if (ctx->Color.DrawBuffer != GL_NONE)
       fgl_mark_color_defined(ctx->DrawBuffer);
    fgl_update_stipple(ctx);
