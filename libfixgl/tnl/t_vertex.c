@@ -260,6 +260,8 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       t_light_prepare(ctx, in, &lb);
       eye_position = lb.eye_position;
    }
+   /* the colour slots the lighting left clamped */
+   const unsigned clamped = !phong && lit ? lb.clamped : 0u;
    const bool psize_chain = psize && eye_chain_before_psize(ctx, eye_position, fog);
    const bool simd = t_vertex_simd(ctx);
 
@@ -278,9 +280,10 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       else if (lit)
          t_light_run(ctx, &lb, in, first, cnt, out);
 
-      for (unsigned i = first; i < first + cnt; i++)
-         for (int a = 0; a < ncolor; a++)
-            clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
+      if (ncolor > (int)clamped)
+         for (unsigned i = first; i < first + cnt; i++)
+            for (int a = (int)clamped; a < ncolor; a++)
+               clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
 
       /* GL_COLOR_SUM: unlit, the vertex program passes the secondary
        * colour through (clamped as every colour output); lit with a
