@@ -551,15 +551,18 @@ T_AVX2 static inline void normalize3_8(__m256 v[3])
       v[k] = _mm256_mul_ps(v[k], r);
 }
 
-T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                              const struct fgl_vertex_view *in, unsigned first, unsigned n,
-                              struct t_vertex *out)
+/* sides: 1, or 2 with two-sided lighting, a constant of each
+ * instance (light_simd), so that the faces' loops unroll and their lane
+ * vectors stay in registers */
+T_AVX2 static inline __attribute__((always_inline)) void
+light_simd_sides(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                 const struct fgl_vertex_view *in, unsigned first, unsigned n,
+                 struct t_vertex *out, const int sides)
 {
    const struct t_light_key *key = &lb->key;
    const struct t_light_products *P = &lb->P;
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
    const struct t_material_source *src = lb->src;
-   const int sides = key->twoside ? 2 : 1;
    const float *inv = ctx->ModelviewStack.Top->inv;
    const float *mv = ctx->ModelviewStack.Top->m;
    const __m256 sign = _mm256_set1_ps(-0.0f);
@@ -767,6 +770,16 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
          t_soa8_store4(sec, base + 4, sizeof(out[0]) / sizeof(float), cnt);
       }
    }
+}
+
+T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                              const struct fgl_vertex_view *in, unsigned first, unsigned n,
+                              struct t_vertex *out)
+{
+   if (lb->key.twoside)
+      light_simd_sides(ctx, lb, in, first, n, out, 2);
+   else
+      light_simd_sides(ctx, lb, in, first, n, out, 1);
 }
 #endif
 
