@@ -11,26 +11,21 @@
 #include "main/groups.h"
 #include "fgl_alloc.h"
 
-/* initial-exec: read at a fixed offset from the thread pointer, without a
- * __tls_get_addr call in every GL entry point (the general model of a
- * shared library's TLS); the library's few bytes come from the static TLS
- * block, or its reserve when it is dlopen()ed, as Mesa's current context
- * and dispatch do. */
-#if defined(__GNUC__) && defined(__ELF__)
-#define FGL_TLS_INITIAL_EXEC __attribute__((tls_model("initial-exec")))
-#else
-#define FGL_TLS_INITIAL_EXEC
-#endif
-static _Thread_local struct fgl_context *current_context FGL_TLS_INITIAL_EXEC;
+/* initial-exec (FGL_TLS_INITIAL_EXEC, context.h): read at a fixed offset
+ * from the thread pointer, without a __tls_get_addr call in every GL entry
+ * point (the general model of a shared library's TLS); the library's few
+ * bytes come from the static TLS block, or its reserve when it is
+ * dlopen()ed, as Mesa's current context and dispatch do. */
+_Thread_local struct fgl_context *fgl_current_context FGL_TLS_INITIAL_EXEC;
 
 struct fgl_context *fgl_get_current(void)
 {
-   return current_context;
+   return fgl_current_context;
 }
 
 void fgl_set_current(struct fgl_context *ctx)
 {
-   current_context = ctx;
+   fgl_current_context = ctx;
 }
 
 void fgl_error(struct fgl_context *ctx, GLenum error)

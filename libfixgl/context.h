@@ -1140,6 +1140,17 @@ struct fgl_context {
 /* The current context of the calling thread (the only mutable global). */
 struct fgl_context *fgl_get_current(void);
 void fgl_set_current(struct fgl_context *ctx);
+/* The variable behind them (context.c), read inline by the entry points'
+ * GET_CURRENT_CONTEXT: with initial-exec TLS one load at a fixed offset
+ * from the thread pointer, without a call (whose spills and reloads of
+ * the arguments cost the attribute calls of immediate mode more than the
+ * load).  Hidden, as every symbol but the API. */
+#if defined(__GNUC__) && defined(__ELF__)
+#define FGL_TLS_INITIAL_EXEC __attribute__((tls_model("initial-exec")))
+#else
+#define FGL_TLS_INITIAL_EXEC
+#endif
+extern _Thread_local struct fgl_context *fgl_current_context FGL_TLS_INITIAL_EXEC;
 
 /* A new context; with share, its display lists, texture objects and
  * buffer objects are share's (OSMesa's sharelist, GLX's shareList). */
@@ -1296,7 +1307,7 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 }
 
 /* Entry point prologue: fetch the current context; return if there is none. */
-#define GET_CURRENT_CONTEXT(C) struct fgl_context *C = fgl_get_current()
+#define GET_CURRENT_CONTEXT(C) struct fgl_context *C = fgl_current_context
 
 /* Commands not allowed between glBegin and glEnd raise INVALID_OPERATION. */
 #define ASSERT_OUTSIDE_BEGIN_END_RET(ctx, ret)             \

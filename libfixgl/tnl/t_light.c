@@ -447,6 +447,8 @@ static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb
 
 #define T_AVX2 __attribute__((target("avx2,fma")))
 
+#include "tnl/t_soa8.h"
+
 T_AVX2 static inline __m256 sel8(__m256 mask, __m256 if_true, __m256 if_false)
 {
    return _mm256_blendv_ps(if_false, if_true, mask);
@@ -549,30 +551,28 @@ T_AVX2 static inline void normalize3_8(__m256 v[3])
       v[k] = _mm256_mul_ps(v[k], r);
 }
 
-T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
-                              const struct fgl_vertex_view *in, unsigned first, unsigned n,
-                              struct t_vertex *out)
+/* sides: 1, or 2 with two-sided lighting, a constant of each
+ * instance (light_simd), so that the faces' loops unroll and their lane
+ * vectors stay in registers */
+T_AVX2 static inline __attribute__((always_inline)) void
+light_simd_sides(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                 const struct fgl_vertex_view *in, unsigned first, unsigned n,
+                 struct t_vertex *out, const int sides)
 {
    const struct t_light_key *key = &lb->key;
    const struct t_light_products *P = &lb->P;
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
    const struct t_material_source *src = lb->src;
-   const int sides = key->twoside ? 2 : 1;
    const float *inv = ctx->ModelviewStack.Top->inv;
    const float *mv = ctx->ModelviewStack.Top->m;
    const __m256 sign = _mm256_set1_ps(-0.0f);
 
    for (unsigned g = first; g < first + n; g += 8) {
       const unsigned cnt = first + n - g < 8 ? first + n - g : 8;
-      /* the normals, structure of arrays */
-      float nin[3][8];
-      for (unsigned l = 0; l < 8; l++) {
-         const float *p = lb->normal + (size_t)(g + (l < cnt ? l : cnt - 1)) * lb->nstride;
-         nin[0][l] = p[0], nin[1][l] = p[1], nin[2][l] = p[2];
-      }
-      __m256 nv[3];
-      const __m256 iv[3] = { _mm256_loadu_ps(nin[0]), _mm256_loadu_ps(nin[1]),
-                             _mm256_loadu_ps(nin[2]) };
+      /* the normals, structure of arrays (each a float[4] slot, or the
+       * current normal for every vertex: stride 0) */
+      __m256 nv[3], iv[4];
+      t_soa8_load4(lb->normal + (size_t)g * lb->nstride, lb->nstride, cnt, iv);
       /* transform_normal */
       if (key->eye) {
          for (int r = 0; r < 3; r++)
@@ -600,14 +600,9 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
        * (else 0), and the local viewer's normalised eye vector */
       __m256 V[3] = { _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps() };
       if (key->eye) {
-         float p[4][8];
-         for (unsigned l = 0; l < 8; l++) {
-            const float *q = fgl_vv_attr(in, g + (l < cnt ? l : cnt - 1), FGL_ATTR_POS);
-            for (int k = 0; k < 4; k++)
-               p[k][l] = q[k];
-         }
-         const __m256 px = _mm256_loadu_ps(p[0]), py = _mm256_loadu_ps(p[1]),
-                      pz = _mm256_loadu_ps(p[2]), pw = _mm256_loadu_ps(p[3]);
+         __m256 p[4];
+         t_soa8_load4(fgl_vv_attr(in, g, FGL_ATTR_POS), in->stride, cnt, p);
+         const __m256 px = p[0], py = p[1], pz = p[2], pw = p[3];
          for (int r = 0; r < 3; r++) {
             __m256 acc = _mm256_mul_ps(px, _mm256_set1_ps(mv[r]));
             acc = _mm256_add_ps(_mm256_mul_ps(py, _mm256_set1_ps(mv[4 + r])), acc);
@@ -632,14 +627,7 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
             continue;
          for (int prop = 0; prop < 4; prop++) {
             const struct t_material_source *ms = &src[FGL_ATTR_MAT_FRONT_AMBIENT + 2 * prop + s];
-            float lanes[4][8];
-            for (unsigned l = 0; l < 8; l++) {
-               const float *v = ms->ptr + (size_t)(g + (l < cnt ? l : cnt - 1)) * ms->stride;
-               for (int k = 0; k < 4; k++)
-                  lanes[k][l] = v[k];
-            }
-            for (int k = 0; k < 4; k++)
-               m[s][prop][k] = _mm256_loadu_ps(lanes[k]);
+            t_soa8_load4(ms->ptr + (size_t)g * ms->stride, ms->stride, cnt, m[s][prop]);
          }
       }
 
@@ -758,25 +746,40 @@ T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_ligh
 
       /* back into the vertices: alpha the diffuse alpha, the secondary's 1 */
       for (int s = 0; s < sides; s++) {
-         float lanes[2][3][8];
-         for (int k = 0; k < 3; k++) {
-            _mm256_storeu_ps(lanes[0][k], c[s][0][k]);
-            _mm256_storeu_ps(lanes[1][k], c[s][1][k]);
-         }
          const struct t_material_source *dsrc = &src[FGL_ATTR_MAT_FRONT_DIFFUSE + s];
-         for (unsigned l = 0; l < cnt; l++) {
-            float (*col)[4] = out[g + l].r.attr;
-            col[2 * s][0] = lanes[0][0][l];
-            col[2 * s][1] = lanes[0][1][l];
-            col[2 * s][2] = lanes[0][2][l];
-            col[2 * s][3] = dsrc->ptr[(size_t)(g + l) * dsrc->stride + 3];
-            col[2 * s + 1][0] = lanes[1][0][l];
-            col[2 * s + 1][1] = lanes[1][1][l];
-            col[2 * s + 1][2] = lanes[1][2][l];
-            col[2 * s + 1][3] = 1.0f;
+         __m256 alpha;
+         if (dsrc->stride) {
+            float a[8];
+            for (unsigned l = 0; l < 8; l++)
+               a[l] = dsrc->ptr[(size_t)(g + (l < cnt ? l : cnt - 1)) * dsrc->stride + 3];
+            alpha = _mm256_loadu_ps(a);
+         } else {
+            alpha = _mm256_set1_ps(dsrc->ptr[3]);
          }
+         /* clamped as t_transform's clamp01x4 does it, lane by lane:
+          * minps(x, 1) (NaN -> 1), then maxps(., 0) */
+         const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+         __m256 prim[4] = { c[s][0][0], c[s][0][1], c[s][0][2], alpha };
+         __m256 sec[4] = { c[s][1][0], c[s][1][1], c[s][1][2], one };
+         for (int k = 0; k < 4; k++) {
+            prim[k] = _mm256_max_ps(_mm256_min_ps(prim[k], one), zero);
+            sec[k] = _mm256_max_ps(_mm256_min_ps(sec[k], one), zero);
+         }
+         float *base = out[g].r.attr[2 * s];
+         t_soa8_store4(prim, base, sizeof(out[0]) / sizeof(float), cnt);
+         t_soa8_store4(sec, base + 4, sizeof(out[0]) / sizeof(float), cnt);
       }
    }
+}
+
+T_AVX2 static void light_simd(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                              const struct fgl_vertex_view *in, unsigned first, unsigned n,
+                              struct t_vertex *out)
+{
+   if (lb->key.twoside)
+      light_simd_sides(ctx, lb, in, first, n, out, 2);
+   else
+      light_simd_sides(ctx, lb, in, first, n, out, 1);
 }
 #endif
 
@@ -800,7 +803,9 @@ static bool light_simd_eligible(const struct fgl_context *ctx, const struct t_li
 {
 #ifdef T_LIGHT_SIMD
    const struct fgl_lighting_derived *ld = &ctx->_Lighting;
-   if (!ld->EnabledLights)
+   /* FIXGL_KERNELS=reference: light_vertex alone, which api/lit_kernels
+    * compares this path with */
+   if (!ld->EnabledLights || ctx->_Raster.reference_kernels)
       return false;
    for (int s = 0; s < (lb->key.twoside ? 2 : 1); s++)
       if (lb->src[FGL_ATTR_MAT_FRONT_SHININESS + s].stride != 0)
@@ -850,6 +855,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view
    lb->normal = fgl_vbo_attr_ptr(ctx, in, FGL_ATTR_NORMAL, &lb->nstride);
    lb->simd = false;
    lb->shade8 = false;
+   lb->clamped = 0;
 
    /* GL_FIXGL_cook_torrance: m_shade_point for both faces, with the
     * batch's lights prepared here once; the fog coordinate is |P.z| of the
@@ -915,6 +921,7 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view
       lb->exponent[s] = sh->stride ? 0.0f : lit_exponent(sh->ptr[0]);
    }
    lb->simd = light_simd_eligible(ctx, lb);
+   lb->clamped = lb->simd ? 2u * (key.twoside ? 2u : 1u) : 0u;
 
    /* build_lighting asks for the eye position (get_eye_position) for a
     * positional light, or for the local viewer's eye vector when there is a

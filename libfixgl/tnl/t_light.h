@@ -67,6 +67,11 @@ struct t_light_batch {
                                * shininess does not vary per vertex */
    bool simd;                 /* lit eight vertices at a time (t_light.c
                                * light_simd) */
+   unsigned clamped;          /* the colour slots 0..clamped-1 that
+                               * t_light_run leaves already clamped to
+                               * [0, 1] as t_transform clamps them
+                               * (light_simd's outputs; the clamp is
+                               * idempotent) */
    struct m_shade_env env;
    struct t_eye_normal en;
    /* Cook-Torrance batches lit eight vertices at a time (m_shade_point8,
@@ -83,7 +88,8 @@ void t_light_prepare(const struct fgl_context *ctx, const struct fgl_vertex_view
                      struct t_light_batch *lb);
 
 /* Light the batch's vertices first..first+n-1 (in and out index the
- * whole batch): the R_ATTR_* colour slots of out[], before the clamp. */
+ * whole batch): the R_ATTR_* colour slots of out[], before the clamp
+ * (but for the lb->clamped first ones). */
 void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
                  const struct fgl_vertex_view *in, unsigned first, unsigned n,
                  struct t_vertex *out);

@@ -118,6 +118,16 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
 bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_view *in,
                       unsigned first, unsigned n);
 
+#ifdef FGL_HAVE_BLOCK_KERNELS
+/* Eight vertices at a time, AVX2 + FMA (t_vertex_avx2.c; only on a CPU
+ * with both, t_vertex_simd): t_transform's clip coordinates, view-volume
+ * outcodes (no user plane bits) and window positions of the n positions
+ * at pos, pstride floats apart, into out[0..n-1], the scalar path's bits;
+ * and t_clip_masks_any's answer for them without user planes. */
+void t_positions8_avx2(const float *m, const float *scale, const float *translate,
+                       const float *pos, unsigned pstride, unsigned n, struct t_vertex *out);
+bool t_clip_any8_avx2(const float *m, const float *pos, unsigned pstride, unsigned n);
+#endif
 /* Lighting (t_light.c): see tnl/t_light.h. */
 
 /* The eye-space normal of shading.md (t_phong.c): GL_PHONG_WIN's vertex

@@ -23,6 +23,10 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(__SSE2__) || defined(__x86_64__)
+#include <emmintrin.h>
+#define FGL_VBO_SSE2 1
+#endif
 
 #define FGL_VBO_BUFFER_BYTES (512 * 1024)
 #define FGL_VBO_MAX_PRIM     64
@@ -229,9 +233,29 @@ static inline bool fgl_vbo_attr_fast(struct fgl_vbo *vbo, enum fgl_vbo_attr attr
                                      float x, float y, float z, float w, bool *wrap)
 {
    float *cur = vbo->current[attr];
+   /* Each attribute's float[4] is written whole, with one 16-byte store
+    * (the components past n keep their bits), so that the glVertex that
+    * copies it into the vertex reads it back from the store buffer:
+    * stored as two or three pieces, that 16-byte load would wait for
+    * them to reach the cache (a failed store-to-load forward, per
+    * attribute and vertex). */
+#ifdef FGL_VBO_SSE2
+   const __m128 v = _mm_setr_ps(x, y, z, w);
+#endif
    if (attr != FGL_ATTR_POS) {
       if (__builtin_expect(vbo->active_size[attr] != n, 0))
          return false;
+#ifdef FGL_VBO_SSE2
+      if (n >= 4) {
+         _mm_storeu_ps(cur, v);
+      } else {
+         /* lanes 0..n-1 from v, the others from cur: bitwise selects */
+         const __m128 keep =
+            _mm_castsi128_ps(_mm_setr_epi32(0, n > 1 ? 0 : -1, n > 2 ? 0 : -1, -1));
+         const __m128 old = _mm_loadu_ps(cur);
+         _mm_storeu_ps(cur, _mm_or_ps(_mm_and_ps(keep, old), _mm_andnot_ps(keep, v)));
+      }
+#else
       cur[0] = x;
       if (n > 1)
          cur[1] = y;
@@ -239,18 +263,24 @@ static inline bool fgl_vbo_attr_fast(struct fgl_vbo *vbo, enum fgl_vbo_attr attr
          cur[2] = z;
       if (n > 3)
          cur[3] = w;
+#endif
       vbo->need_flush |= FGL_VBO_FLUSH_CURRENT;
       return true;
    }
    if (__builtin_expect(vbo->attr_size[FGL_ATTR_POS] < n ||
                         (size_t)(vbo->vert_count + 1) * vbo->vstride > vbo->vert_alloc, 0))
       return false;
+   float *dst = vbo->verts + (size_t)vbo->vert_count * vbo->vstride;
+#ifdef FGL_VBO_SSE2
+   _mm_storeu_ps(cur, v);
+   _mm_storeu_ps(dst, v);
+#else
    cur[0] = x;
    cur[1] = y;
    cur[2] = z;
    cur[3] = w;
-   float *dst = vbo->verts + (size_t)vbo->vert_count * vbo->vstride;
    memcpy(dst, cur, 4 * sizeof(float));
+#endif
    for (unsigned m = vbo->format_mask; m; m &= m - 1) {
       const int a = __builtin_ctz(m);
       memcpy(dst + 4 * vbo->slot[a], vbo->current[a], 4 * sizeof(float));

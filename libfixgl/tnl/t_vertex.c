@@ -54,17 +54,54 @@ static inline void clamp01x4(float *dst, const float *src)
 #endif
 }
 
+/* Whether the positions go eight at a time (t_vertex_avx2.c): a CPU
+ * with AVX2 and FMA, and not FIXGL_KERNELS=reference (the scalar loops
+ * below, which api/lit_kernels compares them with). */
+static inline bool t_vertex_simd(const struct fgl_context *ctx)
+{
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   if (ctx->_Raster.reference_kernels)
+      return false;
+   __builtin_cpu_init();
+   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+   (void)ctx;
+   return false;
+#endif
+}
+
 /* Position, clip codes, window position and the unlit colour (already
  * clamped) of the batch's vertices first..first+n-1. */
 static inline void transform_positions(const struct fgl_context *ctx,
                                        const struct fgl_vertex_view *in, unsigned first,
                                        unsigned n, const float *color, unsigned cstride,
-                                       size_t clear_bytes, struct t_vertex *out)
+                                       size_t clear_bytes, bool simd, struct t_vertex *out)
 {
    const float *m = ctx->_ModelProjectMatrix.m;
    const float *s = ctx->_ViewportScale, *t = ctx->_ViewportTranslate;
    const bool lit = ctx->Light.Enabled;
 
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   if (simd) {
+      t_positions8_avx2(m, s, t, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n,
+                        out + first);
+      const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
+      if (!clear_bytes && !planes && lit)
+         return;
+      for (unsigned i = first; i < first + n; i++) {
+         struct t_vertex *v = &out[i];
+         if (clear_bytes)
+            memset(v->r.attr, 0, clear_bytes);
+         if (planes)
+            v->mask |= user_clip_mask(ctx, v->clip);
+         if (!lit)
+            clamp01x4(v->r.attr[R_ATTR_COLOR0], color + (size_t)i * cstride);
+      }
+      return;
+   }
+#else
+   (void)simd;
+#endif
    for (unsigned i = first; i < first + n; i++) {
       const float *p = fgl_vv_attr(in, i, FGL_ATTR_POS);
       struct t_vertex *v = &out[i];
@@ -91,6 +128,10 @@ bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_vie
 {
    const float *m = ctx->_ModelProjectMatrix.m;
    const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   if (!planes && n && t_vertex_simd(ctx))
+      return t_clip_any8_avx2(m, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n);
+#endif
    for (unsigned i = first; i < first + n; i++) {
       float clip[4];
       t_mul_mad_chain(clip, m, fgl_vv_attr(in, i, FGL_ATTR_POS));
@@ -219,11 +260,14 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       t_light_prepare(ctx, in, &lb);
       eye_position = lb.eye_position;
    }
+   /* the colour slots the lighting left clamped */
+   const unsigned clamped = !phong && lit ? lb.clamped : 0u;
    const bool psize_chain = psize && eye_chain_before_psize(ctx, eye_position, fog);
+   const bool simd = t_vertex_simd(ctx);
 
    for (unsigned first = 0; first < n; first += T_CHUNK) {
       const unsigned cnt = n - first < T_CHUNK ? n - first : T_CHUNK;
-      transform_positions(ctx, in, first, cnt, color, cstride, clear_bytes, out);
+      transform_positions(ctx, in, first, cnt, color, cstride, clear_bytes, simd, out);
       const struct fgl_vertex_view inf = fgl_vv_from(in, first);
 
       /* ffvertex_prog.c: build_texture_transform (after build_lighting,
@@ -236,9 +280,10 @@ void t_transform(const struct fgl_context *ctx, const struct fgl_vertex_view *in
       else if (lit)
          t_light_run(ctx, &lb, in, first, cnt, out);
 
-      for (unsigned i = first; i < first + cnt; i++)
-         for (int a = 0; a < ncolor; a++)
-            clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
+      if (ncolor > (int)clamped)
+         for (unsigned i = first; i < first + cnt; i++)
+            for (int a = (int)clamped; a < ncolor; a++)
+               clamp01x4(out[i].r.attr[a], out[i].r.attr[a]);
 
       /* GL_COLOR_SUM: unlit, the vertex program passes the secondary
        * colour through (clamped as every colour output); lit with a

@@ -18,7 +18,11 @@
  * scaled modelview, unnormalised and zero normals,
  * GL_PHONG_WIN mostly (the per-fragment block kernel) and GL_SMOOTH /
  * GL_FLAT (per-vertex lighting), culling, both windings, depth functions
- * and masks, alpha blending, and now and then fog of every mode.
+ * and masks, alpha blending, and now and then fog of every mode, user
+ * clip planes, the lighting off, and batches of up to 2,200 vertices
+ * (triangles, strips, quads) that the vertex stage transforms window by
+ * window (the eight-lane positions and clip codes, tnl/t_vertex_avx2.c,
+ * against the scalar ones).
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -201,11 +205,29 @@ static void draw_scene(uint32_t seed)
     glDisable(GL_FOG);
   }
 
-  const int ntris = 4 + (int)(next() % 40u);
+  /* now and then a batch long enough to be transformed window by window,
+   * its segments' clip codes from the eight-lane pre-pass (tnl/t_render.c
+   * LAZY_WINDOW), as triangles, a strip or quads; a user clip plane; the
+   * lighting off (the unlit colours after the eight-lane positions) */
+  const int long_batch = chance(20);
+  static const GLenum modes[] = { GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_QUADS };
+  const GLenum mode = long_batch ? pick(modes, 4) : GL_TRIANGLES;
+  if (chance(10)) {
+    const GLdouble plane[4] = { frand(-1, 1), frand(-1, 1), frand(-1, 1), frand(0, 1) };
+    glClipPlane(GL_CLIP_PLANE0 + (GLenum)(next() % 2u), plane);
+    glEnable(GL_CLIP_PLANE0);
+    glEnable(GL_CLIP_PLANE1);
+  } else {
+    glDisable(GL_CLIP_PLANE0);
+    glDisable(GL_CLIP_PLANE1);
+  }
+  if (chance(10))
+    glDisable(GL_LIGHTING);
+  const int ntris = long_batch ? 130 + (int)(next() % 600u) : 4 + (int)(next() % 40u);
   const int big = chance(30);
   const int vertex_color = chance(70);
   const int mat_per_vertex = chance(10);
-  glBegin(GL_TRIANGLES);
+  glBegin(mode);
   for (int t = 0; t < ntris; t++) {
     float c[3] = { frand(-1.2f, 1.2f), frand(-1.2f, 1.2f), frand(-1.2f, 1.2f) };
     const float s = big ? 2.0f : 0.8f;
