@@ -5,7 +5,9 @@
  * The model is Mesa's client-side ("fake") GLX of its xlib frontends
  * (gallium/frontends/glx/xlib/glx_api.c) and the drawable handling of its
  * DRI software path (glx/drisw_glx.c): nothing is asked of the server's
- * GLX extension.  Every context renders with fixgl into a framebuffer per
+ * GLX extension but its configs and, as the oracle sends them,
+ * X_GLXCreateWindow/X_GLXDestroyWindow (a GLXWindow is an XID of its
+ * own, mapped to its X window: glx_drawable.xdraw).  Every context renders with fixgl into a framebuffer per
  * drawable (colour, depth/stencil, accumulation) in fixgl's own memory;
  * glXSwapBuffers (a double-buffered config) or glFlush/glFinish (a
  * single-buffered one, and GLX pixmaps) present the colour buffer with
