@@ -632,6 +632,11 @@ struct fgl_framebuffer {
     * 16, or 0 and Accum NULL without one */
    int16_t *Accum;
    int AccumBits;
+   /* the oracle's colour buffer is an sRGB format (GLX drawables:
+    * B8G8R8A8_SRGB etc.): set by the framebuffer's owner; drawing and
+    * reading are plain (GL_FRAMEBUFFER_SRGB off), glAccum unpacks and
+    * packs through sRGB (main/accum.c) */
+   bool Srgb;
    /* called by glFlush/glFinish to make the image visible to the owner */
    void (*FlushFront)(struct fgl_framebuffer *fb);
    /* the same in parts, when set: FlushFrontRect for every rectangle of a

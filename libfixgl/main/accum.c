@@ -19,11 +19,19 @@
  * raster core.  GL_RETURN does not mark the colour buffer defined (no state
  * validation in the oracle), so glFlush/glFinish copy its result to the
  * application only after a draw or a clear since the last copy.
+ *
+ * The colour buffer is read and written through its format's unpack and
+ * pack; the oracle's GLX drawables have sRGB formats (fb->Srgb), whose
+ * red, green and blue go to linear light and back (main/srgb.h; alpha
+ * stays linear), so a glAccum there works in linear light while drawing
+ * does not (GL_FRAMEBUFFER_SRGB off; ORACLE-NOTES.md "GLX sRGB
+ * buffers").  The conversion is chosen once per call (color_io).
  */
 #include <stdint.h>
 
 #include "main/groups.h"
 #include "main/dlist.h"
+#include "main/srgb.h"
 
 /* (GLshort)f as the oracle's x86-64 build converts: cvttss2si to a 32-bit
  * integer (0x80000000 for NaN and out of range), then the low 16 bits */
@@ -156,7 +164,7 @@ static uint16_t float_to_ushort(float f)
  * GL_UNSIGNED_SHORT or GL_FLOAT buffer where there is one
  * (R16G16B16A16_UNORM, R32G32B32A32_FLOAT), else the RGBA8 image `color`
  * (fb->Color, or the read buffer of a separate front: fgl_read_color) */
-static void unpack_color(const struct fgl_framebuffer *fb, const uint8_t *color, size_t idx,
+static void unpack_plain(const struct fgl_framebuffer *fb, const uint8_t *color, size_t idx,
                          float rgba[4])
 {
    if (fb->WideFormat == R_WIDE_UNORM16) {
@@ -179,7 +187,7 @@ static void unpack_color(const struct fgl_framebuffer *fb, const uint8_t *color,
 /* rgba packed into the colour buffer at pixel `idx` (nch channels: 3 for
  * the RGB formats), into the wide target and its RGBA8 image where there
  * is one */
-static void pack_color(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, const float rgba[4],
+static void pack_plain(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, const float rgba[4],
                        int nch)
 {
    if (fb->WideFormat == R_WIDE_UNORM16) {
@@ -194,6 +202,44 @@ static void pack_color(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, c
    uint8_t *col = color + 4 * idx;
    for (int c = 0; c < nch; c++)
       col[c] = float_to_ubyte(rgba[c]);
+}
+
+/* the 8-bit sRGB formats (B8G8R8A8_SRGB, B8G8R8X8_SRGB): red, green and
+ * blue through the oracle's table to linear light, alpha as UNORM8 (one
+ * without alpha bits) */
+static void unpack_srgb8(const struct fgl_framebuffer *fb, const uint8_t *color, size_t idx,
+                         float rgba[4])
+{
+   const uint8_t *src = color + 4 * idx;
+   for (int c = 0; c < 3; c++)
+      rgba[c] = fgl_srgb8_to_linear(src[c]);
+   rgba[3] = fb->AlphaBits == 0 ? 1.0f : ubyte_to_float(src[3]);
+}
+
+static void pack_srgb8(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, const float rgba[4],
+                       int nch)
+{
+   (void)fb;
+   uint8_t *col = color + 4 * idx;
+   for (int c = 0; c < 3; c++)
+      col[c] = fgl_linear_to_srgb8(rgba[c]);
+   if (nch == 4)
+      col[3] = float_to_ubyte(rgba[3]);
+}
+
+/* the colour buffer's unpack and pack, by its format */
+struct color_io {
+   void (*unpack)(const struct fgl_framebuffer *fb, const uint8_t *color, size_t idx,
+                  float rgba[4]);
+   void (*pack)(struct fgl_framebuffer *fb, uint8_t *color, size_t idx, const float rgba[4],
+                int nch);
+};
+
+static struct color_io color_io(const struct fgl_framebuffer *fb)
+{
+   if (fb->Srgb)
+      return (struct color_io){ unpack_srgb8, pack_srgb8 };
+   return (struct color_io){ unpack_plain, pack_plain };
 }
 
 /* [S: main/accum.c:accum_scale_or_bias] */
@@ -226,12 +272,13 @@ static void accum_or_load(struct fgl_context *ctx, float value, bool load)
    accum_region(ctx, &x0, &x1, &r0, &r1);
    const float scale = value * 32767.0f;
    const uint8_t *read_color = fgl_read_color(ctx);
+   const struct color_io io = color_io(fb);
    for (int r = r0; r < r1; r++) {
       const size_t first = (size_t)r * (size_t)fb->Width + (size_t)x0;
       int16_t *acc = fb->Accum + first * 4;
       for (int x = x0; x < x1; x++, acc += 4) {
          float rgba[4];
-         unpack_color(fb, read_color, first + (size_t)(x - x0), rgba);
+         io.unpack(fb, read_color, first + (size_t)(x - x0), rgba);
          for (int c = 0; c < 4; c++) {
             const int16_t v = float_to_short_x86(rgba[c] * scale);
             acc[c] = load ? v : add_short(acc[c], v);
@@ -255,6 +302,7 @@ static void accum_return_into(struct fgl_context *ctx, uint8_t *color, float val
    const float scale = value / 32767.0f;
    const unsigned mask = ctx->Color.ColorMask & 0xfu;
    const int nch = fb->AlphaBits > 0 ? 4 : 3;
+   const struct color_io io = color_io(fb);
    for (int r = r0; r < r1; r++) {
       if (r - skip < 0)
          continue;
@@ -267,12 +315,12 @@ static void accum_return_into(struct fgl_context *ctx, uint8_t *color, float val
             rgba[c] = (float)acc[c] * scale;
          if (mask != 0xfu) {
             float dest[4];
-            unpack_color(fb, color, idx, dest);
+            io.unpack(fb, color, idx, dest);
             for (int c = 0; c < 4; c++)
                if (!(mask & (1u << c)))
                   rgba[c] = dest[c];
          }
-         pack_color(fb, color, idx, rgba, nch);
+         io.pack(fb, color, idx, rgba, nch);
       }
    }
 }

@@ -5,7 +5,9 @@
  * The model is Mesa's client-side ("fake") GLX of its xlib frontends
  * (gallium/frontends/glx/xlib/glx_api.c) and the drawable handling of its
  * DRI software path (glx/drisw_glx.c): nothing is asked of the server's
- * GLX extension.  Every context renders with fixgl into a framebuffer per
+ * GLX extension but its configs and, as the oracle sends them,
+ * X_GLXCreateWindow/X_GLXDestroyWindow (a GLXWindow is an XID of its
+ * own, mapped to its X window: glx_drawable.xdraw).  Every context renders with fixgl into a framebuffer per
  * drawable (colour, depth/stencil, accumulation) in fixgl's own memory;
  * glXSwapBuffers (a double-buffered config) or glFlush/glFinish (a
  * single-buffered one, and GLX pixmaps) present the colour buffer with
@@ -127,7 +129,9 @@ struct glx_display;
 struct glx_drawable {
    struct fgl_framebuffer fb;   /* first: FlushFront gets &fb */
    struct glx_display *disp;
-   XID xid;
+   XID xid;                     /* the GLX drawable's ID */
+   Drawable xdraw;              /* the X drawable shown into: xid, or a
+                                 * GLXWindow's X window */
    bool pixmap;
    bool pbuffer;                /* no X drawable: sized by its creator */
    int pb_width, pb_height;     /* a pbuffer's size as asked for */
@@ -227,10 +231,12 @@ static int close_display(Display *dpy, XExtCodes *codes)
          c->disp = NULL;
          c->dpy = NULL;
       }
+      /* (their GCs and MIT-SHM segments go with the connection: no
+       * requests, as the oracle makes none here) */
       while (gd->drawables) {
          struct glx_drawable *d = gd->drawables;
          gd->drawables = d->next;
-         free_drawable(d, true);
+         free_drawable(d, false);
       }
       while (gd->choices) {
          struct glx_visual_choice *c = gd->choices;
@@ -826,6 +832,9 @@ static int config_attrib(const struct __GLXFBConfigRec *c, int attr, int *value)
    case GLX_SAMPLE_BUFFERS:
    case GLX_SAMPLES:               *value = 0; break;
    case GLX_MAX_PBUFFER_PIXELS:    *value = c->max_pb_pixels; break;
+   /* 0 as Xvfb's list reports it, although the oracle's buffers are sRGB
+    * (ORACLE-NOTES.md "GLX sRGB buffers") */
+   case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB: *value = 0; break;
    default:
       return GLX_BAD_ATTRIBUTE;
    }
@@ -998,6 +1007,11 @@ static bool alloc_buffers(struct glx_drawable *d, int width, int height)
    fb->AlphaBits = d->cfg.alpha;
    /* the oracle's DRI software buffers are B8G8R8A8/B8G8R8X8 */
    fb->ColorR8G8B8A8 = false;
+   /* ... and sRGB formats (B8G8R8A8_SRGB, B8G8R8X8_SRGB: the oracle's
+    * dri_fill_st_visual takes the sRGB variant of every 8-bit visual,
+    * whatever GLX_FRAMEBUFFER_SRGB_CAPABLE says); only glAccum sees it
+    * (ORACLE-NOTES.md "GLX sRGB buffers", glx-accum) */
+   fb->Srgb = true;
    fb->DoubleBuffer = d->cfg.db;
    fb->ZSFormat = zs_format(&d->cfg);
    /* a double-buffered window has a separate front buffer (Other), black
@@ -1046,6 +1060,7 @@ static struct glx_drawable *add_drawable(struct glx_display *gd, XID xid,
       return NULL;
    d->disp = gd;
    d->xid = xid;
+   d->xdraw = xid;
    d->cfg = *cfg;
    d->pixmap = pixmap;
    pthread_mutex_lock(&gd->lock);
@@ -1107,7 +1122,7 @@ static bool update_size(struct glx_drawable *d, struct fgl_context *ctx)
    if (d->pbuffer) {
       w = (unsigned)d->pb_width;
       h = (unsigned)d->pb_height;
-   } else if (!XGetGeometry(d->disp->dpy, d->xid, &root, &x, &y, &w, &h, &bw, &depth)) {
+   } else if (!XGetGeometry(d->disp->dpy, d->xdraw, &root, &x, &y, &w, &h, &bw, &depth)) {
       return d->has_buffer;
    }
    if (w < 1)
@@ -1227,7 +1242,7 @@ static void present(struct glx_drawable *d, const uint8_t *color)
    if (!ensure_image(d, w, h) || d->img->bits_per_pixel != 32)
       return;
    if (!d->gc)
-      d->gc = XCreateGC(d->disp->dpy, d->xid, 0, NULL);
+      d->gc = XCreateGC(d->disp->dpy, d->xdraw, 0, NULL);
    const bool msb = d->img->byte_order == MSBFirst;
    const bool alpha = d->cfg.alpha > 0 && d->cfg.visual_depth == 32;
    for (int y = 0; y < h; y++) {
@@ -1244,11 +1259,11 @@ static void present(struct glx_drawable *d, const uint8_t *color)
    }
    Display *dpy = d->disp->dpy;
    if (d->shm) {
-      XShmPutImage(dpy, d->xid, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h, False);
+      XShmPutImage(dpy, d->xdraw, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h, False);
       /* the next frame overwrites the segment: the server has read it */
       XSync(dpy, False);
    } else {
-      XPutImage(dpy, d->xid, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h);
+      XPutImage(dpy, d->xdraw, d->gc, d->img, 0, 0, 0, 0, (unsigned)w, (unsigned)h);
       XFlush(dpy);
    }
 }
@@ -1577,24 +1592,86 @@ GLXAPI void glXWaitX(void)
 
 /* ---- GLX drawables ------------------------------------------------------ */
 
+/* A GLXWindow is an XID of its own, mapped to the X window
+ * [S: glx/glx_pbuffer.c:CreateDrawable]: the oracle allocates it from the
+ * display (XAllocID) and sends X_GLXCreateWindow, so the server checks
+ * the window and the config and raises their errors (BadWindow,
+ * GLXBadFBConfig, BadMatch, BadIDChoice), then its drisw makes the
+ * drawable's GC (a bad window: BadDrawable of X_CreateGC) and returns the
+ * XID whatever the server said.  fixgl does the same (the request only
+ * when the server has GLX; the configs' IDs are the server's then), so
+ * the X window made current beside its GLXWindow has buffers of its own
+ * (ORACLE-NOTES.md "GLX windows").  No config: GLXBadFBConfig, None. */
 GLXAPI GLXWindow glXCreateWindow(Display *dpy, GLXFBConfig config, Window win, const int *attribList)
 {
-   (void)attribList;
    struct glx_display *gd = get_display(dpy);
-   if (!gd || !config || win == None)
+   if (!gd)
       return None;
-   struct glx_drawable *d = find_drawable(gd, win);
-   if (!d && !(d = add_drawable(gd, win, config, false)))
+   if (!config) {
+      glx_error(dpy, true, GLX_ERR_BAD_FBCONFIG, X_GLXCreateWindow, 0);
       return None;
-   d->implicit = false;   /* a GLX window keeps its buffers (release_drawable) */
-   return win;
+   }
+   CARD32 nattr = 0;
+   while (attribList && attribList[2 * nattr] != None)
+      nattr++;
+   XID xid;
+   LockDisplay(dpy);
+   if (gd->glx_opcode && gd->from_server) {
+      xGLXCreateWindowReq *req;
+      GetReqExtra(GLXCreateWindow, 8 * nattr, req);
+      req->reqType = (CARD8)gd->glx_opcode;
+      req->glxCode = X_GLXCreateWindow;
+      req->screen = (CARD32)config->screen;
+      req->fbconfig = (CARD32)config->id;
+      req->window = (CARD32)win;
+      req->glxwindow = (CARD32)(xid = XAllocID(dpy));
+      req->numAttribs = nattr;
+      CARD32 *data = (CARD32 *)(req + 1);
+      for (CARD32 i = 0; i < 2 * nattr; i++)
+         data[i] = (CARD32)attribList[i];
+   } else {
+      xid = XAllocID(dpy);
+   }
+   UnlockDisplay(dpy);
+   SyncHandle();
+   struct glx_drawable *d = add_drawable(gd, xid, config, false);
+   if (!d)
+      return None;
+   d->xdraw = win;
+   d->gc = XCreateGC(dpy, win, 0, NULL);
+   return xid;
 }
 
+/* [S: glx/glx_pbuffer.c:DestroyDrawable]: X_GLXDestroyWindow (the
+ * server's GLXBadWindow for an ID that is no GLXWindow: unknown, the X
+ * window's own, destroyed before), then the drawable and its buffers. */
 GLXAPI void glXDestroyWindow(Display *dpy, GLXWindow window)
 {
    struct glx_display *gd = get_display(dpy);
-   if (gd)
+   if (!gd || window == None)
+      return;
+   if (gd->glx_opcode && gd->from_server) {
+      LockDisplay(dpy);
+      xGLXDestroyWindowReq *req;
+      GetReq(GLXDestroyWindow, req);
+      req->reqType = (CARD8)gd->glx_opcode;
+      req->glxCode = X_GLXDestroyWindow;
+      req->glxwindow = (CARD32)window;
+      UnlockDisplay(dpy);
+      SyncHandle();
+   }
+   struct glx_drawable *d = find_drawable(gd, window);
+   if (d && d->xdraw != d->xid)
       remove_drawable(gd, window);
+}
+
+/* glXDestroyPixmap, glXDestroyGLXPixmap, glXDestroyPbuffer: fixgl's
+ * pixmaps and pbuffers are its own (no request) */
+static void destroy_drawable(Display *dpy, GLXDrawable draw)
+{
+   struct glx_display *gd = get_display(dpy);
+   if (gd)
+      remove_drawable(gd, draw);
 }
 
 GLXAPI GLXPixmap glXCreatePixmap(Display *dpy, GLXFBConfig config, Pixmap pixmap, const int *attribList)
@@ -1612,7 +1689,7 @@ GLXAPI GLXPixmap glXCreatePixmap(Display *dpy, GLXFBConfig config, Pixmap pixmap
 
 GLXAPI void glXDestroyPixmap(Display *dpy, GLXPixmap pixmap)
 {
-   glXDestroyWindow(dpy, pixmap);
+   destroy_drawable(dpy, pixmap);
 }
 
 GLXAPI GLXPixmap glXCreateGLXPixmap(Display *dpy, XVisualInfo *vis, Pixmap pixmap)
@@ -1624,7 +1701,7 @@ GLXAPI GLXPixmap glXCreateGLXPixmap(Display *dpy, XVisualInfo *vis, Pixmap pixma
 
 GLXAPI void glXDestroyGLXPixmap(Display *dpy, GLXPixmap pixmap)
 {
-   glXDestroyWindow(dpy, pixmap);
+   destroy_drawable(dpy, pixmap);
 }
 
 /* A pbuffer of the config's formats [S: glx/glx_pbuffer.c:CreatePbuffer]:
@@ -1672,7 +1749,7 @@ GLXAPI GLXPbuffer glXCreatePbuffer(Display *dpy, GLXFBConfig config, const int *
 
 GLXAPI void glXDestroyPbuffer(Display *dpy, GLXPbuffer pbuf)
 {
-   glXDestroyWindow(dpy, pbuf);
+   destroy_drawable(dpy, pbuf);
 }
 
 /* [S: glx/glx_pbuffer.c:__glXGetDrawableAttribute] None or a drawable
