@@ -55,6 +55,7 @@ static __attribute__((noinline)) __m256i extra_half(const struct r_state *rs,
 struct block_stage {
    uint32_t flat_rgba;   /* a flat colour is the same bytes at every pixel */
    __m256 wx, cx[4];     /* SMOOTH: the block's x terms of w and the colour */
+   struct vplane w, c[4];   /* SMOOTH: the planes of w and the colour, broadcast */
 };
 
 static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const struct r_tri_setup *ts,
@@ -62,6 +63,11 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
 {
    (void)rs;
    st->flat_rgba = 0;
+   if (variant == SMOOTH) {
+      st->w = vplane_of(&ts->w);
+      for (int c = 0; c < 4; c++)
+         st->c[c] = vplane_of(&ts->ap[R_FS_COLOR0][c]);
+   }
    if (variant == FLAT) {
       const float *c = ts->flat[R_FS_COLOR0];
       st->flat_rgba = (uint32_t)r_float_to_unorm8(c[0]) | (uint32_t)r_float_to_unorm8(c[1]) << 8 |
@@ -80,24 +86,23 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       return _mm256_set1_epi32((int)st->flat_rgba);
    if (variant == EXTRA)
       return extra_half(rs, ts, fx, fy);
-   const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8_y(&ts->w, st->wx, fy));
-   const struct r_attr_plane *ap = ts->ap[R_FS_COLOR0];
-   return pack_rgba8(_mm256_mul_ps(eval8_y(&ap[0], st->cx[0], fy), rw),
-                     _mm256_mul_ps(eval8_y(&ap[1], st->cx[1], fy), rw),
-                     _mm256_mul_ps(eval8_y(&ap[2], st->cx[2], fy), rw),
-                     _mm256_mul_ps(eval8_y(&ap[3], st->cx[3], fy), rw));
+   const __m256 rw = _mm256_div_ps(_mm256_set1_ps(1.0f), veval8_y(&st->w, st->wx, fy));
+   return pack_rgba8(_mm256_mul_ps(veval8_y(&st->c[0], st->cx[0], fy), rw),
+                     _mm256_mul_ps(veval8_y(&st->c[1], st->cx[1], fy), rw),
+                     _mm256_mul_ps(veval8_y(&st->c[2], st->cx[2], fy), rw),
+                     _mm256_mul_ps(veval8_y(&st->c[3], st->cx[3], fy), rw));
 }
 
 /* SMOOTH: the x terms both halves of the block share */
 static ALWAYS_INLINE void block_stage_block(const struct r_state *rs, const struct r_tri_setup *ts,
                                             struct block_stage *st, int variant, __m256 fx)
 {
-   (void)rs;
+   (void)rs; (void)ts;
    if (variant != SMOOTH)
       return;
-   st->wx = eval8_x(&ts->w, fx);
+   st->wx = veval8_x(&st->w, fx);
    for (int c = 0; c < 4; c++)
-      st->cx[c] = eval8_x(&ts->ap[R_FS_COLOR0][c], fx);
+      st->cx[c] = veval8_x(&st->c[c], fx);
 }
 
 /* the alpha test's operand: the alpha the colour above converts */

@@ -52,6 +52,29 @@ static ALWAYS_INLINE __m256 eval8(const struct r_attr_plane *p, __m256 fx, __m25
                           _mm256_fmadd_ps(_mm256_set1_ps(p->dadx), fx, _mm256_set1_ps(p->a0)));
 }
 
+/* A plane's coefficients broadcast once per primitive (a stage's or the
+ * walk's constants), for the same two fmas as eval8_x and eval8_y without
+ * a broadcast per block or half. */
+struct vplane {
+   __m256 dadx, a0, dady;
+};
+
+static ALWAYS_INLINE struct vplane vplane_of(const struct r_attr_plane *p)
+{
+   return (struct vplane){ _mm256_set1_ps(p->dadx), _mm256_set1_ps(p->a0), _mm256_set1_ps(p->dady) };
+}
+
+/* eval8_x and eval8_y of the broadcast plane: the same operations */
+static ALWAYS_INLINE __m256 veval8_x(const struct vplane *p, __m256 fx)
+{
+   return _mm256_fmadd_ps(p->dadx, fx, p->a0);
+}
+
+static ALWAYS_INLINE __m256 veval8_y(const struct vplane *p, __m256 inner, __m256 fy)
+{
+   return _mm256_fmadd_ps(p->dady, fy, inner);
+}
+
 /* ---- coverage (r_kernel.h r_tri_cover) ----
  * Lane i of half h of a 4x4 block is pixel (x + (i & 3), y + 2h + (i >> 2)),
  * so its edge value is the block's top-left value plus the lane offset

@@ -68,6 +68,9 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    const __m256i lx = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
    const __m256i ly = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
    const __m256 flx = _mm256_cvtepi32_ps(lx), fly = _mm256_cvtepi32_ps(ly);
+   /* the depth plane and offset, broadcast once */
+   const struct vplane zplane = vplane_of(&ts->z);
+   const __m256 zoffset = _mm256_set1_ps(ts->zoffset);
 
    /* the edge functions' offsets of the lanes of the two halves */
    __m256i eoff[R_COVER_EDGES][2];
@@ -97,6 +100,18 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
    int32_t rowc[R_COVER_EDGES];
    for (int e = 0; e < R_COVER_EDGES; e++)
       rowc[e] = cv->c[e] + (bx0 - cv->ox) * cv->dx[e] + (by0 - cv->oy) * cv->dy[e];
+   /* the edges' steps from a block to the next one along the row */
+   __m256i estep[R_COVER_EDGES];
+   for (int e = 0; e < R_COVER_EDGES; e++)
+      estep[e] = _mm256_set1_epi32(4 * cv->dx[e]);
+   /* the box's columns in its first and last block columns (a block
+    * column is cut only there: x0 - bx0 < 4, last <= x1) */
+   const int32_t bxl = cv->x1 & ~3;
+   const unsigned first_cols = (0xfu << (cv->x0 - bx0)) & 0xfu;
+   const unsigned last_cols = 0xfu >> (3 - (cv->x1 - bxl));
+   const unsigned first_mask = first_cols * 0x1111u, last_mask = last_cols * 0x1111u;
+   /* fragments are counted only for fixgl's counters */
+   const bool count_fragments = rs->stats != NULL;
    /* rows of five blocks or more are narrowed to the blocks the edges
     * allow (block_row_span) */
    const bool wide = cv->x1 - bx0 >= 16;
@@ -144,32 +159,48 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
       int32_t ifirst = 1, ilast = 0;
       if (long_rows && !block_row_inner(cv, rowc, bx0, &ifirst, &ilast))
          ifirst = 1, ilast = 0;
-      int32_t c[R_COVER_EDGES];
-      for (int e = 0; e < R_COVER_EDGES; e++)
-         c[e] = rowc[e] + (first - bx0) * cv->dx[e];
+      /* the edge values of the lanes of both halves of the block at bx
+       * (r_block_cover's v = c + eoff), stepped along the row */
+      __m256i ev[R_COVER_EDGES][2];
+      for (int e = 0; e < R_COVER_EDGES; e++) {
+         const __m256i c = _mm256_set1_epi32(rowc[e] + (first - bx0) * cv->dx[e]);
+         ev[e][0] = _mm256_add_epi32(c, eoff[e][0]);
+         ev[e][1] = _mm256_add_epi32(c, eoff[e][1]);
+      }
       for (int32_t bx = first; bx <= last; bx += 4) {
-         /* coverage */
-         unsigned mask = bx >= ifirst && bx <= ilast ? 0xffffu : r_block_cover(c, eoff);
-         for (int e = 0; e < R_COVER_EDGES; e++)
-            c[e] += 4 * cv->dx[e];
+         /* coverage: a lane is covered when no edge value is negative,
+          * i.e. the sign bit of their OR is clear (r_block_cover) */
+         unsigned mask = 0xffffu;
+         if (!(bx >= ifirst && bx <= ilast)) {
+            __m256i neg0 = ev[0][0], neg1 = ev[0][1];
+            for (int e = 1; e < R_COVER_EDGES; e++) {
+               neg0 = _mm256_or_si256(neg0, ev[e][0]);
+               neg1 = _mm256_or_si256(neg1, ev[e][1]);
+            }
+            mask = ~((unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(neg0)) |
+                     (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(neg1)) << 8) & 0xffffu;
+         }
+         for (int e = 0; e < R_COVER_EDGES; e++) {
+            ev[e][0] = _mm256_add_epi32(ev[e][0], estep[e]);
+            ev[e][1] = _mm256_add_epi32(ev[e][1], estep[e]);
+         }
          /* cut to the box's rows and, in its first and last block
           * columns, its columns */
          mask &= rows;
-         if (bx < cv->x0 || bx + 3 > cv->x1) {
-            const int lo = cv->x0 - bx > 0 ? cv->x0 - bx : 0;
-            const int hi = cv->x1 - bx + 1 < 4 ? cv->x1 - bx + 1 : 4;
-            const unsigned cols = (0xfu >> (4 - hi)) & (0xfu << lo) & 0xfu;
-            mask &= cols * 0x1111u;
-         }
+         if (bx == bx0)
+            mask &= first_mask;
+         if (bx == bxl)
+            mask &= last_mask;
          if (!mask)
             continue;
-         fragments += (unsigned)__builtin_popcount(mask);
+         if (count_fragments)
+            fragments += (unsigned)__builtin_popcount(mask);
          const bool edge_x = bx + 4 > width;
 
          /* what both halves share: the lanes' columns and the planes'
           * x terms */
          const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)bx), flx);
-         const __m256 zx = eval8_x(&ts->z, fx);
+         const __m256 zx = veval8_x(&zplane, fx);
 #if BLOCK_STAGE_PER_BLOCK
          block_stage_block(rs, ts, &stage, variant, fx);
 #endif
@@ -213,7 +244,7 @@ static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tr
             /* the depth value (lp_bld_interp.c: interpolated z + offset) */
             __m256i zv = _mm256_setzero_si256();
             if (zf != ZF_NONE && zf != ZF_S) {
-               const __m256 z = _mm256_add_ps(eval8_y(&ts->z, zx, fy), _mm256_set1_ps(ts->zoffset));
+               const __m256 z = _mm256_add_ps(veval8_y(&zplane, zx, fy), zoffset);
                zv = depth_unorm(z, zf == ZF_16 ? 65535.0f : 16777215.0f);
             }
 
