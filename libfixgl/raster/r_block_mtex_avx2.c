@@ -127,6 +127,19 @@ static __m256i lookup_bilinear_clamp(const struct unit_stage *u, const struct un
    return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_CLAMP_TO_EDGE, f->s, f->t);
 }
 
+/* u->lookup's lookup inline (the MODULATE x MODULATE kernels: no call,
+ * so none of the caller's vector registers is saved around it) */
+static ALWAYS_INLINE __m256i lookup_inline(const struct unit_stage *u, const struct unit_front *f)
+{
+   if (u->lookup == lookup_trilinear)
+      return tex8_filter_trilinear_repeat(u->levels, f->lod, f->s, f->t);
+   if (u->lookup == lookup_bilinear_clamp)
+      return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_CLAMP_TO_EDGE, f->s, f->t);
+   if (u->lookup == lookup_bilinear_repeat)
+      return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_REPEAT, f->s, f->t);
+   return lookup_general(u, f);
+}
+
 /* ---- the environments ---- */
 
 static ALWAYS_INLINE __m256 arg8(const struct unit_stage *u, unsigned a, const __m256 tf[4],
@@ -488,7 +501,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
       struct unit_front f;
       unit_front(u, rw, fx, fy, &f);
       __m256 tf[4];
-      texel_floats(u->lookup(u, &f), tf);
+      texel_floats(variant == V_ANY ? u->lookup(u, &f) : lookup_inline(u, &f), tf);
       if (variant == V_MOD2)
          env_mod_body(tf, prev);
       else if (variant == V_MOD2_RGB)
