@@ -111,11 +111,11 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
  * their formats' linear views), no depth and no stencil buffer, one
  * colour buffer bound (not both buffers), and every channel of the
  * (unclamped) clear colour in [0, 1]; the path takes each channel to a
- * byte as trunc(c * 256 - c) in float arithmetic (probed, 21,504 values
- * near every k/255 and 4,092 of a ramp: exact), where the fragment
- * stage rounds c * 255.  fixgl gives the quad the colour byte / 255,
- * which the fragment stage takes back to that byte.  Chosen once per
- * glClear. */
+ * byte as trunc(c * 256 - c) in float arithmetic (probed, 21,504
+ * values near every k/255 and 4,084 of a quarter-step ramp: exact),
+ * where the fragment stage rounds c * 255.  fixgl gives the quad the
+ * colour byte / 255, which the fragment stage takes back to that byte.
+ * Chosen once per glClear; OSMesa buffers round (probed). */
 static const float *quad_color(const struct fgl_framebuffer *fb, const float c[4],
                                float linear[4])
 {
