@@ -60,7 +60,8 @@ static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebu
  * (float)(Clear * 2 - 1) in clip space, through the viewport transform of
  * the whole buffer (scale = translate = 0.5, fused: ORACLE-NOTES.md
  * "Vertex transformation"). */
-static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil)
+static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil,
+                            const float clear_color[4])
 {
    /* the clear's own depth-stencil-alpha and blend objects, for this
     * draw only */
@@ -100,8 +101,34 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
    const float zclip = (float)(ctx->Depth.Clear * 2.0f - 1.0f);
    const float z = fmaf(zclip, 0.5f, 0.5f);
    if (ctx->DrawBuffer->DrawBoth)   /* the other buffer too (main/buffers.c) */
-      r_clear_quad(fgl_both_begin(ctx, &rs), z, ctx->Color.ClearColor);
-   r_clear_quad(&rs, z, ctx->Color.ClearColor);
+      r_clear_quad(fgl_both_begin(ctx, &rs), z, clear_color);
+   r_clear_quad(&rs, z, clear_color);
+}
+
+/* The colour of the clear quad (ORACLE-NOTES.md "GLX partial clears"):
+ * llvmpipe draws it through its linear path where that is allowed, a
+ * B8G8R8A8 / B8G8R8X8 colour buffer (the oracle's GLX drawables, fb->Srgb:
+ * their formats' linear views), no depth and no stencil buffer, one
+ * colour buffer bound (not both buffers), and every channel of the
+ * (unclamped) clear colour in [0, 1]; the path takes each channel to a
+ * byte as trunc(c * 256 - c) in float arithmetic (probed, 21,504
+ * values near every k/255 and 4,084 of a quarter-step ramp: exact),
+ * where the fragment stage rounds c * 255.  fixgl gives the quad the
+ * colour byte / 255, which the fragment stage takes back to that byte.
+ * Chosen once per glClear; OSMesa buffers round (probed). */
+static const float *quad_color(const struct fgl_framebuffer *fb, const float c[4],
+                               float linear[4])
+{
+   if (!fb->Srgb || fb->DepthBits != 0 || fb->StencilBits != 0 || fb->DrawBoth)
+      return c;
+   for (int i = 0; i < 4; i++)
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+         return c;
+   for (int i = 0; i < 4; i++) {
+      const float t = c[i] * 256.0f - c[i];
+      linear[i] = (float)(unsigned)t / 255.0f;
+   }
+   return linear;
 }
 
 void GLAPIENTRY glClear(GLbitfield mask)
@@ -199,7 +226,9 @@ void GLAPIENTRY glClear(GLbitfield mask)
    if (color_quad || depth_quad || stencil_quad) {
       /* drawn at once, after what the scene holds */
       fgl_scene_flush(ctx);
-      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad);
+      float linear[4];
+      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad,
+                      quad_color(fb, ctx->Color.ClearColor, linear));
    }
    /* the accumulation buffer last, in software [S: state_tracker/
     * st_cb_clear.c:st_Clear; main/accum.c:_mesa_clear_accum_buffer]; only
