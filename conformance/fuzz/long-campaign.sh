@@ -68,9 +68,11 @@ if [[ -z $(ls -A "$out/corpus") ]]; then
 fi
 [[ $extra -gt 0 ]] && echo "$extra" >>"$out/extra-calls.txt"
 
-sum_calls() { awk '{ c += $1 } END { printf "%d\n", c }' "$out/calls.txt" 2>/dev/null || echo 0; }
-sum_inputs() { awk '{ i += $2 } END { printf "%d\n", i }' "$out/calls.txt" 2>/dev/null || echo 0; }
-sum_extra() { awk '{ c += $1 } END { printf "%d\n", c }' "$out/extra-calls.txt" 2>/dev/null || echo 0; }
+# column $2 of file $1 summed (0 when the file does not exist yet)
+sum_col() { if [[ -f $1 ]]; then awk -v k="$2" '{ s += $k } END { printf "%d\n", s }' "$1"; else echo 0; fi; }
+sum_calls() { sum_col "$out/calls.txt" 1; }
+sum_inputs() { sum_col "$out/calls.txt" 2; }
+sum_extra() { sum_col "$out/extra-calls.txt" 1; }
 total() { echo $(( $(sum_calls) + $(sum_extra) )); }
 
 k=$(ls "$out" | grep -c '^chunk-.*\.log$')
