@@ -1661,6 +1661,29 @@ static void end_after_list_mid_primitive(fc_h *h)
     fc_capture(h);
 }
 
+/* A point whose window y lies beyond the int range of the 24.8 snap
+ * (a viewport origin near INT_MIN): llvmpipe's y0 = snap(y) - 1 wraps
+ * (lp_setup_point.c), nothing is drawn (the long libFuzzer campaign's
+ * UBSan report at r_point.c); then a point in the normal viewport. */
+static void point_huge_viewport_y(fc_h *h)
+{
+    glViewport(0, -2000000000, 32, 32);
+    glPointSize(3);
+    glBegin(GL_POINTS);
+    glColor3f(1, 0, 0);
+    glVertex2f(0, 0);
+    glVertex2f(0.5f, -0.5f);
+    glEnd();
+    fc_error(h, "points at y near INT_MIN");
+    glViewport(0, 0, 32, 32);
+    glBegin(GL_POINTS);
+    glColor3f(0, 1, 0);
+    glVertex2f(0.25f, 0.25f);
+    glEnd();
+    fc_error(h, "witness point");
+    fc_capture(h);
+}
+
 /* glGet(GL_TRANSPOSE_TEXTURE_MATRIX) reads texture unit 0's matrix on
  * every active unit (the oracle's get table: CONTEXT_MATRIX_T of the
  * first stack), GL_TEXTURE_MATRIX the active unit's (the API fuzzer's
@@ -1875,5 +1898,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("end_after_list_mid_primitive", 32, 32, 1, end_after_list_mid_primitive),
     ROBUST("prioritize_inside_compile", 32, 32, 1, prioritize_inside_compile),
     ROBUST("element_buffer_no_store", 32, 32, 1, element_buffer_no_store),
+    ROBUST("point_huge_viewport_y", 32, 32, 1, point_huge_viewport_y),
     { 0 }
 };

@@ -147,8 +147,9 @@ static uint64_t hash_bytes(uint64_t h, const void *p, size_t n)
 
 #define HASH0 0xcbf29ce484222325ull
 
-void fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
+size_t fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
 {
+    size_t issued = 0;
     int inside = 0;
     const int trace = getenv("FZ_TRACE") != NULL;   /* each call on stderr */
     for (size_t i = 0; i < n; i++) {
@@ -167,6 +168,7 @@ void fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
         if (trace)
             fprintf(stderr, "%zu %s\n", i, e->name);
         ret = fz_call_entry(c->fn, c->a);
+        issued++;
         /* OSMesaGetDepthBuffer's last output is the buffer's address, which
          * differs from run to run: not compared, also where another
          * output's hashed bytes reach it (seed 453) */
@@ -204,6 +206,7 @@ void fz_exec_run(const fz_call *calls, size_t n, fz_result *res)
     }
     if (inside)
         glEnd();
+    return issued;
 }
 
 /* The walk's digest; with FZ_WALK=FILE in the environment also every

@@ -26,8 +26,10 @@ int fz_exec_setup(uint8_t *missing);
 /* A context (RGBA, depth 24, stencil 8, accum 16) current on the colour
  * buffer (64x64 of a 256x256 area of zeros), every buffer cleared. */
 OSMesaContext fz_exec_context(void);
-/* Runs the calls; res (may be NULL) receives one result per call. */
-void fz_exec_run(const fz_call *calls, size_t n, fz_result *res);
+/* Runs the calls; res (may be NULL) receives one result per call.
+ * Returns the number of entry-point calls issued (the stream's calls the
+ * library has, not the executor's glGetError checks). */
+size_t fz_exec_run(const fz_call *calls, size_t n, fz_result *res);
 /* Ends an open list, render mode and glBegin, walks the state and reads
  * the buffers back, and (f not NULL) digests them into f. */
 void fz_exec_final(fz_final *f);

@@ -195,7 +195,9 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
 
    const int adj = 1;   /* bottom_edge_rule of the y-down window buffer */
    const int32_t x0 = r_subpixel_snap(v->pos[0]);
-   const int32_t y0 = r_subpixel_snap(v->pos[1]) - adj;
+   /* lp_setup_point.c: C int arithmetic that wraps on the oracle's
+    * build; a position beyond the int range snaps to INT_MIN */
+   const int32_t y0 = (int32_t)((uint32_t)r_subpixel_snap(v->pos[1]) - (uint32_t)adj);
    int32_t fixed_width = (r_subpixel_snap(size) + 256 / 2 - 1) & ~(256 - 1);
    if (fixed_width < 256)
       fixed_width = 256;
