@@ -522,8 +522,10 @@ static void build_dsa(const struct fgl_context *ctx, struct r_dsa_state *o)
    o->alpha_test = c->AlphaEnabled;
    o->alpha_func = (enum r_func)(c->AlphaFunc - GL_NEVER);
    o->alpha_ref = (uint8_t)lrintf(r_clamp01(c->AlphaRef) * 255.0f);
-   /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare */
-   o->alpha_test_float = fb && (fb->AlphaBits == 0 || fb->Wide);
+   /* OSMESA_RGB buffers are R8G8B8, not an rgba8 variant: float compare;
+    * GLX buffers without alpha are B8G8R8X8, an rgba8 variant: unorm8
+    * (glx-linrect; ORACLE-NOTES.md "GLX linear rectangles") */
+   o->alpha_test_float = fb && ((fb->AlphaBits == 0 && !fb->Srgb) || fb->Wide);
    o->alpha_ref_float = c->AlphaRef;
 }
 
