@@ -47,7 +47,8 @@ GLUT_WANT=("window: 80x60" "center: 0 255 0" "corner: 0 0 255")
 
 check_triangle() {  # NAME BINARY
   expect "$1 (OSMesa)" "${OSMESA_WANT[@]}" -- "$2"
-  if readelf -d "$2" | grep -q 'NEEDED.*\[libGL\.so'; then
+  # (grep -q on a pipe under pipefail: the writer may die of SIGPIPE)
+  if grep -q 'NEEDED.*\[libGL\.so' <<<"$(readelf -d "$2")"; then
     fail "$1: links the system's libGL"
   fi
 }
@@ -68,7 +69,7 @@ if [[ $mode == subproject ]]; then
     fail "building the parent project"; tail -20 "$tmp/build.log"
   else
     # the library the triangle loads is the subproject's
-    if ldd "$parent/build/triangle" | grep -q "libfixgl.so.0 => $parent/build/subprojects/fixgl/"; then
+    if grep -q "libfixgl.so.0 => $parent/build/subprojects/fixgl/" <<<"$(ldd "$parent/build/triangle")"; then
       ok "dependency('fixgl') is the subproject's libfixgl"
     else
       fail "dependency('fixgl') did not come from the subproject:"; ldd "$parent/build/triangle" | grep fixgl

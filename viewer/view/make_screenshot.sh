@@ -7,7 +7,7 @@
 #   make_screenshot.sh FIXGL_VIEW MODEL OUT.png
 set -euo pipefail
 view=$1 model=$2 out=$3
-if ! "$view" --info "$model" | grep -q "GL_WIN_phong_shading yes"; then
+if ! grep -q "GL_WIN_phong_shading yes" <<<"$("$view" --info "$model")"; then
   echo "make_screenshot.sh: this libfixgl has no GL_WIN_phong_shading" >&2
   exit 1
 fi
