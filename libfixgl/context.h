@@ -695,6 +695,10 @@ struct fgl_draw_pipeline {
    bool line_stipple;       /* the line stipple stage (pattern != 0xffff):
                              * triangles and points that reach it restart
                              * the counter */
+   unsigned caller_mxcsr;   /* per draw (tnl/t_render.c): the application's
+                             * MXCSR at the draw's entry, in which the
+                             * pipeline's triangles are set up; 0 outside a
+                             * draw (the current state) */
 };
 
 /* Selection and feedback (Mesa's gl_selection and gl_feedback,

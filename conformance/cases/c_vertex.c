@@ -4,6 +4,8 @@
 #include <math.h>
 #include "cases.h"
 
+#include <xmmintrin.h>
+
 /* Cell k of an 8x8 grid of 8-pixel cells in a 64x64 window-ortho view. */
 static void cell(int k, double *x, double *y)
 {
@@ -206,6 +208,90 @@ static void denormals_flushed(fc_h *h)
     fc_capture(h);
 }
 
+/* The floating-point state of triangle setup (ORACLE-NOTES.md
+ * "Interpolation", probe p_setup_fpstate, fuzzer seed 3000366): a quad of
+ * clip w near 1.5e35, whose colour planes' derivatives are denormal.  The
+ * triangles of draw's pipeline (a vertex of the batch needs clipping) are
+ * set up in the application's MXCSR (llvmpipe's draw_flush after draw_vbo
+ * restored it), the direct ones under FTZ/DAZ, and the pixels are shaded
+ * with DAZ.  Frames: the quad alone (direct), then with a clipped triangle
+ * in the same glBegin/glEnd (pipeline), then a larger quad drawn with
+ * glDrawArrays that is itself clipped; each with the default MXCSR and
+ * with FTZ|DAZ set by the program around the draw. */
+static const float fp_quad[4][7] = {
+    { 64, 32, 1.53420652e+35f, 0.997522652f, 0.00247733132f, 0.0f, 0.0f },
+    { 32, 32, 1.5380167e+35f, 1.0f, 0.0f, 0.0f, 0.0f },
+    { 64, 64, 1.53041526e+35f, 0.995057583f, 0.00247120927f, 0.00247120927f, 0.0f },
+    { 32, 64, 1.53420652e+35f, 0.997522652f, 0.0f, 0.00247733132f, 0.0f },
+};
+
+static void fp_vertex(int i, float shift)
+{
+    const float *q = fp_quad[i];
+    const float w = q[2];
+    glColor4f(q[3], q[4], q[5], q[6]);
+    glVertex4f((2.0f * (q[0] - shift) / 64 - 1.0f) * w, (2.0f * q[1] / 64 - 1.0f) * w, 0.0f, w);
+}
+
+static void fp_draw(fc_h *h, int kind, unsigned csr)
+{
+    static const int tris[2][3] = { { 0, 1, 2 }, { 1, 3, 2 } };
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    const unsigned saved = _mm_getcsr();
+    _mm_setcsr(csr);
+    if (kind < 2) {
+        glBegin(GL_TRIANGLES);
+        for (int t = 0; t < 2; t++)
+            for (int k = 0; k < 3; k++)
+                fp_vertex(tris[t][k], 0.0f);
+        if (kind == 1) {
+            glColor4f(0, 1, 0, 1);
+            glVertex4f(-3.0f, -1.0f, 0.0f, 1.0f);
+            glVertex4f(-0.6f, -1.0f, 0.0f, 1.0f);
+            glVertex4f(-0.9f, -0.6f, 0.0f, 1.0f);
+        }
+        glEnd();
+    } else {
+        /* the quad moved 48 pixels left: its left side is outside */
+        GLfloat v[4][8];
+        static const int order[4] = { 1, 0, 2, 3 };
+        for (int i = 0; i < 4; i++) {
+            const float *q = fp_quad[order[i]];
+            const float w = q[2];
+            v[i][0] = q[3]; v[i][1] = q[4]; v[i][2] = q[5]; v[i][3] = q[6];
+            v[i][4] = (2.0f * (q[0] - 48.0f) / 64 - 1.0f) * w;
+            v[i][5] = (2.0f * q[1] / 64 - 1.0f) * w;
+            v[i][6] = 0.0f;
+            v[i][7] = w;
+        }
+        glEnableClientState(GL_COLOR_ARRAY);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glColorPointer(4, GL_FLOAT, 8 * sizeof(GLfloat), &v[0][0]);
+        glVertexPointer(4, GL_FLOAT, 8 * sizeof(GLfloat), &v[0][4]);
+        glDrawArrays(GL_QUADS, 0, 4);
+        glDisableClientState(GL_COLOR_ARRAY);
+        glDisableClientState(GL_VERTEX_ARRAY);
+    }
+    glFinish();
+    _mm_setcsr(saved);
+    fc_capture(h);
+}
+
+static void setup_caller_fpstate(fc_h *h)
+{
+    const unsigned def = _mm_getcsr() & ~0x8040u, ftz = def | 0x8040u;   /* FTZ | DAZ */
+    glViewport(0, 0, 64, 64);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glShadeModel(GL_SMOOTH);
+    for (int kind = 0; kind < 3; kind++) {
+        fp_draw(h, kind, def);
+        fp_draw(h, kind, ftz);
+    }
+}
+
 /* ---- large immediate-mode batches ----
  * Batches of thousands of vertices (the vertex stage transforms those of
  * triangles and quads window by window as the primitives reach them,
@@ -393,6 +479,7 @@ const fc_case fc_cases_vertex[] = {
     FC_CASE_RGBA("core/color_integer_smooth", 32, 32, 1, "core vertex shade", color_integer_smooth),
     FC_CASE_RGBA("core/vbo_batch_corners", 32, 32, 2, "core vertex", batch_corners),
     FC_CASE_RGBA("core/denormals_flushed", 32, 32, 2, "core vertex", denormals_flushed),
+    FC_CASE_RGBA("core/setup_caller_fpstate", 64, 64, 6, "core vertex clip", setup_caller_fpstate),
     FC_CASE_RGBA("core/large_batches", 96, 96, 6, "core vertex", big_batches),
     FC_CASE_RGBA("core/large_batches_lit", 96, 96, 5, "core vertex lighting", big_batches_lit),
     FC_CASE_RGBA("core/large_batches_pipeline", 96, 96, 4, "core vertex polygon", big_batches_pipeline),

@@ -699,6 +699,13 @@ struct r_state {
     * is flushed after the first filled triangle of a draw (t_linepoint.c
     * t_vbuf_flush); the same kill as triangles' */
    bool stipple_points_lines;
+   /* the MXCSR a triangle's setup (its planes, r_tri.c setup_shade) runs
+    * in, or 0 for the current one (the draw's FTZ|DAZ): tnl sets it to the
+    * application's while it hands over the triangles of draw's pipeline,
+    * which llvmpipe sets up at draw_flush, after draw_vbo restored the
+    * caller's state; the pixels stay under the draw's (ORACLE-NOTES.md
+    * "Interpolation", probe p_setup_fpstate) */
+   unsigned setup_mxcsr;
    /* glBitmap, glDrawPixels, glCopyPixels (r_pixels.c, drawn by
     * tnl/t_pixels.c): the state tracker's textured quad replaces the
     * fragment shader; NULL for every other primitive */

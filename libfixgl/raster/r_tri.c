@@ -218,8 +218,8 @@ static inline void make_planes4(const struct setup_factors *f, __m128 a0, __m128
 /* Setup of the fragment inputs: the colour (and the secondary colour), from
  * the back-face slots for a back-facing two-sided triangle
  * (lp_state_setup.c:lp_twoside). */
-static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
-                        bool back, bool phong_back, struct r_tri_setup *ts)
+static void setup_planes(const struct r_state *rs, const struct r_vertex *const v[3],
+                         bool back, bool phong_back, struct r_tri_setup *ts)
 {
    /* plain float arithmetic in llvmpipe's order */
    const float x0 = v[0]->pos[0], y0 = v[0]->pos[1];
@@ -286,6 +286,24 @@ static void setup_shade(const struct r_state *rs, const struct r_vertex *const v
    ts->need_w = need_w;
    if (__builtin_expect(rs->rast->sprite_coord_enable != 0, 0))
       r_zero_sprite_inputs(rs->rast, ts);
+}
+
+/* setup_planes in the floating-point state rs asks for (rs->setup_mxcsr:
+ * draw's pipeline triangles are set up in the application's, the pixels
+ * shaded in the draw's FTZ|DAZ) */
+static void setup_shade(const struct r_state *rs, const struct r_vertex *const v[3],
+                        bool back, bool phong_back, struct r_tri_setup *ts)
+{
+#if defined(__SSE2__)
+   if (rs->setup_mxcsr) {
+      const unsigned csr = _mm_getcsr();
+      _mm_setcsr(rs->setup_mxcsr);
+      setup_planes(rs, v, back, phong_back, ts);
+      _mm_setcsr(csr);
+      return;
+   }
+#endif
+   setup_planes(rs, v, back, phong_back, ts);
 }
 
 void r_zero_sprite_inputs(const struct r_rast_state *rast, struct r_tri_setup *ts)

@@ -168,5 +168,14 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
       ctx->StippleCounter = 0;
    /* the pstipple stage's first filled triangle of the draw */
    t_vbuf_filled_tri(ctx);
+   /* [S: lp_draw_arrays.c:llvmpipe_draw_vbo, draw_flush; draw_pipe_vbuf.c]
+    * the vbuf stage queues the pipeline's triangles and llvmpipe sets them
+    * up when draw is flushed after draw_vbo restored the caller's MXCSR:
+    * denormal plane derivatives are kept in setup (ORACLE-NOTES.md
+    * "Interpolation"; not modelled: the vbuf's mid-draw flushes, buffer
+    * full or a line or point after the triangle, which set up under
+    * FTZ/DAZ) */
+   ctx->_Raster.setup_mxcsr = dp->caller_mxcsr;
    fgl_raster_triangle(ctx, rs, v[0], v[1], v[2]);
+   ctx->_Raster.setup_mxcsr = 0;
 }

@@ -507,6 +507,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
 #if defined(__SSE__) || defined(__x86_64__)
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
+   /* the pipeline's triangles are set up in the caller's (t_draw_pipe.c) */
+   ctx->_DrawPipeline.caller_mxcsr = mxcsr;
 #endif
 
    /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
@@ -551,8 +553,13 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    if (ctx->_Raster.fs->phong) {
       memset(&ctx->_ShadeEnv, 0, sizeof(ctx->_ShadeEnv));
       fgl_update_shade_env(ctx, &ctx->_ShadeEnv);
-      if (!fgl_set_shade_env(ctx))
+      if (!fgl_set_shade_env(ctx)) {
+#if defined(__SSE__) || defined(__x86_64__)
+         ctx->_DrawPipeline.caller_mxcsr = 0;
+         _mm_setcsr(mxcsr);   /* the caller's state back */
+#endif
          return;
+      }
       for (int a = FGL_ATTR_MAT_FIRST; a < FGL_ATTR_COUNT; a++)
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
@@ -629,6 +636,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    }
    t_vbuf_end_draw(ctx);
 #if defined(__SSE__) || defined(__x86_64__)
+   ctx->_DrawPipeline.caller_mxcsr = 0;
    _mm_setcsr(mxcsr);
 #endif
    if (ctx->Vbo.tv_alloc > FGL_VBO_SCRATCH_KEEP) {
