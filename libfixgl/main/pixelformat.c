@@ -672,13 +672,18 @@ void fgl_apply_rgba_transfer_ops(const struct fgl_context *ctx, unsigned ops, si
 
 void fgl_shift_and_offset_ci(const struct fgl_context *ctx, size_t n, GLuint *index)
 {
+   /* The oracle's C shifts by the GL_INDEX_SHIFT value (and by its
+    * negation) as x86's scalar shifts do: the count taken modulo 32.  Done
+    * here without C's undefined behaviour for counts outside [0, 31] and
+    * for -INT_MIN (found by the long libFuzzer campaign). */
    const GLint shift = ctx->Pixel.IndexShift;
    const GLuint offset = (GLuint)ctx->Pixel.IndexOffset;
+   const unsigned left = (unsigned)shift & 31u, right = (0u - (unsigned)shift) & 31u;
    for (size_t i = 0; i < n; i++) {
       if (shift > 0)
-         index[i] = (index[i] << shift) + offset;
+         index[i] = (index[i] << left) + offset;
       else if (shift < 0)
-         index[i] = (index[i] >> -shift) + offset;
+         index[i] = (index[i] >> right) + offset;
       else
          index[i] = index[i] + offset;
    }
@@ -926,13 +931,17 @@ void fgl_apply_stencil_transfer_ops(const struct fgl_context *ctx, size_t n, uin
 {
    /* [S: pixeltransfer.c:_mesa_apply_stencil_transfer_ops] in 8 bits */
    if (ctx->Pixel.IndexShift != 0 || ctx->Pixel.IndexOffset != 0) {
-      const GLint offset = ctx->Pixel.IndexOffset;
+      /* (counts modulo 32 as x86's shifts, in unsigned arithmetic: the
+       * same low 8 bits without C's undefined behaviour; see
+       * fgl_shift_and_offset_ci) */
+      const unsigned offset = (unsigned)ctx->Pixel.IndexOffset;
       const GLint shift = ctx->Pixel.IndexShift;
+      const unsigned left = (unsigned)shift & 31u, right = (0u - (unsigned)shift) & 31u;
       for (size_t i = 0; i < n; i++) {
          if (shift > 0)
-            s[i] = (uint8_t)((s[i] << shift) + offset);
+            s[i] = (uint8_t)(((unsigned)s[i] << left) + offset);
          else if (shift < 0)
-            s[i] = (uint8_t)((s[i] >> -shift) + offset);
+            s[i] = (uint8_t)(((unsigned)s[i] >> right) + offset);
          else
             s[i] = (uint8_t)(s[i] + offset);
       }
