@@ -254,6 +254,32 @@ static bool vertex_box(const struct r_state *rs, const struct r_vertex *const *v
    return prim_box(rs, minx, miny, maxx, maxy, pad, box);
 }
 
+/* Where the scene's storage stood before a command was added: a command
+ * that cannot be binned is dropped with what it allocated (its vertices or
+ * setup, and the state it added). */
+struct scene_mark {
+   struct r_scene_chunk *chunk;
+   size_t used, bytes;
+   uint32_t states;
+};
+
+static struct scene_mark scene_mark(const struct r_scene *s)
+{
+   return (struct scene_mark){ s->chunk, s->chunk_used, s->bytes, s->nstates };
+}
+
+/* drops the storage allocated since `m` (the state too when `state`) */
+static void scene_rollback(struct r_scene *s, const struct scene_mark *m, bool state)
+{
+   s->chunk = m->chunk;
+   s->chunk_used = m->used;
+   s->bytes = m->bytes;
+   if (state && s->nstates > m->states) {
+      s->nstates--;
+      r_state_release(&s->states[s->nstates]);
+   }
+}
+
 /* Appends a primitive of n vertices whose pixels lie in `known_box`
  * inside `edges` (NULL: no edges) or, when it is NULL, in their vertex_box
  * widened by `pad`. */
@@ -268,9 +294,7 @@ static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kin
       memcpy(box, known_box, sizeof(box));
    else if (!vertex_box(rs, v, n, pad, box))
       return true;   /* no pixel of the region: nothing to draw */
-   const size_t mark_used = s->chunk_used, mark_bytes = s->bytes;
-   struct r_scene_chunk *const mark_chunk = s->chunk;
-   const uint32_t mark_states = s->nstates;
+   const struct scene_mark mark = scene_mark(s);
    const uint32_t ci = new_cmd(s, rs, kind);
    if (ci == UINT32_MAX)
       goto fail;
@@ -288,13 +312,7 @@ static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kin
    return true;
 fail:
    /* as it was: the vertices and a state this command added dropped */
-   s->chunk = mark_chunk;
-   s->chunk_used = mark_used;
-   s->bytes = mark_bytes;
-   if (s->nstates > mark_states) {
-      s->nstates--;
-      r_state_release(&s->states[s->nstates]);
-   }
+   scene_rollback(s, &mark, true);
    return false;
 }
 
@@ -306,9 +324,7 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
     * set up now, once, instead of in each tile it is drawn in */
    if (!begin(s, rs))
       return false;
-   const size_t mark_used = s->chunk_used, mark_bytes = s->bytes;
-   struct r_scene_chunk *const mark_chunk = s->chunk;
-   const uint32_t mark_states = s->nstates;
+   const struct scene_mark mark = scene_mark(s);
    struct r_tri_binned *bin = scene_alloc(s, r_tri_binned_size(rs));
    if (!bin)
       return false;
@@ -316,9 +332,7 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
    struct r_tri_edges edges;
    const int known = r_triangle_box_setup(rs, v0, v1, v2, box, &edges, bin);
    if (known != 1) {
-      s->chunk = mark_chunk;
-      s->chunk_used = mark_used;
-      s->bytes = mark_bytes;
+      scene_rollback(s, &mark, false);
       if (known == 0)
          return true;
       const struct r_vertex *v[3] = { v0, v1, v2 };
@@ -336,13 +350,7 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
    return true;
 fail:
    /* as it was: the setup and a state this command added dropped */
-   s->chunk = mark_chunk;
-   s->chunk_used = mark_used;
-   s->bytes = mark_bytes;
-   if (s->nstates > mark_states) {
-      s->nstates--;
-      r_state_release(&s->states[s->nstates]);
-   }
+   scene_rollback(s, &mark, true);
    return false;
 }
 
