@@ -507,8 +507,10 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
 #if defined(__SSE__) || defined(__x86_64__)
    const unsigned mxcsr = _mm_getcsr();
    _mm_setcsr(mxcsr | 0x8040u);   /* FTZ (bit 15) | DAZ (bit 6) */
-   /* the pipeline's triangles are set up in the caller's (t_draw_pipe.c) */
-   ctx->_DrawPipeline.caller_mxcsr = mxcsr;
+   /* the pipeline's triangles are set up in the caller's (t_draw_pipe.c);
+    * 0 (the draw's own) when the caller already flushes denormals, so
+    * their setup switches nothing */
+   ctx->_DrawPipeline.caller_mxcsr = (mxcsr | 0x8040u) != mxcsr ? mxcsr : 0;
 #endif
 
    /* [S: st_atom.c:st_update_edgeflags] with a fill mode other than
