@@ -32,31 +32,7 @@ static int images;
 /* glReadPixels of the current read buffer: RGB, then alpha as grey */
 static void grab(int w, int h)
 {
-   static unsigned char px[W * H * 4];
-   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-   FILE *f = fopen(out, images++ > 0 ? "ab" : "wb");
-   if (!f) {
-      perror(out);
-      exit(1);
-   }
-   for (int pass = 0; pass < 2; pass++) {
-      fprintf(f, "P6\n%d %d\n255\n", w, h);
-      for (int y = h - 1; y >= 0; y--)
-         for (int x = 0; x < w; x++) {
-            const unsigned char *p = &px[4 * (y * w + x)];
-            const unsigned char a[3] = { p[3], p[3], p[3] };
-            fwrite(pass == 0 ? p : a, 1, 3, f);
-         }
-   }
-   fclose(f);
-}
-
-static void print_pixel(const char *what, int x, int y)
-{
-   unsigned char p[4];
-   glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   printf("= %s (%d,%d): %d %d %d %d\n", what, x, y, p[0], p[1], p[2], p[3]);
+   append_read_ppm(out, &images, w, h, 1);
 }
 
 /* every 8-bit value in every channel: rows of ramps, each row another
@@ -91,18 +67,18 @@ static void accum_bands(int w)
    band(0, 1);
    glClearColor(20 / 255.0f, 30 / 255.0f, 105 / 255.0f, 1);
    glClear(GL_COLOR_BUFFER_BIT);
-   print_pixel("cleared", 0, 0);
+   print_read_pixel("cleared", 0, 0);
    band(0, 8);
    glAccum(GL_LOAD, 1.0f);
    glAccum(GL_RETURN, 0.6f);
-   print_pixel("load 1 return 0.6", 0, 0);
+   print_read_pixel("load 1 return 0.6", 0, 0);
    band(8, 8);
    glAccum(GL_LOAD, 0.5f);
    glAccum(GL_ACCUM, 0.3f);
    glAccum(GL_MULT, 1.7f);
    glAccum(GL_ADD, 0.05f);
    glAccum(GL_RETURN, 1.2f);
-   print_pixel("load accum mult add return", 9, 8);
+   print_read_pixel("load accum mult add return", 9, 8);
    band(16, 8);
    glAccum(GL_LOAD, 1.0f);
    glAccum(GL_RETURN, 1.0f);
@@ -111,14 +87,14 @@ static void accum_bands(int w)
    glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
    glAccum(GL_RETURN, 1.1f);
    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-   print_pixel("masked return", 40, 24);
+   print_read_pixel("masked return", 40, 24);
    band(32, 8);
    glAccum(GL_LOAD, 0.25f);
    glColor4f(0.8f, 0.2f, 0.4f, 0.6f);
    glRecti(0, 32, W, 40);
    glAccum(GL_ACCUM, 0.75f);
    glAccum(GL_RETURN, 1.0f);
-   print_pixel("load clear accum return", 3, 33);
+   print_read_pixel("load clear accum return", 3, 33);
    band(40, 8);
    glAccum(GL_LOAD, -0.5f);
    glAccum(GL_ADD, 0.9f);
@@ -208,7 +184,7 @@ static void window_case(int alpha)
    glDrawBuffer(GL_BACK);
    glReadBuffer(GL_BACK);
    ramps(W, H, 0);
-   print_pixel("ramp", 9, 8);
+   print_read_pixel("ramp", 9, 8);
    accum_bands(W);
    grab(W, H);
    /* both buffers: the front another image; rows 0..19 of the back get
@@ -222,10 +198,10 @@ static void window_case(int alpha)
    glAccum(GL_RETURN, 0.85f);
    glDisable(GL_SCISSOR_TEST);
    glReadBuffer(GL_FRONT);
-   print_pixel("both: front", 5, 5);
+   print_read_pixel("both: front", 5, 5);
    grab(W, H);
    glReadBuffer(GL_BACK);
-   print_pixel("both: back", 5, 5);
+   print_read_pixel("both: back", 5, 5);
    grab(W, H);
    glFinish();
    glXMakeCurrent(dpy, None, NULL);

@@ -33,31 +33,7 @@ static int images;
 
 static void grab(int w, int h)
 {
-   static unsigned char px[W * H * 4];
-   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-   FILE *f = fopen(out, images++ > 0 ? "ab" : "wb");
-   if (!f) {
-      perror(out);
-      exit(1);
-   }
-   for (int pass = 0; pass < 2; pass++) {
-      fprintf(f, "P6\n%d %d\n255\n", w, h);
-      for (int y = h - 1; y >= 0; y--)
-         for (int x = 0; x < w; x++) {
-            const unsigned char *p = &px[4 * (y * w + x)];
-            const unsigned char a[3] = { p[3], p[3], p[3] };
-            fwrite(pass == 0 ? p : a, 1, 3, f);
-         }
-   }
-   fclose(f);
-}
-
-static void print_pixel(const char *what, int x, int y)
-{
-   unsigned char p[4];
-   glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   printf("= %s (%d,%d): %d %d %d %d\n", what, x, y, p[0], p[1], p[2], p[3]);
+   append_read_ppm(out, &images, w, h, 1);
 }
 
 /* column x of band `salt`: k/255 plus a quarter step per salt, the
@@ -101,16 +77,16 @@ static void bands(void)
    glDisable(GL_SCISSOR_TEST);
    glClearColor(0.5f, 0.1f, 0.45f, 0.9f);
    glClear(GL_COLOR_BUFFER_BIT);
-   print_pixel("whole", 3, 60);
+   print_read_pixel("whole", 3, 60);
    glColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
    glClearColor(0.3f, 0.9f, 0.7f, 0.1f);
    glClear(GL_COLOR_BUFFER_BIT);
    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-   print_pixel("whole then masked", 3, 60);
+   print_read_pixel("whole then masked", 3, 60);
    for (int s = 0; s < 4; s++)
       clear_band(8 * s, 8, s, false);
-   print_pixel("scissored 0.5", 127, 0);
-   print_pixel("scissored 0.1", 25, 17);
+   print_read_pixel("scissored 0.5", 127, 0);
+   print_read_pixel("scissored 0.1", 25, 17);
    /* scissored and masked */
    static const GLboolean masks[4][4] = {
       { GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE },
@@ -123,9 +99,9 @@ static void bands(void)
       clear_band(32 + 2 * m, 2, m + 1, false);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
    }
-   print_pixel("masked", 100, 33);
+   print_read_pixel("masked", 100, 33);
    clear_band(48, 8, 1, true);
-   print_pixel("out of range", 4, 50);
+   print_read_pixel("out of range", 4, 50);
 }
 
 static void setup_view(int w, int h)
@@ -205,10 +181,10 @@ static void window_case(int alpha, int depth)
    clear_band(8, 8, 3, false);
    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
    glReadBuffer(GL_FRONT);
-   print_pixel("both: front", 127, 3);
+   print_read_pixel("both: front", 127, 3);
    grab(W, H);
    glReadBuffer(GL_BACK);
-   print_pixel("both: back", 127, 3);
+   print_read_pixel("both: back", 127, 3);
    grab(W, H);
    glFinish();
    glXMakeCurrent(dpy, None, NULL);

@@ -38,23 +38,11 @@ static void grab_window(void)
 /* glReadPixels of buf, as a PPM, top row first */
 static void grab_buffer(GLenum buf)
 {
-   static unsigned char px[W * H * 4];
    GLint old = 0;
    glGetIntegerv(GL_READ_BUFFER, &old);
    glReadBuffer(buf);
-   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-   glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, px);
+   append_read_ppm(out, &images, W, H, 0);
    glReadBuffer((GLenum)old);
-   FILE *f = fopen(out, images++ > 0 ? "ab" : "wb");
-   if (!f) {
-      perror(out);
-      exit(1);
-   }
-   fprintf(f, "P6\n%d %d\n255\n", W, H);
-   for (int y = H - 1; y >= 0; y--)
-      for (int x = 0; x < W; x++)
-         fwrite(&px[4 * (y * W + x)], 1, 3, f);
-   fclose(f);
 }
 
 static void shaded_tri(float x0, float y0, float s, float z, float a)

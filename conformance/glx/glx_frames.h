@@ -121,4 +121,42 @@ static inline void write_current_window_ppm(const char *path)
    write_drawable_ppm(dpy, win, wa.visual, path, 0);
 }
 
+/* Appends the current read buffer's w x h pixels (RGBA, unsigned bytes)
+ * to the PPM file `path` as one binary PPM of their colour and, when
+ * `alpha`, a second of their alpha as grey (pixels a read clipped to a
+ * smaller drawable does not write are 0x55); the first call (*images 0)
+ * creates the file, every call counts itself in *images. */
+static inline void append_read_ppm(const char *path, int *images, int w, int h, int alpha)
+{
+   unsigned char *px = malloc((size_t)w * (size_t)h * 4);
+   FILE *f = px ? fopen(path, (*images)++ > 0 ? "ab" : "wb") : NULL;
+   if (!f) {
+      perror(path);
+      exit(1);
+   }
+   memset(px, 0x55, (size_t)w * (size_t)h * 4);   /* what a clipped read leaves */
+   glPixelStorei(GL_PACK_ALIGNMENT, 1);
+   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
+   for (int pass = 0; pass < (alpha ? 2 : 1); pass++) {
+      fprintf(f, "P6\n%d %d\n255\n", w, h);
+      for (int y = h - 1; y >= 0; y--)
+         for (int x = 0; x < w; x++) {
+            const unsigned char *p = &px[4 * (y * w + x)];
+            const unsigned char a[3] = { p[3], p[3], p[3] };
+            fwrite(pass == 0 ? p : a, 1, 3, f);
+         }
+   }
+   fclose(f);
+   free(px);
+}
+
+/* One pixel of the current read buffer, as a "= " line run_glx.py
+ * compares. */
+static inline void print_read_pixel(const char *what, int x, int y)
+{
+   unsigned char p[4];
+   glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+   printf("= %s (%d,%d): %d %d %d %d\n", what, x, y, p[0], p[1], p[2], p[3]);
+}
+
 #endif

@@ -37,31 +37,7 @@ static int images;
 
 static void grab(int w, int h)
 {
-   static unsigned char px[W * H * 4];
-   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-   FILE *f = fopen(out, images++ > 0 ? "ab" : "wb");
-   if (!f) {
-      perror(out);
-      exit(1);
-   }
-   for (int pass = 0; pass < 2; pass++) {
-      fprintf(f, "P6\n%d %d\n255\n", w, h);
-      for (int y = h - 1; y >= 0; y--)
-         for (int x = 0; x < w; x++) {
-            const unsigned char *p = &px[4 * (y * w + x)];
-            const unsigned char a[3] = { p[3], p[3], p[3] };
-            fwrite(pass == 0 ? p : a, 1, 3, f);
-         }
-   }
-   fclose(f);
-}
-
-static void print_pixel(const char *what, int x, int y)
-{
-   unsigned char p[4];
-   glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   printf("= %s (%d,%d): %d %d %d %d\n", what, x, y, p[0], p[1], p[2], p[3]);
+   append_read_ppm(out, &images, w, h, 1);
 }
 
 static void colour_of(int x, int salt, float c[4])
@@ -141,7 +117,7 @@ static void bands(void)
    glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
    glClear(GL_COLOR_BUFFER_BIT);
    band(RECT, 0, 4, 0);
-   print_pixel("rect 0.5", 127, 1);
+   print_read_pixel("rect 0.5", 127, 1);
    glShadeModel(GL_FLAT);
    band(RECT, 4, 4, 1);
    glShadeModel(GL_SMOOTH);
@@ -216,7 +192,7 @@ static void bands(void)
    /* a rectangle over the whole drawable's width at once */
    glColor4f(0.1f, 0.5f, 0.9f, 0.45f);
    glRecti(0, 92, W, H);
-   print_pixel("wide", 10, 93);
+   print_read_pixel("wide", 10, 93);
 }
 
 static const float C[4] = { 0.1f, 0.5f, 0.9f, 0.45f };

@@ -31,21 +31,8 @@ static int images;
 /* glReadPixels of (0, 0, w, h) from buf of the read drawable, as a PPM */
 static void grab_buffer(GLenum buf, int w, int h)
 {
-   static unsigned char px[AW * AH * 4];
-   memset(px, 0x55, sizeof(px));
    glReadBuffer(buf);
-   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px);
-   FILE *f = fopen(out, images++ > 0 ? "ab" : "wb");
-   if (!f) {
-      perror(out);
-      exit(1);
-   }
-   fprintf(f, "P6\n%d %d\n255\n", w, h);
-   for (int y = h - 1; y >= 0; y--)
-      for (int x = 0; x < w; x++)
-         fwrite(&px[4 * (y * w + x)], 1, 3, f);
-   fclose(f);
+   append_read_ppm(out, &images, w, h, 0);
 }
 
 static void shaded_tri(float x0, float y0, float s, float z)
