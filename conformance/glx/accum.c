@@ -147,38 +147,14 @@ static GLXFBConfig config_of(int alpha, int db, int drawable_type)
    return c;
 }
 
-static Window make_window(GLXFBConfig c, int w, int h, XVisualInfo **vip)
-{
-   XVisualInfo *vi = glXGetVisualFromFBConfig(dpy, c);
-   if (!vi) {
-      fprintf(stderr, "accum: no visual\n");
-      exit(1);
-   }
-   XSetWindowAttributes swa;
-   swa.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
-   swa.background_pixel = 0;
-   swa.border_pixel = 0;
-   Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, (unsigned)w, (unsigned)h,
-                              0, vi->depth, InputOutput, vi->visual,
-                              CWColormap | CWBackPixel | CWBorderPixel, &swa);
-   XMapWindow(dpy, win);
-   XSync(dpy, False);
-   *vip = vi;
-   return win;
-}
-
 /* a double-buffered window of config c: the bands in the back, then
  * GL_RETURN into both buffers */
 static void window_case(int alpha)
 {
    GLXFBConfig c = config_of(alpha, True, GLX_WINDOW_BIT);
    XVisualInfo *vi;
-   Window win = make_window(c, W, H, &vi);
-   GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
-   if (!ctx || !glXMakeCurrent(dpy, win, ctx)) {
-      fprintf(stderr, "accum: no context\n");
-      exit(1);
-   }
+   GLXContext ctx;
+   Window win = config_window_current(dpy, c, W, H, &vi, &ctx);
    print_renderer();
    setup_view(W, H);
    glDrawBuffer(GL_BACK);

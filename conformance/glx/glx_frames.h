@@ -159,4 +159,34 @@ static inline void print_read_pixel(const char *what, int x, int y)
    printf("= %s (%d,%d): %d %d %d %d\n", what, x, y, p[0], p[1], p[2], p[3]);
 }
 
+/* A mapped w x h window of config c, made current with a new context of
+ * that config (the program exits when there is none); the caller frees
+ * *vip, the window and *ctxp. */
+static inline Window config_window_current(Display *dpy, GLXFBConfig c, int w, int h,
+                                           XVisualInfo **vip, GLXContext *ctxp)
+{
+   XVisualInfo *vi = glXGetVisualFromFBConfig(dpy, c);
+   if (!vi) {
+      fprintf(stderr, "no visual for the config\n");
+      exit(1);
+   }
+   XSetWindowAttributes swa;
+   swa.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
+   swa.background_pixel = 0;
+   swa.border_pixel = 0;
+   Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, (unsigned)w, (unsigned)h,
+                              0, vi->depth, InputOutput, vi->visual,
+                              CWColormap | CWBackPixel | CWBorderPixel, &swa);
+   XMapWindow(dpy, win);
+   XSync(dpy, False);
+   GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+   if (!ctx || !glXMakeCurrent(dpy, win, ctx)) {
+      fprintf(stderr, "no context for the config\n");
+      exit(1);
+   }
+   *vip = vi;
+   *ctxp = ctx;
+   return win;
+}
+
 #endif

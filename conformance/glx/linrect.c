@@ -364,25 +364,9 @@ static GLXFBConfig config_of(int alpha, int depth, int db)
 static void window_case(int alpha, int depth)
 {
    GLXFBConfig c = config_of(alpha, depth, True);
-   XVisualInfo *vi = glXGetVisualFromFBConfig(dpy, c);
-   if (!vi) {
-      fprintf(stderr, "linrect: no visual\n");
-      exit(1);
-   }
-   XSetWindowAttributes swa;
-   swa.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
-   swa.background_pixel = 0;
-   swa.border_pixel = 0;
-   Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, W, H, 0, vi->depth,
-                              InputOutput, vi->visual, CWColormap | CWBackPixel | CWBorderPixel,
-                              &swa);
-   XMapWindow(dpy, win);
-   XSync(dpy, False);
-   GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
-   if (!ctx || !glXMakeCurrent(dpy, win, ctx)) {
-      fprintf(stderr, "linrect: no context\n");
-      exit(1);
-   }
+   XVisualInfo *vi;
+   GLXContext ctx;
+   Window win = config_window_current(dpy, c, W, H, &vi, &ctx);
    print_renderer();
    setup_view(W, H);
    glDrawBuffer(GL_BACK);
