@@ -27,7 +27,7 @@
 # fixgl-libfuzzer appends "CALLS INPUTS" to OUT/calls.txt at each normal
 # exit (FIXGL_FUZZ_CALLS_FILE, fz_libfuzzer.c).  Each chunk appends one line
 # to OUT/campaign.log:
-#   DATE chunk=K exit=E seconds=S inputs=I calls=C calls/s=R total=T
+#   DATE commit=REV chunk=K exit=E seconds=S inputs=I calls=C calls/s=R total=T
 # A chunk that exits non-zero (crash, sanitizer report, leak, -timeout=60
 # hang, -rss_limit_mb=4096) stops the campaign with exit status 1; its log
 # is OUT/chunk-K.log and the input that caused it is in OUT/artifacts/.
@@ -76,6 +76,9 @@ sum_extra() { sum_col "$out/extra-calls.txt" 1; }
 total() { echo $(( $(sum_calls) + $(sum_extra) )); }
 
 k=$(ls "$out" | grep -c '^chunk-.*\.log$')
+# the sources the chunks of this invocation fuzz (a campaign that spans
+# several commits says which calls each one took)
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 done_chunks=0
 echo "long-campaign: $(total) calls so far (libFuzzer $(sum_calls), elsewhere $(sum_extra)), target $target"
 while [[ $(total) -lt $target ]]; do
@@ -94,7 +97,7 @@ while [[ $(total) -lt $target ]]; do
   rc=$?
   secs=$((SECONDS - start))
   calls=$(( $(sum_calls) - before_calls )) inputs=$(( $(sum_inputs) - before_inputs ))
-  line="$(date -u +%FT%TZ) chunk=$k exit=$rc seconds=$secs inputs=$inputs calls=$calls calls/s=$(( calls / (secs > 0 ? secs : 1) )) total=$(total)"
+  line="$(date -u +%FT%TZ) commit=$commit chunk=$k exit=$rc seconds=$secs inputs=$inputs calls=$calls calls/s=$(( calls / (secs > 0 ? secs : 1) )) total=$(total)"
   echo "$line" | tee -a "$out/campaign.log"
   done_chunks=$((done_chunks + 1))
   if [[ $rc -ne 0 ]]; then
