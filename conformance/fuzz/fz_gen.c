@@ -393,10 +393,16 @@ static fz_call *emit(gen *g, int fn, unsigned valid)
      * compiled while list n is compiled calls below n): with cycles or
      * a large fan-out, nesting to 64 levels is exponential work in both
      * libraries, a hang of the stream's own making.  (The oracle also
-     * crashes when a list being compiled calls itself inside glBegin.) */
+     * crashes when a list being compiled calls itself inside glBegin.)
+     * A glNewList while a list is compiled fails (GL_INVALID_OPERATION):
+     * the outer list goes on, with its own bound and count; the next
+     * glEndList ends it.  display_list() renames its list after this,
+     * and sets the bound again. */
     if (fn == special[E_NEWLIST]) {
-        g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
-        g->list_calls = 0;
+        if (!g->compiling) {
+            g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
+            g->list_calls = 0;
+        }
     } else if (fn == special[E_ENDLIST]) {
         g->compiling = 0;
     } else if (g->compiling && fn == special[E_CALLLIST]) {
@@ -432,9 +438,15 @@ static void begin_end(gen *g)
 
 static void display_list(gen *g)
 {
+    const uint32_t outer = g->compiling;
     fz_call *c = emit(g, special[E_NEWLIST], 90);
     const uint32_t name = 1 + below(g->s, 8);
     set_int(c, 0, chance(g->s, 90) ? name : c ? c->a[0].i : 0);
+    /* the bound of the list's calls is the name it is compiled under (the
+     * name emit() saw was the random one: a list renamed 5 but bounded by
+     * a random 2^30 called itself, 2^64 calls through 64 levels) */
+    if (c && !outer)
+        g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
     g->depth++;
     for (uint32_t i = 0, n = 1 + below(g->s, 6); i < n && room(g); i++)
         piece(g);
