@@ -32,12 +32,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <wchar.h>
 #include <sys/mman.h>
 
 #include "context.h"
 #include "main/groups.h"
 #include "fgl_alloc.h"
+#include "raster/r_rows.h"
 
 #define OSMESA_MAX_SIZE 16384
 
@@ -144,7 +144,7 @@ static void copy_row(GLenum format, uint8_t *restrict dst, const uint8_t *restri
 {
    switch (format) {
    case OSMESA_RGBA:
-      memcpy(dst, src, (size_t)w * 4);
+      r_rows_copy(dst, src, (size_t)w * 4);
       return;
    case OSMESA_BGRA:
       for (int x = 0; x < w; x++) {
@@ -264,7 +264,7 @@ static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, 
       for (int y = ry0; y < ry1; y++) {
          const int dst_row = c->y_up ? fb->Height - 1 - y : y;
          uint8_t *d = (uint8_t *)c->user_buffer + (size_t)dst_row * stride + (size_t)rx0 * 4u;
-         wmemset((wchar_t *)(void *)d, (wchar_t)px, (size_t)(rx1 - rx0));
+         r_rows_fill32(d, px, (size_t)(rx1 - rx0));
       }
       return;
    }
@@ -286,8 +286,7 @@ static void flush_front_lazy_rect(struct fgl_framebuffer *fb, int rx0, int ry0, 
             const int x1 = te * R_TILE_SIZE < rx1 ? te * R_TILE_SIZE : rx1;
             uint8_t *d = dst + (size_t)x0 * (size_t)bpp;
             if (lazy && bpp == 4 && ((uintptr_t)d & 3u) == 0) {
-               /* glibc's wmemset stores 32-bit values (wchar_t) */
-               wmemset((wchar_t *)(void *)d, (wchar_t)px, (size_t)(x1 - x0));
+               r_rows_fill32(d, px, (size_t)(x1 - x0));
             } else if (lazy) {
                for (int x = x0; x < x1; x += R_TILE_SIZE)
                   copy_row(c->format, dst + (size_t)x * (size_t)bpp, fill,

@@ -6,24 +6,13 @@
 #include "r_scene.h"
 
 #include <string.h>
-#include <wchar.h>
+#include "r_rows.h"
 
-/* n 32-bit values v at p: glibc's wmemset (wchar_t is 32 bits on the
- * targets that have it) is a vectorised fill that never reads the buffer;
- * memset when the four bytes are equal. */
+/* n 32-bit values v at p (r_rows.h: whole lines written without being
+ * read first) */
 static void fill32(void *p, uint32_t v, size_t n)
 {
-   if ((v & 0xffu) * 0x01010101u == v) {
-      memset(p, (int)(v & 0xffu), 4 * n);
-      return;
-   }
-#if __SIZEOF_WCHAR_T__ == 4
-   wmemset(p, (wchar_t)v, n);
-#else
-   uint32_t *q = p;
-   for (size_t i = 0; i < n; i++)
-      q[i] = v;
-#endif
+   r_rows_fill32(p, v, n);
 }
 
 /* The rectangle as runs of n contiguous values: one run when it spans

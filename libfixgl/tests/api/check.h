@@ -12,6 +12,7 @@
 #define FIXGL_API_CHECK_H
 
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 
 static _Atomic int check_failures;
@@ -44,6 +45,16 @@ static int check_report(const char *test_name)
   else
     fprintf(stderr, "%s: all checks passed\n", test_name);
   return check_failures ? 1 : 0;
+}
+
+/* One step of a xorshift64 generator: the next state of *s, stored and
+ * returned (random inputs for the tests; the state must not be 0). */
+static inline uint64_t check_xorshift64(uint64_t *s)
+{
+  *s ^= *s << 13;
+  *s ^= *s >> 7;
+  *s ^= *s << 17;
+  return *s;
 }
 
 #endif
