@@ -27,6 +27,7 @@
  * non-finite triangles" and "Lines with a non-finite end").
  */
 #include "r_kernel.h"
+#include "r_scene.h"
 
 #include <limits.h>
 #include <math.h>
@@ -157,10 +158,21 @@ void r_line(const struct r_state *rs, const struct r_vertex *v1, const struct r_
    line(rs, v1, v2);
 }
 
-static void line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
+/* What a line's pixels depend on besides its attributes, from its
+ * vertices and the state alone (never the draw region): the snapped
+ * corners and their bounding box in pixels (inclusive, before the cut to
+ * the draw region). */
+struct line_geom {
+   int32_t x[4], y[4];
+   int32_t bx0, bx1, by0, by1;
+   bool x_major;
+};
+
+/* The corners of the line v1 v2 (false: a zero-length line, no pixel)
+ * and, in info, what its attribute planes need. */
+static bool line_geom(const struct r_state *rs, const struct r_vertex *v1,
+                      const struct r_vertex *v2, struct line_geom *g, struct line_info *pinfo)
 {
-   /* v2 (the second vertex) is the provoking vertex */
-   const struct r_vertex *const pv = v2;
    /* MAX2(1.0, line_width) */
    const float width = 1.0f > rs->rast->line_width ? 1.0f : rs->rast->line_width;
 
@@ -168,11 +180,12 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    float dy = v1->pos[1] - v2->pos[1];
    const float area = dx * dx + dy * dy;
    if (area == 0.0f)
-      return;
+      return false;
 
    struct line_info info = {
       .dx = dx, .dy = dy, .oneoverarea = 1.0f / area, .v1 = v1,
    };
+   int32_t *const x = g->x, *const y = g->y;
 
    float x_offset = 0, y_offset = 0;
    float x_offset_end = 0, y_offset_end = 0;
@@ -184,9 +197,9 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
     * state tracker's CLAMP turns NaN into 1) */
    const int32_t fixed_width = r_iround(width) * 256;
    bool draw_start, draw_end;
-   int32_t x[4], y[4];
 
    const bool x_major = fabsf(dx) >= fabsf(dy);
+   g->x_major = x_major;
    if (x_major) {
       /* x-major */
       const float dydx = dy / dx;
@@ -329,52 +342,70 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    const int adj = 1;
    const int32_t xmin = min4(x[0], x[1], x[2], x[3]), xmax = max4(x[0], x[1], x[2], x[3]);
    const int32_t ymin = min4(y[0], y[1], y[2], y[3]), ymax = max4(y[0], y[1], y[2], y[3]);
-   int32_t bx0 = r_add32(xmin, 255) >> 8;
-   int32_t bx1 = (r_add32(xmax, 255) >> 8) - 1;
-   int32_t by0 = r_add32(ymin, 255 + adj) >> 8;
-   int32_t by1 = (r_add32(ymax, 255 + adj) >> 8) - 1;
-   /* u_rect_test_intersection with the draw region */
-   if (rs->px0 >= rs->px1 || rs->py0 >= rs->py1 ||
-       bx1 < rs->px0 || bx0 > rs->px1 - 1 || by1 < rs->py0 || by0 > rs->py1 - 1)
-      return;
+   g->bx0 = r_add32(xmin, 255) >> 8;
+   g->bx1 = (r_add32(xmax, 255) >> 8) - 1;
+   g->by0 = r_add32(ymin, 255 + adj) >> 8;
+   g->by1 = (r_add32(ymax, 255 + adj) >> 8) - 1;
+   *pinfo = info;
+   return true;
+}
 
-   /* setup_line_coefficients: depth and 1/w are linear, the inputs
-    * perspective (premultiplied by 1/w) or constant from the provoking
-    * vertex */
-   struct r_tri_setup ls;
-   ls.z = line_coef(&info, v1->pos[2], v2->pos[2]);
-   ls.w = line_coef(&info, v1->pos[3], v2->pos[3]);
-   ls.zoffset = 0.0f;
-   ls.quad_x = ls.quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read for lines) */
-   ls.inputs = rs->fs->fs_inputs;
-   ls.need_w = false;
+/* u_rect_test_intersection of the line's box with the draw region */
+static inline bool line_outside(const struct r_state *rs, const struct line_geom *g)
+{
+   return rs->px0 >= rs->px1 || rs->py0 >= rs->py1 || g->bx1 < rs->px0 ||
+          g->bx0 > rs->px1 - 1 || g->by1 < rs->py0 || g->by0 > rs->py1 - 1;
+}
+
+/* setup_line_coefficients: depth and 1/w are linear, the inputs
+ * perspective (premultiplied by 1/w) or constant from the provoking
+ * vertex v2 */
+static void line_attrs(const struct r_state *rs, const struct r_vertex *v1,
+                       const struct r_vertex *v2, const struct line_info *pinfo,
+                       struct r_tri_setup *pls)
+{
+   const struct line_info info = *pinfo;
+   const struct r_vertex *const pv = v2;
+   struct r_tri_setup *const ls = pls;
+   ls->z = line_coef(&info, v1->pos[2], v2->pos[2]);
+   ls->w = line_coef(&info, v1->pos[3], v2->pos[3]);
+   ls->zoffset = 0.0f;
+   ls->quad_x = ls->quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read for lines) */
+   ls->inputs = rs->fs->fs_inputs;
+   ls->need_w = false;
    /* GL_PHONG_WIN: a line is front facing, unless it is the edge of an
     * unfilled back face, whose face the vertices carry (draw's
     * inject_front_face_info [S: draw_pipe_unfilled.c], read by
     * lp_setup_line.c from the provoking vertex) */
-   ls.phong_back = rs->fs->phong && rs->shade_env->two_side && pv->attr[R_ATTR_NORMAL][3] == 0.0f;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(rs->fs->fs_inputs & (1u << a)))
-         continue;
+   ls->phong_back = rs->fs->phong && rs->shade_env->two_side && pv->attr[R_ATTR_NORMAL][3] == 0.0f;
+   /* (the inputs' bits in turn: a loop over every input cost more than
+    * the planes) */
+   for (unsigned m = rs->fs->fs_inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
       const int slot = r_fs_slot(a, false);
-      ls.flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
-      ls.need_w |= !ls.flat_attr[a];
+      ls->flat_attr[a] = (rs->flat_mask & (1u << slot)) != 0;
+      ls->need_w |= !ls->flat_attr[a];
       for (int k = 0; k < 4; k++) {
-         if (ls.flat_attr[a])
-            ls.flat[a][k] = pv->attr[slot][k];
+         if (ls->flat_attr[a])
+            ls->flat[a][k] = pv->attr[slot][k];
          else
-            ls.ap[a][k] = line_coef(&info, v1->attr[slot][k] * v1->pos[3],
+            ls->ap[a][k] = line_coef(&info, v1->attr[slot][k] * v1->pos[3],
                                     v2->attr[slot][k] * v2->pos[3]);
       }
    }
    if (__builtin_expect(rs->rast->sprite_coord_enable != 0, 0))
-      r_zero_sprite_inputs(rs->rast, &ls);
+      r_zero_sprite_inputs(rs->rast, ls);
+}
 
+/* Whether the corners are finite and their differences below 2^22 */
+static bool line_exact(const struct line_geom *g)
+{
+   const int32_t *const x = g->x, *const y = g->y;
    /* With finite corners whose differences stay below 2^22 nothing wraps,
     * and the binned coverage is exactly the pixels whose four edge
     * functions are positive (as for triangles: r_tri.c rasterize_direct);
-    * that is solved per row below.  Otherwise llvmpipe's arithmetic is
-    * followed step by step. */
+    * line_raster solves that per row.  Otherwise it follows llvmpipe's
+    * arithmetic step by step. */
    bool exact = true;
    for (int i = 0; i < 4; i++) {
       const int j = (i + 1) & 3;
@@ -384,6 +415,38 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
           ddx <= -(1 << 22) || ddx >= (1 << 22) || ddy <= -(1 << 22) || ddy >= (1 << 22))
          exact = false;
    }
+   return exact;
+}
+
+/* The four edges of an exact line, as the triangles' (lp_setup_tri.c
+ * conventions): c, dcdx, dcdy in 64 bits and as r_planes */
+static void line_planes(const struct line_geom *g, int64_t c[4], int64_t dcdx[4],
+                        int64_t dcdy[4], struct r_plane p[4])
+{
+   const int32_t *const x = g->x, *const y = g->y;
+   for (int i = 0; i < 4; i++) {
+      const int j = (i + 1) & 3;
+      dcdy[i] = (int64_t)x[i] - x[j];
+      dcdx[i] = (int64_t)y[i] - y[j];
+      c[i] = dcdx[i] * x[i] - dcdy[i] * y[i];
+      if (dcdx[i] < 0 || (dcdx[i] == 0 && dcdy[i] < 0))
+         c[i]++;
+      dcdx[i] *= 256;
+      dcdy[i] *= 256;
+      /* (below 2^30: the corners' differences are below 2^22) */
+      p[i] = (struct r_plane){ .c = c[i], .dcdx = (int32_t)dcdx[i], .dcdy = (int32_t)dcdy[i] };
+   }
+}
+
+/* The pixels of the line g of setup ls in the draw region of rs
+ * (exact: line_exact(g)) */
+static void line_raster(const struct r_state *rs, const struct r_tri_setup *pls,
+                        const struct line_geom *g, bool exact)
+{
+   const struct r_tri_setup *const ls = pls;
+   const int32_t *const x = g->x, *const y = g->y;
+   const bool x_major = g->x_major;
+   int32_t bx0 = g->bx0, bx1 = g->bx1, by0 = g->by0, by1 = g->by1;
    if (!exact) {
       /* [S: lp_setup_line.c:try_setup_line] the four edges: int32 steps
        * (wrapping), a 64-bit constant from the unscaled ones, the fill
@@ -408,7 +471,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
             p[i].eo += (uint32_t)p[i].dcdy;
       }
       /* bboxpos: negative regions discarded */
-      const struct r_shader sh = { r_setup_shade_pixel, &ls };
+      const struct r_shader sh = { r_setup_shade_pixel, ls };
       const int32_t region[4] = { rs->px0, rs->py0, rs->px1, rs->py1 };
       r_bin_planes(rs, p, 4, bx0 > 0 ? bx0 : 0, by0 > 0 ? by0 : 0, bx1, by1, region, &sh);
       return;
@@ -419,21 +482,9 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
    if (bx1 > rs->px1 - 1) bx1 = rs->px1 - 1;
    if (by1 > rs->py1 - 1) by1 = rs->py1 - 1;
 
-   /* the four edges, as the triangles' (lp_setup_tri.c conventions) */
    int64_t c[4], dcdx[4], dcdy[4];
    struct r_plane p[4];
-   for (int i = 0; i < 4; i++) {
-      const int j = (i + 1) & 3;
-      dcdy[i] = (int64_t)x[i] - x[j];
-      dcdx[i] = (int64_t)y[i] - y[j];
-      c[i] = dcdx[i] * x[i] - dcdy[i] * y[i];
-      if (dcdx[i] < 0 || (dcdx[i] == 0 && dcdy[i] < 0))
-         c[i]++;
-      dcdx[i] *= 256;
-      dcdy[i] *= 256;
-      /* (below 2^30: the corners' differences are below 2^22) */
-      p[i] = (struct r_plane){ .c = c[i], .dcdx = (int32_t)dcdx[i], .dcdy = (int32_t)dcdy[i] };
-   }
+   line_planes(g, c, dcdx, dcdy, p);
 
    /* The block kernel of the state, unless the pstipple shader is bound
     * (it kills per pixel), with the two long sides (edges 0 and 2) for
@@ -449,7 +500,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
     * <= floor(ymax / 256), the same when Y_a < Y_b.  So the pixels of the
     * box with the two long sides positive are the line's (r_tri.c, above
     * rasterize_direct). */
-   const bool flat0 = (ls.inputs & (1u << R_FS_COLOR0)) && ls.flat_attr[R_FS_COLOR0];
+   const bool flat0 = (ls->inputs & (1u << R_FS_COLOR0)) && ls->flat_attr[R_FS_COLOR0];
    const r_tri_kernel kernel = rs->stipple_points_lines ? NULL : rs->line_kernel[flat0];
    if (kernel) {
       if (x_major ? x[1] >= x[0] : y[0] >= y[1])
@@ -457,7 +508,7 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
       const struct r_plane sides[2] = { p[0], p[2] };
       struct r_tri_cover cv;
       if (r_cover_planes(sides, 2, bx0, by0, bx1, by1, &cv)) {
-         kernel(rs, &ls, &cv);
+         kernel(rs, ls, &cv);
          return;
       }
    }
@@ -482,6 +533,77 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
          }
       }
       for (int32_t px = (int32_t)x0; px <= x1; px++)
-         r_setup_shade_pixel(rs, &ls, px, py);
+         r_setup_shade_pixel(rs, ls, px, py);
    }
+}
+
+static void line(const struct r_state *rs, const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   struct line_geom g;
+   struct line_info info;
+   if (!line_geom(rs, v1, v2, &g, &info) || line_outside(rs, &g))
+      return;
+   struct r_tri_setup ls;
+   line_attrs(rs, v1, v2, &info, &ls);
+   line_raster(rs, &ls, &g, line_exact(&g));
+}
+
+/* A line of the scene (r_scene.c), set up once when it is binned: its
+ * corners and box, then its attribute setup as a triangle's
+ * (r_tri_binned_pack), 16 bytes aligned after them. */
+struct r_line_binned {
+   struct line_geom g;
+   _Alignas(16) unsigned char setup[];
+};
+
+size_t r_line_binned_size(const struct r_state *rs)
+{
+   return sizeof(struct r_line_binned) + r_tri_binned_size(rs);
+}
+
+int r_line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                     const struct r_vertex *v1, int box[4], struct r_tri_edges *edges,
+                     struct r_line_binned *bin)
+{
+   struct line_geom g;
+   struct line_info info;
+   if (!line_geom(rs, v0, v1, &g, &info) || line_outside(rs, &g))
+      return 0;
+   if (!line_exact(&g))
+      return 2;
+   /* the box cut to the draw region (line_raster's) and the buffer */
+   if (!r_scene_box(rs->fb, rs->px0, rs->py0, rs->px1, rs->py1, g.bx0, g.by0, g.bx1, g.by1, box))
+      return 0;
+   /* every pixel of the line is inside its two long sides (edges 0 and
+    * 2, C > 0): a tile where either is negative everywhere has none
+    * (r_tri_edges_miss_tile with r_tri.c edge_plane's trivial reject
+    * offset); the third edge is 0, never negative */
+   int64_t c[4], dcdx[4], dcdy[4];
+   struct r_plane p[4];
+   line_planes(&g, c, dcdx, dcdy, p);
+   for (int e = 0; e < 2; e++) {
+      const int i = 2 * e;
+      edges->c[e] = c[i];
+      edges->dcdx[e] = dcdx[i];
+      edges->dcdy[e] = dcdy[i];
+      edges->eo[e] = ((dcdy[i] > 0 ? dcdy[i] : 0) - (dcdx[i] < 0 ? dcdx[i] : 0)) * R_TILE_SIZE;
+   }
+   edges->c[2] = edges->dcdx[2] = edges->dcdy[2] = edges->eo[2] = 0;
+   struct r_tri_setup ls;
+   bin->g = g;
+   line_attrs(rs, v0, v1, &info, &ls);
+   r_tri_binned_pack(&ls, (struct r_tri_binned *)(void *)bin->setup);
+   return 1;
+}
+
+void r_line_binned(const struct r_state *rs, const struct r_line_binned *bin)
+{
+   if (line_outside(rs, &bin->g))
+      return;
+   const uint64_t t0 = __builtin_expect(rs->stats != NULL, 0) ? r_stats_now() : 0;
+   struct r_tri_setup ls;
+   r_tri_binned_unpack((const struct r_tri_binned *)(const void *)bin->setup, &ls);
+   line_raster(rs, &ls, &bin->g, true);   /* (only exact lines are binned so) */
+   if (__builtin_expect(rs->stats != NULL, 0))
+      rs->stats->raster_ns += r_stats_now() - t0;
 }

@@ -33,9 +33,11 @@
  * r_setup_shade_pixel.
  */
 #include "r_kernel.h"
+#include "r_scene.h"
 
 #include <limits.h>
 #include <math.h>
+#include <string.h>
 
 static void point(const struct r_state *rs, const struct r_vertex *v);
 static void sprite(const struct r_state *rs, const struct r_vertex *v);
@@ -59,25 +61,32 @@ void r_point(const struct r_state *rs, const struct r_vertex *v)
  * input the vertex's (constant, or premultiplied by the vertex 1/w and
  * divided by it again: point_persp_coeff), a flat input of the kernels;
  * a sprite then replaces the planes of its replaced coordinates. */
+/* what a point's setup holds besides its inputs' values */
+static void point_setup_head(struct r_tri_setup *ts, float z, float w, unsigned inputs,
+                             bool phong_back)
+{
+   ts->z = (struct r_attr_plane){ z, 0.0f, 0.0f };
+   ts->w = (struct r_attr_plane){ w, 0.0f, 0.0f };
+   ts->zoffset = 0.0f;
+   ts->need_w = false;
+   ts->inputs = inputs;
+   ts->quad_x = ts->quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read here) */
+   ts->phong_back = phong_back;
+}
+
 static void point_setup(const struct r_state *rs, const struct r_vertex *v,
                         struct r_tri_setup *ts)
 {
    const float w = v->pos[3];
-   ts->z = (struct r_attr_plane){ v->pos[2], 0.0f, 0.0f };
-   ts->w = (struct r_attr_plane){ w, 0.0f, 0.0f };
-   ts->zoffset = 0.0f;
-   ts->need_w = false;
-   ts->inputs = rs->fs->fs_inputs;
-   ts->quad_x = ts->quad_y = INT_MIN;   /* (r_tri.c's quad cache: not read here) */
    /* GL_PHONG_WIN: a point is front facing, unless it is a vertex of an
     * unfilled back face, whose face the vertex carries (draw's
     * inject_front_face_info [S: draw_pipe_unfilled.c], read by
     * lp_setup_point.c) */
-   ts->phong_back = rs->fs->phong && rs->shade_env->two_side &&
-                    v->attr[R_ATTR_NORMAL][3] == 0.0f;
-   for (int a = 0; a < R_FS_NUM_INPUTS; a++) {
-      if (!(ts->inputs & (1u << a)))
-         continue;
+   point_setup_head(ts, v->pos[2], w, rs->fs->fs_inputs,
+                    rs->fs->phong && rs->shade_env->two_side &&
+                       v->attr[R_ATTR_NORMAL][3] == 0.0f);
+   for (unsigned m = ts->inputs; m; m &= m - 1) {
+      const int a = __builtin_ctz(m);
       const int slot = r_fs_slot(a, false);
       const bool flat = (rs->flat_mask & (1u << slot)) != 0;
       ts->flat_attr[a] = true;
@@ -184,14 +193,17 @@ static void sprite(const struct r_state *rs, const struct r_vertex *v)
          r_setup_shade_pixel(rs, &ts, px, py);
 }
 
-static void point(const struct r_state *rs, const struct r_vertex *v)
+/* The square of a legacy point before the cut to the draw region
+ * (b = bx0, by0, bx1, by1, inclusive); false when its position is not
+ * finite (it cannot pass the clip test: no pixel). */
+static bool point_square(const struct r_state *rs, const struct r_vertex *v, int32_t b[4])
 {
    /* LP_MAX_POINT_WIDTH */
    float size = r_point_size(rs->rast, v->attr[R_ATTR_PSIZE]);
    if (size > 255.0f)
       size = 255.0f;
    if (!isfinite(v->pos[0]) || !isfinite(v->pos[1]))
-      return;   /* cannot pass the clip test (NaN positions: outside) */
+      return false;   /* cannot pass the clip test (NaN positions: outside) */
 
    const int adj = 1;   /* bottom_edge_rule of the y-down window buffer */
    const int32_t x0 = r_subpixel_snap(v->pos[0]);
@@ -214,20 +226,31 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
       bx0 = ((x0 + 256 / 2) >> 8) - n / 2;
       by0 = ((y0 + 256 / 2) >> 8) - n / 2;
    }
-   int32_t bx1 = bx0 + n - 1, by1 = by0 + n - 1;
+   b[0] = bx0;
+   b[1] = by0;
+   b[2] = bx0 + n - 1;
+   b[3] = by0 + n - 1;
+   return true;
+}
 
-   /* u_rect_find_intersection with the draw region (the point region) */
-   if (bx0 < rs->px0) bx0 = rs->px0;
-   if (by0 < rs->py0) by0 = rs->py0;
-   if (bx1 > rs->px1 - 1) bx1 = rs->px1 - 1;
-   if (by1 > rs->py1 - 1) by1 = rs->py1 - 1;
-   if (bx0 > bx1 || by0 > by1)
-      return;
+/* u_rect_find_intersection of square b with the draw region (the point
+ * region) into c; false when empty */
+static inline bool point_cut(const struct r_state *rs, const int32_t b[4], int32_t c[4])
+{
+   c[0] = b[0] < rs->px0 ? rs->px0 : b[0];
+   c[1] = b[1] < rs->py0 ? rs->py0 : b[1];
+   c[2] = b[2] > rs->px1 - 1 ? rs->px1 - 1 : b[2];
+   c[3] = b[3] > rs->py1 - 1 ? rs->py1 - 1 : b[3];
+   return c[0] <= c[2] && c[1] <= c[3];
+}
 
-   /* the inputs, and so the shaded colour, are the same at every pixel */
-   struct r_tri_setup ts;
-   point_setup(rs, v, &ts);
-
+/* The pixels c (the square b cut to the draw region) of the point of
+ * setup ts */
+static void point_draw(const struct r_state *rs, struct r_tri_setup *ts, const int32_t b[4],
+                       const int32_t c[4])
+{
+   const int32_t n = b[2] - b[0] + 1;
+   const int32_t bx0 = c[0], by0 = c[1], bx1 = c[2], by1 = c[3];
    /* A point of three pixels or more goes to the block kernel of the state
     * (unless the pstipple shader is bound: it kills per pixel) as a
     * triangle whose inputs are all flat, each the value ts.flat holds, and
@@ -245,15 +268,15 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
    if (kernel) {
       struct r_tri_cover cv;
       r_cover_box(bx0, by0, bx1, by1, &cv);
-      kernel(rs, &ts, &cv);
+      kernel(rs, ts, &cv);
       return;
    }
 
    /* GL_PHONG_WIN: lit once, as every pixel's inputs are the vertex's
     * (point_setup: the face) */
-   float (*const in)[4] = ts.flat;
+   float (*const in)[4] = ts->flat;
    if (rs->fs->phong)
-      r_fragment_phong(rs, in, ts.phong_back);
+      r_fragment_phong(rs, in, ts->phong_back);
    /* the quad's texture coordinates are the vertex's too: zero
     * derivatives, so the texture is magnified */
    struct r_fs_quad quad;
@@ -275,7 +298,79 @@ static void point(const struct r_state *rs, const struct r_vertex *v)
             continue;   /* the pstipple shader's kill (t_vbuf_flush) */
          if (__builtin_expect(rs->stats != NULL, 0))
             rs->stats->fragments++;
-         r_fragment_ops(rs, px, py, v->pos[2], color);
+         r_fragment_ops(rs, px, py, ts->z.a0, color);   /* the vertex z */
       }
    }
+}
+
+static void point(const struct r_state *rs, const struct r_vertex *v)
+{
+   int32_t b[4], c[4];
+   if (!point_square(rs, v, b) || !point_cut(rs, b, c))
+      return;
+   /* the inputs, and so the shaded colour, are the same at every pixel */
+   struct r_tri_setup ts;
+   point_setup(rs, v, &ts);
+   point_draw(rs, &ts, b, c);
+}
+
+/* A legacy point of the scene (r_scene.c), set up once when it is
+ * binned: its square and point_setup's result, which is all flat: z,
+ * 1/w, the face and each input's four values, in data[] in increasing
+ * input order.  (Kept small: a tile's replay of many small points waits
+ * mostly for its commands' first cache lines.) */
+struct r_point_binned {
+   int32_t b[4];
+   float z, w;
+   uint32_t inputs;
+   bool phong_back;
+   float data[];
+};
+
+size_t r_point_binned_size(const struct r_state *rs)
+{
+   return sizeof(struct r_point_binned) +
+          (size_t)__builtin_popcount(rs->fs->fs_inputs) * 4 * sizeof(float);
+}
+
+int r_point_box_setup(const struct r_state *rs, const struct r_vertex *v, int box[4],
+                      struct r_point_binned *bin)
+{
+   if (rs->rast->point_sprite)
+      return 2;
+   /* the square cut to the draw region (point_cut) and the buffer */
+   const int32_t *const b = bin->b;
+   if (!point_square(rs, v, bin->b) ||
+       !r_scene_box(rs->fb, rs->px0, rs->py0, rs->px1, rs->py1, b[0], b[1], b[2], b[3], box))
+      return 0;
+   struct r_tri_setup ts;
+   point_setup(rs, v, &ts);
+   bin->z = ts.z.a0;
+   bin->w = ts.w.a0;
+   bin->inputs = ts.inputs;
+   bin->phong_back = ts.phong_back;
+   float *d = bin->data;
+   for (unsigned m = ts.inputs; m; m &= m - 1, d += 4)
+      memcpy(d, ts.flat[__builtin_ctz(m)], 4 * sizeof(float));
+   return 1;
+}
+
+void r_point_binned(const struct r_state *rs, const struct r_point_binned *bin)
+{
+   int32_t c[4];
+   if (!point_cut(rs, bin->b, c))
+      return;
+   const uint64_t t0 = __builtin_expect(rs->stats != NULL, 0) ? r_stats_now() : 0;
+   /* point_setup's r_tri_setup again */
+   struct r_tri_setup ts;
+   point_setup_head(&ts, bin->z, bin->w, bin->inputs, bin->phong_back);
+   const float *d = bin->data;
+   for (unsigned m = bin->inputs; m; m &= m - 1, d += 4) {
+      const int a = __builtin_ctz(m);
+      ts.flat_attr[a] = true;
+      memcpy(ts.flat[a], d, 4 * sizeof(float));
+   }
+   point_draw(rs, &ts, bin->b, c);
+   if (__builtin_expect(rs->stats != NULL, 0))
+      rs->stats->raster_ns += r_stats_now() - t0;
 }

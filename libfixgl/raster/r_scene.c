@@ -280,6 +280,21 @@ static void scene_rollback(struct r_scene *s, const struct scene_mark *m, bool s
    }
 }
 
+/* Appends command ci, made since `mark`, to the bins of the tiles of `box`
+ * that `edges` (or NULL) does not exclude; when that fails (out of
+ * memory), drops it with what it allocated (scene_rollback). */
+static bool bin_cmd(struct r_scene *s, uint32_t ci, const int box[4],
+                    const struct r_tri_edges *edges, const struct scene_mark *mark)
+{
+   if (bin_box(s, ci, box[0], box[1], box[2], box[3], edges)) {
+      s->ncmds++;
+      return true;
+   }
+   unbin(s, ci);
+   scene_rollback(s, mark, true);
+   return false;
+}
+
 /* Appends a primitive of n vertices whose pixels lie in `known_box`
  * inside `edges` (NULL: no edges) or, when it is NULL, in their vertex_box
  * widened by `pad`. */
@@ -304,15 +319,33 @@ static bool add_prim(struct r_scene *s, const struct r_state *rs, enum r_cmd_kin
       if (!s->cmds[ci].v[i])
          goto fail;
    }
-   if (!bin_box(s, ci, box[0], box[1], box[2], box[3], edges)) {
-      unbin(s, ci);
-      goto fail;
-   }
-   s->ncmds++;
-   return true;
+   return bin_cmd(s, ci, box, edges, &mark);
 fail:
    /* as it was: the vertices and a state this command added dropped */
    scene_rollback(s, &mark, true);
+   return false;
+}
+
+/* Appends a command of `kind` set up when binned, its setup (an
+ * r_tri_binned, r_line_binned or r_point_binned) allocated since `mark`,
+ * into the tiles of `box` that `edges` (or NULL) does not exclude. */
+static bool add_set_up(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
+                       const struct scene_mark *mark, const void *setup, const int box[4],
+                       const struct r_tri_edges *edges)
+{
+   const uint32_t ci = new_cmd(s, rs, kind);
+   if (ci == UINT32_MAX)
+      goto fail;
+   if (kind == R_CMD_TRIANGLE)
+      s->cmds[ci].tri = setup;
+   else if (kind == R_CMD_LINE)
+      s->cmds[ci].line = setup;
+   else
+      s->cmds[ci].point = setup;
+   return bin_cmd(s, ci, box, edges, mark);
+fail:
+   /* as it was: the setup and a state this command added dropped */
+   scene_rollback(s, mark, true);
    return false;
 }
 
@@ -338,34 +371,62 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
       const struct r_vertex *v[3] = { v0, v1, v2 };
       return add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL);
    }
-   const uint32_t ci = new_cmd(s, rs, R_CMD_TRIANGLE);
-   if (ci == UINT32_MAX)
-      goto fail;
-   s->cmds[ci].tri = bin;
-   if (!bin_box(s, ci, box[0], box[1], box[2], box[3], &edges)) {
-      unbin(s, ci);
-      goto fail;
-   }
-   s->ncmds++;
-   return true;
-fail:
-   /* as it was: the setup and a state this command added dropped */
-   scene_rollback(s, &mark, true);
-   return false;
+   return add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges);
 }
 
 bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                   const struct r_vertex *v1)
 {
-   /* a line covers at most half its width (at most 255/2) beside its
-    * ends and the segment between them, plus its diamond-exit pixels */
+   /* A line covers at most half its width (at most 255/2) beside its
+    * ends and the segment between them, plus its diamond-exit pixels.  A
+    * line whose box reaches one or two tiles is binned with its vertices
+    * and set up in each (a short line's vertices cost less to hand to
+    * another thread than its setup: stipple's dashes); a longer one is
+    * set up now, once, as a triangle, and binned into the tiles its long
+    * sides reach, unless it is not exact (kind 2). */
+   if (!begin(s, rs))
+      return false;
    const struct r_vertex *v[2] = { v0, v1 };
-   return add_prim(s, rs, R_CMD_LINE, v, 2, 0.5f * rs->rast->line_width + 1.0f, NULL, NULL);
+   int box[4];
+   if (!vertex_box(rs, v, 2, 0.5f * rs->rast->line_width + 1.0f, box))
+      return true;   /* no pixel of the region: nothing to draw */
+   const int tiles = (((box[2] - 1) >> R_TILE_LOG2) - (box[0] >> R_TILE_LOG2) + 1) *
+                     (((box[3] - 1) >> R_TILE_LOG2) - (box[1] >> R_TILE_LOG2) + 1);
+   if (tiles > 2) {
+      const struct scene_mark mark = scene_mark(s);
+      struct r_line_binned *bin = scene_alloc(s, r_line_binned_size(rs));
+      if (!bin)
+         return false;
+      int sbox[4];
+      struct r_tri_edges edges;
+      const int known = r_line_box_setup(rs, v0, v1, sbox, &edges, bin);
+      if (known == 1)
+         return add_set_up(s, rs, R_CMD_LINE, &mark, bin, sbox, &edges);
+      scene_rollback(s, &mark, false);
+      if (known == 0)
+         return true;
+   }
+   return add_prim(s, rs, R_CMD_LINE, v, 2, 0.0f, box, NULL);
 }
 
 bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v)
 {
-   /* a square of at most the size rounded up, around the snapped centre */
+   /* a legacy point set up now, binned into the tiles of its square */
+   if (!begin(s, rs))
+      return false;
+   const struct scene_mark mark = scene_mark(s);
+   struct r_point_binned *bin = scene_alloc(s, r_point_binned_size(rs));
+   if (!bin)
+      return false;
+   int box[4];
+   const int known = r_point_box_setup(rs, v, box, bin);
+   if (known == 1)
+      return add_set_up(s, rs, R_CMD_POINT, &mark, bin, box, NULL);
+   scene_rollback(s, &mark, false);
+   if (known == 0)
+      return true;
+   /* a sprite: a square of at most the size rounded up, around the
+    * snapped centre */
    const struct r_vertex *vv[1] = { v };
    float size = r_point_size(rs->rast, v->attr[R_ATTR_PSIZE]);
    if (!(size <= 255.0f))
@@ -486,11 +547,17 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
             r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
          break;
       case R_CMD_LINE:
-         r_line(&rs, c->v[0], c->v[1]);
+         if (c->line)
+            r_line_binned(&rs, c->line);
+         else
+            r_line(&rs, c->v[0], c->v[1]);
          break;
       case R_CMD_POINT:
       default:
-         r_point(&rs, c->v[0]);
+         if (c->point)
+            r_point_binned(&rs, c->point);
+         else
+            r_point(&rs, c->v[0]);
          break;
       }
    }

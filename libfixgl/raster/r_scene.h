@@ -5,15 +5,17 @@
  *
  * The vertex stage hands the scene what it would hand the raster core
  * (r_triangle, r_line, r_point with a draw's r_state, and whole-buffer
- * clears), in submission order.  The scene sets a triangle up once, now
- * (its edges, box and attribute planes: r_triangle_box_setup; the
- * non-finite or huge ones excepted), or copies the vertices of the other
- * primitives (the attribute slots the state reads), keeps one copy of
- * each distinct r_state (holding its state objects, r_state_hold), and
- * appends the command to the bin of every tile its bounding box touches.
- * r_scene_run_tile then replays one tile's commands in order with the
- * draw region cut to the tile (a triangle set up when binned is only
- * rasterized there: r_triangle_binned).
+ * clears), in submission order.  The scene sets a triangle, a line or a
+ * legacy point up once, now (its edges, box and attribute planes:
+ * r_triangle_box_setup, r_line_box_setup, r_point_box_setup; the
+ * non-finite or huge ones and point sprites excepted), or copies the
+ * vertices of the other primitives (the attribute slots the state
+ * reads), keeps one copy of each distinct r_state (holding its state
+ * objects, r_state_hold), and appends the command to the bin of every
+ * tile of its box that its edges do not exclude.  r_scene_run_tile then
+ * replays one tile's commands in order with the draw region cut to the
+ * tile (a primitive set up when binned is only rasterized there:
+ * r_triangle_binned, r_line_binned, r_point_binned).
  *
  * Why the result is the same bits for every thread count and every tile
  * order: a primitive's pixels depend on the primitive and the pixel alone
@@ -62,6 +64,66 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
                          const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
                          struct r_tri_edges *edges, struct r_tri_binned *bin);
 void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *bin);
+/* The pixel box bx0..bx1, by0..by1 (inclusive) of a primitive cut to the
+ * draw region [rx0, rx1) x [ry0, ry1) and to the buffer fb, as
+ * [box[0], box[2]) x [box[1], box[3]) for the binning; false when empty. */
+static inline bool r_scene_box(const struct r_fb_state *fb, int32_t rx0, int32_t ry0,
+                               int32_t rx1, int32_t ry1, int32_t bx0, int32_t by0, int32_t bx1,
+                               int32_t by1, int box[4])
+{
+   if (bx0 < rx0) bx0 = rx0;
+   if (by0 < ry0) by0 = ry0;
+   if (bx1 > rx1 - 1) bx1 = rx1 - 1;
+   if (by1 > ry1 - 1) by1 = ry1 - 1;
+   if (bx0 < 0) bx0 = 0;
+   if (by0 < 0) by0 = 0;
+   if (bx1 > fb->width - 1) bx1 = fb->width - 1;
+   if (by1 > fb->height - 1) by1 = fb->height - 1;
+   if (bx0 > bx1 || by0 > by1)
+      return false;
+   box[0] = bx0;
+   box[1] = by0;
+   box[2] = bx1 + 1;
+   box[3] = by1 + 1;
+   return true;
+}
+
+/* r_tri_binned's attribute part (z, w, offset, the inputs' planes and
+ * flat values) written from and read back into an r_tri_setup, bit for
+ * bit: the binned lines keep their setup in it too */
+struct r_tri_setup;
+void r_tri_binned_pack(const struct r_tri_setup *ts, struct r_tri_binned *t);
+void r_tri_binned_unpack(const struct r_tri_binned *t, struct r_tri_setup *ts);
+
+/* Lines alike (r_line.c struct r_line_binned: the snapped corners, the
+ * box and the attribute setup): r_line_box_setup returns 0 when the line
+ * covers no pixel of the draw region, 1 when its pixels lie in `box`
+ * ([x0, x1) x [y0, y1), cut to the region) inside its two long sides
+ * `edges` (r_tri_edges_miss_tile; the third edge passes every tile),
+ * with its setup written into `bin` (r_line_binned_size(rs) bytes,
+ * 16-aligned), and 2 when its corners are non-finite or huge (then
+ * binned by its vertices and drawn by r_line).  r_line_binned draws it
+ * with rs (the binning state, its draw region cut to a tile): the pixels
+ * and bytes r_line draws with rs. */
+struct r_line_binned;
+size_t r_line_binned_size(const struct r_state *rs);
+int r_line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                     const struct r_vertex *v1, int box[4], struct r_tri_edges *edges,
+                     struct r_line_binned *bin);
+void r_line_binned(const struct r_state *rs, const struct r_line_binned *bin);
+
+/* Legacy points alike (r_point.c struct r_point_binned: the square and
+ * the setup): r_point_box_setup returns 0 when the point covers no pixel
+ * of the draw region, 1 when it covers exactly `box` (cut to the region),
+ * with its setup written into `bin` (r_point_binned_size(rs) bytes,
+ * 16-aligned), and 2 for a point sprite (binned by its vertex, drawn by
+ * r_point); r_point_binned draws it with rs, the binning state with its
+ * draw region cut to a tile. */
+struct r_point_binned;
+size_t r_point_binned_size(const struct r_state *rs);
+int r_point_box_setup(const struct r_state *rs, const struct r_vertex *v, int box[4],
+                      struct r_point_binned *bin);
+void r_point_binned(const struct r_state *rs, const struct r_point_binned *bin);
 
 struct r_cmd {
    uint8_t kind;
@@ -73,9 +135,17 @@ struct r_cmd {
    uint32_t zvalue;
    uint32_t state;                  /* index into r_scene.states */
    const struct r_vertex *v[3];
-   /* R_CMD_TRIANGLE set up when binned (r_triangle_box_setup), replayed
-    * by r_triangle_binned without its vertices; NULL: by r_triangle */
-   const struct r_tri_binned *tri;
+   /* the primitive's setup made when it was binned (one of them, by
+    * kind), replayed without its vertices; NULL: replayed from v[] */
+   union {
+      /* R_CMD_TRIANGLE set up when binned (r_triangle_box_setup), replayed
+       * by r_triangle_binned without its vertices; NULL: by r_triangle */
+      const struct r_tri_binned *tri;
+      /* R_CMD_LINE, R_CMD_POINT (r_line_box_setup, r_point_box_setup;
+       * NULL: by r_line, r_point) */
+      const struct r_line_binned *line;
+      const struct r_point_binned *point;
+   };
 };
 
 struct r_bin {

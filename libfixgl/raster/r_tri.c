@@ -916,7 +916,7 @@ size_t r_tri_binned_size(const struct r_state *rs)
           (size_t)__builtin_popcount(rs->fs->fs_inputs) * 12 * sizeof(float);
 }
 
-static void pack_binned(const struct r_tri_setup *ts, struct r_tri_binned *t)
+void r_tri_binned_pack(const struct r_tri_setup *ts, struct r_tri_binned *t)
 {
    t->z = ts->z;
    t->w = ts->w;
@@ -940,7 +940,7 @@ static void pack_binned(const struct r_tri_setup *ts, struct r_tri_binned *t)
    }
 }
 
-static void unpack_binned(const struct r_tri_binned *t, struct r_tri_setup *ts)
+void r_tri_binned_unpack(const struct r_tri_binned *t, struct r_tri_setup *ts)
 {
    ts->z = t->z;
    ts->w = t->w;
@@ -993,21 +993,8 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
     * covered */
    int32_t b[4];
    snapped_box(X, Y, b);
-   int32_t bx0 = b[0], bx1 = b[1], by0 = b[2], by1 = b[3];
-   if (bx0 < rs->x0) bx0 = rs->x0;
-   if (by0 < rs->y0) by0 = rs->y0;
-   if (bx1 > rs->x1 - 1) bx1 = rs->x1 - 1;
-   if (by1 > rs->y1 - 1) by1 = rs->y1 - 1;
-   if (bx0 < 0) bx0 = 0;
-   if (by0 < 0) by0 = 0;
-   if (bx1 > rs->fb->width - 1) bx1 = rs->fb->width - 1;
-   if (by1 > rs->fb->height - 1) by1 = rs->fb->height - 1;
-   if (bx0 > bx1 || by0 > by1)
+   if (!r_scene_box(rs->fb, rs->x0, rs->y0, rs->x1, rs->y1, b[0], b[2], b[1], b[3], box))
       return 0;
-   box[0] = bx0;
-   box[1] = by0;
-   box[2] = bx1 + 1;
-   box[3] = by1 + 1;
    if (bin) {
       /* r_triangle's facing and rasterize_ccw's setup */
       const bool is_back = (area > 0) != rs->rast->ccw_is_front;
@@ -1017,7 +1004,7 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
       memcpy(bin->b, b, sizeof(b));
       struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
-      pack_binned(&ts, bin);
+      r_tri_binned_pack(&ts, bin);
    }
    return 1;
 }
@@ -1047,7 +1034,7 @@ void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *t)
    r_lazy_touch(rs, tx0, ty0, tx1, ty1);
    const uint64_t t0 = rs->stats ? r_stats_now() : 0;
    struct r_tri_setup ts;
-   unpack_binned(t, &ts);
+   r_tri_binned_unpack(t, &ts);
    draw_exact(rs, &ts, t->flat0, t->p, tx0, ty0, tx1, ty1, t0);
 }
 

@@ -19,6 +19,7 @@
 #include "tnl/t_pipeline.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "context.h"
@@ -332,8 +333,13 @@ static void stipple_line(struct fgl_context *ctx, const struct r_vertex *v0,
 
    float start = 0;
    bool state = false;
-   for (int i = 0; i < intlength; i++) {
-      const bool result = stipple_test(ctx->StippleCounter + (unsigned)i, pattern, factor);
+   /* stipple_test(counter + i) for i = 0 .. intlength - 1, taken a run of
+    * equal bits at a time: the bit changes only where (counter + i) /
+    * factor does (and where counter + i wraps), so only there can a
+    * segment start or end */
+   for (int i = 0; i < intlength;) {
+      const unsigned ci = ctx->StippleCounter + (unsigned)i;
+      const bool result = stipple_test(ci, pattern, factor);
       if (result != state) {
          if (state)
             emit_segment(ctx, v0, v1, start / length, (float)i / length);
@@ -341,6 +347,19 @@ static void stipple_line(struct fgl_context *ctx, const struct r_vertex *v0,
             start = (float)i;
          state = result;
       }
+      /* the next i whose bit may differ: past this quotient's values and
+       * those of the next quotients with the same bit, never past a wrap
+       * of counter + i */
+      const unsigned q = ci / factor;
+      unsigned k = 1;
+      while (k < 16 && (((pattern >> ((q + k) & 0xfu)) & 1u) != 0) == result)
+         k++;
+      uint64_t step = (uint64_t)k * factor - ci % factor;
+      if (step > (uint64_t)UINT32_MAX - ci + 1)
+         step = (uint64_t)UINT32_MAX - ci + 1;
+      if (step > (uint64_t)(intlength - i))
+         step = (uint64_t)(intlength - i);
+      i += (int)step;
    }
    if (state && start < length)
       emit_segment(ctx, v0, v1, start / length, 1.0f);

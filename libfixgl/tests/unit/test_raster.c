@@ -820,10 +820,13 @@ static void test_depth_z32(void)
    }
 }
 
-/* The scene's triangles are set up once, when binned (r_scene.c,
- * r_triangle_box_setup), and each tile draws that setup
- * (r_triangle_binned): the bytes must be those of r_triangle drawing the
- * same triangles directly.  Random triangles over several 64x64 tiles,
+/* The scene's triangles, lines and legacy points are set up once, when
+ * binned (r_scene.c, r_triangle_box_setup, r_line_box_setup,
+ * r_point_box_setup), each into the tiles it reaches, and each tile draws
+ * that setup (r_triangle_binned, r_line_binned, r_point_binned): the
+ * bytes must be those of r_triangle, r_line or r_point drawing the same
+ * primitives directly.  Random triangles, lines (of widths 1, 2.5, 3 and
+ * 4.5) or points (of sizes 1, 2.5, 3 and 8.5) over several 64x64 tiles,
  * partly off the buffer, smooth or flat, two-sided or not, with a depth
  * test and a scissored draw region, with the reference kernels and with
  * the block kernels where the CPU has them. */
@@ -836,8 +839,9 @@ static float scene_rand(float lo, float hi)
    return lo + (hi - lo) * (float)(scene_rng >> 8) / 16777216.0f;
 }
 
-static void test_scene_setup_once(bool flat, bool twoside, bool kernels)
+static void test_scene_setup_once(bool flat, bool twoside, bool kernels, int prim)
 {
+   const bool lines = prim == 2, points = prim == 1;
    enum { W = 200, H = 150, N = 400 };
    static uint8_t ca[W * H * 4], cb[W * H * 4];
    static uint32_t za[W * H], zb[W * H];
@@ -852,6 +856,8 @@ static void test_scene_setup_once(bool flat, bool twoside, bool kernels)
    t_dsa.depth_write = true;
    t_rast.twoside = twoside;
    t_rast.cull_front = t_rast.cull_back = false;
+   t_rast.line_width = lines ? (flat ? 3.0f : 1.0f) + (twoside ? 1.5f : 0.0f) : 1.0f;
+   t_rast.point_size = points ? (flat ? 3.0f : 1.0f) + (twoside ? 5.5f : 0.0f) : 1.0f;
    t_blend.color_mask = 0xfu;
    proto.flat_mask = flat ? 1u << R_ATTR_COLOR0 | 1u << R_ATTR_BCOLOR0 : 0u;
    proto.x0 = 3;
@@ -900,19 +906,32 @@ static void test_scene_setup_once(bool flat, bool twoside, bool kernels)
    /* A: directly */
    rs.fb = fba;
    r_choose_kernels(&rs);
-   for (int i = 0; i < N; i++)
-      r_triangle(&rs, &v[i][0], &v[i][1], &v[i][2]);
+   for (int i = 0; i < N; i++) {
+      if (lines)
+         r_line(&rs, &v[i][0], &v[i][1]);
+      else if (points)
+         r_point(&rs, &v[i][0]);
+      else
+         r_triangle(&rs, &v[i][0], &v[i][1], &v[i][2]);
+   }
    /* B: binned, then tile by tile */
    rs.fb = fbb;
    r_choose_kernels(&rs);
    struct r_scene scene;
    memset(&scene, 0, sizeof scene);
    for (int i = 0; i < N; i++)
-      CHECK(r_scene_triangle(&scene, &rs, &v[i][0], &v[i][1], &v[i][2]), "binned %d", i);
+      CHECK(lines    ? r_scene_line(&scene, &rs, &v[i][0], &v[i][1])
+            : points ? r_scene_point(&scene, &rs, &v[i][0])
+                     : r_scene_triangle(&scene, &rs, &v[i][0], &v[i][1], &v[i][2]),
+            "binned %d", i);
    unsigned set_up = 0;
    for (uint32_t i = 0; i < scene.ncmds; i++)
-      set_up += scene.cmds[i].tri != NULL;
-   CHECK(set_up > N / 4, "%u of %u binned triangles set up when binned", set_up, scene.ncmds);
+      set_up += (lines    ? (const void *)scene.cmds[i].line
+                 : points ? (const void *)scene.cmds[i].point
+                          : (const void *)scene.cmds[i].tri) != NULL;
+   /* (lines: those reaching one or two tiles keep their vertices) */
+   CHECK(set_up > (lines ? N / 16 : N / 4), "%u of %u binned primitives set up when binned",
+         set_up, scene.ncmds);
    for (unsigned t = 0; t < r_scene_tiles(&scene); t++)
       r_scene_run_tile(&scene, t, NULL, 0);
    r_scene_fini(&scene);
@@ -922,14 +941,15 @@ static void test_scene_setup_once(bool flat, bool twoside, bool kernels)
       drawn += za[i] != 0xffffffu;
       coloured += ca[4 * i + 3] != 0;
       if ((memcmp(&ca[4 * i], &cb[4 * i], 4) != 0 || za[i] != zb[i]) && bad++ < 4)
-         FAIL("scene setup (flat %d, twoside %d, kernels %d): pixel (%d,%d) colour %08x z %06x, "
-              "direct %08x z %06x", flat, twoside, kernels, i % W, i / W,
+         FAIL("scene setup (vertices %d, flat %d, twoside %d, kernels %d): pixel (%d,%d) colour %08x z %06x, "
+              "direct %08x z %06x", prim, flat, twoside, kernels, i % W, i / W,
               (unsigned)(cb[4 * i] | cb[4 * i + 1] << 8 | cb[4 * i + 2] << 16 | (uint32_t)cb[4 * i + 3] << 24),
               (unsigned)zb[i],
               (unsigned)(ca[4 * i] | ca[4 * i + 1] << 8 | ca[4 * i + 2] << 16 | (uint32_t)ca[4 * i + 3] << 24),
               (unsigned)za[i]);
    }
-   CHECK(drawn > W * H / 4 && coloured > W * H / 4, "the triangles drew %d pixels, %d coloured",
+   const int enough = points ? N / 2 : lines ? W * H / 10 : W * H / 4;
+   CHECK(drawn > enough && coloured > enough, "the primitives drew %d pixels, %d coloured",
          drawn, coloured);
    r_cso_cache_fini(&cache);
 }
@@ -950,7 +970,7 @@ int main(void)
    test_draw_region();
    test_depth();
    test_depth_z32();
-   for (int m = 0; m < 8; m++)
-      test_scene_setup_once(m & 1, (m >> 1) & 1, (m >> 2) & 1);
+   for (int m = 0; m < 24; m++)
+      test_scene_setup_once(m & 1, (m >> 1) & 1, (m >> 2) & 1, 3 - (m >> 3));
    return check_report("unit-raster");
 }
