@@ -175,9 +175,16 @@ static bool bin_box(struct r_scene *s, uint32_t ci, int x0, int y0, int x1, int 
 {
    const int tx0 = x0 >> R_TILE_LOG2, tx1 = (x1 - 1) >> R_TILE_LOG2;
    const int ty0 = y0 >> R_TILE_LOG2, ty1 = (y1 - 1) >> R_TILE_LOG2;
-   /* a box of one tile needs no test */
-   if (tx0 == tx1 && ty0 == ty1)
-      edges = NULL;
+   if (tx0 == tx1 && ty0 == ty1) {
+      /* a box of one tile (most small triangles): no test, no loop */
+      struct r_bin *b = &s->bins[ty0 * s->tiles_x + tx0];
+      if (__builtin_expect(b->count >= b->capacity, 0) &&
+          !grow((void **)&b->cmd, &b->capacity, b->count + 1, sizeof(*b->cmd)))
+         return false;
+      b->cmd[b->count++] = ci;
+      s->bytes += sizeof(*b->cmd);
+      return true;
+   }
    for (int ty = ty0; ty <= ty1; ty++) {
       for (int tx = tx0; tx <= tx1; tx++) {
          if (edges && r_tri_edges_miss_tile(edges, tx << R_TILE_LOG2, ty << R_TILE_LOG2))
@@ -355,7 +362,7 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
    /* binned into the tiles of the box r_triangle draws in, or not at all
     * when it draws nothing (culled, empty); an exact triangle (kind 1) is
     * set up now, once, instead of in each tile it is drawn in */
-   if (!begin(s, rs))
+   if (s->fb != rs->fb && !begin(s, rs))
       return false;
    const struct scene_mark mark = scene_mark(s);
    struct r_tri_binned *bin = scene_alloc(s, r_tri_binned_size(rs));

@@ -864,9 +864,9 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
 /* What r_triangle can cover of a triangle, for the scene's binning: 0
  * nothing (its snapped area is zero, its facing is culled, or its box
  * misses the draw region and the framebuffer); 1 at most the pixels of
- * box = [x0, x1) x [y0, y1) (the box of its snapped positions, cut to
- * them) that `edges` does not exclude (r_tri_edges_miss_tile); 2
- * unknown (non-finite or huge positions: any pixel of the region). */
+ * box = [x0, x1) x [y0, y1) (its snapped positions' box, cut to them)
+ * that `edges` (r_tri_edges_miss_tile; set for boxes of 2+ tiles) does
+ * not exclude; 2 unknown (non-finite or huge positions: any pixel). */
 struct r_tri_edges {
    int64_t c[3], dcdx[3], dcdy[3], eo[3];
 };

@@ -679,7 +679,8 @@ static inline __attribute__((always_inline)) bool edge_plane(int32_t Xi, int32_t
 
 /* The three edges of a counter-clockwise triangle; true when nothing in
  * them wraps. */
-static inline bool edge_planes(const int32_t X[3], const int32_t Y[3], struct r_plane p[3])
+static inline __attribute__((always_inline)) bool edge_planes(const int32_t X[3], const int32_t Y[3],
+                                                              struct r_plane p[3])
 {
    const bool e0 = edge_plane(X[0], Y[0], X[1], Y[1], &p[0]);
    const bool e1 = edge_plane(X[1], Y[1], X[2], Y[2], &p[1]);
@@ -912,8 +913,12 @@ struct r_tri_binned {
 
 size_t r_tri_binned_size(const struct r_state *rs)
 {
-   return offsetof(struct r_tri_binned, data) +
-          (size_t)__builtin_popcount(rs->fs->fs_inputs) * 12 * sizeof(float);
+   /* (counted bit by bit: without -mpopcnt __builtin_popcount is a call
+    * into libgcc, on every binned triangle) */
+   size_t inputs = 0;
+   for (unsigned m = rs->fs->fs_inputs; m; m &= m - 1)
+      inputs++;
+   return offsetof(struct r_tri_binned, data) + inputs * 12 * sizeof(float);
 }
 
 void r_tri_binned_pack(const struct r_tri_setup *ts, struct r_tri_binned *t)
@@ -983,18 +988,22 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
    struct r_plane p[3];
    if (!edge_planes(X, Y, p))
       return 2;   /* the planes may wrap */
-   for (int i = 0; i < 3; i++) {
-      edges->c[i] = p[i].c;
-      edges->dcdx[i] = p[i].dcdx;
-      edges->dcdy[i] = p[i].dcdy;
-      edges->eo[i] = (int64_t)p[i].eo * TILE_SIZE;
-   }
    /* rasterize_ccw's box, cut to the draw region: no pixel outside it is
     * covered */
    int32_t b[4];
    snapped_box(X, Y, b);
    if (!r_scene_box(rs->fb, rs->x0, rs->y0, rs->x1, rs->y1, b[0], b[2], b[1], b[3], box))
       return 0;
+   /* the edges only for a box of more than one tile (one tile needs no
+    * test) */
+   if ((box[0] ^ (box[2] - 1)) / TILE_SIZE != 0 || (box[1] ^ (box[3] - 1)) / TILE_SIZE != 0) {
+      for (int i = 0; i < 3; i++) {
+         edges->c[i] = p[i].c;
+         edges->dcdx[i] = p[i].dcdx;
+         edges->dcdy[i] = p[i].dcdy;
+         edges->eo[i] = (int64_t)p[i].eo * TILE_SIZE;
+      }
+   }
    if (bin) {
       /* r_triangle's facing and rasterize_ccw's setup */
       const bool is_back = (area > 0) != rs->rast->ccw_is_front;
