@@ -74,6 +74,7 @@ struct unit_prog {
 struct unit_front {
    __m256 s, t;
    struct r_tex_lod lod[2];
+   struct tex8_trilod tl;   /* the trilinear lookup's */
 };
 
 struct unit_stage;
@@ -94,7 +95,8 @@ struct unit_stage {
    struct unit_prog prog;
    __m256 tc[4];        /* flat texture coordinates, broadcast */
    __m256 konst[4];     /* GL_TEXTURE_ENV_COLOR */
-   const struct r_attr_plane *ap;   /* the coordinates' planes */
+   struct vplane ptc[4];   /* the coordinates' planes (r unused), broadcast */
+   __m256 fw, fh;          /* the base level's size (the trilinear lookup's LOD) */
    struct tex8_level levels[R_MAX_TEX_LEVELS];
 };
 
@@ -102,6 +104,7 @@ struct block_stage {
    int n;
    bool flat_color;
    __m256 color[4];
+   struct vplane pw, pcol[4];   /* w's and the colour's planes, broadcast */
    struct unit_stage u[MTEX_MAX_UNITS];
 };
 
@@ -114,7 +117,7 @@ static __m256i lookup_general(const struct unit_stage *u, const struct unit_fron
 
 static __m256i lookup_trilinear(const struct unit_stage *u, const struct unit_front *f)
 {
-   return tex8_filter_trilinear_repeat(u->levels, f->lod, f->s, f->t);
+   return tex8_filter_trilinear_lod(u->levels, u->tex->last_level, &f->tl, f->s, f->t);
 }
 
 static __m256i lookup_bilinear_repeat(const struct unit_stage *u, const struct unit_front *f)
@@ -132,7 +135,7 @@ static __m256i lookup_bilinear_clamp(const struct unit_stage *u, const struct un
 static ALWAYS_INLINE __m256i lookup_inline(const struct unit_stage *u, const struct unit_front *f)
 {
    if (u->lookup == lookup_trilinear)
-      return tex8_filter_trilinear_repeat(u->levels, f->lod, f->s, f->t);
+      return tex8_filter_trilinear_lod(u->levels, u->tex->last_level, &f->tl, f->s, f->t);
    if (u->lookup == lookup_bilinear_clamp)
       return tex8_filter_bilinear(u->levels, u->tex->first_level, R_WRAP_CLAMP_TO_EDGE, f->s, f->t);
    if (u->lookup == lookup_bilinear_repeat)
@@ -397,16 +400,26 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
 {
    st->n = variant == V_ANY ? rs->fs->tex_nr : 2;
    st->flat_color = ts->flat_attr[R_FS_COLOR0];
-   for (int c = 0; c < 4; c++)
+   for (int c = 0; c < 4; c++) {
       st->color[c] = _mm256_set1_ps(ts->flat[R_FS_COLOR0][c]);
+      if (!st->flat_color)
+         st->pcol[c] = vplane_of(&ts->ap[R_FS_COLOR0][c]);
+   }
+   if (ts->need_w)
+      st->pw = vplane_of(&ts->w);
    unsigned prev_sum = 0;
    for (int i = 0; i < st->n; i++) {
       struct unit_stage *u = &st->u[i];
       const struct r_tex_unit *tu = rs->tex[i];
       u->tex = &tu->tex;
       u->flat_tex = ts->flat_attr[R_FS_TEX0 + i];
-      u->ap = ts->ap[R_FS_TEX0 + i];
+      if (!u->flat_tex)
+         for (int c = 0; c < 4; c++)
+            if (c != 2)
+               u->ptc[c] = vplane_of(&ts->ap[R_FS_TEX0 + i][c]);
       u->trilinear = tex8_is_trilinear_repeat(u->tex);
+      u->fw = _mm256_set1_ps((float)u->tex->level[u->tex->first_level].width);
+      u->fh = _mm256_set1_ps((float)u->tex->level[u->tex->first_level].height);
       u->bilinear = false;
       u->lookup = lookup_general;
       if (u->trilinear) {
@@ -447,16 +460,19 @@ static ALWAYS_INLINE void unit_front(const struct unit_stage *u, __m256 rw, __m2
       t = u->tc[1];
       q = u->tc[3];
    } else {
-      s = _mm256_mul_ps(eval8(&u->ap[0], fx, fy), rw);
-      t = _mm256_mul_ps(eval8(&u->ap[1], fx, fy), rw);
-      q = _mm256_mul_ps(eval8(&u->ap[3], fx, fy), rw);
+      s = _mm256_mul_ps(veval8_y(&u->ptc[0], veval8_x(&u->ptc[0], fx), fy), rw);
+      t = _mm256_mul_ps(veval8_y(&u->ptc[1], veval8_x(&u->ptc[1], fx), fy), rw);
+      q = _mm256_mul_ps(veval8_y(&u->ptc[3], veval8_x(&u->ptc[3], fx), fy), rw);
    }
    const __m256 rq = _mm256_div_ps(_mm256_set1_ps(1.0f), q);
    f->s = _mm256_mul_ps(s, rq);
    f->t = _mm256_mul_ps(t, rq);
-   if (u->trilinear)
-      tex8_lod_quads_k(u->tex, 2, R_MIP_LINEAR, false, f->s, f->t, f->lod);
-   else if (!u->bilinear)   /* (its lookup needs none) */
+   if (u->trilinear) {
+      /* (the half's two quads: the second half's lanes repeat them) */
+      struct tex8_trilod unused;
+      tex8_trilinear_lod2(u->tex->first_level, u->tex->last_level, u->fw, u->fh, f->s, f->t, f->s,
+                          f->t, &f->tl, &unused);
+   } else if (!u->bilinear)   /* (its lookup needs none) */
       tex8_lod_quads(u->tex, f->s, f->t, f->lod);
 }
 
@@ -479,16 +495,17 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
    const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
    /* 1/w (not read when every input is flat) */
-   const __m256 rw = ts->need_w ? _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy))
-                                : _mm256_setzero_ps();
+   const __m256 rw =
+      ts->need_w
+         ? _mm256_div_ps(_mm256_set1_ps(1.0f), veval8_y(&st->pw, veval8_x(&st->pw, fx), fy))
+         : _mm256_setzero_ps();
    __m256 pc[4], prev[4];
    if (st->flat_color) {
       for (int c = 0; c < 4; c++)
          pc[c] = st->color[c];
    } else {
-      const struct r_attr_plane *ap = ts->ap[R_FS_COLOR0];
       for (int c = 0; c < 4; c++)
-         pc[c] = _mm256_mul_ps(eval8(&ap[c], fx, fy), rw);
+         pc[c] = _mm256_mul_ps(veval8_y(&st->pcol[c], veval8_x(&st->pcol[c], fx), fy), rw);
    }
    for (int c = 0; c < 4; c++)
       prev[c] = pc[c];

@@ -58,6 +58,7 @@ enum env { ENV_ARGS, ENV_T_T, ENV_T_P, ENV_TP_TP, ENV_TP_P, ENV_DECAL };
 struct stage_front {
    __m256 rw, s, t;
    struct r_tex_lod lod[2];
+   struct tex8_trilod tl;   /* VAR_TRILINEAR's */
 };
 
 struct block_stage {
@@ -66,6 +67,10 @@ struct block_stage {
    __m256 color[4];   /* flat colour, broadcast */
    __m256 tc[4];      /* flat texture coordinates, broadcast */
    __m256 konst[4];   /* the unit's constant colour */
+   /* the planes of w, the coordinates and the colour, broadcast once
+    * (those of the inputs read: not flat) */
+   struct vplane pw, ptc[4], pcol[4];
+   __m256 fw, fh;   /* the base level's size (VAR_TRILINEAR's level of detail) */
    uint8_t nargs[4], arg[4][2];   /* ENV_ARGS: r_tex_combine.simple_* */
    struct tex8_level levels[R_MAX_TEX_LEVELS];   /* first_level .. last_level */
    /* the front of the lower half of the last block (next_x, next_y) */
@@ -83,6 +88,16 @@ static ALWAYS_INLINE void block_stage_prepare(const struct r_state *rs, const st
    st->next_x = st->next_y = INT32_MIN;   /* (y is even) */
    for (int l = st->tex->first_level; l <= st->tex->last_level; l++)
       tex8_level_init(st->tex, l, &st->levels[l]);
+   st->fw = _mm256_set1_ps((float)st->tex->level[st->tex->first_level].width);
+   st->fh = _mm256_set1_ps((float)st->tex->level[st->tex->first_level].height);
+   if (!st->flat_tex || !st->flat_color)
+      st->pw = vplane_of(&ts->w);
+   for (int c = 0; c < 4; c++) {
+      if (!st->flat_tex && c != 2)
+         st->ptc[c] = vplane_of(&ts->ap[R_FS_TEX0][c]);
+      if (!st->flat_color)
+         st->pcol[c] = vplane_of(&ts->ap[R_FS_COLOR0][c]);
+   }
    const struct r_tex_combine *k = &rs->tex[0]->comb;
    for (int c = 0; c < 4; c++) {
       st->color[c] = _mm256_set1_ps(ts->flat[R_FS_COLOR0][c]);
@@ -118,17 +133,17 @@ static ALWAYS_INLINE __m256 env_arg(const struct block_stage *st, unsigned a, co
 }
 
 /* The front of the stage for the half at (x, y): 1/w, the projected
- * coordinates and the quads' level of detail -- the chain of two divides
- * the lookup waits for. */
-static ALWAYS_INLINE void stage_front(const struct r_tri_setup *ts, const struct block_stage *st,
-                                      int variant, int x, int y, struct stage_front *f)
+ * coordinates and (but for VAR_TRILINEAR: stage_lod) the quads' level of
+ * detail -- the chain of two divides the lookup waits for. */
+static ALWAYS_INLINE void stage_front(const struct block_stage *st, int variant, int x, int y,
+                                      struct stage_front *f)
 {
    const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
    const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
    const bool need_color = VAR_ENV(variant) != ENV_T_T;
    __m256 rw = _mm256_setzero_ps();
    if (!st->flat_tex || (need_color && !st->flat_color))
-      rw = _mm256_div_ps(_mm256_set1_ps(1.0f), eval8(&ts->w, fx, fy));
+      rw = _mm256_div_ps(_mm256_set1_ps(1.0f), veval8_y(&st->pw, veval8_x(&st->pw, fx), fy));
 
    /* the projected coordinates (tex_color: coord * (1 / q)) */
    __m256 s, t, q;
@@ -137,10 +152,9 @@ static ALWAYS_INLINE void stage_front(const struct r_tri_setup *ts, const struct
       t = st->tc[1];
       q = st->tc[3];
    } else {
-      const struct r_attr_plane *ap = ts->ap[R_FS_TEX0];
-      s = _mm256_mul_ps(eval8(&ap[0], fx, fy), rw);
-      t = _mm256_mul_ps(eval8(&ap[1], fx, fy), rw);
-      q = _mm256_mul_ps(eval8(&ap[3], fx, fy), rw);
+      s = _mm256_mul_ps(veval8_y(&st->ptc[0], veval8_x(&st->ptc[0], fx), fy), rw);
+      t = _mm256_mul_ps(veval8_y(&st->ptc[1], veval8_x(&st->ptc[1], fx), fy), rw);
+      q = _mm256_mul_ps(veval8_y(&st->ptc[3], veval8_x(&st->ptc[3], fx), fy), rw);
    }
    const __m256 rq = _mm256_div_ps(_mm256_set1_ps(1.0f), q);
    f->rw = rw;
@@ -149,8 +163,8 @@ static ALWAYS_INLINE void stage_front(const struct r_tri_setup *ts, const struct
 
    /* the level of detail of quads A and B (fill_quad) */
    if (variant & VAR_TRILINEAR)
-      tex8_lod_quads_k(st->tex, 2, R_MIP_LINEAR, false, f->s, f->t, f->lod);
-   else if (!(variant & VAR_BILINEAR))   /* (its lookup needs none) */
+      return;
+   if (!(variant & VAR_BILINEAR))   /* (its lookup needs none) */
       tex8_lod_quads(st->tex, f->s, f->t, f->lod);
 }
 
@@ -159,7 +173,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
                                                __m256 fx_rows, __m256 fy_rows, int x, int y,
                                                unsigned m8, __m256i *live)
 {
-   (void)rs; (void)fx_rows; (void)fy_rows; (void)m8; (void)live;
+   (void)rs; (void)ts; (void)fx_rows; (void)fy_rows; (void)m8; (void)live;
    const __m256 fx = _mm256_add_ps(_mm256_set1_ps((float)x), quad_lx());
    const __m256 fy = _mm256_add_ps(_mm256_set1_ps((float)y), quad_ly());
    const int env = VAR_ENV(variant);
@@ -170,21 +184,33 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    struct block_stage *mst = (struct block_stage *)st;
    struct stage_front f;
    if ((y & 3) == 0) {
-      stage_front(ts, st, variant, x, y, &f);
-      stage_front(ts, st, variant, x, y + 2, &mst->next);
+      stage_front(st, variant, x, y, &f);
+      stage_front(st, variant, x, y + 2, &mst->next);
       mst->next_x = x;
       mst->next_y = y + 2;
+      /* the trilinear level of detail of both halves' quads at once */
+      if (variant & VAR_TRILINEAR)
+         tex8_trilinear_lod2(st->tex->first_level, st->tex->last_level, st->fw, st->fh, f.s, f.t,
+                             mst->next.s, mst->next.t, &f.tl, &mst->next.tl);
    } else if (st->next_x == x && st->next_y == y) {
       f = st->next;
    } else {
-      stage_front(ts, st, variant, x, y, &f);
+      stage_front(st, variant, x, y, &f);
+      if (variant & VAR_TRILINEAR) {
+         struct tex8_trilod unused;
+         tex8_trilinear_lod2(st->tex->first_level, st->tex->last_level, st->fw, st->fh, f.s,
+                             f.t, f.s, f.t, &f.tl, &unused);
+      }
    }
    const __m256 rw = f.rw;
    const struct r_texture *tex = st->tex;
-   const __m256i texel =
-      variant & VAR_TRILINEAR  ? tex8_filter_trilinear_repeat(st->levels, f.lod, f.s, f.t)
-      : variant & VAR_BILINEAR ? tex8_filter_bilinear(st->levels, tex->first_level, R_WRAP_REPEAT, f.s, f.t)
-                               : tex8_filter_quads(tex, st->levels, f.lod, f.s, f.t);
+   __m256i texel;
+   if (variant & VAR_TRILINEAR)
+      texel = tex8_filter_trilinear_lod(st->levels, tex->last_level, &f.tl, f.s, f.t);
+   else if (variant & VAR_BILINEAR)
+      texel = tex8_filter_bilinear(st->levels, tex->first_level, R_WRAP_REPEAT, f.s, f.t);
+   else
+      texel = tex8_filter_quads(tex, st->levels, f.lod, f.s, f.t);
 
    __m256i out;
    if (env == ENV_T_T) {
@@ -195,9 +221,8 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
          for (int c = 0; c < 4; c++)
             pc[c] = st->color[c];
       } else {
-         const struct r_attr_plane *ap = ts->ap[R_FS_COLOR0];
          for (int c = 0; c < 4; c++)
-            pc[c] = _mm256_mul_ps(eval8(&ap[c], fx, fy), rw);
+            pc[c] = _mm256_mul_ps(veval8_y(&st->pcol[c], veval8_x(&st->pcol[c], fx), fy), rw);
       }
       const __m256 scale = _mm256_set1_ps((float)(1.0 / 255.0));
       const __m256i m255 = _mm256_set1_epi32(255);

@@ -14,9 +14,8 @@
  * floors (floorf, cvttss2si / cvtss2si, which give INT32_MIN out of range
  * or for NaN as cvttps2dq / cvtps2dq do), fract_safe's compare the minps
  * of (f, 0.99999994), the integer wraps, and lerp8's
- * (a + ((w * (b - a) + 128) >> 8)) & 0xff, of which only bits 8..15 of
- * w * (b - a) + 128 matter: 16-bit lanes (pmullw, paddw, psrlw) give them
- * exactly.  The level of detail is r_tex_lod_aos's code (r_tex_lod.h), once
+ * (a + ((w * (b - a) + 128) >> 8)) & 0xff, which pmulhrsw on 16-bit
+ * lanes gives exactly (lerp16).  The level of detail is r_tex_lod_aos's code (r_tex_lod.h), once
  * per quad.
  *
  * Lanes run in a quad-major order inside: quad A (lanes 0, 1, 4, 5) in the
@@ -129,6 +128,17 @@ static inline __attribute__((always_inline)) void lv8_from(const struct tex8_lev
 {
    v->base[0] = A->base;
    v->base[1] = B->base;
+   if (A == B) {
+      /* (both quads on one level: one broadcast load a value) */
+      v->width = _mm256_broadcastsi128_si256(A->width);
+      v->s.fn = _mm256_broadcast_ps(&A->fs);
+      v->s.fn256 = _mm256_broadcast_ps(&A->fs256);
+      v->s.nm1 = _mm256_broadcastsi128_si256(A->nm1s);
+      v->t.fn = _mm256_broadcast_ps(&A->ft);
+      v->t.fn256 = _mm256_broadcast_ps(&A->ft256);
+      v->t.nm1 = _mm256_broadcastsi128_si256(A->nm1t);
+      return;
+   }
    v->width = _mm256_setr_m128i(A->width, B->width);
    v->s.fn = _mm256_setr_m128(A->fs, B->fs);
    v->s.fn256 = _mm256_setr_m128(A->fs256, B->fs256);
@@ -218,20 +228,23 @@ static inline __attribute__((always_inline)) void linear_axis(__m256 s, const st
    }
 }
 
-/* lerp8 on 16-bit channels: bits 8..15 of w * (b - a) + 128 are those of
- * the 32-bit product's, so the wrapped 16-bit arithmetic is exact */
-static inline __attribute__((always_inline)) __m256i lerp16(__m256i w, __m256i a, __m256i b)
+/* lerp8 on 16-bit channels, w7 the weight times 128 (weights16):
+ * pmulhrsw(b - a, w * 128) is ((b - a) * w * 128 + 0x4000) >> 15 (the
+ * 32-bit product, arithmetic shift), which is ((b - a) * w + 128) >> 8,
+ * lerp8's term; a plus that lies between a and b (w <= 255), in 0..255,
+ * so lerp8's & 0xff changes nothing.  (llvmpipe's own SSSE3 / AVX2 lerp.) */
+static inline __attribute__((always_inline)) __m256i lerp16(__m256i w7, __m256i a, __m256i b)
 {
-   __m256i p = _mm256_mullo_epi16(w, _mm256_sub_epi16(b, a));
-   p = _mm256_srli_epi16(_mm256_add_epi16(p, _mm256_set1_epi16(128)), 8);
-   return _mm256_and_si256(_mm256_add_epi16(a, p), _mm256_set1_epi16(0xff));
+   return _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), w7));
 }
 
-/* the lanes' 32-bit weights as 16-bit channel weights of the low
- * (unpacklo: lanes 0, 1 of each half) and high (lanes 2, 3) texels */
+/* the lanes' 32-bit weights (0..255) times 128 as 16-bit channel weights
+ * of the low (unpacklo: lanes 0, 1 of each half) and high (lanes 2, 3)
+ * texels, for lerp16 */
 static inline __attribute__((always_inline)) void weights16(__m256i w32, __m256i *lo, __m256i *hi)
 {
-   const __m256i w16 = _mm256_blend_epi16(w32, _mm256_slli_epi32(w32, 16), 0xaa);
+   const __m256i w7 = _mm256_slli_epi32(w32, 7);
+   const __m256i w16 = _mm256_blend_epi16(w7, _mm256_slli_epi32(w7, 16), 0xaa);
    *lo = _mm256_unpacklo_epi32(w16, w16);
    *hi = _mm256_unpackhi_epi32(w16, w16);
 }
@@ -338,6 +351,35 @@ static inline __m256i sample_levels(const struct r_texture *t, const enum r_tex_
    return f[0] == R_TEX_NEAREST ? _mm256_blend_epi32(n, l, 0xf0) : _mm256_blend_epi32(l, n, 0xf0);
 }
 
+/* r_tex_lod_aos_inline's LINEAR_MIPMAP_LINEAR levels from rho squared
+ * (r2) in every lane: lp_build_fast_log2 halved (*lodf), its floor as the
+ * first level, clamped to first..last with the weight 0 when clamped,
+ * else the fraction times 256 truncated (*weight) */
+static inline __attribute__((always_inline)) void
+mip_linear_levels(__m256 r2, __m256i vfirst, __m256i vlast, __m256 *lodf, __m256i *level0,
+                  __m256i *weight)
+{
+   const __m256i bits = _mm256_castps_si256(r2);
+   const __m256i e = _mm256_and_si256(_mm256_srli_epi32(bits, 23), _mm256_set1_epi32(255));
+   const __m256 mant = _mm256_castsi256_ps(_mm256_or_si256(
+      _mm256_and_si256(bits, _mm256_set1_epi32(0x7fffff)), _mm256_set1_epi32(0x3f800000)));
+   const __m256 l2 =
+      _mm256_add_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(128))), mant);
+   const __m256 lod = _mm256_mul_ps(l2, _mm256_set1_ps(0.5f));
+   const __m256 fl = _mm256_floor_ps(lod);
+   __m256 fpart = _mm256_sub_ps(lod, fl);
+   __m256i l0 = _mm256_add_epi32(vfirst, _mm256_cvttps_epi32(fl));
+   /* l0 < first or l0 >= last: clamped, fpart 0 */
+   const __m256i below = _mm256_cmpgt_epi32(vfirst, l0);
+   const __m256i above = _mm256_cmpgt_epi32(l0, _mm256_sub_epi32(vlast, _mm256_set1_epi32(1)));
+   l0 = _mm256_blendv_epi8(l0, vfirst, below);
+   l0 = _mm256_blendv_epi8(l0, vlast, above);
+   fpart = _mm256_andnot_ps(_mm256_castsi256_ps(_mm256_or_si256(below, above)), fpart);
+   *lodf = lod;
+   *level0 = l0;
+   *weight = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0f)));
+}
+
 /* r_tex_lod_aos_inline (r_tex_lod.h) of quads A and B at once, from their
  * lanes in quad-major order (TL, TR, BL = lanes 0, 1, 2 of each 128-bit
  * half): the same float operations on every lane of a half (the half's
@@ -403,28 +445,11 @@ tex8_lod_quads_k(const struct r_texture *t, int dims, enum r_tex_mip mip, bool n
       level1 = level0;
    } else {
       const __m256 r2 = dims > 1 ? rho : _mm256_mul_ps(rho, rho);
-      const __m256i bits = _mm256_castps_si256(r2);
-      const __m256i e = _mm256_and_si256(_mm256_srli_epi32(bits, 23), m255);
-      const __m256 mant = _mm256_castsi256_ps(
-         _mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(0x7fffff)),
-                         _mm256_set1_epi32(0x3f800000)));
-      const __m256 l2 = _mm256_add_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(e, _mm256_set1_epi32(128))),
-                                      mant);
-      const __m256 lodf = _mm256_mul_ps(l2, _mm256_set1_ps(0.5f));
+      __m256 lodf;
+      mip_linear_levels(r2, vfirst, vlast, &lodf, &level0, &weight);
       /* !(lod <= 0) */
       minify = _mm256_castps_si256(_mm256_cmp_ps(lodf, _mm256_setzero_ps(), _CMP_NLE_UQ));
-      const __m256 fl = _mm256_floor_ps(lodf);
-      __m256 fpart = _mm256_sub_ps(lodf, fl);
-      __m256i l0 = _mm256_add_epi32(vfirst, _mm256_cvttps_epi32(fl));
-      /* l0 < first or l0 >= last: clamped, fpart 0 */
-      const __m256i below = _mm256_cmpgt_epi32(vfirst, l0);
-      const __m256i above = _mm256_cmpgt_epi32(l0, _mm256_sub_epi32(vlast, _mm256_set1_epi32(1)));
-      l0 = _mm256_blendv_epi8(l0, vfirst, below);
-      l0 = _mm256_blendv_epi8(l0, vlast, above);
-      fpart = _mm256_andnot_ps(_mm256_castsi256_ps(_mm256_or_si256(below, above)), fpart);
-      level0 = l0;
-      level1 = _mm256_min_epi32(_mm256_add_epi32(l0, _mm256_set1_epi32(1)), vlast);
-      weight = _mm256_cvttps_epi32(_mm256_mul_ps(fpart, _mm256_set1_ps(256.0f)));
+      level1 = _mm256_min_epi32(_mm256_add_epi32(level0, _mm256_set1_epi32(1)), vlast);
    }
    const __m128i mlo = _mm256_castsi256_si128(minify), mhi = _mm256_extracti128_si256(minify, 1);
    const __m128i l0lo = _mm256_castsi256_si128(level0), l0hi = _mm256_extracti128_si256(level0, 1);
@@ -498,7 +523,7 @@ tex8_filter_quads(const struct r_texture *t, const struct tex8_level *tab,
    return tex;
 }
 
-/* Whether tex8_filter_trilinear_repeat samples t: 2D, power-of-two sizes,
+/* Whether tex8_filter_trilinear_lod samples t: 2D, power-of-two sizes,
  * REPEAT on both axes, LINEAR_MIPMAP_LINEAR and LINEAR (with
  * r_tex8_fast). */
 static inline bool tex8_is_trilinear_repeat(const struct r_texture *t)
@@ -508,27 +533,74 @@ static inline bool tex8_is_trilinear_repeat(const struct r_texture *t)
           t->mag_img == R_TEX_LINEAR && t->mip == R_MIP_LINEAR;
 }
 
-/* tex8_filter_quads for such a texture, with its table: the branches of
- * r_tex_filter_aos it takes (min_img == mag_img, a mip filter: the
- * minified branch, LINEAR on level0, blended with level1 by a positive
- * weight), with every property a constant. */
-static inline __attribute__((always_inline)) __m256i
-tex8_filter_trilinear_repeat(const struct tex8_level *tab, const struct r_tex_lod lod[2],
-                             __m256 s, __m256 tc)
+/* The level of detail of tex8_filter_trilinear_lod: the first level of
+ * quad A and quad B, and each lane's mip weight (its quad's, 0..255; 0
+ * where the quad samples one level). */
+struct tex8_trilod {
+   int level0[2];
+   __m256i weight;
+};
+
+/* tex8_lod_quads_k's LINEAR_MIPMAP_LINEAR branch of a 2D texture
+ * (levels first..last, base level size fw x fh as floats) for the quads
+ * of two halves at once (s0, t0 and s1, t1 in quad-major order; the same
+ * half twice for one): the TL, TR, BL lanes of the four quads shuffled
+ * into one vector, [TR - TL, BL - TL] of a quad of half 0 and one of
+ * half 1 in each 128-bit half, so that rho, the log and the level of the
+ * four quads are one vector's operations (the same float operations per
+ * quad as tex8_lod_quads_k: (d * W)^2 + (d * H)^2 per direction, maxps
+ * (rx, ry)); the quads' values in lanes 0, 4 (half 0's A, B) and 2, 6
+ * (half 1's). */
+static inline __attribute__((always_inline)) void
+tex8_trilinear_lod2(int first, int last, __m256 fw, __m256 fh, __m256 s0, __m256 t0, __m256 s1,
+                    __m256 t1, struct tex8_trilod *h0, struct tex8_trilod *h1)
 {
+   /* [TL, TL, TL', TL'] and [TR, BL, TR', BL'] per 128-bit half */
+   const __m256 s_tl = _mm256_shuffle_ps(s0, s1, _MM_SHUFFLE(0, 0, 0, 0));
+   const __m256 s_o = _mm256_shuffle_ps(s0, s1, _MM_SHUFFLE(2, 1, 2, 1));
+   const __m256 t_tl = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(0, 0, 0, 0));
+   const __m256 t_o = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(2, 1, 2, 1));
+   __m256 ds = _mm256_mul_ps(_mm256_sub_ps(s_o, s_tl), fw);   /* dsdx, dsdy */
+   __m256 dt = _mm256_mul_ps(_mm256_sub_ps(t_o, t_tl), fh);   /* dtdx, dtdy */
+   ds = _mm256_mul_ps(ds, ds);
+   dt = _mm256_mul_ps(dt, dt);
+   const __m256 r = _mm256_add_ps(ds, dt);   /* rx, ry */
+   /* rx > ry ? rx : ry, in lanes 0, 2, 4, 6 */
+   const __m256 rho = _mm256_max_ps(r, _mm256_permute_ps(r, _MM_SHUFFLE(2, 3, 0, 1)));
+   __m256 lodf;
+   __m256i l0, w;
+   mip_linear_levels(rho, _mm256_set1_epi32(first), _mm256_set1_epi32(last), &lodf, &l0, &w);
+   h0->weight = _mm256_shuffle_epi32(w, 0x00);
+   h1->weight = _mm256_shuffle_epi32(w, 0xaa);
+   const __m128i llo = _mm256_castsi256_si128(l0), lhi = _mm256_extracti128_si256(l0, 1);
+   h0->level0[0] = _mm_cvtsi128_si32(llo);
+   h0->level0[1] = _mm_cvtsi128_si32(lhi);
+   h1->level0[0] = _mm_extract_epi32(llo, 2);
+   h1->level0[1] = _mm_extract_epi32(lhi, 2);
+}
+
+/* tex8_filter_quads for such a texture, with its table and the level of
+ * detail of tex8_trilinear_lod2: the branches of r_tex_filter_aos it
+ * takes (min_img == mag_img, a mip filter: the minified branch, LINEAR on
+ * level0, blended with level1 by a positive weight), with every property
+ * a constant; the second level (min(level0 + 1, last)) is sampled when a
+ * quad has a positive weight, and blended in by every lane's weight (0
+ * for a quad without one: lerp8(0, a, b) = a). */
+static inline __attribute__((always_inline)) __m256i
+tex8_filter_trilinear_lod(const struct tex8_level *tab, int last, const struct tex8_trilod *l,
+                          __m256 s, __m256 tc)
+{
+   const int a = l->level0[0], b = l->level0[1];
    struct lv8 v;
-   lv8_from(&tab[lod[0].level0], &tab[lod[1].level0], &v);
+   lv8_from(&tab[a], &tab[b], &v);
    __m256i lo, hi;
    sample_linear_k16(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc, &lo, &hi);
-   const bool two0 = lod[0].weight > 0, two1 = lod[1].weight > 0;
-   if (two0 || two1) {
-      lv8_from(&tab[two0 ? lod[0].level1 : lod[0].level0], &tab[two1 ? lod[1].level1 : lod[1].level0],
-               &v);
+   if (!_mm256_testz_si256(l->weight, l->weight)) {
+      lv8_from(&tab[a < last ? a + 1 : last], &tab[b < last ? b + 1 : last], &v);
       __m256i lo1, hi1;
       sample_linear_k16(2, true, R_WRAP_REPEAT, true, R_WRAP_REPEAT, &v, s, tc, &lo1, &hi1);
-      /* lerp_packed on the unpacked channels */
       __m256i wl, wh;
-      weights16(halves_i(two0 ? lod[0].weight : 0, two1 ? lod[1].weight : 0), &wl, &wh);
+      weights16(l->weight, &wl, &wh);
       lo = lerp16(wl, lo, lo1);
       hi = lerp16(wh, hi, hi1);
    }

@@ -22,6 +22,8 @@
  *               values, exact texel centres and edges of every level
  *   round trip  r_float_to_unorm8((float)b * (1/255)) == b for every byte
  *               (what the textured block kernels rely on)
+ *   lerp        the kernels' pmulhrsw form of lerp8, every weight and pair
+ *               of bytes
  *   implementations  r_tex_sample8_portable, the AVX2 kernel (when built
  *               and the CPU has it) and the dispatching r_tex_sample8
  *
@@ -511,9 +513,31 @@ static void test_unorm8_round_trip(void)
    }
 }
 
+/* The 8-lane lerp (r_tex_avx2.h lerp16) is pmulhrsw(b - a, w * 128)
+ * added to a, without a mask: for every weight 0..255 and bytes a, b that
+ * is r_tex.c's lerp8, (a + ((w * (b - a) + 128) >> 8)) & 0xff.  pmulhrsw
+ * per 16-bit lane: (x * y + 0x4000) >> 15 of the 32-bit product,
+ * arithmetic, the low 16 bits kept; paddw keeps the low 16 bits. */
+static void test_lerp_pmulhrsw(void)
+{
+   unsigned bad = 0;
+   for (int w = 0; w < 256; w++)
+      for (int a = 0; a < 256; a++)
+         for (int b = 0; b < 256; b++) {
+            const int ref = (a + ((w * (b - a) + 128) >> 8)) & 0xff;
+            const int32_t prod = (int32_t)(int16_t)(b - a) * (int32_t)(int16_t)(w * 128);
+            const uint16_t hrs = (uint16_t)((prod + 0x4000) >> 15);
+            const uint16_t sum = (uint16_t)((unsigned)a + hrs);
+            if (sum != ref && bad++ < 5)
+               CHECK(false, "lerp w %d a %d b %d: pmulhrsw form %u, lerp8 %d", w, a, b, sum, ref);
+         }
+   CHECK(bad == 0, "pmulhrsw lerp differs from lerp8 for %u (w, a, b)", bad);
+}
+
 int main(int argc, char **argv)
 {
    test_unorm8_round_trip();
+   test_lerp_pmulhrsw();
    int nstates = 3000, blocks = 200;
    const char *e = getenv("FIXGL_TEX8_STATES");
    if (e)
