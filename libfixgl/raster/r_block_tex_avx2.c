@@ -268,6 +268,11 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    return _mm256_permute4x64_epi64(out, QUAD_ORDER);
 }
 
+/* the stage kills nothing and reads no buffer (a half's front kept for
+ * the next half is a function of its position alone): the depth test may
+ * come first and a half none of whose fragments passes it is not
+ * textured (r_block_tri.h) */
+#define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
 #define TEX_KERNEL(name, env, zf, zwrite, bl)                                              \
