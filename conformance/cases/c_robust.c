@@ -1661,6 +1661,68 @@ static void end_after_list_mid_primitive(fc_h *h)
     fc_capture(h);
 }
 
+/* A list whose vertex list ends mid-primitive (the colour grows after the
+ * last vertex, then a glDrawElements) leaves the oracle's
+ * CurrentExecPrimitive inside glBegin/glEnd while its dispatch stays the
+ * outside one: entry points without a check of their own run (glLineWidth
+ * raises its GL_INVALID_VALUE, glBlendColor, glBlendFunc, glEnable,
+ * glClearColor and glClear take effect, glGetTexParameteriv answers),
+ * those with one refuse (glIsEnabled); glGetError reports nothing until
+ * the glEnd (fixgl refused every call; fuzzer seed 3000503; probe
+ * p_dlist_stuck_entry_points). */
+static void stuck_list_entry_points(fc_h *h)
+{
+    static const GLfloat v[6] = { 1, 1, 15, 1, 1, 15 };
+    static const GLuint idx[3] = { 0, 1, 2 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0); glVertex2f(20, 20);
+    glColor3f(1, 0, 0); glVertex2f(30, 20);
+    glColor3f(1, 0, 0); glVertex2f(20, 30);
+    glColor4f(1, 0, 0, 1);                   /* after the last vertex */
+    glEnd();
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, idx);
+    glEndList();
+    fc_error(h, "list compiled");
+    glCallList(1);
+    glLineWidth(-1.0f);
+    fc_error(h, "glLineWidth(-1) while stuck (nothing reported)");
+    glEnd();
+    fc_error(h, "glEnd: glLineWidth's error");
+    glCallList(1);
+    (void)glIsEnabled(GL_BLEND);
+    glEnd();
+    fc_error(h, "glIsEnabled while stuck, glEnd");
+    glCallList(1);
+    glBlendColor(0, 1, 0.5f, 1);
+    glBlendFunc(GL_CONSTANT_COLOR, GL_ZERO);
+    glEnable(GL_BLEND);
+    glClearColor(0.25f, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLint filter = 0;
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &filter);
+    glEnd();
+    fc_error(h, "state calls while stuck, glEnd");
+    fc_get_float(h, "blend colour", GL_BLEND_COLOR, 4);
+    fc_get_float(h, "colour clear value", GL_COLOR_CLEAR_VALUE, 4);
+    fc_get_float(h, "line width", GL_LINE_WIDTH, 1);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 18);
+    glVertex2f(30, 22);
+    glVertex2f(14, 30);
+    glEnd();
+    fc_error(h, "a blended triangle");
+    glDisable(GL_BLEND);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDeleteLists(1, 1);
+    fc_capture(h);
+}
+
 /* A point whose window y lies beyond the int range of the 24.8 snap
  * (a viewport origin near INT_MIN): llvmpipe's y0 = snap(y) - 1 wraps
  * (lp_setup_point.c), nothing is drawn (the long libFuzzer campaign's
@@ -1899,5 +1961,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("prioritize_inside_compile", 32, 32, 1, prioritize_inside_compile),
     ROBUST("element_buffer_no_store", 32, 32, 1, element_buffer_no_store),
     ROBUST("point_huge_viewport_y", 32, 32, 1, point_huge_viewport_y),
+    ROBUST("stuck_list_entry_points", 32, 32, 1, stuck_list_entry_points),
     { 0 }
 };
