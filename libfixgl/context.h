@@ -994,6 +994,13 @@ struct fgl_context {
 
    /* ---- immediate mode ---- */
    GLenum BeginMode;          /* FGL_OUTSIDE_BEGIN_END when not inside */
+   /* Mesa's ctx->Exec is the BeginEnd dispatch table: set by a glBegin
+    * that executes (vbo_exec_Begin), cleared by glEnd (vbo_exec_End).  A
+    * vertex list's playback sets BeginMode alone (CurrentExecPrimitive,
+    * playback_copy_to_current), so the two part when a list ends
+    * mid-primitive (ORACLE-NOTES.md "Display lists stuck inside
+    * Begin/End") */
+   bool ExecBeginEnd;
    struct fgl_vbo Vbo;
    /* the draw module's line stipple counter (draw_pipe_stipple.c): reset
     * by the first line of a primitive, kept across draws otherwise */
@@ -1318,15 +1325,37 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
 /* Entry point prologue: fetch the current context; return if there is none. */
 #define GET_CURRENT_CONTEXT(C) struct fgl_context *C = fgl_current_context
 
-/* Commands not allowed between glBegin and glEnd raise INVALID_OPERATION. */
+/* Commands not allowed between glBegin and glEnd raise INVALID_OPERATION.
+ * Most of Mesa's have no check of their own: the BeginEnd dispatch table's
+ * generic_nop refuses them, and they are reached through ctx->Exec (the
+ * current dispatch outside display-list compilation, and the table a
+ * compiled command executes through), so they test ExecBeginEnd.  A list
+ * left mid-primitive (BeginMode inside, ExecBeginEnd not) lets them run
+ * (probe p_dlist_stuck_entry_points). */
 #define ASSERT_OUTSIDE_BEGIN_END_RET(ctx, ret)             \
+   do {                                                    \
+      if ((ctx)->ExecBeginEnd) {                           \
+         fgl_error(ctx, GL_INVALID_OPERATION);             \
+         return ret;                                       \
+      }                                                    \
+   } while (0)
+#define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
+
+/* Mesa's own check, ASSERT_OUTSIDE_BEGIN_END(_WITH_RETVAL) in the entry
+ * point (_mesa_inside_begin_end: CurrentExecPrimitive), which a list left
+ * mid-primitive also trips: glGetError, glGetString, glIsEnabled,
+ * glIsList, glGenLists, glDeleteLists, glListBase, glNewList, glRenderMode,
+ * glFinish, glFlush, glIsTexture, glAreTexturesResident, glIsBuffer,
+ * glMapBuffer, glUnmapBuffer, glIsQuery, glRect, and glBegin/glEnd
+ * themselves (probe p_dlist_stuck_entry_points). */
+#define ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, ret)         \
    do {                                                    \
       if (fgl_inside_begin_end(ctx)) {                     \
          fgl_error(ctx, GL_INVALID_OPERATION);             \
          return ret;                                       \
       }                                                    \
    } while (0)
-#define ASSERT_OUTSIDE_BEGIN_END(ctx) ASSERT_OUTSIDE_BEGIN_END_RET(ctx, )
+#define ASSERT_OUTSIDE_BEGIN_END_OWN(ctx) ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, )
 
 /* The same for the commands executed at once while compiling (not
  * compiled into lists) whose only check is the BeginEnd dispatch table's

@@ -1661,6 +1661,121 @@ static void end_after_list_mid_primitive(fc_h *h)
     fc_capture(h);
 }
 
+/* A list whose vertex list ends mid-primitive (the colour grows after the
+ * last vertex, then a glDrawElements) leaves the oracle's
+ * CurrentExecPrimitive inside glBegin/glEnd while its dispatch stays the
+ * outside one: entry points without a check of their own run (glLineWidth
+ * raises its GL_INVALID_VALUE, glBlendColor, glBlendFunc, glEnable,
+ * glClearColor and glClear take effect, glGetTexParameteriv answers),
+ * those with one refuse (glIsEnabled); glGetError reports nothing until
+ * the glEnd (fixgl refused every call; fuzzer seed 3000503; probe
+ * p_dlist_stuck_entry_points). */
+static void stuck_list_entry_points(fc_h *h)
+{
+    static const GLfloat v[6] = { 1, 1, 15, 1, 1, 15 };
+    static const GLuint idx[3] = { 0, 1, 2 };
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glVertexPointer(2, GL_FLOAT, 0, v);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glNewList(1, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0); glVertex2f(20, 20);
+    glColor3f(1, 0, 0); glVertex2f(30, 20);
+    glColor3f(1, 0, 0); glVertex2f(20, 30);
+    glColor4f(1, 0, 0, 1);                   /* after the last vertex */
+    glEnd();
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, idx);
+    glEndList();
+    fc_error(h, "list compiled");
+    glCallList(1);
+    glLineWidth(-1.0f);
+    fc_error(h, "glLineWidth(-1) while stuck (nothing reported)");
+    glEnd();
+    fc_error(h, "glEnd: glLineWidth's error");
+    glCallList(1);
+    (void)glIsEnabled(GL_BLEND);
+    glEnd();
+    fc_error(h, "glIsEnabled while stuck, glEnd");
+    glCallList(1);
+    glBlendColor(0, 1, 0.5f, 1);
+    glBlendFunc(GL_CONSTANT_COLOR, GL_ZERO);
+    glEnable(GL_BLEND);
+    glClearColor(0.25f, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLint filter = 0;
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &filter);
+    glEnd();
+    fc_error(h, "state calls while stuck, glEnd");
+    fc_get_float(h, "blend colour", GL_BLEND_COLOR, 4);
+    fc_get_float(h, "colour clear value", GL_COLOR_CLEAR_VALUE, 4);
+    fc_get_float(h, "line width", GL_LINE_WIDTH, 1);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 18);
+    glVertex2f(30, 22);
+    glVertex2f(14, 30);
+    glEnd();
+    fc_error(h, "a blended triangle");
+    glDisable(GL_BLEND);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDeleteLists(1, 1);
+    fc_capture(h);
+}
+
+/* GL_INDEX_SHIFT outside [-31, 31]: colour indices through glDrawPixels
+ * and glTexImage2D (GL_COLOR_INDEX, GL_UNSIGNED_INT) with shifts 40, -40,
+ * INT_MIN, 33 and -33 (and 8 / -8 as witnesses), mapped by 256-entry
+ * I_TO_R/G/B/A maps; the oracle's C shifts by the count modulo 32 as x86
+ * does (commit e01c896; the long libFuzzer campaign's UBSan report). */
+static void index_shift_huge(fc_h *h)
+{
+    static const GLint shifts[7] = { 8, -8, 40, -40, INT_MIN, 33, -33 };
+    static const GLuint idx[8] = {
+        0x12345678u, 0x9abcdef0u, 0x00000001u, 0x80000000u,
+        0x000000ffu, 0x0000ff00u, 0x00ff0000u, 0xff000000u,
+    };
+    GLfloat r[256], g[256], b[256], a[256];
+    for (int i = 0; i < 256; i++) {
+        r[i] = (GLfloat)i / 255.0f;
+        g[i] = (GLfloat)((i * 7) & 255) / 255.0f;
+        b[i] = (GLfloat)(255 - i) / 255.0f;
+        a[i] = 1.0f;
+    }
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 256, r);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 256, g);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 256, b);
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 256, a);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    for (int k = 0; k < 7; k++) {
+        glPixelTransferi(GL_INDEX_SHIFT, shifts[k]);
+        glPixelTransferi(GL_INDEX_OFFSET, k == 6 ? 3 : 0);
+        fc_error(h, "glPixelTransferi(GL_INDEX_SHIFT)");
+        fc_get_float(h, "index shift", GL_INDEX_SHIFT, 1);
+        glWindowPos2i(0, 2 * k);
+        glDrawPixels(8, 1, GL_COLOR_INDEX, GL_UNSIGNED_INT, idx);
+        fc_error(h, "glDrawPixels of indices");
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_INT, idx);
+        fc_error(h, "glTexImage2D of indices");
+        glEnable(GL_TEXTURE_2D);
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0); glVertex2f(16, (GLfloat)(2 * k));
+        glTexCoord2f(1, 0); glVertex2f(32, (GLfloat)(2 * k));
+        glTexCoord2f(1, 1); glVertex2f(32, (GLfloat)(2 * k + 2));
+        glTexCoord2f(0, 1); glVertex2f(16, (GLfloat)(2 * k + 2));
+        glEnd();
+        glDisable(GL_TEXTURE_2D);
+        fc_error(h, "the textured quad");
+    }
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+    fc_capture(h);
+}
+
 /* A point whose window y lies beyond the int range of the 24.8 snap
  * (a viewport origin near INT_MIN): llvmpipe's y0 = snap(y) - 1 wraps
  * (lp_setup_point.c), nothing is drawn (the long libFuzzer campaign's
@@ -1899,5 +2014,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("prioritize_inside_compile", 32, 32, 1, prioritize_inside_compile),
     ROBUST("element_buffer_no_store", 32, 32, 1, element_buffer_no_store),
     ROBUST("point_huge_viewport_y", 32, 32, 1, point_huge_viewport_y),
+    ROBUST("stuck_list_entry_points", 32, 32, 1, stuck_list_entry_points),
+    ROBUST("index_shift_huge", 32, 16, 1, index_shift_huge),
     { 0 }
 };

@@ -62,6 +62,7 @@ void fgl_exec_begin(struct fgl_context *ctx, GLenum mode)
    fgl_update_state(ctx);
    fgl_vbo_begin(ctx, mode);
    ctx->BeginMode = mode;
+   ctx->ExecBeginEnd = true;
 }
 
 void fgl_exec_end(struct fgl_context *ctx)
@@ -70,6 +71,7 @@ void fgl_exec_end(struct fgl_context *ctx)
       fgl_error(ctx, GL_INVALID_OPERATION);
       return;
    }
+   ctx->ExecBeginEnd = false;
    fgl_vbo_end(ctx);
 }
 
@@ -349,7 +351,7 @@ static void rectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    glBegin(GL_QUADS);
    glVertex2f(x1, y1);
    glVertex2f(x2, y1);

@@ -330,7 +330,7 @@ GLboolean GLAPIENTRY glIsBuffer(GLuint buffer)
    if (!ctx)
       return GL_FALSE;
    ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, GL_FALSE);
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_FALSE);
    return lookup(ctx, buffer, NULL) != NULL;
 }
 
@@ -524,7 +524,7 @@ void *GLAPIENTRY glMapBuffer(GLenum target, GLenum access)
    struct fgl_buffer_object *obj = get_buffer(ctx, target);
    if (!obj)
       return NULL;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, NULL);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, NULL);
    if (obj->Size == 0 || (flags & ~obj->StorageFlags) || obj->MapPointer) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return NULL;
@@ -543,7 +543,7 @@ GLboolean GLAPIENTRY glUnmapBuffer(GLenum target)
    struct fgl_buffer_object *obj = get_buffer(ctx, target);
    if (!obj)
       return GL_FALSE;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_FALSE);
    if (!obj->MapPointer) {
       fgl_error(ctx, GL_INVALID_OPERATION);
       return GL_FALSE;

@@ -2923,7 +2923,7 @@ void GLAPIENTRY glNewList(GLuint name, GLenum mode)
       return;
    }
    fgl_flush_current(ctx);
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    if (name == 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -3072,7 +3072,7 @@ void GLAPIENTRY glListBase(GLuint base)
       return;
    FGL_SAVE(ctx, ListBase, base);
    fgl_flush_vertices(ctx);
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    ctx->List.ListBase = base;
 }
 
@@ -3137,7 +3137,7 @@ GLuint GLAPIENTRY glGenLists(GLsizei range)
    if (!ctx)
       return 0;
    fgl_flush_vertices(ctx);
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, 0);
    if (range < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return 0;
@@ -3161,7 +3161,7 @@ void GLAPIENTRY glDeleteLists(GLuint list, GLsizei range)
    if (!ctx)
       return;
    fgl_flush_vertices(ctx);
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    if (range < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -3191,7 +3191,7 @@ GLboolean GLAPIENTRY glIsList(GLuint list)
    if (!ctx)
       return GL_FALSE;
    fgl_flush_vertices(ctx);
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_FALSE);
    pthread_mutex_lock(&ctx->ListState->shared->lock);
    const bool found = lookup_list(ctx, list) != NULL;
    pthread_mutex_unlock(&ctx->ListState->shared->lock);

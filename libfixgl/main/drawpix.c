@@ -400,10 +400,7 @@ void fgl_exec_list_bitmap(struct fgl_context *ctx, GLsizei width, GLsizei height
                           GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
                           const uint8_t *tex)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    FGL_FLUSH_VERTICES(ctx, 0);
    bitmap(ctx, width, height, xorig, yorig, xmove, ymove, NULL, tex);
 }
@@ -1066,10 +1063,7 @@ void fgl_exec_list_drawpixels(struct fgl_context *ctx, GLsizei width, GLsizei he
 {
    /* glDrawPixels is not allowed between glBegin and glEnd there either
     * (a list called inside them) */
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    const struct fgl_pixelstore saved = ctx->Unpack;
    ctx->Unpack = (struct fgl_pixelstore){ .Alignment = 1 };
    drawpixels(ctx, width, height, format, type, pixels);

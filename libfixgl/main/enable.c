@@ -287,7 +287,7 @@ GLboolean GLAPIENTRY glIsEnabled(GLenum cap)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return GL_FALSE;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_FALSE);
    unsigned dirty, bit;
    if (clip_plane_cap(cap, &bit))
       return (ctx->Transform.ClipPlanesEnabled & bit) ? GL_TRUE : GL_FALSE;

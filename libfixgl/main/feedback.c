@@ -280,7 +280,7 @@ GLint GLAPIENTRY glRenderMode(GLenum mode)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return 0;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, 0);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, 0);
    /* [S: feedback.c:_mesa_RenderMode] the batched vertices are drawn in
     * the old mode; the draw pipeline's stages change with the mode */
    FGL_FLUSH_VERTICES(ctx, FGL_NEW_RENDERMODE);

@@ -729,7 +729,7 @@ GLenum GLAPIENTRY glGetError(void)
    if (!ctx)
       return GL_NO_ERROR;
    /* inside glBegin/glEnd the call itself is an error and reports nothing */
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_NO_ERROR);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_NO_ERROR);
    const GLenum e = ctx->ErrorValue;
    ctx->ErrorValue = GL_NO_ERROR;
    return e;
@@ -740,7 +740,7 @@ const GLubyte *GLAPIENTRY glGetString(GLenum name)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return NULL;
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, NULL);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, NULL);
    switch (name) {
    case GL_VENDOR:
       return (const GLubyte *)"fixgl";

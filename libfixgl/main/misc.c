@@ -25,7 +25,7 @@ void GLAPIENTRY glFlush(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    fgl_flush_front(ctx);
    fgl_query_flushed(ctx);   /* the ended queries are available */
 }
@@ -35,7 +35,7 @@ void GLAPIENTRY glFinish(void)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   ASSERT_OUTSIDE_BEGIN_END(ctx);
+   ASSERT_OUTSIDE_BEGIN_END_OWN(ctx);
    fgl_flush_front(ctx);
    fgl_query_flushed(ctx);   /* the ended queries are available */
 }

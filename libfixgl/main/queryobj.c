@@ -174,7 +174,7 @@ GLboolean GLAPIENTRY glIsQuery(GLuint id)
    if (!ctx)
       return GL_FALSE;
    ASSERT_OUTSIDE_BEGIN_END_DISPATCH_RET(ctx, GL_FALSE);
-   ASSERT_OUTSIDE_BEGIN_END_RET(ctx, GL_FALSE);
+   ASSERT_OUTSIDE_BEGIN_END_OWN_RET(ctx, GL_FALSE);
    const struct fgl_query_object *q = lookup(ctx, id);
    return q && q->EverBound;
 }

@@ -188,10 +188,7 @@ static void set_combiner_scale(struct fgl_context *ctx, struct fgl_texture_unit 
 /* [S: texenv.c:_mesa_texenvfv_indexed] */
 static void tex_envfv(struct fgl_context *ctx, GLenum target, GLenum pname, const GLfloat *param)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    const unsigned unit = ctx->Texture.CurrentUnit;
    /* units 8..191: GL_COORD_REPLACE is GL_INVALID_OPERATION (its limit is
     * MaxTextureCoordUnits), GL_TEXTURE_ENV returns before any check (no

@@ -56,10 +56,7 @@ static void gen_flush(struct fgl_context *ctx)
 /* [S: texgen.c:texgenfv] */
 static void tex_genfv(struct fgl_context *ctx, GLenum coord, GLenum pname, const GLfloat *params)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    /* [S: texgen.c:get_texgen] units past MaxTextureCoordUnits first */
    if (ctx->Texture.CurrentUnit >= FGL_MAX_TEXTURE_UNITS) {
       fgl_error(ctx, GL_INVALID_OPERATION);

@@ -313,10 +313,7 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
    if (!ctx)
       return;
    FGL_SAVE(ctx, BindTexture, target, texture);
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    const int index = target_index(target);
    if (index < 0) {
       fgl_error(ctx, GL_INVALID_ENUM);
@@ -364,10 +361,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
    GET_CURRENT_CONTEXT(ctx);
    if (!ctx)
       return;
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    fgl_flush_vertices(ctx);
    fgl_scene_flush(ctx);   /* the scene may sample the images */
    if (n < 0) {
@@ -461,10 +455,7 @@ void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures,
       if (!fgl_save_prioritize_textures(ctx, n, textures, priorities))
          return;
    }
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    if (n < 0) {
       fgl_error(ctx, GL_INVALID_VALUE);
       return;
@@ -679,10 +670,7 @@ static bool int_pname(GLenum pname)
 static void tex_parameterfv(struct fgl_context *ctx, GLenum target, GLenum pname,
                             const GLfloat *params, bool scalar)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    struct fgl_texture_object *t = param_object(ctx, target);
    if (!t)
       return;
@@ -722,10 +710,7 @@ static void tex_parameterfv(struct fgl_context *ctx, GLenum target, GLenum pname
 static void tex_parameteriv(struct fgl_context *ctx, GLenum target, GLenum pname,
                             const GLint *params, bool scalar)
 {
-   if (fgl_inside_begin_end(ctx)) {
-      fgl_error(ctx, GL_INVALID_OPERATION);
-      return;
-   }
+   ASSERT_OUTSIDE_BEGIN_END(ctx);
    struct fgl_texture_object *t = param_object(ctx, target);
    if (!t)
       return;
