@@ -294,11 +294,7 @@ int main(int argc, char **argv)
    GLXContext ctx;
    Window win = config_window_current(dpy, c, W, H, &vi, &ctx);
    print_renderer();
-   glViewport(0, 0, W, H);
-   glMatrixMode(GL_PROJECTION);
-   glLoadIdentity();
-   glOrtho(0, W, 0, H, -1, 1);
-   glMatrixMode(GL_MODELVIEW);
+   pixel_view(W, H);
    glDrawBuffer(GL_BACK);
    glReadBuffer(GL_BACK);
    /* a first draw and flush: the scenes that follow may take the linear
