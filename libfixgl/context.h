@@ -1123,6 +1123,13 @@ struct fgl_context {
    } _SceneTex[32];
    unsigned _SceneTexCount, _SceneTexEpoch;
    bool _SceneTexFull;
+   /* llvmpipe's linear path (ORACLE-NOTES.md "GLX linear rectangles",
+    * probe glx-linlatch): _LinPermit, what the last draw validated (its
+    * framebuffer could take the path: fgl_lin_capable); _LinScene, the
+    * oracle's open scene's latch of it, taken by the scene's first
+    * command (FGL_LIN_NONE: no command since the oracle's last flush) */
+   bool _LinPermit;
+   uint8_t _LinScene;
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
    int _CurrentTexMaxLevel[FGL_MAX_TEXTURE_UNITS];   /* fgl_texture_complete's */
@@ -1259,6 +1266,43 @@ static inline void fgl_vpcut_invalidate(struct fgl_context *ctx)
    ctx->_VpCutDirty = true;
 }
 void fgl_vpcut_decide(struct fgl_context *ctx, bool aa);
+/* The latch of llvmpipe's linear path (ORACLE-NOTES.md "GLX linear
+ * rectangles"): a scene permits the path when the draw validated last
+ * before its first command could take it; a scene begun by a
+ * whole-buffer clear before any draw of the context does not.
+ * fgl_lin_draw: a draw (primitives, a clear quad, a pixel rectangle)
+ * validates the current framebuffer, then is a command of the scene;
+ * fgl_lin_command: a whole-buffer clear, a command without validation;
+ * fgl_lin_flushed: the oracle flushed its scene (glFlush, glFinish, a
+ * swap, a read-back); fgl_lin_permitted: the open scene permits it. */
+enum { FGL_LIN_NONE, FGL_LIN_ROUND, FGL_LIN_LINEAR };
+static inline bool fgl_lin_capable(const struct fgl_context *ctx)
+{
+   /* check_linear_rasterizer [S: llvmpipe/lp_state_derived.c]: one
+    * B8G8R8A8/X8 colour buffer (fixgl's GLX drawables: Srgb), no depth
+    * or stencil buffer */
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   return fb && fb->Srgb && fb->DepthBits == 0 && fb->StencilBits == 0 && !fb->DrawBoth &&
+          ctx->Color.DrawBuffer != GL_NONE;
+}
+static inline void fgl_lin_command(struct fgl_context *ctx)
+{
+   if (ctx->_LinScene == FGL_LIN_NONE)
+      ctx->_LinScene = ctx->_LinPermit ? FGL_LIN_LINEAR : FGL_LIN_ROUND;
+}
+static inline void fgl_lin_draw(struct fgl_context *ctx)
+{
+   ctx->_LinPermit = fgl_lin_capable(ctx);
+   fgl_lin_command(ctx);
+}
+static inline void fgl_lin_flushed(struct fgl_context *ctx)
+{
+   ctx->_LinScene = FGL_LIN_NONE;
+}
+static inline bool fgl_lin_permitted(const struct fgl_context *ctx)
+{
+   return ctx->_LinScene == FGL_LIN_LINEAR;
+}
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2);

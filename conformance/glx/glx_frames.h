@@ -162,6 +162,35 @@ static inline void print_read_pixel(const char *what, int x, int y)
 /* A mapped w x h window of config c, made current with a new context of
  * that config (the program exits when there is none); the caller frees
  * *vip, the window and *ctxp. */
+/* A projection of window coordinates, one unit a pixel, origin lower
+ * left, over the whole w x h drawable. */
+static inline void pixel_view(int w, int h)
+{
+   glViewport(0, 0, w, h);
+   glMatrixMode(GL_PROJECTION);
+   glLoadIdentity();
+   glOrtho(0, w, 0, h, -1, 1);
+   glMatrixMode(GL_MODELVIEW);
+}
+
+/* The probes of llvmpipe's linear path (linrect.c, linlatch.c): a
+ * whole-buffer clear to 0.3, and a clear of colour c scissored to
+ * (0, 0, 40, 40) (a clear quad, in the tile of pixel (10, 10)). */
+static inline void whole_clear(void)
+{
+   glClearColor(0.3f, 0.3f, 0.3f, 0.3f);
+   glClear(GL_COLOR_BUFFER_BIT);
+}
+
+static inline void scissored_clear_of(const float c[4])
+{
+   glEnable(GL_SCISSOR_TEST);
+   glScissor(0, 0, 40, 40);
+   glClearColor(c[0], c[1], c[2], c[3]);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glDisable(GL_SCISSOR_TEST);
+}
+
 static inline Window config_window_current(Display *dpy, GLXFBConfig c, int w, int h,
                                            XVisualInfo **vip, GLXContext *ctxp)
 {

@@ -207,19 +207,9 @@ static void tri_at(int x, int y)
    glEnd();
 }
 
-static void whole_clear(void)
-{
-   glClearColor(0.3f, 0.3f, 0.3f, 0.3f);
-   glClear(GL_COLOR_BUFFER_BIT);
-}
-
 static void scissored_clear(void)
 {
-   glEnable(GL_SCISSOR_TEST);
-   glScissor(0, 0, 40, 40);
-   glClearColor(C[0], C[1], C[2], C[3]);
-   glClear(GL_COLOR_BUFFER_BIT);
-   glDisable(GL_SCISSOR_TEST);
+   scissored_clear_of(C);
 }
 
 static void rect(void)
@@ -324,15 +314,6 @@ static void scenes(void)
 
 static bool probe;
 
-static void setup_view(int w, int h)
-{
-   glViewport(0, 0, w, h);
-   glMatrixMode(GL_PROJECTION);
-   glLoadIdentity();
-   glOrtho(0, w, 0, h, -1, 1);
-   glMatrixMode(GL_MODELVIEW);
-}
-
 static GLXFBConfig config_of(int alpha, int depth, int db)
 {
    int attrs[] = { GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, alpha,
@@ -368,7 +349,7 @@ static void window_case(int alpha, int depth)
    GLXContext ctx;
    Window win = config_window_current(dpy, c, W, H, &vi, &ctx);
    print_renderer();
-   setup_view(W, H);
+   pixel_view(W, H);
    glDrawBuffer(GL_BACK);
    glReadBuffer(GL_BACK);
    bands();

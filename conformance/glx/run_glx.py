@@ -14,6 +14,11 @@ against the same programs on Mesa's libGL (llvmpipe), under Xvfb.
         it has drawn; the images are identical and show the three gears.
         Then glxgears -info on fixgl with the clock running: it reports
         fixgl and its frames move.
+    run_glx.py oracle PROGRAM [ARGS...]
+        PROGRAM runs on Mesa's libGL alone (a fresh Xvfb): a probe that
+        checks the oracle against rules of ORACLE-NOTES.md that fixgl does
+        not model yet (linrules.c); its renderer must be llvmpipe and it
+        must exit 0.
     run_glx.py glxinfo LIBGL_DIR
         glxinfo on fixgl prints fixgl's renderer, version and extensions.
     run_glx.py configs LIBGL_DIR OUT_DIR PROGRAM
@@ -192,6 +197,18 @@ def cmd_compare(libgl_dir, out_dir, name, program):
     compare_images(name, paths["mesa"], paths["fixgl"])
 
 
+def cmd_oracle(program):
+    if not os.path.exists(program[0]):
+        raise Fail(f"{program[0]} is missing")
+    xvfb, display = start_xvfb()
+    try:
+        out = run(program, env_for("mesa", display, None), timeout=180)
+    finally:
+        stop(xvfb)
+    check_renderer(out, "mesa", os.path.basename(program[0]))
+    print(out, end="")
+
+
 def grab_stable(grab, env, path, deadline):
     """GRAB's image of the window once two reads 0.3 s apart agree."""
     last = None
@@ -363,6 +380,8 @@ def main(argv):
             cmd_compare(argv[2], argv[3], argv[4], argv[5:])
         elif len(argv) == 6 and argv[1] == "glxgears":
             cmd_glxgears(*argv[2:])
+        elif len(argv) >= 3 and argv[1] == "oracle":
+            cmd_oracle(argv[2:])
         elif len(argv) == 3 and argv[1] == "glxinfo":
             cmd_glxinfo(argv[2])
         elif len(argv) == 5 and argv[1] == "configs":

@@ -381,6 +381,7 @@ void GLAPIENTRY glAccum(GLenum op, GLfloat value)
       return;
    fgl_scene_flush(ctx);   /* reads or writes the colour buffer */
    fgl_vpcut_invalidate(ctx);   /* the oracle's map: a flush */
+   fgl_lin_flushed(ctx);
 
    /* [S: main/accum.c:accum]: ADD of 0, MULT by 1 and ACCUM of 0 do
     * nothing (a MULT by 1 would otherwise be exact anyway) */

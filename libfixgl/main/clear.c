@@ -109,17 +109,22 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
  * llvmpipe draws it through its linear path where that is allowed, a
  * B8G8R8A8 / B8G8R8X8 colour buffer (the oracle's GLX drawables, fb->Srgb:
  * their formats' linear views), no depth and no stencil buffer, one
- * colour buffer bound (not both buffers), and every channel of the
- * (unclamped) clear colour in [0, 1]; the path takes each channel to a
- * byte as trunc(c * 256 - c) in float arithmetic (probed, 21,504
- * values near every k/255 and 4,084 of a quarter-step ramp: exact),
- * where the fragment stage rounds c * 255.  fixgl gives the quad the
- * colour byte / 255, which the fragment stage takes back to that byte.
- * Chosen once per glClear; OSMesa buffers round (probed). */
-static const float *quad_color(const struct fgl_framebuffer *fb, const float c[4],
-                               float linear[4])
+ * colour buffer bound (not both buffers), every channel of the
+ * (unclamped) clear colour in [0, 1], and the oracle's scene permits the
+ * path (fgl_lin_permitted: not a scene begun by a whole-buffer clear
+ * before the context's first draw; ORACLE-NOTES.md "GLX linear
+ * rectangles"); the path takes each channel to a byte as
+ * trunc(c * 256 - c) in float arithmetic (probed, 21,504 values near
+ * every k/255 and 4,084 of a quarter-step ramp: exact), where the
+ * fragment stage rounds c * 255.  fixgl gives the quad the colour
+ * byte / 255, which the fragment stage takes back to that byte.  Chosen
+ * once per glClear; OSMesa buffers round (probed). */
+static const float *quad_color(const struct fgl_context *ctx, float linear[4])
 {
-   if (!fb->Srgb || fb->DepthBits != 0 || fb->StencilBits != 0 || fb->DrawBoth)
+   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
+   const float *c = ctx->Color.ClearColor;
+   if (!fb->Srgb || fb->DepthBits != 0 || fb->StencilBits != 0 || fb->DrawBoth ||
+       !fgl_lin_permitted(ctx))
       return c;
    for (int i = 0; i < 4; i++)
       if (!(c[i] >= 0.0f && c[i] <= 1.0f))
@@ -198,6 +203,11 @@ void GLAPIENTRY glClear(GLbitfield mask)
       depth_clear = stencil_clear = false;
    }
 
+   /* a whole-buffer clear is a command of the oracle's scene, without a
+    * draw's validation (a scene it begins before any draw does not permit
+    * the linear path) */
+   if (color_clear || depth_clear || stencil_clear)
+      fgl_lin_command(ctx);
    /* a wide colour buffer (OSMesa GL_UNSIGNED_SHORT, GL_FLOAT) is cleared
     * at once, after what the scene holds, with the clear colour packed as
     * st_Clear packs it (r_clear_wide_rect), its RGBA8 image beside it */
@@ -226,9 +236,9 @@ void GLAPIENTRY glClear(GLbitfield mask)
    if (color_quad || depth_quad || stencil_quad) {
       /* drawn at once, after what the scene holds */
       fgl_scene_flush(ctx);
+      fgl_lin_draw(ctx);   /* the quad is a draw */
       float linear[4];
-      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad,
-                      quad_color(fb, ctx->Color.ClearColor, linear));
+      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad, quad_color(ctx, linear));
    }
    /* the accumulation buffer last, in software [S: state_tracker/
     * st_cb_clear.c:st_Clear; main/accum.c:_mesa_clear_accum_buffer]; only

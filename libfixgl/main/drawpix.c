@@ -209,6 +209,7 @@ static void draw_bitmap_quad(struct fgl_context *ctx, const struct r_state *rs,
    /* the quad's viewport and rasterizer: the draw regions are computed
     * again after it (probe p_vpcut_state) */
    fgl_vpcut_invalidate(ctx);
+   fgl_lin_draw(ctx);
    struct r_pixel_image img = {
       .kind = R_PIX_BITMAP, .width = w, .height = h, .mask = texels,
    };
@@ -957,6 +958,7 @@ static void draw_pixels(struct fgl_context *ctx, int x, int y, int width, int he
 {
    fgl_scene_flush(ctx);   /* drawn now, after what the scene holds */
    fgl_vpcut_invalidate(ctx);   /* the quad's viewport (probe p_vpcut_state) */
+   fgl_lin_draw(ctx);
    struct fgl_framebuffer *fb = ctx->DrawBuffer;
    struct fgl_pixelstore unpack = ctx->Unpack;
 

@@ -49,10 +49,12 @@ void fgl_bind_buffer_name(struct fgl_context *ctx, GLenum target, GLuint name);
 /* main/queryobj.c (GL 1.5 occlusion queries) */
 void fgl_free_queries(struct fgl_context *ctx);
 /* the oracle flushed its scene (glFlush, glFinish, a read-back): every
- * query ended before is available */
+ * query ended before is available, and the next command begins another
+ * scene (fgl_lin_flushed) */
 static inline void fgl_query_flushed(struct fgl_context *ctx)
 {
    ctx->Query.FlushEpoch++;
+   fgl_lin_flushed(ctx);
 }
 
 /* main/begin_end.c (GL_CURRENT_BIT) */

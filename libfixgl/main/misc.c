@@ -18,6 +18,7 @@ void fgl_flush_front(struct fgl_context *ctx)
    /* [S: lp_setup.c:lp_setup_reset] a flushed scene leaves all of
     * llvmpipe's setup state dirty (probe p_vpcut_state) */
    fgl_vpcut_invalidate(ctx);
+   fgl_lin_flushed(ctx);   /* also by a swap or a change of binding */
 }
 
 void GLAPIENTRY glFlush(void)

@@ -1864,6 +1864,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
    if (!fb || !fb->Color)
       return;
    fgl_vpcut_invalidate(ctx);   /* the oracle reads its buffer: a flush */
+   fgl_lin_flushed(ctx);
    const uint8_t *color = fgl_read_color(ctx);
    /* _mesa_clip_to_region */
    if (x < 0) {

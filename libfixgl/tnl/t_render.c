@@ -461,6 +461,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    fgl_update_state(ctx);
    if (!ctx->DrawBuffer)
       return;
+   fgl_lin_draw(ctx);
    fgl_vpcut_validate(ctx, true);
    fgl_tex_note_scene_use(ctx);
    if (ctx->Color.DrawBuffer != GL_NONE)
