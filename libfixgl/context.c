@@ -2,6 +2,7 @@
  * Context lifetime, the thread-local current context and GL errors.
  */
 #include "context.h"
+#include "raster/r_kernel.h"
 #include "raster/r_pool.h"
 
 #include <stdlib.h>
@@ -143,6 +144,7 @@ struct fgl_context *fgl_context_create(struct fgl_context *share)
     * (raster/r_kernel.h) */
    const char *kernels = getenv("FIXGL_KERNELS");
    ctx->_Raster.reference_kernels = kernels && strcmp(kernels, "reference") == 0;
+   ctx->_Raster.kernel_isa = r_kernel_isa(kernels);
    ctx->_NumThreads = fgl_num_threads();
    r_pool_ref();
    /* the state objects of the initial state, so that every r_state

@@ -127,4 +127,20 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color);
  * r_block_choose_tri_tex asks when units past the first are walked. */
 r_tri_kernel r_block_choose_tri_mtex(const struct r_state *rs, bool flat_color);
 
+/* The same four built again with AVX-512 VL/BW/DQ enabled as well
+ * (libfixgl/meson.build: FGL_HAVE_AVX512_KERNELS): the same sources and
+ * intrinsics on 256-bit vectors, so the same bytes; called only where
+ * r_kernel_isa says R_ISA_AVX512. */
+r_tri_kernel r_block_choose_tri_avx512(const struct r_state *rs, bool flat_color);
+r_tri_kernel r_block_choose_tri_phong_avx512(const struct r_state *rs, bool flat_color);
+r_tri_kernel r_block_choose_tri_tex_avx512(const struct r_state *rs, bool flat_color);
+r_tri_kernel r_block_choose_tri_mtex_avx512(const struct r_state *rs, bool flat_color);
+
+/* The fast kernels a context uses (r_state.kernel_isa), from the CPU, the
+ * OS (XCR0's AVX, opmask and ZMM state bits) and FIXGL_KERNELS (kernels:
+ * its value or NULL): "reference" the reference kernels, "avx2" the AVX2
+ * build even on an AVX-512 CPU, otherwise the best this CPU runs. */
+enum r_isa { R_ISA_NONE, R_ISA_AVX2, R_ISA_AVX512 };
+enum r_isa r_kernel_isa(const char *kernels);
+
 #endif

@@ -728,6 +728,10 @@ struct r_state {
     * only */
    bool full_ops;
    bool reference_kernels;       /* FIXGL_KERNELS=reference: no others */
+   /* which build of the fast kernels runs (enum r_isa, r_kernel_isa in
+    * r_kernel.h): R_ISA_NONE under FIXGL_KERNELS=reference or on a CPU
+    * without AVX2 */
+   uint8_t kernel_isa;
    /* triangles' block kernels (r_kernel.h), [colour flat]; NULL means the
     * reference kernels */
    r_tri_kernel tri_kernel[2];

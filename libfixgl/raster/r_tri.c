@@ -23,6 +23,8 @@
 #include <limits.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -1084,6 +1086,48 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
    rasterize_ccw(rs, v, X, Y, back, phong_back);
 }
 
+#ifdef FGL_HAVE_BLOCK_KERNELS
+/* the block kernel of rs->kernel_isa's build (not R_ISA_NONE) */
+static r_tri_kernel choose_block_kernel(const struct r_state *rs, bool flat)
+{
+#ifdef FGL_HAVE_AVX512_KERNELS
+   if (rs->kernel_isa == R_ISA_AVX512)
+      return rs->fs->phong ? r_block_choose_tri_phong_avx512(rs, flat)
+                           : r_block_choose_tri_avx512(rs, flat);
+#endif
+   return rs->fs->phong ? r_block_choose_tri_phong(rs, flat) : r_block_choose_tri(rs, flat);
+}
+#endif
+
+enum r_isa r_kernel_isa(const char *kernels)
+{
+   enum r_isa isa = R_ISA_NONE;
+#ifdef FGL_HAVE_BLOCK_KERNELS
+   if (kernels && strcmp(kernels, "reference") == 0)
+      return R_ISA_NONE;
+   __builtin_cpu_init();
+   if (!(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
+      return R_ISA_NONE;
+   isa = R_ISA_AVX2;
+#ifdef FGL_HAVE_AVX512_KERNELS
+   if (kernels && strcmp(kernels, "avx2") == 0)
+      return isa;
+   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+       __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq")) {
+      /* XCR0 (the AVX2 check above implies OSXSAVE): SSE, AVX, opmask,
+       * ZMM0-15 upper halves and ZMM16-31 state enabled by the OS */
+      uint32_t lo, hi;
+      __asm__("xgetbv" : "=a"(lo), "=d"(hi) : "c"(0));
+      if ((lo & 0xe6u) == 0xe6u)
+         isa = R_ISA_AVX512;
+   }
+#endif
+#else
+   (void)kernels;
+#endif
+   return isa;
+}
+
 void r_choose_kernels(struct r_state *rs)
 {
    rs->full_ops = rs->dsa->alpha_test || rs->dsa->stencil_test || rs->blend->enable ||
@@ -1092,12 +1136,10 @@ void r_choose_kernels(struct r_state *rs)
    rs->line_kernel[0] = rs->line_kernel[1] = NULL;
 #ifdef FGL_HAVE_BLOCK_KERNELS
    /* a wide target: the reference kernels (r_fragment_ops) only */
-   if (rs->reference_kernels || rs->fb->wide ||
-       !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")))
+   if (rs->kernel_isa == R_ISA_NONE || rs->fb->wide)
       return;
    for (int flat = 0; flat < 2; flat++)
-      rs->tri_kernel[flat] = rs->fs->phong ? r_block_choose_tri_phong(rs, flat)
-                                       : r_block_choose_tri(rs, flat);
+      rs->tri_kernel[flat] = choose_block_kernel(rs, flat);
    /* lines and points: the same choice without the polygon stipple (a
     * kernel reads the state it is called with, never the stipple) */
    if (!rs->rast->stipple) {
@@ -1110,7 +1152,6 @@ void r_choose_kernels(struct r_state *rs)
    struct r_state ls = *rs;
    ls.rast = &rast;
    for (int flat = 0; flat < 2; flat++)
-      rs->line_kernel[flat] = rs->fs->phong ? r_block_choose_tri_phong(&ls, flat)
-                                            : r_block_choose_tri(&ls, flat);
+      rs->line_kernel[flat] = choose_block_kernel(&ls, flat);
 #endif
 }

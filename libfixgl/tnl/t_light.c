@@ -22,6 +22,7 @@
  * are lit here, as under GL_SMOOTH).
  */
 #include "tnl/t_light.h"
+#include "raster/r_kernel.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -390,6 +391,12 @@ static void light_shade8(const struct fgl_context *ctx, struct t_light_batch *lb
 {
 #ifdef FGL_HAVE_BLOCK_KERNELS
    /* the same in registers: gathered inputs, the lighting inline */
+#ifdef FGL_HAVE_AVX512_KERNELS
+   if (ctx->_Raster.kernel_isa == R_ISA_AVX512) {
+      t_light_shade8_avx512(ctx, lb, in, first, n, out);
+      return;
+   }
+#endif
    t_light_shade8_avx2(ctx, lb, in, first, n, out);
 #else
    const struct m_shade_env *env = &lb->env;

@@ -100,6 +100,10 @@ void t_light_run(const struct fgl_context *ctx, struct t_light_batch *lb,
 void t_light_shade8_avx2(const struct fgl_context *ctx, const struct t_light_batch *lb,
                          const struct fgl_vertex_view *in, unsigned first, unsigned n,
                          struct t_vertex *out);
+/* the same built with AVX-512 VL/BW/DQ as well (r_kernel_isa R_ISA_AVX512) */
+void t_light_shade8_avx512(const struct fgl_context *ctx, const struct t_light_batch *lb,
+                           const struct fgl_vertex_view *in, unsigned first, unsigned n,
+                           struct t_vertex *out);
 #endif
 
 /* LIT's pow of n argument pairs, out[k] = m_gallivm_pow(x[k], y[k]),

@@ -127,6 +127,10 @@ bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_vie
 void t_positions8_avx2(const float *m, const float *scale, const float *translate,
                        const float *pos, unsigned pstride, unsigned n, struct t_vertex *out);
 bool t_clip_any8_avx2(const float *m, const float *pos, unsigned pstride, unsigned n);
+/* the same built with AVX-512 VL/BW/DQ as well (r_kernel_isa R_ISA_AVX512) */
+void t_positions8_avx512(const float *m, const float *scale, const float *translate,
+                         const float *pos, unsigned pstride, unsigned n, struct t_vertex *out);
+bool t_clip_any8_avx512(const float *m, const float *pos, unsigned pstride, unsigned n);
 #endif
 /* Lighting (t_light.c): see tnl/t_light.h. */
 

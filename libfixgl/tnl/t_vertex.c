@@ -7,6 +7,7 @@
  * clamped to [0,1], and the fog coordinate (t_fog.c).
  */
 #include "tnl/t_pipeline.h"
+#include "raster/r_kernel.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -83,8 +84,14 @@ static inline void transform_positions(const struct fgl_context *ctx,
 
 #ifdef FGL_HAVE_BLOCK_KERNELS
    if (simd) {
-      t_positions8_avx2(m, s, t, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n,
-                        out + first);
+#ifdef FGL_HAVE_AVX512_KERNELS
+      if (ctx->_Raster.kernel_isa == R_ISA_AVX512)
+         t_positions8_avx512(m, s, t, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n,
+                             out + first);
+      else
+#endif
+         t_positions8_avx2(m, s, t, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n,
+                           out + first);
       const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
       if (!clear_bytes && !planes && lit)
          return;
@@ -129,8 +136,13 @@ bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_vie
    const float *m = ctx->_ModelProjectMatrix.m;
    const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
 #ifdef FGL_HAVE_BLOCK_KERNELS
-   if (!planes && n && t_vertex_simd(ctx))
+   if (!planes && n && t_vertex_simd(ctx)) {
+#ifdef FGL_HAVE_AVX512_KERNELS
+      if (ctx->_Raster.kernel_isa == R_ISA_AVX512)
+         return t_clip_any8_avx512(m, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n);
+#endif
       return t_clip_any8_avx2(m, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n);
+   }
 #endif
    for (unsigned i = first; i < first + n; i++) {
       float clip[4];

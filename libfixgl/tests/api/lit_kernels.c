@@ -6,8 +6,10 @@
  * usual (on an AVX2 + FMA CPU the block kernels, raster/r_block_*_avx2.c,
  * and the 8-lane lighting), the others after
  * setenv("FIXGL_KERNELS", "reference"), which a context reads when it is
- * created (context.c): the scalar reference kernels for everything.  The
- * colour buffer and the depth buffer (16 and 24 bits) must be the same
+ * created (context.c): the scalar reference kernels for everything; a
+ * third set after setenv("FIXGL_KERNELS", "avx2"): the AVX2 build of the
+ * kernels where the CPU runs their AVX-512 build (which the first set then
+ * uses), the same kernels elsewhere.  The colour buffer and the depth buffer (16 and 24 bits) must be the same
  * bytes.
  *
  * The scenes: random lights (directional, point, spot, attenuated; one to
@@ -251,7 +253,7 @@ static void draw_scene(uint32_t seed)
   glFinish();
 }
 
-static unsigned char color[2][W * H * 4];
+static unsigned char color[3][W * H * 4];
 
 /* draws scene `seed` in ctx and copies its colour and depth */
 static void render(OSMesaContext ctx, unsigned char *buf, uint32_t seed, unsigned char *out,
@@ -274,18 +276,18 @@ static void render(OSMesaContext ctx, unsigned char *buf, uint32_t seed, unsigne
   memcpy(depth, z, *depth_bytes);
 }
 
-static unsigned char fb[2][2][W * H * 4];
-static unsigned char depth[2][W * H * 4];
+static unsigned char fb[3][2][W * H * 4];
+static unsigned char depth[3][W * H * 4];
 
 int main(int argc, char **argv)
 {
   /* argv[1]: the number of scenes (default SCENES) */
   const uint32_t scenes = argc > 1 ? (uint32_t)strtoul(argv[1], NULL, 10) : SCENES;
-  /* [kernels][depth 16, 24] */
-  OSMesaContext ctx[2][2];
-  for (int k = 0; k < 2; k++) {
-    if (k == 1)
-      setenv("FIXGL_KERNELS", "reference", 1);
+  /* [kernels: default, reference, avx2][depth 16, 24] */
+  OSMesaContext ctx[3][2];
+  for (int k = 0; k < 3; k++) {
+    if (k > 0)
+      setenv("FIXGL_KERNELS", k == 1 ? "reference" : "avx2", 1);
     for (int z = 0; z < 2; z++) {
       ctx[k][z] = OSMesaCreateContextExt(OSMESA_RGBA, z ? 24 : 16, 0, 0, NULL);
       CHECK(ctx[k][z] != NULL, "context %d/%d", k, z);
@@ -298,23 +300,29 @@ int main(int argc, char **argv)
   int bad = 0;
   for (uint32_t s = 0; s < scenes && bad < 10; s++) {
     const int z = (int)(s & 1);
-    size_t nb[2];
-    for (int k = 0; k < 2; k++)
+    size_t nb[3];
+    for (int k = 0; k < 3; k++)
       render(ctx[k][z], fb[k][z], s, color[k], depth[k], &nb[k]);
-    if (memcmp(color[0], color[1], sizeof color[0]) != 0) {
-      for (int i = 0; i < W * H; i++) {
-        if (memcmp(&color[0][4 * i], &color[1][4 * i], 4) != 0) {
-          const unsigned char *a = &color[0][4 * i], *b = &color[1][4 * i];
-          FAIL("scene %u (z%d): colour differs at (%d, %d): %u %u %u %u, reference %u %u %u %u",
-               s, z ? 24 : 16, i % W, i / W, a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]);
-          break;
+    /* the default kernels, then FIXGL_KERNELS=avx2's, against the reference */
+    for (int k = 0; k < 3; k += 2) {
+      if (memcmp(color[k], color[1], sizeof color[k]) != 0) {
+        for (int i = 0; i < W * H; i++) {
+          if (memcmp(&color[k][4 * i], &color[1][4 * i], 4) != 0) {
+            const unsigned char *a = &color[k][4 * i], *b = &color[1][4 * i];
+            FAIL("scene %u (z%d, %s kernels): colour differs at (%d, %d): %u %u %u %u, reference "
+                 "%u %u %u %u",
+                 s, z ? 24 : 16, k ? "avx2" : "default", i % W, i / W, a[0], a[1], a[2], a[3],
+                 b[0], b[1], b[2], b[3]);
+            break;
+          }
         }
+        bad++;
       }
-      bad++;
+      CHECK(nb[k] == nb[1] && memcmp(depth[k], depth[1], nb[k]) == 0,
+            "scene %u (%s kernels): depth differs", s, k ? "avx2" : "default");
     }
-    CHECK(nb[0] == nb[1] && memcmp(depth[0], depth[1], nb[0]) == 0, "scene %u: depth differs", s);
   }
-  for (int k = 0; k < 2; k++)
+  for (int k = 0; k < 3; k++)
     for (int z = 0; z < 2; z++)
       OSMesaDestroyContext(ctx[k][z]);
   return check_report("lit_kernels");

@@ -4,7 +4,10 @@
  *
  * Two contexts of each depth format (16, 24, 24 + 8 stencil bits): one
  * created normally, one created after setenv("FIXGL_KERNELS",
- * "reference") (context.c reads it at creation), on buffers of an odd
+ * "reference") (context.c reads it at creation), and one created after
+ * setenv("FIXGL_KERNELS", "avx2") (the AVX2 build of the kernels where the
+ * CPU runs their AVX-512 build, which the first one then uses; the same
+ * kernels elsewhere), on buffers of an odd
  * size (blocks past the right edge).  Each case draws, in both, the same
  * random textured triangles on the same random state -- texture (1D or
  * 2D, power of two or not, RGB, RGBA, LUMINANCE, LUMINANCE_ALPHA, ALPHA,
@@ -330,8 +333,8 @@ static void draw_case(uint64_t seed)
 
 struct pair {
   int depth, stencil;
-  OSMesaContext ctx[2];   /* [0] block kernels, [1] reference */
-  unsigned char buf[2][W * H * 4];
+  OSMesaContext ctx[3];   /* [0] block kernels, [1] reference, [2] FIXGL_KERNELS=avx2 */
+  unsigned char buf[3][W * H * 4];
 };
 
 int main(int argc, char **argv)
@@ -346,7 +349,9 @@ int main(int argc, char **argv)
     pairs[p].ctx[0] = OSMesaCreateContextExt(OSMESA_RGBA, pairs[p].depth, pairs[p].stencil, 0, NULL);
     setenv("FIXGL_KERNELS", "reference", 1);
     pairs[p].ctx[1] = OSMesaCreateContextExt(OSMESA_RGBA, pairs[p].depth, pairs[p].stencil, 0, NULL);
-    CHECK(pairs[p].ctx[0] && pairs[p].ctx[1], "context creation");
+    setenv("FIXGL_KERNELS", "avx2", 1);
+    pairs[p].ctx[2] = OSMesaCreateContextExt(OSMESA_RGBA, pairs[p].depth, pairs[p].stencil, 0, NULL);
+    CHECK(pairs[p].ctx[0] && pairs[p].ctx[1] && pairs[p].ctx[2], "context creation");
   }
   unsetenv("FIXGL_KERNELS");
   int bad_cases = 0, multi = 0;
@@ -354,33 +359,39 @@ int main(int argc, char **argv)
   for (int i = 0; i < cases; i++) {
     struct pair *pr = &pairs[i % 3];
     const uint64_t seed = seed0 + (uint64_t)i;
-    void *depth[2];
-    GLint bpv[2];
-    for (int k = 0; k < 2; k++) {
+    void *depth[3];
+    GLint bpv[3];
+    for (int k = 0; k < 3; k++) {
       CHECK(OSMesaMakeCurrent(pr->ctx[k], pr->buf[k], GL_UNSIGNED_BYTE, W, H), "make current");
       draw_case(seed);
       multi += k == 0 && case_units > 1;
       GLint w, h;
       OSMesaGetDepthBuffer(pr->ctx[k], &w, &h, &bpv[k], &depth[k]);
     }
-    size_t diff = 0, first = SIZE_MAX;
-    for (size_t j = 0; j < sizeof pr->buf[0]; j++)
-      if (pr->buf[0][j] != pr->buf[1][j]) {
-        diff++;
-        if (first == SIZE_MAX)
-          first = j;
+    /* the default kernels, then FIXGL_KERNELS=avx2's, against the reference */
+    bool case_bad = false;
+    for (int k = 0; k < 3; k += 2) {
+      size_t diff = 0, first = SIZE_MAX;
+      for (size_t j = 0; j < sizeof pr->buf[0]; j++)
+        if (pr->buf[k][j] != pr->buf[1][j]) {
+          diff++;
+          if (first == SIZE_MAX)
+            first = j;
+        }
+      const size_t zbytes = (size_t)W * H * (size_t)bpv[k];
+      const bool zsame = bpv[k] == bpv[1] && memcmp(depth[k], depth[1], zbytes) == 0;
+      if (diff || !zsame) {
+        if (bad_cases + case_bad < 10)
+          FAIL("case %d (seed %llu, depth %d/%d, %s kernels): %zu colour bytes differ (first at "
+               "pixel %zu,%zu: %u vs %u), depth %s",
+               i, (unsigned long long)seed, pr->depth, pr->stencil, k ? "avx2" : "default", diff,
+               first == SIZE_MAX ? 0 : first / 4 % W, first == SIZE_MAX ? 0 : first / 4 / W,
+               first == SIZE_MAX ? 0 : pr->buf[k][first],
+               first == SIZE_MAX ? 0 : pr->buf[1][first], zsame ? "same" : "differs");
+        case_bad = true;
       }
-    const size_t zbytes = (size_t)W * H * (size_t)bpv[0];
-    const bool zsame = bpv[0] == bpv[1] && memcmp(depth[0], depth[1], zbytes) == 0;
-    if (diff || !zsame) {
-      if (bad_cases++ < 10)
-        FAIL("case %d (seed %llu, depth %d/%d): %zu colour bytes differ (first at pixel %zu,%zu: "
-             "%u vs %u), depth %s",
-             i, (unsigned long long)seed, pr->depth, pr->stencil, diff,
-             first == SIZE_MAX ? 0 : first / 4 % W, first == SIZE_MAX ? 0 : first / 4 / W,
-             first == SIZE_MAX ? 0 : pr->buf[0][first], first == SIZE_MAX ? 0 : pr->buf[1][first],
-             zsame ? "same" : "differs");
     }
+    bad_cases += case_bad;
     /* something was drawn (the clear colour is rarely everywhere) */
     for (size_t j = 0; j < sizeof pr->buf[0]; j += 4)
       if (memcmp(&pr->buf[0][j], &pr->buf[0][0], 4) != 0) {
@@ -395,6 +406,7 @@ int main(int argc, char **argv)
   for (int p = 0; p < 3; p++) {
     OSMesaDestroyContext(pairs[p].ctx[0]);
     OSMesaDestroyContext(pairs[p].ctx[1]);
+    OSMesaDestroyContext(pairs[p].ctx[2]);
   }
   return check_report("tex_kernels");
 }

@@ -28,6 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "raster/r_kernel.h"
 #include "raster/r_state.h"
 #include "raster/r_scene.h"
 
@@ -881,6 +882,7 @@ static void test_scene_setup_once(bool flat, bool twoside, bool kernels, int pri
    t_fb.color = cb;
    const struct r_fb_state *fbb = r_cso_lookup(&cache, &t_fb, sizeof t_fb);
    rs.reference_kernels = !kernels;
+   rs.kernel_isa = kernels ? (uint8_t)r_kernel_isa(NULL) : R_ISA_NONE;
    for (int i = 0; i < N; i++) {
       /* mostly small triangles, some across many tiles */
       const float cx = scene_rand(-20.0f, W + 20.0f), cy = scene_rand(-20.0f, H + 20.0f);
