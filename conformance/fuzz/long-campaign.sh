@@ -55,7 +55,7 @@ fuzzer=$build/conformance/fuzz/fixgl-libfuzzer
 corpus_tool=$build/conformance/fuzz/fixgl-libfuzzer-corpus
 if [[ ! -f $build/build.ninja ]]; then
   flags=-fno-sanitize-recover=all   # .ci/run's sanitize_flags
-  env CC=clang CXX=clang++ meson setup "$build" -Dfuzzer=true \
+  env CC=clang CXX=clang++ meson setup "$build" -Dfuzzer=true -Davx512_kernels=false \
     -Db_sanitize=address,undefined -Db_lundef=false \
     -Dc_args="$flags" -Dcpp_args="$flags" -Dc_link_args="$flags" -Dcpp_link_args="$flags" \
     || exit 2
