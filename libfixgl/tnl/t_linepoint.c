@@ -329,9 +329,9 @@ static void stipple_line(struct fgl_context *ctx, const struct r_vertex *v0,
       const float dy = y0 > y1 ? y0 - y1 : y1 - y0;
       length = dx > dy ? dx : dy;   /* MAX2 */
    }
-   /* Mesa's int conversion of ceilf(length) is cvttss2si: INT32_MIN for
-    * a finite length past INT32_MAX (no run is drawn, the counter moves by
-    * 2^31); in C that conversion is undefined, hence the range check */
+   /* the oracle's int conversion of ceilf(length): INT32_MIN for a finite
+    * length past INT32_MAX (ORACLE-NOTES.md "A stippled line's length in
+    * pixels"); in C that conversion is undefined, hence the range check */
    if (!isfinite(length))
       intlength = 0;
    else {
