@@ -19,6 +19,7 @@
  */
 #include "r_kernel.h"
 #include "r_scene.h"
+#include "r_tri_cover.h"
 
 #include <limits.h>
 #include <math.h>
@@ -641,6 +642,70 @@ bool r_cover_planes(const struct r_plane *p, int n, int32_t x0, int32_t y0, int3
    return true;
 }
 
+/* r_cover_planes for the three exact edges p (edge_planes true) of a
+ * triangle whose snapped box b (snapped_box: bx0, bx1, by0, by1) spans at
+ * most R_COVER_SMALL pixels each way, over a box x0..x1, y0..y1 inside b
+ * with x0, y0 >= 0: the same values, without the 64-bit bound test, which
+ * such a triangle always passes.  Why: the snapped positions differ by at
+ * most 256 (S + 2) (S = R_COVER_SMALL), which bounds the unscaled steps
+ * |dx|, |dy|; the origin (ox, oy) lies within S + 4 pixels of each vertex
+ * and w, h (r_cover_planes) are at most S + 7, so the bound
+ * |cr| + |dx| w + |dy| h is below 1024 (S + 2) (S + 7) + 2 (S + 2) + 2,
+ * 273.2M for S = 512, under the 2^30 the test asks.  And the reduced value
+ * at the origin is floor((c - 1) / 256) plus the unscaled steps times the
+ * origin, exactly (the scaled steps are multiples of 256), which fits in
+ * 32 bits, so wrapping 32-bit arithmetic gives it. */
+#define R_COVER_SMALL 512
+static inline __attribute__((always_inline)) bool tri_cover_small(const int32_t b[4])
+{
+   return (uint32_t)sub_wrap(b[1], b[0]) <= R_COVER_SMALL &&
+          (uint32_t)sub_wrap(b[3], b[2]) <= R_COVER_SMALL;
+}
+
+static inline __attribute__((always_inline)) void cover_small(const struct r_plane *p, int32_t x0,
+                                                              int32_t y0, int32_t x1, int32_t y1,
+                                                              struct r_tri_cover *cv)
+{
+   const int32_t ox = x0 & ~3, oy = y0 & ~3;
+   cv->ox = ox;
+   cv->oy = oy;
+   cv->n = 3;
+#pragma GCC unroll 3
+   for (int e = 0; e < 3; e++) {
+      const int32_t dx = -(p[e].dcdx >> 8), dy = p[e].dcdy >> 8;
+      const uint32_t c0 = (uint32_t)(uint64_t)(sub64(p[e].c, 1) >> 8);
+      cv->c[e] = (int32_t)(c0 + (uint32_t)dx * (uint32_t)ox + (uint32_t)dy * (uint32_t)oy);
+      cv->dx[e] = dx;
+      cv->dy[e] = dy;
+   }
+   cv->x0 = x0;
+   cv->y0 = y0;
+   cv->x1 = x1;
+   cv->y1 = y1;
+}
+
+/* r_cover_planes(p, 3, ...) of such a triangle, b its snapped box and
+ * x0..x1, y0..y1 that box clamped to x, y >= 0 and cut to the draw region
+ * (rasterize_ccw, r_triangle_binned): through cover_small when the box is
+ * small and the cut not empty (then x0 and y0 lie in b). */
+static inline __attribute__((always_inline)) bool cover_tri(const struct r_plane *p,
+                                                            const int32_t b[4], int32_t x0,
+                                                            int32_t y0, int32_t x1, int32_t y1,
+                                                            struct r_tri_cover *cv)
+{
+   if (tri_cover_small(b) && x0 <= x1 && y0 <= y1) {
+      cover_small(p, x0, y0, x1, y1, cv);
+      return true;
+   }
+   return r_cover_planes(p, 3, x0, y0, x1, y1, cv);
+}
+
+bool r_cover_tri(const struct r_plane *p, const int32_t b[4], int32_t x0, int32_t y0,
+                 int32_t x1, int32_t y1, struct r_tri_cover *cv)
+{
+   return cover_tri(p, b, x0, y0, x1, y1, cv);
+}
+
 static void tri_shade_pixel(const struct r_state *rs, const void *ctx, int px, int py);
 
 /* The bounding box in pixels of snapped positions X, Y: x inclusive /
@@ -690,6 +755,13 @@ static inline __attribute__((always_inline)) bool edge_planes(const int32_t X[3]
    return e0 & e1 & e2;
 }
 
+bool r_tri_snapped_edges(const int32_t X[3], const int32_t Y[3], struct r_plane *p,
+                         int32_t b[4])
+{
+   snapped_box(X, Y, b);
+   return edge_planes(X, Y, p);
+}
+
 /* Whether the colour input of setup ts is flat (it chooses the kernel). */
 static inline bool tri_flat0(const struct r_tri_setup *ts)
 {
@@ -697,16 +769,16 @@ static inline bool tri_flat0(const struct r_tri_setup *ts)
    return (ts->inputs & (1u << R_FS_COLOR0)) && ts->flat_attr[R_FS_COLOR0];
 }
 
-/* Draws an exact triangle (edge_planes true) of setup ts and edges p over
- * its box trimmed to the draw region, tx0..tx1, ty0..ty1 (inclusive);
- * t0: the time its setup started, when rs counts. */
+/* Draws an exact triangle (edge_planes true) of setup ts, edges p and
+ * snapped box b over its box trimmed to the draw region, tx0..tx1,
+ * ty0..ty1 (inclusive); t0: the time its setup started, when rs counts. */
 static inline void draw_exact(const struct r_state *rs, const struct r_tri_setup *ts, bool flat0,
-                              const struct r_plane *p, int32_t tx0, int32_t ty0, int32_t tx1,
-                              int32_t ty1, uint64_t t0)
+                              const struct r_plane *p, const int32_t b[4], int32_t tx0,
+                              int32_t ty0, int32_t tx1, int32_t ty1, uint64_t t0)
 {
    const r_tri_kernel kernel = rs->tri_kernel[flat0];
    struct r_tri_cover cv;
-   const bool blocks = kernel && r_cover_planes(p, 3, tx0, ty0, tx1, ty1, &cv);
+   const bool blocks = kernel && cover_tri(p, b, tx0, ty0, tx1, ty1, &cv);
    const uint64_t t1 = rs->stats ? r_stats_now() : 0;
    if (blocks)
       kernel(rs, ts, &cv);
@@ -753,7 +825,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    if (exact) {
       struct r_tri_setup ts;
       setup_shade(rs, v, back, phong_back, &ts);
-      draw_exact(rs, &ts, tri_flat0(&ts), p, tx0, ty0, tx1, ty1, t0);
+      draw_exact(rs, &ts, tri_flat0(&ts), p, b, tx0, ty0, tx1, ty1, t0);
       return;
    }
 
@@ -1046,7 +1118,7 @@ void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *t)
    const uint64_t t0 = rs->stats ? r_stats_now() : 0;
    struct r_tri_setup ts;
    r_tri_binned_unpack(t, &ts);
-   draw_exact(rs, &ts, t->flat0, t->p, tx0, ty0, tx1, ty1, t0);
+   draw_exact(rs, &ts, t->flat0, t->p, t->b, tx0, ty0, tx1, ty1, t0);
 }
 
 bool r_tri_edges_miss_tile(const struct r_tri_edges *e, int x, int y)

@@ -31,6 +31,7 @@
 #include "raster/r_kernel.h"
 #include "raster/r_state.h"
 #include "raster/r_scene.h"
+#include "raster/r_tri_cover.h"
 
 #include "check.h"
 
@@ -956,8 +957,93 @@ static void test_scene_setup_once(bool flat, bool twoside, bool kernels, int pri
    r_cso_cache_fini(&cache);
 }
 
+/* The triangles' block coverage (r_cover_tri: a snapped box of at most
+ * 512 pixels each way skips r_cover_planes' 64-bit bound test and reduces
+ * the edges in 32 bits) equals r_cover_planes' on random exact triangles
+ * of boxes up to 16,000 pixels (the limit of 512, past it, and where the
+ * bound test fails) anywhere in the snapped range, over random cuts of
+ * their box (a draw region, a tile). */
+/* a random float in [lo, hi) from *s (test_cover_tri's own sequence) */
+static float cover_rand(uint64_t *s, float lo, float hi)
+{
+   return lo + (hi - lo) * (float)(check_xorshift64(s) >> 40) / 16777216.0f;
+}
+
+static void test_cover_tri(void)
+{
+   uint64_t rng = 0x9e3779b97f4a7c15u;
+   int checked = 0, small = 0, bad = 0, unbounded = 0;
+   for (int i = 0; i < 200000; i++) {
+      /* a corner anywhere in [0, 2^22) pixels (in 1/256), or near 0 (the
+       * box partly at negative x or y), then the vertices within `span`
+       * pixels of it */
+      const float lo = i % 8 < 4 ? -600.0f : 0.0f, hi = i % 8 < 4 ? 100.0f : 4194304.0f;
+      const int32_t ox = (int32_t)(cover_rand(&rng, lo, hi) * 256.0f);
+      const int32_t oy = (int32_t)(cover_rand(&rng, lo, hi) * 256.0f);
+      const int mode = i % 5;
+      const float span = mode == 0   ? 16.0f
+                         : mode == 1 ? 100.0f
+                         : mode == 2 ? 512.5f
+                         : mode == 3 ? 700.0f
+                                     : 16000.0f;   /* the bound test fails */
+      int32_t X[3], Y[3];
+      for (int k = 0; k < 3; k++) {
+         X[k] = ox + (int32_t)(cover_rand(&rng, 0.0f, span) * 256.0f);
+         Y[k] = oy + (int32_t)(cover_rand(&rng, 0.0f, span) * 256.0f);
+      }
+      if (i % 16 == 3) {
+         /* the box's extreme corners */
+         X[0] = ox;
+         X[1] = ox + (int32_t)(span * 256.0f);
+         Y[1] = oy;
+         Y[2] = oy + (int32_t)(span * 256.0f);
+      }
+      const int64_t area = (int64_t)(X[0] - X[1]) * (Y[2] - Y[0]) -
+                           (int64_t)(X[2] - X[0]) * (Y[0] - Y[1]);
+      if (area == 0)
+         continue;
+      if (area < 0) {
+         int32_t t = X[0]; X[0] = X[1]; X[1] = t;
+         t = Y[0]; Y[0] = Y[1]; Y[1] = t;
+      }
+      struct r_plane p[3];
+      int32_t b[4];
+      if (!r_tri_snapped_edges(X, Y, p, b))
+         continue;
+      /* the box clamped to x, y >= 0 (moved there when it is not), then
+       * a random cut of it */
+      int32_t bx0 = b[0], bx1 = b[1], by0 = b[2], by1 = b[3];
+      if (bx1 < 0 || by1 < 0)
+         continue;
+      if (bx0 < 0) bx0 = 0;
+      if (by0 < 0) by0 = 0;
+      const int32_t x0 = bx0 + (int32_t)cover_rand(&rng, 0.0f, (float)(bx1 - bx0 + 1) * 0.5f);
+      const int32_t x1 = bx1 - (int32_t)cover_rand(&rng, 0.0f, (float)(bx1 - x0 + 1) * 0.5f);
+      const int32_t y0 = by0 + (int32_t)cover_rand(&rng, 0.0f, (float)(by1 - by0 + 1) * 0.5f);
+      const int32_t y1 = by1 - (int32_t)cover_rand(&rng, 0.0f, (float)(by1 - y0 + 1) * 0.5f);
+      struct r_tri_cover a, c;
+      memset(&a, 0x55, sizeof a);
+      memset(&c, 0x55, sizeof c);
+      const bool ra = r_cover_planes(p, 3, x0, y0, x1, y1, &a);
+      const bool rc = r_cover_tri(p, b, x0, y0, x1, y1, &c);
+      small += b[1] - b[0] <= 512 && b[3] - b[2] <= 512;
+      checked++;
+      unbounded += !ra;
+      if ((ra != rc || memcmp(&a, &c, sizeof a) != 0) && bad++ < 4)
+         FAIL("cover of (%d,%d) (%d,%d) (%d,%d) over %d..%d x %d..%d: r_cover_planes %d "
+            "c %d %d %d, r_cover_tri %d c %d %d %d",
+            X[0], Y[0], X[1], Y[1], X[2], Y[2], x0, x1, y0, y1, ra, a.c[0], a.c[1], a.c[2], rc,
+            c.c[0], c.c[1], c.c[2]);
+   }
+   CHECK(bad == 0, "cover_tri: %d covers differ", bad);
+   CHECK(checked > 120000 && small > 50000 && checked - small > 20000 && unbounded > 5000,
+         "cover_tri: %d triangles checked, %d small, %d failing the bound", checked, small,
+         unbounded);
+}
+
 int main(void)
 {
+   test_cover_tri();
    test_square_shared_diagonal();
    test_slanted_edges();
    test_snap_ties();
