@@ -1611,6 +1611,18 @@ static void bitmap_negative_compile_sizes(fc_h *h)
     fc_capture(h);
 }
 
+/* A white triangle in a 32x32 pixel frame, and the error after it. */
+static void witness_triangle(fc_h *h)
+{
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 2);
+    glVertex2f(30, 6);
+    glVertex2f(14, 30);
+    glEnd();
+    fc_error(h, "a triangle");
+}
+
 /* A display list whose glBegin is split across two vertex lists (a new
  * attribute after the first vertex wraps the compiler's store) and whose
  * second vertex list also holds a compiled glDrawElements: that node does
@@ -1650,13 +1662,7 @@ static void end_after_list_mid_primitive(fc_h *h)
     fc_error(h, "glLineWidth(-1) after glEnd");
     glEnd();
     fc_error(h, "a second glEnd");
-    glBegin(GL_TRIANGLES);
-    glColor3f(1, 1, 1);
-    glVertex2f(2, 2);
-    glVertex2f(30, 6);
-    glVertex2f(14, 30);
-    glEnd();
-    fc_error(h, "a triangle");
+    witness_triangle(h);
     glDisableClientState(GL_VERTEX_ARRAY);
     glDeleteLists(1, 1);
     fc_capture(h);
@@ -1965,6 +1971,41 @@ static void element_buffer_no_store(fc_h *h)
     fc_capture(h);
 }
 
+/* The first vertex list a context compiles, cut by glEvalCoord after one
+ * vertex of a GL_TRIANGLE_STRIP (the API fuzzer's seeds 279 and 145;
+ * probe p_dlist_first_begin; ORACLE-NOTES.md "OSMesa defects kept
+ * visible"): vbo_save's copy_vertices leaves the open strip no vertex, so
+ * its node has no index, and with no save buffer made yet (current_bo)
+ * Mesa reuses the NULL one and sets the node's counts to 0: its replay has
+ * no glBegin and the list's glEnd raises GL_INVALID_OPERATION, at the
+ * compile-and-execute and at every glCallList.  The same list compiled
+ * again (the buffer exists now) raises nothing; a witness triangle. */
+static void dlist_first_begin_eval(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int k = 0; k < 2; k++) {
+        glNewList(2 + (GLuint)k, GL_COMPILE_AND_EXECUTE);
+        glBegin(GL_TRIANGLE_STRIP);
+        glVertex3i(1, 2, 3);
+        if (k)
+            glEvalPoint1(3);
+        else
+            glEvalCoord2d(0.5, 0.5);
+        glEnd();
+        fc_error(h, "the list's glEnd (compile and execute)");
+        glEndList();
+        fc_error(h, "glEndList");
+        glCallList(2 + (GLuint)k);
+        fc_error(h, "glCallList");
+        glCallList(2 + (GLuint)k);
+        fc_error(h, "glCallList again");
+    }
+    witness_triangle(h);
+    glDeleteLists(2, 2);
+    fc_capture(h);
+}
+
 /* The floating-point state of line setup (ORACLE-NOTES.md
  * "Interpolation", probe p_setup_fpstate_lines): lines of draw's pipeline
  * (a vertex of their vsplit segment needs clipping, line stipple, smooth
@@ -2174,5 +2215,6 @@ const fc_case fc_cases_robust[] = {
     ROBUST("index_shift_huge", 32, 16, 1, index_shift_huge),
     ROBUST("setup_caller_fpstate_lines", 64, 64, 16, setup_caller_fpstate_lines),
     ROBUST("stipple_huge_length", 64, 64, 2, stipple_huge_length),
+    ROBUST("dlist_first_begin_eval", 32, 32, 1, dlist_first_begin_eval),
     { 0 }
 };
