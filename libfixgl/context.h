@@ -754,6 +754,7 @@ enum t_vbuf_prim { T_VBUF_NONE, T_VBUF_POINTS, T_VBUF_LINES };
 struct fgl_draw_vbuf {
    bool pstipple_bound;     /* pstip_first_tri ran since the last flush */
    enum t_vbuf_prim prim;   /* the queued batch's primitive type */
+   unsigned setup_mxcsr;    /* the r_state.setup_mxcsr of its primitives */
    unsigned count, cap;
    struct r_vertex (*queue)[2];   /* a point uses [0] */
 };

@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <string.h>
 #include <time.h>
+#include <xmmintrin.h>
 
 #include "cases.h"
 
@@ -1610,6 +1611,18 @@ static void bitmap_negative_compile_sizes(fc_h *h)
     fc_capture(h);
 }
 
+/* A white triangle in a 32x32 pixel frame, and the error after it. */
+static void witness_triangle(fc_h *h)
+{
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 1, 1);
+    glVertex2f(2, 2);
+    glVertex2f(30, 6);
+    glVertex2f(14, 30);
+    glEnd();
+    fc_error(h, "a triangle");
+}
+
 /* A display list whose glBegin is split across two vertex lists (a new
  * attribute after the first vertex wraps the compiler's store) and whose
  * second vertex list also holds a compiled glDrawElements: that node does
@@ -1649,13 +1662,7 @@ static void end_after_list_mid_primitive(fc_h *h)
     fc_error(h, "glLineWidth(-1) after glEnd");
     glEnd();
     fc_error(h, "a second glEnd");
-    glBegin(GL_TRIANGLES);
-    glColor3f(1, 1, 1);
-    glVertex2f(2, 2);
-    glVertex2f(30, 6);
-    glVertex2f(14, 30);
-    glEnd();
-    fc_error(h, "a triangle");
+    witness_triangle(h);
     glDisableClientState(GL_VERTEX_ARRAY);
     glDeleteLists(1, 1);
     fc_capture(h);
@@ -1964,6 +1971,196 @@ static void element_buffer_no_store(fc_h *h)
     fc_capture(h);
 }
 
+/* The first vertex list a context compiles, cut by glEvalCoord after one
+ * vertex of a GL_TRIANGLE_STRIP (the API fuzzer's seeds 279 and 145;
+ * probe p_dlist_first_begin; ORACLE-NOTES.md "OSMesa defects kept
+ * visible"): vbo_save's copy_vertices leaves the open strip no vertex, so
+ * its node has no index, and with no save buffer made yet (current_bo)
+ * Mesa reuses the NULL one and sets the node's counts to 0: its replay has
+ * no glBegin and the list's glEnd raises GL_INVALID_OPERATION, at the
+ * compile-and-execute and at every glCallList.  The same list compiled
+ * again (the buffer exists now) raises nothing; a witness triangle. */
+static void dlist_first_begin_eval(fc_h *h)
+{
+    fc_pixel_ortho(h);
+    fcu_clear(0, 0, 0, 0, 1);
+    for (int k = 0; k < 2; k++) {
+        glNewList(2 + (GLuint)k, GL_COMPILE_AND_EXECUTE);
+        glBegin(GL_TRIANGLE_STRIP);
+        glVertex3i(1, 2, 3);
+        if (k)
+            glEvalPoint1(3);
+        else
+            glEvalCoord2d(0.5, 0.5);
+        glEnd();
+        fc_error(h, "the list's glEnd (compile and execute)");
+        glEndList();
+        fc_error(h, "glEndList");
+        glCallList(2 + (GLuint)k);
+        fc_error(h, "glCallList");
+        glCallList(2 + (GLuint)k);
+        fc_error(h, "glCallList again");
+    }
+    witness_triangle(h);
+    glDeleteLists(2, 2);
+    fc_capture(h);
+}
+
+/* The floating-point state of line setup (ORACLE-NOTES.md
+ * "Interpolation", probe p_setup_fpstate_lines): lines of draw's pipeline
+ * (a vertex of their vsplit segment needs clipping, line stipple, smooth
+ * lines, the edges of unfilled polygons) are set up when llvmpipe flushes
+ * draw after draw_vbo restored the application's MXCSR; direct lines
+ * under draw_vbo's FTZ|DAZ.  Short lines at clip w 1.5e35 whose colour
+ * changes by 0.003 have denormal plane derivatives: kept by setup without
+ * FTZ, read as 0 by the shader.  Each kind is drawn with the default MXCSR
+ * and with FTZ|DAZ set by the program around the draw; points, whose
+ * setup does not depend on it, too. */
+static void fpl_vertex(float x, float y, float c)
+{
+    const float w = 1.5e35f;
+    glColor4f(c, c, 1.0f - c, 1.0f);
+    glVertex4f((2.0f * x / 64 - 1.0f) * w, (2.0f * y / 64 - 1.0f) * w, 0.0f, w);
+}
+
+static void fpl_lines(GLenum mode, int clipped)
+{
+    glBegin(mode);
+    for (int i = 0; i < 6; i++) {
+        const float a = i & 1 ? 0.5f : 0.503f, b = i & 1 ? 0.503f : 0.5f;
+        fpl_vertex(40 + 3 * i, 10 + 8 * i, a);
+        fpl_vertex(42 + 3 * i, 10.5f + 8 * i, b);
+    }
+    fpl_vertex(8, 60, 0.99f);
+    fpl_vertex(12, 20, 1.0f);
+    if (clipped) {
+        glColor4f(0, 1, 0, 1);
+        glVertex4f(-3.0f, -0.9f, 0.0f, 1.0f);
+        glVertex4f(-0.8f, -0.9f, 0.0f, 1.0f);
+    }
+    glEnd();
+}
+
+static void fpl_draw(fc_h *h, int kind, unsigned csr)
+{
+    fcu_clear(0.1f, 0.1f, 0.1f, 1, 1);
+    const unsigned saved = _mm_getcsr();
+    _mm_setcsr(csr);
+    switch (kind) {
+    case 0: fpl_lines(GL_LINES, 0); break;   /* direct */
+    case 1: fpl_lines(GL_LINES, 1); break;   /* pipeline: clipped */
+    case 2: fpl_lines(GL_LINE_STRIP, 1); break;
+    case 3:   /* stipple: always the pipeline */
+        glEnable(GL_LINE_STIPPLE);
+        glLineStipple(1, 0xf0f3);
+        fpl_lines(GL_LINES, 0);
+        glDisable(GL_LINE_STIPPLE);
+        break;
+    case 4:   /* aaline: triangles of the pipeline */
+        glEnable(GL_LINE_SMOOTH);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        fpl_lines(GL_LINES, 0);
+        glDisable(GL_LINE_SMOOTH);
+        glDisable(GL_BLEND);
+        break;
+    case 5:   /* unfilled triangles' edges, then through the polygon
+               * stipple's vbuf batch (all flushed at draw_flush; not
+               * modelled: a filled face between them, whose vbuf_first_tri
+               * flushes the lines before it inside draw_vbo, and the
+               * face itself, flushed by the next line) */
+    case 6:
+        glPolygonMode(GL_FRONT, GL_LINE);
+        if (kind == 6) {
+            GLubyte pattern[128];
+            pattern_bits(pattern, 128);
+            glEnable(GL_POLYGON_STIPPLE);
+            glPolygonStipple(pattern);
+        }
+        glBegin(GL_TRIANGLES);
+        for (int t = 0; t < 3; t++) {
+            const float x = 8 + 18 * t, y = 8 + 16 * t;
+            fpl_vertex(x, y, 0.5f);
+            fpl_vertex(x + 3, y + 1, 0.503f);
+            fpl_vertex(x, y + 6, 0.501f);
+        }
+        glEnd();
+        glPolygonMode(GL_FRONT, GL_FILL);
+        glDisable(GL_POLYGON_STIPPLE);
+        break;
+    default:   /* points, plain and smooth, with a clipped one */
+        glPointSize(3);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 8; i++)
+            fpl_vertex(6 + 7 * i, 10 + 6 * i, 0.3f + 0.05f * i);
+        glVertex4f(-3.0f, -0.9f, 0.0f, 1.0f);
+        glEnd();
+        glEnable(GL_POINT_SMOOTH);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < 8; i++)
+            fpl_vertex(13 + 7 * i, 4 + 6 * i, 0.3f + 0.05f * i);
+        glEnd();
+        glDisable(GL_POINT_SMOOTH);
+        glPointSize(1);
+        break;
+    }
+    glFinish();
+    _mm_setcsr(saved);
+    fc_capture(h);
+}
+
+static void setup_caller_fpstate_lines(fc_h *h)
+{
+    const unsigned def = _mm_getcsr() & ~0x8040u, ftz = def | 0x8040u;   /* FTZ | DAZ */
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glShadeModel(GL_SMOOTH);
+    for (int kind = 0; kind < 8; kind++) {
+        fpl_draw(h, kind, def);
+        fpl_draw(h, kind, ftz);
+    }
+}
+
+/* A stippled line longer than 2^31 pixels (ORACLE-NOTES.md "A stippled
+ * line's length in pixels"; the long libFuzzer campaign's chunk 8): the
+ * clipper's t = dp0 / (dp0 - dp1) overflows to 0 for a vertex at clip x
+ * -2.98e38, which stays where it is, 1.66e38 pixels left of the window;
+ * the stipple stage's length converts to INT32_MIN: no dash, the counter
+ * moves by 2^31, which the next line of the strip shows. */
+static void stipple_huge_length(fc_h *h)
+{
+    static const GLushort patterns[2] = { 3, 0x0f3f };
+    static const GLint factors[2] = { 13, 3 };
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_LINE_STIPPLE);
+    for (int k = 0; k < 2; k++) {
+        fcu_clear(0, 0, 0, 1, 1);
+        glLineStipple(factors[k], patterns[k]);
+        for (int m = 0; m < 3; m++) {
+            const float y = -0.8f + 0.55f * (float)m;
+            glBegin(m == 2 ? GL_LINE_LOOP : GL_LINE_STRIP);
+            glColor3f(1, 0, 0);
+            if (m == 1)   /* a visible line first */
+                glVertex2f(-0.9f, y + 0.3f);
+            glVertex4f(-2.98028591e+38f, y * 57.5029831f, 0.0f, 57.5029831f);
+            glColor3f(0, 1, 0);
+            glVertex4f(-4.0100436e-12f, y * 2.4798858e+38f, 0.0f, 2.4798858e+38f);
+            glColor3f(1, 1, 0);
+            glVertex2f(0.9f, y + 0.2f);
+            glVertex2f(0.2f, y + 0.45f);
+            glEnd();
+        }
+        fc_error(h, "stippled strips through a line 1.66e38 pixels long");
+        fc_capture(h);
+    }
+    glDisable(GL_LINE_STIPPLE);
+}
+
 #define ROBUST(name, w, h, frames, fn) \
     FC_CASE("robust/" name, w, h, OSMESA_RGBA, 24, 8, frames, "robust", fn)
 
@@ -2016,5 +2213,8 @@ const fc_case fc_cases_robust[] = {
     ROBUST("point_huge_viewport_y", 32, 32, 1, point_huge_viewport_y),
     ROBUST("stuck_list_entry_points", 32, 32, 1, stuck_list_entry_points),
     ROBUST("index_shift_huge", 32, 16, 1, index_shift_huge),
+    ROBUST("setup_caller_fpstate_lines", 64, 64, 16, setup_caller_fpstate_lines),
+    ROBUST("stipple_huge_length", 64, 64, 2, stipple_huge_length),
+    ROBUST("dlist_first_begin_eval", 32, 32, 1, dlist_first_begin_eval),
     { 0 }
 };

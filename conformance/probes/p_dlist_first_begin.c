@@ -7,8 +7,11 @@
  * glBegin/glEnd before the glEnd.  Any glBegin compiled before, in any
  * list (also an empty glBegin/glEnd, or a glRect), prevents it; a vertex
  * compiled outside glBegin/glEnd, a glColor, an empty list or an
- * immediate-mode glBegin/glEnd before do not.  fixgl raises nothing (not
- * modelled: ORACLE-NOTES.md "OSMesa defects kept visible"). */
+ * immediate-mode glBegin/glEnd before do not: the open strip's one
+ * vertex leaves its node no index, and before the context's first vertex
+ * list made vbo_save's buffer the node reuses a NULL one and loses its
+ * counts (ORACLE-NOTES.md "OSMesa defects kept visible"; modelled in
+ * main/dlist.c upload_vertex_list). */
 #include "probe.h"
 
 static unsigned char buf2[64 * 64 * 4];

@@ -1107,8 +1107,15 @@ static struct bo_image *bo_new(unsigned size)
 
 /* compile_vertex_list's upload: the vertices (duplicates merged, unless
  * the list is replayed by loopback), then the indices, placed where Mesa
- * places them so that a later loopback reads what Mesa reads. */
-static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
+ * places them so that a later loopback reads what Mesa reads.  False when
+ * Mesa's node gets no index buffer (node->cold->ib.obj NULL): nothing to
+ * upload (no index: a loopback list whose only primitive, an open
+ * GL_TRIANGLE_STRIP of one vertex, lost it to copy_vertices) before the
+ * context's first vertex list made the save buffer (current_bo), which
+ * Mesa then reuses while it is NULL; Mesa sets the node's vertex and
+ * primitive counts to 0, so its replay has no glBegin (ORACLE-NOTES.md
+ * "OSMesa defects kept visible", probe p_dlist_first_begin). */
+static bool upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
                                unsigned *indices, unsigned idx, unsigned *buffer_offset_out)
 {
    struct fgl_dlist_state *ls = ctx->ListState;
@@ -1129,7 +1136,7 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       if (!temp || !hash) {
          fgl_free(temp);
          fgl_free(hash);
-         return;
+         return true;
       }
       for (unsigned k = 0; k < idx; k++) {
          const float *v = save->buffer + (size_t)indices[k] * vsize;
@@ -1173,6 +1180,10 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
       save->bo = bo_new(total_bytes > SAVE_BO_MIN_SIZE ? total_bytes : SAVE_BO_MIN_SIZE);
       save->bo_used = 0;
       buffer_offset = 0;
+   } else if (!save->bo) {
+      fgl_free(temp);
+      *buffer_offset_out = buffer_offset;
+      return false;
    } else {
       if (buffer_offset > old_offset && stride > 0 && (buffer_offset - old_offset) % stride == 0) {
          start_offset = (buffer_offset - old_offset) / stride;
@@ -1194,6 +1205,7 @@ static void upload_vertex_list(struct fgl_context *ctx, struct vertex_list *vl,
    fgl_free(temp);
    vl->start_offset = start_offset;
    *buffer_offset_out = buffer_offset;
+   return true;
 }
 
 static void loopback_vertex_list(struct fgl_context *ctx, const struct vertex_list *vl,
@@ -1266,7 +1278,8 @@ static void compile_vertex_list(struct fgl_context *ctx)
       unsigned nidx = 0;
       unsigned *indices = build_draws(vl, vl->buffer, &nidx);
       if (indices) {
-         upload_vertex_list(ctx, vl, indices, nidx, &buffer_offset);
+         if (!upload_vertex_list(ctx, vl, indices, nidx, &buffer_offset))
+            vl->vertex_count = vl->prim_count = 0;
          fgl_free(indices);
       } else {
          fgl_error(ctx, GL_OUT_OF_MEMORY);

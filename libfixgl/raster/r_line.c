@@ -61,6 +61,35 @@ static inline struct r_attr_plane line_coef(const struct line_info *info, float 
    return p;
 }
 
+/* A line's setup switches to the MXCSR rs->setup_mxcsr asks for (draw's
+ * pipeline lines are set up in the application's, ORACLE-NOTES.md
+ * "Interpolation", probe p_setup_fpstate_lines; as r_tri.c setup_shade's
+ * triangles): the state to restore with setup_fpstate_leave, 0 when
+ * nothing was switched. */
+static inline unsigned setup_fpstate_enter(const struct r_state *rs)
+{
+#if defined(__SSE__) || defined(__x86_64__)
+   if (__builtin_expect(rs->setup_mxcsr != 0, 0)) {
+      const unsigned csr = _mm_getcsr();
+      _mm_setcsr(rs->setup_mxcsr);
+      return csr;
+   }
+#else
+   (void)rs;
+#endif
+   return 0;
+}
+
+static inline void setup_fpstate_leave(unsigned csr)
+{
+#if defined(__SSE__) || defined(__x86_64__)
+   if (__builtin_expect(csr != 0, 0))
+      _mm_setcsr(csr);
+#else
+   (void)csr;
+#endif
+}
+
 /* floor(a / b) for b > 0 */
 static inline int64_t floor_div(int64_t a, int64_t b)
 {
@@ -541,11 +570,15 @@ static void line(const struct r_state *rs, const struct r_vertex *v1, const stru
 {
    struct line_geom g;
    struct line_info info;
-   if (!line_geom(rs, v1, v2, &g, &info) || line_outside(rs, &g))
-      return;
    struct r_tri_setup ls;
-   line_attrs(rs, v1, v2, &info, &ls);
-   line_raster(rs, &ls, &g, line_exact(&g));
+   /* the setup (not the pixels) in rs->setup_mxcsr's state */
+   const unsigned csr = setup_fpstate_enter(rs);
+   const bool drawn = line_geom(rs, v1, v2, &g, &info) && !line_outside(rs, &g);
+   if (drawn)
+      line_attrs(rs, v1, v2, &info, &ls);
+   setup_fpstate_leave(csr);
+   if (drawn)
+      line_raster(rs, &ls, &g, line_exact(&g));
 }
 
 /* A line of the scene (r_scene.c), set up once when it is binned: its
@@ -561,9 +594,9 @@ size_t r_line_binned_size(const struct r_state *rs)
    return sizeof(struct r_line_binned) + r_tri_binned_size(rs);
 }
 
-int r_line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
-                     const struct r_vertex *v1, int box[4], struct r_tri_edges *edges,
-                     struct r_line_binned *bin)
+static int line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                          const struct r_vertex *v1, int box[4], struct r_tri_edges *edges,
+                          struct r_line_binned *bin)
 {
    struct line_geom g;
    struct line_info info;
@@ -594,6 +627,17 @@ int r_line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
    line_attrs(rs, v0, v1, &info, &ls);
    r_tri_binned_pack(&ls, (struct r_tri_binned *)(void *)bin->setup);
    return 1;
+}
+
+/* (the setup in rs->setup_mxcsr's state, as line()'s) */
+int r_line_box_setup(const struct r_state *rs, const struct r_vertex *v0,
+                     const struct r_vertex *v1, int box[4], struct r_tri_edges *edges,
+                     struct r_line_binned *bin)
+{
+   const unsigned csr = setup_fpstate_enter(rs);
+   const int known = line_box_setup(rs, v0, v1, box, edges, bin);
+   setup_fpstate_leave(csr);
+   return known;
 }
 
 void r_line_binned(const struct r_state *rs, const struct r_line_binned *bin)

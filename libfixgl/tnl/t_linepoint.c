@@ -28,7 +28,8 @@
 /* The raster state of the smooth point and line quads (validated with
  * the draw's, state.c update_aa_states: the draw module's "no cull"
  * rasterizer, the fragment shader with the coverage lowering), with what
- * the draw's r_state has of the batch. */
+ * the draw's r_state has of the batch (the quads are draw's pipeline's:
+ * set up in the caller's MXCSR, pipeline_setup). */
 static bool aa_state(struct fgl_context *ctx, struct r_state *aa, enum r_aa_mode mode)
 {
    /* the quads of the first primitive after a change decide the region
@@ -41,6 +42,7 @@ static bool aa_state(struct fgl_context *ctx, struct r_state *aa, enum r_aa_mode
    aa->shade_env = rs->shade_env;
    aa->stats = rs->stats;
    aa->samples = rs->samples;
+   aa->setup_mxcsr = rs->setup_mxcsr;
    return aa->fs != NULL;   /* else out of memory at validation */
 }
 
@@ -97,12 +99,16 @@ static void aapoint_point(struct fgl_context *ctx, const struct r_vertex *v)
  * stippled, and so is the batch of points or lines queued just before it
  * (flushed by that triangle after the bind); earlier batches are not.
  * (Not modelled: vbuf also flushes when its 4096-byte vertex buffer or
- * 1020 indices are full.) */
-static void vbuf_flush(struct fgl_context *ctx)
+ * 1020 indices are full.)  Queued primitives of draw's pipeline are set up
+ * in the caller's MXCSR only at draw_flush (`draw_end`); vbuf's flushes
+ * within draw_vbo set them up under its FTZ|DAZ. */
+static void vbuf_flush(struct fgl_context *ctx, bool draw_end)
 {
    struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
    struct r_state *rs = &ctx->_Raster;
+   const unsigned csr = rs->setup_mxcsr;
    rs->stipple_points_lines = vb->pstipple_bound;
+   rs->setup_mxcsr = draw_end ? vb->setup_mxcsr : 0;
    for (unsigned i = 0; i < vb->count; i++) {
       if (vb->prim == T_VBUF_POINTS)
          fgl_raster_point(ctx, rs, &vb->queue[i][0]);
@@ -110,6 +116,7 @@ static void vbuf_flush(struct fgl_context *ctx)
          fgl_raster_line(ctx, rs, &vb->queue[i][0], &vb->queue[i][1]);
    }
    rs->stipple_points_lines = false;
+   rs->setup_mxcsr = csr;
    vb->count = 0;
    vb->prim = T_VBUF_NONE;
 }
@@ -128,12 +135,14 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
       return;
    }
    if (vb->prim != prim)
-      vbuf_flush(ctx);   /* vbuf_first_point / vbuf_first_line */
+      vbuf_flush(ctx, false);   /* vbuf_first_point / vbuf_first_line */
+   else if (vb->setup_mxcsr != ctx->_Raster.setup_mxcsr)
+      vbuf_flush(ctx, true);    /* (a direct segment after a pipeline one) */
    if (vb->count == vb->cap) {
       const unsigned cap = vb->cap ? 2 * vb->cap : 64;
       struct r_vertex (*q)[2] = fgl_realloc(vb->queue, cap * sizeof(*q));
       if (!q) {
-         vbuf_flush(ctx);   /* out of memory: draw what is queued now */
+         vbuf_flush(ctx, true);   /* out of memory: draw what is queued now */
          vb->prim = prim;
          ctx->_Raster.stipple_points_lines = vb->pstipple_bound;
          if (prim == T_VBUF_POINTS)
@@ -147,6 +156,7 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
       vb->cap = cap;
    }
    vb->prim = prim;
+   vb->setup_mxcsr = ctx->_Raster.setup_mxcsr;
    vb->queue[vb->count][0] = *v0;
    if (v1)
       vb->queue[vb->count][1] = *v1;
@@ -160,21 +170,32 @@ void t_vbuf_filled_tri(struct fgl_context *ctx)
    /* pstip_first_tri binds the stipple shader, then vbuf_first_tri flushes
     * the queued points or lines */
    ctx->_DrawVbuf.pstipple_bound = true;
-   vbuf_flush(ctx);
+   vbuf_flush(ctx, false);
 }
 
 void t_vbuf_end_draw(struct fgl_context *ctx)
 {
    /* pstip_flush: the vbuf is flushed first, then the shader restored */
-   vbuf_flush(ctx);
+   vbuf_flush(ctx, true);
    ctx->_DrawVbuf.pstipple_bound = false;
+}
+
+/* [S: lp_draw_arrays.c:llvmpipe_draw_vbo, draw_flush; draw_pipe_vbuf.c]
+ * llvmpipe sets up the points, lines and smooth quads of draw's pipeline
+ * when draw is flushed after draw_vbo restored the caller's MXCSR, those
+ * of the direct path inside draw_vbo, under FTZ|DAZ (ORACLE-NOTES.md
+ * "Interpolation", probe p_setup_fpstate_lines): the r_state.setup_mxcsr
+ * of what `pipeline` hands over until pipeline_setup(ctx, false). */
+static inline void pipeline_setup(struct fgl_context *ctx, bool pipeline)
+{
+   ctx->_Raster.setup_mxcsr = pipeline ? ctx->_DrawPipeline.caller_mxcsr : 0;
 }
 
 /* The stage after stipple: the aapoint quad or llvmpipe's point. */
 static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
 {
    if (fgl_point_smooth(ctx)) {
-      vbuf_flush(ctx);   /* vbuf_first_tri: the aapoint quad is triangles */
+      vbuf_flush(ctx, false);   /* vbuf_first_tri: the aapoint quad is triangles */
       aapoint_point(ctx, v);
    } else
       vbuf_add(ctx, T_VBUF_POINTS, v, NULL);
@@ -192,9 +213,12 @@ void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
    /* a point in draw's pipeline (smooth, or in a segment that needs
     * clipping) passes the stipple stage, which restarts the line stipple
     * counter (stipple_reset_point) */
-   if ((pipeline || fgl_point_smooth(ctx)) && ctx->_DrawPipeline.line_stipple)
+   const bool in_pipeline = pipeline || fgl_point_smooth(ctx);
+   if (in_pipeline && ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
+   pipeline_setup(ctx, in_pipeline);
    point_raster(ctx, &v->r);
+   pipeline_setup(ctx, false);
 }
 
 void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
@@ -206,7 +230,9 @@ void t_unfilled_point(struct fgl_context *ctx, const struct r_vertex *v)
    /* the stipple stage's stipple_reset_point, then aapoint or llvmpipe */
    if (ctx->_DrawPipeline.line_stipple)
       ctx->StippleCounter = 0;
+   pipeline_setup(ctx, true);
    point_raster(ctx, v);
+   pipeline_setup(ctx, false);
 }
 
 /* draw_pipe_aaline.c:aaline_line: the line as a quad lengthened by half a
@@ -262,7 +288,7 @@ static void line_raster(struct fgl_context *ctx, const struct r_vertex *v0,
                         const struct r_vertex *v1)
 {
    if (ctx->Line.SmoothFlag) {
-      vbuf_flush(ctx);   /* vbuf_first_tri: the aaline quad is triangles */
+      vbuf_flush(ctx, false);   /* vbuf_first_tri: the aaline quad is triangles */
       aaline_line(ctx, v0, v1);
    } else
       vbuf_add(ctx, T_VBUF_LINES, v0, v1);
@@ -376,7 +402,7 @@ static void stipple_line(struct fgl_context *ctx, const struct r_vertex *v0,
 }
 
 void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
-            bool first)
+            bool first, bool pipeline)
 {
    const struct r_state *rs = &ctx->_Raster;
    struct t_vertex c[2];
@@ -405,10 +431,13 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
        * and the aaline quad's provoking vertices have them */
       t_copy_flat(rs, &c[0].r, &c[1].r);
    }
+   /* (stipple and smooth lines need draw's pipeline) */
+   pipeline_setup(ctx, pipeline || stipple || ctx->Line.SmoothFlag);
    if (stipple)
       stipple_line(ctx, &c[0].r, &c[1].r, first);
    else
       line_raster(ctx, &c[0].r, &c[1].r);
+   pipeline_setup(ctx, false);
 }
 
 void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
@@ -420,8 +449,10 @@ void t_unfilled_line(struct fgl_context *ctx, const struct r_vertex *v0,
       t_feedback_line(ctx, v0, v1);
       return;
    }
+   pipeline_setup(ctx, true);
    if (ctx->_DrawPipeline.line_stipple)
       stipple_line(ctx, v0, v1, false);
    else
       line_raster(ctx, v0, v1);
+   pipeline_setup(ctx, false);
 }

@@ -265,11 +265,12 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
 
 /* Points and lines after assembly (t_linepoint.c): clipping, then the draw
  * module's stipple stage, then the raster core.  `first` marks the first
- * line of a primitive (DRAW_PIPE_RESET_STIPPLE); `pipeline` that the point's
- * vsplit segment takes draw's pipeline because some vertex needs clipping. */
+ * line of a primitive (DRAW_PIPE_RESET_STIPPLE); `pipeline` that the
+ * primitive's vsplit segment takes draw's pipeline because some vertex
+ * needs clipping. */
 void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline);
 void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_vertex *v1,
-            bool first);
+            bool first, bool pipeline);
 
 /* The vbuf batch of points and lines under the polygon stipple
  * (t_linepoint.c): a filled triangle reaching the pstipple stage, and the

@@ -364,12 +364,17 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
       }
       break;
    case GL_LINES:
-      /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE) */
-      for (unsigned i = 0; i + 1 < n; i += 2) {
-         need(r, s + i, 2);
-         if (r->phong_mats)
-            phong_material(r, s + i + 1);
-         t_line(r->ctx, vtx(r, s + i), vtx(r, s + i + 1), true);
+      /* every line is a primitive of its own (DRAW_PIPE_RESET_STIPPLE);
+       * vsplit segments of SEGMENT_SIZE vertices (even) */
+      for (unsigned seg = 0; seg + 1 < n; seg += SEGMENT_SIZE) {
+         const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+         need(r, s + seg, cnt);
+         const bool pipeline = segment_clipped(r, s + seg, cnt);
+         for (unsigned i = seg; i + 1 < seg + cnt; i += 2) {
+            if (r->phong_mats)
+               phong_material(r, s + i + 1);
+            t_line(r->ctx, vtx(r, s + i), vtx(r, s + i + 1), true, pipeline);
+         }
       }
       break;
    case GL_LINE_STRIP:
@@ -380,17 +385,27 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
        * strips keep this order and the counter, so they need no model. */
       if (n < 2)
          break;
-      for (unsigned i = 1; i < n; i++) {
-         need(r, s + i - 1, 2);
-         if (r->phong_mats)
-            phong_material(r, s + i);
-         t_line(r->ctx, vtx(r, s + i - 1), vtx(r, s + i), i == 1);
-      }
-      if (p->mode == GL_LINE_LOOP) {
-         need(r, s + n - 1, 1);
-         if (r->phong_mats)
-            phong_material(r, s);
-         t_line(r->ctx, vtx(r, s + n - 1), vtx(r, s), false);
+      {
+         /* vsplit segments of SEGMENT_SIZE vertices sharing one; a loop's
+          * closing line is in its last segment, with vertex 0 */
+         bool pipeline = false;
+         for (unsigned seg = 0; seg + 1 < n; seg += SEGMENT_SIZE - 1) {
+            const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
+            need(r, s + seg, cnt);
+            pipeline = segment_clipped(r, s + seg, cnt);
+            for (unsigned i = seg + 1; i < seg + cnt; i++) {
+               if (r->phong_mats)
+                  phong_material(r, s + i);
+               t_line(r->ctx, vtx(r, s + i - 1), vtx(r, s + i), i == 1, pipeline);
+            }
+         }
+         if (p->mode == GL_LINE_LOOP) {
+            need(r, s + n - 1, 1);
+            if (r->phong_mats)
+               phong_material(r, s);
+            t_line(r->ctx, vtx(r, s + n - 1), vtx(r, s), false,
+                   pipeline || segment_clipped(r, s, 1));
+         }
       }
       break;
    default:
