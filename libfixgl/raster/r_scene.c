@@ -210,6 +210,15 @@ static void unbin(struct r_scene *s, uint32_t ci)
    }
 }
 
+/* rs's draw region cut to its framebuffer: r = x0, y0, x1, y1 */
+static inline void draw_region(const struct r_state *rs, int r[4])
+{
+   r[0] = rs->x0 < 0 ? 0 : rs->x0;
+   r[1] = rs->y0 < 0 ? 0 : rs->y0;
+   r[2] = rs->x1 > rs->fb->width ? rs->fb->width : rs->x1;
+   r[3] = rs->y1 > rs->fb->height ? rs->fb->height : rs->y1;
+}
+
 /* The pixel box of a primitive whose window positions span
  * [minx, maxx] x [miny, maxy] widened by `pad` pixels, cut to the draw
  * region of rs; false when empty.  Non-finite positions take the whole
@@ -217,11 +226,9 @@ static void unbin(struct r_scene *s, uint32_t ci)
 static bool prim_box(const struct r_state *rs, float minx, float miny, float maxx, float maxy,
                      float pad, int box[4])
 {
-   int x0 = rs->x0, y0 = rs->y0, x1 = rs->x1, y1 = rs->y1;
-   if (x0 < 0) x0 = 0;
-   if (y0 < 0) y0 = 0;
-   if (x1 > rs->fb->width) x1 = rs->fb->width;
-   if (y1 > rs->fb->height) y1 = rs->fb->height;
+   int r[4];
+   draw_region(rs, r);
+   int x0 = r[0], y0 = r[1], x1 = r[2], y1 = r[3];
    if (isfinite(minx) && isfinite(maxx) && isfinite(miny) && isfinite(maxy) && isfinite(pad)) {
       /* pixel centres x + 0.5 inside [minx - pad, maxx + pad], with a
        * pixel of slack for the snapping to 1/256 and the fill rules */
@@ -242,17 +249,59 @@ static bool prim_box(const struct r_state *rs, float minx, float miny, float max
 static inline float min2(float a, float b) { return a < b ? a : b; }
 static inline float max2(float a, float b) { return a > b ? a : b; }
 
+/* floorf(v) and ceilf(v) as ints, for |v| < 2^23 */
+static inline int ifloor(float v)
+{
+   const int i = (int)v;
+   return i - ((float)i > v);
+}
+
+static inline int iceil(float v)
+{
+   const int i = (int)v;
+   return i + ((float)i < v);
+}
+
 /* The pixel box of n vertices' window positions widened by `pad` (see
  * prim_box); false when it is empty. */
 static bool vertex_box(const struct r_state *rs, const struct r_vertex *const *v, int n,
                        float pad, int box[4])
 {
    float minx = v[0]->pos[0], maxx = minx, miny = v[0]->pos[1], maxy = miny;
-   for (int i = 1; i < n; i++) {
-      minx = min2(minx, v[i]->pos[0]);
-      maxx = max2(maxx, v[i]->pos[0]);
-      miny = min2(miny, v[i]->pos[1]);
-      maxy = max2(maxy, v[i]->pos[1]);
+   /* every position and the pad under 2^22 (a NaN is not): prim_box's
+    * box in ints, without its floorf, ceilf and float compares (the
+    * sums are under 2^23, so exact integers, and so are the region's
+    * bounds, cut to the buffer, once the region is not empty); the
+    * stipple stage's dashes and small lines spent 210 instructions a
+    * line in prim_box */
+   const float lim = 0x1p22f;
+   bool small = fabsf(pad) < lim;
+   for (int i = 0; i < n; i++) {
+      const float x = v[i]->pos[0], y = v[i]->pos[1];
+      small &= fabsf(x) < lim;
+      small &= fabsf(y) < lim;
+      minx = min2(minx, x);
+      maxx = max2(maxx, x);
+      miny = min2(miny, y);
+      maxy = max2(maxy, y);
+   }
+   if (small) {
+      int r[4];
+      draw_region(rs, r);
+      int x0 = r[0], y0 = r[1], x1 = r[2], y1 = r[3];
+      if (x0 < x1 && y0 < y1) {
+         const int fx0 = ifloor(minx - pad) - 1, fx1 = iceil(maxx + pad) + 2;
+         const int fy0 = ifloor(miny - pad) - 1, fy1 = iceil(maxy + pad) + 2;
+         if (fx0 > x0) x0 = fx0 >= x1 ? x1 : fx0;
+         if (fy0 > y0) y0 = fy0 >= y1 ? y1 : fy0;
+         if (fx1 < x1) x1 = fx1 <= x0 ? x0 : fx1;
+         if (fy1 < y1) y1 = fy1 <= y0 ? y0 : fy1;
+      }
+      box[0] = x0;
+      box[1] = y0;
+      box[2] = x1;
+      box[3] = y1;
+      return x0 < x1 && y0 < y1;
    }
    for (int i = 0; i < n; i++) {
       if (isnan(v[i]->pos[0]) || isnan(v[i]->pos[1]))
@@ -507,6 +556,10 @@ void r_scene_tile_order(const struct r_scene *s, unsigned lanes, uint32_t *order
    }
 }
 
+/* how far r_scene_run_tile fetches ahead, in commands of the tile */
+#define RUN_AHEAD_CMD 8u
+#define RUN_AHEAD_SETUP 4u
+
 void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *stats,
                       unsigned slot)
 {
@@ -516,7 +569,24 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
    const int tx1 = tx0 + R_TILE_SIZE, ty1 = ty0 + R_TILE_SIZE;
    uint32_t cur = UINT32_MAX;
    struct r_state rs;
-   for (uint32_t i = 0; i < b->count; i++) {
+   const uint32_t n = b->count;
+   for (uint32_t i = 0; i < n; i++) {
+      /* A command is three dependent loads away (the bin's index, the
+       * 56-byte command, its setup), each a miss when the other core
+       * binned it; small points and lines spend less time drawing than
+       * waiting for them: fetch the commands RUN_AHEAD_CMD ahead and the
+       * setups (or first vertex) of those RUN_AHEAD_SETUP ahead, whose
+       * commands are by then in the cache.  (A prefetch never faults: a
+       * clear's NULL is harmless.) */
+      if (i + RUN_AHEAD_CMD < n) {
+         const char *pc = (const char *)&s->cmds[b->cmd[i + RUN_AHEAD_CMD]];
+         __builtin_prefetch(pc);
+         __builtin_prefetch(pc + sizeof(struct r_cmd) - 1);
+      }
+      if (i + RUN_AHEAD_SETUP < n) {
+         const struct r_cmd *pc = &s->cmds[b->cmd[i + RUN_AHEAD_SETUP]];
+         __builtin_prefetch(pc->tri ? (const void *)pc->tri : (const void *)pc->v[0]);
+      }
       const struct r_cmd *c = &s->cmds[b->cmd[i]];
       if (c->kind == R_CMD_CLEAR) {
          const struct r_fb_state *fb = s->states[c->state].fb;
