@@ -524,6 +524,74 @@ static void drawarrays_no_position_array(fc_h *h)
     fc_error(h, "feedback and select");
 }
 
+/* Triangle-class draws without a position array: every vertex at
+ * (0, 0, 0, 1), so every triangle has three equal window positions.
+ * Filled on both faces they draw nothing (fixgl returns at once: the
+ * 2^31 - 1 vertices of robust/huge-draws); unfilled faces still draw
+ * their zero-length edges or their points, selection still counts a hit
+ * and feedback still records the polygons; an occlusion query counts no
+ * sample for the filled ones.  Additive blending makes every point of
+ * GL_POINT faces count in the centre pixel. */
+static void drawarrays_no_position_faces(fc_h *h)
+{
+    static const GLenum modes[] = { GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                                    GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
+    static const GLubyte idx[] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+    static const GLenum faces[][2] = { { GL_FILL, GL_FILL }, { GL_POINT, GL_POINT },
+                                       { GL_LINE, GL_FILL }, { GL_FILL, GL_POINT } };
+    GLfloat fb[256];
+    GLuint sel[16], q, samples = 99;
+    fcu_clear(0, 0, 0, 0, 1);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glPointSize(3);
+    glColor4ub(9, 5, 3, 1);
+    for (unsigned f = 0; f < sizeof faces / sizeof faces[0]; f++) {
+        glPolygonMode(GL_FRONT, faces[f][0]);
+        glPolygonMode(GL_BACK, faces[f][1]);
+        for (unsigned m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+            glDrawArrays(modes[m], (GLint)(f + m), 8);
+            glDrawElements(modes[m], 6, GL_UNSIGNED_BYTE, idx);
+        }
+    }
+    fc_error(h, "drawn");
+    fc_capture(h);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glGenQueries(1, &q);
+    glBeginQuery(GL_SAMPLES_PASSED, q);
+    glDrawArrays(GL_QUADS, 0, 1 << 20);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, 70000);
+    glEndQuery(GL_SAMPLES_PASSED);
+    glGetQueryObjectuiv(q, GL_QUERY_RESULT, &samples);
+    fc_value(h, "samples of filled faces", samples);
+    glDeleteQueries(1, &q);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glDisable(GL_CULL_FACE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glFeedbackBuffer(256, GL_2D, fb);
+    glRenderMode(GL_FEEDBACK);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glDrawArrays(GL_QUADS, 0, 4);
+    const GLint nfb = glRenderMode(GL_RENDER);
+    fc_value(h, "feedback values", nfb);
+    for (int i = 0; i < nfb && i < 40; i++)
+        fc_value(h, "feedback", (int)(fb[i] * 1000.0f));
+    glSelectBuffer(16, sel);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(5);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 5);
+    fc_value(h, "select hits", glRenderMode(GL_RENDER));
+    fc_value(h, "select name", (int)sel[3]);
+    glDisable(GL_BLEND);
+    glPointSize(1);
+    fc_error(h, "query, feedback and select");
+    fc_capture(h);
+}
+
 /* glDeleteLists before any list exists: fixgl passed its table's NULL
  * pointer to memmove (undefined behaviour that UBSan reports; found by
  * the libFuzzer target). */
@@ -2176,6 +2244,7 @@ const fc_case fc_cases_robust[] = {
     ROBUST("arrayelement_wrapping_index", 64, 64, 1, arrayelement_wrapping_index),
     ROBUST("depthmask_byte", 8, 8, 0, depthmask_byte),
     ROBUST("drawarrays_no_position_array", 32, 32, 1, drawarrays_no_position_array),
+    ROBUST("drawarrays_no_position_faces", 32, 32, 2, drawarrays_no_position_faces),
     ROBUST("deletelists_before_any", 8, 8, 0, deletelists_before_any),
     ROBUST("map2_huge_order_compiled", 8, 8, 0, map2_huge_order_compiled),
     ROBUST("calllists_float_names", 64, 64, 1, calllists_float_names),

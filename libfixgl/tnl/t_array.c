@@ -298,6 +298,20 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    count = trim_count(mode, count);
    if (count == 0)
       return;
+   /* Without a position array every vertex is at the same position (see
+    * set_array_format), so every triangle, quad and polygon of the draw
+    * has three equal window positions: a snapped area of 0, which the
+    * rasterizer discards whatever the other attributes (r_tri.c
+    * area_culled; llvmpipe lp_setup_tri.c), and outside the volume all
+    * three vertices are out of the same plane (t_clip_triangle).  Filled
+    * on both faces and rendered (no selection hit, no feedback token, no
+    * unfilled edges or points), such a draw changes nothing: it returns
+    * here in O(1), where the oracle walks every vertex (robust/huge-draws:
+    * 2^31 - 1 vertices of GL_QUADS).  Its lines and points are drawn. */
+   if (!ctx->Array.Array[FGL_ARRAY_VERTEX].Enabled && mode >= GL_TRIANGLES &&
+       ctx->RenderMode == GL_RENDER && ctx->Polygon.FrontMode == GL_FILL &&
+       ctx->Polygon.BackMode == GL_FILL)
+      return;
 
    /* glDrawElements: a small post-transform vertex cache.  An element that
     * the primitives use again while it is still in the direct-mapped

@@ -9,7 +9,10 @@
  * no error and the process grows by less than BOUND_KB; so do draws of
  * 20 million vertices in every mode (more than the 8 GiB scratch of a
  * draw fetched at once held: fixgl raised GL_OUT_OF_MEMORY for them).
- * The oracle completes the same draws (glDrawArrays(GL_QUADS, 0,
+ * The triangle-class draws among them return at once (all their
+ * triangles have three equal positions: t_array.c t_draw_arrays, case
+ * robust/drawarrays_no_position_faces); the points and lines are drawn,
+ * 20 million each.  The oracle completes the same draws (glDrawArrays(GL_QUADS, 0,
  * 2^31 - 1) in minutes, no error; ORACLE-NOTES.md "Vertex arrays"); it is
  * not run here.  glDrawElements and glDrawRangeElements read only the
  * indices they are given.  Then a small draw shows the state intact.  The
