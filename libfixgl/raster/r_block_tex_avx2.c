@@ -312,31 +312,50 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
    TEX_KERNELS_ENV(p##_bi_tp_tp, ENV_TP_TP | VAR_BILINEAR, bl)                            \
    TEX_KERNELS_ENV(p##_bi_tp_p, ENV_TP_P | VAR_BILINEAR, bl)
 
-TEX_KERNELS_BLEND(opaque, BL_NONE)
-TEX_KERNELS_BLEND(alpha, BL_ALPHA)
-TEX_KERNELS_BLEND_TRI(opaque, BL_NONE)
-TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
-TEX_KERNELS_BLEND_BI(opaque, BL_NONE)
-TEX_KERNELS_BLEND_BI(alpha, BL_ALPHA)
+/* The kernels are compiled in three translation units, so that a build
+ * spreads their compile time over its jobs (one unit held about half of
+ * the library's kernel compile time): this file with R_BLOCK_TEX_PART 0
+ * (the default) the general lookup's and the choice, and the wrappers
+ * r_block_tex_tri_avx2.c (1) and r_block_tex_bi_avx2.c (2) the trilinear
+ * and bilinear REPEAT lookups' four environments, each exported as a
+ * table [blend][env - ENV_T_T][zfmt][zwrite] (hidden in the library;
+ * the AVX-512 build renames them, libfixgl/meson.build). */
+#ifndef R_BLOCK_TEX_PART
+#define R_BLOCK_TEX_PART 0
+#endif
 
 #define ROW(p)                                                                             \
    { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
-/* [lookup][blend][env][zfmt][zwrite] (lookup 1 trilinear, 2 bilinear
- * for the envs of TEX_KERNELS_BLEND_TRI and _BI, the general one for the
- * others and for lookup 0) */
-static const r_tri_kernel tex_table[3][2][6][3][2] = {
-   { { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
-       ROW(opaque_decal) },
-     { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
-       ROW(alpha_decal) } },
-   { { ROW(opaque_args), ROW(opaque_tri_t_t), ROW(opaque_tri_t_p), ROW(opaque_tri_tp_tp),
-       ROW(opaque_tri_tp_p), ROW(opaque_decal) },
-     { ROW(alpha_args), ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp),
-       ROW(alpha_tri_tp_p), ROW(alpha_decal) } },
-   { { ROW(opaque_args), ROW(opaque_bi_t_t), ROW(opaque_bi_t_p), ROW(opaque_bi_tp_tp),
-       ROW(opaque_bi_tp_p), ROW(opaque_decal) },
-     { ROW(alpha_args), ROW(alpha_bi_t_t), ROW(alpha_bi_t_p), ROW(alpha_bi_tp_tp),
-       ROW(alpha_bi_tp_p), ROW(alpha_decal) } },
+
+typedef r_tri_kernel tex_env_table[2][4][3][2];
+extern const tex_env_table r_block_tex_tables_tri, r_block_tex_tables_bi;
+
+#if R_BLOCK_TEX_PART == 1
+TEX_KERNELS_BLEND_TRI(opaque, BL_NONE)
+TEX_KERNELS_BLEND_TRI(alpha, BL_ALPHA)
+const tex_env_table r_block_tex_tables_tri = {
+   { ROW(opaque_tri_t_t), ROW(opaque_tri_t_p), ROW(opaque_tri_tp_tp), ROW(opaque_tri_tp_p) },
+   { ROW(alpha_tri_t_t), ROW(alpha_tri_t_p), ROW(alpha_tri_tp_tp), ROW(alpha_tri_tp_p) },
+};
+#elif R_BLOCK_TEX_PART == 2
+TEX_KERNELS_BLEND_BI(opaque, BL_NONE)
+TEX_KERNELS_BLEND_BI(alpha, BL_ALPHA)
+const tex_env_table r_block_tex_tables_bi = {
+   { ROW(opaque_bi_t_t), ROW(opaque_bi_t_p), ROW(opaque_bi_tp_tp), ROW(opaque_bi_tp_p) },
+   { ROW(alpha_bi_t_t), ROW(alpha_bi_t_p), ROW(alpha_bi_tp_tp), ROW(alpha_bi_tp_p) },
+};
+#else
+TEX_KERNELS_BLEND(opaque, BL_NONE)
+TEX_KERNELS_BLEND(alpha, BL_ALPHA)
+
+/* the general lookup's [blend][env][zfmt][zwrite]; the trilinear and
+ * bilinear REPEAT lookups use theirs for ENV_T_T .. ENV_TP_P and these
+ * for ENV_ARGS and ENV_DECAL */
+static const r_tri_kernel tex_table[2][6][3][2] = {
+   { ROW(opaque_args), ROW(opaque_t_t), ROW(opaque_t_p), ROW(opaque_tp_tp), ROW(opaque_tp_p),
+     ROW(opaque_decal) },
+   { ROW(alpha_args), ROW(alpha_t_t), ROW(alpha_t_p), ROW(alpha_tp_tp), ROW(alpha_tp_p),
+     ROW(alpha_decal) },
 };
 
 /* the form of a group of channels (r_tex_combine.simple_fn_*): 0 T,
@@ -397,5 +416,10 @@ r_tri_kernel r_block_choose_tri_tex(const struct r_state *rs, bool flat_color)
    else if (fr >= 0 && fa >= 0 && forms[fr][fa] >= 0)
       env = forms[fr][fa];
    const int lookup = tex8_is_trilinear_repeat(t) ? 1 : tex8_is_bilinear(t, R_WRAP_REPEAT) ? 2 : 0;
-   return tex_table[lookup][bl][env][zf][rs->dsa->depth_write];
+   const int zw = rs->dsa->depth_write;
+   if (lookup != 0 && env >= ENV_T_T && env <= ENV_TP_P)
+      return (lookup == 1 ? r_block_tex_tables_tri
+                          : r_block_tex_tables_bi)[bl][env - ENV_T_T][zf][zw];
+   return tex_table[bl][env][zf][zw];
 }
+#endif
