@@ -298,12 +298,13 @@ void t_draw_arrays(struct fgl_context *ctx, GLenum mode, GLint first, GLsizei co
    count = trim_count(mode, count);
    if (count == 0)
       return;
-   /* Without a position array every vertex is at the same position (see
+   /* ORACLE-NOTES.md "Client vertex arrays", "Without a position array
+    * every triangle is empty": every vertex is at the same position (see
     * set_array_format), so every triangle, quad and polygon of the draw
     * has three equal window positions: a snapped area of 0, which the
     * rasterizer discards whatever the other attributes (r_tri.c
-    * area_culled; llvmpipe lp_setup_tri.c), and outside the volume all
-    * three vertices are out of the same plane (t_clip_triangle).  Filled
+    * area_culled), and outside the volume all three vertices are out of
+    * the same plane (t_clip_triangle).  Filled
     * on both faces and rendered (no selection hit, no feedback token, no
     * unfilled edges or points), such a draw changes nothing: it returns
     * here in O(1), where the oracle walks every vertex (robust/huge-draws:
