@@ -394,14 +394,25 @@ static fz_call *emit(gen *g, int fn, unsigned valid)
      * a large fan-out, nesting to 64 levels is exponential work in both
      * libraries, a hang of the stream's own making.  (The oracle also
      * crashes when a list being compiled calls itself inside glBegin.)
-     * A glNewList while a list is compiled fails (GL_INVALID_OPERATION):
-     * the outer list goes on, with its own bound and count; the next
-     * glEndList ends it.  display_list() renames its list after this,
-     * and sets the bound again. */
+     * Which glNewList starts a list is not modelled (a bad mode, name 0,
+     * an open glBegin or an open list make it fail), so the bound is the
+     * lowest name of every glNewList since the last glEndList: a failed
+     * outer glNewList(7, bad mode) followed by glNewList(4, GL_COMPILE)
+     * compiles list 4, which must not call 4 (it called itself twice:
+     * 2^64 calls through 64 levels, the long campaign's timeouts of
+     * chunks 17 and b7; the oracle hangs on such a list too, and crashes
+     * when the calls are inside glBegin).  When the outer one is the list
+     * compiled (the inner glNewList raises GL_INVALID_OPERATION), the
+     * lower bound is only stricter; the next glEndList ends it.
+     * display_list() renames its list after this, and sets the bound
+     * again. */
     if (fn == special[E_NEWLIST]) {
+        const uint32_t name = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
         if (!g->compiling) {
-            g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
+            g->compiling = name;
             g->list_calls = 0;
+        } else if (name < g->compiling) {
+            g->compiling = name;
         }
     } else if (fn == special[E_ENDLIST]) {
         g->compiling = 0;
@@ -445,8 +456,10 @@ static void display_list(gen *g)
     /* the bound of the list's calls is the name it is compiled under (the
      * name emit() saw was the random one: a list renamed 5 but bounded by
      * a random 2^30 called itself, 2^64 calls through 64 levels) */
-    if (c && !outer)
-        g->compiling = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
+    if (c) {
+        const uint32_t bound = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
+        g->compiling = outer && outer < bound ? outer : bound;
+    }
     g->depth++;
     for (uint32_t i = 0, n = 1 + below(g->s, 6); i < n && room(g); i++)
         piece(g);

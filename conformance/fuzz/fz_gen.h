@@ -29,6 +29,8 @@ size_t fz_gen_seed(uint64_t seed, fz_call *out, size_t max);
 /* The stream of seed, and (*bytes, malloc'ed) the input bytes that
  * fz_gen_bytes decodes into the same stream. */
 uint8_t *fz_gen_seed_bytes(uint64_t seed, fz_call *out, size_t max, size_t *len);
+/* The most calls fixgl-libfuzzer decodes from one input. */
+#define FZ_LIBFUZZER_CALLS 400
 /* Up to max calls decoded from data (stops when the bytes run out). */
 size_t fz_gen_bytes(const uint8_t *data, size_t len, fz_call *out, size_t max);
 

@@ -27,9 +27,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#define MAX_CALLS 400
-
-static fz_call calls[MAX_CALLS];
+static fz_call calls[FZ_LIBFUZZER_CALLS];
 static uint64_t calls_run, inputs_run;
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
@@ -66,7 +64,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    const size_t n = fz_gen_bytes(data, size, calls, MAX_CALLS);
+    const size_t n = fz_gen_bytes(data, size, calls, FZ_LIBFUZZER_CALLS);
     OSMesaContext ctx = fz_exec_context();
     if (!ctx)
         abort();

@@ -5,6 +5,10 @@
  *              [--fixgl EXEC] [--oracle EXEC]
  *   fixgl-fuzz --print SEED [--calls L]    the stream of SEED as a C program
  *   fixgl-fuzz --write-stream FILE --seed S [--calls L]
+ *   fixgl-fuzz --bytes INPUT [--write-stream FILE]
+ *              a libFuzzer input (a finding in artifacts/) decoded as
+ *              fixgl-libfuzzer decodes it: printed as a C program, or
+ *              written as a stream file the executors replay
  *                                          its stream file (for the executors)
  *
  * Streams of seeds S, S+1, ... (L calls each) run in J worker processes
@@ -503,8 +507,51 @@ static void usage(FILE *f, const char *argv0)
         "          [--fixgl EXEC] [--oracle EXEC]\n"
         "       %s --print SEED [--calls L]\n"
         "       %s --write-stream FILE --seed S [--calls L]\n"
+        "       %s --bytes INPUT [--write-stream FILE]   (a libFuzzer input)\n"
         "       %s --version | --help\n"
-        "Every option also as --opt=value.\n", argv0, argv0, argv0, argv0);
+        "Every option also as --opt=value.\n", argv0, argv0, argv0, argv0, argv0);
+}
+
+/* --bytes INPUT [--write-stream FILE]: a libFuzzer input decoded as
+ * fixgl-libfuzzer decodes it (fz_gen_init(NULL), at most
+ * FZ_LIBFUZZER_CALLS calls), printed as C or written as a stream file */
+static int from_bytes(const char *input, const char *stream_file)
+{
+    FILE *f = fopen(input, "rb");
+    uint8_t *data = NULL;
+    size_t len = 0, cap = 0, got;
+    if (!f) {
+        fprintf(stderr, "fixgl-fuzz: cannot open %s\n", input);
+        return 2;
+    }
+    do {
+        if (len == cap) {
+            uint8_t *grown = realloc(data, cap = cap ? 2 * cap : 4096);
+            if (!grown) {
+                free(data);
+                fclose(f);
+                return 2;
+            }
+            data = grown;
+        }
+        got = fread(data + len, 1, cap - len, f);
+        len += got;
+    } while (got > 0);
+    fclose(f);
+    fz_gen_init(NULL);
+    static fz_call calls[FZ_LIBFUZZER_CALLS];
+    const size_t n = fz_gen_bytes(data, len, calls, FZ_LIBFUZZER_CALLS);
+    int rc = 0;
+    if (stream_file) {
+        rc = fz_write_stream(stream_file, calls, n) ? 1 : 0;
+    } else {
+        char comment[700];
+        snprintf(comment, sizeof comment, "fixgl-libfuzzer input %s (%zu bytes, %zu calls)",
+                 input, len, n);
+        fz_print_c(stdout, calls, n, comment);
+    }
+    free(data);
+    return rc;
 }
 
 /* the entry points an executor lacks, one flag each (file scope: it lives
@@ -520,12 +567,13 @@ int main(int argc, char **argv)
         { "out", required_argument, NULL, 'o' }, { "known", required_argument, NULL, 'k' },
         { "no-reduce", no_argument, NULL, 'R' }, { "fixgl", required_argument, NULL, 'F' },
         { "oracle", required_argument, NULL, 'O' }, { "print", required_argument, NULL, 'p' },
-        { "write-stream", required_argument, NULL, 'w' }, { "help", no_argument, NULL, 'h' },
+        { "write-stream", required_argument, NULL, 'w' }, { "bytes", required_argument, NULL, 'b' },
+        { "help", no_argument, NULL, 'h' },
         { "version", no_argument, NULL, 'V' }, { NULL, 0, NULL, 0 } };
     double seconds = 60;
     unsigned long long seed = 1, max_streams = 0, print_seed = 0;
     int print = 0, ch;
-    const char *stream_file = NULL;
+    const char *stream_file = NULL, *bytes_file = NULL;
     missing = calloc(fz_table_count, 1);
     unsigned long long counts[C_NCAT] = { 0 }, unknown[C_NCAT] = { 0 };
     unsigned long long calls_total = 0, streams = 0, next_seed;
@@ -548,6 +596,7 @@ int main(int argc, char **argv)
         case 'O': opt.oracle = optarg; break;
         case 'p': print = 1; print_seed = strtoull(optarg, NULL, 10); break;
         case 'w': print = 2; stream_file = optarg; break;
+        case 'b': bytes_file = optarg; break;
         case 'h': usage(stdout, argv[0]); return 0;
         case 'V': puts(FIXGL_VERSION_BANNER("fixgl-fuzz")); return 0;
         default: usage(stderr, argv[0]); return 2;
@@ -557,6 +606,8 @@ int main(int argc, char **argv)
         usage(stderr, argv[0]);
         return 2;
     }
+    if (bytes_file)
+        return from_bytes(bytes_file, stream_file);
     if (print) {
         fz_gen_init(NULL);
         fz_call *calls = malloc(opt.calls * sizeof *calls);
