@@ -744,6 +744,32 @@ fz_call *fz_read_stream(const char *path, size_t *n)
     return calls;
 }
 
+size_t fz_gen_file(const char *path, fz_call *out, size_t max, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    uint8_t *data = NULL;
+    size_t cap = 0, got, n = FZ_GEN_FILE_ERROR;
+    *len = 0;
+    if (!f)
+        return FZ_GEN_FILE_ERROR;
+    do {
+        if (*len == cap) {
+            uint8_t *grown = realloc(data, cap = cap ? 2 * cap : 4096);
+            if (!grown)
+                goto out;
+            data = grown;
+        }
+        got = fread(data + *len, 1, cap - *len, f);
+        *len += got;
+    } while (got > 0);
+    if (!ferror(f))
+        n = fz_gen_bytes(data, *len, out, max);
+out:
+    free(data);
+    fclose(f);
+    return n;
+}
+
 static void print_arg(FILE *f, const fz_param *p, const fz_arg *a)
 {
     uint32_t u32;

@@ -34,6 +34,12 @@ uint8_t *fz_gen_seed_bytes(uint64_t seed, fz_call *out, size_t max, size_t *len)
 /* Up to max calls decoded from data (stops when the bytes run out). */
 size_t fz_gen_bytes(const uint8_t *data, size_t len, fz_call *out, size_t max);
 
+/* The calls decoded from the bytes of the file at path (a libFuzzer input),
+ * as fz_gen_bytes; *len its size.  FZ_GEN_FILE_ERROR when it cannot be
+ * read. */
+#define FZ_GEN_FILE_ERROR ((size_t)-1)
+size_t fz_gen_file(const char *path, fz_call *out, size_t max, size_t *len);
+
 /* Fills the input arena (deterministic, the same in every process). */
 void fz_fill_input_arena(uint8_t *arena, size_t size);
 

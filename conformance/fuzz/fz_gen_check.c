@@ -137,31 +137,6 @@ static int check(const fz_call *calls, size_t n, const char *what)
     return 0;
 }
 
-static uint8_t *read_file(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    uint8_t *data = NULL;
-    size_t cap = 0, got;
-    *len = 0;
-    if (!f)
-        return NULL;
-    do {
-        if (*len == cap) {
-            uint8_t *grown = realloc(data, cap = cap ? 2 * cap : 4096);
-            if (!grown) {
-                free(data);
-                fclose(f);
-                return NULL;
-            }
-            data = grown;
-        }
-        got = fread(data + *len, 1, cap - *len, f);
-        *len += got;
-    } while (got > 0);
-    fclose(f);
-    return data;
-}
-
 int main(int argc, char **argv)
 {
     static const struct option longopts[] = {
@@ -194,16 +169,14 @@ int main(int argc, char **argv)
     unsigned long streams = 0, lists_calls = 0;
     for (; optind < argc; optind++) {
         size_t len;
-        uint8_t *data = read_file(argv[optind], &len);
-        if (!data) {
+        const size_t n = fz_gen_file(argv[optind], calls, FZ_LIBFUZZER_CALLS, &len);
+        if (n == FZ_GEN_FILE_ERROR) {
             fprintf(stderr, "fixgl-fuzz-gen-check: cannot read %s\n", argv[optind]);
             return 2;
         }
-        const size_t n = fz_gen_bytes(data, len, calls, FZ_LIBFUZZER_CALLS);
         snprintf(what, sizeof what, "input %s", argv[optind]);
         failed += check(calls, n, what);
         streams++;
-        free(data);
     }
     for (unsigned long s = 1; s <= seeds; s++) {
         const size_t n = fz_gen_seed(s, calls, 300);

@@ -517,30 +517,14 @@ static void usage(FILE *f, const char *argv0)
  * FZ_LIBFUZZER_CALLS calls), printed as C or written as a stream file */
 static int from_bytes(const char *input, const char *stream_file)
 {
-    FILE *f = fopen(input, "rb");
-    uint8_t *data = NULL;
-    size_t len = 0, cap = 0, got;
-    if (!f) {
-        fprintf(stderr, "fixgl-fuzz: cannot open %s\n", input);
+    static fz_call calls[FZ_LIBFUZZER_CALLS];
+    size_t len;
+    fz_gen_init(NULL);
+    const size_t n = fz_gen_file(input, calls, FZ_LIBFUZZER_CALLS, &len);
+    if (n == FZ_GEN_FILE_ERROR) {
+        fprintf(stderr, "fixgl-fuzz: cannot read %s\n", input);
         return 2;
     }
-    do {
-        if (len == cap) {
-            uint8_t *grown = realloc(data, cap = cap ? 2 * cap : 4096);
-            if (!grown) {
-                free(data);
-                fclose(f);
-                return 2;
-            }
-            data = grown;
-        }
-        got = fread(data + len, 1, cap - len, f);
-        len += got;
-    } while (got > 0);
-    fclose(f);
-    fz_gen_init(NULL);
-    static fz_call calls[FZ_LIBFUZZER_CALLS];
-    const size_t n = fz_gen_bytes(data, len, calls, FZ_LIBFUZZER_CALLS);
     int rc = 0;
     if (stream_file) {
         rc = fz_write_stream(stream_file, calls, n) ? 1 : 0;
@@ -550,7 +534,6 @@ static int from_bytes(const char *input, const char *stream_file)
                  input, len, n);
         fz_print_c(stdout, calls, n, comment);
     }
-    free(data);
     return rc;
 }
 
