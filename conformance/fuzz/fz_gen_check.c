@@ -11,8 +11,8 @@
  *
  * - glNewList starts a list when none is open, the name is not 0, the mode
  *   is GL_COMPILE or GL_COMPILE_AND_EXECUTE and no executed glBegin is
- *   open (probed on the oracle: glNewList inside an executed glBegin
- *   starts nothing; glEndList inside glBegin ends the list);
+ *   open; glEndList inside glBegin ends the list (ORACLE-NOTES.md
+ *   "Display lists", "Which glNewList starts a list");
  * - while a list is open, glCallList(n) is compiled into it, and
  *   glCallLists is compiled with its names (any n > 0 is reported: the
  *   generator compiles it with no names);
@@ -20,7 +20,7 @@
  *
  * At the end of each stream (and at every glCallList executed outside a
  * list) the work of executing a list, 1 + the work of what it calls
- * (at most 64 levels, as both libraries), must stay under 10^6.
+ * (at most 64 levels, "Nesting" there), must stay under 10^6.
  * The streams: seeds 1..N of the differential campaign (300 calls each),
  * N random byte strings decoded as fixgl-libfuzzer decodes its inputs,
  * and each FILE (a libFuzzer input, e.g. a former timeout). */
@@ -44,7 +44,7 @@ typedef struct {
 
 static int fn_newlist, fn_endlist, fn_calllist, fn_calllists, fn_begin, fn_end;
 
-static const list_def *find(const list_def *defs, unsigned n, uint32_t name)
+static list_def *find(list_def *defs, unsigned n, uint32_t name)
 {
     for (unsigned i = 0; i < n; i++)
         if (defs[i].name == name)
@@ -53,7 +53,7 @@ static const list_def *find(const list_def *defs, unsigned n, uint32_t name)
 }
 
 /* executions when list name is called at nesting depth depth (1-based) */
-static double work(const list_def *defs, unsigned n, uint32_t name, int depth)
+static double work(list_def *defs, unsigned n, uint32_t name, int depth)
 {
     const list_def *d = find(defs, n, name);
     if (!d || depth > 64)
@@ -86,7 +86,7 @@ static int check(const fz_call *calls, size_t n, const char *what)
             }
         } else if (fn == fn_endlist) {
             if (compiling) {
-                list_def *d = (list_def *)find(defs, ndefs, open.name);
+                list_def *d = find(defs, ndefs, open.name);
                 if (!d) {
                     if (ndefs == MAX_LISTS) {
                         printf("%s: more than %d lists\n", what, MAX_LISTS);
