@@ -356,6 +356,15 @@ typedef struct {
 
 static int room(const gen *g) { return g->n < g->max && !exhausted(g->s); }
 
+/* the bound a glNewList sets for the calls compiled after it: its name
+ * (1 for name 0, whose glNewList fails), or the lower bound already set
+ * since the last glEndList (see emit) */
+static uint32_t list_bound(uint32_t bound, const fz_call *newlist)
+{
+    const uint32_t name = (uint32_t)newlist->a[0].i ? (uint32_t)newlist->a[0].i : 1;
+    return bound && bound < name ? bound : name;
+}
+
 static fz_call *emit(gen *g, int fn, unsigned valid)
 {
     if (fn < 0 || !room(g))
@@ -407,13 +416,9 @@ static fz_call *emit(gen *g, int fn, unsigned valid)
      * display_list() renames its list after this, and sets the bound
      * again. */
     if (fn == special[E_NEWLIST]) {
-        const uint32_t name = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
-        if (!g->compiling) {
-            g->compiling = name;
+        if (!g->compiling)
             g->list_calls = 0;
-        } else if (name < g->compiling) {
-            g->compiling = name;
-        }
+        g->compiling = list_bound(g->compiling, c);
     } else if (fn == special[E_ENDLIST]) {
         g->compiling = 0;
     } else if (g->compiling && fn == special[E_CALLLIST]) {
@@ -456,10 +461,8 @@ static void display_list(gen *g)
     /* the bound of the list's calls is the name it is compiled under (the
      * name emit() saw was the random one: a list renamed 5 but bounded by
      * a random 2^30 called itself, 2^64 calls through 64 levels) */
-    if (c) {
-        const uint32_t bound = (uint32_t)c->a[0].i ? (uint32_t)c->a[0].i : 1;
-        g->compiling = outer && outer < bound ? outer : bound;
-    }
+    if (c)
+        g->compiling = list_bound(outer, c);
     g->depth++;
     for (uint32_t i = 0, n = 1 + below(g->s, 6); i < n && room(g); i++)
         piece(g);
