@@ -5,11 +5,11 @@
  *              [--fixgl EXEC] [--oracle EXEC]
  *   fixgl-fuzz --print SEED [--calls L]    the stream of SEED as a C program
  *   fixgl-fuzz --write-stream FILE --seed S [--calls L]
+ *                                          its stream file (for the executors)
  *   fixgl-fuzz --bytes INPUT [--write-stream FILE]
  *              a libFuzzer input (a finding in artifacts/) decoded as
  *              fixgl-libfuzzer decodes it: printed as a C program, or
  *              written as a stream file the executors replay
- *                                          its stream file (for the executors)
  *
  * Streams of seeds S, S+1, ... (L calls each) run in J worker processes
  * until N seconds or N streams (whichever comes first).  A worker writes
