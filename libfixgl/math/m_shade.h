@@ -120,7 +120,8 @@ void m_shade_point_prepared(const struct m_shade_env *env, const float n[3], con
  * FMA kernel (math/m_shade_avx2.c) on a CPU that has both, else the
  * portable one (math/m_shade8.c, m_shade_point_prepared lane by lane).
  * Both are also callable directly (tests, benchmarks);
- * m_shade_point8_avx2 exists only where M_SHADE_HAVE_AVX2 is defined and
+ * m_shade_point8_avx2 exists only where M_SHADE_HAVE_AVX2 is defined (an
+ * x86-64 build with the SIMD kernels: meson's simd_kernels) and
  * may be called only when m_shade_point8_avx2_supported().
  * (ISO C before C2X does not convert float (*)[8] to const float (*)[8]
  * silently: a caller with non-const arrays casts them,
@@ -138,7 +139,7 @@ void m_shade_point8_portable(const struct m_shade_env *env, const float n[3][M_S
                              float primary[4][M_SHADE_LANES],
                              float secondary[4][M_SHADE_LANES]);
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if defined(__x86_64__) && defined(__GNUC__) && defined(FGL_HAVE_BLOCK_KERNELS)
 #define M_SHADE_HAVE_AVX2 1
 void m_shade_point8_avx2(const struct m_shade_env *env, const float n[3][M_SHADE_LANES],
                          const float p[3][M_SHADE_LANES], bool back,

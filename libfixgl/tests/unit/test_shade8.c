@@ -492,6 +492,8 @@ static void run_env(const struct m_shade_env *e, int batches, bool have_avx2, lo
 #if defined(M_SHADE_HAVE_AVX2)
       if (have_avx2)
          bad[2] += compare("avx2", m_shade_point8_avx2, e, &b, back, with_color, ref_p, ref_s);
+#else
+      (void)have_avx2;
 #endif
    }
 }
