@@ -19,6 +19,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdint.h>
 
 #include "math/m_matrix.h"
@@ -421,6 +422,8 @@ struct fgl_texture_image {
    GLenum BaseFormat;               /* GL_RGBA, GL_RGB, GL_LUMINANCE,
                                      * GL_LUMINANCE_ALPHA, GL_ALPHA or
                                      * GL_INTENSITY */
+   /* Data, Store and ZValues are reference-counted blocks (fgl_rc_alloc:
+    * the state objects that sample them hold them; main/teximage.c) */
    uint8_t *Data;                   /* Width * Height * Depth RGBA8
                                      * texels, slice by slice */
    /* the oracle's pipe format for the image (its channel bits, which
@@ -514,6 +517,11 @@ struct fgl_texture_objects {
    struct fgl_texture_object Default[FGL_TEX_TARGETS];
    unsigned Refs;                      /* contexts sharing it */
    pthread_mutex_t Lock;
+   /* [S: main/teximage.h:_mesa_lock_texture] Mesa's
+    * Shared->TextureStateStamp: moved by every change of an object or
+    * its images, in any context (fgl_tex_object_changed); render_batch
+    * compares it (tnl/t_render.c, fgl_texture_local.DerivedStamp) */
+   atomic_uint Stamp;
 };
 
 /* The per-context texture object state: Mesa's
@@ -530,6 +538,16 @@ struct fgl_texture_local {
    /* the proxy objects of GL_PROXY_TEXTURE_1D, _2D, _3D and _CUBE_MAP:
     * images without texels */
    struct fgl_texture_object Proxy[4];
+   /* [S: st_draw.c:prepare_draw, st_atom_texture.c:update_textures] the
+    * oracle builds its sampler views from the objects at the draw that
+    * finds its texture state dirty, not at the glBegin before it: the
+    * texture-unit state objects state.c derived (DerivedPending, with
+    * the shared Stamp of then) and no draw has used yet are derived again
+    * by render_batch when another context changed an object since
+    * (api/shared_textures step 1; ORACLE-NOTES.md "Another context's
+    * change of a shared texture") */
+   unsigned DerivedStamp;
+   bool DerivedPending;
 };
 
 /* GL_MULTISAMPLE_BIT: the oracle's OSMesa buffers have no multisample
@@ -1428,6 +1446,16 @@ static inline bool fgl_inside_begin_end(const struct fgl_context *ctx)
       if ((newstate) & FGL_NEW_LIGHT)                      \
          (ctx)->PopAttribState |= GL_LIGHTING_BIT;         \
    } while (0)
+
+/* A texture object or one of its images changed: this context's texture
+ * state is dirty, and the shared objects' Stamp moves (Mesa's
+ * _mesa_lock_texture) for a draw of another context whose texture state
+ * was derived before (tnl/t_render.c render_batch). */
+static inline void fgl_tex_object_changed(struct fgl_context *ctx)
+{
+   ctx->NewState |= FGL_NEW_TEXTURE;
+   atomic_fetch_add_explicit(&ctx->TexObjects->Stamp, 1u, memory_order_release);
+}
 
 /* [S: feedback.h:_mesa_feedback_token] one value into the feedback
  * buffer; values past its end are counted only (the overflow glRenderMode

@@ -4,10 +4,12 @@
  */
 #include "fgl_alloc.h"
 
+#include <stdatomic.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #ifdef FGL_ALLOC_FAIL_INJECTION
-#include <stdatomic.h>
 
 /* Test builds only (the objects of the suite `robust`): the allocation
  * counter and the one that is to fail. */
@@ -66,4 +68,44 @@ void *fgl_aligned_alloc(size_t align, size_t size)
 void fgl_free(void *p)
 {
    free(p);
+}
+
+/* A reference-counted block: the count, then the caller's bytes at
+ * malloc's alignment. */
+struct rc_block {
+   atomic_size_t refs;
+   _Alignas(max_align_t) unsigned char data[];
+};
+
+static struct rc_block *rc_block_of(const void *p)
+{
+   return (struct rc_block *)((unsigned char *)(uintptr_t)p - offsetof(struct rc_block, data));
+}
+
+void *fgl_rc_alloc(size_t size, int zeroed)
+{
+   if (size > SIZE_MAX - sizeof(struct rc_block))
+      return NULL;
+   struct rc_block *b = zeroed ? fgl_calloc(1, sizeof(*b) + size) : fgl_malloc(sizeof(*b) + size);
+   if (!b)
+      return NULL;
+   atomic_init(&b->refs, 1);
+   return b->data;
+}
+
+void fgl_rc_hold(const void *p)
+{
+   if (p)
+      atomic_fetch_add_explicit(&rc_block_of(p)->refs, 1, memory_order_relaxed);
+}
+
+void fgl_rc_release(const void *p)
+{
+   if (!p)
+      return;
+   struct rc_block *b = rc_block_of(p);
+   /* the last reference frees: what the other holders wrote before
+    * dropping theirs happens before the free */
+   if (atomic_fetch_sub_explicit(&b->refs, 1, memory_order_acq_rel) == 1)
+      fgl_free(b);
 }

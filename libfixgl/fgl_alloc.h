@@ -31,6 +31,17 @@ void *fgl_realloc(void *p, size_t size);
 void *fgl_aligned_alloc(size_t align, size_t size);
 void fgl_free(void *p);
 
+/* Reference-counted blocks: storage that outlives its owner while someone
+ * else still reads it (texel images, which a pending scene of another
+ * context sharing the texture may still sample: main/teximage.c, state.c
+ * update_tex_units).  fgl_rc_alloc gives size bytes (zeroed if asked),
+ * aligned as malloc's, with one reference, or NULL; fgl_rc_hold adds a
+ * reference and fgl_rc_release drops one, freeing the block with the
+ * last.  Both ignore NULL.  The count is atomic: any thread may drop. */
+void *fgl_rc_alloc(size_t size, int zeroed);
+void fgl_rc_hold(const void *p);
+void fgl_rc_release(const void *p);
+
 #ifdef FGL_ALLOC_FAIL_INJECTION
 void fgl_alloc_fail_at(long n);
 long fgl_alloc_count(void);

@@ -13,6 +13,7 @@
 
 #include "math/m_gallivm.h"
 #include "context.h"
+#include "fgl_alloc.h"
 #include "main/groups.h"
 
 /* The fog blend's uniforms (prog_statevars.c: STATE_FOG_PARAMS_OPTIMIZED,
@@ -407,6 +408,28 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
  * (ff_fragment_shader.cpp make_state_key: every unit with a complete
  * texture, walked up to the last one): the image and sampler, the
  * combiner, the environment colour.  False when out of memory. */
+/* A texture unit's state object holds the texel blocks it points at
+ * while anybody holds the object (r_cso_lookup_held): the context's own
+ * state, or a pending scene, which another context sharing the texture
+ * cannot then free under it (main/teximage.c free_image).  Data, Store
+ * and ZValues are fgl_rc_alloc blocks; a level or face not used is NULL. */
+static void tex_unit_hold(const void *obj, bool hold)
+{
+   const struct r_texture *rt = &((const struct r_tex_unit *)obj)->tex;
+   void (*const f)(const void *) = hold ? fgl_rc_hold : fgl_rc_release;
+   for (int l = 0; l < R_MAX_TEX_LEVELS; l++) {
+      f(rt->level[l].data);
+      f(rt->level[l].store);
+      f(rt->level[l].zvalues);
+   }
+   for (int face = 0; face < 6; face++) {
+      for (int l = 0; l < R_MAX_TEX_LEVELS; l++) {
+         f(rt->cube_data[face][l]);
+         f(rt->cube_store[face][l]);
+      }
+   }
+}
+
 static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
 {
    bool ok = true;
@@ -425,7 +448,11 @@ static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
          r_tex_combine_simplify(&ru.comb, (int)u);
          for (int c = 0; c < 4; c++)
             ru.env_color[c] = tu->EnvColor[c];
-         obj = fgl_state_object(ctx, rs->tex[u], &ru, sizeof(ru), &ok);
+         obj = r_cso_lookup_held(&ctx->_StateCache, &ru, sizeof(ru), tex_unit_hold);
+         if (!obj) {
+            ok = false;
+            obj = rs->tex[u];
+         }
       }
       if (obj != rs->tex[u]) {
          r_cso_hold(obj);
@@ -917,6 +944,9 @@ static unsigned update_raster(struct fgl_context *ctx, unsigned dirty)
       failed |= ok ? 0u : FGL_NEW_COLOR;
    }
    if (dirty & FGL_NEW_TEXTURE) {
+      ctx->TexLocal.DerivedStamp =
+         atomic_load_explicit(&ctx->TexObjects->Stamp, memory_order_acquire);
+      ctx->TexLocal.DerivedPending = true;
       if (!update_tex_units(ctx, rs))
          failed |= FGL_NEW_TEXTURE;
    }

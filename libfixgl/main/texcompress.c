@@ -150,10 +150,10 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
    const size_t n = (size_t)width * (size_t)height;
    img->BlocksSize = (size_t)image_size;
    img->Blocks = fgl_calloc(image_size ? (size_t)image_size : 1, 1);
-   img->Data = fgl_malloc(n ? n * 4 : 4);
+   img->Data = fgl_rc_alloc(n ? n * 4 : 4, 0);   /* teximage.c free_image */
    if (!img->Blocks || !img->Data) {
       fgl_free(img->Blocks);
-      fgl_free(img->Data);
+      fgl_rc_release(img->Data);
       fgl_free(img);
       fgl_error(ctx, GL_OUT_OF_MEMORY);
       return;
@@ -169,7 +169,7 @@ static void compressed_tex_image(GLuint dims, GLenum target, GLint level, GLenum
    fgl_tex_set_image(t, target, level, img);
    if (data && width > 0 && height > 0 && depth > 0)
       fgl_tex_written(ctx, t, img);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
    /* [S: teximage.c:teximage] then GL_GENERATE_MIPMAP */
    fgl_tex_image_changed(ctx, t, target, level);
 }
@@ -320,7 +320,7 @@ static void compressed_tex_sub_image(GLuint dims, GLenum target, GLint level, GL
              (const uint8_t *)data + (size_t)j * row, row);
    decode_image(img);
    fgl_tex_written(ctx, fgl_tex_target_object(ctx, target), img);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
    /* [S: teximage.c:compressed_tex_sub_image] then GL_GENERATE_MIPMAP */
    fgl_tex_image_changed(ctx, fgl_tex_target_object(ctx, target), target, level);
 }

@@ -254,7 +254,7 @@ void fgl_tex_copy_depth(struct fgl_context *ctx, struct fgl_texture_image *img, 
          dst[i] = blit_depth(d, bits);
       }
    }
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
 }
 
 /* [S: st_atom_sampler.c:st_convert_sampler, st_sampler_view.c:

@@ -30,14 +30,18 @@
 #include "fgl_alloc.h"
 #include "math/m_gallivm.h"
 
-/* An image and everything it owns (NULL: nothing) */
+/* An image and everything it owns (NULL: nothing).  Its texels are
+ * reference-counted blocks (fgl_rc_alloc): a state object of a context
+ * that samples them holds them (state.c update_tex_units), so a pending
+ * scene of another context sharing the texture reads them until its
+ * flush, whatever this context does to the image. */
 static void free_image(struct fgl_texture_image *img)
 {
    if (!img)
       return;
-   fgl_free(img->Data);
-   fgl_free(img->Store);
-   fgl_free(img->ZValues);
+   fgl_rc_release(img->Data);
+   fgl_rc_release(img->Store);
+   fgl_rc_release(img->ZValues);
    fgl_free(img->Blocks);
    fgl_free(img);
 }
@@ -842,18 +846,18 @@ static void set_image(struct fgl_texture_object *t, unsigned face, GLint level,
 static bool alloc_texels(struct fgl_texture_image *img)
 {
    const size_t n = (size_t)img->Width * (size_t)img->Height * (size_t)img->Depth;
-   img->Data = fgl_malloc(n ? n * 4 : 4);
+   img->Data = fgl_rc_alloc(n ? n * 4 : 4, 0);
    if (needs_store(img->Format)) {
       channel_bits(img->Format, img->BaseFormat, img->StoreBits);
-      img->Store = fgl_malloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t));
+      img->Store = fgl_rc_alloc(n ? n * 4 * sizeof(uint16_t) : 4 * sizeof(uint16_t), 0);
    }
    if (img->BaseFormat == GL_DEPTH_COMPONENT)
-      img->ZValues = fgl_calloc(n ? n : 1, sizeof(uint32_t));   /* zeroed storage */
+      img->ZValues = fgl_rc_alloc((n ? n : 1) * sizeof(uint32_t), 1);   /* zeroed storage */
    if (!img->Data || (needs_store(img->Format) && !img->Store) ||
        (img->BaseFormat == GL_DEPTH_COMPONENT && !img->ZValues)) {
-      fgl_free(img->Data);
-      fgl_free(img->Store);
-      fgl_free(img->ZValues);
+      fgl_rc_release(img->Data);
+      fgl_rc_release(img->Store);
+      fgl_rc_release(img->ZValues);
       img->Data = NULL;
       img->Store = NULL;
       img->ZValues = NULL;
@@ -1178,7 +1182,7 @@ static void gen_mip_compressed(struct fgl_context *ctx, struct fgl_texture_objec
       D = d;
    }
    fgl_free(src);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
 }
 
 /* [S: lp_bld_arit.c:lp_build_lerp_simple, AoS with pmulhrsw rounding] */
@@ -1472,7 +1476,7 @@ static void check_gen_mipmap(struct fgl_context *ctx, struct fgl_texture_object 
       }
       set_image(t, face, l, img);
    }
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1622,7 +1626,7 @@ static void tex_image(GLuint dims, GLenum target, GLint level, GLint internal,
    set_image(t, target_face(target), level, img);
    if (pixels)
       fgl_tex_written(ctx, t, img);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
    check_gen_mipmap(ctx, t, target_face(target), level);
 }
 
@@ -1747,7 +1751,7 @@ static void tex_sub_image(GLuint dims, GLenum target, GLint level, GLint xoff, G
          fgl_tex_written(ctx, t, img);
       if (img->CompressedFormat && pixels)
          compress_region(ctx, img, xoff, yoff, zoff, width, height, depth);
-      ctx->NewState |= FGL_NEW_TEXTURE;
+      fgl_tex_object_changed(ctx);
       check_gen_mipmap(ctx, t, target_face(target), level);
    }
 }
@@ -1918,7 +1922,7 @@ static void copy_texels(struct fgl_context *ctx, struct fgl_texture_image *img, 
     * moved off the 4x4 grid is taken from the grid line before it */
    if (img->CompressedFormat)
       compress_region(ctx, img, xoff & ~3, yoff & ~3, zoff, w + (xoff & 3), h + (yoff & 3), 1);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
 }
 
 /* [S: teximage.c:copyteximage, copytexture_error_check] */
@@ -2015,7 +2019,7 @@ static void copy_tex_image(GLuint dims, GLenum target, GLint level, GLenum inter
       return;
    }
    set_image(t, face, level, img);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
    if (width && height)
       copy_texels(ctx, img, 0, 0, 0, x, y, width, height);
    check_gen_mipmap(ctx, t, face, level);

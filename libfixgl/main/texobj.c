@@ -55,6 +55,7 @@ bool fgl_init_texobj(struct fgl_context *ctx)
       init_object(&to->Default[i], 0, index_target[i]);
    to->Refs = 1;
    pthread_mutex_init(&to->Lock, NULL);
+   atomic_init(&to->Stamp, 0u);
    ctx->TexObjects = to;
    memset(&ctx->TexLocal, 0, sizeof(ctx->TexLocal));
    init_object(&ctx->TexLocal.Proxy[0], 0, GL_PROXY_TEXTURE_1D);
@@ -227,7 +228,7 @@ static void set_binding_locked(struct fgl_context *ctx, unsigned unit, int index
 static void tex_flush(struct fgl_context *ctx)
 {
    fgl_flush_vertices(ctx);
-   ctx->NewState |= FGL_NEW_TEXTURE;
+   fgl_tex_object_changed(ctx);
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 

@@ -20,6 +20,7 @@ struct r_cso_entry {
    uint64_t used;              /* the cache's clock at the last lookup */
    size_t size;
    unsigned holds;             /* r_cso_hold minus r_cso_release */
+   r_cso_hold_fn on_hold;      /* r_cso_lookup_held's, or NULL */
    _Alignas(max_align_t) unsigned char obj[];
 };
 
@@ -61,11 +62,18 @@ static void evict_one(struct r_cso_cache *c)
 
 const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size)
 {
+   return r_cso_lookup_held(c, obj, size, NULL);
+}
+
+const void *r_cso_lookup_held(struct r_cso_cache *c, const void *obj, size_t size,
+                              r_cso_hold_fn on_hold)
+{
    const uint64_t h = hash_bytes(obj, size);
    c->clock++;
    for (unsigned i = 0; i < c->count; i++) {
       struct r_cso_entry *e = c->entry[i];
-      if (e->hash == h && e->size == size && memcmp(e->obj, obj, size) == 0) {
+      if (e->hash == h && e->size == size && e->on_hold == on_hold &&
+          memcmp(e->obj, obj, size) == 0) {
          e->used = c->clock;
          return e->obj;
       }
@@ -87,6 +95,7 @@ const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size)
    e->used = c->clock;
    e->size = size;
    e->holds = 0;
+   e->on_hold = on_hold;
    memcpy(e->obj, obj, size);
    c->entry[c->count++] = e;
    return e->obj;
@@ -94,14 +103,20 @@ const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size)
 
 void r_cso_hold(const void *obj)
 {
-   if (obj)
-      entry_of(obj)->holds++;
+   if (!obj)
+      return;
+   struct r_cso_entry *e = entry_of(obj);
+   if (e->holds++ == 0 && e->on_hold)
+      e->on_hold(e->obj, true);
 }
 
 void r_cso_release(const void *obj)
 {
-   if (obj)
-      entry_of(obj)->holds--;
+   if (!obj)
+      return;
+   struct r_cso_entry *e = entry_of(obj);
+   if (--e->holds == 0 && e->on_hold)
+      e->on_hold(e->obj, false);
 }
 
 void r_state_hold(const struct r_state *rs)
@@ -130,8 +145,13 @@ void r_state_release(const struct r_state *rs)
 
 void r_cso_cache_fini(struct r_cso_cache *c)
 {
-   for (unsigned i = 0; i < c->count; i++)
+   for (unsigned i = 0; i < c->count; i++) {
+      /* an object still held (by the context's own state) lets go of
+       * what it holds */
+      if (c->entry[i]->holds && c->entry[i]->on_hold)
+         c->entry[i]->on_hold(c->entry[i]->obj, false);
       fgl_free(c->entry[i]);
+   }
    fgl_free(c->entry);
    memset(c, 0, sizeof(*c));
 }

@@ -780,6 +780,15 @@ struct r_cso_cache {
    uint64_t clock;
 };
 const void *r_cso_lookup(struct r_cso_cache *c, const void *obj, size_t size);
+/* r_cso_lookup of an object that points at storage of its own lifetime
+ * (a texture unit's texels): on_hold(obj, true) runs when the object
+ * becomes held (r_cso_hold from no holds) and on_hold(obj, false) when the
+ * last hold is released (or the cache is finished with holds left), so
+ * the storage lives while anybody holds the object.  An object is equal
+ * only to one looked up with the same on_hold. */
+typedef void (*r_cso_hold_fn)(const void *obj, bool hold);
+const void *r_cso_lookup_held(struct r_cso_cache *c, const void *obj, size_t size,
+                              r_cso_hold_fn on_hold);
 void r_cso_hold(const void *obj);
 void r_cso_release(const void *obj);
 void r_state_hold(const struct r_state *rs);

@@ -473,7 +473,16 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    for (unsigned u = 0; u < FGL_MAX_TEXTURE_UNITS; u++)
       if (ctx->Vbo.attr_size[FGL_ATTR_TEX0 + u] != 0)
          ctx->_VaryingTexUnits |= 1u << u;
+   /* [S: st_draw.c:prepare_draw] the oracle derives its sampler views
+    * here, from the objects as they are now: texture state derived
+    * earlier for this draw (at its glBegin) again when another context
+    * changed an object since (fgl_texture_local.DerivedPending) */
+   if (ctx->TexLocal.DerivedPending &&
+       atomic_load_explicit(&ctx->TexObjects->Stamp, memory_order_acquire) !=
+          ctx->TexLocal.DerivedStamp)
+      ctx->NewState |= FGL_NEW_TEXTURE;
    fgl_update_state(ctx);
+   ctx->TexLocal.DerivedPending = false;
    if (!ctx->DrawBuffer)
       return;
    fgl_lin_draw(ctx);
