@@ -128,32 +128,28 @@ static ALWAYS_INLINE __m256 block_stage_alpha(const struct r_state *rs, const st
 #define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
-#define TRI_KERNEL(name, smooth, zf, zwrite, bl)                                           \
+#define TRI_KERNEL(name, smooth, zf, bl)                                                   \
    static void name(const struct r_state *rs, const struct r_tri_setup *ts,               \
                     const struct r_tri_cover *cv)                                          \
    {                                                                                       \
-      tri_blocks(rs, ts, cv, smooth, zf, zwrite, bl);                                      \
+      tri_blocks(rs, ts, cv, smooth, zf, bl);                                              \
    }
 
+/* (depth writes or not: the same kernel, r_block_tri.h) */
 #define TRI_KERNELS_SHADE(prefix, var, bl)                                                 \
-   TRI_KERNEL(prefix##_nz, var, ZF_NONE, false, bl)                                        \
-   TRI_KERNEL(prefix##_z16, var, ZF_16, false, bl)                                         \
-   TRI_KERNEL(prefix##_z16w, var, ZF_16, true, bl)                                         \
-   TRI_KERNEL(prefix##_z24, var, ZF_24, false, bl)                                         \
-   TRI_KERNEL(prefix##_z24w, var, ZF_24, true, bl)                                         \
-   TRI_KERNEL(prefix##_z24s, var, ZF_24S, false, bl)                                       \
-   TRI_KERNEL(prefix##_z24sw, var, ZF_24S, true, bl)                                       \
-   TRI_KERNEL(prefix##_s, var, ZF_S, false, bl)                                            \
-   TRI_KERNEL(prefix##_z24l, var, ZF_24_LESS, false, bl)                                   \
-   TRI_KERNEL(prefix##_z24lw, var, ZF_24_LESS, true, bl)                                   \
-   TRI_KERNEL(prefix##_z24le, var, ZF_24_LEQUAL, false, bl)                                \
-   TRI_KERNEL(prefix##_z24lew, var, ZF_24_LEQUAL, true, bl)
+   TRI_KERNEL(prefix##_nz, var, ZF_NONE, bl)                                               \
+   TRI_KERNEL(prefix##_z16, var, ZF_16, bl)                                                \
+   TRI_KERNEL(prefix##_z24, var, ZF_24, bl)                                                \
+   TRI_KERNEL(prefix##_z24s, var, ZF_24S, bl)                                              \
+   TRI_KERNEL(prefix##_s, var, ZF_S, bl)                                                   \
+   TRI_KERNEL(prefix##_z24l, var, ZF_24_LESS, bl)                                          \
+   TRI_KERNEL(prefix##_z24le, var, ZF_24_LEQUAL, bl)
 
 #define TRI_KERNELS_ROW(prefix)                                                            \
-   { { prefix##_nz, prefix##_nz }, { prefix##_z16, prefix##_z16w },                         \
-     { prefix##_z24, prefix##_z24w }, { prefix##_z24s, prefix##_z24sw },                    \
-     { prefix##_s, prefix##_s }, { prefix##_z24l, prefix##_z24lw },                         \
-     { prefix##_z24le, prefix##_z24lew } }
+   { { prefix##_nz, prefix##_nz }, { prefix##_z16, prefix##_z16 },                          \
+     { prefix##_z24, prefix##_z24 }, { prefix##_z24s, prefix##_z24s },                      \
+     { prefix##_s, prefix##_s }, { prefix##_z24l, prefix##_z24l },                          \
+     { prefix##_z24le, prefix##_z24le } }
 
 /* [FLAT, SMOOTH, EXTRA][zfmt][zwrite] */
 #define TRI_KERNELS_BLEND(prefix, bl)                                                      \

@@ -536,19 +536,18 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 #define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
-#define MTEX_KERNEL(name, var, zf, zwrite, bl)                                             \
+#define MTEX_KERNEL(name, var, zf, bl)                                                     \
    static void name(const struct r_state *rs, const struct r_tri_setup *ts,               \
                     const struct r_tri_cover *cv)                                          \
    {                                                                                       \
-      tri_blocks(rs, ts, cv, var, zf, zwrite, bl);                                         \
+      tri_blocks(rs, ts, cv, var, zf, bl);                                                 \
    }
 
+/* (depth writes or not: the same kernel, r_block_tri.h) */
 #define MTEX_KERNELS_VAR(p, var, bl)                                                       \
-   MTEX_KERNEL(p##_nz, var, ZF_NONE, false, bl)                                           \
-   MTEX_KERNEL(p##_z16, var, ZF_16, false, bl)                                            \
-   MTEX_KERNEL(p##_z16w, var, ZF_16, true, bl)                                            \
-   MTEX_KERNEL(p##_z24, var, ZF_24, false, bl)                                            \
-   MTEX_KERNEL(p##_z24w, var, ZF_24, true, bl)
+   MTEX_KERNEL(p##_nz, var, ZF_NONE, bl)                                                  \
+   MTEX_KERNEL(p##_z16, var, ZF_16, bl)                                                   \
+   MTEX_KERNEL(p##_z24, var, ZF_24, bl)
 
 MTEX_KERNELS_VAR(opaque_any, V_ANY, BL_NONE)
 MTEX_KERNELS_VAR(opaque_mod2, V_MOD2, BL_NONE)
@@ -558,7 +557,7 @@ MTEX_KERNELS_VAR(alpha_mod2, V_MOD2, BL_ALPHA)
 MTEX_KERNELS_VAR(alpha_mod2rgb, V_MOD2_RGB, BL_ALPHA)
 
 #define ROW(p)                                                                             \
-   { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
+   { { p##_nz, p##_nz }, { p##_z16, p##_z16 }, { p##_z24, p##_z24 } }
 /* [blend][variant][zfmt][zwrite] */
 static const r_tri_kernel mtex_table[2][3][3][2] = {
    { ROW(opaque_any), ROW(opaque_mod2), ROW(opaque_mod2rgb) },

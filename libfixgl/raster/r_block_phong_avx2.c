@@ -92,24 +92,23 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 #define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
-#define TRI_KERNEL(name, zf, zwrite, bl)                                                   \
+#define TRI_KERNEL(name, zf, bl)                                                           \
    static void name(const struct r_state *rs, const struct r_tri_setup *ts,               \
                     const struct r_tri_cover *cv)                                          \
    {                                                                                       \
-      tri_blocks(rs, ts, cv, 0, zf, zwrite, bl);                                           \
+      tri_blocks(rs, ts, cv, 0, zf, bl);                                                   \
    }
 
+/* (depth writes or not: the same kernel, r_block_tri.h) */
 #define TRI_KERNELS_BLEND(prefix, bl)                                                      \
-   TRI_KERNEL(prefix##_nz, ZF_NONE, false, bl)                                            \
-   TRI_KERNEL(prefix##_z16, ZF_16, false, bl)                                             \
-   TRI_KERNEL(prefix##_z16w, ZF_16, true, bl)                                             \
-   TRI_KERNEL(prefix##_z24, ZF_24, false, bl)                                             \
-   TRI_KERNEL(prefix##_z24w, ZF_24, true, bl)                                             \
+   TRI_KERNEL(prefix##_nz, ZF_NONE, bl)                                                   \
+   TRI_KERNEL(prefix##_z16, ZF_16, bl)                                                    \
+   TRI_KERNEL(prefix##_z24, ZF_24, bl)                                                    \
    /* [zfmt][zwrite] */                                                                    \
    static const r_tri_kernel prefix##_table[3][2] = {                                      \
       { prefix##_nz, prefix##_nz },                                                        \
-      { prefix##_z16, prefix##_z16w },                                                     \
-      { prefix##_z24, prefix##_z24w },                                                     \
+      { prefix##_z16, prefix##_z16 },                                                      \
+      { prefix##_z24, prefix##_z24 },                                                      \
    };
 
 TRI_KERNELS_BLEND(opaque, BL_NONE)

@@ -275,19 +275,18 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 #define BLOCK_STAGE_EARLY_Z 1
 #include "r_block_tri.h"
 
-#define TEX_KERNEL(name, env, zf, zwrite, bl)                                              \
+#define TEX_KERNEL(name, env, zf, bl)                                                      \
    static void name(const struct r_state *rs, const struct r_tri_setup *ts,               \
                     const struct r_tri_cover *cv)                                          \
    {                                                                                       \
-      tri_blocks(rs, ts, cv, env, zf, zwrite, bl);                                         \
+      tri_blocks(rs, ts, cv, env, zf, bl);                                                 \
    }
 
+/* (depth writes or not: the same kernel, r_block_tri.h) */
 #define TEX_KERNELS_ENV(p, env, bl)                                                        \
-   TEX_KERNEL(p##_nz, env, ZF_NONE, false, bl)                                            \
-   TEX_KERNEL(p##_z16, env, ZF_16, false, bl)                                             \
-   TEX_KERNEL(p##_z16w, env, ZF_16, true, bl)                                             \
-   TEX_KERNEL(p##_z24, env, ZF_24, false, bl)                                             \
-   TEX_KERNEL(p##_z24w, env, ZF_24, true, bl)
+   TEX_KERNEL(p##_nz, env, ZF_NONE, bl)                                                   \
+   TEX_KERNEL(p##_z16, env, ZF_16, bl)                                                    \
+   TEX_KERNEL(p##_z24, env, ZF_24, bl)
 
 #define TEX_KERNELS_BLEND(p, bl)                                                           \
    TEX_KERNELS_ENV(p##_args, ENV_ARGS, bl)                                                \
@@ -325,7 +324,7 @@ static ALWAYS_INLINE __m256i block_stage_shade(const struct r_state *rs, const s
 #endif
 
 #define ROW(p)                                                                             \
-   { { p##_nz, p##_nz }, { p##_z16, p##_z16w }, { p##_z24, p##_z24w } }
+   { { p##_nz, p##_nz }, { p##_z16, p##_z16 }, { p##_z24, p##_z24 } }
 
 typedef r_tri_kernel tex_env_table[2][4][3][2];
 extern const tex_env_table r_block_tex_tables_tri, r_block_tex_tables_bi;

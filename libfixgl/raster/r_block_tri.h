@@ -54,12 +54,15 @@
  * The kernel template: the constant arguments choose the variant.
  *   variant the stage's variant (block_stage_*)
  *   zf      the depth test's buffer (ZF_NONE: no depth test)
- *   zwrite  depth writes
- *   bl      the colour operations (r_block_avx2.h enum blend) */
+ *   bl      the colour operations (r_block_avx2.h enum blend)
+ * Depth writes are the state's, read once a call: a branch per half that
+ * always goes the same way, so that one kernel serves both (compiling
+ * them apart was two of every five kernels). */
 static ALWAYS_INLINE void tri_blocks(const struct r_state *rs, const struct r_tri_setup *ts,
                                      const struct r_tri_cover *cv, const int variant,
-                                     const enum zfmt zf, const bool zwrite, const enum blend bl)
+                                     const enum zfmt zf, const enum blend bl)
 {
+   const bool zwrite = zf != ZF_NONE && zf != ZF_S && rs->dsa->depth_write;
    const int width = rs->fb->width, height = rs->fb->height;
    const size_t stride = (size_t)width;
    /* the buffers, read once: the stores through them might alias rs */
