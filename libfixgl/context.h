@@ -1345,6 +1345,10 @@ bool fgl_set_shade_env(struct fgl_context *ctx);
  * (state.c); old, and *ok set to false, when out of memory. */
 const void *fgl_state_object(struct fgl_context *ctx, const void *old, const void *obj,
                              size_t size, bool *ok);
+/* The same for an object that holds storage while it is held
+ * (r_cso_lookup_held: a texture unit's texels). */
+const void *fgl_state_object_held(struct fgl_context *ctx, const void *old, const void *obj,
+                                  size_t size, r_cso_hold_fn on_hold, bool *ok);
 /* At each draw: the polygon stipple rows, when the pattern changed. */
 void fgl_update_stipple(struct fgl_context *ctx);
 /* fixglStats (main/stats.c): around a vertex batch while the counters are

@@ -404,15 +404,12 @@ static void update_combine(const struct fgl_texture_unit *tu, GLenum base_format
    }
 }
 
-/* The state objects of every enabled texture unit
- * (ff_fragment_shader.cpp make_state_key: every unit with a complete
- * texture, walked up to the last one): the image and sampler, the
- * combiner, the environment colour.  False when out of memory. */
 /* A texture unit's state object holds the texel blocks it points at
  * while anybody holds the object (r_cso_lookup_held): the context's own
  * state, or a pending scene, which another context sharing the texture
  * cannot then free under it (main/teximage.c free_image).  Data, Store
- * and ZValues are fgl_rc_alloc blocks; a level or face not used is NULL. */
+ * and ZValues are fgl_rc_alloc blocks; a level or face not used is NULL.
+ * (ORACLE-NOTES.md "Another context's change of a shared texture".) */
 static void tex_unit_hold(const void *obj, bool hold)
 {
    const struct r_texture *rt = &((const struct r_tex_unit *)obj)->tex;
@@ -430,6 +427,10 @@ static void tex_unit_hold(const void *obj, bool hold)
    }
 }
 
+/* The state objects of every enabled texture unit
+ * (ff_fragment_shader.cpp make_state_key: every unit with a complete
+ * texture, walked up to the last one): the image and sampler, the
+ * combiner, the environment colour.  False when out of memory. */
 static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
 {
    bool ok = true;
@@ -448,11 +449,7 @@ static bool update_tex_units(struct fgl_context *ctx, struct r_state *rs)
          r_tex_combine_simplify(&ru.comb, (int)u);
          for (int c = 0; c < 4; c++)
             ru.env_color[c] = tu->EnvColor[c];
-         obj = r_cso_lookup_held(&ctx->_StateCache, &ru, sizeof(ru), tex_unit_hold);
-         if (!obj) {
-            ok = false;
-            obj = rs->tex[u];
-         }
+         obj = fgl_state_object_held(ctx, rs->tex[u], &ru, sizeof(ru), tex_unit_hold, &ok);
       }
       if (obj != rs->tex[u]) {
          r_cso_hold(obj);
@@ -835,7 +832,13 @@ static bool update_aa_states(struct fgl_context *ctx)
 const void *fgl_state_object(struct fgl_context *ctx, const void *old, const void *obj,
                              size_t size, bool *ok)
 {
-   const void *o = r_cso_lookup(&ctx->_StateCache, obj, size);
+   return fgl_state_object_held(ctx, old, obj, size, NULL, ok);
+}
+
+const void *fgl_state_object_held(struct fgl_context *ctx, const void *old, const void *obj,
+                                  size_t size, r_cso_hold_fn on_hold, bool *ok)
+{
+   const void *o = r_cso_lookup_held(&ctx->_StateCache, obj, size, on_hold);
    if (!o) {
       *ok = false;
       return old;

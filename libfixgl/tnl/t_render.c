@@ -476,7 +476,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
    /* [S: st_draw.c:prepare_draw] the oracle derives its sampler views
     * here, from the objects as they are now: texture state derived
     * earlier for this draw (at its glBegin) again when another context
-    * changed an object since (fgl_texture_local.DerivedPending) */
+    * changed an object since (fgl_texture_local.DerivedPending;
+    * ORACLE-NOTES.md "Another context's change of a shared texture") */
    if (ctx->TexLocal.DerivedPending &&
        atomic_load_explicit(&ctx->TexObjects->Stamp, memory_order_acquire) !=
           ctx->TexLocal.DerivedStamp)
