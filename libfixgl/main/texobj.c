@@ -224,11 +224,17 @@ static void set_binding_locked(struct fgl_context *ctx, unsigned unit, int index
 }
 
 /* FLUSH_VERTICES(ctx, _NEW_TEXTURE_OBJECT, GL_TEXTURE_BIT): the change
- * also marks the group for glPopAttrib */
-static void tex_flush(struct fgl_context *ctx)
+ * also marks the group for glPopAttrib.  `object`: an object's own state
+ * changed (a parameter), which the contexts sharing it are told of
+ * (fgl_tex_object_changed); a binding, deletion or priority is this
+ * context's alone. */
+static void tex_flush(struct fgl_context *ctx, bool object)
 {
    fgl_flush_vertices(ctx);
-   fgl_tex_object_changed(ctx);
+   if (object)
+      fgl_tex_object_changed(ctx);
+   else
+      ctx->NewState |= FGL_NEW_TEXTURE;
    ctx->PopAttribState |= GL_TEXTURE_BIT;
 }
 
@@ -349,7 +355,7 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture)
       pthread_mutex_unlock(&ctx->TexObjects->Lock);
       return;
    }
-   tex_flush(ctx);
+   tex_flush(ctx, false);
    set_binding_locked(ctx, ctx->Texture.CurrentUnit, index, t);
    pthread_mutex_unlock(&ctx->TexObjects->Lock);
    if (ctx->TexLocal.NumCurrentTexUsed < ctx->Texture.CurrentUnit + 1)
@@ -386,7 +392,7 @@ void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures)
          for (unsigned u = 0; u < FGL_MAX_COMBINED_TEXTURE_UNITS; u++)
             for (int x = 0; x < FGL_TEX_TARGETS; x++)
                if (ctx->TexLocal.Current[u][x] == t) {
-                  tex_flush(ctx);
+                  tex_flush(ctx, false);
                   set_binding_locked(ctx, u, x, NULL);
                }
          /* the name goes from the table with the table's reference */
@@ -463,7 +469,7 @@ void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures,
    }
    if (!priorities)
       return;
-   tex_flush(ctx);
+   tex_flush(ctx, false);
    for (GLsizei i = 0; i < n; i++) {
       if (textures[i] == 0)
          continue;
@@ -514,7 +520,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
       case GL_LINEAR_MIPMAP_LINEAR:
       case GL_NEAREST:
       case GL_LINEAR:
-         tex_flush(ctx);
+         tex_flush(ctx, true);
          t->MinFilter = (GLenum)v;
          return;
       }
@@ -527,7 +533,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->MagFilter = (GLenum)v;
       return;
    case GL_TEXTURE_WRAP_S: wrap = &t->WrapS; break;
@@ -540,7 +546,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_VALUE);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->BaseLevel = v;
       return;
    case GL_TEXTURE_MAX_LEVEL:
@@ -550,7 +556,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_VALUE);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->MaxLevel = v;
       return;
    case GL_GENERATE_MIPMAP:
@@ -564,7 +570,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->CompareMode = (GLenum)v;
       return;
    case GL_TEXTURE_COMPARE_FUNC:
@@ -575,7 +581,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->CompareFunc = (GLenum)v;
       return;
    case GL_DEPTH_TEXTURE_MODE:
@@ -588,7 +594,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
          fgl_error(ctx, GL_INVALID_ENUM);
          return;
       }
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->DepthMode = (GLenum)v;
       return;
    default:
@@ -601,7 +607,7 @@ static void set_parameteri(struct fgl_context *ctx, struct fgl_texture_object *t
       fgl_error(ctx, GL_INVALID_ENUM);
       return;
    }
-   tex_flush(ctx);
+   tex_flush(ctx, true);
    *wrap = (GLenum)v;
 }
 
@@ -615,27 +621,27 @@ static void set_parameterf(struct fgl_context *ctx, struct fgl_texture_object *t
    case GL_TEXTURE_MIN_LOD:
       if (t->MinLod == v[0])
          return;
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->MinLod = v[0];
       return;
    case GL_TEXTURE_MAX_LOD:
       if (t->MaxLod == v[0])
          return;
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->MaxLod = v[0];
       return;
    case GL_TEXTURE_PRIORITY:
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->Priority = fgl_clamp01(v[0]);
       return;
    case GL_TEXTURE_LOD_BIAS:
       if (t->LodBias == v[0])
          return;
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       t->LodBias = v[0];
       return;
    case GL_TEXTURE_BORDER_COLOR:
-      tex_flush(ctx);
+      tex_flush(ctx, true);
       for (int c = 0; c < 4; c++)
          t->BorderColor[c] = fgl_clamp01(v[c]);
       return;
