@@ -1149,6 +1149,12 @@ struct fgl_context {
     * command (FGL_LIN_NONE: no command since the oracle's last flush) */
    bool _LinPermit;
    uint8_t _LinScene;
+   /* set by the vertex stage around the two triangles of a rectangle of
+    * such a scene (tnl/t_render.c): _LinTri, their enum r_lin; _LinColor,
+    * their colour on the linear way (R_LIN_COLOR) */
+   uint8_t _LinTri;
+   uint8_t _LinPoint;   /* the same for a legacy point */
+   float _LinColor[4];
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
    int _CurrentTexMaxLevel[FGL_MAX_TEXTURE_UNITS];   /* fgl_texture_complete's */
@@ -1322,11 +1328,23 @@ static inline bool fgl_lin_permitted(const struct fgl_context *ctx)
 {
    return ctx->_LinScene == FGL_LIN_LINEAR;
 }
+/* The open scene permits the linear path, so its commands are binned (on
+ * any number of threads) and held until the oracle's flush, when each
+ * tile decides (raster/r_scene.h enum r_lin) */
+static inline bool fgl_lin_binning(const struct fgl_context *ctx)
+{
+   return ctx->_LinScene == FGL_LIN_LINEAR && ctx->DrawBuffer && !ctx->DrawBuffer->DrawBoth;
+}
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2);
 void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
                      const struct r_vertex *v0, const struct r_vertex *v1);
+/* a clear quad of a scene that may take the linear path (fgl_lin_binning):
+ * lin_color its colour on that path, NULL when the path draws it as the
+ * ordinary one */
+void fgl_raster_quad(struct fgl_context *ctx, const struct r_state *rs, float z,
+                     const float color[4], const float *lin_color);
 void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
                       const struct r_vertex *v);
 void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4], bool depth,

@@ -10,8 +10,9 @@
  * or masked clears, OSMesaGetDepthBuffer, context destruction; or when the
  * scene is full (R_SCENE_MAX_BYTES).
  *
- * With one thread (FIXGL_NUM_THREADS=1) nothing is binned: the primitives
- * are drawn at once on the calling thread, as the tiles would draw them
+ * With one thread (FIXGL_NUM_THREADS=1) nothing is binned (but in a scene
+ * that may take llvmpipe's linear path: fgl_lin_binning, below): the
+ * primitives are drawn at once on the calling thread, as the tiles would draw them
  * (the same code, the region not cut).  Binning, and replaying a
  * primitive's setup in every tile it touches, only pays when other
  * threads share the tiles: on one thread it cost 25-45% more CPU time a
@@ -212,7 +213,9 @@ static struct fgl_framebuffer *scene_lazy_fb(struct fgl_context *ctx, const stru
 static void maybe_hand_over(struct fgl_context *ctx)
 {
    struct r_scene *s = &ctx->_Scene;
-   if (s->ncmds < ASYNC_MIN_CMDS)
+   /* (a scene that may take the linear path is held whole until the
+    * oracle's flush: its tiles decide then) */
+   if (s->ncmds < ASYNC_MIN_CMDS || fgl_lin_binning(ctx))
       return;
    struct fgl_scene_async *a = scene_async(ctx);
    if (!a)
@@ -391,6 +394,45 @@ void fgl_scene_flush_front(struct fgl_context *ctx)
       fb->FlushFront(fb);
 }
 
+/* ---- The linear path's scenes (fgl_lin_binning) ----
+ * Every command is binned, also on one thread, and nothing goes to the
+ * workers before the oracle's flush: each tile then decides from all of
+ * its commands (r_scene_run_tile).  Triangles carry the vertex stage's
+ * classification (_LinTri: a rectangle's or not) and, when the linear
+ * path colours them otherwise, vertices with that colour. */
+static void lin_triangle(struct fgl_context *ctx, const struct r_state *rs,
+                         const struct r_vertex *v0, const struct r_vertex *v1,
+                         const struct r_vertex *v2)
+{
+   const uint8_t lin = ctx->_LinTri;
+   struct r_vertex lv[3];
+   const struct r_vertex *lp[3] = { &lv[0], &lv[1], &lv[2] };
+   if (lin == R_LIN_COLOR) {
+      const struct r_vertex *v[3] = { v0, v1, v2 };
+      for (int i = 0; i < 3; i++) {
+         lv[i] = *v[i];
+         memcpy(lv[i].attr[R_ATTR_COLOR0], ctx->_LinColor, sizeof(ctx->_LinColor));
+      }
+   }
+   struct r_scene *s = &ctx->_Scene;
+   if (r_scene_triangle_lin(s, rs, v0, v1, v2, lin, lin == R_LIN_COLOR ? lp : NULL))
+      return;
+   fgl_scene_flush(ctx);
+   if (!r_scene_triangle_lin(s, rs, v0, v1, v2, lin, lin == R_LIN_COLOR ? lp : NULL))
+      r_triangle(rs, v0, v1, v2);   /* out of memory: drawn now, in order */
+}
+
+void fgl_raster_quad(struct fgl_context *ctx, const struct r_state *rs, float z,
+                     const float color[4], const float *lin_color)
+{
+   const uint8_t lin = lin_color ? R_LIN_COLOR : R_LIN_SAME;
+   if (r_scene_quad(&ctx->_Scene, rs, z, color, lin, lin_color))
+      return;
+   fgl_scene_flush(ctx);
+   if (!r_scene_quad(&ctx->_Scene, rs, z, color, lin, lin_color))
+      r_clear_quad(rs, z, color);
+}
+
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2)
@@ -401,6 +443,10 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
       /* into both buffers, directly (main/buffers.c "Both buffers") */
       r_triangle(fgl_both_begin(ctx, rs), v0, v1, v2);
       r_triangle(rs, v0, v1, v2);
+      return;
+   }
+   if (fgl_lin_binning(ctx)) {
+      lin_triangle(ctx, rs, v0, v1, v2);
       return;
    }
    if (ctx->_NumThreads == 1) {
@@ -428,7 +474,7 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
       r_line(rs, v0, v1);
       return;
    }
-   if (ctx->_NumThreads == 1) {
+   if (ctx->_NumThreads == 1 && !fgl_lin_binning(ctx)) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_line(rs, v0, v1);
       return;
@@ -451,6 +497,20 @@ void fgl_raster_point(struct fgl_context *ctx, const struct r_state *rs,
       /* into both buffers, directly (main/buffers.c "Both buffers") */
       r_point(fgl_both_begin(ctx, rs), v);
       r_point(rs, v);
+      return;
+   }
+   if (fgl_lin_binning(ctx)) {
+      const uint8_t lin = ctx->_LinPoint;
+      struct r_vertex lv;
+      if (lin == R_LIN_COLOR) {
+         lv = *v;
+         memcpy(lv.attr[R_ATTR_COLOR0], ctx->_LinColor, sizeof(ctx->_LinColor));
+      }
+      if (r_scene_point_lin(&ctx->_Scene, rs, v, lin, &lv))
+         return;
+      fgl_scene_flush(ctx);
+      if (!r_scene_point_lin(&ctx->_Scene, rs, v, lin, &lv))
+         r_point(rs, v);
       return;
    }
    if (ctx->_NumThreads == 1) {
@@ -476,7 +536,7 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
                          rs->fb->height == fb->Height;
    if (color && fb && fb->DrawBoth)   /* the other buffer now (main/buffers.c) */
       r_clear_color(fgl_both_begin(ctx, rs), rgba);
-   if (ctx->_NumThreads > 1) {
+   if (ctx->_NumThreads > 1 || fgl_lin_binning(ctx)) {
       /* a clear with nothing binned before it (a frame's first) is lazy
        * too: the tiles that the scene then draws write it first
        * (run_tile), the others are copied as its colour */
@@ -491,7 +551,7 @@ void fgl_raster_clear(struct fgl_context *ctx, bool color, const uint8_t rgba[4]
       if (r_scene_clear(&ctx->_Scene, rs, color, rgba, depth, zvalue, stencil, svalue))
          return;
    }
-   if (ctx->_NumThreads == 1 && fb_match &&
+   if (ctx->_NumThreads == 1 && fb_match && r_scene_empty(&ctx->_Scene) &&
        lazy_clear(fb, color, rgba, depth, zvalue, stencil, svalue))
       return;
    if (color)

@@ -61,7 +61,7 @@ static bool scissor_cuts(const struct fgl_context *ctx, const struct fgl_framebu
  * the whole buffer (scale = translate = 0.5, fused: ORACLE-NOTES.md
  * "Vertex transformation"). */
 static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, bool stencil,
-                            const float clear_color[4])
+                            const float clear_color[4], const float *lin_color)
 {
    /* the clear's own depth-stencil-alpha and blend objects, for this
     * draw only */
@@ -100,13 +100,38 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
 
    const float zclip = (float)(ctx->Depth.Clear * 2.0f - 1.0f);
    const float z = fmaf(zclip, 0.5f, 0.5f);
+   if (fgl_lin_binning(ctx)) {
+      /* a command of the oracle's scene, which may take the linear path
+       * (ORACLE-NOTES.md "GLX linear rectangles"): binned with its
+       * colour on both ways, its objects the cache's so that the scene
+       * can hold them */
+      bool ok = true;
+      rs.dsa = fgl_state_object(ctx, NULL, &dsa, sizeof(dsa), &ok);
+      rs.blend = fgl_state_object(ctx, NULL, &blend, sizeof(blend), &ok);
+      if (ok) {
+         /* opaque (lp_setup_whole_tile): a full colour mask over the
+          * buffer's channels drops what the tiles it covers hold */
+         const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+         if ((blend.color_mask & surf) == surf) {
+            const int box[4] = { rs.x0, rs.y0, rs.x1, rs.y1 };
+            r_scene_cover(&ctx->_Scene, &rs, box);
+         }
+         fgl_raster_quad(ctx, &rs, z, clear_color, lin_color);
+         return;
+      }
+      rs.dsa = &dsa;   /* out of memory: drawn now, after the scene */
+      rs.blend = &blend;
+      fgl_scene_flush(ctx);
+   }
    if (ctx->DrawBuffer->DrawBoth)   /* the other buffer too (main/buffers.c) */
       r_clear_quad(fgl_both_begin(ctx, &rs), z, clear_color);
    r_clear_quad(&rs, z, clear_color);
 }
 
-/* The colour of the clear quad (ORACLE-NOTES.md "GLX partial clears"):
- * llvmpipe draws it through its linear path where that is allowed, a
+/* The clear quad's colour on llvmpipe's linear path, or NULL where the
+ * path draws it as the ordinary one (ORACLE-NOTES.md "GLX partial
+ * clears"); the quad is binned with both and the tiles choose ("GLX
+ * linear bins").  The path is allowed for a
  * B8G8R8A8 / B8G8R8X8 colour buffer (the oracle's GLX drawables, fb->Srgb:
  * their formats' linear views), no depth and no stencil buffer, one
  * colour buffer bound (not both buffers), every channel of the
@@ -116,19 +141,19 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
  * rectangles"); the path takes each channel to a byte as
  * trunc(c * 256 - c) in float arithmetic (probed, 21,504 values near
  * every k/255 and 4,084 of a quarter-step ramp: exact), where the
- * fragment stage rounds c * 255.  fixgl gives the quad the colour
- * byte / 255, which the fragment stage takes back to that byte.  Chosen
- * once per glClear; OSMesa buffers round (probed). */
+ * fragment stage rounds c * 255.  The linear colour is byte / 255,
+ * which the fragment stage takes back to that byte.  Chosen once per
+ * glClear; OSMesa buffers round (probed). */
 static const float *quad_color(const struct fgl_context *ctx, float linear[4])
 {
    const struct fgl_framebuffer *fb = ctx->DrawBuffer;
    const float *c = ctx->Color.ClearColor;
    if (!fb->Srgb || fb->DepthBits != 0 || fb->StencilBits != 0 || fb->DrawBoth ||
        !fgl_lin_permitted(ctx))
-      return c;
+      return NULL;
    for (int i = 0; i < 4; i++)
       if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-         return c;
+         return NULL;
    for (int i = 0; i < 4; i++) {
       const float t = c[i] * 256.0f - c[i];
       linear[i] = (float)(unsigned)t / 255.0f;
@@ -234,11 +259,14 @@ void GLAPIENTRY glClear(GLbitfield mask)
                        stencil_clear, (uint8_t)ctx->Stencil.Clear);
    }
    if (color_quad || depth_quad || stencil_quad) {
-      /* drawn at once, after what the scene holds */
-      fgl_scene_flush(ctx);
+      /* drawn at once, after what the scene holds, or binned in a scene
+       * that may take the linear path (clear_with_quad) */
       fgl_lin_draw(ctx);   /* the quad is a draw */
+      if (!fgl_lin_binning(ctx))
+         fgl_scene_flush(ctx);
       float linear[4];
-      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad, quad_color(ctx, linear));
+      clear_with_quad(ctx, color_quad, depth_quad, stencil_quad, ctx->Color.ClearColor,
+                      quad_color(ctx, linear));
    }
    /* the accumulation buffer last, in software [S: state_tracker/
     * st_cb_clear.c:st_Clear; main/accum.c:_mesa_clear_accum_buffer]; only

@@ -384,10 +384,12 @@ fail:
 
 /* Appends a command of `kind` set up when binned, its setup (an
  * r_tri_binned, r_line_binned or r_point_binned) allocated since `mark`,
- * into the tiles of `box` that `edges` (or NULL) does not exclude. */
+ * into the tiles of `box` that `edges` (or NULL) does not exclude; `lin`
+ * its enum r_lin, with lv (or NULL) its vertices on the linear way. */
 static bool add_set_up(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
                        const struct scene_mark *mark, const void *setup, const int box[4],
-                       const struct r_tri_edges *edges)
+                       const struct r_tri_edges *edges, uint8_t lin,
+                       const struct r_vertex *const *lv)
 {
    const uint32_t ci = new_cmd(s, rs, kind);
    if (ci == UINT32_MAX)
@@ -398,6 +400,16 @@ static bool add_set_up(struct r_scene *s, const struct r_state *rs, enum r_cmd_k
       s->cmds[ci].line = setup;
    else
       s->cmds[ci].point = setup;
+   s->cmds[ci].lin = lin;
+   if (lv) {
+      const int slots = vertex_slots(rs);
+      for (int i = 0; i < (kind == R_CMD_POINT ? 1 : 3); i++) {
+         s->cmds[ci].v[i] = copy_vertex(s, lv[i], slots);
+         if (!s->cmds[ci].v[i])
+            goto fail;
+      }
+      s->lin = true;
+   }
    return bin_cmd(s, ci, box, edges, mark);
 fail:
    /* as it was: the setup and a state this command added dropped */
@@ -407,6 +419,13 @@ fail:
 
 bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                       const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   return r_scene_triangle_lin(s, rs, v0, v1, v2, R_LIN_NO, NULL);
+}
+
+bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                          const struct r_vertex *v1, const struct r_vertex *v2, uint8_t lin,
+                          const struct r_vertex *const *lv)
 {
    /* binned into the tiles of the box r_triangle draws in, or not at all
     * when it draws nothing (culled, empty); an exact triangle (kind 1) is
@@ -425,9 +444,16 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
       if (known == 0)
          return true;
       const struct r_vertex *v[3] = { v0, v1, v2 };
-      return add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL);
+      const uint32_t n = s->ncmds;
+      if (!add_prim(s, rs, R_CMD_TRIANGLE, v, 3, 0.0f, NULL, NULL))
+         return false;
+      /* (not exact: drawn from its vertices on both ways) */
+      if (s->ncmds > n && lin != R_LIN_NO)
+         s->cmds[n].lin = R_LIN_SAME;
+      return true;
    }
-   return add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges);
+   return add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges, lin,
+                     lin == R_LIN_COLOR ? lv : NULL);
 }
 
 bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
@@ -457,7 +483,7 @@ bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_ve
       struct r_tri_edges edges;
       const int known = r_line_box_setup(rs, v0, v1, sbox, &edges, bin);
       if (known == 1)
-         return add_set_up(s, rs, R_CMD_LINE, &mark, bin, sbox, &edges);
+         return add_set_up(s, rs, R_CMD_LINE, &mark, bin, sbox, &edges, R_LIN_NO, NULL);
       scene_rollback(s, &mark, false);
       if (known == 0)
          return true;
@@ -466,6 +492,12 @@ bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_ve
 }
 
 bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v)
+{
+   return r_scene_point_lin(s, rs, v, R_LIN_NO, NULL);
+}
+
+bool r_scene_point_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v,
+                       uint8_t lin, const struct r_vertex *lv)
 {
    /* a legacy point set up now, binned into the tiles of its square */
    if (!begin(s, rs))
@@ -477,7 +509,8 @@ bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_v
    int box[4];
    const int known = r_point_box_setup(rs, v, box, bin);
    if (known == 1)
-      return add_set_up(s, rs, R_CMD_POINT, &mark, bin, box, NULL);
+      return add_set_up(s, rs, R_CMD_POINT, &mark, bin, box, NULL, lin,
+                        lin == R_LIN_COLOR ? &lv : NULL);
    scene_rollback(s, &mark, false);
    if (known == 0)
       return true;
@@ -508,6 +541,7 @@ bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
    c->zvalue = zvalue;
    c->clear_stencil = stencil;
    c->svalue = svalue;
+   c->lin = R_LIN_SAME;   /* a clear command of a linear bin */
    if (!bin_box(s, ci, 0, 0, rs->fb->width, rs->fb->height, NULL)) {
       unbin(s, ci);
       goto fail;
@@ -520,6 +554,58 @@ fail:
       r_state_release(&s->states[s->nstates]);
    }
    return false;
+}
+
+bool r_scene_quad(struct r_scene *s, const struct r_state *rs, float z, const float color[4],
+                  uint8_t lin, const float lcolor[4])
+{
+   int box[4];
+   draw_region(rs, box);
+   if (box[0] >= box[2] || box[1] >= box[3])
+      return true;   /* no pixel */
+   if (!begin(s, rs))
+      return false;
+   const struct scene_mark mark = scene_mark(s);
+   struct r_quad_binned *q = scene_alloc(s, sizeof(*q));
+   if (!q)
+      return false;
+   q->z = z;
+   memcpy(q->color, color, sizeof(q->color));
+   memcpy(q->lcolor, lin == R_LIN_COLOR ? lcolor : color, sizeof(q->lcolor));
+   const uint32_t ci = new_cmd(s, rs, R_CMD_QUAD);
+   if (ci == UINT32_MAX) {
+      scene_rollback(s, &mark, true);
+      return false;
+   }
+   s->cmds[ci].quad = q;
+   s->cmds[ci].lin = lin;
+   s->lin |= lin == R_LIN_COLOR;
+   return bin_cmd(s, ci, box, NULL, &mark);
+}
+
+void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4])
+{
+   if (s->fb != rs->fb || r_scene_empty(s))
+      return;
+   int r[4];
+   draw_region(rs, r);
+   const int x0 = box[0] > r[0] ? box[0] : r[0], y0 = box[1] > r[1] ? box[1] : r[1];
+   const int x1 = box[2] < r[2] ? box[2] : r[2], y1 = box[3] < r[3] ? box[3] : r[3];
+   /* the tiles wholly inside [x0, x1) x [y0, y1) (a tile at the buffer's
+    * right or top edge counts as whole up to the edge, as llvmpipe's
+    * tiles reach past it) */
+   const int w = rs->fb->width, h = rs->fb->height;
+   for (int ty = (y0 + R_TILE_SIZE - 1) >> R_TILE_LOG2; ty < s->tiles_y; ty++) {
+      const int ty1 = (ty + 1) << R_TILE_LOG2;
+      if ((ty1 < h ? ty1 : h) > y1)
+         break;
+      for (int tx = (x0 + R_TILE_SIZE - 1) >> R_TILE_LOG2; tx < s->tiles_x; tx++) {
+         const int tx1 = (tx + 1) << R_TILE_LOG2;
+         if ((tx1 < w ? tx1 : w) > x1)
+            break;
+         s->bins[ty * s->tiles_x + tx].count = 0;
+      }
+   }
 }
 
 /* buckets of r_scene_tile_order: tiles with this many commands or more
@@ -570,6 +656,14 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
    uint32_t cur = UINT32_MAX;
    struct r_state rs;
    const uint32_t n = b->count;
+   /* llvmpipe's linear path (enum r_lin): the tile's commands all
+    * rectangles or clears */
+   bool linear = false;
+   if (s->lin) {
+      linear = true;
+      for (uint32_t i = 0; i < n && linear; i++)
+         linear = s->cmds[b->cmd[i]].lin != R_LIN_NO;
+   }
    for (uint32_t i = 0; i < n; i++) {
       /* A command is three dependent loads away (the bin's index, the
        * 56-byte command, its setup), each a miss when the other core
@@ -618,7 +712,9 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
       }
       switch (c->kind) {
       case R_CMD_TRIANGLE:
-         if (c->tri)
+         if (linear && c->lin == R_LIN_COLOR)
+            r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
+         else if (c->tri)
             r_triangle_binned(&rs, c->tri);
          else
             r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
@@ -629,9 +725,14 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
          else
             r_line(&rs, c->v[0], c->v[1]);
          break;
+      case R_CMD_QUAD:
+         r_clear_quad(&rs, c->quad->z, linear ? c->quad->lcolor : c->quad->color);
+         break;
       case R_CMD_POINT:
       default:
-         if (c->point)
+         if (linear && c->lin == R_LIN_COLOR)
+            r_point(&rs, c->v[0]);
+         else if (c->point)
             r_point_binned(&rs, c->point);
          else
             r_point(&rs, c->v[0]);
@@ -652,6 +753,7 @@ void r_scene_reset(struct r_scene *s)
    s->chunk = NULL;
    s->chunk_used = 0;
    s->stats = false;
+   s->lin = false;
    /* what stays allocated counts toward the bound again as it is used */
    s->bytes = 0;
 }

@@ -49,6 +49,25 @@ enum r_cmd_kind {
    R_CMD_LINE,
    R_CMD_POINT,
    R_CMD_CLEAR,
+   R_CMD_QUAD,
+};
+
+/* llvmpipe's linear path (ORACLE-NOTES.md "GLX linear rectangles"): a
+ * tile goes the linear way when every command binned into it is a
+ * rectangle or a clear; a command's `lin` says what it is.  R_LIN_NO:
+ * anything else (a triangle, line or point: the tile goes the ordinary
+ * way); R_LIN_SAME: a rectangle or clear drawn alike on both ways;
+ * R_LIN_COLOR: a rectangle whose colour the linear way takes to other
+ * bytes (its linear vertices, or the quad's linear colour).  The GL side
+ * classifies; the tile decides (r_scene_run_tile). */
+enum r_lin { R_LIN_NO, R_LIN_SAME, R_LIN_COLOR };
+
+/* R_CMD_QUAD: a clear quad over the draw region of its state (r_clear_quad)
+ * with depth z, its colour on the ordinary way and on the linear one */
+struct r_quad_binned {
+   float z;
+   float color[4];
+   float lcolor[4];
 };
 
 /* The scene's triangles are set up once, when they are binned (r_tri.c
@@ -132,8 +151,11 @@ struct r_cmd {
    bool clear_color, clear_depth, clear_stencil;
    uint8_t rgba[4];
    uint8_t svalue;
+   uint8_t lin;                     /* enum r_lin */
    uint32_t zvalue;
    uint32_t state;                  /* index into r_scene.states */
+   /* the vertices (replayed from them when there is no setup), or, for
+    * an R_LIN_COLOR triangle, its vertices with the linear colour */
    const struct r_vertex *v[3];
    /* the primitive's setup made when it was binned (one of them, by
     * kind), replayed without its vertices; NULL: replayed from v[] */
@@ -145,6 +167,7 @@ struct r_cmd {
        * NULL: by r_line, r_point) */
       const struct r_line_binned *line;
       const struct r_point_binned *point;
+      const struct r_quad_binned *quad;   /* R_CMD_QUAD */
    };
 };
 
@@ -174,6 +197,7 @@ struct r_scene {
 
    size_t bytes;                    /* what the scene holds, for the bound */
    bool stats;                      /* some state counts (r_state.stats) */
+   bool lin;                        /* some command is R_LIN_COLOR */
 };
 
 /* Append a primitive or a clear of the whole framebuffer of rs (its
@@ -190,6 +214,26 @@ bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_v
 bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
                    const uint8_t rgba[4], bool depth, uint32_t zvalue, bool stencil,
                    uint8_t svalue);
+/* A triangle of a rectangle (lin R_LIN_SAME or R_LIN_COLOR: lv, the
+ * vertices with the linear colour) or not (R_LIN_NO, lv NULL).  An
+ * R_LIN_COLOR triangle that is not exact (r_triangle_box_setup's kind 2)
+ * is binned as R_LIN_SAME. */
+bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
+                          const struct r_vertex *v1, const struct r_vertex *v2, uint8_t lin,
+                          const struct r_vertex *const *lv);
+/* A point alike (R_LIN_NO for a sprite: llvmpipe draws it as a
+ * triangle) */
+bool r_scene_point_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v,
+                       uint8_t lin, const struct r_vertex *lv);
+/* A clear quad (r_clear_quad over the draw region of rs, whose objects
+ * must be the cache's), lin R_LIN_SAME or R_LIN_COLOR with lcolor */
+bool r_scene_quad(struct r_scene *s, const struct r_state *rs, float z, const float color[4],
+                  uint8_t lin, const float lcolor[4]);
+/* llvmpipe's bin reset (lp_setup_whole_tile): an opaque rectangle that
+ * covers a whole tile drops what the tile's bin holds; box: the pixels
+ * it covers, [box[0], box[2]) x [box[1], box[3]), cut to rs's draw
+ * region here.  Nothing when the scene draws into another buffer. */
+void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4]);
 
 static inline bool r_scene_empty(const struct r_scene *s)
 {

@@ -75,6 +75,11 @@ struct render {
    /* GL_PHONG_WIN with materials in the batch's vertex format (glMaterial
     * between glBegin and glEnd): bit a - FGL_ATTR_MAT_FIRST for each */
    unsigned phong_mats;
+   /* the scene may take llvmpipe's linear path and the setup has no
+    * constant-interpolated input: pairs of triangles may be rectangles
+    * (lin_pair); color_const: the colour is the current colour, a
+    * constant of the fragment program (unlit, not in the vertex format) */
+   bool lin, color_const;
 };
 
 /* Where vertex i of the draw's primitives is. */
@@ -172,6 +177,222 @@ static inline void tri(const struct render *r, unsigned a, unsigned b, unsigned 
    tri_pv(r, a, b, c, c, pipeline, flags);
 }
 
+/* ---- llvmpipe's rectangles (ORACLE-NOTES.md "GLX linear rectangles") ----
+ * In a scene that may take the linear path, llvmpipe's setup takes two
+ * triangles of its direct path (a quad's (0,1,2)+(0,2,3), a pair of
+ * GL_TRIANGLES, a fan of four vertices) that form an axis-aligned
+ * rectangle as one rectangle command [S: lp_setup_vbuf.c rect(),
+ * lp_setup_rect.c setup_rect_both/_ccw/_cw, do_rect_ccw]: the two
+ * windings equal and not zero; two corners shared (the six joinings of
+ * do_rect_ccw, positions compared whole); the four corners pairwise on
+ * one x and one y; one w; every input of the fragment program affine
+ * over the corners (the differences along each side equal).  A 64 x 64
+ * bin whose commands are all such rectangles (and clears) is drawn by
+ * the linear path, which colours an untextured rectangle otherwise:
+ * "GLX linear arithmetic". */
+
+/* <0: counter-clockwise, >0: clockwise, 0: none, as lp_setup_rect.c's
+ * winding() */
+static int lin_winding(const struct r_vertex *v0, const struct r_vertex *v1,
+                       const struct r_vertex *v2)
+{
+   const float ex = v0->pos[0] - v2->pos[0], ey = v0->pos[1] - v2->pos[1];
+   const float fx = v1->pos[0] - v2->pos[0], fy = v1->pos[1] - v2->pos[1];
+   const float det = ex * fy - ey * fx;
+   return det < 0.0f ? -1 : det > 0.0f ? 1 : 0;
+}
+
+static bool same_pos(const struct r_vertex *a, const struct r_vertex *b)
+{
+   return a->pos[0] == b->pos[0] && a->pos[1] == b->pos[1] && a->pos[2] == b->pos[2] &&
+          a->pos[3] == b->pos[3];
+}
+
+/* do_rect_ccw: the rectangle's corners rv[0..3] (counter-clockwise) of
+ * two counter-clockwise triangles v[0..2], v[3..5], or false */
+static bool lin_rect_corners(const struct r_vertex *const v[6], const struct r_vertex *rv[4])
+{
+#define RV(A, B, C, D) (rv[0] = v[A], rv[1] = v[B], rv[2] = v[C], rv[3] = v[D], true)
+   if (same_pos(v[0], v[3]))
+      return same_pos(v[2], v[4])   ? RV(5, 0, 1, 2)
+             : same_pos(v[1], v[5]) ? RV(4, 1, 2, 0)
+                                    : false;
+   if (same_pos(v[0], v[5]))
+      return same_pos(v[2], v[3])   ? RV(4, 0, 1, 2)
+             : same_pos(v[1], v[4]) ? RV(3, 1, 2, 0)
+                                    : false;
+   if (same_pos(v[0], v[4]))
+      return same_pos(v[2], v[5])   ? RV(3, 0, 1, 2)
+             : same_pos(v[1], v[3]) ? RV(5, 1, 2, 0)
+                                    : false;
+   if (same_pos(v[2], v[3]))
+      return same_pos(v[1], v[4]) ? RV(5, 2, 0, 1) : false;
+   if (same_pos(v[2], v[5]))
+      return same_pos(v[1], v[3]) ? RV(4, 2, 0, 1) : false;
+   if (same_pos(v[2], v[4]))
+      return same_pos(v[1], v[5]) ? RV(3, 2, 0, 1) : false;
+   return false;
+#undef RV
+}
+
+/* What the linear path makes of a rectangle (or a legacy point: n = 1)
+ * of the current state whose corners are v[0..n-1] (enum r_lin), with
+ * ctx->_LinColor set for R_LIN_COLOR: an untextured rectangle of one
+ * colour, without fog or secondary colour, blended not at all or by
+ * SRC_ALPHA, ONE_MINUS_SRC_ALPHA ("GLX linear arithmetic" rules 1, 2 and
+ * 4) is coloured otherwise; other rectangles are drawn alike on both
+ * ways (rule 5) or are not probed (other blend functions, logic ops,
+ * colour masks, a colour that varies over the rectangle). */
+static uint8_t lin_color_kind_n(const struct render *r, const struct r_vertex *const *v, int n)
+{
+   struct fgl_context *ctx = r->ctx;
+   const struct r_state *rs = &ctx->_Raster;
+   const struct r_blend_state *bl = rs->blend;
+   const struct r_fs_state *fs = rs->fs;
+   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   if ((fs->fs_inputs & ~(1u << R_FS_COLOR0)) != 0 || fs->tex_units != 0 || fs->color_sum ||
+       fs->phong || bl->logic_op || (bl->color_mask & surf) != surf)
+      return R_LIN_SAME;
+   if (bl->enable &&
+       (bl->separate_alpha || bl->blend_eq != R_BLEND_ADD || bl->blend_src != R_BF_SRC_ALPHA ||
+        bl->blend_dst != R_BF_INV_SRC_ALPHA))
+      return R_LIN_SAME;
+   if (r->color_const) {
+      /* rule 1: the constant, as set, in [0, 1]: trunc(c * 256 - c) */
+      const float *c = ctx->Current.Attrib[FGL_ATTR_COLOR0];
+      for (int i = 0; i < 4; i++)
+         if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+            return R_LIN_SAME;
+      for (int i = 0; i < 4; i++) {
+         const float t = c[i] * 256.0f - c[i];
+         ctx->_LinColor[i] = (float)(unsigned)t / 255.0f;
+      }
+      return R_LIN_COLOR;
+   }
+   /* rule 2: a vertex colour, one at every corner: 1.15 fixed point */
+   const float *c = v[0]->attr[R_ATTR_COLOR0];
+   for (int k = 1; k < n; k++)
+      if (memcmp(v[k]->attr[R_ATTR_COLOR0], c, sizeof(float) * 4) != 0)
+         return R_LIN_SAME;   /* a gradient: not modelled */
+   for (int i = 0; i < 4; i++) {
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+         return R_LIN_SAME;
+      int f = (int)(c[i] * 32767.0f);
+      if (f > 32767)
+         f = 32767;
+      ctx->_LinColor[i] = (float)(f >> 7) / 255.0f;
+   }
+   return R_LIN_COLOR;
+}
+
+static uint8_t lin_color_kind(const struct render *r, const struct r_vertex *const *rv)
+{
+   return lin_color_kind_n(r, rv, 4);
+}
+
+/* The classification of the triangles (a0,a1,a2), (b0,b1,b2) in a scene
+ * that may take the linear path (enum r_lin), with ctx->_LinColor set
+ * for R_LIN_COLOR; the rectangle's pixel box in box when it is opaque
+ * (it then covers whole tiles: r_scene_cover), else box[0] = box[2]. */
+static uint8_t lin_classify(const struct render *r, const struct r_vertex *a0,
+                            const struct r_vertex *a1, const struct r_vertex *a2,
+                            const struct r_vertex *b0, const struct r_vertex *b1,
+                            const struct r_vertex *b2, int box[4])
+{
+   struct fgl_context *ctx = r->ctx;
+   const struct r_state *rs = &ctx->_Raster;
+   box[0] = box[2] = 0;
+   const int w0 = lin_winding(a0, a1, a2), w1 = lin_winding(b0, b1, b2);
+   if (w0 != w1 || w0 == 0)
+      return R_LIN_NO;
+   const struct r_vertex *v[6] = { a0, a1, a2, b0, b1, b2 };
+   if (w0 > 0) {   /* clockwise: do_rect_ccw(v0, v2, v1, v3, v5, v4) */
+      v[1] = a2;
+      v[2] = a1;
+      v[4] = b2;
+      v[5] = b1;
+   }
+   const struct r_vertex *rv[4];
+   if (!lin_rect_corners(v, rv))
+      return R_LIN_NO;
+   if (rv[0]->pos[1] == rv[1]->pos[1]) {
+      const struct r_vertex *t = rv[0];
+      rv[0] = rv[1];
+      rv[1] = rv[2];
+      rv[2] = rv[3];
+      rv[3] = t;
+   }
+   if (!(rv[0]->pos[0] == rv[1]->pos[0] && rv[2]->pos[0] == rv[3]->pos[0] &&
+         rv[0]->pos[1] == rv[3]->pos[1] && rv[1]->pos[1] == rv[2]->pos[1]))
+      return R_LIN_NO;
+   if (rv[1]->pos[3] != rv[0]->pos[3] || rv[2]->pos[3] != rv[0]->pos[3] ||
+       rv[3]->pos[3] != rv[0]->pos[3])
+      return R_LIN_NO;
+   for (unsigned m = rs->fs->fs_inputs; m; m &= m - 1) {
+      const int slot = r_fs_slot(__builtin_ctz(m), false);
+      for (int c = 0; c < 4; c++) {
+         const float dx1 = rv[0]->attr[slot][c] - rv[3]->attr[slot][c];
+         const float dx2 = rv[1]->attr[slot][c] - rv[2]->attr[slot][c];
+         const float dy1 = rv[0]->attr[slot][c] - rv[1]->attr[slot][c];
+         const float dy2 = rv[3]->attr[slot][c] - rv[2]->attr[slot][c];
+         if (dx1 != dx2 || dy1 != dy2)
+            return R_LIN_NO;
+      }
+   }
+   const struct r_blend_state *bl = rs->blend;
+   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   const bool full_mask = (bl->color_mask & surf) == surf;
+   /* opaque (lp_state_fs.c: no blending, logic op or alpha test, every
+    * channel written): the rectangle's pixels, as lp_rect_cw bounds them
+    * (x: centres in [x0, x1); y: either fill convention, so that only
+    * tiles it surely covers count) */
+   if (!bl->enable && !bl->logic_op && full_mask && !rs->dsa->alpha_test) {
+      float x0 = rv[0]->pos[0], x1 = rv[2]->pos[0], y0 = rv[0]->pos[1], y1 = rv[1]->pos[1];
+      if (x0 > x1) { const float t = x0; x0 = x1; x1 = t; }
+      if (y0 > y1) { const float t = y0; y0 = y1; y1 = t; }
+      const float lim = 0x1p20f;
+      if (fabsf(x0) < lim && fabsf(x1) < lim && fabsf(y0) < lim && fabsf(y1) < lim) {
+         const int sx0 = (int)lrintf((x0 - 0.5f) * 256.0f), sx1 = (int)lrintf((x1 - 0.5f) * 256.0f);
+         const int sy0 = (int)lrintf((y0 - 0.5f) * 256.0f), sy1 = (int)lrintf((y1 - 0.5f) * 256.0f);
+         const int ya = (sy0 + 255) >> 8, yb = (sy0 + 256) >> 8;
+         const int ye = (sy1 + 255) >> 8, yf = (sy1 + 256) >> 8;
+         box[0] = (sx0 + 255) >> 8;
+         box[2] = (sx1 + 255) >> 8;
+         box[1] = ya > yb ? ya : yb;
+         box[3] = ye < yf ? ye : yf;
+      }
+   }
+   return lin_color_kind(r, rv);
+}
+
+/* Two triangles that llvmpipe's direct path hands to rect() (the first
+ * with provoking vertex pva): in a scene that may take the linear path,
+ * marked for the raster scene as a rectangle's or not (ctx->_LinTri), an
+ * opaque rectangle first dropping what the tiles it covers hold. */
+static void tri_pair(const struct render *r, unsigned a0, unsigned a1, unsigned a2,
+                     unsigned pva, unsigned b0, unsigned b1, unsigned b2, bool pipeline,
+                     unsigned fa, unsigned fb)
+{
+   if (r->lin && !pipeline) {
+      struct fgl_context *ctx = r->ctx;
+      int box[4];
+      const uint8_t k = lin_classify(r, &vtx(r, a0)->r, &vtx(r, a1)->r, &vtx(r, a2)->r,
+                                     &vtx(r, b0)->r, &vtx(r, b1)->r, &vtx(r, b2)->r, box);
+      /* (not when a face is culled: a culled rectangle bins nothing) */
+      const struct r_rast_state *rast = ctx->_Raster.rast;
+      if (k != R_LIN_NO && box[0] < box[2] && box[1] < box[3] && !rast->cull_front &&
+          !rast->cull_back)
+         r_scene_cover(&ctx->_Scene, &ctx->_Raster, box);
+      ctx->_LinTri = k;
+      tri_pv(r, a0, a1, a2, pva, pipeline, fa);
+      tri(r, b0, b1, b2, pipeline, fb);
+      ctx->_LinTri = R_LIN_NO;
+      return;
+   }
+   tri_pv(r, a0, a1, a2, pva, pipeline, fa);
+   tri(r, b0, b1, b2, pipeline, fb);
+}
+
 /* [S: draw_decompose_tmp.h] with the last vertex provoking: every
  * triangle of GL_TRIANGLES, strips and fans is a primitive of its own with
  * all three edges */
@@ -196,6 +417,12 @@ static bool segment_pipeline(const struct render *r, unsigned start, unsigned co
    return r->ctx->_DrawPipeline.always || segment_clipped(r, start, count);
 }
 
+/* the longest GL_TRIANGLES draw whose pairs are tried as rectangles:
+ * llvmpipe's vertex buffer holds 4096 bytes (LP_MAX_VBUF_SIZE), at least
+ * 96 vertices of the formats a linear scene draws; a longer draw is cut
+ * into buffers whose vertex counts are not modelled */
+#define LIN_PAIRS_MAX 96
+
 /* GL_TRIANGLES: vsplit segments of 4095 vertices (the 4096 trimmed to
  * whole triangles). */
 static void render_triangles(const struct render *r, unsigned s, unsigned n)
@@ -205,6 +432,17 @@ static void render_triangles(const struct render *r, unsigned s, unsigned n)
       const unsigned cnt = n - seg < SEGMENT_SIZE - 1 ? n - seg : SEGMENT_SIZE - 1;
       need(r, s + seg, cnt);
       const bool pipeline = segment_pipeline(r, s + seg, cnt);
+      /* pairs of triangles may be rectangles when the draw is a whole
+       * number of pairs (lp_setup_draw_arrays: nr % 6 == 0; only small
+       * draws, whose vertex buffer is the whole draw) */
+      if (r->lin && !pipeline && n % 6 == 0 && n <= LIN_PAIRS_MAX) {
+         for (unsigned i = seg; i < seg + cnt; i += 6) {
+            need_prim(r, s + i, 6, s + n);
+            tri_pair(r, s + i, s + i + 1, s + i + 2, s + i + 2, s + i + 3, s + i + 4, s + i + 5,
+                     pipeline, TRI_FLAGS, TRI_FLAGS);
+         }
+         continue;
+      }
       for (unsigned i = seg; i < seg + cnt; i += 3) {
          need_prim(r, s + i, 3, s + n);
          tri(r, s + i, s + i + 1, s + i + 2, pipeline, TRI_FLAGS);
@@ -260,6 +498,11 @@ static void render_fan(const struct render *r, unsigned s, unsigned n, bool poly
        * (edge 1) */
       const bool split_before = seg != 0, split_after = seg + cnt < n;
       unsigned pflags = T_RESET_STIPPLE | T_EDGE_0 | (split_before ? 0u : T_EDGE_2);
+      if (!polygon && n == 4 && r->lin && !pipeline && !r->elts) {
+         /* lp_setup_draw_arrays: a fan of four is rect(0,1,2, 0,2,3) */
+         tri_pair(r, s, s + 1, s + 2, s + 2, s, s + 2, s + 3, pipeline, TRI_FLAGS, TRI_FLAGS);
+         break;
+      }
       for (unsigned i = seg; i + 2 < seg + cnt; i++, pflags = T_EDGE_0) {
          if (polygon) {
             if (i + 3 == seg + cnt && !split_after)
@@ -294,8 +537,8 @@ static void render_quads(const struct render *r, unsigned start, unsigned count,
             tri(r, i, i + 1, i + 3, pipeline, T_RESET_STIPPLE | T_EDGE_0 | T_EDGE_2);
             tri(r, i + 1, i + 2, i + 3, pipeline, T_EDGE_0 | T_EDGE_1);
          } else {
-            tri_pv(r, i, i + 1, i + 2, i + 3, pipeline, 0);
-            tri(r, i, i + 2, i + 3, pipeline, 0);
+            /* llvmpipe's rect() */
+            tri_pair(r, i, i + 1, i + 2, i + 3, i, i + 2, i + 3, pipeline, 0, 0);
          }
       }
    }
@@ -356,11 +599,21 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
          const unsigned cnt = n - seg < SEGMENT_SIZE ? n - seg : SEGMENT_SIZE;
          need(r, s + seg, cnt);
          const bool pipeline = segment_clipped(r, s + seg, cnt);
+         /* a legacy point is a rectangle of llvmpipe's setup
+          * (lp_setup_point.c: lp_setup_bin_rectangle): classified for a
+          * scene that may take the linear path (ctx->_LinPoint) */
+         const bool lin = r->lin && !fgl_point_smooth(r->ctx) &&
+                          !r->ctx->_Raster.rast->point_sprite;
          for (unsigned i = seg; i < seg + cnt; i++) {
             if (r->phong_mats)
                phong_material(r, s + i);
+            if (lin) {
+               const struct r_vertex *pv = &vtx(r, s + i)->r;
+               r->ctx->_LinPoint = lin_color_kind_n(r, &pv, 1);
+            }
             t_point(r->ctx, vtx(r, s + i), pipeline);
          }
+         r->ctx->_LinPoint = R_LIN_NO;
       }
       break;
    case GL_LINES:
@@ -592,7 +845,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   const struct render r = { ctx, src || lazy ? &win : NULL, tv, verts, elts, phong_mats };
+   struct render r = { ctx, src || lazy ? &win : NULL, tv, verts, elts, phong_mats, false, false };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program
@@ -642,6 +895,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
                                           t_fs_reads_primary(&ctx->_Raster)) ||
                                          (ctx->Light.Enabled && ctx->_Raster.fs->color_sum) ||
                                          color1_varying);
+   r.lin = fgl_lin_binning(ctx) && !constant_interp && !feedback;
+   r.color_const = !ctx->Light.Enabled && !color_varying;
    bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {
       /* consecutive primitives of one mode are one llvmpipe draw
