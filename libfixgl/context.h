@@ -1155,6 +1155,9 @@ struct fgl_context {
    uint8_t _LinTri;
    uint8_t _LinPoint;   /* the same for a legacy point */
    float _LinColor[4];
+   /* the batch's colour is the current colour, a constant of the
+    * fragment program (unlit, not in the vertex format) */
+   bool _LinColorConst;
    struct fgl_texture_object *_CurrentTex[FGL_MAX_TEXTURE_UNITS];
    GLenum _CurrentTexTarget[FGL_MAX_TEXTURE_UNITS];  /* GL_TEXTURE_1D or 2D */
    int _CurrentTexMaxLevel[FGL_MAX_TEXTURE_UNITS];   /* fgl_texture_complete's */
@@ -1340,6 +1343,13 @@ void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v2);
 void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
                      const struct r_vertex *v0, const struct r_vertex *v1);
+/* What llvmpipe's linear path makes of a rectangle (a point, a tile a
+ * triangle covers) with corners v[0..n-1] in the current state: enum
+ * r_lin, ctx->_LinColor set for R_LIN_COLOR (scene.c) */
+uint8_t fgl_lin_color_kind(struct fgl_context *ctx, const struct r_vertex *const *v, int n);
+/* the current state is opaque to llvmpipe's bins (lp_setup_whole_tile
+ * then drops what a tile it covers holds) */
+bool fgl_lin_opaque(const struct fgl_context *ctx);
 /* a clear quad of a scene that may take the linear path (fgl_lin_binning):
  * lin_color its colour on that path, NULL when the path draws it as the
  * ordinary one */

@@ -394,31 +394,100 @@ void fgl_scene_flush_front(struct fgl_context *ctx)
       fb->FlushFront(fb);
 }
 
+/* What the linear path makes of a rectangle (a legacy point: n = 1; a
+ * triangle's whole tile: 3) of the current state whose corners are
+ * v[0..n-1] (enum r_lin), with
+ * ctx->_LinColor set for R_LIN_COLOR: an untextured rectangle of one
+ * colour, without fog or secondary colour, blended not at all or by
+ * SRC_ALPHA, ONE_MINUS_SRC_ALPHA ("GLX linear arithmetic" rules 1, 2 and
+ * 4) is coloured otherwise; other rectangles are drawn alike on both
+ * ways (rule 5) or are not probed (other blend functions, logic ops,
+ * colour masks, a colour that varies over the rectangle). */
+uint8_t fgl_lin_color_kind(struct fgl_context *ctx, const struct r_vertex *const *v, int n)
+{
+   const struct r_state *rs = &ctx->_Raster;
+   const struct r_blend_state *bl = rs->blend;
+   const struct r_fs_state *fs = rs->fs;
+   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   if ((fs->fs_inputs & ~(1u << R_FS_COLOR0)) != 0 || fs->tex_units != 0 || fs->color_sum ||
+       fs->phong || bl->logic_op || (bl->color_mask & surf) != surf)
+      return R_LIN_SAME;
+   if (bl->enable &&
+       (bl->separate_alpha || bl->blend_eq != R_BLEND_ADD || bl->blend_src != R_BF_SRC_ALPHA ||
+        bl->blend_dst != R_BF_INV_SRC_ALPHA))
+      return R_LIN_SAME;
+   if (ctx->_LinColorConst) {
+      /* rule 1: the constant, as set, in [0, 1]: trunc(c * 256 - c) */
+      const float *c = ctx->Current.Attrib[FGL_ATTR_COLOR0];
+      for (int i = 0; i < 4; i++)
+         if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+            return R_LIN_SAME;
+      for (int i = 0; i < 4; i++) {
+         const float t = c[i] * 256.0f - c[i];
+         ctx->_LinColor[i] = (float)(unsigned)t / 255.0f;
+      }
+      return R_LIN_COLOR;
+   }
+   /* rule 2: a vertex colour, one at every corner: 1.15 fixed point */
+   const float *c = v[0]->attr[R_ATTR_COLOR0];
+   for (int k = 1; k < n; k++)
+      if (memcmp(v[k]->attr[R_ATTR_COLOR0], c, sizeof(float) * 4) != 0)
+         return R_LIN_SAME;   /* a gradient: not modelled */
+   for (int i = 0; i < 4; i++) {
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+         return R_LIN_SAME;
+      int f = (int)(c[i] * 32767.0f);
+      if (f > 32767)
+         f = 32767;
+      ctx->_LinColor[i] = (float)(f >> 7) / 255.0f;
+   }
+   return R_LIN_COLOR;
+}
+
 /* ---- The linear path's scenes (fgl_lin_binning) ----
  * Every command is binned, also on one thread, and nothing goes to the
  * workers before the oracle's flush: each tile then decides from all of
  * its commands (r_scene_run_tile).  Triangles carry the vertex stage's
  * classification (_LinTri: a rectangle's or not) and, when the linear
  * path colours them otherwise, vertices with that colour. */
+bool fgl_lin_opaque(const struct fgl_context *ctx)
+{
+   /* lp_state_fs.c variant->opaque: no blending, logic op or alpha test,
+    * every channel of the buffer written (no depth or stencil buffer
+    * here) */
+   const struct r_state *rs = &ctx->_Raster;
+   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   return !rs->blend->enable && !rs->blend->logic_op && (rs->blend->color_mask & surf) == surf &&
+          !rs->dsa->alpha_test && !rs->samples;
+}
+
 static void lin_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,
                          const struct r_vertex *v2)
 {
-   const uint8_t lin = ctx->_LinTri;
+   const struct r_vertex *v[3] = { v0, v1, v2 };
+   struct r_lin_tri lt = { ctx->_LinTri, R_LIN_NO, false, NULL };
+   /* a tile the triangle covers whole is shaded by a tile command
+    * (lp_setup_whole_tile), which the linear path takes as it takes a
+    * rectangle, an opaque one emptying the tile's bin first */
+   if (lt.lin == R_LIN_NO) {
+      lt.whole = fgl_lin_color_kind(ctx, v, 3);
+      lt.opaque = fgl_lin_opaque(ctx);
+   }
    struct r_vertex lv[3];
    const struct r_vertex *lp[3] = { &lv[0], &lv[1], &lv[2] };
-   if (lin == R_LIN_COLOR) {
-      const struct r_vertex *v[3] = { v0, v1, v2 };
+   if (lt.lin == R_LIN_COLOR || lt.whole == R_LIN_COLOR) {
       for (int i = 0; i < 3; i++) {
          lv[i] = *v[i];
          memcpy(lv[i].attr[R_ATTR_COLOR0], ctx->_LinColor, sizeof(ctx->_LinColor));
       }
+      lt.lv = lp;
    }
    struct r_scene *s = &ctx->_Scene;
-   if (r_scene_triangle_lin(s, rs, v0, v1, v2, lin, lin == R_LIN_COLOR ? lp : NULL))
+   if (r_scene_triangle_lin(s, rs, v0, v1, v2, &lt))
       return;
    fgl_scene_flush(ctx);
-   if (!r_scene_triangle_lin(s, rs, v0, v1, v2, lin, lin == R_LIN_COLOR ? lp : NULL))
+   if (!r_scene_triangle_lin(s, rs, v0, v1, v2, &lt))
       r_triangle(rs, v0, v1, v2);   /* out of memory: drawn now, in order */
 }
 

@@ -10,7 +10,7 @@
  * (which ends the oracle's scene) into the PPM: every scene's whole image
  * is compared.
  *
- *   linrandom --out FILE.ppm [--seed S] [--scenes N] [--verbose]
+ *   linrandom --out FILE.ppm [--seed S] [--scenes N] [--outside PX] [--verbose]
  *   linrandom --probe
  *
  * --probe (run on Mesa's libGL alone: run_glx.py oracle) checks the
@@ -26,7 +26,9 @@
  * scissored or colour-masked glClear (a clear quad); a whole-buffer
  * clear; triangles; glFlush between some.
  * Colours are near k/255 and the halves between, where rounding and
- * truncation part.
+ * truncation part.  --outside PX lets half the boxes reach up to PX pixels
+ * past the window (llvmpipe's xy guard band, twice the viewport, keeps
+ * them from being clipped: ORACLE-NOTES.md "GLX guard band").
  */
 #include <GL/gl.h>
 #include <stdbool.h>
@@ -75,17 +77,25 @@ static float coord(int max)
    return v > (float)max ? (float)max : v;
 }
 
+/* --outside: corners up to `outside` pixels beyond the window */
+static int outside;
+
 static void box(float b[4])
 {
    float x0 = coord(W), x1 = coord(W), y0 = coord(H), y1 = coord(H);
+   if (outside && range(2)) {
+      x0 -= (float)range(outside + 1);
+      y0 -= (float)range(outside + 1);
+      x1 += (float)range(outside + 1);
+      y1 += (float)range(outside + 1);
+   }
    if (range(2)) {   /* small ones, inside a bin or across a border */
       x1 = x0 + (float)(1 + range(40));
       y1 = y0 + (float)(1 + range(40));
-      /* inside the window: llvmpipe's xy guard band is not modelled
-       * (README issue 20) */
-      if (x1 > (float)W)
+      /* inside the window unless --outside */
+      if (x1 > (float)W && !outside)
          x1 = (float)W;
-      if (y1 > (float)H)
+      if (y1 > (float)H && !outside)
          y1 = (float)H;
    }
    b[0] = x0 < x1 ? x0 : x1;
@@ -323,6 +333,8 @@ int main(int argc, char **argv)
          seed = (unsigned)strtoul(argv[++i], NULL, 10);
       else if (strcmp(argv[i], "--scenes") == 0 && i + 1 < argc)
          nscenes = atoi(argv[++i]);
+      else if (strcmp(argv[i], "--outside") == 0 && i + 1 < argc)
+         outside = atoi(argv[++i]);
       else if (strcmp(argv[i], "--verbose") == 0)
          verbose = true;
       else

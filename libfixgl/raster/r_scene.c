@@ -420,13 +420,59 @@ fail:
 bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                       const struct r_vertex *v1, const struct r_vertex *v2)
 {
-   return r_scene_triangle_lin(s, rs, v0, v1, v2, R_LIN_NO, NULL);
+   static const struct r_lin_tri no = { R_LIN_NO, R_LIN_NO, false, NULL };
+   return r_scene_triangle_lin(s, rs, v0, v1, v2, &no);
+}
+
+/* A triangle of R_LIN_NO (command ci) whose whole tiles take command wi
+ * (made since `mark`): bin_cmd with the tiles it covers whole apart,
+ * their bins first emptied when `opaque`. */
+static bool bin_whole(struct r_scene *s, const struct r_state *rs, uint32_t ci, uint32_t wi,
+                      const int box[4], const struct r_tri_edges *edges, bool opaque,
+                      const struct scene_mark *mark)
+{
+   int r[4];
+   draw_region(rs, r);
+   const int tx0 = box[0] >> R_TILE_LOG2, tx1 = (box[2] - 1) >> R_TILE_LOG2;
+   const int ty0 = box[1] >> R_TILE_LOG2, ty1 = (box[3] - 1) >> R_TILE_LOG2;
+   for (int ty = ty0; ty <= ty1; ty++) {
+      for (int tx = tx0; tx <= tx1; tx++) {
+         const int x = tx << R_TILE_LOG2, y = ty << R_TILE_LOG2;
+         if (r_tri_edges_miss_tile(edges, x, y))
+            continue;
+         /* whole: no edge cuts it, nor a plane of the draw region's right
+          * or bottom side, which llvmpipe adds when the triangle's box
+          * leaves the region there and which cuts the tile holding the
+          * region's last column or row (lp_setup_tri.c, scissor planes;
+          * rasterize_ccw's planes) */
+         const bool whole =
+            x >= r[0] && y >= r[1] && x + R_TILE_SIZE <= r[2] && y + R_TILE_SIZE <= r[3] &&
+            (edges->bx1 <= r[2] - 1 || r[2] > x + R_TILE_SIZE) &&
+            (edges->by1 <= r[3] - 1 || r[3] > y + R_TILE_SIZE) &&
+            r_tri_edges_cover_tile(edges, x, y);
+         struct r_bin *b = &s->bins[ty * s->tiles_x + tx];
+         if (whole && opaque)
+            b->count = 0;
+         if (!grow((void **)&b->cmd, &b->capacity, b->count + 1, sizeof(*b->cmd))) {
+            unbin(s, ci);
+            unbin(s, wi);
+            scene_rollback(s, mark, true);
+            return false;
+         }
+         b->cmd[b->count++] = whole ? wi : ci;
+         s->bytes += sizeof(*b->cmd);
+      }
+   }
+   s->ncmds += 2;
+   return true;
 }
 
 bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
-                          const struct r_vertex *v1, const struct r_vertex *v2, uint8_t lin,
-                          const struct r_vertex *const *lv)
+                          const struct r_vertex *v1, const struct r_vertex *v2,
+                          const struct r_lin_tri *lt)
 {
+   const uint8_t lin = lt->lin;
+   const struct r_vertex *const *lv = lt->lv;
    /* binned into the tiles of the box r_triangle draws in, or not at all
     * when it draws nothing (culled, empty); an exact triangle (kind 1) is
     * set up now, once, instead of in each tile it is drawn in */
@@ -451,6 +497,39 @@ bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const str
       if (s->ncmds > n && lin != R_LIN_NO)
          s->cmds[n].lin = R_LIN_SAME;
       return true;
+   }
+   const bool multi = (box[0] ^ (box[2] - 1)) >> R_TILE_LOG2 != 0 ||
+                      (box[1] ^ (box[3] - 1)) >> R_TILE_LOG2 != 0;
+   if (lin == R_LIN_NO && multi && (lt->whole != R_LIN_NO || lt->opaque)) {
+      /* two commands of one setup: the triangle, and in the tiles it
+       * covers whole, its tile shading */
+      const uint32_t ci = new_cmd(s, rs, R_CMD_TRIANGLE);
+      if (ci == UINT32_MAX) {
+         scene_rollback(s, &mark, true);
+         return false;
+      }
+      s->cmds[ci].tri = bin;
+      s->ncmds++;   /* (new_cmd's next index is ci + 1) */
+      const uint32_t wi = new_cmd(s, rs, R_CMD_TRIANGLE);
+      s->ncmds--;
+      if (wi == UINT32_MAX || wi != ci + 1) {
+         scene_rollback(s, &mark, true);
+         return false;
+      }
+      s->cmds[wi].tri = bin;
+      s->cmds[wi].lin = lt->whole;
+      if (lt->whole == R_LIN_COLOR) {
+         const int slots = vertex_slots(rs);
+         for (int i = 0; i < 3; i++) {
+            s->cmds[wi].v[i] = copy_vertex(s, lv[i], slots);
+            if (!s->cmds[wi].v[i]) {
+               scene_rollback(s, &mark, true);
+               return false;
+            }
+         }
+         s->lin = true;
+      }
+      return bin_whole(s, rs, ci, wi, box, &edges, lt->opaque, &mark);
    }
    return add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges, lin,
                      lin == R_LIN_COLOR ? lv : NULL);
@@ -591,21 +670,13 @@ void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4]
    draw_region(rs, r);
    const int x0 = box[0] > r[0] ? box[0] : r[0], y0 = box[1] > r[1] ? box[1] : r[1];
    const int x1 = box[2] < r[2] ? box[2] : r[2], y1 = box[3] < r[3] ? box[3] : r[3];
-   /* the tiles wholly inside [x0, x1) x [y0, y1) (a tile at the buffer's
-    * right or top edge counts as whole up to the edge, as llvmpipe's
-    * tiles reach past it) */
-   const int w = rs->fb->width, h = rs->fb->height;
-   for (int ty = (y0 + R_TILE_SIZE - 1) >> R_TILE_LOG2; ty < s->tiles_y; ty++) {
-      const int ty1 = (ty + 1) << R_TILE_LOG2;
-      if ((ty1 < h ? ty1 : h) > y1)
-         break;
-      for (int tx = (x0 + R_TILE_SIZE - 1) >> R_TILE_LOG2; tx < s->tiles_x; tx++) {
-         const int tx1 = (tx + 1) << R_TILE_LOG2;
-         if ((tx1 < w ? tx1 : w) > x1)
-            break;
+   /* the tiles wholly inside [x0, x1) x [y0, y1) (lp_setup_bin_rectangle:
+    * the box cut to the region covers all 64 x 64 pixels) */
+   for (int ty = (y0 + R_TILE_SIZE - 1) >> R_TILE_LOG2;
+        ty < s->tiles_y && ((ty + 1) << R_TILE_LOG2) <= y1; ty++)
+      for (int tx = (x0 + R_TILE_SIZE - 1) >> R_TILE_LOG2;
+           tx < s->tiles_x && ((tx + 1) << R_TILE_LOG2) <= x1; tx++)
          s->bins[ty * s->tiles_x + tx].count = 0;
-      }
-   }
 }
 
 /* buckets of r_scene_tile_order: tiles with this many commands or more

@@ -214,13 +214,21 @@ bool r_scene_point(struct r_scene *s, const struct r_state *rs, const struct r_v
 bool r_scene_clear(struct r_scene *s, const struct r_state *rs, bool color,
                    const uint8_t rgba[4], bool depth, uint32_t zvalue, bool stencil,
                    uint8_t svalue);
-/* A triangle of a rectangle (lin R_LIN_SAME or R_LIN_COLOR: lv, the
- * vertices with the linear colour) or not (R_LIN_NO, lv NULL).  An
- * R_LIN_COLOR triangle that is not exact (r_triangle_box_setup's kind 2)
- * is binned as R_LIN_SAME. */
+/* A triangle of a scene that may take the linear path: lin, what it is
+ * in every tile (R_LIN_SAME or R_LIN_COLOR for a rectangle's, R_LIN_NO
+ * for others); whole, what a triangle of R_LIN_NO is in a tile it covers
+ * whole (llvmpipe shades such a tile as a rectangle: lp_setup_whole_tile),
+ * and opaque, whether it then drops what the tile holds; lv (R_LIN_COLOR)
+ * the vertices with the linear colour.  An R_LIN_COLOR triangle that is
+ * not exact (r_triangle_box_setup's kind 2) is binned as R_LIN_SAME. */
+struct r_lin_tri {
+   uint8_t lin, whole;
+   bool opaque;
+   const struct r_vertex *const *lv;
+};
 bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
-                          const struct r_vertex *v1, const struct r_vertex *v2, uint8_t lin,
-                          const struct r_vertex *const *lv);
+                          const struct r_vertex *v1, const struct r_vertex *v2,
+                          const struct r_lin_tri *lin);
 /* A point alike (R_LIN_NO for a sprite: llvmpipe draws it as a
  * triangle) */
 bool r_scene_point_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v,

@@ -882,6 +882,9 @@ void r_triangle(const struct r_state *rs, const struct r_vertex *v0,
  * not exclude; 2 unknown (non-finite or huge positions: any pixel). */
 struct r_tri_edges {
    int64_t c[3], dcdx[3], dcdy[3], eo[3];
+   /* the snapped box's right column and bottom row (inclusive, not cut
+    * to the draw region): whether llvmpipe adds those region planes */
+   int32_t bx1, by1;
 };
 int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
                    const struct r_vertex *v1, const struct r_vertex *v2, int box[4],
@@ -891,6 +894,9 @@ int r_triangle_box(const struct r_state *rs, const struct r_vertex *v0,
  * of the 64x64 tile whose top-left pixel is (x, y) (a multiple of 64):
  * llvmpipe's trivial reject, conservative. */
 bool r_tri_edges_miss_tile(const struct r_tri_edges *edges, int x, int y);
+/* ... and true when it covers every pixel of it (no edge cuts it: the
+ * tiles llvmpipe shades whole, lp_setup_whole_tile) */
+bool r_tri_edges_cover_tile(const struct r_tri_edges *edges, int x, int y);
 
 /* Rasterize one non-antialiased point (r_point.c; llvmpipe's legacy
  * points, lp_setup_point.c). */

@@ -1077,6 +1077,8 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
          edges->dcdy[i] = p[i].dcdy;
          edges->eo[i] = (int64_t)p[i].eo * TILE_SIZE;
       }
+      edges->bx1 = b[1];
+      edges->by1 = b[3];
    }
    if (bin) {
       /* r_triangle's facing and rasterize_ccw's setup */
@@ -1130,6 +1132,22 @@ bool r_tri_edges_miss_tile(const struct r_tri_edges *e, int x, int y)
          return true;
    }
    return false;
+}
+
+bool r_tri_edges_cover_tile(const struct r_tri_edges *e, int x, int y)
+{
+   /* rasterize_ccw's whole-tile test (no plane partial) of the 64x64
+    * tile at (x, y) */
+   for (int i = 0; i < 3; i++) {
+      const int64_t c = sub64(add64(e->c[i], imul64(e->dcdy[i], y)), imul64(e->dcdx[i], x));
+      const int64_t ei = (int64_t)((uint64_t)((int64_t)sub_wrap((int32_t)e->dcdy[i],
+                                                                 (int32_t)e->dcdx[i]) -
+                                              e->eo[i] / TILE_SIZE)
+                                   << 6);
+      if (sub64(add64(c, ei), 1) < 0)
+         return false;
+   }
+   return true;
 }
 
 void r_triangle(const struct r_state *rs, const struct r_vertex *v0,

@@ -193,6 +193,24 @@ static inline unsigned t_clip_mask(const float p[4])
    return m;
 }
 
+/* The x and y bits of t_clip_mask with draw's guard band
+ * (draw_cliptest_tmp.h DO_CLIP_XY_GUARD_BAND: outside when
+ * -0.5 x + w < 0, ...): llvmpipe turns it on with its linear path, for
+ * one B8G8R8A8/X8 colour buffer without depth or stencil
+ * [S: lp_state_derived.c check_linear_rasterizer, draw_set_driver_clipping
+ * guard_band_xy] (fgl_lin_capable; ORACLE-NOTES.md "GLX guard band"): a
+ * vertex within twice the viewport needs no clipping there, and one
+ * beyond it is clipped at the viewport's planes. */
+static inline unsigned t_guard_mask(const float p[4])
+{
+   unsigned m = 0;
+   if (!(-0.5f * p[0] + p[3] >= 0.0f)) m |= 1u << 0;
+   if (!(0.5f * p[0] + p[3] >= 0.0f))  m |= 1u << 1;
+   if (!(-0.5f * p[1] + p[3] >= 0.0f)) m |= 1u << 2;
+   if (!(0.5f * p[1] + p[3] >= 0.0f))  m |= 1u << 3;
+   return m;
+}
+
 /* The polygon clipper of draw's clip stage (t_clip.c; draw_pipe_clip.c
  * do_clip_tri, interp), free of GL: what it needs of the draw is here.
  * Triangles of the vertex stage and the quads of pixel rectangles

@@ -77,9 +77,8 @@ struct render {
    unsigned phong_mats;
    /* the scene may take llvmpipe's linear path and the setup has no
     * constant-interpolated input: pairs of triangles may be rectangles
-    * (lin_pair); color_const: the colour is the current colour, a
-    * constant of the fragment program (unlit, not in the vertex format) */
-   bool lin, color_const;
+    * (tri_pair) */
+   bool lin;
 };
 
 /* Where vertex i of the draw's primitives is. */
@@ -235,61 +234,6 @@ static bool lin_rect_corners(const struct r_vertex *const v[6], const struct r_v
 #undef RV
 }
 
-/* What the linear path makes of a rectangle (or a legacy point: n = 1)
- * of the current state whose corners are v[0..n-1] (enum r_lin), with
- * ctx->_LinColor set for R_LIN_COLOR: an untextured rectangle of one
- * colour, without fog or secondary colour, blended not at all or by
- * SRC_ALPHA, ONE_MINUS_SRC_ALPHA ("GLX linear arithmetic" rules 1, 2 and
- * 4) is coloured otherwise; other rectangles are drawn alike on both
- * ways (rule 5) or are not probed (other blend functions, logic ops,
- * colour masks, a colour that varies over the rectangle). */
-static uint8_t lin_color_kind_n(const struct render *r, const struct r_vertex *const *v, int n)
-{
-   struct fgl_context *ctx = r->ctx;
-   const struct r_state *rs = &ctx->_Raster;
-   const struct r_blend_state *bl = rs->blend;
-   const struct r_fs_state *fs = rs->fs;
-   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
-   if ((fs->fs_inputs & ~(1u << R_FS_COLOR0)) != 0 || fs->tex_units != 0 || fs->color_sum ||
-       fs->phong || bl->logic_op || (bl->color_mask & surf) != surf)
-      return R_LIN_SAME;
-   if (bl->enable &&
-       (bl->separate_alpha || bl->blend_eq != R_BLEND_ADD || bl->blend_src != R_BF_SRC_ALPHA ||
-        bl->blend_dst != R_BF_INV_SRC_ALPHA))
-      return R_LIN_SAME;
-   if (r->color_const) {
-      /* rule 1: the constant, as set, in [0, 1]: trunc(c * 256 - c) */
-      const float *c = ctx->Current.Attrib[FGL_ATTR_COLOR0];
-      for (int i = 0; i < 4; i++)
-         if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-            return R_LIN_SAME;
-      for (int i = 0; i < 4; i++) {
-         const float t = c[i] * 256.0f - c[i];
-         ctx->_LinColor[i] = (float)(unsigned)t / 255.0f;
-      }
-      return R_LIN_COLOR;
-   }
-   /* rule 2: a vertex colour, one at every corner: 1.15 fixed point */
-   const float *c = v[0]->attr[R_ATTR_COLOR0];
-   for (int k = 1; k < n; k++)
-      if (memcmp(v[k]->attr[R_ATTR_COLOR0], c, sizeof(float) * 4) != 0)
-         return R_LIN_SAME;   /* a gradient: not modelled */
-   for (int i = 0; i < 4; i++) {
-      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-         return R_LIN_SAME;
-      int f = (int)(c[i] * 32767.0f);
-      if (f > 32767)
-         f = 32767;
-      ctx->_LinColor[i] = (float)(f >> 7) / 255.0f;
-   }
-   return R_LIN_COLOR;
-}
-
-static uint8_t lin_color_kind(const struct render *r, const struct r_vertex *const *rv)
-{
-   return lin_color_kind_n(r, rv, 4);
-}
-
 /* The classification of the triangles (a0,a1,a2), (b0,b1,b2) in a scene
  * that may take the linear path (enum r_lin), with ctx->_LinColor set
  * for R_LIN_COLOR; the rectangle's pixel box in box when it is opaque
@@ -339,14 +283,10 @@ static uint8_t lin_classify(const struct render *r, const struct r_vertex *a0,
             return R_LIN_NO;
       }
    }
-   const struct r_blend_state *bl = rs->blend;
-   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
-   const bool full_mask = (bl->color_mask & surf) == surf;
-   /* opaque (lp_state_fs.c: no blending, logic op or alpha test, every
-    * channel written): the rectangle's pixels, as lp_rect_cw bounds them
-    * (x: centres in [x0, x1); y: either fill convention, so that only
-    * tiles it surely covers count) */
-   if (!bl->enable && !bl->logic_op && full_mask && !rs->dsa->alpha_test) {
+   /* opaque (fgl_lin_opaque): the rectangle's pixels, as lp_rect_cw
+    * bounds them (x: centres in [x0, x1); y: either fill convention, so
+    * that only tiles it surely covers count) */
+   if (fgl_lin_opaque(ctx)) {
       float x0 = rv[0]->pos[0], x1 = rv[2]->pos[0], y0 = rv[0]->pos[1], y1 = rv[1]->pos[1];
       if (x0 > x1) { const float t = x0; x0 = x1; x1 = t; }
       if (y0 > y1) { const float t = y0; y0 = y1; y1 = t; }
@@ -362,7 +302,7 @@ static uint8_t lin_classify(const struct render *r, const struct r_vertex *a0,
          box[3] = ye < yf ? ye : yf;
       }
    }
-   return lin_color_kind(r, rv);
+   return fgl_lin_color_kind(ctx, rv, 4);
 }
 
 /* Two triangles that llvmpipe's direct path hands to rect() (the first
@@ -609,7 +549,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
                phong_material(r, s + i);
             if (lin) {
                const struct r_vertex *pv = &vtx(r, s + i)->r;
-               r->ctx->_LinPoint = lin_color_kind_n(r, &pv, 1);
+               r->ctx->_LinPoint = fgl_lin_color_kind(r->ctx, &pv, 1);
             }
             t_point(r->ctx, vtx(r, s + i), pipeline);
          }
@@ -845,7 +785,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
          if (ctx->Vbo.attr_size[a] != 0)
             phong_mats |= 1u << (a - FGL_ATTR_MAT_FIRST);
    }
-   struct render r = { ctx, src || lazy ? &win : NULL, tv, verts, elts, phong_mats, false, false };
+   struct render r = { ctx, src || lazy ? &win : NULL, tv, verts, elts, phong_mats, false };
    const bool flat = ctx->Light.ShadeModel == GL_FLAT;
    /* A colour that is not part of the batch's vertex format is the current
     * colour for every vertex, and Mesa's fixed-function fragment program
@@ -896,7 +836,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
                                          (ctx->Light.Enabled && ctx->_Raster.fs->color_sum) ||
                                          color1_varying);
    r.lin = fgl_lin_binning(ctx) && !constant_interp && !feedback;
-   r.color_const = !ctx->Light.Enabled && !color_varying;
+   ctx->_LinColorConst = !ctx->Light.Enabled && !color_varying;
    bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {
       /* consecutive primitives of one mode are one llvmpipe draw
