@@ -17,7 +17,9 @@
  * oracle's facts ORACLE-NOTES.md "GLX linear bins" relies on or records
  * as not modelled, each a pixel after a scene of its own: a legacy point
  * binned after a rectangle leaves its bin linear; a rectangle reaching
- * past the window's top is still a rectangle (the xy guard band).
+ * past the window's top is still a rectangle (the xy guard band); a
+ * tile a triangle covers whole goes the linear way, unless the region's
+ * bottom plane cuts it.
  *
  * The commands: glRecti/glRectf (integer, half and quarter pixel
  * corners) with the current colour; a GL_QUADS, GL_TRIANGLES pair or
@@ -314,6 +316,30 @@ static int probes(void)
    glRecti(108, 190, 134, 200);
    probe_pixel("recti past the top", 110, 191, b_linear);
    glDisable(GL_BLEND);
+   /* a triangle's whole tile is a tile command of the linear path; the
+    * region's bottom plane (GL's bottom rows) cuts the tile it ends in */
+   static const float T[4] = { 0.501960814f, 0.701960802f, 0.684684694f, 0.382352948f };
+   static const int t_linear[4] = { 128, 179, 174, 97 }, t_round[4] = { 128, 179, 175, 98 };
+   static const float tops[2] = { 192.0f, 191.0f };
+   for (int i = 0; i < 2; i++) {
+      glColor4fv(T);
+      glBegin(GL_TRIANGLES);
+      glVertex2f(250, tops[i]);
+      glVertex2f(55, tops[i]);
+      glVertex2f(250, 10);
+      glEnd();
+      probe_pixel(i == 0 ? "triangle, whole top tile" : "triangle, top tile cut", 150, 150,
+                  i == 0 ? t_linear : t_round);
+   }
+   static const float U[4] = { 0.33431372f, 0.590196073f, 0.800000012f, 0.0650650635f };
+   static const int u_round[4] = { 85, 150, 204, 17 };
+   glColor4fv(U);
+   glBegin(GL_TRIANGLES);
+   glVertex2f(-20, -20);
+   glVertex2f(150, -20);
+   glVertex2f(-20, 150);
+   glEnd();
+   probe_pixel("triangle past the bottom", 5, 63, u_round);
    printf("%d of the probes differ from the oracle's facts\n", probe_fails);
    return probe_fails ? 1 : 0;
 }
