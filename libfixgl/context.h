@@ -777,6 +777,15 @@ struct fgl_draw_vbuf {
    struct r_vertex (*queue)[2];   /* a point uses [0] */
 };
 
+/* The triangles draw's pipeline queued in its vbuf, held in a scene that
+ * may take llvmpipe's linear path until the vbuf is flushed, when they
+ * are paired into rectangles (tnl/t_render.c t_lin_queue_tri) */
+struct fgl_lin_queue {
+   unsigned count, cap;
+   unsigned setup_mxcsr;
+   struct r_vertex (*tri)[3];
+};
+
 struct fgl_draw_offset_latch {
    bool latched;
    float units, scale;
@@ -1077,6 +1086,8 @@ struct fgl_context {
    struct fgl_draw_pipeline _DrawPipeline;
    struct fgl_draw_offset_latch _DrawOffset;
    struct fgl_draw_vbuf _DrawVbuf;
+   struct fgl_lin_queue _LinQueue;
+   bool _LinPairs;   /* the batch's setup may pair triangles (rect()) */
    uint32_t _StipplePattern[32];   /* the pattern _StippleRows was made
                                     * from (all zero at first, as the
                                     * state tracker's copy) */

@@ -543,7 +543,9 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
       r_line(rs, v0, v1);
       return;
    }
-   if (ctx->_NumThreads == 1 && !fgl_lin_binning(ctx)) {
+   if (fgl_lin_binning(ctx))
+      ctx->_Scene.exact = true;   /* its tiles decide */
+   else if (ctx->_NumThreads == 1) {
       fgl_lazy_resolve(ctx->DrawBuffer, FGL_LAZY_COLOR | FGL_LAZY_ZS);
       r_line(rs, v0, v1);
       return;
@@ -553,6 +555,7 @@ void fgl_raster_line(struct fgl_context *ctx, const struct r_state *rs,
       return;
    }
    fgl_scene_flush(ctx);
+   ctx->_Scene.exact = fgl_lin_binning(ctx);
    if (!r_scene_line(&ctx->_Scene, rs, v0, v1))
       r_line(rs, v0, v1);
 }

@@ -26,7 +26,7 @@
  * glDrawArrays(GL_QUADS) rectangle with the colour as a vertex attribute
  * (given inside glBegin/glEnd, one colour at every corner); a
  * scissored or colour-masked glClear (a clear quad); a whole-buffer
- * clear; triangles; glFlush between some.
+ * clear; triangles; lines of width 1 and 3; glFlush between some.
  * Colours are near k/255 and the halves between, where rounding and
  * truncation part.  --outside PX lets half the boxes reach up to PX pixels
  * past the window (llvmpipe's xy guard band, twice the viewport, keeps
@@ -205,10 +205,18 @@ static void command(void)
       glVertex2f(b[0], b[3]);
       glEnd();
       break;
+   case 10:
+      say("line");
+      glColor4fv(c);
+      glLineWidth(range(2) ? 1.0f : 3.0f);
+      glBegin(GL_LINES);
+      glVertex2f(b[0], b[1]);
+      glVertex2f(b[2], b[3]);
+      glEnd();
+      break;
    default:
-      /* (lines and points are not drawn: llvmpipe bins a line into the
-       * tiles of its exact box, fixgl with a pixel of slack, and colours
-       * a point of a linear bin by rules not settled; README issue 20) */
+      /* (no points: llvmpipe colours a point of a linear bin by rules not
+       * settled, README issue 20) */
       say("triangle");
       glColor4fv(c);
       glBegin(GL_TRIANGLES);

@@ -553,7 +553,7 @@ bool r_scene_line(struct r_scene *s, const struct r_state *rs, const struct r_ve
       return true;   /* no pixel of the region: nothing to draw */
    const int tiles = (((box[2] - 1) >> R_TILE_LOG2) - (box[0] >> R_TILE_LOG2) + 1) *
                      (((box[3] - 1) >> R_TILE_LOG2) - (box[1] >> R_TILE_LOG2) + 1);
-   if (tiles > 2) {
+   if (tiles > 2 || s->exact) {
       const struct scene_mark mark = scene_mark(s);
       struct r_line_binned *bin = scene_alloc(s, r_line_binned_size(rs));
       if (!bin)
@@ -825,6 +825,7 @@ void r_scene_reset(struct r_scene *s)
    s->chunk_used = 0;
    s->stats = false;
    s->lin = false;
+   s->exact = false;
    /* what stays allocated counts toward the bound again as it is used */
    s->bytes = 0;
 }

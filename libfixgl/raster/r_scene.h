@@ -198,6 +198,10 @@ struct r_scene {
    size_t bytes;                    /* what the scene holds, for the bound */
    bool stats;                      /* some state counts (r_state.stats) */
    bool lin;                        /* some command is R_LIN_COLOR */
+   /* bin every line into llvmpipe's tiles (set up when binned, its box
+    * and long sides: r_line_box_setup), not a short line by its vertices'
+    * box with a pixel of slack: a scene whose tiles decide (enum r_lin) */
+   bool exact;
 };
 
 /* Append a primitive or a clear of the whole framebuffer of rs (its

@@ -45,8 +45,15 @@ static const float clip_planes[6][4] = {
    { 0, 1, 0, 1 },  { 0, 0, 1, 1 }, { 0, 0, -1, 1 },
 };
 
+/* the guard band's planes: -0.5 x + w >= 0, ... (t_guard_mask) */
+static const float guard_planes[4][4] = {
+   { -0.5f, 0, 0, 1 }, { 0.5f, 0, 0, 1 }, { 0, -0.5f, 0, 1 }, { 0, 0.5f, 0, 1 },
+};
+
 static inline const float *clipper_plane(const struct t_clipper *c, unsigned plane_idx)
 {
+   if (c->guard && plane_idx < 4)
+      return guard_planes[plane_idx];
    return plane_idx < 6 ? clip_planes[plane_idx] : c->user_planes[plane_idx - 6];
 }
 
@@ -60,6 +67,20 @@ float t_clip_dist(const struct fgl_context *ctx, const float clip[4], unsigned p
    const float *plane =
       plane_idx < 6 ? clip_planes[plane_idx] : ctx->_ClipUserPlane[plane_idx - 6];
    return dot4(clip, plane);
+}
+
+/* the same against the guard band's planes where it applies */
+static float clip_dist(const struct fgl_context *ctx, bool guard, const float clip[4],
+                       unsigned plane_idx)
+{
+   return guard && plane_idx < 4 ? dot4(clip, guard_planes[plane_idx])
+                                  : t_clip_dist(ctx, clip, plane_idx);
+}
+
+/* a vertex's outcodes with draw's xy guard band (t_guard_mask) */
+static inline unsigned guard_outcodes(const struct t_vertex *v)
+{
+   return (v->mask & ~0xfu) | t_guard_mask(v->clip);
 }
 
 static inline float lerp(float t, float out, float in)
@@ -251,6 +272,7 @@ static void clipper_init(const struct fgl_context *ctx, struct t_clipper *c)
       c->attrs |= 1u << R_ATTR_PSIZE;
    if (ctx->RenderMode == GL_FEEDBACK)
       c->attrs |= 1u << R_ATTR_TEX0;
+   c->guard = false;
    c->new_vertex = NULL;
    c->data = NULL;
 }
@@ -281,9 +303,31 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
    }
    if (v0->mask & v1->mask & v2->mask)
       return; /* entirely outside one plane: not worth a clipper */
+   /* draw's xy guard band (t_guard_mask): a triangle outside the
+    * viewport goes the pipeline's way, as the viewport's outcodes said,
+    * and is clipped at the band's planes (unclipped inside it) */
+   struct t_vertex g[3];
+   const bool guard = fgl_lin_capable(ctx);
+   if (guard) {
+      const unsigned m0 = guard_outcodes(v0), m1 = guard_outcodes(v1), m2 = guard_outcodes(v2);
+      if ((m0 | m1 | m2) == 0) {
+         t_draw_pipe_tri(ctx, &v0->r, &v1->r, &v2->r, edge_flags(flags, v0, v1, v2));
+         return;
+      }
+      g[0] = *v0;
+      g[1] = *v1;
+      g[2] = *v2;
+      g[0].mask = m0;
+      g[1].mask = m1;
+      g[2].mask = m2;
+      v0 = &g[0];
+      v1 = &g[1];
+      v2 = &g[2];
+   }
 
    struct t_clipper c;
    clipper_init(ctx, &c);
+   c.guard = guard;
    if (ctx->RenderMode != GL_RENDER) {
       c.new_vertex = feedback_new_vertex;
       c.data = ctx;
@@ -340,14 +384,25 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
       return true;
    if (v0->mask & v1->mask)
       return false;   /* entirely outside one plane */
+   /* draw's xy guard band for points and lines (t_guard_mask): clipped at
+    * its planes, unclipped inside it */
+   const bool guard = fgl_lin_capable(ctx);
+   unsigned m0 = v0->mask, m1 = v1->mask;
+   if (guard) {
+      m0 = guard_outcodes(v0);
+      m1 = guard_outcodes(v1);
+      clipmask = m0 | m1;
+      if (clipmask == 0)
+         return true;
+   }
 
    /* do_clip_line: the parameters at which each end leaves the volume,
     * plane by plane in outcode-bit order */
    float t0 = 0.0f, t1 = 0.0f;
    while (clipmask) {
       const int plane_idx = __builtin_ctz(clipmask);
-      const float dp0 = t_clip_dist(ctx, v0->clip, plane_idx);
-      const float dp1 = t_clip_dist(ctx, v1->clip, plane_idx);
+      const float dp0 = clip_dist(ctx, guard, v0->clip, plane_idx);
+      const float dp1 = clip_dist(ctx, guard, v1->clip, plane_idx);
       if (!isfinite(dp0) || !isfinite(dp1))
          return false;   /* discard NaN */
       if (dp1 < 0.0f) {
@@ -367,11 +422,11 @@ bool t_clip_line(const struct fgl_context *ctx, const struct t_vertex *v0,
     * with the provoking (second) vertex's flat attributes */
    struct t_clipper c;
    clipper_init(ctx, &c);
-   if (v0->mask) {
+   if (m0) {
       interp(&c, &out[0], t0, v0, v1);
       t_copy_flat(rs, &out[0].r, &v1->r);
    }
-   if (v1->mask) {
+   if (m1) {
       interp(&c, &out[1], t1, v1, v0);
       t_copy_flat(rs, &out[1].r, &v1->r);
    }

@@ -176,6 +176,7 @@ void t_draw_pipe_tri(struct fgl_context *ctx, const struct r_vertex *v0,
     * full or a line or point after the triangle, which set up under
     * FTZ/DAZ) */
    ctx->_Raster.setup_mxcsr = dp->caller_mxcsr;
-   fgl_raster_triangle(ctx, rs, v[0], v[1], v[2]);
+   if (!(ctx->_LinPairs && fgl_lin_binning(ctx) && t_lin_queue_tri(ctx, v[0], v[1], v[2])))
+      fgl_raster_triangle(ctx, rs, v[0], v[1], v[2]);
    ctx->_Raster.setup_mxcsr = 0;
 }

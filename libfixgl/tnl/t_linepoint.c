@@ -127,6 +127,7 @@ static void vbuf_add(struct fgl_context *ctx, enum t_vbuf_prim prim, const struc
                      const struct r_vertex *v1)
 {
    struct fgl_draw_vbuf *vb = &ctx->_DrawVbuf;
+   t_lin_flush_tris(ctx);   /* vbuf_first_point / vbuf_first_line */
    if (!ctx->_Raster.rast->stipple) {
       if (prim == T_VBUF_POINTS)
          fgl_raster_point(ctx, &ctx->_Raster, v0);
@@ -175,6 +176,7 @@ void t_vbuf_filled_tri(struct fgl_context *ctx)
 
 void t_vbuf_end_draw(struct fgl_context *ctx)
 {
+   t_lin_flush_tris(ctx);   /* the draw's pipeline triangles first */
    /* pstip_flush: the vbuf is flushed first, then the shader restored */
    vbuf_flush(ctx, true);
    ctx->_DrawVbuf.pstipple_bound = false;
@@ -195,6 +197,7 @@ static inline void pipeline_setup(struct fgl_context *ctx, bool pipeline)
 static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
 {
    if (fgl_point_smooth(ctx)) {
+      t_lin_flush_tris(ctx);
       vbuf_flush(ctx, false);   /* vbuf_first_tri: the aapoint quad is triangles */
       aapoint_point(ctx, v);
    } else
@@ -203,8 +206,9 @@ static void point_raster(struct fgl_context *ctx, const struct r_vertex *v)
 
 void t_point(struct fgl_context *ctx, const struct t_vertex *v, bool pipeline)
 {
-   /* draw_pipe_clip.c:clip_point */
-   if (v->mask)
+   /* draw_pipe_clip.c:clip_point; with draw's xy guard band
+    * (t_guard_mask) a point whose centre is inside the band is kept */
+   if (v->mask && ((v->mask & ~0xfu) || !fgl_lin_capable(ctx) || t_guard_mask(v->clip)))
       return;
    if (ctx->RenderMode != GL_RENDER) {
       t_feedback_point(ctx, &v->r);
@@ -288,6 +292,7 @@ static void line_raster(struct fgl_context *ctx, const struct r_vertex *v0,
                         const struct r_vertex *v1)
 {
    if (ctx->Line.SmoothFlag) {
+      t_lin_flush_tris(ctx);
       vbuf_flush(ctx, false);   /* vbuf_first_tri: the aaline quad is triangles */
       aaline_line(ctx, v0, v1);
    } else

@@ -223,6 +223,9 @@ struct t_clipper {
    const float *scale, *translate;
    /* bit a: varying slot a is interpolated into a new vertex */
    uint32_t attrs;
+   /* planes 0-3 are draw's xy guard band, at twice the viewport
+    * (t_guard_mask; the outcode bits then the guard band's) */
+   bool guard;
    /* called with each new vertex and its index in t_clip_poly.tmp, or
     * NULL */
    void (*new_vertex)(void *data, struct t_vertex *v, unsigned slot);
@@ -294,6 +297,13 @@ void t_line(struct fgl_context *ctx, const struct t_vertex *v0, const struct t_v
  * (t_linepoint.c): a filled triangle reaching the pstipple stage, and the
  * end of an llvmpipe draw. */
 void t_vbuf_filled_tri(struct fgl_context *ctx);
+/* The pipeline's triangles in a scene that may take llvmpipe's linear path
+ * (ctx->_LinPairs, fgl_lin_binning): queued as its vbuf queues them
+ * (false: not, out of memory), and handed to the raster scene in pairs
+ * that may be rectangles when the vbuf is flushed (t_render.c) */
+bool t_lin_queue_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1, const struct r_vertex *v2);
+void t_lin_flush_tris(struct fgl_context *ctx);
 void t_vbuf_end_draw(struct fgl_context *ctx);
 
 /* The points and lines the unfilled stage makes of a triangle, through the

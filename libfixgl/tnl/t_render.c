@@ -238,12 +238,11 @@ static bool lin_rect_corners(const struct r_vertex *const v[6], const struct r_v
  * that may take the linear path (enum r_lin), with ctx->_LinColor set
  * for R_LIN_COLOR; the rectangle's pixel box in box when it is opaque
  * (it then covers whole tiles: r_scene_cover), else box[0] = box[2]. */
-static uint8_t lin_classify(const struct render *r, const struct r_vertex *a0,
+static uint8_t lin_classify(struct fgl_context *ctx, const struct r_vertex *a0,
                             const struct r_vertex *a1, const struct r_vertex *a2,
                             const struct r_vertex *b0, const struct r_vertex *b1,
                             const struct r_vertex *b2, int box[4])
 {
-   struct fgl_context *ctx = r->ctx;
    const struct r_state *rs = &ctx->_Raster;
    box[0] = box[2] = 0;
    const int w0 = lin_winding(a0, a1, a2), w1 = lin_winding(b0, b1, b2);
@@ -283,47 +282,100 @@ static uint8_t lin_classify(const struct render *r, const struct r_vertex *a0,
             return R_LIN_NO;
       }
    }
-   /* opaque (fgl_lin_opaque): the rectangle's pixels, as lp_rect_cw
-    * bounds them (x: centres in [x0, x1); y: either fill convention, so
-    * that only tiles it surely covers count) */
+   /* opaque (fgl_lin_opaque): the rectangle's pixels, as try_rect_cw
+    * bounds them: subpixel_snap(v - 0.5), x (s + 255) >> 8, y with the
+    * window buffers' bottom_edge_rule (s + 256) >> 8 (r_point.c's adj) */
    if (fgl_lin_opaque(ctx)) {
       float x0 = rv[0]->pos[0], x1 = rv[2]->pos[0], y0 = rv[0]->pos[1], y1 = rv[1]->pos[1];
       if (x0 > x1) { const float t = x0; x0 = x1; x1 = t; }
       if (y0 > y1) { const float t = y0; y0 = y1; y1 = t; }
       const float lim = 0x1p20f;
       if (fabsf(x0) < lim && fabsf(x1) < lim && fabsf(y0) < lim && fabsf(y1) < lim) {
-         const int sx0 = (int)lrintf((x0 - 0.5f) * 256.0f), sx1 = (int)lrintf((x1 - 0.5f) * 256.0f);
-         const int sy0 = (int)lrintf((y0 - 0.5f) * 256.0f), sy1 = (int)lrintf((y1 - 0.5f) * 256.0f);
-         const int ya = (sy0 + 255) >> 8, yb = (sy0 + 256) >> 8;
-         const int ye = (sy1 + 255) >> 8, yf = (sy1 + 256) >> 8;
-         box[0] = (sx0 + 255) >> 8;
-         box[2] = (sx1 + 255) >> 8;
-         box[1] = ya > yb ? ya : yb;
-         box[3] = ye < yf ? ye : yf;
+         box[0] = (r_subpixel_snap(x0 - 0.5f) + 255) >> 8;
+         box[2] = (r_subpixel_snap(x1 - 0.5f) + 255) >> 8;
+         box[1] = (r_subpixel_snap(y0 - 0.5f) + 256) >> 8;
+         box[3] = (r_subpixel_snap(y1 - 0.5f) + 256) >> 8;
       }
    }
    return fgl_lin_color_kind(ctx, rv, 4);
 }
 
+/* The classification of a pair (lin_classify) for the raster scene
+ * (ctx->_LinTri, until the pair is drawn), an opaque rectangle first
+ * dropping what the tiles it covers hold. */
+static void lin_pair_begin(struct fgl_context *ctx, const struct r_vertex *a0,
+                           const struct r_vertex *a1, const struct r_vertex *a2,
+                           const struct r_vertex *b0, const struct r_vertex *b1,
+                           const struct r_vertex *b2)
+{
+   int box[4];
+   const uint8_t k = lin_classify(ctx, a0, a1, a2, b0, b1, b2, box);
+   /* (not when a face is culled: a culled rectangle bins nothing) */
+   const struct r_rast_state *rast = ctx->_Raster.rast;
+   if (k != R_LIN_NO && box[0] < box[2] && box[1] < box[3] && !rast->cull_front &&
+       !rast->cull_back)
+      r_scene_cover(&ctx->_Scene, &ctx->_Raster, box);
+   ctx->_LinTri = k;
+}
+
+void t_lin_flush_tris(struct fgl_context *ctx)
+{
+   /* lp_setup_draw_elements: the vbuf's triangles, in pairs through rect()
+    * when they are a whole number of pairs (nr % 6 == 0) */
+   struct fgl_lin_queue *q = &ctx->_LinQueue;
+   if (!q->count)
+      return;
+   const unsigned n = q->count;
+   q->count = 0;   /* (fgl_raster_triangle may flush the scene: not this) */
+   struct r_state *rs = &ctx->_Raster;
+   const unsigned csr = rs->setup_mxcsr;
+   rs->setup_mxcsr = q->setup_mxcsr;
+   for (unsigned i = 0; i < n; i++) {
+      const struct r_vertex *t = q->tri[i];
+      if (n % 2 == 0 && i % 2 == 0)
+         lin_pair_begin(ctx, &t[0], &t[1], &t[2], &t[3], &t[4], &t[5]);
+      fgl_raster_triangle(ctx, rs, &t[0], &t[1], &t[2]);
+      if (i % 2 == 1)
+         ctx->_LinTri = R_LIN_NO;
+   }
+   ctx->_LinTri = R_LIN_NO;
+   rs->setup_mxcsr = csr;
+}
+
+bool t_lin_queue_tri(struct fgl_context *ctx, const struct r_vertex *v0,
+                     const struct r_vertex *v1, const struct r_vertex *v2)
+{
+   struct fgl_lin_queue *q = &ctx->_LinQueue;
+   /* draw_pipe_vbuf.c: 1020 indices, 340 triangles, a flush */
+   if (q->count == 340 || (q->count && q->setup_mxcsr != ctx->_Raster.setup_mxcsr))
+      t_lin_flush_tris(ctx);
+   if (q->count == q->cap) {
+      const unsigned cap = q->cap ? 2 * q->cap : 32;
+      struct r_vertex *t = fgl_realloc(q->tri, cap * sizeof(q->tri[0]));
+      if (!t)
+         return false;   /* drawn now, unpaired */
+      q->tri = (void *)t;
+      q->cap = cap;
+   }
+   q->setup_mxcsr = ctx->_Raster.setup_mxcsr;
+   q->tri[q->count][0] = *v0;
+   q->tri[q->count][1] = *v1;
+   q->tri[q->count][2] = *v2;
+   q->count++;
+   return true;
+}
+
 /* Two triangles that llvmpipe's direct path hands to rect() (the first
  * with provoking vertex pva): in a scene that may take the linear path,
- * marked for the raster scene as a rectangle's or not (ctx->_LinTri), an
- * opaque rectangle first dropping what the tiles it covers hold. */
+ * marked for the raster scene as a rectangle's or not (lin_pair_begin). */
 static void tri_pair(const struct render *r, unsigned a0, unsigned a1, unsigned a2,
                      unsigned pva, unsigned b0, unsigned b1, unsigned b2, bool pipeline,
                      unsigned fa, unsigned fb)
 {
    if (r->lin && !pipeline) {
       struct fgl_context *ctx = r->ctx;
-      int box[4];
-      const uint8_t k = lin_classify(r, &vtx(r, a0)->r, &vtx(r, a1)->r, &vtx(r, a2)->r,
-                                     &vtx(r, b0)->r, &vtx(r, b1)->r, &vtx(r, b2)->r, box);
-      /* (not when a face is culled: a culled rectangle bins nothing) */
-      const struct r_rast_state *rast = ctx->_Raster.rast;
-      if (k != R_LIN_NO && box[0] < box[2] && box[1] < box[3] && !rast->cull_front &&
-          !rast->cull_back)
-         r_scene_cover(&ctx->_Scene, &ctx->_Raster, box);
-      ctx->_LinTri = k;
+      lin_pair_begin(ctx, &vtx(r, a0)->r, &vtx(r, a1)->r, &vtx(r, a2)->r, &vtx(r, b0)->r,
+                     &vtx(r, b1)->r, &vtx(r, b2)->r);
       tri_pv(r, a0, a1, a2, pva, pipeline, fa);
       tri(r, b0, b1, b2, pipeline, fb);
       ctx->_LinTri = R_LIN_NO;
@@ -836,6 +888,7 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
                                          (ctx->Light.Enabled && ctx->_Raster.fs->color_sum) ||
                                          color1_varying);
    r.lin = fgl_lin_binning(ctx) && !constant_interp && !feedback;
+   ctx->_LinPairs = r.lin;   /* the pipeline's triangles too (t_lin_queue_tri) */
    ctx->_LinColorConst = !ctx->Light.Enabled && !color_varying;
    bool skip_draw = false;
    for (unsigned i = 0; i < nprims; i++) {

@@ -81,7 +81,6 @@ static inline void transform_positions(const struct fgl_context *ctx,
    const float *m = ctx->_ModelProjectMatrix.m;
    const float *s = ctx->_ViewportScale, *t = ctx->_ViewportTranslate;
    const bool lit = ctx->Light.Enabled;
-   const bool guard = fgl_lin_capable(ctx);   /* t_guard_mask */
 
 #ifdef FGL_HAVE_BLOCK_KERNELS
    if (simd) {
@@ -94,14 +93,12 @@ static inline void transform_positions(const struct fgl_context *ctx,
          t_positions8_avx2(m, s, t, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n,
                            out + first);
       const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
-      if (!clear_bytes && !planes && lit && !guard)
+      if (!clear_bytes && !planes && lit)
          return;
       for (unsigned i = first; i < first + n; i++) {
          struct t_vertex *v = &out[i];
          if (clear_bytes)
             memset(v->r.attr, 0, clear_bytes);
-         if (guard)
-            v->mask = (v->mask & ~0xfu) | t_guard_mask(v->clip);
          if (planes)
             v->mask |= user_clip_mask(ctx, v->clip);
          if (!lit)
@@ -119,8 +116,6 @@ static inline void transform_positions(const struct fgl_context *ctx,
          memset(v->r.attr, 0, clear_bytes);
       t_mul_mad_chain(v->clip, m, p);
       v->mask = t_clip_mask(v->clip);
-      if (guard)
-         v->mask = (v->mask & ~0xfu) | t_guard_mask(v->clip);
       if (ctx->Transform.ClipPlanesEnabled)
          v->mask |= user_clip_mask(ctx, v->clip);
 
@@ -140,9 +135,8 @@ bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_vie
 {
    const float *m = ctx->_ModelProjectMatrix.m;
    const bool planes = ctx->Transform.ClipPlanesEnabled != 0;
-   const bool guard = fgl_lin_capable(ctx);   /* t_guard_mask */
 #ifdef FGL_HAVE_BLOCK_KERNELS
-   if (!planes && !guard && n && t_vertex_simd(ctx)) {
+   if (!planes && n && t_vertex_simd(ctx)) {
 #ifdef FGL_HAVE_AVX512_KERNELS
       if (ctx->_Raster.kernel_isa == R_ISA_AVX512)
          return t_clip_any8_avx512(m, fgl_vv_attr(in, first, FGL_ATTR_POS), in->stride, n);
@@ -153,9 +147,7 @@ bool t_clip_masks_any(const struct fgl_context *ctx, const struct fgl_vertex_vie
    for (unsigned i = first; i < first + n; i++) {
       float clip[4];
       t_mul_mad_chain(clip, m, fgl_vv_attr(in, i, FGL_ATTR_POS));
-      const unsigned vm = guard ? (t_clip_mask(clip) & ~0xfu) | t_guard_mask(clip)
-                                : t_clip_mask(clip);
-      if (vm || (planes && user_clip_mask(ctx, clip)))
+      if (t_clip_mask(clip) || (planes && user_clip_mask(ctx, clip)))
          return true;
    }
    return false;
