@@ -194,6 +194,7 @@ void fgl_context_destroy(struct fgl_context *ctx)
    fgl_vbo_fini(&ctx->Vbo);
    fgl_free(ctx->_DrawVbuf.queue);
    fgl_free(ctx->_LinQueue.tri);
+   fgl_free(ctx->_LinRectSetup);
    if (ctx->_NullFb)
       r_cso_release(ctx->_NullFb);
    r_cso_cache_fini(&ctx->_StateCache);

@@ -1166,6 +1166,15 @@ struct fgl_context {
    uint8_t _LinTri;
    uint8_t _LinPoint;   /* the same for a legacy point */
    float _LinColor[4];
+   /* R_LIN_INTERP: the rectangle's colour planes and box (_LinInterpId
+    * numbers the rectangles) */
+   struct r_lin_interp _LinInterp;
+   uint32_t _LinInterpId;
+   /* the pair being drawn is a rectangle of llvmpipe's rect(), set up from
+    * its corners (rv0, rv2, rv1): _LinRectSetup, which its triangles take
+    * instead of their own */
+   bool _LinRect;
+   struct r_tri_setup *_LinRectSetup;
    /* the batch's colour is the current colour, a constant of the
     * fragment program (unlit, not in the vertex format) */
    bool _LinColorConst;
@@ -1342,12 +1351,15 @@ static inline bool fgl_lin_permitted(const struct fgl_context *ctx)
 {
    return ctx->_LinScene == FGL_LIN_LINEAR;
 }
-/* The open scene permits the linear path, so its commands are binned (on
- * any number of threads) and held until the oracle's flush, when each
- * tile decides (raster/r_scene.h enum r_lin) */
+/* The framebuffer permits the linear path (fgl_lin_capable): the scene's
+ * commands are binned (on any number of threads) and held until the
+ * oracle's flush, when each tile decides (raster/r_scene.h enum r_lin)
+ * if the scene permits it (fgl_lin_permitted; else every command is
+ * R_LIN_NO), and rectangles are set up as llvmpipe's rect() sets them
+ * up either way */
 static inline bool fgl_lin_binning(const struct fgl_context *ctx)
 {
-   return ctx->_LinScene == FGL_LIN_LINEAR && ctx->DrawBuffer && !ctx->DrawBuffer->DrawBoth;
+   return fgl_lin_capable(ctx);
 }
 void fgl_raster_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v0, const struct r_vertex *v1,

@@ -428,11 +428,12 @@ uint8_t fgl_lin_color_kind(struct fgl_context *ctx, const struct r_vertex *const
       }
       return R_LIN_COLOR;
    }
-   /* rule 2: a vertex colour, one at every corner: 1.15 fixed point */
+   /* a vertex colour: interpolated in 1.15 fixed point over the part of
+    * the tile drawn (R_LIN_INTERP; the raster scene takes the planes); a
+    * point's, one value: rule 2 */
+   if (n > 1)
+      return R_LIN_INTERP;
    const float *c = v[0]->attr[R_ATTR_COLOR0];
-   for (int k = 1; k < n; k++)
-      if (memcmp(v[k]->attr[R_ATTR_COLOR0], c, sizeof(float) * 4) != 0)
-         return R_LIN_SAME;   /* a gradient: not modelled */
    for (int i = 0; i < 4; i++) {
       if (!(c[i] >= 0.0f && c[i] <= 1.0f))
          return R_LIN_SAME;
@@ -466,14 +467,17 @@ static void lin_triangle(struct fgl_context *ctx, const struct r_state *rs,
                          const struct r_vertex *v2)
 {
    const struct r_vertex *v[3] = { v0, v1, v2 };
-   struct r_lin_tri lt = { ctx->_LinTri, R_LIN_NO, false, NULL };
+   struct r_lin_tri lt = { ctx->_LinTri, R_LIN_NO, false, NULL, NULL,
+                           ctx->_LinRect ? ctx->_LinRectSetup : NULL };
    /* a tile the triangle covers whole is shaded by a tile command
     * (lp_setup_whole_tile), which the linear path takes as it takes a
     * rectangle, an opaque one emptying the tile's bin first */
-   if (lt.lin == R_LIN_NO) {
+   if (lt.lin == R_LIN_NO && fgl_lin_permitted(ctx)) {
       lt.whole = fgl_lin_color_kind(ctx, v, 3);
       lt.opaque = fgl_lin_opaque(ctx);
    }
+   if (lt.lin == R_LIN_INTERP)
+      lt.li = &ctx->_LinInterp;   /* the rectangle's (tnl/t_render.c) */
    struct r_vertex lv[3];
    const struct r_vertex *lp[3] = { &lv[0], &lv[1], &lv[2] };
    if (lt.lin == R_LIN_COLOR || lt.whole == R_LIN_COLOR) {
@@ -494,7 +498,9 @@ static void lin_triangle(struct fgl_context *ctx, const struct r_state *rs,
 void fgl_raster_quad(struct fgl_context *ctx, const struct r_state *rs, float z,
                      const float color[4], const float *lin_color)
 {
-   const uint8_t lin = lin_color ? R_LIN_COLOR : R_LIN_SAME;
+   const uint8_t lin = !fgl_lin_permitted(ctx) ? R_LIN_NO
+                       : lin_color                ? R_LIN_COLOR
+                                                  : R_LIN_SAME;
    if (r_scene_quad(&ctx->_Scene, rs, z, color, lin, lin_color))
       return;
    fgl_scene_flush(ctx);

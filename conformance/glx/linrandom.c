@@ -24,9 +24,10 @@
  * The commands: glRecti/glRectf (integer, half and quarter pixel
  * corners) with the current colour; a GL_QUADS, GL_TRIANGLES pair or
  * glDrawArrays(GL_QUADS) rectangle with the colour as a vertex attribute
- * (given inside glBegin/glEnd, one colour at every corner); a
+ * (given inside glBegin/glEnd, one colour or corners that differ); a
  * scissored or colour-masked glClear (a clear quad); a whole-buffer
- * clear; triangles; lines of width 1 and 3; glFlush between some.
+ * clear; triangles of one colour and of three; lines of width 1 and 3;
+ * glFlush between some.
  * Colours are near k/255 and the halves between, where rounding and
  * truncation part.  --outside PX lets half the boxes reach up to PX pixels
  * past the window (llvmpipe's xy guard band, twice the viewport, keeps
@@ -138,9 +139,7 @@ static void command(void)
       glRecti((int)b[0], (int)b[1], (int)b[2] + ((int)b[2] < W), (int)b[3] + ((int)b[3] < H));
       break;
    case 3: {
-      /* (corners that differ: llvmpipe's linear interpolation of a
-       * varying colour is not modelled, README issue 20) */
-      const bool differ = false;
+      const bool differ = range(3) == 0;
       say(differ ? "quad, corners differ" : "quad, colour inside");
       glBegin(GL_QUADS);
       glColor4fv(c);
@@ -217,11 +216,13 @@ static void command(void)
    default:
       /* (no points: llvmpipe colours a point of a linear bin by rules not
        * settled, README issue 20) */
-      say("triangle");
-      glColor4fv(c);
+      say("triangle, smooth colours");
       glBegin(GL_TRIANGLES);
+      glColor4fv(c);
       glVertex2f(b[2], b[3]);
+      glColor4f(c[1], c[2], c[3], c[0]);
       glVertex2f(b[0], b[3]);
+      glColor4f(c[2], c[3], c[0], c[1]);
       glVertex2f(b[2], b[1]);
       glEnd();
       break;

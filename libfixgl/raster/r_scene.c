@@ -4,6 +4,8 @@
  */
 #include "r_scene.h"
 
+#include "r_kernel.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -420,7 +422,7 @@ fail:
 bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                       const struct r_vertex *v1, const struct r_vertex *v2)
 {
-   static const struct r_lin_tri no = { R_LIN_NO, R_LIN_NO, false, NULL };
+   static const struct r_lin_tri no = { R_LIN_NO, R_LIN_NO, false, NULL, NULL, NULL };
    return r_scene_triangle_lin(s, rs, v0, v1, v2, &no);
 }
 
@@ -498,6 +500,8 @@ bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const str
          s->cmds[n].lin = R_LIN_SAME;
       return true;
    }
+   if (lt->rect)
+      r_tri_binned_pack(lt->rect, bin);   /* the rectangle's planes */
    const bool multi = (box[0] ^ (box[2] - 1)) >> R_TILE_LOG2 != 0 ||
                       (box[1] ^ (box[3] - 1)) >> R_TILE_LOG2 != 0;
    if (lin == R_LIN_NO && multi && (lt->whole != R_LIN_NO || lt->opaque)) {
@@ -518,6 +522,30 @@ bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const str
       }
       s->cmds[wi].tri = bin;
       s->cmds[wi].lin = lt->whole;
+      if (lt->whole == R_LIN_INTERP) {
+         /* the triangle's own planes over each whole tile */
+         struct r_lin_interp *li = scene_alloc(s, sizeof(*li));
+         if (!li) {
+            scene_rollback(s, &mark, true);
+            return false;
+         }
+         struct r_tri_setup ts;
+         r_tri_binned_unpack(bin, &ts);
+         if (ts.flat_attr[R_FS_COLOR0]) {
+            /* a constant input: its value, not divided by w */
+            for (int c = 0; c < 4; c++)
+               li->c[c] = (struct r_attr_plane){ ts.flat[R_FS_COLOR0][c], 0.0f, 0.0f };
+            li->w_a0 = 1.0f;
+         } else {
+            memcpy(li->c, ts.ap[R_FS_COLOR0], sizeof(li->c));
+            li->w_a0 = ts.w.a0;
+         }
+         li->box[0] = li->box[1] = INT32_MIN;
+         li->box[2] = li->box[3] = INT32_MAX;
+         li->id = 0;   /* (each whole tile is its own) */
+         s->cmds[wi].li = li;
+         s->lin = true;
+      }
       if (lt->whole == R_LIN_COLOR) {
          const int slots = vertex_slots(rs);
          for (int i = 0; i < 3; i++) {
@@ -530,6 +558,20 @@ bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const str
          s->lin = true;
       }
       return bin_whole(s, rs, ci, wi, box, &edges, lt->opaque, &mark);
+   }
+   if (lin == R_LIN_INTERP) {
+      struct r_lin_interp *li = scene_alloc(s, sizeof(*li));
+      if (!li) {
+         scene_rollback(s, &mark, false);
+         return false;
+      }
+      *li = *lt->li;
+      const uint32_t n = s->ncmds;
+      if (!add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges, lin, NULL))
+         return false;
+      s->cmds[n].li = li;
+      s->lin = true;
+      return true;
    }
    return add_set_up(s, rs, R_CMD_TRIANGLE, &mark, bin, box, &edges, lin,
                      lin == R_LIN_COLOR ? lv : NULL);
@@ -679,6 +721,67 @@ void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4]
          s->bins[ty * s->tiles_x + tx].count = 0;
 }
 
+/* lp_linear_init_interp's 1.15 fixed point */
+static inline int16_t ufixed_1_15(float f)
+{
+   const unsigned u = (unsigned)(f * 32767.0f);   /* f >= 0 here */
+   return (int16_t)(u > 32767u ? 32767u : u);
+}
+
+static inline int16_t sfixed_1_15(float f)
+{
+   const int i = (int)(f * 32767.0f);
+   return (int16_t)(i < -32767 ? -32767 : i > 32767 ? 32767 : i);
+}
+
+bool r_lin_interp_fill(const struct r_state *rs, const struct r_lin_interp *li, int x0, int y0,
+                       int x1, int y1)
+{
+   const int w = x1 - x0, h = y1 - y0;
+   if (w <= 0 || h <= 0)
+      return true;
+   /* lp_fs_linear_run: oow = 1 / a0 of w; the colour (perspective)
+    * divided back when it is not 1 */
+   const float oow = 1.0f / li->w_a0;
+   int16_t s0[4], dx[4], dy[4];
+   for (int j = 0; j < 4; j++) {
+      float a0 = li->c[j].a0, dsdx = li->c[j].dadx, dsdy = li->c[j].dady;
+      if (oow != 1.0f) {
+         a0 = a0 * oow;
+         dsdx = dsdx * oow;
+         dsdy = dsdy * oow;
+      }
+      const float sx = (float)x0 * dsdx, sy = (float)y0 * dsdy;
+      const float v0 = a0 + (sx + sy);
+      /* the values at the part's corners in [0, 1], else the path fails */
+      const float vb = v0 + (float)(w - 1) * dsdx;
+      const float vc = v0 + (float)(h - 1) * dsdy;
+      const float vd = v0 + (float)(h - 1) * dsdy + (float)(w - 1) * dsdx;
+      if (!(v0 >= 0.0f && vb >= 0.0f && vc >= 0.0f && vd >= 0.0f) ||
+          !(v0 <= 1.0f && vb <= 1.0f && vc <= 1.0f && vd <= 1.0f))
+         return false;
+      dx[j] = sfixed_1_15(dsdx);
+      dy[j] = sfixed_1_15(dsdy);
+      s0[j] = ufixed_1_15(v0);
+   }
+   /* each pixel: the 16-bit sums (wrapping), >> 7, saturated to a byte */
+   for (int y = y0; y < y1; y++) {
+      for (int x = x0; x < x1; x++) {
+         float color[4];
+         for (int j = 0; j < 4; j++) {
+            const int16_t v = (int16_t)(uint16_t)((unsigned)(uint16_t)s0[j] +
+                                                  (unsigned)(y - y0) * (uint16_t)dy[j] +
+                                                  (unsigned)(x - x0) * (uint16_t)dx[j]);
+            int b = v >> 7;
+            b = b < 0 ? 0 : b > 255 ? 255 : b;
+            color[j] = (float)b / 255.0f;
+         }
+         r_fragment_ops(rs, x, y, 0.0f, color);
+      }
+   }
+   return true;
+}
+
 /* buckets of r_scene_tile_order: tiles with this many commands or more
  * share the last */
 #define ORDER_BUCKETS 64u
@@ -735,6 +838,7 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
       for (uint32_t i = 0; i < n && linear; i++)
          linear = s->cmds[b->cmd[i]].lin != R_LIN_NO;
    }
+   uint32_t last_interp = 0;   /* the rectangle filled last (r_lin_interp.id) */
    for (uint32_t i = 0; i < n; i++) {
       /* A command is three dependent loads away (the bin's index, the
        * 56-byte command, its setup), each a miss when the other core
@@ -783,6 +887,20 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
       }
       switch (c->kind) {
       case R_CMD_TRIANGLE:
+         if (linear && c->lin == R_LIN_INTERP) {
+            const struct r_lin_interp *li = c->li;
+            if (li->id && li->id == last_interp)
+               break;   /* the rectangle's other triangle: filled */
+            const int x0 = li->box[0] > rs.x0 ? li->box[0] : rs.x0;
+            const int y0 = li->box[1] > rs.y0 ? li->box[1] : rs.y0;
+            const int x1 = li->box[2] < rs.x1 ? li->box[2] : rs.x1;
+            const int y1 = li->box[3] < rs.y1 ? li->box[3] : rs.y1;
+            if (r_lin_interp_fill(&rs, li, x0, y0, x1, y1)) {
+               last_interp = li->id;
+               break;
+            }
+            last_interp = 0;   /* refused: each triangle the ordinary way */
+         }
          if (linear && c->lin == R_LIN_COLOR)
             r_triangle(&rs, c->v[0], c->v[1], c->v[2]);
          else if (c->tri)

@@ -35,6 +35,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "r_bin.h"
 #include "r_state.h"
 
 #define R_TILE_SIZE 64
@@ -60,7 +61,34 @@ enum r_cmd_kind {
  * R_LIN_COLOR: a rectangle whose colour the linear way takes to other
  * bytes (its linear vertices, or the quad's linear colour).  The GL side
  * classifies; the tile decides (r_scene_run_tile). */
-enum r_lin { R_LIN_NO, R_LIN_SAME, R_LIN_COLOR };
+enum r_lin { R_LIN_NO, R_LIN_SAME, R_LIN_COLOR, R_LIN_INTERP };
+
+/* R_LIN_INTERP: a rectangle (or a tile a triangle covers whole) whose
+ * colour is a fragment-shader input, which the linear path interpolates
+ * in 1.15 fixed point over the part of the tile it draws
+ * (lp_linear_interp.c lp_linear_init_interp, interp_0_8): the colour's
+ * planes as llvmpipe's setup makes them (premultiplied by 1/w), w_a0 the
+ * 1/w plane's a0, box the rectangle's pixels [box[0], box[2]) x
+ * [box[1], box[3]) (a whole tile: the tile); id: the two triangles of a
+ * rectangle share one, the tile fills its box once. */
+struct r_lin_interp {
+   struct r_attr_plane c[4];
+   float w_a0;
+   int box[4];
+   uint32_t id;
+};
+/* The linear path's fill of the part [x0, x1) x [y0, y1) of li's box
+ * within a tile, through the fragment operations of rs (its blending
+ * off): false when the path refuses it (a value over the part outside
+ * [0, 1]: the ordinary path then draws it). */
+bool r_lin_interp_fill(const struct r_state *rs, const struct r_lin_interp *li, int x0, int y0,
+                       int x1, int y1);
+/* llvmpipe's setup of a triangle as given (no winding swap: rect()'s
+ * corners), for R_LIN_INTERP's planes */
+struct r_tri_setup;
+void r_tri_setup_as_given(const struct r_state *rs, const struct r_vertex *v0,
+                          const struct r_vertex *v1, const struct r_vertex *v2,
+                          struct r_tri_setup *ts);
 
 /* R_CMD_QUAD: a clear quad over the draw region of its state (r_clear_quad)
  * with depth z, its colour on the ordinary way and on the linear one */
@@ -169,6 +197,7 @@ struct r_cmd {
       const struct r_point_binned *point;
       const struct r_quad_binned *quad;   /* R_CMD_QUAD */
    };
+   const struct r_lin_interp *li;   /* lin R_LIN_INTERP */
 };
 
 struct r_bin {
@@ -229,6 +258,12 @@ struct r_lin_tri {
    uint8_t lin, whole;
    bool opaque;
    const struct r_vertex *const *lv;
+   /* lin R_LIN_INTERP: the rectangle's (copied); whole R_LIN_INTERP: the
+    * triangle's own planes are taken, box and id set here */
+   const struct r_lin_interp *li;
+   /* a rectangle's triangle: the rectangle's setup (its planes replace
+    * the triangle's), or NULL */
+   const struct r_tri_setup *rect;
 };
 bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const struct r_vertex *v0,
                           const struct r_vertex *v1, const struct r_vertex *v2,

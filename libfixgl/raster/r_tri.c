@@ -1134,6 +1134,14 @@ bool r_tri_edges_miss_tile(const struct r_tri_edges *e, int x, int y)
    return false;
 }
 
+void r_tri_setup_as_given(const struct r_state *rs, const struct r_vertex *v0,
+                          const struct r_vertex *v1, const struct r_vertex *v2,
+                          struct r_tri_setup *ts)
+{
+   const struct r_vertex *v[3] = { v0, v1, v2 };
+   setup_shade(rs, v, false, false, ts);
+}
+
 bool r_tri_edges_cover_tile(const struct r_tri_edges *e, int x, int y)
 {
    /* rasterize_ccw's whole-tile test (no plane partial) of the 64x64

@@ -305,15 +305,13 @@ void t_clip_triangle(struct fgl_context *ctx, const struct t_vertex *v0,
       return; /* entirely outside one plane: not worth a clipper */
    /* draw's xy guard band (t_guard_mask): a triangle outside the
     * viewport goes the pipeline's way, as the viewport's outcodes said,
-    * and is clipped at the band's planes (unclipped inside it) */
+    * into do_clip_tri, which clips it at the band's planes */
    struct t_vertex g[3];
    const bool guard = fgl_lin_capable(ctx);
    if (guard) {
+      /* (inside the band, nothing is clipped, but the clip stage still
+       * emits the triangle as a polygon: (v1, v2, v0), emit_poly's fan) */
       const unsigned m0 = guard_outcodes(v0), m1 = guard_outcodes(v1), m2 = guard_outcodes(v2);
-      if ((m0 | m1 | m2) == 0) {
-         t_draw_pipe_tri(ctx, &v0->r, &v1->r, &v2->r, edge_flags(flags, v0, v1, v2));
-         return;
-      }
       g[0] = *v0;
       g[1] = *v1;
       g[2] = *v2;

@@ -35,6 +35,7 @@
 #include "context.h"
 #include "main/groups.h"
 #include "fgl_alloc.h"
+#include "raster/r_kernel.h"
 
 #define SEGMENT_SIZE 4096
 
@@ -282,22 +283,49 @@ static uint8_t lin_classify(struct fgl_context *ctx, const struct r_vertex *a0,
             return R_LIN_NO;
       }
    }
-   /* opaque (fgl_lin_opaque): the rectangle's pixels, as try_rect_cw
-    * bounds them: subpixel_snap(v - 0.5), x (s + 255) >> 8, y with the
-    * window buffers' bottom_edge_rule (s + 256) >> 8 (r_point.c's adj) */
-   if (fgl_lin_opaque(ctx)) {
+   /* the rectangle's pixels, as try_rect_cw bounds them:
+    * subpixel_snap(v - 0.5), x (s + 255) >> 8, y with the window buffers'
+    * bottom_edge_rule (s + 256) >> 8 (r_point.c's adj) */
+   int rbox[4] = { 0, 0, 0, 0 };
+   {
       float x0 = rv[0]->pos[0], x1 = rv[2]->pos[0], y0 = rv[0]->pos[1], y1 = rv[1]->pos[1];
       if (x0 > x1) { const float t = x0; x0 = x1; x1 = t; }
       if (y0 > y1) { const float t = y0; y0 = y1; y1 = t; }
       const float lim = 0x1p20f;
-      if (fabsf(x0) < lim && fabsf(x1) < lim && fabsf(y0) < lim && fabsf(y1) < lim) {
-         box[0] = (r_subpixel_snap(x0 - 0.5f) + 255) >> 8;
-         box[2] = (r_subpixel_snap(x1 - 0.5f) + 255) >> 8;
-         box[1] = (r_subpixel_snap(y0 - 0.5f) + 256) >> 8;
-         box[3] = (r_subpixel_snap(y1 - 0.5f) + 256) >> 8;
-      }
+      if (!(fabsf(x0) < lim && fabsf(x1) < lim && fabsf(y0) < lim && fabsf(y1) < lim))
+         return R_LIN_NO;
+      rbox[0] = (r_subpixel_snap(x0 - 0.5f) + 255) >> 8;
+      rbox[2] = (r_subpixel_snap(x1 - 0.5f) + 255) >> 8;
+      rbox[1] = (r_subpixel_snap(y0 - 0.5f) + 256) >> 8;
+      rbox[3] = (r_subpixel_snap(y1 - 0.5f) + 256) >> 8;
    }
-   return fgl_lin_color_kind(ctx, rv, 4);
+   /* a rectangle of rect(): set up from its corners as try_rect_cw does
+    * (lp_rect_cw(rv0, rv2, rv1)), its planes shade both triangles
+    * (lp_rast_rectangle, whichever path the tile takes) */
+   if (!ctx->_LinRectSetup) {
+      ctx->_LinRectSetup = fgl_malloc(sizeof(*ctx->_LinRectSetup));
+      if (!ctx->_LinRectSetup)
+         return R_LIN_NO;   /* (out of memory: as two triangles) */
+   }
+   struct r_tri_setup *ts = ctx->_LinRectSetup;
+   r_tri_setup_as_given(rs, rv[0], rv[2], rv[1], ts);
+   ctx->_LinRect = true;
+   /* opaque (fgl_lin_opaque): it empties the tiles it covers */
+   if (fgl_lin_opaque(ctx))
+      memcpy(box, rbox, sizeof(rbox));
+   if (!fgl_lin_permitted(ctx))
+      return R_LIN_NO;   /* a scene that does not take the linear path */
+   const uint8_t kind = fgl_lin_color_kind(ctx, rv, 4);
+   if (kind == R_LIN_INTERP) {
+      struct r_lin_interp *li = &ctx->_LinInterp;
+      memcpy(li->c, ts->ap[R_FS_COLOR0], sizeof(li->c));
+      li->w_a0 = ts->w.a0;
+      memcpy(li->box, rbox, sizeof(rbox));
+      if (++ctx->_LinInterpId == 0)
+         ctx->_LinInterpId = 1;
+      li->id = ctx->_LinInterpId;
+   }
+   return kind;
 }
 
 /* The classification of a pair (lin_classify) for the raster scene
@@ -309,10 +337,11 @@ static void lin_pair_begin(struct fgl_context *ctx, const struct r_vertex *a0,
                            const struct r_vertex *b2)
 {
    int box[4];
+   ctx->_LinRect = false;
    const uint8_t k = lin_classify(ctx, a0, a1, a2, b0, b1, b2, box);
    /* (not when a face is culled: a culled rectangle bins nothing) */
    const struct r_rast_state *rast = ctx->_Raster.rast;
-   if (k != R_LIN_NO && box[0] < box[2] && box[1] < box[3] && !rast->cull_front &&
+   if (ctx->_LinRect && box[0] < box[2] && box[1] < box[3] && !rast->cull_front &&
        !rast->cull_back)
       r_scene_cover(&ctx->_Scene, &ctx->_Raster, box);
    ctx->_LinTri = k;
@@ -335,10 +364,13 @@ void t_lin_flush_tris(struct fgl_context *ctx)
       if (n % 2 == 0 && i % 2 == 0)
          lin_pair_begin(ctx, &t[0], &t[1], &t[2], &t[3], &t[4], &t[5]);
       fgl_raster_triangle(ctx, rs, &t[0], &t[1], &t[2]);
-      if (i % 2 == 1)
+      if (i % 2 == 1) {
          ctx->_LinTri = R_LIN_NO;
+         ctx->_LinRect = false;
+      }
    }
    ctx->_LinTri = R_LIN_NO;
+   ctx->_LinRect = false;
    rs->setup_mxcsr = csr;
 }
 
@@ -379,6 +411,7 @@ static void tri_pair(const struct render *r, unsigned a0, unsigned a1, unsigned 
       tri_pv(r, a0, a1, a2, pva, pipeline, fa);
       tri(r, b0, b1, b2, pipeline, fb);
       ctx->_LinTri = R_LIN_NO;
+      ctx->_LinRect = false;
       return;
    }
    tri_pv(r, a0, a1, a2, pva, pipeline, fa);
@@ -594,7 +627,7 @@ static void render_prim(const struct render *r, const struct fgl_vbo_prim *p,
          /* a legacy point is a rectangle of llvmpipe's setup
           * (lp_setup_point.c: lp_setup_bin_rectangle): classified for a
           * scene that may take the linear path (ctx->_LinPoint) */
-         const bool lin = r->lin && !fgl_point_smooth(r->ctx) &&
+         const bool lin = r->lin && fgl_lin_permitted(r->ctx) && !fgl_point_smooth(r->ctx) &&
                           !r->ctx->_Raster.rast->point_sprite;
          for (unsigned i = seg; i < seg + cnt; i++) {
             if (r->phong_mats)
