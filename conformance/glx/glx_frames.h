@@ -218,4 +218,41 @@ static inline Window config_window_current(Display *dpy, GLXFBConfig c, int w, i
    return win;
 }
 
+/* The oracle's drawables that permit llvmpipe's linear path (linrules.c,
+ * linrandom.c): a double-buffered B8G8R8A8 window of w x h without depth
+ * and stencil, current with a new context, the renderer printed, a
+ * pixel projection, drawing and reading the back buffer; `prog` names
+ * the program in its messages (it exits when there is no such config). */
+static inline Window linear_window_current(Display *dpy, int w, int h, XVisualInfo **vip,
+                                           GLXContext *ctxp, const char *prog)
+{
+   int attrs[] = { GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8,
+                   GLX_DEPTH_SIZE, 0, GLX_STENCIL_SIZE, 0, GLX_DOUBLEBUFFER, True,
+                   GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, None };
+   int n = 0;
+   GLXFBConfig *cs = glXChooseFBConfig(dpy, DefaultScreen(dpy), attrs, &n);
+   GLXFBConfig c = NULL;
+   for (int i = 0; cs && i < n && !c; i++) {
+      int r = 0, a = 0, d = -1, s = -1;
+      glXGetFBConfigAttrib(dpy, cs[i], GLX_RED_SIZE, &r);
+      glXGetFBConfigAttrib(dpy, cs[i], GLX_ALPHA_SIZE, &a);
+      glXGetFBConfigAttrib(dpy, cs[i], GLX_DEPTH_SIZE, &d);
+      glXGetFBConfigAttrib(dpy, cs[i], GLX_STENCIL_SIZE, &s);
+      if (r == 8 && a == 8 && d == 0 && s == 0)
+         c = cs[i];
+   }
+   if (cs)
+      XFree(cs);
+   if (!c) {
+      fprintf(stderr, "%s: no config without depth and stencil\n", prog);
+      exit(1);
+   }
+   Window win = config_window_current(dpy, c, w, h, vip, ctxp);
+   print_renderer();
+   pixel_view(w, h);
+   glDrawBuffer(GL_BACK);
+   glReadBuffer(GL_BACK);
+   return win;
+}
+
 #endif

@@ -386,34 +386,9 @@ int main(int argc, char **argv)
       fprintf(stderr, "linrandom: no display\n");
       return 1;
    }
-   int attrs[] = { GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8,
-                   GLX_DEPTH_SIZE, 0, GLX_STENCIL_SIZE, 0, GLX_DOUBLEBUFFER, True,
-                   GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, None };
-   int n = 0;
-   GLXFBConfig *cs = glXChooseFBConfig(dpy, DefaultScreen(dpy), attrs, &n);
-   GLXFBConfig c = NULL;
-   for (int i = 0; cs && i < n && !c; i++) {
-      int r = 0, a = 0, d = -1, s = -1;
-      glXGetFBConfigAttrib(dpy, cs[i], GLX_RED_SIZE, &r);
-      glXGetFBConfigAttrib(dpy, cs[i], GLX_ALPHA_SIZE, &a);
-      glXGetFBConfigAttrib(dpy, cs[i], GLX_DEPTH_SIZE, &d);
-      glXGetFBConfigAttrib(dpy, cs[i], GLX_STENCIL_SIZE, &s);
-      if (r == 8 && a == 8 && d == 0 && s == 0)
-         c = cs[i];
-   }
-   if (cs)
-      XFree(cs);
-   if (!c) {
-      fprintf(stderr, "linrandom: no config without depth\n");
-      return 1;
-   }
    XVisualInfo *vi;
    GLXContext ctx;
-   Window win = config_window_current(dpy, c, W, H, &vi, &ctx);
-   print_renderer();
-   pixel_view(W, H);
-   glDrawBuffer(GL_BACK);
-   glReadBuffer(GL_BACK);
+   Window win = linear_window_current(dpy, W, H, &vi, &ctx, "linrandom");
    /* a draw and a flush first, so that the scenes may take the linear
     * path (a scene begun by a clear before any draw does not) */
    glColor4f(0.5f, 0.5f, 0.5f, 0.5f);
