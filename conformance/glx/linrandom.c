@@ -10,7 +10,7 @@
  * (which ends the oracle's scene) into the PPM: every scene's whole image
  * is compared.
  *
- *   linrandom --out FILE.ppm [--seed S] [--scenes N] [--outside PX] [--verbose]
+ *   linrandom --out FILE.ppm [--seed S] [--scenes N] [--outside PX] [--blend] [--verbose]
  *   linrandom --probe
  *
  * --probe (run on Mesa's libGL alone: run_glx.py oracle) checks the
@@ -82,6 +82,9 @@ static float coord(int max)
 
 /* --outside: corners up to `outside` pixels beyond the window */
 static int outside;
+/* --blend: blending (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) around some commands;
+ * --points: points among the commands */
+static bool blend, points;
 
 static void box(float b[4])
 {
@@ -213,9 +216,20 @@ static void command(void)
       glVertex2f(b[2], b[3]);
       glEnd();
       break;
+   case 11:
+      if (points) {
+         say("point");
+         glColor4fv(c);
+         glPointSize(range(2) ? 1.0f : 4.0f);
+         glBegin(GL_POINTS);
+         glVertex2f(b[0], b[1]);
+         glEnd();
+         break;
+      }
+      /* fall through */
    default:
-      /* (no points: llvmpipe colours a point of a linear bin by rules not
-       * settled, README issue 20) */
+      /* (points only with --points: llvmpipe colours a point of a linear
+       * bin by rules not settled, README issue 20) */
       say("triangle, smooth colours");
       glBegin(GL_TRIANGLES);
       glColor4fv(c);
@@ -238,8 +252,16 @@ static void scene(int k)
       const int r = range(16);
       say_c = NULL;
       /* (blending in linear bins is not modelled: the oracle's result
-       * depends on what was drawn before, README issue 20) */
-      if (r == 2) {
+       * depends on what was drawn before, README issue 20; --blend draws
+       * it, the known difference the suite keeps visible) */
+      if (blend && r == 0) {
+         say("blend on");
+         glEnable(GL_BLEND);
+         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      } else if (blend && r == 1) {
+         say("blend off");
+         glDisable(GL_BLEND);
+      } else if (r == 2) {
          say("flush");
          glFlush();
       }
@@ -368,6 +390,10 @@ int main(int argc, char **argv)
          seed = (unsigned)strtoul(argv[++i], NULL, 10);
       else if (strcmp(argv[i], "--scenes") == 0 && i + 1 < argc)
          nscenes = atoi(argv[++i]);
+      else if (strcmp(argv[i], "--blend") == 0)
+         blend = true;
+      else if (strcmp(argv[i], "--points") == 0)
+         points = true;
       else if (strcmp(argv[i], "--outside") == 0 && i + 1 < argc)
          outside = atoi(argv[++i]);
       else if (strcmp(argv[i], "--verbose") == 0)
@@ -376,7 +402,7 @@ int main(int argc, char **argv)
          out = NULL, i = argc;
    }
    if ((!out && !probe) || nscenes < 1) {
-      fprintf(stderr, "usage: %s --out FILE.ppm [--seed S] [--scenes N] [--verbose] | --probe\n",
+      fprintf(stderr, "usage: %s --out FILE.ppm [--seed S] [--scenes N] [--outside PX] [--blend] [--verbose] | --probe\n",
               argv[0]);
       return 2;
    }
