@@ -764,7 +764,27 @@ bool r_lin_interp_fill(const struct r_state *rs, const struct r_lin_interp *li, 
       dy[j] = sfixed_1_15(dsdy);
       s0[j] = ufixed_1_15(v0);
    }
-   /* each pixel: the 16-bit sums (wrapping), >> 7, saturated to a byte */
+   /* each pixel: the 16-bit sums (wrapping), >> 7, saturated to a byte;
+    * stored straight into the RGBA8 buffer when the fragment operations
+    * would store it unchanged (no blending, logic op, alpha test, query;
+    * every channel written), else through them */
+   const struct r_blend_state *bl = rs->blend;
+   if (!rs->fb->wide && rs->fb->color && !bl->enable && !bl->logic_op &&
+       bl->color_mask == 0xfu && !bl->dst_alpha_one && !rs->dsa->alpha_test &&
+       !rs->dsa->depth_test && !rs->dsa->stencil_test && !rs->samples) {
+      for (int y = y0; y < y1; y++) {
+         uint8_t *row = rs->fb->color + ((size_t)y * (size_t)rs->fb->width + (size_t)x0) * 4;
+         for (int j = 0; j < 4; j++) {
+            uint16_t v = (uint16_t)((unsigned)(uint16_t)s0[j] +
+                                    (unsigned)(y - y0) * (uint16_t)dy[j]);
+            for (int i = 0; i < w; i++, v = (uint16_t)(v + (uint16_t)dx[j])) {
+               const int b = (int16_t)v >> 7;
+               row[4 * i + j] = (uint8_t)(b < 0 ? 0 : b > 255 ? 255 : b);
+            }
+         }
+      }
+      return true;
+   }
    for (int y = y0; y < y1; y++) {
       for (int x = x0; x < x1; x++) {
          float color[4];
