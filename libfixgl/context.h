@@ -1087,6 +1087,12 @@ struct fgl_context {
    struct fgl_draw_offset_latch _DrawOffset;
    struct fgl_draw_vbuf _DrawVbuf;
    struct fgl_lin_queue _LinQueue;
+   /* the draws of one glMultiDrawArrays/Elements driver call are one
+    * llvmpipe draw (draw_vbo's loop, one draw_flush at its end): a draw
+    * after the first continues it (_MultiDrawCont), one before the last
+    * leaves it open (_MultiDrawMore: its vbuf and polygon stipple stage,
+    * the offset latch) */
+   bool _MultiDrawCont, _MultiDrawMore;
    bool _LinPairs;   /* the batch's setup may pair triangles (rect()) */
    uint32_t _StipplePattern[32];   /* the pattern _StippleRows was made
                                     * from (all zero at first, as the

@@ -368,6 +368,54 @@ static void multidraw_elements(fc_h *h)
     }
 }
 
+/* One driver call of several draws is one llvmpipe draw: the polygon
+ * stipple stage binds its shader at the first filled triangle of the
+ * call and keeps it to the call's end, so the points an unfilled back
+ * face makes in a later draw of the call are stippled too (random-raster
+ * s5-i59); fixgl drew each draw as a draw of its own.  Frames: a filled
+ * quad, then back faces as points, one call; the back faces first; the
+ * same as glMultiDrawArrays. */
+static void multidraw_pstipple_points(fc_h *h)
+{
+    md_arrays(h);
+    static GLubyte stip[128];
+    for (int i = 0; i < 128; i++)
+        stip[i] = (GLubyte)((i / 4) % 2 ? 0xaa : 0x55);
+    glPolygonStipple(stip);
+    glEnable(GL_POLYGON_STIPPLE);
+    glPolygonMode(GL_FRONT, GL_FILL);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glPointSize(5.0f);
+    /* a front quad (counter-clockwise) and two back ones */
+    static const GLubyte front[4] = { 0, 1, 9, 8 };
+    static const GLubyte back1[4] = { 18, 26, 27, 19 };
+    static const GLubyte back2[4] = { 36, 44, 45, 37 };
+    static const GLsizei cnt[3] = { 4, 4, 4 };
+    for (int f = 0; f < 2; f++) {
+        fcu_clear(0, 0, 0, 1, 1);
+        const GLvoid *p[3] = { f == 0 ? front : back1, f == 0 ? back1 : front, back2 };
+        glMultiDrawElements(GL_QUADS, cnt, GL_UNSIGNED_BYTE, p, 3);
+        fc_error(h, "multidraw elements");
+        fc_capture(h);
+    }
+    /* the same quads as arrays: front, back, back */
+    static GLfloat qv[12][2];
+    static GLfloat qc[12][4];
+    const GLubyte *q[3] = { front, back1, back2 };
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 4; j++) {
+            memcpy(qv[4 * k + j], md_pos[q[k][j]], sizeof(qv[0]));
+            memcpy(qc[4 * k + j], md_col[q[k][j]], sizeof(qc[0]));
+        }
+    glVertexPointer(2, GL_FLOAT, 0, qv);
+    glColorPointer(4, GL_FLOAT, 0, qc);
+    static const GLint first[3] = { 0, 4, 8 };
+    fcu_clear(0, 0, 0, 1, 1);
+    glMultiDrawArrays(GL_QUADS, first, cnt, 3);
+    fc_error(h, "multidraw arrays");
+    fc_capture(h);
+}
+
 /* Compiled into lists (each non-empty draw a compiled draw), and the
  * errors of both calls. */
 static void multidraw_dlist_errors(fc_h *h)
@@ -741,6 +789,8 @@ const fc_case fc_cases_gl14_ops[] = {
     FC_CASE_RGBA("gl14/blendsep_api", 8, 8, 0, "gl14 blendsep api error dlist attrib", blendsep_api),
     FC_CASE_RGBA("gl14/multidraw_arrays", 64, 64, 5, "gl14 multidraw varray", multidraw_arrays),
     FC_CASE_RGBA("gl14/multidraw_elements", 64, 64, 6, "gl14 multidraw varray", multidraw_elements),
+    FC_CASE_RGBA("gl14/multidraw_pstipple_points", 64, 64, 3, "gl14 multidraw varray",
+                 multidraw_pstipple_points),
     FC_CASE_RGBA("gl14/multidraw_dlist_errors", 64, 64, 1, "gl14 multidraw varray dlist error",
                  multidraw_dlist_errors),
     FC_CASE("gl14/stencil_wrap", 48, 48, OSMESA_RGBA, 24, 8, 1, "gl14 stencilwrap fragment",

@@ -511,13 +511,21 @@ void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsiz
    t_draw_arrays(ctx, mode, 0, count, type, indices);
 }
 
+/* Draw i of n of one driver call (i == n: after the call) */
+static void multi_draw(struct fgl_context *ctx, GLsizei i, GLsizei n)
+{
+   ctx->_MultiDrawCont = i > 0 && i < n;
+   ctx->_MultiDrawMore = i + 1 < n;
+}
+
 /* glMultiDrawArrays (GL 1.4) and its EXT alias [S: main/draw.c:
  * _mesa_MultiDrawArrays, main/api_validate.c:
  * _mesa_validate_MultiDrawArrays]: the draw count, the mode, then each
  * count (gl14/multidraw_dlist_errors); every draw then goes to the driver
  * in one call, which llvmpipe skips whole when the first draw is empty
  * (llvmpipe_draw_vbo: !draws[0].count; ORACLE-NOTES.md "GL 1.4 vertex
- * attributes and operations").  fixgl draws them one after the other. */
+ * attributes and operations").  fixgl draws them one after the other as
+ * one draw (multi_draw). */
 void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count,
                                   GLsizei n)
 {
@@ -541,8 +549,12 @@ void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei
    }
    if (n == 0 || count[0] == 0)
       return;
-   for (GLsizei i = 0; i < n; i++)
+   for (GLsizei i = 0; i < n; i++) {
+      multi_draw(ctx, i, n);
       t_draw_arrays(ctx, mode, first[i], count[i], 0, NULL);
+   }
+   multi_draw(ctx, n, n);
+   t_vbuf_end_draw(ctx);   /* (closed already unless the last draws were empty) */
 }
 
 void GLAPIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count,
@@ -607,9 +619,24 @@ void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum ty
          one_call = false;
    if (one_call && count[0] == 0)
       return;
+   /* (one call: draws as one; the empty ones are no draws of vsplit's) */
+   GLsizei last = -1;
    for (GLsizei i = 0; i < n; i++)
       if (count[i] > 0)
-         t_draw_arrays(ctx, mode, 0, count[i], type, indices[i]);
+         last = i;
+   bool first_done = false;
+   for (GLsizei i = 0; i < n; i++) {
+      if (count[i] <= 0)
+         continue;
+      if (one_call) {
+         ctx->_MultiDrawCont = first_done;
+         ctx->_MultiDrawMore = i != last;
+      }
+      t_draw_arrays(ctx, mode, 0, count[i], type, indices[i]);
+      first_done = true;
+   }
+   multi_draw(ctx, n, n);
+   t_vbuf_end_draw(ctx);   /* (closed already unless the last draws were empty) */
 }
 
 void GLAPIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type,

@@ -935,7 +935,10 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
        * empty (`!draws[0].count`), skipping the others: an empty
        * glBegin/glEnd hides the primitives of its mode batched after it
        * (ORACLE-NOTES.md "Vertex batching", dlist/fuzz). */
-      if (i == 0 || prims[i].mode != prims[i - 1].mode || feedback) {
+      /* (a later draw of glMultiDrawArrays/Elements continues the same
+       * llvmpipe draw: ctx->_MultiDrawCont) */
+      if ((i == 0 && !ctx->_MultiDrawCont) || (i > 0 && prims[i].mode != prims[i - 1].mode) ||
+          feedback) {
          t_vbuf_end_draw(ctx);
          ctx->_DrawOffset.latched = false;
          skip_draw = prims[i].count == 0;
@@ -943,7 +946,8 @@ static void render_batch(struct fgl_context *ctx, const struct fgl_vertex_view *
       if (!skip_draw)
          render_prim(&r, &prims[i], constant_interp);
    }
-   t_vbuf_end_draw(ctx);
+   if (!ctx->_MultiDrawMore || feedback)
+      t_vbuf_end_draw(ctx);
 #if defined(__SSE__) || defined(__x86_64__)
    ctx->_DrawPipeline.caller_mxcsr = 0;
    _mm_setcsr(mxcsr);
