@@ -744,6 +744,50 @@ static void atten_unfilled_clip(fc_h *h)
     }
 }
 
+/* The viewport cut under attenuation is the draw region of every
+ * primitive, triangles too: a quad the clipper leaves whole although a
+ * vertex sits at clip (0, 0, 0, 0) (inside every plane, its window
+ * position not a number) reaches past the viewport, and llvmpipe cuts it
+ * there (random-raster s2-i979: 91 pixels below the viewport); without
+ * attenuation it is not cut. */
+static void vpcut_triangle_w0(fc_h *h)
+{
+    static const GLfloat pos[4][4] = {
+        { 0x0.0p+0f, 0x0.0p+0f, 0x0.0p+0f, 0x0.0p+0f },
+        { 0x1.405bcc0000000p-21f, 0x1.1413940000000p-18f, -0x1.3b6ace0000000p-19f, 0x1.1413940000000p-18f },
+        { 0x1.383be20000000p-17f, -0x1.2d038e0000000p-17f, -0x1.5823b00000000p-19f, -0x1.383be20000000p-17f },
+        { -0x1.0000000000000p+0f, -0x1.4ed00c0000000p-1f, -0x1.1b0d620000000p+0f, 0x1.0000000000000p+0f } };
+    static const GLfloat col[4][4] = {
+        { -0x1.263b260000000p-1f, -0x1.0000000000000p+0f, -0x1.b305b40000000p-2f, 0x1.0001000000000p-16f },
+        { -0x1.1348740000000p-1f, 0x1.0000000000000p-32f, 0x1.c070b00000000p-1f, 0x1.0000000000000p+0f },
+        { 0x1.8fb6ea0000000p-1f, -0x1.7945b40000000p-7f, -0x1.0000000000000p+0f, 0x1.0000000000000p+0f },
+        { 0x1.85a1860000000p-3f, 0x1.d2d3820000000p-1f, 0x1.ce81960000000p-6f, 0x1.4211ec0000000p-1f } };
+    static const GLfloat atten[3] = { 1.0f, 0x1.58755p-5f, 0x1.1dab62p-10f };
+    for (int f = 0; f < 2; f++) {
+        glViewport(0, 0, 110, 69);
+        fcu_clear(0.96f, 0.18f, 0.93f, 0.12f, 1);
+        glViewport(18, -23, 56, 37);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        if (f == 0)
+            glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, atten);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glVertexPointer(4, GL_FLOAT, 0, pos);
+        glColorPointer(4, GL_FLOAT, 0, col);
+        glDrawArrays(GL_QUADS, 0, 4);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glDisableClientState(GL_COLOR_ARRAY);
+        static const GLfloat none[3] = { 1.0f, 0.0f, 0.0f };
+        glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, none);
+        fc_error(h, "draw");
+        fc_capture(h);
+    }
+}
+
+
 const fc_case fc_cases_gl14_points[] = {
     FC_CASE_RGBA("gl14/points_atten_linear", 64, 64, 1, "gl14 points", atten_linear),
     FC_CASE_RGBA("gl14/points_atten_quadratic", 64, 64, 1, "gl14 points", atten_quadratic),
@@ -781,6 +825,8 @@ const fc_case fc_cases_gl14_points[] = {
                  vpcut_flush_events),
     FC_CASE_RGBA("gl14/points_atten_unfilled_clip", 64, 64, 3, "gl14 points clip polygon",
                  atten_unfilled_clip),
+    FC_CASE_RGBA("gl14/points_vpcut_triangle_w0", 110, 69, 2, "gl14 points clip",
+                 vpcut_triangle_w0),
     FC_CASE_RGBA("gl14/points_params_api", 8, 8, 0, "gl14 points api error attrib dlist", params_api),
     { 0 },
 };

@@ -683,7 +683,8 @@ struct r_state {
    /* pixels outside [x0,x1) x [y0,y1) are never touched (framebuffer,
     * intersected with the scissor box) */
    int x0, y0, x1, y1;
-   /* the region of points and of lines that are not smooth: the draw
+   /* the region of points, of lines that are not smooth and of triangles
+    * (x0..y1 is the scissored region of clears and binning): the draw
     * region, cut to the viewport rectangle when the context decided so
     * (ORACLE-NOTES.md "Point parameters": llvmpipe's vpwh scissor, state
     * decided by the first primitive after a change; the smooth quads'

@@ -798,8 +798,12 @@ static inline void draw_exact(const struct r_state *rs, const struct r_tri_setup
 static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const v[3],
                           const int32_t X[3], const int32_t Y[3], bool back, bool phong_back)
 {
-   /* draw region, inclusive */
-   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   /* draw region, inclusive: the points' region (px0..py1), which is the
+    * draw region cut to the viewport where llvmpipe cuts it (under
+    * attenuation, ORACLE-NOTES.md "Point parameters": it cuts every
+    * primitive; a triangle the clipper left whole, a vertex at w = 0,
+    * shows it) and the draw region elsewhere */
+   const int32_t rx0 = rs->px0, ry0 = rs->py0, rx1 = rs->px1 - 1, ry1 = rs->py1 - 1;
    if (rx0 > rx1 || ry0 > ry1)
       return;
 
@@ -833,7 +837,7 @@ static void rasterize_ccw(const struct r_state *rs, const struct r_vertex *const
    setup_shade(rs, v, back, phong_back, &ts);
    const struct r_shader sh = { tri_shade_pixel, &ts };
    const uint64_t t1 = rs->stats ? r_stats_now() : 0;
-   const int32_t region[4] = { rs->x0, rs->y0, rs->x1, rs->y1 };
+   const int32_t region[4] = { rs->px0, rs->py0, rs->px1, rs->py1 };
    r_bin_planes(rs, p, 3, bx0, by0, bx1, by1, region, &sh);
    if (rs->stats) {
       rs->stats->setup_ns += t1 - t0;
@@ -1066,7 +1070,7 @@ int r_triangle_box_setup(const struct r_state *rs, const struct r_vertex *v0,
     * covered */
    int32_t b[4];
    snapped_box(X, Y, b);
-   if (!r_scene_box(rs->fb, rs->x0, rs->y0, rs->x1, rs->y1, b[0], b[2], b[1], b[3], box))
+   if (!r_scene_box(rs->fb, rs->px0, rs->py0, rs->px1, rs->py1, b[0], b[2], b[1], b[3], box))
       return 0;
    /* the edges only for a box of more than one tile (one tile needs no
     * test) */
@@ -1105,7 +1109,7 @@ void r_triangle_binned(const struct r_state *rs, const struct r_tri_binned *t)
 {
    /* rasterize_ccw from its box on: the same tests, the same trimmed box,
     * the setup it made */
-   const int32_t rx0 = rs->x0, ry0 = rs->y0, rx1 = rs->x1 - 1, ry1 = rs->y1 - 1;
+   const int32_t rx0 = rs->px0, ry0 = rs->py0, rx1 = rs->px1 - 1, ry1 = rs->py1 - 1;
    if (rx0 > rx1 || ry0 > ry1)
       return;
    int32_t bx0 = t->b[0], by0 = t->b[2];

@@ -56,6 +56,11 @@ void t_pixel_rect(const struct r_state *rs_in, const struct r_pixel_image *pix,
     * of the user's; no stipple, offset, culling, two-sided colours; every
     * input smooth (the colour is the same at every corner) */
    struct r_state rs = *rs_in;
+   /* (its own viewport covers the quad: the region not cut to the user's) */
+   rs.px0 = rs.x0;
+   rs.py0 = rs.y0;
+   rs.px1 = rs.x1;
+   rs.py1 = rs.y1;
    struct r_rast_state rast = *rs.rast;
    struct r_fs_state fs = *rs.fs;
    rs.pix = pix;

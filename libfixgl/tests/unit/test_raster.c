@@ -657,10 +657,10 @@ static void test_draw_region(void)
    enum { W = 10, H = 8 };
    uint8_t buf[W * H * 4];
    struct r_state rs = make_state(buf, W, H);
-   rs.x0 = 3;
-   rs.x1 = 5;
-   rs.y0 = 4;
-   rs.y1 = 6;
+   rs.x0 = rs.px0 = 3;
+   rs.x1 = rs.px1 = 5;
+   rs.y0 = rs.py0 = 4;
+   rs.y1 = rs.py1 = 6;
    memset(buf, 0, sizeof buf);
    const struct tri *sq[2] = { &tri_a, &tri_b };
    for (int k = 0; k < 2; k++) {
