@@ -462,6 +462,27 @@ static void stipple_stripes(fc_h *h)
 }
 static void stipple_random(fc_h *h) { stipple_prims(h, 3); }
 
+/* The rasterizer's stipple before the state tracker first hands it a
+ * pattern covers every pixel, while the state tracker's copy to compare
+ * with starts all zero: a first glPolygonStipple of all zeros is no
+ * change and the stipple still covers everything; after another pattern
+ * the same zeros stipple everything away (probed on the oracle). */
+static void stipple_first_zeros(fc_h *h)
+{
+    static const GLubyte zeros[128];
+    GLubyte pat[128];
+    make_pattern(pat, 3);
+    fc_pixel_ortho(h);
+    glEnable(GL_POLYGON_STIPPLE);
+    const GLubyte *seq[3] = { zeros, pat, zeros };
+    for (int f = 0; f < 3; f++) {
+        glPolygonStipple(seq[f]);
+        fcu_clear(0, 0, 0, 0, 1);
+        draw_prim(GL_TRIANGLES);
+        fc_capture(h);
+    }
+}
+
 /* Every filled primitive type through draw's pipeline (stipple), smooth
  * and flat: the pipeline's decomposition and provoking vertices. */
 static void stipple_all_prims(fc_h *h)
@@ -1230,6 +1251,8 @@ const fc_case fc_cases_polygon[] = {
     FC_CASE("polygon/offset_perspective_z16", 32, 32, OSMESA_RGBA, 16, 0, 4, "raster polygon offset clip stipple", offset_perspective),
     FC_CASE_RGBA("polygon/offset_state", 8, 8, 0, "raster polygon offset", offset_state),
     FC_CASE_RGBA("polygon/stipple_checker", 32, 32, 4, "raster polygon stipple", stipple_checker),
+    FC_CASE_RGBA("polygon/stipple_first_zeros", 32, 32, 3, "raster polygon stipple",
+                 stipple_first_zeros),
     FC_CASE_RGBA("polygon/stipple_stripes", 32, 32, 8, "raster polygon stipple", stipple_stripes),
     FC_CASE_RGBA("polygon/stipple_random_odd_size", 37, 29, 4, "raster polygon stipple", stipple_random),
     FC_CASE_RGBA("polygon/stipple_all_prims", 32, 32, 12, "raster polygon stipple", stipple_all_prims),

@@ -32,6 +32,12 @@ void fgl_init_polygon(struct fgl_context *ctx)
    ctx->Polygon.StippleFlag = false;
    /* _mesa_init_polygon: the stipple starts all ones */
    memset(ctx->PolygonStipple, 0xff, sizeof(ctx->PolygonStipple));
+   /* the rows the rasterizer stipples with before the state tracker first
+    * hands it a pattern cover every pixel, while its copy to compare with
+    * (_StipplePattern) starts all zero: a first glPolygonStipple of zeros
+    * is no change to it and leaves the stipple covering everything
+    * (case polygon/stipple_first_zeros) */
+   memset(ctx->_StippleRows, 0xff, sizeof(ctx->_StippleRows));
 }
 
 void GLAPIENTRY glFrontFace(GLenum mode)
