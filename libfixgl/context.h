@@ -1330,6 +1330,28 @@ void fgl_vpcut_decide(struct fgl_context *ctx, bool aa);
  * fgl_lin_flushed: the oracle flushed its scene (glFlush, glFinish, a
  * swap, a read-back); fgl_lin_permitted: the open scene permits it. */
 enum { FGL_LIN_NONE, FGL_LIN_ROUND, FGL_LIN_LINEAR };
+/* The colour channels fb stores (bit 0 red .. bit 3 alpha): a colour
+ * mask over all of them writes every channel */
+static inline unsigned fgl_fb_channel_mask(const struct fgl_framebuffer *fb)
+{
+   return fb->AlphaBits > 0 ? 0xfu : 0x7u;
+}
+/* Rule 1 of ORACLE-NOTES.md "GLX linear arithmetic": a constant colour on
+ * llvmpipe's linear path, each channel in [0, 1] to the byte
+ * trunc(c * 256 - c) in float; out is byte / 255, which the fragment
+ * stage takes back to that byte.  False (out unset) when a channel is
+ * outside [0, 1]: the path refuses it. */
+static inline bool fgl_lin_const_color(const float c[4], float out[4])
+{
+   for (int i = 0; i < 4; i++)
+      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+         return false;
+   for (int i = 0; i < 4; i++) {
+      const float t = c[i] * 256.0f - c[i];
+      out[i] = (float)(unsigned)t / 255.0f;
+   }
+   return true;
+}
 static inline bool fgl_lin_capable(const struct fgl_context *ctx)
 {
    /* check_linear_rasterizer [S: llvmpipe/lp_state_derived.c]: one

@@ -408,7 +408,7 @@ uint8_t fgl_lin_color_kind(struct fgl_context *ctx, const struct r_vertex *const
    const struct r_state *rs = &ctx->_Raster;
    const struct r_blend_state *bl = rs->blend;
    const struct r_fs_state *fs = rs->fs;
-   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   const unsigned surf = fgl_fb_channel_mask(ctx->DrawBuffer);
    if ((fs->fs_inputs & ~(1u << R_FS_COLOR0)) != 0 || fs->tex_units != 0 || fs->color_sum ||
        fs->phong || bl->logic_op || (bl->color_mask & surf) != surf)
       return R_LIN_SAME;
@@ -416,31 +416,20 @@ uint8_t fgl_lin_color_kind(struct fgl_context *ctx, const struct r_vertex *const
        (bl->separate_alpha || bl->blend_eq != R_BLEND_ADD || bl->blend_src != R_BF_SRC_ALPHA ||
         bl->blend_dst != R_BF_INV_SRC_ALPHA))
       return R_LIN_SAME;
-   if (ctx->_LinColorConst) {
-      /* rule 1: the constant, as set, in [0, 1]: trunc(c * 256 - c) */
-      const float *c = ctx->Current.Attrib[FGL_ATTR_COLOR0];
-      for (int i = 0; i < 4; i++)
-         if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-            return R_LIN_SAME;
-      for (int i = 0; i < 4; i++) {
-         const float t = c[i] * 256.0f - c[i];
-         ctx->_LinColor[i] = (float)(unsigned)t / 255.0f;
-      }
-      return R_LIN_COLOR;
-   }
+   if (ctx->_LinColorConst)   /* rule 1: the constant, as set */
+      return fgl_lin_const_color(ctx->Current.Attrib[FGL_ATTR_COLOR0], ctx->_LinColor)
+                ? R_LIN_COLOR
+                : R_LIN_SAME;
    /* a vertex colour: interpolated in 1.15 fixed point over the part of
-    * the tile drawn (R_LIN_INTERP; the raster scene takes the planes); a
-    * point's, one value: rule 2 */
+    * the tile drawn (R_LIN_INTERP, ORACLE-NOTES.md "GLX linear bins" (5);
+    * the raster scene takes the planes); a point's, one value: rule 2 */
    if (n > 1)
       return R_LIN_INTERP;
    const float *c = v[0]->attr[R_ATTR_COLOR0];
    for (int i = 0; i < 4; i++) {
       if (!(c[i] >= 0.0f && c[i] <= 1.0f))
          return R_LIN_SAME;
-      int f = (int)(c[i] * 32767.0f);
-      if (f > 32767)
-         f = 32767;
-      ctx->_LinColor[i] = (float)(f >> 7) / 255.0f;
+      ctx->_LinColor[i] = (float)(r_lin_ufixed_1_15(c[i]) >> 7) / 255.0f;
    }
    return R_LIN_COLOR;
 }
@@ -457,7 +446,7 @@ bool fgl_lin_opaque(const struct fgl_context *ctx)
     * every channel of the buffer written (no depth or stencil buffer
     * here) */
    const struct r_state *rs = &ctx->_Raster;
-   const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+   const unsigned surf = fgl_fb_channel_mask(ctx->DrawBuffer);
    return !rs->blend->enable && !rs->blend->logic_op && (rs->blend->color_mask & surf) == surf &&
           !rs->dsa->alpha_test && !rs->samples;
 }

@@ -111,7 +111,7 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
       if (ok) {
          /* opaque (lp_setup_whole_tile): a full colour mask over the
           * buffer's channels drops what the tiles it covers hold */
-         const unsigned surf = ctx->DrawBuffer->AlphaBits > 0 ? 0xfu : 0x7u;
+         const unsigned surf = fgl_fb_channel_mask(ctx->DrawBuffer);
          if ((blend.color_mask & surf) == surf) {
             const int box[4] = { rs.x0, rs.y0, rs.x1, rs.y1 };
             r_scene_cover(&ctx->_Scene, &rs, box);
@@ -131,7 +131,7 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
 /* The clear quad's colour on llvmpipe's linear path, or NULL where the
  * path draws it as the ordinary one (ORACLE-NOTES.md "GLX partial
  * clears"); the quad is binned with both and the tiles choose ("GLX
- * linear bins").  The path is allowed for a
+ * linear bins").  The path is allowed (fgl_lin_capable) for a
  * B8G8R8A8 / B8G8R8X8 colour buffer (the oracle's GLX drawables, fb->Srgb:
  * their formats' linear views), no depth and no stencil buffer, one
  * colour buffer bound (not both buffers), every channel of the
@@ -142,22 +142,13 @@ static void clear_with_quad(struct fgl_context *ctx, bool color, bool depth, boo
  * trunc(c * 256 - c) in float arithmetic (probed, 21,504 values near
  * every k/255 and 4,084 of a quarter-step ramp: exact), where the
  * fragment stage rounds c * 255.  The linear colour is byte / 255,
- * which the fragment stage takes back to that byte.  Chosen once per
+ * which the fragment stage takes back to that byte (fgl_lin_const_color).  Chosen once per
  * glClear; OSMesa buffers round (probed). */
 static const float *quad_color(const struct fgl_context *ctx, float linear[4])
 {
-   const struct fgl_framebuffer *fb = ctx->DrawBuffer;
-   const float *c = ctx->Color.ClearColor;
-   if (!fb->Srgb || fb->DepthBits != 0 || fb->StencilBits != 0 || fb->DrawBoth ||
-       !fgl_lin_permitted(ctx))
+   if (!fgl_lin_capable(ctx) || !fgl_lin_permitted(ctx) ||
+       !fgl_lin_const_color(ctx->Color.ClearColor, linear))
       return NULL;
-   for (int i = 0; i < 4; i++)
-      if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-         return NULL;
-   for (int i = 0; i < 4; i++) {
-      const float t = c[i] * 256.0f - c[i];
-      linear[i] = (float)(unsigned)t / 255.0f;
-   }
    return linear;
 }
 
@@ -195,7 +186,7 @@ void GLAPIENTRY glClear(GLbitfield mask)
     * channels) and a partial stencil write mask.  A fully masked buffer and
     * depth with writes off are not cleared. */
    const bool scissor = scissor_cuts(ctx, fb);
-   const unsigned surf_mask = fb->AlphaBits > 0 ? 0xfu : 0x7u;
+   const unsigned surf_mask = fgl_fb_channel_mask(fb);
    /* no colour buffer is cleared under glDrawBuffer(GL_NONE) */
    const unsigned cmask = ctx->Color.DrawBuffer == GL_NONE ? 0u
                                                          : ctx->Color.ColorMask & surf_mask;

@@ -721,13 +721,7 @@ void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4]
          s->bins[ty * s->tiles_x + tx].count = 0;
 }
 
-/* lp_linear_init_interp's 1.15 fixed point */
-static inline int16_t ufixed_1_15(float f)
-{
-   const unsigned u = (unsigned)(f * 32767.0f);   /* f >= 0 here */
-   return (int16_t)(u > 32767u ? 32767u : u);
-}
-
+/* lp_linear_init_interp's signed 1.15 fixed point */
 static inline int16_t sfixed_1_15(float f)
 {
    const int i = (int)(f * 32767.0f);
@@ -762,7 +756,7 @@ bool r_lin_interp_fill(const struct r_state *rs, const struct r_lin_interp *li, 
          return false;
       dx[j] = sfixed_1_15(dsdx);
       dy[j] = sfixed_1_15(dsdy);
-      s0[j] = ufixed_1_15(v0);
+      s0[j] = r_lin_ufixed_1_15(v0);
    }
    /* each pixel: the 16-bit sums (wrapping), >> 7, saturated to a byte;
     * stored straight into the RGBA8 buffer when the fragment operations

@@ -77,6 +77,14 @@ struct r_lin_interp {
    int box[4];
    uint32_t id;
 };
+/* lp_linear_init_interp's unsigned 1.15 fixed point of f >= 0 (ORACLE-NOTES.md
+ * "GLX linear bins" (5)): (unsigned)(f * 32767), at most 32767 */
+static inline int16_t r_lin_ufixed_1_15(float f)
+{
+   const unsigned u = (unsigned)(f * 32767.0f);
+   return (int16_t)(u > 32767u ? 32767u : u);
+}
+
 /* The linear path's fill of the part [x0, x1) x [y0, y1) of li's box
  * within a tile, through the fragment operations of rs (its blending
  * off): false when the path refuses it (a value over the part outside
