@@ -151,22 +151,30 @@ static bool begin(struct r_scene *s, const struct r_state *rs)
    return true;
 }
 
-/* A new command of state rs (its index), or UINT32_MAX. */
-static uint32_t new_cmd(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind)
+/* A new command of state rs at index `at` (s->ncmds, or one past it for
+ * a second command not yet counted), or UINT32_MAX. */
+static uint32_t new_cmd_at(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind,
+                           uint32_t at)
 {
    if (s->bytes > R_SCENE_MAX_BYTES)
       return UINT32_MAX;
    const uint32_t st = state_index(s, rs);
    if (st == UINT32_MAX)
       return UINT32_MAX;
-   if (!grow((void **)&s->cmds, &s->cmds_capacity, s->ncmds + 1, sizeof(*s->cmds)))
+   if (!grow((void **)&s->cmds, &s->cmds_capacity, at + 1, sizeof(*s->cmds)))
       return UINT32_MAX;
    s->bytes += sizeof(struct r_cmd);
-   struct r_cmd *c = &s->cmds[s->ncmds];
+   struct r_cmd *c = &s->cmds[at];
    memset(c, 0, sizeof(*c));
    c->kind = (uint8_t)kind;
    c->state = st;
-   return s->ncmds;
+   return at;
+}
+
+/* A new command of state rs (its index), or UINT32_MAX. */
+static uint32_t new_cmd(struct r_scene *s, const struct r_state *rs, enum r_cmd_kind kind)
+{
+   return new_cmd_at(s, rs, kind, s->ncmds);
 }
 
 /* Appends command `ci` to the bins of the tiles that the pixel box
@@ -428,7 +436,8 @@ bool r_scene_triangle(struct r_scene *s, const struct r_state *rs, const struct 
 
 /* A triangle of R_LIN_NO (command ci) whose whole tiles take command wi
  * (made since `mark`): bin_cmd with the tiles it covers whole apart,
- * their bins first emptied when `opaque`. */
+ * their bins first emptied when `opaque` (ORACLE-NOTES.md "GLX linear
+ * bins" (3), (4)). */
 static bool bin_whole(struct r_scene *s, const struct r_state *rs, uint32_t ci, uint32_t wi,
                       const int box[4], const struct r_tri_edges *edges, bool opaque,
                       const struct scene_mark *mark)
@@ -507,19 +516,14 @@ bool r_scene_triangle_lin(struct r_scene *s, const struct r_state *rs, const str
    if (lin == R_LIN_NO && multi && (lt->whole != R_LIN_NO || lt->opaque)) {
       /* two commands of one setup: the triangle, and in the tiles it
        * covers whole, its tile shading */
-      const uint32_t ci = new_cmd(s, rs, R_CMD_TRIANGLE);
-      if (ci == UINT32_MAX) {
+      const uint32_t ci = new_cmd_at(s, rs, R_CMD_TRIANGLE, s->ncmds);
+      const uint32_t wi =
+         ci == UINT32_MAX ? UINT32_MAX : new_cmd_at(s, rs, R_CMD_TRIANGLE, s->ncmds + 1);
+      if (wi == UINT32_MAX) {
          scene_rollback(s, &mark, true);
          return false;
       }
       s->cmds[ci].tri = bin;
-      s->ncmds++;   /* (new_cmd's next index is ci + 1) */
-      const uint32_t wi = new_cmd(s, rs, R_CMD_TRIANGLE);
-      s->ncmds--;
-      if (wi == UINT32_MAX || wi != ci + 1) {
-         scene_rollback(s, &mark, true);
-         return false;
-      }
       s->cmds[wi].tri = bin;
       s->cmds[wi].lin = lt->whole;
       if (lt->whole == R_LIN_INTERP) {
@@ -712,8 +716,9 @@ void r_scene_cover(struct r_scene *s, const struct r_state *rs, const int box[4]
    draw_region(rs, r);
    const int x0 = box[0] > r[0] ? box[0] : r[0], y0 = box[1] > r[1] ? box[1] : r[1];
    const int x1 = box[2] < r[2] ? box[2] : r[2], y1 = box[3] < r[3] ? box[3] : r[3];
-   /* the tiles wholly inside [x0, x1) x [y0, y1) (lp_setup_bin_rectangle:
-    * the box cut to the region covers all 64 x 64 pixels) */
+   /* the tiles wholly inside [x0, x1) x [y0, y1): the box cut to the
+    * region covers all 64 x 64 pixels (ORACLE-NOTES.md "GLX linear bins"
+    * (3)) */
    for (int ty = (y0 + R_TILE_SIZE - 1) >> R_TILE_LOG2;
         ty < s->tiles_y && ((ty + 1) << R_TILE_LOG2) <= y1; ty++)
       for (int tx = (x0 + R_TILE_SIZE - 1) >> R_TILE_LOG2;
@@ -734,8 +739,8 @@ bool r_lin_interp_fill(const struct r_state *rs, const struct r_lin_interp *li, 
    const int w = x1 - x0, h = y1 - y0;
    if (w <= 0 || h <= 0)
       return true;
-   /* lp_fs_linear_run: oow = 1 / a0 of w; the colour (perspective)
-    * divided back when it is not 1 */
+   /* ORACLE-NOTES.md "GLX linear bins" (5): oow = 1 / a0 of w; the
+    * colour (perspective) divided back when it is not 1 */
    const float oow = 1.0f / li->w_a0;
    int16_t s0[4], dx[4], dy[4];
    for (int j = 0; j < 4; j++) {
@@ -844,8 +849,9 @@ void r_scene_run_tile(const struct r_scene *s, unsigned tile, struct r_stats *st
    uint32_t cur = UINT32_MAX;
    struct r_state rs;
    const uint32_t n = b->count;
-   /* llvmpipe's linear path (enum r_lin): the tile's commands all
-    * rectangles or clears */
+   /* llvmpipe's linear path (enum r_lin; ORACLE-NOTES.md "GLX linear
+    * bins" (5)): the tile's commands all rectangles, points, tile
+    * commands or clears; decided once per tile */
    bool linear = false;
    if (s->lin) {
       linear = true;
